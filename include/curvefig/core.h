@@ -1,0 +1,75 @@
+/*
+** curvefig core: status codes, error details and the allocator hook.
+**
+** Every fallible function of curvefig returns a cf_status_t (CF_STATUS_OK = 0)
+** and takes, as its last argument, an optional cf_diag_t * that receives a
+** message naming what was wrong and where ("knot 4 (0.30) is smaller than
+** knot 3 (0.50)").  Passing NULL is always allowed.  Nothing in the core
+** prints, aborts, uses errno or longjmp.
+*/
+#ifndef CURVEFIG_CORE_H
+#define CURVEFIG_CORE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum cf_status {
+    CF_STATUS_OK = 0,
+    CF_STATUS_NO_MEMORY,      /* an allocation failed */
+    CF_STATUS_INVALID_ARG,    /* NULL pointer, zero count, bad option */
+    CF_STATUS_DIM_MISMATCH,   /* dimensions of two operands differ */
+    CF_STATUS_BAD_DEGREE,     /* negative, too large, or inconsistent */
+    CF_STATUS_BAD_KNOTS,      /* knot vector violates a rule */
+    CF_STATUS_BAD_WEIGHT,     /* weight not finite or not positive */
+    CF_STATUS_NOT_FINITE,     /* NaN or infinite coordinate or parameter */
+    CF_STATUS_DOMAIN,         /* parameter outside the curve's domain */
+    CF_STATUS_DEGENERATE,     /* zero tangent, coincident points, ... */
+    CF_STATUS_NO_CONVERGENCE, /* iteration did not reach its tolerance */
+    CF_STATUS_TOO_FEW_POINTS, /* fewer points than the operation needs */
+    CF_STATUS_IO,             /* a file could not be written */
+    CF_STATUS_SCRIPT,         /* a figure script failed */
+    CF_STATUS_LAST_
+} cf_status_t;
+
+/* A static English description of a status ("invalid knot vector"). */
+const char *cf_status_to_string(cf_status_t status);
+
+/* Optional detail record.  The first error is kept: a function that fails
+** writes into a diag whose status is CF_STATUS_OK only. */
+#define CF_DIAG_MSG_SIZE 192
+typedef struct cf_diag {
+    cf_status_t status;
+    long index;                  /* offending index (point, knot, ...), or -1 */
+    char msg[CF_DIAG_MSG_SIZE];  /* NUL-terminated English message */
+} cf_diag_t;
+
+/* Reset a diag to "no error". */
+void cf_diag_clear(cf_diag_t *diag);
+
+/*
+** Allocator hook, shaped like lua_Alloc: realloc(ud, ptr, old_size,
+** new_size); new_size == 0 frees and returns NULL.  The default (and the one
+** restored by cf_set_allocator(NULL)) uses the C library.  Not thread-safe
+** to change while other threads use curvefig.
+*/
+typedef struct cf_allocator {
+    void *(*realloc)(void *ud, void *ptr, size_t old_size, size_t new_size);
+    void *ud;
+} cf_allocator_t;
+
+void cf_set_allocator(const cf_allocator_t *allocator);
+void cf_get_allocator(cf_allocator_t *allocator);
+
+/* Memory the library hands out as plain arrays (documented per function)
+** is released with cf_free. cf_free(NULL) is harmless. */
+void cf_free(void *ptr);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

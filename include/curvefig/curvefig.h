@@ -1,0 +1,12 @@
+/*
+** curvefig: curve algorithms (Bernstein and B-spline bases, Bézier,
+** rational Bézier, B-spline and NURBS curves in R^N) for course figures.
+** This umbrella header includes every public header of the core library.
+*/
+#ifndef CURVEFIG_H
+#define CURVEFIG_H
+
+#include "curvefig/core.h"
+#include "curvefig/bezier.h"
+
+#endif

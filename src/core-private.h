@@ -1,0 +1,50 @@
+/*
+** Internals shared between the files of the core (prefix cf__).
+*/
+#ifndef CURVEFIG_CORE_PRIVATE_H
+#define CURVEFIG_CORE_PRIVATE_H
+
+#include <stdarg.h>
+#include <stddef.h>
+
+#include "curvefig/core.h"
+
+#define CF__PI 3.14159265358979323846
+
+#if defined(__GNUC__)
+#define CF__PRINTF(f, a) __attribute__((format(printf, f, a)))
+#define CF__UNLIKELY(x) __builtin_expect(!!(x), 0)
+#else
+#define CF__PRINTF(f, a)
+#define CF__UNLIKELY(x) (x)
+#endif
+
+/*
+** Every error is created here (one place for a breakpoint).  Fills diag (if
+** not NULL and still OK) with status, index and the formatted message, and
+** returns status.
+*/
+cf_status_t cf__error(cf_diag_t *diag, cf_status_t status, long index,
+                      const char *fmt, ...) CF__PRINTF(4, 5);
+
+/* Allocation through the hook.  cf__alloc_array checks n * size for
+** overflow; both return NULL on failure.  Memory from them is released with
+** cf__free (which needs no size: sizes are kept in a small header). */
+void *cf__malloc(size_t size);
+void *cf__calloc(size_t n, size_t size);
+void *cf__alloc_array(size_t n, size_t size);
+void *cf__realloc_array(void *ptr, size_t n, size_t size);
+void cf__free(void *ptr);
+
+/* Checks that report with a message.  `what` names the array ("point"),
+** values are dim-interleaved with the given stride. */
+cf_status_t cf__check_finite_points(const double *pts, size_t count,
+                                    size_t dim, size_t stride,
+                                    const char *what, cf_diag_t *diag);
+cf_status_t cf__check_weights(const double *w, size_t count,
+                              cf_diag_t *diag);
+
+/* n choose k as a double (exact for the ranges curvefig uses). */
+double cf__binomial(int n, int k);
+
+#endif

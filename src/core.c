@@ -1,0 +1,212 @@
+/*
+** Status strings, error details, the allocator hook and shared checks.
+*/
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core-private.h"
+
+static const char *const status_strings[CF_STATUS_LAST_] = {
+    [CF_STATUS_OK] = "success",
+    [CF_STATUS_NO_MEMORY] = "out of memory",
+    [CF_STATUS_INVALID_ARG] = "invalid argument",
+    [CF_STATUS_DIM_MISMATCH] = "dimensions do not match",
+    [CF_STATUS_BAD_DEGREE] = "invalid degree",
+    [CF_STATUS_BAD_KNOTS] = "invalid knot vector",
+    [CF_STATUS_BAD_WEIGHT] = "invalid weight",
+    [CF_STATUS_NOT_FINITE] = "value is not finite",
+    [CF_STATUS_DOMAIN] = "parameter outside the domain",
+    [CF_STATUS_DEGENERATE] = "degenerate geometry",
+    [CF_STATUS_NO_CONVERGENCE] = "no convergence",
+    [CF_STATUS_TOO_FEW_POINTS] = "too few points",
+    [CF_STATUS_IO] = "input/output error",
+    [CF_STATUS_SCRIPT] = "figure script error",
+};
+
+const char *
+cf_status_to_string(cf_status_t status)
+{
+    if ((unsigned)status >= CF_STATUS_LAST_)
+        return "unknown status";
+    return status_strings[status];
+}
+
+void
+cf_diag_clear(cf_diag_t *diag)
+{
+    if (diag == NULL)
+        return;
+    diag->status = CF_STATUS_OK;
+    diag->index = -1;
+    diag->msg[0] = '\0';
+}
+
+cf_status_t
+cf__error(cf_diag_t *diag, cf_status_t status, long index,
+          const char *fmt, ...)
+{
+    if (diag != NULL && diag->status == CF_STATUS_OK) {
+        va_list ap;
+        diag->status = status;
+        diag->index = index;
+        va_start(ap, fmt);
+        vsnprintf(diag->msg, sizeof diag->msg, fmt, ap);
+        va_end(ap);
+    }
+    return status;
+}
+
+/* ---- allocator ---------------------------------------------------------- */
+
+static void *
+default_realloc(void *ud, void *ptr, size_t old_size, size_t new_size)
+{
+    (void)ud;
+    (void)old_size;
+    if (new_size == 0) {
+        free(ptr);
+        return NULL;
+    }
+    return realloc(ptr, new_size);
+}
+
+static cf_allocator_t allocator = { default_realloc, NULL };
+
+void
+cf_set_allocator(const cf_allocator_t *a)
+{
+    if (a == NULL || a->realloc == NULL) {
+        allocator.realloc = default_realloc;
+        allocator.ud = NULL;
+    } else {
+        allocator = *a;
+    }
+}
+
+void
+cf_get_allocator(cf_allocator_t *a)
+{
+    if (a != NULL)
+        *a = allocator;
+}
+
+/* A header in front of every block remembers its size, so that the hook
+** receives the old size as lua_Alloc does.  16 bytes keep the alignment. */
+typedef union {
+    size_t size;
+    max_align_t align_;
+} block_header;
+
+void *
+cf__malloc(size_t size)
+{
+    block_header *h;
+    if (size > SIZE_MAX - sizeof *h)
+        return NULL;
+    h = allocator.realloc(allocator.ud, NULL, 0, sizeof *h + size);
+    if (h == NULL)
+        return NULL;
+    h->size = size;
+    return h + 1;
+}
+
+void *
+cf__alloc_array(size_t n, size_t size)
+{
+    if (size != 0 && n > SIZE_MAX / size)
+        return NULL;
+    return cf__malloc(n * size);
+}
+
+void *
+cf__calloc(size_t n, size_t size)
+{
+    void *p = cf__alloc_array(n, size);
+    if (p != NULL)
+        memset(p, 0, n * size);
+    return p;
+}
+
+void *
+cf__realloc_array(void *ptr, size_t n, size_t size)
+{
+    block_header *h, *nh;
+    size_t bytes;
+    if (ptr == NULL)
+        return cf__alloc_array(n, size);
+    if (size != 0 && n > SIZE_MAX / size)
+        return NULL;
+    bytes = n * size;
+    if (bytes > SIZE_MAX - sizeof *h)
+        return NULL;
+    h = (block_header *)ptr - 1;
+    nh = allocator.realloc(allocator.ud, h, sizeof *h + h->size,
+                           sizeof *h + bytes);
+    if (nh == NULL)
+        return NULL;
+    nh->size = bytes;
+    return nh + 1;
+}
+
+void
+cf__free(void *ptr)
+{
+    block_header *h;
+    if (ptr == NULL)
+        return;
+    h = (block_header *)ptr - 1;
+    allocator.realloc(allocator.ud, h, sizeof *h + h->size, 0);
+}
+
+void
+cf_free(void *ptr)
+{
+    cf__free(ptr);
+}
+
+/* ---- shared checks ------------------------------------------------------ */
+
+cf_status_t
+cf__check_finite_points(const double *pts, size_t count, size_t dim,
+                        size_t stride, const char *what, cf_diag_t *diag)
+{
+    for (size_t i = 0; i < count; i++) {
+        for (size_t k = 0; k < dim; k++) {
+            double v = pts[i * stride + k];
+            if (!isfinite(v))
+                return cf__error(diag, CF_STATUS_NOT_FINITE, (long)i,
+                                 "%s %zu has coordinate %zu = %g; "
+                                 "coordinates must be finite",
+                                 what, i, k + 1, v);
+        }
+    }
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf__check_weights(const double *w, size_t count, cf_diag_t *diag)
+{
+    for (size_t i = 0; i < count; i++) {
+        if (!isfinite(w[i]) || !(w[i] > 0.0))
+            return cf__error(diag, CF_STATUS_BAD_WEIGHT, (long)i,
+                             "weight %zu is %g; weights must be finite "
+                             "and positive", i, w[i]);
+    }
+    return CF_STATUS_OK;
+}
+
+double
+cf__binomial(int n, int k)
+{
+    double r = 1.0;
+    if (k < 0 || k > n)
+        return 0.0;
+    if (k > n - k)
+        k = n - k;
+    for (int i = 1; i <= k; i++)
+        r = r * (double)(n - k + i) / (double)i;
+    return nearbyint(r);
+}

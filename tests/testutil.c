@@ -1,0 +1,126 @@
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include <cmocka.h>
+
+#include "curvefig/core.h"
+#include "testutil.h"
+
+void
+tu_rng_seed(tu_rng *r, uint64_t seed)
+{
+    r->state = seed;
+}
+
+uint64_t
+tu_rng_next(tu_rng *r)
+{
+    uint64_t z;
+    r->state += 0x9E3779B97F4A7C15u;
+    z = r->state;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9u;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBu;
+    return z ^ (z >> 31);
+}
+
+double
+tu_rng_u01(tu_rng *r)
+{
+    return (double)(tu_rng_next(r) >> 11) * 0x1p-53;
+}
+
+double
+tu_rng_range(tu_rng *r, double lo, double hi)
+{
+    return lo + (hi - lo) * tu_rng_u01(r);
+}
+
+bool
+tu_close(double a, double b, double rel, double floor)
+{
+    double scale = fmax(fmax(fabs(a), fabs(b)), floor);
+    if (isnan(a) || isnan(b))
+        return false;
+    return fabs(a - b) <= rel * scale;
+}
+
+void
+tu_assert_close_(double a, double b, double rel, double floor,
+                 const char *expr, const char *file, int line)
+{
+    if (!tu_close(a, b, rel, floor)) {
+        print_error("%s: %.17g vs %.17g (diff %.3g, allowed %.3g relative "
+                    "to max(|a|,|b|,%g))\n",
+                    expr, a, b, fabs(a - b), rel, floor);
+        _fail(file, line);
+    }
+}
+
+double
+tu_max_diff(const double *a, const double *b, size_t n)
+{
+    double m = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        double d = fabs(a[i] - b[i]);
+        if (isnan(d))
+            return INFINITY;
+        if (d > m)
+            m = d;
+    }
+    return m;
+}
+
+static long fail_after = -1;
+static long live_blocks = 0;
+
+static void *
+failing_realloc(void *ud, void *ptr, size_t old_size, size_t new_size)
+{
+    (void)ud;
+    (void)old_size;
+    if (new_size == 0) {
+        if (ptr != NULL)
+            live_blocks--;
+        free(ptr);
+        return NULL;
+    }
+    if (fail_after > 0) {
+        fail_after--;
+        if (fail_after == 0) {
+            fail_after = 0;
+            return NULL;
+        }
+    } else if (fail_after == 0) {
+        return NULL;
+    }
+    void *p = realloc(ptr, new_size);
+    if (p != NULL && ptr == NULL)
+        live_blocks++;
+    return p;
+}
+
+void
+tu_fail_alloc_after(long k)
+{
+    cf_allocator_t a = { failing_realloc, NULL };
+    fail_after = k;
+    live_blocks = 0;
+    cf_set_allocator(&a);
+}
+
+void
+tu_fail_alloc_reset(void)
+{
+    fail_after = -1;
+    cf_set_allocator(NULL);
+}
+
+long
+tu_alloc_live(void)
+{
+    return live_blocks;
+}

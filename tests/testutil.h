@@ -1,0 +1,43 @@
+/*
+** Helpers shared by the unit tests: a seeded PRNG and relative comparisons.
+** Include after <stdarg.h>, <stddef.h>, <setjmp.h> and <cmocka.h>.
+*/
+#ifndef CURVEFIG_TESTUTIL_H
+#define CURVEFIG_TESTUTIL_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+/* splitmix64, the generator of bench/BENCHMARKS.md. */
+typedef struct tu_rng {
+    uint64_t state;
+} tu_rng;
+
+void tu_rng_seed(tu_rng *r, uint64_t seed);
+uint64_t tu_rng_next(tu_rng *r);
+double tu_rng_u01(tu_rng *r);                 /* [0, 1) */
+double tu_rng_range(tu_rng *r, double lo, double hi);
+
+/* |a - b| <= rel * scale, where scale = max(|a|, |b|, floor). */
+bool tu_close(double a, double b, double rel, double floor);
+
+/* cmocka assertion with a message naming both values. */
+void tu_assert_close_(double a, double b, double rel, double floor,
+                      const char *expr, const char *file, int line);
+#define tu_assert_close(a, b, rel, floor) \
+    tu_assert_close_((a), (b), (rel), (floor), #a " ~ " #b, __FILE__, __LINE__)
+
+/* Maximum norm of a - b over n doubles. */
+double tu_max_diff(const double *a, const double *b, size_t n);
+
+/*
+** Failing allocator for out-of-memory tests: after tu_fail_alloc_after(k),
+** the k-th allocation from now (1-based) and every later one fail, until
+** tu_fail_alloc_reset().  tu_alloc_live() counts live blocks (for leaks).
+*/
+void tu_fail_alloc_after(long k);
+void tu_fail_alloc_reset(void);
+long tu_alloc_live(void);
+
+#endif

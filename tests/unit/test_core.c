@@ -1,0 +1,132 @@
+/* Status strings, diagnostics and the allocator hook. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "curvefig/core.h"
+#include "../../src/core-private.h"
+#include "testutil.h"
+
+static void
+test_status_strings(void **state)
+{
+    (void)state;
+    assert_string_equal(cf_status_to_string(CF_STATUS_OK), "success");
+    for (int s = 0; s < CF_STATUS_LAST_; s++) {
+        const char *str = cf_status_to_string((cf_status_t)s);
+        assert_non_null(str);
+        assert_true(strlen(str) > 0);
+        assert_string_not_equal(str, "unknown status");
+    }
+    assert_string_equal(cf_status_to_string((cf_status_t)9999),
+                        "unknown status");
+    assert_string_equal(cf_status_to_string((cf_status_t)-1),
+                        "unknown status");
+}
+
+static void
+test_diag_keeps_first_error(void **state)
+{
+    cf_diag_t d;
+    (void)state;
+    cf_diag_clear(&d);
+    assert_int_equal(d.status, CF_STATUS_OK);
+    assert_int_equal(d.index, -1);
+    assert_int_equal(cf__error(&d, CF_STATUS_BAD_KNOTS, 4,
+                               "knot %d (%.2f) is smaller than knot %d (%.2f)",
+                               4, 0.3, 3, 0.5),
+                     CF_STATUS_BAD_KNOTS);
+    assert_string_equal(d.msg, "knot 4 (0.30) is smaller than knot 3 (0.50)");
+    assert_int_equal(d.index, 4);
+    /* a second error does not overwrite the first */
+    cf__error(&d, CF_STATUS_DOMAIN, 7, "other");
+    assert_int_equal(d.status, CF_STATUS_BAD_KNOTS);
+    assert_int_equal(d.index, 4);
+    /* NULL diag is allowed */
+    assert_int_equal(cf__error(NULL, CF_STATUS_DOMAIN, 0, "x"),
+                     CF_STATUS_DOMAIN);
+    cf_diag_clear(NULL);
+}
+
+static void
+test_checks_name_the_culprit(void **state)
+{
+    const double pts[] = { 0, 1, 2, 3, 4, NAN };
+    const double w[] = { 1, 2, -0.5 };
+    cf_diag_t d;
+    (void)state;
+    cf_diag_clear(&d);
+    assert_int_equal(cf__check_finite_points(pts, 3, 2, 2, "point", &d),
+                     CF_STATUS_NOT_FINITE);
+    assert_int_equal(d.index, 2);
+    assert_non_null(strstr(d.msg, "point 2"));
+    cf_diag_clear(&d);
+    assert_int_equal(cf__check_weights(w, 3, &d), CF_STATUS_BAD_WEIGHT);
+    assert_string_equal(d.msg,
+                        "weight 2 is -0.5; weights must be finite and positive");
+    assert_int_equal(cf__check_weights(w, 2, NULL), CF_STATUS_OK);
+}
+
+static void
+test_binomial(void **state)
+{
+    (void)state;
+    assert_true(cf__binomial(5, 2) == 10.0);
+    assert_true(cf__binomial(40, 20) == 137846528820.0);
+    assert_true(cf__binomial(3, -1) == 0.0);
+    assert_true(cf__binomial(3, 4) == 0.0);
+    /* Pascal's rule over a range */
+    for (int n = 1; n <= 50; n++)
+        for (int k = 1; k < n; k++)
+            tu_assert_close(cf__binomial(n, k),
+                            cf__binomial(n - 1, k - 1) + cf__binomial(n - 1, k),
+                            4e-16, 1.0);
+}
+
+static void
+test_allocator_hook(void **state)
+{
+    double *p;
+    (void)state;
+    tu_fail_alloc_after(2);
+    p = cf__alloc_array(4, sizeof *p);
+    assert_non_null(p);
+    assert_null(cf__malloc(8));        /* the 2nd allocation fails */
+    assert_null(cf__malloc(8));        /* and every later one */
+    cf__free(p);
+    assert_int_equal(tu_alloc_live(), 0);
+    tu_fail_alloc_reset();
+
+    /* overflow of n * size is caught before any allocation */
+    assert_null(cf__alloc_array(SIZE_MAX / 2, 4));
+    p = cf__calloc(3, sizeof *p);
+    assert_non_null(p);
+    assert_true(p[0] == 0.0 && p[2] == 0.0);
+    p = cf__realloc_array(p, 1000, sizeof *p);
+    assert_non_null(p);
+    assert_true(p[1] == 0.0);
+    cf_free(p);
+    cf_free(NULL);
+
+    cf_allocator_t a;
+    cf_get_allocator(&a);
+    assert_non_null(a.realloc);
+}
+
+int
+main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_status_strings),
+        cmocka_unit_test(test_diag_keeps_first_error),
+        cmocka_unit_test(test_checks_name_the_culprit),
+        cmocka_unit_test(test_binomial),
+        cmocka_unit_test(test_allocator_hook),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

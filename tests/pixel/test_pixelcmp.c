@@ -1,0 +1,166 @@
+/*
+** The comparator must pass what is the same picture and fail what is not:
+** checked on synthetic images drawn with cairo.
+*/
+#include <cairo.h>
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+
+#include <cmocka.h>
+
+#include "pixelcmp.h"
+
+typedef void (*draw_fn)(cairo_t *cr, double param);
+
+static cairo_surface_t *
+draw(draw_fn f, double param)
+{
+    cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 80, 60);
+    cairo_t *cr = cairo_create(s);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    f(cr, param);
+    cairo_destroy(cr);
+    cairo_surface_flush(s);
+    return s;
+}
+
+static pc_image
+view(cairo_surface_t *s)
+{
+    pc_image im = { cairo_image_surface_get_width(s),
+                    cairo_image_surface_get_height(s),
+                    cairo_image_surface_get_stride(s),
+                    cairo_image_surface_get_data(s) };
+    return im;
+}
+
+/* a thin grey polygon with a filled marker at (x, 30) */
+static void
+polygon_marker(cairo_t *cr, double x)
+{
+    cairo_set_source_rgb(cr, 0.55, 0.55, 0.55);
+    cairo_set_line_width(cr, 1.0);
+    cairo_move_to(cr, 5, 50);
+    cairo_line_to(cr, x, 30);
+    cairo_line_to(cr, 75, 50);
+    cairo_stroke(cr);
+    cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
+    cairo_arc(cr, x, 30, 3.0, 0, 6.283185307179586);
+    cairo_fill(cr);
+}
+
+static void
+curve_colour(cairo_t *cr, double red)
+{
+    cairo_set_source_rgb(cr, red, 0.1, 0.1);
+    cairo_set_line_width(cr, 2.0);
+    cairo_move_to(cr, 5, 55);
+    cairo_curve_to(cr, 20, 0, 60, 0, 75, 55);
+    cairo_stroke(cr);
+}
+
+static int
+compare(cairo_surface_t *a, cairo_surface_t *b, pc_result *r)
+{
+    pc_image ia = view(a), ib = view(b);
+    pc_options opt = { 0.1, 1, 0 };
+    unsigned char diff[80 * 60 * 4];
+    assert_int_equal(pc_compare(&ia, &ib, &opt, r, diff), 0);
+    return r->match;
+}
+
+static void
+test_delta_scale(void **state)
+{
+    (void)state;
+    /* black against white: Y differs by 255, I and Q by 0, so the
+    ** distance is sqrt(0.5053 * 255^2 / 35215) = 0.9660 */
+    assert_true(fabs(pc_pixel_delta(0xff000000u, 0xffffffffu) - 0.9660) < 1e-3);
+    assert_true(pc_pixel_delta(0xff123456u, 0xff123456u) == 0.0);
+    /* transparent is white (composited on white) */
+    assert_true(pc_pixel_delta(0x00000000u, 0xffffffffu) == 0.0);
+    /* one grey level is far below the 0.1 threshold */
+    assert_true(pc_pixel_delta(0xff808080u, 0xff818181u) < 0.01);
+}
+
+static void
+test_identical_takes_fast_path(void **state)
+{
+    pc_result r;
+    cairo_surface_t *a = draw(polygon_marker, 40), *b = draw(polygon_marker, 40);
+    (void)state;
+    assert_true(compare(a, b, &r));
+    assert_true(r.identical);
+    assert_int_equal(r.bad_pixels, 0);
+    cairo_surface_destroy(a);
+    cairo_surface_destroy(b);
+}
+
+static void
+test_subpixel_shift_is_antialiasing(void **state)
+{
+    pc_result r;
+    cairo_surface_t *a = draw(polygon_marker, 40), *b = draw(polygon_marker, 40.35);
+    (void)state;
+    assert_true(compare(a, b, &r));
+    assert_false(r.identical);
+    assert_true(r.aa_pixels > 0);
+    cairo_surface_destroy(a);
+    cairo_surface_destroy(b);
+}
+
+static void
+test_two_pixel_move_fails(void **state)
+{
+    /* 1 pt at the 144 dpi of the pixel tests is 2 pixels */
+    pc_result r;
+    cairo_surface_t *a = draw(polygon_marker, 40), *b = draw(polygon_marker, 42);
+    (void)state;
+    assert_false(compare(a, b, &r));
+    assert_true(r.bad_pixels > 0);
+    cairo_surface_destroy(a);
+    cairo_surface_destroy(b);
+}
+
+static void
+test_colour_change_fails(void **state)
+{
+    pc_result r;
+    cairo_surface_t *a = draw(curve_colour, 0.1), *b = draw(curve_colour, 0.9);
+    (void)state;
+    assert_false(compare(a, b, &r));
+    assert_true(r.bad_pixels > 20);
+    cairo_surface_destroy(a);
+    cairo_surface_destroy(b);
+}
+
+static void
+test_size_mismatch(void **state)
+{
+    pc_result r;
+    pc_options opt = { 0.1, 1, 0 };
+    cairo_surface_t *a = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 10, 10);
+    cairo_surface_t *b = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 10, 11);
+    pc_image ia = view(a), ib = view(b);
+    (void)state;
+    assert_int_equal(pc_compare(&ia, &ib, &opt, &r, NULL), -1);
+    cairo_surface_destroy(a);
+    cairo_surface_destroy(b);
+}
+
+int
+main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_delta_scale),
+        cmocka_unit_test(test_identical_takes_fast_path),
+        cmocka_unit_test(test_subpixel_shift_is_antialiasing),
+        cmocka_unit_test(test_two_pixel_move_fails),
+        cmocka_unit_test(test_colour_change_fails),
+        cmocka_unit_test(test_size_mismatch),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -8,5 +8,7 @@
 
 #include "curvefig/core.h"
 #include "curvefig/bezier.h"
+#include "curvefig/knots.h"
+#include "curvefig/bspline.h"
 
 #endif

@@ -1,0 +1,81 @@
+/*
+** Small dense and banded linear solvers used by interpolation and
+** least-squares approximation (prefix cf__).
+**
+** Right-hand sides are blocks of `nrhs` columns stored row by row: row i
+** of the right-hand side (and of the solution) is rhs[i * nrhs ...
+** i * nrhs + nrhs - 1].  With nrhs = dim this is exactly the interleaved
+** point layout of curvefig, so one call solves for every coordinate.
+**
+** Every solver reports a zero (or, relative to the matrix, negligible)
+** pivot as CF_STATUS_DEGENERATE and a failed allocation as
+** CF_STATUS_NO_MEMORY; the message names the row.  Inputs marked "in/out"
+** are overwritten.
+*/
+#ifndef CURVEFIG_LINSOLVE_PRIVATE_H
+#define CURVEFIG_LINSOLVE_PRIVATE_H
+
+#include <stddef.h>
+
+#include "curvefig/core.h"
+
+/*
+** Tridiagonal system (Thomas algorithm, no pivoting; stable for diagonally
+** dominant or symmetric positive definite matrices, which is what the
+** spline systems are):
+**     sub[i] x[i-1] + mid[i] x[i] + sup[i] x[i+1] = rhs[i],  i = 0 .. n-1
+** sub[0] and sup[n-1] are ignored.  rhs (in/out) receives the solution.
+** Allocates n doubles of scratch.  n >= 1.
+*/
+cf_status_t cf__solve_tridiagonal(size_t n, const double *sub,
+                                  const double *mid, const double *sup,
+                                  double *rhs, size_t nrhs, cf_diag_t *diag);
+
+/*
+** Cyclic tridiagonal system (periodic splines): as above, but row 0 also
+** has sub[0] in column n-1 and row n-1 has sup[n-1] in column 0.  Solved
+** by the Sherman-Morrison formula around two Thomas solves.  n >= 3.
+*/
+cf_status_t cf__solve_cyclic_tridiagonal(size_t n, const double *sub,
+                                         const double *mid,
+                                         const double *sup, double *rhs,
+                                         size_t nrhs, cf_diag_t *diag);
+
+/*
+** Banded matrix with kl sub- and ku super-diagonals, LU-factorised with
+** partial pivoting (row interchanges within the band, like LAPACK's
+** dgbtrf).  Row i stores columns i - kl .. i + ku + kl (the extra kl
+** columns receive the fill-in of the interchanges).
+*/
+typedef struct cf__band {
+    size_t n, kl, ku, width;  /* width = 2 kl + ku + 1 */
+    double *a;                /* n * width */
+    double *lower;            /* n * kl multipliers of L */
+    size_t *pivot;            /* row interchanged with row k at step k */
+    int factored;
+} cf__band_t;
+
+/* Allocate an n x n band of zeros. */
+cf_status_t cf__band_init(cf__band_t *b, size_t n, size_t kl, size_t ku,
+                          cf_diag_t *diag);
+void cf__band_fini(cf__band_t *b);
+/* Set entry (i, j); |j - i| must lie in the band (asserted: misuse). */
+void cf__band_set(cf__band_t *b, size_t i, size_t j, double v);
+/* Entry (i, j) of the (unfactored) matrix, 0 outside the band. */
+double cf__band_get(const cf__band_t *b, size_t i, size_t j);
+/* LU factorisation in place. */
+cf_status_t cf__band_factor(cf__band_t *b, cf_diag_t *diag);
+/* Solve with the factorisation; rhs (in/out) is n x nrhs. */
+void cf__band_solve(const cf__band_t *b, double *rhs, size_t nrhs);
+
+/*
+** Linear least squares min |A x - B| (Frobenius norm over the nrhs
+** columns) by Householder QR.  A is m x n row-major (m >= n >= 1), B is
+** m x nrhs; both are overwritten.  x receives n x nrhs.  A matrix of
+** numerical rank < n gives CF_STATUS_DEGENERATE naming the column.
+** Allocates m doubles of scratch.
+*/
+cf_status_t cf__lsq_qr(size_t m, size_t n, double *A, double *B,
+                       size_t nrhs, double *x, cf_diag_t *diag);
+
+#endif

@@ -1,0 +1,348 @@
+/*
+** Linear solvers for interpolation: Thomas (tridiagonal), Sherman-Morrison
+** (cyclic tridiagonal), banded LU with partial pivoting and Householder QR
+** least squares.  See linsolve-private.h for the contracts.
+*/
+#include <assert.h>
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "core-private.h"
+#include "linsolve-private.h"
+
+/* ---- tridiagonal -------------------------------------------------------- */
+
+/*
+** Thomas elimination with caller scratch c[n] (the modified super-diagonal).
+** The pivot m_i = mid_i - sub_i c_{i-1} is called negligible when it is
+** below a few ulps of the terms it was computed from.
+*/
+static cf_status_t
+thomas(size_t n, const double *sub, const double *mid, const double *sup,
+       double *rhs, size_t nrhs, double *c, cf_diag_t *diag)
+{
+    for (size_t i = 0; i < n; i++) {
+        double lower = i > 0 ? sub[i] : 0.0;
+        double prev = i > 0 ? c[i - 1] : 0.0;
+        double m = mid[i] - lower * prev;
+        double scale = fabs(mid[i]) + fabs(lower * prev);
+        if (!(fabs(m) > 8.0 * DBL_EPSILON * scale) || !isfinite(m))
+            return cf__error(diag, CF_STATUS_DEGENERATE, (long)i,
+                             "tridiagonal system is singular at row %zu "
+                             "(pivot %g)", i, m);
+        c[i] = i + 1 < n ? sup[i] / m : 0.0;
+        for (size_t k = 0; k < nrhs; k++) {
+            double r = rhs[i * nrhs + k];
+            if (i > 0)
+                r -= lower * rhs[(i - 1) * nrhs + k];
+            rhs[i * nrhs + k] = r / m;
+        }
+    }
+    for (size_t i = n - 1; i-- > 0;) {
+        for (size_t k = 0; k < nrhs; k++)
+            rhs[i * nrhs + k] -= c[i] * rhs[(i + 1) * nrhs + k];
+    }
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf__solve_tridiagonal(size_t n, const double *sub, const double *mid,
+                      const double *sup, double *rhs, size_t nrhs,
+                      cf_diag_t *diag)
+{
+    double *c;
+    cf_status_t st;
+    if (n == 0 || nrhs == 0)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "tridiagonal system of size %zu with %zu "
+                         "right-hand sides", n, nrhs);
+    c = cf__alloc_array(n, sizeof *c);
+    if (c == NULL)
+        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+                         "no memory for a tridiagonal system of size %zu", n);
+    st = thomas(n, sub, mid, sup, rhs, nrhs, c, diag);
+    cf__free(c);
+    return st;
+}
+
+/*
+** A = T + u v^T where A has the corner entries beta = A[0][n-1] = sub[0]
+** and alpha = A[n-1][0] = sup[n-1].  With gamma = -mid[0] (or -1):
+**     u = (gamma, 0, ..., 0, alpha),  v = (1, 0, ..., 0, beta / gamma),
+** T is tridiagonal with T[0][0] = mid[0] - gamma and
+** T[n-1][n-1] = mid[n-1] - alpha beta / gamma.  Then
+**     x = y - z (v.y) / (1 + v.z),  T y = rhs,  T z = u.
+*/
+cf_status_t
+cf__solve_cyclic_tridiagonal(size_t n, const double *sub, const double *mid,
+                             const double *sup, double *rhs, size_t nrhs,
+                             cf_diag_t *diag)
+{
+    double *work, *mid2, *z, *c;
+    double alpha, beta, gamma, denom;
+    cf_status_t st;
+    if (n < 3 || nrhs == 0)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "cyclic tridiagonal system needs size >= 3, "
+                         "got %zu (with %zu right-hand sides)", n, nrhs);
+    work = cf__alloc_array(n, 3 * sizeof *work);
+    if (work == NULL)
+        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+                         "no memory for a cyclic system of size %zu", n);
+    mid2 = work;
+    z = work + n;
+    c = work + 2 * n;
+    alpha = sup[n - 1];
+    beta = sub[0];
+    gamma = mid[0] != 0.0 ? -mid[0] : -1.0;
+    memcpy(mid2, mid, n * sizeof *mid2);
+    mid2[0] = mid[0] - gamma;
+    mid2[n - 1] = mid[n - 1] - alpha * beta / gamma;
+    st = thomas(n, sub, mid2, sup, rhs, nrhs, c, diag);
+    if (st == CF_STATUS_OK) {
+        memset(z, 0, n * sizeof *z);
+        z[0] = gamma;
+        z[n - 1] = alpha;
+        st = thomas(n, sub, mid2, sup, z, 1, c, diag);
+    }
+    if (st == CF_STATUS_OK) {
+        denom = 1.0 + z[0] + beta / gamma * z[n - 1];
+        if (!(fabs(denom) > 8.0 * DBL_EPSILON * (1.0 + fabs(z[0]) +
+                                                  fabs(beta / gamma *
+                                                       z[n - 1]))))
+            st = cf__error(diag, CF_STATUS_DEGENERATE, 0,
+                           "cyclic tridiagonal system is singular");
+    }
+    if (st == CF_STATUS_OK) {
+        for (size_t k = 0; k < nrhs; k++) {
+            double vy = rhs[k] + beta / gamma * rhs[(n - 1) * nrhs + k];
+            double f = vy / denom;
+            for (size_t i = 0; i < n; i++)
+                rhs[i * nrhs + k] -= f * z[i];
+        }
+    }
+    cf__free(work);
+    return st;
+}
+
+/* ---- banded LU ---------------------------------------------------------- */
+
+static double *
+band_at(const cf__band_t *b, size_t i, size_t j)
+{
+    assert(j + b->kl >= i && j <= i + b->ku + b->kl);
+    return &b->a[i * b->width + (j + b->kl - i)];
+}
+
+cf_status_t
+cf__band_init(cf__band_t *b, size_t n, size_t kl, size_t ku, cf_diag_t *diag)
+{
+    memset(b, 0, sizeof *b);
+    if (n == 0)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "banded system of size 0");
+    b->n = n;
+    b->kl = kl;
+    b->ku = ku;
+    b->width = 2 * kl + ku + 1;
+    b->a = cf__calloc(n, b->width * sizeof *b->a);
+    b->lower = kl > 0 ? cf__calloc(n, kl * sizeof *b->lower) : NULL;
+    b->pivot = cf__alloc_array(n, sizeof *b->pivot);
+    if (b->a == NULL || (kl > 0 && b->lower == NULL) || b->pivot == NULL) {
+        cf__band_fini(b);
+        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+                         "no memory for a banded system of size %zu", n);
+    }
+    return CF_STATUS_OK;
+}
+
+void
+cf__band_fini(cf__band_t *b)
+{
+    if (b == NULL)
+        return;
+    cf__free(b->a);
+    cf__free(b->lower);
+    cf__free(b->pivot);
+    memset(b, 0, sizeof *b);
+}
+
+void
+cf__band_set(cf__band_t *b, size_t i, size_t j, double v)
+{
+    assert(!b->factored && i < b->n && j < b->n);
+    assert(j + b->kl >= i && j <= i + b->ku);
+    *band_at(b, i, j) = v;
+}
+
+double
+cf__band_get(const cf__band_t *b, size_t i, size_t j)
+{
+    if (i >= b->n || j >= b->n || j + b->kl < i || j > i + b->ku)
+        return 0.0;
+    return *band_at(b, i, j);
+}
+
+cf_status_t
+cf__band_factor(cf__band_t *b, cf_diag_t *diag)
+{
+    size_t n = b->n, kl = b->kl, reach = b->ku + b->kl;
+    double scale = 0.0;
+    for (size_t i = 0; i < n * b->width; i++) {
+        if (!isfinite(b->a[i]))
+            return cf__error(diag, CF_STATUS_NOT_FINITE, (long)(i / b->width),
+                             "banded system has a non-finite entry in "
+                             "row %zu", i / b->width);
+        if (fabs(b->a[i]) > scale)
+            scale = fabs(b->a[i]);
+    }
+    for (size_t k = 0; k < n; k++) {
+        size_t last = k + kl < n ? k + kl : n - 1;
+        size_t jend = k + reach < n ? k + reach : n - 1;
+        size_t p = k;
+        double big = fabs(*band_at(b, k, k)), piv;
+        for (size_t i = k + 1; i <= last; i++) {
+            if (fabs(*band_at(b, i, k)) > big) {
+                big = fabs(*band_at(b, i, k));
+                p = i;
+            }
+        }
+        if (!(big > (double)n * DBL_EPSILON * scale))
+            return cf__error(diag, CF_STATUS_DEGENERATE, (long)k,
+                             "banded system is singular at row %zu "
+                             "(largest pivot %g)", k, big);
+        b->pivot[k] = p;
+        if (p != k) {
+            for (size_t j = k; j <= jend; j++) {
+                double t = *band_at(b, k, j);
+                *band_at(b, k, j) = *band_at(b, p, j);
+                *band_at(b, p, j) = t;
+            }
+        }
+        piv = *band_at(b, k, k);
+        for (size_t i = k + 1; i <= last; i++) {
+            double l = *band_at(b, i, k) / piv;
+            b->lower[k * kl + (i - k - 1)] = l;
+            *band_at(b, i, k) = 0.0;
+            if (l == 0.0)
+                continue;
+            for (size_t j = k + 1; j <= jend; j++)
+                *band_at(b, i, j) -= l * *band_at(b, k, j);
+        }
+    }
+    b->factored = 1;
+    return CF_STATUS_OK;
+}
+
+void
+cf__band_solve(const cf__band_t *b, double *rhs, size_t nrhs)
+{
+    size_t n = b->n, kl = b->kl, reach = b->ku + b->kl;
+    assert(b->factored);
+    for (size_t k = 0; k < n; k++) {
+        size_t p = b->pivot[k];
+        size_t last = k + kl < n ? k + kl : n - 1;
+        if (p != k) {
+            for (size_t c = 0; c < nrhs; c++) {
+                double t = rhs[k * nrhs + c];
+                rhs[k * nrhs + c] = rhs[p * nrhs + c];
+                rhs[p * nrhs + c] = t;
+            }
+        }
+        for (size_t i = k + 1; i <= last; i++) {
+            double l = b->lower[k * kl + (i - k - 1)];
+            for (size_t c = 0; c < nrhs; c++)
+                rhs[i * nrhs + c] -= l * rhs[k * nrhs + c];
+        }
+    }
+    for (size_t i = n; i-- > 0;) {
+        size_t jend = i + reach < n ? i + reach : n - 1;
+        double d = *band_at(b, i, i);
+        for (size_t c = 0; c < nrhs; c++) {
+            double s = rhs[i * nrhs + c];
+            for (size_t j = i + 1; j <= jend; j++)
+                s -= *band_at(b, i, j) * rhs[j * nrhs + c];
+            rhs[i * nrhs + c] = s / d;
+        }
+    }
+}
+
+/* ---- Householder least squares ----------------------------------------- */
+
+/*
+** Column k: v = a_k(k..m-1) - alpha e_1 with alpha = -sign(a_kk) |a_k|, so
+** that H = I - 2 v v^T / (v^T v) maps a_k onto alpha e_1 without
+** cancellation.  H is applied to the remaining columns of A and to B.
+*/
+cf_status_t
+cf__lsq_qr(size_t m, size_t n, double *A, double *B, size_t nrhs, double *x,
+           cf_diag_t *diag)
+{
+    double *v, maxnorm = 0.0;
+    if (n == 0 || m < n || nrhs == 0)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "least squares with %zu rows and %zu unknowns "
+                         "(need rows >= unknowns >= 1)", m, n);
+    for (size_t j = 0; j < n; j++) {
+        double s = 0.0;
+        for (size_t i = 0; i < m; i++)
+            s += A[i * n + j] * A[i * n + j];
+        if (!isfinite(s))
+            return cf__error(diag, CF_STATUS_NOT_FINITE, (long)j,
+                             "least-squares matrix column %zu is not "
+                             "finite", j);
+        if (sqrt(s) > maxnorm)
+            maxnorm = sqrt(s);
+    }
+    v = cf__alloc_array(m, sizeof *v);
+    if (v == NULL)
+        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+                         "no memory for least squares with %zu rows", m);
+    for (size_t k = 0; k < n; k++) {
+        double norm2 = 0.0, norm, alpha, vv;
+        for (size_t i = k; i < m; i++)
+            norm2 += A[i * n + k] * A[i * n + k];
+        norm = sqrt(norm2);
+        if (!(norm > (double)m * DBL_EPSILON * maxnorm)) {
+            cf__free(v);
+            return cf__error(diag, CF_STATUS_DEGENERATE, (long)k,
+                             "least-squares matrix is rank deficient: "
+                             "column %zu depends on the previous ones", k);
+        }
+        alpha = A[k * n + k] > 0.0 ? -norm : norm;
+        for (size_t i = k; i < m; i++)
+            v[i] = A[i * n + k];
+        v[k] -= alpha;
+        vv = norm2 - A[k * n + k] * A[k * n + k] + v[k] * v[k];
+        for (size_t j = k + 1; j < n; j++) {
+            double s = 0.0;
+            for (size_t i = k; i < m; i++)
+                s += v[i] * A[i * n + j];
+            s *= 2.0 / vv;
+            for (size_t i = k; i < m; i++)
+                A[i * n + j] -= s * v[i];
+        }
+        for (size_t c = 0; c < nrhs; c++) {
+            double s = 0.0;
+            for (size_t i = k; i < m; i++)
+                s += v[i] * B[i * nrhs + c];
+            s *= 2.0 / vv;
+            for (size_t i = k; i < m; i++)
+                B[i * nrhs + c] -= s * v[i];
+        }
+        A[k * n + k] = alpha;
+        for (size_t i = k + 1; i < m; i++)
+            A[i * n + k] = 0.0;
+    }
+    for (size_t i = n; i-- > 0;) {
+        for (size_t c = 0; c < nrhs; c++) {
+            double s = B[i * nrhs + c];
+            for (size_t j = i + 1; j < n; j++)
+                s -= A[i * n + j] * x[j * nrhs + c];
+            x[i * nrhs + c] = s / A[i * n + i];
+        }
+    }
+    cf__free(v);
+    return CF_STATUS_OK;
+}

@@ -1,0 +1,501 @@
+/* The linear solvers behind interpolation (src/linsolve.c). */
+#include <float.h>
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "curvefig/core.h"
+#include "../../src/core-private.h"
+#include "../../src/linsolve-private.h"
+#include "testutil.h"
+
+/*
+** Independent reference: dense Gaussian elimination with partial pivoting
+** on a copy (n <= 40), solving A x = b for nrhs columns.
+*/
+#define NMAX 40
+static void
+dense_solve(size_t n, const double *A, const double *b, size_t nrhs,
+            double *x)
+{
+    double M[NMAX][NMAX], R[NMAX][4];
+    assert_true(n <= NMAX && nrhs <= 4);
+    for (size_t i = 0; i < n; i++) {
+        for (size_t j = 0; j < n; j++)
+            M[i][j] = A[i * n + j];
+        for (size_t c = 0; c < nrhs; c++)
+            R[i][c] = b[i * nrhs + c];
+    }
+    for (size_t k = 0; k < n; k++) {
+        size_t p = k;
+        for (size_t i = k + 1; i < n; i++)
+            if (fabs(M[i][k]) > fabs(M[p][k]))
+                p = i;
+        for (size_t j = 0; j < n; j++) {
+            double t = M[k][j];
+            M[k][j] = M[p][j];
+            M[p][j] = t;
+        }
+        for (size_t c = 0; c < nrhs; c++) {
+            double t = R[k][c];
+            R[k][c] = R[p][c];
+            R[p][c] = t;
+        }
+        for (size_t i = k + 1; i < n; i++) {
+            double l = M[i][k] / M[k][k];
+            for (size_t j = k; j < n; j++)
+                M[i][j] -= l * M[k][j];
+            for (size_t c = 0; c < nrhs; c++)
+                R[i][c] -= l * R[k][c];
+        }
+    }
+    for (size_t i = n; i-- > 0;) {
+        for (size_t c = 0; c < nrhs; c++) {
+            double s = R[i][c];
+            for (size_t j = i + 1; j < n; j++)
+                s -= M[i][j] * x[j * nrhs + c];
+            x[i * nrhs + c] = s / M[i][i];
+        }
+    }
+}
+
+/* Scale of a solution vector, for relative comparisons. */
+static double
+max_abs(const double *v, size_t n)
+{
+    double m = 0.0;
+    for (size_t i = 0; i < n; i++)
+        if (fabs(v[i]) > m)
+            m = fabs(v[i]);
+    return m;
+}
+
+static void
+test_tridiagonal_by_hand(void **state)
+{
+    /* [2 1 0; 1 2 1; 0 1 2] x = (1, 0, 1): by symmetry x0 = x2, then
+    ** 2 x0 + x1 = 1 and 2 x0 + 2 x1 = 0 give x = (1, -1, 1).  A second
+    ** column (3, 4, 3) = A (1, 1, 1) checks several right-hand sides. */
+    const double sub[] = { 99, 1, 1 }, mid[] = { 2, 2, 2 },
+                 sup[] = { 1, 1, 99 };
+    double rhs[] = { 1, 3, 0, 4, 1, 3 };
+    const double want[] = { 1, 1, -1, 1, 1, 1 };
+    (void)state;
+    assert_int_equal(cf__solve_tridiagonal(3, sub, mid, sup, rhs, 2, NULL),
+                     CF_STATUS_OK);
+    /* the eliminations involve halves and thirds: within a few ulps */
+    for (int i = 0; i < 6; i++)
+        tu_assert_close(rhs[i], want[i], 8 * DBL_EPSILON, 1.0);
+}
+
+static void
+test_tridiagonal_random_against_dense(void **state)
+{
+    tu_rng r;
+    (void)state;
+    tu_rng_seed(&r, 81);
+    for (int trial = 0; trial < 50; trial++) {
+        size_t n = 1 + (size_t)(tu_rng_u01(&r) * 30);
+        double sub[NMAX], mid[NMAX], sup[NMAX], A[NMAX * NMAX] = { 0 };
+        double rhs[NMAX * 2], b[NMAX * 2], x[NMAX * 2];
+        for (size_t i = 0; i < n; i++) {
+            sub[i] = tu_rng_range(&r, -1, 1);
+            sup[i] = tu_rng_range(&r, -1, 1);
+            /* diagonally dominant, as the spline systems are */
+            mid[i] = (tu_rng_u01(&r) < 0.5 ? -1 : 1) *
+                     (2.0 + tu_rng_u01(&r));
+            if (i > 0)
+                A[i * n + i - 1] = sub[i];
+            A[i * n + i] = mid[i];
+            if (i + 1 < n)
+                A[i * n + i + 1] = sup[i];
+            b[2 * i] = rhs[2 * i] = tu_rng_range(&r, -5, 5);
+            b[2 * i + 1] = rhs[2 * i + 1] = tu_rng_range(&r, -5, 5);
+        }
+        assert_int_equal(cf__solve_tridiagonal(n, sub, mid, sup, rhs, 2,
+                                               NULL), CF_STATUS_OK);
+        dense_solve(n, A, b, 2, x);
+        /* condition number of a dominant tridiagonal matrix is < 4 here
+        ** (|mid| >= 2 > |sub| + |sup|): a few dozen ulps */
+        assert_true(tu_max_diff(rhs, x, 2 * n) <=
+                    64 * DBL_EPSILON * max_abs(x, 2 * n));
+    }
+}
+
+static void
+test_tridiagonal_singular(void **state)
+{
+    /* [1 1; 1 1] is singular: the second pivot is 1 - 1 * 1 = 0. */
+    const double sub[] = { 0, 1 }, mid[] = { 1, 1 }, sup[] = { 1, 0 };
+    double rhs[] = { 1, 2 };
+    cf_diag_t d;
+    (void)state;
+    cf_diag_clear(&d);
+    assert_int_equal(cf__solve_tridiagonal(2, sub, mid, sup, rhs, 1, &d),
+                     CF_STATUS_DEGENERATE);
+    assert_string_equal(d.msg,
+                        "tridiagonal system is singular at row 1 (pivot 0)");
+    assert_int_equal(d.index, 1);
+    cf_diag_clear(&d);
+    assert_int_equal(cf__solve_tridiagonal(0, sub, mid, sup, rhs, 1, &d),
+                     CF_STATUS_INVALID_ARG);
+    assert_string_equal(d.msg,
+                        "tridiagonal system of size 0 with 1 right-hand sides");
+}
+
+static void
+test_cyclic_by_hand(void **state)
+{
+    /* [4 1 1; 1 4 1; 1 1 4] x = (6, 6, 6) has x = (1, 1, 1) (each row sums
+    ** to 6); the second column (4, 1, 1) is A (1, 0, 0).  The corners
+    ** A[0][2] = sub[0] and A[2][0] = sup[2] are what makes it cyclic. */
+    const double sub[] = { 1, 1, 1 }, mid[] = { 4, 4, 4 },
+                 sup[] = { 1, 1, 1 };
+    double rhs[] = { 6, 4, 6, 1, 6, 1 };
+    const double want[] = { 1, 1, 1, 0, 1, 0 };
+    (void)state;
+    assert_int_equal(cf__solve_cyclic_tridiagonal(3, sub, mid, sup, rhs, 2,
+                                                  NULL), CF_STATUS_OK);
+    for (int i = 0; i < 6; i++)
+        tu_assert_close(rhs[i], want[i], 16 * DBL_EPSILON, 1.0);
+}
+
+static void
+test_cyclic_random_against_dense(void **state)
+{
+    tu_rng r;
+    (void)state;
+    tu_rng_seed(&r, 82);
+    for (int trial = 0; trial < 50; trial++) {
+        size_t n = 3 + (size_t)(tu_rng_u01(&r) * 30);
+        double sub[NMAX], mid[NMAX], sup[NMAX], A[NMAX * NMAX] = { 0 };
+        double rhs[NMAX * 3], b[NMAX * 3], x[NMAX * 3];
+        for (size_t i = 0; i < n; i++) {
+            sub[i] = tu_rng_range(&r, -1, 1);
+            sup[i] = tu_rng_range(&r, -1, 1);
+            mid[i] = (tu_rng_u01(&r) < 0.5 ? -1 : 1) *
+                     (2.0 + tu_rng_u01(&r));
+            A[i * n + (i + n - 1) % n] += sub[i];
+            A[i * n + i] += mid[i];
+            A[i * n + (i + 1) % n] += sup[i];
+            for (int c = 0; c < 3; c++)
+                b[3 * i + c] = rhs[3 * i + c] = tu_rng_range(&r, -5, 5);
+        }
+        assert_int_equal(cf__solve_cyclic_tridiagonal(n, sub, mid, sup, rhs,
+                                                      3, NULL),
+                         CF_STATUS_OK);
+        dense_solve(n, A, b, 3, x);
+        /* dominant again; Sherman-Morrison adds a few roundings */
+        assert_true(tu_max_diff(rhs, x, 3 * n) <=
+                    256 * DBL_EPSILON * max_abs(x, 3 * n));
+    }
+}
+
+static void
+test_cyclic_errors(void **state)
+{
+    /* too small; and all ones (3 x 3 of ones: rank 1) */
+    const double one[] = { 1, 1, 1, 1 };
+    double rhs[] = { 1, 2, 3, 4 };
+    cf_diag_t d;
+    (void)state;
+    cf_diag_clear(&d);
+    assert_int_equal(cf__solve_cyclic_tridiagonal(2, one, one, one, rhs, 1,
+                                                  &d),
+                     CF_STATUS_INVALID_ARG);
+    assert_string_equal(d.msg, "cyclic tridiagonal system needs size >= 3, "
+                               "got 2 (with 1 right-hand sides)");
+    cf_diag_clear(&d);
+    assert_int_equal(cf__solve_cyclic_tridiagonal(3, one, one, one, rhs, 1,
+                                                  &d),
+                     CF_STATUS_DEGENERATE);
+    assert_non_null(strstr(d.msg, "singular"));
+}
+
+static void
+fill_band(cf__band_t *b, double *A, size_t n, size_t kl, size_t ku,
+          tu_rng *r, int zero_diagonal)
+{
+    memset(A, 0, n * n * sizeof *A);
+    for (size_t i = 0; i < n; i++) {
+        for (size_t j = i >= kl ? i - kl : 0; j <= i + ku && j < n; j++) {
+            double v = tu_rng_range(r, -1, 1);
+            if (j == i)
+                v = zero_diagonal ? 0.0
+                                  : (v < 0 ? -1.0 : 1.0) * (double)(kl + ku + 1);
+            A[i * n + j] = v;
+            cf__band_set(b, i, j, v);
+        }
+    }
+}
+
+static void
+test_band_random_against_dense(void **state)
+{
+    tu_rng r;
+    (void)state;
+    tu_rng_seed(&r, 83);
+    for (int trial = 0; trial < 60; trial++) {
+        size_t n = 2 + (size_t)(tu_rng_u01(&r) * 25);
+        size_t kl = (size_t)(tu_rng_u01(&r) * 4), ku = (size_t)(tu_rng_u01(&r) * 4);
+        double A[NMAX * NMAX], b[NMAX * 2], rhs[NMAX * 2], x[NMAX * 2];
+        cf__band_t band;
+        if (kl == 0)
+            kl = 1; /* a zero diagonal needs somewhere to pivot from */
+        assert_int_equal(cf__band_init(&band, n, kl, ku, NULL), CF_STATUS_OK);
+        /* zero diagonal on every third trial: partial pivoting is needed;
+        ** otherwise a strictly dominant diagonal */
+        fill_band(&band, A, n, kl, ku, &r, trial % 3 == 0);
+        for (size_t i = 0; i < n; i++)
+            for (size_t j = 0; j < n; j++)
+                assert_true(cf__band_get(&band, i, j) == A[i * n + j]);
+        for (size_t i = 0; i < 2 * n; i++)
+            b[i] = rhs[i] = tu_rng_range(&r, -3, 3);
+        if (cf__band_factor(&band, NULL) != CF_STATUS_OK) {
+            /* a random zero-diagonal band can be singular: skip it */
+            cf__band_fini(&band);
+            continue;
+        }
+        cf__band_solve(&band, rhs, 2);
+        dense_solve(n, A, b, 2, x);
+        /* Random matrices can be ill-conditioned, so compare backward
+        ** errors: the normwise residual |A x - b| / (|A| |x| + |b|) (max
+        ** norms) of partial pivoting is a small multiple of n eps times
+        ** the growth factor, which a band of width <= 7 keeps small. */
+        for (size_t c = 0; c < 2; c++) {
+            double res = 0.0, anorm = 0.0, xnorm = 0.0, bnorm = 0.0;
+            for (size_t i = 0; i < n; i++) {
+                double s = -b[i * 2 + c], rowsum = 0.0;
+                for (size_t j = 0; j < n; j++) {
+                    s += A[i * n + j] * rhs[j * 2 + c];
+                    rowsum += fabs(A[i * n + j]);
+                }
+                res = fmax(res, fabs(s));
+                anorm = fmax(anorm, rowsum);
+                xnorm = fmax(xnorm, fabs(rhs[i * 2 + c]));
+                bnorm = fmax(bnorm, fabs(b[i * 2 + c]));
+            }
+            assert_true(res <= 64 * (double)n * DBL_EPSILON *
+                                   (anorm * xnorm + bnorm));
+        }
+        /* with a dominant diagonal (no zero-diagonal trial) the matrix is
+        ** well conditioned (|A^-1| <= 1), and the solution agrees with
+        ** dense elimination to a few dozen ulps */
+        if (trial % 3 != 0)
+            assert_true(tu_max_diff(rhs, x, 2 * n) <=
+                        64 * DBL_EPSILON * max_abs(x, 2 * n));
+        cf__band_fini(&band);
+    }
+}
+
+static void
+test_band_needs_pivoting(void **state)
+{
+    /* [0 1 0; 2 0 1; 0 3 1] x = (1, 3, 4): row 1 gives x1 = 1, then
+    ** 2 x0 + x2 = 3 and 3 + x2 = 4 give x2 = 1, x0 = 1.  The first pivot
+    ** is zero, so this only works with the row interchange. */
+    cf__band_t b;
+    double rhs[] = { 1, 3, 4 };
+    (void)state;
+    assert_int_equal(cf__band_init(&b, 3, 1, 1, NULL), CF_STATUS_OK);
+    cf__band_set(&b, 0, 1, 1);
+    cf__band_set(&b, 1, 0, 2);
+    cf__band_set(&b, 1, 2, 1);
+    cf__band_set(&b, 2, 1, 3);
+    cf__band_set(&b, 2, 2, 1);
+    assert_true(cf__band_get(&b, 0, 2) == 0.0); /* outside the band */
+    assert_true(cf__band_get(&b, 2, 0) == 0.0);
+    assert_int_equal(cf__band_factor(&b, NULL), CF_STATUS_OK);
+    cf__band_solve(&b, rhs, 1);
+    for (int i = 0; i < 3; i++)
+        tu_assert_close(rhs[i], 1.0, 4 * DBL_EPSILON, 1.0);
+    cf__band_fini(&b);
+    cf__band_fini(NULL);
+}
+
+static void
+test_band_errors(void **state)
+{
+    cf__band_t b;
+    cf_diag_t d;
+    (void)state;
+    cf_diag_clear(&d);
+    assert_int_equal(cf__band_init(&b, 0, 1, 1, &d), CF_STATUS_INVALID_ARG);
+    assert_string_equal(d.msg, "banded system of size 0");
+    /* [1 2; 2 4] is singular */
+    cf_diag_clear(&d);
+    assert_int_equal(cf__band_init(&b, 2, 1, 1, NULL), CF_STATUS_OK);
+    cf__band_set(&b, 0, 0, 1);
+    cf__band_set(&b, 0, 1, 2);
+    cf__band_set(&b, 1, 0, 2);
+    cf__band_set(&b, 1, 1, 4);
+    assert_int_equal(cf__band_factor(&b, &d), CF_STATUS_DEGENERATE);
+    assert_int_equal(d.index, 1);
+    assert_non_null(strstr(d.msg, "banded system is singular at row 1"));
+    cf__band_fini(&b);
+    /* a NaN entry */
+    cf_diag_clear(&d);
+    assert_int_equal(cf__band_init(&b, 2, 0, 1, NULL), CF_STATUS_OK);
+    cf__band_set(&b, 0, 0, 1);
+    cf__band_set(&b, 1, 1, NAN);
+    assert_int_equal(cf__band_factor(&b, &d), CF_STATUS_NOT_FINITE);
+    assert_string_equal(d.msg, "banded system has a non-finite entry in row 1");
+    cf__band_fini(&b);
+}
+
+static void
+test_lsq_by_hand(void **state)
+{
+    /* Fit y = a + b x to (0, 0), (1, 1), (2, 1).  Normal equations
+    ** [3 3; 3 5] (a, b) = (2, 3): a = (10 - 9) / 6 = 1/6, b = (9 - 6) / 6
+    ** = 1/2.  Second column: exact data y = 1 + 2 x gives (1, 2). */
+    double A[] = { 1, 0, 1, 1, 1, 2 };
+    double B[] = { 0, 1, 1, 3, 1, 5 };
+    double x[4];
+    (void)state;
+    assert_int_equal(cf__lsq_qr(3, 2, A, B, 2, x, NULL), CF_STATUS_OK);
+    /* Householder QR is backward stable; this matrix has condition ~ 4 */
+    tu_assert_close(x[0], 1.0 / 6.0, 16 * DBL_EPSILON, 1.0);
+    tu_assert_close(x[2], 0.5, 16 * DBL_EPSILON, 1.0);
+    tu_assert_close(x[1], 1.0, 16 * DBL_EPSILON, 1.0);
+    tu_assert_close(x[3], 2.0, 16 * DBL_EPSILON, 1.0);
+}
+
+static void
+test_lsq_random_normal_equations(void **state)
+{
+    tu_rng r;
+    (void)state;
+    tu_rng_seed(&r, 84);
+    for (int trial = 0; trial < 40; trial++) {
+        size_t n = 1 + (size_t)(tu_rng_u01(&r) * 8);
+        size_t m = n + (size_t)(tu_rng_u01(&r) * 20);
+        double A[40 * 10], A2[40 * 10], B[40 * 2], B2[40 * 2], x[20];
+        double N[10 * 10], rhs[10 * 2], xn[20];
+        for (size_t i = 0; i < m * n; i++)
+            A[i] = A2[i] = tu_rng_range(&r, -1, 1);
+        for (size_t i = 0; i < m * 2; i++)
+            B[i] = B2[i] = tu_rng_range(&r, -1, 1);
+        assert_int_equal(cf__lsq_qr(m, n, A, B, 2, x, NULL), CF_STATUS_OK);
+        /* the residual is orthogonal to the columns: A^T (A x - B) = 0 */
+        for (size_t j = 0; j < n; j++) {
+            for (size_t c = 0; c < 2; c++) {
+                double s = 0.0, scale = 0.0;
+                for (size_t i = 0; i < m; i++) {
+                    double res = -B2[i * 2 + c];
+                    for (size_t k = 0; k < n; k++)
+                        res += A2[i * n + k] * x[k * 2 + c];
+                    s += A2[i * n + j] * res;
+                    scale += fabs(A2[i * n + j]) * (fabs(B2[i * 2 + c]) + 1);
+                }
+                assert_true(fabs(s) <= 1e3 * DBL_EPSILON * scale);
+            }
+        }
+        /* and agrees with the normal equations A^T A x = A^T B solved
+        ** densely, when those are well conditioned (m >= n + 3 random) */
+        if (m < n + 3)
+            continue;
+        for (size_t j = 0; j < n; j++) {
+            for (size_t k = 0; k < n; k++) {
+                double s = 0.0;
+                for (size_t i = 0; i < m; i++)
+                    s += A2[i * n + j] * A2[i * n + k];
+                N[j * n + k] = s;
+            }
+            for (size_t c = 0; c < 2; c++) {
+                double s = 0.0;
+                for (size_t i = 0; i < m; i++)
+                    s += A2[i * n + j] * B2[i * 2 + c];
+                rhs[j * 2 + c] = s;
+            }
+        }
+        dense_solve(n, N, rhs, 2, xn);
+        /* normal equations square the condition number: loose bound */
+        assert_true(tu_max_diff(x, xn, 2 * n) <= 1e-8 * (1 + max_abs(xn, 2 * n)));
+    }
+}
+
+static void
+test_lsq_errors(void **state)
+{
+    /* two equal columns: rank 1 */
+    double A[] = { 1, 1, 2, 2, 3, 3 }, B[] = { 1, 2, 3 }, x[2];
+    cf_diag_t d;
+    (void)state;
+    cf_diag_clear(&d);
+    assert_int_equal(cf__lsq_qr(3, 2, A, B, 1, x, &d), CF_STATUS_DEGENERATE);
+    assert_string_equal(d.msg, "least-squares matrix is rank deficient: "
+                               "column 1 depends on the previous ones");
+    cf_diag_clear(&d);
+    assert_int_equal(cf__lsq_qr(1, 2, A, B, 1, x, &d), CF_STATUS_INVALID_ARG);
+    assert_string_equal(d.msg, "least squares with 1 rows and 2 unknowns "
+                               "(need rows >= unknowns >= 1)");
+    cf_diag_clear(&d);
+    A[3] = INFINITY;
+    assert_int_equal(cf__lsq_qr(3, 2, A, B, 1, x, &d), CF_STATUS_NOT_FINITE);
+    assert_string_equal(d.msg, "least-squares matrix column 1 is not finite");
+}
+
+/* Every allocation of every solver fails in turn; nothing leaks. */
+static void
+test_out_of_memory(void **state)
+{
+    const double sub[] = { 1, 1, 1 }, mid[] = { 4, 4, 4 },
+                 sup[] = { 1, 1, 1 };
+    (void)state;
+    for (long k = 1;; k++) {
+        double rhs[] = { 6, 6, 6 };
+        double A[] = { 1, 0, 1, 1, 1, 2 }, B[] = { 0, 1, 1 }, x[2];
+        cf__band_t b;
+        cf_status_t s1, s2, s3, s4;
+        cf_diag_t d;
+        tu_fail_alloc_after(k);
+        s1 = cf__solve_tridiagonal(3, sub, mid, sup, rhs, 1, NULL);
+        s2 = cf__solve_cyclic_tridiagonal(3, sub, mid, sup, rhs, 1, NULL);
+        cf_diag_clear(&d);
+        s3 = cf__band_init(&b, 3, 1, 1, &d);
+        if (s3 == CF_STATUS_OK)
+            cf__band_fini(&b);
+        else
+            assert_string_equal(d.msg,
+                                "no memory for a banded system of size 3");
+        s4 = cf__lsq_qr(3, 2, A, B, 1, x, NULL);
+        tu_fail_alloc_reset();
+        assert_int_equal(tu_alloc_live(), 0);
+        assert_true(s1 == CF_STATUS_OK || s1 == CF_STATUS_NO_MEMORY);
+        assert_true(s2 == CF_STATUS_OK || s2 == CF_STATUS_NO_MEMORY);
+        assert_true(s3 == CF_STATUS_OK || s3 == CF_STATUS_NO_MEMORY);
+        assert_true(s4 == CF_STATUS_OK || s4 == CF_STATUS_NO_MEMORY);
+        if (s1 == CF_STATUS_OK && s2 == CF_STATUS_OK && s3 == CF_STATUS_OK &&
+            s4 == CF_STATUS_OK)
+            break;
+        assert_true(k < 100);
+    }
+}
+
+int
+main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_tridiagonal_by_hand),
+        cmocka_unit_test(test_tridiagonal_random_against_dense),
+        cmocka_unit_test(test_tridiagonal_singular),
+        cmocka_unit_test(test_cyclic_by_hand),
+        cmocka_unit_test(test_cyclic_random_against_dense),
+        cmocka_unit_test(test_cyclic_errors),
+        cmocka_unit_test(test_band_random_against_dense),
+        cmocka_unit_test(test_band_needs_pivoting),
+        cmocka_unit_test(test_band_errors),
+        cmocka_unit_test(test_lsq_by_hand),
+        cmocka_unit_test(test_lsq_random_normal_equations),
+        cmocka_unit_test(test_lsq_errors),
+        cmocka_unit_test(test_out_of_memory),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

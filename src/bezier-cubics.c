@@ -1,0 +1,199 @@
+/*
+** Conversion of a Bézier curve to a chain of polynomial cubic segments (for
+** path output: SVG `C`, PDF `c`, cairo_curve_to).
+**
+** Degree <= 3 polynomial curves are converted exactly (degree raised to 3).
+** Anything else is fitted piece by piece: on [a, b] the cubic Hermite
+** interpolant of the end points and end derivatives (scaled by b - a), i.e.
+** P1 = c(a) + (b-a)/3 c'(a), P2 = c(b) - (b-a)/3 c'(b).  Its distance to the
+** curve is measured as max |H(u) - c(a + u (b-a))| over SAMPLES + 1 evenly
+** spaced u, which bounds the distance between the two curves from above at
+** those samples (a parametric correspondence); pieces above tol are halved.
+*/
+#include <math.h>
+#include <string.h>
+
+#include "bezier-private.h"
+
+#define SAMPLES 48        /* samples per piece for the error measure */
+#define MAX_DEPTH 40      /* halvings of [0, 1] */
+#define MAX_SEGMENTS 1000000
+
+typedef struct fit {
+    const cf_bezier_t *c;
+    double tol;
+    size_t dim;
+    double *pts, *t;      /* growing result arrays */
+    size_t count, cap;
+    double max_error;
+    double *work;         /* 5 * dim doubles */
+} fit;
+
+static void
+point_and_deriv(const cf_bezier_t *c, double t, double *p, double *d)
+{
+    double res[2];
+    for (size_t k = 0; k < c->dim; k++) {
+        cf__bezier_coord_derivs(c, k, t, 1, res);
+        p[k] = res[0];
+        d[k] = res[1];
+    }
+}
+
+static cf_status_t
+push(fit *f, const double *seg, double a, double b)
+{
+    if (f->count == f->cap) {
+        size_t cap = f->cap ? 2 * f->cap : 16;
+        double *p = cf__realloc_array(f->pts, cap, 4 * f->dim * sizeof *p);
+        double *t;
+        if (p == NULL)
+            return CF_STATUS_NO_MEMORY;
+        f->pts = p;
+        t = cf__realloc_array(f->t, cap + 1, sizeof *t);
+        if (t == NULL)
+            return CF_STATUS_NO_MEMORY;
+        f->t = t;
+        f->cap = cap;
+    }
+    memcpy(f->pts + f->count * 4 * f->dim, seg, 4 * f->dim * sizeof *seg);
+    if (f->count == 0)
+        f->t[0] = a;
+    f->t[f->count + 1] = b;
+    f->count++;
+    return CF_STATUS_OK;
+}
+
+/* The fitted cubic on [a, b] into seg[4 * dim]; its measured error. */
+static double
+fit_piece(fit *f, double a, double b, double *seg)
+{
+    size_t dim = f->dim;
+    double *d0 = f->work, *d1 = f->work + dim, *q = f->work + 2 * dim;
+    double h = b - a, err = 0.0;
+
+    point_and_deriv(f->c, a, seg, d0);
+    point_and_deriv(f->c, b, seg + 3 * dim, d1);
+    for (size_t k = 0; k < dim; k++) {
+        seg[dim + k] = seg[k] + h / 3.0 * d0[k];
+        seg[2 * dim + k] = seg[3 * dim + k] - h / 3.0 * d1[k];
+    }
+    for (int i = 1; i < SAMPLES; i++) {
+        double u = (double)i / SAMPLES, s = 1.0 - u, e2 = 0.0;
+        double b0 = s * s * s, b1 = 3 * s * s * u, b2 = 3 * s * u * u,
+               b3 = u * u * u;
+        cf__bezier_eval_point(f->c, a + u * h, q);
+        for (size_t k = 0; k < dim; k++) {
+            double hk = b0 * seg[k] + b1 * seg[dim + k] +
+                        b2 * seg[2 * dim + k] + b3 * seg[3 * dim + k];
+            e2 += (hk - q[k]) * (hk - q[k]);
+        }
+        err = fmax(err, sqrt(e2));
+    }
+    return err;
+}
+
+static cf_status_t
+fit_range(fit *f, double a, double b, int depth, double *seg)
+{
+    double err = fit_piece(f, a, b, seg);
+    cf_status_t st;
+    if (err <= f->tol) {
+        f->max_error = fmax(f->max_error, err);
+        return push(f, seg, a, b);
+    }
+    if (depth >= MAX_DEPTH || f->count >= MAX_SEGMENTS)
+        return CF_STATUS_NO_CONVERGENCE;
+    st = fit_range(f, a, 0.5 * (a + b), depth + 1, seg);
+    if (st != CF_STATUS_OK)
+        return st;
+    return fit_range(f, 0.5 * (a + b), b, depth + 1, seg);
+}
+
+cf_status_t
+cf_bezier_to_cubics(const cf_bezier_t *c, double tol, cf_cubics_t **out,
+                    cf_diag_t *diag)
+{
+    cf_cubics_t *r;
+    fit f;
+    double *seg;
+    cf_status_t st;
+
+    if (out == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "the output pointer is NULL");
+    *out = NULL;
+    if (c == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "the curve is NULL");
+    if (!(tol > 0.0) || !isfinite(tol))
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "tolerance %g must be finite and positive", tol);
+    r = cf__calloc(1, sizeof *r);
+    if (r == NULL)
+        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+                         "out of memory (cubic segments)");
+    r->dim = c->dim;
+    if (!c->rational && c->degree <= 3) {
+        r->pts = cf__alloc_array(4 * c->dim, sizeof *r->pts);
+        r->t = cf__alloc_array(2, sizeof *r->t);
+        if (r->pts == NULL || r->t == NULL) {
+            cf_cubics_destroy(r);
+            return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+                             "out of memory (cubic segments)");
+        }
+        memcpy(r->pts, c->pts,
+               ((size_t)c->degree + 1) * c->dim * sizeof *r->pts);
+        if (c->degree == 0)
+            memcpy(r->pts + c->dim, c->pts, c->dim * sizeof *r->pts);
+        /* raise to 3: degree 0 is first made a segment (degree 1) */
+        {
+            int from = c->degree == 0 ? 1 : c->degree;
+            cf__elevate_in_place(r->pts, c->dim, from, 3 - from);
+        }
+        r->count = 1;
+        r->t[0] = 0.0;
+        r->t[1] = 1.0;
+        r->max_error = 0.0;
+        *out = r;
+        return CF_STATUS_OK;
+    }
+    memset(&f, 0, sizeof f);
+    f.c = c;
+    f.tol = tol;
+    f.dim = c->dim;
+    f.work = cf__alloc_array(7 * c->dim, sizeof *f.work);
+    if (f.work == NULL) {
+        cf__free(r);
+        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+                         "out of memory (cubic segments)");
+    }
+    seg = f.work + 3 * c->dim;
+    st = fit_range(&f, 0.0, 1.0, 0, seg);
+    cf__free(f.work);
+    if (st != CF_STATUS_OK) {
+        cf__free(f.pts);
+        cf__free(f.t);
+        cf__free(r);
+        if (st == CF_STATUS_NO_MEMORY)
+            return cf__error(diag, st, -1, "out of memory (cubic segments)");
+        return cf__error(diag, st, -1,
+                         "no cubic fit within %g after %d halvings", tol,
+                         MAX_DEPTH);
+    }
+    r->pts = f.pts;
+    r->t = f.t;
+    r->count = f.count;
+    r->max_error = f.max_error;
+    *out = r;
+    return CF_STATUS_OK;
+}
+
+void
+cf_cubics_destroy(cf_cubics_t *cubics)
+{
+    if (cubics == NULL)
+        return;
+    cf__free(cubics->pts);
+    cf__free(cubics->t);
+    cf__free(cubics);
+}

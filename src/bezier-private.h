@@ -1,0 +1,80 @@
+/*
+** Internals of the Bézier module shared with other core modules (B-splines,
+** offsets, conics): the object layout and fast constructors that skip the
+** input checks of the public API.
+*/
+#ifndef CURVEFIG_BEZIER_PRIVATE_H
+#define CURVEFIG_BEZIER_PRIVATE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "curvefig/bezier.h"
+#include "core-private.h"
+
+/*
+** One allocation: the header followed by (degree + 1) * hdim doubles.
+** hdim = dim + 1 for a rational curve (homogeneous (w x, w)), dim otherwise.
+*/
+struct cf_bezier {
+    size_t dim;      /* Cartesian dimension N >= 1 */
+    size_t hdim;     /* doubles per stored point: dim + rational */
+    int degree;      /* 0 .. CF_BEZIER_MAX_DEGREE */
+    bool rational;
+    double pts[];    /* (degree + 1) * hdim */
+};
+
+/* A curve with uninitialised points (fill c->pts), or NULL when out of
+** memory or when the sizes overflow.  No other checks. */
+cf_bezier_t *cf__bezier_new(size_t dim, int degree, bool rational);
+
+/* A curve whose stored points are copied from hpts ((degree + 1) * hdim
+** doubles, homogeneous when rational).  No checks of the values: for
+** callers that produce valid points themselves.  Reports NO_MEMORY only. */
+cf_status_t cf__bezier_from_hpoints(size_t dim, int degree, bool rational,
+                                    const double *hpts, cf_bezier_t **out,
+                                    cf_diag_t *diag);
+
+/* A list of count NULL items (t0/t1 allocated when with_params). */
+cf_bezier_list_t *cf__bezier_list_new(size_t count, bool with_params);
+
+/* de Casteljau on one coordinate: v[0..n] (destroyed) at t; returns c(t). */
+double cf__decasteljau_1(double *v, int n, double t);
+
+/* Evaluate the stored (homogeneous when rational) point at t into
+** out[hdim], by de Casteljau, without allocating. */
+void cf__bezier_eval_h(const cf_bezier_t *c, double t, double *out);
+
+/* The Cartesian point at t into out[dim] by de Casteljau; no checks. */
+void cf__bezier_eval_point(const cf_bezier_t *c, double t, double *out);
+
+/* Derivatives 0..k (k <= CF_BEZIER_MAX_DEGREE) of Cartesian coordinate
+** `coord` at t into res[k + 1], exact (quotient rule for rational). */
+void cf__bezier_coord_derivs(const cf_bezier_t *c, size_t coord, double t,
+                             int k, double *res);
+
+/* Largest |coordinate| of the Cartesian control points (the curve's size,
+** used for relative tolerances). */
+double cf__bezier_size(const cf_bezier_t *c);
+
+/* Split stored points src (degree n, hdim doubles each) at t into left and
+** right (either may be NULL; left may not alias src, right may). */
+void cf__split_h(const double *src, size_t hdim, int n, double t,
+                 double *left, double *right);
+
+/* Batch evaluation of points (no checks; t already validated): a fast
+** Horner-Bernstein scheme for polynomial curves of low degree, de Casteljau
+** otherwise.  Never allocates. */
+cf_status_t cf__bezier_eval_many_fast(const cf_bezier_t *c, const double *t,
+                                      size_t n, double *out);
+/* The k-th derivative (k >= 1) at many parameters by the fast scheme on the
+** hodograph; returns false (doing nothing) when the fast scheme does not
+** apply (rational or high degree). */
+bool cf__bezier_deriv_many_fast(const cf_bezier_t *c, int k, const double *t,
+                                size_t n, double *out);
+
+/* Elevate pts (degree m, stored with room for degree m + r, hdim doubles
+** per point) r times, in place: Q_i = i/(m+1) P_{i-1} + (1 - i/(m+1)) P_i. */
+void cf__elevate_in_place(double *pts, size_t hdim, int m, int r);
+
+#endif

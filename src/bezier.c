@@ -1,0 +1,1073 @@
+/*
+** Bézier curves in R^N, polynomial and rational: construction, queries,
+** evaluation (de Casteljau), derivatives, subdivision, reversal, affine
+** maps, degree elevation and the derivative as a curve.
+**
+** Rational curves are stored homogeneously, (w x, w); every construction
+** below runs on the stored points unchanged and divides by w only when a
+** Cartesian point is returned.
+*/
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "bezier-private.h"
+
+#define MAXN CF_BEZIER_MAX_DEGREE
+
+/* ---- allocation ----------------------------------------------------------- */
+
+cf_bezier_t *
+cf__bezier_new(size_t dim, int degree, bool rational)
+{
+    size_t hdim, npts, bytes;
+    cf_bezier_t *c;
+
+    if (dim == 0 || degree < 0 || dim > SIZE_MAX / 16)
+        return NULL;
+    hdim = dim + (rational ? 1u : 0u);
+    npts = (size_t)degree + 1;
+    if (hdim > (SIZE_MAX - sizeof *c) / sizeof(double) / npts)
+        return NULL;
+    bytes = sizeof *c + npts * hdim * sizeof(double);
+    c = cf__malloc(bytes);
+    if (c == NULL)
+        return NULL;
+    c->dim = dim;
+    c->hdim = hdim;
+    c->degree = degree;
+    c->rational = rational;
+    return c;
+}
+
+cf_status_t
+cf__bezier_from_hpoints(size_t dim, int degree, bool rational,
+                        const double *hpts, cf_bezier_t **out,
+                        cf_diag_t *diag)
+{
+    cf_bezier_t *c = cf__bezier_new(dim, degree, rational);
+    if (c == NULL)
+        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+                         "out of memory for a curve of degree %d in R^%zu",
+                         degree, dim);
+    memcpy(c->pts, hpts, ((size_t)degree + 1) * c->hdim * sizeof(double));
+    *out = c;
+    return CF_STATUS_OK;
+}
+
+static cf_status_t
+no_memory(cf_diag_t *diag, const char *what)
+{
+    return cf__error(diag, CF_STATUS_NO_MEMORY, -1, "out of memory (%s)",
+                     what);
+}
+
+static cf_status_t
+check_common(size_t dim, int degree, const void *pts, cf_bezier_t **out,
+             cf_diag_t *diag)
+{
+    if (out == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "the output pointer is NULL");
+    *out = NULL;
+    if (dim < 1)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "dimension is 0; it must be at least 1");
+    if (degree < 0 || degree > MAXN)
+        return cf__error(diag, CF_STATUS_BAD_DEGREE, -1,
+                         "degree %d is outside 0..%d", degree, MAXN);
+    if (pts == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "the point array is NULL");
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_bezier_create(size_t dim, int degree, const double *points,
+                 const double *weights, cf_bezier_t **out, cf_diag_t *diag)
+{
+    cf_status_t st = check_common(dim, degree, points, out, diag);
+    size_t np;
+    cf_bezier_t *c;
+
+    if (st != CF_STATUS_OK)
+        return st;
+    np = (size_t)degree + 1;
+    st = cf__check_finite_points(points, np, dim, dim, "point", diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    if (weights != NULL) {
+        st = cf__check_weights(weights, np, diag);
+        if (st != CF_STATUS_OK)
+            return st;
+    }
+    c = cf__bezier_new(dim, degree, weights != NULL);
+    if (c == NULL)
+        return no_memory(diag, "curve");
+    for (size_t i = 0; i < np; i++) {
+        double w = weights != NULL ? weights[i] : 1.0;
+        for (size_t k = 0; k < dim; k++)
+            c->pts[i * c->hdim + k] = w * points[i * dim + k];
+        if (weights != NULL)
+            c->pts[i * c->hdim + dim] = w;
+    }
+    /* w * x may overflow although both are finite */
+    st = cf__check_finite_points(c->pts, np, c->hdim, c->hdim,
+                                 "weighted point", diag);
+    if (st != CF_STATUS_OK) {
+        cf__free(c);
+        return st;
+    }
+    *out = c;
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_bezier_create_homogeneous(size_t dim, int degree, const double *hpoints,
+                             cf_bezier_t **out, cf_diag_t *diag)
+{
+    cf_status_t st = check_common(dim, degree, hpoints, out, diag);
+    size_t np;
+
+    if (st != CF_STATUS_OK)
+        return st;
+    if (dim > SIZE_MAX / 16)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "dimension %zu is too large", dim);
+    np = (size_t)degree + 1;
+    st = cf__check_finite_points(hpoints, np, dim + 1, dim + 1, "point",
+                                 diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    for (size_t i = 0; i < np; i++) {
+        double w = hpoints[i * (dim + 1) + dim];
+        if (!(w > 0.0))
+            return cf__error(diag, CF_STATUS_BAD_WEIGHT, (long)i,
+                             "weight %zu is %g; weights must be finite "
+                             "and positive", i, w);
+    }
+    return cf__bezier_from_hpoints(dim, degree, true, hpoints, out, diag);
+}
+
+cf_status_t
+cf_bezier_copy(const cf_bezier_t *c, cf_bezier_t **out, cf_diag_t *diag)
+{
+    if (out == NULL || c == NULL) {
+        if (out != NULL)
+            *out = NULL;
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "the curve or the output pointer is NULL");
+    }
+    *out = NULL;
+    return cf__bezier_from_hpoints(c->dim, c->degree, c->rational, c->pts,
+                                   out, diag);
+}
+
+void
+cf_bezier_destroy(cf_bezier_t *c)
+{
+    cf__free(c);
+}
+
+/* ---- queries ------------------------------------------------------------- */
+
+size_t
+cf_bezier_dim(const cf_bezier_t *c)
+{
+    return c != NULL ? c->dim : 0;
+}
+
+int
+cf_bezier_degree(const cf_bezier_t *c)
+{
+    return c != NULL ? c->degree : 0;
+}
+
+bool
+cf_bezier_is_rational(const cf_bezier_t *c)
+{
+    return c != NULL && c->rational;
+}
+
+const double *
+cf_bezier_hpoints(const cf_bezier_t *c)
+{
+    return c != NULL ? c->pts : NULL;
+}
+
+void
+cf_bezier_get_points(const cf_bezier_t *c, double *out)
+{
+    if (c == NULL || out == NULL)
+        return;
+    for (int i = 0; i <= c->degree; i++) {
+        const double *p = c->pts + (size_t)i * c->hdim;
+        double w = c->rational ? p[c->dim] : 1.0;
+        for (size_t k = 0; k < c->dim; k++)
+            out[(size_t)i * c->dim + k] = c->rational ? p[k] / w : p[k];
+    }
+}
+
+void
+cf_bezier_get_weights(const cf_bezier_t *c, double *out)
+{
+    if (c == NULL || out == NULL)
+        return;
+    for (int i = 0; i <= c->degree; i++)
+        out[i] = c->rational ? c->pts[(size_t)i * c->hdim + c->dim] : 1.0;
+}
+
+double
+cf__bezier_size(const cf_bezier_t *c)
+{
+    double m = 0.0;
+    for (int i = 0; i <= c->degree; i++) {
+        const double *p = c->pts + (size_t)i * c->hdim;
+        double w = c->rational ? p[c->dim] : 1.0;
+        for (size_t k = 0; k < c->dim; k++)
+            m = fmax(m, fabs(p[k] / w));
+    }
+    return m;
+}
+
+/* ---- evaluation ---------------------------------------------------------- */
+
+static cf_status_t
+check_param(double t)
+{
+    if (!isfinite(t))
+        return CF_STATUS_NOT_FINITE;
+    if (t < 0.0 || t > 1.0)
+        return CF_STATUS_DOMAIN;
+    return CF_STATUS_OK;
+}
+
+double
+cf__decasteljau_1(double *v, int n, double t)
+{
+    double s = 1.0 - t;
+    for (int r = n; r > 0; r--)
+        for (int i = 0; i < r; i++)
+            v[i] = s * v[i] + t * v[i + 1];
+    return v[0];
+}
+
+void
+cf__bezier_eval_h(const cf_bezier_t *c, double t, double *out)
+{
+    double v[MAXN + 1];
+    int n = c->degree;
+    for (size_t k = 0; k < c->hdim; k++) {
+        for (int i = 0; i <= n; i++)
+            v[i] = c->pts[(size_t)i * c->hdim + k];
+        out[k] = cf__decasteljau_1(v, n, t);
+    }
+}
+
+void
+cf__bezier_eval_point(const cf_bezier_t *c, double t, double *out)
+{
+    double v[MAXN + 1], w = 1.0;
+    int n = c->degree;
+    if (c->rational) {
+        for (int i = 0; i <= n; i++)
+            v[i] = c->pts[(size_t)i * c->hdim + c->dim];
+        w = cf__decasteljau_1(v, n, t);
+    }
+    for (size_t k = 0; k < c->dim; k++) {
+        for (int i = 0; i <= n; i++)
+            v[i] = c->pts[(size_t)i * c->hdim + k];
+        out[k] = cf__decasteljau_1(v, n, t);
+        if (c->rational)
+            out[k] /= w;
+    }
+}
+
+cf_status_t
+cf_bezier_eval(const cf_bezier_t *c, double t, double *out)
+{
+    cf_status_t st;
+    if (c == NULL || out == NULL)
+        return CF_STATUS_INVALID_ARG;
+    st = check_param(t);
+    if (st != CF_STATUS_OK)
+        return st;
+    cf__bezier_eval_point(c, t, out);
+    return CF_STATUS_OK;
+}
+
+/*
+** Derivatives 0..kk of a polynomial of degree n with Bernstein coefficients
+** v[0..n] (destroyed) at t: de Casteljau down to level n - kk, then the j-th
+** derivative is n!/(n-j)! times de Casteljau of the j-th forward
+** differences of those kk + 1 points (differences commute with de
+** Casteljau's convex combinations).
+*/
+static void
+poly_derivs(double *v, int n, double t, int kk, double *res)
+{
+    double tmp[MAXN + 1], s = 1.0 - t, fac = 1.0;
+    for (int r = n; r > kk; r--)
+        for (int i = 0; i < r; i++)
+            v[i] = s * v[i] + t * v[i + 1];
+    for (int j = 0; j <= kk; j++) {
+        int m = kk - j;
+        memcpy(tmp, v, ((size_t)m + 1) * sizeof tmp[0]);
+        res[j] = fac * cf__decasteljau_1(tmp, m, t);
+        fac *= (double)(n - j);
+        for (int i = 0; i < m; i++)
+            v[i] = v[i + 1] - v[i];
+    }
+}
+
+void
+cf__bezier_coord_derivs(const cf_bezier_t *c, size_t coord, double t, int k,
+                        double *res)
+{
+    double v[MAXN + 1], wd[MAXN + 1], binom[MAXN + 2];
+    int n = c->degree, kk = k < n ? k : n;
+
+    for (int i = 0; i <= n; i++)
+        v[i] = c->pts[(size_t)i * c->hdim + coord];
+    poly_derivs(v, n, t, kk, res);
+    for (int j = kk + 1; j <= k; j++)
+        res[j] = 0.0;
+    if (!c->rational)
+        return;
+    for (int i = 0; i <= n; i++)
+        v[i] = c->pts[(size_t)i * c->hdim + c->dim];
+    poly_derivs(v, n, t, kk, wd);
+    /* A = w x  =>  x^(m) = (A^(m) - sum_{j=1..m} C(m,j) w^(j) x^(m-j)) / w */
+    binom[0] = 1.0;
+    for (int m = 0; m <= k; m++) {
+        double a = res[m];
+        int jmax = m < kk ? m : kk;
+        if (m > 0) {
+            binom[m] = 1.0;
+            for (int j = m - 1; j > 0; j--)
+                binom[j] += binom[j - 1];
+        }
+        for (int j = 1; j <= jmax; j++)
+            a -= binom[j] * wd[j] * res[m - j];
+        res[m] = a / wd[0];
+    }
+}
+
+cf_status_t
+cf_bezier_eval_derivs(const cf_bezier_t *c, double t, int k, double *out)
+{
+    double res[MAXN + 1];
+    cf_status_t st;
+    if (c == NULL || out == NULL || k < 0)
+        return CF_STATUS_INVALID_ARG;
+    if (k > MAXN)
+        return CF_STATUS_BAD_DEGREE;
+    st = check_param(t);
+    if (st != CF_STATUS_OK)
+        return st;
+    for (size_t d = 0; d < c->dim; d++) {
+        cf__bezier_coord_derivs(c, d, t, k, res);
+        for (int j = 0; j <= k; j++)
+            out[(size_t)j * c->dim + d] = res[j];
+    }
+    return CF_STATUS_OK;
+}
+
+static cf_status_t
+check_params(const double *t, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        cf_status_t st = check_param(t[i]);
+        if (st != CF_STATUS_OK)
+            return st;
+    }
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_bezier_eval_deriv_many(const cf_bezier_t *c, int k, const double *t,
+                          size_t n, double *out)
+{
+    double res[MAXN + 1];
+    cf_status_t st;
+    if (c == NULL || (n > 0 && (t == NULL || out == NULL)) || k < 0)
+        return CF_STATUS_INVALID_ARG;
+    if (k > MAXN)
+        return CF_STATUS_BAD_DEGREE;
+    st = check_params(t, n);
+    if (st != CF_STATUS_OK)
+        return st;
+    if (k == 0)
+        return cf__bezier_eval_many_fast(c, t, n, out);
+    if (!c->rational && cf__bezier_deriv_many_fast(c, k, t, n, out))
+        return CF_STATUS_OK;
+    for (size_t i = 0; i < n; i++)
+        for (size_t d = 0; d < c->dim; d++) {
+            cf__bezier_coord_derivs(c, d, t[i], k, res);
+            out[i * c->dim + d] = res[k];
+        }
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_bezier_eval_many(const cf_bezier_t *c, const double *t, size_t n,
+                    double *out)
+{
+    cf_status_t st;
+    if (c == NULL || (n > 0 && (t == NULL || out == NULL)))
+        return CF_STATUS_INVALID_ARG;
+    st = check_params(t, n);
+    if (st != CF_STATUS_OK)
+        return st;
+    return cf__bezier_eval_many_fast(c, t, n, out);
+}
+
+size_t
+cf_bezier_decasteljau_size(const cf_bezier_t *c)
+{
+    size_t n1;
+    if (c == NULL)
+        return 0;
+    n1 = (size_t)c->degree + 1;
+    return n1 * (n1 + 1) / 2 * c->dim;
+}
+
+cf_status_t
+cf_bezier_decasteljau(const cf_bezier_t *c, double t, double *out)
+{
+    double v[MAXN + 1], w[MAXN + 1], s;
+    int n;
+    cf_status_t st;
+    if (c == NULL || out == NULL)
+        return CF_STATUS_INVALID_ARG;
+    st = check_param(t);
+    if (st != CF_STATUS_OK)
+        return st;
+    n = c->degree;
+    s = 1.0 - t;
+    for (size_t k = 0; k < c->dim; k++) {
+        size_t base = 0;   /* first point of the current level */
+        for (int i = 0; i <= n; i++) {
+            v[i] = c->pts[(size_t)i * c->hdim + k];
+            w[i] = c->rational ? c->pts[(size_t)i * c->hdim + c->dim] : 1.0;
+        }
+        for (int r = 0; r <= n; r++) {
+            if (r > 0) {
+                for (int i = 0; i <= n - r; i++) {
+                    v[i] = s * v[i] + t * v[i + 1];
+                    if (c->rational)
+                        w[i] = s * w[i] + t * w[i + 1];
+                }
+            }
+            for (int i = 0; i <= n - r; i++)
+                out[(base + (size_t)i) * c->dim + k] =
+                    c->rational ? v[i] / w[i] : v[i];
+            base += (size_t)(n - r) + 1;
+        }
+    }
+    return CF_STATUS_OK;
+}
+
+/* ---- tangent, normal, curvature ------------------------------------------ */
+
+/* |c^(j)(t)|^2 and a scale below which it counts as zero. */
+static double
+deriv_norm2(const cf_bezier_t *c, double t, int j)
+{
+    double res[MAXN + 1], s = 0.0;
+    for (size_t d = 0; d < c->dim; d++) {
+        cf__bezier_coord_derivs(c, d, t, j, res);
+        s += res[j] * res[j];
+    }
+    return s;
+}
+
+/* The order of the first derivative that does not vanish at t (relative to
+** the curve's size), or 0 if none up to the degree does. */
+static int
+first_nonzero_deriv(const cf_bezier_t *c, double t)
+{
+    double size = cf__bezier_size(c), scale = 1.0;
+    int n = c->degree, jmax = c->rational ? 2 * n : n;
+    if (jmax > MAXN)
+        jmax = MAXN;
+    if (size == 0.0)
+        return 0;
+    for (int j = 1; j <= jmax; j++) {
+        double tiny;
+        scale *= (double)(n > 0 ? n : 1) * 2.0;
+        tiny = 1e-13 * size * scale;
+        if (deriv_norm2(c, t, j) > tiny * tiny)
+            return j;
+    }
+    return 0;
+}
+
+cf_status_t
+cf_bezier_tangent(const cf_bezier_t *c, double t, double *out)
+{
+    double res[MAXN + 1], norm;
+    int j;
+    cf_status_t st;
+    if (c == NULL || out == NULL)
+        return CF_STATUS_INVALID_ARG;
+    st = check_param(t);
+    if (st != CF_STATUS_OK)
+        return st;
+    j = first_nonzero_deriv(c, t);
+    if (j == 0)
+        return CF_STATUS_DEGENERATE;
+    for (size_t d = 0; d < c->dim; d++) {
+        cf__bezier_coord_derivs(c, d, t, j, res);
+        out[d] = res[j];
+    }
+    norm = sqrt(deriv_norm2(c, t, j));
+    for (size_t d = 0; d < c->dim; d++)
+        out[d] /= norm;
+    return CF_STATUS_OK;
+}
+
+/* First and second derivative sums: |c'|^2, |c''|^2, c'.c'' */
+static void
+d12_sums(const cf_bezier_t *c, double t, double *s11, double *s22,
+         double *s12)
+{
+    double res[3];
+    *s11 = *s22 = *s12 = 0.0;
+    for (size_t d = 0; d < c->dim; d++) {
+        cf__bezier_coord_derivs(c, d, t, 2, res);
+        *s11 += res[1] * res[1];
+        *s22 += res[2] * res[2];
+        *s12 += res[1] * res[2];
+    }
+}
+
+cf_status_t
+cf_bezier_normal(const cf_bezier_t *c, double t, double *out)
+{
+    double s11, s22, s12, res[3], norm2 = 0.0, norm;
+    cf_status_t st;
+    if (c == NULL || out == NULL || c->dim == 1)
+        return CF_STATUS_INVALID_ARG;
+    if (c->dim == 2) {
+        double tg[2];
+        st = cf_bezier_tangent(c, t, tg);
+        if (st != CF_STATUS_OK)
+            return st;
+        out[0] = -tg[1];
+        out[1] = tg[0];
+        return CF_STATUS_OK;
+    }
+    st = check_param(t);
+    if (st != CF_STATUS_OK)
+        return st;
+    d12_sums(c, t, &s11, &s22, &s12);
+    if (!(s11 > 0.0))
+        return CF_STATUS_DEGENERATE;
+    /* principal normal: c'' minus its component along c' */
+    for (size_t d = 0; d < c->dim; d++) {
+        cf__bezier_coord_derivs(c, d, t, 2, res);
+        out[d] = res[2] - s12 / s11 * res[1];
+        norm2 += out[d] * out[d];
+    }
+    norm = sqrt(norm2);
+    if (!(norm > 1e-13 * sqrt(s22)) || norm == 0.0)
+        return CF_STATUS_DEGENERATE;
+    for (size_t d = 0; d < c->dim; d++)
+        out[d] /= norm;
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_bezier_curvature(const cf_bezier_t *c, double t, double *kappa)
+{
+    double s11, s22, s12, res[3];
+    cf_status_t st;
+    if (c == NULL || kappa == NULL)
+        return CF_STATUS_INVALID_ARG;
+    st = check_param(t);
+    if (st != CF_STATUS_OK)
+        return st;
+    if (c->dim == 1) {
+        *kappa = 0.0;
+        return CF_STATUS_OK;
+    }
+    if (c->dim == 2) {
+        double x[3], y[3], sp;
+        cf__bezier_coord_derivs(c, 0, t, 2, x);
+        cf__bezier_coord_derivs(c, 1, t, 2, y);
+        sp = x[1] * x[1] + y[1] * y[1];
+        if (!(sp > 0.0))
+            return CF_STATUS_DEGENERATE;
+        *kappa = (x[1] * y[2] - y[1] * x[2]) / (sp * sqrt(sp));
+        return CF_STATUS_OK;
+    }
+    d12_sums(c, t, &s11, &s22, &s12);
+    if (!(s11 > 0.0))
+        return CF_STATUS_DEGENERATE;
+    {
+        /* |c' x c''| = |c'| |c''_perp|, c''_perp = c'' - (c'.c''/|c'|^2) c' */
+        double p2 = 0.0;
+        for (size_t d = 0; d < c->dim; d++) {
+            double q;
+            cf__bezier_coord_derivs(c, d, t, 2, res);
+            q = res[2] - s12 / s11 * res[1];
+            p2 += q * q;
+        }
+        (void)s22;
+        *kappa = sqrt(p2) / s11;
+    }
+    return CF_STATUS_OK;
+}
+
+/* ---- subdivision ---------------------------------------------------------- */
+
+void
+cf__split_h(const double *src, size_t hdim, int n, double t, double *left,
+            double *right)
+{
+    double s = 1.0 - t;
+    size_t np = (size_t)n + 1;
+    if (right != NULL) {
+        /* in place in right: after level r, right[0] = P_{r,0} and
+        ** right[n-r] = P_{r,n-r} stays fixed from then on */
+        if (right != src)
+            memmove(right, src, np * hdim * sizeof *right);
+        for (int r = 1; r <= n; r++) {
+            if (left != NULL)
+                memcpy(left + (size_t)(r - 1) * hdim, right,
+                       hdim * sizeof *right);
+            for (size_t i = 0; i + (size_t)r <= (size_t)n; i++) {
+                double *a = right + i * hdim, *b = a + hdim;
+                for (size_t k = 0; k < hdim; k++)
+                    a[k] = s * a[k] + t * b[k];
+            }
+        }
+        if (left != NULL)
+            memcpy(left + (size_t)n * hdim, right, hdim * sizeof *right);
+    } else if (left != NULL) {
+        /* in place in left, from the top: after level r, left[r] = P_{r,0} */
+        if (left != src)
+            memmove(left, src, np * hdim * sizeof *left);
+        for (int r = 1; r <= n; r++) {
+            for (size_t i = (size_t)n; i >= (size_t)r; i--) {
+                double *b = left + i * hdim, *a = b - hdim;
+                for (size_t k = 0; k < hdim; k++)
+                    b[k] = s * a[k] + t * b[k];
+            }
+        }
+    }
+}
+
+static cf_status_t
+check_curve(const cf_bezier_t *c, cf_diag_t *diag)
+{
+    if (c == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "the curve is NULL");
+    return CF_STATUS_OK;
+}
+
+/* The common start of an operation returning a curve: out is set to NULL
+** first, so that a failed call leaves nothing behind. */
+static cf_status_t
+begin_op(const cf_bezier_t *c, cf_bezier_t **out, cf_diag_t *diag)
+{
+    if (out == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "the output pointer is NULL");
+    *out = NULL;
+    return check_curve(c, diag);
+}
+
+static cf_status_t
+check_open_param(double t, const char *what, cf_diag_t *diag)
+{
+    if (!isfinite(t))
+        return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
+                         "%s %g is not finite", what, t);
+    if (!(t > 0.0 && t < 1.0))
+        return cf__error(diag, CF_STATUS_DOMAIN, -1,
+                         "%s %g is outside the open interval (0, 1)", what,
+                         t);
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_bezier_split(const cf_bezier_t *c, double t, cf_bezier_t **left,
+                cf_bezier_t **right, cf_diag_t *diag)
+{
+    cf_bezier_t *l = NULL, *r = NULL;
+    cf_status_t st;
+    if (left != NULL)
+        *left = NULL;
+    if (right != NULL)
+        *right = NULL;
+    st = check_curve(c, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    st = check_open_param(t, "split parameter", diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    if (left != NULL) {
+        l = cf__bezier_new(c->dim, c->degree, c->rational);
+        if (l == NULL)
+            return no_memory(diag, "left half of a split");
+    }
+    if (right != NULL) {
+        r = cf__bezier_new(c->dim, c->degree, c->rational);
+        if (r == NULL) {
+            cf__free(l);
+            return no_memory(diag, "right half of a split");
+        }
+    }
+    cf__split_h(c->pts, c->hdim, c->degree, t, l != NULL ? l->pts : NULL,
+                r != NULL ? r->pts : NULL);
+    if (left != NULL)
+        *left = l;
+    if (right != NULL)
+        *right = r;
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_bezier_split_into(const cf_bezier_t *c, double t, double *left_hpoints,
+                     double *right_hpoints)
+{
+    if (c == NULL || left_hpoints == NULL || right_hpoints == NULL ||
+        left_hpoints == right_hpoints)
+        return CF_STATUS_INVALID_ARG;
+    if (!isfinite(t))
+        return CF_STATUS_NOT_FINITE;
+    if (!(t > 0.0 && t < 1.0))
+        return CF_STATUS_DOMAIN;
+    cf__split_h(c->pts, c->hdim, c->degree, t, left_hpoints, right_hpoints);
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_bezier_segment(const cf_bezier_t *c, double a, double b,
+                  cf_bezier_t **out, cf_diag_t *diag)
+{
+    cf_bezier_t *s;
+    cf_status_t st;
+    st = begin_op(c, out, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    if (!isfinite(a) || !isfinite(b))
+        return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
+                         "segment [%g, %g] has a bound that is not finite",
+                         a, b);
+    if (!(a >= 0.0 && a < b && b <= 1.0))
+        return cf__error(diag, CF_STATUS_DOMAIN, -1,
+                         "segment [%g, %g] does not satisfy "
+                         "0 <= a < b <= 1", a, b);
+    s = cf__bezier_new(c->dim, c->degree, c->rational);
+    if (s == NULL)
+        return no_memory(diag, "segment");
+    memcpy(s->pts, c->pts,
+           ((size_t)c->degree + 1) * c->hdim * sizeof(double));
+    if (b < 1.0)
+        cf__split_h(s->pts, s->hdim, s->degree, b, s->pts, NULL);
+    if (a > 0.0)
+        cf__split_h(s->pts, s->hdim, s->degree, a / b, NULL, s->pts);
+    *out = s;
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_bezier_reverse(const cf_bezier_t *c, cf_bezier_t **out, cf_diag_t *diag)
+{
+    cf_bezier_t *r;
+    cf_status_t st;
+    st = begin_op(c, out, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    r = cf__bezier_new(c->dim, c->degree, c->rational);
+    if (r == NULL)
+        return no_memory(diag, "reversed curve");
+    for (int i = 0; i <= c->degree; i++)
+        memcpy(r->pts + (size_t)i * c->hdim,
+               c->pts + (size_t)(c->degree - i) * c->hdim,
+               c->hdim * sizeof(double));
+    *out = r;
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_bezier_transform(const cf_bezier_t *c, const double *A, const double *b,
+                    cf_bezier_t **out, cf_diag_t *diag)
+{
+    cf_bezier_t *r;
+    cf_status_t st;
+    size_t dim;
+    st = begin_op(c, out, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    if (A == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "the matrix is NULL");
+    dim = c->dim;
+    st = cf__check_finite_points(A, dim, dim, dim, "matrix row", diag);
+    if (st == CF_STATUS_OK && b != NULL)
+        st = cf__check_finite_points(b, 1, dim, dim, "translation", diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    r = cf__bezier_new(dim, c->degree, c->rational);
+    if (r == NULL)
+        return no_memory(diag, "transformed curve");
+    for (int i = 0; i <= c->degree; i++) {
+        const double *p = c->pts + (size_t)i * c->hdim;
+        double *q = r->pts + (size_t)i * c->hdim;
+        double w = c->rational ? p[dim] : 1.0;
+        for (size_t k = 0; k < dim; k++) {
+            double s = 0.0;
+            for (size_t j = 0; j < dim; j++)
+                s += A[k * dim + j] * p[j];
+            q[k] = s + (b != NULL ? b[k] * w : 0.0);
+        }
+        if (c->rational)
+            q[dim] = w;
+    }
+    st = cf__check_finite_points(r->pts, (size_t)c->degree + 1, r->hdim,
+                                 r->hdim, "transformed point", diag);
+    if (st != CF_STATUS_OK) {
+        cf__free(r);
+        return st;
+    }
+    *out = r;
+    return CF_STATUS_OK;
+}
+
+void
+cf__elevate_in_place(double *pts, size_t hdim, int m, int r)
+{
+    for (int step = 0; step < r; step++, m++) {
+        double inv = 1.0 / (double)(m + 1);
+        memcpy(pts + (size_t)(m + 1) * hdim, pts + (size_t)m * hdim,
+               hdim * sizeof *pts);
+        for (int i = m; i >= 1; i--) {
+            double a = (double)i * inv, b = (double)(m + 1 - i) * inv;
+            double *q = pts + (size_t)i * hdim;
+            for (size_t k = 0; k < hdim; k++)
+                q[k] = a * q[(ptrdiff_t)k - (ptrdiff_t)hdim] + b * q[k];
+        }
+    }
+}
+
+cf_status_t
+cf_bezier_elevate(const cf_bezier_t *c, int r, cf_bezier_t **out,
+                  cf_diag_t *diag)
+{
+    cf_bezier_t *e;
+    cf_status_t st;
+    st = begin_op(c, out, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    if (r < 0 || r > MAXN - c->degree)
+        return cf__error(diag, CF_STATUS_BAD_DEGREE, -1,
+                         "elevating degree %d by %d leaves 0..%d",
+                         c->degree, r, MAXN);
+    e = cf__bezier_new(c->dim, c->degree + r, c->rational);
+    if (e == NULL)
+        return no_memory(diag, "elevated curve");
+    memcpy(e->pts, c->pts,
+           ((size_t)c->degree + 1) * c->hdim * sizeof(double));
+    cf__elevate_in_place(e->pts, e->hdim, c->degree, r);
+    *out = e;
+    return CF_STATUS_OK;
+}
+
+/* ---- the derivative as a curve ------------------------------------------- */
+
+/* Bernstein product: f (degree nf, stride sf) times g (degree ng, stride
+** sg) into h (degree nf + ng, stride sh):
+** h_k = sum_{i+j=k} C(nf,i) C(ng,j) / C(nf+ng,k) f_i g_j. */
+static void
+binomial_row(int n, double *row)
+{
+    row[0] = 1.0;
+    for (int i = 1; i <= n; i++)
+        row[i] = nearbyint(row[i - 1] * (double)(n - i + 1) / (double)i);
+}
+
+static void
+bernstein_product(const double *f, int nf, size_t sf, const double *g,
+                  int ng, size_t sg, double *h, size_t sh, double sign,
+                  bool accumulate)
+{
+    double bf[MAXN + 1], bg[MAXN + 1], bh[MAXN + 1];
+    binomial_row(nf, bf);
+    binomial_row(ng, bg);
+    binomial_row(nf + ng, bh);
+    for (int k = 0; k <= nf + ng; k++) {
+        double s = 0.0;
+        int i0 = k - ng > 0 ? k - ng : 0, i1 = k < nf ? k : nf;
+        for (int i = i0; i <= i1; i++)
+            s += bf[i] * bg[k - i] / bh[k] * f[(size_t)i * sf] *
+                 g[(size_t)(k - i) * sg];
+        if (accumulate)
+            h[(size_t)k * sh] += sign * s;
+        else
+            h[(size_t)k * sh] = sign * s;
+    }
+}
+
+/* (A/w)' = (A' w - A w') / w^2, as a rational curve of degree 2n. */
+static cf_status_t
+rational_derivative(const cf_bezier_t *c, cf_bezier_t **out, cf_diag_t *diag)
+{
+    int n = c->degree;
+    size_t h = c->hdim, dim = c->dim;
+    cf_bezier_t *d;
+    double *diff;
+
+    if (2 * n > MAXN)
+        return cf__error(diag, CF_STATUS_BAD_DEGREE, -1,
+                         "the derivative of a rational curve of degree %d "
+                         "has degree %d > %d", n, 2 * n, MAXN);
+    d = cf__bezier_new(dim, 2 * n, true);
+    if (d == NULL)
+        return no_memory(diag, "derivative");
+    if (n == 0) {
+        memset(d->pts, 0, h * sizeof(double));
+        d->pts[dim] = c->pts[dim] * c->pts[dim];
+        *out = d;
+        return CF_STATUS_OK;
+    }
+    /* hodograph of the homogeneous points: n (P_{i+1} - P_i), degree n-1 */
+    diff = cf__alloc_array((size_t)n * h, sizeof *diff);
+    if (diff == NULL) {
+        cf__free(d);
+        return no_memory(diag, "derivative");
+    }
+    for (int i = 0; i < n; i++)
+        for (size_t k = 0; k < h; k++)
+            diff[(size_t)i * h + k] =
+                (double)n * (c->pts[(size_t)(i + 1) * h + k] -
+                             c->pts[(size_t)i * h + k]);
+    /* numerator, degree 2n - 1, stored at stride h in d->pts */
+    for (size_t k = 0; k < dim; k++) {
+        bernstein_product(diff + k, n - 1, h, c->pts + dim, n, h,
+                          d->pts + k, h, 1.0, false);
+        bernstein_product(c->pts + k, n, h, diff + dim, n - 1, h,
+                          d->pts + k, h, -1.0, true);
+    }
+    for (int i = 0; i < 2 * n; i++)
+        d->pts[(size_t)i * h + dim] = 1.0;   /* placeholder for elevation */
+    cf__elevate_in_place(d->pts, h, 2 * n - 1, 1);
+    bernstein_product(c->pts + dim, n, h, c->pts + dim, n, h, d->pts + dim,
+                      h, 1.0, false);
+    cf__free(diff);
+    *out = d;
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_bezier_derivative(const cf_bezier_t *c, int k, cf_bezier_t **out,
+                     cf_diag_t *diag)
+{
+    cf_bezier_t *cur;
+    cf_status_t st;
+    st = begin_op(c, out, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    if (k < 0)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "derivative order %d is negative", k);
+    if (!c->rational) {
+        int n = c->degree, m = k > n ? 0 : n - k;
+        cf_bezier_t *d = cf__bezier_new(c->dim, m, false);
+        size_t dim = c->dim;
+        if (d == NULL)
+            return no_memory(diag, "derivative");
+        if (k > n) {
+            memset(d->pts, 0, dim * sizeof(double));
+        } else {
+            /* hodograph k times, in place: level j has n - j + 1 points */
+            double *tmp = cf__alloc_array(((size_t)n + 1) * dim,
+                                          sizeof *tmp);
+            if (tmp == NULL) {
+                cf__free(d);
+                return no_memory(diag, "derivative");
+            }
+            memcpy(tmp, c->pts, ((size_t)n + 1) * dim * sizeof *tmp);
+            for (int j = 0; j < k; j++)
+                for (int i = 0; i < n - j; i++)
+                    for (size_t q = 0; q < dim; q++)
+                        tmp[(size_t)i * dim + q] =
+                            (double)(n - j) *
+                            (tmp[(size_t)(i + 1) * dim + q] -
+                             tmp[(size_t)i * dim + q]);
+            memcpy(d->pts, tmp, ((size_t)m + 1) * dim * sizeof *tmp);
+            cf__free(tmp);
+        }
+        *out = d;
+        return CF_STATUS_OK;
+    }
+    {
+        /* each derivative doubles the degree */
+        long deg = c->degree;
+        for (int j = 0; j < k && deg > 0; j++) {
+            deg *= 2;
+            if (deg > MAXN)
+                return cf__error(diag, CF_STATUS_BAD_DEGREE, -1,
+                                 "derivative %d of a rational curve of "
+                                 "degree %d has degree %d * 2^%d > %d", k,
+                                 c->degree, c->degree, k, MAXN);
+        }
+    }
+    st = cf_bezier_copy(c, &cur, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    for (int j = 0; j < k; j++) {
+        cf_bezier_t *next = NULL;
+        st = rational_derivative(cur, &next, diag);
+        cf__free(cur);
+        if (st != CF_STATUS_OK)
+            return st;
+        cur = next;
+    }
+    *out = cur;
+    return CF_STATUS_OK;
+}
+
+/* ---- lists ----------------------------------------------------------------- */
+
+cf_bezier_list_t *
+cf__bezier_list_new(size_t count, bool with_params)
+{
+    cf_bezier_list_t *l = cf__calloc(1, sizeof *l);
+    if (l == NULL)
+        return NULL;
+    l->count = count;
+    l->items = cf__calloc(count > 0 ? count : 1, sizeof *l->items);
+    if (l->items == NULL)
+        goto fail;
+    if (with_params) {
+        l->t0 = cf__calloc(count > 0 ? count : 1, sizeof *l->t0);
+        l->t1 = cf__calloc(count > 0 ? count : 1, sizeof *l->t1);
+        if (l->t0 == NULL || l->t1 == NULL)
+            goto fail;
+    }
+    return l;
+fail:
+    cf__free(l->items);
+    cf__free(l->t0);
+    cf__free(l->t1);
+    cf__free(l);
+    return NULL;
+}
+
+void
+cf_bezier_list_destroy(cf_bezier_list_t *list)
+{
+    if (list == NULL)
+        return;
+    if (list->items != NULL)
+        for (size_t i = 0; i < list->count; i++)
+            cf_bezier_destroy(list->items[i]);
+    cf__free(list->items);
+    cf__free(list->t0);
+    cf__free(list->t1);
+    cf__free(list);
+}

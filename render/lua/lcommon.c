@@ -1,0 +1,306 @@
+/*
+** Helpers shared by the Lua binding files.
+*/
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "lcommon.h"
+
+/* More points or numbers than this in one table is certainly a mistake
+** (and keeps n * dim * sizeof(double) far from overflow). */
+#define MAX_ITEMS ((size_t)1 << 26)
+
+int
+cf__lua_error(lua_State *L, const char *fmt, ...)
+{
+    char msg[512];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    return luaL_error(L, "%s", msg);
+}
+
+double *
+cf__lua_buffer(lua_State *L, size_t n)
+{
+    if (n > MAX_ITEMS * 4)
+        cf__lua_error(L, "too many values (%zu)", n);
+    return lua_newuserdatauv(L, (n ? n : 1) * sizeof(double), 0);
+}
+
+static size_t
+check_len(lua_State *L, int idx, const char *fn, const char *what)
+{
+    lua_Integer n;
+    if (!lua_istable(L, idx))
+        luaL_error(L, "%s: %s must be a table, got %s", fn, what,
+                   luaL_typename(L, idx));
+    n = luaL_len(L, idx);
+    if (n < 0 || (lua_Unsigned)n > MAX_ITEMS)
+        cf__lua_error(L, "%s: %s has %lld entries; too many", fn, what, (long long)n);
+    return (size_t)n;
+}
+
+static double
+coord(lua_State *L, int tbl, lua_Integer k, const char *fn, const char *what,
+      size_t i)
+{
+    int isnum;
+    double v;
+    lua_geti(L, tbl, k);
+    v = (double)lua_tonumberx(L, -1, &isnum);
+    if (!isnum)
+        cf__lua_error(L, "%s: %s %zu coordinate %d is %s, not a number", fn,
+                      what, i, (int)k, luaL_typename(L, -1));
+    if (!isfinite(v))
+        cf__lua_error(L, "%s: %s %zu coordinate %d is %g; coordinates must be "
+                      "finite", fn, what, i, (int)k, v);
+    lua_pop(L, 1);
+    return v;
+}
+
+double *
+cf__lua_check_points(lua_State *L, int idx, const char *fn, const char *what,
+                     size_t min, size_t *count, size_t *dim)
+{
+    size_t n, d = 0;
+    double *buf;
+    idx = lua_absindex(L, idx);
+    n = check_len(L, idx, fn, what);
+    if (n < min)
+        cf__lua_error(L, "%s: %zu %s%s given, at least %zu needed", fn, n, what,
+                   n == 1 ? "" : "s", min);
+    for (size_t i = 0; i < n; i++) {
+        size_t di;
+        lua_geti(L, idx, (lua_Integer)i + 1);
+        if (!lua_istable(L, -1))
+            cf__lua_error(L, "%s: %s %zu must be a table {x, y, ...}, got %s",
+                       fn, what, i, luaL_typename(L, -1));
+        di = (size_t)luaL_len(L, -1);
+        lua_pop(L, 1);
+        if (di < 1)
+            cf__lua_error(L, "%s: %s %zu has no coordinates", fn, what, i);
+        if (i == 0)
+            d = di;
+        else if (di != d)
+            cf__lua_error(L, "%s: %s %zu has %zu coordinates, %s 0 has %zu", fn,
+                       what, i, di, what, d);
+    }
+    if (n > 0 && d > 64)
+        cf__lua_error(L, "%s: points with %zu coordinates; at most 64", fn, d);
+    buf = cf__lua_buffer(L, n * d);
+    for (size_t i = 0; i < n; i++) {
+        lua_geti(L, idx, (lua_Integer)i + 1);
+        for (size_t k = 0; k < d; k++)
+            buf[i * d + k] = coord(L, lua_gettop(L), (lua_Integer)k + 1, fn,
+                                   what, i);
+        lua_pop(L, 1);
+    }
+    *count = n;
+    *dim = d;
+    return buf;
+}
+
+double *
+cf__lua_check_point(lua_State *L, int idx, const char *fn, const char *what,
+                    size_t *dim)
+{
+    size_t d;
+    double *buf;
+    idx = lua_absindex(L, idx);
+    d = check_len(L, idx, fn, what);
+    if (d < 1)
+        luaL_error(L, "%s: %s has no coordinates", fn, what);
+    if (*dim != 0 && d != *dim)
+        cf__lua_error(L, "%s: %s has %zu coordinates, expected %zu", fn, what, d,
+                   *dim);
+    buf = cf__lua_buffer(L, d);
+    for (size_t k = 0; k < d; k++)
+        buf[k] = coord(L, idx, (lua_Integer)k + 1, fn, what, 0);
+    *dim = d;
+    return buf;
+}
+
+double *
+cf__lua_check_numbers(lua_State *L, int idx, const char *fn, const char *what,
+                      size_t *count)
+{
+    size_t n;
+    double *buf;
+    idx = lua_absindex(L, idx);
+    n = check_len(L, idx, fn, what);
+    buf = cf__lua_buffer(L, n);
+    for (size_t i = 0; i < n; i++) {
+        int isnum;
+        lua_geti(L, idx, (lua_Integer)i + 1);
+        buf[i] = (double)lua_tonumberx(L, -1, &isnum);
+        if (!isnum)
+            cf__lua_error(L, "%s: %s %zu is %s, not a number", fn, what, i,
+                       luaL_typename(L, -1));
+        if (!isfinite(buf[i]))
+            cf__lua_error(L, "%s: %s %zu is %g; it must be finite", fn, what, i,
+                       buf[i]);
+        lua_pop(L, 1);
+    }
+    *count = n;
+    return buf;
+}
+
+double
+cf__lua_check_finite(lua_State *L, int idx, const char *fn, const char *what)
+{
+    int isnum;
+    double v = (double)lua_tonumberx(L, idx, &isnum);
+    if (!isnum)
+        luaL_error(L, "%s: %s must be a number, got %s", fn, what,
+                   luaL_typename(L, idx));
+    if (!isfinite(v))
+        cf__lua_error(L, "%s: %s is %g; it must be finite", fn, what, v);
+    return v;
+}
+
+int
+cf__lua_check_int(lua_State *L, int idx, const char *fn, const char *what,
+                  int lo, int hi)
+{
+    int isint;
+    lua_Integer v;
+    if (lua_type(L, idx) != LUA_TNUMBER)
+        luaL_error(L, "%s: %s must be an integer, got %s", fn, what,
+                   luaL_typename(L, idx));
+    v = lua_tointegerx(L, idx, &isint);
+    if (!isint)
+        luaL_error(L, "%s: %s must be an integer, got %s", fn, what,
+                   lua_tostring(L, idx));
+    if (v < lo || v > hi)
+        cf__lua_error(L, "%s: %s is %lld; it must be in [%d, %d]", fn, what, (long long)v, lo,
+                   hi);
+    return (int)v;
+}
+
+int
+cf__lua_opt_int(lua_State *L, int idx, const char *fn, const char *what,
+                int lo, int hi, int def)
+{
+    if (lua_isnoneornil(L, idx))
+        return def;
+    return cf__lua_check_int(L, idx, fn, what, lo, hi);
+}
+
+void
+cf__lua_push_point(lua_State *L, const double *p, size_t dim)
+{
+    lua_createtable(L, (int)dim, 0);
+    for (size_t k = 0; k < dim; k++) {
+        lua_pushnumber(L, (lua_Number)p[k]);
+        lua_rawseti(L, -2, (lua_Integer)k + 1);
+    }
+}
+
+void
+cf__lua_push_points(lua_State *L, const double *p, size_t count, size_t dim)
+{
+    lua_createtable(L, count > INT32_MAX ? 0 : (int)count, 0);
+    for (size_t i = 0; i < count; i++) {
+        cf__lua_push_point(L, p + i * dim, dim);
+        lua_rawseti(L, -2, (lua_Integer)i + 1);
+    }
+}
+
+void
+cf__lua_push_numbers(lua_State *L, const double *v, size_t count)
+{
+    lua_createtable(L, count > INT32_MAX ? 0 : (int)count, 0);
+    for (size_t i = 0; i < count; i++) {
+        lua_pushnumber(L, (lua_Number)v[i]);
+        lua_rawseti(L, -2, (lua_Integer)i + 1);
+    }
+}
+
+int
+cf__lua_field(lua_State *L, int idx, const char *key)
+{
+    if (!lua_istable(L, idx)) {
+        lua_pushnil(L);
+        return LUA_TNIL;
+    }
+    return lua_getfield(L, idx, key);
+}
+
+int
+cf__lua_fail(lua_State *L, const char *fn, cf_status_t status,
+             const cf_diag_t *diag)
+{
+    if (status == CF_STATUS_NO_MEMORY && cf__lua_memory_exceeded(L))
+        return luaL_error(L, "%s: out of memory", fn);
+    if (diag != NULL && diag->status != CF_STATUS_OK && diag->msg[0] != '\0')
+        return luaL_error(L, "%s: %s", fn, diag->msg);
+    return luaL_error(L, "%s: %s", fn, cf_status_to_string(status));
+}
+
+/* ---- holders ------------------------------------------------------------ */
+
+typedef struct holder {
+    cf__lua_free_fn fn;
+    void *ptr;
+} holder;
+
+static int
+holder_gc(lua_State *L)
+{
+    holder *h = luaL_checkudata(L, 1, CF__LUA_HOLDER);
+    if (h->ptr != NULL && h->fn != NULL)
+        h->fn(h->ptr);
+    h->ptr = NULL;
+    return 0;
+}
+
+void **
+cf__lua_holder(lua_State *L, cf__lua_free_fn fn)
+{
+    holder *h = lua_newuserdatauv(L, sizeof *h, 0);
+    h->fn = fn;
+    h->ptr = NULL;
+    if (luaL_newmetatable(L, CF__LUA_HOLDER)) {
+        lua_pushcfunction(L, holder_gc);
+        lua_setfield(L, -2, "__gc");
+        lua_pushliteral(L, "locked");
+        lua_setfield(L, -2, "__metatable");
+    }
+    lua_setmetatable(L, -2);
+    return &h->ptr;
+}
+
+void
+cf__lua_holder_release(lua_State *L, int idx)
+{
+    holder *h = luaL_checkudata(L, idx, CF__LUA_HOLDER);
+    if (h->ptr != NULL && h->fn != NULL)
+        h->fn(h->ptr);
+    h->ptr = NULL;
+}
+
+void
+cf__lua_new_class(lua_State *L, const char *name, const luaL_Reg *methods,
+                  lua_CFunction gc, lua_CFunction tostring)
+{
+    luaL_newmetatable(L, name);
+    lua_newtable(L);
+    luaL_setfuncs(L, methods, 0);
+    lua_setfield(L, -2, "__index");
+    lua_pushcfunction(L, gc);
+    lua_setfield(L, -2, "__gc");
+    lua_pushcfunction(L, gc);
+    lua_setfield(L, -2, "__close");
+    if (tostring != NULL) {
+        lua_pushcfunction(L, tostring);
+        lua_setfield(L, -2, "__tostring");
+    }
+    lua_pushliteral(L, "locked");
+    lua_setfield(L, -2, "__metatable");
+    lua_pop(L, 1);
+}

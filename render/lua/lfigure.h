@@ -1,0 +1,19 @@
+/*
+** Figures as Lua values: the figure{} constructor and the figure list the
+** tool renders.
+*/
+#ifndef CURVEFIG_RENDER_LUA_LFIGURE_H
+#define CURVEFIG_RENDER_LUA_LFIGURE_H
+
+#include <lua.h>
+
+#include "curvefig/figure.h"
+
+void cf__lua_open_figure(lua_State *L);
+
+/* The figures defined so far, in order; which = 1 name, 2 caption. */
+size_t cf__lua_figure_count(lua_State *L);
+cf_figure_t *cf__lua_figure_at(lua_State *L, size_t i);
+const char *cf__lua_figure_string(lua_State *L, size_t i, int which);
+
+#endif

@@ -1,0 +1,466 @@
+/*
+** The sandboxed Lua state that runs a figure script: limited libraries, a
+** memory budget shared by Lua and the curve library, an instruction budget,
+** print to a chosen stream, and messages with the script's file and line.
+*/
+#include <stdlib.h>
+#include <string.h>
+
+#include <lualib.h>
+
+#include "lbspline.h"
+#include "lcommon.h"
+#include "lfigure.h"
+#include "script.h"
+
+/* Memory kept in reserve once the budget is exhausted, so that the error
+** can still be raised and the state closed. */
+#define RESERVE ((size_t)1 << 20)
+#define HOOK_EVERY 10000
+
+enum { LIMIT_NONE, LIMIT_MEMORY, LIMIT_INSTRUCTIONS };
+
+struct cf_script {
+    lua_State *L;
+    FILE *out;
+    size_t used, max_memory;
+    unsigned long long instructions, max_instructions;
+    int limit_hit;
+    char where[160];   /* "file:line:" last seen by the hook, or "" */
+    cf_allocator_t saved_allocator;
+    char *error;
+};
+
+static cf_status_t
+fail(cf_diag_t *diag, cf_status_t status, const char *fmt, const char *arg)
+{
+    if (diag != NULL && diag->status == CF_STATUS_OK) {
+        diag->status = status;
+        diag->index = -1;
+        snprintf(diag->msg, sizeof diag->msg, fmt, arg ? arg : "");
+    }
+    return status;
+}
+
+/* ---- the budgets -------------------------------------------------------- */
+
+static void *
+budget_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
+{
+    cf_script_t *s = ud;
+    size_t old = ptr != NULL ? osize : 0;
+    size_t cap = s->max_memory + (s->limit_hit ? RESERVE : 0);
+    void *p;
+    if (nsize == 0) {
+        free(ptr);
+        s->used -= old;
+        return NULL;
+    }
+    if (nsize > old && (nsize - old > cap || s->used > cap - (nsize - old))) {
+        if (s->limit_hit == LIMIT_NONE)
+            s->limit_hit = LIMIT_MEMORY;
+        return NULL;
+    }
+    p = realloc(ptr, nsize);
+    if (p == NULL)
+        return NULL;
+    s->used = s->used - old + nsize;
+    return p;
+}
+
+int
+cf__lua_memory_exceeded(lua_State *L)
+{
+    void *ud;
+    lua_getallocf(L, &ud);
+    return ((cf_script_t *)ud)->limit_hit == LIMIT_MEMORY;
+}
+
+/* The message of an exhausted budget, at the position last seen by the
+** hook (an allocation failure cannot ask Lua where it happened). */
+static int
+limit_error(lua_State *L, cf_script_t *s)
+{
+    if (s->limit_hit == LIMIT_MEMORY)
+        lua_pushfstring(L, "%sscript exceeded the memory limit of %d MiB",
+                        s->where, (int)(s->max_memory >> 20));
+    else
+        lua_pushfstring(L, "%sscript exceeded the instruction limit of %I "
+                        "instructions", s->where,
+                        (lua_Integer)s->max_instructions);
+    return lua_error(L);
+}
+
+static void
+count_hook(lua_State *L, lua_Debug *ar)
+{
+    void *ud;
+    cf_script_t *s;
+    lua_getallocf(L, &ud);
+    s = ud;
+    if (lua_getinfo(L, "Sl", ar) && ar->source[0] == '@' &&
+        ar->currentline > 0)
+        snprintf(s->where, sizeof s->where, "%s:%d: ", ar->short_src,
+                 ar->currentline);
+    s->instructions += HOOK_EVERY;
+    if (s->instructions > s->max_instructions && s->limit_hit == LIMIT_NONE)
+        s->limit_hit = LIMIT_INSTRUCTIONS;
+    if (s->limit_hit != LIMIT_NONE)
+        limit_error(L, s);
+}
+
+static cf_script_t *
+script_of(lua_State *L)
+{
+    void *ud;
+    lua_getallocf(L, &ud);
+    return ud;
+}
+
+/* ---- replaced base functions -------------------------------------------- */
+
+/* pcall and xpcall that do not catch a limit: once a budget is exhausted
+** the script ends, whatever it does. */
+static int
+safe_call(lua_State *L)
+{
+    cf_script_t *s = script_of(L);
+    int n = lua_gettop(L);
+    lua_pushvalue(L, lua_upvalueindex(1));
+    lua_insert(L, 1);
+    lua_call(L, n, LUA_MULTRET);
+    if (s->limit_hit != LIMIT_NONE)
+        return limit_error(L, s);
+    return lua_gettop(L);
+}
+
+/* load of text chunks only. */
+static int
+safe_load(lua_State *L)
+{
+    const char *mode = luaL_optstring(L, 3, "t");
+    size_t len;
+    const char *chunk = lua_tolstring(L, 1, &len);
+    if (strchr(mode, 'b') != NULL ||
+        (chunk != NULL && len > 0 && chunk[0] == LUA_SIGNATURE[0]))
+        return luaL_error(L, "load: binary (bytecode) chunks are not "
+                          "allowed in figure scripts");
+    lua_settop(L, 4);
+    lua_pushliteral(L, "t");
+    lua_replace(L, 3);
+    lua_pushvalue(L, lua_upvalueindex(1));
+    lua_insert(L, 1);
+    lua_call(L, 4, LUA_MULTRET);
+    return lua_gettop(L);
+}
+
+static int
+safe_print(lua_State *L)
+{
+    cf_script_t *s = script_of(L);
+    int n = lua_gettop(L);
+    for (int i = 1; i <= n; i++) {
+        size_t len;
+        const char *str = luaL_tolstring(L, i, &len);
+        if (i > 1)
+            fputc('\t', s->out);
+        fwrite(str, 1, len, s->out);
+        lua_pop(L, 1);
+    }
+    fputc('\n', s->out);
+    return 0;
+}
+
+static void
+wrap_global(lua_State *L, const char *name, lua_CFunction f)
+{
+    lua_getglobal(L, name);
+    lua_pushcclosure(L, f, 1);
+    lua_setglobal(L, name);
+}
+
+static void
+remove_field(lua_State *L, const char *table, const char *name)
+{
+    if (table != NULL) {
+        lua_getglobal(L, table);
+        lua_pushnil(L);
+        lua_setfield(L, -2, name);
+        lua_pop(L, 1);
+    } else {
+        lua_pushnil(L);
+        lua_setglobal(L, name);
+    }
+}
+
+/* ---- the library allocator shares the budget ---------------------------- */
+
+static void *
+library_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
+{
+    return budget_alloc(ud, ptr, osize, nsize);
+}
+
+static int
+open_sandbox(lua_State *L)
+{
+    static const luaL_Reg libs[] = {
+        { LUA_GNAME, luaopen_base },
+        { LUA_MATHLIBNAME, luaopen_math },
+        { LUA_STRLIBNAME, luaopen_string },
+        { LUA_TABLIBNAME, luaopen_table },
+        { LUA_UTF8LIBNAME, luaopen_utf8 },
+    };
+    for (size_t i = 0; i < sizeof libs / sizeof libs[0]; i++) {
+        luaL_requiref(L, libs[i].name, libs[i].func, 1);
+        lua_pop(L, 1);
+    }
+    remove_field(L, NULL, "dofile");
+    remove_field(L, NULL, "loadfile");
+    remove_field(L, NULL, "require");
+    remove_field(L, LUA_STRLIBNAME, "dump");
+    wrap_global(L, "pcall", safe_call);
+    wrap_global(L, "xpcall", safe_call);
+    wrap_global(L, "load", safe_load);
+    lua_pushcfunction(L, safe_print);
+    lua_setglobal(L, "print");
+    cf__lua_open_bezier(L);
+    cf__lua_open_bspline(L);
+    cf__lua_open_figure(L);
+    return 0;
+}
+
+cf_status_t
+cf_script_create(const cf_script_limits_t *limits, FILE *out,
+                 cf_script_t **script, cf_diag_t *diag)
+{
+    cf_script_t *s;
+    cf_allocator_t a;
+    if (script == NULL)
+        return fail(diag, CF_STATUS_INVALID_ARG, "script is NULL%s", NULL);
+    *script = NULL;
+    s = calloc(1, sizeof *s);
+    if (s == NULL)
+        return fail(diag, CF_STATUS_NO_MEMORY, "out of memory%s", NULL);
+    s->out = out != NULL ? out : stdout;
+    s->max_memory = limits && limits->max_memory ? limits->max_memory
+                                                 : CF_SCRIPT_DEFAULT_MEMORY;
+    s->max_instructions = limits && limits->max_instructions
+                              ? limits->max_instructions
+                              : CF_SCRIPT_DEFAULT_INSTRUCTIONS;
+    s->L = lua_newstate(budget_alloc, s);
+    if (s->L == NULL) {
+        free(s);
+        return fail(diag, CF_STATUS_NO_MEMORY, "out of memory%s", NULL);
+    }
+    cf_get_allocator(&s->saved_allocator);
+    a.realloc = library_alloc;
+    a.ud = s;
+    cf_set_allocator(&a);
+    lua_pushcfunction(s->L, open_sandbox);
+    if (lua_pcall(s->L, 0, 0, 0) != LUA_OK) {
+        cf_status_t st = fail(diag, CF_STATUS_NO_MEMORY,
+                              "cannot set up the sandbox: %s",
+                              lua_tostring(s->L, -1));
+        cf_script_destroy(s);
+        return st;
+    }
+    lua_sethook(s->L, count_hook, LUA_MASKCOUNT, HOOK_EVERY);
+    *script = s;
+    return CF_STATUS_OK;
+}
+
+void
+cf_script_destroy(cf_script_t *s)
+{
+    if (s == NULL)
+        return;
+    lua_close(s->L);
+    cf_set_allocator(&s->saved_allocator);
+    free(s->error);
+    free(s);
+}
+
+/* ---- running ------------------------------------------------------------ */
+
+/* Message handler: the message, then the script's frames below it. */
+static int
+traceback(lua_State *L)
+{
+    lua_Debug ar;
+    luaL_Buffer b;
+    const char *msg;
+    int first = 1;
+    msg = lua_tostring(L, 1);
+    if (msg == NULL) {
+        if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING)
+            msg = lua_tostring(L, -1);
+        else
+            msg = lua_pushfstring(L, "(error object is a %s value)",
+                                  luaL_typename(L, 1));
+    }
+    luaL_buffinit(L, &b);
+    luaL_addstring(&b, msg);
+    for (int level = 1; lua_getstack(L, level, &ar); level++) {
+        lua_getinfo(L, "Sl", &ar);
+        if (ar.currentline <= 0 || ar.source[0] != '@')
+            continue;
+        if (first) {
+            /* the frame that raised the error is already in msg */
+            first = 0;
+            if (strstr(msg, ar.short_src) == msg)
+                continue;
+        }
+        lua_pushfstring(L, "\n    from %s:%d", ar.short_src, ar.currentline);
+        luaL_addvalue(&b);
+    }
+    luaL_pushresult(&b);
+    return 1;
+}
+
+static void
+set_error(cf_script_t *s, const char *msg)
+{
+    size_t n = strlen(msg);
+    free(s->error);
+    s->error = malloc(n + 1);
+    if (s->error != NULL)
+        memcpy(s->error, msg, n + 1);
+}
+
+static cf_status_t
+finish(cf_script_t *s, int rc, const char *name)
+{
+    lua_State *L = s->L;
+    if (rc == LUA_OK)
+        return CF_STATUS_OK;
+    if (s->limit_hit == LIMIT_MEMORY || rc == LUA_ERRMEM) {
+        char buf[512];
+        if (s->where[0] != '\0')
+            snprintf(buf, sizeof buf, "%sscript exceeded the memory limit "
+                     "of %zu MiB", s->where, s->max_memory >> 20);
+        else
+            snprintf(buf, sizeof buf, "%s: script exceeded the memory limit "
+                     "of %zu MiB", name, s->max_memory >> 20);
+        set_error(s, buf);
+    } else {
+        const char *msg = lua_tostring(L, -1);
+        set_error(s, msg != NULL ? msg : "unknown error");
+    }
+    lua_settop(L, 0);
+    return CF_STATUS_SCRIPT;
+}
+
+static cf_status_t
+run_loaded(cf_script_t *s, int rc, const char *name)
+{
+    lua_State *L = s->L;
+    if (rc != LUA_OK)
+        return finish(s, rc, name);
+    lua_pushcfunction(L, traceback);
+    lua_insert(L, -2);
+    rc = lua_pcall(L, 0, 0, -2);
+    return finish(s, rc, name);
+}
+
+cf_status_t
+cf_script_run_file(cf_script_t *s, const char *path)
+{
+    FILE *f;
+    char *code;
+    long len;
+    cf_status_t st;
+    if (s == NULL || path == NULL)
+        return CF_STATUS_INVALID_ARG;
+    f = fopen(path, "rb");
+    if (f == NULL) {
+        char buf[512];
+        snprintf(buf, sizeof buf, "cannot open %s", path);
+        set_error(s, buf);
+        return CF_STATUS_IO;
+    }
+    if (fseek(f, 0, SEEK_END) != 0 || (len = ftell(f)) < 0 ||
+        fseek(f, 0, SEEK_SET) != 0 || (code = malloc((size_t)len + 1)) == NULL) {
+        char buf[512];
+        fclose(f);
+        snprintf(buf, sizeof buf, "cannot read %s", path);
+        set_error(s, buf);
+        return CF_STATUS_IO;
+    }
+    if (fread(code, 1, (size_t)len, f) != (size_t)len) {
+        char buf[512];
+        fclose(f);
+        free(code);
+        snprintf(buf, sizeof buf, "cannot read %s", path);
+        set_error(s, buf);
+        return CF_STATUS_IO;
+    }
+    fclose(f);
+    code[len] = '\0';
+    st = cf_script_run_string(s, code, path);
+    free(code);
+    return st;
+}
+
+cf_status_t
+cf_script_run_string(cf_script_t *s, const char *code, const char *name)
+{
+    lua_State *L;
+    int rc;
+    size_t len;
+    if (s == NULL || code == NULL || name == NULL)
+        return CF_STATUS_INVALID_ARG;
+    L = s->L;
+    if (code[0] == LUA_SIGNATURE[0]) {
+        char buf[512];
+        snprintf(buf, sizeof buf, "%s: binary (bytecode) chunks are not "
+                 "allowed; give the script's source", name);
+        set_error(s, buf);
+        return CF_STATUS_SCRIPT;
+    }
+    /* A first line starting with '#' (#!/usr/bin/env curvefig) is skipped
+    ** like lua.c does; its newline is kept so line numbers stay right. */
+    if (code[0] == '#') {
+        const char *nl = strchr(code, '\n');
+        code = nl != NULL ? nl : "";
+    }
+    len = strlen(code);
+    lua_pushfstring(L, "@%s", name);
+    rc = luaL_loadbufferx(L, code, len, lua_tostring(L, -1), "t");
+    lua_remove(L, -2);
+    return run_loaded(s, rc, name);
+}
+
+const char *
+cf_script_error(const cf_script_t *s)
+{
+    if (s == NULL || s->error == NULL)
+        return "";
+    return s->error;
+}
+
+/* ---- the figures -------------------------------------------------------- */
+
+size_t
+cf_script_figure_count(const cf_script_t *s)
+{
+    return s != NULL ? cf__lua_figure_count(s->L) : 0;
+}
+
+cf_figure_t *
+cf_script_figure(const cf_script_t *s, size_t i)
+{
+    return s != NULL ? cf__lua_figure_at(s->L, i) : NULL;
+}
+
+const char *
+cf_script_figure_name(const cf_script_t *s, size_t i)
+{
+    return s != NULL ? cf__lua_figure_string(s->L, i, 1) : "";
+}
+
+const char *
+cf_script_figure_caption(const cf_script_t *s, size_t i)
+{
+    return s != NULL ? cf__lua_figure_string(s->L, i, 2) : "";
+}

@@ -1,0 +1,58 @@
+/*
+** curvefig figure scripts: a sandboxed Lua 5.4 state that runs one script
+** and collects the figures it defines.  Used by the `curvefig` tool.
+**
+** The sandbox opens base (without dofile, loadfile and binary chunks),
+** math, string (without string.dump), table and utf8; no io, os, package,
+** debug or coroutine.  Memory (Lua's and the library's) and the number of
+** Lua instructions are capped; exceeding a cap stops the script with
+** "script exceeded the memory limit of N MiB" or "script exceeded the
+** instruction limit of N instructions", and pcall cannot catch either.
+*/
+#ifndef CURVEFIG_RENDER_LUA_SCRIPT_H
+#define CURVEFIG_RENDER_LUA_SCRIPT_H
+
+#include <stdio.h>
+
+#include "curvefig/core.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct cf_script cf_script_t;
+
+typedef struct cf_script_limits {
+    size_t max_memory;                 /* bytes; 0 = default (256 MiB) */
+    unsigned long long max_instructions; /* 0 = default (500 million) */
+} cf_script_limits_t;
+
+#define CF_SCRIPT_DEFAULT_MEMORY ((size_t)256 << 20)
+#define CF_SCRIPT_DEFAULT_INSTRUCTIONS 500000000ull
+
+/* A fresh sandbox; `out` receives what the script prints (NULL: stdout).
+** limits may be NULL (defaults). */
+cf_status_t cf_script_create(const cf_script_limits_t *limits, FILE *out,
+                             cf_script_t **script, cf_diag_t *diag);
+void cf_script_destroy(cf_script_t *script);
+
+/* Load and run the file at path.  CF_STATUS_SCRIPT (or NO_MEMORY, IO) on
+** failure; the full message (file, line, what went wrong, the Lua frames
+** that led there) is then cf_script_error(). */
+cf_status_t cf_script_run_file(cf_script_t *script, const char *path);
+/* The same for a chunk in memory; name is used in messages. */
+cf_status_t cf_script_run_string(cf_script_t *script, const char *code,
+                                 const char *name);
+const char *cf_script_error(const cf_script_t *script);
+
+/* The figures the script defined, in the order of definition. */
+size_t cf_script_figure_count(const cf_script_t *script);
+struct cf_figure *cf_script_figure(const cf_script_t *script, size_t i);
+const char *cf_script_figure_name(const cf_script_t *script, size_t i);
+const char *cf_script_figure_caption(const cf_script_t *script, size_t i);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,390 @@
+/*
+** curvefig: the command-line tool.
+**
+**   curvefig render SCRIPT.lua [-o DIR] [-f svg,pdf,png,ps,eps] [--dpi N]
+**                              [--only NAME[,NAME...]] [--tight] ...
+**   curvefig run SCRIPT.lua
+**   curvefig list SCRIPT.lua
+**   curvefig gallery -o INDEX.html MANIFEST...
+**
+** Exit status: 0 success, 1 the script (or a figure, or writing a file)
+** failed, 2 usage error (bad command line, unreadable script).
+*/
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "curvefig/figure.h"
+#include "help.h"
+#include "script.h"
+#include "tool.h"
+
+#define EXIT_SCRIPT 1
+#define EXIT_USAGE 2
+
+typedef struct options {
+    const char *command;
+    const char *script;
+    const char *outdir;
+    const char *only;
+    const char *manifest;
+    const char *gallery_title;
+    unsigned formats;
+    double dpi;
+    bool tight;
+    bool verbose;
+    bool long_list;
+    cf_script_limits_t limits;
+    int nfiles;
+    char **files;
+} options;
+
+static int
+usage_error(const char *fmt, const char *arg)
+{
+    fprintf(stderr, "curvefig: ");
+    fprintf(stderr, fmt, arg);
+    fprintf(stderr, "\nTry 'curvefig --help'.\n");
+    return EXIT_USAGE;
+}
+
+static int
+parse_formats(const char *list, unsigned *out)
+{
+    char name[16];
+    const char *p = list;
+    *out = 0;
+    while (*p != '\0') {
+        const char *e = strchr(p, ',');
+        size_t n = e != NULL ? (size_t)(e - p) : strlen(p);
+        cf_format_t f;
+        if (n == 0 || n >= sizeof name)
+            return -1;
+        memcpy(name, p, n);
+        name[n] = '\0';
+        if (strcmp(name, "all") == 0)
+            *out |= (1u << CF_FORMAT_LAST_) - 1;
+        else if (cf_format_from_name(name, &f, NULL) != CF_STATUS_OK)
+            return -1;
+        else
+            *out |= CF_FORMAT_BIT(f);
+        p += n;
+        if (*p == ',')
+            p++;
+    }
+    return *out != 0 ? 0 : -1;
+}
+
+static int
+parse_number(const char *s, double lo, double hi, double *out)
+{
+    char *end;
+    double v;
+    errno = 0;
+    v = strtod(s, &end);
+    if (errno != 0 || end == s || *end != '\0' || !(v >= lo && v <= hi))
+        return -1;
+    *out = v;
+    return 0;
+}
+
+/* Parse argv into o; returns -1 when the tool should exit with *rc. */
+static int
+parse_args(int argc, char **argv, options *o, int *rc)
+{
+    int i = 2;
+    memset(o, 0, sizeof *o);
+    o->outdir = ".";
+    o->formats = CF_FORMAT_BIT(CF_FORMAT_SVG) | CF_FORMAT_BIT(CF_FORMAT_PDF) |
+                 CF_FORMAT_BIT(CF_FORMAT_PNG);
+    o->dpi = 150;
+    if (argc < 2) {
+        *rc = usage_error("%sno command given", "");
+        return -1;
+    }
+    o->command = argv[1];
+    if (strcmp(o->command, "--help") == 0 || strcmp(o->command, "-h") == 0 ||
+        strcmp(o->command, "help") == 0) {
+        *rc = cf__tool_help(argc > 2 ? argv[2] : NULL);
+        return -1;
+    }
+    if (strcmp(o->command, "--version") == 0 ||
+        strcmp(o->command, "version") == 0) {
+        printf("curvefig %s\n", CF_TOOL_VERSION);
+        *rc = 0;
+        return -1;
+    }
+    if (strcmp(o->command, "render") != 0 && strcmp(o->command, "run") != 0 &&
+        strcmp(o->command, "list") != 0 && strcmp(o->command, "gallery") != 0) {
+        *rc = usage_error("unknown command '%s'", o->command);
+        return -1;
+    }
+    /* operands, gathered from between the options (argc slots suffice) */
+    o->files = calloc((size_t)argc, sizeof *o->files);
+    if (o->files == NULL) {
+        *rc = EXIT_SCRIPT;
+        return -1;
+    }
+    for (; i < argc; i++) {
+        const char *a = argv[i];
+        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+        bool takes = true;
+        double num;
+        if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
+            *rc = cf__tool_help(o->command);
+            return -1;
+        } else if (strcmp(a, "-v") == 0 || strcmp(a, "--verbose") == 0) {
+            o->verbose = true;
+            takes = false;
+        } else if (strcmp(a, "-l") == 0 || strcmp(a, "--long") == 0) {
+            o->long_list = true;
+            takes = false;
+        } else if (strcmp(a, "--tight") == 0) {
+            o->tight = true;
+            takes = false;
+        } else if (a[0] == '-' && a[1] != '\0' && v == NULL) {
+            *rc = usage_error("option '%s' needs a value", a);
+            return -1;
+        } else if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0) {
+            o->outdir = v;
+        } else if (strcmp(a, "-f") == 0 || strcmp(a, "--formats") == 0) {
+            if (parse_formats(v, &o->formats) != 0) {
+                *rc = usage_error("bad format list '%s' (use svg, pdf, png, "
+                                  "ps, eps or all, separated by commas)", v);
+                return -1;
+            }
+        } else if (strcmp(a, "--dpi") == 0) {
+            if (parse_number(v, 1, 2400, &o->dpi) != 0) {
+                *rc = usage_error("--dpi '%s': give a number from 1 to 2400",
+                                  v);
+                return -1;
+            }
+        } else if (strcmp(a, "--only") == 0) {
+            o->only = v;
+        } else if (strcmp(a, "--manifest") == 0) {
+            o->manifest = v;
+        } else if (strcmp(a, "--title") == 0) {
+            o->gallery_title = v;
+        } else if (strcmp(a, "--max-memory") == 0) {
+            if (parse_number(v, 1, 65536, &num) != 0) {
+                *rc = usage_error("--max-memory '%s': give MiB from 1 to "
+                                  "65536", v);
+                return -1;
+            }
+            o->limits.max_memory = (size_t)num << 20;
+        } else if (strcmp(a, "--max-instructions") == 0) {
+            if (parse_number(v, 1e4, 1e15, &num) != 0) {
+                *rc = usage_error("--max-instructions '%s': give a number "
+                                  "from 10000 to 1e15", v);
+                return -1;
+            }
+            o->limits.max_instructions = (unsigned long long)num;
+        } else if (strcmp(a, "--") == 0) {
+            for (i++; i < argc; i++)
+                o->files[o->nfiles++] = argv[i];
+            break;
+        } else if (a[0] == '-' && a[1] != '\0') {
+            *rc = usage_error("unknown option '%s'", a);
+            return -1;
+        } else {
+            o->files[o->nfiles] = argv[i];
+            o->nfiles++;
+            takes = false;
+        }
+        if (takes)
+            i++;
+    }
+    if (strcmp(o->command, "gallery") == 0) {
+        if (o->nfiles < 1) {
+            *rc = usage_error("%sgallery needs at least one manifest", "");
+            return -1;
+        }
+        return 0;
+    }
+    if (o->nfiles != 1) {
+        *rc = usage_error(o->nfiles == 0 ? "%s: no script given"
+                                         : "%s: give exactly one script",
+                          o->command);
+        return -1;
+    }
+    o->script = o->files[0];
+    return 0;
+}
+
+/* ---- render, run, list -------------------------------------------------- */
+
+static bool
+selected(const char *only, const char *name)
+{
+    size_t n = strlen(name);
+    const char *p = only;
+    if (only == NULL)
+        return true;
+    while (*p != '\0') {
+        const char *e = strchr(p, ',');
+        size_t len = e != NULL ? (size_t)(e - p) : strlen(p);
+        if (len == n && strncmp(p, name, n) == 0)
+            return true;
+        if (e == NULL)
+            break;
+        p = e + 1;
+    }
+    return false;
+}
+
+/* Every name of --only must be a figure of the script. */
+static int
+check_only(const cf_script_t *s, const options *o)
+{
+    const char *p = o->only;
+    while (p != NULL && *p != '\0') {
+        const char *e = strchr(p, ',');
+        size_t len = e != NULL ? (size_t)(e - p) : strlen(p);
+        bool found = false;
+        for (size_t i = 0; i < cf_script_figure_count(s) && !found; i++) {
+            const char *name = cf_script_figure_name(s, i);
+            found = strlen(name) == len && strncmp(name, p, len) == 0;
+        }
+        if (!found) {
+            fprintf(stderr, "curvefig: --only: %s defines no figure named "
+                    "'%.*s'; it defines:", o->script, (int)len, p);
+            for (size_t i = 0; i < cf_script_figure_count(s); i++)
+                fprintf(stderr, " %s", cf_script_figure_name(s, i));
+            fprintf(stderr, "\n");
+            return -1;
+        }
+        p = e != NULL ? e + 1 : NULL;
+    }
+    return 0;
+}
+
+static int
+render_figures(const cf_script_t *s, const options *o)
+{
+    cf_write_options_t wo;
+    FILE *man = NULL;
+    int rc = 0;
+    cf_write_options_init(&wo);
+    wo.dpi = o->dpi;
+    wo.tight = o->tight;
+    if (cf__tool_mkdir_p(o->outdir) != 0) {
+        fprintf(stderr, "curvefig: cannot create the directory %s: %s\n",
+                o->outdir, strerror(errno));
+        return EXIT_SCRIPT;
+    }
+    for (size_t i = 0; i < cf_script_figure_count(s); i++) {
+        const char *name = cf_script_figure_name(s, i);
+        cf_figure_t *fig = cf_script_figure(s, i);
+        char *base;
+        cf_diag_t diag;
+        cf_status_t st;
+        if (!selected(o->only, name))
+            continue;
+        base = cf__tool_join(o->outdir, name);
+        if (base == NULL) {
+            fprintf(stderr, "curvefig: out of memory\n");
+            return EXIT_SCRIPT;
+        }
+        cf_diag_clear(&diag);
+        st = cf_figure_write_all(fig, base, o->formats, &wo, &diag);
+        if (st != CF_STATUS_OK) {
+            fprintf(stderr, "curvefig: %s: figure '%s': %s\n", o->script,
+                    name, diag.msg[0] ? diag.msg : cf_status_to_string(st));
+            rc = EXIT_SCRIPT;
+        } else if (o->verbose) {
+            for (int f = 0; f < CF_FORMAT_LAST_; f++)
+                if (o->formats & CF_FORMAT_BIT(f))
+                    printf("%s.%s\n", base,
+                           cf_format_extension((cf_format_t)f));
+        }
+        free(base);
+    }
+    if (rc == 0 && o->manifest != NULL) {
+        man = cf__tool_open_atomic(o->manifest);
+        if (man == NULL) {
+            fprintf(stderr, "curvefig: cannot write %s: %s\n", o->manifest,
+                    strerror(errno));
+            return EXIT_SCRIPT;
+        }
+        for (size_t i = 0; i < cf_script_figure_count(s); i++) {
+            if (!selected(o->only, cf_script_figure_name(s, i)))
+                continue;
+            cf__tool_manifest_line(man, cf_script_figure_name(s, i),
+                                   cf_script_figure_caption(s, i),
+                                   o->formats);
+        }
+        if (cf__tool_close_atomic(man, o->manifest) != 0) {
+            fprintf(stderr, "curvefig: cannot write %s: %s\n", o->manifest,
+                    strerror(errno));
+            return EXIT_SCRIPT;
+        }
+    }
+    return rc;
+}
+
+static int
+run_script(const options *o)
+{
+    cf_script_t *s = NULL;
+    cf_diag_t diag;
+    cf_status_t st;
+    int rc = 0;
+    struct stat sb;
+    if (stat(o->script, &sb) != 0 || !S_ISREG(sb.st_mode)) {
+        fprintf(stderr, "curvefig: cannot read the script %s: %s\n",
+                o->script, errno ? strerror(errno) : "not a regular file");
+        return EXIT_USAGE;
+    }
+    cf_diag_clear(&diag);
+    st = cf_script_create(&o->limits, stdout, &s, &diag);
+    if (st != CF_STATUS_OK) {
+        fprintf(stderr, "curvefig: %s\n", diag.msg);
+        return EXIT_SCRIPT;
+    }
+    st = cf_script_run_file(s, o->script);
+    fflush(stdout);
+    if (st == CF_STATUS_IO) {
+        fprintf(stderr, "curvefig: %s\n", cf_script_error(s));
+        cf_script_destroy(s);
+        return EXIT_USAGE;
+    }
+    if (st != CF_STATUS_OK) {
+        fprintf(stderr, "curvefig: %s\n", cf_script_error(s));
+        cf_script_destroy(s);
+        return EXIT_SCRIPT;
+    }
+    if (strcmp(o->command, "list") == 0) {
+        for (size_t i = 0; i < cf_script_figure_count(s); i++) {
+            if (o->long_list)
+                printf("%s\t%s\n", cf_script_figure_name(s, i),
+                       cf_script_figure_caption(s, i));
+            else
+                printf("%s\n", cf_script_figure_name(s, i));
+        }
+    } else if (strcmp(o->command, "render") == 0) {
+        if (check_only(s, o) != 0)
+            rc = EXIT_USAGE;
+        else
+            rc = render_figures(s, o);
+    }
+    cf_script_destroy(s);
+    return rc;
+}
+
+int
+main(int argc, char **argv)
+{
+    options o;
+    int rc = 0;
+    if (parse_args(argc, argv, &o, &rc) == 0) {
+        if (strcmp(o.command, "gallery") == 0)
+            rc = cf__tool_gallery(o.outdir, o.gallery_title,
+                                  (const char *const *)o.files, o.nfiles);
+        else
+            rc = run_script(&o);
+    }
+    free(o.files);
+    return rc;
+}

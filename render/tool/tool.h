@@ -1,0 +1,28 @@
+/*
+** Internals of the curvefig tool shared between its files.
+*/
+#ifndef CURVEFIG_TOOL_H
+#define CURVEFIG_TOOL_H
+
+#include <stdio.h>
+
+/* mkdir -p; 0 on success (errno set otherwise). */
+int cf__tool_mkdir_p(const char *dir);
+/* dir + "/" + name, malloc'd (NULL when out of memory). */
+char *cf__tool_join(const char *dir, const char *name);
+/* Write to path through a temporary file renamed on close, so that a
+** failure never leaves a half-written file.  NULL on failure (errno). */
+FILE *cf__tool_open_atomic(const char *path);
+int cf__tool_close_atomic(FILE *f, const char *path);
+/* Close and remove the temporary file (the target is left as it was). */
+void cf__tool_discard_atomic(FILE *f, const char *path);
+
+/* One line of a render manifest: name TAB formats TAB caption. */
+void cf__tool_manifest_line(FILE *f, const char *name, const char *caption,
+                            unsigned formats);
+/* Write the HTML gallery `out` from manifests in the given order; returns
+** the exit status. */
+int cf__tool_gallery(const char *out, const char *title,
+                     const char *const *manifests, int count);
+
+#endif

@@ -1,0 +1,67 @@
+/*
+** Internals shared by knots.c, bspline.c and bspline-ops.c.
+*/
+#ifndef CURVEFIG_BSPLINE_PRIVATE_H
+#define CURVEFIG_BSPLINE_PRIVATE_H
+
+#include <stdint.h>
+
+#include "core-private.h"
+#include "curvefig/bspline.h"
+
+/*
+** The curve, in one block: header, knots U[nknots], points P[count * hdim],
+** reciprocals rk[p * nknots] and the span grid grid[ngrid].
+**   rk[(j - 1) * nknots + a] = 1 / (U[a + j] - U[a]) (0 when they are
+**   equal), j = 1..p, a + j < nknots: every denominator of the triangular
+**   scheme and of the derivative recursion.
+**   grid[g]: a span k with U[k] <= u for every u of the cells g - 1 .. g
+**   (cell g = [a + g h, a + (g + 1) h), h = (b - a) / ngrid); a branch-free
+**   bisection of gsteps steps from there finds the span.
+*/
+struct cf_bspline {
+    size_t dim;        /* Cartesian N */
+    size_t hdim;       /* stored doubles per point: N + rational */
+    int p;
+    bool rational;
+    size_t count;      /* n + 1 */
+    size_t nknots;     /* n + p + 2 */
+    size_t first_span; /* first non-empty span of the domain */
+    size_t last_span;  /* last non-empty span of the domain */
+    double a, b;       /* domain */
+    double *U;
+    double *P;
+    double *rk;
+    uint32_t *grid;
+    size_t ngrid;
+    double ginv;       /* ngrid / (b - a) */
+    int gsteps;
+};
+
+/* Allocate a curve with room for the given sizes; U and P are to be filled
+** by the caller, then cf__bspline_finish computes the accelerators.
+** Returns NULL when out of memory (or the sizes overflow). */
+cf_bspline_t *cf__bspline_alloc(size_t dim, bool rational, int p,
+                                size_t count);
+void cf__bspline_finish(cf_bspline_t *c);
+
+/* Unchecked span search on a curve (the conventions of
+** cf_knots_find_span). */
+size_t cf__bspline_span(const cf_bspline_t *c, double u);
+
+/* Check u is finite and inside the domain. */
+cf_status_t cf__bspline_check_param(const cf_bspline_t *c, double u,
+                                    cf_diag_t *diag);
+
+/*
+** The d-th derivatives (d >= 0) of the nonzero basis functions on span k
+** (U[k] <= u < U[k+1] or the last span at the end): v[j] =
+** N_{k-p+j}^{p (d)}(u), j = 0..p.  rk may be NULL (then it divides).
+*/
+void cf__basis_deriv(int p, const double *U, size_t nknots, const double *rk,
+                     size_t k, double u, int d, double *v);
+
+/* Unchecked: the multiplicity of u in U (a sorted vector). */
+int cf__knots_mult(const double *U, size_t nknots, double u);
+
+#endif

@@ -10,5 +10,6 @@
 #include "curvefig/bezier.h"
 #include "curvefig/knots.h"
 #include "curvefig/bspline.h"
+#include "curvefig/interp.h"
 
 #endif

@@ -1,0 +1,665 @@
+/*
+** Interpolation front end: options, names, data parameters, input checks
+** and dispatch (cf_interpolate); the chapter-4 cubics of Ferguson and Coons.
+** The spline constructions themselves are in interp-spline.c.
+*/
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "bezier-private.h"
+#include "interp-private.h"
+
+/* ---- options and names -------------------------------------------------- */
+
+void
+cf_interp_options_init(cf_interp_options_t *opt)
+{
+    if (opt == NULL)
+        return;
+    memset(opt, 0, sizeof *opt);
+    opt->method = CF_INTERP_NATURAL;
+    opt->degree = 3;
+    opt->param = CF_PARAM_DEFAULT;
+}
+
+static const char *const method_names[] = {
+    [CF_INTERP_NATURAL] = "natural",
+    [CF_INTERP_CLAMPED] = "clamped",
+    [CF_INTERP_NOT_A_KNOT] = "not-a-knot",
+    [CF_INTERP_PERIODIC] = "periodic",
+    [CF_INTERP_CATMULL_ROM] = "catmull-rom",
+    [CF_INTERP_GLOBAL] = "global",
+};
+#define NMETHODS (sizeof method_names / sizeof method_names[0])
+
+static const char *const param_names[] = {
+    [CF_PARAM_DEFAULT] = "default",
+    [CF_PARAM_UNIFORM] = "uniform",
+    [CF_PARAM_CHORD] = "chord",
+    [CF_PARAM_CENTRIPETAL] = "centripetal",
+};
+#define NPARAMS (sizeof param_names / sizeof param_names[0])
+
+const char *
+cf_interp_method_to_string(cf_interp_method_t method)
+{
+    if ((unsigned)method >= NMETHODS)
+        return "unknown";
+    return method_names[method];
+}
+
+cf_status_t
+cf_interp_method_from_string(const char *name, cf_interp_method_t *out,
+                             cf_diag_t *diag)
+{
+    if (name == NULL || out == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "interpolation method: NULL argument");
+    for (size_t i = 0; i < NMETHODS; i++) {
+        if (strcmp(name, method_names[i]) == 0) {
+            *out = (cf_interp_method_t)i;
+            return CF_STATUS_OK;
+        }
+    }
+    return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                     "unknown interpolation method \"%.40s\"; expected "
+                     "natural, clamped, not-a-knot, periodic, catmull-rom "
+                     "or global", name);
+}
+
+cf_status_t
+cf_param_from_string(const char *name, cf_param_t *out, cf_diag_t *diag)
+{
+    if (name == NULL || out == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "parametrisation: NULL argument");
+    for (size_t i = 0; i < NPARAMS; i++) {
+        if (strcmp(name, param_names[i]) == 0) {
+            *out = (cf_param_t)i;
+            return CF_STATUS_OK;
+        }
+    }
+    return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                     "unknown parametrisation \"%.40s\"; expected uniform, "
+                     "chord or centripetal", name);
+}
+
+/* ---- data parameters ---------------------------------------------------- */
+
+/* "(1, 2)": at most four coordinates, then "...". */
+static void
+format_point(char *buf, size_t size, const double *p, size_t dim)
+{
+    size_t len = 0;
+    len += (size_t)snprintf(buf, size, "(");
+    for (size_t k = 0; k < dim && k < 4 && len < size; k++)
+        len += (size_t)snprintf(buf + len, size - len, "%s%g",
+                                k > 0 ? ", " : "", p[k]);
+    if (dim > 4 && len < size)
+        len += (size_t)snprintf(buf + len, size - len, ", ...");
+    if (len < size)
+        snprintf(buf + len, size - len, ")");
+}
+
+static const char *
+param_phrase(cf_param_t param)
+{
+    switch (param) {
+    case CF_PARAM_CHORD:
+        return "chord-length parameters need";
+    case CF_PARAM_CENTRIPETAL:
+        return "centripetal parameters need";
+    case CF_PARAM_POWER:
+        return "power parameters need";
+    default:
+        return "interpolation needs";
+    }
+}
+
+cf_status_t
+cf_interp_parameters(size_t dim, const double *points, size_t count,
+                     cf_param_t param, double exponent, bool closed,
+                     double *out, cf_diag_t *diag)
+{
+    size_t nseg;
+    double e, total = 0.0;
+    if (points == NULL || out == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "parameters: points and out must not be NULL");
+    if (dim < 1)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "parameters: dimension must be at least 1, got 0");
+    if (count < 2)
+        return cf__error(diag, CF_STATUS_TOO_FEW_POINTS, (long)count,
+                         "parameters need at least 2 points, got %zu",
+                         count);
+    switch (param) {
+    case CF_PARAM_DEFAULT:
+    case CF_PARAM_CHORD:
+        e = 1.0;
+        break;
+    case CF_PARAM_UNIFORM:
+        e = 0.0;
+        break;
+    case CF_PARAM_CENTRIPETAL:
+        e = 0.5;
+        break;
+    case CF_PARAM_POWER:
+        if (!(exponent >= 0.0 && exponent <= 1.0))
+            return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                             "parameter exponent %g is outside [0, 1]",
+                             exponent);
+        e = exponent;
+        break;
+    default:
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "unknown parametrisation %d", (int)param);
+    }
+    {
+        cf_status_t st = cf__check_finite_points(points, count, dim, dim,
+                                                 "point", diag);
+        if (st != CF_STATUS_OK)
+            return st;
+    }
+    nseg = closed ? count : count - 1;
+    out[0] = 0.0;
+    for (size_t i = 0; i < nseg; i++) {
+        size_t j = (i + 1) % count;
+        const double *a = points + i * dim, *b = points + j * dim;
+        double big = 0.0, s = 0.0, d, step;
+        /* |b - a| scaled by its largest coordinate (no overflow) */
+        for (size_t k = 0; k < dim; k++)
+            big = fmax(big, fabs(b[k] - a[k]));
+        if (big == 0.0) {
+            char pa[96];
+            format_point(pa, sizeof pa, a, dim);
+            return cf__error(diag, CF_STATUS_DEGENERATE, (long)j,
+                             "points %zu and %zu coincide %s; %s distinct "
+                             "consecutive points", i, j, pa,
+                             param_phrase(param));
+        }
+        for (size_t k = 0; k < dim; k++) {
+            double q = (b[k] - a[k]) / big;
+            s += q * q;
+        }
+        d = big * sqrt(s);
+        step = e == 0.0 ? 1.0 : e == 1.0 ? d : e == 0.5 ? sqrt(d)
+                                                    : pow(d, e);
+        if (!isfinite(step))
+            return cf__error(diag, CF_STATUS_NOT_FINITE, (long)j,
+                             "distance between points %zu and %zu "
+                             "overflows", i, j);
+        total += step;
+        out[i + 1] = total;
+    }
+    if (!isfinite(total) || !(total > 0.0))
+        return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
+                         "total parameter length %g is not finite", total);
+    for (size_t i = 1; i < nseg; i++)
+        out[i] /= total;
+    out[nseg] = 1.0;
+    return CF_STATUS_OK;
+}
+
+static cf_status_t
+check_explicit_params(const double *u, size_t n, cf_diag_t *diag)
+{
+    for (size_t i = 0; i < n; i++) {
+        if (!isfinite(u[i]))
+            return cf__error(diag, CF_STATUS_NOT_FINITE, (long)i,
+                             "parameter %zu is %g; parameters must be "
+                             "finite", i, u[i]);
+        if (i > 0 && !(u[i] > u[i - 1]))
+            return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)i,
+                             "parameter %zu (%g) is not larger than "
+                             "parameter %zu (%g); parameters must increase "
+                             "strictly", i, u[i], i - 1, u[i - 1]);
+    }
+    return CF_STATUS_OK;
+}
+
+static cf_status_t
+check_tangent(const double *t, size_t dim, const char *name, cf_diag_t *diag)
+{
+    if (t == NULL)
+        return CF_STATUS_OK;
+    for (size_t k = 0; k < dim; k++) {
+        if (!isfinite(t[k]))
+            return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
+                             "%s has coordinate %zu = %g; coordinates must "
+                             "be finite", name, k + 1, t[k]);
+    }
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf__interp_prepare_params(size_t dim, const double *points, size_t count,
+                          const cf_interp_options_t *opt, bool closed,
+                          double *u, cf_diag_t *diag)
+{
+    size_t nu = closed ? count + 1 : count;
+    cf_param_t param = opt->param;
+    cf_status_t st;
+    if (opt->params != NULL) {
+        st = check_explicit_params(opt->params, nu, diag);
+        if (st == CF_STATUS_OK)
+            memcpy(u, opt->params, nu * sizeof *u);
+        return st;
+    }
+    if (param == CF_PARAM_DEFAULT)
+        param = opt->method == CF_INTERP_CATMULL_ROM ? CF_PARAM_CENTRIPETAL
+                                                     : CF_PARAM_CHORD;
+    return cf_interp_parameters(dim, points, count, param, opt->exponent,
+                                closed, u, diag);
+}
+
+/* ---- the front end ------------------------------------------------------ */
+
+static bool
+same_point(const double *a, const double *b, size_t dim)
+{
+    for (size_t k = 0; k < dim; k++)
+        if (a[k] != b[k])
+            return false;
+    return true;
+}
+
+/* Fewest points each method accepts (GLOBAL: checked with its degree). */
+static size_t
+min_points(cf_interp_method_t m, bool closed)
+{
+    switch (m) {
+    case CF_INTERP_NOT_A_KNOT:
+        return 4;
+    case CF_INTERP_PERIODIC:
+        return 3;
+    case CF_INTERP_CATMULL_ROM:
+        return closed ? 3 : 2;
+    default:
+        return 2;
+    }
+}
+
+static const char *
+method_title(cf_interp_method_t m, bool closed)
+{
+    switch (m) {
+    case CF_INTERP_NATURAL:
+        return "natural cubic spline";
+    case CF_INTERP_CLAMPED:
+        return "clamped cubic spline";
+    case CF_INTERP_NOT_A_KNOT:
+        return "not-a-knot cubic spline";
+    case CF_INTERP_PERIODIC:
+        return "periodic cubic spline";
+    case CF_INTERP_CATMULL_ROM:
+        return closed ? "closed Catmull-Rom spline" : "Catmull-Rom spline";
+    default:
+        return "global interpolation";
+    }
+}
+
+static cf_status_t
+check_options(size_t dim, const cf_interp_options_t *o, cf_diag_t *diag)
+{
+    const char *title;
+    if ((unsigned)o->method >= NMETHODS)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "unknown interpolation method %d", (int)o->method);
+    if ((unsigned)o->param > CF_PARAM_POWER)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "unknown parametrisation %d", (int)o->param);
+    title = method_title(o->method, o->closed);
+    if (o->method == CF_INTERP_GLOBAL) {
+        if (o->degree < 1 || o->degree > CF_BSPLINE_MAX_DEGREE)
+            return cf__error(diag, CF_STATUS_BAD_DEGREE, -1,
+                             "global interpolation degree %d is outside "
+                             "1..%d", o->degree, CF_BSPLINE_MAX_DEGREE);
+        if (o->closed)
+            return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                             "global interpolation cannot be closed; use "
+                             "method periodic for a closed cubic spline");
+        if (o->degree == 1 &&
+            (o->start_tangent != NULL || o->end_tangent != NULL))
+            return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                             "global interpolation of degree 1 (a polyline) "
+                             "takes no end tangents");
+    } else {
+        if (o->degree != 0 && o->degree != 3)
+            return cf__error(diag, CF_STATUS_BAD_DEGREE, -1,
+                             "%s has degree 3, got degree %d; use method "
+                             "global for other degrees", title, o->degree);
+        if (o->closed && o->method != CF_INTERP_CATMULL_ROM &&
+            o->method != CF_INTERP_PERIODIC)
+            return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                             "%s cannot be closed; use method periodic for "
+                             "a closed cubic spline", title);
+    }
+    if (o->method == CF_INTERP_CLAMPED &&
+        (o->start_tangent == NULL || o->end_tangent == NULL))
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "clamped cubic spline needs start_tangent and "
+                         "end_tangent");
+    if (o->method != CF_INTERP_CLAMPED && o->method != CF_INTERP_GLOBAL &&
+        (o->start_tangent != NULL || o->end_tangent != NULL))
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "%s takes no end tangents; use method clamped or "
+                         "global", title);
+    if (check_tangent(o->start_tangent, dim, "start_tangent", diag) !=
+            CF_STATUS_OK ||
+        check_tangent(o->end_tangent, dim, "end_tangent", diag) !=
+            CF_STATUS_OK)
+        return CF_STATUS_NOT_FINITE;
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_interpolate(size_t dim, const double *points, size_t count,
+               const cf_interp_options_t *opt, cf_bspline_t **out,
+               cf_diag_t *diag)
+{
+    cf_interp_options_t defaults;
+    const cf_interp_options_t *o = opt;
+    bool closed;
+    size_t need, nd = 0;
+    double *u;
+    cf_status_t st;
+    if (out == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "interpolate: out must not be NULL");
+    *out = NULL;
+    if (o == NULL) {
+        cf_interp_options_init(&defaults);
+        o = &defaults;
+    }
+    if (dim < 1)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "interpolate: dimension must be at least 1, got 0");
+    if (points == NULL && count > 0)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "interpolate: points must not be NULL");
+    st = check_options(dim, o, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    if (count > 0) {
+        st = cf__check_finite_points(points, count, dim, dim, "point", diag);
+        if (st != CF_STATUS_OK)
+            return st;
+    }
+    closed = o->method == CF_INTERP_PERIODIC ||
+             (o->method == CF_INTERP_CATMULL_ROM && o->closed);
+    /* a closed curve given with its closing point: drop the repeat */
+    if (closed && count >= 2 &&
+        same_point(points, points + (count - 1) * dim, dim))
+        count--;
+    if (o->method == CF_INTERP_GLOBAL) {
+        nd = (o->start_tangent != NULL) + (o->end_tangent != NULL);
+        if (count < 2)
+            return cf__error(diag, CF_STATUS_TOO_FEW_POINTS, (long)count,
+                             "global interpolation needs at least 2 "
+                             "points, got %zu", count);
+        if (count + nd < (size_t)o->degree + 1) {
+            if (nd == 0)
+                return cf__error(diag, CF_STATUS_TOO_FEW_POINTS,
+                                 (long)count, "global interpolation of "
+                                 "degree %d needs at least %d points, got "
+                                 "%zu", o->degree, o->degree + 1, count);
+            return cf__error(diag, CF_STATUS_TOO_FEW_POINTS, (long)count,
+                             "global interpolation of degree %d needs at "
+                             "least %d points and end derivatives "
+                             "together, got %zu + %zu", o->degree,
+                             o->degree + 1, count, nd);
+        }
+    } else {
+        need = min_points(o->method, closed);
+        if (count < need)
+            return cf__error(diag, CF_STATUS_TOO_FEW_POINTS, (long)count,
+                             "%s needs at least %zu %spoints, got %zu",
+                             method_title(o->method, closed), need,
+                             closed ? "distinct " : "", count);
+    }
+    u = cf__alloc_array(count + 1, sizeof *u);
+    if (u == NULL)
+        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+                         "no memory for %zu parameters", count + 1);
+    st = cf__interp_prepare_params(dim, points, count, o, closed, u, diag);
+    if (st == CF_STATUS_OK) {
+        switch (o->method) {
+        case CF_INTERP_NATURAL:
+        case CF_INTERP_CLAMPED:
+            st = cf__interp_cubic_ends(dim, points, count, u,
+                                       o->start_tangent, o->end_tangent,
+                                       out, diag);
+            break;
+        case CF_INTERP_NOT_A_KNOT:
+            st = cf__interp_not_a_knot(dim, points, count, u, out, diag);
+            break;
+        case CF_INTERP_PERIODIC:
+            st = cf__interp_periodic(dim, points, count, u, out, diag);
+            break;
+        case CF_INTERP_CATMULL_ROM:
+            st = cf__interp_catmull_rom(dim, points, count, u, closed, out,
+                                        diag);
+            break;
+        case CF_INTERP_GLOBAL:
+            st = cf__interp_global(dim, points, count, u, o->degree,
+                                   o->start_tangent, o->end_tangent, out,
+                                   diag);
+            break;
+        }
+    }
+    cf__free(u);
+    return st;
+}
+
+/* ---- Ferguson cubics ---------------------------------------------------- */
+
+static cf_status_t
+check_vec(const double *v, size_t dim, const char *name, cf_diag_t *diag)
+{
+    if (v == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "%s must not be NULL", name);
+    return check_tangent(v, dim, name, diag);
+}
+
+/* Bézier points of the Hermite cubic: P0, P0 + T0/3, P1 - T1/3, P1
+** (from C'(0) = 3 (B1 - B0), C'(1) = 3 (B3 - B2)). */
+static void
+hermite_to_bezier(size_t dim, const double *p0, const double *p1,
+                  const double *t0, const double *t1, double *b)
+{
+    for (size_t k = 0; k < dim; k++) {
+        b[k] = p0[k];
+        b[dim + k] = p0[k] + t0[k] / 3.0;
+        b[2 * dim + k] = p1[k] - t1[k] / 3.0;
+        b[3 * dim + k] = p1[k];
+    }
+}
+
+cf_status_t
+cf_ferguson_cubic(size_t dim, const double *p0, const double *p1,
+                  const double *t0, const double *t1, cf_bezier_t **out,
+                  cf_diag_t *diag)
+{
+    cf_bezier_t *c;
+    cf_status_t st;
+    if (out == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "ferguson: out must not be NULL");
+    *out = NULL;
+    if (dim < 1)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "ferguson: dimension must be at least 1, got 0");
+    if ((st = check_vec(p0, dim, "P0", diag)) != CF_STATUS_OK ||
+        (st = check_vec(p1, dim, "P1", diag)) != CF_STATUS_OK ||
+        (st = check_vec(t0, dim, "tangent T0", diag)) != CF_STATUS_OK ||
+        (st = check_vec(t1, dim, "tangent T1", diag)) != CF_STATUS_OK)
+        return st;
+    c = cf__bezier_new(dim, 3, false);
+    if (c == NULL)
+        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+                         "no memory for a Ferguson cubic in R^%zu", dim);
+    hermite_to_bezier(dim, p0, p1, t0, t1, c->pts);
+    *out = c;
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_ferguson_chain(size_t dim, const double *points, const double *tangents,
+                  size_t count, cf_bezier_list_t **out, cf_diag_t *diag)
+{
+    cf_bezier_list_t *list;
+    cf_status_t st;
+    if (out == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "ferguson chain: out must not be NULL");
+    *out = NULL;
+    if (dim < 1 || points == NULL || tangents == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "ferguson chain: needs dim >= 1, points and "
+                         "tangents");
+    if (count < 2)
+        return cf__error(diag, CF_STATUS_TOO_FEW_POINTS, (long)count,
+                         "Ferguson chain needs at least 2 points, got %zu",
+                         count);
+    if ((st = cf__check_finite_points(points, count, dim, dim, "point",
+                                      diag)) != CF_STATUS_OK ||
+        (st = cf__check_finite_points(tangents, count, dim, dim, "tangent",
+                                      diag)) != CF_STATUS_OK)
+        return st;
+    list = cf__bezier_list_new(count - 1, true);
+    if (list == NULL)
+        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+                         "no memory for a chain of %zu cubics", count - 1);
+    for (size_t i = 0; i + 1 < count; i++) {
+        cf_bezier_t *c = cf__bezier_new(dim, 3, false);
+        if (c == NULL) {
+            cf_bezier_list_destroy(list);
+            return cf__error(diag, CF_STATUS_NO_MEMORY, (long)i,
+                             "no memory for a chain of %zu cubics",
+                             count - 1);
+        }
+        hermite_to_bezier(dim, points + i * dim, points + (i + 1) * dim,
+                          tangents + i * dim, tangents + (i + 1) * dim,
+                          c->pts);
+        list->items[i] = c;
+        list->t0[i] = (double)i;
+        list->t1[i] = (double)(i + 1);
+    }
+    *out = list;
+    return CF_STATUS_OK;
+}
+
+/* ---- Coons cubics ------------------------------------------------------- */
+
+/* The uniform cubic B-spline segment of Q0..Q3 in Bézier form: the basis
+** 1/6 [(1-t)^3, 3t^3 - 6t^2 + 4, -3t^3 + 3t^2 + 3t + 1, t^3] converted to
+** Bernstein: B0 = (Q0 + 4Q1 + Q2)/6, B1 = (2Q1 + Q2)/3, B2 = (Q1 + 2Q2)/3,
+** B3 = (Q1 + 4Q2 + Q3)/6. */
+static void
+coons_to_bezier(size_t dim, const double *q0, const double *q1,
+                const double *q2, const double *q3, double *b)
+{
+    for (size_t k = 0; k < dim; k++) {
+        b[k] = (q0[k] + 4.0 * q1[k] + q2[k]) / 6.0;
+        b[dim + k] = (2.0 * q1[k] + q2[k]) / 3.0;
+        b[2 * dim + k] = (q1[k] + 2.0 * q2[k]) / 3.0;
+        b[3 * dim + k] = (q1[k] + 4.0 * q2[k] + q3[k]) / 6.0;
+    }
+}
+
+cf_status_t
+cf_coons_cubic(size_t dim, const double *p4, cf_bezier_t **out,
+               cf_diag_t *diag)
+{
+    cf_bezier_t *c;
+    cf_status_t st;
+    if (out == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "coons: out must not be NULL");
+    *out = NULL;
+    if (dim < 1 || p4 == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "coons: needs dim >= 1 and four points");
+    st = cf__check_finite_points(p4, 4, dim, dim, "point", diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    c = cf__bezier_new(dim, 3, false);
+    if (c == NULL)
+        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+                         "no memory for a Coons cubic in R^%zu", dim);
+    coons_to_bezier(dim, p4, p4 + dim, p4 + 2 * dim, p4 + 3 * dim, c->pts);
+    *out = c;
+    return CF_STATUS_OK;
+}
+
+/* Index into the given points of entry j of the treated sequence. */
+static size_t
+coons_index(cf_coons_ends_t ends, size_t count, size_t j)
+{
+    switch (ends) {
+    case CF_COONS_TRIPLED:
+        return j < 2 ? 0 : j - 2 >= count ? count - 1 : j - 2;
+    case CF_COONS_CLOSED:
+        return j % count;
+    default:
+        return j;
+    }
+}
+
+cf_status_t
+cf_coons_chain(size_t dim, const double *points, size_t count,
+               cf_coons_ends_t ends, cf_bezier_list_t **out, cf_diag_t *diag)
+{
+    static const size_t need[] = { 4, 2, 3 };
+    static const char *const names[] = { "plain", "tripled-end",
+                                         "closed" };
+    cf_bezier_list_t *list;
+    size_t total, nseg;
+    cf_status_t st;
+    if (out == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "coons chain: out must not be NULL");
+    *out = NULL;
+    if (dim < 1 || points == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "coons chain: needs dim >= 1 and points");
+    if ((unsigned)ends > CF_COONS_CLOSED)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "coons chain: unknown end treatment %d", (int)ends);
+    if (count < need[ends])
+        return cf__error(diag, CF_STATUS_TOO_FEW_POINTS, (long)count,
+                         "%s Coons B-spline needs at least %zu points, got "
+                         "%zu", names[ends], need[ends], count);
+    st = cf__check_finite_points(points, count, dim, dim, "point", diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    total = ends == CF_COONS_TRIPLED ? count + 4
+            : ends == CF_COONS_CLOSED ? count + 3
+                                      : count;
+    nseg = total - 3;
+    list = cf__bezier_list_new(nseg, true);
+    if (list == NULL)
+        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+                         "no memory for a chain of %zu cubics", nseg);
+    for (size_t s = 0; s < nseg; s++) {
+        cf_bezier_t *c = cf__bezier_new(dim, 3, false);
+        if (c == NULL) {
+            cf_bezier_list_destroy(list);
+            return cf__error(diag, CF_STATUS_NO_MEMORY, (long)s,
+                             "no memory for a chain of %zu cubics", nseg);
+        }
+        coons_to_bezier(dim, points + coons_index(ends, count, s) * dim,
+                        points + coons_index(ends, count, s + 1) * dim,
+                        points + coons_index(ends, count, s + 2) * dim,
+                        points + coons_index(ends, count, s + 3) * dim,
+                        c->pts);
+        list->items[s] = c;
+        list->t0[s] = (double)s;
+        list->t1[s] = (double)(s + 1);
+    }
+    *out = list;
+    return CF_STATUS_OK;
+}

@@ -8,6 +8,7 @@
 
 #include "curvefig/core.h"
 #include "curvefig/bezier.h"
+#include "curvefig/offset.h"
 #include "curvefig/knots.h"
 #include "curvefig/bspline.h"
 #include "curvefig/interp.h"

@@ -1,0 +1,768 @@
+/*
+** The exact curves that offset pieces approximate ("sources": the offset of
+** a Bézier curve, or a circular join arc), the fits (Levien's area and
+** moment fit, Tiller-Hanson) and the measured two-sided Hausdorff error.
+*/
+#include <math.h>
+#include <string.h>
+
+#include "core-private.h"
+#include "bezier-private.h"
+#include "offset-private.h"
+
+/* ---- unit tangent with higher derivatives -------------------------------- */
+
+int
+cf__bezier_unit_tangent(const cf_bezier_t *c, double t, int side,
+                        double scale, double *p, double *u)
+{
+    double v[2 * 9];
+    int n = c->degree, kmax = n < 8 ? n : 8;
+    double len;
+    cf_bezier_eval_derivs(c, t, 1, v);
+    if (p != NULL) {
+        p[0] = v[0];
+        p[1] = v[1];
+    }
+    len = hypot(v[2], v[3]);
+    if (len > 1e-12 * scale && len > 0.0) {
+        u[0] = v[2] / len;
+        u[1] = v[3] / len;
+        return 0;
+    }
+    /* c' vanishes: near t, c'(t + h) ~ c^(m)(t) h^(m-1) / (m-1)!, so the
+    ** direction is that of the first non-zero derivative from the right
+    ** and (-1)^(m-1) times it from the left. */
+    if (kmax < 2)
+        return -1;
+    cf_bezier_eval_derivs(c, t, kmax, v);
+    for (int m = 2; m <= kmax; m++) {
+        double x = v[2 * m], y = v[2 * m + 1];
+        len = hypot(x, y);
+        if (len > 1e-12 * scale && len > 0.0) {
+            double sg = (side < 0 && (m - 1) % 2 == 1) ? -1.0 : 1.0;
+            u[0] = sg * x / len;
+            u[1] = sg * y / len;
+            return 0;
+        }
+    }
+    return -1;
+}
+
+/* ---- sources ------------------------------------------------------------- */
+
+void
+cf__osrc_init_offset(cf__osrc_t *s, const cf_bezier_t *c, double d)
+{
+    memset(s, 0, sizeof *s);
+    s->kind = 0;
+    s->c = c;
+    s->d = d;
+    s->sgn = 1.0;
+    s->scale = cf__deriv_scale(c);
+    if (!(s->scale > 0.0))
+        s->scale = 1.0;
+}
+
+void
+cf__osrc_init_arc(cf__osrc_t *s, double cx, double cy, double r, double a0,
+                  double sweep)
+{
+    memset(s, 0, sizeof *s);
+    s->kind = 1;
+    s->sgn = sweep >= 0 ? 1.0 : -1.0;
+    s->cx = cx;
+    s->cy = cy;
+    s->r = r;
+    s->a0 = a0;
+    s->sweep = sweep;
+    s->scale = r;
+}
+
+/* Point at t (side: which limit where c' = 0) and travel direction u
+** (may be NULL). */
+static int
+src_point_dir(const cf__osrc_t *s, double t, int side, double *p, double *u)
+{
+    if (s->kind == 1) {
+        double th = s->a0 + s->sweep * t;
+        p[0] = s->cx + s->r * cos(th);
+        p[1] = s->cy + s->r * sin(th);
+        if (u != NULL) {
+            u[0] = -s->sgn * sin(th);
+            u[1] = s->sgn * cos(th);
+        }
+        return 0;
+    } else {
+        double base[2], tan[2];
+        if (cf__bezier_unit_tangent(s->c, t, side, s->scale, base, tan) != 0) {
+            p[0] = base[0];
+            p[1] = base[1];
+            if (u != NULL)
+                u[0] = u[1] = 0.0;
+            return -1;
+        }
+        p[0] = base[0] - s->d * tan[1];
+        p[1] = base[1] + s->d * tan[0];
+        if (u != NULL) {
+            u[0] = s->sgn * tan[0];
+            u[1] = s->sgn * tan[1];
+        }
+        return 0;
+    }
+}
+
+int
+cf__osrc_point(const cf__osrc_t *s, double t, double *p)
+{
+    return src_point_dir(s, t, t >= 1.0 ? -1 : 1, p, NULL);
+}
+
+int
+cf__osrc_deriv(const cf__osrc_t *s, double t, double *p, double *dp)
+{
+    if (s->kind == 1) {
+        double th = s->a0 + s->sweep * t;
+        p[0] = s->cx + s->r * cos(th);
+        p[1] = s->cy + s->r * sin(th);
+        dp[0] = -s->r * s->sweep * sin(th);
+        dp[1] = s->r * s->sweep * cos(th);
+        return 0;
+    } else {
+        /* o' = c' (1 - d (c' x c'') / |c'|^3) */
+        double v[6], sp, f;
+        cf_bezier_eval_derivs(s->c, t, 2, v);
+        sp = hypot(v[2], v[3]);
+        if (!(sp > 1e-14 * s->scale)) {
+            src_point_dir(s, t, 1, p, NULL);
+            dp[0] = dp[1] = 0.0;
+            return 0;
+        }
+        f = 1.0 - s->d * (v[2] * v[5] - v[3] * v[4]) / (sp * sp * sp);
+        p[0] = v[0] - s->d * v[3] / sp;
+        p[1] = v[1] + s->d * v[2] / sp;
+        dp[0] = v[2] * f;
+        dp[1] = v[3] * f;
+        return 0;
+    }
+}
+
+/* ---- the cubic ------------------------------------------------------------ */
+
+/* Point and derivative (dp may be NULL) of the cubic pts[8] at s, from its
+** Bernstein coefficients per coordinate. */
+void
+cf__cubic_pd(const double *pts, double s, double *p, double *dp)
+{
+    double x[4] = { pts[0], pts[2], pts[4], pts[6] };
+    double y[4] = { pts[1], pts[3], pts[5], pts[7] };
+    double dx[3], dy[3];
+    p[0] = cf__bp_eval(x, 3, s);
+    p[1] = cf__bp_eval(y, 3, s);
+    if (dp != NULL) {
+        cf__bp_deriv(x, 3, dx);
+        cf__bp_deriv(y, 3, dy);
+        dp[0] = cf__bp_eval(dx, 2, s);
+        dp[1] = cf__bp_eval(dy, 2, s);
+    }
+}
+
+/* ---- distance of a point to one of the two curves ----------------------- */
+
+typedef struct meas {
+    const cf__osrc_t *s;
+    double a, b;
+    const double *pts;
+    int k;
+    double *sp, *cp;        /* k + 1 samples of source and cubic */
+} meas;
+
+/* which = 0: the cubic on [0, 1]; which = 1: the source on [a, b]; the
+** parameter is the local u in [0, 1] in both cases. */
+static void
+curve_pd(const void *ctx, int which, double u, double *p, double *dp)
+{
+    const meas *m = ctx;
+    if (which == 0) {
+        cf__cubic_pd(m->pts, u, p, dp);
+    } else {
+        double t = m->a + (m->b - m->a) * u;
+        if (u <= 0.0 || u >= 1.0) {
+            src_point_dir(m->s, t, u <= 0.0 ? 1 : -1, p, NULL);
+            if (dp != NULL) {
+                double q[2];
+                cf__osrc_deriv(m->s, t, q, dp);
+            }
+        } else if (dp != NULL) {
+            cf__osrc_deriv(m->s, t, p, dp);
+        } else {
+            src_point_dir(m->s, t, 1, p, NULL);
+        }
+        if (dp != NULL) {
+            dp[0] *= m->b - m->a;
+            dp[1] *= m->b - m->a;
+        }
+    }
+}
+
+static void
+cubic_fn(const void *ctx, double u, double *p, double *dp)
+{
+    curve_pd(ctx, 0, u, p, dp);
+}
+
+static void
+source_fn(const void *ctx, double u, double *p, double *dp)
+{
+    curve_pd(ctx, 1, u, p, dp);
+}
+
+/* g(u) = (C(u) - q) . C'(u): zero at a foot point. */
+static double
+foot_g(cf__pd_fn fn, const void *ctx, const double *q, double u,
+       double *dist)
+{
+    double p[2], dp[2];
+    fn(ctx, u, p, dp);
+    *dist = hypot(p[0] - q[0], p[1] - q[1]);
+    return (p[0] - q[0]) * dp[0] + (p[1] - q[1]) * dp[1];
+}
+
+double
+cf__dist_sampled(cf__pd_fn fn, const void *ctx, const double *smp, int k,
+                 const double *q)
+{
+    int j = 0;
+    double best = INFINITY;
+    for (int i = 0; i <= k; i++) {
+        double dd = hypot(smp[2 * i] - q[0], smp[2 * i + 1] - q[1]);
+        if (dd < best) {
+            best = dd;
+            j = i;
+        }
+    }
+    for (int side = -1; side <= 1; side += 2) {
+        int i0 = side < 0 ? j - 1 : j, i1 = i0 + 1;
+        double u0, u1, g0, g1, d0, d1;
+        int last = 0;
+        if (i0 < 0 || i1 > k)
+            continue;
+        u0 = (double)i0 / k;
+        u1 = (double)i1 / k;
+        g0 = foot_g(fn, ctx, q, u0, &d0);
+        g1 = foot_g(fn, ctx, q, u1, &d1);
+        best = fmin(best, fmin(d0, d1));
+        if (!(g0 < 0.0 && g1 > 0.0))
+            continue;   /* no interior minimum in this interval */
+        for (int it = 0; it < 40 && u1 - u0 > 1e-15; it++) {
+            double um = (u0 * g1 - u1 * g0) / (g1 - g0), gm, dm;
+            if (!(um > u0 && um < u1))
+                um = 0.5 * (u0 + u1);
+            gm = foot_g(fn, ctx, q, um, &dm);
+            best = fmin(best, dm);
+            if (gm == 0.0)
+                break;
+            if (gm < 0.0) {
+                u0 = um;
+                g0 = gm;
+                if (last == -1)
+                    g1 *= 0.5;
+                last = -1;
+            } else {
+                u1 = um;
+                g1 = gm;
+                if (last == 1)
+                    g0 *= 0.5;
+                last = 1;
+            }
+        }
+    }
+    return best;
+}
+
+/* Distance from q to curve `which` (samples smp[0..k]). */
+static double
+dist_to(const meas *m, int which, const double *smp, const double *q)
+{
+    return cf__dist_sampled(which == 0 ? cubic_fn : source_fn, m, smp, m->k,
+                            q);
+}
+
+/* Directed distance from curve `from` to the other, with the maximum
+** refined by golden-section search around the largest sample. */
+static double
+directed(const meas *m, int from)
+{
+    const double *own = from == 0 ? m->cp : m->sp;
+    const double *other = from == 0 ? m->sp : m->cp;
+    int k = m->k, imax = 0;
+    double hmax = -1.0;
+    for (int i = 0; i <= k; i++) {
+        double h = dist_to(m, 1 - from, other, own + 2 * i);
+        if (h > hmax) {
+            hmax = h;
+            imax = i;
+        }
+    }
+    {
+        const double gr = 0.6180339887498949;
+        double lo = (double)(imax > 0 ? imax - 1 : 0) / k;
+        double hi = (double)(imax < k ? imax + 1 : k) / k;
+        double x1 = hi - gr * (hi - lo), x2 = lo + gr * (hi - lo), f1, f2,
+               p[2];
+        curve_pd(m, from, x1, p, NULL);
+        f1 = dist_to(m, 1 - from, other, p);
+        curve_pd(m, from, x2, p, NULL);
+        f2 = dist_to(m, 1 - from, other, p);
+        for (int it = 0; it < 24; it++) {
+            if (f1 > f2) {
+                hi = x2;
+                x2 = x1;
+                f2 = f1;
+                x1 = hi - gr * (hi - lo);
+                curve_pd(m, from, x1, p, NULL);
+                f1 = dist_to(m, 1 - from, other, p);
+            } else {
+                lo = x1;
+                x1 = x2;
+                f1 = f2;
+                x2 = lo + gr * (hi - lo);
+                curve_pd(m, from, x2, p, NULL);
+                f2 = dist_to(m, 1 - from, other, p);
+            }
+            hmax = fmax(hmax, fmax(f1, f2));
+        }
+    }
+    return hmax;
+}
+
+cf_status_t
+cf__fit_error(const cf__osrc_t *s, double a, double b, const double *pts,
+              int k, double *err)
+{
+    double stack[2 * 2 * 129];
+    double *buf = stack;
+    meas m;
+    if (k < 4)
+        k = 4;
+    if (k > 128) {
+        buf = cf__alloc_array((size_t)(4 * (k + 1)), sizeof(double));
+        if (buf == NULL)
+            return CF_STATUS_NO_MEMORY;
+    }
+    m.s = s;
+    m.a = a;
+    m.b = b;
+    m.pts = pts;
+    m.k = k;
+    m.sp = buf;
+    m.cp = buf + 2 * (k + 1);
+    for (int i = 0; i <= k; i++) {
+        double u = (double)i / k;
+        curve_pd(&m, 1, u, m.sp + 2 * i, NULL);
+        curve_pd(&m, 0, u, m.cp + 2 * i, NULL);
+    }
+    *err = fmax(directed(&m, 0), directed(&m, 1));
+    if (buf != stack)
+        cf__free(buf);
+    return CF_STATUS_OK;
+}
+
+/* ---- Levien's fit --------------------------------------------------------- */
+
+/* c + x d0 + y d1 */
+typedef struct lin3 {
+    double c, x, y;
+} lin3;
+
+/* bivariate polynomial q[p][r] of d0^p d1^r, p + r <= 3 */
+typedef struct biv {
+    double q[4][4];
+} biv;
+
+static void
+biv_add_prod(biv *out, double w, const lin3 *f, const lin3 *g,
+             const lin3 *h)
+{
+    double a[3] = { f->c, f->x, f->y }, b[3] = { g->c, g->x, g->y };
+    double cc[3] = { 1.0, 0.0, 0.0 };
+    static const int dp[3] = { 0, 1, 0 }, dr[3] = { 0, 0, 1 };
+    if (h != NULL) {
+        cc[0] = h->c;
+        cc[1] = h->x;
+        cc[2] = h->y;
+    }
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            for (int l = 0; l < (h != NULL ? 3 : 1); l++)
+                out->q[dp[i] + dp[j] + dp[l]][dr[i] + dr[j] + dr[l]] +=
+                    w * a[i] * b[j] * cc[l];
+}
+
+/* power polynomials, coefficient k of x^k, degree <= 9 */
+static void
+pp_mul(const double *a, int m, const double *b, int n, double *out)
+{
+    for (int k = 0; k <= m + n; k++)
+        out[k] = 0.0;
+    for (int i = 0; i <= m; i++)
+        for (int j = 0; j <= n; j++)
+            out[i + j] += a[i] * b[j];
+}
+
+#define ARM_MAX 4.0     /* arms longer than 4 chords are not considered */
+#define MAX_CAND 16
+
+typedef struct frame {
+    double p0[2], p3[2], e[2], L;
+} frame;
+
+static void
+to_frame(const frame *f, const double *p, double *out)
+{
+    double dx = p[0] - f->p0[0], dy = p[1] - f->p0[1];
+    out[0] = (dx * f->e[0] + dy * f->e[1]) / f->L;
+    out[1] = (f->e[0] * dy - f->e[1] * dx) / f->L;
+}
+
+static void
+vec_to_frame(const frame *f, const double *v, double *out)
+{
+    out[0] = (v[0] * f->e[0] + v[1] * f->e[1]) / f->L;
+    out[1] = (f->e[0] * v[1] - f->e[1] * v[0]) / f->L;
+}
+
+/* Signed area between the source on [a, b] and its chord, and its
+** x-moment, in the normalised frame: A = int (x y' - y x') / 2,
+** M = int x^2 y' / 2 (Green; the chord y = 0 adds nothing).  Composite
+** 8-point Gauss-Legendre on 4 sub-intervals. */
+static void
+source_area_moment(const cf__osrc_t *s, double a, double b, const frame *f,
+                   double *area, double *moment)
+{
+    static const double gx[4] = { 0.1834346424956498, 0.5255324099163290,
+                                  0.7966664774136267, 0.9602898564975363 };
+    static const double gw[4] = { 0.3626837833783620, 0.3137066458778873,
+                                  0.2223810344533745, 0.1012285362903763 };
+    const int nsub = 4;
+    double A = 0.0, M = 0.0, h = (b - a) / nsub;
+    for (int k = 0; k < nsub; k++) {
+        double mid = a + h * (k + 0.5);
+        for (int i = 0; i < 8; i++) {
+            double xi = (i < 4 ? -gx[i] : gx[i - 4]);
+            double w = gw[i < 4 ? i : i - 4] * 0.5 * h;
+            double t = mid + 0.5 * h * xi, p[2], dp[2], q[2], dq[2];
+            cf__osrc_deriv(s, t, p, dp);
+            to_frame(f, p, q);
+            vec_to_frame(f, dp, dq);
+            A += w * 0.5 * (q[0] * dq[1] - q[1] * dq[0]);
+            M += w * 0.5 * q[0] * q[0] * dq[1];
+        }
+    }
+    *area = A;
+    *moment = M;
+}
+
+/* Area and moment of the normalised cubic (0,0), d0 u0, (1,0) - d1 u1,
+** (1,0) as polynomials in d0, d1 (exact integrals of Bernstein products:
+** int B_i^m B_j^n B_k^p = C(m,i) C(n,j) C(p,k) / (C(m+n+p, i+j+k)
+** (m+n+p+1))). */
+static void
+cubic_area_moment(const double *u0, const double *u1, biv *A, biv *M)
+{
+    lin3 x[4] = { { 0, 0, 0 }, { 0, u0[0], 0 }, { 1, 0, -u1[0] },
+                  { 1, 0, 0 } };
+    lin3 y[4] = { { 0, 0, 0 }, { 0, u0[1], 0 }, { 0, 0, -u1[1] },
+                  { 0, 0, 0 } };
+    lin3 dx[3], dy[3];
+    memset(A, 0, sizeof *A);
+    memset(M, 0, sizeof *M);
+    for (int k = 0; k < 3; k++) {
+        dx[k].c = x[k + 1].c - x[k].c;
+        dx[k].x = x[k + 1].x - x[k].x;
+        dx[k].y = x[k + 1].y - x[k].y;
+        dy[k].c = y[k + 1].c - y[k].c;
+        dy[k].x = y[k + 1].x - y[k].x;
+        dy[k].y = y[k + 1].y - y[k].y;
+    }
+    /* A = 1/2 int (x y' - y x'), y' = 3 sum dy_k B_k^2 */
+    for (int i = 0; i < 4; i++)
+        for (int k = 0; k < 3; k++) {
+            double w = 1.5 * cf__binomial(3, i) * cf__binomial(2, k) /
+                       (6.0 * cf__binomial(5, i + k));
+            biv_add_prod(A, w, &x[i], &dy[k], NULL);
+            biv_add_prod(A, -w, &y[i], &dx[k], NULL);
+        }
+    /* M = 1/2 int x^2 y' */
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            for (int k = 0; k < 3; k++) {
+                double w = 1.5 * cf__binomial(3, i) * cf__binomial(3, j) *
+                           cf__binomial(2, k) /
+                           (9.0 * cf__binomial(8, i + j + k));
+                biv_add_prod(M, w, &x[i], &x[j], &dy[k]);
+            }
+}
+
+static void
+make_cubic(const frame *f, const double *u0, const double *u1, double d0,
+           double d1, double *pts)
+{
+    pts[0] = f->p0[0];
+    pts[1] = f->p0[1];
+    pts[2] = f->p0[0] + d0 * f->L * u0[0];
+    pts[3] = f->p0[1] + d0 * f->L * u0[1];
+    pts[4] = f->p3[0] - d1 * f->L * u1[0];
+    pts[5] = f->p3[1] - d1 * f->L * u1[1];
+    pts[6] = f->p3[0];
+    pts[7] = f->p3[1];
+}
+
+/* The candidate cubics of the Levien fit plus the fallbacks. */
+static cf_status_t
+levien_candidates(const cf__osrc_t *s, double a, double b,
+                  double cand[][8], int *ncand)
+{
+    frame f;
+    double u0[2], u1[2], dp[2], q[2], n0[2], n1[2];
+    int nc = 0;
+
+    src_point_dir(s, a, 1, f.p0, u0);
+    src_point_dir(s, b, -1, f.p3, u1);
+
+    /* Hermite cubic (derivatives matched): always a candidate */
+    {
+        double *c = cand[nc++], h = (b - a) / 3.0;
+        c[0] = f.p0[0];
+        c[1] = f.p0[1];
+        cf__osrc_deriv(s, a, q, dp);
+        c[2] = f.p0[0] + h * dp[0];
+        c[3] = f.p0[1] + h * dp[1];
+        cf__osrc_deriv(s, b, q, dp);
+        c[4] = f.p3[0] - h * dp[0];
+        c[5] = f.p3[1] - h * dp[1];
+        c[6] = f.p3[0];
+        c[7] = f.p3[1];
+    }
+    f.L = hypot(f.p3[0] - f.p0[0], f.p3[1] - f.p0[1]);
+    if (!(f.L > 1e-13 * s->scale)) {
+        *ncand = nc;
+        return CF_STATUS_OK;
+    }
+    f.e[0] = (f.p3[0] - f.p0[0]) / f.L;
+    f.e[1] = (f.p3[1] - f.p0[1]) / f.L;
+    {
+        double At, Mt;
+        biv A, M;
+        double N[3], D[2], F[10], Dp[4][4], Np[4][7], tmp[10];
+        double bern[10], roots[16];
+        size_t nr = 0;
+        cf_status_t st;
+
+        source_area_moment(s, a, b, &f, &At, &Mt);
+        n0[0] = u0[0] * f.e[0] + u0[1] * f.e[1];
+        n0[1] = f.e[0] * u0[1] - f.e[1] * u0[0];
+        n1[0] = u1[0] * f.e[0] + u1[1] * f.e[1];
+        n1[1] = f.e[0] * u1[1] - f.e[1] * u1[0];
+        cubic_area_moment(n0, n1, &A, &M);
+        /* A is a00 + a10 d0 + a01 d1 + a11 d0 d1 (the d0^2, d1^2 terms
+        ** cancel: x_i dy_k - y_i dx_k of the same arm is a cross product of
+        ** a vector with itself). So d1 = N(d0) / D(d0) with */
+        N[0] = At - A.q[0][0];
+        N[1] = -A.q[1][0];
+        D[0] = A.q[0][1];
+        D[1] = A.q[1][1];
+        /* F(d0) = sum m_pr d0^p N^r D^(3-r) - Mt D^3 */
+        Dp[0][0] = 1.0;
+        Np[0][0] = 1.0;
+        for (int r = 1; r <= 3; r++) {
+            pp_mul(Dp[r - 1], r - 1, D, 1, Dp[r]);
+            pp_mul(Np[r - 1], r - 1, N, 1, Np[r]);
+        }
+        memset(F, 0, sizeof F);
+        for (int p = 0; p <= 3; p++)
+            for (int r = 0; p + r <= 3; r++) {
+                double mc = M.q[p][r];
+                if (mc == 0.0)
+                    continue;
+                pp_mul(Np[r], r, Dp[3 - r], 3 - r, tmp);
+                for (int k = 0; k <= 3; k++)
+                    F[k + p] += mc * tmp[k];
+            }
+        for (int k = 0; k <= 3; k++)
+            F[k] -= Mt * Dp[3][k];
+        cf__bp_from_power(F, 6, ARM_MAX, bern);
+        st = cf__bp_roots(bern, 6, roots, 16, &nr);
+        if (st != CF_STATUS_OK)
+            return st;
+        for (size_t k = 0; k < nr && nc < MAX_CAND - 4; k++) {
+            double d0 = roots[k] * ARM_MAX;
+            double den = D[0] + D[1] * d0, d1;
+            if (fabs(den) < 1e-12)
+                continue;
+            d1 = (N[0] + N[1] * d0) / den;
+            if (!(d1 >= 0.0 && d1 <= ARM_MAX))
+                continue;
+            make_cubic(&f, u0, u1, d0, d1, cand[nc++]);
+        }
+        /* one arm zero, the other from the area */
+        if (fabs(D[0]) > 1e-12) {
+            double d1 = N[0] / D[0];
+            if (d1 >= 0.0 && d1 <= ARM_MAX)
+                make_cubic(&f, u0, u1, 0.0, d1, cand[nc++]);
+        }
+        if (fabs(A.q[1][0]) > 1e-12) {
+            double d0 = (At - A.q[0][0]) / A.q[1][0];
+            if (d0 >= 0.0 && d0 <= ARM_MAX)
+                make_cubic(&f, u0, u1, d0, 0.0, cand[nc++]);
+        }
+        /* equal arms from the area: a11 x^2 + (a10 + a01) x + a00 - At */
+        {
+            double qa = A.q[1][1], qb = A.q[1][0] + A.q[0][1],
+                   qc = A.q[0][0] - At;
+            if (fabs(qa) > 1e-12) {
+                double disc = qb * qb - 4 * qa * qc;
+                if (disc >= 0) {
+                    double sq = sqrt(disc);
+                    double r1 = (-qb + sq) / (2 * qa),
+                           r2 = (-qb - sq) / (2 * qa);
+                    if (r1 >= 0 && r1 <= ARM_MAX)
+                        make_cubic(&f, u0, u1, r1, r1, cand[nc++]);
+                    if (r2 >= 0 && r2 <= ARM_MAX && nc < MAX_CAND)
+                        make_cubic(&f, u0, u1, r2, r2, cand[nc++]);
+                }
+            } else if (fabs(qb) > 1e-12) {
+                double r1 = -qc / qb;
+                if (r1 >= 0 && r1 <= ARM_MAX)
+                    make_cubic(&f, u0, u1, r1, r1, cand[nc++]);
+            }
+        }
+    }
+    *ncand = nc;
+    return CF_STATUS_OK;
+}
+
+/* ---- Tiller-Hanson ------------------------------------------------------ */
+
+static void
+leg_normal(const double *v, double *nrm)
+{
+    double l = hypot(v[0], v[1]);
+    nrm[0] = -v[1] / l;
+    nrm[1] = v[0] / l;
+}
+
+/* Intersection of p + s u and q + r v, or NULL-like failure (returns -1). */
+static int
+line_isect(const double *p, const double *u, const double *q,
+           const double *v, double *out)
+{
+    double den = u[0] * v[1] - u[1] * v[0];
+    double lu = hypot(u[0], u[1]), lv = hypot(v[0], v[1]), sp;
+    if (!(fabs(den) > 1e-9 * lu * lv))
+        return -1;
+    sp = ((q[0] - p[0]) * v[1] - (q[1] - p[1]) * v[0]) / den;
+    out[0] = p[0] + sp * u[0];
+    out[1] = p[1] + sp * u[1];
+    return 0;
+}
+
+static cf_status_t
+tiller_hanson(const cf__osrc_t *s, double a, double b, double *pts)
+{
+    const cf_bezier_t *c = s->c;
+    double tmp[8], seg[8], P[4][2], L[3][2], N[3][2], o[3][2];
+    double d = s->d, sc = s->scale;
+    if (c->degree != 3 || c->rational)
+        return CF_STATUS_INVALID_ARG;
+    /* control points of c on [a, b] */
+    cf__split_h(c->pts, 2, 3, b, tmp, NULL);
+    if (b > 0.0)
+        cf__split_h(tmp, 2, 3, a / b, NULL, seg);
+    else
+        memcpy(seg, tmp, sizeof seg);
+    for (int i = 0; i < 4; i++) {
+        P[i][0] = seg[2 * i];
+        P[i][1] = seg[2 * i + 1];
+    }
+    for (int k = 0; k < 3; k++) {
+        L[k][0] = P[k + 1][0] - P[k][0];
+        L[k][1] = P[k + 1][1] - P[k][1];
+    }
+    /* zero legs take the curve's tangent at that end (or the chord) */
+    for (int k = 0; k < 3; k++) {
+        if (hypot(L[k][0], L[k][1]) > 1e-12 * sc)
+            continue;
+        if (k == 0 || k == 2) {
+            double u[2];
+            cf__bezier_unit_tangent(c, k == 0 ? a : b, k == 0 ? 1 : -1, sc,
+                                    NULL, u);
+            L[k][0] = u[0];
+            L[k][1] = u[1];
+        } else {
+            L[k][0] = P[3][0] - P[0][0];
+            L[k][1] = P[3][1] - P[0][1];
+            if (hypot(L[k][0], L[k][1]) == 0.0) {
+                L[k][0] = L[0][0];
+                L[k][1] = L[0][1];
+            }
+        }
+    }
+    for (int k = 0; k < 3; k++) {
+        leg_normal(L[k], N[k]);
+        o[k][0] = P[k][0] + d * N[k][0];
+        o[k][1] = P[k][1] + d * N[k][1];
+    }
+    pts[0] = o[0][0];
+    pts[1] = o[0][1];
+    pts[6] = P[3][0] + d * N[2][0];
+    pts[7] = P[3][1] + d * N[2][1];
+    if (line_isect(o[0], L[0], o[1], L[1], pts + 2) != 0) {
+        pts[2] = P[1][0] + d * N[0][0];
+        pts[3] = P[1][1] + d * N[0][1];
+    }
+    if (line_isect(o[1], L[1], o[2], L[2], pts + 4) != 0) {
+        pts[4] = P[2][0] + d * N[2][0];
+        pts[5] = P[2][1] + d * N[2][1];
+    }
+    return CF_STATUS_OK;
+}
+
+/* ---- one piece ------------------------------------------------------------ */
+
+#define K_COARSE 12
+#define K_FINE 40
+
+cf_status_t
+cf__fit_piece(const cf__osrc_t *s, double a, double b,
+              cf_offset_method_t method, cf__fit_t *out)
+{
+    cf_status_t st;
+    if (method == CF_OFFSET_TILLER_HANSON && s->kind == 0) {
+        st = tiller_hanson(s, a, b, out->pts);
+        if (st != CF_STATUS_OK)
+            return st;
+        return cf__fit_error(s, a, b, out->pts, K_FINE, &out->err);
+    } else {
+        double cand[MAX_CAND][8];
+        int nc = 0, best = 0;
+        double be = INFINITY;
+        st = levien_candidates(s, a, b, cand, &nc);
+        if (st != CF_STATUS_OK)
+            return st;
+        for (int i = 0; i < nc; i++) {
+            double e;
+            if (nc == 1)
+                break;
+            st = cf__fit_error(s, a, b, cand[i], K_COARSE, &e);
+            if (st != CF_STATUS_OK)
+                return st;
+            if (e < be) {
+                be = e;
+                best = i;
+            }
+        }
+        memcpy(out->pts, cand[best], sizeof out->pts);
+        return cf__fit_error(s, a, b, out->pts, K_FINE, &out->err);
+    }
+}

@@ -1,0 +1,125 @@
+/*
+** Internals shared by the offset files (prefix cf__):
+**   offset-poly.c   1-D Bernstein polynomial arithmetic and root isolation
+**   offset-cusp.c   cusp polynomial, cusps and zeros of c'
+**   offset-fit.c    exact offset sources, Levien and Tiller-Hanson fits,
+**                   error measurement
+**   offset-trim.c   self-intersections of the raw chain and trimming
+**   offset.c        public entry points, chains and joins
+*/
+#ifndef CURVEFIG_OFFSET_PRIVATE_H
+#define CURVEFIG_OFFSET_PRIVATE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "curvefig/offset.h"
+
+/* ---- 1-D Bernstein polynomials on [0, 1]: coefficients a[0..n] --------- */
+
+double cf__bp_eval(const double *a, int n, double t);
+/* out[m + n + 1] = a * b (out must not alias a or b). */
+void cf__bp_mul(const double *a, int m, const double *b, int n,
+                double *out);
+/* out[m + r + 1]: a raised to degree m + r (out must not alias a). */
+void cf__bp_elevate(const double *a, int m, int r, double *out);
+/* out[m]: the derivative, degree m - 1 (m >= 1). */
+void cf__bp_deriv(const double *a, int m, double *out);
+/* Power basis p(x) = sum p[k] x^k on [0, h] to Bernstein on [0, 1] in the
+** variable s = x / h. */
+void cf__bp_from_power(const double *p, int n, double h, double *out);
+/* The real roots in [0, 1] of a degree-n polynomial, ascending, isolated by
+** subdivision with Descartes' rule of signs and polished by bisection; a
+** cluster narrower than 1e-13 is one root.  Writes at most cap roots and
+** sets *count to the number found (<= cap).  NO_MEMORY only. */
+cf_status_t cf__bp_roots(const double *a, int n, double *roots, size_t cap,
+                         size_t *count);
+
+/* ---- sources: the exact curves that pieces approximate ----------------- */
+
+typedef struct cf__osrc {
+    int kind;               /* 0: offset of a Bézier, 1: circular arc */
+    const cf_bezier_t *c;
+    double d;
+    double sgn;             /* travel direction of o relative to c' (+-1) */
+    double scale;           /* size of c' (for "vanishes" tests) */
+    double cx, cy, r, a0, sweep;   /* arc: centre, radius, angles */
+} cf__osrc_t;
+
+/* Initialise an offset source of c at d (dim 2); scale from the points. */
+void cf__osrc_init_offset(cf__osrc_t *s, const cf_bezier_t *c, double d);
+void cf__osrc_init_arc(cf__osrc_t *s, double cx, double cy, double r,
+                       double a0, double sweep);
+/* Point of the source at t. */
+int cf__osrc_point(const cf__osrc_t *s, double t, double *p);
+/* Point and derivative with respect to t (for quadrature). */
+int cf__osrc_deriv(const cf__osrc_t *s, double t, double *p, double *dp);
+
+/* Unit tangent of c at t (side < 0: limit from the left, else from the
+** right) using higher derivatives where c' vanishes; base point in p (may
+** be NULL).  Returns 0, or -1 if every derivative vanishes. */
+int cf__bezier_unit_tangent(const cf_bezier_t *c, double t, int side,
+                            double scale, double *p, double *u);
+
+/* Point (and derivative, dp may be NULL) of a planar cubic pts[8]. */
+void cf__cubic_pd(const double *pts, double s, double *p, double *dp);
+
+/* A parametrised curve on [0, 1]: point and derivative at u. */
+typedef void (*cf__pd_fn)(const void *ctx, double u, double *p, double *dp);
+/* Distance from q to the curve fn, given its samples smp[0..k] at u = i/k:
+** the nearest sample, then foot points in the neighbouring intervals. */
+double cf__dist_sampled(cf__pd_fn fn, const void *ctx, const double *smp,
+                        int k, const double *q);
+
+/* ---- fitting ----------------------------------------------------------- */
+
+typedef struct cf__fit {
+    double pts[8];          /* the cubic */
+    double err;             /* its measured error */
+} cf__fit_t;
+
+/* Fit the source on [a, b] by `method`, measuring the error (two-sided
+** Hausdorff estimate). */
+cf_status_t cf__fit_piece(const cf__osrc_t *s, double a, double b,
+                          cf_offset_method_t method, cf__fit_t *out);
+
+/* Two-sided Hausdorff estimate between the source on [a, b] and the cubic
+** pts[8], with k samples each side (k >= 4). */
+cf_status_t cf__fit_error(const cf__osrc_t *s, double a, double b,
+                          const double *pts, int k, double *err);
+
+/* ---- cusps --------------------------------------------------------------- */
+
+/* Interior offset cusps of c at d (sorted) into a new array (cf__free). */
+cf_status_t cf__offset_cusps_alloc(const cf_bezier_t *c, double d,
+                                   double **ts, size_t *n);
+/* Interior zeros of c' (cusps of the base curve), sorted, new array. */
+cf_status_t cf__base_cusps_alloc(const cf_bezier_t *c, double **ts,
+                                 size_t *n);
+/* A size of c' for relative tests: degree * max |P_i - P_0|. */
+double cf__deriv_scale(const cf_bezier_t *c);
+
+/* ---- chains ------------------------------------------------------------ */
+
+/* A growing chain of cubics (dim 2). */
+typedef struct cf__chain {
+    cf_cubics_t *cubics;
+    size_t cap;
+} cf__chain_t;
+
+cf_status_t cf__chain_init(cf__chain_t *ch);
+/* Append a cubic covering source parameters [t0, t1] (t0 must equal the
+** last end parameter; the first call sets the start). */
+cf_status_t cf__chain_push(cf__chain_t *ch, const double *pts, double t0,
+                           double t1);
+/* Hand the chain over (NULL on an empty chain is not an error). */
+cf_cubics_t *cf__chain_take(cf__chain_t *ch);
+void cf__chain_fini(cf__chain_t *ch);
+
+/* Trim the raw chain of the pieces `base[0..n-1]` at d: split at the
+** self-intersections and keep the parts at distance >= |d| - tol. */
+cf_status_t cf__offset_trim(const cf_bezier_t *const *base, size_t nbase,
+                            double d, double tol, const cf_cubics_t *raw,
+                            cf_cubics_list_t **out, size_t *nisect);
+
+#endif

@@ -1,0 +1,385 @@
+/*
+** Trimming the raw offset: its self-intersections (pairs of cubics, found on
+** fine polylines and polished by Newton's method on the cubics), then the
+** parts whose distance to the base curve is at least |d| - tol are kept.
+** Between two consecutive split points the classification is constant
+** except where the offset leaves the swept disk without crossing itself (at
+** the ends of an open curve); such transitions are located by bisection on
+** the distance.
+*/
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core-private.h"
+#include "bezier-private.h"
+#include "offset-private.h"
+
+#define POLY_N 64       /* polyline samples per cubic */
+#define BASE_N 256      /* samples of each base piece */
+#define CLASS_N 16      /* distance samples per trimmed interval */
+
+typedef struct trim {
+    const cf_bezier_t *const *base;
+    size_t nbase;
+    double *bsmp;           /* BASE_N + 1 samples per base piece */
+    double d, tol;
+    const cf_cubics_t *raw;
+    double *poly;           /* POLY_N + 1 samples per raw cubic */
+    double *splits;         /* global parameters i + s */
+    size_t nsplit, capsplit;
+    size_t nisect;
+} trim;
+
+static void
+base_fn(const void *ctx, double u, double *p, double *dp)
+{
+    double v[4];
+    cf_bezier_eval_derivs(ctx, u, 1, v);
+    p[0] = v[0];
+    p[1] = v[1];
+    dp[0] = v[2];
+    dp[1] = v[3];
+}
+
+/* Distance of q to the base curve (all pieces). */
+static double
+base_dist(const trim *tr, const double *q)
+{
+    double best = INFINITY;
+    for (size_t i = 0; i < tr->nbase; i++)
+        best = fmin(best, cf__dist_sampled(base_fn, tr->base[i],
+                                           tr->bsmp + 2 * (BASE_N + 1) * i,
+                                           BASE_N, q));
+    return best;
+}
+
+/* Point of the raw chain at global parameter g = i + s. */
+static void
+chain_point(const trim *tr, double g, double *p)
+{
+    size_t i = (size_t)floor(g);
+    double s;
+    if (i >= tr->raw->count)
+        i = tr->raw->count - 1;
+    s = g - (double)i;
+    cf__cubic_pd(tr->raw->pts + 8 * i, fmin(1.0, fmax(0.0, s)), p, NULL);
+}
+
+static cf_status_t
+add_split(trim *tr, double g)
+{
+    if (tr->nsplit == tr->capsplit) {
+        size_t cap = tr->capsplit ? 2 * tr->capsplit : 16;
+        double *n = cf__realloc_array(tr->splits, cap, sizeof(double));
+        if (n == NULL)
+            return CF_STATUS_NO_MEMORY;
+        tr->splits = n;
+        tr->capsplit = cap;
+    }
+    tr->splits[tr->nsplit++] = g;
+    return CF_STATUS_OK;
+}
+
+/* Newton on B_i(s) - B_j(u) = 0 from (s, u); returns 0 on convergence. */
+static int
+polish_isect(const double *Pi, const double *Pj, double *s, double *u)
+{
+    for (int it = 0; it < 20; it++) {
+        double a[2], da[2], b[2], db[2], fx, fy, det, ds, du;
+        cf__cubic_pd(Pi, *s, a, da);
+        cf__cubic_pd(Pj, *u, b, db);
+        fx = a[0] - b[0];
+        fy = a[1] - b[1];
+        /* J = [da, -db] */
+        det = da[0] * (-db[1]) - da[1] * (-db[0]);
+        if (det == 0.0)
+            return -1;
+        ds = (fx * (-db[1]) - fy * (-db[0])) / det;
+        du = (da[0] * fy - da[1] * fx) / det;
+        *s -= ds;
+        *u -= du;
+        if (!(*s >= -1e-9 && *s <= 1 + 1e-9 && *u >= -1e-9 && *u <= 1 + 1e-9))
+            return -1;
+        if (fabs(ds) + fabs(du) < 1e-14)
+            break;
+    }
+    *s = fmin(1.0, fmax(0.0, *s));
+    *u = fmin(1.0, fmax(0.0, *u));
+    return 0;
+}
+
+static void
+ctrl_box(const double *P, double *lo, double *hi)
+{
+    lo[0] = hi[0] = P[0];
+    lo[1] = hi[1] = P[1];
+    for (int k = 1; k < 4; k++) {
+        lo[0] = fmin(lo[0], P[2 * k]);
+        hi[0] = fmax(hi[0], P[2 * k]);
+        lo[1] = fmin(lo[1], P[2 * k + 1]);
+        hi[1] = fmax(hi[1], P[2 * k + 1]);
+    }
+}
+
+/* Proper crossing of segments ab and cd: parameters in *x, *y. */
+static int
+seg_cross(const double *a, const double *b, const double *c,
+          const double *d, double *x, double *y)
+{
+    double r[2] = { b[0] - a[0], b[1] - a[1] };
+    double s[2] = { d[0] - c[0], d[1] - c[1] };
+    double den = r[0] * s[1] - r[1] * s[0];
+    double q[2] = { c[0] - a[0], c[1] - a[1] };
+    if (den == 0.0)
+        return 0;
+    *x = (q[0] * s[1] - q[1] * s[0]) / den;
+    *y = (q[0] * r[1] - q[1] * r[0]) / den;
+    return *x >= 0.0 && *x < 1.0 && *y >= 0.0 && *y < 1.0;
+}
+
+static cf_status_t
+find_intersections(trim *tr)
+{
+    const cf_cubics_t *raw = tr->raw;
+    size_t n = raw->count;
+    for (size_t i = 0; i < n; i++) {
+        double loi[2], hii[2];
+        ctrl_box(raw->pts + 8 * i, loi, hii);
+        for (size_t j = i + 1; j < n; j++) {
+            double loj[2], hij[2];
+            const double *pi = tr->poly + 2 * (POLY_N + 1) * i;
+            const double *pj = tr->poly + 2 * (POLY_N + 1) * j;
+            ctrl_box(raw->pts + 8 * j, loj, hij);
+            if (loi[0] > hij[0] || loj[0] > hii[0] || loi[1] > hij[1] ||
+                loj[1] > hii[1])
+                continue;
+            for (int a = 0; a < POLY_N; a++) {
+                for (int b = 0; b < POLY_N; b++) {
+                    double x, y, s, u;
+                    if (j == i + 1 && a == POLY_N - 1 && b == 0)
+                        continue;   /* the shared end point */
+                    if (!seg_cross(pi + 2 * a, pi + 2 * a + 2, pj + 2 * b,
+                                   pj + 2 * b + 2, &x, &y))
+                        continue;
+                    s = (a + x) / POLY_N;
+                    u = (b + y) / POLY_N;
+                    if (polish_isect(raw->pts + 8 * i, raw->pts + 8 * j, &s,
+                                     &u) != 0) {
+                        s = (a + x) / POLY_N;
+                        u = (b + y) / POLY_N;
+                    }
+                    if (j == i + 1 && s > 1.0 - 1e-7 && u < 1e-7)
+                        continue;
+                    {
+                        cf_status_t st = add_split(tr, (double)i + s);
+                        if (st == CF_STATUS_OK)
+                            st = add_split(tr, (double)j + u);
+                        if (st != CF_STATUS_OK)
+                            return st;
+                    }
+                    tr->nisect++;
+                }
+            }
+        }
+    }
+    return CF_STATUS_OK;
+}
+
+static int
+cmp_double(const void *x, const void *y)
+{
+    double a = *(const double *)x, b = *(const double *)y;
+    return (a > b) - (a < b);
+}
+
+static bool
+inside(const trim *tr, double g)
+{
+    double p[2];
+    chain_point(tr, g, p);
+    return base_dist(tr, p) < fabs(tr->d) - 2.0 * tr->tol;
+}
+
+/* Append the part [g0, g1] of the raw chain to ch. */
+static cf_status_t
+append_part(const trim *tr, cf__chain_t *ch, double g0, double g1)
+{
+    const cf_cubics_t *raw = tr->raw;
+    size_t i0 = (size_t)floor(g0), i1;
+    if (i0 >= raw->count)
+        i0 = raw->count - 1;
+    i1 = (size_t)ceil(g1);
+    if (i1 > raw->count)
+        i1 = raw->count;
+    for (size_t i = i0; i < i1; i++) {
+        double s0 = fmax(0.0, g0 - (double)i), s1 = fmin(1.0, g1 - (double)i);
+        double tmp[8], seg[8];
+        cf_status_t st;
+        if (s1 - s0 <= 1e-12)
+            continue;
+        cf__split_h(raw->pts + 8 * i, 2, 3, s1, tmp, NULL);
+        if (s0 > 0.0)
+            cf__split_h(tmp, 2, 3, s0 / s1, NULL, seg);
+        else
+            memcpy(seg, tmp, sizeof seg);
+        st = cf__chain_push(ch, seg, raw->t[i], raw->t[i + 1]);
+        if (st != CF_STATUS_OK)
+            return st;
+    }
+    return CF_STATUS_OK;
+}
+
+static cf_status_t
+list_add(cf_cubics_list_t *list, size_t *cap, cf_cubics_t *ch)
+{
+    if (list->count == *cap) {
+        size_t nc = *cap ? 2 * *cap : 4;
+        cf_cubics_t **n = cf__realloc_array(list->chains, nc, sizeof *n);
+        if (n == NULL) {
+            cf_cubics_destroy(ch);
+            return CF_STATUS_NO_MEMORY;
+        }
+        list->chains = n;
+        *cap = nc;
+    }
+    list->chains[list->count++] = ch;
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf__offset_trim(const cf_bezier_t *const *base, size_t nbase, double d,
+                double tol, const cf_cubics_t *raw, cf_cubics_list_t **out,
+                size_t *nisect)
+{
+    trim tr;
+    cf_cubics_list_t *list;
+    size_t cap = 0, nraw = raw->count;
+    cf_status_t st = CF_STATUS_OK;
+    cf__chain_t ch;
+    bool open = false;
+
+    *out = NULL;
+    *nisect = 0;
+    memset(&tr, 0, sizeof tr);
+    tr.base = base;
+    tr.nbase = nbase;
+    tr.d = d;
+    tr.tol = tol;
+    tr.raw = raw;
+    list = cf__calloc(1, sizeof *list);
+    tr.bsmp = cf__alloc_array(2 * (BASE_N + 1) * nbase, sizeof(double));
+    tr.poly = cf__alloc_array(2 * (POLY_N + 1) * (nraw ? nraw : 1),
+                              sizeof(double));
+    if (list == NULL || tr.bsmp == NULL || tr.poly == NULL) {
+        st = CF_STATUS_NO_MEMORY;
+        goto done;
+    }
+    for (size_t i = 0; i < nbase; i++)
+        for (int k = 0; k <= BASE_N; k++)
+            cf__bezier_eval_point(base[i], (double)k / BASE_N,
+                                  tr.bsmp + 2 * ((BASE_N + 1) * i + k));
+    for (size_t i = 0; i < nraw; i++)
+        for (int k = 0; k <= POLY_N; k++)
+            cf__cubic_pd(raw->pts + 8 * i, (double)k / POLY_N,
+                     tr.poly + 2 * ((POLY_N + 1) * i + k), NULL);
+    if (nraw == 0 || d == 0.0) {
+        /* nothing to trim: the raw chain is the trimmed one */
+        if (nraw > 0) {
+            st = cf__chain_init(&ch);
+            if (st == CF_STATUS_OK)
+                st = append_part(&tr, &ch, 0.0, (double)nraw);
+            if (st == CF_STATUS_OK)
+                st = list_add(list, &cap, cf__chain_take(&ch));
+            else
+                cf__chain_fini(&ch);
+        }
+        goto done;
+    }
+    st = find_intersections(&tr);
+    if (st == CF_STATUS_OK)
+        st = add_split(&tr, 0.0);
+    if (st == CF_STATUS_OK)
+        st = add_split(&tr, (double)nraw);
+    if (st != CF_STATUS_OK)
+        goto done;
+    qsort(tr.splits, tr.nsplit, sizeof(double), cmp_double);
+    /* classify each interval by samples; locate transitions by bisection */
+    for (size_t k = 0; k + 1 < tr.nsplit; k++) {
+        double g0 = tr.splits[k], g1 = tr.splits[k + 1], start = g0;
+        bool cls[CLASS_N];
+        if (g1 - g0 < 1e-12)
+            continue;
+        for (int m = 0; m < CLASS_N; m++)
+            cls[m] = inside(&tr, g0 + (g1 - g0) * (m + 0.5) / CLASS_N);
+        for (int m = 0; m < CLASS_N; m++) {
+            double end = g1;
+            if (m + 1 < CLASS_N && cls[m + 1] == cls[m])
+                continue;
+            if (m + 1 < CLASS_N) {
+                double lo = g0 + (g1 - g0) * (m + 0.5) / CLASS_N;
+                double hi = g0 + (g1 - g0) * (m + 1.5) / CLASS_N;
+                for (int it = 0; it < 50; it++) {
+                    double mid = 0.5 * (lo + hi);
+                    if (inside(&tr, mid) == cls[m])
+                        lo = mid;
+                    else
+                        hi = mid;
+                }
+                end = 0.5 * (lo + hi);
+            }
+            if (!cls[m]) {
+                if (!open) {
+                    st = cf__chain_init(&ch);
+                    if (st != CF_STATUS_OK)
+                        goto done;
+                    open = true;
+                }
+                st = append_part(&tr, &ch, start, end);
+                if (st != CF_STATUS_OK)
+                    goto done;
+            } else if (open) {
+                st = list_add(list, &cap, cf__chain_take(&ch));
+                open = false;
+                if (st != CF_STATUS_OK)
+                    goto done;
+            }
+            start = end;
+        }
+        /* an intersection point separates chains */
+        if (open && k + 2 < tr.nsplit) {
+            st = list_add(list, &cap, cf__chain_take(&ch));
+            open = false;
+            if (st != CF_STATUS_OK)
+                goto done;
+        }
+    }
+    if (open) {
+        st = list_add(list, &cap, cf__chain_take(&ch));
+        open = false;
+    }
+done:
+    if (open)
+        cf__chain_fini(&ch);
+    cf__free(tr.bsmp);
+    cf__free(tr.poly);
+    cf__free(tr.splits);
+    if (st != CF_STATUS_OK) {
+        cf_cubics_list_destroy(list);
+        return st;
+    }
+    /* drop empty chains */
+    {
+        size_t w = 0;
+        for (size_t i = 0; i < list->count; i++) {
+            if (list->chains[i]->count == 0)
+                cf_cubics_destroy(list->chains[i]);
+            else
+                list->chains[w++] = list->chains[i];
+        }
+        list->count = w;
+    }
+    *out = list;
+    *nisect = tr.nisect;
+    return CF_STATUS_OK;
+}

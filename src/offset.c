@@ -1,0 +1,652 @@
+/*
+** Offset curves: exact points, the approximating chain (splits at cusps,
+** greedy longest pieces, round joins) and the independent error measure.
+** The fits are in offset-fit.c, cusps in offset-cusp.c, trimming in
+** offset-trim.c.
+*/
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core-private.h"
+#include "bezier-private.h"
+#include "offset-private.h"
+
+void
+cf_offset_options_init(cf_offset_options_t *opt)
+{
+    if (opt == NULL)
+        return;
+    opt->tolerance = 1e-3;
+    opt->method = CF_OFFSET_LEVIEN;
+    opt->trim = false;
+}
+
+void
+cf_cubics_list_destroy(cf_cubics_list_t *list)
+{
+    if (list == NULL)
+        return;
+    for (size_t i = 0; i < list->count; i++)
+        cf_cubics_destroy(list->chains[i]);
+    cf__free(list->chains);
+    cf__free(list);
+}
+
+/* ---- exact offset ---------------------------------------------------------- */
+
+static cf_status_t
+check_curve(const cf_bezier_t *c)
+{
+    if (c == NULL)
+        return CF_STATUS_INVALID_ARG;
+    if (c->dim != 2)
+        return CF_STATUS_DIM_MISMATCH;
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_offset_point(const cf_bezier_t *c, double t, double d, double *out)
+{
+    double p[2], u[2];
+    cf_status_t st = check_curve(c);
+    if (st != CF_STATUS_OK || out == NULL)
+        return st != CF_STATUS_OK ? st : CF_STATUS_INVALID_ARG;
+    if (!isfinite(t) || !isfinite(d))
+        return CF_STATUS_NOT_FINITE;
+    if (t < 0.0 || t > 1.0)
+        return CF_STATUS_DOMAIN;
+    if (cf__bezier_unit_tangent(c, t, t >= 1.0 ? -1 : 1, cf__deriv_scale(c),
+                                p, u) != 0) {
+        if (d != 0.0)
+            return CF_STATUS_DEGENERATE;
+        out[0] = p[0];
+        out[1] = p[1];
+        return CF_STATUS_OK;
+    }
+    out[0] = p[0] - d * u[1];
+    out[1] = p[1] + d * u[0];
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_offset_point_many(const cf_bezier_t *c, const double *t, size_t n,
+                     double d, double *out)
+{
+    if (t == NULL && n > 0)
+        return CF_STATUS_INVALID_ARG;
+    for (size_t i = 0; i < n; i++) {
+        cf_status_t st = cf_offset_point(c, t[i], d, out + 2 * i);
+        if (st != CF_STATUS_OK)
+            return st;
+    }
+    return CF_STATUS_OK;
+}
+
+/* ---- chains ------------------------------------------------------------------ */
+
+cf_status_t
+cf__chain_init(cf__chain_t *ch)
+{
+    ch->cap = 0;
+    ch->cubics = cf__calloc(1, sizeof *ch->cubics);
+    if (ch->cubics == NULL)
+        return CF_STATUS_NO_MEMORY;
+    ch->cubics->dim = 2;
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf__chain_push(cf__chain_t *ch, const double *pts, double t0, double t1)
+{
+    cf_cubics_t *cu = ch->cubics;
+    if (cu->count + 1 > ch->cap) {
+        size_t cap = ch->cap ? 2 * ch->cap : 8;
+        double *np = cf__realloc_array(cu->pts, 8 * cap, sizeof(double));
+        double *nt;
+        if (np == NULL)
+            return CF_STATUS_NO_MEMORY;
+        cu->pts = np;
+        nt = cf__realloc_array(cu->t, cap + 1, sizeof(double));
+        if (nt == NULL)
+            return CF_STATUS_NO_MEMORY;
+        cu->t = nt;
+        ch->cap = cap;
+    }
+    memcpy(cu->pts + 8 * cu->count, pts, 8 * sizeof(double));
+    if (cu->count > 0) {
+        /* continuity: start where the previous piece ended */
+        cu->pts[8 * cu->count] = cu->pts[8 * cu->count - 2];
+        cu->pts[8 * cu->count + 1] = cu->pts[8 * cu->count - 1];
+    } else {
+        cu->t[0] = t0;
+    }
+    cu->t[cu->count + 1] = t1;
+    cu->count++;
+    return CF_STATUS_OK;
+}
+
+cf_cubics_t *
+cf__chain_take(cf__chain_t *ch)
+{
+    cf_cubics_t *cu = ch->cubics;
+    ch->cubics = NULL;
+    return cu;
+}
+
+void
+cf__chain_fini(cf__chain_t *ch)
+{
+    cf_cubics_destroy(ch->cubics);
+    ch->cubics = NULL;
+}
+
+/* ---- the driver ------------------------------------------------------------ */
+
+typedef struct driver {
+    cf__chain_t chain;
+    double tol;
+    cf_offset_method_t method;
+    double d;
+    double T0, T1;              /* parameter range of the current piece */
+    cf_offset_report_t rep;
+} driver;
+
+static double
+map_t(const driver *dr, double t)
+{
+    return dr->T0 + (dr->T1 - dr->T0) * t;
+}
+
+static cf_status_t
+emit(driver *dr, const cf__fit_t *f, double a, double b)
+{
+    dr->rep.segments++;
+    dr->rep.max_error = fmax(dr->rep.max_error, f->err);
+    if (!(f->err <= dr->tol))
+        dr->rep.converged = false;
+    return cf__chain_push(&dr->chain, f->pts, map_t(dr, a), map_t(dr, b));
+}
+
+#define ACCEPT 0.97     /* accept a piece at 97% of the tolerance */
+#define MIN_WIDTH 1e-12 /* no piece narrower than this (relative) */
+
+/* Tiller-Hanson: bisection until within tolerance. */
+static cf_status_t
+fit_bisect(driver *dr, const cf__osrc_t *s, double a, double b, double w0,
+           int depth)
+{
+    cf__fit_t f;
+    cf_status_t st = cf__fit_piece(s, a, b, dr->method, &f);
+    if (st != CF_STATUS_OK)
+        return st;
+    if (f.err <= ACCEPT * dr->tol || depth >= 40 || b - a < MIN_WIDTH * w0)
+        return emit(dr, &f, a, b);
+    st = fit_bisect(dr, s, a, 0.5 * (a + b), w0, depth + 1);
+    if (st != CF_STATUS_OK)
+        return st;
+    return fit_bisect(dr, s, 0.5 * (a + b), b, w0, depth + 1);
+}
+
+/* Levien: greedily the longest piece from the current start that is within
+** tolerance (bisection on its end), until b is reached. */
+static cf_status_t
+fit_greedy(driver *dr, const cf__osrc_t *s, double a, double b)
+{
+    double t = a, w0 = b - a;
+    cf__fit_t f, best;
+    cf_status_t st;
+    while (t < b) {
+        double lo, hi;
+        bool have = false;
+        st = cf__fit_piece(s, t, b, dr->method, &f);
+        if (st != CF_STATUS_OK)
+            return st;
+        if (f.err <= ACCEPT * dr->tol)
+            return emit(dr, &f, t, b);
+        lo = t;
+        hi = b;
+        for (int it = 0; it < 60; it++) {
+            double mid = 0.5 * (lo + hi);
+            if (have && hi - lo <= 2e-3 * (hi - t))
+                break;
+            if (hi - t < MIN_WIDTH * w0)
+                break;
+            st = cf__fit_piece(s, t, mid, dr->method, &f);
+            if (st != CF_STATUS_OK)
+                return st;
+            if (f.err <= ACCEPT * dr->tol) {
+                lo = mid;
+                best = f;
+                have = true;
+            } else {
+                hi = mid;
+            }
+        }
+        if (!have) {
+            /* cannot reach the tolerance: keep the narrowest piece */
+            st = cf__fit_piece(s, t, hi, dr->method, &best);
+            if (st != CF_STATUS_OK)
+                return st;
+            lo = hi;
+        }
+        st = emit(dr, &best, t, lo);
+        if (st != CF_STATUS_OK)
+            return st;
+        t = lo;
+    }
+    return CF_STATUS_OK;
+}
+
+/* Round join: arc of radius |d| about centre from `from` turning by phi. */
+static cf_status_t
+join_arc(driver *dr, const double *centre, const double *from, double phi,
+         double tpar)
+{
+    cf__osrc_t arc;
+    double r = hypot(from[0] - centre[0], from[1] - centre[1]);
+    double a0 = atan2(from[1] - centre[1], from[0] - centre[0]);
+    cf_offset_method_t m = dr->method;
+    double T0 = dr->T0, T1 = dr->T1;
+    cf_status_t st;
+    if (!(r > 0.0) || phi == 0.0)
+        return CF_STATUS_OK;
+    cf__osrc_init_arc(&arc, centre[0], centre[1], r, a0, phi);
+    dr->rep.joins++;
+    /* the arc's pieces all carry the parameter tpar */
+    dr->method = CF_OFFSET_LEVIEN;
+    dr->T0 = dr->T1 = tpar;
+    st = fit_greedy(dr, &arc, 0.0, 1.0);
+    dr->method = m;
+    dr->T0 = T0;
+    dr->T1 = T1;
+    return st;
+}
+
+/* Signed turning angle from direction u to direction v. */
+static double
+turn(const double *u, const double *v)
+{
+    return atan2(u[0] * v[1] - u[1] * v[0], u[0] * v[0] + u[1] * v[1]);
+}
+
+/* The join at a zero of c' inside the piece: the tangent reverses (turn of
+** +-pi); its sense from the tangents just before and after. */
+static cf_status_t
+base_cusp_join(driver *dr, const cf__osrc_t *s, double t)
+{
+    double p[2], ul[2], ur[2], from[2], a[2], b[2];
+    double h = 1e-6, phi;
+    const cf_bezier_t *c = s->c;
+    cf__bezier_unit_tangent(c, t, -1, s->scale, p, ul);
+    cf__bezier_unit_tangent(c, t, 1, s->scale, NULL, ur);
+    phi = turn(ul, ur);
+    if (fabs(fabs(phi) - CF__PI) < 1e-6) {
+        double cr;
+        cf__bezier_unit_tangent(c, fmax(0.0, t - h), -1, s->scale, NULL, a);
+        cf__bezier_unit_tangent(c, fmin(1.0, t + h), 1, s->scale, NULL, b);
+        cr = a[0] * b[1] - a[1] * b[0];
+        phi = cr < 0 ? -CF__PI : CF__PI;
+    }
+    from[0] = p[0] - s->d * ul[1];
+    from[1] = p[1] + s->d * ul[0];
+    return join_arc(dr, p, from, phi, map_t(dr, t));
+}
+
+static int
+cmp_double(const void *x, const void *y)
+{
+    double a = *(const double *)x, b = *(const double *)y;
+    return (a > b) - (a < b);
+}
+
+/* Offset of one Bézier piece appended to the chain. */
+static cf_status_t
+offset_piece(driver *dr, const cf_bezier_t *c)
+{
+    double *cusps = NULL, *bc = NULL, *splits = NULL;
+    size_t nc = 0, nb = 0, ns = 0;
+    cf__osrc_t s;
+    cf_status_t st;
+
+    if (dr->d == 0.0) {
+        cf_cubics_t *cu = NULL;
+        st = cf_bezier_to_cubics(c, dr->tol, &cu, NULL);
+        if (st != CF_STATUS_OK)
+            return st;
+        for (size_t i = 0; i < cu->count && st == CF_STATUS_OK; i++) {
+            cf__fit_t f;
+            memcpy(f.pts, cu->pts + 8 * i, sizeof f.pts);
+            f.err = cu->max_error;
+            st = emit(dr, &f, cu->t[i], cu->t[i + 1]);
+        }
+        cf_cubics_destroy(cu);
+        return st;
+    }
+    cf__osrc_init_offset(&s, c, dr->d);
+    st = cf__offset_cusps_alloc(c, dr->d, &cusps, &nc);
+    if (st == CF_STATUS_OK)
+        st = cf__base_cusps_alloc(c, &bc, &nb);
+    if (st != CF_STATUS_OK)
+        goto done;
+    dr->rep.cusps += nc;
+    splits = cf__alloc_array(nc + nb + 2, sizeof(double));
+    if (splits == NULL) {
+        st = CF_STATUS_NO_MEMORY;
+        goto done;
+    }
+    splits[ns++] = 0.0;
+    for (size_t i = 0; i < nc; i++)
+        splits[ns++] = cusps[i];
+    for (size_t i = 0; i < nb; i++)
+        splits[ns++] = bc[i];
+    splits[ns++] = 1.0;
+    qsort(splits, ns, sizeof(double), cmp_double);
+    for (size_t i = 0; i + 1 < ns; i++) {
+        double a = splits[i], b = splits[i + 1];
+        bool is_base = false;
+        if (b - a > 1e-13) {
+            /* travel direction of o relative to c' on (a, b) */
+            double v[6], sp, f;
+            cf_bezier_eval_derivs(c, 0.5 * (a + b), 2, v);
+            sp = hypot(v[2], v[3]);
+            f = sp > 0 ? 1.0 - dr->d * (v[2] * v[5] - v[3] * v[4]) /
+                                   (sp * sp * sp)
+                       : 1.0;
+            s.sgn = f < 0 ? -1.0 : 1.0;
+            if (dr->method == CF_OFFSET_TILLER_HANSON)
+                st = fit_bisect(dr, &s, a, b, b - a, 0);
+            else
+                st = fit_greedy(dr, &s, a, b);
+            if (st != CF_STATUS_OK)
+                goto done;
+        }
+        for (size_t k = 0; k < nb; k++)
+            if (bc[k] == b)
+                is_base = true;
+        if (is_base) {
+            st = base_cusp_join(dr, &s, b);
+            if (st != CF_STATUS_OK)
+                goto done;
+        }
+    }
+done:
+    cf__free(cusps);
+    cf__free(bc);
+    cf__free(splits);
+    return st;
+}
+
+/* Join between consecutive pieces that meet at an angle. */
+static cf_status_t
+piece_join(driver *dr, const cf_bezier_t *prev, const cf_bezier_t *next)
+{
+    cf_cubics_t *cu = dr->chain.cubics;
+    double p[2], ul[2], ur[2], start[2], *end;
+    double sc = fmax(cf__deriv_scale(prev), cf__deriv_scale(next));
+    if (cu->count == 0 || dr->d == 0.0)
+        return CF_STATUS_OK;
+    end = cu->pts + 8 * cu->count - 2;
+    cf__bezier_unit_tangent(prev, 1.0, -1, sc, NULL, ul);
+    cf__bezier_unit_tangent(next, 0.0, 1, sc, p, ur);
+    start[0] = p[0] - dr->d * ur[1];
+    start[1] = p[1] + dr->d * ur[0];
+    if (hypot(start[0] - end[0], start[1] - end[1]) <=
+        1e-9 * fmax(sc, fabs(dr->d)))
+        return CF_STATUS_OK;
+    {
+        double e[2] = { end[0], end[1] };
+        return join_arc(dr, p, e, turn(ul, ur), dr->T0);
+    }
+}
+
+static cf_status_t
+check_options(const cf_offset_options_t *opt, double d, cf_diag_t *diag)
+{
+    if (!isfinite(d))
+        return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
+                         "offset distance %g is not finite", d);
+    if (!(opt->tolerance > 0.0) || !isfinite(opt->tolerance))
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "offset tolerance %g must be finite and positive",
+                         opt->tolerance);
+    if (opt->method != CF_OFFSET_LEVIEN &&
+        opt->method != CF_OFFSET_TILLER_HANSON)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "unknown offset method %d", (int)opt->method);
+    return CF_STATUS_OK;
+}
+
+static cf_status_t
+offset_pieces(const cf_bezier_t *const *pieces, size_t n, const double *t0,
+              const double *t1, double d, const cf_offset_options_t *opt_in,
+              cf_cubics_t **raw, cf_cubics_list_t **trimmed,
+              cf_offset_report_t *rep, cf_diag_t *diag)
+{
+    cf_offset_options_t opt;
+    driver dr;
+    cf_bezier_t **own = NULL;
+    cf_status_t st;
+    if (raw != NULL)
+        *raw = NULL;
+    if (trimmed != NULL)
+        *trimmed = NULL;
+    if (opt_in != NULL)
+        opt = *opt_in;
+    else
+        cf_offset_options_init(&opt);
+    st = check_options(&opt, d, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    for (size_t i = 0; i < n; i++) {
+        if (pieces[i] == NULL)
+            return cf__error(diag, CF_STATUS_INVALID_ARG, (long)i,
+                             "offset: piece %zu is NULL", i);
+        if (pieces[i]->dim != 2)
+            return cf__error(diag, CF_STATUS_DIM_MISMATCH, (long)i,
+                             "offsets are planar; piece %zu has dim %zu", i,
+                             pieces[i]->dim);
+        if (opt.method == CF_OFFSET_TILLER_HANSON &&
+            (pieces[i]->rational || pieces[i]->degree > 3))
+            return cf__error(diag, CF_STATUS_INVALID_ARG, (long)i,
+                             "Tiller-Hanson needs polynomial pieces of "
+                             "degree <= 3; piece %zu is %s of degree %d",
+                             i, pieces[i]->rational ? "rational" : "polynomial",
+                             pieces[i]->degree);
+        if (cf__deriv_scale(pieces[i]) == 0.0 && d != 0.0)
+            return cf__error(diag, CF_STATUS_DEGENERATE, (long)i,
+                             "offset: piece %zu is a single point; its "
+                             "normal is undefined", i);
+    }
+    memset(&dr, 0, sizeof dr);
+    dr.tol = opt.tolerance;
+    dr.method = opt.method;
+    dr.d = d;
+    dr.rep.converged = true;
+    if (cf__chain_init(&dr.chain) != CF_STATUS_OK)
+        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+                         "out of memory (offset chain)");
+    /* Tiller-Hanson works on cubics: raise lower degrees */
+    if (opt.method == CF_OFFSET_TILLER_HANSON) {
+        own = cf__calloc(n, sizeof *own);
+        if (own == NULL) {
+            st = CF_STATUS_NO_MEMORY;
+            goto fail;
+        }
+        for (size_t i = 0; i < n; i++) {
+            if (pieces[i]->degree < 3) {
+                st = cf_bezier_elevate(pieces[i], 3 - pieces[i]->degree,
+                                       &own[i], NULL);
+                if (st != CF_STATUS_OK)
+                    goto fail;
+            }
+        }
+    }
+    for (size_t i = 0; i < n; i++) {
+        const cf_bezier_t *pc = (own != NULL && own[i] != NULL) ? own[i]
+                                                                 : pieces[i];
+        dr.T0 = t0 != NULL ? t0[i] : (double)i;
+        dr.T1 = t1 != NULL ? t1[i] : (double)i + 1.0;
+        if (i > 0) {
+            st = piece_join(&dr, pieces[i - 1], pieces[i]);
+            if (st != CF_STATUS_OK)
+                goto fail;
+        }
+        if (n == 1 && t0 == NULL) {
+            dr.T0 = 0.0;
+            dr.T1 = 1.0;
+        }
+        st = offset_piece(&dr, pc);
+        if (st != CF_STATUS_OK)
+            goto fail;
+    }
+    dr.chain.cubics->max_error = dr.rep.max_error;
+    if (opt.trim) {
+        cf_cubics_list_t *tr = NULL;
+        size_t nis = 0;
+        st = cf__offset_trim(pieces, n, d, opt.tolerance, dr.chain.cubics,
+                             &tr, &nis);
+        if (st != CF_STATUS_OK)
+            goto fail;
+        dr.rep.self_intersections = nis;
+        dr.rep.trimmed_chains = tr->count;
+        for (size_t k = 0; k < tr->count; k++)
+            dr.rep.trimmed_segments += tr->chains[k]->count;
+        if (trimmed != NULL)
+            *trimmed = tr;
+        else
+            cf_cubics_list_destroy(tr);
+    }
+    if (own != NULL) {
+        for (size_t i = 0; i < n; i++)
+            cf_bezier_destroy(own[i]);
+        cf__free(own);
+    }
+    if (rep != NULL)
+        *rep = dr.rep;
+    if (raw != NULL)
+        *raw = cf__chain_take(&dr.chain);
+    cf__chain_fini(&dr.chain);
+    return CF_STATUS_OK;
+fail:
+    if (own != NULL) {
+        for (size_t i = 0; i < n; i++)
+            cf_bezier_destroy(own[i]);
+        cf__free(own);
+    }
+    cf__chain_fini(&dr.chain);
+    if (trimmed != NULL) {
+        cf_cubics_list_destroy(*trimmed);
+        *trimmed = NULL;
+    }
+    if (st == CF_STATUS_NO_MEMORY)
+        return cf__error(diag, st, -1, "out of memory (offset)");
+    return cf__error(diag, st, -1, "offset failed: %s",
+                     cf_status_to_string(st));
+}
+
+cf_status_t
+cf_bezier_offset(const cf_bezier_t *c, double d,
+                 const cf_offset_options_t *opt, cf_cubics_t **raw,
+                 cf_cubics_list_t **trimmed, cf_offset_report_t *rep,
+                 cf_diag_t *diag)
+{
+    if (c == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "offset: the curve is NULL");
+    return offset_pieces(&c, 1, NULL, NULL, d, opt, raw, trimmed, rep, diag);
+}
+
+cf_status_t
+cf_bezier_list_offset(const cf_bezier_list_t *list, double d,
+                      const cf_offset_options_t *opt, cf_cubics_t **raw,
+                      cf_cubics_list_t **trimmed, cf_offset_report_t *rep,
+                      cf_diag_t *diag)
+{
+    if (list == NULL || list->count == 0 || list->items == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "offset: the list of pieces is NULL or empty");
+    return offset_pieces((const cf_bezier_t *const *)list->items,
+                         list->count, list->t0, list->t1, d, opt, raw,
+                         trimmed, rep, diag);
+}
+
+/* ---- independent measure ---------------------------------------------------- */
+
+/* Distance from q to the polyline poly[0..m]. */
+static double
+dist_polyline(const double *poly, size_t m, const double *q)
+{
+    double best = INFINITY;
+    for (size_t i = 0; i < m; i++) {
+        const double *a = poly + 2 * i, *b = a + 2;
+        double vx = b[0] - a[0], vy = b[1] - a[1];
+        double wx = q[0] - a[0], wy = q[1] - a[1];
+        double l2 = vx * vx + vy * vy, u = 0.0;
+        if (l2 > 0.0)
+            u = fmin(1.0, fmax(0.0, (wx * vx + wy * vy) / l2));
+        best = fmin(best, hypot(wx - u * vx, wy - u * vy));
+    }
+    return best;
+}
+
+cf_status_t
+cf_offset_measure(const cf_bezier_t *c, double d, const cf_cubics_t *approx,
+                  size_t samples, double *error, cf_diag_t *diag)
+{
+    double *ex, *cx, emax = 0.0;
+    size_t fine;
+    cf_status_t st = check_curve(c);
+    if (st != CF_STATUS_OK || approx == NULL || error == NULL)
+        return cf__error(diag, st != CF_STATUS_OK ? st : CF_STATUS_INVALID_ARG,
+                         -1, "offset measure: bad curve or NULL argument");
+    if (approx->dim != 2 || samples < 16)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "offset measure: chain dim %zu, samples %zu "
+                         "(need 2 and >= 16)", approx->dim, samples);
+    fine = 4 * samples;
+    ex = cf__alloc_array(2 * (fine + 1), sizeof(double));
+    cx = cf__alloc_array(2 * (fine + 1), sizeof(double));
+    if (ex == NULL || cx == NULL) {
+        cf__free(ex);
+        cf__free(cx);
+        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+                         "out of memory (offset measure)");
+    }
+    for (size_t i = 0; i < approx->count; i++) {
+        const double *P = approx->pts + 8 * i;
+        double ta = approx->t[i], tb = approx->t[i + 1];
+        for (size_t j = 0; j <= fine; j++)
+            cf__cubic_pd(P, (double)j / (double)fine, cx + 2 * j, NULL);
+        if (tb > ta) {
+            for (size_t j = 0; j <= fine; j++) {
+                double t = ta + (tb - ta) * (double)j / (double)fine;
+                double u[2], p[2];
+                if (t > 1.0)
+                    t = 1.0;
+                cf__bezier_unit_tangent(c, t, j == fine ? -1 : 1,
+                                        cf__deriv_scale(c), p, u);
+                ex[2 * j] = p[0] - d * u[1];
+                ex[2 * j + 1] = p[1] + d * u[0];
+            }
+            for (size_t j = 0; j <= samples; j++) {
+                size_t k = j * 4;
+                emax = fmax(emax, dist_polyline(cx, fine, ex + 2 * k));
+                emax = fmax(emax, dist_polyline(ex, fine, cx + 2 * k));
+            }
+        } else {
+            double p[2];
+            cf__bezier_eval_point(c, ta, p);
+            for (size_t j = 0; j <= samples; j++) {
+                size_t k = j * 4;
+                emax = fmax(emax, fabs(hypot(cx[2 * k] - p[0],
+                                             cx[2 * k + 1] - p[1]) -
+                                       fabs(d)));
+            }
+        }
+    }
+    cf__free(ex);
+    cf__free(cx);
+    *error = emax;
+    return CF_STATUS_OK;
+}

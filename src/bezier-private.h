@@ -77,4 +77,12 @@ bool cf__bezier_deriv_many_fast(const cf_bezier_t *c, int k, const double *t,
 ** per point) r times, in place: Q_i = i/(m+1) P_{i-1} + (1 - i/(m+1)) P_i. */
 void cf__elevate_in_place(double *pts, size_t hdim, int m, int r);
 
+/* Bernstein product: f (degree nf, stride sf) times g (degree ng, stride
+** sg) into h (degree nf + ng <= CF_BEZIER_MAX_DEGREE, stride sh), times
+** sign, added to h when accumulate:
+** h_k = sum_{i+j=k} C(nf,i) C(ng,j) / C(nf+ng,k) f_i g_j. */
+void cf__bernstein_product(const double *f, int nf, size_t sf,
+                           const double *g, int ng, size_t sg, double *h,
+                           size_t sh, double sign, bool accumulate);
+
 #endif

@@ -879,9 +879,6 @@ cf_bezier_elevate(const cf_bezier_t *c, int r, cf_bezier_t **out,
 
 /* ---- the derivative as a curve ------------------------------------------- */
 
-/* Bernstein product: f (degree nf, stride sf) times g (degree ng, stride
-** sg) into h (degree nf + ng, stride sh):
-** h_k = sum_{i+j=k} C(nf,i) C(ng,j) / C(nf+ng,k) f_i g_j. */
 static void
 binomial_row(int n, double *row)
 {
@@ -890,8 +887,8 @@ binomial_row(int n, double *row)
         row[i] = nearbyint(row[i - 1] * (double)(n - i + 1) / (double)i);
 }
 
-static void
-bernstein_product(const double *f, int nf, size_t sf, const double *g,
+void
+cf__bernstein_product(const double *f, int nf, size_t sf, const double *g,
                   int ng, size_t sg, double *h, size_t sh, double sign,
                   bool accumulate)
 {
@@ -947,15 +944,15 @@ rational_derivative(const cf_bezier_t *c, cf_bezier_t **out, cf_diag_t *diag)
                              c->pts[(size_t)i * h + k]);
     /* numerator, degree 2n - 1, stored at stride h in d->pts */
     for (size_t k = 0; k < dim; k++) {
-        bernstein_product(diff + k, n - 1, h, c->pts + dim, n, h,
+        cf__bernstein_product(diff + k, n - 1, h, c->pts + dim, n, h,
                           d->pts + k, h, 1.0, false);
-        bernstein_product(c->pts + k, n, h, diff + dim, n - 1, h,
+        cf__bernstein_product(c->pts + k, n, h, diff + dim, n - 1, h,
                           d->pts + k, h, -1.0, true);
     }
     for (int i = 0; i < 2 * n; i++)
         d->pts[(size_t)i * h + dim] = 1.0;   /* placeholder for elevation */
     cf__elevate_in_place(d->pts, h, 2 * n - 1, 1);
-    bernstein_product(c->pts + dim, n, h, c->pts + dim, n, h, d->pts + dim,
+    cf__bernstein_product(c->pts + dim, n, h, c->pts + dim, n, h, d->pts + dim,
                       h, 1.0, false);
     cf__free(diff);
     *out = d;

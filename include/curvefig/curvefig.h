@@ -8,6 +8,8 @@
 
 #include "curvefig/core.h"
 #include "curvefig/bezier.h"
+#include "curvefig/bernstein.h"
+#include "curvefig/geometry.h"
 #include "curvefig/offset.h"
 #include "curvefig/knots.h"
 #include "curvefig/bspline.h"

@@ -572,6 +572,13 @@ decompose(const cf_bspline_t *c, double *Q, double *breaks)
     size_t seg = (p + 1) * hd, a = p, b = p + 1, nb = 0;
     const double *U = c->U, *P = c->P;
     double alphas[CF_BSPLINE_MAX_DEGREE + 1];
+    if (p == 0) {
+        /* every point is a constant piece on its span */
+        memcpy(Q, P, c->count * hd * sizeof *Q);
+        if (breaks != NULL)
+            memcpy(breaks, U, c->nknots * sizeof *U);
+        return;
+    }
     memcpy(Q, P, seg * sizeof *Q);
     if (breaks != NULL)
         breaks[0] = U[p];
@@ -699,7 +706,7 @@ cf_bspline_elevate(const cf_bspline_t *c, int t, cf_bspline_t **out,
     cf_status_t st = check_in(c, out, diag);
     const cf_bspline_t *w;
     cf_bspline_t *owned = NULL, *cur = NULL;
-    size_t p, ph, hd, nseg, seg, count, nk;
+    size_t p, ph, hd, nseg, seg, count;
     double *Q = NULL, *B = NULL, size = 0.0, tol;
     if (st != CF_STATUS_OK)
         return st;
@@ -719,27 +726,22 @@ cf_bspline_elevate(const cf_bspline_t *c, int t, cf_bspline_t **out,
     ph = p + (size_t)t;
     hd = c->hdim;
     seg = (p + 1) * hd;
-    /* the elevated pieces joined with knots of multiplicity ph (shared end
-    ** points): count = nseg * ph + 1 points */
-    count = nseg * ph + 1;
-    nk = count + ph + 1;
+    /* the elevated pieces side by side, every break a knot of
+    ** multiplicity ph + 1 (pieces of a C^-1 curve share no point) */
+    count = nseg * (ph + 1);
     cur = cf__bspline_alloc(c->dim, c->rational, (int)ph, count);
     if (cur == NULL) {
         st = no_memory(diag);
         goto done;
     }
-    for (size_t i = 0; i <= ph; i++) {
-        cur->U[i] = B[0];
-        cur->U[nk - 1 - i] = B[nseg];
-    }
-    for (size_t sI = 1; sI < nseg; sI++)
-        for (size_t i = 0; i < ph; i++)
-            cur->U[ph + 1 + (sI - 1) * ph + i] = B[sI];
+    for (size_t sI = 0; sI <= nseg; sI++)
+        for (size_t i = 0; i <= ph; i++)
+            cur->U[sI * (ph + 1) + i] = B[sI];
     for (size_t sI = 0; sI < nseg; sI++) {
         const double *src = Q + sI * seg;
         /* Q_i = sum_j C(p, j) C(t, i - j) / C(p + t, i) P_j */
         for (size_t i = 0; i <= ph; i++) {
-            double *dst = cur->P + (sI * ph + i) * hd;
+            double *dst = cur->P + (sI * (ph + 1) + i) * hd;
             size_t jlo = i > (size_t)t ? i - (size_t)t : 0;
             size_t jhi = i < p ? i : p;
             double den = cf__binomial((int)ph, (int)i);
@@ -752,8 +754,6 @@ cf_bspline_elevate(const cf_bspline_t *c, int t, cf_bspline_t **out,
                     dst[d] += f * src[j * hd + d];
             }
         }
-        for (size_t d = 0; d < seg / (p + 1); d++)
-            size = fmax(size, fabs(src[d]));
     }
     for (size_t i = 0; i < count * hd; i++)
         size = fmax(size, fabs(cur->P[i]));
@@ -763,11 +763,10 @@ cf_bspline_elevate(const cf_bspline_t *c, int t, cf_bspline_t **out,
     tol = 1e-9 * (1.0 + size);
     for (size_t sI = 1; sI < nseg; sI++) {
         int s = cf__knots_mult(w->U, w->nknots, B[sI]);
-        int extra = (int)ph - (s + t);
+        int extra = (int)ph + 1 - (s + t);
         if (extra > 0) {
             cf_bspline_t *nxt;
-            int rem = 0;
-            st = cf_bspline_remove_knot(cur, B[sI], extra, tol, &nxt, &rem,
+            st = cf_bspline_remove_knot(cur, B[sI], extra, tol, &nxt, NULL,
                                         diag);
             if (st != CF_STATUS_OK)
                 goto done;
@@ -787,10 +786,16 @@ done:
 
 /* ---- derivative curves -------------------------------------------------- */
 
+/* Thesis §2.9: degree p - 1, knots u_1 .. u_{m-1}, points
+** Q_i = p (P_{i+1} - P_i) / (u_{i+p+1} - u_{i+1}).  A Q_i whose basis
+** function N_{i+1}^{p-1} vanishes identically (u_{i+1} = u_{i+p+1}: a knot
+** of multiplicity p + 1 where the curve jumps) is dropped with one copy of
+** that knot, so the result stays a valid piecewise description. */
 static cf_status_t
 derivative_poly(const cf_bspline_t *c, cf_bspline_t **out, cf_diag_t *diag)
 {
-    size_t p = (size_t)c->p, n = c->count - 1, hd = c->hdim;
+    size_t p = (size_t)c->p, n = c->count - 1, hd = c->hdim, keep = 0;
+    size_t j = 0;
     cf_bspline_t *q;
     if (p == 0) {
         q = cf__bspline_alloc(c->dim, false, 0, c->count);
@@ -802,22 +807,26 @@ derivative_poly(const cf_bspline_t *c, cf_bspline_t **out, cf_diag_t *diag)
         *out = q;
         return CF_STATUS_OK;
     }
-    for (size_t i = p + 1; i + p + 1 < c->nknots; i++) {
-        if (c->U[i] == c->U[i + p])
-            return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)i,
-                             "derivative: knot %zu (%g) has multiplicity "
-                             "%zu; the curve jumps there", i, c->U[i],
-                             p + 1);
-    }
-    q = cf__bspline_alloc(c->dim, false, c->p - 1, n);
+    for (size_t i = 0; i < n; i++)
+        keep += c->U[i + p + 1] != c->U[i + 1];
+    q = cf__bspline_alloc(c->dim, false, c->p - 1, keep);
     if (q == NULL)
         return no_memory(diag);
-    memcpy(q->U, c->U + 1, (c->nknots - 2) * sizeof *q->U);
+    /* knots: u_1 .. u_{m-1} without u_{i+1} for every dropped i */
+    for (size_t i = 0; i + 1 < c->nknots - 1; i++) {
+        if (i < n && c->U[i + p + 1] == c->U[i + 1])
+            continue;
+        q->U[j++] = c->U[i + 1];
+    }
+    j = 0;
     for (size_t i = 0; i < n; i++) {
         double den = c->U[i + p + 1] - c->U[i + 1];
-        double f = den != 0.0 ? (double)p / den : 0.0;
+        if (den == 0.0)
+            continue;
         for (size_t d = 0; d < hd; d++)
-            q->P[i * hd + d] = f * (c->P[(i + 1) * hd + d] - c->P[i * hd + d]);
+            q->P[j * hd + d] = (double)p / den
+                               * (c->P[(i + 1) * hd + d] - c->P[i * hd + d]);
+        j++;
     }
     cf__bspline_finish(q);
     *out = q;

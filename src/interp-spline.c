@@ -9,8 +9,25 @@
 #include <math.h>
 #include <string.h>
 
+#include "bspline-private.h"
 #include "interp-private.h"
 #include "linsolve-private.h"
+
+/*
+** The ord-th derivatives of the p + 1 nonzero basis functions at u into
+** v[p + 1], and their span.  The knot vector is validated once by the
+** caller (cf_knots_validate), so the unchecked evaluator of the B-spline
+** module is used: the public cf_basis_ders validates the whole vector on
+** every call, which would make a system of n rows cost O(n^2).
+*/
+static size_t
+basis_at(int p, const double *knots, size_t nknots, double u, int ord,
+         double *v)
+{
+    size_t span = cf_knots_find_span(p, knots, nknots, u);
+    cf__basis_deriv(p, knots, nknots, NULL, span, u, ord, v);
+    return span;
+}
 
 /*
 ** Solve for n B-spline coefficients of degree p on the given knots such
@@ -23,10 +40,12 @@ static cf_status_t
 collocate(size_t dim, int p, const double *knots, size_t nknots, size_t n,
           const double *ru, const int *ord, double *rhs, cf_diag_t *diag)
 {
-    double ders[3 * (CF_BSPLINE_MAX_DEGREE + 1)];
+    double v[CF_BSPLINE_MAX_DEGREE + 1];
     size_t kl = 0, ku = 0;
     cf__band_t band;
-    cf_status_t st;
+    cf_status_t st = cf_knots_validate(p, n, knots, nknots, diag);
+    if (st != CF_STATUS_OK)
+        return st;
     for (size_t r = 0; r < n; r++) {
         size_t k = cf_knots_find_span(p, knots, nknots, ru[r]);
         size_t first = k - (size_t)p;
@@ -38,15 +57,11 @@ collocate(size_t dim, int p, const double *knots, size_t nknots, size_t n,
     st = cf__band_init(&band, n, kl, ku, diag);
     if (st != CF_STATUS_OK)
         return st;
-    for (size_t r = 0; r < n && st == CF_STATUS_OK; r++) {
-        size_t span;
-        st = cf_basis_ders(p, knots, nknots, ru[r], ord[r], &span, ders,
-                           diag);
-        for (int j = 0; j <= p && st == CF_STATUS_OK; j++) {
-            double v = ders[ord[r] * (p + 1) + j];
-            if (v != 0.0)
-                cf__band_set(&band, r, span - (size_t)p + (size_t)j, v);
-        }
+    for (size_t r = 0; r < n; r++) {
+        size_t span = basis_at(p, knots, nknots, ru[r], ord[r], v);
+        for (int j = 0; j <= p; j++)
+            if (v[j] != 0.0)
+                cf__band_set(&band, r, span - (size_t)p + (size_t)j, v[j]);
     }
     if (st == CF_STATUS_OK)
         st = cf__band_factor(&band, diag);
@@ -257,11 +272,11 @@ cf__interp_periodic(size_t dim, const double *points, size_t count,
         else
             knots[j] = u[j - 3 - n] + L;
     }
+    st = cf_knots_validate(3, ncoef, knots, nknots, diag);
+    if (st != CF_STATUS_OK)
+        goto done;
     for (size_t i = 0; i < n; i++) {
-        size_t span;
-        st = cf_basis_funs(3, knots, nknots, u[i], &span, N, diag);
-        if (st != CF_STATUS_OK)
-            goto done;
+        size_t span = basis_at(3, knots, nknots, u[i], 0, N);
         if (span != i + 3) {
             st = cf__error(diag, CF_STATUS_DEGENERATE, (long)i,
                            "periodic spline: parameter %zu (%g) is not "
@@ -474,14 +489,15 @@ cf_approximate_lsq(size_t dim, const double *points, size_t count,
     if (st != CF_STATUS_OK)
         goto done;
     lsq_knots(u, count, ncontrol, p, knots);
+    st = cf_knots_validate(p, ncontrol, knots, nk, diag);
+    if (st != CF_STATUS_OK)
+        goto done;
     /* row k - first: sum_j N_j(u_k) Q_j = P_k, the fixed ends moved to
     ** the right-hand side */
     for (size_t k = first; k < count - first; k++) {
-        size_t r = k - first, span;
+        size_t r = k - first;
+        size_t span = basis_at(p, knots, nk, u[k], 0, N);
         double *b = B + r * dim;
-        st = cf_basis_funs(p, knots, nk, u[k], &span, N, diag);
-        if (st != CF_STATUS_OK)
-            goto done;
         memcpy(b, points + k * dim, dim * sizeof *b);
         for (int j = 0; j <= p; j++) {
             size_t col = span - (size_t)p + (size_t)j;

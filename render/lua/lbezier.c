@@ -265,6 +265,7 @@ m_reverse(lua_State *L)
 static int
 m_transform(lua_State *L)
 {
+    lua_settop(L, 3);
     cf_bezier_t *c = cf__lua_check_bezier(L, 1);
     size_t dim = cf_bezier_dim(c), rows, cols, bd = dim;
     double *A = cf__lua_check_points(L, 2, "transform", "matrix row", 1,

@@ -449,6 +449,7 @@ m_reverse(lua_State *L)
 static int
 m_transform(lua_State *L)
 {
+    lua_settop(L, 3);
     cf_bspline_t *c = cf__lua_check_bspline(L, 1);
     size_t dim = cf_bspline_dim(c), rows, cols, bd = dim;
     double *A = cf__lua_check_points(L, 2, "transform", "matrix row", 1,
@@ -773,6 +774,7 @@ k_count(lua_State *L)
 static int
 l_basis(lua_State *L)
 {
+    lua_settop(L, 5);
     size_t m;
     double *u = cf__lua_check_numbers(L, 1, "basis", "knot", &m);
     int i = cf__lua_check_int(L, 2, "basis", "i", 0, 1 << 20);
@@ -800,6 +802,7 @@ l_basis(lua_State *L)
 static int
 l_basis_funs(lua_State *L)
 {
+    lua_settop(L, 3);
     size_t m, span;
     double *u = cf__lua_check_numbers(L, 1, "basis_funs", "knot", &m);
     int p = cf__lua_check_int(L, 2, "basis_funs", "p", 0,

@@ -18,6 +18,8 @@
 #define CF__LUA_FIGURE "curvefig.figure"
 #define CF__LUA_PLOT "curvefig.plot"
 #define CF__LUA_HOLDER "curvefig.holder"
+/* Registry flag: true when labels are left out (render --no-labels). */
+#define CF__LUA_NO_LABELS "curvefig.nolabels"
 
 /* luaL_error with the C library's printf (%zu, %g), message <= 511 bytes;
 ** the script's file and line are put in front. */

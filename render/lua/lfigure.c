@@ -47,6 +47,18 @@ tostring(lua_State *L)
     return 1;
 }
 
+/* False under `curvefig render --no-labels` (the label-free layer of the
+** pixel tests): every label, tick label and axis label is left out. */
+static bool
+labels_on(lua_State *L)
+{
+    bool off;
+    lua_getfield(L, LUA_REGISTRYINDEX, CF__LUA_NO_LABELS);
+    off = lua_toboolean(L, -1);
+    lua_pop(L, 1);
+    return !off;
+}
+
 static int
 check(lua_State *L, const char *fn, cf_status_t st, const cf_diag_t *diag)
 {
@@ -365,6 +377,8 @@ label_points(lua_State *L, cf_figure_t *fig, int opts, const double *pts,
     lua_Integer start;
     cf_diag_t diag;
     int top = lua_gettop(L);
+    if (!labels_on(L))
+        return;
     if (cf__lua_field(L, opts, "labels") == LUA_TNIL ||
         (lua_isboolean(L, -1) && !lua_toboolean(L, -1))) {
         lua_settop(L, top);
@@ -583,6 +597,7 @@ static int
 m_curve(lua_State *L)
 {
     cf_figure_t *fig = check_fig(L, 1);
+    lua_settop(L, 3);
     double a = 0.0, b = 0.0;
     cf_style_t st;
     cf_diag_t diag;
@@ -639,6 +654,7 @@ static int
 draw_points(lua_State *L, const char *fn, pts_fn add)
 {
     cf_figure_t *fig = check_fig(L, 1);
+    lua_settop(L, 3);
     size_t n;
     double *p;
     cf_style_t st;
@@ -682,6 +698,7 @@ static int
 m_polyline(lua_State *L)
 {
     cf_figure_t *fig = check_fig(L, 1);
+    lua_settop(L, 3);
     size_t n;
     double *p;
     bool closed;
@@ -705,6 +722,7 @@ static int
 m_line(lua_State *L)
 {
     cf_figure_t *fig = check_fig(L, 1);
+    lua_settop(L, 4);
     double *p, *q, pq[4];
     size_t n;
     cf_style_t st;
@@ -726,6 +744,7 @@ static int
 m_label(lua_State *L)
 {
     cf_figure_t *fig = check_fig(L, 1);
+    lua_settop(L, 4);
     size_t n;
     double *p = check_points2d(L, fig, 2, "label", &n);
     const char *text = luaL_checkstring(L, 3);
@@ -733,6 +752,10 @@ m_label(lua_State *L)
     cf_diag_t diag;
     check_keys(L, 4, "label", NULL);
     read_style(L, 4, "label", fig, &st);
+    if (!labels_on(L)) {
+        lua_settop(L, 1);
+        return 1;
+    }
     cf_diag_clear(&diag);
     check(L, "label", cf_figure_add_label(fig, p[0], p[1], text, &st), &diag);
     lua_settop(L, 1);
@@ -747,7 +770,7 @@ arrow_label(lua_State *L, cf_figure_t *fig, int opts, double x, double y,
 {
     cf_style_t ls;
     cf_diag_t diag;
-    if (cf__lua_field(L, opts, "label") == LUA_TSTRING) {
+    if (cf__lua_field(L, opts, "label") == LUA_TSTRING && labels_on(L)) {
         cf_style_init(&ls);
         cf_diag_clear(&diag);
         check(L, fn, cf_figure_add_label(fig, x, y, lua_tostring(L, -1), &ls),
@@ -761,6 +784,7 @@ static int
 arrow(lua_State *L, bool to)
 {
     cf_figure_t *fig = check_fig(L, 1);
+    lua_settop(L, 4);
     const char *fn = to ? "arrow_to" : "arrow";
     size_t n;
     double *p, *v, dx, dy;
@@ -797,6 +821,7 @@ static int
 m_tangent(lua_State *L)
 {
     cf_figure_t *fig = check_fig(L, 1);
+    lua_settop(L, 4);
     double t = cf__lua_check_finite(L, 3, "tangent", "t"), d[2 * 64], pd[4];
     cf_bezier_t *bz = cf__lua_to_bezier(L, 2);
     size_t dim;
@@ -838,6 +863,7 @@ static int
 m_knots(lua_State *L)
 {
     cf_figure_t *fig = check_fig(L, 1);
+    lua_settop(L, 3);
     cf_bspline_t *s = cf__lua_check_bspline(L, 2);
     const double *u = cf_bspline_knots(s);
     size_t m = cf_bspline_nknots(s), dim = cf_bspline_dim(s), n = 0;
@@ -862,7 +888,8 @@ m_knots(lua_State *L)
             continue;
         check(L, "knots", cf_figure_project(fig, pts + n * dim, 1, dim,
                                             p2 + 2 * n), NULL);
-        if (lua_istable(L, 3) && (text = item_label(L, 3, n, &arg, 1))) {
+        if (lua_istable(L, 3) && labels_on(L) &&
+            (text = item_label(L, 3, n, &arg, 1))) {
             cf_style_t ls;
             read_sub_style(L, 3, "label_style", "knots", fig, &ls);
             cf_diag_clear(&diag);
@@ -926,7 +953,7 @@ draw_net(lua_State *L, cf_figure_t *fig, const double *pts,
             const char *text;
             args[0] = (lua_Integer)(first_index[j] + i);
             args[1] = (lua_Integer)j;
-            if (!lua_istable(L, 4) ||
+            if (!lua_istable(L, 4) || !labels_on(L) ||
                 (text = item_label(L, 4, k, args, 2)) == NULL) {
                 lua_settop(L, top);
                 continue;
@@ -948,6 +975,7 @@ static int
 m_decasteljau(lua_State *L)
 {
     cf_figure_t *fig = check_fig(L, 1);
+    lua_settop(L, 4);
     cf_bezier_t *c = cf__lua_check_bezier(L, 2);
     double t = cf__lua_check_finite(L, 3, "decasteljau", "t"), *pts;
     size_t n = (size_t)cf_bezier_degree(c) + 1, *counts, *first;
@@ -972,6 +1000,7 @@ static int
 m_deboor(lua_State *L)
 {
     cf_figure_t *fig = check_fig(L, 1);
+    lua_settop(L, 4);
     cf_bspline_t *s = cf__lua_check_bspline(L, 2);
     double u = cf__lua_check_finite(L, 3, "deboor", "u"), *pts;
     size_t p = (size_t)cf_bspline_degree(s), span, *counts, *first;
@@ -1091,6 +1120,7 @@ static int
 m_plot(lua_State *L)
 {
     cf_figure_t *fig = check_fig(L, 1);
+    lua_settop(L, 2);
     cf_axes_t ax;
     cf_style_t st;
     cf_diag_t diag;
@@ -1114,6 +1144,12 @@ m_plot(lua_State *L)
         if (cf__lua_field(L, 2, "knot_labels") != LUA_TNIL &&
             lua_toboolean(L, -1))
             ax.knot_labels = knot_labels(L, lua_gettop(L), ax.knot_count);
+    }
+    if (!labels_on(L)) {
+        ax.xtick_step = ax.ytick_step = -1;
+        ax.xtick_count = ax.ytick_count = 0;
+        ax.xtick_labels = ax.ytick_labels = ax.knot_labels = NULL;
+        ax.xlabel = ax.ylabel = NULL;
     }
     ax.arrows = opt_bool(L, 2, "arrows", true);
     ax.grid = opt_bool(L, 2, "grid", false);
@@ -1162,6 +1198,7 @@ static int
 m_func(lua_State *L)
 {
     cf_figure_t *fig = check_fig(L, 1);
+    lua_settop(L, 5);
     double a, b;
     func_ctx c;
     cf_style_t st;
@@ -1215,6 +1252,7 @@ static int
 m_graph(lua_State *L)
 {
     cf_figure_t *fig = check_fig(L, 1);
+    lua_settop(L, 3);
     cf_bezier_t *bz = cf__lua_to_bezier(L, 2);
     cf_bspline_t *bs = cf__lua_to_bspline(L, 2);
     cf_style_t st;
@@ -1247,6 +1285,7 @@ static int
 m_basis(lua_State *L)
 {
     cf_figure_t *fig = check_fig(L, 1);
+    lua_settop(L, 5);
     cf_bspline_t *src = cf__lua_to_bspline(L, 2), **spl;
     size_t m, count;
     const double *u;
@@ -1295,6 +1334,7 @@ static int
 m_bernstein(lua_State *L)
 {
     cf_figure_t *fig = check_fig(L, 1);
+    lua_settop(L, 4);
     int n = cf__lua_check_int(L, 2, "bernstein", "n", 0, CF_BEZIER_MAX_DEGREE);
     int i = cf__lua_check_int(L, 3, "bernstein", "i", 0, n);
     double *e = cf__lua_buffer(L, (size_t)n + 1), breaks[2] = { 0.0, 1.0 };
@@ -1323,6 +1363,7 @@ static int
 m_window(lua_State *L)
 {
     cf_figure_t *fig = check_fig(L, 1);
+    lua_settop(L, 5);
     cf_diag_t diag;
     cf_diag_clear(&diag);
     if (lua_isnoneornil(L, 2)) {
@@ -1343,6 +1384,7 @@ static int
 m_project(lua_State *L)
 {
     cf_figure_t *fig = check_fig(L, 1);
+    lua_settop(L, 2);
     size_t n;
     double *p = check_points2d(L, fig, 2, "project", &n);
     cf__lua_push_points(L, p, n, 2);

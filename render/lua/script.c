@@ -26,6 +26,7 @@ struct cf_script {
     size_t used, max_memory;
     unsigned long long instructions, max_instructions;
     int limit_hit;
+    int running;       /* a script is running (the stack can be read) */
     char where[160];   /* "file:line:" last seen by the hook, or "" */
     cf_allocator_t saved_allocator;
     char *error;
@@ -44,6 +45,26 @@ fail(cf_diag_t *diag, cf_status_t status, const char *fmt, const char *arg)
 
 /* ---- the budgets -------------------------------------------------------- */
 
+/* Remember the script's current file and line in s->where.  Only reads
+** the call stack (lua_getstack and lua_getinfo "Sl" allocate nothing), so
+** it may run inside the allocator. */
+static void
+note_position(cf_script_t *s)
+{
+    lua_Debug ar;
+    if (s->L == NULL || !s->running)
+        return;
+    for (int level = 0; lua_getstack(s->L, level, &ar); level++) {
+        if (!lua_getinfo(s->L, "Sl", &ar))
+            break;
+        if (ar.source[0] == '@' && ar.currentline > 0) {
+            snprintf(s->where, sizeof s->where, "%s:%d: ", ar.short_src,
+                     ar.currentline);
+            return;
+        }
+    }
+}
+
 static void *
 budget_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
 {
@@ -57,8 +78,10 @@ budget_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
         return NULL;
     }
     if (nsize > old && (nsize - old > cap || s->used > cap - (nsize - old))) {
-        if (s->limit_hit == LIMIT_NONE)
+        if (s->limit_hit == LIMIT_NONE) {
             s->limit_hit = LIMIT_MEMORY;
+            note_position(s);
+        }
         return NULL;
     }
     p = realloc(ptr, nsize);
@@ -359,7 +382,9 @@ run_loaded(cf_script_t *s, int rc, const char *name)
         return finish(s, rc, name);
     lua_pushcfunction(L, traceback);
     lua_insert(L, -2);
+    s->running = 1;
     rc = lua_pcall(L, 0, 0, -2);
+    s->running = 0;
     return finish(s, rc, name);
 }
 
@@ -429,6 +454,15 @@ cf_script_run_string(cf_script_t *s, const char *code, const char *name)
     rc = luaL_loadbufferx(L, code, len, lua_tostring(L, -1), "t");
     lua_remove(L, -2);
     return run_loaded(s, rc, name);
+}
+
+void
+cf_script_set_labels(cf_script_t *s, bool enabled)
+{
+    if (s == NULL)
+        return;
+    lua_pushboolean(s->L, !enabled);
+    lua_setfield(s->L, LUA_REGISTRYINDEX, CF__LUA_NO_LABELS);
 }
 
 const char *

@@ -12,6 +12,7 @@
 #ifndef CURVEFIG_RENDER_LUA_SCRIPT_H
 #define CURVEFIG_RENDER_LUA_SCRIPT_H
 
+#include <stdbool.h>
 #include <stdio.h>
 
 #include "curvefig/core.h"
@@ -35,6 +36,10 @@ typedef struct cf_script_limits {
 cf_status_t cf_script_create(const cf_script_limits_t *limits, FILE *out,
                              cf_script_t **script, cf_diag_t *diag);
 void cf_script_destroy(cf_script_t *script);
+
+/* Leave out every label (labels, tick and axis labels) of the figures the
+** script defines from now on: the label-free layer of the pixel tests. */
+void cf_script_set_labels(cf_script_t *script, bool enabled);
 
 /* Load and run the file at path.  CF_STATUS_SCRIPT (or NO_MEMORY, IO) on
 ** failure; the full message (file, line, what went wrong, the Lua frames

@@ -31,6 +31,8 @@ static const char *const overview[] = {
     "  --dpi N             PNG resolution, 1..2400 (default 150)\n",
     "  --only NAME[,NAME]  render only these figures (each must exist)\n",
     "  --tight             crop every page to its ink box\n",
+    "  --no-labels         leave out every label, tick and axis label (the\n",
+    "                      label-free layer of the pixel tests)\n",
     "  --manifest FILE     also write FILE: one line per figure written,\n",
     "                      NAME<TAB>FORMATS<TAB>CAPTION (for `gallery`)\n",
     "  -v, --verbose       print the name of every file written\n",

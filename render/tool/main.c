@@ -34,6 +34,7 @@ typedef struct options {
     unsigned formats;
     double dpi;
     bool tight;
+    bool no_labels;
     bool verbose;
     bool long_list;
     cf_script_limits_t limits;
@@ -90,6 +91,19 @@ parse_number(const char *s, double lo, double hi, double *out)
     return 0;
 }
 
+static bool
+takes_value(const char *opt)
+{
+    static const char *const with_value[] = {
+        "-o", "--output", "-f", "--formats", "--dpi", "--only", "--manifest",
+        "--title", "--max-memory", "--max-instructions", NULL,
+    };
+    for (int i = 0; with_value[i] != NULL; i++)
+        if (strcmp(opt, with_value[i]) == 0)
+            return true;
+    return false;
+}
+
 /* Parse argv into o; returns -1 when the tool should exit with *rc. */
 static int
 parse_args(int argc, char **argv, options *o, int *rc)
@@ -144,7 +158,10 @@ parse_args(int argc, char **argv, options *o, int *rc)
         } else if (strcmp(a, "--tight") == 0) {
             o->tight = true;
             takes = false;
-        } else if (a[0] == '-' && a[1] != '\0' && v == NULL) {
+        } else if (strcmp(a, "--no-labels") == 0) {
+            o->no_labels = true;
+            takes = false;
+        } else if (takes_value(a) && v == NULL) {
             *rc = usage_error("option '%s' needs a value", a);
             return -1;
         } else if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0) {
@@ -343,6 +360,7 @@ run_script(const options *o)
         fprintf(stderr, "curvefig: %s\n", diag.msg);
         return EXIT_SCRIPT;
     }
+    cf_script_set_labels(s, !o->no_labels);
     st = cf_script_run_file(s, o->script);
     fflush(stdout);
     if (st == CF_STATUS_IO) {

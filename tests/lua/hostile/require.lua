@@ -1,0 +1,3 @@
+-- must stop: no require, no package
+local os = require("os")
+os.execute("touch hostile-was-here")

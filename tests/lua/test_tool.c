@@ -1,0 +1,656 @@
+/*
+** The figure language and the curvefig tool, through the built tool:
+**
+**   test_tool TOOL SRCDIR
+**
+** Each test runs TOOL in a fresh temporary directory (the working
+** directory of the child), captures its exit status, stdout and stderr, and
+** checks them: the core names of DESIGN.md against the C API's own results,
+** scripts with assertions, several figures per script, the sandbox against
+** hostile scripts (which must stop with a clear message and leave the
+** directory empty), messages with file and line, and every exit status.
+*/
+#define _XOPEN_SOURCE 700
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmocka.h>
+
+#include "curvefig/bezier.h"
+#include "curvefig/bspline.h"
+
+static char tool[4096];
+static char srcdir[2048];
+
+typedef struct result {
+    int status;          /* exit status, or -1 */
+    char out[65536];     /* stdout */
+    char err[16384];     /* stderr */
+    char dir[256];       /* the working directory of the run */
+} result;
+
+static void
+slurp(const char *path, char *buf, size_t cap)
+{
+    FILE *f = fopen(path, "rb");
+    size_t n = 0;
+    if (f != NULL) {
+        n = fread(buf, 1, cap - 1, f);
+        fclose(f);
+    }
+    buf[n] = '\0';
+}
+
+/* Run TOOL with args (NULL-terminated, after the tool's name) in the
+** temporary directory r->dir, made when it is empty (see reset). */
+static void
+run_tool(result *r, const char *const *args)
+{
+    char *argv[64], outp[300], errp[300];
+    int n = 0, status;
+    pid_t pid;
+    if (r->dir[0] == '\0') {
+        snprintf(r->dir, sizeof r->dir, "/tmp/curvefig-test-XXXXXX");
+        assert_non_null(mkdtemp(r->dir));
+    }
+    snprintf(outp, sizeof outp, "/tmp/curvefig-out-%d", (int)getpid());
+    snprintf(errp, sizeof errp, "/tmp/curvefig-err-%d", (int)getpid());
+    argv[n++] = tool;
+    for (; *args != NULL && n < 63; args++)
+        argv[n++] = (char *)*args;
+    argv[n] = NULL;
+    fflush(NULL);
+    pid = fork();
+    assert_true(pid >= 0);
+    if (pid == 0) {
+        int fo = open(outp, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        int fe = open(errp, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        if (fo < 0 || fe < 0 || chdir(r->dir) != 0)
+            _exit(126);
+        dup2(fo, STDOUT_FILENO);
+        dup2(fe, STDERR_FILENO);
+        execv(tool, argv);
+        _exit(127);
+    }
+    assert_true(waitpid(pid, &status, 0) == pid);
+    r->status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    slurp(outp, r->out, sizeof r->out);
+    slurp(errp, r->err, sizeof r->err);
+    remove(outp);
+    remove(errp);
+}
+
+/* Number of entries in r->dir (recursively), for "touches nothing". */
+static int
+count_files(const char *dir)
+{
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    int n = 0;
+    if (d == NULL)
+        return -1;
+    while ((e = readdir(d)) != NULL) {
+        char path[1024];
+        struct stat sb;
+        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
+            continue;
+        n++;
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        if (stat(path, &sb) == 0 && S_ISDIR(sb.st_mode))
+            n += count_files(path);
+    }
+    closedir(d);
+    return n;
+}
+
+static void
+remove_tree(const char *dir)
+{
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    if (d == NULL)
+        return;
+    while ((e = readdir(d)) != NULL) {
+        char path[1024];
+        struct stat sb;
+        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
+            continue;
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        if (stat(path, &sb) == 0 && S_ISDIR(sb.st_mode))
+            remove_tree(path);
+        else
+            remove(path);
+    }
+    closedir(d);
+    rmdir(dir);
+}
+
+/* Remove the run's directory; the next run makes a new one. */
+static void
+reset(result *r)
+{
+    if (r->dir[0] != '\0')
+        remove_tree(r->dir);
+    r->dir[0] = '\0';
+}
+
+static const char *
+src(const char *name)
+{
+    static char buf[8][2300];
+    static int k;
+    k = (k + 1) % 8;
+    snprintf(buf[k], sizeof buf[k], "%s/%s", srcdir, name);
+    return buf[k];
+}
+
+static bool
+exists(const result *r, const char *name)
+{
+    char path[600];
+    struct stat sb;
+    snprintf(path, sizeof path, "%s/%s", r->dir, name);
+    return stat(path, &sb) == 0 && sb.st_size > 0;
+}
+
+#define assert_contains(hay, needle)                                         \
+    do {                                                                     \
+        if (strstr((hay), (needle)) == NULL)                                 \
+            fail_msg("expected \"%s\" in:\n%s", (needle), (hay));            \
+    } while (0)
+
+/* ---- scripts with assertions -------------------------------------------- */
+
+static void
+test_core_bezier_script(void **state)
+{
+    result *r = *state;
+    const char *args[] = { "run", src("core_bezier.lua"), NULL };
+    run_tool(r, args);
+    assert_int_equal(r->status, 0);
+    assert_string_equal(r->out, "core_bezier: ok\n");
+    assert_string_equal(r->err, "");
+}
+
+static void
+test_core_bspline_script(void **state)
+{
+    result *r = *state;
+    const char *args[] = { "run", src("core_bspline.lua"), NULL };
+    run_tool(r, args);
+    assert_int_equal(r->status, 0);
+    assert_string_equal(r->out, "core_bspline: ok\n");
+}
+
+/* ---- the core names against the C API ----------------------------------- */
+
+/* Parse "key v1 v2 ..." lines of the script's output into values. */
+static size_t
+values_of(const char *out, const char *key, double *v, size_t cap)
+{
+    char pat[64];
+    const char *p;
+    size_t n = 0;
+    snprintf(pat, sizeof pat, "\n%s ", key);
+    p = strstr(out, pat);
+    if (p == NULL && strncmp(out, pat + 1, strlen(pat + 1)) == 0)
+        p = out - 1;
+    if (p == NULL)
+        fail_msg("no line \"%s\" in the script's output", key);
+    p += strlen(pat);
+    while (*p != '\n' && *p != '\0' && n < cap) {
+        char *end;
+        v[n++] = strtod(p, &end);
+        if (end == p)
+            fail_msg("bad number after %s", key);
+        p = end;
+        while (*p == ' ')
+            p++;
+    }
+    return n;
+}
+
+/* The binding hands numbers to the C functions and back unchanged, and
+** %.17g round-trips a double: the values must be identical. */
+static void
+expect_values(const result *r, const char *key, const double *want, size_t n)
+{
+    double got[512];
+    size_t m = values_of(r->out, key, got, 512);
+    if (m != n)
+        fail_msg("%s: %zu values printed, the C API gives %zu", key, m, n);
+    for (size_t i = 0; i < n; i++)
+        if (got[i] != want[i] && !(isnan(got[i]) && isnan(want[i])))
+            fail_msg("%s[%zu]: script %.17g, C API %.17g", key, i, got[i],
+                     want[i]);
+}
+
+static const double orazem[] = { 0, 5, 1, -1, 3, 0, 4, 3, 6, 10 };
+static const double sample[] = { 3, 1, 3.75, 2, 5, 3, 4, 4,
+                                  3, 3, 2, 4, 1, 3, 2.25, 2 };
+static const double sample_u[] = { 0, 0, 0, 0.17, 0.33, 0.5,
+                                   0.67, 0.83, 1, 1, 1 };
+static const double sample_w[] = { 1, 2, 1, 0.5, 1, 3, 1, 1 };
+
+static void
+test_core_names_match_c_api(void **state)
+{
+    result *r = *state;
+    const char *args[] = { "run", src("api_values.lua"), NULL };
+    cf_bezier_t *c, *q, *left, *right;
+    cf_bspline_t *s, *nb, *t, *ds;
+    cf_bezier_list_t *list;
+    double v[512], w3[3] = { 1, 0.5, 2 };
+    size_t span;
+    int mult;
+    run_tool(r, args);
+    assert_int_equal(r->status, 0);
+
+    assert_int_equal(cf_bezier_create(2, 4, orazem, NULL, &c, NULL), 0);
+    assert_int_equal(cf_bezier_create(2, 2, orazem, w3, &q, NULL), 0);
+    assert_int_equal(cf_bezier_eval(c, 0.3, v), 0);
+    expect_values(r, "eval", v, 2);
+    assert_int_equal(cf_bezier_eval(q, 0.3, v), 0);
+    expect_values(r, "reval", v, 2);
+    assert_int_equal(cf_bezier_decasteljau(c, 0.75, v), 0);
+    expect_values(r, "decasteljau", v, cf_bezier_decasteljau_size(c));
+    assert_int_equal(cf_bezier_split(c, 0.3, &left, &right, NULL), 0);
+    cf_bezier_get_points(left, v);
+    cf_bezier_get_points(right, v + 10);
+    expect_values(r, "split", v, 20);
+    cf_bezier_destroy(left);
+    assert_int_equal(cf_bezier_elevate(c, 2, &left, NULL), 0);
+    cf_bezier_get_points(left, v);
+    expect_values(r, "elevate", v, 14);
+    cf_bezier_destroy(left);
+    cf_bezier_destroy(right);
+    assert_int_equal(cf_bezier_derivative(c, 1, &left, NULL), 0);
+    assert_int_equal(cf_bezier_eval(left, 0.4, v), 0);
+    cf_bezier_destroy(left);
+    assert_int_equal(cf_bezier_derivative(q, 1, &left, NULL), 0);
+    assert_int_equal(cf_bezier_eval(left, 0.4, v + 2), 0);
+    v[4] = cf_bezier_degree(left);
+    cf_bezier_destroy(left);
+    expect_values(r, "derivative", v, 5);
+    cf_bezier_get_points(q, v);
+    cf_bezier_get_weights(q, v + 6);
+    v[9] = cf_bezier_degree(q);
+    expect_values(r, "rpoints", v, 10);
+
+    assert_int_equal(cf_bspline_create(2, 2, sample_u, 11, sample, 8, NULL, &s,
+                                       NULL), 0);
+    assert_int_equal(cf_bspline_create(2, 2, sample_u, 11, sample, 8,
+                                       sample_w, &nb, NULL), 0);
+    assert_int_equal(cf_bspline_eval(s, 0.6, v), 0);
+    assert_int_equal(cf_bspline_eval(nb, 0.6, v + 2), 0);
+    expect_values(r, "beval", v, 4);
+    assert_int_equal(cf_bspline_insert_knot(s, 0.6, 2, &t, NULL, NULL), 0);
+    cf_bspline_get_points(t, v);
+    memcpy(v + 20, cf_bspline_knots(t), 13 * sizeof *v);
+    expect_values(r, "insert", v, 33);
+    cf_bspline_destroy(t);
+    assert_int_equal(cf_bspline_deboor(s, 0.5, v, &span, &mult), 0);
+    v[12] = (double)span;
+    v[13] = mult;
+    expect_values(r, "deboor", v, 14);
+    assert_int_equal(cf_bspline_to_beziers(nb, &list, NULL), 0);
+    for (size_t i = 0; i < list->count; i++) {
+        cf_bezier_get_points(list->items[i], v + 9 * i);
+        cf_bezier_get_weights(list->items[i], v + 9 * i + 6);
+    }
+    expect_values(r, "to_beziers", v, 9 * list->count);
+    cf_bezier_list_destroy(list);
+    assert_int_equal(cf_bspline_derivative(s, 1, &ds, NULL), 0);
+    assert_int_equal(cf_bspline_eval(ds, 0.45, v), 0);
+    v[2] = cf_bspline_degree(ds);
+    expect_values(r, "bderivative", v, 3);
+    cf_bspline_destroy(ds);
+    assert_int_equal(cf_bspline_elevate(s, 1, &ds, NULL), 0);
+    cf_bspline_get_points(ds, v);
+    expect_values(r, "belevate", v, 2 * cf_bspline_count(ds));
+    cf_bspline_destroy(ds);
+    cf_bspline_get_weights(nb, v);
+    memcpy(v + 8, cf_bspline_knots(nb), 11 * sizeof *v);
+    v[19] = cf_bspline_degree(nb);
+    expect_values(r, "bqueries", v, 20);
+
+    cf_bspline_destroy(s);
+    cf_bspline_destroy(nb);
+    cf_bezier_destroy(c);
+    cf_bezier_destroy(q);
+}
+
+/* ---- figures ------------------------------------------------------------ */
+
+static void
+test_several_figures_each_written(void **state)
+{
+    result *r = *state;
+    const char *args[] = { "render", src("multi.lua"), "-o", "out", "-f",
+                           "svg,png,pdf,ps,eps", "--manifest", "m.txt",
+                           NULL };
+    const char *ext[] = { "svg", "png", "pdf", "ps", "eps" };
+    run_tool(r, args);
+    assert_int_equal(r->status, 0);
+    assert_string_equal(r->out, "defined 3 figures\n");
+    for (int k = 1; k <= 3; k++) {
+        for (int e = 0; e < 5; e++) {
+            char name[64];
+            snprintf(name, sizeof name, "out/multi-%d.%s", k, ext[e]);
+            if (!exists(r, name))
+                fail_msg("%s was not written", name);
+        }
+    }
+    assert_int_equal(count_files(r->dir), 1 + 15 + 1);
+}
+
+static void
+test_list_and_only(void **state)
+{
+    result *r = *state;
+    const char *list[] = { "list", src("multi.lua"), NULL };
+    const char *llist[] = { "list", "-l", src("multi.lua"), NULL };
+    const char *only[] = { "render", src("multi.lua"), "--only", "multi-2",
+                           "-f", "svg", NULL };
+    run_tool(r, list);
+    assert_int_equal(r->status, 0);
+    assert_string_equal(r->out, "defined 3 figures\nmulti-1\nmulti-2\n"
+                                "multi-3\n");
+    reset(r);
+    run_tool(r, llist);
+    assert_contains(r->out, "multi-2\tpart 2 <of> 3\n");
+    reset(r);
+    run_tool(r, only);
+    assert_int_equal(r->status, 0);
+    assert_true(exists(r, "multi-2.svg"));
+    assert_int_equal(count_files(r->dir), 1);
+}
+
+static void
+test_gallery(void **state)
+{
+    result *r = *state;
+    char man[600], html[600], page[65536];
+    const char *render[] = { "render", src("multi.lua"), "--manifest",
+                             "m.txt", NULL };
+    const char *gallery[] = { "gallery", "-o", "index.html", "m.txt",
+                              NULL };
+    run_tool(r, render);
+    assert_int_equal(r->status, 0);
+    snprintf(man, sizeof man, "%s/m.txt", r->dir);
+    slurp(man, page, sizeof page);
+    assert_contains(page, "multi-1\tsvg,pdf,png\tpart 1 <of> 3\n");
+    run_tool(r, gallery); /* in the same directory */
+    assert_int_equal(r->status, 0);
+    snprintf(html, sizeof html, "%s/index.html", r->dir);
+    slurp(html, page, sizeof page);
+    assert_contains(page, "<img src=\"multi-1.svg\"");
+    assert_contains(page, "<a href=\"multi-3.pdf\">PDF</a>");
+    assert_contains(page, "part 2 &lt;of&gt; 3");
+    assert_true(strstr(page, "multi-1") < strstr(page, "multi-2"));
+}
+
+static void
+test_every_figure_method(void **state)
+{
+    result *r = *state;
+    const char *args[] = { "render", src("figure_api.lua"), "-f", "svg",
+                           "--no-labels", NULL };
+    run_tool(r, args);
+    assert_int_equal(r->status, 0);
+    assert_string_equal(r->out, "figure api: ok\n");
+    assert_true(exists(r, "api-all.svg"));
+    assert_true(exists(r, "api-plot.svg"));
+    assert_true(exists(r, "api-3d.svg"));
+    assert_int_equal(count_files(r->dir), 5);
+}
+
+/* ---- the sandbox -------------------------------------------------------- */
+
+static void
+hostile(void **state, const char *script, const char *message)
+{
+    result *r = *state;
+    const char *args[] = { "render", src(script), "--max-memory", "32",
+                           "--max-instructions", "2e7", NULL };
+    run_tool(r, args);
+    assert_int_equal(r->status, 1);
+    assert_contains(r->err, message);
+    /* the script's file and line */
+    assert_contains(r->err, script);
+    assert_int_equal(count_files(r->dir), 0);
+}
+
+static void
+test_hostile_os(void **state)
+{
+    hostile(state, "hostile/os_execute.lua",
+            "os_execute.lua:2: attempt to index a nil value (global 'os')");
+}
+
+static void
+test_hostile_io(void **state)
+{
+    hostile(state, "hostile/io_open.lua",
+            "io_open.lua:2: attempt to index a nil value (global 'io')");
+}
+
+static void
+test_hostile_require(void **state)
+{
+    hostile(state, "hostile/require.lua",
+            "require.lua:2: attempt to call a nil value (global 'require')");
+}
+
+static void
+test_hostile_bytecode(void **state)
+{
+    hostile(state, "hostile/bytecode.lua",
+            "bytecode.lua:3: load: binary (bytecode) chunks are not allowed");
+}
+
+static void
+test_hostile_endless_loop(void **state)
+{
+    hostile(state, "hostile/endless.lua",
+            "endless.lua:4: script exceeded the instruction limit of "
+            "20000000 instructions");
+}
+
+static void
+test_hostile_huge_table(void **state)
+{
+    hostile(state, "hostile/huge_table.lua",
+            "huge_table.lua:5: script exceeded the memory limit of 32 MiB");
+}
+
+static void
+test_hostile_huge_string(void **state)
+{
+    hostile(state, "hostile/huge_string.lua",
+            "huge_string.lua:3: script exceeded the memory limit of 32 MiB");
+}
+
+static void
+test_hostile_metatable(void **state)
+{
+    hostile(state, "hostile/metatable.lua", "metatable is locked");
+}
+
+/* A bytecode file given as the script itself. */
+static void
+test_bytecode_script_refused(void **state)
+{
+    result *r = *state;
+    char path[300];
+    FILE *f;
+    const char *args[] = { "run", path, NULL };
+    snprintf(path, sizeof path, "/tmp/curvefig-bc-%d.lua", (int)getpid());
+    f = fopen(path, "wb");
+    assert_non_null(f);
+    fputs("\033LuaT\0\031\223\r\n", f);
+    fclose(f);
+    run_tool(r, args);
+    remove(path);
+    assert_int_equal(r->status, 1);
+    assert_contains(r->err, "binary (bytecode) chunks are not allowed");
+}
+
+/* ---- errors with file and line ------------------------------------------ */
+
+static void
+test_syntax_error_position(void **state)
+{
+    result *r = *state;
+    const char *args[] = { "run", src("broken_syntax.lua"), NULL };
+    run_tool(r, args);
+    assert_int_equal(r->status, 1);
+    assert_contains(r->err, "broken_syntax.lua:4: unexpected symbol near '='");
+}
+
+static void
+test_runtime_error_position(void **state)
+{
+    result *r = *state;
+    const char *args[] = { "render", src("broken_runtime.lua"), NULL };
+    run_tool(r, args);
+    assert_int_equal(r->status, 1);
+    assert_contains(r->err, "broken_runtime.lua:5: bspline: 10 knots given, "
+                            "degree 2 with 8 points needs 11");
+    assert_contains(r->err, "from ");
+    assert_contains(r->err, "broken_runtime.lua:8");
+    assert_contains(r->err, "broken_runtime.lua:11");
+    assert_int_equal(count_files(r->dir), 0);
+}
+
+/* ---- exit statuses ------------------------------------------------------ */
+
+static void
+expect_status(void **state, int status, const char *message,
+              const char *const *args)
+{
+    result *r = *state;
+    run_tool(r, args);
+    if (r->status != status)
+        fail_msg("status %d, expected %d; stderr:\n%s", r->status, status,
+                 r->err);
+    if (message != NULL)
+        assert_contains(status == 0 ? r->out : r->err, message);
+    reset(r);
+}
+
+static void
+test_exit_statuses(void **state)
+{
+    const char *none[] = { NULL };
+    const char *help[] = { "--help", NULL };
+    const char *lang[] = { "help", "language", NULL };
+    const char *version[] = { "--version", NULL };
+    const char *unknown[] = { "paint", NULL };
+    const char *badopt[] = { "render", src("multi.lua"), "--colour", NULL };
+    const char *badfmt[] = { "render", src("multi.lua"), "-f", "svg,jpg",
+                             NULL };
+    const char *baddpi[] = { "render", src("multi.lua"), "--dpi", "0",
+                             NULL };
+    const char *noval[] = { "render", src("multi.lua"), "-o", NULL };
+    const char *noscript[] = { "run", NULL };
+    const char *twoscripts[] = { "run", src("multi.lua"), src("multi.lua"),
+                                 NULL };
+    const char *missing[] = { "run", "no-such-script.lua", NULL };
+    const char *badonly[] = { "render", src("multi.lua"), "--only", "nope",
+                              NULL };
+    const char *failing[] = { "run", src("broken_syntax.lua"), NULL };
+    const char *unwritable[] = { "render", src("multi.lua"), "-o",
+                                 "/proc/curvefig-cannot-write", NULL };
+    const char *ok[] = { "run", src("core_bezier.lua"), NULL };
+    expect_status(state, 2, "no command given", none);
+    expect_status(state, 0, "usage: curvefig", help);
+    expect_status(state, 0, "f:decasteljau(c, t", lang);
+    expect_status(state, 0, "curvefig ", version);
+    expect_status(state, 2, "unknown command 'paint'", unknown);
+    expect_status(state, 2, "unknown option '--colour'", badopt);
+    expect_status(state, 2, "bad format list 'svg,jpg'", badfmt);
+    expect_status(state, 2, "--dpi '0'", baddpi);
+    expect_status(state, 2, "option '-o' needs a value", noval);
+    expect_status(state, 2, "run: no script given", noscript);
+    expect_status(state, 2, "give exactly one script", twoscripts);
+    expect_status(state, 2, "cannot read the script no-such-script.lua",
+                  missing);
+    expect_status(state, 2, "defines no figure named 'nope'", badonly);
+    expect_status(state, 1, "broken_syntax.lua:4:", failing);
+    expect_status(state, 1, "cannot create the directory", unwritable);
+    expect_status(state, 0, "core_bezier: ok", ok);
+}
+
+/* ---- fixtures ----------------------------------------------------------- */
+
+static int
+setup(void **state)
+{
+    result *r = calloc(1, sizeof *r);
+    if (r == NULL)
+        return -1;
+    *state = r;
+    return 0;
+}
+
+static int
+teardown(void **state)
+{
+    result *r = *state;
+    reset(r);
+    free(r);
+    return 0;
+}
+
+#define T(f) cmocka_unit_test_setup_teardown(f, setup, teardown)
+
+int
+main(int argc, char **argv)
+{
+    const struct CMUnitTest tests[] = {
+        T(test_core_bezier_script),
+        T(test_core_bspline_script),
+        T(test_core_names_match_c_api),
+        T(test_several_figures_each_written),
+        T(test_list_and_only),
+        T(test_gallery),
+        T(test_every_figure_method),
+        T(test_hostile_os),
+        T(test_hostile_io),
+        T(test_hostile_require),
+        T(test_hostile_bytecode),
+        T(test_hostile_endless_loop),
+        T(test_hostile_huge_table),
+        T(test_hostile_huge_string),
+        T(test_hostile_metatable),
+        T(test_bytecode_script_refused),
+        T(test_syntax_error_position),
+        T(test_runtime_error_position),
+        T(test_exit_statuses),
+    };
+    if (argc != 3) {
+        fprintf(stderr, "usage: test_tool TOOL SRCDIR\n");
+        return 2;
+    }
+    /* the child changes directory: make the tool's path absolute */
+    if (realpath(argv[1], tool) == NULL) {
+        fprintf(stderr, "test_tool: %s: %s\n", argv[1], strerror(errno));
+        return 2;
+    }
+    snprintf(srcdir, sizeof srcdir, "%s", argv[2]);
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

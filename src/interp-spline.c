@@ -59,12 +59,34 @@ collocate(size_t dim, int p, const double *knots, size_t nknots, size_t n,
         return st;
     for (size_t r = 0; r < n; r++) {
         size_t span = basis_at(p, knots, nknots, ru[r], ord[r], v);
+        double big = 0.0;
+        /* equilibrate: derivative rows are ~ 1/h^ord times larger than
+        ** point rows, which would hide small pivots among large entries */
+        for (int j = 0; j <= p; j++)
+            big = fmax(big, fabs(v[j]));
+        if (big == 0.0)
+            big = 1.0;
         for (int j = 0; j <= p; j++)
             if (v[j] != 0.0)
-                cf__band_set(&band, r, span - (size_t)p + (size_t)j, v[j]);
+                cf__band_set(&band, r, span - (size_t)p + (size_t)j,
+                             v[j] / big);
+        for (size_t k = 0; k < dim; k++)
+            rhs[r * dim + k] /= big;
     }
-    if (st == CF_STATUS_OK)
-        st = cf__band_factor(&band, diag);
+    if (st == CF_STATUS_OK) {
+        cf_diag_t local;
+        cf_diag_clear(&local);
+        st = cf__band_factor(&band, &local);
+        if (st == CF_STATUS_DEGENERATE)
+            st = cf__error(diag, st, local.index,
+                           "the interpolation system of degree %d is "
+                           "numerically singular at row %ld; the parameters "
+                           "are too unevenly spaced for it (try a lower "
+                           "degree or centripetal parameters)", p,
+                           local.index);
+        else if (st != CF_STATUS_OK)
+            st = cf__error(diag, st, local.index, "%s", local.msg);
+    }
     if (st == CF_STATUS_OK)
         cf__band_solve(&band, rhs, dim);
     cf__band_fini(&band);

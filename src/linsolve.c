@@ -208,7 +208,7 @@ cf__band_factor(cf__band_t *b, cf_diag_t *diag)
                 p = i;
             }
         }
-        if (!(big > (double)n * DBL_EPSILON * scale))
+        if (!(big > DBL_EPSILON * scale))
             return cf__error(diag, CF_STATUS_DEGENERATE, (long)k,
                              "banded system is singular at row %zu "
                              "(largest pivot %g)", k, big);

@@ -1336,6 +1336,58 @@ test_explicit_params(void **state)
     cf_bspline_destroy(c);
 }
 
+static void
+test_smallest_cases(void **state)
+{
+    /* The fewest points of each method give the expected small curves. */
+    const double P[] = { 0, 0, 2, 1, 3, 3, 0, 2 };
+    double q[2];
+    cf_bspline_t *c;
+    (void)state;
+    /* two-point Catmull-Rom: both end tangents are the chord, a line */
+    c = interp(2, P, 2, CF_INTERP_CATMULL_ROM, CF_PARAM_CHORD, 3, NULL, NULL,
+               false);
+    assert_int_equal(cf_bspline_eval(c, 0.25, q), CF_STATUS_OK);
+    tu_assert_close(q[0], 0.5, 1e-15, 1.0);
+    tu_assert_close(q[1], 0.25, 1e-15, 1.0);
+    cf_bspline_destroy(c);
+    /* global with count = p + 1: one Bézier piece, count control points */
+    c = interp(2, P, 4, CF_INTERP_GLOBAL, CF_PARAM_CHORD, 3, NULL, NULL,
+               false);
+    assert_int_equal(cf_bspline_count(c), 4);
+    assert_int_equal(cf_bspline_nknots(c), 8);
+    cf_bspline_destroy(c);
+    /* periodic through a triangle: closed, 3 + 3 control points */
+    c = interp(2, P, 3, CF_INTERP_PERIODIC, CF_PARAM_CENTRIPETAL, 3, NULL,
+               NULL, false);
+    assert_int_equal(cf_bspline_count(c), 6);
+    cf_bspline_destroy(c);
+}
+
+static void
+test_numerically_singular(void **state)
+{
+    /* Four well separated points crowded into parameters 3e-12 apart:
+    ** the collocation matrix has a pivot below DBL_EPSILON after row
+    ** equilibration, and the message says what to do. */
+    const double P[] = { 0, 0, 1, 0, 2, 1, 3, 0, 4, 2, 5, 1, 6, 0, 7, 1 };
+    const double u[] = { 0, 1e-12, 2e-12, 3e-12, 1, 2, 3, 4 };
+    cf_interp_options_t o;
+    cf_bspline_t *c = NULL;
+    cf_diag_t d;
+    (void)state;
+    cf_interp_options_init(&o);
+    o.method = CF_INTERP_GLOBAL;
+    o.params = u;
+    cf_diag_clear(&d);
+    expect_error(cf_interpolate(2, P, 8, &o, &c, &d), CF_STATUS_DEGENERATE,
+                 &d,
+                 "the interpolation system of degree 3 is numerically "
+                 "singular at row 6; the parameters are too unevenly spaced "
+                 "for it (try a lower degree or centripetal parameters)");
+    assert_null(c);
+}
+
 /* ---- out of memory ------------------------------------------------------ */
 
 static void
@@ -1413,6 +1465,8 @@ main(void)
         cmocka_unit_test(test_chapter4_errors),
         cmocka_unit_test(test_interpolate_errors),
         cmocka_unit_test(test_explicit_params),
+        cmocka_unit_test(test_smallest_cases),
+        cmocka_unit_test(test_numerically_singular),
         cmocka_unit_test(test_out_of_memory),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -10,6 +10,7 @@
 #include "curvefig/bezier.h"
 #include "curvefig/bernstein.h"
 #include "curvefig/geometry.h"
+#include "curvefig/conic.h"
 #include "curvefig/offset.h"
 #include "curvefig/knots.h"
 #include "curvefig/bspline.h"

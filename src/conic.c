@@ -1,0 +1,330 @@
+/*
+** Conics as exact quadratic (rational) Bézier curves.
+**
+** A conic arc between P0 and P2 with end tangents meeting at P1 is the
+** rational quadratic (P0, P1, P2; 1, w, 1).  On the unit circle, the piece
+** from angle m - d to m + d has P1 = (cos m, sin m) / cos d and w = cos d;
+** on the unit hyperbola (cosh s, sinh s) the piece from m - d to m + d has
+** P1 = (cosh m, sinh m) / cosh d and w = cosh d.  Ellipses and general
+** hyperbolas are affine images of these (rational curves are affinely
+** invariant with unchanged weights).
+*/
+#include <math.h>
+
+#include "curvefig/conic.h"
+#include "bezier-private.h"
+
+#define MAX_PIECES 100000
+
+/* x -> C + R(rot) diag(sx, sy) x */
+typedef struct affine {
+    double cx, cy, m[4];
+} affine;
+
+static void
+affine_init(affine *A, double cx, double cy, double sx, double sy,
+            double rot)
+{
+    double c = cos(rot), s = sin(rot);
+    A->cx = cx;
+    A->cy = cy;
+    A->m[0] = c * sx;
+    A->m[1] = -s * sy;
+    A->m[2] = s * sx;
+    A->m[3] = c * sy;
+    if (rot == 0.0) {
+        A->m[1] = A->m[2] = 0.0;
+        A->m[0] = sx;
+        A->m[3] = sy;
+    }
+}
+
+static cf_status_t
+check_finite(const double *v, const char *const *names, int n,
+             cf_diag_t *diag)
+{
+    for (int i = 0; i < n; i++)
+        if (!isfinite(v[i]))
+            return cf__error(diag, CF_STATUS_NOT_FINITE, i,
+                             "%s is %g; it must be finite", names[i], v[i]);
+    return CF_STATUS_OK;
+}
+
+static cf_status_t
+check_positive(double v, const char *name, cf_diag_t *diag)
+{
+    if (!(v > 0.0))
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "%s is %g; it must be positive", name, v);
+    return CF_STATUS_OK;
+}
+
+/* Piece k of the list from local points L (P0, P1, P2 as x, y) and the
+** middle weight w (polynomial when w == 1 and !force_rational). */
+static cf_status_t
+set_piece(cf_bezier_list_t *list, size_t k, const affine *A, const double *L,
+          double w, bool rational, double t0, double t1, cf_diag_t *diag)
+{
+    cf_bezier_t *c = cf__bezier_new(2, 2, rational);
+    size_t h = rational ? 3 : 2;
+    if (c == NULL)
+        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+                         "out of memory (conic piece %zu)", k);
+    list->items[k] = c;
+    list->t0[k] = t0;
+    list->t1[k] = t1;
+    for (int i = 0; i < 3; i++) {
+        double x = L[2 * i], y = L[2 * i + 1];
+        double wi = i == 1 ? w : 1.0;
+        double px = A->cx + A->m[0] * x + A->m[1] * y;
+        double py = A->cy + A->m[2] * x + A->m[3] * y;
+        c->pts[(size_t)i * h] = wi * px;
+        c->pts[(size_t)i * h + 1] = wi * py;
+        if (rational)
+            c->pts[(size_t)i * h + 2] = wi;
+    }
+    return cf__check_finite_points(c->pts, 3, h, h, "conic control point",
+                                   diag);
+}
+
+static cf_status_t
+new_list(size_t count, cf_bezier_list_t **out, cf_diag_t *diag)
+{
+    *out = cf__bezier_list_new(count, true);
+    if (*out == NULL)
+        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+                         "out of memory (list of %zu conic pieces)", count);
+    return CF_STATUS_OK;
+}
+
+static cf_status_t
+finish(cf_status_t st, cf_bezier_list_t *list, cf_bezier_list_t **out)
+{
+    if (st != CF_STATUS_OK) {
+        cf_bezier_list_destroy(list);
+        *out = NULL;
+        return st;
+    }
+    *out = list;
+    return CF_STATUS_OK;
+}
+
+/* Pieces of the unit circle from angle a0 to a1, mapped by A. */
+static cf_status_t
+circle_pieces(const affine *A, double a0, double a1, cf_bezier_list_t **out,
+              cf_diag_t *diag)
+{
+    double span = a1 - a0, q;
+    size_t n;
+    cf_bezier_list_t *list;
+    cf_status_t st;
+
+    if (!isfinite(span) || span == 0.0)
+        return cf__error(diag, CF_STATUS_DOMAIN, -1,
+                         "the arc from %g to %g spans no angle", a0, a1);
+    q = fabs(span) / (CF__PI / 2);
+    if (q > MAX_PIECES)
+        return cf__error(diag, CF_STATUS_DOMAIN, -1,
+                         "the arc from %g to %g makes too many turns", a0,
+                         a1);
+    /* pieces of at most 90 degrees (a span a rounding above 90 degrees
+    ** still makes one piece) */
+    n = (size_t)ceil(q * (1.0 - 1e-12));
+    if (n < 1)
+        n = 1;
+    st = new_list(n, &list, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    {
+        double d = span / (2.0 * (double)n), w = cos(d);
+        for (size_t k = 0; k < n && st == CF_STATUS_OK; k++) {
+            double t0 = a0 + span * (double)k / (double)n;
+            double t1 = k + 1 == n ? a1 : a0 + span * (double)(k + 1) /
+                                                   (double)n;
+            double m = t0 + d;
+            double L[6] = { cos(t0), sin(t0), cos(m) / w, sin(m) / w,
+                            cos(t1), sin(t1) };
+            st = set_piece(list, k, A, L, w, true, t0, t1, diag);
+        }
+    }
+    return finish(st, list, out);
+}
+
+cf_status_t
+cf_conic_arc(double cx, double cy, double r, double a0, double a1,
+             cf_bezier_list_t **out, cf_diag_t *diag)
+{
+    static const char *const names[] = { "center x", "center y", "radius",
+                                          "start angle", "end angle" };
+    const double v[] = { cx, cy, r, a0, a1 };
+    affine A;
+    cf_status_t st;
+    if (out == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "the output pointer is NULL");
+    *out = NULL;
+    st = check_finite(v, names, 5, diag);
+    if (st == CF_STATUS_OK)
+        st = check_positive(r, "radius", diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    affine_init(&A, cx, cy, r, r, 0.0);
+    return circle_pieces(&A, a0, a1, out, diag);
+}
+
+cf_status_t
+cf_conic_circle(double cx, double cy, double r, cf_bezier_list_t **out,
+                cf_diag_t *diag)
+{
+    /* quadrant points and corners of the unit square, exact */
+    static const double q[4][6] = {
+        { 1, 0, 1, 1, 0, 1 },
+        { 0, 1, -1, 1, -1, 0 },
+        { -1, 0, -1, -1, 0, -1 },
+        { 0, -1, 1, -1, 1, 0 },
+    };
+    static const char *const names[] = { "center x", "center y", "radius" };
+    const double v[] = { cx, cy, r };
+    cf_bezier_list_t *list;
+    affine A;
+    cf_status_t st;
+    if (out == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "the output pointer is NULL");
+    *out = NULL;
+    st = check_finite(v, names, 3, diag);
+    if (st == CF_STATUS_OK)
+        st = check_positive(r, "radius", diag);
+    if (st == CF_STATUS_OK)
+        st = new_list(4, &list, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    affine_init(&A, cx, cy, r, r, 0.0);
+    for (int k = 0; k < 4 && st == CF_STATUS_OK; k++)
+        st = set_piece(list, (size_t)k, &A, q[k], sqrt(0.5), true,
+                       k * CF__PI / 2, (k + 1) * CF__PI / 2, diag);
+    return finish(st, list, out);
+}
+
+cf_status_t
+cf_conic_ellipse(double cx, double cy, double a, double b, double rotation,
+                 double t0, double t1, cf_bezier_list_t **out,
+                 cf_diag_t *diag)
+{
+    static const char *const names[] = { "center x", "center y",
+                                         "semi-axis a", "semi-axis b",
+                                         "rotation", "start parameter",
+                                         "end parameter" };
+    const double v[] = { cx, cy, a, b, rotation, t0, t1 };
+    affine A;
+    cf_status_t st;
+    if (out == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "the output pointer is NULL");
+    *out = NULL;
+    st = check_finite(v, names, 7, diag);
+    if (st == CF_STATUS_OK)
+        st = check_positive(a, "semi-axis a", diag);
+    if (st == CF_STATUS_OK)
+        st = check_positive(b, "semi-axis b", diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    affine_init(&A, cx, cy, a, b, rotation);
+    return circle_pieces(&A, t0, t1, out, diag);
+}
+
+cf_status_t
+cf_conic_parabola(double vx, double vy, double f, double axis, double u0,
+                  double u1, cf_bezier_list_t **out, cf_diag_t *diag)
+{
+    static const char *const names[] = { "vertex x", "vertex y",
+                                         "focal length", "axis angle",
+                                         "start parameter",
+                                         "end parameter" };
+    const double v[] = { vx, vy, f, axis, u0, u1 };
+    cf_bezier_list_t *list;
+    affine A;
+    cf_status_t st;
+    if (out == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "the output pointer is NULL");
+    *out = NULL;
+    st = check_finite(v, names, 6, diag);
+    if (st == CF_STATUS_OK)
+        st = check_positive(f, "focal length", diag);
+    if (st == CF_STATUS_OK && !(u0 < u1))
+        st = cf__error(diag, CF_STATUS_DOMAIN, -1,
+                       "parameter range [%g, %g] is empty", u0, u1);
+    if (st == CF_STATUS_OK)
+        st = new_list(1, &list, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    /* local frame: x along the vertex tangent (sin axis, -cos axis), y
+    ** along the axis; the parabola y = x^2 / (4 f), whose tangents at u0
+    ** and u1 meet at ((u0 + u1) / 2, u0 u1 / (4 f)).  A = R(axis - pi/2). */
+    affine_init(&A, vx, vy, 1.0, 1.0, 0.0);
+    A.m[0] = sin(axis);
+    A.m[1] = cos(axis);
+    A.m[2] = -cos(axis);
+    A.m[3] = sin(axis);
+    {
+        double L[6] = { u0, u0 * u0 / (4 * f), 0.5 * (u0 + u1),
+                        u0 * u1 / (4 * f), u1, u1 * u1 / (4 * f) };
+        st = set_piece(list, 0, &A, L, 1.0, false, u0, u1, diag);
+    }
+    return finish(st, list, out);
+}
+
+cf_status_t
+cf_conic_hyperbola(double cx, double cy, double a, double b, double rotation,
+                   double s0, double s1, cf_bezier_list_t **out,
+                   cf_diag_t *diag)
+{
+    static const char *const names[] = { "center x", "center y",
+                                         "semi-axis a", "semi-axis b",
+                                         "rotation", "start parameter",
+                                         "end parameter" };
+    const double v[] = { cx, cy, a, b, rotation, s0, s1 };
+    cf_bezier_list_t *list;
+    affine A;
+    size_t n;
+    cf_status_t st;
+    if (out == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "the output pointer is NULL");
+    *out = NULL;
+    st = check_finite(v, names, 7, diag);
+    if (st == CF_STATUS_OK)
+        st = check_positive(a, "semi-axis a", diag);
+    if (st == CF_STATUS_OK)
+        st = check_positive(b, "semi-axis b", diag);
+    if (st == CF_STATUS_OK && !(s0 < s1))
+        st = cf__error(diag, CF_STATUS_DOMAIN, -1,
+                       "parameter range [%g, %g] is empty", s0, s1);
+    if (st == CF_STATUS_OK && (fabs(s0) > 700 || fabs(s1) > 700))
+        st = cf__error(diag, CF_STATUS_DOMAIN, -1,
+                       "parameter range [%g, %g] leaves |s| <= 700 (cosh "
+                       "overflows)", s0, s1);
+    if (st != CF_STATUS_OK)
+        return st;
+    n = (size_t)ceil((s1 - s0) / 2.0 * (1.0 - 1e-12));
+    if (n < 1)
+        n = 1;
+    st = new_list(n, &list, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    affine_init(&A, cx, cy, a, b, rotation);
+    {
+        double span = s1 - s0, d = span / (2.0 * (double)n), w = cosh(d);
+        for (size_t k = 0; k < n && st == CF_STATUS_OK; k++) {
+            double t0 = s0 + span * (double)k / (double)n;
+            double t1 = k + 1 == n ? s1 : s0 + span * (double)(k + 1) /
+                                                   (double)n;
+            double m = t0 + d;
+            double L[6] = { cosh(t0), sinh(t0), cosh(m) / w, sinh(m) / w,
+                            cosh(t1), sinh(t1) };
+            st = set_piece(list, k, &A, L, w, true, t0, t1, diag);
+        }
+    }
+    return finish(st, list, out);
+}

@@ -109,16 +109,45 @@ finish(cf_status_t st, cf_bezier_list_t *list, cf_bezier_list_t **out)
     return CF_STATUS_OK;
 }
 
-/* Pieces of the unit circle from angle a0 to a1, mapped by A. */
+/* n pieces of the unit circle (cos, sin) or of the unit hyperbola
+** (cosh, sinh) for the parameter from p0 to p1, mapped by A. */
+static cf_status_t
+unit_pieces(const affine *A, double p0, double p1, size_t n, bool hyperbolic,
+            cf_bezier_list_t **out, cf_diag_t *diag)
+{
+    double span = p1 - p0, d = span / (2.0 * (double)n);
+    double w = hyperbolic ? cosh(d) : cos(d);
+    cf_bezier_list_t *list;
+    cf_status_t st = new_list(n, &list, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    for (size_t k = 0; k < n && st == CF_STATUS_OK; k++) {
+        double t0 = p0 + span * (double)k / (double)n;
+        double t1 = k + 1 == n ? p1
+                               : p0 + span * (double)(k + 1) / (double)n;
+        double m = t0 + d, L[6];
+        if (hyperbolic) {
+            L[0] = cosh(t0), L[1] = sinh(t0);
+            L[2] = cosh(m) / w, L[3] = sinh(m) / w;
+            L[4] = cosh(t1), L[5] = sinh(t1);
+        } else {
+            L[0] = cos(t0), L[1] = sin(t0);
+            L[2] = cos(m) / w, L[3] = sin(m) / w;
+            L[4] = cos(t1), L[5] = sin(t1);
+        }
+        st = set_piece(list, k, A, L, w, true, t0, t1, diag);
+    }
+    return finish(st, list, out);
+}
+
+/* Pieces of the unit circle from angle a0 to a1 (at most 90 degrees
+** each), mapped by A. */
 static cf_status_t
 circle_pieces(const affine *A, double a0, double a1, cf_bezier_list_t **out,
               cf_diag_t *diag)
 {
     double span = a1 - a0, q;
     size_t n;
-    cf_bezier_list_t *list;
-    cf_status_t st;
-
     if (!isfinite(span) || span == 0.0)
         return cf__error(diag, CF_STATUS_DOMAIN, -1,
                          "the arc from %g to %g spans no angle", a0, a1);
@@ -127,27 +156,21 @@ circle_pieces(const affine *A, double a0, double a1, cf_bezier_list_t **out,
         return cf__error(diag, CF_STATUS_DOMAIN, -1,
                          "the arc from %g to %g makes too many turns", a0,
                          a1);
-    /* pieces of at most 90 degrees (a span a rounding above 90 degrees
-    ** still makes one piece) */
+    /* a span a rounding above 90 degrees still makes one piece */
     n = (size_t)ceil(q * (1.0 - 1e-12));
-    if (n < 1)
-        n = 1;
-    st = new_list(n, &list, diag);
-    if (st != CF_STATUS_OK)
-        return st;
-    {
-        double d = span / (2.0 * (double)n), w = cos(d);
-        for (size_t k = 0; k < n && st == CF_STATUS_OK; k++) {
-            double t0 = a0 + span * (double)k / (double)n;
-            double t1 = k + 1 == n ? a1 : a0 + span * (double)(k + 1) /
-                                                   (double)n;
-            double m = t0 + d;
-            double L[6] = { cos(t0), sin(t0), cos(m) / w, sin(m) / w,
-                            cos(t1), sin(t1) };
-            st = set_piece(list, k, A, L, w, true, t0, t1, diag);
-        }
-    }
-    return finish(st, list, out);
+    return unit_pieces(A, a0, a1, n < 1 ? 1 : n, false, out, diag);
+}
+
+/* The common start: out cleared, every value finite. */
+static cf_status_t
+begin(cf_bezier_list_t **out, const double *v, const char *const *names,
+      int nv, cf_diag_t *diag)
+{
+    if (out == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "the output pointer is NULL");
+    *out = NULL;
+    return check_finite(v, names, nv, diag);
 }
 
 cf_status_t
@@ -159,11 +182,7 @@ cf_conic_arc(double cx, double cy, double r, double a0, double a1,
     const double v[] = { cx, cy, r, a0, a1 };
     affine A;
     cf_status_t st;
-    if (out == NULL)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "the output pointer is NULL");
-    *out = NULL;
-    st = check_finite(v, names, 5, diag);
+    st = begin(out, v, names, 5, diag);
     if (st == CF_STATUS_OK)
         st = check_positive(r, "radius", diag);
     if (st != CF_STATUS_OK)
@@ -188,11 +207,7 @@ cf_conic_circle(double cx, double cy, double r, cf_bezier_list_t **out,
     cf_bezier_list_t *list;
     affine A;
     cf_status_t st;
-    if (out == NULL)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "the output pointer is NULL");
-    *out = NULL;
-    st = check_finite(v, names, 3, diag);
+    st = begin(out, v, names, 3, diag);
     if (st == CF_STATUS_OK)
         st = check_positive(r, "radius", diag);
     if (st == CF_STATUS_OK)
@@ -218,11 +233,7 @@ cf_conic_ellipse(double cx, double cy, double a, double b, double rotation,
     const double v[] = { cx, cy, a, b, rotation, t0, t1 };
     affine A;
     cf_status_t st;
-    if (out == NULL)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "the output pointer is NULL");
-    *out = NULL;
-    st = check_finite(v, names, 7, diag);
+    st = begin(out, v, names, 7, diag);
     if (st == CF_STATUS_OK)
         st = check_positive(a, "semi-axis a", diag);
     if (st == CF_STATUS_OK)
@@ -245,11 +256,7 @@ cf_conic_parabola(double vx, double vy, double f, double axis, double u0,
     cf_bezier_list_t *list;
     affine A;
     cf_status_t st;
-    if (out == NULL)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "the output pointer is NULL");
-    *out = NULL;
-    st = check_finite(v, names, 6, diag);
+    st = begin(out, v, names, 6, diag);
     if (st == CF_STATUS_OK)
         st = check_positive(f, "focal length", diag);
     if (st == CF_STATUS_OK && !(u0 < u1))
@@ -285,15 +292,10 @@ cf_conic_hyperbola(double cx, double cy, double a, double b, double rotation,
                                          "rotation", "start parameter",
                                          "end parameter" };
     const double v[] = { cx, cy, a, b, rotation, s0, s1 };
-    cf_bezier_list_t *list;
     affine A;
     size_t n;
     cf_status_t st;
-    if (out == NULL)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "the output pointer is NULL");
-    *out = NULL;
-    st = check_finite(v, names, 7, diag);
+    st = begin(out, v, names, 7, diag);
     if (st == CF_STATUS_OK)
         st = check_positive(a, "semi-axis a", diag);
     if (st == CF_STATUS_OK)
@@ -308,23 +310,6 @@ cf_conic_hyperbola(double cx, double cy, double a, double b, double rotation,
     if (st != CF_STATUS_OK)
         return st;
     n = (size_t)ceil((s1 - s0) / 2.0 * (1.0 - 1e-12));
-    if (n < 1)
-        n = 1;
-    st = new_list(n, &list, diag);
-    if (st != CF_STATUS_OK)
-        return st;
     affine_init(&A, cx, cy, a, b, rotation);
-    {
-        double span = s1 - s0, d = span / (2.0 * (double)n), w = cosh(d);
-        for (size_t k = 0; k < n && st == CF_STATUS_OK; k++) {
-            double t0 = s0 + span * (double)k / (double)n;
-            double t1 = k + 1 == n ? s1 : s0 + span * (double)(k + 1) /
-                                                   (double)n;
-            double m = t0 + d;
-            double L[6] = { cosh(t0), sinh(t0), cosh(m) / w, sinh(m) / w,
-                            cosh(t1), sinh(t1) };
-            st = set_piece(list, k, &A, L, w, true, t0, t1, diag);
-        }
-    }
-    return finish(st, list, out);
+    return unit_pieces(&A, s0, s1, n < 1 ? 1 : n, true, out, diag);
 }

@@ -1707,22 +1707,23 @@ map_pt(const cf__layout_t *l, double x, double y, double *px, double *py)
 }
 
 /* Append a cubic (data coordinates) to the path, starting a subpath when
-** it does not continue the current point. */
+** it does not continue the previous one; last[2] is the previous end on
+** the page (unrounded: cairo's current point is rounded to 1/256), NAN
+** at the start. */
 static void
-path_cubic(cairo_t *cr, const cf__layout_t *l, const double *c)
+path_cubic(cairo_t *cr, const cf__layout_t *l, const double *c,
+           double *last)
 {
-    double p[8], cx, cy;
+    double p[8];
     size_t k;
     for (k = 0; k < 4; k++)
         map_pt(l, c[2 * k], c[2 * k + 1], &p[2 * k], &p[2 * k + 1]);
-    if (!cairo_has_current_point(cr)) {
+    if (isnan(last[0]) || fabs(last[0] - p[0]) > 1e-6
+        || fabs(last[1] - p[1]) > 1e-6)
         cairo_move_to(cr, p[0], p[1]);
-    } else {
-        cairo_get_current_point(cr, &cx, &cy);
-        if (fabs(cx - p[0]) > 1e-6 || fabs(cy - p[1]) > 1e-6)
-            cairo_move_to(cr, p[0], p[1]);
-    }
     cairo_curve_to(cr, p[2], p[3], p[4], p[5], p[6], p[7]);
+    last[0] = p[6];
+    last[1] = p[7];
 }
 
 static cf_status_t
@@ -1730,13 +1731,13 @@ draw_curve(cf_figure_t *fig, element_t *e, const cf__layout_t *l,
            cairo_t *cr, const cf_style_t *s)
 {
     size_t i, k;
-    double sx = 0, sy = 0;
+    double sx = 0, sy = 0, last[2] = { NAN, NAN };
     bool first = true;
     cairo_new_path(cr);
     for (i = 0; i < e->npieces; i++) {
         piece_t *pc = &e->pieces[i];
         if (pc->bez == NULL) {
-            path_cubic(cr, l, pc->cubic);
+            path_cubic(cr, l, pc->cubic, last);
         } else {
             if (pc->cache == NULL || pc->cache_tol != l->tol) {
                 cf_cubics_t *c = NULL;
@@ -1749,7 +1750,7 @@ draw_curve(cf_figure_t *fig, element_t *e, const cf__layout_t *l,
                 pc->cache_tol = l->tol;
             }
             for (k = 0; k < pc->cache->count; k++)
-                path_cubic(cr, l, pc->cache->pts + 8 * k);
+                path_cubic(cr, l, pc->cache->pts + 8 * k, last);
         }
         if (first && cairo_has_current_point(cr)) {
             /* start of the path, for closing */
@@ -1759,12 +1760,8 @@ draw_curve(cf_figure_t *fig, element_t *e, const cf__layout_t *l,
             first = false;
         }
     }
-    if (!first) {
-        double cx, cy;
-        cairo_get_current_point(cr, &cx, &cy);
-        if (fabs(cx - sx) < 1e-6 && fabs(cy - sy) < 1e-6 && e->npieces > 0)
-            cairo_close_path(cr);
-    }
+    if (!first && fabs(last[0] - sx) < 1e-6 && fabs(last[1] - sy) < 1e-6)
+        cairo_close_path(cr);
     cf__set_line(cr, s);
     cf__set_color(cr, &s->color, s->opacity);
     cairo_stroke(cr);

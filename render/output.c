@@ -158,10 +158,12 @@ make_page(cf_figure_t *fig, const cf_write_options_t *o, cf__layout_t *lay,
     cf_figure_get_size(fig, &pg->w, &pg->h);
     pg->dx = pg->dy = 0;
     if (o->tight && w > 0 && h > 0) {
+        /* the shift goes into the data -> page map, so that the files
+        ** carry plain coordinates (no SVG transform attributes) */
         pg->w = w + 2 * o->padding;
         pg->h = h + 2 * o->padding;
-        pg->dx = o->padding - x;
-        pg->dy = o->padding - y;
+        lay->ox += o->padding - x;
+        lay->oy += o->padding - y;
     }
     return CF_STATUS_OK;
 }

@@ -56,6 +56,23 @@ cf__lua_push_bezier_list(lua_State *L, cf_bezier_list_t *list)
     }
 }
 
+void
+cf__lua_push_cubics(lua_State *L, const cf_cubics_t *cu)
+{
+    lua_createtable(L, (int)cu->count, 0);
+    for (size_t i = 0; i < cu->count; i++) {
+        cf_bezier_t **out = cf__lua_new_bezier(L);
+        cf_diag_t diag;
+        cf_status_t st;
+        cf_diag_clear(&diag);
+        st = cf_bezier_create(cu->dim, 3, cu->pts + 4 * cu->dim * i, NULL,
+                              out, &diag);
+        if (st != CF_STATUS_OK)
+            cf__lua_fail(L, "cubics", st, &diag);
+        lua_rawseti(L, -2, (lua_Integer)i + 1);
+    }
+}
+
 static int
 gc(lua_State *L)
 {
@@ -519,15 +536,7 @@ m_to_cubics(lua_State *L)
     *slot = cu;
     if (st != CF_STATUS_OK)
         return cf__lua_fail(L, "to_cubics", st, &diag);
-    lua_createtable(L, (int)cu->count, 0);
-    for (size_t i = 0; i < cu->count; i++) {
-        cf_bezier_t **out = cf__lua_new_bezier(L);
-        st = cf_bezier_create(cu->dim, 3, cu->pts + 4 * cu->dim * i, NULL,
-                              out, &diag);
-        if (st != CF_STATUS_OK)
-            return cf__lua_fail(L, "to_cubics", st, &diag);
-        lua_rawseti(L, -2, (lua_Integer)i + 1);
-    }
+    cf__lua_push_cubics(L, cu);
     lua_pushnumber(L, cu->max_error);
     return 2;
 }

@@ -81,6 +81,10 @@ void cf__lua_new_class(lua_State *L, const char *name, const luaL_Reg *methods,
 
 /* The openers (each sets its globals in the state). */
 void cf__lua_open_bezier(lua_State *L);
+void cf__lua_open_bernstein(lua_State *L);
+void cf__lua_open_offset(lua_State *L);
+void cf__lua_open_interp(lua_State *L);
+void cf__lua_open_conic(lua_State *L);
 
 /* The budget hook the script module installs; the bindings map a
 ** NO_MEMORY status to the memory-limit message through it. */

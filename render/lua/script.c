@@ -249,6 +249,12 @@ open_sandbox(lua_State *L)
     lua_setglobal(L, "print");
     cf__lua_open_bezier(L);
     cf__lua_open_bspline(L);
+    cf__lua_open_bernstein(L);
+    cf__lua_open_offset(L);
+    cf__lua_open_interp(L);
+#ifdef CF_HAVE_CONIC
+    cf__lua_open_conic(L);
+#endif
     cf__lua_open_figure(L);
     return 0;
 }

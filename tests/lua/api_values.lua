@@ -43,3 +43,17 @@ local ds = s:derivative(1)
 put("bderivative", ds:eval(0.45), ds:degree())
 put("belevate", s:elevate(1):points())
 put("bqueries", nb:weights(), nb:knots(), nb:degree())
+
+-- offsets and interpolation (DESIGN.md core names)
+local off, rep = c:offset(1.5, { tolerance = 1e-3 })
+local offp = {}
+for _, b in ipairs(off) do offp[#offp + 1] = b:points() end
+put("offset", offp, rep.max_error)
+local D = { {0, 0}, {1, 2}, {3, 1}, {4, 4}, {6, 3} }
+local methods = { "natural", "not-a-knot", "periodic", "catmull-rom" }
+for _, m in ipairs(methods) do
+  local it = interpolate{ points = D, method = m }
+  put("interp-" .. m, it:points(), it:knots())
+end
+local ig = interpolate{ points = D, method = "global", degree = 2, param = "centripetal" }
+put("interp-global", ig:points(), ig:knots())

@@ -31,9 +31,11 @@
 
 #include "curvefig/bezier.h"
 #include "curvefig/bspline.h"
+#include "curvefig/interp.h"
+#include "curvefig/offset.h"
 
 static char tool[4096];
-static char srcdir[2048];
+static char srcdir[4096];
 
 typedef struct result {
     int status;          /* exit status, or -1 */
@@ -150,7 +152,7 @@ reset(result *r)
 static const char *
 src(const char *name)
 {
-    static char buf[8][2300];
+    static char buf[8][4200];
     static int k;
     k = (k + 1) % 8;
     snprintf(buf[k], sizeof buf[k], "%s/%s", srcdir, name);
@@ -245,6 +247,60 @@ static const double sample_u[] = { 0, 0, 0, 0.17, 0.33, 0.5,
                                    0.67, 0.83, 1, 1, 1 };
 static const double sample_w[] = { 1, 2, 1, 0.5, 1, 3, 1, 1 };
 
+static const double interp_data[] = { 0, 0, 1, 2, 3, 1, 4, 4, 6, 3 };
+
+/* The points and knots of an interpolating B-spline, flattened. */
+static size_t
+spline_values(const cf_bspline_t *s, double *v)
+{
+    size_t n = cf_bspline_count(s) * cf_bspline_dim(s);
+    cf_bspline_get_points(s, v);
+    memcpy(v + n, cf_bspline_knots(s), cf_bspline_nknots(s) * sizeof *v);
+    return n + cf_bspline_nknots(s);
+}
+
+static void
+expect_offset_and_interp(const result *r, const cf_bezier_t *c)
+{
+    static const struct {
+        const char *key;
+        cf_interp_method_t method;
+    } methods[] = {
+        { "interp-natural", CF_INTERP_NATURAL },
+        { "interp-not-a-knot", CF_INTERP_NOT_A_KNOT },
+        { "interp-periodic", CF_INTERP_PERIODIC },
+        { "interp-catmull-rom", CF_INTERP_CATMULL_ROM },
+        { "interp-global", CF_INTERP_GLOBAL },
+    };
+    cf_offset_options_t oo;
+    cf_offset_report_t rep;
+    cf_cubics_t *raw;
+    double v[1024];
+    cf_offset_options_init(&oo);
+    oo.tolerance = 1e-3;
+    assert_int_equal(cf_bezier_offset(c, 1.5, &oo, &raw, NULL, &rep, NULL),
+                     0);
+    assert_true(raw->count * 8 + 1 < 1024);
+    memcpy(v, raw->pts, raw->count * 8 * sizeof *v);
+    v[raw->count * 8] = rep.max_error;
+    expect_values(r, "offset", v, raw->count * 8 + 1);
+    cf_cubics_destroy(raw);
+    for (size_t m = 0; m < sizeof methods / sizeof methods[0]; m++) {
+        cf_interp_options_t io;
+        cf_bspline_t *s;
+        cf_interp_options_init(&io);
+        io.method = methods[m].method;
+        if (io.method == CF_INTERP_GLOBAL) {
+            io.degree = 2;
+            io.param = CF_PARAM_CENTRIPETAL;
+        }
+        assert_int_equal(cf_interpolate(2, interp_data, 5, &io, &s, NULL),
+                         0);
+        expect_values(r, methods[m].key, v, spline_values(s, v));
+        cf_bspline_destroy(s);
+    }
+}
+
 static void
 test_core_names_match_c_api(void **state)
 {
@@ -326,6 +382,8 @@ test_core_names_match_c_api(void **state)
     memcpy(v + 8, cf_bspline_knots(nb), 11 * sizeof *v);
     v[19] = cf_bspline_degree(nb);
     expect_values(r, "bqueries", v, 20);
+
+    expect_offset_and_interp(r, c);
 
     cf_bspline_destroy(s);
     cf_bspline_destroy(nb);
@@ -651,6 +709,9 @@ main(int argc, char **argv)
         fprintf(stderr, "test_tool: %s: %s\n", argv[1], strerror(errno));
         return 2;
     }
-    snprintf(srcdir, sizeof srcdir, "%s", argv[2]);
+    if (realpath(argv[2], srcdir) == NULL) {
+        fprintf(stderr, "test_tool: %s: %s\n", argv[2], strerror(errno));
+        return 2;
+    }
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,0 +1,306 @@
+/* Label syntax and layout: scripts, stacking, fonts, scripts of the world,
+** syntax errors. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "curvefig/figure.h"
+#include "testutil.h"
+
+#define SIZE 10.0
+
+static cf_label_t *
+layout(const char *text)
+{
+    cf_label_t *lab = NULL;
+    cf_diag_t d;
+    cf_diag_clear(&d);
+    if (cf_label_create(text, NULL, SIZE, &lab, &d) != CF_STATUS_OK)
+        fail_msg("label \"%s\": %s", text, d.msg);
+    return lab;
+}
+
+/* The first box whose run text equals s. */
+static const cf_label_box_t *
+box_of(const cf_label_t *lab, const char *s)
+{
+    size_t i;
+    for (i = 0; i < cf_label_box_count(lab); i++)
+        if (strcmp(cf_label_run_text(lab, i), s) == 0)
+            return cf_label_get_box(lab, i);
+    fail_msg("no run \"%s\"", s);
+    return NULL;
+}
+
+static void
+test_subscript_lower_and_smaller(void **state)
+{
+    cf_label_t *lab = layout("P_0");
+    const cf_label_box_t *p, *z;
+    (void)state;
+    /* Given "P_0", Then P is at the base line, 0 is a smaller run below
+    ** it, starting where P ends. */
+    assert_int_equal(cf_label_box_count(lab), 2);
+    p = box_of(lab, "P");
+    z = box_of(lab, "0");
+    assert_int_equal(p->kind, CF_LABEL_BASE);
+    assert_int_equal(z->kind, CF_LABEL_SUB);
+    assert_true(p->italic);     /* math letters italic */
+    assert_false(z->italic);    /* digits upright */
+    assert_true(z->y < p->y);   /* lower */
+    assert_true(z->size < p->size);
+    /* TeX scriptsize 7 pt for 10 pt text; exact ratio */
+    tu_assert_close(z->size, 0.7 * SIZE, 1e-12, 0);
+    tu_assert_close(z->x, p->x + p->width, 1e-9, 1);
+    /* TeX sub1 = 0.15 em for a subscript alone */
+    tu_assert_close(-z->y, 0.15 * SIZE, 1e-9, 1);
+    cf_label_destroy(lab);
+}
+
+static void
+test_superscript_and_sub_stack(void **state)
+{
+    const char *texts[] = { "B_i^n(t)", "B^n_i(t)", "N_{i}^{p}(u)" };
+    size_t k;
+    (void)state;
+    for (k = 0; k < 3; k++) {
+        cf_label_t *lab = layout(texts[k]);
+        const cf_label_box_t *b = cf_label_get_box(lab, 0), *sub = NULL,
+                             *sup = NULL, *paren = box_of(lab, "(");
+        size_t i;
+        for (i = 0; i < cf_label_box_count(lab); i++) {
+            const cf_label_box_t *x = cf_label_get_box(lab, i);
+            if (x->kind == CF_LABEL_SUB)
+                sub = x;
+            if (x->kind == CF_LABEL_SUP)
+                sup = x;
+        }
+        assert_non_null(sub);
+        assert_non_null(sup);
+        /* stacked: both scripts start at the same x, right after the
+        ** base letter; one above, one below the base line */
+        tu_assert_close(sub->x, sup->x, 0, 1e-9);
+        tu_assert_close(sub->x, b->x + b->width, 1e-9, 1);
+        assert_true(sup->y > 0);
+        assert_true(sub->y < 0);
+        assert_int_equal(sub->level, 1);
+        assert_int_equal(sup->level, 1);
+        /* the sub- and superscript boxes do not overlap vertically */
+        assert_true(sub->y + sub->ascent * 0.75 < sup->y);
+        /* the parenthesis follows the wider script */
+        assert_true(paren->x >= fmax(sub->x + sub->width,
+                                     sup->x + sup->width) - 1e-9);
+        assert_int_equal(paren->kind, CF_LABEL_BASE);
+        cf_label_destroy(lab);
+    }
+}
+
+static void
+test_group_subscript_and_minus(void **state)
+{
+    cf_label_t *lab = layout("P_{k-p+1,1}");
+    size_t i;
+    char joined[64] = "";
+    double y = NAN;
+    (void)state;
+    /* every script run sits on one base line at level 1, and '-' became
+    ** the minus sign U+2212 */
+    for (i = 1; i < cf_label_box_count(lab); i++) {
+        const cf_label_box_t *b = cf_label_get_box(lab, i);
+        assert_int_equal(b->level, 1);
+        assert_int_equal(b->kind, CF_LABEL_SUB);
+        if (isnan(y))
+            y = b->y;
+        assert_true(b->y == y);
+        strcat(joined, cf_label_run_text(lab, i));
+    }
+    assert_string_equal(joined, "k\xe2\x88\x92p+1,1");
+    cf_label_destroy(lab);
+}
+
+static void
+test_nested_scripts_and_greek(void **state)
+{
+    cf_label_t *lab;
+    const cf_label_box_t *a, *b;
+    (void)state;
+    lab = layout("x^{a_b}");
+    a = box_of(lab, "a");
+    b = box_of(lab, "b");
+    assert_int_equal(a->level, 1);
+    assert_int_equal(b->level, 2);
+    tu_assert_close(b->size, 0.5 * SIZE, 1e-12, 0);
+    assert_true(b->y < a->y);
+    assert_true(a->y > 0);
+    cf_label_destroy(lab);
+
+    lab = layout("\\omega_i\\Omega\\alpha");
+    assert_true(box_of(lab, "\xcf\x89")->italic);      /* ω italic */
+    assert_false(box_of(lab, "\xce\xa9")->italic);     /* Ω upright */
+    assert_true(box_of(lab, "\xce\xb1")->italic);      /* α */
+    assert_int_equal(cf_label_unknown_glyphs(lab), 0);
+    cf_label_destroy(lab);
+}
+
+static void
+test_text_and_math_modes(void **state)
+{
+    cf_label_t *lab;
+    double w1, w2, a, d;
+    (void)state;
+    /* with $: text outside upright, math inside italic */
+    lab = layout("křivka $C(u)$");
+    assert_false(box_of(lab, "k\xc5\x99ivka ")->italic);
+    assert_true(box_of(lab, "C")->italic);
+    assert_true(box_of(lab, "u")->italic);
+    cf_label_get_extents(lab, &w1, &a, &d);
+    assert_true(w1 > 0 && a > 0 && d > 0);
+    cf_label_destroy(lab);
+    /* binary operators get TeX's medium space: "a+b" is wider than the
+    ** sum of its glyph advances by 2 * 4/18 em */
+    lab = layout("a+b");
+    cf_label_get_extents(lab, &w2, NULL, NULL);
+    {
+        double sum = 0;
+        size_t i;
+        for (i = 0; i < cf_label_box_count(lab); i++)
+            sum += cf_label_get_box(lab, i)->width;
+        tu_assert_close(w2 - sum, 2 * 4.0 / 18 * SIZE, 1e-9, 1);
+    }
+    cf_label_destroy(lab);
+    /* a leading minus is unary: no space after it */
+    lab = layout("-1");
+    cf_label_get_extents(lab, &w2, NULL, NULL);
+    tu_assert_close(w2, cf_label_get_box(lab, 0)->width
+                        + cf_label_get_box(lab, 1)->width, 1e-9, 1);
+    cf_label_destroy(lab);
+}
+
+static void
+test_world_scripts_have_glyphs(void **state)
+{
+    const char *texts[] = {
+        "\xd0\x9a\xd1\x80\xd0\xb8\xd0\xb2\xd1\x8b\xd0\xb5",   /* Кривые */
+        "\xe6\x9b\xb2\xe7\xba\xbf",                             /* 曲线 */
+        "B\xc3\xa9zierova k\xc5\x99ivka",                       /* Czech */
+        "odmik krivulje \xc4\x8d\xc5\xa1\xc5\xbe",              /* Slovene */
+    };
+    size_t k;
+    cf_label_t *lab;
+    (void)state;
+    for (k = 0; k < 4; k++) {
+        lab = layout(texts[k]);
+        assert_int_equal(cf_label_unknown_glyphs(lab), 0);
+        cf_label_destroy(lab);
+    }
+    /* the check can fail: a noncharacter has no glyph in any font */
+    lab = layout("\xf4\x8f\xbf\xbd");   /* U+10FFFD */
+    assert_true(cf_label_unknown_glyphs(lab) > 0);
+    cf_label_destroy(lab);
+}
+
+static void
+test_syntax_errors(void **state)
+{
+    struct {
+        const char *text;
+        long at;
+    } bad[] = {
+        { "P_", 1 },          { "P^", 1 },      { "P_{0", 2 },
+        { "P}", 1 },          { "\\foo", 0 },   { "x_1_2", 3 },
+        { "a $b", 2 },        { "\xff", 0 },    { "_1", 0 },
+        { "\\hat{}", 0 },     { "\\", 0 },      { "x^^", 1 },
+    };
+    size_t k;
+    (void)state;
+    for (k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        cf_label_t *lab = (cf_label_t *)&k;
+        cf_diag_t d;
+        cf_diag_clear(&d);
+        assert_int_equal(cf_label_create(bad[k].text, NULL, SIZE, &lab, &d),
+                         CF_STATUS_INVALID_ARG);
+        assert_null(lab);
+        assert_int_equal(d.index, bad[k].at);
+        assert_non_null(strstr(d.msg, "byte"));
+    }
+    {
+        cf_label_t *lab;
+        assert_int_equal(cf_label_create(NULL, NULL, SIZE, &lab, NULL),
+                         CF_STATUS_INVALID_ARG);
+        assert_int_equal(cf_label_create("x", NULL, 0, &lab, NULL),
+                         CF_STATUS_INVALID_ARG);
+        assert_int_equal(cf_label_create("x", NULL, NAN, &lab, NULL),
+                         CF_STATUS_INVALID_ARG);
+        assert_int_equal(cf_label_create("x", "", SIZE, &lab, NULL),
+                         CF_STATUS_INVALID_ARG);
+        assert_int_equal(cf_label_create("x", NULL, SIZE, NULL, NULL),
+                         CF_STATUS_INVALID_ARG);
+    }
+    /* queries on NULL are harmless */
+    assert_int_equal(cf_label_box_count(NULL), 0);
+    assert_null(cf_label_get_box(NULL, 0));
+    assert_string_equal(cf_label_run_text(NULL, 0), "");
+    cf_label_destroy(NULL);
+}
+
+static void
+test_tex_points(void **state)
+{
+    (void)state;
+    /* 10 pt TeX = 10 * 72 / 72.27 bp = 9.9626 bp */
+    tu_assert_close(cf_length_to_bp(10, CF_UNIT_TEXPT), 9.962640099626401,
+                    1e-15, 0);
+    tu_assert_close(cf_length_to_bp(25.4, CF_UNIT_MM), 72, 1e-15, 0);
+    tu_assert_close(cf_length_to_bp(1, CF_UNIT_IN), 72, 1e-15, 0);
+    tu_assert_close(cf_length_to_bp(2.54, CF_UNIT_CM), 72, 1e-15, 0);
+    assert_true(isnan(cf_length_to_bp(1, (cf_unit_t)99)));
+}
+
+static void
+test_out_of_memory(void **state)
+{
+    long k;
+    (void)state;
+    /* every allocation of the label code fails in turn: a status, never a
+    ** crash or a leak */
+    for (k = 1; k < 400; k++) {
+        cf_label_t *lab = NULL;
+        cf_status_t st;
+        tu_fail_alloc_after(k);
+        st = cf_label_create("B_i^n(t) = \\omega_{k-1}^2 \\hat{P}", NULL,
+                             SIZE, &lab, NULL);
+        if (st == CF_STATUS_OK) {
+            cf_label_destroy(lab);
+            assert_int_equal(tu_alloc_live(), 0);
+            tu_fail_alloc_reset();
+            return;
+        }
+        assert_int_equal(st, CF_STATUS_NO_MEMORY);
+        assert_null(lab);
+        assert_int_equal(tu_alloc_live(), 0);
+        tu_fail_alloc_reset();
+    }
+    fail_msg("label layout never succeeded");
+}
+
+int
+main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_subscript_lower_and_smaller),
+        cmocka_unit_test(test_superscript_and_sub_stack),
+        cmocka_unit_test(test_group_subscript_and_minus),
+        cmocka_unit_test(test_nested_scripts_and_greek),
+        cmocka_unit_test(test_text_and_math_modes),
+        cmocka_unit_test(test_world_scripts_have_glyphs),
+        cmocka_unit_test(test_syntax_errors),
+        cmocka_unit_test(test_tex_points),
+        cmocka_unit_test(test_out_of_memory),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

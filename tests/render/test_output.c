@@ -1,0 +1,552 @@
+/* Output: five formats, byte-identical renders, page = ink box, SVG
+** metadata read back with librsvg, atomic writes, bad arguments. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <dirent.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cmocka.h>
+#include <cairo.h>
+#include <librsvg/rsvg.h>
+
+#include "curvefig/figure.h"
+#include "testutil.h"
+
+/* A figure with every kind of element and labels in four scripts. */
+static cf_figure_t *
+build_figure(bool transparent)
+{
+    double P[] = { 0, 5, 1, -1, 3, 0, 4, 3, 6, 10 }, tri[30];
+    size_t counts[] = { 5, 4, 3, 2, 1 };
+    cf_figure_t *fig = NULL;
+    cf_bezier_t *c;
+    cf_style_t s;
+    cf_axes_t ax;
+    cf_theme_t th;
+
+    assert_int_equal(cf_figure_create(90, 70, CF_UNIT_MM, &fig, NULL), 0);
+    if (transparent) {
+        cf_figure_get_theme(fig, &th);
+        th.background.a = 0;
+        assert_int_equal(cf_figure_set_theme(fig, &th), 0);
+    }
+    assert_int_equal(cf_bezier_create(2, 4, P, NULL, &c, NULL), 0);
+    assert_int_equal(cf_bezier_decasteljau(c, 0.75, tri), 0);
+    assert_int_equal(cf_figure_add_hull(fig, P, 5, NULL), 0);
+    assert_int_equal(cf_figure_add_net(fig, tri, counts, 5, NULL, NULL), 0);
+    assert_int_equal(cf_figure_add_bezier(fig, c, NULL), 0);
+    cf_style_init(&s);
+    s.set = CF_STYLE_MARKER | CF_STYLE_MARKER_SIZE;
+    s.marker = CF_MARKER_STAR;
+    s.marker_size = 8;
+    assert_int_equal(cf_figure_add_points(fig, tri + 28, 1, &s), 0);
+    assert_int_equal(cf_figure_add_label(fig, 0, 5, "P_0", NULL), 0);
+    assert_int_equal(cf_figure_add_label(fig, 6, 10, "B_i^n(t)", NULL), 0);
+    assert_int_equal(cf_figure_add_label(fig, 3, 0, "\\omega_{k-1}", NULL),
+                     0);
+    assert_int_equal(cf_figure_add_label(fig, 1, -1,
+                                         "k\xc5\x99ivka \xd0\x9a\xd1\x80"
+                                         "\xd0\xb8\xd0\xb2\xd0\xb0\xd1\x8f"
+                                         " \xe6\x9b\xb2\xe7\xba\xbf", NULL),
+                     0);
+    assert_int_equal(cf_figure_add_arrow(fig, 4, 3, 1, 2, NULL), 0);
+    cf_axes_init(&ax);
+    ax.xmin = -1;
+    ax.xmax = 7;
+    ax.ymin = -2;
+    ax.ymax = 11;
+    ax.xlabel = "x";
+    ax.ylabel = "y";
+    assert_int_equal(cf_figure_add_axes(fig, &ax, NULL), 0);
+    assert_int_equal(cf_figure_set_title(fig, "de Casteljau <t = 3/4>"), 0);
+    assert_int_equal(cf_figure_set_caption(fig, "Levels & the point C(t)"),
+                     0);
+    cf_bezier_destroy(c);
+    return fig;
+}
+
+typedef struct blob {
+    unsigned char *data;
+    size_t size;
+} blob_t;
+
+static blob_t
+render(cf_figure_t *fig, cf_format_t f, const cf_write_options_t *o)
+{
+    blob_t b;
+    cf_diag_t d;
+    cf_diag_clear(&d);
+    if (cf_figure_render(fig, f, o, &b.data, &b.size, &d) != CF_STATUS_OK)
+        fail_msg("render %s: %s", cf_format_extension(f), d.msg);
+    return b;
+}
+
+static bool
+blob_has(const blob_t *b, const char *s)
+{
+    size_t n = strlen(s), i;
+    for (i = 0; i + n <= b->size; i++)
+        if (memcmp(b->data + i, s, n) == 0)
+            return true;
+    return false;
+}
+
+/* The text after `key` in a blob, as a C string (up to a newline). */
+static bool
+blob_line(const blob_t *b, const char *key, char *out, size_t cap)
+{
+    size_t n = strlen(key), i, k;
+    for (i = 0; i + n <= b->size; i++) {
+        if (memcmp(b->data + i, key, n) == 0) {
+            for (k = 0; k + 1 < cap && i + n + k < b->size
+                 && b->data[i + n + k] != '\n'; k++)
+                out[k] = (char)b->data[i + n + k];
+            out[k] = '\0';
+            return true;
+        }
+    }
+    return false;
+}
+
+static void
+test_byte_identical(void **state)
+{
+    cf_figure_t *a = build_figure(false), *b = build_figure(false);
+    cf_write_options_t o;
+    int f, tight;
+    (void)state;
+    cf_write_options_init(&o);
+    for (tight = 0; tight < 2; tight++) {
+        o.tight = tight;
+        for (f = 0; f < CF_FORMAT_LAST_; f++) {
+            blob_t x = render(a, (cf_format_t)f, &o);
+            blob_t y = render(a, (cf_format_t)f, &o);
+            blob_t z = render(b, (cf_format_t)f, &o);
+            /* same figure twice, and an identical second figure (cairo's
+            ** per-process surface ids must not leak into the SVG) */
+            assert_int_equal(x.size, y.size);
+            assert_int_equal(x.size, z.size);
+            assert_memory_equal(x.data, y.data, x.size);
+            assert_memory_equal(x.data, z.data, x.size);
+            assert_true(x.size > 100);
+            cf_free(x.data);
+            cf_free(y.data);
+            cf_free(z.data);
+        }
+    }
+    cf_figure_destroy(a);
+    cf_figure_destroy(b);
+}
+
+static void
+test_no_clock_in_files(void **state)
+{
+    cf_figure_t *fig = build_figure(false);
+    blob_t pdf, ps, eps;
+    (void)state;
+    unsetenv("SOURCE_DATE_EPOCH");
+    pdf = render(fig, CF_FORMAT_PDF, NULL);
+    ps = render(fig, CF_FORMAT_PS, NULL);
+    eps = render(fig, CF_FORMAT_EPS, NULL);
+    assert_false(blob_has(&ps, "%%CreationDate"));
+    assert_false(blob_has(&eps, "%%CreationDate"));
+    assert_true(blob_has(&pdf, "/CreationDate (20000101000000Z)"));
+    cf_free(pdf.data);
+    /* SOURCE_DATE_EPOCH = 1700000000 is 2023-11-14 22:13:20 UTC */
+    setenv("SOURCE_DATE_EPOCH", "1700000000", 1);
+    pdf = render(fig, CF_FORMAT_PDF, NULL);
+    assert_true(blob_has(&pdf, "/CreationDate (20231114221320Z)"));
+    unsetenv("SOURCE_DATE_EPOCH");
+    /* title and caption go into the PDF metadata */
+    assert_true(blob_has(&pdf, "/Title"));
+    assert_true(blob_has(&pdf, "/Subject"));
+    cf_free(pdf.data);
+    cf_free(ps.data);
+    cf_free(eps.data);
+    cf_figure_destroy(fig);
+}
+
+static void
+test_svg_parses_with_librsvg(void **state)
+{
+    cf_figure_t *fig = build_figure(false);
+    blob_t svg = render(fig, CF_FORMAT_SVG, NULL);
+    GError *err = NULL;
+    RsvgHandle *h;
+    gboolean hw, hh, hv;
+    RsvgLength w, hgt;
+    RsvgRectangle vb;
+    double W, H;
+    (void)state;
+    h = rsvg_handle_new_from_data(svg.data, svg.size, &err);
+    assert_null(err);
+    assert_non_null(h);
+    rsvg_handle_get_intrinsic_dimensions(h, &hw, &w, &hh, &hgt, &hv, &vb);
+    cf_figure_get_size(fig, &W, &H);
+    /* the size is in pt and equals the page */
+    assert_true(hw && hh);
+    assert_int_equal(w.unit, RSVG_UNIT_PT);
+    assert_true(fabs(w.length - W) <= 1 && fabs(hgt.length - H) <= 1);
+    /* it draws */
+    {
+        cairo_surface_t *img = cairo_image_surface_create(
+            CAIRO_FORMAT_ARGB32, 200, 160);
+        cairo_t *cr = cairo_create(img);
+        RsvgRectangle vp = { 0, 0, 200, 160 };
+        int x, y, ink = 0, stride;
+        const unsigned char *px;
+        assert_true(rsvg_handle_render_document(h, cr, &vp, &err));
+        cairo_destroy(cr);
+        cairo_surface_flush(img);
+        px = cairo_image_surface_get_data(img);
+        stride = cairo_image_surface_get_stride(img);
+        for (y = 0; y < 160; y++)
+            for (x = 0; x < 200; x++) {
+                const unsigned char *p = px + y * stride + 4 * x;
+                if (p[3] > 0 && p[0] < 128)
+                    ink++;
+            }
+        assert_true(ink > 200);
+        cairo_surface_destroy(img);
+    }
+    g_object_unref(h);
+    /* <title> and <desc>, escaped */
+    assert_true(blob_has(&svg, "<title>de Casteljau &lt;t = 3/4&gt;</title>"));
+    assert_true(blob_has(&svg, "<desc>Levels &amp; the point C(t)</desc>"));
+    assert_true(blob_has(&svg, "width=\""));
+    cf_free(svg.data);
+    cf_figure_destroy(fig);
+}
+
+/* Read a PNG blob into an image surface. */
+typedef struct reader {
+    const blob_t *b;
+    size_t off;
+} reader_t;
+
+static cairo_status_t
+read_blob(void *closure, unsigned char *data, unsigned int length)
+{
+    reader_t *r = closure;
+    if (r->off + length > r->b->size)
+        return CAIRO_STATUS_READ_ERROR;
+    memcpy(data, r->b->data + r->off, length);
+    r->off += length;
+    return CAIRO_STATUS_SUCCESS;
+}
+
+/* Pixel box of everything not fully transparent: x0 y0 x1 y1 (pixels,
+** x1/y1 exclusive). */
+static void
+pixel_box(const blob_t *png, int box[4], int *w, int *h)
+{
+    reader_t r = { png, 0 };
+    cairo_surface_t *img = cairo_image_surface_create_from_png_stream(
+        read_blob, &r);
+    const unsigned char *px;
+    int x, y, stride;
+    assert_int_equal(cairo_surface_status(img), CAIRO_STATUS_SUCCESS);
+    *w = cairo_image_surface_get_width(img);
+    *h = cairo_image_surface_get_height(img);
+    px = cairo_image_surface_get_data(img);
+    stride = cairo_image_surface_get_stride(img);
+    box[0] = *w;
+    box[1] = *h;
+    box[2] = box[3] = 0;
+    for (y = 0; y < *h; y++)
+        for (x = 0; x < *w; x++)
+            if (px[y * stride + 4 * x + 3] != 0) {
+                if (x < box[0])
+                    box[0] = x;
+                if (y < box[1])
+                    box[1] = y;
+                if (x + 1 > box[2])
+                    box[2] = x + 1;
+                if (y + 1 > box[3])
+                    box[3] = y + 1;
+            }
+    cairo_surface_destroy(img);
+}
+
+static void
+test_page_is_ink_box(void **state)
+{
+    cf_figure_t *fig = build_figure(true);
+    cf_write_options_t o;
+    double ink[4], pw, ph, W, H;
+    blob_t png, eps, pdf, svg;
+    int box[4], w, h;
+    char line[128];
+    double x0, y0, x1, y1;
+    (void)state;
+    /* Independent measure of the ink: cairo's own rasterization at 4 px
+    ** per pt of the untrimmed page, transparent background. */
+    cf_write_options_init(&o);
+    o.dpi = 288;
+    png = render(fig, CF_FORMAT_PNG, &o);
+    pixel_box(&png, box, &w, &h);
+    assert_int_equal(cf_figure_ink_box(fig, &o, ink, &pw, &ph, NULL), 0);
+    cf_figure_get_size(fig, &W, &H);
+    tu_assert_close(pw, W, 1e-12, 0);
+    tu_assert_close(ph, H, 1e-12, 0);
+    /* the reported ink box agrees with the pixels within 1 pt */
+    assert_true(fabs(ink[0] - box[0] / 4.0) <= 1);
+    assert_true(fabs(ink[1] - box[1] / 4.0) <= 1);
+    assert_true(fabs(ink[2] - box[2] / 4.0) <= 1);
+    assert_true(fabs(ink[3] - box[3] / 4.0) <= 1);
+    /* everything lies on the page */
+    assert_true(ink[0] >= 0 && ink[1] >= 0 && ink[2] <= W && ink[3] <= H);
+    cf_free(png.data);
+
+    /* tight: EPS bounding box, PDF page, SVG viewBox = ink box size */
+    o.tight = true;
+    assert_int_equal(cf_figure_ink_box(fig, &o, NULL, &pw, &ph, NULL), 0);
+    assert_true(fabs(pw - (box[2] - box[0]) / 4.0) <= 1);
+    assert_true(fabs(ph - (box[3] - box[1]) / 4.0) <= 1);
+    eps = render(fig, CF_FORMAT_EPS, &o);
+    assert_true(blob_line(&eps, "%%BoundingBox: ", line, sizeof line));
+    assert_int_equal(sscanf(line, "%lf %lf %lf %lf", &x0, &y0, &x1, &y1), 4);
+    assert_true(fabs((x1 - x0) - pw) <= 1 && fabs((y1 - y0) - ph) <= 1);
+    pdf = render(fig, CF_FORMAT_PDF, &o);
+    assert_true(blob_line(&pdf, "/MediaBox [ ", line, sizeof line));
+    assert_int_equal(sscanf(line, "%lf %lf %lf %lf", &x0, &y0, &x1, &y1), 4);
+    assert_true(fabs((x1 - x0) - pw) <= 1 && fabs((y1 - y0) - ph) <= 1);
+    svg = render(fig, CF_FORMAT_SVG, &o);
+    assert_true(blob_line(&svg, "viewBox=\"", line, sizeof line));
+    assert_int_equal(sscanf(line, "%lf %lf %lf %lf", &x0, &y0, &x1, &y1), 4);
+    assert_true(fabs(x1 - pw) <= 1 && fabs(y1 - ph) <= 1);
+    /* the tight PNG has ink at all four edges */
+    o.dpi = 144;
+    png = render(fig, CF_FORMAT_PNG, &o);
+    pixel_box(&png, box, &w, &h);
+    assert_true(box[0] <= 2 && box[1] <= 2);
+    assert_true(box[2] >= w - 2 && box[3] >= h - 2);
+    cf_free(png.data);
+    cf_free(eps.data);
+    cf_free(pdf.data);
+    cf_free(svg.data);
+    cf_figure_destroy(fig);
+}
+
+static char tmpdir[64];
+
+static int
+make_tmpdir(void **state)
+{
+    (void)state;
+    snprintf(tmpdir, sizeof tmpdir, "/tmp/cf-render-XXXXXX");
+    return mkdtemp(tmpdir) == NULL ? -1 : 0;
+}
+
+/* Number of entries of tmpdir starting with prefix. */
+static int
+count_entries(const char *prefix)
+{
+    DIR *d = opendir(tmpdir);
+    struct dirent *e;
+    int n = 0;
+    while ((e = readdir(d)) != NULL)
+        if (strncmp(e->d_name, prefix, strlen(prefix)) == 0)
+            n++;
+    closedir(d);
+    return n;
+}
+
+static blob_t
+read_file(const char *path)
+{
+    blob_t b = { NULL, 0 };
+    FILE *f = fopen(path, "rb");
+    long n;
+    assert_non_null(f);
+    fseek(f, 0, SEEK_END);
+    n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    b.data = malloc((size_t)n + 1);
+    b.size = fread(b.data, 1, (size_t)n, f);
+    fclose(f);
+    return b;
+}
+
+static void
+test_write_all_and_magic(void **state)
+{
+    cf_figure_t *fig = build_figure(false);
+    char base[128], path[160];
+    const char *magic[] = { "<?xml", "%PDF-", "%!PS-Adobe-3.0\n",
+                            "%!PS-Adobe-3.0 EPSF-3.0", "\x89PNG" };
+    int f;
+    (void)state;
+    snprintf(base, sizeof base, "%s/fig", tmpdir);
+    assert_int_equal(cf_figure_write_all(fig, base, 0x1f, NULL, NULL), 0);
+    for (f = 0; f < CF_FORMAT_LAST_; f++) {
+        blob_t b, m;
+        snprintf(path, sizeof path, "%s.%s", base,
+                 cf_format_extension((cf_format_t)f));
+        b = read_file(path);
+        assert_true(b.size > strlen(magic[f]));
+        assert_memory_equal(b.data, magic[f], strlen(magic[f]));
+        /* the file is what render gives */
+        m = render(fig, (cf_format_t)f, NULL);
+        assert_int_equal(m.size, b.size);
+        assert_memory_equal(m.data, b.data, b.size);
+        cf_free(m.data);
+        free(b.data);
+    }
+    assert_int_equal(count_entries(".cf-tmp-"), 0);
+    cf_figure_destroy(fig);
+}
+
+static void
+test_failed_write_keeps_old_file(void **state)
+{
+    cf_figure_t *good = build_figure(false), *bad = build_figure(false);
+    double nanpt[] = { NAN, 0 };
+    char path[128], sub[128];
+    blob_t before, after;
+    cf_diag_t d;
+    (void)state;
+    snprintf(path, sizeof path, "%s/keep.svg", tmpdir);
+    assert_int_equal(cf_figure_write(good, path, CF_FORMAT_SVG, NULL, NULL),
+                     0);
+    before = read_file(path);
+    /* a figure in error writes nothing */
+    assert_int_equal(cf_figure_add_points(bad, nanpt, 1, NULL),
+                     CF_STATUS_NOT_FINITE);
+    cf_diag_clear(&d);
+    assert_int_equal(cf_figure_write(bad, path, CF_FORMAT_SVG, NULL, &d),
+                     CF_STATUS_NOT_FINITE);
+    assert_true(strlen(d.msg) > 0);
+    after = read_file(path);
+    assert_int_equal(before.size, after.size);
+    assert_memory_equal(before.data, after.data, before.size);
+    free(after.data);
+    /* a render option out of range: nothing written either */
+    {
+        cf_write_options_t o;
+        cf_write_options_init(&o);
+        o.dpi = 0;
+        assert_int_equal(cf_figure_write(good, path, CF_FORMAT_PNG, &o,
+                                         NULL), CF_STATUS_INVALID_ARG);
+        after = read_file(path);
+        assert_memory_equal(before.data, after.data, before.size);
+        free(after.data);
+    }
+    /* rename onto a non-empty directory fails: the directory stays and
+    ** no temporary file is left behind */
+    snprintf(sub, sizeof sub, "%s/dir.svg", tmpdir);
+    assert_int_equal(mkdir(sub, 0755), 0);
+    snprintf(path, sizeof path, "%s/dir.svg/inside", tmpdir);
+    fclose(fopen(path, "w"));
+    cf_diag_clear(&d);
+    assert_int_equal(cf_figure_write(good, sub, CF_FORMAT_SVG, NULL, &d),
+                     CF_STATUS_IO);
+    assert_non_null(strstr(d.msg, "dir.svg"));
+    assert_int_equal(count_entries(".cf-tmp-"), 0);
+    assert_int_equal(access(path, F_OK), 0);
+    free(before.data);
+    cf_figure_destroy(good);
+    cf_figure_destroy(bad);
+}
+
+static void
+test_write_errors(void **state)
+{
+    cf_figure_t *fig = build_figure(false);
+    cf_write_options_t o;
+    char path[160];
+    cf_format_t f;
+    cf_diag_t d;
+    unsigned char *data;
+    size_t size;
+    (void)state;
+    cf_diag_clear(&d);
+    assert_int_equal(cf_figure_write(fig, "/nonexistent-cf-dir/a.svg",
+                                     CF_FORMAT_SVG, NULL, &d),
+                     CF_STATUS_IO);
+    assert_non_null(strstr(d.msg, "nonexistent-cf-dir"));
+    /* the parent is a regular file */
+    snprintf(path, sizeof path, "%s/plain", tmpdir);
+    fclose(fopen(path, "w"));
+    snprintf(path, sizeof path, "%s/plain/a.svg", tmpdir);
+    assert_int_equal(cf_figure_write(fig, path, CF_FORMAT_SVG, NULL, NULL),
+                     CF_STATUS_IO);
+    assert_int_equal(cf_figure_write(fig, "", CF_FORMAT_SVG, NULL, NULL),
+                     CF_STATUS_IO);
+    assert_int_equal(cf_figure_write(fig, NULL, CF_FORMAT_SVG, NULL, NULL),
+                     CF_STATUS_INVALID_ARG);
+    snprintf(path, sizeof path, "%s/a.svg", tmpdir);
+    cf_diag_clear(&d);
+    assert_int_equal(cf_figure_write(fig, path, (cf_format_t)17, NULL, &d),
+                     CF_STATUS_INVALID_ARG);
+    assert_non_null(strstr(d.msg, "format"));
+    assert_int_equal(cf_figure_write(NULL, path, CF_FORMAT_SVG, NULL, NULL),
+                     CF_STATUS_INVALID_ARG);
+    assert_int_equal(cf_format_from_name("jpg", &f, NULL),
+                     CF_STATUS_INVALID_ARG);
+    assert_int_equal(cf_format_from_name("eps", &f, NULL), 0);
+    assert_int_equal(f, CF_FORMAT_EPS);
+    assert_string_equal(cf_format_extension((cf_format_t)-1), "");
+    cf_write_options_init(&o);
+    o.dpi = NAN;
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_PNG, &o, &data, &size,
+                                      NULL), CF_STATUS_INVALID_ARG);
+    o.dpi = 2400;
+    o.padding = -1;
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_PNG, &o, &data, &size,
+                                      NULL), CF_STATUS_INVALID_ARG);
+    o.padding = 0;
+    /* 90 mm at 2400 dpi is 8504 px: allowed; a huge page is refused */
+    {
+        cf_figure_t *big = NULL;
+        assert_int_equal(cf_figure_create(190, 190, CF_UNIT_IN, &big, NULL),
+                         0);
+        assert_int_equal(cf_figure_render(big, CF_FORMAT_PNG, &o, &data,
+                                          &size, NULL),
+                         CF_STATUS_INVALID_ARG);
+        cf_figure_destroy(big);
+    }
+    assert_int_equal(cf_figure_write_all(fig, path, 0, NULL, NULL),
+                     CF_STATUS_INVALID_ARG);
+    assert_int_equal(cf_figure_write_all(fig, path, 1u << 9, NULL, NULL),
+                     CF_STATUS_INVALID_ARG);
+    assert_int_equal(cf_figure_write_all(fig, NULL, 1, NULL, NULL),
+                     CF_STATUS_INVALID_ARG);
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_SVG, NULL, NULL, &size,
+                                      NULL), CF_STATUS_INVALID_ARG);
+    /* none of this put the figure in error */
+    assert_int_equal(cf_figure_status(fig, NULL), CF_STATUS_OK);
+    cf_figure_destroy(fig);
+}
+
+static int
+remove_tmpdir(void **state)
+{
+    char cmd[128];
+    (void)state;
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", tmpdir);
+    return system(cmd) == 0 ? 0 : -1;
+}
+
+int
+main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_byte_identical),
+        cmocka_unit_test(test_no_clock_in_files),
+        cmocka_unit_test(test_svg_parses_with_librsvg),
+        cmocka_unit_test(test_page_is_ink_box),
+        cmocka_unit_test(test_write_all_and_magic),
+        cmocka_unit_test(test_failed_write_keeps_old_file),
+        cmocka_unit_test(test_write_errors),
+    };
+    return cmocka_run_group_tests(tests, make_tmpdir, remove_tmpdir);
+}

@@ -201,6 +201,20 @@ to_page(const map_t *m, double x, double y, double *px, double *py)
     *py = m->py0 - m->sy * (y - m->y0);
 }
 
+/* The map of a rendered figure whose first path starts at data (x0, y0). */
+static map_t
+map_from(cf_figure_t *fig, const paths_t *ps, double x0, double y0)
+{
+    map_t m;
+    assert_int_equal(cf_figure_get_window(fig, NULL, &m.sx, &m.sy),
+                     CF_STATUS_OK);
+    m.px0 = ps->seg[0].p[0];
+    m.py0 = ps->seg[0].p[1];
+    m.x0 = x0;
+    m.y0 = y0;
+    return m;
+}
+
 /* Max distance (page pt) from the drawn path to the exact curve given as a
 ** dense polyline in data coordinates. */
 static double
@@ -227,7 +241,7 @@ path_error(const paths_t *ps, const map_t *m, const double *exact, size_t n)
 static void
 test_cubic_is_one_C(void **state)
 {
-    double P[] = { 0, 0, 1, 2, 3, 2, 4, 0 }, sx, sy;
+    double P[] = { 0, 0, 1, 2, 3, 2, 4, 0 };
     cf_bezier_t *c;
     cf_figure_t *fig = new_fig();
     paths_t *ps = malloc(sizeof *ps);
@@ -244,15 +258,8 @@ test_cubic_is_one_C(void **state)
     assert_string_equal(ps->cmds, "MC");
     /* its control points are the curve's, mapped (the map is affine,
     ** so the segment is the curve itself) */
-    assert_int_equal(cf_figure_get_window(fig, NULL, &sx, &sy),
-                     CF_STATUS_OK);
-    tu_assert_close(sx, sy, 1e-12, 0);   /* aspect ratio kept */
-    m.sx = sx;
-    m.sy = sy;
-    m.px0 = ps->seg[0].p[0];
-    m.py0 = ps->seg[0].p[1];
-    m.x0 = 0;
-    m.y0 = 0;
+    m = map_from(fig, ps, 0, 0);
+    tu_assert_close(m.sx, m.sy, 1e-12, 0);   /* aspect ratio kept */
     for (k = 1; k < 4; k++) {
         double px, py;
         to_page(&m, P[2 * k], P[2 * k + 1], &px, &py);
@@ -272,7 +279,7 @@ check_fitted(const double *P, const double *w, int n, size_t max_segments)
     cf_figure_t *fig = new_fig();
     paths_t *ps = malloc(sizeof *ps);
     size_t N = 20001, i;
-    double *exact = malloc(2 * N * sizeof *exact), sx, sy, err, end[2];
+    double *exact = malloc(2 * N * sizeof *exact), err, end[2];
     map_t m;
     char *svg;
 
@@ -284,14 +291,7 @@ check_fitted(const double *P, const double *w, int n, size_t max_segments)
     assert_true(ps->nseg >= 1 && ps->nseg <= max_segments);
     for (i = 0; i < ps->ncmd; i++)
         assert_true(ps->cmds[i] == 'M' || ps->cmds[i] == 'C');
-    assert_int_equal(cf_figure_get_window(fig, NULL, &sx, &sy),
-                     CF_STATUS_OK);
-    m.sx = sx;
-    m.sy = sy;
-    m.px0 = ps->seg[0].p[0];
-    m.py0 = ps->seg[0].p[1];
-    m.x0 = P[0];
-    m.y0 = P[1];
+    m = map_from(fig, ps, P[0], P[1]);
     for (i = 0; i < N; i++)
         bernstein_eval(P, w, n, (double)i / (N - 1), exact + 2 * i);
     /* the path is within the default tolerance 0.01 pt of the curve
@@ -397,7 +397,7 @@ test_graph_exact(void **state)
 {
     /* B_1^2 on [0, 1] as one piece, and a hat function as two */
     double b12[] = { 0, 1, 0 }, up[] = { 0, 1 }, down[] = { 1, 0 };
-    double br1[] = { 0, 1 }, br2[] = { 0, 1, 2 }, sx, sy;
+    double br1[] = { 0, 1 }, br2[] = { 0, 1, 2 };
     cf_bezier_t *b, *u, *d;
     const cf_bezier_t *one[1], *two[2];
     paths_t *ps = malloc(sizeof *ps);
@@ -416,13 +416,7 @@ test_graph_exact(void **state)
     assert_string_equal(ps->cmds, "MC");
     /* the segment is the degree-elevated polynomial: control values
     ** (0, 2/3, 2/3, 0) at x = 0, 1/3, 2/3, 1 */
-    assert_int_equal(cf_figure_get_window(fig, NULL, &sx, &sy), 0);
-    m.sx = sx;
-    m.sy = sy;
-    m.px0 = ps->seg[0].p[0];
-    m.py0 = ps->seg[0].p[1];
-    m.x0 = 0;
-    m.y0 = 0;
+    m = map_from(fig, ps, 0, 0);
     to_page(&m, 1.0 / 3, 2.0 / 3, &px, &py);
     assert_true(fabs(px - ps->seg[0].p[2]) <= 1.0 / 256
                 && fabs(py - ps->seg[0].p[3]) <= 1.0 / 256);
@@ -563,7 +557,7 @@ test_bspline_pieces(void **state)
     cf_bspline_t *s;
     cf_figure_t *fig = new_fig();
     paths_t *ps = malloc(sizeof *ps);
-    double sx, sy, q[2], px, py;
+    double q[2], px, py;
     map_t m;
     char *svg;
     size_t i;
@@ -575,13 +569,7 @@ test_bspline_pieces(void **state)
     stroked_paths(svg, ps);
     /* quadratic pieces are exact cubics: one C per span */
     assert_string_equal(ps->cmds, "MCCCCCC");
-    assert_int_equal(cf_figure_get_window(fig, NULL, &sx, &sy), 0);
-    m.sx = sx;
-    m.sy = sy;
-    m.px0 = ps->seg[0].p[0];
-    m.py0 = ps->seg[0].p[1];
-    m.x0 = 3;
-    m.y0 = 1;
+    m = map_from(fig, ps, 3, 1);
     /* segment i ends at the knot point C(u_{i+3}) */
     for (i = 0; i < 6; i++) {
         assert_int_equal(cf_bspline_eval(s, U[i + 3], q), 0);
@@ -651,7 +639,7 @@ test_net_colours_and_projection(void **state)
     ** projected control points */
     {
         double Q[] = { 0, 0, 0, 1, 0, 2, 2, 1, 2, 3, 1, 0 };
-        double M[] = { 1, 0, 0.5, 0, 1, 0.3 }, proj[8], sx, sy;
+        double M[] = { 1, 0, 0.5, 0, 1, 0.3 }, proj[8];
         paths_t *ps = malloc(sizeof *ps);
         map_t m;
         fig = new_fig();
@@ -664,13 +652,7 @@ test_net_colours_and_projection(void **state)
         svg = render_svg(fig);
         stroked_paths(svg, ps);
         assert_string_equal(ps->cmds, "MC");
-        assert_int_equal(cf_figure_get_window(fig, NULL, &sx, &sy), 0);
-        m.sx = sx;
-        m.sy = sy;
-        m.px0 = ps->seg[0].p[0];
-        m.py0 = ps->seg[0].p[1];
-        m.x0 = 0;
-        m.y0 = 0;
+        m = map_from(fig, ps, 0, 0);
         for (i = 1; i < 4; i++) {
             double px, py;
             to_page(&m, proj[2 * i], proj[2 * i + 1], &px, &py);

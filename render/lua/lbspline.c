@@ -397,7 +397,8 @@ free_list(void *p)
     cf_bezier_list_destroy(p);
 }
 
-/* s:to_beziers() -> { Bézier pieces }, { {t0, t1}, ... } */
+/* s:to_beziers() -> { Bézier pieces }, one per non-empty span of the
+** domain in order (one value, so that f:curve(s:to_beziers()) works) */
 static int
 m_to_beziers(lua_State *L)
 {
@@ -412,15 +413,7 @@ m_to_beziers(lua_State *L)
     if (st != CF_STATUS_OK)
         return cf__lua_fail(L, "to_beziers", st, &diag);
     cf__lua_push_bezier_list(L, list);
-    lua_createtable(L, (int)list->count, 0);
-    for (size_t i = 0; i < list->count && list->t0 && list->t1; i++) {
-        double r[2];
-        r[0] = list->t0[i];
-        r[1] = list->t1[i];
-        cf__lua_push_numbers(L, r, 2);
-        lua_rawseti(L, -2, (lua_Integer)i + 1);
-    }
-    return 2;
+    return 1;
 }
 
 static int

@@ -1,7 +1,7 @@
 /*
 ** Lua binding of exact conics (include/curvefig/conic.h): each returns a
-** list of quadratic (rational) Bézier curves joined end to end, and the
-** list of the conic parameter ranges {t0, t1} of its pieces.
+** list of quadratic (rational) Bézier curves joined end to end (one value,
+** so that f:curve(conic.circle(0, 0, 1), {...}) works).
 **
 **   conic.arc(cx, cy, r, a0, a1)
 **   conic.circle(cx, cy, r)
@@ -35,15 +35,7 @@ push_result(lua_State *L, const char *fn, cf_status_t st,
     if (st != CF_STATUS_OK)
         return cf__lua_fail(L, fn, st, diag);
     cf__lua_push_bezier_list(L, list);
-    lua_createtable(L, (int)list->count, 0);
-    for (size_t i = 0; i < list->count && list->t0 && list->t1; i++) {
-        double r[2];
-        r[0] = list->t0[i];
-        r[1] = list->t1[i];
-        cf__lua_push_numbers(L, r, 2);
-        lua_rawseti(L, -2, (lua_Integer)i + 1);
-    }
-    return 2;
+    return 1;
 }
 
 static int

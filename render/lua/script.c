@@ -252,9 +252,7 @@ open_sandbox(lua_State *L)
     cf__lua_open_bernstein(L);
     cf__lua_open_offset(L);
     cf__lua_open_interp(L);
-#ifdef CF_HAVE_CONIC
     cf__lua_open_conic(L);
-#endif
     cf__lua_open_figure(L);
     return 0;
 }

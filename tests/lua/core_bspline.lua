@@ -102,11 +102,13 @@ close_pt(lv[3][1], s:eval(0.6), "de Boor point")
 close_pt(lv[2][1], t:points()[5], "de Boor level 1 = inserted points")
 
 -- to_beziers: one piece per span, each reproducing its part of the curve
-local pieces, ranges = s:to_beziers()
-assert(#pieces == 6 and #ranges == 6)
+-- the spans of the domain: [0, 0.17], [0.17, 0.33], ..., [0.83, 1]
+local breaks = { 0, 0.17, 0.33, 0.5, 0.67, 0.83, 1 }
+local pieces = s:to_beziers()
+assert(#pieces == 6)
 for i, b in ipairs(pieces) do
   assert(b:degree() == 2)
-  local a0, a1 = ranges[i][1], ranges[i][2]
+  local a0, a1 = breaks[i], breaks[i + 1]
   for _, x in ipairs{ 0, 0.3, 1 } do
     close_pt(b:eval(x), s:eval(a0 + x * (a1 - a0)), "to_beziers piece")
   end

@@ -467,9 +467,11 @@ cf_approximate_lsq(size_t dim, const double *points, size_t count,
                    cf_diag_t *diag)
 {
     cf_interp_options_t o;
-    double *u = NULL, *knots = NULL, *A = NULL, *B = NULL, *x = NULL;
+    cf__lsq_band_t lb = { 0 };
+    double *u = NULL, *knots = NULL, *b = NULL, *x = NULL;
     double *ctrl = NULL, *ev = NULL, N[CF_BSPLINE_MAX_DEGREE + 1];
-    size_t first, rows, unk, nk, n;
+    double v[CF_BSPLINE_MAX_DEGREE + 1];
+    size_t first, unk, nk, n;
     int p;
     cf_status_t st;
     if (out == NULL)
@@ -491,16 +493,14 @@ cf_approximate_lsq(size_t dim, const double *points, size_t count,
     n = ncontrol - 1;
     nk = ncontrol + (size_t)p + 1;
     first = fix_ends ? 1 : 0;
-    rows = count - 2 * first;
     unk = ncontrol - 2 * first;
     u = cf__alloc_array(count, sizeof *u);
     knots = cf__alloc_array(nk, sizeof *knots);
-    A = cf__calloc(rows, (unk > 0 ? unk : 1) * sizeof *A);
-    B = cf__alloc_array(rows > 0 ? rows : 1, dim * sizeof *B);
+    b = cf__alloc_array(dim, sizeof *b);
     x = cf__alloc_array(unk > 0 ? unk : 1, dim * sizeof *x);
     ctrl = cf__alloc_array(ncontrol, dim * sizeof *ctrl);
     ev = cf__alloc_array(count, dim * sizeof *ev);
-    if (u == NULL || knots == NULL || A == NULL || B == NULL || x == NULL ||
+    if (u == NULL || knots == NULL || b == NULL || x == NULL ||
         ctrl == NULL || ev == NULL) {
         st = cf__error(diag, CF_STATUS_NO_MEMORY, -1,
                        "no memory for least squares with %zu points and "
@@ -514,27 +514,34 @@ cf_approximate_lsq(size_t dim, const double *points, size_t count,
     st = cf_knots_validate(p, ncontrol, knots, nk, diag);
     if (st != CF_STATUS_OK)
         goto done;
-    /* row k - first: sum_j N_j(u_k) Q_j = P_k, the fixed ends moved to
-    ** the right-hand side */
-    for (size_t k = first; k < count - first; k++) {
-        size_t r = k - first;
-        size_t span = basis_at(p, knots, nk, u[k], 0, N);
-        double *b = B + r * dim;
-        memcpy(b, points + k * dim, dim * sizeof *b);
-        for (int j = 0; j <= p; j++) {
-            size_t col = span - (size_t)p + (size_t)j;
-            if (fix_ends && (col == 0 || col == n)) {
-                const double *e = col == 0 ? points
-                                           : points + (count - 1) * dim;
-                for (size_t c = 0; c < dim; c++)
-                    b[c] -= N[j] * e[c];
-            } else {
-                A[r * unk + (col - first)] = N[j];
-            }
-        }
-    }
+    /* one row per inner data point: sum_j N_j(u_k) Q_j = P_k, the fixed
+    ** ends moved to the right-hand side; the p + 1 nonzeros of a row are
+    ** consecutive and their spans grow with k, so Givens rotations row by
+    ** row solve it in O(count p^2) time and O(ncontrol p) memory */
     if (unk > 0) {
-        st = cf__lsq_qr(rows, unk, A, B, dim, x, diag);
+        st = cf__lsq_band_init(&lb, unk, (size_t)p + 1, dim, diag);
+        if (st != CF_STATUS_OK)
+            goto done;
+        for (size_t k = first; k < count - first; k++) {
+            size_t span = basis_at(p, knots, nk, u[k], 0, N);
+            size_t ws = span - (size_t)p;
+            size_t start = ws >= first ? ws - first : 0;
+            memcpy(b, points + k * dim, dim * sizeof *b);
+            memset(v, 0, ((size_t)p + 1) * sizeof *v);
+            for (int j = 0; j <= p; j++) {
+                size_t col = ws + (size_t)j;
+                if (fix_ends && (col == 0 || col == n)) {
+                    const double *e = col == 0 ? points
+                                               : points + (count - 1) * dim;
+                    for (size_t c = 0; c < dim; c++)
+                        b[c] -= N[j] * e[c];
+                } else {
+                    v[col - first - start] = N[j];
+                }
+            }
+            cf__lsq_band_add(&lb, start, v, b);
+        }
+        st = cf__lsq_band_solve(&lb, x, diag);
         if (st != CF_STATUS_OK)
             goto done;
     }
@@ -562,10 +569,10 @@ cf_approximate_lsq(size_t dim, const double *points, size_t count,
         *residual = sqrt(s);
     }
 done:
+    cf__lsq_band_fini(&lb);
     cf__free(u);
     cf__free(knots);
-    cf__free(A);
-    cf__free(B);
+    cf__free(b);
     cf__free(x);
     cf__free(ctrl);
     cf__free(ev);

@@ -78,4 +78,33 @@ void cf__band_solve(const cf__band_t *b, double *rhs, size_t nrhs);
 cf_status_t cf__lsq_qr(size_t m, size_t n, double *A, double *B,
                        size_t nrhs, double *x, cf_diag_t *diag);
 
+/*
+** Banded least squares by Givens rotations, one row at a time (for
+** B-spline fitting: every row has at most w consecutive nonzeros).  The
+** triangular factor R (upper bandwidth w - 1) and Q^T b are accumulated
+** in O(n w) memory; each row costs O(w (w + nrhs)).  Rows must be added
+** with non-decreasing first columns (asserted), so R never gets entries
+** beyond the band.
+*/
+typedef struct cf__lsq_band {
+    size_t n, w, nrhs;
+    double *R;      /* n * w: R[i * w + d] is entry (i, i + d) */
+    double *qb;     /* n * nrhs: the top n rows of Q^T b */
+    double *row;    /* w + nrhs scratch */
+    size_t last_first;
+    double scale;   /* largest |entry| added, for the rank test */
+} cf__lsq_band_t;
+
+cf_status_t cf__lsq_band_init(cf__lsq_band_t *b, size_t n, size_t w,
+                              size_t nrhs, cf_diag_t *diag);
+void cf__lsq_band_fini(cf__lsq_band_t *b);
+/* Add the row with values v[0..w-1] in columns first .. first + w - 1
+** (columns >= n must hold 0) and right-hand side rhs[nrhs]. */
+void cf__lsq_band_add(cf__lsq_band_t *b, size_t first, const double *v,
+                      const double *rhs);
+/* x[n * nrhs] by back substitution; DEGENERATE when a diagonal entry of R
+** is negligible (the columns are dependent, naming the column). */
+cf_status_t cf__lsq_band_solve(const cf__lsq_band_t *b, double *x,
+                               cf_diag_t *diag);
+
 #endif

@@ -346,3 +346,113 @@ cf__lsq_qr(size_t m, size_t n, double *A, double *B, size_t nrhs, double *x,
     cf__free(v);
     return CF_STATUS_OK;
 }
+
+/* ---- banded least squares by Givens rotations --------------------------- */
+
+cf_status_t
+cf__lsq_band_init(cf__lsq_band_t *b, size_t n, size_t w, size_t nrhs,
+                  cf_diag_t *diag)
+{
+    memset(b, 0, sizeof *b);
+    if (n == 0 || w == 0 || nrhs == 0)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "banded least squares with %zu unknowns, band %zu "
+                         "and %zu right-hand sides", n, w, nrhs);
+    b->n = n;
+    b->w = w;
+    b->nrhs = nrhs;
+    b->R = cf__calloc(n, w * sizeof *b->R);
+    b->qb = cf__calloc(n, nrhs * sizeof *b->qb);
+    b->row = cf__alloc_array(w + nrhs, sizeof *b->row);
+    if (b->R == NULL || b->qb == NULL || b->row == NULL) {
+        cf__lsq_band_fini(b);
+        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+                         "no memory for banded least squares with %zu "
+                         "unknowns", n);
+    }
+    return CF_STATUS_OK;
+}
+
+void
+cf__lsq_band_fini(cf__lsq_band_t *b)
+{
+    if (b == NULL)
+        return;
+    cf__free(b->R);
+    cf__free(b->qb);
+    cf__free(b->row);
+    memset(b, 0, sizeof *b);
+}
+
+/*
+** The new row a (columns first .. first + w - 1) is rotated against R's rows
+** k = first, first + 1, ...: with r = hypot(R_kk, a_k), c = R_kk / r,
+** s = a_k / r, row k becomes c R_k + s a and a becomes -s R_k + c a, whose
+** entry k is 0.  An empty row k of R (R_kk = 0 so far) simply takes a.
+** Since earlier rows started no later, R_k has no entries beyond
+** first + w - 1, so a stays inside its window, shifted by one each step.
+*/
+void
+cf__lsq_band_add(cf__lsq_band_t *b, size_t first, const double *v,
+                 const double *rhs)
+{
+    size_t w = b->w, nrhs = b->nrhs;
+    double *a = b->row, *y = b->row + w;
+    assert(first >= b->last_first && first < b->n);
+    b->last_first = first;
+    memcpy(a, v, w * sizeof *a);
+    memcpy(y, rhs, nrhs * sizeof *y);
+    for (size_t j = 0; j < w; j++)
+        b->scale = fmax(b->scale, fabs(a[j]));
+    /* a[j] is the entry in column k + j for the current k */
+    for (size_t k = first; k < b->n && k < first + w; k++) {
+        double *Rk = b->R + k * w, *qk = b->qb + k * nrhs;
+        size_t width = first + w - k; /* live entries of a */
+        double r, c, s;
+        if (a[0] != 0.0) {
+            if (Rk[0] == 0.0) {
+                /* take the row as it is */
+                for (size_t j = 0; j < width; j++)
+                    Rk[j] = a[j];
+                memcpy(qk, y, nrhs * sizeof *y);
+                return;
+            }
+            r = hypot(Rk[0], a[0]);
+            c = Rk[0] / r;
+            s = a[0] / r;
+            for (size_t j = 0; j < width; j++) {
+                double rk = Rk[j], aj = a[j];
+                Rk[j] = c * rk + s * aj;
+                a[j] = -s * rk + c * aj;
+            }
+            for (size_t j = 0; j < nrhs; j++) {
+                double q = qk[j], yj = y[j];
+                qk[j] = c * q + s * yj;
+                y[j] = -s * q + c * yj;
+            }
+        }
+        /* shift the window: a[0] is now 0 */
+        memmove(a, a + 1, (width - 1) * sizeof *a);
+        a[width - 1] = 0.0;
+    }
+}
+
+cf_status_t
+cf__lsq_band_solve(const cf__lsq_band_t *b, double *x, cf_diag_t *diag)
+{
+    size_t n = b->n, w = b->w, nrhs = b->nrhs;
+    for (size_t i = n; i-- > 0;) {
+        const double *Ri = b->R + i * w;
+        if (!(fabs(Ri[0]) > (double)n * DBL_EPSILON * b->scale))
+            return cf__error(diag, CF_STATUS_DEGENERATE, (long)i,
+                             "least-squares matrix is rank deficient: "
+                             "column %zu depends on the others", i);
+        for (size_t c = 0; c < nrhs; c++) {
+            double s = b->qb[i * nrhs + c];
+            for (size_t j = 1; j < w && i + j < n; j++)
+                s -= Ri[j] * x[(i + j) * nrhs + c];
+            x[i * nrhs + c] = s / Ri[0];
+        }
+    }
+    return CF_STATUS_OK;
+}

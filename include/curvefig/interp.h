@@ -154,13 +154,14 @@ const char *cf_interp_method_to_string(cf_interp_method_t method);
 /* ---- least squares ------------------------------------------------------ */
 
 /*
-** Least-squares approximation (The NURBS Book §9.4.1, solved by Householder
-** QR instead of normal equations): the B-spline of degree p with ncontrol
+** Least-squares approximation (The NURBS Book §9.4.1, solved by Givens
+** rotations on the banded matrix instead of normal equations: O(count p^2)
+** time, O(ncontrol p) memory): the B-spline of degree p with ncontrol
 ** control points, clamped knots placed by eq. 9.69 (every knot span holds
 ** data parameters), minimising sum_k |C(u_k) - P_k|^2 over the data
 ** parameters u_k (opt->param, opt->exponent, opt->params as for
-** cf_interpolate; opt->degree 0 means 3; method, tangents and closed must
-** be left at their defaults).  fix_ends: C(u_0) = P_0 and C(u_n) = P_n
+** cf_interpolate, CF_PARAM_DEFAULT = chord; opt->degree 0 means 3;
+** opt->method is ignored; tangents and closed are rejected).  fix_ends: C(u_0) = P_0 and C(u_n) = P_n
 ** exactly, the rest in the least-squares sense (as in the book).
 ** Requirements: p + 1 <= ncontrol <= count (ncontrol == count
 ** interpolates).  *residual (may be NULL) receives

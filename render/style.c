@@ -377,6 +377,7 @@ theme_default(cf_theme_t *t)
     t->role[CF_ROLE_FILL].fill = rgb_color(0x9db8e0, 0.35);
     t->role[CF_ROLE_LABEL] = role_style(0x000000, 0.5, CF_MARKER_NONE, 0,
                                         0x000000);
+    t->role[CF_ROLE_LABEL].offset = 4.0;   /* clear of a 3.6 bp dot */
     t->role[CF_ROLE_ARROW] = role_style(0xb22222, 0.9, CF_MARKER_NONE, 0,
                                         0xb22222);
     t->role[CF_ROLE_ARROW].arrow_size = 6.0;

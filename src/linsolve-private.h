@@ -103,7 +103,8 @@ void cf__lsq_band_fini(cf__lsq_band_t *b);
 void cf__lsq_band_add(cf__lsq_band_t *b, size_t first, const double *v,
                       const double *rhs);
 /* x[n * nrhs] by back substitution; DEGENERATE when a diagonal entry of R
-** is negligible (the columns are dependent, naming the column). */
+** is negligible (the columns are dependent, naming the column; x is then
+** partly written). */
 cf_status_t cf__lsq_band_solve(const cf__lsq_band_t *b, double *x,
                                cf_diag_t *diag);
 

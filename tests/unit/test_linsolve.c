@@ -502,7 +502,7 @@ test_lsq_band_by_hand_and_errors(void **state)
     ** column 0: (a, b) = (1/6, 1/2).  Then a zero column: rank deficient. */
     const double rows[3][2] = { { 1, 0 }, { 1, 1 }, { 1, 2 } };
     const double y[3] = { 0, 1, 1 };
-    double x[2];
+    double x[3];
     cf__lsq_band_t lb;
     cf_diag_t d;
     (void)state;

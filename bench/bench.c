@@ -18,7 +18,9 @@
 
 /* Tables of the module files, in the order of BENCHMARKS.md (add the
 ** declaration and the entry when a module gets its workloads). */
+const bench_workload *bench_bezier_table(void);
 static const bench_table_fn tables[] = {
+    bench_bezier_table,
     NULL,
 };
 

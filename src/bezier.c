@@ -628,6 +628,29 @@ cf__split_h(const double *src, size_t hdim, int n, double t, double *left,
 {
     double s = 1.0 - t;
     size_t np = (size_t)n + 1;
+    if (hdim == 2 && n >= 0 && n <= 15 && left != NULL && right != NULL) {
+        /* the planar case on local arrays (the same operations) */
+        double x[16], y[16];
+        for (int i = 0; i <= n; i++) {
+            x[i] = src[2 * i];
+            y[i] = src[2 * i + 1];
+        }
+        for (int r = 1; r <= n; r++) {
+            left[2 * (r - 1)] = x[0];
+            left[2 * (r - 1) + 1] = y[0];
+            for (int i = 0; i <= n - r; i++) {
+                x[i] = s * x[i] + t * x[i + 1];
+                y[i] = s * y[i] + t * y[i + 1];
+            }
+        }
+        left[2 * n] = x[0];
+        left[2 * n + 1] = y[0];
+        for (int i = 0; i <= n; i++) {
+            right[2 * i] = x[i];
+            right[2 * i + 1] = y[i];
+        }
+        return;
+    }
     if (right != NULL) {
         /* in place in right: after level r, right[0] = P_{r,0} and
         ** right[n-r] = P_{r,n-r} stays fixed from then on */

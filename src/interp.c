@@ -359,8 +359,8 @@ cf_interpolate(size_t dim, const double *points, size_t count,
                const cf_interp_options_t *opt, cf_bspline_t **out,
                cf_diag_t *diag)
 {
-    cf_interp_options_t defaults;
-    const cf_interp_options_t *o = opt;
+    cf_interp_options_t local;
+    const cf_interp_options_t *o = &local;
     bool closed;
     size_t need, nd = 0;
     double *u;
@@ -369,10 +369,12 @@ cf_interpolate(size_t dim, const double *points, size_t count,
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "interpolate: out must not be NULL");
     *out = NULL;
-    if (o == NULL) {
-        cf_interp_options_init(&defaults);
-        o = &defaults;
-    }
+    if (opt != NULL)
+        local = *opt;
+    else
+        cf_interp_options_init(&local);
+    if (local.degree == 0)
+        local.degree = 3;
     if (dim < 1)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "interpolate: dimension must be at least 1, got 0");

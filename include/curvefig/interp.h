@@ -74,8 +74,8 @@ typedef enum cf_interp_method {
 
 typedef struct cf_interp_options {
     cf_interp_method_t method;
-    /* Degree: 0 or 3 for every method but GLOBAL (0 means 3); GLOBAL
-    ** takes 1 .. CF_BSPLINE_MAX_DEGREE. */
+    /* Degree (0 means 3): 3 for every method but GLOBAL, which takes
+    ** 1 .. CF_BSPLINE_MAX_DEGREE. */
     int degree;
     cf_param_t param;
     double exponent;       /* CF_PARAM_POWER only: e in [0, 1] */

@@ -620,6 +620,11 @@ test_polynomials_reproduced(void **state)
         tu_assert_close(q[0], 2 * t * t * t - t + 1, 1e-13, 1.0);
     }
     cf_bspline_destroy(c);
+    /* degree 0 means 3, also for global interpolation */
+    c = interp(1, y, 7, CF_INTERP_GLOBAL, CF_PARAM_UNIFORM, 0, NULL, NULL,
+               false);
+    assert_int_equal(cf_bspline_degree(c), 3);
+    cf_bspline_destroy(c);
     /* four points: a single cubic */
     c = interp(1, y, 4, CF_INTERP_NOT_A_KNOT, CF_PARAM_UNIFORM, 3, NULL,
                NULL, false);
@@ -1247,10 +1252,10 @@ test_interpolate_errors(void **state)
                  CF_STATUS_BAD_DEGREE, &d,
                  "natural cubic spline has degree 3, got degree 5; use "
                  "method global for other degrees");
-    expect_error(try_interp(2, P, 5, CF_INTERP_GLOBAL, 0, NULL, NULL, false,
+    expect_error(try_interp(2, P, 5, CF_INTERP_GLOBAL, -1, NULL, NULL, false,
                             &d),
                  CF_STATUS_BAD_DEGREE, &d,
-                 "global interpolation degree 0 is outside 1..32");
+                 "global interpolation degree -1 is outside 1..32");
     expect_error(try_interp(2, P, 5, CF_INTERP_GLOBAL, 33, NULL, NULL, false,
                             &d),
                  CF_STATUS_BAD_DEGREE, &d,

@@ -81,7 +81,8 @@ typedef struct cf_interp_options {
     double exponent;       /* CF_PARAM_POWER only: e in [0, 1] */
     /* Optional explicit parameters overriding `param`: count finite,
     ** strictly increasing values (count + 1 for PERIODIC and closed
-    ** Catmull-Rom: the last closes the curve).  They are used as given
+    ** Catmull-Rom: the last closes the curve; just count when the points
+    ** already end with a copy of the first, which is then dropped).  They are used as given
     ** (not normalised): the curve's domain is [params[0], params[last]]. */
     const double *params;
     /* End derivatives dC/du (dim doubles each, with respect to the curve's

@@ -1333,6 +1333,24 @@ test_explicit_params(void **state)
     expect_error(cf_interpolate(2, P, 4, &o, &c, &d), CF_STATUS_BAD_KNOTS, &d,
                  "parameter 2 (1) is not larger than parameter 1 (1); "
                  "parameters must increase strictly");
+    /* periodic: the square with its closing point and 5 parameters */
+    {
+        const double S[] = { 1, 0, 0, 1, -1, 0, 0, -1, 1, 0 };
+        const double us[] = { 0, 1, 2, 3, 4 };
+        cf_interp_options_t po;
+        cf_interp_options_init(&po);
+        po.method = CF_INTERP_PERIODIC;
+        po.params = us;
+        assert_int_equal(cf_interpolate(2, S, 5, &po, &c, NULL),
+                         CF_STATUS_OK);
+        cf_bspline_domain(c, &a, &b);
+        assert_true(a == 0.0 && b == 4.0);
+        for (int i = 0; i <= 4; i++) {
+            assert_int_equal(cf_bspline_eval(c, us[i], q), CF_STATUS_OK);
+            assert_true(dist(q, S + 2 * i, 2) <= 1e-15 * 4);
+        }
+        cf_bspline_destroy(c);
+    }
     /* a power parametrisation (e = 0.25) */
     o.params = NULL;
     o.param = CF_PARAM_POWER;

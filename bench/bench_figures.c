@@ -1,0 +1,202 @@
+/*
+** bench-figures: the figure set through the tool, start-up included.
+**
+**   bench-figures TOOL OUTDIR NAME FIGDIR
+**
+** The scripts are the .lua files of FIGDIR (in name order).  NAME is a
+** figure defined by one of them (found with `TOOL list`).
+**
+** 1. "all": every script rendered in all five formats (svg, pdf, png, ps,
+**    eps), one `TOOL render` process per script, one after another; reports
+**    the wall time, the CPU time of the children (user + system) and the
+**    peak resident memory of the largest child.  Best of 3 runs.
+** 2. "one": the figure NAME in svg + pdf + png (`--only NAME`), 21 runs,
+**    the median wall time per run: the number to compare with matplotlib
+**    (about 0.2 s for the same figure).
+** One JSON line per measurement.  Exit status 1 when a render fails.
+*/
+#include <dirent.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/time.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+static double
+now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static double
+tv_s(struct timeval tv)
+{
+    return (double)tv.tv_sec + 1e-6 * (double)tv.tv_usec;
+}
+
+/* Run argv, stdout into buf (may be NULL); the exit status or -1. */
+static int
+run(char *const argv[], char *buf, size_t cap)
+{
+    int fd[2], status;
+    size_t len = 0;
+    pid_t pid;
+    if (pipe(fd) != 0)
+        return -1;
+    pid = fork();
+    if (pid < 0)
+        return -1;
+    if (pid == 0) {
+        dup2(fd[1], STDOUT_FILENO);
+        close(fd[0]);
+        close(fd[1]);
+        execv(argv[0], argv);
+        _exit(127);
+    }
+    close(fd[1]);
+    for (;;) {
+        char sink[4096];
+        ssize_t n = buf != NULL && len + 1 < cap
+                        ? read(fd[0], buf + len, cap - 1 - len)
+                        : read(fd[0], sink, sizeof sink);
+        if (n <= 0)
+            break;
+        if (buf != NULL && len + 1 < cap)
+            len += (size_t)n;
+    }
+    if (buf != NULL)
+        buf[len] = '\0';
+    close(fd[0]);
+    if (waitpid(pid, &status, 0) < 0)
+        return -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+static int
+cmp_str(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+/* The paths of the .lua files in dir, sorted; *count of them. */
+static char **
+scripts_in(const char *dir, int *count)
+{
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    char **v = NULL;
+    int n = 0;
+    if (d == NULL)
+        return NULL;
+    while ((e = readdir(d)) != NULL) {
+        size_t len = strlen(e->d_name);
+        char **nv;
+        if (len < 5 || strcmp(e->d_name + len - 4, ".lua") != 0)
+            continue;
+        nv = realloc(v, (size_t)(n + 1) * sizeof *v);
+        if (nv == NULL)
+            break;
+        v = nv;
+        v[n] = malloc(strlen(dir) + len + 2);
+        if (v[n] == NULL)
+            break;
+        sprintf(v[n], "%s/%s", dir, e->d_name);
+        n++;
+    }
+    closedir(d);
+    if (n > 0)
+        qsort(v, (size_t)n, sizeof *v, cmp_str);
+    *count = n;
+    return v;
+}
+
+static int
+cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+int
+main(int argc, char **argv)
+{
+    char *tool, *outdir, *name, **scripts, *one = NULL;
+    double best_wall = 1e300, best_cpu = 1e300, runs[21];
+    long peak_kb = 0;
+    int nscripts;
+    if (argc != 5) {
+        fprintf(stderr, "usage: bench-figures TOOL OUTDIR NAME FIGDIR\n");
+        return 2;
+    }
+    tool = argv[1];
+    outdir = argv[2];
+    name = argv[3];
+    scripts = scripts_in(argv[4], &nscripts);
+    if (scripts == NULL || nscripts == 0) {
+        fprintf(stderr, "bench-figures: no scripts in %s\n", argv[4]);
+        return 1;
+    }
+    for (int r = 0; r < 3; r++) {
+        struct rusage before, after;
+        double t0, wall, cpu;
+        getrusage(RUSAGE_CHILDREN, &before);
+        t0 = now_s();
+        for (int i = 0; i < nscripts; i++) {
+            char *a[] = { tool, "render", scripts[i], "-o", outdir, "-f",
+                          "all", NULL };
+            if (run(a, NULL, 0) != 0) {
+                fprintf(stderr, "bench-figures: %s failed\n", scripts[i]);
+                return 1;
+            }
+        }
+        wall = now_s() - t0;
+        getrusage(RUSAGE_CHILDREN, &after);
+        cpu = tv_s(after.ru_utime) - tv_s(before.ru_utime) +
+              tv_s(after.ru_stime) - tv_s(before.ru_stime);
+        if (wall < best_wall)
+            best_wall = wall;
+        if (cpu < best_cpu)
+            best_cpu = cpu;
+        if (after.ru_maxrss > peak_kb)
+            peak_kb = after.ru_maxrss;
+    }
+    for (int i = 0; i < nscripts && one == NULL; i++) {
+        char *a[] = { tool, "list", scripts[i], NULL };
+        char out[65536], *p;
+        size_t n = strlen(name);
+        if (run(a, out, sizeof out) != 0)
+            continue;
+        for (p = out; (p = strstr(p, name)) != NULL; p += n)
+            if ((p == out || p[-1] == '\n') && p[n] == '\n')
+                one = scripts[i];
+    }
+    if (one == NULL) {
+        fprintf(stderr, "bench-figures: no script defines %s\n", name);
+        return 1;
+    }
+    for (int r = 0; r < 21; r++) {
+        char *a[] = { tool, "render", one, "-o", outdir, "-f",
+                      "svg,pdf,png", "--only", name, NULL };
+        double t0 = now_s();
+        if (run(a, NULL, 0) != 0)
+            return 1;
+        runs[r] = now_s() - t0;
+    }
+    qsort(runs, 21, sizeof runs[0], cmp_double);
+    for (int i = 0; i < nscripts; i++)
+        free(scripts[i]);
+    free(scripts);
+    printf("{\"id\": \"figures-all\", \"scripts\": %d, \"formats\": 5, "
+           "\"wall_s\": %.3f, \"cpu_s\": %.3f, \"peak_rss_mib\": %.1f}\n",
+           nscripts, best_wall, best_cpu, (double)peak_kb / 1024.0);
+    printf("{\"id\": \"figures-one\", \"figure\": \"%s\", \"formats\": "
+           "\"svg,pdf,png\", \"median_wall_ms\": %.2f, "
+           "\"vs_matplotlib_0.2s\": %.1f}\n",
+           name, 1e3 * runs[10], 0.2 / runs[10]);
+    return 0;
+}

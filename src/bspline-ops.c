@@ -36,6 +36,15 @@ lerp(double *dst, const double *x, const double *y, double a, size_t hd)
         dst[d] = (1.0 - a) * x[d] + a * y[d];
 }
 
+/* dst = src over hdim doubles (a loop: hdim is small, a libc call per
+** point costs more than the copy). */
+static inline void
+copy_pt(double *dst, const double *src, size_t hd)
+{
+    for (size_t d = 0; d < hd; d++)
+        dst[d] = src[d];
+}
+
 /* Largest index k with U[k] <= u (u >= U[0]). */
 static size_t
 last_le(const double *U, size_t nk, double u)
@@ -162,12 +171,52 @@ cf_bspline_insert_knot(const cf_bspline_t *c, double u, int r,
 
 /* ---- refinement --------------------------------------------------------- */
 
+#if defined(__GNUC__)
+#define CF__INLINE static inline __attribute__((always_inline))
+#else
+#define CF__INLINE static inline
+#endif
+
+/* The heart of A5.4, from the right: the old points above the next new
+** knot move up, then p points are recomputed (inlined with a constant
+** hd for the common dimensions). */
+CF__INLINE void
+refine_loop(const double *U, const double *P, double *V, double *Q,
+            const double *X, size_t nx, size_t p, size_t a, size_t b,
+            size_t hd)
+{
+    size_t i = b + p - 1, kk = b + p + nx - 1;
+    for (size_t jj = nx; jj-- > 0;) {
+        double x = X[jj];
+        while (x <= U[i] && i > a) {
+            copy_pt(Q + (kk - p - 1) * hd, P + (i - p - 1) * hd, hd);
+            V[kk] = U[i];
+            kk--;
+            i--;
+        }
+        copy_pt(Q + (kk - p - 1) * hd, Q + (kk - p) * hd, hd);
+        for (size_t l = 1; l <= p; l++) {
+            size_t ind = kk - p + l;
+            double al = V[kk + l] - x;
+            if (al == 0.0) {
+                copy_pt(Q + (ind - 1) * hd, Q + ind * hd, hd);
+            } else {
+                al /= V[kk + l] - U[i - p + l];
+                lerp(Q + (ind - 1) * hd, Q + ind * hd, Q + (ind - 1) * hd,
+                     al, hd);
+            }
+        }
+        V[kk] = x;
+        kk--;
+    }
+}
+
 cf_status_t
 cf_bspline_refine(const cf_bspline_t *c, const double *X, size_t nx,
                   cf_bspline_t **out, cf_diag_t *diag)
 {
     cf_status_t st = check_in(c, out, diag);
-    size_t p, hd, n, m, a, b, i, kk;
+    size_t p, hd, n, m, a, b;
     const double *U, *P;
     cf_bspline_t *q;
     if (st != CF_STATUS_OK)
@@ -186,18 +235,25 @@ cf_bspline_refine(const cf_bspline_t *c, const double *X, size_t nx,
                              "refine: new knot %zu (%g) is smaller than new "
                              "knot %zu (%g)", j, X[j], j - 1, X[j - 1]);
     }
-    for (size_t j = 0; j < nx;) {
-        size_t e = j;
-        int s;
-        while (e + 1 < nx && X[e + 1] == X[j])
-            e++;
-        s = cf__knots_mult(c->U, c->nknots, X[j]);
-        if ((size_t)s + (e - j + 1) > (size_t)c->p + 1)
-            return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)j,
-                             "refine: knot %g would get multiplicity %zu; "
-                             "degree %d allows at most %d", X[j],
-                             (size_t)s + (e - j + 1), c->p, c->p + 1);
-        j = e + 1;
+    /* final multiplicities: walk the sorted new knots and the knot vector
+    ** together */
+    {
+        size_t at = 0;
+        for (size_t j = 0; j < nx;) {
+            size_t e = j, s = 0;
+            while (e + 1 < nx && X[e + 1] == X[j])
+                e++;
+            while (at < c->nknots && c->U[at] < X[j])
+                at++;
+            while (at + s < c->nknots && c->U[at + s] == X[j])
+                s++;
+            if (s + (e - j + 1) > (size_t)c->p + 1)
+                return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)j,
+                                 "refine: knot %g would get multiplicity "
+                                 "%zu; degree %d allows at most %d", X[j],
+                                 s + (e - j + 1), c->p, c->p + 1);
+            j = e + 1;
+        }
     }
     if (nx > ((size_t)1 << 30))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
@@ -220,34 +276,12 @@ cf_bspline_refine(const cf_bspline_t *c, const double *X, size_t nx,
            (n - b + 2) * hd * sizeof *P);
     memcpy(q->U, U, (a + 1) * sizeof *U);
     memcpy(q->U + b + p + nx, U + b + p, (m - b - p + 1) * sizeof *U);
-    i = b + p - 1;
-    kk = b + p + nx - 1;
-    for (size_t jj = nx; jj-- > 0;) {
-        double x = X[jj];
-        while (x <= U[i] && i > a) {
-            memcpy(q->P + (kk - p - 1) * hd, P + (i - p - 1) * hd,
-                   hd * sizeof *P);
-            q->U[kk] = U[i];
-            kk--;
-            i--;
-        }
-        memcpy(q->P + (kk - p - 1) * hd, q->P + (kk - p) * hd,
-               hd * sizeof *P);
-        for (size_t l = 1; l <= p; l++) {
-            size_t ind = kk - p + l;
-            double al = q->U[kk + l] - x;
-            if (al == 0.0) {
-                memcpy(q->P + (ind - 1) * hd, q->P + ind * hd,
-                       hd * sizeof *P);
-            } else {
-                al /= q->U[kk + l] - U[i - p + l];
-                lerp(q->P + (ind - 1) * hd, q->P + ind * hd,
-                     q->P + (ind - 1) * hd, al, hd);
-            }
-        }
-        q->U[kk] = x;
-        kk--;
-    }
+    if (hd == 2)
+        refine_loop(U, P, q->U, q->P, X, nx, p, a, b, 2);
+    else if (hd == 3)
+        refine_loop(U, P, q->U, q->P, X, nx, p, a, b, 3);
+    else
+        refine_loop(U, P, q->U, q->P, X, nx, p, a, b, hd);
     cf__bspline_finish(q);
     *out = q;
     return CF_STATUS_OK;
@@ -599,8 +633,7 @@ decompose(const cf_bspline_t *c, double *Q, double *breaks)
                     lerp(cur + k * hd, cur + (k - 1) * hd, cur + k * hd,
                          alphas[k - s], hd);
                 if (b < m)
-                    memcpy(cur + seg + save * hd, cur + p * hd,
-                           hd * sizeof *Q);
+                    copy_pt(cur + seg + save * hd, cur + p * hd, hd);
             }
         }
         nb++;
@@ -609,8 +642,7 @@ decompose(const cf_bspline_t *c, double *Q, double *breaks)
         if (b < m) {
             size_t from = mult < p ? p - mult : 0;
             for (size_t ii = from; ii <= p; ii++)
-                memcpy(Q + nb * seg + ii * hd, P + (b - p + ii) * hd,
-                       hd * sizeof *Q);
+                copy_pt(Q + nb * seg + ii * hd, P + (b - p + ii) * hd, hd);
             a = b;
             b++;
         }

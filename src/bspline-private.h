@@ -4,6 +4,7 @@
 #ifndef CURVEFIG_BSPLINE_PRIVATE_H
 #define CURVEFIG_BSPLINE_PRIVATE_H
 
+#include <stdatomic.h>
 #include <stdint.h>
 
 #include "core-private.h"
@@ -18,6 +19,11 @@
 **   grid[g]: a span k with U[k] <= u for every u of the cells g - 1 .. g
 **   (cell g = [a + g h, a + (g + 1) h), h = (b - a) / ngrid); a branch-free
 **   bisection of gsteps steps from there finds the span.
+** The accelerators (rk, grid, ginv, gsteps) are filled lazily by the first
+** batch evaluation (their memory is part of the block, so nothing is
+** allocated then): accel goes 0 -> 1 (one thread builds) -> 2 (ready,
+** published with release order); a thread that finds 1 evaluates without
+** them.  Constructions that never evaluate in batches never pay for them.
 */
 struct cf_bspline {
     size_t dim;        /* Cartesian N */
@@ -36,14 +42,19 @@ struct cf_bspline {
     size_t ngrid;
     double ginv;       /* ngrid / (b - a) */
     int gsteps;
+    atomic_int accel;  /* 0 none, 1 being built, 2 ready */
 };
 
 /* Allocate a curve with room for the given sizes; U and P are to be filled
-** by the caller, then cf__bspline_finish computes the accelerators.
+** by the caller, then cf__bspline_finish computes the domain and spans.
 ** Returns NULL when out of memory (or the sizes overflow). */
 cf_bspline_t *cf__bspline_alloc(size_t dim, bool rational, int p,
                                 size_t count);
 void cf__bspline_finish(cf_bspline_t *c);
+
+/* Make sure the accelerators are there; false when another thread is
+** building them right now (then evaluate without them). */
+bool cf__bspline_accel(const cf_bspline_t *c);
 
 /* Unchecked span search on a curve (the conventions of
 ** cf_knots_find_span). */

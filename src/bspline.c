@@ -64,9 +64,7 @@ void
 cf__bspline_finish(cf_bspline_t *c)
 {
     const double *U = c->U;
-    size_t p = (size_t)c->p, nk = c->nknots, n = c->count - 1, k;
-    size_t G = c->ngrid, maxw = 0;
-    double h;
+    size_t p = (size_t)c->p, n = c->count - 1, k;
     c->a = U[p];
     c->b = U[n + 1];
     k = p;
@@ -77,15 +75,26 @@ cf__bspline_finish(cf_bspline_t *c)
     while (!(U[k] < U[n + 1]))
         k--;
     c->last_span = k;
+    atomic_init(&c->accel, 0);
+}
+
+static void
+build_accel(cf_bspline_t *c)
+{
+    const double *U = c->U;
+    size_t p = (size_t)c->p, nk = c->nknots, k, G = c->ngrid, maxw = 0;
+    double h;
     for (size_t j = 1; j <= p; j++) {
         double *r = c->rk + (j - 1) * nk;
         for (size_t a = 0; a + j < nk; a++) {
-            double d = U[a + j] - U[a];
-            r[a] = d != 0.0 ? 1.0 / d : 0.0;
+            /* knots are sorted: d >= 0, and 1/0 = inf becomes 0 */
+            double d = U[a + j] - U[a], q = 1.0 / d;
+            r[a] = d > 0.0 ? q : 0.0;
         }
     }
-    /* grid[g] = span of a + (g - 1/2) h, and the widest window
-    ** [grid[g], span of a + (g + 3/2) h] fixes the bisection steps */
+    /* grid[g] = span of a + (g - 1/2) h; the window of cell g ends at the
+    ** span of a + (g + 2) h (the computed cell may be off by one where
+    ** rounding meets a boundary); the widest window fixes the steps */
     h = (c->b - c->a) / (double)G;
     c->ginv = (double)G / (c->b - c->a);
     k = c->first_span;
@@ -95,8 +104,6 @@ cf__bspline_finish(cf_bspline_t *c)
             k++;
         c->grid[g] = (uint32_t)k;
     }
-    /* the window of cell g ends at the span of a + (g + 2) h: the
-    ** computed cell may be off by one where rounding meets a boundary */
     k = c->first_span;
     for (size_t g = 0; g < G; g++) {
         double x = c->a + ((double)g + 2.0) * h;
@@ -110,22 +117,45 @@ cf__bspline_finish(cf_bspline_t *c)
         c->gsteps++;
 }
 
+bool
+cf__bspline_accel(const cf_bspline_t *cc)
+{
+    /* the object is logically const: only the lazily filled accelerator
+    ** part of its block is written, once, under the flag */
+    cf_bspline_t *c = (cf_bspline_t *)cc;
+    int expected = 0;
+    int st = atomic_load_explicit(&c->accel, memory_order_acquire);
+    if (st == 2)
+        return true;
+    if (st == 0 && atomic_compare_exchange_strong_explicit(
+                       &c->accel, &expected, 1, memory_order_acq_rel,
+                       memory_order_acquire)) {
+        build_accel(c);
+        atomic_store_explicit(&c->accel, 2, memory_order_release);
+        return true;
+    }
+    return atomic_load_explicit(&c->accel, memory_order_acquire) == 2;
+}
+
 /* Branch-free span search through the grid (the conventions of
 ** cf_knots_find_span for u in the domain). */
 CF__INLINE size_t
 grid_span(const cf_bspline_t *c, double u)
 {
     const double *U = c->U;
-    size_t G = c->ngrid, last = c->last_span;
-    double x = (u - c->a) * c->ginv;
-    size_t g = x > 0.0 ? (size_t)x : 0;
-    size_t k, s;
-    g = g < G ? g : G - 1;
+    size_t last = c->last_span, k, s;
+    long G = (long)c->ngrid;
+    /* a signed conversion (cvttsd2si) and clamps, no branches */
+    long g = (long)((u - c->a) * c->ginv);
+    g = g < 0 ? 0 : g;
+    g = g < G - 1 ? g : G - 1;
     k = c->grid[g];
     for (s = ((size_t)1 << c->gsteps) >> 1; s != 0; s >>= 1) {
-        size_t t = k + s;
+        size_t t = k + s, m;
         t = t < last ? t : last;
-        k = U[t] <= u ? t : k;
+        /* all ones when U[t] <= u: a select without a branch */
+        m = (size_t)0 - (size_t)(U[t] <= u);
+        k = (t & m) | (k & ~m);
     }
     return k;
 }
@@ -702,15 +732,12 @@ combine(const double *P, size_t hdim, size_t dim, bool rational, int p,
 
 /* Span of u: keep k (sorted runs), step to the next span, or search. */
 CF__INLINE size_t
-next_span(const cf_bspline_t *c, size_t k, double u)
+next_span(const cf_bspline_t *c, size_t k, double u, bool ready)
 {
     const double *U = c->U;
-    if (u >= U[k] && u < U[k + 1])
+    if ((u >= U[k]) & (u < U[k + 1]))
         return k;
-    if (k + 2 < c->nknots && u >= U[k + 1] && u < U[k + 2]
-        && k + 1 <= c->last_span)
-        return k + 1;
-    return grid_span(c, u);
+    return ready ? grid_span(c, u) : cf__bspline_span(c, u);
 }
 
 CF__INLINE cf_status_t
@@ -725,9 +752,83 @@ eval_many_impl(const cf_bspline_t *c, const double *u, size_t n, double *out,
         double x = u[i];
         if (CF__UNLIKELY(!(x >= a && x <= b)))
             return isfinite(x) ? CF_STATUS_DOMAIN : CF_STATUS_NOT_FINITE;
-        k = next_span(c, k, x);
+        k = next_span(c, k, x, true);
         basis_rk(U, rk, nk, k, p, x, N);
         combine(P, hdim, dim, rational, p, k, N, out + i * dim);
+    }
+    return CF_STATUS_OK;
+}
+
+/*
+** Polynomial cubic curves in the plane, the common case, written out: the
+** triangular scheme with the reciprocals (the same operations in the same
+** order as basis_rk), then the sum over the four points.
+*/
+CF__INLINE void
+cubic_basis(const double *U, const double *R1, const double *R2,
+            const double *R3, size_t k, double x, double *N)
+{
+    double d1 = x - U[k], d2 = x - U[k - 1], d3 = x - U[k - 2];
+    double e1 = U[k + 1] - x, e2 = U[k + 2] - x, e3 = U[k + 3] - x;
+    double t = R1[k], n0 = e1 * t, n1 = d1 * t, t0, t1, t2, m0, m1, m2;
+    t0 = n0 * R2[k - 1];
+    t1 = n1 * R2[k];
+    m0 = e1 * t0;
+    m1 = d2 * t0 + e2 * t1;
+    m2 = d1 * t1;
+    t0 = m0 * R3[k - 2];
+    t1 = m1 * R3[k - 1];
+    t2 = m2 * R3[k];
+    N[0] = e1 * t0;
+    N[1] = d3 * t0 + e2 * t1;
+    N[2] = d2 * t1 + e3 * t2;
+    N[3] = d1 * t2;
+}
+
+static cf_status_t
+eval_cubic2(const cf_bspline_t *c, const double *u, size_t n, double *out,
+            int deriv)
+{
+    const double *U = c->U, *P = c->P, *R1 = c->rk;
+    const double *R2 = R1 + c->nknots, *R3 = R2 + c->nknots;
+    size_t k = c->first_span;
+    double a = c->a, b = c->b, lo = U[k], hi = U[k + 1];
+    for (size_t i = 0; i < n; i++) {
+        double x = u[i], N[4];
+        const double *q;
+        if (CF__UNLIKELY(!(x >= a && x <= b)))
+            return isfinite(x) ? CF_STATUS_DOMAIN : CF_STATUS_NOT_FINITE;
+        /* one branch, predictable both for sorted parameters (mostly
+        ** inside) and random ones (mostly outside): `&&` would make the
+        ** first comparison a coin toss for random parameters; no "next
+        ** span" shortcut for the same reason */
+        if ((int)(x >= lo) + (int)(x < hi) != 2) {
+            k = grid_span(c, x);
+            lo = U[k];
+            hi = U[k + 1];
+        }
+        q = P + 2 * (k - 3);
+        if (!deriv) {
+            cubic_basis(U, R1, R2, R3, k, x, N);
+            out[2 * i] = N[0] * q[0] + N[1] * q[2] + N[2] * q[4]
+                         + N[3] * q[6];
+            out[2 * i + 1] = N[0] * q[1] + N[1] * q[3] + N[2] * q[5]
+                             + N[3] * q[7];
+        } else {
+            /* C' = 3 sum N_i^2 (P_i - P_{i-1}) / (u_{i+3} - u_i) */
+            double d1 = x - U[k], d2 = x - U[k - 1];
+            double e1 = U[k + 1] - x, e2 = U[k + 2] - x;
+            double t = R1[k], n0 = e1 * t, n1 = d1 * t, t0, t1, f0, f1, f2;
+            t0 = n0 * R2[k - 1];
+            t1 = n1 * R2[k];
+            f0 = 3.0 * (e1 * t0) * R3[k - 2];
+            f1 = 3.0 * (d2 * t0 + e2 * t1) * R3[k - 1];
+            f2 = 3.0 * (d1 * t1) * R3[k];
+            out[2 * i] = f0 * (q[2] - q[0]) + f1 * (q[4] - q[2])
+                         + f2 * (q[6] - q[4]);
+            out[2 * i + 1] = f0 * (q[3] - q[1]) + f1 * (q[5] - q[3])
+                             + f2 * (q[7] - q[5]);
+        }
     }
     return CF_STATUS_OK;
 }
@@ -738,6 +839,8 @@ cf_bspline_eval_many(const cf_bspline_t *c, const double *u, size_t n,
 {
     if (c == NULL || (n > 0 && (u == NULL || out == NULL)))
         return cf__error(NULL, CF_STATUS_INVALID_ARG, -1, "NULL argument");
+    if (!cf__bspline_accel(c))
+        return cf_bspline_eval_deriv_many(c, 0, u, n, out);
     if (!c->rational && c->dim == 2) {
         switch (c->p) {
         case 1:
@@ -745,7 +848,7 @@ cf_bspline_eval_many(const cf_bspline_t *c, const double *u, size_t n,
         case 2:
             return eval_many_impl(c, u, n, out, 2, 2, 2, false);
         case 3:
-            return eval_many_impl(c, u, n, out, 3, 2, 2, false);
+            return eval_cubic2(c, u, n, out, 0);
         default:
             break;
         }
@@ -771,7 +874,7 @@ cf_bspline_eval_derivs(const cf_bspline_t *c, double u, int k, double *out)
     dim = c->dim;
     for (int j = 0; j <= k; j++) {
         const double *q = c->P + (kk - p) * c->hdim;
-        cf__basis_deriv(c->p, c->U, c->nknots, c->rk, kk, u, j, v);
+        cf__basis_deriv(c->p, c->U, c->nknots, NULL, kk, u, j, v);
         for (size_t d = 0; d < dim; d++) {
             double s = 0.0;
             for (size_t i = 0; i <= p; i++)
@@ -807,13 +910,13 @@ cf_bspline_eval_derivs(const cf_bspline_t *c, double u, int k, double *out)
 #define MAX_RATIONAL_DERIV 128
 
 CF__INLINE void
-deriv_poly_point(const cf_bspline_t *c, size_t kk, double u, int k,
-                 double *out)
+deriv_poly_point(const cf_bspline_t *c, const double *rk, size_t kk,
+                 double u, int k, double *out)
 {
     double v[CF_BSPLINE_MAX_DEGREE + 1];
     size_t p = (size_t)c->p, hd = c->hdim;
     const double *q = c->P + (kk - p) * hd;
-    cf__basis_deriv(c->p, c->U, c->nknots, c->rk, kk, u, k, v);
+    cf__basis_deriv(c->p, c->U, c->nknots, rk, kk, u, k, v);
     for (size_t d = 0; d < c->dim; d++) {
         double s = 0.0;
         for (size_t i = 0; i <= p; i++)
@@ -852,7 +955,7 @@ deriv1_many(const cf_bspline_t *c, const double *u, size_t n, double *out,
         double x = u[i];
         if (CF__UNLIKELY(!(x >= c->a && x <= c->b)))
             return isfinite(x) ? CF_STATUS_DOMAIN : CF_STATUS_NOT_FINITE;
-        k = next_span(c, k, x);
+        k = next_span(c, k, x, true);
         deriv1_fast(c, k, x, p, hd, dim, out + i * dim);
     }
     return CF_STATUS_OK;
@@ -863,13 +966,17 @@ cf_bspline_eval_deriv_many(const cf_bspline_t *c, int k, const double *u,
                            size_t n, double *out)
 {
     size_t kk;
+    bool ready;
+    const double *rk;
     if (c == NULL || k < 0 || (n > 0 && (u == NULL || out == NULL)))
         return cf__error(NULL, CF_STATUS_INVALID_ARG, -1, "bad argument");
-    if (k == 0)
+    ready = cf__bspline_accel(c);
+    rk = ready ? c->rk : NULL;
+    if (k == 0 && ready)
         return cf_bspline_eval_many(c, u, n, out);
-    if (!c->rational && k == 1 && c->p >= 1) {
+    if (ready && !c->rational && k == 1 && c->p >= 1) {
         if (c->dim == 2 && c->p == 3)
-            return deriv1_many(c, u, n, out, 3, 2, 2);
+            return eval_cubic2(c, u, n, out, 1);
         return deriv1_many(c, u, n, out, c->p, c->hdim, c->dim);
     }
     if (c->rational && k > MAX_RATIONAL_DERIV)
@@ -881,9 +988,9 @@ cf_bspline_eval_deriv_many(const cf_bspline_t *c, int k, const double *u,
         double x = u[i];
         if (!(x >= c->a && x <= c->b))
             return isfinite(x) ? CF_STATUS_DOMAIN : CF_STATUS_NOT_FINITE;
-        kk = next_span(c, kk, x);
+        kk = next_span(c, kk, x, rk != NULL);
         if (!c->rational) {
-            deriv_poly_point(c, kk, x, k, out + i * c->dim);
+            deriv_poly_point(c, rk, kk, x, k, out + i * c->dim);
         } else {
             /* one coordinate at a time: C_d^(j), j = 0..k, by the
             ** quotient rule (A^(j) = w^(j) = 0 for j > p) */
@@ -894,7 +1001,7 @@ cf_bspline_eval_deriv_many(const cf_bspline_t *c, int k, const double *u,
             const double *q = c->P + (kk - p) * hd;
             int top = k < c->p ? k : c->p;
             for (int j = 0; j <= top; j++)
-                cf__basis_deriv(c->p, c->U, c->nknots, c->rk, kk, x, j,
+                cf__basis_deriv(c->p, c->U, c->nknots, rk, kk, x, j,
                                 vv + (size_t)j * (p + 1));
             for (int j = 0; j <= top; j++) {
                 double s = 0.0;
@@ -994,7 +1101,7 @@ cf_bspline_basis(const cf_bspline_t *c, double u, size_t *first, double *N)
     if (st != CF_STATUS_OK)
         return st;
     k = cf__bspline_span(c, u);
-    cf__basis_deriv(c->p, c->U, c->nknots, c->rk, k, u, 0, N);
+    cf__basis_deriv(c->p, c->U, c->nknots, NULL, k, u, 0, N);
     if (first != NULL)
         *first = k - (size_t)c->p;
     return CF_STATUS_OK;

@@ -1303,6 +1303,22 @@ format_number(double v, double step, char *buf, size_t cap)
     snprintf(buf, cap, "%.*f", dec, v);
 }
 
+/* An explicit tick value: the fewest decimals (up to 3) that give it back
+** to 1e-9, else 3 ("0.333"). */
+static void
+format_value(double v, char *buf, size_t cap)
+{
+    int dec;
+    for (dec = 0; dec < 3; dec++) {
+        double k = pow(10, dec);
+        if (fabs(round(v * k) / k - v) <= 1e-9 * fmax(1, fabs(v)))
+            break;
+    }
+    if (fabs(v) < 1e-12)
+        v = 0;
+    snprintf(buf, cap, "%.*f", dec, v);
+}
+
 /* Fill ticks from explicit positions or a step over [lo, hi]. */
 static cf_status_t
 make_ticks(cf_figure_t *fig, const double *pos, size_t count,
@@ -1351,18 +1367,13 @@ make_ticks(cf_figure_t *fig, const double *pos, size_t count,
             if (labels != NULL && labels[i] != NULL)
                 text = labels[i];
             else
-                format_number(pos[i], fabs(pos[i]) > 0 ? fabs(pos[i])
-                                                       : 1.0,
-                              buf, sizeof buf);
+                format_value(pos[i], buf, sizeof buf);
         } else {
             t[i].v = first + (double)i * step;
             if (fabs(t[i].v) < 1e-9 * step)
                 t[i].v = 0;
             format_number(t[i].v, step, buf, sizeof buf);
         }
-        /* an explicit position prints with %g */
-        if (count > 0 && (labels == NULL || labels[i] == NULL))
-            snprintf(buf, sizeof buf, "%g", pos[i]);
         st = text_set(fig, &t[i].t, text, font);
     }
     *out = t;

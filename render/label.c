@@ -33,6 +33,9 @@ typedef struct run {
     double ink[4];                   /* x0 y0 x1 y1 relative to origin,
                                         y down */
     double baseline;                 /* layout top to baseline */
+    double rule_h;                   /* > 0: a fraction rule of this
+                                        thickness, width `width`, its
+                                        bottom at y (no text) */
 } run_t;
 
 struct cf_label {
@@ -101,7 +104,7 @@ put_text(cf_label_t *lab, const font_t *f, double x, double y,
     run_t *r = lab->count > 0 ? &lab->runs[lab->count - 1] : NULL;
     char *t;
 
-    if (r != NULL && lab->merge_ok && r->size == f->size && r->italic == f->italic
+    if (r != NULL && lab->merge_ok && r->rule_h == 0 && r->size == f->size && r->italic == f->italic
         && r->bold == f->bold && r->y == y && r->kind == f->kind
         && r->level == f->level && fabs(r->x + r->width - x) < 1e-9) {
         t = cf__realloc_array(r->text, r->text_len + n + 1, 1);
@@ -136,6 +139,11 @@ put_text(cf_label_t *lab, const font_t *f, double x, double y,
         r->kind = f->kind;
         r->italic = f->italic;
         r->bold = f->bold;
+    }
+    if (n == 0) {
+        /* an empty run (a fraction rule): no layout */
+        r->width = 0;
+        return r->x;
     }
     run_measure(lab, r);
     return r->x + r->width;
@@ -432,6 +440,85 @@ command_name(const parser_t *p, size_t at, char *name, size_t cap)
     return n;
 }
 
+static bool parse_atom(parser_t *p, const font_t *f, double x, double y,
+                       piece_t *pc);
+
+/* Move runs [first, end) by (dx, dy). */
+static void
+move_runs(cf_label_t *lab, size_t first, size_t end, double dx, double dy)
+{
+    size_t i;
+    for (i = first; i < end; i++) {
+        lab->runs[i].x += dx;
+        lab->runs[i].y += dy;
+    }
+}
+
+/* \frac{num}{den}: both at the next script level, centred over each
+** other around a rule on the math axis (TeX rule 15, text style: num2 =
+** 0.394 em, denom2 = 0.345 em, axis 0.25 em, rule 0.04 em, clearance one
+** rule thickness, null delimiter space 0.12 em each side). */
+static bool
+parse_frac(parser_t *p, const font_t *f, double x, double y, piece_t *pc,
+           size_t at)
+{
+    piece_t num, den;
+    font_t g;
+    double s = f->size, base, wn, wd, w, pad = 0.12 * s, th = 0.04 * s;
+    double axis = 0.25 * s, up = 0.394 * s, down = 0.345 * s;
+    run_t *r;
+    int k;
+
+    base = f->level == 0 ? s : s / (f->level == 1 ? SCRIPT_RATIO
+                                                  : SCRIPT2_RATIO);
+    script_font(f, &g, f->kind, base);
+    for (k = 0; k < 2; k++) {
+        piece_t *pp = k == 0 ? &num : &den;
+        while (p->pos < p->len && p->s[p->pos] == ' ')
+            p->pos++;
+        if (p->pos >= p->len || p->s[p->pos] != '{') {
+            perr(p, at, "\\frac needs {numerator}{denominator}");
+            return false;
+        }
+        p->lab->merge_ok = false;
+        if (!parse_atom(p, &g, x + pad, y, pp))
+            return false;
+        piece_ink(p->lab, pp, y);
+    }
+    wn = num.x1 - num.x0;
+    wd = den.x1 - den.x0;
+    w = fmax(wn, wd);
+    if ((up - num.bottom) - (axis + th / 2) < th)
+        up = axis + th / 2 + th + num.bottom;
+    if ((axis - th / 2) - (den.top - down) < th)
+        down = den.top + th - (axis - th / 2);
+    move_runs(p->lab, num.first, num.end, (w - wn) / 2, up);
+    move_runs(p->lab, den.first, den.end, (w - wd) / 2, -down);
+    /* the rule, as a run without text */
+    if (isnan(put_text(p->lab, f, x + pad, y + axis - th / 2, "", 0))) {
+        pnomem(p);
+        return false;
+    }
+    r = &p->lab->runs[p->lab->count - 1];
+    r->rule_h = th;
+    r->width = w;
+    r->ascent = th;
+    r->descent = 0;
+    r->ink[0] = 0;
+    r->ink[1] = -th;
+    r->ink[2] = w;
+    r->ink[3] = 0;
+    p->lab->merge_ok = false;
+    pc->first = num.first;
+    pc->end = p->lab->count;
+    pc->x0 = x;
+    pc->x1 = x + w + 2 * pad;
+    pc->cls = CLS_ORD;
+    pc->group = true;
+    piece_ink(p->lab, pc, y);
+    return true;
+}
+
 /* One atom at (x, y): a character, a command or a {group}. */
 static bool
 parse_atom(parser_t *p, const font_t *f, double x, double y, piece_t *pc)
@@ -552,6 +639,8 @@ parse_atom(parser_t *p, const font_t *f, double x, double y, piece_t *pc)
                 return true;
             }
         }
+        if (strcmp(name, "frac") == 0)
+            return parse_frac(p, f, x, y, pc, at);
         if (strcmp(name, "mathrm") == 0 || strcmp(name, "text") == 0
             || strcmp(name, "mathbf") == 0 || strcmp(name, "mathit") == 0
             || strcmp(name, "operatorname") == 0) {
@@ -949,8 +1038,9 @@ cf_label_create(const char *text, const char *family, double size_bp,
     for (i = 0; i < lab->count; i++) {
         const run_t *r = &lab->runs[i];
         cf_label_box_t *b = &lab->boxes[i];
-        lab->unknown += (size_t)pango_layout_get_unknown_glyphs_count(
-            r->layout);
+        if (r->layout != NULL)
+            lab->unknown += (size_t)pango_layout_get_unknown_glyphs_count(
+                r->layout);
         b->x = r->x;
         b->y = r->y;
         b->width = r->width;
@@ -1067,6 +1157,12 @@ cf__label_draw(const cf_label_t *label, cairo_t *cr, double x, double y,
         const run_t *r = &label->runs[i];
         if (!(r->ink[3] > r->ink[1]))
             continue;   /* nothing to draw (spaces) */
+        if (r->rule_h > 0) {
+            cairo_rectangle(cr, x + r->x, y - r->y - r->rule_h, r->width,
+                            r->rule_h);
+            cairo_fill(cr);
+            continue;
+        }
         cairo_move_to(cr, x + r->x, y - r->y - r->baseline);
         pango_cairo_show_layout(cr, r->layout);
     }

@@ -488,6 +488,8 @@ cf_status_t cf_figure_ink_box(cf_figure_t *fig,
 **   \cdot \times \infty \partial \nabla \pm \leq \geq \neq \to \ldots
 **         \dots \sum \prod \int, \, \; \quad spaces, \{ \} \_ \$ \\ escapes.
 **   \mathrm{...} \text{...} upright; \mathbf{...} bold; \mathit{...}.
+**   \frac{num}{den} (script size, centred, rule on the math axis);
+**   \hat \bar \tilde \vec \dot \ddot over one character.
 **   Any UTF-8 text (Czech, Russian, Slovene, Chinese): letters outside
 **   ASCII are set upright; the family list supplies Cyrillic and CJK.
 ** Errors (unbalanced braces, unknown command, dangling _ or ^, invalid

@@ -182,6 +182,42 @@ test_text_and_math_modes(void **state)
 }
 
 static void
+test_fraction(void **state)
+{
+    cf_label_t *lab = layout("\\frac{1}{n+1}");
+    const cf_label_box_t *one = box_of(lab, "1"), *n = box_of(lab, "n");
+    size_t i;
+    double w, a, d;
+    (void)state;
+    /* numerator above the base line, denominator below, both at script
+    ** size, centred on each other; the rule is a run without text */
+    assert_true(one->y > 0);
+    assert_true(n->y < 0);
+    tu_assert_close(one->size, 0.7 * SIZE, 1e-12, 0);
+    {
+        const cf_label_box_t *last = NULL, *rule = NULL;
+        for (i = 0; i < cf_label_box_count(lab); i++) {
+            if (cf_label_run_text(lab, i)[0] == '\0')
+                rule = cf_label_get_box(lab, i);
+            else if (cf_label_get_box(lab, i)->y < 0)
+                last = cf_label_get_box(lab, i);
+        }
+        assert_non_null(rule);
+        /* the denominator n+1 spans the rule; the numerator is centred */
+        tu_assert_close(n->x, rule->x, 1e-9, 1);
+        tu_assert_close(last->x + last->width, rule->x + rule->width, 1e-9,
+                        1);
+        tu_assert_close(one->x + one->width / 2, rule->x + rule->width / 2,
+                        1e-9, 1);
+        /* the rule sits on the math axis (0.25 em), between the two */
+        assert_true(rule->y > 0 && rule->y < one->y);
+    }
+    cf_label_get_extents(lab, &w, &a, &d);
+    assert_true(a > 0.5 * SIZE && d > 0.2 * SIZE);
+    cf_label_destroy(lab);
+}
+
+static void
 test_world_scripts_have_glyphs(void **state)
 {
     const char *texts[] = {
@@ -215,6 +251,7 @@ test_syntax_errors(void **state)
         { "P}", 1 },          { "\\foo", 0 },   { "x_1_2", 3 },
         { "a $b", 2 },        { "\xff", 0 },    { "_1", 0 },
         { "\\hat{}", 0 },     { "\\", 0 },      { "x^^", 1 },
+        { "\\frac{1}", 0 },   { "\\frac 12", 0 },
     };
     size_t k;
     (void)state;
@@ -297,6 +334,7 @@ main(void)
         cmocka_unit_test(test_group_subscript_and_minus),
         cmocka_unit_test(test_nested_scripts_and_greek),
         cmocka_unit_test(test_text_and_math_modes),
+        cmocka_unit_test(test_fraction),
         cmocka_unit_test(test_world_scripts_have_glyphs),
         cmocka_unit_test(test_syntax_errors),
         cmocka_unit_test(test_tex_points),

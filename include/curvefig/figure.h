@@ -234,8 +234,11 @@ cf_status_t cf_figure_set_window(cf_figure_t *fig, double xmin, double xmax,
 ** box of curves (not of their control points, unless those are drawn too),
 ** polygon vertices, points, arrow ends, label anchors, axes ranges. */
 cf_status_t cf_figure_set_window_auto(cf_figure_t *fig);
-/* Margin (bp, >= 0) between the window and the page edge, default 14;
-** keep_aspect default true (turn off for function plots). */
+/* Fitting: the window is scaled so that everything drawn, including what
+** sticks out of it (labels, markers, arrow heads, line widths), lies at
+** least margin_bp (>= 0, default 4) inside the page edges.  keep_aspect:
+** equal scales on both axes.  Until this is called the aspect ratio is
+** kept, except in figures with axes (function plots). */
 cf_status_t cf_figure_set_fit(cf_figure_t *fig, double margin_bp,
                               bool keep_aspect);
 /* The window and the data -> page map the figure would use now:
@@ -513,8 +516,9 @@ typedef struct cf_label_box {
     int level;               /* 0 base, 1 script, 2 scriptscript */
     cf_label_kind_t kind;    /* innermost script kind of the run */
     bool italic;
-    size_t start, end;       /* byte range of the run's text in the output
-                                string of the run (see cf_label_run_text) */
+    size_t start, end;       /* 0 and the byte length of the run's text
+                                (cf_label_run_text; "" for a fraction
+                                rule) */
 } cf_label_box_t;
 
 typedef struct cf_label cf_label_t;

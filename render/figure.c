@@ -1504,18 +1504,12 @@ element_bounds(const element_t *e, bounds_t *b)
         for (i = 0; i < e->npieces; i++) {
             const piece_t *pc = &e->pieces[i];
             if (pc->bez != NULL) {
-                /* the curve's extent from 129 points on it: the window
-                ** only needs it to a small fraction of its size (the
-                ** chord error of the sampling, < 1e-4 of the extent for
-                ** the curves of lecture figures) */
-                double t[129], p[258];
-                size_t k;
-                for (k = 0; k < 129; k++)
-                    t[k] = (double)k / 128;
-                if (cf_bezier_eval_many(pc->bez, t, 129, p)
-                    == CF_STATUS_OK)
-                    for (k = 0; k < 129; k++)
-                        bounds_add(b, p[2 * k], p[2 * k + 1]);
+                /* the tight box of the curve, not of its control points */
+                double lo[2], hi[2];
+                if (cf_bezier_bbox(pc->bez, lo, hi) == CF_STATUS_OK) {
+                    bounds_add(b, lo[0], lo[1]);
+                    bounds_add(b, hi[0], hi[1]);
+                }
             } else {
                 size_t k;
                 for (k = 0; k < 4; k++)

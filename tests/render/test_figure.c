@@ -684,6 +684,21 @@ test_window_fit(void **state)
     assert_true(sx * 10 <= W && sx * 10 > 0.8 * W);
     cf_figure_destroy(fig);
 
+    /* the window holds the curve, not its control points: the parabola
+    ** through (0,0), (2,0) with middle control point (1,10) peaks at 5 */
+    fig = new_fig();
+    {
+        double Q[] = { 0, 0, 1, 10, 2, 0 };
+        cf_bezier_t *c;
+        assert_int_equal(cf_bezier_create(2, 2, Q, NULL, &c, NULL), 0);
+        assert_int_equal(cf_figure_add_bezier(fig, c, NULL), 0);
+        assert_int_equal(cf_figure_get_window(fig, win, &sx, &sy), 0);
+        tu_assert_close(win[3], 5, 1e-12, 0);
+        tu_assert_close(win[2], 0, 0, 1e-12);
+        cf_bezier_destroy(c);
+    }
+    cf_figure_destroy(fig);
+
     /* with axes the aspect ratio is free by default: [0,10] x [0,1] fills
     ** the page */
     fig = new_fig();

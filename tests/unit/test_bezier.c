@@ -191,11 +191,12 @@ test_degree40_exact(void **state)
 static void
 test_eval_many_matches_decasteljau(void **state)
 {
-    /* Horner in Bernstein form, mirrored at 1/2 (src/bezier-eval.c): every
-    ** term is a Bernstein value times a point with O(n) relative roundings.
-    ** Measured against de Casteljau over 40,000 random curves and 16
+    /* Horner in Bernstein form with powers of 1 - t (src/bezier-eval.c):
+    ** every term is a Bernstein value times a point with O(n) relative
+    ** roundings.  Over 40,000 random curves (sizes 2^-20 .. 2^20) and 16
     ** parameters each (some at 0, 1/2, 1 and next to 1/2), the difference
-    ** stays within 8 ulp of max |P| for degrees 0..10 in dims 1..4. */
+    ** from de Casteljau was measured at <= 4.1 eps max|P| for degrees
+    ** 0..10; the test allows 8 eps max|P| (< 8 ulp of max |P|). */
     static double t[16];
     double fast[16 * 4], ref[4];
     double worst = 0.0;

@@ -104,7 +104,6 @@ stream_write(void *closure, const unsigned char *data, unsigned int length)
 
 typedef struct page {
     double w, h;      /* page size, bp */
-    double dx, dy;    /* translation of the figure's drawing */
     double ink[4];    /* ink box at the physical size (x0 y0 x1 y1) */
 } page_t;
 
@@ -156,7 +155,6 @@ make_page(cf_figure_t *fig, const cf_write_options_t *o, cf__layout_t *lay,
     pg->ink[2] = x + w;
     pg->ink[3] = y + h;
     cf_figure_get_size(fig, &pg->w, &pg->h);
-    pg->dx = pg->dy = 0;
     if (o->tight && w > 0 && h > 0) {
         /* the shift goes into the data -> page map, so that the files
         ** carry plain coordinates (no SVG transform attributes) */
@@ -180,7 +178,6 @@ draw_page(cf_figure_t *fig, const cf__layout_t *lay, const page_t *pg,
         cairo_fill(cr);
         cairo_restore(cr);
     }
-    cairo_translate(cr, pg->dx, pg->dy);
     cf__figure_draw(fig, lay, cr, NULL);
 }
 

@@ -336,6 +336,49 @@ test_page_is_ink_box(void **state)
     cf_figure_destroy(fig);
 }
 
+/* Grey levels of a label rendered alone at 300 dpi (tight). */
+static blob_t
+label_png(const char *text)
+{
+    cf_figure_t *fig = NULL;
+    cf_write_options_t o;
+    blob_t b;
+    assert_int_equal(cf_figure_create(40, 20, CF_UNIT_MM, &fig, NULL), 0);
+    assert_int_equal(cf_figure_add_label(fig, 0, 0, text, NULL), 0);
+    cf_write_options_init(&o);
+    o.dpi = 300;
+    o.tight = true;
+    b = render(fig, CF_FORMAT_PNG, &o);
+    cf_figure_destroy(fig);
+    return b;
+}
+
+static void
+test_cjk_and_cyrillic_ink(void **state)
+{
+    /* 曲线 and Кривые drawn with real glyphs: ink, and not the picture
+    ** of the missing-glyph box that a noncharacter (U+10FFFD) gets */
+    const char *texts[] = {
+        "\xe6\x9b\xb2\xe7\xba\xbf",
+        "\xd0\x9a\xd1\x80\xd0\xb8\xd0\xb2\xd1\x8b\xd0\xb5",
+    };
+    blob_t none = label_png("\xf4\x8f\xbf\xbd\xf4\x8f\xbf\xbd");
+    int k, nb[4], nw, nh;
+    (void)state;
+    pixel_box(&none, nb, &nw, &nh);
+    for (k = 0; k < 2; k++) {
+        blob_t b = label_png(texts[k]);
+        int box[4], w, h;
+        pixel_box(&b, box, &w, &h);
+        /* a label of two or six glyphs at 10 pt: several pt wide */
+        assert_true(box[2] - box[0] > 40 && box[3] - box[1] > 20);
+        assert_false(b.size == none.size
+                     && memcmp(b.data, none.data, b.size) == 0);
+        cf_free(b.data);
+    }
+    cf_free(none.data);
+}
+
 static char tmpdir[64];
 
 static int
@@ -544,6 +587,7 @@ main(void)
         cmocka_unit_test(test_no_clock_in_files),
         cmocka_unit_test(test_svg_parses_with_librsvg),
         cmocka_unit_test(test_page_is_ink_box),
+        cmocka_unit_test(test_cjk_and_cyrillic_ink),
         cmocka_unit_test(test_write_all_and_magic),
         cmocka_unit_test(test_failed_write_keeps_old_file),
         cmocka_unit_test(test_write_errors),

@@ -1,15 +1,17 @@
 /*
 ** pixel-check: the pixel test of one figure script.
 **
-**   pixel-check TOOL SCRIPT REFDIR OUTDIR [--update] [--expect-mismatch]
+**   pixel-check [--update] [--expect-mismatch] TOOL REFDIR OUTDIR SCRIPT...
 **
+** For every SCRIPT (outputs go to OUTDIR/<script name without .lua>/):
 ** 1. `TOOL render SCRIPT -o OUTDIR -f svg,png --dpi 144` (and again with
 **    --no-labels into OUTDIR/nolabels) and `TOOL list SCRIPT` for the names.
 ** 2. For every figure: rasterise its SVG with librsvg at the same 144 dpi
 **    and compare with cairo's own PNG (the same picture through two paths):
 **    strictly for the label-free layer, with the looser text tolerance for
 **    the labelled figure (glyphs are hinted differently by the two paths).
-** 3. Compare cairo's PNG with the committed reference REFDIR/NAME.png.
+** 3. Compare cairo's PNGs with the committed references REFDIR/NAME.png
+**    (labelled, text tolerance) and REFDIR/nolabels/NAME.png (strict).
 ** --update writes the references instead of comparing with them.
 ** --expect-mismatch inverts the reference comparison (the perturbation test
 **    proves the suite fails when a figure changes).
@@ -245,34 +247,22 @@ copy_file(const char *from, const char *to)
     return rename(tmp, to);
 }
 
-int
-main(int argc, char **argv)
+static int
+check_script(const char *tool, const char *script, const char *refdir,
+             const char *outdir, int update, int expect_mismatch)
 {
-    const char *tool, *script, *refdir, *outdir;
-    int update = 0, expect_mismatch = 0, failures = 0, nfig = 0;
+    int failures = 0, nfig = 0, mismatch_seen = 0, mismatch_missed = 0;
     char names[65536], nolabels[4096], dpi[16];
 
-    if (argc < 5) {
-        fprintf(stderr, "usage: %s TOOL SCRIPT REFDIR OUTDIR [--update] "
-                "[--expect-mismatch]\n", argv[0]);
-        return 2;
-    }
-    tool = argv[1];
-    script = argv[2];
-    refdir = argv[3];
-    outdir = argv[4];
-    for (int i = 5; i < argc; i++) {
-        if (strcmp(argv[i], "--update") == 0)
-            update = 1;
-        else if (strcmp(argv[i], "--expect-mismatch") == 0)
-            expect_mismatch = 1;
-        else
-            return 2;
-    }
     snprintf(nolabels, sizeof nolabels, "%s/nolabels", outdir);
     snprintf(dpi, sizeof dpi, "%d", (int)DPI);
     mkdir(outdir, 0777);
     mkdir(nolabels, 0777);
+    if (update) {
+        char p[8192];
+        snprintf(p, sizeof p, "%s/nolabels", refdir);
+        mkdir(p, 0777);
+    }
 
     {
         char *a1[] = { (char *)tool, "render", (char *)script, "-o",
@@ -323,13 +313,18 @@ main(int argc, char **argv)
             cairo_surface_destroy(png);
         }
 
-        snprintf(p, sizeof p, "%s/%s.png", outdir, name);
-        png = load_png(p);
-        if (png == NULL)
-            continue;
-        {
+        /* against the references: the label-free layer strictly, the
+        ** labelled figure with the text tolerance */
+        for (int layer = 0; layer < 2; layer++) {
+            const char *dir = layer == 0 ? nolabels : outdir;
             char ref_path[8192];
-            snprintf(ref_path, sizeof ref_path, "%s/%s.png", refdir, name);
+            int ok;
+            snprintf(p, sizeof p, "%s/%s.png", dir, name);
+            png = load_png(p);
+            if (png == NULL)
+                continue;
+            snprintf(ref_path, sizeof ref_path, "%s/%s%s.png", refdir,
+                     layer == 0 ? "nolabels/" : "", name);
             if (update) {
                 if (copy_file(p, ref_path) != 0) {
                     fprintf(stderr, "%s: cannot write %s\n", name, ref_path);
@@ -337,32 +332,87 @@ main(int argc, char **argv)
                 } else {
                     printf("%s: reference updated: %s\n", name, ref_path);
                 }
-            } else if ((ref = load_png(ref_path)) == NULL) {
-                fprintf(stderr, "%s: no reference image %s (run the "
-                        "update-references target)\n", name, ref_path);
-                failures++;
-            } else {
-                int ok = compare(outdir, name, "vs-reference", png, ref, 1);
-                if (expect_mismatch) {
-                    if (ok) {
-                        fprintf(stderr, "%s: the perturbed figure was NOT "
-                                "detected\n", name);
-                        failures++;
-                    } else {
-                        printf("%s: perturbation detected, as expected\n",
-                               name);
-                    }
-                } else if (!ok) {
-                    failures++;
-                }
-                cairo_surface_destroy(ref);
+                cairo_surface_destroy(png);
+                continue;
             }
+            ref = load_png(ref_path);
+            if (ref == NULL) {
+                fprintf(stderr, "%s: no reference image %s (run `ninja -C "
+                        "build update-references`)\n", name, ref_path);
+                failures++;
+                cairo_surface_destroy(png);
+                continue;
+            }
+            ok = compare(dir, name,
+                         layer == 0 ? "vs-reference(no labels)"
+                                    : "vs-reference",
+                         png, ref, layer == 1);
+            if (expect_mismatch) {
+                if (ok)
+                    mismatch_missed++;
+                else
+                    mismatch_seen++;
+            } else if (!ok) {
+                failures++;
+            }
+            cairo_surface_destroy(ref);
+            cairo_surface_destroy(png);
         }
-        cairo_surface_destroy(png);
+    }
+    if (expect_mismatch) {
+        if (mismatch_seen == 0) {
+            fprintf(stderr, "%s: the perturbed figure was NOT detected\n",
+                    script);
+            failures++;
+        } else {
+            printf("%s: perturbation detected, as expected (%d of %d "
+                   "comparisons differ)\n", script, mismatch_seen,
+                   mismatch_seen + mismatch_missed);
+        }
     }
     if (nfig == 0) {
         fprintf(stderr, "%s: the script defines no figure\n", script);
         return 1;
+    }
+    return failures ? 1 : 0;
+}
+
+int
+main(int argc, char **argv)
+{
+    const char *tool, *refdir, *outdir;
+    int update = 0, expect_mismatch = 0, failures = 0, i = 1;
+    char dir[4096];
+
+    for (; i < argc && strncmp(argv[i], "--", 2) == 0; i++) {
+        if (strcmp(argv[i], "--update") == 0)
+            update = 1;
+        else if (strcmp(argv[i], "--expect-mismatch") == 0)
+            expect_mismatch = 1;
+        else
+            break;
+    }
+    if (argc - i < 4) {
+        fprintf(stderr, "usage: %s [--update] [--expect-mismatch] TOOL "
+                "REFDIR OUTDIR SCRIPT...\n", argv[0]);
+        return 2;
+    }
+    tool = argv[i++];
+    refdir = argv[i++];
+    outdir = argv[i++];
+    mkdir(outdir, 0777);
+    for (; i < argc; i++) {
+        const char *base = strrchr(argv[i], '/');
+        size_t len;
+        base = base ? base + 1 : argv[i];
+        len = strlen(base);
+        if (len > 4 && strcmp(base + len - 4, ".lua") == 0)
+            len -= 4;
+        if (snprintf(dir, sizeof dir, "%s/%.*s", outdir, (int)len, base) >=
+            (int)sizeof dir)
+            return 2;
+        failures += check_script(tool, argv[i], refdir, dir, update,
+                                 expect_mismatch);
     }
     return failures ? 1 : 0;
 }

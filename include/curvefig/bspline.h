@@ -154,12 +154,14 @@ cf_status_t cf_bspline_eval(const cf_bspline_t *c, double u, double *out);
 
 /*
 ** out[n * dim] = C(u[0]) ... C(u[n-1]); allocates nothing.  Uses the
-** nonzero basis functions with reciprocals of knot differences precomputed
-** when the curve was made; non-decreasing runs of parameters walk the
-** spans without searching, other parameters find their span branch-free
-** through a grid over the domain.  Agrees with cf_bspline_eval to a few
-** ulps of the size of the control points (tested).  On an invalid
-** parameter, returns its status with out[0 .. i*dim) written.
+** nonzero basis functions with reciprocals of knot differences, computed
+** once by the first batch call into space reserved in the curve (so
+** constructions never pay for them; thread-safe: a concurrent first call
+** evaluates without them); parameters that stay in the span of the
+** previous one reuse it, others find their span branch-free through a
+** grid over the domain.  Agrees with cf_bspline_eval to a few ulps of the
+** size of the control points (tested).  On an invalid parameter, returns
+** its status with out[0 .. i*dim) written.
 */
 cf_status_t cf_bspline_eval_many(const cf_bspline_t *c, const double *u,
                                  size_t n, double *out);
@@ -172,8 +174,9 @@ cf_status_t cf_bspline_eval_many(const cf_bspline_t *c, const double *u,
 cf_status_t cf_bspline_eval_derivs(const cf_bspline_t *c, double u, int k,
                                    double *out);
 
-/* out[n * dim] = C^(k)(u[i]) for each i (k >= 0); allocates nothing;
-** sorted runs walk the spans like cf_bspline_eval_many. */
+/* out[n * dim] = C^(k)(u[i]) for each i (k >= 0; for a NURBS k <= 128,
+** INVALID_ARG above); allocates nothing; spans are found like
+** cf_bspline_eval_many. */
 cf_status_t cf_bspline_eval_deriv_many(const cf_bspline_t *c, int k,
                                        const double *u, size_t n,
                                        double *out);
@@ -206,9 +209,11 @@ cf_status_t cf_bspline_basis(const cf_bspline_t *c, double u, size_t *first,
 /*
 ** The k-th derivative as a curve (k >= 0; k = 0 copies).
 ** Polynomial: degree p - 1 with the inner knots u_1..u_{m-1} and points
-** Q_i = p / (u_{i+p+1} - u_{i+1}) (P_{i+1} - P_i) (thesis §2.9; Q_i = 0
-** where that knot difference is 0), applied k times; once the degree is 0,
-** further derivatives give a degree-0 curve whose points are all zero.
+** Q_i = p / (u_{i+p+1} - u_{i+1}) (P_{i+1} - P_i) (thesis §2.9), applied
+** k times.  Where that knot difference is 0 (a knot of multiplicity p + 1:
+** the curve jumps) Q_i and one copy of the knot are left out, since their
+** basis function vanishes.  Once the degree is 0, further derivatives give
+** a degree-0 curve whose points are all zero.
 ** NURBS: an exact rational curve assembled from the rational Bézier
 ** derivatives (cf_bezier_derivative) of its pieces: degree 2p per
 ** derivative, every interior break point a knot of full multiplicity
@@ -298,8 +303,10 @@ cf_status_t cf_bspline_bezier_points(const cf_bspline_t *c, double **hpoints,
                                      double **breaks, size_t *count,
                                      cf_diag_t *diag);
 
-/* Degree elevation by t >= 0: the same curve with degree p + t, every
-** interior knot's multiplicity raised by t (continuity kept). */
+/* Degree elevation by t >= 0 (p + t <= CF_BSPLINE_MAX_DEGREE): the same
+** curve with degree p + t, every interior knot's multiplicity raised by t
+** (continuity kept).  Works through the Bézier pieces, so an open curve
+** comes back clamped to its domain. */
 cf_status_t cf_bspline_elevate(const cf_bspline_t *c, int t,
                                cf_bspline_t **out, cf_diag_t *diag);
 

@@ -10,6 +10,7 @@
 #include <cmocka.h>
 
 #include "curvefig/bspline.h"
+#include "../../src/bspline-private.h"
 #include "testutil.h"
 
 #define EPS 2.220446049250313e-16
@@ -266,6 +267,45 @@ test_eval_many_matches_deboor(void **state)
     }
     free(u);
     free(out);
+}
+
+/* While another thread builds the accelerators (state 1), batch calls
+** evaluate without them: the same numbers, up to the reciprocal roundings.
+** Simulated by setting the state by hand. */
+static void
+test_eval_many_without_accelerators(void **state)
+{
+    tu_rng r;
+    enum { NP = 300 };
+    double u[NP], fast[NP * 3], slow[NP * 3];
+    (void)state;
+    tu_rng_seed(&r, 404);
+    for (int trial = 0; trial < 24; trial++) {
+        int p = 1 + trial % 4, k = trial % 3;
+        bool rat = trial % 2 == 1;
+        size_t dim = 2 + (size_t)(trial % 2);
+        cf_bspline_t *c = random_curve(&r, dim, p, (size_t)p + 9, true, rat);
+        double a, b, size = size_of(c);
+        cf_bspline_domain(c, &a, &b);
+        for (int i = 0; i < NP; i++)
+            u[i] = a + (b - a) * tu_rng_u01(&r);
+        if (trial % 4 == 0)
+            qsort(u, NP, sizeof u[0], cmp_double);
+        /* first call: builds them (state 2 afterwards) */
+        assert_int_equal(cf_bspline_eval_deriv_many(c, k, u, NP, fast), 0);
+        assert_int_equal(atomic_load(&c->accel), 2);
+        atomic_store(&c->accel, 1);
+        assert_int_equal(cf_bspline_eval_deriv_many(c, k, u, NP, slow), 0);
+        if (k == 0) {
+            assert_int_equal(cf_bspline_eval_many(c, u, NP, slow), 0);
+        }
+        atomic_store(&c->accel, 2);
+        /* derivatives scale with p / (knot spacing), up to ~30 per order */
+        if (tu_max_diff(fast, slow, NP * dim)
+            > 64 * EPS * size * pow(30.0, k) * (rat ? 10 : 1))
+            fail_msg("trial %d: %g", trial, tu_max_diff(fast, slow, NP * dim));
+        cf_bspline_destroy(c);
+    }
 }
 
 /* The W3 curve of the benchmarks: uniform knots, sorted and random
@@ -1426,6 +1466,7 @@ main(void)
         cmocka_unit_test(test_figure_helpers),
         cmocka_unit_test(test_eval_many_matches_deboor),
         cmocka_unit_test(test_eval_many_w3_shape),
+        cmocka_unit_test(test_eval_many_without_accelerators),
         cmocka_unit_test(test_derivatives_central_differences),
         cmocka_unit_test(test_continuity_at_multiple_knots),
         cmocka_unit_test(test_deboor_net),

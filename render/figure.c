@@ -1300,6 +1300,13 @@ format_number(double v, double step, char *buf, size_t cap)
     }
     if (fabs(v) < 1e-12 * fmax(1, step))
         v = 0;
+    /* drop trailing zeros: 0, 0.25, 0.5, 0.75, 1 */
+    while (dec > 0) {
+        double k = pow(10, dec - 1);
+        if (fabs(round(v * k) / k - v) > 1e-9 * fmax(1, fabs(v)))
+            break;
+        dec--;
+    }
     snprintf(buf, cap, "%.*f", dec, v);
 }
 

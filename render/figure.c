@@ -1997,6 +1997,13 @@ draw_text(cf_figure_t *fig, text_t *t, cairo_t *cr, const cf_style_t *s,
     if (text_ensure(fig, t, s->font_size) != CF_STATUS_OK)
         return fig->err.status;
     label_origin(t->lab, place, off, px, py, &ox, &oy);
+    if (s->halo > 0) {
+        /* the background colour, or white on a transparent page */
+        cf_color_t bg = fig->theme.background;
+        if (bg.a <= 0)
+            bg.r = bg.g = bg.b = bg.a = 1;
+        cf__label_draw_halo(t->lab, cr, ox, oy, &bg, s->halo);
+    }
     cf__label_draw(t->lab, cr, ox, oy, &s->color, s->opacity);
     return CF_STATUS_OK;
 }

@@ -1168,3 +1168,32 @@ cf__label_draw(const cf_label_t *label, cairo_t *cr, double x, double y,
     }
     cairo_restore(cr);
 }
+
+void
+cf__label_draw_halo(const cf_label_t *label, cairo_t *cr, double x,
+                    double y, const cf_color_t *halo_color, double halo)
+{
+    size_t i;
+    if (label == NULL || !(halo > 0) || halo_color->a <= 0)
+        return;
+    cairo_save(cr);
+    cairo_new_path(cr);
+    for (i = 0; i < label->count; i++) {
+        const run_t *r = &label->runs[i];
+        if (!(r->ink[3] > r->ink[1]))
+            continue;
+        if (r->rule_h > 0) {
+            cairo_rectangle(cr, x + r->x, y - r->y - r->rule_h, r->width,
+                            r->rule_h);
+            continue;
+        }
+        cairo_move_to(cr, x + r->x, y - r->y - r->baseline);
+        pango_cairo_layout_path(cr, r->layout);
+    }
+    cairo_set_source_rgba(cr, halo_color->r, halo_color->g, halo_color->b,
+                          halo_color->a);
+    cairo_set_line_width(cr, 2 * halo);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    cairo_stroke(cr);
+    cairo_restore(cr);
+}

@@ -39,6 +39,11 @@ bool cf__label_matches(const cf_label_t *label, const char *family,
 /* Draw with the baseline origin at (x, y) (page units, y down). */
 void cf__label_draw(const cf_label_t *label, cairo_t *cr, double x,
                     double y, const cf_color_t *color, double opacity);
+/* The same glyphs stroked with width 2 * halo in colour halo_color (a
+** border that keeps the label legible over lines); drawn first. */
+void cf__label_draw_halo(const cf_label_t *label, cairo_t *cr, double x,
+                         double y, const cf_color_t *halo_color,
+                         double halo);
 
 /* ---- output.c ----------------------------------------------------------- */
 

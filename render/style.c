@@ -270,6 +270,10 @@ cf__style_check(const cf_style_t *s, cf_diag_t *diag)
     if ((s->set & CF_STYLE_OFFSET) && !isfinite(s->offset))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "style: label offset is not finite");
+    if ((s->set & CF_STYLE_HALO)
+        && !(isfinite(s->halo) && s->halo >= 0 && s->halo <= 100))
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "style: halo %g must lie in [0, 100] bp", s->halo);
     if ((s->set & CF_STYLE_ARROW_SIZE)
         && !(isfinite(s->arrow_size) && s->arrow_size >= 0))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
@@ -317,6 +321,8 @@ cf__style_resolve(const cf_theme_t *theme, cf_role_t role,
         out->offset = over->offset;
     if (over->set & CF_STYLE_ARROW_SIZE)
         out->arrow_size = over->arrow_size;
+    if (over->set & CF_STYLE_HALO)
+        out->halo = over->halo;
 }
 
 /* ---- themes ------------------------------------------------------------- */

@@ -131,7 +131,8 @@ enum {
     CF_STYLE_OFFSET      = 1u << 9,
     CF_STYLE_ARROW_SIZE  = 1u << 10,
     CF_STYLE_MARKER_COLOR = 1u << 11,
-    CF_STYLE_ALL_        = (1u << 12) - 1
+    CF_STYLE_HALO        = 1u << 12,
+    CF_STYLE_ALL_        = (1u << 13) - 1
 };
 
 /* Per-element overrides (and, fully set, the theme's style of a role).
@@ -151,6 +152,10 @@ typedef struct cf_style {
     cf_place_t place;               /* label side of the anchor point */
     double offset;                  /* gap between point and label, bp */
     double arrow_size;              /* arrow head length, bp (0: none) */
+    double halo;                    /* labels: a border of this width (bp)
+                                       in the background colour around
+                                       the glyphs, so that a label over a
+                                       line stays legible (0: none) */
 } cf_style_t;
 
 /* set = 0 (nothing overridden), other fields zero. */

@@ -745,6 +745,37 @@ test_hull(void **state)
     cf_figure_destroy(fig);
 }
 
+static void
+test_label_halo(void **state)
+{
+    cf_figure_t *fig = new_fig();
+    cf_style_t s;
+    char *svg;
+    const char *p;
+    (void)state;
+    cf_style_init(&s);
+    s.set = CF_STYLE_HALO;
+    s.halo = 1.5;
+    assert_int_equal(cf_figure_add_label(fig, 0, 0, "C(t)", &s), 0);
+    svg = render_svg(fig);
+    /* the glyph outlines stroked 3 bp wide in the (white) background
+    ** colour, under the glyphs */
+    p = strstr(svg, "</defs>");
+    assert_non_null(p);
+    p = strstr(p, "stroke-width:3;");
+    assert_non_null(p);
+    assert_non_null(strstr(p, "stroke:rgb(100%,100%,100%)"));
+    assert_non_null(strstr(p, "<use"));   /* the glyphs come after it */
+    free(svg);
+    cf_figure_destroy(fig);
+    /* out of range */
+    fig = new_fig();
+    s.halo = -1;
+    assert_int_equal(cf_figure_add_label(fig, 0, 0, "C", &s),
+                     CF_STATUS_INVALID_ARG);
+    cf_figure_destroy(fig);
+}
+
 /* ---- errors ------------------------------------------------------------- */
 
 #define EXPECT(call, status)                                               \
@@ -985,6 +1016,7 @@ main(void)
         cmocka_unit_test(test_net_colours_and_projection),
         cmocka_unit_test(test_window_fit),
         cmocka_unit_test(test_hull),
+        cmocka_unit_test(test_label_halo),
         cmocka_unit_test(test_bad_input),
         cmocka_unit_test(test_sticky_error),
         cmocka_unit_test(test_out_of_memory),

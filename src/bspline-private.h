@@ -39,6 +39,8 @@ struct cf_bspline {
     double *P;
     double *rk;
     uint32_t *grid;
+    double *gsplit;    /* ngrid: the knot inside cell g, +inf if none */
+    bool splitok;      /* every cell holds at most one knot */
     size_t ngrid;
     double ginv;       /* ngrid / (b - a) */
     int gsteps;

@@ -38,7 +38,7 @@ cf__bspline_alloc(size_t dim, bool rational, int p, size_t count)
         return NULL;
     ngrid = grid_cells(count, p);
     /* knots, points, reciprocals, grid (as doubles, rounded up) */
-    doubles = head + nknots + count * hdim + (size_t)p * nknots
+    doubles = head + nknots + count * hdim + (size_t)p * nknots + ngrid
               + (ngrid * sizeof(uint32_t) + sizeof(double) - 1)
                 / sizeof(double);
     base = cf__alloc_array(doubles, sizeof(double));
@@ -55,7 +55,8 @@ cf__bspline_alloc(size_t dim, bool rational, int p, size_t count)
     c->U = (double *)(void *)base + head;
     c->P = c->U + nknots;
     c->rk = c->P + count * hdim;
-    c->grid = (uint32_t *)(void *)(c->rk + (size_t)p * nknots);
+    c->gsplit = c->rk + (size_t)p * nknots;
+    c->grid = (uint32_t *)(void *)(c->gsplit + ngrid);
     c->ngrid = ngrid;
     return c;
 }
@@ -115,6 +116,32 @@ build_accel(cf_bspline_t *c)
     c->gsteps = 0;
     while (((size_t)1 << c->gsteps) <= maxw)
         c->gsteps++;
+    /* the exact cells: span at the start, and the one knot inside (the
+    ** search checks its answer, so rounding at cell edges is harmless) */
+    c->splitok = true;
+    k = c->first_span;
+    for (size_t g = 0; g < G; g++) {
+        double x0 = c->a + (double)g * h, x1 = c->a + (double)(g + 1) * h;
+        while (k < c->last_span && U[k + 1] <= x0)
+            k++;
+        c->grid[g] = (uint32_t)k;
+        c->gsplit[g] = INFINITY;
+        if (k < c->last_span && U[k + 1] < x1) {
+            c->gsplit[g] = U[k + 1];
+            if (k + 1 < c->last_span && U[k + 2] < x1)
+                c->splitok = false;
+        }
+    }
+    if (!c->splitok) {
+        /* back to the windows of the general search */
+        k = c->first_span;
+        for (size_t g = 0; g < G; g++) {
+            double x = c->a + ((double)g - 0.5) * h;
+            while (k < c->last_span && U[k + 1] <= x)
+                k++;
+            c->grid[g] = (uint32_t)k;
+        }
+    }
 }
 
 bool
@@ -139,14 +166,33 @@ cf__bspline_accel(const cf_bspline_t *cc)
 
 /* Branch-free span search through the grid (the conventions of
 ** cf_knots_find_span for u in the domain). */
+/* With one knot per cell at most: the span at the cell's start, plus one
+** when u has passed the cell's knot; two independent loads.  The caller
+** checks U[k] <= u < U[k+1] (it needs those knots anyway). */
+CF__INLINE size_t
+split_span(const cf_bspline_t *c, double u)
+{
+    long G = (long)c->ngrid;
+    long g = (long)((u - c->a) * c->ginv);
+    g = g < 0 ? 0 : g;
+    g = g < G - 1 ? g : G - 1;
+    return c->grid[g] + (size_t)(u >= c->gsplit[g]);
+}
+
 CF__INLINE size_t
 grid_span(const cf_bspline_t *c, double u)
 {
     const double *U = c->U;
     size_t last = c->last_span, k, s;
-    long G = (long)c->ngrid;
+    long G = (long)c->ngrid, g;
+    if (c->splitok) {
+        k = split_span(c, u);
+        if (CF__UNLIKELY((int)(u >= U[k]) + (int)(u < U[k + 1]) != 2))
+            k = cf__bspline_span(c, u);   /* a rounded cell edge, or u = b */
+        return k;
+    }
     /* a signed conversion (cvttsd2si) and clamps, no branches */
-    long g = (long)((u - c->a) * c->ginv);
+    g = (long)((u - c->a) * c->ginv);
     g = g < 0 ? 0 : g;
     g = g < G - 1 ? g : G - 1;
     k = c->grid[g];

@@ -29,21 +29,34 @@ format_pair(double x, double y, char *bx, char *by, size_t size)
     }
 }
 
+/* The degree and the number of points (or parameters) for a curve;
+** `who` prefixes the message ("bspline", "knots"). */
+static cf_status_t
+check_degree_count(const char *who, int lo, int degree, size_t npoints,
+                   const char *what, cf_diag_t *diag)
+{
+    if (degree < lo || degree > CF_BSPLINE_MAX_DEGREE)
+        return cf__error(diag, CF_STATUS_BAD_DEGREE, -1,
+                         "%s: degree %d is outside %d..%d", who, degree, lo,
+                         CF_BSPLINE_MAX_DEGREE);
+    if (npoints < (size_t)degree + 1)
+        return cf__error(diag, CF_STATUS_TOO_FEW_POINTS, -1,
+                         "%s: degree %d needs at least %d %s, %zu given",
+                         who, degree, degree + 1, what, npoints);
+    return CF_STATUS_OK;
+}
+
 cf_status_t
 cf_knots_validate(int degree, size_t npoints, const double *knots,
                   size_t nknots, cf_diag_t *diag)
 {
     size_t need, m;
     char b1[64], b2[64];
+    cf_status_t st = check_degree_count("bspline", 0, degree, npoints,
+                                        "points", diag);
 
-    if (degree < 0 || degree > CF_BSPLINE_MAX_DEGREE)
-        return cf__error(diag, CF_STATUS_BAD_DEGREE, -1,
-                         "bspline: degree %d is outside 0..%d", degree,
-                         CF_BSPLINE_MAX_DEGREE);
-    if (npoints < (size_t)degree + 1)
-        return cf__error(diag, CF_STATUS_TOO_FEW_POINTS, -1,
-                         "bspline: degree %d needs at least %d points, "
-                         "%zu given", degree, degree + 1, npoints);
+    if (st != CF_STATUS_OK)
+        return st;
     need = npoints + (size_t)degree + 1;
     if (knots == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
@@ -92,14 +105,10 @@ static cf_status_t
 check_gen(int degree, size_t npoints, double a, double b, const double *out,
           cf_diag_t *diag)
 {
-    if (degree < 0 || degree > CF_BSPLINE_MAX_DEGREE)
-        return cf__error(diag, CF_STATUS_BAD_DEGREE, -1,
-                         "knots: degree %d is outside 0..%d", degree,
-                         CF_BSPLINE_MAX_DEGREE);
-    if (npoints < (size_t)degree + 1)
-        return cf__error(diag, CF_STATUS_TOO_FEW_POINTS, -1,
-                         "knots: degree %d needs at least %d points, %zu "
-                         "given", degree, degree + 1, npoints);
+    cf_status_t st = check_degree_count("knots", 0, degree, npoints,
+                                        "points", diag);
+    if (st != CF_STATUS_OK)
+        return st;
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "knots: output is NULL");
@@ -162,14 +171,10 @@ cf_knots_clamped_averaged(int degree, size_t npoints, const double *params,
                           double *out, cf_diag_t *diag)
 {
     size_t p, n;
-    if (degree < 1 || degree > CF_BSPLINE_MAX_DEGREE)
-        return cf__error(diag, CF_STATUS_BAD_DEGREE, -1,
-                         "knots: degree %d is outside 1..%d", degree,
-                         CF_BSPLINE_MAX_DEGREE);
-    if (npoints < (size_t)degree + 1)
-        return cf__error(diag, CF_STATUS_TOO_FEW_POINTS, -1,
-                         "knots: degree %d needs at least %d parameters, "
-                         "%zu given", degree, degree + 1, npoints);
+    cf_status_t st = check_degree_count("knots", 1, degree, npoints,
+                                        "parameters", diag);
+    if (st != CF_STATUS_OK)
+        return st;
     if (params == NULL || out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "knots: parameters or output are NULL");

@@ -51,16 +51,54 @@ struct cf_label {
 
 /* ---- runs --------------------------------------------------------------- */
 
+/* Latin Modern comes in optical sizes, like Computer Modern: TeX sets 7 pt
+** scripts in the 7 pt design, which is wider and sturdier than the 10 pt
+** design scaled down.  fontconfig always picks "LM Roman 10" for "Latin
+** Modern Roman", so name the design ("LM Roman 7") in front of the list:
+** the largest design not above the size in TeX points (the smallest one
+** for smaller sizes). */
+static void
+family_for_size(const char *family, double size_bp, bool italic, bool bold,
+                char *out, size_t cap)
+{
+    static const int regular[] = { 5, 6, 7, 8, 9, 10, 12, 17 };
+    static const int slanted[] = { 7, 8, 9, 10, 12 };
+    static const int heavy[] = { 5, 6, 7, 8, 9, 10, 12 };
+    const char *lm = "Latin Modern Roman";
+    size_t n = strlen(lm), i, count;
+    const int *d;
+    double texpt = size_bp * 72.27 / 72;
+    int pick;
+
+    if (strncmp(family, lm, n) != 0
+        || (family[n] != '\0' && family[n] != ',')) {
+        snprintf(out, cap, "%s", family);
+        return;
+    }
+    d = italic ? slanted : bold ? heavy : regular;
+    count = italic ? sizeof slanted / sizeof slanted[0]
+          : bold ? sizeof heavy / sizeof heavy[0]
+                 : sizeof regular / sizeof regular[0];
+    pick = d[0];
+    for (i = 0; i < count; i++)
+        if (d[i] <= texpt + 0.25)
+            pick = d[i];
+    snprintf(out, cap, "LM Roman %d,%s", pick, family);
+}
+
 static void
 run_measure(cf_label_t *lab, run_t *r)
 {
     PangoFontDescription *fd;
     PangoRectangle ink, logical;
+    char family[CF_FONT_FAMILY_MAX + 16];
 
     if (r->layout == NULL)
         r->layout = pango_layout_new(lab->ctx);
     fd = pango_font_description_new();
-    pango_font_description_set_family(fd, lab->family);
+    family_for_size(lab->family, r->size, r->italic, r->bold, family,
+                    sizeof family);
+    pango_font_description_set_family(fd, family);
     pango_font_description_set_style(fd, r->italic ? PANGO_STYLE_ITALIC
                                                     : PANGO_STYLE_NORMAL);
     pango_font_description_set_weight(fd, r->bold ? PANGO_WEIGHT_BOLD

@@ -60,6 +60,18 @@ test_subscript_lower_and_smaller(void **state)
     /* TeX sub1 = 0.15 em for a subscript alone */
     tu_assert_close(-z->y, 0.15 * SIZE, 1e-9, 1);
     cf_label_destroy(lab);
+    /* the script is set in Latin Modern's 7 pt design, like cmr7: its
+    ** digits are 0.569 em wide, those of the 10 pt design 0.5 em */
+    lab = layout("0P_0");
+    z = cf_label_get_box(lab, 2);
+    assert_string_equal(cf_label_run_text(lab, 2), "0");
+    assert_int_equal(z->level, 1);
+    assert_true(z->width / z->size > 0.55);
+    z = cf_label_get_box(lab, 0);
+    assert_string_equal(cf_label_run_text(lab, 0), "0");
+    assert_int_equal(z->level, 0);
+    tu_assert_close(z->width / z->size, 0.5, 1e-3, 0);
+    cf_label_destroy(lab);
 }
 
 static void

@@ -487,10 +487,12 @@ cf_status_t cf_figure_ink_box(cf_figure_t *fig,
 ** $...$ is upright text and inside is math.
 **   math: ASCII letters italic; digits, punctuation, ( ) [ ] upright;
 **         `-` becomes the minus sign U+2212; + − = < > get thin spaces
-**         around them at the base level; spaces are kept.
+**         around them at the base level; spaces are kept, except next
+**         to such operators (TeX's spacing applies there).
 **   x_i  x_{...}  subscript; x^n  x^{...}  superscript; both (any order)
 **         stack at the same x: B_i^n, N_{i}^{p}; scripts nest (size 70 %,
-**         then 50 %).  ' is a prime (superscript U+2032).
+**         then 50 %; Latin Modern's 7 pt and 5 pt designs are used for
+**         them, as in TeX).  ' is a prime (U+2032).
 **   \alpha ... \omega, \Gamma ... \Omega (also \varepsilon \vartheta
 **         \varphi \varrho \varsigma): lowercase italic, uppercase upright.
 **   \cdot \times \infty \partial \nabla \pm \leq \geq \neq \to \ldots

@@ -646,6 +646,36 @@ cf_figure_add_bezier(cf_figure_t *fig, const cf_bezier_t *c,
 }
 
 cf_status_t
+cf_figure_add_bezier_list(cf_figure_t *fig, const cf_bezier_list_t *list,
+                          const cf_style_t *style)
+{
+    element_t *e;
+    size_t i;
+    cf_status_t st = CF_STATUS_OK;
+    FIG_CHECK(fig);
+    if (check_curve(fig, list, style, "Bézier list") != CF_STATUS_OK)
+        return fig->err.status;
+    if (list->count > 0 && list->items == NULL)
+        return cf__error(&fig->err, CF_STATUS_INVALID_ARG, -1,
+                         "Bézier list of %zu items has no items",
+                         list->count);
+    for (i = 0; i < list->count; i++)
+        if (list->items[i] == NULL)
+            return cf__error(&fig->err, CF_STATUS_INVALID_ARG, (long)i,
+                             "Bézier list item %zu is NULL", i);
+    e = new_element(fig, EL_CURVE, CF_ROLE_CURVE, style);
+    if (e == NULL)
+        return fig->err.status;
+    for (i = 0; i < list->count && st == CF_STATUS_OK; i++) {
+        cf_bezier_t *plane = NULL;
+        st = planar_bezier(fig, list->items[i], &plane);
+        if (st == CF_STATUS_OK)
+            st = add_piece(fig, e, plane, NULL);
+    }
+    return commit(fig, e, st);
+}
+
+cf_status_t
 cf_figure_add_cubics(cf_figure_t *fig, const cf_cubics_t *cubics,
                      const cf_style_t *style)
 {

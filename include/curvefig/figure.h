@@ -281,6 +281,14 @@ cf_status_t cf_figure_add_bezier_range(cf_figure_t *fig,
                                        const cf_bezier_t *c, double a,
                                        double b, const cf_style_t *style);
 
+/* The curves of a list (cf_bspline_to_beziers, Ferguson and Coons chains,
+** ...) drawn as one path: consecutive items that meet continue the same
+** subpath, so joins are joins, not two line caps.  Items of dim >= 3 are
+** projected; every item is copied. */
+cf_status_t cf_figure_add_bezier_list(cf_figure_t *fig,
+                                      const cf_bezier_list_t *list,
+                                      const cf_style_t *style);
+
 /* A chain of cubic segments (cf_bezier_to_cubics, offsets) of dim 2, drawn
 ** as one path (a jump between segments starts a new subpath). Copied. */
 cf_status_t cf_figure_add_cubics(cf_figure_t *fig, const cf_cubics_t *cubics,

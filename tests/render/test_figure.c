@@ -580,6 +580,30 @@ test_bspline_pieces(void **state)
     free(svg);
     cf_figure_destroy(fig);
 
+    /* the same pieces as a list: one path, one C per piece */
+    {
+        cf_bezier_list_t *list;
+        assert_int_equal(cf_bspline_to_beziers(s, &list, NULL), 0);
+        fig = new_fig();
+        assert_int_equal(cf_figure_add_bezier_list(fig, list, NULL), 0);
+        svg = render_svg(fig);
+        stroked_paths(svg, ps);
+        assert_string_equal(ps->cmds, "MCCCCCC");
+        {
+            /* a NULL item is refused (the item is put back afterwards) */
+            cf_figure_t *f2 = new_fig();
+            cf_bezier_t *keep = list->items[2];
+            list->items[2] = NULL;
+            assert_int_equal(cf_figure_add_bezier_list(f2, list, NULL),
+                             CF_STATUS_INVALID_ARG);
+            list->items[2] = keep;
+            cf_figure_destroy(f2);
+        }
+        cf_bezier_list_destroy(list);
+        free(svg);
+        cf_figure_destroy(fig);
+    }
+
     /* a sub-range [0.3, 0.6] touches three spans */
     fig = new_fig();
     assert_int_equal(cf_figure_add_bspline(fig, s, 0.3, 0.6, NULL), 0);

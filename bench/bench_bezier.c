@@ -80,20 +80,18 @@ setup_deg7(void)
     return bez_setup(7, 1002);
 }
 
-/* Sum of x and of y over the PARAMS interleaved points (a multiple of
-** 4), four partial sums each so that the additions do not form one long
-** dependency chain. */
+/* Sum of x and of y over the PARAMS interleaved points (2 PARAMS doubles,
+** a multiple of 8): eight partial sums over contiguous doubles, the even
+** ones x and the odd ones y, so that the additions are independent. */
 static void
 add_sums(const double *p, double sum[2])
 {
-    double x[4] = { 0, 0, 0, 0 }, y[4] = { 0, 0, 0, 0 };
-    for (size_t i = 0; i < PARAMS; i += 4)
-        for (int k = 0; k < 4; k++) {
-            x[k] += p[2 * (i + (size_t)k)];
-            y[k] += p[2 * (i + (size_t)k) + 1];
-        }
-    sum[0] += (x[0] + x[1]) + (x[2] + x[3]);
-    sum[1] += (y[0] + y[1]) + (y[2] + y[3]);
+    double a[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
+    for (size_t i = 0; i < 2 * PARAMS; i += 8)
+        for (int k = 0; k < 8; k++)
+            a[k] += p[i + (size_t)k];
+    sum[0] += ((a[0] + a[2]) + (a[4] + a[6]));
+    sum[1] += ((a[1] + a[3]) + (a[5] + a[7]));
 }
 
 static int

@@ -354,10 +354,10 @@ theme_default(cf_theme_t *t)
     /* Palette: distinct hues whose lightness also differs, so that levels
     ** stay apart in greyscale (Rec. 601 luma in brackets). */
     static const unsigned palette[] = {
-        0x1f5fbf,  /* blue   (0.33) */
+        0x1f5fbf,  /* blue   (0.34) */
         0xe8821e,  /* orange (0.61) */
         0x2a9d3c,  /* green  (0.45) */
-        0xc0392b,  /* red    (0.37) */
+        0x9e1b1b,  /* dark red (0.26) */
         0x8e44ad,  /* purple (0.37) */
         0xe6c229,  /* yellow (0.75) */
         0x17a2b8,  /* teal   (0.52) */

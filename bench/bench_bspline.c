@@ -104,21 +104,26 @@ w3r_setup(void)
 static int
 w3_run_k(w3_state *s, int k, double sum[2])
 {
-    double sx = 0.0, sy = 0.0;
+    /* four partial sums per coordinate, so that the checksum's additions
+    ** do not form one long dependency chain beside the evaluation */
+    double acc[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
     for (size_t j = 0; j < s->n; j += CHUNK) {
-        size_t m = s->n - j < CHUNK ? s->n - j : CHUNK;
+        size_t m = s->n - j < CHUNK ? s->n - j : CHUNK, i = 0;
         cf_status_t st = k == 0
             ? cf_bspline_eval_many(s->curve, s->u + j, m, s->out)
             : cf_bspline_eval_deriv_many(s->curve, 1, s->u + j, m, s->out);
         if (st != CF_STATUS_OK)
             return 1;
-        for (size_t i = 0; i < m; i++) {
-            sx += s->out[2 * i];
-            sy += s->out[2 * i + 1];
+        for (; i + 4 <= m; i += 4)
+            for (size_t l = 0; l < 8; l++)
+                acc[l] += s->out[2 * i + l];
+        for (; i < m; i++) {
+            acc[0] += s->out[2 * i];
+            acc[1] += s->out[2 * i + 1];
         }
     }
-    sum[0] = sx;
-    sum[1] = sy;
+    sum[0] = (acc[0] + acc[2]) + (acc[4] + acc[6]);
+    sum[1] = (acc[1] + acc[3]) + (acc[5] + acc[7]);
     return 0;
 }
 

@@ -10,11 +10,15 @@
 **
 ** Objects are immutable: every operation returns a new curve which the
 ** caller releases with cf_bezier_destroy (destroy(NULL) is harmless).
-** Evaluation never allocates.
+** Evaluation (eval*, decasteljau, tangent, normal, curvature) never
+** allocates; bbox, length, closest and flatten use a work buffer and may
+** return CF_STATUS_NO_MEMORY.
 **
-** Parameters.  The domain is [0, 1].  Evaluators accept any finite t in
-** [0, 1] and return CF_STATUS_DOMAIN otherwise; split points must lie in the
-** open interval (0, 1).
+** Parameters.  The domain is [0, 1].  Evaluators accept any t in [0, 1];
+** they return CF_STATUS_NOT_FINITE for NaN or infinite t and
+** CF_STATUS_DOMAIN for other t outside [0, 1]; split points must lie in the
+** open interval (0, 1).  Functions without a diag argument report NULL
+** pointers and negative orders as CF_STATUS_INVALID_ARG.
 */
 #ifndef CURVEFIG_BEZIER_H
 #define CURVEFIG_BEZIER_H
@@ -73,7 +77,8 @@ cf_status_t cf_bezier_eval_many(const cf_bezier_t *c, const double *t,
                                 size_t n, double *out);
 
 /* out[(k + 1) * dim] = c(t), c'(t), ..., c^(k)(t).  Exact for rational
-** curves (quotient rule on the homogeneous derivatives).  k >= 0. */
+** curves (quotient rule on the homogeneous derivatives).
+** 0 <= k <= CF_BEZIER_MAX_DEGREE (BAD_DEGREE above). */
 cf_status_t cf_bezier_eval_derivs(const cf_bezier_t *c, double t, int k,
                                   double *out);
 
@@ -106,7 +111,8 @@ cf_status_t cf_bezier_curvature(const cf_bezier_t *c, double t,
 /* The k-th derivative as a curve: polynomial: the hodograph of degree n - k
 ** with Q_i = n (P_{i+1} - P_i) (applied k times; a single zero point when
 ** k > n).  Rational: an exact rational curve of degree 2n (per derivative)
-** with weights w(t)^2, so that its evaluation is c'(t). */
+** with weights w(t)^2, so that its evaluation is c'(t); BAD_DEGREE when
+** n 2^k exceeds CF_BEZIER_MAX_DEGREE. */
 cf_status_t cf_bezier_derivative(const cf_bezier_t *c, int k,
                                  cf_bezier_t **out, cf_diag_t *diag);
 
@@ -117,7 +123,8 @@ cf_status_t cf_bezier_split(const cf_bezier_t *c, double t,
                             cf_diag_t *diag);
 
 /* Allocation-free split into caller buffers of (degree + 1) * (dim +
-** rational) doubles each (homogeneous layout, like cf_bezier_hpoints). */
+** rational) doubles each (homogeneous layout, like cf_bezier_hpoints).
+** The two buffers must be different (INVALID_ARG otherwise). */
 cf_status_t cf_bezier_split_into(const cf_bezier_t *c, double t,
                                  double *left_hpoints, double *right_hpoints);
 
@@ -140,30 +147,43 @@ cf_status_t cf_bezier_elevate(const cf_bezier_t *c, int r, cf_bezier_t **out,
                               cf_diag_t *diag);
 
 /* Degree reduction by one (n >= 1) that keeps both end points; *max_error
-** (may be NULL) receives the maximum distance between the two curves,
-** measured at parameters dense enough to be reliable. */
+** (may be NULL) receives the maximum distance |c(t) - r(t)| between the two
+** curves, measured at 64 (n + 1) + 1 evenly spaced parameters.  The control
+** points invert elevation from both ends and blend linearly (weight
+** i / (n - 1) on the backward solution).  Degree 1 gives the midpoint (the
+** ends cannot both be kept).  Rational curves are reduced homogeneously;
+** CF_STATUS_DEGENERATE (naming the index) if a weight comes out <= 0. */
 cf_status_t cf_bezier_reduce(const cf_bezier_t *c, cf_bezier_t **out,
                              double *max_error, cf_diag_t *diag);
 
 /* ---- geometry ----------------------------------------------------------- */
 
 /* Tight axis-aligned box of the curve (not of the control points): from the
-** end points and the roots of the derivative.  lo[dim], hi[dim]. */
+** end points and the roots of the derivative (of its numerator A'w - Aw'
+** for rational curves; BAD_DEGREE for rational degree > 512).
+** lo[dim], hi[dim]. */
 cf_status_t cf_bezier_bbox(const cf_bezier_t *c, double *lo, double *hi);
 
-/* Arc length on [0, 1] with absolute error <= tol (tol > 0). */
+/* Arc length on [0, 1] with absolute error <= tol (tol > 0): adaptive
+** 8/16-point Gauss-Legendre, the difference of the two rules as the error
+** estimate.  NO_CONVERGENCE after 50 halvings. */
 cf_status_t cf_bezier_length(const cf_bezier_t *c, double tol,
                              double *length);
 
 /* Closest point of the curve to p[dim]: parameter, and distance (either
-** pointer may be NULL).  Global: every local minimum is considered. */
+** pointer may be NULL).  Global: the end points and every root of
+** (c(t) - p) . c'(t) (found in the Bernstein form by subdivision) are
+** compared.  BAD_DEGREE above degree 512 (rational: 341). */
 cf_status_t cf_bezier_closest(const cf_bezier_t *c, const double *p,
                               double *t, double *distance);
 
 /* Flatten to a polyline whose distance from the curve is <= tol.  The
 ** callback receives each vertex (dim doubles, Cartesian) and its parameter,
 ** starting with c(0) and ending with c(1); a non-zero return stops the walk
-** and is returned as CF_STATUS_INVALID_ARG. */
+** and is returned as CF_STATUS_INVALID_ARG.  Pieces are halved (de
+** Casteljau) until every control point is within tol of the chord, which
+** bounds the curve's distance by the convex hull property (rational curves
+** too: their Cartesian control points are used). */
 typedef int (*cf_point_func_t)(void *closure, const double *point, double t);
 cf_status_t cf_bezier_flatten(const cf_bezier_t *c, double tol,
                               cf_point_func_t func, void *closure);
@@ -182,8 +202,10 @@ typedef struct cf_cubics {
 } cf_cubics_t;
 
 /* Polynomial curves of degree <= 3: exact (one segment, degree raised).
-** Otherwise adaptive fitting with end points and end tangents matched,
-** splitting until the measured distance is <= tol (tol > 0). */
+** Otherwise adaptive fitting with end points and end tangents matched
+** (cubic Hermite), halving until the distance measured at 47 interior
+** parameters per segment is <= tol (tol > 0); max_error is the largest
+** measured distance.  NO_CONVERGENCE after 40 halvings. */
 cf_status_t cf_bezier_to_cubics(const cf_bezier_t *c, double tol,
                                 cf_cubics_t **out, cf_diag_t *diag);
 void cf_cubics_destroy(cf_cubics_t *cubics);

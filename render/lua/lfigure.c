@@ -59,13 +59,25 @@ labels_on(lua_State *L)
     return !off;
 }
 
+/* Raise an error for a failed call: the message of diag if it has one,
+** otherwise the figure's (the figure functions keep their message in the
+** figure, like cairo). */
 static int
-check(lua_State *L, const char *fn, cf_status_t st, const cf_diag_t *diag)
+check_(lua_State *L, const char *fn, const cf_figure_t *fig, cf_status_t st,
+       const cf_diag_t *diag)
 {
-    if (st != CF_STATUS_OK)
+    cf_diag_t fd;
+    if (st == CF_STATUS_OK)
+        return 0;
+    if (diag != NULL && diag->status != CF_STATUS_OK && diag->msg[0] != '\0')
         return cf__lua_fail(L, fn, st, diag);
-    return 0;
+    cf_diag_clear(&fd);
+    if (fig != NULL)
+        cf_figure_status(fig, &fd);
+    return cf__lua_fail(L, fn, st, &fd);
 }
+
+#define check(L, fn, call, diag) check_((L), (fn), fig, (call), (diag))
 
 /* ---- options ------------------------------------------------------------ */
 
@@ -504,9 +516,12 @@ read_frame(lua_State *L, cf_figure_t *fig)
     if (cf__lua_field(L, 1, "theme") != LUA_TNIL) {
         cf_theme_t th;
         cf_diag_clear(&diag);
-        if (cf_theme_get(luaL_checkstring(L, -1), &th, &diag) ||
-            cf_figure_set_theme(fig, &th))
+        if (cf_theme_get(luaL_checkstring(L, -1), &th, &diag))
             luaL_error(L, "figure: theme: %s", diag.msg);
+        if (cf_figure_set_theme(fig, &th) != CF_STATUS_OK) {
+            cf_figure_status(fig, &diag);
+            luaL_error(L, "figure: theme: %s", diag.msg);
+        }
     }
     lua_pop(L, 1);
     if (cf__lua_field(L, 1, "window") != LUA_TNIL) {
@@ -570,14 +585,14 @@ l_figure(lua_State *L)
     lua_pushvalue(L, 3);
     lua_setiuservalue(L, -2, 2);
     cf_diag_clear(&diag);
-    check(L, "figure", cf_figure_create(w, h, CF_UNIT_BP, &b->fig, &diag),
+    check_(L, "figure", b->fig, cf_figure_create(w, h, CF_UNIT_BP, &b->fig, &diag),
           &diag);
     cf__lua_field(L, 1, "title");
-    check(L, "figure", cf_figure_set_title(b->fig, luaL_optstring(L, -1,
+    check_(L, "figure", b->fig, cf_figure_set_title(b->fig, luaL_optstring(L, -1,
                                                                   name)),
           NULL);
     lua_pop(L, 1);
-    check(L, "figure", cf_figure_set_caption(b->fig, caption), NULL);
+    check_(L, "figure", b->fig, cf_figure_set_caption(b->fig, caption), NULL);
     read_frame(L, b->fig);
     read_projection(L, b->fig);
     lua_getfield(L, LUA_REGISTRYINDEX, FIGURES_KEY);

@@ -1,0 +1,223 @@
+/*
+** The script runner in-process (render/lua/script.h): its API, the limits,
+** the allocator hand-over, and a seeded mutation fuzz of a figure script
+** (every mutant must end with OK or a script error, never a crash; run
+** under ASan/UBSan in CI).
+*/
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "curvefig/figure.h"
+#include "script.h"
+#include "testutil.h"
+
+static FILE *sink;
+
+static cf_script_t *
+new_script(size_t mib, unsigned long long instructions)
+{
+    cf_script_limits_t lim = { mib << 20, instructions };
+    cf_script_t *s = NULL;
+    cf_diag_t diag;
+    cf_diag_clear(&diag);
+    assert_int_equal(cf_script_create(&lim, sink, &s, &diag), CF_STATUS_OK);
+    assert_non_null(s);
+    return s;
+}
+
+static void
+test_api_and_figures(void **state)
+{
+    cf_script_t *s;
+    (void)state;
+    cf_script_destroy(NULL);
+    assert_int_equal(cf_script_create(NULL, NULL, NULL, NULL),
+                     CF_STATUS_INVALID_ARG);
+    assert_int_equal(cf_script_figure_count(NULL), 0);
+    assert_string_equal(cf_script_error(NULL), "");
+    s = new_script(64, 10000000);
+    assert_int_equal(cf_script_run_string(NULL, "x = 1", "a"),
+                     CF_STATUS_INVALID_ARG);
+    assert_int_equal(cf_script_run_string(s,
+        "local f = figure{ name = 'a', caption = 'first' }\n"
+        "f:curve(bezier{ {0, 0}, {1, 1}, {2, 0} })\n"
+        "figure{ name = 'b' }\n", "two.lua"), CF_STATUS_OK);
+    assert_int_equal(cf_script_figure_count(s), 2);
+    assert_string_equal(cf_script_figure_name(s, 0), "a");
+    assert_string_equal(cf_script_figure_caption(s, 0), "first");
+    assert_string_equal(cf_script_figure_name(s, 1), "b");
+    assert_string_equal(cf_script_figure_caption(s, 1), "");
+    assert_non_null(cf_script_figure(s, 0));
+    assert_int_equal(cf_figure_status(cf_script_figure(s, 0), NULL),
+                     CF_STATUS_OK);
+    assert_null(cf_script_figure(s, 2));
+    /* a second chunk in the same state sees the first one's figures */
+    assert_int_equal(cf_script_run_string(s, "figure{ name = 'a' }",
+                                          "dup.lua"), CF_STATUS_SCRIPT);
+    assert_non_null(strstr(cf_script_error(s), "dup.lua:1: figure: a figure "
+                                               "named \"a\" is already"));
+    cf_script_destroy(s);
+}
+
+static void
+test_error_messages(void **state)
+{
+    cf_script_t *s;
+    (void)state;
+    s = new_script(64, 10000000);
+    assert_int_equal(cf_script_run_string(s, "\n\nlocal c = bezier{}\n",
+                                          "e.lua"), CF_STATUS_SCRIPT);
+    assert_string_equal(cf_script_error(s), "e.lua:3: bezier: 0 points "
+                                            "given, at least 1 needed");
+    assert_int_equal(cf_script_run_string(s, "#!/usr/bin/env curvefig\n"
+                                             "error('here')", "sh.lua"),
+                     CF_STATUS_SCRIPT);
+    assert_string_equal(cf_script_error(s), "sh.lua:2: here");
+    assert_int_equal(cf_script_run_string(s, "local s = bspline{ degree = 2,"
+                                             " knots = {0, 1}, points = "
+                                             "{{0, 0}, {1, 1}, {2, 0}} }",
+                                          "k.lua"), CF_STATUS_SCRIPT);
+    assert_non_null(strstr(cf_script_error(s), "k.lua:1: bspline: 2 knots "
+                                               "given, degree 2 with 3 "
+                                               "points needs 6"));
+    assert_int_equal(cf_script_run_file(s, "/nonexistent/x.lua"),
+                     CF_STATUS_IO);
+    assert_string_equal(cf_script_error(s), "cannot open /nonexistent/x.lua");
+    cf_script_destroy(s);
+}
+
+static void
+test_limits(void **state)
+{
+    cf_script_t *s;
+    (void)state;
+    s = new_script(8, 1000000);
+    assert_int_equal(cf_script_run_string(s, "while true do end", "l.lua"),
+                     CF_STATUS_SCRIPT);
+    assert_string_equal(cf_script_error(s), "l.lua:1: script exceeded the "
+                                            "instruction limit of 1000000 "
+                                            "instructions");
+    cf_script_destroy(s);
+    s = new_script(8, 1000000000);
+    /* memory through the curve library counts too: degree elevation of a
+    ** curve in R^64 allocates 1025 * 65 doubles per curve, kept alive */
+    assert_int_equal(cf_script_run_string(s,
+        "local P = {}\n"
+        "for i = 1, 2 do local p = {} for k = 1, 64 do p[k] = k end P[i] = p end\n"
+        "local keep = {}\n"
+        "for i = 1, 1e6 do keep[i] = bezier(P):elevate(1000) end\n",
+        "m.lua"), CF_STATUS_SCRIPT);
+    assert_non_null(strstr(cf_script_error(s), "m.lua:4: "));
+    assert_non_null(strstr(cf_script_error(s), "memory limit of 8 MiB"));
+    cf_script_destroy(s);
+}
+
+/* The script installs its budget as the library's allocator and puts the
+** previous one back when it is destroyed. */
+static void
+test_allocator_restored(void **state)
+{
+    cf_allocator_t before, during, after;
+    cf_script_t *s;
+    (void)state;
+    cf_get_allocator(&before);
+    s = new_script(16, 1000000);
+    cf_get_allocator(&during);
+    assert_true(during.realloc != before.realloc || during.ud != before.ud);
+    cf_script_destroy(s);
+    cf_get_allocator(&after);
+    assert_true(after.realloc == before.realloc && after.ud == before.ud);
+}
+
+static const char fuzz_seed[] =
+    "local c = bezier{ {0, 0}, {1, 2}, {3, 2}, {4, 0} }\n"
+    "local s = bspline{ degree = 2, knots = {0, 0, 0, 0.5, 1, 1, 1},\n"
+    "                   points = {{0, 0}, {1, 1}, {2, 0}, {3, 1}} }\n"
+    "local f = figure{ name = 'z', width = '5cm', height = '4cm' }\n"
+    "f:polygon(c, { labels = 'P_%d' }):curve(c):curve(s)\n"
+    "f:decasteljau(c, 0.5, { point = true }):deboor(s, 0.25)\n"
+    "f:knots(s):hull(c):tangent(c, 0.3):arrow({0, 0}, {1, 1})\n"
+    "local l, r = c:split(0.4)\n"
+    "print(l:eval(0.5)[1], s:insert_knot(0.75):count(), #s:to_beziers())\n"
+    "f:plot{ x = {0, 1}, y = {0, 1}, knots = {0, 0.5, 1} }\n"
+    "f:basis(s, 1):bernstein(3, 1):func(function(x) return x end, 0, 1)\n";
+
+/* Seeded mutations: replace, insert or delete a few bytes (digits, signs,
+** brackets, quotes, letters) of the seed script. */
+static void
+test_fuzz_mutations(void **state)
+{
+    static const char alphabet[] = "0123456789-+.e{}()[],'\"=_%:#xyn \n";
+    tu_rng rng;
+    char buf[sizeof fuzz_seed + 64];
+    int ok = 0, failed = 0;
+    (void)state;
+    tu_rng_seed(&rng, 20261122);
+    for (int iter = 0; iter < 400; iter++) {
+        size_t len = strlen(fuzz_seed);
+        cf_script_t *s;
+        cf_status_t st;
+        int edits = 1 + (int)(tu_rng_next(&rng) % 4);
+        memcpy(buf, fuzz_seed, len + 1);
+        for (int e = 0; e < edits; e++) {
+            size_t pos = (size_t)(tu_rng_next(&rng) % len);
+            char ch = alphabet[tu_rng_next(&rng) % (sizeof alphabet - 1)];
+            switch (tu_rng_next(&rng) % 3) {
+            case 0:
+                buf[pos] = ch;
+                break;
+            case 1:
+                if (len + 1 < sizeof buf) {
+                    memmove(buf + pos + 1, buf + pos, len - pos + 1);
+                    buf[pos] = ch;
+                    len++;
+                }
+                break;
+            default:
+                memmove(buf + pos, buf + pos + 1, len - pos);
+                len--;
+                break;
+            }
+        }
+        s = new_script(32, 5000000);
+        st = cf_script_run_string(s, buf, "fuzz.lua");
+        if (st == CF_STATUS_OK) {
+            ok++;
+        } else {
+            assert_int_equal(st, CF_STATUS_SCRIPT);
+            assert_true(strlen(cf_script_error(s)) > 0);
+            failed++;
+        }
+        cf_script_destroy(s);
+    }
+    /* both outcomes occur: the mutations are neither all harmless nor all
+    ** fatal */
+    assert_true(ok > 0 && failed > 0);
+}
+
+int
+main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_api_and_figures),
+        cmocka_unit_test(test_error_messages),
+        cmocka_unit_test(test_limits),
+        cmocka_unit_test(test_allocator_restored),
+        cmocka_unit_test(test_fuzz_mutations),
+    };
+    int rc;
+    sink = fopen("/dev/null", "w");
+    if (sink == NULL)
+        return 1;
+    rc = cmocka_run_group_tests(tests, NULL, NULL);
+    fclose(sink);
+    return rc;
+}

@@ -311,6 +311,13 @@ test_bernstein_approximation(void **state)
     assert_int_equal(cf_bernstein_approx_curve(f_bad, NULL, 4, &c, NULL),
                      CF_STATUS_NOT_FINITE);
     assert_null(c);
+    /* out of memory: NO_MEMORY, nothing left behind */
+    tu_fail_alloc_after(1);
+    assert_int_equal(cf_bernstein_approx_curve(f_sin, NULL, 4, &c, NULL),
+                     CF_STATUS_NO_MEMORY);
+    assert_null(c);
+    assert_int_equal(tu_alloc_live(), 0);
+    tu_fail_alloc_reset();
 }
 
 static void

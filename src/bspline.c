@@ -79,6 +79,18 @@ cf__bspline_finish(cf_bspline_t *c)
     atomic_init(&c->accel, 0);
 }
 
+/* The grid cell of u (the same expression at build and query time). */
+static inline size_t
+cell_of(const cf_bspline_t *c, double u)
+{
+    long G = (long)c->ngrid;
+    /* a signed conversion (cvttsd2si) and clamps, no branches */
+    long g = (long)((u - c->a) * c->ginv);
+    g = g < 0 ? 0 : g;
+    g = g < G - 1 ? g : G - 1;
+    return (size_t)g;
+}
+
 static void
 build_accel(cf_bspline_t *c)
 {
@@ -116,20 +128,37 @@ build_accel(cf_bspline_t *c)
     c->gsteps = 0;
     while (((size_t)1 << c->gsteps) <= maxw)
         c->gsteps++;
-    /* the exact cells: span at the start, and the one knot inside (the
-    ** search checks its answer, so rounding at cell edges is harmless) */
+    /* exact cells: cell_of is monotone in u, so an interior break point
+    ** (a knot strictly inside the domain, multiplicity 1 required here)
+    ** in an earlier cell lies below every u of cell g, one in a later
+    ** cell above it; only a break point in cell g itself is compared with
+    ** u, and at most one may fall in each cell */
     c->splitok = true;
-    k = c->first_span;
-    for (size_t g = 0; g < G; g++) {
-        double x0 = c->a + (double)g * h, x1 = c->a + (double)(g + 1) * h;
-        while (k < c->last_span && U[k + 1] <= x0)
-            k++;
-        c->grid[g] = (uint32_t)k;
-        c->gsplit[g] = INFINITY;
-        if (k < c->last_span && U[k + 1] < x1) {
-            c->gsplit[g] = U[k + 1];
-            if (k + 1 < c->last_span && U[k + 2] < x1)
+    {
+        size_t g = 0, kk = c->first_span;
+        for (size_t j = c->first_span + 1; j <= c->last_span; j++) {
+            size_t gj;
+            if (U[j] == U[j - 1]) {
                 c->splitok = false;
+                break;
+            }
+            gj = cell_of(c, U[j]);
+            if (gj < g) {   /* a second break point in cell gj */
+                c->splitok = false;
+                break;
+            }
+            for (; g < gj; g++) {
+                c->grid[g] = (uint32_t)kk;
+                c->gsplit[g] = INFINITY;
+            }
+            c->grid[gj] = (uint32_t)kk;
+            c->gsplit[gj] = U[j];
+            g = gj + 1;
+            kk = j;
+        }
+        for (; c->splitok && g < G; g++) {
+            c->grid[g] = (uint32_t)kk;
+            c->gsplit[g] = INFINITY;
         }
     }
     if (!c->splitok) {
@@ -166,16 +195,13 @@ cf__bspline_accel(const cf_bspline_t *cc)
 
 /* Branch-free span search through the grid (the conventions of
 ** cf_knots_find_span for u in the domain). */
-/* With one knot per cell at most: the span at the cell's start, plus one
-** when u has passed the cell's knot; two independent loads.  The caller
-** checks U[k] <= u < U[k+1] (it needs those knots anyway). */
+/* With one break point per cell at most: the span below the cell's break
+** point, plus one when u has reached it; two independent loads, exact
+** (see build_accel). */
 CF__INLINE size_t
 split_span(const cf_bspline_t *c, double u)
 {
-    long G = (long)c->ngrid;
-    long g = (long)((u - c->a) * c->ginv);
-    g = g < 0 ? 0 : g;
-    g = g < G - 1 ? g : G - 1;
+    size_t g = cell_of(c, u);
     return c->grid[g] + (size_t)(u >= c->gsplit[g]);
 }
 
@@ -185,12 +211,8 @@ grid_span(const cf_bspline_t *c, double u)
     const double *U = c->U;
     size_t last = c->last_span, k, s;
     long G = (long)c->ngrid, g;
-    if (c->splitok) {
-        k = split_span(c, u);
-        if (CF__UNLIKELY((int)(u >= U[k]) + (int)(u < U[k + 1]) != 2))
-            k = cf__bspline_span(c, u);   /* a rounded cell edge, or u = b */
-        return k;
-    }
+    if (c->splitok)
+        return split_span(c, u);
     /* a signed conversion (cvttsd2si) and clamps, no branches */
     g = (long)((u - c->a) * c->ginv);
     g = g < 0 ? 0 : g;

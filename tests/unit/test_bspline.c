@@ -308,6 +308,78 @@ test_eval_many_without_accelerators(void **state)
     }
 }
 
+/* The batch span search is exact: the p-th derivative is constant on
+** each span and jumps at a simple knot, so a span off by one shows.  At
+** every knot (the right piece), just below it (the left piece), and at
+** random parameters, in random order, against the bisection of
+** cf_bspline_eval_derivs. */
+static void
+test_batch_span_search_exact(void **state)
+{
+    tu_rng r;
+    enum { NP = 400 };
+    double u[NP], D[NP * 2], E[12];
+    (void)state;
+    tu_rng_seed(&r, 8080);
+    for (int trial = 0; trial < 40; trial++) {
+        int p = 1 + trial % 4;
+        size_t count = (size_t)p + 5 + (size_t)(tu_rng_u01(&r) * 40), np = 0;
+        cf_bspline_t *c = NULL;
+        double *U = malloc((count + (size_t)p + 1) * sizeof *U);
+        double *P = malloc(2 * count * sizeof *P), a, b;
+        size_t nk = count + (size_t)p + 1;
+        /* clamped, interior knots simple (uniform for some trials) */
+        for (size_t i = 0; i < nk; i++) {
+            if (i <= (size_t)p)
+                U[i] = 0.0;
+            else if (i >= count)
+                U[i] = 1.0;
+            else
+                U[i] = trial % 3 == 0
+                       ? (double)(i - (size_t)p) / (double)(count - (size_t)p)
+                       : U[i - 1] + tu_rng_range(&r, 0.01, 1.0);
+        }
+        if (trial % 3 != 0) {
+            double top = U[count - 1] + tu_rng_range(&r, 0.01, 1.0);
+            for (size_t i = count; i < nk; i++)
+                U[i] = top;
+        }
+        for (size_t i = 0; i < 2 * count; i++)
+            P[i] = tu_rng_range(&r, -1, 1);
+        assert_int_equal(cf_bspline_create(2, p, U, nk, P, count, NULL, &c,
+                                           NULL), 0);
+        cf_bspline_domain(c, &a, &b);
+        for (size_t i = (size_t)p; i <= count && np + 2 <= NP; i++) {
+            u[np++] = U[i];
+            if (U[i] > a)
+                u[np++] = nextafter(U[i], -INFINITY);
+        }
+        while (np < NP)
+            u[np++] = a + (b - a) * tu_rng_u01(&r);
+        for (size_t i = NP - 1; i > 0; i--) {
+            size_t j = (size_t)(tu_rng_u01(&r) * (double)(i + 1));
+            double t = u[i];
+            u[i] = u[j];
+            u[j] = t;
+        }
+        assert_int_equal(cf_bspline_eval_deriv_many(c, p, u, NP, D), 0);
+        for (size_t i = 0; i < NP; i++) {
+            assert_int_equal(cf_bspline_eval_derivs(c, u[i], p, E), 0);
+            /* the p-th derivative reaches p! / h^p ~ 1e4..1e8 here; a
+            ** different span changes it by O(1) of its size */
+            for (int d = 0; d < 2; d++) {
+                double want = E[2 * p + d];
+                if (fabs(D[2 * i + d] - want) > 1e-9 * (1.0 + fabs(want)))
+                    fail_msg("trial %d: u = %.17g: %.17g vs %.17g", trial,
+                             u[i], D[2 * i + d], want);
+            }
+        }
+        cf_bspline_destroy(c);
+        free(U);
+        free(P);
+    }
+}
+
 /* The W3 curve of the benchmarks: uniform knots, sorted and random
 ** parameters, against de Boor. */
 static void
@@ -1467,6 +1539,7 @@ main(void)
         cmocka_unit_test(test_eval_many_matches_deboor),
         cmocka_unit_test(test_eval_many_w3_shape),
         cmocka_unit_test(test_eval_many_without_accelerators),
+        cmocka_unit_test(test_batch_span_search_exact),
         cmocka_unit_test(test_derivatives_central_differences),
         cmocka_unit_test(test_continuity_at_multiple_knots),
         cmocka_unit_test(test_deboor_net),

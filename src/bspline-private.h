@@ -16,9 +16,13 @@
 **   rk[(j - 1) * nknots + a] = 1 / (U[a + j] - U[a]) (0 when they are
 **   equal), j = 1..p, a + j < nknots: every denominator of the triangular
 **   scheme and of the derivative recursion.
-**   grid[g]: a span k with U[k] <= u for every u of the cells g - 1 .. g
-**   (cell g = [a + g h, a + (g + 1) h), h = (b - a) / ngrid); a branch-free
-**   bisection of gsteps steps from there finds the span.
+**   Cells: g = clamp((long)((u - a) * ginv), 0, ngrid - 1), monotone in u.
+**   splitok (every cell holds at most one interior break point, all of
+**   multiplicity 1): grid[g] is the span just below the cell's break point
+**   gsplit[g] (+inf if none) and the span is grid[g] + (u >= gsplit[g]),
+**   exact.  Otherwise grid[g] is the span of a + (g - 1/2) h (a span with
+**   U[k] <= u for every u of cells g - 1 .. g), and a branch-free bisection
+**   of gsteps steps from there finds the span.
 ** The accelerators (rk, grid, ginv, gsteps) are filled lazily by the first
 ** batch evaluation (their memory is part of the block, so nothing is
 ** allocated then): accel goes 0 -> 1 (one thread builds) -> 2 (ready,
@@ -39,8 +43,8 @@ struct cf_bspline {
     double *P;
     double *rk;
     uint32_t *grid;
-    double *gsplit;    /* ngrid: the knot inside cell g, +inf if none */
-    bool splitok;      /* every cell holds at most one knot */
+    double *gsplit;    /* ngrid: the break point in cell g, +inf if none */
+    bool splitok;      /* the exact one-break-point cells are in use */
     size_t ngrid;
     double ginv;       /* ngrid / (b - a) */
     int gsteps;

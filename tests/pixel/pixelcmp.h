@@ -9,7 +9,10 @@
 ** forgiven when it is an anti-aliasing pixel: each image's colour lies
 ** within the colour range of the other image's neighbourhood of radius
 ** `aa_radius` (an edge drawn a fraction of a pixel elsewhere by another
-** rasteriser gives intermediate colours; a moved stroke does not).  Pixels still over
+** rasteriser gives intermediate colours; a moved stroke does not), or
+** when the two images carry the same ink around it: their mean colours
+** over that neighbourhood are within the threshold (a one-pixel line put
+** on one row by one rasteriser and over two half rows by the other).  Pixels still over
 ** the threshold are counted; the images match when that count is at most
 ** `max_bad_pixels`.
 */
@@ -36,6 +39,7 @@ typedef struct pc_result {
     long bad_pixels;         /* over threshold and not forgiven */
     long aa_pixels;          /* over threshold but forgiven as AA */
     double max_delta;        /* largest normalised distance seen */
+    int bad_x[4], bad_y[4];  /* where the first bad pixels are */
     int match;
 } pc_result;
 

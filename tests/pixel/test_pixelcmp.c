@@ -62,6 +62,17 @@ curve_colour(cairo_t *cr, double red)
     cairo_stroke(cr);
 }
 
+/* a horizontal hairline on a pixel row, or spread over two half rows */
+static void
+hairline(cairo_t *cr, double y)
+{
+    cairo_set_source_rgb(cr, 0.3, 0.3, 0.3);
+    cairo_set_line_width(cr, 1.0);
+    cairo_move_to(cr, 5, y);
+    cairo_line_to(cr, 75, y);
+    cairo_stroke(cr);
+}
+
 static int
 compare(cairo_surface_t *a, cairo_surface_t *b, pc_result *r)
 {
@@ -113,6 +124,24 @@ test_subpixel_shift_is_antialiasing(void **state)
 }
 
 static void
+test_half_pixel_line_placement_is_same_ink(void **state)
+{
+    pc_result r;
+    cairo_surface_t *a = draw(hairline, 30.5), *b = draw(hairline, 30.0);
+    (void)state;
+    assert_true(compare(a, b, &r));
+    assert_false(r.identical);
+    cairo_surface_destroy(a);
+    cairo_surface_destroy(b);
+    /* but a line two pixels away is a different picture */
+    a = draw(hairline, 30.5);
+    b = draw(hairline, 32.5);
+    assert_false(compare(a, b, &r));
+    cairo_surface_destroy(a);
+    cairo_surface_destroy(b);
+}
+
+static void
 test_two_pixel_move_fails(void **state)
 {
     /* 1 pt at the 144 dpi of the pixel tests is 2 pixels */
@@ -158,6 +187,7 @@ main(void)
         cmocka_unit_test(test_delta_scale),
         cmocka_unit_test(test_identical_takes_fast_path),
         cmocka_unit_test(test_subpixel_shift_is_antialiasing),
+        cmocka_unit_test(test_half_pixel_line_placement_is_same_ink),
         cmocka_unit_test(test_two_pixel_move_fails),
         cmocka_unit_test(test_colour_change_fails),
         cmocka_unit_test(test_size_mismatch),

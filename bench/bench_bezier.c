@@ -11,8 +11,11 @@ const bench_workload *bench_bezier_table(void);
 
 enum {
     CURVES = 1000,
-    PARAMS = 10000
+    PARAMS = 10000,
+    CHUNK = 1000      /* parameters per call: the output stays in L1 */
 };
+_Static_assert(PARAMS % CHUNK == 0 && (2 * CHUNK) % 8 == 0,
+               "chunks must tile the parameters and the partial sums");
 
 typedef struct bez_state {
     cf_bezier_t *c[CURVES];
@@ -80,14 +83,14 @@ setup_deg7(void)
     return bez_setup(7, 1002);
 }
 
-/* Sum of x and of y over the PARAMS interleaved points (2 PARAMS doubles,
-** a multiple of 8): eight partial sums over contiguous doubles, the even
+/* Sum of x and of y over CHUNK interleaved points (2 CHUNK doubles, a
+** multiple of 8): eight partial sums over contiguous doubles, the even
 ** ones x and the odd ones y, so that the additions are independent. */
 static void
 add_sums(const double *p, double sum[2])
 {
     double a[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
-    for (size_t i = 0; i < 2 * PARAMS; i += 8)
+    for (size_t i = 0; i < 2 * CHUNK; i += 8)
         for (int k = 0; k < 8; k++)
             a[k] += p[i + (size_t)k];
     sum[0] += ((a[0] + a[2]) + (a[4] + a[6]));
@@ -99,12 +102,13 @@ run_eval(void *p, double sum[2])
 {
     bez_state *st = p;
     sum[0] = sum[1] = 0.0;
-    for (int i = 0; i < CURVES; i++) {
-        if (cf_bezier_eval_many(st->c[i], st->t, PARAMS, st->out) !=
-            CF_STATUS_OK)
-            return 1;
-        add_sums(st->out, sum);
-    }
+    for (int i = 0; i < CURVES; i++)
+        for (int j = 0; j < PARAMS; j += CHUNK) {
+            if (cf_bezier_eval_many(st->c[i], st->t + j, CHUNK, st->out) !=
+                CF_STATUS_OK)
+                return 1;
+            add_sums(st->out, sum);
+        }
     return 0;
 }
 
@@ -113,12 +117,13 @@ run_deriv(void *p, double sum[2])
 {
     bez_state *st = p;
     sum[0] = sum[1] = 0.0;
-    for (int i = 0; i < CURVES; i++) {
-        if (cf_bezier_eval_deriv_many(st->c[i], 1, st->t, PARAMS,
-                                      st->out) != CF_STATUS_OK)
-            return 1;
-        add_sums(st->out, sum);
-    }
+    for (int i = 0; i < CURVES; i++)
+        for (int j = 0; j < PARAMS; j += CHUNK) {
+            if (cf_bezier_eval_deriv_many(st->c[i], 1, st->t + j, CHUNK,
+                                          st->out) != CF_STATUS_OK)
+                return 1;
+            add_sums(st->out, sum);
+        }
     return 0;
 }
 

@@ -380,12 +380,12 @@ item_label(lua_State *L, int opts, size_t i, const lua_Integer *args,
 }
 
 /* Labels for n points at pts (2D) from opts (labels, label_start,
-** label_place, label_color, label_size, label_offset). */
+** label_place: one place or a table of places, label_style). */
 static void
 label_points(lua_State *L, cf_figure_t *fig, int opts, const double *pts,
              size_t n, const char *fn)
 {
-    cf_style_t ls;
+    cf_style_t base;
     lua_Integer start;
     cf_diag_t diag;
     int top = lua_gettop(L);
@@ -397,18 +397,25 @@ label_points(lua_State *L, cf_figure_t *fig, int opts, const double *pts,
         return;
     }
     lua_settop(L, top);
-    read_sub_style(L, opts, "label_style", fn, fig, &ls);
-    if (cf__lua_field(L, opts, "label_place") != LUA_TNIL) {
-        cf_diag_clear(&diag);
-        if (cf_place_from_name(luaL_checkstring(L, -1), &ls.place, &diag))
-            luaL_error(L, "%s: label_place: %s", fn, diag.msg);
-        ls.set |= CF_STYLE_PLACE;
-    }
-    lua_settop(L, top);
+    read_sub_style(L, opts, "label_style", fn, fig, &base);
     start = (lua_Integer)opt_number(L, opts, "label_start", fn, 0, NULL);
     for (size_t i = 0; i < n; i++) {
         lua_Integer arg = start + (lua_Integer)i;
+        cf_style_t ls = base;
         const char *text = item_label(L, opts, i, &arg, 1);
+        /* label_place: one place for all, or a table with one per point */
+        int t = cf__lua_field(L, opts, "label_place");
+        if (t == LUA_TTABLE)
+            t = lua_geti(L, -1, (lua_Integer)i + 1);
+        if (t == LUA_TSTRING) {
+            cf_diag_clear(&diag);
+            if (cf_place_from_name(lua_tostring(L, -1), &ls.place, &diag))
+                luaL_error(L, "%s: label_place: %s", fn, diag.msg);
+            ls.set |= CF_STYLE_PLACE;
+        } else if (t != LUA_TNIL) {
+            luaL_error(L, "%s: label_place is a place (\"ne\") or a table "
+                       "of places, one per point", fn);
+        }
         if (text != NULL) {
             cf_diag_clear(&diag);
             check(L, fn, cf_figure_add_label(fig, pts[2 * i], pts[2 * i + 1],

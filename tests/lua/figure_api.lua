@@ -23,7 +23,7 @@ f:hull(c, { fill = "#ddeeff", opacity = 0.8 })
                         levels = 4, point = true })
 f:window()
 local g = figure{ name = "api-bspline", aspect = true }
-g:polygon(s, { labels = "P_%d", label_start = 0 })
+g:polygon(s, { labels = "P_%d", label_start = 0, label_place = { "s", "se", "e" } })
  :curve(s)
  :knots(s, { labels = "u_%d", color = "red", marker = "tick" })
  :deboor(s, 0.5, { colors = { "grey", "blue", "green" }, labels = "P_{%d,%d}" })

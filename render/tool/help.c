@@ -17,6 +17,7 @@ static const char *const overview[] = {
     "  render SCRIPT.lua   write every figure the script defines\n",
     "  run SCRIPT.lua      run the script for what it prints (computations)\n",
     "  list SCRIPT.lua     print the names of the figures the script defines\n",
+    "                      (one per line; the script's own prints go to stderr)\n",
     "  gallery -o INDEX.html MANIFEST...\n",
     "                      write an HTML page showing the figures listed in\n",
     "                      render manifests (see --manifest), in that order\n",

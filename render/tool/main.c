@@ -355,7 +355,10 @@ run_script(const options *o)
         return EXIT_USAGE;
     }
     cf_diag_clear(&diag);
-    st = cf_script_create(&o->limits, stdout, &s, &diag);
+    /* list keeps stdout for the names: the script's prints go to stderr */
+    st = cf_script_create(&o->limits,
+                          strcmp(o->command, "list") == 0 ? stderr : stdout,
+                          &s, &diag);
     if (st != CF_STATUS_OK) {
         fprintf(stderr, "curvefig: %s\n", diag.msg);
         return EXIT_SCRIPT;

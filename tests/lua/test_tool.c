@@ -435,8 +435,8 @@ test_list_and_only(void **state)
                            "-f", "svg", NULL };
     run_tool(r, list);
     assert_int_equal(r->status, 0);
-    assert_string_equal(r->out, "defined 3 figures\nmulti-1\nmulti-2\n"
-                                "multi-3\n");
+    assert_string_equal(r->out, "multi-1\nmulti-2\nmulti-3\n");
+    assert_string_equal(r->err, "defined 3 figures\n");
     reset(r);
     run_tool(r, llist);
     assert_contains(r->out, "multi-2\tpart 2 <of> 3\n");

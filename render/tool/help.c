@@ -46,6 +46,8 @@ static const char *const overview[] = {
     "Limits (render, run, list):\n",
     "  --max-memory MIB    memory a script may use (default 256)\n",
     "  --max-instructions N  Lua instructions a script may run (default 5e8)\n",
+    "  --timeout S         wall-clock seconds for the whole command (default\n",
+    "                      120; catches time spent inside one library call)\n",
     "\n",
     "Files: a figure named NAME is written as DIR/NAME.svg, NAME.pdf, ...;\n",
     "each file is written under a temporary name and renamed, so a failed\n",

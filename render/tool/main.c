@@ -14,7 +14,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <signal.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "curvefig/figure.h"
 #include "help.h"
@@ -33,6 +35,7 @@ typedef struct options {
     const char *gallery_title;
     unsigned formats;
     double dpi;
+    double timeout;
     bool tight;
     bool no_labels;
     bool verbose;
@@ -96,7 +99,7 @@ takes_value(const char *opt)
 {
     static const char *const with_value[] = {
         "-o", "--output", "-f", "--formats", "--dpi", "--only", "--manifest",
-        "--title", "--max-memory", "--max-instructions", NULL,
+        "--title", "--max-memory", "--max-instructions", "--timeout", NULL,
     };
     for (int i = 0; with_value[i] != NULL; i++)
         if (strcmp(opt, with_value[i]) == 0)
@@ -114,6 +117,7 @@ parse_args(int argc, char **argv, options *o, int *rc)
     o->formats = CF_FORMAT_BIT(CF_FORMAT_SVG) | CF_FORMAT_BIT(CF_FORMAT_PDF) |
                  CF_FORMAT_BIT(CF_FORMAT_PNG);
     o->dpi = 150;
+    o->timeout = 120;
     if (argc < 2) {
         *rc = usage_error("%sno command given", "");
         return -1;
@@ -198,6 +202,12 @@ parse_args(int argc, char **argv, options *o, int *rc)
                 return -1;
             }
             o->limits.max_instructions = (unsigned long long)num;
+        } else if (strcmp(a, "--timeout") == 0) {
+            if (parse_number(v, 1, 86400, &o->timeout) != 0) {
+                *rc = usage_error("--timeout '%s': give seconds from 1 to "
+                                  "86400", v);
+                return -1;
+            }
         } else if (strcmp(a, "--") == 0) {
             for (i++; i < argc; i++)
                 o->files[o->nfiles++] = argv[i];
@@ -228,6 +238,39 @@ parse_args(int argc, char **argv, options *o, int *rc)
     }
     o->script = o->files[0];
     return 0;
+}
+
+/* ---- the watchdog ------------------------------------------------------- */
+
+/* The instruction limit cannot see time spent inside one C function (a
+** pathological string pattern, say): a wall-clock alarm ends the process.
+** Only async-signal-safe calls here. */
+static char alarm_msg[600];
+static size_t alarm_len;
+
+static void
+on_alarm(int sig)
+{
+    (void)sig;
+    if (write(STDERR_FILENO, alarm_msg, alarm_len) < 0)
+        _exit(1);
+    _exit(1);
+}
+
+static void
+start_watchdog(const char *script, double seconds)
+{
+    struct sigaction sa;
+    int n = snprintf(alarm_msg, sizeof alarm_msg, "curvefig: %s: the script "
+                     "exceeded the time limit of %g s (--timeout)\n",
+                     script, seconds);
+    alarm_len = n < 0 ? 0 : (size_t)n < sizeof alarm_msg
+                                ? (size_t)n : sizeof alarm_msg - 1;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_alarm;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGALRM, &sa, NULL);
+    alarm((unsigned)seconds);
 }
 
 /* ---- render, run, list -------------------------------------------------- */
@@ -354,6 +397,7 @@ run_script(const options *o)
                 o->script, errno ? strerror(errno) : "not a regular file");
         return EXIT_USAGE;
     }
+    start_watchdog(o->script, o->timeout);
     cf_diag_clear(&diag);
     /* list keeps stdout for the names: the script's prints go to stderr */
     st = cf_script_create(&o->limits,

@@ -553,6 +553,20 @@ test_hostile_huge_string(void **state)
 }
 
 static void
+test_hostile_pattern(void **state)
+{
+    result *r = *state;
+    const char *args[] = { "run", src("hostile/pattern.lua"), "--timeout",
+                           "1", NULL };
+    run_tool(r, args);
+    assert_int_equal(r->status, 1);
+    assert_contains(r->err, "pattern.lua: the script exceeded the time "
+                            "limit of 1 s (--timeout)");
+    assert_string_equal(r->out, "");
+    assert_int_equal(count_files(r->dir), 0);
+}
+
+static void
 test_hostile_metatable(void **state)
 {
     hostile(state, "hostile/metatable.lua", "metatable is locked");
@@ -705,6 +719,7 @@ main(int argc, char **argv)
         T(test_hostile_endless_loop),
         T(test_hostile_huge_table),
         T(test_hostile_huge_string),
+        T(test_hostile_pattern),
         T(test_hostile_metatable),
         T(test_bytecode_script_refused),
         T(test_syntax_error_position),

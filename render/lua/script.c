@@ -74,7 +74,8 @@ budget_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
     void *p;
     if (nsize == 0) {
         free(ptr);
-        s->used -= old;
+        /* a block made before the budget was installed is not counted */
+        s->used = old <= s->used ? s->used - old : 0;
         return NULL;
     }
     if (nsize > old && (nsize - old > cap || s->used > cap - (nsize - old))) {
@@ -87,7 +88,7 @@ budget_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
     p = realloc(ptr, nsize);
     if (p == NULL)
         return NULL;
-    s->used = s->used - old + nsize;
+    s->used = (old <= s->used ? s->used - old : 0) + nsize;
     return p;
 }
 

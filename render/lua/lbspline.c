@@ -527,8 +527,8 @@ m_dim(lua_State *L)
 static int
 m_count(lua_State *L)
 {
-    lua_pushinteger(L,
-                    (lua_Integer)cf_bspline_count(cf__lua_check_bspline(L, 1)));
+    cf_bspline_t *c = cf__lua_check_bspline(L, 1);
+    lua_pushinteger(L, (lua_Integer)cf_bspline_count(c));
     return 1;
 }
 

@@ -41,7 +41,8 @@ check_len(lua_State *L, int idx, const char *fn, const char *what)
                    luaL_typename(L, idx));
     n = luaL_len(L, idx);
     if (n < 0 || (lua_Unsigned)n > MAX_ITEMS)
-        cf__lua_error(L, "%s: %s has %lld entries; too many", fn, what, (long long)n);
+        cf__lua_error(L, "%s: %s has %lld entries; too many", fn, what,
+                      (long long)n);
     return (size_t)n;
 }
 
@@ -72,14 +73,14 @@ cf__lua_check_points(lua_State *L, int idx, const char *fn, const char *what,
     idx = lua_absindex(L, idx);
     n = check_len(L, idx, fn, what);
     if (n < min)
-        cf__lua_error(L, "%s: %zu %s%s given, at least %zu needed", fn, n, what,
-                   n == 1 ? "" : "s", min);
+        cf__lua_error(L, "%s: %zu %s%s given, at least %zu needed", fn, n,
+                      what, n == 1 ? "" : "s", min);
     for (size_t i = 0; i < n; i++) {
         size_t di;
         lua_geti(L, idx, (lua_Integer)i + 1);
         if (!lua_istable(L, -1))
-            cf__lua_error(L, "%s: %s %zu must be a table {x, y, ...}, got %s",
-                       fn, what, i, luaL_typename(L, -1));
+            cf__lua_error(L, "%s: %s %zu must be a table {x, y, ...}, "
+                          "got %s", fn, what, i, luaL_typename(L, -1));
         di = (size_t)luaL_len(L, -1);
         lua_pop(L, 1);
         if (di < 1)
@@ -87,8 +88,8 @@ cf__lua_check_points(lua_State *L, int idx, const char *fn, const char *what,
         if (i == 0)
             d = di;
         else if (di != d)
-            cf__lua_error(L, "%s: %s %zu has %zu coordinates, %s 0 has %zu", fn,
-                       what, i, di, what, d);
+            cf__lua_error(L, "%s: %s %zu has %zu coordinates, %s 0 has %zu",
+                          fn, what, i, di, what, d);
     }
     if (n > 0 && d > 64)
         cf__lua_error(L, "%s: points with %zu coordinates; at most 64", fn, d);
@@ -116,8 +117,8 @@ cf__lua_check_point(lua_State *L, int idx, const char *fn, const char *what,
     if (d < 1)
         luaL_error(L, "%s: %s has no coordinates", fn, what);
     if (*dim != 0 && d != *dim)
-        cf__lua_error(L, "%s: %s has %zu coordinates, expected %zu", fn, what, d,
-                   *dim);
+        cf__lua_error(L, "%s: %s has %zu coordinates, expected %zu", fn,
+                      what, d, *dim);
     buf = cf__lua_buffer(L, d);
     for (size_t k = 0; k < d; k++)
         buf[k] = coord(L, idx, (lua_Integer)k + 1, fn, what, 0);
@@ -140,10 +141,10 @@ cf__lua_check_numbers(lua_State *L, int idx, const char *fn, const char *what,
         buf[i] = (double)lua_tonumberx(L, -1, &isnum);
         if (!isnum)
             cf__lua_error(L, "%s: %s %zu is %s, not a number", fn, what, i,
-                       luaL_typename(L, -1));
+                          luaL_typename(L, -1));
         if (!isfinite(buf[i]))
-            cf__lua_error(L, "%s: %s %zu is %g; it must be finite", fn, what, i,
-                       buf[i]);
+            cf__lua_error(L, "%s: %s %zu is %g; it must be finite", fn, what,
+                          i, buf[i]);
         lua_pop(L, 1);
     }
     *count = n;
@@ -177,8 +178,8 @@ cf__lua_check_int(lua_State *L, int idx, const char *fn, const char *what,
         luaL_error(L, "%s: %s must be an integer, got %s", fn, what,
                    lua_tostring(L, idx));
     if (v < lo || v > hi)
-        cf__lua_error(L, "%s: %s is %lld; it must be in [%d, %d]", fn, what, (long long)v, lo,
-                   hi);
+        cf__lua_error(L, "%s: %s is %lld; it must be in [%d, %d]", fn, what,
+                      (long long)v, lo, hi);
     return (int)v;
 }
 

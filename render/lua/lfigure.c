@@ -567,7 +567,7 @@ static int
 l_figure(lua_State *L)
 {
     fbox *b;
-    const char *name, *caption;
+    const char *name, *caption, *title;
     double w, h;
     cf_diag_t diag;
     luaL_checktype(L, 1, LUA_TTABLE);
@@ -592,12 +592,11 @@ l_figure(lua_State *L)
     lua_pushvalue(L, 3);
     lua_setiuservalue(L, -2, 2);
     cf_diag_clear(&diag);
-    check_(L, "figure", b->fig, cf_figure_create(w, h, CF_UNIT_BP, &b->fig, &diag),
-          &diag);
+    check_(L, "figure", NULL,
+           cf_figure_create(w, h, CF_UNIT_BP, &b->fig, &diag), &diag);
     cf__lua_field(L, 1, "title");
-    check_(L, "figure", b->fig, cf_figure_set_title(b->fig, luaL_optstring(L, -1,
-                                                                  name)),
-          NULL);
+    title = luaL_optstring(L, -1, name);
+    check_(L, "figure", b->fig, cf_figure_set_title(b->fig, title), NULL);
     lua_pop(L, 1);
     check_(L, "figure", b->fig, cf_figure_set_caption(b->fig, caption), NULL);
     read_frame(L, b->fig);
@@ -1162,7 +1161,8 @@ m_plot(lua_State *L)
     if (cf__lua_field(L, 2, "ylabel") != LUA_TNIL)
         ax.ylabel = luaL_checkstring(L, -1);
     if (cf__lua_field(L, 2, "knots") != LUA_TNIL) {
-        ax.knots = cf__lua_check_numbers(L, -1, "plot", "knot", &ax.knot_count);
+        ax.knots = cf__lua_check_numbers(L, -1, "plot", "knot",
+                                         &ax.knot_count);
         if (cf__lua_field(L, 2, "knot_labels") != LUA_TNIL &&
             lua_toboolean(L, -1))
             ax.knot_labels = knot_labels(L, lua_gettop(L), ax.knot_count);

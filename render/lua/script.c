@@ -321,7 +321,8 @@ traceback(lua_State *L)
     int first = 1;
     msg = lua_tostring(L, 1);
     if (msg == NULL) {
-        if (luaL_callmeta(L, 1, "__tostring") && lua_type(L, -1) == LUA_TSTRING)
+        if (luaL_callmeta(L, 1, "__tostring") &&
+            lua_type(L, -1) == LUA_TSTRING)
             msg = lua_tostring(L, -1);
         else
             msg = lua_pushfstring(L, "(error object is a %s value)",
@@ -410,7 +411,8 @@ cf_script_run_file(cf_script_t *s, const char *path)
         return CF_STATUS_IO;
     }
     if (fseek(f, 0, SEEK_END) != 0 || (len = ftell(f)) < 0 ||
-        fseek(f, 0, SEEK_SET) != 0 || (code = malloc((size_t)len + 1)) == NULL) {
+        fseek(f, 0, SEEK_SET) != 0 ||
+        (code = malloc((size_t)len + 1)) == NULL) {
         char buf[512];
         fclose(f);
         snprintf(buf, sizeof buf, "cannot read %s", path);

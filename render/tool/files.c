@@ -156,10 +156,12 @@ put_html(FILE *f, const char *s, size_t n)
 
 static const char gallery_head[] =
     "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-    "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+    "<meta name=\"viewport\" "
+    "content=\"width=device-width, initial-scale=1\">\n"
     "<title>%s</title>\n<style>\n"
     "body{font-family:serif;margin:2em auto;max-width:72em;padding:0 1em}\n"
-    "main{display:grid;grid-template-columns:repeat(auto-fill,minmax(20em,1fr));"
+    "main{display:grid;"
+    "grid-template-columns:repeat(auto-fill,minmax(20em,1fr));"
     "gap:1.5em}\n"
     "h2{grid-column:1/-1;margin:1em 0 0;border-bottom:1px solid #ccc}\n"
     "figure{margin:0;padding:.5em;border:1px solid #ddd;border-radius:4px}\n"

@@ -135,7 +135,8 @@ parse_args(int argc, char **argv, options *o, int *rc)
         return -1;
     }
     if (strcmp(o->command, "render") != 0 && strcmp(o->command, "run") != 0 &&
-        strcmp(o->command, "list") != 0 && strcmp(o->command, "gallery") != 0) {
+        strcmp(o->command, "list") != 0 &&
+        strcmp(o->command, "gallery") != 0) {
         *rc = usage_error("unknown command '%s'", o->command);
         return -1;
     }

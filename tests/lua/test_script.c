@@ -108,14 +108,16 @@ test_limits(void **state)
     cf_script_destroy(s);
     s = new_script(8, 1000000000);
     /* memory through the curve library counts too: degree elevation of a
-    ** curve in R^64 allocates 1025 * 65 doubles per curve, kept alive */
+    ** line in R^64 to degree 1001 allocates 1002 * 64 doubles (0.5 MB) per
+    ** curve, and they are kept alive */
     assert_int_equal(cf_script_run_string(s,
         "local P = {}\n"
-        "for i = 1, 2 do local p = {} for k = 1, 64 do p[k] = k end P[i] = p end\n"
+        "for i = 1, 2 do\n"
+        "  local p = {} for k = 1, 64 do p[k] = k end P[i] = p end\n"
         "local keep = {}\n"
         "for i = 1, 1e6 do keep[i] = bezier(P):elevate(1000) end\n",
         "m.lua"), CF_STATUS_SCRIPT);
-    assert_non_null(strstr(cf_script_error(s), "m.lua:4: "));
+    assert_non_null(strstr(cf_script_error(s), "m.lua:5: "));
     assert_non_null(strstr(cf_script_error(s), "memory limit of 8 MiB"));
     cf_script_destroy(s);
 }

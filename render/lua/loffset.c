@@ -4,10 +4,13 @@
 **
 **   c:offset(d, { tolerance = 1e-3, trim = false,
 **                 method = "levien" | "tiller-hanson" })
-**       -> list of cubic Béziers (the trimmed offset when trim = true),
-**          report { segments, max_error, converged, cusps, joins,
-**          self_intersections, trimmed_chains, trimmed_segments },
-**          and with trim = true the list of trimmed chains (each a list)
+**       -> list of cubic Béziers (the trimmed offset when trim = true)
+**          with two fields: .report = { segments, max_error, converged,
+**          cusps, joins, self_intersections, trimmed_chains,
+**          trimmed_segments } and, with trim = true, .chains = the trimmed
+**          chains (each a list); the report and the chains are also
+**          returned as second and third values (wrap the call in
+**          parentheses to pass only the list: f:curve((c:offset(d))))
 **   c:offset_point(t, d), c:offset_cusps(d)
 */
 #include <string.h>
@@ -116,6 +119,8 @@ m_offset(lua_State *L)
     if (!opt.trim) {
         cf__lua_push_cubics(L, raw);
         push_report(L, &rep);
+        lua_pushvalue(L, -1);
+        lua_setfield(L, -3, "report");
         return 2;
     }
     lua_newtable(L);                                     /* all pieces */
@@ -128,9 +133,13 @@ m_offset(lua_State *L)
         }
         lua_rawseti(L, -2, (lua_Integer)i + 1);
     }
+    lua_pushvalue(L, -1);
+    lua_setfield(L, -3, "chains");                       /* all.chains */
     push_report(L, &rep);
+    lua_pushvalue(L, -1);
+    lua_setfield(L, -4, "report");                       /* all.report */
     lua_insert(L, -2);
-    return 3;
+    return 3;                                  /* all, report, chains */
 }
 
 /* c:offset_point(t, d) -> c(t) + d n(t) */

@@ -45,7 +45,8 @@ put("belevate", s:elevate(1):points())
 put("bqueries", nb:weights(), nb:knots(), nb:degree())
 
 -- offsets and interpolation (DESIGN.md core names)
-local off, rep = c:offset(1.5, { tolerance = 1e-3 })
+local off = c:offset(1.5, { tolerance = 1e-3 })
+local rep = off.report
 local offp = {}
 for _, b in ipairs(off) do offp[#offp + 1] = b:points() end
 put("offset", offp, rep.max_error)

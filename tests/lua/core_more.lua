@@ -57,7 +57,8 @@ end
 -- (within the requested tolerance 1e-4, checked with the curve's own
 -- closest-point search)
 local c = bezier{ {0, 5}, {1, -1}, {3, 0}, {4, 3}, {6, 10} }
-local pieces, rep = c:offset(0.5, { tolerance = 1e-4 })
+local pieces = c:offset(0.5, { tolerance = 1e-4 })
+local rep = pieces.report
 assert(#pieces >= 1 and rep.max_error <= 1e-4 and rep.converged)
 for _, piece in ipairs(pieces) do
   assert(piece:degree() == 3)
@@ -94,5 +95,13 @@ close(f:points()[2][2], 1, "ferguson B1 y")
 local cc = coons_cubic{ {0, 0}, {6, 0}, {6, 6}, {0, 6} }
 close(cc:points()[1][1], 5, "coons B0 x")
 close(cc:points()[1][2], 1, "coons B0 y")
+
+-- trimmed: the pieces, and the same pieces grouped in chains
+local trimmed = c:offset(-3, { trim = true })
+local n = 0
+for _, chain in ipairs(trimmed.chains) do n = n + #chain end
+assert(n == #trimmed and trimmed.report.trimmed_segments == n, "chains")
+local t2, rep2, chains2 = c:offset(-3, { trim = true })
+assert(#t2 == #trimmed and rep2.trimmed_chains == #chains2, "3 values")
 
 print("core_more: ok")

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include <cmocka.h>
+#include <pango/pangocairo.h>
 
 #include "curvefig/figure.h"
 #include "testutil.h"
@@ -35,6 +36,24 @@ box_of(const cf_label_t *lab, const char *s)
             return cf_label_get_box(lab, i);
     fail_msg("no run \"%s\"", s);
     return NULL;
+}
+
+/* The last subscript and superscript runs (both must exist). */
+static void
+scripts_of(const cf_label_t *lab, const cf_label_box_t **sub,
+           const cf_label_box_t **sup)
+{
+    size_t i;
+    *sub = *sup = NULL;
+    for (i = 0; i < cf_label_box_count(lab); i++) {
+        const cf_label_box_t *b = cf_label_get_box(lab, i);
+        if (b->kind == CF_LABEL_SUB)
+            *sub = b;
+        if (b->kind == CF_LABEL_SUP)
+            *sup = b;
+    }
+    assert_non_null(*sub);
+    assert_non_null(*sup);
 }
 
 static void
@@ -82,22 +101,16 @@ test_superscript_and_sub_stack(void **state)
     (void)state;
     for (k = 0; k < 3; k++) {
         cf_label_t *lab = layout(texts[k]);
-        const cf_label_box_t *b = cf_label_get_box(lab, 0), *sub = NULL,
-                             *sup = NULL, *paren = box_of(lab, "(");
-        size_t i;
-        for (i = 0; i < cf_label_box_count(lab); i++) {
-            const cf_label_box_t *x = cf_label_get_box(lab, i);
-            if (x->kind == CF_LABEL_SUB)
-                sub = x;
-            if (x->kind == CF_LABEL_SUP)
-                sup = x;
-        }
-        assert_non_null(sub);
-        assert_non_null(sup);
-        /* stacked: both scripts start at the same x, right after the
-        ** base letter; one above, one below the base line */
-        tu_assert_close(sub->x, sup->x, 0, 1e-9);
+        const cf_label_box_t *b = cf_label_get_box(lab, 0), *sub, *sup,
+                             *paren = box_of(lab, "(");
+        scripts_of(lab, &sub, &sup);
+        /* stacked: the subscript starts right after the base letter,
+        ** the superscript at the same x moved right by the slanted B's
+        ** italic correction (cmmi10: B 0.05 em, N 0.11 em); one above,
+        ** one below the base line */
         tu_assert_close(sub->x, b->x + b->width, 1e-9, 1);
+        assert_true(sup->x >= sub->x);
+        assert_true(sup->x - sub->x < 0.15 * SIZE);
         assert_true(sup->y > 0);
         assert_true(sub->y < 0);
         assert_int_equal(sub->level, 1);
@@ -109,6 +122,120 @@ test_superscript_and_sub_stack(void **state)
                                      sup->x + sup->width) - 1e-9);
         assert_int_equal(paren->kind, CF_LABEL_BASE);
         cf_label_destroy(lab);
+    }
+}
+
+/* Right edge of the ink of one glyph (bp from its origin) and its advance,
+** found independently of the label code: the glyph is rasterized 40
+** times enlarged (1 pixel = 0.025 bp) and the rightmost column with ink
+** is searched. */
+static void
+glyph_ink_right(const char *family, const char *glyph, double *ink_right,
+                double *advance)
+{
+    enum { SCALE = 40, W = 1200, H = 900 };
+    const double ox = 5, oy = 5;   /* glyph origin, bp */
+    cairo_surface_t *img = cairo_image_surface_create(CAIRO_FORMAT_A8, W, H);
+    cairo_t *cr = cairo_create(img);
+    PangoLayout *pl = pango_cairo_create_layout(cr);
+    PangoFontDescription *fd = pango_font_description_new();
+    PangoRectangle logical;
+    const unsigned char *data;
+    int stride, x, y, right = -1;
+    cairo_font_options_t *fo = cairo_font_options_create();
+
+    /* unhinted, unrounded metrics, as the labels are laid out */
+    cairo_font_options_set_hint_metrics(fo, CAIRO_HINT_METRICS_OFF);
+    cairo_font_options_set_hint_style(fo, CAIRO_HINT_STYLE_NONE);
+    pango_cairo_context_set_font_options(pango_layout_get_context(pl), fo);
+    cairo_font_options_destroy(fo);
+    pango_context_set_round_glyph_positions(pango_layout_get_context(pl),
+                                            FALSE);
+    pango_layout_context_changed(pl);
+    pango_font_description_set_family(fd, family);
+    pango_font_description_set_style(fd, PANGO_STYLE_ITALIC);
+    pango_font_description_set_absolute_size(fd, SIZE * PANGO_SCALE);
+    pango_layout_set_font_description(pl, fd);
+    pango_layout_set_text(pl, glyph, -1);
+    cairo_scale(cr, SCALE, SCALE);
+    cairo_move_to(cr, ox, oy);
+    pango_cairo_show_layout(cr, pl);
+    pango_layout_get_extents(pl, NULL, &logical);
+    *advance = (double)logical.width / PANGO_SCALE;
+    cairo_surface_flush(img);
+    data = cairo_image_surface_get_data(img);
+    stride = cairo_image_surface_get_stride(img);
+    for (y = 0; y < H; y++)
+        for (x = W - 1; x > right; x--)
+            if (data[y * stride + x] != 0)
+                right = x;
+    assert_true(right > 0 && right < W - 1);   /* ink, not cut off */
+    *ink_right = (right + 1.0) / SCALE - ox;
+    pango_font_description_free(fd);
+    g_object_unref(pl);
+    cairo_destroy(cr);
+    cairo_surface_destroy(img);
+}
+
+static void
+test_italic_correction(void **state)
+{
+    /* Latin Modern's slanted capitals reach right of their advance (TeX:
+    ** the italic correction, cmmi10 N 0.109 em, V 0.222 em, f 0.108 em).
+    ** TeX rule 17 sets the superscript after the correction, so that it
+    ** clears the letter's upper right corner, and the subscript at the
+    ** advance, tucked under it. */
+    const char *letters[] = { "N", "P", "V", "C", "f", "T" };
+    size_t k;
+    (void)state;
+    for (k = 0; k < sizeof letters / sizeof letters[0]; k++) {
+        char text[16];
+        double ink_right, advance;
+        cf_label_t *lab;
+        const cf_label_box_t *nuc, *sub, *sup;
+        snprintf(text, sizeof text, "%s_0^4", letters[k]);
+        lab = layout(text);
+        glyph_ink_right("LM Roman 10", letters[k], &ink_right,
+                        &advance);
+        nuc = box_of(lab, letters[k]);
+        scripts_of(lab, &sub, &sup);
+        /* the nucleus is the 10 pt design's italic, as measured */
+        tu_assert_close(nuc->width, advance, 1e-9, 1);
+        /* the test's premise: these letters overhang (by more than
+        ** 0.03 em; 1 pixel is 0.0025 em) */
+        assert_true(ink_right - advance > 0.03 * SIZE);
+        /* superscript: its origin (and so its ink: digits have a
+        ** positive left bearing) right of the nucleus' ink, within one
+        ** pixel of the raster plus the antialiasing fringe; and not
+        ** pushed further than the overhang */
+        assert_true(sup->x >= nuc->x + ink_right - 2.0 / 40);
+        assert_true(sup->x <= nuc->x + ink_right + 2.0 / 40);
+        /* subscript: at the advance width */
+        tu_assert_close(sub->x, nuc->x + nuc->width, 1e-9, 1);
+        cf_label_destroy(lab);
+        /* the same without a subscript, and after another atom */
+        snprintf(text, sizeof text, "2%s^4", letters[k]);
+        lab = layout(text);
+        nuc = box_of(lab, letters[k]);
+        sup = box_of(lab, "4");
+        assert_true(sup->x >= nuc->x + ink_right - 2.0 / 40);
+        assert_true(sup->x <= nuc->x + ink_right + 2.0 / 40);
+        cf_label_destroy(lab);
+    }
+    {
+        /* an upright nucleus (a digit, an upright capital Greek letter)
+        ** has no correction: both scripts start at its advance */
+        const char *upright[] = { "2_0^4", "\\Gamma_0^4" };
+        for (k = 0; k < 2; k++) {
+            cf_label_t *lab = layout(upright[k]);
+            const cf_label_box_t *nuc = cf_label_get_box(lab, 0);
+            const cf_label_box_t *a = cf_label_get_box(lab, 1);
+            const cf_label_box_t *b = cf_label_get_box(lab, 2);
+            assert_int_equal(cf_label_box_count(lab), 3);
+            tu_assert_close(a->x, nuc->x + nuc->width, 1e-9, 1);
+            tu_assert_close(b->x, nuc->x + nuc->width, 1e-9, 1);
+            cf_label_destroy(lab);
+        }
     }
 }
 
@@ -343,6 +470,7 @@ main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_subscript_lower_and_smaller),
         cmocka_unit_test(test_superscript_and_sub_stack),
+        cmocka_unit_test(test_italic_correction),
         cmocka_unit_test(test_group_subscript_and_minus),
         cmocka_unit_test(test_nested_scripts_and_greek),
         cmocka_unit_test(test_text_and_math_modes),

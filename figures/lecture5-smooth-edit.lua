@@ -45,6 +45,16 @@ for k = 0, 2 do
     else B2[i] = p end
   end
   local a, b_old, b_new = bezier(A), bezier(B), bezier(B2)
+  -- check: the derivatives of orders 0 ... k agree at the join (both arcs
+  -- have parameter length t* = 1 - t* = 1/2, so no rescaling), order k + 1
+  -- does not
+  local da, db = a:derivs(1, k + 1), b_new:derivs(0, k + 1)
+  for j = 0, k + 1 do
+    local gap = math.abs(da[j + 1][1] - db[j + 1][1]) + math.abs(da[j + 1][2] - db[j + 1][2])
+    if (j <= k) ~= (gap < 1e-9 * (1 + math.abs(da[j + 1][1]) + math.abs(da[j + 1][2]))) then
+      error(string.format("k = %d: derivative %d differs by %g at the join (expected C^%d exactly)", k, j, gap, k))
+    end
+  end
   -- before the edit
   f:polygon(b_old, { color = "grey", dash = "dashed", marker = "none", width = 0.6 })
   f:curve(b_old, { color = "grey", dash = "dashed", width = 1.2 })

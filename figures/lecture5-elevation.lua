@@ -13,6 +13,12 @@
 local c = bezier{ {0, 0}, {1.6, 3.4}, {5.8, 2.6}, {5, -0.6} }
 local q = bezier(c:elevate(1):points())   -- built from the q_i themselves
 local blue = "#1f5fbf"
+for j = 0, 20 do   -- the shape does not change
+  local a, b = c:eval(j / 20), q:eval(j / 20)
+  if math.abs(a[1] - b[1]) + math.abs(a[2] - b[2]) > 1e-9 then
+    error("elevated curve differs at t = " .. j / 20)
+  end
+end
 
 local f = figure{
   name = "lecture5-elevation",

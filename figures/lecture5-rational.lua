@@ -43,6 +43,14 @@ for k, s in ipairs(settings) do
   for i, p in ipairs(P) do Q[i] = { p[1] + dx, p[2] + dy } end
   local plain = bezier(Q)
   local rat = bezier{ points = Q, weights = s.w }
+  if k == 1 then   -- equal weights: the rational curve is the ordinary one
+    for j = 0, 20 do
+      local a, b = plain:eval(j / 20), rat:eval(j / 20)
+      if math.abs(a[1] - b[1]) + math.abs(a[2] - b[2]) > 1e-9 then
+        error("equal weights: the curves differ at t = " .. j / 20)
+      end
+    end
+  end
   for i, q in ipairs(Q) do
     if s.w[i] ~= 1 then   -- a point of raised weight: a red ring
       f:points(q, { marker = "circle", marker_size = 9, color = red, width = 1.2 })

@@ -188,54 +188,113 @@ fit_bisect(driver *dr, const cf__osrc_t *s, double a, double b, double w0,
     return fit_bisect(dr, s, 0.5 * (a + b), b, w0, depth + 1);
 }
 
-/* Levien: greedily the longest piece from the current start that is within
-** tolerance (bisection on its end), until b is reached. */
+typedef struct piece {
+    cf__fit_t f;
+    double a, b;
+} piece;
+
+typedef struct plist {
+    piece *p;
+    size_t n, cap;
+} plist;
+
 static cf_status_t
-fit_greedy(driver *dr, const cf__osrc_t *s, double a, double b)
+plist_add(plist *l, const cf__fit_t *f, double a, double b)
 {
-    double t = a, w0 = b - a;
+    if (l->n == l->cap) {
+        size_t cap = l->cap ? 2 * l->cap : 8;
+        piece *np = cf__realloc_array(l->p, cap, sizeof *np);
+        if (np == NULL)
+            return CF_STATUS_NO_MEMORY;
+        l->p = np;
+        l->cap = cap;
+    }
+    l->p[l->n].f = *f;
+    l->p[l->n].a = a;
+    l->p[l->n].b = b;
+    l->n++;
+    return CF_STATUS_OK;
+}
+
+static cf_status_t
+fit_range(driver *dr, const cf__osrc_t *s, double x, double y, cf__fit_t *f)
+{
+    return cf__fit_piece(s, fmin(x, y), fmax(x, y), dr->method, f);
+}
+
+/* Greedy cover of [a, b] by the longest pieces within tolerance, walking
+** forward from a (dir > 0) or backward from b (dir < 0); each piece's far
+** end is found by bisection. */
+static cf_status_t
+greedy_dir(driver *dr, const cf__osrc_t *s, double a, double b, int dir,
+           plist *out)
+{
+    double t = dir > 0 ? a : b, end = dir > 0 ? b : a, w0 = b - a;
     cf__fit_t f, best;
     cf_status_t st;
-    while (t < b) {
-        double lo, hi;
+    while (dir > 0 ? t < b : t > a) {
+        double near, far;
         bool have = false;
-        st = cf__fit_piece(s, t, b, dr->method, &f);
+        st = fit_range(dr, s, t, end, &f);
         if (st != CF_STATUS_OK)
             return st;
         if (f.err <= ACCEPT * dr->tol)
-            return emit(dr, &f, t, b);
-        lo = t;
-        hi = b;
+            return plist_add(out, &f, fmin(t, end), fmax(t, end));
+        near = t;
+        far = end;
         for (int it = 0; it < 60; it++) {
-            double mid = 0.5 * (lo + hi);
-            if (have && hi - lo <= 2e-3 * (hi - t))
+            double mid = 0.5 * (near + far);
+            if (have && fabs(far - near) <= 2e-3 * fabs(far - t))
                 break;
-            if (hi - t < MIN_WIDTH * w0)
+            if (fabs(far - t) < MIN_WIDTH * w0)
                 break;
-            st = cf__fit_piece(s, t, mid, dr->method, &f);
+            st = fit_range(dr, s, t, mid, &f);
             if (st != CF_STATUS_OK)
                 return st;
             if (f.err <= ACCEPT * dr->tol) {
-                lo = mid;
+                near = mid;
                 best = f;
                 have = true;
             } else {
-                hi = mid;
+                far = mid;
             }
         }
         if (!have) {
             /* cannot reach the tolerance: keep the narrowest piece */
-            st = cf__fit_piece(s, t, hi, dr->method, &best);
+            st = fit_range(dr, s, t, far, &best);
             if (st != CF_STATUS_OK)
                 return st;
-            lo = hi;
+            near = far;
         }
-        st = emit(dr, &best, t, lo);
+        st = plist_add(out, &best, fmin(t, near), fmax(t, near));
         if (st != CF_STATUS_OK)
             return st;
-        t = lo;
+        t = near;
     }
     return CF_STATUS_OK;
+}
+
+/* Levien: the greedy cover from either end, whichever needs fewer
+** pieces. */
+static cf_status_t
+fit_greedy(driver *dr, const cf__osrc_t *s, double a, double b)
+{
+    plist fw = { NULL, 0, 0 }, bw = { NULL, 0, 0 };
+    cf_status_t st = greedy_dir(dr, s, a, b, 1, &fw);
+    if (st == CF_STATUS_OK && fw.n > 1)
+        st = greedy_dir(dr, s, a, b, -1, &bw);
+    if (st == CF_STATUS_OK) {
+        if (bw.n > 0 && bw.n < fw.n) {
+            for (size_t i = bw.n; i-- > 0 && st == CF_STATUS_OK;)
+                st = emit(dr, &bw.p[i].f, bw.p[i].a, bw.p[i].b);
+        } else {
+            for (size_t i = 0; i < fw.n && st == CF_STATUS_OK; i++)
+                st = emit(dr, &fw.p[i].f, fw.p[i].a, fw.p[i].b);
+        }
+    }
+    cf__free(fw.p);
+    cf__free(bw.p);
+    return st;
 }
 
 /* Round join: arc of radius |d| about centre from `from` turning by phi. */

@@ -60,6 +60,11 @@ mark_t(f, s)
 -- markova-3.2 ----------------------------------------------------------------
 local n, info = s:insert_knot(t)
 local Q = n:points()
+-- the curve is unchanged (to 1e-12 of the unit size, 101 parameters)
+for i = 0, 100 do
+  local a, b = s:eval(i / 100), n:eval(i / 100)
+  assert(math.abs(a[1] - b[1]) < 1e-12 and math.abs(a[2] - b[2]) < 1e-12)
+end
 assert(info.span == 5 and info.cut_first == 4 and info.cut_count == 1
        and info.new_first == 4 and info.new_count == 2)
 

@@ -127,7 +127,7 @@ g:deboor(s, u, { colors = level_color, width = 0.9,
                  point = { marker = "star", color = "red",
                            marker_color = "red", marker_size = 9 } })
 local lplace = {
-  [1] = { "ne", "nw", "se" },
+  [1] = { "ne", "nw", "sw" },
   [2] = { "n", "nw" },
   [3] = { "se" },
 }

@@ -144,7 +144,7 @@ for i = 2, 5 do
 end
 g:label(net[1][3], "P_{3,1}", { place = "ne", color = col1 })
 g:label(net[1][4], "P_{4,1}", { place = "nw", color = "grey" })
-g:label(net[1][5], "P_{5,1}", { place = "se", color = col2 })
+g:label(net[1][5], "P_{5,1}", { place = "sw", color = col2 })
 g:label(net[2][4], "P_{4,2}", { place = "n", color = col1 })
 g:label(net[2][5], "P_{5,2}", { place = "nw", color = col2 })
 g:label(C, "P_{5,3} = C(u)", { place = "se", color = "red", offset = 5 })

@@ -1630,6 +1630,7 @@ cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay, cf_diag_t *diag)
     memset(&b, 0, sizeof b);
     for (i = 0; i < fig->count; i++)
         element_bounds(&fig->els[i], &b);
+    lay->clip = fig->window_set;
     if (fig->window_set) {
         memcpy(win, fig->win, sizeof win);
     } else if (!b.any) {
@@ -1748,6 +1749,33 @@ map_pt(const cf__layout_t *l, double x, double y, double *px, double *py)
     *py = l->oy - l->sy * (y - l->ymin);
 }
 
+/* Whether a point is drawn: always, unless the window was set explicitly
+** and the point lies outside it (beyond rounding: 1e-9 of its size). */
+static bool
+in_window(const cf__layout_t *l, double x, double y)
+{
+    double ex = 1e-9 * (l->xmax - l->xmin), ey = 1e-9 * (l->ymax - l->ymin);
+    return !l->clip
+        || (x >= l->xmin - ex && x <= l->xmax + ex && y >= l->ymin - ey
+            && y <= l->ymax + ey);
+}
+
+/* With an explicit window, clip what follows to it, widened by pad bp on
+** every side (a line lying on the window's edge stays whole). */
+static void
+clip_to_window(cairo_t *cr, const cf__layout_t *l, double pad)
+{
+    double x0, y0, x1, y1;
+    if (!l->clip)
+        return;
+    map_pt(l, l->xmin, l->ymax, &x0, &y0);
+    map_pt(l, l->xmax, l->ymin, &x1, &y1);
+    cairo_new_path(cr);
+    cairo_rectangle(cr, x0 - pad, y0 - pad, x1 - x0 + 2 * pad,
+                    y1 - y0 + 2 * pad);
+    cairo_clip(cr);
+}
+
 /* Append a cubic (data coordinates) to the path, starting a subpath when
 ** it does not continue the previous one; last[2] is the previous end on
 ** the page (unrounded: cairo's current point is rounded to 1/256), NAN
@@ -1835,6 +1863,8 @@ draw_markers(cairo_t *cr, const cf__layout_t *l, const cf_style_t *s,
     size_t i;
     for (i = 0; i < n; i++) {
         double px, py, d[2];
+        if (!in_window(l, pts[2 * i], pts[2 * i + 1]))
+            continue;
         map_pt(l, pts[2 * i], pts[2 * i + 1], &px, &py);
         if (dirs != NULL) {
             /* a data direction on the page (y flips) */
@@ -2191,15 +2221,24 @@ draw_element(cf_figure_t *fig, element_t *e, const cf__layout_t *l,
 {
     cf_style_t s;
     size_t i, j, off;
+    double pad;
     cf__style_resolve(&fig->theme, e->role, &e->style, &s);
+    /* lines and areas are clipped to an explicit window (widened by the
+    ** line width), markers and labels of points outside it left out;
+    ** arrows and axes are drawn whole */
+    pad = s.width > 0 ? s.width : 0;
     switch (e->kind) {
     case EL_CURVE:
+        clip_to_window(cr, l, pad);
         return draw_curve(fig, e, l, cr, &s);
     case EL_POLYGON:
     case EL_POLYLINE:
         if (e->n >= 2) {
+            cairo_save(cr);
+            clip_to_window(cr, l, pad);
             draw_lines(cr, l, e->pts, e->n, e->closed);
             stroke_lines(cr, &s);
+            cairo_restore(cr);
         }
         draw_markers(cr, l, &s, e->pts, e->n, NULL);
         return CF_STATUS_OK;
@@ -2211,8 +2250,10 @@ draw_element(cf_figure_t *fig, element_t *e, const cf__layout_t *l,
                      e->has_dirs ? e->pts + 2 * e->n : NULL);
         return CF_STATUS_OK;
     case EL_HULL:
+        clip_to_window(cr, l, pad);
         return draw_hull(fig, e, l, cr, &s);
     case EL_FILL:
+        clip_to_window(cr, l, pad);
         draw_lines(cr, l, e->pts, e->n, true);
         cf__set_color(cr, &s.fill, s.opacity);
         cairo_fill_preserve(cr);
@@ -2227,11 +2268,15 @@ draw_element(cf_figure_t *fig, element_t *e, const cf__layout_t *l,
     }
     case EL_LABEL: {
         double px, py;
+        if (!in_window(l, e->x, e->y))
+            return CF_STATUS_OK;
         map_pt(l, e->x, e->y, &px, &py);
         return draw_text(fig, &e->text, cr, &s, px, py, s.place, s.offset);
     }
     case EL_NET:
         /* lines of every level first, then the markers on top */
+        cairo_save(cr);
+        clip_to_window(cr, l, pad);
         for (j = 0, off = 0; j < e->levels; off += e->counts[j], j++) {
             cf_style_t ls = s;
             if (e->colors != NULL)
@@ -2245,6 +2290,7 @@ draw_element(cf_figure_t *fig, element_t *e, const cf__layout_t *l,
                 stroke_lines(cr, &ls);
             }
         }
+        cairo_restore(cr);
         for (j = 0, off = 0; j < e->levels; off += e->counts[j], j++) {
             cf_style_t ls = s;
             if (e->colors != NULL)
@@ -2256,6 +2302,9 @@ draw_element(cf_figure_t *fig, element_t *e, const cf__layout_t *l,
                     : fig->theme.palette[(j - 1) % fig->theme.palette_size];
             for (i = 0; i < e->counts[j]; i++) {
                 double px, py;
+                if (!in_window(l, e->pts[2 * (off + i)],
+                               e->pts[2 * (off + i) + 1]))
+                    continue;
                 map_pt(l, e->pts[2 * (off + i)], e->pts[2 * (off + i) + 1],
                        &px, &py);
                 cf__draw_marker(cr, &ls, ls.marker, px, py, NULL);

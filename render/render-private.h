@@ -65,6 +65,8 @@ typedef struct cf__layout {
     double sx, sy;                   /* bp per data unit */
     double ox, oy;                   /* page position of (xmin, ymin) */
     double tol;                      /* fitting tolerance, data units */
+    bool clip;                       /* explicit window: lines clipped to
+                                        it, points outside it left out */
 } cf__layout_t;
 
 /* Compute the layout for the figure's page (fills fig status on error). */

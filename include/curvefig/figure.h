@@ -232,7 +232,12 @@ void cf_figure_get_theme(const cf_figure_t *fig, cf_theme_t *out);
 /* Explicit data window (xmin < xmax, ymin < ymax).  With keep_aspect
 ** (cf_figure_set_fit) the window is enlarged symmetrically so that one data
 ** unit has the same length on both axes; otherwise it fills the page
-** inside the margin. */
+** inside the margin.  Curves, polylines, polygons, hulls, fills and nets
+** are clipped to the window widened by their line width (a line on the
+** window's edge stays whole); points, knot marks, polygon and net
+** vertices and labels anchored outside the window are left out; arrows
+** and axes are drawn whole.  Only what remains is given room (a close-up
+** of a larger drawing keeps its scale). */
 cf_status_t cf_figure_set_window(cf_figure_t *fig, double xmin, double xmax,
                                  double ymin, double ymax);
 /* Go back to a window fitted to what is drawn (the default): the tight

@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <cairo.h>
 #include <cmocka.h>
 
 #include "curvefig/bspline.h"
@@ -744,6 +745,140 @@ test_window_fit(void **state)
     cf_figure_destroy(fig);
 }
 
+/* PNG bytes -> image surface. */
+typedef struct png_reader {
+    const unsigned char *data;
+    size_t size, off;
+} png_reader_t;
+
+static cairo_status_t
+png_read(void *closure, unsigned char *data, unsigned int length)
+{
+    png_reader_t *r = closure;
+    if (r->off + length > r->size)
+        return CAIRO_STATUS_READ_ERROR;
+    memcpy(data, r->data + r->off, length);
+    r->off += length;
+    return CAIRO_STATUS_SUCCESS;
+}
+
+/* Lengths of the runs of dark pixels (grey level < 128) down the
+** middle column of the figure rendered at dpi; returns the run count. */
+static size_t
+dark_runs_mid_column(cf_figure_t *fig, double dpi, int *runs, size_t cap)
+{
+    cf_write_options_t o;
+    unsigned char *data;
+    png_reader_t r;
+    cairo_surface_t *img;
+    const unsigned char *px;
+    int w, h, stride, y, len = 0;
+    size_t n = 0;
+    cf_write_options_init(&o);
+    o.dpi = dpi;
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_PNG, &o, &data,
+                                      &r.size, NULL), CF_STATUS_OK);
+    r.data = data;
+    r.off = 0;
+    img = cairo_image_surface_create_from_png_stream(png_read, &r);
+    assert_int_equal(cairo_surface_status(img), CAIRO_STATUS_SUCCESS);
+    w = cairo_image_surface_get_width(img);
+    h = cairo_image_surface_get_height(img);
+    stride = cairo_image_surface_get_stride(img);
+    px = cairo_image_surface_get_data(img);
+    for (y = 0; y <= h; y++) {
+        /* ARGB32 on an opaque white page: the green byte is the grey */
+        bool dark = y < h && px[y * stride + 4 * (w / 2) + 1] < 128;
+        if (dark) {
+            len++;
+        } else if (len > 0) {
+            if (n < cap)
+                runs[n] = len;
+            n++;
+            len = 0;
+        }
+    }
+    cairo_surface_destroy(img);
+    cf_free(data);
+    return n;
+}
+
+static void
+test_explicit_window_clips(void **state)
+{
+    double longline[] = { -5, 0.25, 5, 0.25 }, inside[] = { 0, 0.25, 1,
+                                                            0.25 };
+    double mid[] = { 0.5, 0.25 }, far[] = { 3, 0.25, 0.5, 3 };
+    double sx_long, sx_inside, box[4], W, H, win[4];
+    cf_figure_t *fig;
+    cf_style_t st;
+    (void)state;
+    /* A close-up: window [0, 1] x [0, 0.5] on 80 x 40 mm.  A line
+    ** running far out of the window, a point inside, points and a label
+    ** outside.  The window keeps its size as if only the part of the
+    ** line inside it were drawn: lines are clipped to the window
+    ** (widened by the line width), what is anchored outside is left
+    ** out, and only what remains is given room. */
+    assert_int_equal(cf_figure_create(80, 40, CF_UNIT_MM, &fig, NULL), 0);
+    assert_int_equal(cf_figure_set_window(fig, 0, 1, 0, 0.5), 0);
+    assert_int_equal(cf_figure_add_polyline(fig, longline, 2, false, NULL),
+                     0);
+    assert_int_equal(cf_figure_add_points(fig, mid, 1, NULL), 0);
+    assert_int_equal(cf_figure_add_points(fig, far, 2, NULL), 0);
+    assert_int_equal(cf_figure_add_label(fig, 3, 0.25, "far away", NULL),
+                     0);
+    assert_int_equal(cf_figure_add_polygon(fig, far, 2, NULL), 0);
+    assert_int_equal(cf_figure_get_window(fig, win, &sx_long, NULL), 0);
+    assert_int_equal(cf_figure_ink_box(fig, NULL, box, &W, &H, NULL), 0);
+    assert_true(win[0] == 0 && win[1] == 1 && win[2] == 0 && win[3] == 0.5);
+    /* all ink on the page, and no wider than the window plus the clip's
+    ** widening (one line width, 0.8 bp by default, each side) plus the
+    ** rounding of cairo's ink extents (whole bp, outwards) */
+    assert_true(box[0] >= 0 && box[1] >= 0 && box[2] <= W && box[3] <= H);
+    assert_true(box[2] - box[0] <= sx_long * 1 + 2 * 0.8 + 2);
+    cf_figure_destroy(fig);
+
+    assert_int_equal(cf_figure_create(80, 40, CF_UNIT_MM, &fig, NULL), 0);
+    assert_int_equal(cf_figure_set_window(fig, 0, 1, 0, 0.5), 0);
+    assert_int_equal(cf_figure_add_polyline(fig, inside, 2, false, NULL),
+                     0);
+    assert_int_equal(cf_figure_add_points(fig, mid, 1, NULL), 0);
+    assert_int_equal(cf_figure_get_window(fig, NULL, &sx_inside, NULL), 0);
+    cf_figure_destroy(fig);
+    /* the two differ only by how far the ends stick out (round caps of
+    ** half a width vs the clip's full width: 0.8 bp over ~200 bp); the
+    ** unclipped line used to shrink the window by 40 % */
+    tu_assert_close(sx_long, sx_inside, 0.01, 0);
+
+    /* Lines lying on the window's edges stay whole: two 2 bp lines along
+    ** the bottom and top edges, rendered at 4 pixels per bp, are 8
+    ** pixels thick (half a line clipped away would leave 4). */
+    assert_int_equal(cf_figure_create(80, 40, CF_UNIT_MM, &fig, NULL), 0);
+    assert_int_equal(cf_figure_set_window(fig, 0, 1, 0, 0.5), 0);
+    cf_style_init(&st);
+    st.set = CF_STYLE_WIDTH | CF_STYLE_COLOR;
+    st.width = 2;
+    st.color.a = 1;   /* black */
+    {
+        double bottom[] = { 0, 0, 1, 0 };
+        cf_bezier_t *top;
+        double tp[] = { 0, 0.5, 0.5, 0.5, 1, 0.5 };
+        int runs[8];
+        size_t n, k;
+        assert_int_equal(cf_bezier_create(2, 2, tp, NULL, &top, NULL), 0);
+        assert_int_equal(cf_figure_add_polyline(fig, bottom, 2, false, &st),
+                         0);
+        assert_int_equal(cf_figure_add_bezier(fig, top, &st), 0);
+        cf_bezier_destroy(top);
+        n = dark_runs_mid_column(fig, 4 * 72, runs, 8);
+        assert_int_equal(n, 2);
+        for (k = 0; k < n; k++)
+            assert_in_range(runs[k], 7, 9);   /* 8 px, +-1 for the
+                                                 antialiased edges */
+    }
+    cf_figure_destroy(fig);
+}
+
 static void
 test_hull(void **state)
 {
@@ -1039,6 +1174,7 @@ main(void)
         cmocka_unit_test(test_bspline_pieces),
         cmocka_unit_test(test_net_colours_and_projection),
         cmocka_unit_test(test_window_fit),
+        cmocka_unit_test(test_explicit_window_clips),
         cmocka_unit_test(test_hull),
         cmocka_unit_test(test_label_halo),
         cmocka_unit_test(test_bad_input),

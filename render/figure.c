@@ -70,6 +70,8 @@ typedef struct element {
     text_t text;
     double x, y, dx, dy;
     axes_el_t *axes;
+    cf_place_t auto_place;   /* labels placed CF_PLACE_AUTO: the place
+                                chosen for the current layout */
 } element_t;
 
 struct cf_figure {
@@ -2271,7 +2273,9 @@ draw_element(cf_figure_t *fig, element_t *e, const cf__layout_t *l,
         if (!in_window(l, e->x, e->y))
             return CF_STATUS_OK;
         map_pt(l, e->x, e->y, &px, &py);
-        return draw_text(fig, &e->text, cr, &s, px, py, s.place, s.offset);
+        return draw_text(fig, &e->text, cr, &s, px, py,
+                         s.place == CF_PLACE_AUTO ? e->auto_place : s.place,
+                         s.offset);
     }
     case EL_NET:
         /* lines of every level first, then the markers on top */
@@ -2317,12 +2321,153 @@ draw_element(cf_figure_t *fig, element_t *e, const cf__layout_t *l,
     return CF_STATUS_OK;
 }
 
+/* ---- automatic label places -------------------------------------------- */
+
+#define AUTO_RES 2.0          /* raster pixels per bp */
+#define AUTO_MAX_PIXELS 4e6   /* larger pages get a coarser raster */
+#define AUTO_GAP 1.0          /* bp around a label that should stay clear */
+#define AUTO_NEAR 3.0         /* bp: ink this close costs a quarter */
+
+/* Ink in the page box x0 y0 x1 y1 (bp) of an A8 raster at res pixels per
+** bp, in bp^2 of full ink; pixels off the page count as full ink. */
+static double
+raster_ink(cairo_surface_t *img, double res, const double b[4])
+{
+    const unsigned char *px = cairo_image_surface_get_data(img);
+    int w = cairo_image_surface_get_width(img);
+    int h = cairo_image_surface_get_height(img);
+    int stride = cairo_image_surface_get_stride(img);
+    double i0 = floor(b[0] * res), i1 = ceil(b[2] * res);
+    double j0 = floor(b[1] * res), j1 = ceil(b[3] * res);
+    double sum = 0, inside = 0;
+    int i, j, ci0 = (int)fmax(i0, 0), ci1 = (int)fmin(i1, w);
+    int cj0 = (int)fmax(j0, 0), cj1 = (int)fmin(j1, h);
+    for (j = cj0; j < cj1; j++)
+        for (i = ci0; i < ci1; i++)
+            sum += px[(size_t)j * (size_t)stride + (size_t)i];
+    if (ci1 > ci0 && cj1 > cj0)
+        inside = (double)(ci1 - ci0) * (cj1 - cj0);
+    sum += 255.0 * ((i1 - i0) * (j1 - j0) - inside);
+    return sum / (255.0 * res * res);
+}
+
+/* The cost of a label with ink box ink (relative to its origin) at
+** origin (ox, oy): ink under the box widened by AUTO_GAP, plus a quarter
+** of the ink in the ring out to AUTO_NEAR. */
+static double
+place_cost(cairo_surface_t *img, double res, const double ink[4], double ox,
+           double oy)
+{
+    double hard[4], near[4], a, b;
+    hard[0] = ox + ink[0] - AUTO_GAP;
+    hard[1] = oy + ink[1] - AUTO_GAP;
+    hard[2] = ox + ink[2] + AUTO_GAP;
+    hard[3] = oy + ink[3] + AUTO_GAP;
+    near[0] = ox + ink[0] - AUTO_NEAR;
+    near[1] = oy + ink[1] - AUTO_NEAR;
+    near[2] = ox + ink[2] + AUTO_NEAR;
+    near[3] = oy + ink[3] + AUTO_NEAR;
+    a = raster_ink(img, res, hard);
+    b = raster_ink(img, res, near);
+    return a + 0.25 * fmax(0, b - a);
+}
+
+/* Choose the places of the labels placed CF_PLACE_AUTO for this layout:
+** everything else is rasterized at low resolution (fills and hulls left
+** out: labels may sit on a shading), then each automatic label in turn
+** takes the cheapest of the eight places and is added to the raster. */
+static cf_status_t
+place_auto_labels(cf_figure_t *fig, const cf__layout_t *lay)
+{
+    static const cf_place_t order[] = {
+        CF_PLACE_NE, CF_PLACE_NW, CF_PLACE_SE, CF_PLACE_SW,
+        CF_PLACE_N, CF_PLACE_S, CF_PLACE_E, CF_PLACE_W
+    };
+    cairo_surface_t *img;
+    cairo_t *cr;
+    cf_style_t s;
+    double res = AUTO_RES;
+    size_t i, k;
+    bool any = false;
+    cf_status_t st = CF_STATUS_OK;
+
+    for (i = 0; i < fig->count && !any; i++) {
+        element_t *e = &fig->els[i];
+        if (e->kind != EL_LABEL)
+            continue;
+        cf__style_resolve(&fig->theme, e->role, &e->style, &s);
+        any = s.place == CF_PLACE_AUTO;
+    }
+    if (!any)
+        return CF_STATUS_OK;
+    if (fig->width * fig->height * res * res > AUTO_MAX_PIXELS)
+        res = sqrt(AUTO_MAX_PIXELS / (fig->width * fig->height));
+    img = cairo_image_surface_create(CAIRO_FORMAT_A8,
+                                     (int)ceil(fig->width * res),
+                                     (int)ceil(fig->height * res));
+    cr = cairo_create(img);
+    if (cairo_status(cr) != CAIRO_STATUS_SUCCESS) {
+        cairo_destroy(cr);
+        cairo_surface_destroy(img);
+        return cf__error(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                         "out of memory placing labels");
+    }
+    cairo_scale(cr, res, res);
+    for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
+        element_t *e = &fig->els[i];
+        if (e->kind == EL_FILL || e->kind == EL_HULL)
+            continue;
+        if (e->kind == EL_LABEL) {
+            cf__style_resolve(&fig->theme, e->role, &e->style, &s);
+            if (s.place == CF_PLACE_AUTO)
+                continue;
+        }
+        cairo_save(cr);
+        st = draw_element(fig, e, lay, cr);
+        cairo_restore(cr);
+    }
+    for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
+        element_t *e = &fig->els[i];
+        double px, py, ink[4], best = INFINITY;
+        if (e->kind != EL_LABEL)
+            continue;
+        cf__style_resolve(&fig->theme, e->role, &e->style, &s);
+        if (s.place != CF_PLACE_AUTO || !in_window(lay, e->x, e->y))
+            continue;
+        st = text_ensure(fig, &e->text, s.font_size);
+        if (st != CF_STATUS_OK)
+            break;
+        cf__label_ink(e->text.lab, ink);
+        map_pt(lay, e->x, e->y, &px, &py);
+        cairo_surface_flush(img);
+        e->auto_place = order[0];
+        for (k = 0; k < sizeof order / sizeof order[0]; k++) {
+            double ox, oy, c;
+            label_origin(e->text.lab, order[k], s.offset, px, py, &ox, &oy);
+            c = place_cost(img, res, ink, ox, oy);
+            /* a later place must be clearly better (0.05 bp^2) */
+            if (c < best - 0.05) {
+                best = c;
+                e->auto_place = order[k];
+            }
+        }
+        cairo_save(cr);
+        st = draw_element(fig, e, lay, cr);
+        cairo_restore(cr);
+    }
+    cairo_destroy(cr);
+    cairo_surface_destroy(img);
+    return st;
+}
+
 cf_status_t
 cf__figure_draw(cf_figure_t *fig, const cf__layout_t *lay, cairo_t *cr,
                 cf_diag_t *diag)
 {
     size_t i;
     (void)diag;
+    if (place_auto_labels(fig, lay) != CF_STATUS_OK)
+        return fig->err.status;
     for (i = 0; i < fig->count; i++) {
         cairo_save(cr);
         if (draw_element(fig, &fig->els[i], lay, cr) != CF_STATUS_OK) {

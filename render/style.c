@@ -165,12 +165,13 @@ cf_place_from_name(const char *name, cf_place_t *out, cf_diag_t *diag)
 {
     static const char *const names[] = {
         "center", "n", "ne", "e", "se", "s", "sw", "w", "nw",
-        "centre", "above", "right", "below", "left"
+        "centre", "above", "right", "below", "left", "auto"
     };
     static const cf_place_t places[] = {
         CF_PLACE_CENTER, CF_PLACE_N, CF_PLACE_NE, CF_PLACE_E, CF_PLACE_SE,
         CF_PLACE_S, CF_PLACE_SW, CF_PLACE_W, CF_PLACE_NW,
-        CF_PLACE_CENTER, CF_PLACE_N, CF_PLACE_E, CF_PLACE_S, CF_PLACE_W
+        CF_PLACE_CENTER, CF_PLACE_N, CF_PLACE_E, CF_PLACE_S, CF_PLACE_W,
+        CF_PLACE_AUTO
     };
     int i;
     if (name == NULL || out == NULL)
@@ -180,7 +181,8 @@ cf_place_from_name(const char *name, cf_place_t *out, cf_diag_t *diag)
     if (i < 0)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "unknown label place \"%s\" (use center, n, ne, "
-                         "e, se, s, sw, w, nw, above, below, left or right)",
+                         "e, se, s, sw, w, nw, above, below, left, right "
+                         "or auto)",
                          name);
     *out = places[i];
     return CF_STATUS_OK;

@@ -106,11 +106,16 @@ typedef enum cf_place {
     CF_PLACE_SW,
     CF_PLACE_W,
     CF_PLACE_NW,
+    CF_PLACE_AUTO,        /* the one of the eight places above whose box
+                             (plus 1 bp) covers the least of what is
+                             drawn (lines, markers, other labels, the page
+                             edge), ties and near-ties in the order ne, nw,
+                             se, sw, n, s, e, w; chosen at drawing time */
     CF_PLACE_LAST_
 } cf_place_t;
 
-/* "center" "n" "ne" "e" "se" "s" "sw" "w" "nw" (also "above", "below",
-** "left", "right"). */
+/* "center" "n" "ne" "e" "se" "s" "sw" "w" "nw" "auto" (also "above",
+** "below", "left", "right"). */
 cf_status_t cf_place_from_name(const char *name, cf_place_t *out,
                                cf_diag_t *diag);
 

@@ -879,6 +879,138 @@ test_explicit_window_clips(void **state)
     cf_figure_destroy(fig);
 }
 
+/* The ink box of all text in an SVG: the glyph outlines (cairo puts them
+** in <symbol>s, used at the glyph origins) read from the file, each the
+** box of its path's points (which holds the outline). */
+static void
+text_page_box(const char *svg, double box[4])
+{
+    const char *p = strstr(svg, "</defs>");
+    int uses = 0;
+    assert_non_null(p);
+    box[0] = box[1] = INFINITY;
+    box[2] = box[3] = -INFINITY;
+    while ((p = strstr(p, "<use xlink:href=\"#")) != NULL) {
+        char id[64], key[80];
+        const char *q = p + 18, *sym, *d;
+        double x, y;
+        size_t n = strcspn(q, "\"");
+        assert_true(n < sizeof id);
+        memcpy(id, q, n);
+        id[n] = '\0';
+        x = strtod(strstr(q, " x=\"") + 4, NULL);
+        y = strtod(strstr(q, " y=\"") + 4, NULL);
+        snprintf(key, sizeof key, "id=\"%s\"", id);
+        sym = strstr(svg, key);
+        assert_non_null(sym);
+        d = strstr(sym, " d=\"");
+        assert_non_null(d);
+        d += 4;
+        while (*d != '"') {
+            char *e1, *e2;
+            double gx, gy;
+            if ((*d >= 'A' && *d <= 'Z') || *d == ' ') {
+                d++;
+                continue;
+            }
+            gx = strtod(d, &e1);
+            gy = strtod(e1, &e2);
+            assert_true(e1 != d && e2 != e1);
+            box[0] = fmin(box[0], x + gx);
+            box[2] = fmax(box[2], x + gx);
+            box[1] = fmin(box[1], y + gy);
+            box[3] = fmax(box[3], y + gy);
+            d = e2;
+        }
+        uses++;
+        p = q;
+    }
+    assert_true(uses > 0);
+}
+
+/* How many of 64 samples per drawn path segment fall inside box. */
+static int
+samples_inside(const paths_t *ps, const double box[4])
+{
+    size_t i;
+    int k, n = 0;
+    for (i = 0; i < ps->nseg; i++)
+        for (k = 0; k <= 64; k++) {
+            double x, y;
+            cubic_at(ps->seg[i].p, k / 64.0, &x, &y);
+            if (x > box[0] && x < box[2] && y > box[1] && y < box[3])
+                n++;
+        }
+    return n;
+}
+
+/* A figure of a polyline through pts (n points) and the label "P_1" at
+** vertex v, placed `place`; returns its SVG. */
+static char *
+labelled_polyline(const double *pts, size_t n, size_t v, cf_place_t place)
+{
+    cf_figure_t *fig = new_fig();
+    cf_style_t st;
+    char *svg;
+    cf_style_init(&st);
+    st.set = CF_STYLE_PLACE;
+    st.place = place;
+    assert_int_equal(cf_figure_add_polyline(fig, pts, n, false, NULL), 0);
+    assert_int_equal(cf_figure_add_label(fig, pts[2 * v], pts[2 * v + 1],
+                                         "P_1", &st), 0);
+    svg = render_svg(fig);
+    /* deterministic: the same choice on every rendering */
+    {
+        char *again = render_svg(fig);
+        assert_string_equal(svg, again);
+        free(again);
+    }
+    cf_figure_destroy(fig);
+    return svg;
+}
+
+static void
+test_auto_label_place(void **state)
+{
+    /* a V with its vertex at the bottom, a line just under the vertex
+    ** (at 1/10 of the V's height: some 13 bp on this page), and a
+    ** Lambda: the label of the vertex must not cross any of the lines */
+    double vee[] = { 0, 1, 1, 0, 2, 1 };
+    double vee_floor[] = { 0, 1, 1, 0, 2, 1, 2, -0.1, 0, -0.1 };
+    double lambda[] = { 0, 0, 1, 1, 2, 0 };
+    struct {
+        const double *pts;
+        size_t n;
+    } cases[] = { { vee, 3 }, { vee_floor, 5 }, { lambda, 3 } };
+    size_t k;
+    cf_place_t pl;
+    (void)state;
+    assert_int_equal(cf_place_from_name("auto", &pl, NULL), 0);
+    assert_int_equal(pl, CF_PLACE_AUTO);
+    for (k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        char *svg = labelled_polyline(cases[k].pts, cases[k].n, 1,
+                                      CF_PLACE_AUTO);
+        paths_t *ps = malloc(sizeof *ps);
+        double box[4];
+        stroked_paths(svg, ps);
+        assert_true(ps->nseg >= 2);
+        text_page_box(svg, box);
+        assert_int_equal(samples_inside(ps, box), 0);
+        free(svg);
+        /* the check sees a collision: the default place (ne) of the V's
+        ** vertex puts the label on the right leg */
+        if (k == 0) {
+            svg = labelled_polyline(cases[k].pts, cases[k].n, 1,
+                                    CF_PLACE_NE);
+            stroked_paths(svg, ps);
+            text_page_box(svg, box);
+            assert_true(samples_inside(ps, box) > 0);
+            free(svg);
+        }
+        free(ps);
+    }
+}
+
 static void
 test_hull(void **state)
 {
@@ -1175,6 +1307,7 @@ main(void)
         cmocka_unit_test(test_net_colours_and_projection),
         cmocka_unit_test(test_window_fit),
         cmocka_unit_test(test_explicit_window_clips),
+        cmocka_unit_test(test_auto_label_place),
         cmocka_unit_test(test_hull),
         cmocka_unit_test(test_label_halo),
         cmocka_unit_test(test_bad_input),

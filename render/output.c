@@ -17,6 +17,7 @@
 #include <cairo-ps.h>
 #include <cairo-svg.h>
 
+#include "png-private.h"
 #include "render-private.h"
 
 static const char *const format_names[CF_FORMAT_LAST_] = {
@@ -415,9 +416,14 @@ render_buf(cf_figure_t *fig, cf_format_t format,
     draw_page(fig, &lay, &pg, cr);
     cst = cairo_status(cr);
     cairo_destroy(cr);
-    if (format == CF_FORMAT_PNG && cst == CAIRO_STATUS_SUCCESS) {
-        cairo_surface_flush(surf);
-        cst = cairo_surface_write_to_png_stream(surf, stream_write, &raw);
+    if (format == CF_FORMAT_PNG && cst == CAIRO_STATUS_SUCCESS
+        && cf_figure_status(fig, NULL) == CF_STATUS_OK) {
+        st = cf__png_encode(surf, o->dpi, &raw, diag);
+        if (st != CF_STATUS_OK) {
+            cairo_surface_destroy(surf);
+            cf__buf_free(&raw);
+            return st;
+        }
     }
     cairo_surface_finish(surf);
     if (cst == CAIRO_STATUS_SUCCESS)

@@ -997,7 +997,7 @@ rational_derivative(const cf_bezier_t *c, cf_bezier_t **out, cf_diag_t *diag)
                           d->pts + k, h, -1.0, true);
     }
     for (int i = 0; i < 2 * n; i++)
-        d->pts[(size_t)i * h + dim] = 1.0;   /* placeholder for elevation */
+        d->pts[(size_t)i * h + dim] = 1.0;   /* any value: the weights are overwritten below */
     cf__elevate_in_place(d->pts, h, 2 * n - 1, 1);
     cf__bernstein_product(c->pts + dim, n, h, c->pts + dim, n, h, d->pts + dim,
                       h, 1.0, false);

@@ -130,7 +130,8 @@ parse_args(int argc, char **argv, options *o, int *rc)
     }
     if (strcmp(o->command, "--version") == 0 ||
         strcmp(o->command, "version") == 0) {
-        printf("curvefig %s\n", CF_TOOL_VERSION);
+        printf("curvefig %s\nfonts: %s\n", CF_TOOL_VERSION,
+               cf__tool_fonts_init());
         *rc = 0;
         return -1;
     }
@@ -399,6 +400,7 @@ run_script(const options *o)
         return EXIT_USAGE;
     }
     start_watchdog(o->script, o->timeout);
+    cf__tool_fonts_init();
     cf_diag_clear(&diag);
     /* list keeps stdout for the names: the script's prints go to stderr */
     st = cf_script_create(&o->limits,

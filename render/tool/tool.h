@@ -25,4 +25,9 @@ void cf__tool_manifest_line(FILE *f, const char *name, const char *caption,
 int cf__tool_gallery(const char *out, const char *title,
                      const char *const *manifests, int count);
 
+/* Before the first font is used: a fontconfig configuration with just
+** the figure fonts (fonts.c), unless the user chose one or the fonts are
+** elsewhere.  Returns which configuration is in use, for --version. */
+const char *cf__tool_fonts_init(void);
+
 #endif

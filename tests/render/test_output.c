@@ -11,6 +11,7 @@
 
 #include <dirent.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cmocka.h>
@@ -956,6 +957,213 @@ test_png_errors(void **state)
     cairo_surface_destroy(bad);
 }
 
+/* ---- the tool's font configuration (render/tool/fonts.c) ---------------- */
+
+static const char *tool_path;   /* argv[1]: the built curvefig, or NULL */
+
+/* Run the tool with args (NULL-terminated, without argv[0]); with
+** system_fonts, FONTCONFIG_FILE names the system configuration.  stdout
+** goes to out (may be NULL).  The exit status. */
+static int
+run_tool(const char *const *args, bool system_fonts, char *out, size_t cap)
+{
+    const char *argv[16];
+    int fd[2], status;
+    size_t n = 0, len = 0;
+    pid_t pid;
+    argv[n++] = tool_path;
+    while (args[n - 1] != NULL && n < 15) {
+        argv[n] = args[n - 1];
+        n++;
+    }
+    argv[n] = NULL;
+    assert_int_equal(pipe(fd), 0);
+    pid = fork();
+    assert_true(pid >= 0);
+    if (pid == 0) {
+        dup2(fd[1], STDOUT_FILENO);
+        close(fd[0]);
+        close(fd[1]);
+        if (system_fonts)
+            setenv("FONTCONFIG_FILE", "/etc/fonts/fonts.conf", 1);
+        else
+            unsetenv("FONTCONFIG_FILE");
+        unsetenv("FONTCONFIG_PATH");
+        execv(tool_path, (char *const *)argv);
+        _exit(127);
+    }
+    close(fd[1]);
+    for (;;) {
+        char sink[512];
+        ssize_t k = out != NULL && len + 1 < cap
+                        ? read(fd[0], out + len, cap - 1 - len)
+                        : read(fd[0], sink, sizeof sink);
+        if (k <= 0)
+            break;
+        if (out != NULL && len + 1 < cap)
+            len += (size_t)k;
+    }
+    if (out != NULL)
+        out[len] = '\0';
+    close(fd[0]);
+    assert_true(waitpid(pid, &status, 0) == pid);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+static blob_t
+read_file_blob(const char *path)
+{
+    blob_t b = { NULL, 0 };
+    FILE *f = fopen(path, "rb");
+    long n;
+    if (f == NULL)
+        fail_msg("cannot read %s", path);
+    fseek(f, 0, SEEK_END);
+    n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    b.data = malloc((size_t)n + 1);
+    assert_non_null(b.data);
+    b.size = fread(b.data, 1, (size_t)n, f);
+    assert_int_equal(b.size, (size_t)n);
+    fclose(f);
+    return b;
+}
+
+static void
+write_text(const char *path, const char *text)
+{
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    assert_int_equal(fputs(text, f) >= 0, 1);
+    assert_int_equal(fclose(f), 0);
+}
+
+/* The tool's own configuration is in use here (Debian with fonts-lmodern,
+** fonts-cmu and fonts-noto-cjk); NULL-safe skip otherwise. */
+static bool
+tool_uses_own_fonts(void)
+{
+    const char *v[] = { "--version", NULL };
+    char out[512];
+    if (tool_path == NULL)
+        return false;
+    assert_int_equal(run_tool(v, false, out, sizeof out), 0);
+    return strstr(out, "curvefig's configuration") != NULL;
+}
+
+/* Every label of a figure drawn from Latin Modern (optical sizes 5 to 17,
+** upright, italic, bold), CMU Serif (Cyrillic, Greek upright) and Noto
+** Serif CJK (regular, bold, and sheared in an italic run): the five files
+** are byte for byte those of the system's fontconfig configuration. */
+static void
+test_tool_fonts_same_as_system(void **state)
+{
+    static const char script[] =
+        "local f = figure{ name = \"fonts\", width = \"12cm\","
+        " height = \"9cm\" }\n"
+        "f:polyline({ {0, 0}, {10, 0}, {10, 9}, {0, 9} })\n"
+        "local labels = {\n"
+        "  \"$P_0 + Q^2_{k-1} \\\\omega_i \\\\times \\\\pm \\\\mp$\",\n"
+        "  \"$a \\\\leq b \\\\geq c \\\\neq d \\\\approx e \\\\equiv f"
+        " \\\\to g$\",\n"
+        "  \"$x \\\\in A \\\\subset B, \\\\infty, \\\\partial, \\\\nabla,"
+        " \\\\ldots, \\\\cdots$\",\n"
+        "  \"$\\\\sum \\\\prod \\\\int f', \\\\ell, 30\\\\deg, \\\\|v\\\\|$\",\n"
+        "  \"$\\\\hat{x} \\\\bar{y} \\\\tilde{z} \\\\vec{v} \\\\dot{a}"
+        " \\\\ddot{b} \\\\frac{1}{2}$\",\n"
+        "  \"$\\\\mathbf{B}_i \\\\mathit{it} \\\\mathrm{rm} \\\\text{text}"
+        " \\\\operatorname{sin}$\",\n"
+        "  \"K\\xc5\\x99ivka \\xd0\\x9a\\xd1\\x80\\xd0\\xb8\\xd0\\xb2\\xd0\\xb0"
+        "\\xd1\\x8f \\xe6\\x9b\\xb2\\xe7\\xba\\xbf \\xce\\xba\\xce\\xbb\",\n"
+        "  \"$\\\\mathbf{\\xd0\\x9a\\xd1\\x80\\xd0\\xb8\\xd0\\xb2\\xd0\\xb0"
+        "\\xd1\\x8f} \\\\mathit{\\xd0\\x9a\\xd1\\x80\\xd0\\xb8\\xd0\\xb2\\xd0\\xb0"
+        "\\xd1\\x8f}$\",\n"
+        "  \"$\\\\mathbf{\\xe6\\x9b\\xb2\\xe7\\xba\\xbf}"
+        " \\\\mathit{\\xe6\\x9b\\xb2\\xe7\\xba\\xbf} \\xe6\\x9b\\xb2$\",\n"
+        "}\n"
+        "for i, s in ipairs(labels) do\n"
+        "  f:label({ 0.2, 9.2 - i }, s, { place = \"e\" })\n"
+        "end\n"
+        "f:label({ 5, 0.3 }, \"$\\\\alpha\\\\beta x_1$\","
+        " { place = \"n\", font_size = 5 })\n"
+        "f:label({ 8, 0.3 }, \"Ab $x^{y^{z}}_{k}$\","
+        " { place = \"n\", font_size = 20 })\n";
+    static const char *const ext[] = { "svg", "pdf", "png", "ps", "eps" };
+    char path[256], dir_own[96], dir_sys[96];
+    blob_t pdf;
+    (void)state;
+    if (!tool_uses_own_fonts())
+        skip();
+    snprintf(path, sizeof path, "%s/fonts.lua", tmpdir);
+    write_text(path, script);
+    snprintf(dir_own, sizeof dir_own, "%s/own", tmpdir);
+    snprintf(dir_sys, sizeof dir_sys, "%s/sys", tmpdir);
+    {
+        const char *a[] = { "render", path, "-o", dir_own, "-f", "all",
+                            NULL };
+        const char *b[] = { "render", path, "-o", dir_sys, "-f", "all",
+                            NULL };
+        assert_int_equal(run_tool(a, false, NULL, 0), 0);
+        assert_int_equal(run_tool(b, true, NULL, 0), 0);
+    }
+    for (size_t i = 0; i < sizeof ext / sizeof ext[0]; i++) {
+        blob_t x, y;
+        snprintf(path, sizeof path, "%s/fonts.%s", dir_own, ext[i]);
+        x = read_file_blob(path);
+        snprintf(path, sizeof path, "%s/fonts.%s", dir_sys, ext[i]);
+        y = read_file_blob(path);
+        assert_int_equal(x.size, y.size);
+        assert_memory_equal(x.data, y.data, x.size);
+        free(x.data);
+        free(y.data);
+    }
+    /* and the fonts are the intended ones: Latin Modern's optical sizes,
+    ** CMU, Noto CJK regular and bold */
+    snprintf(path, sizeof path, "%s/fonts.pdf", dir_own);
+    pdf = read_file_blob(path);
+    assert_true(blob_has(&pdf, "LMRoman10-Regular"));
+    assert_true(blob_has(&pdf, "LMRoman10-Bold"));
+    assert_true(blob_has(&pdf, "LMRoman7-Italic"));
+    assert_true(blob_has(&pdf, "LMRoman5-Regular"));
+    assert_true(blob_has(&pdf, "LMRoman17-Regular"));
+    assert_true(blob_has(&pdf, "CMUSerif-Roman"));
+    assert_true(blob_has(&pdf, "NotoSerifCJKsc-Regular"));
+    assert_true(blob_has(&pdf, "NotoSerifCJKsc-Bold"));
+    free(pdf.data);
+}
+
+/* Math symbols none of the three families has (cdot, circ, mapsto,
+** angle brackets) come from Latin Modern Math, never a missing glyph;
+** with FONTCONFIG_FILE set the system's configuration is reported. */
+static void
+test_tool_fonts_fallback_and_choice(void **state)
+{
+    static const char script[] =
+        "local f = figure{ name = \"sym\", width = \"4cm\", height = \"2cm\" }\n"
+        "f:polyline({ {0, 0}, {4, 2} })\n"
+        "f:label({ 2, 1 }, \"$a \\\\cdot b \\\\circ c \\\\mapsto"
+        " \\\\langle u \\\\rangle$\")\n";
+    const char *v[] = { "--version", NULL };
+    char path[256], dir[96], out[512];
+    blob_t pdf;
+    (void)state;
+    if (!tool_uses_own_fonts())
+        skip();
+    snprintf(path, sizeof path, "%s/sym.lua", tmpdir);
+    write_text(path, script);
+    snprintf(dir, sizeof dir, "%s/sym", tmpdir);
+    {
+        const char *a[] = { "render", path, "-o", dir, "-f", "pdf", NULL };
+        assert_int_equal(run_tool(a, false, NULL, 0), 0);
+    }
+    snprintf(path, sizeof path, "%s/sym.pdf", dir);
+    pdf = read_file_blob(path);
+    assert_true(blob_has(&pdf, "LatinModernMath-Regular"));
+    free(pdf.data);
+    assert_int_equal(run_tool(v, true, out, sizeof out), 0);
+    assert_non_null(strstr(out, "fonts: the system's fontconfig"));
+}
+
 static int
 remove_tmpdir(void **state)
 {
@@ -965,9 +1173,11 @@ remove_tmpdir(void **state)
     return system(cmd) == 0 ? 0 : -1;
 }
 
+/* argv[1], when given, is the built curvefig for the tool's tests. */
 int
-main(void)
+main(int argc, char **argv)
 {
+    tool_path = argc > 1 ? argv[1] : NULL;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_byte_identical),
         cmocka_unit_test(test_no_clock_in_files),
@@ -981,6 +1191,8 @@ main(void)
         cmocka_unit_test(test_png_opaque_is_rgb),
         cmocka_unit_test(test_png_figure),
         cmocka_unit_test(test_png_errors),
+        cmocka_unit_test(test_tool_fonts_same_as_system),
+        cmocka_unit_test(test_tool_fonts_fallback_and_choice),
     };
     return cmocka_run_group_tests(tests, make_tmpdir, remove_tmpdir);
 }

@@ -54,6 +54,26 @@ static const char cache_dirs[] =
     "<cachedir>/var/cache/fontconfig</cachedir>\n"
     "<cachedir prefix=\"xdg\">fontconfig</cachedir>\n";
 
+/* Only the families of the theme's list (and Latin Modern Math, for the
+** math symbols none of them has) enter the font set: 28 fonts instead
+** of the 136 of these directories, and pango sorts the whole set once per
+** font description (a 0.25 ms sort becomes 0.07 ms).  An empty pattern
+** matches every font; acceptfont wins over rejectfont. */
+static const char select_families[] =
+    "<selectfont>\n"
+    " <acceptfont>\n"
+    "  <pattern><patelt name=\"family\"><string>Latin Modern Roman</string>"
+    "</patelt></pattern>\n"
+    "  <pattern><patelt name=\"family\"><string>CMU Serif</string>"
+    "</patelt></pattern>\n"
+    "  <pattern><patelt name=\"family\"><string>Noto Serif CJK SC</string>"
+    "</patelt></pattern>\n"
+    "  <pattern><patelt name=\"family\"><string>Latin Modern Math</string>"
+    "</patelt></pattern>\n"
+    " </acceptfont>\n"
+    " <rejectfont><pattern></pattern></rejectfont>\n"
+    "</selectfont>\n";
+
 /* Synthetic styles.  A font that is upright while the request is not
 ** gets the shear x' = x + 0.2 y and is then called oblique; a font of
 ** weight medium or less under a bold request is emboldened and called
@@ -113,8 +133,8 @@ config_text(char *buf, size_t cap)
             return false;
         len += (size_t)n;
     }
-    n = snprintf(buf + len, cap - len, "%s%s</fontconfig>\n", cache_dirs,
-                 synthetic_rules);
+    n = snprintf(buf + len, cap - len, "%s%s%s</fontconfig>\n", cache_dirs,
+                 select_families, synthetic_rules);
     return n >= 0 && (size_t)n < cap - len;
 }
 

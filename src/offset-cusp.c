@@ -24,6 +24,7 @@
 ** cusps, where P touches or barely crosses zero twice, are not missed.
 */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "core-private.h"
@@ -139,6 +140,13 @@ dwork_begin(const cf_bezier_t *c, size_t deg_max, size_t extra, dwork *w)
     return 0;
 }
 
+static int
+cmp_double(const void *x, const void *y)
+{
+    double a = *(const double *)x, b = *(const double *)y;
+    return (a > b) - (a < b);
+}
+
 /* Copy the kept roots into a new array and free the work buffer. */
 static cf_status_t
 hand_over(double *buf, const double *roots, size_t kept, double **ts,
@@ -252,7 +260,7 @@ cf__offset_cusps_alloc(const cf_bezier_t *c, double d, double **ts,
                 continue;
             /* Newton polish on the curve, only while it improves */
             cusp_f(c, d, t, &f, &df, &crs, &sp);
-            for (int it = 0; it < 6 && df != 0.0; it++) {
+            for (int it = 0; it < 16 && df != 0.0; it++) {
                 double tn = t - f / df, fn, dfn, crn, spn;
                 if (!(tn > 0.0 && tn < 1.0))
                     break;
@@ -265,13 +273,23 @@ cf__offset_cusps_alloc(const cf_bezier_t *c, double d, double **ts,
                 crs = crn;
                 sp = spn;
             }
-            if (!(d * crs > 0.0) || sp <= 1e-9 * sc)
+            /* a true cusp: d (c' x c'') = |c'|^3 > 0 to rounding (the
+            ** coefficient-level zero test of the isolation can admit
+            ** points where the polynomial is merely small) */
+            if (!(d * crs > 0.0) || sp <= 1e-9 * sc ||
+                !(fabs(f) <= 1e-6 * sp * sp * sp))
                 continue;
-            if (kept > 0 && fabs(roots[kept - 1] - t) < 1e-12)
-                continue;
+            {
+                bool dup = false;
+                for (size_t j = 0; j < kept; j++)
+                    dup = dup || fabs(roots[j] - t) < 1e-12;
+                if (dup)
+                    continue;
+            }
             roots[kept++] = t;
         }
     }
+    qsort(roots, kept, sizeof(double), cmp_double);
     return hand_over(buf, roots, kept, ts, nout);
 }
 

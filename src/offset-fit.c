@@ -154,16 +154,18 @@ cf__osrc_deriv(const cf__osrc_t *s, double t, double *p, double *dp)
 void
 cf__cubic_pd(const double *pts, double s, double *p, double *dp)
 {
-    double x[4] = { pts[0], pts[2], pts[4], pts[6] };
-    double y[4] = { pts[1], pts[3], pts[5], pts[7] };
-    double dx[3], dy[3];
-    p[0] = cf__bp_eval(x, 3, s);
-    p[1] = cf__bp_eval(y, 3, s);
+    /* the four cubic Bernstein polynomials and those of degree 2 */
+    double u = 1.0 - s;
+    double b0 = u * u * u, b1 = 3.0 * u * u * s, b2 = 3.0 * u * s * s,
+           b3 = s * s * s;
+    p[0] = b0 * pts[0] + b1 * pts[2] + b2 * pts[4] + b3 * pts[6];
+    p[1] = b0 * pts[1] + b1 * pts[3] + b2 * pts[5] + b3 * pts[7];
     if (dp != NULL) {
-        cf__bp_deriv(x, 3, dx);
-        cf__bp_deriv(y, 3, dy);
-        dp[0] = cf__bp_eval(dx, 2, s);
-        dp[1] = cf__bp_eval(dy, 2, s);
+        double c0 = 3.0 * u * u, c1 = 6.0 * u * s, c2 = 3.0 * s * s;
+        dp[0] = c0 * (pts[2] - pts[0]) + c1 * (pts[4] - pts[2]) +
+                c2 * (pts[6] - pts[4]);
+        dp[1] = c0 * (pts[3] - pts[1]) + c1 * (pts[5] - pts[3]) +
+                c2 * (pts[7] - pts[5]);
     }
 }
 
@@ -224,7 +226,10 @@ foot_g(cf__pd_fn fn, const void *ctx, const double *q, double u,
 {
     double p[2], dp[2];
     fn(ctx, u, p, dp);
-    *dist = hypot(p[0] - q[0], p[1] - q[1]);
+    {
+        double dx = p[0] - q[0], dy = p[1] - q[1];
+        *dist = sqrt(dx * dx + dy * dy);
+    }
     return (p[0] - q[0]) * dp[0] + (p[1] - q[1]) * dp[1];
 }
 
@@ -235,12 +240,14 @@ cf__dist_sampled(cf__pd_fn fn, const void *ctx, const double *smp, int k,
     int j = 0;
     double best = INFINITY;
     for (int i = 0; i <= k; i++) {
-        double dd = hypot(smp[2 * i] - q[0], smp[2 * i + 1] - q[1]);
+        double dx = smp[2 * i] - q[0], dy = smp[2 * i + 1] - q[1];
+        double dd = dx * dx + dy * dy;
         if (dd < best) {
             best = dd;
             j = i;
         }
     }
+    best = sqrt(best);
     for (int side = -1; side <= 1; side += 2) {
         int i0 = side < 0 ? j - 1 : j, i1 = i0 + 1;
         double u0, u1, g0, g1, d0, d1;
@@ -735,25 +742,23 @@ tiller_hanson(const cf__osrc_t *s, double a, double b, double *pts)
 
 cf_status_t
 cf__fit_piece(const cf__osrc_t *s, double a, double b,
-              cf_offset_method_t method, cf__fit_t *out)
+              cf_offset_method_t method, double reject, cf__fit_t *out)
 {
     cf_status_t st;
+    double be = INFINITY;
     if (method == CF_OFFSET_TILLER_HANSON && s->kind == 0) {
         st = tiller_hanson(s, a, b, out->pts);
         if (st != CF_STATUS_OK)
             return st;
-        return cf__fit_error(s, a, b, out->pts, K_FINE, &out->err);
+        st = cf__fit_error(s, a, b, out->pts, K_COARSE, &be);
     } else {
         double cand[MAX_CAND][8];
         int nc = 0, best = 0;
-        double be = INFINITY;
         st = levien_candidates(s, a, b, cand, &nc);
         if (st != CF_STATUS_OK)
             return st;
         for (int i = 0; i < nc; i++) {
             double e;
-            if (nc == 1)
-                break;
             st = cf__fit_error(s, a, b, cand[i], K_COARSE, &e);
             if (st != CF_STATUS_OK)
                 return st;
@@ -763,6 +768,17 @@ cf__fit_piece(const cf__osrc_t *s, double a, double b,
             }
         }
         memcpy(out->pts, cand[best], sizeof out->pts);
-        return cf__fit_error(s, a, b, out->pts, K_FINE, &out->err);
     }
+    if (st != CF_STATUS_OK)
+        return st;
+    /* the coarse estimate is (up to sampling) a lower bound: a piece it
+    ** already rejects needs no fine measurement */
+    if (be > reject) {
+        out->err = be;
+        return CF_STATUS_OK;
+    }
+    st = cf__fit_error(s, a, b, out->pts, K_FINE, &out->err);
+    if (st == CF_STATUS_OK)
+        out->err = fmax(out->err, be);
+    return st;
 }

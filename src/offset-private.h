@@ -79,9 +79,11 @@ typedef struct cf__fit {
 } cf__fit_t;
 
 /* Fit the source on [a, b] by `method`, measuring the error (two-sided
-** Hausdorff estimate). */
+** Hausdorff estimate).  A fit whose coarse estimate already exceeds
+** `reject` is returned with that estimate only. */
 cf_status_t cf__fit_piece(const cf__osrc_t *s, double a, double b,
-                          cf_offset_method_t method, cf__fit_t *out);
+                          cf_offset_method_t method, double reject,
+                          cf__fit_t *out);
 
 /* Two-sided Hausdorff estimate between the source on [a, b] and the cubic
 ** pts[8], with k samples each side (k >= 4). */

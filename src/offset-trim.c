@@ -138,6 +138,17 @@ seg_cross(const double *a, const double *b, const double *c,
     return *x >= 0.0 && *x < 1.0 && *y >= 0.0 && *y < 1.0;
 }
 
+/* Is the crossing (gi, gj) already recorded (splits come in pairs)? */
+static bool
+known(const trim *tr, double gi, double gj)
+{
+    for (size_t k = 0; k + 1 < tr->nsplit; k += 2)
+        if (fabs(tr->splits[k] - gi) < 1e-9 &&
+            fabs(tr->splits[k + 1] - gj) < 1e-9)
+            return true;
+    return false;
+}
+
 static cf_status_t
 find_intersections(trim *tr)
 {
@@ -171,6 +182,8 @@ find_intersections(trim *tr)
                     }
                     if (j == i + 1 && s > 1.0 - 1e-7 && u < 1e-7)
                         continue;
+                    if (known(tr, (double)i + s, (double)j + u))
+                        continue;   /* found from a neighbouring pair */
                     {
                         cf_status_t st = add_split(tr, (double)i + s);
                         if (st == CF_STATUS_OK)
@@ -193,12 +206,17 @@ cmp_double(const void *x, const void *y)
     return (a > b) - (a < b);
 }
 
+/* Inside the swept disk: closer to the curve than |d| - margin.  Pieces
+** are classified with margin 2 tol (the raw chain is within tol of the
+** exact offset, which is at distance >= |d| where it is kept); the cut
+** between a kept and a dropped sample is placed where the distance reaches
+** |d| - tol, so that what is kept stays at distance >= |d| - tol. */
 static bool
-inside(const trim *tr, double g)
+inside(const trim *tr, double g, double margin)
 {
     double p[2];
     chain_point(tr, g, p);
-    return base_dist(tr, p) < fabs(tr->d) - 2.0 * tr->tol;
+    return base_dist(tr, p) < fabs(tr->d) - margin * tr->tol;
 }
 
 /* Append the part [g0, g1] of the raw chain to ch. */
@@ -311,7 +329,7 @@ cf__offset_trim(const cf_bezier_t *const *base, size_t nbase, double d,
         if (g1 - g0 < 1e-12)
             continue;
         for (int m = 0; m < CLASS_N; m++)
-            cls[m] = inside(&tr, g0 + (g1 - g0) * (m + 0.5) / CLASS_N);
+            cls[m] = inside(&tr, g0 + (g1 - g0) * (m + 0.5) / CLASS_N, 2.0);
         for (int m = 0; m < CLASS_N; m++) {
             double end = g1;
             if (m + 1 < CLASS_N && cls[m + 1] == cls[m])
@@ -319,14 +337,16 @@ cf__offset_trim(const cf_bezier_t *const *base, size_t nbase, double d,
             if (m + 1 < CLASS_N) {
                 double lo = g0 + (g1 - g0) * (m + 0.5) / CLASS_N;
                 double hi = g0 + (g1 - g0) * (m + 1.5) / CLASS_N;
+                /* bisect on "inside by |d| - tol" from the kept side */
+                double in_end = cls[m] ? lo : hi, out_end = cls[m] ? hi : lo;
                 for (int it = 0; it < 50; it++) {
-                    double mid = 0.5 * (lo + hi);
-                    if (inside(&tr, mid) == cls[m])
-                        lo = mid;
+                    double mid = 0.5 * (in_end + out_end);
+                    if (inside(&tr, mid, 0.999))
+                        in_end = mid;
                     else
-                        hi = mid;
+                        out_end = mid;
                 }
-                end = 0.5 * (lo + hi);
+                end = out_end;
             }
             if (!cls[m]) {
                 if (!open) {

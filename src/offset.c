@@ -177,7 +177,8 @@ fit_bisect(driver *dr, const cf__osrc_t *s, double a, double b, double w0,
            int depth)
 {
     cf__fit_t f;
-    cf_status_t st = cf__fit_piece(s, a, b, dr->method, &f);
+    cf_status_t st =
+        cf__fit_piece(s, a, b, dr->method, ACCEPT * dr->tol, &f);
     if (st != CF_STATUS_OK)
         return st;
     if (f.err <= ACCEPT * dr->tol || depth >= 40 || b - a < MIN_WIDTH * w0)
@@ -219,7 +220,8 @@ plist_add(plist *l, const cf__fit_t *f, double a, double b)
 static cf_status_t
 fit_range(driver *dr, const cf__osrc_t *s, double x, double y, cf__fit_t *f)
 {
-    return cf__fit_piece(s, fmin(x, y), fmax(x, y), dr->method, f);
+    return cf__fit_piece(s, fmin(x, y), fmax(x, y), dr->method,
+                         ACCEPT * dr->tol, f);
 }
 
 /* Greedy cover of [a, b] by the longest pieces within tolerance, walking
@@ -281,7 +283,10 @@ fit_greedy(driver *dr, const cf__osrc_t *s, double a, double b)
 {
     plist fw = { NULL, 0, 0 }, bw = { NULL, 0, 0 };
     cf_status_t st = greedy_dir(dr, s, a, b, 1, &fw);
-    if (st == CF_STATUS_OK && fw.n > 1)
+    /* the backward cover can save a piece only when the forward one ends
+    ** with a short remainder */
+    if (st == CF_STATUS_OK && fw.n > 1 &&
+        fw.p[fw.n - 1].b - fw.p[fw.n - 1].a < 0.5 * (b - a) / (double)fw.n)
         st = greedy_dir(dr, s, a, b, -1, &bw);
     if (st == CF_STATUS_OK) {
         if (bw.n > 0 && bw.n < fw.n) {
@@ -628,6 +633,29 @@ cf_bezier_list_offset(const cf_bezier_list_t *list, double d,
     return offset_pieces((const cf_bezier_t *const *)list->items,
                          list->count, list->t0, list->t1, d, opt, raw,
                          trimmed, rep, diag);
+}
+
+cf_status_t
+cf_bspline_offset(const cf_bspline_t *s, double d,
+                  const cf_offset_options_t *opt, cf_cubics_t **raw,
+                  cf_cubics_list_t **trimmed, cf_offset_report_t *rep,
+                  cf_diag_t *diag)
+{
+    cf_bezier_list_t *list = NULL;
+    cf_status_t st;
+    if (raw != NULL)
+        *raw = NULL;
+    if (trimmed != NULL)
+        *trimmed = NULL;
+    if (s == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "offset: the B-spline is NULL");
+    st = cf_bspline_to_beziers(s, &list, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    st = cf_bezier_list_offset(list, d, opt, raw, trimmed, rep, diag);
+    cf_bezier_list_destroy(list);
+    return st;
 }
 
 /* ---- independent measure ---------------------------------------------------- */

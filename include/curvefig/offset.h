@@ -56,6 +56,7 @@
 
 #include "curvefig/core.h"
 #include "curvefig/bezier.h"
+#include "curvefig/bspline.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -143,6 +144,14 @@ cf_status_t cf_bezier_list_offset(const cf_bezier_list_t *list, double d,
                                   cf_cubics_t **raw,
                                   cf_cubics_list_t **trimmed,
                                   cf_offset_report_t *rep, cf_diag_t *diag);
+
+/* A B-spline or NURBS curve (dim 2): its Bézier pieces
+** (cf_bspline_to_beziers) through cf_bezier_list_offset; parameters in the
+** output are the spline's. */
+cf_status_t cf_bspline_offset(const cf_bspline_t *s, double d,
+                              const cf_offset_options_t *opt,
+                              cf_cubics_t **raw, cf_cubics_list_t **trimmed,
+                              cf_offset_report_t *rep, cf_diag_t *diag);
 
 /*
 ** Independent check of an offset approximation of c at d: the two-sided

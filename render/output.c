@@ -127,9 +127,12 @@ figure_error(cf_figure_t *fig, cf_diag_t *diag)
     return cf_figure_status(fig, diag);
 }
 
+/* Layout and page size.  The ink box needs a drawing pass into a
+** recording surface; it is made only when asked for (need_ink) or when
+** the page is cropped to it (tight); otherwise pg->ink is left zero. */
 static cf_status_t
-make_page(cf_figure_t *fig, const cf_write_options_t *o, cf__layout_t *lay,
-          page_t *pg, cf_diag_t *diag)
+make_page(cf_figure_t *fig, const cf_write_options_t *o, bool need_ink,
+          cf__layout_t *lay, page_t *pg, cf_diag_t *diag)
 {
     cairo_surface_t *rec;
     cairo_t *cr;
@@ -137,6 +140,10 @@ make_page(cf_figure_t *fig, const cf_write_options_t *o, cf__layout_t *lay,
 
     if (cf__figure_layout(fig, lay, NULL) != CF_STATUS_OK)
         return figure_error(fig, diag);
+    memset(pg->ink, 0, sizeof pg->ink);
+    cf_figure_get_size(fig, &pg->w, &pg->h);
+    if (!need_ink && !o->tight)
+        return CF_STATUS_OK;
     rec = cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, NULL);
     cr = cairo_create(rec);
     cf__figure_draw(fig, lay, cr, NULL);
@@ -155,7 +162,6 @@ make_page(cf_figure_t *fig, const cf_write_options_t *o, cf__layout_t *lay,
     pg->ink[1] = y;
     pg->ink[2] = x + w;
     pg->ink[3] = y + h;
-    cf_figure_get_size(fig, &pg->w, &pg->h);
     if (o->tight && w > 0 && h > 0) {
         /* the shift goes into the data -> page map, so that the files
         ** carry plain coordinates (no SVG transform attributes) */
@@ -344,13 +350,14 @@ pdf_date(char *buf, size_t cap)
 
 /* ---- rendering to memory ------------------------------------------------ */
 
+/* One format of a page laid out by make_page, into out. */
 static cf_status_t
-render_buf(cf_figure_t *fig, cf_format_t format,
-           const cf_write_options_t *o, cf__buf_t *out, page_t *pg_out,
-           cf_diag_t *diag)
+render_page(cf_figure_t *fig, cf_format_t format,
+            const cf_write_options_t *o, const cf__layout_t *layout,
+            const page_t *page, cf__buf_t *out, cf_diag_t *diag)
 {
-    cf__layout_t lay;
-    page_t pg;
+    cf__layout_t lay = *layout;
+    page_t pg = *page;
     cf__buf_t raw;
     cairo_surface_t *surf = NULL;
     cairo_t *cr;
@@ -358,11 +365,6 @@ render_buf(cf_figure_t *fig, cf_format_t format,
     cf_status_t st;
 
     memset(&raw, 0, sizeof raw);
-    st = make_page(fig, o, &lay, &pg, diag);
-    if (st != CF_STATUS_OK)
-        return st;
-    if (pg_out != NULL)
-        *pg_out = pg;
     switch (format) {
     case CF_FORMAT_SVG:
         surf = cairo_svg_surface_create_for_stream(stream_write, &raw, pg.w,
@@ -486,6 +488,19 @@ check_fig_format(cf_figure_t *fig, cf_format_t format, cf_diag_t *diag)
     return CF_STATUS_OK;
 }
 
+/* Lay out and render one format into buf (checked options). */
+static cf_status_t
+render_buf(cf_figure_t *fig, cf_format_t format,
+           const cf_write_options_t *o, cf__buf_t *buf, cf_diag_t *diag)
+{
+    cf__layout_t lay;
+    page_t pg;
+    cf_status_t st = make_page(fig, o, false, &lay, &pg, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    return render_page(fig, format, o, &lay, &pg, buf, diag);
+}
+
 /* Check the arguments and render into buf. */
 static cf_status_t
 render_checked(cf_figure_t *fig, cf_format_t format,
@@ -499,7 +514,7 @@ render_checked(cf_figure_t *fig, cf_format_t format,
         st = options_or_default(options, &o, diag);
     if (st != CF_STATUS_OK)
         return st;
-    return render_buf(fig, format, &o, buf, NULL, diag);
+    return render_buf(fig, format, &o, buf, diag);
 }
 
 cf_status_t
@@ -534,7 +549,7 @@ cf_figure_ink_box(cf_figure_t *fig, const cf_write_options_t *options,
     if (st == CF_STATUS_OK)
         st = options_or_default(options, &o, diag);
     if (st == CF_STATUS_OK)
-        st = make_page(fig, &o, &lay, &pg, diag);
+        st = make_page(fig, &o, true, &lay, &pg, diag);
     if (st != CF_STATUS_OK)
         return st;
     if (box != NULL)
@@ -629,10 +644,13 @@ cf_status_t
 cf_figure_write_all(cf_figure_t *fig, const char *basename, unsigned formats,
                     const cf_write_options_t *options, cf_diag_t *diag)
 {
+    cf_write_options_t o;
+    cf__layout_t lay;
+    page_t pg;
     size_t n;
     int f;
     char *path;
-    cf_status_t st = CF_STATUS_OK;
+    cf_status_t st;
 
     if (basename == NULL || basename[0] == '\0')
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
@@ -641,16 +659,29 @@ cf_figure_write_all(cf_figure_t *fig, const char *basename, unsigned formats,
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "format set 0x%x is empty or has unknown bits",
                          formats);
+    st = check_fig_format(fig, CF_FORMAT_SVG, diag);
+    if (st == CF_STATUS_OK)
+        st = options_or_default(options, &o, diag);
+    /* one layout for every format: the page is the same */
+    if (st == CF_STATUS_OK)
+        st = make_page(fig, &o, false, &lay, &pg, diag);
+    if (st != CF_STATUS_OK)
+        return st;
     n = strlen(basename);
     path = cf__malloc(n + 8);
     if (path == NULL)
         return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
                          "out of memory for a file name");
     for (f = 0; f < CF_FORMAT_LAST_ && st == CF_STATUS_OK; f++) {
+        cf__buf_t buf;
         if (!(formats & CF_FORMAT_BIT(f)))
             continue;
         snprintf(path, n + 8, "%s.%s", basename, format_names[f]);
-        st = cf_figure_write(fig, path, (cf_format_t)f, options, diag);
+        memset(&buf, 0, sizeof buf);
+        st = render_page(fig, (cf_format_t)f, &o, &lay, &pg, &buf, diag);
+        if (st == CF_STATUS_OK)
+            st = write_atomic(path, buf.data, buf.size, diag);
+        cf__buf_free(&buf);
     }
     cf__free(path);
     return st;

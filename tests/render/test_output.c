@@ -429,22 +429,31 @@ test_write_all_and_magic(void **state)
     const char *magic[] = { "<?xml", "%PDF-", "%!PS-Adobe-3.0\n",
                             "%!PS-Adobe-3.0 EPSF-3.0", "\x89PNG" };
     int f;
+    cf_write_options_t tight;
     (void)state;
     snprintf(base, sizeof base, "%s/fig", tmpdir);
-    assert_int_equal(cf_figure_write_all(fig, base, 0x1f, NULL, NULL), 0);
-    for (f = 0; f < CF_FORMAT_LAST_; f++) {
-        blob_t b, m;
-        snprintf(path, sizeof path, "%s.%s", base,
-                 cf_format_extension((cf_format_t)f));
-        b = read_file(path);
-        assert_true(b.size > strlen(magic[f]));
-        assert_memory_equal(b.data, magic[f], strlen(magic[f]));
-        /* the file is what render gives */
-        m = render(fig, (cf_format_t)f, NULL);
-        assert_int_equal(m.size, b.size);
-        assert_memory_equal(m.data, b.data, b.size);
-        cf_free(m.data);
-        free(b.data);
+    /* write_all lays the page out once for all formats: each file is
+    ** still what render gives for that format alone, also cropped */
+    cf_write_options_init(&tight);
+    tight.tight = true;
+    tight.padding = 3;
+    tight.dpi = 96;
+    for (int pass = 0; pass < 2; pass++) {
+        const cf_write_options_t *o = pass == 0 ? NULL : &tight;
+        assert_int_equal(cf_figure_write_all(fig, base, 0x1f, o, NULL), 0);
+        for (f = 0; f < CF_FORMAT_LAST_; f++) {
+            blob_t b, m;
+            snprintf(path, sizeof path, "%s.%s", base,
+                     cf_format_extension((cf_format_t)f));
+            b = read_file(path);
+            assert_true(b.size > strlen(magic[f]));
+            assert_memory_equal(b.data, magic[f], strlen(magic[f]));
+            m = render(fig, (cf_format_t)f, o);
+            assert_int_equal(m.size, b.size);
+            assert_memory_equal(m.data, b.data, b.size);
+            cf_free(m.data);
+            free(b.data);
+        }
     }
     assert_int_equal(count_entries(".cf-tmp-"), 0);
     cf_figure_destroy(fig);
@@ -1010,25 +1019,6 @@ run_tool(const char *const *args, bool system_fonts, char *out, size_t cap)
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-static blob_t
-read_file_blob(const char *path)
-{
-    blob_t b = { NULL, 0 };
-    FILE *f = fopen(path, "rb");
-    long n;
-    if (f == NULL)
-        fail_msg("cannot read %s", path);
-    fseek(f, 0, SEEK_END);
-    n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    b.data = malloc((size_t)n + 1);
-    assert_non_null(b.data);
-    b.size = fread(b.data, 1, (size_t)n, f);
-    assert_int_equal(b.size, (size_t)n);
-    fclose(f);
-    return b;
-}
-
 static void
 write_text(const char *path, const char *text)
 {
@@ -1109,9 +1099,9 @@ test_tool_fonts_same_as_system(void **state)
     for (size_t i = 0; i < sizeof ext / sizeof ext[0]; i++) {
         blob_t x, y;
         snprintf(path, sizeof path, "%s/fonts.%s", dir_own, ext[i]);
-        x = read_file_blob(path);
+        x = read_file(path);
         snprintf(path, sizeof path, "%s/fonts.%s", dir_sys, ext[i]);
-        y = read_file_blob(path);
+        y = read_file(path);
         assert_int_equal(x.size, y.size);
         assert_memory_equal(x.data, y.data, x.size);
         free(x.data);
@@ -1120,7 +1110,7 @@ test_tool_fonts_same_as_system(void **state)
     /* and the fonts are the intended ones: Latin Modern's optical sizes,
     ** CMU, Noto CJK regular and bold */
     snprintf(path, sizeof path, "%s/fonts.pdf", dir_own);
-    pdf = read_file_blob(path);
+    pdf = read_file(path);
     assert_true(blob_has(&pdf, "LMRoman10-Regular"));
     assert_true(blob_has(&pdf, "LMRoman10-Bold"));
     assert_true(blob_has(&pdf, "LMRoman7-Italic"));
@@ -1157,7 +1147,7 @@ test_tool_fonts_fallback_and_choice(void **state)
         assert_int_equal(run_tool(a, false, NULL, 0), 0);
     }
     snprintf(path, sizeof path, "%s/sym.pdf", dir);
-    pdf = read_file_blob(path);
+    pdf = read_file(path);
     assert_true(blob_has(&pdf, "LatinModernMath-Regular"));
     free(pdf.data);
     assert_int_equal(run_tool(v, true, out, sizeof out), 0);

@@ -175,14 +175,22 @@ make_page(cf_figure_t *fig, const cf_write_options_t *o, bool need_ink,
 
 static void
 draw_page(cf_figure_t *fig, const cf__layout_t *lay, const page_t *pg,
-          cairo_t *cr)
+          bool raster, cairo_t *cr)
 {
     const cf_color_t *bg = cf__figure_background(fig);
     if (bg->a > 0) {
         cairo_save(cr);
         cairo_set_source_rgba(cr, bg->r, bg->g, bg->b, bg->a);
-        cairo_rectangle(cr, 0, 0, pg->w, pg->h);
-        cairo_fill(cr);
+        /* A raster has whole pixels: the page (8 cm at 150 dpi is 472.4
+        ** px) is rounded up, and the background covers the last column
+        ** and row too instead of leaving them partly transparent; an
+        ** opaque background then gives an opaque image (an RGB PNG). */
+        if (raster) {
+            cairo_paint(cr);
+        } else {
+            cairo_rectangle(cr, 0, 0, pg->w, pg->h);
+            cairo_fill(cr);
+        }
         cairo_restore(cr);
     }
     cf__figure_draw(fig, lay, cr, NULL);
@@ -415,7 +423,7 @@ render_page(cf_figure_t *fig, cf_format_t format,
     cr = cairo_create(surf);
     if (format == CF_FORMAT_PNG)
         cairo_scale(cr, o->dpi / 72.0, o->dpi / 72.0);
-    draw_page(fig, &lay, &pg, cr);
+    draw_page(fig, &lay, &pg, format == CF_FORMAT_PNG, cr);
     cst = cairo_status(cr);
     cairo_destroy(cr);
     if (format == CF_FORMAT_PNG && cst == CAIRO_STATUS_SUCCESS

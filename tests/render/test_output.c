@@ -908,6 +908,26 @@ test_png_figure(void **state)
     cf_free(a.data);
     cf_free(b.data);
     cf_figure_destroy(fig);
+    /* an opaque background covers every pixel, also the last column and
+    ** row that the page (340.2 x 264.6 px) only partly covers: RGB */
+    fig = build_figure(false);
+    a = render(fig, CF_FORMAT_PNG, &o);
+    view.data = a.data;
+    view.size = a.size;
+    assert_int_equal(png_walk(&view).colour_type, 2);
+    dec = png_decode(&view);
+    assert_int_equal(cairo_image_surface_get_width(dec), 341);
+    {
+        /* the last pixel: white background (the axes end well inside) */
+        uint32_t p;
+        memcpy(&p, cairo_image_surface_get_data(dec)
+                       + 264 * cairo_image_surface_get_stride(dec) + 4 * 340,
+               4);
+        assert_int_equal(p & 0xffffff, 0xffffff);
+    }
+    cairo_surface_destroy(dec);
+    cf_free(a.data);
+    cf_figure_destroy(fig);
 }
 
 static void

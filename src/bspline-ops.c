@@ -929,6 +929,26 @@ done:
     return st;
 }
 
+/* The points of a computed curve are finite: differences of huge
+** coordinates, or quotients by tiny knot spans (p / (u_{i+p+1} - u_{i+1})
+** with spans near 1e-320), overflow to inf, and an affine map with huge
+** entries can too.  Such a curve is refused rather than returned (found by
+** the bad-input corpus). */
+static cf_status_t
+check_overflow(const cf_bspline_t *q, const char *what, cf_diag_t *diag)
+{
+    for (size_t i = 0; i < q->count * q->hdim; i++) {
+        if (!isfinite(q->P[i]))
+            return cf__error(diag, CF_STATUS_NOT_FINITE,
+                             (long)(i / q->hdim),
+                             "%s: control point %zu overflows (coordinate "
+                             "%zu is %g); the input is too large or its knot "
+                             "spans too small", what, i / q->hdim,
+                             i % q->hdim + 1, q->P[i]);
+    }
+    return CF_STATUS_OK;
+}
+
 cf_status_t
 cf_bspline_derivative(const cf_bspline_t *c, int k, cf_bspline_t **out,
                       cf_diag_t *diag)
@@ -948,6 +968,8 @@ cf_bspline_derivative(const cf_bspline_t *c, int k, cf_bspline_t **out,
         cf_bspline_destroy(cur);
         cur = nxt;
     }
+    if (st == CF_STATUS_OK)
+        st = check_overflow(cur, "derivative", diag);
     if (st != CF_STATUS_OK) {
         cf_bspline_destroy(cur);
         return st;
@@ -973,10 +995,21 @@ cf_bspline_reverse(const cf_bspline_t *c, cf_bspline_t **out,
     m = c->nknots - 1;
     n = c->count - 1;
     hd = c->hdim;
-    for (size_t i = 0; i <= m; i++)
-        q->U[i] = (c->U[0] + c->U[m]) - c->U[m - i];
-    q->U[0] = c->U[0];
-    q->U[m] = c->U[m];
+    /* u'_i = (u_0 + u_m) - u_{m-i}.  Rounding is monotone, so the
+    ** computed knots stay non-decreasing; the ends are then set exactly
+    ** (knots equal to u_m become u_0 and vice versa), and everything else is
+    ** kept inside [u_0, u_m]: forcing only u'_0 and u'_m could leave
+    ** u'_1 < u'_0 by one ulp (found by the fuzzer). */
+    for (size_t i = 0; i <= m; i++) {
+        double u = c->U[m - i];
+        if (u == c->U[m])
+            q->U[i] = c->U[0];
+        else if (u == c->U[0])
+            q->U[i] = c->U[m];
+        else
+            q->U[i] = fmin(fmax((c->U[0] + c->U[m]) - u, c->U[0]),
+                           c->U[m]);
+    }
     for (size_t i = 0; i <= n; i++)
         memcpy(q->P + i * hd, c->P + (n - i) * hd, hd * sizeof *q->P);
     cf__bspline_finish(q);
@@ -1019,6 +1052,11 @@ cf_bspline_transform(const cf_bspline_t *c, const double *A, const double *b,
         }
         if (c->rational)
             d[dim] = w;
+    }
+    st = check_overflow(q, "transform", diag);
+    if (st != CF_STATUS_OK) {
+        cf_bspline_destroy(q);
+        return st;
     }
     cf__bspline_finish(q);
     *out = q;

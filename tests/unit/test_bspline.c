@@ -962,6 +962,73 @@ test_derivative_curve(void **state)
     }
 }
 
+/* Reversal keeps a clamped vector valid when (u_0 + u_m) - u_m rounds
+** below u_0: with u_0 = 0.652, u_m = 1.441 it gives 0.6519999999999999,
+** and forcing only the end knots once left u'_1 < u'_0 (found by the
+** fuzzer, tests/fuzz/regressions/knots/). */
+/* A derivative or affine image that overflows is refused with NOT_FINITE
+** naming the control point, instead of a curve with inf points (found by
+** the bad-input corpus, tests/bad/cases/overflow-*.lua). */
+static void
+test_overflow_refused(void **state)
+{
+    const double P[] = { -1.7e308, 0, 1.7e308, 1, -1.7e308, 0 };
+    const double Q[] = { 0, 0, 1, 1, 2, 0, 3, 1 };
+    const double tiny = 1e-320;   /* subnormal: 2 / tiny overflows */
+    const double U[] = { 0, 0, 0, tiny, 2 * tiny, 2 * tiny, 2 * tiny };
+    const double A[] = { 1e300, 0, 0, 1e300 };
+    cf_bspline_t *c = NULL, *d = NULL;
+    cf_diag_t diag;
+    (void)state;
+    assert_int_equal(cf_bspline_create_clamped(2, 2, P, 3, NULL, &c, NULL),
+                     0);
+    cf_diag_clear(&diag);
+    assert_int_equal(cf_bspline_derivative(c, 1, &d, &diag),
+                     CF_STATUS_NOT_FINITE);
+    assert_null(d);
+    assert_non_null(strstr(diag.msg, "overflows"));
+    cf_bspline_destroy(c);
+    assert_int_equal(cf_bspline_create(2, 2, U, 7, Q, 4, NULL, &c, NULL), 0);
+    cf_diag_clear(&diag);
+    assert_int_equal(cf_bspline_derivative(c, 1, &d, &diag),
+                     CF_STATUS_NOT_FINITE);
+    assert_int_equal(cf_bspline_transform(c, A, NULL, &d, NULL), 0);
+    cf_bspline_destroy(d);
+    d = NULL;
+    cf_bspline_destroy(c);
+    assert_int_equal(cf_bspline_create_clamped(2, 2, P, 3, NULL, &c, NULL),
+                     0);
+    cf_diag_clear(&diag);
+    assert_int_equal(cf_bspline_transform(c, A, NULL, &d, &diag),
+                     CF_STATUS_NOT_FINITE);
+    assert_int_equal(diag.index, 0);
+    assert_null(d);
+    cf_bspline_destroy(c);
+}
+
+static void
+test_reverse_rounding(void **state)
+{
+    const double U[] = { 0.652, 0.652, 0.652, 1.0, 1.441, 1.441, 1.441 };
+    const double P[] = { 0, 0, 1, 2, 2, 0, 3, 1 };
+    cf_bspline_t *c = NULL, *rv = NULL;
+    cf_diag_t diag;
+    (void)state;
+    assert_true((U[0] + U[6]) - U[6] < U[0]);
+    assert_int_equal(cf_bspline_create(2, 2, U, 7, P, 4, NULL, &c, NULL), 0);
+    assert_int_equal(cf_bspline_reverse(c, &rv, NULL), 0);
+    cf_diag_clear(&diag);
+    assert_int_equal(cf_knots_validate(2, 4, cf_bspline_knots(rv), 7, &diag),
+                     CF_STATUS_OK);
+    /* the ends are exact and keep their multiplicity p + 1 */
+    assert_true(cf_bspline_knots(rv)[0] == U[0]);
+    assert_true(cf_bspline_knots(rv)[2] == U[0]);
+    assert_true(cf_bspline_knots(rv)[4] == U[6]);
+    assert_true(cf_bspline_knots(rv)[6] == U[6]);
+    cf_bspline_destroy(rv);
+    cf_bspline_destroy(c);
+}
+
 static void
 test_reverse_transform(void **state)
 {
@@ -1550,6 +1617,8 @@ main(void)
         cmocka_unit_test(test_insert_then_remove),
         cmocka_unit_test(test_derivative_curve),
         cmocka_unit_test(test_reverse_transform),
+        cmocka_unit_test(test_reverse_rounding),
+        cmocka_unit_test(test_overflow_refused),
         cmocka_unit_test(test_nurbs_unit_weights),
         cmocka_unit_test(test_circle_and_arcs),
         cmocka_unit_test(test_closed_curves),

@@ -1,0 +1,3 @@
+-- expect: 1 "figure: margin -10 bp must be >= 0 and leave room on a 226.772 x"
+-- a negative margin
+local f = figure{ name = 'z', margin = -10 }

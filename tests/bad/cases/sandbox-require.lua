@@ -1,0 +1,3 @@
+-- expect: 1 "attempt to call a nil value (global 'require')"
+-- require of a module
+local m = require('os')

@@ -1,0 +1,3 @@
+-- expect: 1 "bad argument #1 to 'setmetatable' (table expected, got string)"
+-- setmetatable on a string
+setmetatable('', {})

@@ -1,0 +1,3 @@
+-- expect: 1 "attempt to call a nil value (field 'dump')"
+-- string.dump
+local d = string.dump(function() end)

@@ -462,8 +462,11 @@ emit_char(parser_t *p, const font_t *f, unsigned cp, bool italic, int cls,
     pc->first = pc->end - 1;   /* the run holding the char (maybe merged) */
     pc->x1 = nx;
     pc->cls = cls;
-    if (italic && p->pos < p->len
-        && (p->s[p->pos] == '^' || p->s[p->pos] == '_'))
+    /* the italic correction, for the scripts or, like TeX's kern after a
+    ** math italic letter, before an upright delimiter, digit or prime:
+    ** f(t), V], P' (operators and relations have their own space) */
+    if (italic && !f->text && p->pos < p->len
+        && strchr("^_()[]|/,;'0123456789", p->s[p->pos]) != NULL)
         pc->ic = italic_correction(p->lab, &g, buf, n);
     {
         /* the nucleus' own ink: measured on the character alone */
@@ -654,8 +657,7 @@ parse_atom(parser_t *p, const font_t *f, double x, double y, piece_t *pc)
                 size_t m;
                 char buf[8];
                 font_t g = *f;
-                double nx, top, skew, ax;
-                run_t *r;
+                double nx, top, skew, ax, base_end;
                 while (p->pos < p->len && p->s[p->pos] == ' ')
                     p->pos++;
                 braced = p->pos < p->len && p->s[p->pos] == '{';
@@ -681,7 +683,10 @@ parse_atom(parser_t *p, const font_t *f, double x, double y, piece_t *pc)
                         || (base >= 0x3b1 && base <= 0x3c9));
                 if (!emit_char(p, &g, base, g.italic, CLS_ORD, x, y, pc))
                     return false;
-                r = &p->lab->runs[pc->first];
+                /* the end of the run holding the character (taken now:
+                ** the accent's run may move the run array) */
+                base_end = p->lab->runs[pc->first].x
+                    + p->lab->runs[pc->first].width;
                 top = pc->top;
                 skew = g.italic ? 0.12 * f->size * fmax(0, top) / f->size
                                 : 0;
@@ -697,7 +702,7 @@ parse_atom(parser_t *p, const font_t *f, double x, double y, piece_t *pc)
                 }
                 {
                     run_t *acc = &p->lab->runs[p->lab->count - 1];
-                    double base_cx = r->x + r->width
+                    double base_cx = base_end
                         - 0.5 * (pc->x1 - x);   /* centre of the char */
                     ax = base_cx + skew
                         - 0.5 * (acc->ink[0] + acc->ink[2]);
@@ -981,6 +986,8 @@ parse_list(parser_t *p, const font_t *f, double x, double y, int stop,
                 && (p->s[p->pos] == '_' || p->s[p->pos] == '^')) {
                 if (!parse_scripts(p, f, y, &pc))
                     return false;
+            } else {
+                pc.x1 += pc.ic;   /* before an upright symbol */
             }
             x = pc.x1;
             prev = pc.cls;

@@ -223,6 +223,25 @@ test_italic_correction(void **state)
         cf_label_destroy(lab);
     }
     {
+        /* TeX's kern after a math italic letter: an upright delimiter or
+        ** a digit after a slanted letter starts right of the letter's
+        ** ink, f(t) and V] do not touch */
+        const char *texts[] = { "f(t)", "V(t)", "f]", "P2" };
+        const char *next[] = { "(", "(", "]", "2" };
+        for (k = 0; k < 4; k++) {
+            char letter[2] = { texts[k][0], '\0' };
+            double ink_right, advance;
+            cf_label_t *lab = layout(texts[k]);
+            const cf_label_box_t *nuc = box_of(lab, letter);
+            const cf_label_box_t *d = box_of(lab, next[k]);
+            glyph_ink_right("LM Roman 10", letter, &ink_right, &advance);
+            assert_true(ink_right - advance > 0.03 * SIZE);
+            assert_true(d->x >= nuc->x + ink_right - 2.0 / 40);
+            assert_true(d->x <= nuc->x + ink_right + 2.0 / 40);
+            cf_label_destroy(lab);
+        }
+    }
+    {
         /* an upright nucleus (a digit, an upright capital Greek letter)
         ** has no correction: both scripts start at its advance */
         const char *upright[] = { "2_0^4", "\\Gamma_0^4" };
@@ -277,6 +296,25 @@ test_nested_scripts_and_greek(void **state)
     assert_true(b->y < a->y);
     assert_true(a->y > 0);
     cf_label_destroy(lab);
+
+    /* an accent centred over its letter (moved right by the slant), also
+    ** when the accent's run is the one that outgrows the run array (7
+    ** runs before the P, 8 allocated) */
+    {
+        const char *texts[] = { "\\hat{P}", "1+2+3+4\\hat{P}" };
+        size_t k;
+        for (k = 0; k < 2; k++) {
+            const cf_label_box_t *acc;
+            lab = layout(texts[k]);
+            a = box_of(lab, "P");
+            acc = box_of(lab, "\xcb\x86");   /* U+02C6 modifier circumflex */
+            assert_int_equal(acc->kind, CF_LABEL_BASE);
+            assert_true(acc->x + 0.5 * acc->width > a->x + 0.3 * a->width);
+            assert_true(acc->x + 0.5 * acc->width < a->x + 1.0 * a->width);
+            assert_true(acc->y > a->y);
+            cf_label_destroy(lab);
+        }
+    }
 
     lab = layout("\\omega_i\\Omega\\alpha");
     assert_true(box_of(lab, "\xcf\x89")->italic);      /* ω italic */

@@ -321,7 +321,7 @@ directed(const meas *m, int from)
         f1 = dist_to(m, 1 - from, other, p);
         curve_pd(m, from, x2, p, NULL);
         f2 = dist_to(m, 1 - from, other, p);
-        for (int it = 0; it < 24; it++) {
+        for (int it = 0; it < (k <= 16 ? 8 : 24); it++) {
             if (f1 > f2) {
                 hi = x2;
                 x2 = x1;

@@ -324,6 +324,122 @@ ps_fix(const cf__buf_t *in, cf__buf_t *out)
     return out->failed ? -1 : 0;
 }
 
+/* EPS from PS.  cairo's PostScript writer (cairo 1.16) emits the same
+** program for PS and EPS except for a few header and setup lines, and a
+** PS page with translucent elements costs a fallback image at 300 dpi
+** (half the time of the whole figure set went into PS and EPS).  So when
+** both are written, the EPS is derived from the PS:
+**   line 1 "%!PS-Adobe-3.0" gets " EPSF-3.0";
+**   "%%DocumentMedia:", "%%PageMedia:" and "W H cairo_set_page_size" go;
+**   the language-level check after "%%BeginProlog" (5 lines) becomes
+**   "50 dict begin", and "end" follows "%%Trailer";
+**   the definition "/cairo_set_page_size { ... } def" goes.
+** Every piece must be found exactly once, else -1 and the caller renders
+** the EPS through cairo; only used with cairo 1.16.0, the version the
+** test (tests/render/test_output.c) compares against byte for byte.
+** 0 on success, -1 unexpected input, -2 out of memory. */
+static bool
+line_is(const unsigned char *p, size_t n, const char *s)
+{
+    return n == strlen(s) && memcmp(p, s, n) == 0;
+}
+
+static bool
+line_starts(const unsigned char *p, size_t n, const char *s)
+{
+    return n >= strlen(s) && memcmp(p, s, strlen(s)) == 0;
+}
+
+/* "W H cairo_set_page_size\n" with W and H unsigned numbers. */
+static bool
+is_set_page_size(const unsigned char *p, size_t n)
+{
+    static const char tail[] = " cairo_set_page_size\n";
+    size_t t = sizeof tail - 1, i, spaces = 0;
+    if (n <= t || memcmp(p + n - t, tail, t) != 0)
+        return false;
+    for (i = 0; i < n - t; i++) {
+        if (p[i] == ' ')
+            spaces++;
+        else if (!((p[i] >= '0' && p[i] <= '9') || p[i] == '.'))
+            return false;
+    }
+    return spaces == 1 && p[0] != ' ' && p[n - t - 1] != ' ';
+}
+
+static int
+eps_from_ps(const cf__buf_t *ps, cf__buf_t *eps)
+{
+    const unsigned char *p = ps->data, *end = ps->data + ps->size;
+    int media = 0, level = 0, setpage_def = 0, page_media = 0;
+    int setpage_call = 0, trailer = 0, in_def = 0, line_no = 0;
+    int in_header = 1, skip_level = 0;
+
+    while (p < end) {
+        const unsigned char *nl = memchr(p, '\n', (size_t)(end - p));
+        size_t n;
+        int r = 0;
+        if (nl == NULL)
+            return -1;
+        n = (size_t)(nl + 1 - p);
+        line_no++;
+        if (line_no == 1) {
+            if (!line_is(p, n, "%!PS-Adobe-3.0\n"))
+                return -1;
+            r = buf_append_str(eps, "%!PS-Adobe-3.0 EPSF-3.0\n");
+        } else if (skip_level > 0) {
+            /* the language-level check: 4 more lines */
+            static const char *const check[] = {
+                "{ pop languagelevel } { 1 } ifelse\n",
+                " lt { /Helvetica findfont 12 scalefont setfont 50 500 "
+                "moveto\n",
+                "  (This print job requires a PostScript Language Level ",
+                "  showpage quit } if\n",
+            };
+            const char *want = check[4 - skip_level];
+            bool ok = skip_level == 3
+                ? n > strlen(want) && p[0] >= '1' && p[0] <= '3'
+                      && line_is(p + 1, n - 1, want)
+                : skip_level == 2 ? line_starts(p, n, want)
+                                  : line_is(p, n, want);
+            if (!ok)
+                return -1;
+            skip_level--;
+        } else if (in_def) {
+            if (line_is(p, n, "} def\n"))
+                in_def = 0;
+        } else if (in_header && line_starts(p, n, "%%DocumentMedia: ")) {
+            media++;
+        } else if (line_is(p, n, "%%EndComments\n")) {
+            in_header = 0;
+            r = cf__buf_append(eps, p, n);
+        } else if (line_is(p, n, "/languagelevel where\n")) {
+            level++;
+            skip_level = 4;
+            r = buf_append_str(eps, "50 dict begin\n");
+        } else if (line_is(p, n, "/cairo_set_page_size {\n")) {
+            setpage_def++;
+            in_def = 1;
+        } else if (line_starts(p, n, "%%PageMedia: ")) {
+            page_media++;
+        } else if (is_set_page_size(p, n)) {
+            setpage_call++;
+        } else if (line_is(p, n, "%%Trailer\n")) {
+            trailer++;
+            r = buf_append_str(eps, "%%Trailer\nend\n");
+        } else {
+            r = cf__buf_append(eps, p, n);
+        }
+        if (r != 0)
+            return -2;
+        p = nl + 1;
+    }
+    if (media != 1 || level != 1 || setpage_def != 1 || page_media != 1
+        || setpage_call != 1 || trailer != 1 || in_def || skip_level > 0)
+        return -1;
+    return 0;
+}
+
 /* PDF dates: from SOURCE_DATE_EPOCH (ISO 8601, UTC), else 2000-01-01 so
 ** that the clock never enters the file. */
 static void
@@ -655,6 +771,8 @@ cf_figure_write_all(cf_figure_t *fig, const char *basename, unsigned formats,
     cf_write_options_t o;
     cf__layout_t lay;
     page_t pg;
+    cf__buf_t ps;
+    bool derive_eps;
     size_t n;
     int f;
     char *path;
@@ -680,17 +798,38 @@ cf_figure_write_all(cf_figure_t *fig, const char *basename, unsigned formats,
     if (path == NULL)
         return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
                          "out of memory for a file name");
+    /* PS before EPS in format order; the EPS is derived from the PS */
+    derive_eps = (formats & CF_FORMAT_BIT(CF_FORMAT_PS))
+        && (formats & CF_FORMAT_BIT(CF_FORMAT_EPS))
+        && cairo_version() == CAIRO_VERSION_ENCODE(1, 16, 0);
+    memset(&ps, 0, sizeof ps);
     for (f = 0; f < CF_FORMAT_LAST_ && st == CF_STATUS_OK; f++) {
         cf__buf_t buf;
+        int r = -1;
         if (!(formats & CF_FORMAT_BIT(f)))
             continue;
         snprintf(path, n + 8, "%s.%s", basename, format_names[f]);
         memset(&buf, 0, sizeof buf);
-        st = render_page(fig, (cf_format_t)f, &o, &lay, &pg, &buf, diag);
+        if (f == CF_FORMAT_EPS && ps.data != NULL) {
+            r = eps_from_ps(&ps, &buf);
+            if (r == -2)
+                st = cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+                               "out of memory writing eps");
+            else if (r == -1)
+                cf__buf_free(&buf);
+        }
+        if (r == -1)
+            st = render_page(fig, (cf_format_t)f, &o, &lay, &pg, &buf,
+                             diag);
         if (st == CF_STATUS_OK)
             st = write_atomic(path, buf.data, buf.size, diag);
+        if (f == CF_FORMAT_PS && derive_eps && st == CF_STATUS_OK) {
+            ps = buf;
+            memset(&buf, 0, sizeof buf);
+        }
         cf__buf_free(&buf);
     }
+    cf__buf_free(&ps);
     cf__free(path);
     return st;
 }

@@ -459,6 +459,50 @@ test_write_all_and_magic(void **state)
     cf_figure_destroy(fig);
 }
 
+/* A translucent element makes cairo's PostScript writer embed a fallback
+** image; with PS and EPS both asked for, the EPS is derived from the PS
+** (output.c): it must be byte for byte cairo's own EPS, which
+** cf_figure_render(EPS) gives. */
+static void
+test_write_all_eps_from_ps(void **state)
+{
+    static const double square[] = { 0, 0, 4, 0, 4, 3, 0, 3 };
+    static const double line[] = { -1, -1, 5, 4 };
+    cf_figure_t *fig = NULL;
+    cf_style_t s;
+    char base[128], path[160];
+    blob_t ps, eps, ref;
+    (void)state;
+    assert_int_equal(cf_figure_create(60, 40, CF_UNIT_MM, &fig, NULL), 0);
+    cf_style_init(&s);
+    s.set = CF_STYLE_OPACITY;
+    s.opacity = 0.3;
+    assert_int_equal(cf_figure_add_fill(fig, square, 4, &s), 0);
+    assert_int_equal(cf_figure_add_polyline(fig, line, 2, false, NULL), 0);
+    assert_int_equal(cf_figure_add_label(fig, 2, 1.5, "$P_0$ \xd0\x9a", NULL),
+                     0);
+    snprintf(base, sizeof base, "%s/eps", tmpdir);
+    assert_int_equal(cf_figure_write_all(fig, base,
+                                         CF_FORMAT_BIT(CF_FORMAT_PS)
+                                         | CF_FORMAT_BIT(CF_FORMAT_EPS),
+                                         NULL, NULL), 0);
+    snprintf(path, sizeof path, "%s.ps", base);
+    ps = read_file(path);
+    snprintf(path, sizeof path, "%s.eps", base);
+    eps = read_file(path);
+    /* a fallback image is there (translucency in PostScript) */
+    assert_true(blob_has(&ps, "cairo_image"));
+    ref = render(fig, CF_FORMAT_EPS, NULL);
+    assert_int_equal(eps.size, ref.size);
+    assert_memory_equal(eps.data, ref.data, ref.size);
+    assert_true(blob_has(&eps, "%!PS-Adobe-3.0 EPSF-3.0\n"));
+    assert_false(blob_has(&eps, "cairo_set_page_size"));
+    cf_free(ref.data);
+    free(ps.data);
+    free(eps.data);
+    cf_figure_destroy(fig);
+}
+
 static void
 test_failed_write_keeps_old_file(void **state)
 {
@@ -1195,6 +1239,7 @@ main(int argc, char **argv)
         cmocka_unit_test(test_page_is_ink_box),
         cmocka_unit_test(test_cjk_and_cyrillic_ink),
         cmocka_unit_test(test_write_all_and_magic),
+        cmocka_unit_test(test_write_all_eps_from_ps),
         cmocka_unit_test(test_failed_write_keeps_old_file),
         cmocka_unit_test(test_write_errors),
         cmocka_unit_test(test_png_same_pixels_as_cairo),

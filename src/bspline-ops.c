@@ -348,7 +348,11 @@ cf_bspline_remove_knot(const cf_bspline_t *c, double u, int num, double tol,
         TOL = tol * wmin / (1.0 + pmax);
     }
     Pw = cf__alloc_array(c->count, hd * sizeof *Pw);
-    temp = cf__alloc_array(2 * p + 1, hd * sizeof *temp);
+    /* temp[0 .. last + 1 - off]: last + 1 - off = p - s + 2 + 2t with
+    ** t < num <= s, so at most p + s <= 2p + 1 (s = p + 1, a knot where
+    ** the curve may jump, removed p + 1 times).  The NURBS Book sizes it
+    ** 2p + 1, which is one short in that case (found by the fuzzer). */
+    temp = cf__alloc_array(2 * p + 2, hd * sizeof *temp);
     if (Pw == NULL || temp == NULL) {
         cf__free(Pw);
         cf__free(temp);

@@ -204,11 +204,28 @@ cf_knots_clamped_averaged(int degree, size_t npoints, const double *params,
     return CF_STATUS_OK;
 }
 
+/* The unchecked queries still refuse what would make them read outside
+** the vector: NULL, a degree out of range, fewer than 2p + 2 knots (API
+** misuse test). */
+static bool
+queryable(int degree, const double *knots, size_t nknots)
+{
+    return knots != NULL && degree >= 0 && degree <= CF_BSPLINE_MAX_DEGREE &&
+           nknots >= 2 * (size_t)degree + 2;
+}
+
 void
 cf_knots_domain(int degree, const double *knots, size_t nknots, double *a,
                 double *b)
 {
     size_t m = nknots - 1, p = (size_t)degree;
+    if (!queryable(degree, knots, nknots)) {
+        if (a != NULL)
+            *a = NAN;
+        if (b != NULL)
+            *b = NAN;
+        return;
+    }
     if (a != NULL)
         *a = knots[p];
     if (b != NULL)
@@ -218,7 +235,10 @@ cf_knots_domain(int degree, const double *knots, size_t nknots, double *a,
 size_t
 cf_knots_find_span(int degree, const double *U, size_t nknots, double u)
 {
-    size_t p = (size_t)degree, n = nknots - p - 2, lo, hi;
+    size_t p = (size_t)degree, n, lo, hi;
+    if (!queryable(degree, U, nknots))
+        return degree > 0 ? (size_t)degree : 0;
+    n = nknots - p - 2;
     if (!(u < U[n + 1])) {
         /* right end of the domain (or beyond): last non-empty span */
         size_t k = n;
@@ -274,6 +294,8 @@ cf_knots_classify(int degree, const double *U, size_t nknots)
     size_t p = (size_t)degree, m = nknots - 1, n = m - p - 1, period;
     double tol;
     bool periodic = true;
+    if (!queryable(degree, U, nknots))
+        return CF_KNOTS_OPEN;
     if (U[0] == U[p] && U[m - p] == U[m])
         return CF_KNOTS_CLAMPED;
     if (n + 1 < p + 1)

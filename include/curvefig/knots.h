@@ -91,7 +91,9 @@ cf_status_t cf_knots_clamped_averaged(int degree, size_t npoints,
                                       const double *params, double *out,
                                       cf_diag_t *diag);
 
-/* ---- queries (no checking; the vector must be valid for the degree) ---- */
+/* ---- queries (no checking; the vector must be valid for the degree) ----
+** Misuse is harmless: NULL, a degree outside [0, CF_BSPLINE_MAX_DEGREE] or
+** fewer than 2p + 2 knots give a NaN domain, span max(p, 0) and OPEN. */
 
 /* The domain [u_p, u_{m-p}] of a curve of degree p. */
 void cf_knots_domain(int degree, const double *knots, size_t nknots,

@@ -1006,6 +1006,38 @@ test_overflow_refused(void **state)
     cf_bspline_destroy(c);
 }
 
+/* Removing a knot of multiplicity p + 1 all p + 1 times: the work array
+** of A5.8 needs 2p + 2 points, not 2p + 1 (a heap overflow found by the
+** fuzzer, tests/fuzz/regressions/knots/remove-full-multiplicity; ASan in
+** CI sees it).  The curve is one quadratic, so all copies go and it comes
+** back unchanged. */
+static void
+test_remove_full_multiplicity(void **state)
+{
+    const double P[] = { 0, 0, 1, 2, 3, 1 };
+    cf_bspline_t *c = NULL, *ins = NULL, *rem = NULL;
+    int removed = -1;
+    (void)state;
+    assert_int_equal(cf_bspline_create_clamped(2, 2, P, 3, NULL, &c, NULL),
+                     0);
+    assert_int_equal(cf_bspline_insert_knot(c, 0.5, 3, &ins, NULL, NULL), 0);
+    assert_int_equal(cf_bspline_count(ins), 6);
+    assert_int_equal(cf_bspline_remove_knot(ins, 0.5, 3, 1e-12, &rem,
+                                            &removed, NULL), 0);
+    assert_int_equal(removed, 3);
+    assert_int_equal(cf_bspline_count(rem), 3);
+    for (int i = 0; i <= 10; i++) {
+        double x[2], y[2];
+        assert_int_equal(cf_bspline_eval(c, i / 10.0, x), 0);
+        assert_int_equal(cf_bspline_eval(rem, i / 10.0, y), 0);
+        /* exact up to rounding of a few operations on values <= 3 */
+        assert_true(tu_max_diff(x, y, 2) <= 1e-14 * 3 * 8);
+    }
+    cf_bspline_destroy(c);
+    cf_bspline_destroy(ins);
+    cf_bspline_destroy(rem);
+}
+
 static void
 test_reverse_rounding(void **state)
 {
@@ -1618,6 +1650,7 @@ main(void)
         cmocka_unit_test(test_derivative_curve),
         cmocka_unit_test(test_reverse_transform),
         cmocka_unit_test(test_reverse_rounding),
+        cmocka_unit_test(test_remove_full_multiplicity),
         cmocka_unit_test(test_overflow_refused),
         cmocka_unit_test(test_nurbs_unit_weights),
         cmocka_unit_test(test_circle_and_arcs),

@@ -1,0 +1,824 @@
+/*
+** API misuse, in the spirit of cairo's api-special-cases test: every
+** public function of the headers in include/curvefig/ is called with NULL pointers,
+** empty and zero-sized inputs, out-of-range numbers and inconsistent
+** arguments, and must return a status (never crash, never write through a
+** NULL pointer, never leave an output object behind); functions without a
+** status (queries, destroy) must be harmless on NULL.
+**
+** The enumeration is checked, not trusted: test_every_function_listed
+** reads the public headers and fails if a function declared there is not
+** named in this file.
+*/
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "curvefig/curvefig.h"
+#include "testutil.h"
+#ifdef CF_TEST_RENDER
+#include "curvefig/figure.h"
+#endif
+
+#ifndef CF_SOURCE_ROOT
+#error "CF_SOURCE_ROOT (the source tree) must be defined by the build"
+#endif
+
+/* A status that is a failure and a value of the enum. */
+static void
+bad_(cf_status_t st, const char *call, int line)
+{
+    if (st == CF_STATUS_OK || (int)st < 0 || st >= CF_STATUS_LAST_)
+        fail_msg("line %d: %s returned %d, expected a failure status", line,
+                 call, (int)st);
+}
+#define BAD(call) bad_((call), #call, __LINE__)
+
+/* The exact status. */
+#define IS(status, call) assert_int_equal((call), (status))
+
+static const double P4[] = { 0, 0, 1, 2, 2, -1, 3, 1 };
+static const double W4[] = { 1, 2, 1, 1 };
+static const double U7[] = { 0, 0, 0, 0.5, 1, 1, 1 };
+static const double NANS[] = { NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN };
+
+static void
+test_core(void **state)
+{
+    cf_diag_t diag;
+    cf_allocator_t a;
+    (void)state;
+    for (int s = -1; s <= CF_STATUS_LAST_; s++)
+        assert_non_null(cf_status_to_string((cf_status_t)s));
+    cf_diag_clear(NULL);
+    cf_diag_clear(&diag);
+    assert_int_equal(diag.status, CF_STATUS_OK);
+    cf_get_allocator(NULL);
+    cf_set_allocator(NULL);            /* restores the default */
+    cf_get_allocator(&a);
+    assert_non_null(a.realloc);
+    cf_free(NULL);
+}
+
+static void
+test_knots(void **state)
+{
+    double out[16], N[8], ders[16], v, a = 0, b = 0;
+    size_t span;
+    cf_diag_t diag;
+    (void)state;
+    assert_int_equal(cf_knots_count(-1, 4), 0);
+    assert_int_equal(cf_knots_count(2, 4), 7);
+    IS(CF_STATUS_INVALID_ARG, cf_knots_validate(2, 4, NULL, 7, NULL));
+    IS(CF_STATUS_BAD_DEGREE, cf_knots_validate(-1, 4, U7, 7, NULL));
+    IS(CF_STATUS_BAD_DEGREE, cf_knots_validate(1000, 4, U7, 7, NULL));
+    IS(CF_STATUS_TOO_FEW_POINTS, cf_knots_validate(2, 0, U7, 3, NULL));
+    IS(CF_STATUS_BAD_KNOTS, cf_knots_validate(2, 4, U7, 6, NULL));
+    IS(CF_STATUS_BAD_KNOTS, cf_knots_validate(2, 4, U7, 0, NULL));
+    IS(CF_STATUS_NOT_FINITE, cf_knots_validate(2, 4, NANS, 7, NULL));
+    cf_diag_clear(&diag);
+    BAD(cf_knots_validate(2, 4, (const double[]){ 0, 0, 0, 0.5, 0.3, 1, 1 },
+                          7, &diag));
+    assert_true(diag.msg[0] != '\0');
+    BAD(cf_knots_uniform(2, 4, 0, 1, NULL, NULL));
+    BAD(cf_knots_uniform(2, 4, 1, 0, out, NULL));
+    BAD(cf_knots_uniform(2, 4, NAN, 1, out, NULL));
+    BAD(cf_knots_uniform(-3, 4, 0, 1, out, NULL));
+    BAD(cf_knots_clamped_uniform(2, 4, 0, 1, NULL, NULL));
+    BAD(cf_knots_clamped_uniform(2, 1, 0, 1, out, NULL));
+    BAD(cf_knots_clamped_uniform(2, 4, 1, 1, out, NULL));
+    BAD(cf_knots_clamped_averaged(2, 4, NULL, out, NULL));
+    BAD(cf_knots_clamped_averaged(2, 4, (const double[]){ 0, 1, 1, 2 }, out,
+                                  NULL));
+    BAD(cf_knots_clamped_averaged(0, 4, (const double[]){ 0, 1, 2, 3 }, out,
+                                  NULL));
+    BAD(cf_knots_clamped_averaged(2, 4, (const double[]){ 0, 1, 2, 3 }, NULL,
+                                  NULL));
+    /* the unchecked queries: harmless on NULL and empty input */
+    cf_knots_domain(2, NULL, 0, &a, &b);
+    cf_knots_domain(2, U7, 7, NULL, NULL);
+    (void)cf_knots_find_span(2, NULL, 0, 0.5);
+    assert_int_equal(cf_knots_multiplicity(NULL, 0, 0.5), 0);
+    (void)cf_knots_classify(2, NULL, 0);
+    assert_non_null(cf_knot_kind_to_string((cf_knot_kind_t)99));
+    assert_non_null(cf_knot_kind_to_string(CF_KNOTS_CLAMPED));
+    BAD(cf_basis_funs(2, NULL, 7, 0.5, &span, N, NULL));
+    BAD(cf_basis_funs(2, U7, 7, 0.5, &span, NULL, NULL));
+    BAD(cf_basis_funs(2, U7, 5, 0.5, &span, N, NULL));
+    BAD(cf_basis_funs(2, U7, 7, 2.0, &span, N, NULL));
+    BAD(cf_basis_funs(2, U7, 7, NAN, &span, N, NULL));
+    BAD(cf_basis_funs(-1, U7, 7, 0.5, &span, N, NULL));
+    BAD(cf_basis_ders(2, U7, 7, 0.5, -1, &span, ders, NULL));
+    BAD(cf_basis_ders(2, U7, 7, 0.5, 1, &span, NULL, NULL));
+    BAD(cf_basis_ders(2, NULL, 0, 0.5, 1, &span, ders, NULL));
+    BAD(cf_basis_one(0, 3, U7, 4, 0.5, &v, NULL));
+    BAD(cf_basis_one(-1, 2, U7, 7, 0.5, &v, NULL));
+    BAD(cf_basis_one(0, 2, U7, 7, 0.5, NULL, NULL));
+    BAD(cf_basis_one(0, 2, U7, 7, NAN, &v, NULL));
+    BAD(cf_basis_one_ders(0, 2, U7, 7, 0.5, -1, out, NULL));
+    BAD(cf_basis_one_ders(0, 2, NULL, 7, 0.5, 1, out, NULL));
+    BAD(cf_basis_one_ders(0, 2, U7, 7, 0.5, 1, NULL, NULL));
+}
+
+static void
+test_bernstein(void **state)
+{
+    double out[8], M[16];
+    cf_bezier_t *c = NULL;
+    (void)state;
+    BAD(cf_bernstein_value(-1, 0, 0.5, out));
+    BAD(cf_bernstein_value(3, 0, 0.5, NULL));
+    BAD(cf_bernstein_value(3, 0, NAN, out));
+    BAD(cf_bernstein_all(-1, 0.5, out));
+    BAD(cf_bernstein_all(3, 0.5, NULL));
+    BAD(cf_bernstein_all_deriv(3, -1, 0.5, out));
+    BAD(cf_bernstein_all_deriv(3, 1, 0.5, NULL));
+    BAD(cf_bernstein_eval(3, NULL, 0.5, out));
+    BAD(cf_bernstein_eval(3, P4, 0.5, NULL));
+    BAD(cf_bernstein_eval(-2, P4, 0.5, out));
+    BAD(cf_bernstein_to_power_matrix(-1, M, NULL));
+    BAD(cf_bernstein_to_power_matrix(3, NULL, NULL));
+    BAD(cf_power_to_bernstein_matrix(-1, M, NULL));
+    BAD(cf_power_to_bernstein_matrix(3, NULL, NULL));
+    BAD(cf_bernstein_from_power(3, NULL, out, NULL));
+    BAD(cf_bernstein_from_power(3, P4, NULL, NULL));
+    BAD(cf_bernstein_to_power(3, NULL, out, NULL));
+    BAD(cf_bernstein_to_power(-1, P4, out, NULL));
+    BAD(cf_bernstein_approx(NULL, NULL, 3, out, NULL));
+    BAD(cf_bernstein_approx_curve(NULL, NULL, 3, &c, NULL));
+    assert_null(c);
+}
+
+static void
+test_bezier(void **state)
+{
+    cf_bezier_t *c = NULL, *o = NULL, *l = NULL, *r = NULL;
+    cf_cubics_t *cu = NULL;
+    double out[64], lo[2], hi[2], t, d;
+    size_t idx[4], n;
+    cf_diag_t diag;
+    (void)state;
+    /* construction */
+    IS(CF_STATUS_INVALID_ARG, cf_bezier_create(2, 3, P4, NULL, NULL, NULL));
+    BAD(cf_bezier_create(2, 3, NULL, NULL, &o, NULL));
+    BAD(cf_bezier_create(0, 3, P4, NULL, &o, NULL));
+    BAD(cf_bezier_create(2, -1, P4, NULL, &o, NULL));
+    BAD(cf_bezier_create(2, CF_BEZIER_MAX_DEGREE + 1, P4, NULL, &o, NULL));
+    BAD(cf_bezier_create(2, 3, NANS, NULL, &o, NULL));
+    BAD(cf_bezier_create(2, 3, P4, (const double[]){ 1, 0, 1, 1 }, &o,
+                         NULL));
+    BAD(cf_bezier_create(2, 3, P4, (const double[]){ 1, -1, 1, 1 }, &o,
+                         NULL));
+    BAD(cf_bezier_create(2, 3, P4, NANS, &o, NULL));
+    BAD(cf_bezier_create_homogeneous(2, 3, NULL, &o, NULL));
+    BAD(cf_bezier_create_homogeneous(2, 3, P4, NULL, NULL));
+    BAD(cf_bezier_create_homogeneous(0, 1, P4, &o, NULL));
+    BAD(cf_bezier_create_homogeneous(1, 3, (const double[]){ 0, 1, 1, 0, 2,
+                                                             1, 3, 1 }, &o,
+                                     NULL));
+    assert_null(o);
+    BAD(cf_bezier_copy(NULL, &o, NULL));
+    cf_bezier_destroy(NULL);
+    /* queries on NULL */
+    assert_int_equal(cf_bezier_dim(NULL), 0);
+    assert_int_equal(cf_bezier_degree(NULL), 0);
+    assert_false(cf_bezier_is_rational(NULL));
+    assert_null(cf_bezier_hpoints(NULL));
+    cf_bezier_get_points(NULL, out);
+    cf_bezier_get_weights(NULL, out);
+    assert_int_equal(cf_bezier_decasteljau_size(NULL), 0);
+    /* evaluation on NULL and with bad parameters */
+    assert_int_equal(cf_bezier_create(2, 3, P4, W4, &c, NULL), 0);
+    cf_bezier_get_points(c, NULL);
+    cf_bezier_get_weights(c, NULL);
+    IS(CF_STATUS_INVALID_ARG, cf_bezier_eval(NULL, 0.5, out));
+    IS(CF_STATUS_INVALID_ARG, cf_bezier_eval(c, 0.5, NULL));
+    IS(CF_STATUS_NOT_FINITE, cf_bezier_eval(c, NAN, out));
+    IS(CF_STATUS_DOMAIN, cf_bezier_eval(c, 1.5, out));
+    BAD(cf_bezier_eval_many(NULL, (const double[]){ 0.5 }, 1, out));
+    BAD(cf_bezier_eval_many(c, NULL, 1, out));
+    BAD(cf_bezier_eval_many(c, (const double[]){ 0.5 }, 1, NULL));
+    BAD(cf_bezier_eval_many(c, (const double[]){ 0.5, NAN }, 2, out));
+    BAD(cf_bezier_eval_derivs(c, 0.5, -1, out));
+    BAD(cf_bezier_eval_derivs(c, 0.5, CF_BEZIER_MAX_DEGREE + 1, out));
+    BAD(cf_bezier_eval_derivs(NULL, 0.5, 1, out));
+    BAD(cf_bezier_eval_deriv_many(c, -1, (const double[]){ 0.5 }, 1, out));
+    BAD(cf_bezier_eval_deriv_many(c, 1, NULL, 1, out));
+    BAD(cf_bezier_eval_deriv_many(NULL, 1, (const double[]){ 0.5 }, 1,
+                                  out));
+    BAD(cf_bezier_decasteljau(NULL, 0.5, out));
+    BAD(cf_bezier_decasteljau(c, 0.5, NULL));
+    BAD(cf_bezier_decasteljau(c, -0.5, out));
+    BAD(cf_bezier_tangent(NULL, 0.5, out));
+    BAD(cf_bezier_tangent(c, NAN, out));
+    BAD(cf_bezier_normal(NULL, 0.5, out));
+    BAD(cf_bezier_normal(c, 0.5, NULL));
+    BAD(cf_bezier_curvature(NULL, 0.5, &t));
+    BAD(cf_bezier_curvature(c, 0.5, NULL));
+    /* constructions */
+    BAD(cf_bezier_derivative(NULL, 1, &o, NULL));
+    BAD(cf_bezier_derivative(c, -1, &o, NULL));
+    BAD(cf_bezier_derivative(c, 1, NULL, NULL));
+    BAD(cf_bezier_split(NULL, 0.5, &l, &r, NULL));
+    BAD(cf_bezier_split(c, 0.0, &l, &r, NULL));
+    BAD(cf_bezier_split(c, 1.0, &l, &r, NULL));
+    BAD(cf_bezier_split(c, NAN, &l, &r, NULL));
+    assert_null(l);
+    assert_null(r);
+    BAD(cf_bezier_split_into(c, 0.5, out, out));
+    BAD(cf_bezier_split_into(c, 0.5, NULL, out + 16));
+    BAD(cf_bezier_split_into(NULL, 0.5, out, out + 16));
+    BAD(cf_bezier_segment(c, 0.7, 0.2, &o, NULL));
+    BAD(cf_bezier_segment(c, -1, 0.2, &o, NULL));
+    BAD(cf_bezier_segment(NULL, 0.1, 0.2, &o, NULL));
+    BAD(cf_bezier_reverse(NULL, &o, NULL));
+    BAD(cf_bezier_reverse(c, NULL, NULL));
+    BAD(cf_bezier_transform(c, NULL, NULL, &o, NULL));
+    BAD(cf_bezier_transform(NULL, P4, NULL, &o, NULL));
+    BAD(cf_bezier_transform(c, NANS, NULL, &o, NULL));
+    BAD(cf_bezier_elevate(c, -1, &o, NULL));
+    BAD(cf_bezier_elevate(NULL, 1, &o, NULL));
+    BAD(cf_bezier_elevate(c, CF_BEZIER_MAX_DEGREE, &o, NULL));
+    BAD(cf_bezier_reduce(NULL, &o, NULL, NULL));
+    BAD(cf_bezier_reduce(c, NULL, NULL, NULL));
+    assert_null(o);
+    /* geometry */
+    BAD(cf_bezier_bbox(NULL, lo, hi));
+    BAD(cf_bezier_bbox(c, NULL, hi));
+    BAD(cf_bezier_length(c, 0.0, &t));
+    BAD(cf_bezier_length(c, NAN, &t));
+    BAD(cf_bezier_length(NULL, 1e-6, &t));
+    BAD(cf_bezier_length(c, 1e-6, NULL));
+    BAD(cf_bezier_closest(c, NULL, &t, &d));
+    BAD(cf_bezier_closest(NULL, P4, &t, &d));
+    BAD(cf_bezier_closest(c, NANS, &t, &d));
+    BAD(cf_bezier_flatten(c, 0.1, NULL, NULL));
+    BAD(cf_bezier_flatten(NULL, 0.1, NULL, NULL));
+    BAD(cf_bezier_to_cubics(c, 0.0, &cu, NULL));
+    BAD(cf_bezier_to_cubics(NULL, 0.1, &cu, NULL));
+    BAD(cf_bezier_to_cubics(c, 0.1, NULL, NULL));
+    assert_null(cu);
+    cf_cubics_destroy(NULL);
+    cf_bezier_list_destroy(NULL);
+    /* geometry.h */
+    BAD(cf_convex_hull_2d(NULL, 4, 2, idx, &n, NULL));
+    BAD(cf_convex_hull_2d(P4, 4, 1, idx, &n, NULL));
+    BAD(cf_convex_hull_2d(P4, 4, 2, NULL, &n, NULL));
+    BAD(cf_convex_hull_2d(NANS, 4, 2, idx, &n, NULL));
+    BAD(cf_bezier_hull(NULL, idx, &n, NULL));
+    BAD(cf_bezier_hull(c, NULL, &n, NULL));
+    /* a diag that already holds an error keeps the first one */
+    cf_diag_clear(&diag);
+    BAD(cf_bezier_elevate(c, -1, &o, &diag));
+    {
+        cf_diag_t first = diag;
+        BAD(cf_bezier_derivative(c, -1, &o, &diag));
+        assert_int_equal(diag.status, first.status);
+        assert_string_equal(diag.msg, first.msg);
+    }
+    cf_bezier_destroy(c);
+}
+
+static void
+test_bspline(void **state)
+{
+    cf_bspline_t *c = NULL, *o = NULL, *l = NULL, *r = NULL;
+    cf_bezier_list_t *list = NULL;
+    double out[64], a, b, *h = NULL, *br = NULL;
+    size_t first, span, n = 0;
+    int mult, removed;
+    cf_bspline_insert_info_t info;
+    (void)state;
+    IS(CF_STATUS_INVALID_ARG, cf_bspline_create(2, 2, U7, 7, P4, 4, NULL,
+                                                NULL, NULL));
+    BAD(cf_bspline_create(2, 2, NULL, 7, P4, 4, NULL, &o, NULL));
+    BAD(cf_bspline_create(2, 2, U7, 7, NULL, 4, NULL, &o, NULL));
+    BAD(cf_bspline_create(0, 2, U7, 7, P4, 4, NULL, &o, NULL));
+    BAD(cf_bspline_create(2, 2, U7, 6, P4, 4, NULL, &o, NULL));
+    BAD(cf_bspline_create(2, 2, U7, 7, P4, 0, NULL, &o, NULL));
+    BAD(cf_bspline_create(2, 7, U7, 7, P4, 4, NULL, &o, NULL));
+    BAD(cf_bspline_create(2, -1, U7, 7, P4, 4, NULL, &o, NULL));
+    BAD(cf_bspline_create(2, 2, U7, 7, P4, 4, (const double[]){ 1, 0, 1, 1 },
+                          &o, NULL));
+    BAD(cf_bspline_create(2, 2, U7, 7, NANS, 4, NULL, &o, NULL));
+    BAD(cf_bspline_create_homogeneous(2, 2, U7, 7, NULL, 4, &o, NULL));
+    BAD(cf_bspline_create_homogeneous(1, 2, U7, 7, P4, 4, &o, NULL));
+    BAD(cf_bspline_create_clamped(2, 2, NULL, 4, NULL, &o, NULL));
+    BAD(cf_bspline_create_clamped(2, 4, P4, 4, NULL, &o, NULL));
+    BAD(cf_bspline_create_clamped(0, 2, P4, 4, NULL, &o, NULL));
+    BAD(cf_bspline_create_closed(2, 0, P4, 4, NULL, &o, NULL));
+    BAD(cf_bspline_create_closed(2, 2, NULL, 4, NULL, &o, NULL));
+    BAD(cf_bspline_create_closed(2, 2, P4, 2, NULL, &o, NULL));
+    BAD(cf_bspline_create_coons(2, NULL, 4, CF_COONS_PLAIN, &o, NULL));
+    BAD(cf_bspline_create_coons(2, P4, 3, CF_COONS_PLAIN, &o, NULL));
+    BAD(cf_bspline_create_coons(2, P4, 4, (cf_coons_ends_t)77, &o, NULL));
+    BAD(cf_bspline_copy(NULL, &o, NULL));
+    BAD(cf_nurbs_arc(2, NULL, P4, P4 + 2, 1, 0, 1, &o, NULL));
+    BAD(cf_nurbs_arc(2, P4, P4 + 2, P4 + 4, -1, 0, 1, &o, NULL));
+    BAD(cf_nurbs_arc(2, P4, P4 + 2, P4 + 4, 1, 1, 1, &o, NULL));
+    BAD(cf_nurbs_circle(NULL, 1, &o, NULL));
+    BAD(cf_nurbs_circle(P4, 0, &o, NULL));
+    BAD(cf_nurbs_circle(P4, NAN, &o, NULL));
+    assert_null(o);
+    cf_bspline_destroy(NULL);
+    cf_coons_basis(0.5, (double[4]){ 0 });
+    cf_coons_eval(2, P4, 0.5, out);
+    /* queries on NULL */
+    assert_int_equal(cf_bspline_dim(NULL), 0);
+    assert_int_equal(cf_bspline_degree(NULL), 0);
+    assert_int_equal(cf_bspline_count(NULL), 0);
+    assert_int_equal(cf_bspline_nknots(NULL), 0);
+    assert_false(cf_bspline_is_rational(NULL));
+    assert_null(cf_bspline_knots(NULL));
+    assert_null(cf_bspline_hpoints(NULL));
+    cf_bspline_get_points(NULL, out);
+    cf_bspline_get_weights(NULL, out);
+    cf_bspline_domain(NULL, &a, &b);
+    (void)cf_bspline_knot_kind(NULL);
+    assert_int_equal(cf_bspline_deboor_size(NULL), 0);
+    /* evaluation */
+    assert_int_equal(cf_bspline_create(2, 2, U7, 7, P4, 4, W4, &c, NULL), 0);
+    cf_bspline_get_points(c, NULL);
+    cf_bspline_domain(c, NULL, NULL);
+    IS(CF_STATUS_INVALID_ARG, cf_bspline_eval(NULL, 0.5, out));
+    IS(CF_STATUS_INVALID_ARG, cf_bspline_eval(c, 0.5, NULL));
+    IS(CF_STATUS_NOT_FINITE, cf_bspline_eval(c, NAN, out));
+    IS(CF_STATUS_DOMAIN, cf_bspline_eval(c, 1.5, out));
+    BAD(cf_bspline_eval_many(c, NULL, 1, out));
+    BAD(cf_bspline_eval_many(c, (const double[]){ 0.5, 3 }, 2, out));
+    BAD(cf_bspline_eval_many(NULL, (const double[]){ 0.5 }, 1, out));
+    BAD(cf_bspline_eval_derivs(c, 0.5, -1, out));
+    BAD(cf_bspline_eval_derivs(NULL, 0.5, 1, out));
+    BAD(cf_bspline_eval_deriv_many(c, -1, (const double[]){ 0.5 }, 1, out));
+    BAD(cf_bspline_eval_deriv_many(c, 1, NULL, 1, out));
+    BAD(cf_bspline_deboor(NULL, 0.5, out, &span, &mult));
+    BAD(cf_bspline_deboor(c, 0.5, NULL, &span, &mult));
+    BAD(cf_bspline_deboor(c, -1, out, &span, &mult));
+    BAD(cf_bspline_basis(NULL, 0.5, &first, out));
+    BAD(cf_bspline_basis(c, 0.5, &first, NULL));
+    BAD(cf_bspline_basis(c, 7, &first, out));
+    /* constructions */
+    BAD(cf_bspline_derivative(NULL, 1, &o, NULL));
+    BAD(cf_bspline_derivative(c, -1, &o, NULL));
+    BAD(cf_bspline_insert_knot(NULL, 0.5, 1, &o, &info, NULL));
+    BAD(cf_bspline_insert_knot(c, 0.5, 0, &o, &info, NULL));
+    BAD(cf_bspline_insert_knot(c, 0.5, 3, &o, &info, NULL));
+    BAD(cf_bspline_insert_knot(c, 2.0, 1, &o, &info, NULL));
+    BAD(cf_bspline_insert_knot(c, NAN, 1, &o, &info, NULL));
+    BAD(cf_bspline_insert_knot(c, 0.5, 1, NULL, &info, NULL));
+    BAD(cf_bspline_refine(c, NULL, 2, &o, NULL));
+    BAD(cf_bspline_refine(c, (const double[]){ 0.7, 0.2 }, 2, &o, NULL));
+    BAD(cf_bspline_refine(c, (const double[]){ 0.2, 5 }, 2, &o, NULL));
+    BAD(cf_bspline_refine(NULL, (const double[]){ 0.2 }, 1, &o, NULL));
+    BAD(cf_bspline_remove_knot(c, 0.3, 1, 1e-9, &o, &removed, NULL));
+    BAD(cf_bspline_remove_knot(c, 0.5, 0, 1e-9, &o, &removed, NULL));
+    BAD(cf_bspline_remove_knot(c, 0.5, 1, -1, &o, &removed, NULL));
+    BAD(cf_bspline_remove_knot(NULL, 0.5, 1, 0, &o, &removed, NULL));
+    BAD(cf_bspline_split(c, 0.0, &l, &r, NULL));
+    BAD(cf_bspline_split(c, 1.0, &l, &r, NULL));
+    BAD(cf_bspline_split(NULL, 0.5, &l, &r, NULL));
+    BAD(cf_bspline_segment(c, 0.6, 0.3, &o, NULL));
+    BAD(cf_bspline_segment(c, -1, 0.3, &o, NULL));
+    BAD(cf_bspline_segment(NULL, 0.1, 0.3, &o, NULL));
+    BAD(cf_bspline_to_beziers(NULL, &list, NULL));
+    BAD(cf_bspline_to_beziers(c, NULL, NULL));
+    BAD(cf_bspline_bezier_points(NULL, &h, &br, &n, NULL));
+    BAD(cf_bspline_bezier_points(c, NULL, &br, &n, NULL));
+    BAD(cf_bspline_bezier_points(c, &h, &br, NULL, NULL));
+    BAD(cf_bspline_elevate(c, -1, &o, NULL));
+    BAD(cf_bspline_elevate(c, CF_BSPLINE_MAX_DEGREE, &o, NULL));
+    BAD(cf_bspline_elevate(NULL, 1, &o, NULL));
+    BAD(cf_bspline_reverse(NULL, &o, NULL));
+    BAD(cf_bspline_reverse(c, NULL, NULL));
+    BAD(cf_bspline_transform(c, NULL, NULL, &o, NULL));
+    BAD(cf_bspline_transform(c, NANS, NULL, &o, NULL));
+    BAD(cf_bspline_transform(NULL, P4, NULL, &o, NULL));
+    BAD(cf_bspline_support(c, 4, &a, &b));
+    BAD(cf_bspline_support(NULL, 0, &a, &b));
+    BAD(cf_bspline_active_points(c, 3.0, &first, &a, &b));
+    BAD(cf_bspline_active_points(NULL, 0.5, &first, &a, &b));
+    BAD(cf_bspline_move_point(c, 4, P4, &o, NULL));
+    BAD(cf_bspline_move_point(c, 0, NULL, &o, NULL));
+    BAD(cf_bspline_move_point(c, 0, NANS, &o, NULL));
+    BAD(cf_bspline_move_point(NULL, 0, P4, &o, NULL));
+    assert_null(o);
+    assert_null(l);
+    assert_null(r);
+    assert_null(list);
+    assert_null(h);
+    cf_bspline_destroy(c);
+}
+
+static double
+ident(double t, void *ud)
+{
+    (void)ud;
+    return t;
+}
+
+static void
+test_conic_interp_offset(void **state)
+{
+    cf_bezier_list_t *l = NULL;
+    cf_bspline_t *o = NULL;
+    cf_bezier_t *c = NULL, *bz = NULL;
+    cf_interp_options_t opt;
+    cf_interp_method_t m;
+    cf_param_t p;
+    cf_offset_options_t oo;
+    cf_cubics_t *raw = NULL;
+    cf_cubics_list_t *trim = NULL;
+    cf_offset_report_t rep;
+    double out[16], res, err;
+    size_t count;
+    (void)state;
+    BAD(cf_conic_arc(0, 0, -1, 0, 1, &l, NULL));
+    BAD(cf_conic_arc(0, 0, 1, 0, 0, &l, NULL));
+    BAD(cf_conic_arc(NAN, 0, 1, 0, 1, &l, NULL));
+    BAD(cf_conic_arc(0, 0, 1, 0, 1, NULL, NULL));
+    BAD(cf_conic_circle(0, 0, 0, &l, NULL));
+    BAD(cf_conic_circle(0, 0, 1, NULL, NULL));
+    BAD(cf_conic_ellipse(0, 0, 0, 1, 0, 0, 1, &l, NULL));
+    BAD(cf_conic_ellipse(0, 0, 1, 1, 0, 1, 1, &l, NULL));
+    BAD(cf_conic_parabola(0, 0, 0, 0, -1, 1, &l, NULL));
+    BAD(cf_conic_parabola(0, 0, 1, 0, 1, -1, &l, NULL));
+    BAD(cf_conic_hyperbola(0, 0, -1, 1, 0, -1, 1, &l, NULL));
+    BAD(cf_conic_hyperbola(0, 0, 1, 1, 0, 1, -1, &l, NULL));
+    assert_null(l);
+    /* interp.h */
+    BAD(cf_interp_parameters(2, NULL, 4, CF_PARAM_CHORD, 0, false, out,
+                             NULL));
+    BAD(cf_interp_parameters(2, P4, 4, CF_PARAM_CHORD, 0, false, NULL,
+                             NULL));
+    BAD(cf_interp_parameters(0, P4, 4, CF_PARAM_CHORD, 0, false, out, NULL));
+    BAD(cf_interp_parameters(2, P4, 1, CF_PARAM_CHORD, 0, false, out, NULL));
+    BAD(cf_interp_parameters(2, P4, 4, (cf_param_t)99, 0, false, out, NULL));
+    BAD(cf_interp_parameters(2, (const double[]){ 0, 0, 0, 0 }, 2,
+                             CF_PARAM_CHORD, 0, false, out, NULL));
+    cf_interp_options_init(NULL);
+    cf_interp_options_init(&opt);
+    BAD(cf_interpolate(2, NULL, 4, &opt, &o, NULL));
+    BAD(cf_interpolate(2, P4, 4, &opt, NULL, NULL));
+    BAD(cf_interpolate(0, P4, 4, &opt, &o, NULL));
+    BAD(cf_interpolate(2, P4, 0, &opt, &o, NULL));
+    BAD(cf_interpolate(2, NANS, 4, &opt, &o, NULL));
+    opt.method = (cf_interp_method_t)99;
+    BAD(cf_interpolate(2, P4, 4, &opt, &o, NULL));
+    cf_interp_options_init(&opt);
+    opt.method = CF_INTERP_CLAMPED;     /* needs both end tangents */
+    BAD(cf_interpolate(2, P4, 4, &opt, &o, NULL));
+    cf_interp_options_init(&opt);
+    opt.params = (const double[]){ 0, 1, 1, 2 };   /* not increasing */
+    BAD(cf_interpolate(2, P4, 4, &opt, &o, NULL));
+    cf_interp_options_init(&opt);
+    opt.closed = true;
+    opt.method = CF_INTERP_NATURAL;
+    BAD(cf_interpolate(2, P4, 4, &opt, &o, NULL));
+    BAD(cf_interp_method_from_string(NULL, &m, NULL));
+    BAD(cf_interp_method_from_string("cubic-ish", &m, NULL));
+    BAD(cf_interp_method_from_string("natural", NULL, NULL));
+    BAD(cf_param_from_string(NULL, &p, NULL));
+    BAD(cf_param_from_string("", &p, NULL));
+    BAD(cf_param_from_string("chord", NULL, NULL));
+    assert_non_null(cf_interp_method_to_string((cf_interp_method_t)99));
+    BAD(cf_approximate_lsq(2, NULL, 4, 3, NULL, true, &o, &res, NULL));
+    BAD(cf_approximate_lsq(2, P4, 4, 9, NULL, true, &o, &res, NULL));
+    BAD(cf_approximate_lsq(2, P4, 4, 0, NULL, true, &o, &res, NULL));
+    BAD(cf_approximate_lsq(2, P4, 4, 3, NULL, true, NULL, &res, NULL));
+    BAD(cf_ferguson_cubic(2, NULL, P4, P4, P4, &bz, NULL));
+    BAD(cf_ferguson_cubic(0, P4, P4, P4, P4, &bz, NULL));
+    BAD(cf_ferguson_cubic(2, P4, P4, P4, NANS, &bz, NULL));
+    BAD(cf_ferguson_cubic(2, P4, P4, P4, P4, NULL, NULL));
+    BAD(cf_ferguson_chain(2, P4, NULL, 4, &l, NULL));
+    BAD(cf_ferguson_chain(2, P4, P4, 1, &l, NULL));
+    BAD(cf_coons_cubic(2, NULL, &bz, NULL));
+    BAD(cf_coons_cubic(0, P4, &bz, NULL));
+    BAD(cf_coons_chain(2, NULL, 4, CF_COONS_PLAIN, &l, NULL));
+    BAD(cf_coons_chain(2, P4, 2, CF_COONS_PLAIN, &l, NULL));
+    BAD(cf_coons_chain(2, P4, 4, (cf_coons_ends_t)42, &l, NULL));
+    assert_null(o);
+    assert_null(bz);
+    assert_null(l);
+    /* offset.h */
+    cf_offset_options_init(NULL);
+    cf_offset_options_init(&oo);
+    cf_cubics_list_destroy(NULL);
+    assert_int_equal(cf_bezier_create(2, 3, P4, NULL, &c, NULL), 0);
+    BAD(cf_offset_point(NULL, 0.5, 0.1, out));
+    BAD(cf_offset_point(c, NAN, 0.1, out));
+    BAD(cf_offset_point(c, 0.5, NAN, out));
+    BAD(cf_offset_point(c, 0.5, 0.1, NULL));
+    BAD(cf_offset_point_many(c, NULL, 1, 0.1, out));
+    BAD(cf_offset_point_many(NULL, (const double[]){ 0.5 }, 1, 0.1, out));
+    BAD(cf_offset_cusps(NULL, 0.1, out, 4, &count, NULL));
+    BAD(cf_offset_cusps(c, NAN, out, 4, &count, NULL));
+    BAD(cf_offset_cusps(c, 0.1, out, 4, NULL, NULL));
+    BAD(cf_bezier_offset(NULL, 0.1, &oo, &raw, &trim, &rep, NULL));
+    BAD(cf_bezier_offset(c, NAN, &oo, &raw, &trim, &rep, NULL));
+    oo.tolerance = 0;
+    BAD(cf_bezier_offset(c, 0.1, &oo, &raw, &trim, &rep, NULL));
+    cf_offset_options_init(&oo);
+    {
+        cf_bspline_t *sp = NULL;
+        assert_int_equal(cf_bspline_create_clamped(2, 2, P4, 4, NULL, &sp,
+                                                   NULL), 0);
+        BAD(cf_bspline_offset(NULL, 0.1, &oo, &raw, &trim, &rep, NULL));
+        BAD(cf_bspline_offset(sp, NAN, &oo, &raw, &trim, &rep, NULL));
+        cf_bspline_destroy(sp);
+    }
+    BAD(cf_bezier_list_offset(NULL, 0.1, &oo, &raw, &trim, &rep, NULL));
+    BAD(cf_offset_measure(c, 0.1, NULL, 10, &err, NULL));
+    BAD(cf_offset_measure(NULL, 0.1, NULL, 10, &err, NULL));
+    assert_null(raw);
+    assert_null(trim);
+    cf_bezier_destroy(c);
+    (void)ident;
+}
+
+#ifdef CF_TEST_RENDER
+static int
+plot_nan(void *closure, double x, double *y)
+{
+    (void)closure;
+    (void)x;
+    *y = NAN;
+    return 0;
+}
+
+static void
+test_figure(void **state)
+{
+    cf_unit_t unit;
+    cf_color_t col;
+    cf_marker_t mk;
+    cf_place_t pl;
+    cf_style_t st;
+    cf_theme_t th;
+    cf_figure_t *fig = NULL;
+    cf_axes_t ax;
+    cf_format_t fmt;
+    cf_write_options_t wo;
+    cf_label_t *lab = NULL;
+    cf_bezier_t *c = NULL;
+    cf_bspline_t *s = NULL;
+    unsigned char *data = NULL;
+    size_t size = 0;
+    double win[4], sx, sy, box[4], pw, ph, w, asc, desc;
+    (void)state;
+    assert_true(isfinite(cf_length_to_bp(1, (cf_unit_t)99)) ||
+                isnan(cf_length_to_bp(1, (cf_unit_t)99)));
+    BAD(cf_unit_from_name(NULL, &unit, NULL));
+    BAD(cf_unit_from_name("furlong", &unit, NULL));
+    BAD(cf_unit_from_name("cm", NULL, NULL));
+    BAD(cf_color_parse(NULL, &col, NULL));
+    BAD(cf_color_parse("#12345", &col, NULL));
+    BAD(cf_color_parse("octarine", &col, NULL));
+    BAD(cf_color_parse("red", NULL, NULL));
+    BAD(cf_marker_from_name(NULL, &mk, NULL));
+    BAD(cf_marker_from_name("heart", &mk, NULL));
+    BAD(cf_place_from_name(NULL, &pl, NULL));
+    BAD(cf_place_from_name("up", &pl, NULL));
+    cf_style_init(NULL);
+    cf_style_init(&st);
+    BAD(cf_theme_get(NULL, &th, NULL));
+    BAD(cf_theme_get("neon", &th, NULL));
+    BAD(cf_theme_get("default", NULL, NULL));
+    BAD(cf_figure_create(0, 6, CF_UNIT_CM, &fig, NULL));
+    BAD(cf_figure_create(NAN, 6, CF_UNIT_CM, &fig, NULL));
+    BAD(cf_figure_create(8, -6, CF_UNIT_CM, &fig, NULL));
+    BAD(cf_figure_create(8, 6, (cf_unit_t)99, &fig, NULL));
+    BAD(cf_figure_create(8, 6, CF_UNIT_CM, NULL, NULL));
+    assert_null(fig);
+    cf_figure_destroy(NULL);
+    /* every figure function on NULL */
+    BAD(cf_figure_status(NULL, NULL));
+    cf_figure_get_size(NULL, &w, &w);
+    BAD(cf_figure_set_title(NULL, "t"));
+    BAD(cf_figure_set_caption(NULL, "c"));
+    BAD(cf_figure_set_theme(NULL, &th));
+    cf_figure_get_theme(NULL, &th);
+    BAD(cf_figure_set_window(NULL, 0, 1, 0, 1));
+    BAD(cf_figure_set_window_auto(NULL));
+    BAD(cf_figure_set_fit(NULL, 10, true));
+    BAD(cf_figure_get_window(NULL, win, &sx, &sy));
+    BAD(cf_figure_set_tolerance(NULL, 0.1));
+    BAD(cf_figure_set_projection(NULL, 3, P4));
+    BAD(cf_figure_project(NULL, P4, 1, 2, win));
+    BAD(cf_figure_add_bezier(NULL, c, &st));
+    BAD(cf_figure_add_bezier_range(NULL, c, 0, 1, &st));
+    BAD(cf_figure_add_bezier_list(NULL, NULL, &st));
+    BAD(cf_figure_add_cubics(NULL, NULL, &st));
+    BAD(cf_figure_add_bspline(NULL, s, 0, 1, &st));
+    BAD(cf_figure_add_bspline_knots(NULL, s, &st));
+    BAD(cf_figure_add_knot_marks(NULL, P4, NULL, 2, &st));
+    BAD(cf_figure_add_polygon(NULL, P4, 4, &st));
+    BAD(cf_figure_add_polyline(NULL, P4, 4, false, &st));
+    BAD(cf_figure_add_hull(NULL, P4, 4, &st));
+    BAD(cf_figure_add_fill(NULL, P4, 4, &st));
+    BAD(cf_figure_add_points(NULL, P4, 4, &st));
+    BAD(cf_figure_add_arrow(NULL, 0, 0, 1, 1, &st));
+    BAD(cf_figure_add_label(NULL, 0, 0, "P", &st));
+    BAD(cf_figure_add_net(NULL, P4, (const size_t[]){ 2, 1 }, 2, NULL, &st));
+    cf_axes_init(NULL);
+    cf_axes_init(&ax);
+    BAD(cf_figure_add_axes(NULL, &ax, &st));
+    BAD(cf_figure_add_graph(NULL, NULL, NULL, 0, &st));
+    BAD(cf_figure_add_graph_list(NULL, NULL, &st));
+    BAD(cf_figure_add_function(NULL, plot_nan, NULL, 0, 1, &st));
+    BAD(cf_figure_write(NULL, "/nonexistent/x.svg", CF_FORMAT_SVG, NULL,
+                        NULL));
+    BAD(cf_figure_write_all(NULL, "/nonexistent/x", 1, NULL, NULL));
+    BAD(cf_figure_render(NULL, CF_FORMAT_SVG, NULL, &data, &size, NULL));
+    BAD(cf_figure_ink_box(NULL, NULL, box, &pw, &ph, NULL));
+    BAD(cf_format_from_name(NULL, &fmt, NULL));
+    BAD(cf_format_from_name("bmp", &fmt, NULL));
+    assert_string_equal(cf_format_extension((cf_format_t)99), "");
+    cf_write_options_init(NULL);
+    cf_write_options_init(&wo);
+    /* a real figure given bad arguments: each call fails; errors are
+    ** sticky (figure.h), so the first one stays the figure's status */
+    assert_int_equal(cf_figure_create(8, 6, CF_UNIT_CM, &fig, NULL), 0);
+    assert_int_equal(cf_bezier_create(2, 3, P4, NULL, &c, NULL), 0);
+    assert_int_equal(cf_bspline_create_clamped(2, 2, P4, 4, NULL, &s, NULL),
+                     0);
+    {
+        cf_diag_t d1, d2;
+        cf_diag_clear(&d1);
+        cf_diag_clear(&d2);
+        BAD(cf_figure_set_window(fig, 1, 1, 0, 1));
+        BAD(cf_figure_status(fig, &d1));
+        BAD(cf_figure_set_window(fig, 0, NAN, 0, 1));
+        BAD(cf_figure_status(fig, &d2));
+        assert_string_equal(d1.msg, d2.msg);
+    }
+    BAD(cf_figure_set_fit(fig, -1, true));
+    BAD(cf_figure_set_tolerance(fig, 0));
+    BAD(cf_figure_set_theme(fig, NULL));
+    BAD(cf_figure_set_projection(fig, 3, NULL));
+    BAD(cf_figure_set_projection(fig, 0, P4));
+    BAD(cf_figure_project(fig, NULL, 1, 2, win));
+    BAD(cf_figure_project(fig, P4, 1, 2, NULL));
+    BAD(cf_figure_add_bezier(fig, NULL, &st));
+    BAD(cf_figure_add_bezier_range(fig, c, 0.7, 0.2, &st));
+    BAD(cf_figure_add_bezier_range(fig, c, 0, 2, &st));
+    BAD(cf_figure_add_bezier_list(fig, NULL, &st));
+    BAD(cf_figure_add_cubics(fig, NULL, &st));
+    BAD(cf_figure_add_bspline(fig, NULL, 0, 1, &st));
+    BAD(cf_figure_add_bspline(fig, s, 0.5, 0.2, &st));
+    BAD(cf_figure_add_bspline_knots(fig, NULL, &st));
+    BAD(cf_figure_add_knot_marks(fig, NULL, NULL, 2, &st));
+    BAD(cf_figure_add_polygon(fig, NULL, 4, &st));
+    BAD(cf_figure_add_polygon(fig, NANS, 4, &st));
+    BAD(cf_figure_add_polyline(fig, NULL, 4, true, &st));
+    BAD(cf_figure_add_hull(fig, NULL, 4, &st));
+    BAD(cf_figure_add_fill(fig, NANS, 4, &st));
+    BAD(cf_figure_add_points(fig, NULL, 4, &st));
+    BAD(cf_figure_add_arrow(fig, NAN, 0, 1, 1, &st));
+    BAD(cf_figure_add_label(fig, 0, 0, NULL, &st));
+    BAD(cf_figure_add_label(fig, 0, 0, "P_{0", &st));
+    BAD(cf_figure_add_label(fig, NAN, 0, "P", &st));
+    BAD(cf_figure_add_net(fig, NULL, (const size_t[]){ 2, 1 }, 2, NULL,
+                          &st));
+    BAD(cf_figure_add_net(fig, P4, NULL, 2, NULL, &st));
+    BAD(cf_figure_add_axes(fig, NULL, &st));
+    BAD(cf_figure_add_graph(fig, NULL, NULL, 1, &st));
+    BAD(cf_figure_add_graph_list(fig, NULL, &st));
+    BAD(cf_figure_add_function(fig, NULL, NULL, 0, 1, &st));
+    BAD(cf_figure_add_function(fig, plot_nan, NULL, 1, 0, &st));
+    BAD(cf_figure_get_window(fig, NULL, &sx, &sy));
+    BAD(cf_figure_write(fig, NULL, CF_FORMAT_SVG, NULL, NULL));
+    BAD(cf_figure_write(fig, "/nonexistent-dir/x.svg", CF_FORMAT_SVG, NULL,
+                        NULL));
+    BAD(cf_figure_write(fig, "x.svg", (cf_format_t)99, NULL, NULL));
+    BAD(cf_figure_write_all(fig, NULL, 1, NULL, NULL));
+    BAD(cf_figure_render(fig, CF_FORMAT_SVG, NULL, NULL, &size, NULL));
+    BAD(cf_figure_render(fig, (cf_format_t)99, NULL, &data, &size, NULL));
+    wo.dpi = 0;
+    BAD(cf_figure_render(fig, CF_FORMAT_PNG, &wo, &data, &size, NULL));
+    assert_null(data);
+    BAD(cf_figure_ink_box(fig, NULL, NULL, &pw, &ph, NULL));
+    BAD(cf_figure_set_title(fig, NULL) == CF_STATUS_OK &&
+        cf_figure_set_caption(fig, NULL) == CF_STATUS_OK
+        ? CF_STATUS_OK : CF_STATUS_INVALID_ARG);
+    cf_figure_get_size(fig, NULL, NULL);
+    cf_figure_get_theme(fig, NULL);
+    /* the figure in error refuses to render; a fresh one renders */
+    cf_write_options_init(&wo);
+    BAD(cf_figure_render(fig, CF_FORMAT_SVG, &wo, &data, &size, NULL));
+    assert_null(data);
+    cf_figure_destroy(fig);
+    assert_int_equal(cf_figure_create(8, 6, CF_UNIT_CM, &fig, NULL), 0);
+    assert_int_equal(cf_figure_add_bezier(fig, c, &st), 0);
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_SVG, &wo, &data, &size,
+                                      NULL), 0);
+    assert_true(size > 0);
+    cf_free(data);
+    cf_figure_destroy(fig);
+    cf_bezier_destroy(c);
+    cf_bspline_destroy(s);
+    /* labels */
+    BAD(cf_label_create(NULL, NULL, 10, &lab, NULL));
+    BAD(cf_label_create("P", NULL, 0, &lab, NULL));
+    BAD(cf_label_create("P", NULL, NAN, &lab, NULL));
+    BAD(cf_label_create("P", "", 10, &lab, NULL));
+    BAD(cf_label_create("P", NULL, 10, NULL, NULL));
+    BAD(cf_label_create("\\frac{1}", NULL, 10, &lab, NULL));
+    assert_null(lab);
+    cf_label_destroy(NULL);
+    assert_int_equal(cf_label_box_count(NULL), 0);
+    assert_null(cf_label_get_box(NULL, 0));
+    assert_string_equal(cf_label_run_text(NULL, 0), "");
+    cf_label_get_extents(NULL, &w, &asc, &desc);
+    assert_int_equal(cf_label_unknown_glyphs(NULL), 0);
+}
+#endif
+
+/* Every function declared in the public headers is named in this file. */
+static void
+test_every_function_listed(void **state)
+{
+    static const char *const headers[] = {
+        "core.h", "knots.h", "bernstein.h", "bezier.h", "bspline.h",
+        "geometry.h", "conic.h", "interp.h", "offset.h",
+#ifdef CF_TEST_RENDER
+        "figure.h",
+#endif
+    };
+    static char me[200000], text[200000];
+    FILE *f = fopen(CF_SOURCE_ROOT "/tests/unit/test_api_misuse.c", "r");
+    size_t n, total = 0;
+    int missing = 0;
+    (void)state;
+    assert_non_null(f);
+    n = fread(me, 1, sizeof me - 1, f);
+    me[n] = '\0';
+    fclose(f);
+    for (size_t h = 0; h < sizeof headers / sizeof *headers; h++) {
+        char path[512];
+        const char *p;
+        snprintf(path, sizeof path, "%s/include/curvefig/%s", CF_SOURCE_ROOT,
+                 headers[h]);
+        f = fopen(path, "r");
+        assert_non_null(f);
+        n = fread(text, 1, sizeof text - 1, f);
+        text[n] = '\0';
+        fclose(f);
+        /* a declaration: "cf_name(" at the start of a line or after the
+        ** return type, outside comments and typedefs */
+        for (p = text; (p = strstr(p, "cf_")) != NULL; p++) {
+            char name[128], call[130];
+            size_t k = 0;
+            const char *q = p, *line = p;
+            if (p > text && (p[-1] == '_' || (p[-1] >= 'a' && p[-1] <= 'z')))
+                continue;
+            while (k < sizeof name - 1 &&
+                   ((q[k] >= 'a' && q[k] <= 'z') ||
+                    (q[k] >= '0' && q[k] <= '9') || q[k] == '_'))
+                k++;
+            if (q[k] != '(')
+                continue;
+            while (line > text && line[-1] != '\n')
+                line--;
+            /* skip comments (lines starting with ** or / *) and macros */
+            if (line[0] == '*' || line[0] == '/' || line[0] == '#' ||
+                line[0] == ' ' || strstr(line, "typedef") == line)
+                continue;
+            memcpy(name, p, k);
+            name[k] = '\0';
+            snprintf(call, sizeof call, "%s(", name);
+            total++;
+            if (strstr(me, call) == NULL) {
+                print_error("%s (%s) is not exercised\n", name, headers[h]);
+                missing++;
+            }
+        }
+    }
+    print_message("%zu public functions declared, all named here\n", total);
+    assert_int_equal(missing, 0);
+    assert_true(total > 100);
+}
+
+int
+main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_core),
+        cmocka_unit_test(test_knots),
+        cmocka_unit_test(test_bernstein),
+        cmocka_unit_test(test_bezier),
+        cmocka_unit_test(test_bspline),
+        cmocka_unit_test(test_conic_interp_offset),
+#ifdef CF_TEST_RENDER
+        cmocka_unit_test(test_figure),
+#endif
+        cmocka_unit_test(test_every_function_listed),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

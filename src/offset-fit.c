@@ -740,6 +740,55 @@ tiller_hanson(const cf__osrc_t *s, double a, double b, double *pts)
 #define K_COARSE 12
 #define K_FINE 40
 
+/* Pattern search on the arm lengths of pts (end points and tangent
+** directions fixed), minimising the coarse error *err. */
+static cf_status_t
+polish_arms(const cf__osrc_t *s, double a, double b, double *pts,
+            double *err)
+{
+    double u[2][2], arm[2], step;
+    double chord = hypot(pts[6] - pts[0], pts[7] - pts[1]);
+    for (int k = 0; k < 2; k++) {
+        const double *e = pts + (k == 0 ? 0 : 6), *c = pts + (k == 0 ? 2 : 4);
+        arm[k] = hypot(c[0] - e[0], c[1] - e[1]);
+        if (!(arm[k] > 0.0))
+            return CF_STATUS_OK;
+        u[k][0] = (c[0] - e[0]) / arm[k];
+        u[k][1] = (c[1] - e[1]) / arm[k];
+    }
+    step = 0.05 * fmax(chord, fmax(arm[0], arm[1]));
+    for (int it = 0; it < 16 && step > 1e-6 * chord; it++) {
+        bool improved = false;
+        for (int k = 0; k < 2; k++)
+            for (int sg = -1; sg <= 1; sg += 2) {
+                double trial[8], e, na = arm[k] + sg * step;
+                cf_status_t st;
+                if (na < 0.0)
+                    continue;
+                memcpy(trial, pts, sizeof trial);
+                if (k == 0) {
+                    trial[2] = pts[0] + na * u[0][0];
+                    trial[3] = pts[1] + na * u[0][1];
+                } else {
+                    trial[4] = pts[6] + na * u[1][0];
+                    trial[5] = pts[7] + na * u[1][1];
+                }
+                st = cf__fit_error(s, a, b, trial, K_COARSE, &e);
+                if (st != CF_STATUS_OK)
+                    return st;
+                if (e < *err) {
+                    *err = e;
+                    arm[k] = na;
+                    memcpy(pts, trial, sizeof trial);
+                    improved = true;
+                }
+            }
+        if (!improved)
+            step *= 0.5;
+    }
+    return CF_STATUS_OK;
+}
+
 cf_status_t
 cf__fit_piece(const cf__osrc_t *s, double a, double b,
               cf_offset_method_t method, double reject, cf__fit_t *out)
@@ -768,6 +817,13 @@ cf__fit_piece(const cf__osrc_t *s, double a, double b,
             }
         }
         memcpy(out->pts, cand[best], sizeof out->pts);
+        /* just above the tolerance: polish the two arm lengths by a
+        ** pattern search on the measured error */
+        if (be > reject && be < 3.0 * reject) {
+            st = polish_arms(s, a, b, out->pts, &be);
+            if (st != CF_STATUS_OK)
+                return st;
+        }
     }
     if (st != CF_STATUS_OK)
         return st;

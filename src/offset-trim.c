@@ -19,6 +19,15 @@
 #define BASE_N 256      /* samples of each base piece */
 #define CLASS_N 16      /* distance samples per trimmed interval */
 
+/* A split point of the raw chain; at a self-intersection, p is the
+** crossing of the exact offset (when found) that the trimmed pieces end
+** at. */
+typedef struct split {
+    double g;
+    double p[2];
+    bool exact;
+} split;
+
 typedef struct trim {
     const cf_bezier_t *const *base;
     size_t nbase;
@@ -26,7 +35,7 @@ typedef struct trim {
     double d, tol;
     const cf_cubics_t *raw;
     double *poly;           /* POLY_N + 1 samples per raw cubic */
-    double *splits;         /* global parameters i + s */
+    split *splits;          /* at global parameters i + s */
     size_t nsplit, capsplit;
     size_t nisect;
 } trim;
@@ -67,18 +76,70 @@ chain_point(const trim *tr, double g, double *p)
 }
 
 static cf_status_t
-add_split(trim *tr, double g)
+add_split(trim *tr, double g, const double *p)
 {
     if (tr->nsplit == tr->capsplit) {
         size_t cap = tr->capsplit ? 2 * tr->capsplit : 16;
-        double *n = cf__realloc_array(tr->splits, cap, sizeof(double));
+        split *n = cf__realloc_array(tr->splits, cap, sizeof *n);
         if (n == NULL)
             return CF_STATUS_NO_MEMORY;
         tr->splits = n;
         tr->capsplit = cap;
     }
-    tr->splits[tr->nsplit++] = g;
+    tr->splits[tr->nsplit].g = g;
+    tr->splits[tr->nsplit].exact = p != NULL;
+    if (p != NULL) {
+        tr->splits[tr->nsplit].p[0] = p[0];
+        tr->splits[tr->nsplit].p[1] = p[1];
+    }
+    tr->nsplit++;
     return CF_STATUS_OK;
+}
+
+/* The crossing of the exact offset near the crossing of raw pieces i (at
+** s) and j (at u): Newton on o(t1) - o(t2) = 0 from the pieces' parameter
+** ranges (one base curve only).  Returns 0 and the point in x. */
+static int
+exact_crossing(const trim *tr, size_t i, double s, size_t j, double u,
+               const double *approx, double *x)
+{
+    const cf_cubics_t *raw = tr->raw;
+    cf__osrc_t src;
+    double t1, t2, p1[2], d1[2], p2[2], d2[2];
+    if (tr->nbase != 1 || !(raw->t[i + 1] > raw->t[i]) ||
+        !(raw->t[j + 1] > raw->t[j]))
+        return -1;
+    cf__osrc_init_offset(&src, tr->base[0], tr->d);
+    t1 = raw->t[i] + s * (raw->t[i + 1] - raw->t[i]);
+    t2 = raw->t[j] + u * (raw->t[j + 1] - raw->t[j]);
+    for (int it = 0; it < 30; it++) {
+        double fx, fy, det, dt1, dt2;
+        cf__osrc_deriv(&src, t1, p1, d1);
+        cf__osrc_deriv(&src, t2, p2, d2);
+        fx = p1[0] - p2[0];
+        fy = p1[1] - p2[1];
+        det = d1[0] * (-d2[1]) - d1[1] * (-d2[0]);
+        if (det == 0.0)
+            return -1;
+        dt1 = (fx * (-d2[1]) - fy * (-d2[0])) / det;
+        dt2 = (d1[0] * fy - d1[1] * fx) / det;
+        t1 -= dt1;
+        t2 -= dt2;
+        if (!(t1 >= 0.0 && t1 <= 1.0 && t2 >= 0.0 && t2 <= 1.0))
+            return -1;
+        if (fabs(dt1) + fabs(dt2) < 1e-15)
+            break;
+    }
+    cf__osrc_deriv(&src, t1, p1, d1);
+    cf__osrc_deriv(&src, t2, p2, d2);
+    if (!(hypot(p1[0] - p2[0], p1[1] - p2[1]) <= 1e-9 * (1.0 + fabs(tr->d))))
+        return -1;
+    x[0] = 0.5 * (p1[0] + p2[0]);
+    x[1] = 0.5 * (p1[1] + p2[1]);
+    /* it must be the crossing the raw chain approximates */
+    if (!(hypot(x[0] - approx[0], x[1] - approx[1]) <= 4.0 * tr->tol))
+        return -1;
+    return 0;
 }
 
 /* Newton on B_i(s) - B_j(u) = 0 from (s, u); returns 0 on convergence. */
@@ -143,8 +204,8 @@ static bool
 known(const trim *tr, double gi, double gj)
 {
     for (size_t k = 0; k + 1 < tr->nsplit; k += 2)
-        if (fabs(tr->splits[k] - gi) < 1e-9 &&
-            fabs(tr->splits[k + 1] - gj) < 1e-9)
+        if (fabs(tr->splits[k].g - gi) < 1e-9 &&
+            fabs(tr->splits[k + 1].g - gj) < 1e-9)
             return true;
     return false;
 }
@@ -185,9 +246,15 @@ find_intersections(trim *tr)
                     if (known(tr, (double)i + s, (double)j + u))
                         continue;   /* found from a neighbouring pair */
                     {
-                        cf_status_t st = add_split(tr, (double)i + s);
+                        double ap[2], xc[2];
+                        const double *xp = NULL;
+                        cf_status_t st;
+                        cf__cubic_pd(raw->pts + 8 * i, s, ap, NULL);
+                        if (exact_crossing(tr, i, s, j, u, ap, xc) == 0)
+                            xp = xc;
+                        st = add_split(tr, (double)i + s, xp);
                         if (st == CF_STATUS_OK)
-                            st = add_split(tr, (double)j + u);
+                            st = add_split(tr, (double)j + u, xp);
                         if (st != CF_STATUS_OK)
                             return st;
                     }
@@ -200,9 +267,9 @@ find_intersections(trim *tr)
 }
 
 static int
-cmp_double(const void *x, const void *y)
+cmp_split(const void *x, const void *y)
 {
-    double a = *(const double *)x, b = *(const double *)y;
+    double a = ((const split *)x)->g, b = ((const split *)y)->g;
     return (a > b) - (a < b);
 }
 
@@ -219,12 +286,16 @@ inside(const trim *tr, double g, double margin)
     return base_dist(tr, p) < fabs(tr->d) - margin * tr->tol;
 }
 
-/* Append the part [g0, g1] of the raw chain to ch. */
+/* Append the part [g0, g1] of the raw chain to ch; an end with a snap
+** point (an exact crossing) is moved there together with its neighbouring
+** control point. */
 static cf_status_t
-append_part(const trim *tr, cf__chain_t *ch, double g0, double g1)
+append_part(const trim *tr, cf__chain_t *ch, double g0, double g1,
+            const double *snap0, const double *snap1)
 {
     const cf_cubics_t *raw = tr->raw;
     size_t i0 = (size_t)floor(g0), i1;
+    bool first = true;
     if (i0 >= raw->count)
         i0 = raw->count - 1;
     i1 = (size_t)ceil(g1);
@@ -241,6 +312,17 @@ append_part(const trim *tr, cf__chain_t *ch, double g0, double g1)
             cf__split_h(tmp, 2, 3, s0 / s1, NULL, seg);
         else
             memcpy(seg, tmp, sizeof seg);
+        for (int k = 0; k < 2; k++) {
+            if (first && snap0 != NULL) {
+                seg[2 + k] += snap0[k] - seg[k];
+                seg[k] = snap0[k];
+            }
+            if (i + 1 == i1 && snap1 != NULL) {
+                seg[4 + k] += snap1[k] - seg[6 + k];
+                seg[6 + k] = snap1[k];
+            }
+        }
+        first = false;
         st = cf__chain_push(ch, seg, raw->t[i], raw->t[i + 1]);
         if (st != CF_STATUS_OK)
             return st;
@@ -306,7 +388,7 @@ cf__offset_trim(const cf_bezier_t *const *base, size_t nbase, double d,
         if (nraw > 0) {
             st = cf__chain_init(&ch);
             if (st == CF_STATUS_OK)
-                st = append_part(&tr, &ch, 0.0, (double)nraw);
+                st = append_part(&tr, &ch, 0.0, (double)nraw, NULL, NULL);
             if (st == CF_STATUS_OK)
                 st = list_add(list, &cap, cf__chain_take(&ch));
             else
@@ -316,15 +398,15 @@ cf__offset_trim(const cf_bezier_t *const *base, size_t nbase, double d,
     }
     st = find_intersections(&tr);
     if (st == CF_STATUS_OK)
-        st = add_split(&tr, 0.0);
+        st = add_split(&tr, 0.0, NULL);
     if (st == CF_STATUS_OK)
-        st = add_split(&tr, (double)nraw);
+        st = add_split(&tr, (double)nraw, NULL);
     if (st != CF_STATUS_OK)
         goto done;
-    qsort(tr.splits, tr.nsplit, sizeof(double), cmp_double);
+    qsort(tr.splits, tr.nsplit, sizeof(split), cmp_split);
     /* classify each interval by samples; locate transitions by bisection */
     for (size_t k = 0; k + 1 < tr.nsplit; k++) {
-        double g0 = tr.splits[k], g1 = tr.splits[k + 1], start = g0;
+        double g0 = tr.splits[k].g, g1 = tr.splits[k + 1].g, start = g0;
         bool cls[CLASS_N];
         if (g1 - g0 < 1e-12)
             continue;
@@ -355,7 +437,11 @@ cf__offset_trim(const cf_bezier_t *const *base, size_t nbase, double d,
                         goto done;
                     open = true;
                 }
-                st = append_part(&tr, &ch, start, end);
+                st = append_part(&tr, &ch, start, end,
+                                 start == g0 && tr.splits[k].exact
+                                     ? tr.splits[k].p : NULL,
+                                 end == g1 && tr.splits[k + 1].exact
+                                     ? tr.splits[k + 1].p : NULL);
                 if (st != CF_STATUS_OK)
                     goto done;
             } else if (open) {

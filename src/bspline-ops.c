@@ -1013,6 +1013,22 @@ cf_bspline_reverse(const cf_bspline_t *c, cf_bspline_t **out,
         else
             q->U[i] = fmin(fmax((c->U[0] + c->U[m]) - u, c->U[0]),
                            c->U[m]);
+        /* Knots an ulp apart may round onto one value at the scale of
+        ** u_0 + u_m, which would merge two runs into one of too high a
+        ** multiplicity (found by the fuzzer): keep distinct knots
+        ** distinct by stepping to the next double. */
+        if (i > 0 && c->U[m - i] < c->U[m - i + 1] && !(q->U[i] > q->U[i - 1]))
+            q->U[i] = nextafter(q->U[i - 1], INFINITY);
+    }
+    for (size_t i = 1; i <= m; i++) {
+        if ((c->U[m - i] < c->U[m - i + 1]) != (q->U[i] > q->U[i - 1]) ||
+            q->U[i] < q->U[i - 1]) {
+            cf_bspline_destroy(q);
+            return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)(m - i),
+                             "reverse: knots %zu and %zu (%.17g, %.17g) are "
+                             "too close to be reversed exactly", m - i,
+                             m - i + 1, c->U[m - i], c->U[m - i + 1]);
+        }
     }
     for (size_t i = 0; i <= n; i++)
         memcpy(q->P + i * hd, c->P + (n - i) * hd, hd * sizeof *q->P);

@@ -49,6 +49,9 @@ check_valid(const cf_bspline_t *c)
                           &diag) != CF_STATUS_OK) {
         fprintf(stderr, "result of operation %d has an invalid knot "
                 "vector: %s\n", last_op, diag.msg);
+        for (size_t i = 0; i < cf_bspline_nknots(c); i++)
+            fprintf(stderr, " %.17g", cf_bspline_knots(c)[i]);
+        fprintf(stderr, "\n");
         abort();
     }
 }
@@ -201,6 +204,12 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             break;
         }
         if (next != NULL) {
+            if (getenv("FUZZ_KNOTS_TRACE") != NULL) {
+                fprintf(stderr, "op %d:", op);
+                for (i = 0; i < cf_bspline_nknots(c); i++)
+                    fprintf(stderr, " %.17g", cf_bspline_knots(c)[i]);
+                fprintf(stderr, "\n");
+            }
             check_valid(next);
             cf_bspline_destroy(c);
             c = next;

@@ -1011,6 +1011,29 @@ test_overflow_refused(void **state)
 ** fuzzer, tests/fuzz/regressions/knots/remove-full-multiplicity; ASan in
 ** CI sees it).  The curve is one quadratic, so all copies go and it comes
 ** back unchanged. */
+/* Two knots one ulp apart that (u_0 + u_m) - u rounds onto one value stay
+** distinct in the reversed curve (else runs merge beyond p + 1; found by
+** the fuzzer, tests/fuzz/regressions/knots/reverse-merges-knots). */
+static void
+test_reverse_close_knots(void **state)
+{
+    const double a = 2.6311822376009228, b = 2.6311822376009233;
+    const double e = 7.4367647058823536;
+    const double U[] = { 0, 0, 0, a, b, e, e, e };
+    const double P[] = { 0, 0, 1, 2, 2, 0, 3, 1, 4, 0 };
+    cf_bspline_t *c = NULL, *rv = NULL;
+    const double *R;
+    (void)state;
+    assert_true(a < b && (0 + e) - a == (0 + e) - b);
+    assert_int_equal(cf_bspline_create(2, 2, U, 8, P, 5, NULL, &c, NULL), 0);
+    assert_int_equal(cf_bspline_reverse(c, &rv, NULL), 0);
+    R = cf_bspline_knots(rv);
+    assert_true(R[3] < R[4]);
+    assert_int_equal(cf_knots_validate(2, 5, R, 8, NULL), 0);
+    cf_bspline_destroy(rv);
+    cf_bspline_destroy(c);
+}
+
 static void
 test_remove_full_multiplicity(void **state)
 {
@@ -1651,6 +1674,7 @@ main(void)
         cmocka_unit_test(test_reverse_transform),
         cmocka_unit_test(test_reverse_rounding),
         cmocka_unit_test(test_remove_full_multiplicity),
+        cmocka_unit_test(test_reverse_close_knots),
         cmocka_unit_test(test_overflow_refused),
         cmocka_unit_test(test_nurbs_unit_weights),
         cmocka_unit_test(test_circle_and_arcs),

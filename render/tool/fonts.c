@@ -18,14 +18,16 @@
 ** inside an italic run), a bold request on a family without bold gets
 ** emboldened.  Hinting and anti-aliasing rules do not matter: the renderer
 ** sets its font options itself (label.c: no hinting, grey anti-aliasing).
-** The result is the same fonts and the same output files, byte for byte
-** (tests/render/test_output.c compares both configurations).
+** For every character these families have, the result is the same fonts
+** and the same output files, byte for byte (tests/render/test_output.c
+** compares both configurations).  Characters none of them has come from
+** Latin Modern Math (\cdot, \circ, \mapsto, \langle, \rangle: the
+** system configuration took DejaVu Sans), or are missing glyphs (emoji)
+** where the system configuration might have found another family.
 **
 ** The system configuration is kept when FONTCONFIG_FILE or FONTCONFIG_PATH
 ** is set (the user chose a configuration) or when one of the three font
-** directories does not exist (another distribution).  Characters none of
-** these fonts has (rare symbols, emoji) then draw as missing glyphs where
-** the system configuration might have found them in another family.
+** directories does not exist (another distribution).
 */
 #include <stdbool.h>
 #include <stdio.h>

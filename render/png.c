@@ -25,6 +25,10 @@
 
 #define IDAT_MAX 65536   /* bytes of compressed data per IDAT chunk */
 #define ZLEVEL 3
+/* zlib's hash table at 2^(7+7) entries instead of 2^(8+7): on the figure
+** set 8 % faster, the files as small (level 1 is 5 % faster but 2.4 %
+** larger; libdeflate, tried, is no faster on these images) */
+#define ZMEMLEVEL 7
 
 static void
 put_u32(unsigned char *p, uint32_t v)
@@ -143,8 +147,8 @@ write_idat(const unsigned char *data, int width, int height, int stride,
     line = cf__malloc(rowbytes + 1);
     zbuf = cf__malloc(IDAT_MAX);
     if (line == NULL || zbuf == NULL
-        || deflateInit2(&z, ZLEVEL, Z_DEFLATED, 15, 8, Z_DEFAULT_STRATEGY)
-               != Z_OK) {
+        || deflateInit2(&z, ZLEVEL, Z_DEFLATED, 15, ZMEMLEVEL,
+                        Z_DEFAULT_STRATEGY) != Z_OK) {
         cf__free(line);
         cf__free(zbuf);
         return cf__error(diag, CF_STATUS_NO_MEMORY, -1,

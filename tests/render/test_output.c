@@ -625,7 +625,7 @@ test_write_errors(void **state)
     cf_figure_destroy(fig);
 }
 
-/* ---- the PNG writer (render/png.c) --------------------------------------- */
+/* ---- the PNG writer (render/png.c) ------------------------------------ */
 
 typedef struct membuf {
     const unsigned char *data;
@@ -672,12 +672,13 @@ assert_same_pixels(cairo_surface_t *a, cairo_surface_t *b)
     assert_int_equal(h, cairo_image_surface_get_height(b));
     assert_int_equal(cairo_image_surface_get_format(a),
                      cairo_image_surface_get_format(b));
-    for (y = 0; y < h; y++)
-        assert_memory_equal(cairo_image_surface_get_data(a)
-                                + (size_t)y * cairo_image_surface_get_stride(a),
-                            cairo_image_surface_get_data(b)
-                                + (size_t)y * cairo_image_surface_get_stride(b),
+    for (y = 0; y < h; y++) {
+        size_t ra = (size_t)y * (size_t)cairo_image_surface_get_stride(a);
+        size_t rb = (size_t)y * (size_t)cairo_image_surface_get_stride(b);
+        assert_memory_equal(cairo_image_surface_get_data(a) + ra,
+                            cairo_image_surface_get_data(b) + rb,
                             4 * (size_t)w);
+    }
 }
 
 /* Random premultiplied pixels: channels <= alpha; alpha 0, 255 and the
@@ -1122,15 +1123,18 @@ test_tool_fonts_same_as_system(void **state)
         " \\\\to g$\",\n"
         "  \"$x \\\\in A \\\\subset B, \\\\infty, \\\\partial, \\\\nabla,"
         " \\\\ldots, \\\\cdots$\",\n"
-        "  \"$\\\\sum \\\\prod \\\\int f', \\\\ell, 30\\\\deg, \\\\|v\\\\|$\",\n"
+        "  \"$\\\\sum \\\\prod \\\\int f', \\\\ell, 30\\\\deg,"
+        " \\\\|v\\\\|$\",\n"
         "  \"$\\\\hat{x} \\\\bar{y} \\\\tilde{z} \\\\vec{v} \\\\dot{a}"
         " \\\\ddot{b} \\\\frac{1}{2}$\",\n"
         "  \"$\\\\mathbf{B}_i \\\\mathit{it} \\\\mathrm{rm} \\\\text{text}"
         " \\\\operatorname{sin}$\",\n"
-        "  \"K\\xc5\\x99ivka \\xd0\\x9a\\xd1\\x80\\xd0\\xb8\\xd0\\xb2\\xd0\\xb0"
+        "  \"K\\xc5\\x99ivka \\xd0\\x9a\\xd1\\x80\\xd0\\xb8\\xd0\\xb2"
+        "\\xd0\\xb0"
         "\\xd1\\x8f \\xe6\\x9b\\xb2\\xe7\\xba\\xbf \\xce\\xba\\xce\\xbb\",\n"
         "  \"$\\\\mathbf{\\xd0\\x9a\\xd1\\x80\\xd0\\xb8\\xd0\\xb2\\xd0\\xb0"
-        "\\xd1\\x8f} \\\\mathit{\\xd0\\x9a\\xd1\\x80\\xd0\\xb8\\xd0\\xb2\\xd0\\xb0"
+        "\\xd1\\x8f} \\\\mathit{\\xd0\\x9a\\xd1\\x80\\xd0\\xb8\\xd0\\xb2"
+        "\\xd0\\xb0"
         "\\xd1\\x8f}$\",\n"
         "  \"$\\\\mathbf{\\xe6\\x9b\\xb2\\xe7\\xba\\xbf}"
         " \\\\mathit{\\xe6\\x9b\\xb2\\xe7\\xba\\xbf} \\xe6\\x9b\\xb2$\",\n"
@@ -1193,7 +1197,8 @@ static void
 test_tool_fonts_fallback_and_choice(void **state)
 {
     static const char script[] =
-        "local f = figure{ name = \"sym\", width = \"4cm\", height = \"2cm\" }\n"
+        "local f = figure{ name = \"sym\", width = \"4cm\","
+        " height = \"2cm\" }\n"
         "f:polyline({ {0, 0}, {4, 2} })\n"
         "f:label({ 2, 1 }, \"$a \\\\cdot b \\\\circ c \\\\mapsto"
         " \\\\langle u \\\\rangle$\")\n";

@@ -24,7 +24,7 @@ cf__bezier_unit_tangent(const cf_bezier_t *c, double t, int side,
         p[0] = v[0];
         p[1] = v[1];
     }
-    len = hypot(v[2], v[3]);
+    len = sqrt(v[2] * v[2] + v[3] * v[3]);
     if (len > 1e-12 * scale && len > 0.0) {
         u[0] = v[2] / len;
         u[1] = v[3] / len;
@@ -132,7 +132,7 @@ cf__osrc_deriv(const cf__osrc_t *s, double t, double *p, double *dp)
         /* o' = c' (1 - d (c' x c'') / |c'|^3) */
         double v[6], sp, f;
         cf_bezier_eval_derivs(s->c, t, 2, v);
-        sp = hypot(v[2], v[3]);
+        sp = sqrt(v[2] * v[2] + v[3] * v[3]);
         if (!(sp > 1e-14 * s->scale)) {
             src_point_dir(s, t, 1, p, NULL);
             dp[0] = dp[1] = 0.0;
@@ -321,7 +321,7 @@ directed(const meas *m, int from)
         f1 = dist_to(m, 1 - from, other, p);
         curve_pd(m, from, x2, p, NULL);
         f2 = dist_to(m, 1 - from, other, p);
-        for (int it = 0; it < (k <= 16 ? 8 : 24); it++) {
+        for (int it = 0; it < (k <= 16 ? 8 : 16); it++) {
             if (f1 > f2) {
                 hi = x2;
                 x2 = x1;
@@ -741,10 +741,11 @@ tiller_hanson(const cf__osrc_t *s, double a, double b, double *pts)
 #define K_FINE 40
 
 /* Pattern search on the arm lengths of pts (end points and tangent
-** directions fixed), minimising the coarse error *err. */
+** directions fixed), lowering the coarse error *err until it is at most
+** target. */
 static cf_status_t
-polish_arms(const cf__osrc_t *s, double a, double b, double *pts,
-            double *err)
+polish_arms(const cf__osrc_t *s, double a, double b, double target,
+            double *pts, double *err)
 {
     double u[2][2], arm[2], step;
     double chord = hypot(pts[6] - pts[0], pts[7] - pts[1]);
@@ -757,7 +758,8 @@ polish_arms(const cf__osrc_t *s, double a, double b, double *pts,
         u[k][1] = (c[1] - e[1]) / arm[k];
     }
     step = 0.05 * fmax(chord, fmax(arm[0], arm[1]));
-    for (int it = 0; it < 16 && step > 1e-6 * chord; it++) {
+    for (int it = 0; it < 16 && step > 1e-6 * chord && *err > target;
+         it++) {
         bool improved = false;
         for (int k = 0; k < 2; k++)
             for (int sg = -1; sg <= 1; sg += 2) {
@@ -819,8 +821,8 @@ cf__fit_piece(const cf__osrc_t *s, double a, double b,
         memcpy(out->pts, cand[best], sizeof out->pts);
         /* just above the tolerance: polish the two arm lengths by a
         ** pattern search on the measured error */
-        if (be > reject && be < 3.0 * reject) {
-            st = polish_arms(s, a, b, out->pts, &be);
+        if (be > reject && be < 1.5 * reject) {
+            st = polish_arms(s, a, b, 0.9 * reject, out->pts, &be);
             if (st != CF_STATUS_OK)
                 return st;
         }

@@ -228,6 +228,10 @@ main(int argc, char **argv)
         if (d != NULL)
             closedir(d);
     }
+    for (int k = 0; k < FIGS * FORMATS; k++) {
+        free(old_ref[k].data);
+        free(new_ref[k].data);
+    }
     printf("%d renders, %d killed by SIGKILL: %d files were the previous "
            "version, %d the complete new one, %d absent; %ld temporary files "
            "left by the kills; %d bad\n", kills, killed, seen_old, seen_new,

@@ -1258,9 +1258,14 @@ test_out_of_memory(void **state)
 {
     double P[] = { 0, 5, 1, -1, 3, 0, 4, 3, 6, 10 };
     long k;
+    cf_style_t autoplace;
     (void)state;
+    cf_style_init(&autoplace);
+    autoplace.set = CF_STYLE_PLACE;
+    autoplace.place = CF_PLACE_AUTO;
     /* fail each allocation in turn while building and rendering a
-    ** figure: a status every time, no leak, eventually success */
+    ** figure (an explicit window, a label placed automatically): a
+    ** status every time, no leak, eventually success */
     for (k = 1; k < 2000; k++) {
         cf_figure_t *fig = NULL;
         cf_bezier_t *c = NULL;
@@ -1276,6 +1281,8 @@ test_out_of_memory(void **state)
             cf_figure_add_polygon(fig, P, 5, NULL);
             cf_figure_add_bezier(fig, c, NULL);
             cf_figure_add_label(fig, 0, 5, "P_0", NULL);
+            cf_figure_add_label(fig, 1, -1, "P_1", &autoplace);
+            cf_figure_set_window(fig, -1, 7, -2, 11);
             cf_axes_init(&ax);
             cf_figure_add_axes(fig, &ax, NULL);
             st = cf_figure_render(fig, CF_FORMAT_SVG, NULL, &data, &size,

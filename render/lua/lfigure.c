@@ -444,8 +444,9 @@ read_length(lua_State *L, int idx, const char *fn, const char *what,
     while (*end == ' ')
         end++;
     if (end == s || cf_unit_from_name(*end ? end : "bp", &unit, NULL))
-        luaL_error(L, "%s: %s \"%s\": give a number and a unit (bp, pt, "
-                   "texpt, mm, cm, in), e.g. \"8cm\"", fn, what, s);
+        return luaL_error(L, "%s: %s \"%s\": give a number and a unit (bp, "
+                          "pt, texpt, mm, cm, in), e.g. \"8cm\"", fn, what,
+                          s);
     return cf_length_to_bp(v, unit);
 }
 
@@ -1051,7 +1052,11 @@ read_ticks(lua_State *L, const char *key, const char *labels_key,
 {
     int t = cf__lua_field(L, 2, key);
     if (t == LUA_TNUMBER) {
+        /* a step <= 0 would mean automatic or no ticks to the library */
         *step = cf__lua_check_finite(L, -1, "plot", key);
+        if (!(*step > 0))
+            luaL_error(L, "plot: %s step %s must be positive (or false for "
+                       "none)", key, lua_tostring(L, -1));
     } else if (t == LUA_TBOOLEAN && !lua_toboolean(L, -1)) {
         *step = -1;
     } else if (t == LUA_TTABLE) {
@@ -1239,6 +1244,7 @@ m_func(lua_State *L)
         return lua_error(L);
     if (rc != CF_STATUS_OK) {
         cf_diag_t diag;
+        cf_diag_clear(&diag);
         cf_figure_status(fig, &diag);
         return cf__lua_fail(L, "func", rc, &diag);
     }

@@ -94,6 +94,52 @@ test_error_messages(void **state)
     cf_script_destroy(s);
 }
 
+/* Messages of the figure methods: a tick step that is not positive is
+** refused (the library reads step < 0 as "no ticks" and 0 as automatic),
+** and f:func reports the figure's own message (finding F10: its diag was
+** left uninitialised, which printed stack garbage). */
+static void
+test_figure_messages(void **state)
+{
+    static const struct {
+        const char *code, *message;
+    } cases[] = {
+        { "local f = figure{ name = 'z' }\n"
+          "f:plot{ x = {0, 1}, y = {0, 1}, xticks = -0.1 }",
+          "t.lua:2: plot: xticks step -0.1 must be positive (or false for "
+          "none)" },
+        { "local f = figure{ name = 'z' }\n"
+          "f:plot{ x = {0, 1}, y = {0, 1}, yticks = 0 }",
+          "t.lua:2: plot: yticks step 0 must be positive (or false for "
+          "none)" },
+        { "local f = figure{ name = 'z' }\n"
+          "f:func(function(x) return 0/0 end, 0, 1)",
+          "t.lua:2: func: the plotted function is not finite on [0, 1]" },
+        { "local f = figure{ name = 'z' }\n"
+          "f:func(function(x) return x end, 1, 0)",
+          "t.lua:2: func: function range [1, 0] is empty" },
+    };
+    (void)state;
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        cf_script_t *s = new_script(16, 10000000);
+        assert_int_equal(cf_script_run_string(s, cases[i].code, "t.lua"),
+                         CF_STATUS_SCRIPT);
+        assert_string_equal(cf_script_error(s), cases[i].message);
+        cf_script_destroy(s);
+    }
+    /* false, a positive step and a list are still accepted */
+    {
+        cf_script_t *s = new_script(16, 10000000);
+        assert_int_equal(cf_script_run_string(s,
+            "local f = figure{ name = 'z' }\n"
+            "f:plot{ x = {0, 1}, y = {0, 1}, xticks = false, yticks = 0.5 }\n"
+            "local g = figure{ name = 'y' }\n"
+            "g:plot{ x = {0, 1}, y = {0, 1}, xticks = {0, 1} }", "t.lua"),
+            CF_STATUS_OK);
+        cf_script_destroy(s);
+    }
+}
+
 static void
 test_limits(void **state)
 {
@@ -211,6 +257,7 @@ main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_api_and_figures),
         cmocka_unit_test(test_error_messages),
+        cmocka_unit_test(test_figure_messages),
         cmocka_unit_test(test_limits),
         cmocka_unit_test(test_allocator_restored),
         cmocka_unit_test(test_fuzz_mutations),

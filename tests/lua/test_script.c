@@ -168,6 +168,67 @@ test_limits(void **state)
     cf_script_destroy(s);
 }
 
+static int
+count_lines(const char *s)
+{
+    int n = 1;
+    for (; *s != '\0'; s++)
+        n += *s == '\n';
+    return n;
+}
+
+/* A stack overflow (~500 000 frames) is reported at once with a short
+** traceback: the top frames, "...", the bottom ones, and a frame repeated
+** in a row as one line with its count (finding F1: the traceback used to
+** probe every level, quadratic in the depth, and ran for minutes). */
+static void
+test_deep_recursion(void **state)
+{
+    cf_script_t *s;
+    const char *e;
+    (void)state;
+    s = new_script(256, 1000000000);
+    assert_int_equal(cf_script_run_string(s,
+        "local function f(n) return 1 + f(n + 1) end\n"
+        "f(0)\n", "d.lua"), CF_STATUS_SCRIPT);
+    e = cf_script_error(s);
+    assert_non_null(strstr(e, "d.lua:1: stack overflow\n"
+                              "    from d.lua:1 (9 times)\n"
+                              "    ... ("));
+    assert_non_null(strstr(e, " levels not shown)\n"
+                              "    from d.lua:1 (21 times)\n"
+                              "    from d.lua:2"));
+    assert_int_equal(count_lines(e), 5);
+    cf_script_destroy(s);
+    /* two functions calling each other: nothing to collapse, at most 10
+    ** frames above the "..." line and 22 levels below it */
+    s = new_script(256, 1000000000);
+    assert_int_equal(cf_script_run_string(s,
+        "local g\n"
+        "local function f(n) return 1 + g(n) end\n"
+        "g = function(n) return 1 + f(n + 1) end\n"
+        "f(0)\n", "m.lua"), CF_STATUS_SCRIPT);
+    e = cf_script_error(s);
+    assert_non_null(strstr(e, "stack overflow"));
+    assert_non_null(strstr(e, "levels not shown"));
+    assert_non_null(strstr(e, "    from m.lua:4"));
+    assert_true(count_lines(e) <= 1 + 10 + 1 + 22);
+    cf_script_destroy(s);
+    /* a shallow error keeps every frame */
+    s = new_script(16, 1000000);
+    assert_int_equal(cf_script_run_string(s,
+        "local function f(n) if n == 0 then error('deep') end\n"
+        "  return 1 + f(n - 1) end\n"
+        "local function g() return 1 + f(3) end\n"
+        "g()\n", "s.lua"), CF_STATUS_SCRIPT);
+    assert_string_equal(cf_script_error(s),
+                        "s.lua:1: deep\n"
+                        "    from s.lua:2 (3 times)\n"
+                        "    from s.lua:3\n"
+                        "    from s.lua:4");
+    cf_script_destroy(s);
+}
+
 /* The script installs its budget as the library's allocator and puts the
 ** previous one back when it is destroyed. */
 static void
@@ -259,6 +320,7 @@ main(void)
         cmocka_unit_test(test_error_messages),
         cmocka_unit_test(test_figure_messages),
         cmocka_unit_test(test_limits),
+        cmocka_unit_test(test_deep_recursion),
         cmocka_unit_test(test_allocator_restored),
         cmocka_unit_test(test_fuzz_mutations),
     };

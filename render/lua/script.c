@@ -526,12 +526,70 @@ cf_script_run_file(cf_script_t *s, const char *path)
     return st;
 }
 
+/* The chunk is handed to the parser one line at a time, so that the
+** reader knows which line the parser has reached when it fails. */
+typedef struct line_reader {
+    const char *p;
+    size_t left;
+    int line;            /* lines handed out so far */
+} line_reader;
+
+static const char *
+read_line(lua_State *L, void *ud, size_t *size)
+{
+    line_reader *rd = ud;
+    const char *nl, *p = rd->p;
+    (void)L;
+    if (rd->left == 0) {
+        *size = 0;
+        return NULL;
+    }
+    nl = memchr(p, '\n', rd->left);
+    *size = nl != NULL ? (size_t)(nl - p) + 1 : rd->left;
+    rd->p += *size;
+    rd->left -= *size;
+    if (rd->line < INT_MAX)
+        rd->line++;
+    return p;
+}
+
+/* A load error at the top of the stack, below it the chunk name "@name":
+** the parser's "C stack overflow" (source nested too deeply) carries no
+** position; give it the chunk's short name (as the other syntax errors
+** have it) and the line the parser had reached. */
+static void
+place_load_error(lua_State *L, int line)
+{
+    const char *msg = lua_tostring(L, -1);
+    const char *src = "?";
+    lua_Debug ar;
+    if (msg == NULL)
+        return;
+    /* the short name of the chunk, the way Lua prints it: from an empty
+    ** chunk loaded under the same name */
+    if (luaL_loadbufferx(L, "", 0, lua_tostring(L, -2), "t") == LUA_OK) {
+        lua_pushvalue(L, -1);
+        if (lua_getinfo(L, ">S", &ar))
+            src = ar.short_src;
+    }
+    /* stack: ..., name, msg, chunk or error */
+    if (strncmp(msg, src, strlen(src)) != 0 || msg[strlen(src)] != ':') {
+        if (strcmp(msg, "C stack overflow") == 0)
+            lua_pushfstring(L, "%s:%d: C stack overflow (the script nests "
+                            "too deeply)", src, line);
+        else
+            lua_pushfstring(L, "%s:%d: %s", src, line, msg);
+        lua_replace(L, -3);
+    }
+    lua_pop(L, 1);
+}
+
 cf_status_t
 cf_script_run_string(cf_script_t *s, const char *code, const char *name)
 {
     lua_State *L;
     int rc;
-    size_t len;
+    line_reader rd;
     if (s == NULL || code == NULL || name == NULL)
         return CF_STATUS_INVALID_ARG;
     L = s->L;
@@ -548,9 +606,13 @@ cf_script_run_string(cf_script_t *s, const char *code, const char *name)
         const char *nl = strchr(code, '\n');
         code = nl != NULL ? nl : "";
     }
-    len = strlen(code);
+    rd.p = code;
+    rd.left = strlen(code);
+    rd.line = 0;
     lua_pushfstring(L, "@%s", name);
-    rc = luaL_loadbufferx(L, code, len, lua_tostring(L, -1), "t");
+    rc = lua_load(L, read_line, &rd, lua_tostring(L, -1), "t");
+    if (rc != LUA_OK && rc != LUA_ERRMEM && s->limit_hit == LIMIT_NONE)
+        place_load_error(L, rd.line > 0 ? rd.line : 1);
     lua_remove(L, -2);
     return run_loaded(s, rc, name);
 }

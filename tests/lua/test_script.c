@@ -98,6 +98,50 @@ test_error_messages(void **state)
 ** refused (the library reads step < 0 as "no ticks" and 0 as automatic),
 ** and f:func reports the figure's own message (finding F10: its diag was
 ** left uninitialised, which printed stack garbage). */
+/* Source nested too deeply: the parser's "C stack overflow" carries no
+** position of its own; the message gets the chunk's name and the line
+** the parser had reached (finding F3), in the same form as the parser's
+** other messages (a long name shortened the same way). */
+static void
+test_parser_nesting(void **state)
+{
+    char code[1200], name[100], expect[200];
+    cf_script_t *s;
+    size_t n = 0;
+    (void)state;
+    s = new_script(16, 1000000);
+    n += (size_t)snprintf(code, sizeof code, "#!/usr/bin/env curvefig\n"
+                          "local a = 1\nlocal x = ");
+    for (int i = 0; i < 500; i++)
+        code[n++] = '{';
+    code[n++] = '\n';
+    code[n] = '\0';
+    assert_int_equal(cf_script_run_string(s, code, "nest.lua"),
+                     CF_STATUS_SCRIPT);
+    assert_string_equal(cf_script_error(s), "nest.lua:3: C stack overflow "
+                                            "(the script nests too deeply)");
+    /* a name longer than Lua's LUA_IDSIZE - 1 = 59 characters: "..." and
+    ** its end, as in a syntax error under the same name */
+    memset(name, 'n', 80);
+    memcpy(name + 76, ".lua", 5);
+    assert_int_equal(cf_script_run_string(s, "local = 1", name),
+                     CF_STATUS_SCRIPT);
+    snprintf(expect, sizeof expect, "...%s:1: ", name + 80 - 56);
+    assert_non_null(strstr(cf_script_error(s), expect));
+    assert_true(strstr(cf_script_error(s), expect) == cf_script_error(s));
+    assert_int_equal(cf_script_run_string(s, code + 24, name),
+                     CF_STATUS_SCRIPT);
+    snprintf(expect, sizeof expect, "...%s:2: C stack overflow (the script "
+             "nests too deeply)", name + 80 - 56);
+    assert_string_equal(cf_script_error(s), expect);
+    /* the other syntax errors are unchanged */
+    assert_int_equal(cf_script_run_string(s, "\nlocal = 1", "syn.lua"),
+                     CF_STATUS_SCRIPT);
+    assert_string_equal(cf_script_error(s), "syn.lua:2: <name> expected "
+                                            "near '='");
+    cf_script_destroy(s);
+}
+
 static void
 test_figure_messages(void **state)
 {
@@ -318,6 +362,7 @@ main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_api_and_figures),
         cmocka_unit_test(test_error_messages),
+        cmocka_unit_test(test_parser_nesting),
         cmocka_unit_test(test_figure_messages),
         cmocka_unit_test(test_limits),
         cmocka_unit_test(test_deep_recursion),

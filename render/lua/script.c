@@ -179,6 +179,31 @@ safe_load(lua_State *L)
     return lua_gettop(L);
 }
 
+/* setmetatable without finalisers: Lua runs a __gc metamethod with the
+** hooks off, so a loop in it would escape the instruction limit (and an
+** object is marked for finalisation by any __gc field present when its
+** metatable is set, even a placeholder replaced later). */
+static int
+safe_setmetatable(lua_State *L)
+{
+    int t = lua_type(L, 2);
+    luaL_checktype(L, 1, LUA_TTABLE);
+    luaL_argexpected(L, t == LUA_TNIL || t == LUA_TTABLE, 2, "nil or table");
+    if (t == LUA_TTABLE) {
+        lua_pushliteral(L, "__gc");
+        if (lua_rawget(L, 2) != LUA_TNIL)
+            return luaL_error(L, "setmetatable: __gc is not allowed in "
+                              "figure scripts (a finaliser would run "
+                              "outside the instruction limit)");
+        lua_pop(L, 1);
+    }
+    if (luaL_getmetafield(L, 1, "__metatable") != LUA_TNIL)
+        return luaL_error(L, "cannot change a protected metatable");
+    lua_settop(L, 2);
+    lua_setmetatable(L, 1);
+    return 1;
+}
+
 static int
 safe_print(lua_State *L)
 {
@@ -247,6 +272,8 @@ open_sandbox(lua_State *L)
     wrap_global(L, "pcall", safe_call);
     wrap_global(L, "xpcall", safe_call);
     wrap_global(L, "load", safe_load);
+    lua_pushcfunction(L, safe_setmetatable);
+    lua_setglobal(L, "setmetatable");
     lua_pushcfunction(L, safe_print);
     lua_setglobal(L, "print");
     cf__lua_open_bezier(L);

@@ -2,8 +2,8 @@
 ** curvefig figure scripts: a sandboxed Lua 5.4 state that runs one script
 ** and collects the figures it defines.  Used by the `curvefig` tool.
 **
-** The sandbox opens base (without dofile, loadfile and binary chunks),
-** math, string (without string.dump), table and utf8; no io, os, package,
+** The sandbox opens base (without dofile, loadfile and binary chunks;
+** setmetatable refuses __gc, whose finaliser would run unhooked), math, string (without string.dump), table and utf8; no io, os, package,
 ** debug or coroutine.  Memory (Lua's and the library's) and the number of
 ** Lua instructions are capped; exceeding a cap stops the script with
 ** "script exceeded the memory limit of N MiB" or "script exceeded the

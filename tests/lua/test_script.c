@@ -212,6 +212,51 @@ test_limits(void **state)
     cf_script_destroy(s);
 }
 
+/* Lua runs finalisers with the hooks off: setmetatable refuses a __gc
+** field (even a placeholder, which marks the object for finalisation), so
+** no script code can run outside the instruction limit (finding F2: an
+** endless loop in __gc hung the process for ever).  Other metamethods,
+** __close included, stay under the limit. */
+static void
+test_no_finalisers(void **state)
+{
+    cf_script_t *s;
+    (void)state;
+    s = new_script(16, 1000000);
+    assert_int_equal(cf_script_run_string(s,
+        "\nsetmetatable({}, { __gc = function() while true do end end })\n"
+        "collectgarbage()\n", "gc.lua"), CF_STATUS_SCRIPT);
+    assert_string_equal(cf_script_error(s), "gc.lua:2: setmetatable: __gc is "
+                        "not allowed in figure scripts (a finaliser would "
+                        "run outside the instruction limit)");
+    assert_int_equal(cf_script_run_string(s,
+        "local mt = { __gc = false }\n"
+        "local t = setmetatable({}, mt)\n"
+        "mt.__gc = function() while true do end end\n", "gc2.lua"),
+        CF_STATUS_SCRIPT);
+    assert_non_null(strstr(cf_script_error(s), "gc2.lua:2: setmetatable: "
+                                               "__gc is not allowed"));
+    /* setmetatable itself still works: its result, __index, protection */
+    assert_int_equal(cf_script_run_string(s,
+        "local t = setmetatable({}, { __index = function(_, k) return k end,"
+        " __metatable = 'no' })\n"
+        "assert(t.abc == 'abc' and getmetatable(t) == 'no')\n"
+        "assert(not pcall(setmetatable, t, {}))\n"
+        "assert(setmetatable(t, nil) == nil)\n", "ok.lua"),
+        CF_STATUS_SCRIPT);
+    assert_non_null(strstr(cf_script_error(s), "ok.lua:4: cannot change a "
+                                               "protected metatable"));
+    cf_script_destroy(s);
+    s = new_script(16, 1000000);
+    assert_int_equal(cf_script_run_string(s,
+        "local x <close> = setmetatable({}, { __close = function()\n"
+        "  while true do end end })\n"
+        "error('boom')\n", "close.lua"), CF_STATUS_SCRIPT);
+    assert_string_equal(cf_script_error(s), "close.lua:2: script exceeded "
+                        "the instruction limit of 1000000 instructions");
+    cf_script_destroy(s);
+}
+
 static int
 count_lines(const char *s)
 {
@@ -366,6 +411,7 @@ main(void)
         cmocka_unit_test(test_figure_messages),
         cmocka_unit_test(test_limits),
         cmocka_unit_test(test_deep_recursion),
+        cmocka_unit_test(test_no_finalisers),
         cmocka_unit_test(test_allocator_restored),
         cmocka_unit_test(test_fuzz_mutations),
     };

@@ -14,8 +14,9 @@
 #include "lfigure.h"
 #include "script.h"
 
-/* Memory kept in reserve once the budget is exhausted, so that the error
-** can still be raised and the state closed. */
+/* Part of the budget kept in reserve until the rest is exhausted, so that
+** the error can still be raised and the state closed within the budget:
+** 1/16 of it, at most 1 MiB. */
 #define RESERVE ((size_t)1 << 20)
 #define HOOK_EVERY 10000
 
@@ -24,7 +25,7 @@ enum { LIMIT_NONE, LIMIT_MEMORY, LIMIT_INSTRUCTIONS };
 struct cf_script {
     lua_State *L;
     FILE *out;
-    size_t used, max_memory;
+    size_t used, max_memory, reserve;
     unsigned long long instructions, max_instructions;
     int limit_hit;
     int running;       /* a script is running (the stack can be read) */
@@ -71,7 +72,7 @@ budget_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
 {
     cf_script_t *s = ud;
     size_t old = ptr != NULL ? osize : 0;
-    size_t cap = s->max_memory + (s->limit_hit ? RESERVE : 0);
+    size_t cap = s->max_memory - (s->limit_hit ? 0 : s->reserve);
     void *p;
     if (nsize == 0) {
         free(ptr);
@@ -101,14 +102,29 @@ cf__lua_memory_exceeded(lua_State *L)
     return ((cf_script_t *)ud)->limit_hit == LIMIT_MEMORY;
 }
 
+/* A memory budget in the unit it was given in: "256 MiB", "512 KiB",
+** "1000 bytes". */
+static const char *
+format_size(char buf[40], size_t bytes)
+{
+    if (bytes >= ((size_t)1 << 20) && bytes % ((size_t)1 << 20) == 0)
+        snprintf(buf, 40, "%zu MiB", bytes >> 20);
+    else if (bytes >= 1024 && bytes % 1024 == 0)
+        snprintf(buf, 40, "%zu KiB", bytes >> 10);
+    else
+        snprintf(buf, 40, "%zu bytes", bytes);
+    return buf;
+}
+
 /* The message of an exhausted budget, at the position last seen by the
 ** hook (an allocation failure cannot ask Lua where it happened). */
 static int
 limit_error(lua_State *L, cf_script_t *s)
 {
+    char size[40];
     if (s->limit_hit == LIMIT_MEMORY)
-        lua_pushfstring(L, "%sscript exceeded the memory limit of %d MiB",
-                        s->where, (int)(s->max_memory >> 20));
+        lua_pushfstring(L, "%sscript exceeded the memory limit of %s",
+                        s->where, format_size(size, s->max_memory));
     else
         lua_pushfstring(L, "%sscript exceeded the instruction limit of %I "
                         "instructions", s->where,
@@ -286,6 +302,15 @@ open_sandbox(lua_State *L)
     return 0;
 }
 
+static cf_status_t
+too_small(const cf_script_t *s, cf_diag_t *diag)
+{
+    char size[40];
+    return fail(diag, CF_STATUS_NO_MEMORY, "the memory limit of %s is too "
+                "small for the sandbox itself",
+                format_size(size, s->max_memory));
+}
+
 cf_status_t
 cf_script_create(const cf_script_limits_t *limits, FILE *out,
                  cf_script_t **script, cf_diag_t *diag)
@@ -301,23 +326,30 @@ cf_script_create(const cf_script_limits_t *limits, FILE *out,
     s->out = out != NULL ? out : stdout;
     s->max_memory = limits && limits->max_memory ? limits->max_memory
                                                  : CF_SCRIPT_DEFAULT_MEMORY;
+    s->reserve = s->max_memory / 16 < RESERVE ? s->max_memory / 16 : RESERVE;
     s->max_instructions = limits && limits->max_instructions
                               ? limits->max_instructions
                               : CF_SCRIPT_DEFAULT_INSTRUCTIONS;
     s->L = lua_newstate(budget_alloc, s);
     if (s->L == NULL) {
+        cf_status_t st = s->limit_hit ? too_small(s, diag)
+                                      : fail(diag, CF_STATUS_NO_MEMORY,
+                                             "out of memory%s", NULL);
         free(s);
-        return fail(diag, CF_STATUS_NO_MEMORY, "out of memory%s", NULL);
+        return st;
     }
     cf_get_allocator(&s->saved_allocator);
     a.realloc = library_alloc;
     a.ud = s;
     cf_set_allocator(&a);
     lua_pushcfunction(s->L, open_sandbox);
-    if (lua_pcall(s->L, 0, 0, 0) != LUA_OK) {
-        cf_status_t st = fail(diag, CF_STATUS_NO_MEMORY,
-                              "cannot set up the sandbox: %s",
-                              lua_tostring(s->L, -1));
+    /* the budget must hold the sandbox without touching the reserve */
+    if (lua_pcall(s->L, 0, 0, 0) != LUA_OK || s->limit_hit) {
+        cf_status_t st = s->limit_hit
+                             ? too_small(s, diag)
+                             : fail(diag, CF_STATUS_NO_MEMORY,
+                                    "cannot set up the sandbox: %s",
+                                    lua_tostring(s->L, -1));
         cf_script_destroy(s);
         return st;
     }
@@ -483,13 +515,14 @@ finish(cf_script_t *s, int rc, const char *name)
     if (rc == LUA_OK)
         return CF_STATUS_OK;
     if (s->limit_hit == LIMIT_MEMORY || rc == LUA_ERRMEM) {
-        char buf[512];
+        char buf[512], size[40];
+        format_size(size, s->max_memory);
         if (s->where[0] != '\0')
             snprintf(buf, sizeof buf, "%sscript exceeded the memory limit "
-                     "of %zu MiB", s->where, s->max_memory >> 20);
+                     "of %s", s->where, size);
         else
             snprintf(buf, sizeof buf, "%s: script exceeded the memory limit "
-                     "of %zu MiB", name, s->max_memory >> 20);
+                     "of %s", name, size);
         set_error(s, buf);
     } else {
         const char *msg = lua_tostring(L, -1);

@@ -23,6 +23,10 @@ extern "C" {
 
 typedef struct cf_script cf_script_t;
 
+/* max_memory is never exceeded: 1/16 of it (at most 1 MiB) is held back
+** to report the limit; a budget too small for the sandbox itself makes
+** cf_script_create fail with CF_STATUS_NO_MEMORY.  Messages give it in
+** MiB, KiB or bytes, whichever divides it. */
 typedef struct cf_script_limits {
     size_t max_memory;                 /* bytes; 0 = default (256 MiB) */
     unsigned long long max_instructions; /* 0 = default (500 million) */

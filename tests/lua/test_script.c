@@ -318,6 +318,54 @@ test_deep_recursion(void **state)
     cf_script_destroy(s);
 }
 
+/* Budgets in bytes (finding F8): the messages name the budget in the unit
+** it was given in, a budget too small for the sandbox itself is refused
+** by cf_script_create, and the reserve used to report the limit lies
+** inside the budget, so Lua's own count never goes past it. */
+static void
+test_small_budgets(void **state)
+{
+    static const char code[] =
+        "local t = {}\n"
+        "for i = 1, 1e7 do\n"
+        "  t[i] = { i }\n"
+        "  if collectgarbage('count') * 1024 > 524288 then print('over') end\n"
+        "end\n";
+    static const size_t tiny[] = { 1000, 8 << 10 };
+    static const char *const tiny_msg[] = {
+        "the memory limit of 1000 bytes is too small for the sandbox itself",
+        "the memory limit of 8 KiB is too small for the sandbox itself",
+    };
+    cf_script_limits_t lim = { 512 << 10, 100000000 };
+    cf_script_t *s = NULL;
+    cf_diag_t diag;
+    char out[64];
+    FILE *f;
+    (void)state;
+    for (size_t i = 0; i < 2; i++) {
+        lim.max_memory = tiny[i];
+        cf_diag_clear(&diag);
+        assert_int_equal(cf_script_create(&lim, sink, &s, &diag),
+                         CF_STATUS_NO_MEMORY);
+        assert_null(s);
+        assert_string_equal(diag.msg, tiny_msg[i]);
+    }
+    f = tmpfile();
+    assert_non_null(f);
+    lim.max_memory = 512 << 10;
+    cf_diag_clear(&diag);
+    assert_int_equal(cf_script_create(&lim, f, &s, &diag), CF_STATUS_OK);
+    assert_int_equal(cf_script_run_string(s, code, "b.lua"),
+                     CF_STATUS_SCRIPT);
+    assert_non_null(strstr(cf_script_error(s), "b.lua:3: script exceeded the "
+                                               "memory limit of 512 KiB"));
+    cf_script_destroy(s);
+    /* nothing printed: the count never passed the budget */
+    rewind(f);
+    assert_null(fgets(out, sizeof out, f));
+    fclose(f);
+}
+
 /* The script installs its budget as the library's allocator and puts the
 ** previous one back when it is destroyed. */
 static void
@@ -412,6 +460,7 @@ main(void)
         cmocka_unit_test(test_limits),
         cmocka_unit_test(test_deep_recursion),
         cmocka_unit_test(test_no_finalisers),
+        cmocka_unit_test(test_small_budgets),
         cmocka_unit_test(test_allocator_restored),
         cmocka_unit_test(test_fuzz_mutations),
     };

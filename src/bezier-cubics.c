@@ -3,7 +3,13 @@
 ** path output: SVG `C`, PDF `c`, cairo_curve_to).
 **
 ** Degree <= 3 polynomial curves are converted exactly (degree raised to 3).
-** Anything else is fitted piece by piece: on [a, b] the cubic Hermite
+** Planar curves otherwise go through the offset machinery at d = 0
+** (cf__fit_plain, offset.c / offset-fit.c): split at the zeros of c', each
+** piece covered by the longest cubics matching end points, end tangents,
+** signed area and x-moment (Levien), accepted by their measured two-sided
+** Hausdorff distance.
+** Curves in other dimensions are fitted piece by piece: on [a, b] the cubic
+** Hermite
 ** interpolant of the end points and end derivatives (scaled by b - a), i.e.
 ** P1 = c(a) + (b-a)/3 c'(a), P2 = c(b) - (b-a)/3 c'(b).  Its distance to the
 ** curve is measured as max |H(u) - c(a + u (b-a))| over SAMPLES + 1 evenly
@@ -14,6 +20,7 @@
 #include <string.h>
 
 #include "bezier-private.h"
+#include "offset-private.h"
 
 #define SAMPLES 48        /* samples per piece for the error measure */
 #define MAX_DEPTH 40      /* halvings of [0, 1] */
@@ -155,6 +162,43 @@ cf_bezier_to_cubics(const cf_bezier_t *c, double tol, cf_cubics_t **out,
         r->t[1] = 1.0;
         r->max_error = 0.0;
         *out = r;
+        return CF_STATUS_OK;
+    }
+    if (c->dim == 2) {
+        cf_cubics_t *fit2 = NULL;
+        bool converged = true;
+        cf__free(r);
+        if (cf__deriv_scale(c) == 0.0) {
+            /* a single point: one constant segment */
+            double p[2], pt4[8];
+            cf__chain_t ch;
+            cf__bezier_eval_point(c, 0.0, p);
+            for (int k = 0; k < 4; k++) {
+                pt4[2 * k] = p[0];
+                pt4[2 * k + 1] = p[1];
+            }
+            st = cf__chain_init(&ch);
+            if (st == CF_STATUS_OK)
+                st = cf__chain_push(&ch, pt4, 0.0, 1.0);
+            if (st != CF_STATUS_OK) {
+                cf__chain_fini(&ch);
+                return cf__error(diag, st, -1,
+                                 "out of memory (cubic segments)");
+            }
+            *out = cf__chain_take(&ch);
+            return CF_STATUS_OK;
+        }
+        st = cf__fit_plain(c, tol, &fit2, &converged);
+        if (st == CF_STATUS_NO_MEMORY)
+            return cf__error(diag, st, -1, "out of memory (cubic segments)");
+        if (st == CF_STATUS_OK && !(converged && fit2->max_error <= tol)) {
+            cf_cubics_destroy(fit2);
+            st = CF_STATUS_NO_CONVERGENCE;
+        }
+        if (st != CF_STATUS_OK)
+            return cf__error(diag, st, -1,
+                             "no cubic fit within %g of the curve", tol);
+        *out = fit2;
         return CF_STATUS_OK;
     }
     memset(&f, 0, sizeof f);

@@ -118,6 +118,13 @@ cf_status_t cf__chain_push(cf__chain_t *ch, const double *pts, double t0,
 cf_cubics_t *cf__chain_take(cf__chain_t *ch);
 void cf__chain_fini(cf__chain_t *ch);
 
+/* The planar curve c itself (not a polynomial of degree <= 3) as a chain
+** of cubics fitted by the offset machinery at d = 0 (split at the zeros of
+** c', greedy longest Levien fits); max_error set, *converged false if some
+** piece could not reach tol.  NO_MEMORY, NO_CONVERGENCE (empty chain). */
+cf_status_t cf__fit_plain(const cf_bezier_t *c, double tol,
+                          cf_cubics_t **out, bool *converged);
+
 /* Trim the raw chain of the pieces `base[0..n-1]` at d: split at the
 ** self-intersections and keep the parts at distance >= |d| - tol. */
 cf_status_t cf__offset_trim(const cf_bezier_t *const *base, size_t nbase,

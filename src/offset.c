@@ -235,7 +235,7 @@ greedy_dir(driver *dr, const cf__osrc_t *s, double a, double b, int dir,
     cf__fit_t f, best;
     cf_status_t st;
     while (dir > 0 ? t < b : t > a) {
-        double near, far;
+        double near, far, e_near = 0.0, e_far;
         bool have = false;
         st = fit_range(dr, s, t, end, &f);
         if (st != CF_STATUS_OK)
@@ -244,21 +244,47 @@ greedy_dir(driver *dr, const cf__osrc_t *s, double a, double b, int dir,
             return plist_add(out, &f, fmin(t, end), fmax(t, end));
         near = t;
         far = end;
+        e_far = f.err;
         for (int it = 0; it < 60; it++) {
-            double mid = 0.5 * (near + far);
+            double mid = 0.5 * (near + far), target = 0.99 * ACCEPT * dr->tol;
             if (have && fabs(far - near) <= 2e-3 * fabs(far - t))
                 break;
             if (fabs(far - t) < MIN_WIDTH * w0)
                 break;
+            /* the error grows about as a power of the length: the next
+            ** trial where the model (log error linear in log length,
+            ** through the bracket ends; slope 6 with one end) reaches the
+            ** target, kept inside the middle 80 % of the bracket */
+            if (e_far > 0.0 && isfinite(e_far)) {
+                double lf = log(fabs(far - t)), slope = 6.0, h;
+                if (have && e_near > 0.0 && fabs(near - t) > 0.0) {
+                    double ln = log(fabs(near - t));
+                    if (lf - ln > 1e-12)
+                        slope = fmax(1.0, (log(e_far) - log(e_near)) /
+                                              (lf - ln));
+                }
+                h = exp(lf + (log(target) - log(e_far)) / slope);
+                mid = t + (far > t ? h : -h);
+                {
+                    double lo = near + 0.1 * (far - near),
+                           hi = near + 0.9 * (far - near);
+                    if (far > near)
+                        mid = fmin(hi, fmax(lo, mid));
+                    else
+                        mid = fmax(hi, fmin(lo, mid));
+                }
+            }
             st = fit_range(dr, s, t, mid, &f);
             if (st != CF_STATUS_OK)
                 return st;
             if (f.err <= ACCEPT * dr->tol) {
                 near = mid;
                 best = f;
+                e_near = f.err;
                 have = true;
             } else {
                 far = mid;
+                e_far = f.err;
             }
         }
         if (!have) {
@@ -373,7 +399,8 @@ offset_piece(driver *dr, const cf_bezier_t *c)
     cf__osrc_t s;
     cf_status_t st;
 
-    if (dr->d == 0.0) {
+    if (dr->d == 0.0 && !c->rational && c->degree <= 3) {
+        /* the curve itself, exactly */
         cf_cubics_t *cu = NULL;
         st = cf_bezier_to_cubics(c, dr->tol, &cu, NULL);
         if (st != CF_STATUS_OK)
@@ -387,8 +414,11 @@ offset_piece(driver *dr, const cf_bezier_t *c)
         cf_cubics_destroy(cu);
         return st;
     }
+    /* d = 0 (the source is the curve itself): fitted like any offset,
+    ** split only at the zeros of c' */
     cf__osrc_init_offset(&s, c, dr->d);
-    st = cf__offset_cusps_alloc(c, dr->d, &cusps, &nc);
+    st = dr->d != 0.0 ? cf__offset_cusps_alloc(c, dr->d, &cusps, &nc)
+                      : CF_STATUS_OK;
     if (st == CF_STATUS_OK)
         st = cf__base_cusps_alloc(c, &bc, &nb);
     if (st != CF_STATUS_OK)
@@ -439,6 +469,36 @@ done:
     cf__free(bc);
     cf__free(splits);
     return st;
+}
+
+cf_status_t
+cf__fit_plain(const cf_bezier_t *c, double tol, cf_cubics_t **out,
+              bool *converged)
+{
+    driver dr;
+    cf_status_t st;
+    *out = NULL;
+    memset(&dr, 0, sizeof dr);
+    dr.tol = tol;
+    dr.method = CF_OFFSET_LEVIEN;
+    dr.d = 0.0;
+    dr.T0 = 0.0;
+    dr.T1 = 1.0;
+    dr.rep.converged = true;
+    st = cf__chain_init(&dr.chain);
+    if (st != CF_STATUS_OK)
+        return st;
+    st = offset_piece(&dr, c);
+    if (st == CF_STATUS_OK && dr.chain.cubics->count == 0)
+        st = CF_STATUS_NO_CONVERGENCE;
+    if (st != CF_STATUS_OK) {
+        cf__chain_fini(&dr.chain);
+        return st;
+    }
+    dr.chain.cubics->max_error = dr.rep.max_error;
+    *converged = dr.rep.converged;
+    *out = cf__chain_take(&dr.chain);
+    return CF_STATUS_OK;
 }
 
 /* Join between consecutive pieces that meet at an angle. */

@@ -202,10 +202,13 @@ typedef struct cf_cubics {
 } cf_cubics_t;
 
 /* Polynomial curves of degree <= 3: exact (one segment, degree raised).
-** Otherwise adaptive fitting with end points and end tangents matched
-** (cubic Hermite), halving until the distance measured at 47 interior
-** parameters per segment is <= tol (tol > 0); max_error is the largest
-** measured distance.  NO_CONVERGENCE after 40 halvings. */
+** Other planar curves (dim 2): split at the zeros of c', then covered by
+** the longest cubics matching end points, end tangents, signed area and
+** moment (the offset module's Levien fit at d = 0) whose measured
+** two-sided Hausdorff distance to the curve is <= tol (tol > 0).  Other
+** dimensions: cubic Hermite pieces halved until the distance measured at
+** 47 interior parameters is <= tol.  max_error is the largest measured
+** distance; NO_CONVERGENCE when tol cannot be reached. */
 cf_status_t cf_bezier_to_cubics(const cf_bezier_t *c, double tol,
                                 cf_cubics_t **out, cf_diag_t *diag);
 void cf_cubics_destroy(cf_cubics_t *cubics);

@@ -7,21 +7,20 @@
 #include <string.h>
 
 #include "core-private.h"
+#include "bezier-private.h"
 #include "offset-private.h"
 
 double
 cf__bp_eval(const double *a, int n, double t)
 {
-    /* de Casteljau on a small stack copy, Horner-like form beyond it. */
-    double buf[64];
+    /* de Casteljau (the Bézier module's) on a stack copy; a Horner-like
+    ** form only beyond the library's maximum degree */
+    double buf[CF_BEZIER_MAX_DEGREE + 1];
     if (n < 0)
         return 0.0;
-    if (n < 64) {
+    if (n <= CF_BEZIER_MAX_DEGREE) {
         memcpy(buf, a, (size_t)(n + 1) * sizeof *buf);
-        for (int r = 1; r <= n; r++)
-            for (int i = 0; i <= n - r; i++)
-                buf[i] = (1.0 - t) * buf[i] + t * buf[i + 1];
-        return buf[0];
+        return cf__decasteljau_1(buf, n, t);
     }
     {
         /* Bernstein-Horner: sum a_i C(n,i) t^i (1-t)^(n-i). */
@@ -48,7 +47,10 @@ cf__bp_eval(const double *a, int n, double t)
 void
 cf__bp_mul(const double *a, int m, const double *b, int n, double *out)
 {
-    /* c_k = sum_{i+j=k} C(m,i) C(n,j) / C(m+n,k) a_i b_j */
+    /* c_k = sum_{i+j=k} C(m,i) C(n,j) / C(m+n,k) a_i b_j (not the Bézier
+    ** module's cf__bernstein_product: that one is limited to degree
+    ** CF_BEZIER_MAX_DEGREE, which cusp polynomials of high-degree curves
+    ** exceed) */
     for (int k = 0; k <= m + n; k++)
         out[k] = 0.0;
     for (int i = 0; i <= m; i++) {

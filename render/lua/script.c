@@ -12,6 +12,7 @@
 #include "lbspline.h"
 #include "lcommon.h"
 #include "lfigure.h"
+#include "lpattern.h"
 #include "script.h"
 
 /* Part of the budget kept in reserve until the rest is exhausted, so that
@@ -220,6 +221,79 @@ safe_setmetatable(lua_State *L)
     return 1;
 }
 
+/* The guard of the pattern functions: guard(kind, s, p, init, plain) with
+** kind 0 find, 1 match, 2 gmatch, 3 gsub.  Counts the steps the search
+** will take against what is left of the instruction budget (the search
+** runs inside one C call, where the hook cannot stop it) and charges
+** them; arguments Lua would refuse are left for Lua to refuse. */
+static int
+pattern_guard(lua_State *L)
+{
+    cf_script_t *s = script_of(L);
+    int kind = (int)lua_tointeger(L, 1);
+    size_t ls, lp, init = 0;
+    const char *str, *pat;
+    long long steps, left;
+    int st;
+    if (!lua_isstring(L, 2) || !lua_isstring(L, 3))
+        return 0;
+    str = lua_tolstring(L, 2, &ls);
+    pat = lua_tolstring(L, 3, &lp);
+    if (kind != 3 && lua_isinteger(L, 4)) {
+        lua_Integer i = lua_tointeger(L, 4);
+        if (i > (lua_Integer)ls)
+            return 0;       /* no search at all */
+        if (i > 0)
+            init = (size_t)i - 1;
+        else if (i < 0 && (size_t)-(i + 1) < ls)
+            init = ls - (size_t)-(i + 1) - 1;
+    }
+    if (kind == 0 && lua_toboolean(L, 5))
+        return 0;           /* a plain search is linear */
+    if (kind == 0) {
+        size_t i = 0;
+        while (i < lp && strchr("^$*+?.([%-", pat[i]) == NULL)
+            i++;
+        if (i == lp)
+            return 0;       /* so is one without special characters */
+    }
+    left = s->instructions < s->max_instructions
+               ? (long long)(s->max_instructions - s->instructions) : 0;
+    st = cf__pattern_cost(str, ls, pat, lp, init, kind >= 2, left, &steps);
+    s->instructions += (unsigned long long)steps;
+    if (st == CF__PATTERN_OVER) {
+        if (s->limit_hit == LIMIT_NONE)
+            s->limit_hit = LIMIT_INSTRUCTIONS;
+        note_position(s);
+        return limit_error(L, s);
+    }
+    return 0;
+}
+
+/* The pattern functions behind the guard; Lua closures that end in a tail
+** call, so Lua's own messages still name the script's line. */
+static const char pattern_wrappers[] =
+    "local guard, find, match, gmatch, gsub = ...\n"
+    "string.find = function(...) guard(0, ...) return find(...) end\n"
+    "string.match = function(...) guard(1, ...) return match(...) end\n"
+    "string.gmatch = function(...) guard(2, ...) return gmatch(...) end\n"
+    "string.gsub = function(...) guard(3, ...) return gsub(...) end\n";
+
+static void
+guard_patterns(lua_State *L)
+{
+    static const char *const names[] = { "find", "match", "gmatch", "gsub" };
+    if (luaL_loadbufferx(L, pattern_wrappers, sizeof pattern_wrappers - 1,
+                         "=(sandbox)", "t") != LUA_OK)
+        lua_error(L);
+    lua_pushcfunction(L, pattern_guard);
+    lua_getglobal(L, LUA_STRLIBNAME);
+    for (int i = 0; i < 4; i++)
+        lua_getfield(L, -1 - i, names[i]);
+    lua_remove(L, -5);
+    lua_call(L, 5, 0);
+}
+
 static int
 safe_print(lua_State *L)
 {
@@ -285,6 +359,7 @@ open_sandbox(lua_State *L)
     remove_field(L, NULL, "loadfile");
     remove_field(L, NULL, "require");
     remove_field(L, LUA_STRLIBNAME, "dump");
+    guard_patterns(L);
     wrap_global(L, "pcall", safe_call);
     wrap_global(L, "xpcall", safe_call);
     wrap_global(L, "load", safe_load);
@@ -454,6 +529,30 @@ trace_levels(lua_State *L, trace *t, int from, int to, int max)
     return level;
 }
 
+/* A message without the script's position (raised by a C function, or by
+** the sandbox's own wrappers: "(sandbox):N: ") gets the position of the
+** first script frame. */
+static const char *
+place_message(lua_State *L, const char *msg)
+{
+    lua_Debug ar;
+    for (int level = 1; level < 64 && lua_getstack(L, level, &ar); level++) {
+        size_t n;
+        if (!lua_getinfo(L, "Sl", &ar) || ar.source[0] != '@' ||
+            ar.currentline <= 0)
+            continue;
+        n = strlen(ar.short_src);
+        if (strncmp(msg, ar.short_src, n) == 0 && msg[n] == ':')
+            return msg;
+        if (strncmp(msg, "(sandbox):", 10) == 0 &&
+            strstr(msg + 10, ": ") != NULL)
+            msg = strstr(msg + 10, ": ") + 2;
+        return lua_pushfstring(L, "%s:%d: %s", ar.short_src, ar.currentline,
+                               msg);
+    }
+    return msg;
+}
+
 /* Message handler: the message, then the script's frames below it. */
 static int
 traceback(lua_State *L)
@@ -470,6 +569,7 @@ traceback(lua_State *L)
             t.msg = lua_pushfstring(L, "(error object is a %s value)",
                                     luaL_typename(L, 1));
     }
+    t.msg = place_message(L, t.msg);
     t.b = &b;
     t.first = 1;
     t.last[0] = '\0';

@@ -5,7 +5,8 @@
 ** The sandbox opens base (without dofile, loadfile and binary chunks;
 ** setmetatable refuses __gc, whose finaliser would run unhooked), math, string (without string.dump), table and utf8; no io, os, package,
 ** debug or coroutine.  Memory (Lua's and the library's) and the number of
-** Lua instructions are capped; exceeding a cap stops the script with
+** Lua instructions (the steps of pattern searches included, counted before
+** each search runs inside its C call) are capped; exceeding a cap stops the script with
 ** "script exceeded the memory limit of N MiB" or "script exceeded the
 ** instruction limit of N instructions", and pcall cannot catch either.
 */

@@ -366,6 +366,58 @@ test_small_budgets(void **state)
     fclose(f);
 }
 
+/* The pattern functions run inside one C call, out of the hook's sight:
+** their search is counted first against the instruction limit (finding
+** F9: an embedding program had no bound on it).  The results are still
+** Lua's; the values below are worked out from the manual's rules. */
+static void
+test_pattern_budget(void **state)
+{
+    cf_script_t *s;
+    (void)state;
+    s = new_script(16, 10000000);
+    assert_int_equal(cf_script_run_string(s,
+        "local s = string.rep('a', 200000)\n"
+        "print(s:find('.-.-.-.-.-.-b'))\n", "p.lua"), CF_STATUS_SCRIPT);
+    assert_string_equal(cf_script_error(s), "p.lua:2: script exceeded the "
+                        "instruction limit of 10000000 instructions");
+    cf_script_destroy(s);
+    s = new_script(16, 10000000);
+    assert_int_equal(cf_script_run_string(s,
+        "local t = 'key1 = 10, key2 = 20, (a(b)c) x'\n"
+        "local a, b, k, v = t:find('(%w+) = (%d+)')\n"
+        "assert(a == 1 and b == 9 and k == 'key1' and v == '10')\n"
+        "assert(t:match('key2 = (%d+)') == '20')\n"
+        "assert(t:find('=', 1, true) == 6 and t:find('=', -10) == nil)\n"
+        "assert(t:find('k', -21) == 12 and t:find('^k') == 1)\n"
+        "assert(select(2, t:find('%b()')) == 29 and #t == 31)\n"
+        "assert(t:find('%f[%a]%a+', 2) == 12)\n"
+        "assert(select(3, ('hi hi'):find('(h%w+) %1')) == 'hi')\n"
+        "assert(t:match('()x$') == 31)\n"
+        "local n = 0\n"
+        "for k, v in t:gmatch('(%w+) = (%d+)') do n = n + tonumber(v) end\n"
+        "assert(n == 30)\n"
+        "local u, c = t:gsub('%d+', function(d) return d * 2 end)\n"
+        "assert(u == 'key2 = 20, key4 = 40, (a(b)c) x' and c == 4)\n"
+        "assert(('a.b'):gsub('%.', '%%') == 'a%b')\n"
+        "-- a long subject with a pattern that does not backtrack\n"
+        "local words = string.rep('word ', 20000)\n"
+        "local w = 0\n"
+        "for _ in words:gmatch('%S+') do w = w + 1 end\n"
+        "assert(w == 20000 and select(2, words:gsub('o', 'o')) == 20000)\n",
+        "ok.lua"), CF_STATUS_OK);
+    /* Lua's own messages keep the script's line */
+    assert_int_equal(cf_script_run_string(s, "\nlocal x = ('a'):find('[a')",
+                                          "m.lua"), CF_STATUS_SCRIPT);
+    assert_string_equal(cf_script_error(s), "m.lua:2: malformed pattern "
+                                            "(missing ']')");
+    assert_int_equal(cf_script_run_string(s, "string.gsub(nil, 'a', 'b')",
+                                          "n.lua"), CF_STATUS_SCRIPT);
+    assert_string_equal(cf_script_error(s), "n.lua:1: bad argument #1 to "
+                        "'gsub' (string expected, got nil)");
+    cf_script_destroy(s);
+}
+
 /* The script installs its budget as the library's allocator and puts the
 ** previous one back when it is destroyed. */
 static void
@@ -461,6 +513,7 @@ main(void)
         cmocka_unit_test(test_deep_recursion),
         cmocka_unit_test(test_no_finalisers),
         cmocka_unit_test(test_small_budgets),
+        cmocka_unit_test(test_pattern_budget),
         cmocka_unit_test(test_allocator_restored),
         cmocka_unit_test(test_fuzz_mutations),
     };

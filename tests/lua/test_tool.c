@@ -553,15 +553,28 @@ test_hostile_huge_string(void **state)
             "huge_string.lua:3: script exceeded the memory limit of 32 MiB");
 }
 
+/* A pattern search that would backtrack for hours inside one C call: its
+** steps are counted before it runs, against the instruction limit (finding
+** F9; before, only the tool's watchdog ended it). */
 static void
 test_hostile_pattern(void **state)
 {
+    hostile(state, "hostile/pattern.lua",
+            "pattern.lua:4: script exceeded the instruction limit of "
+            "20000000 instructions");
+}
+
+/* The tool's wall-clock watchdog: an endless loop under an instruction
+** limit too large to reach within the --timeout. */
+static void
+test_timeout(void **state)
+{
     result *r = *state;
-    const char *args[] = { "run", src("hostile/pattern.lua"), "--timeout",
-                           "1", NULL };
+    const char *args[] = { "run", src("hostile/endless.lua"), "--timeout",
+                           "1", "--max-instructions", "1e15", NULL };
     run_tool(r, args);
     assert_int_equal(r->status, 1);
-    assert_contains(r->err, "pattern.lua: the script exceeded the time "
+    assert_contains(r->err, "endless.lua: the script exceeded the time "
                             "limit of 1 s (--timeout)");
     assert_string_equal(r->out, "");
     assert_int_equal(count_files(r->dir), 0);
@@ -721,6 +734,7 @@ main(int argc, char **argv)
         T(test_hostile_huge_table),
         T(test_hostile_huge_string),
         T(test_hostile_pattern),
+        T(test_timeout),
         T(test_hostile_metatable),
         T(test_bytecode_script_refused),
         T(test_syntax_error_position),

@@ -20,6 +20,7 @@
 ** declaration and the entry when a module gets its workloads). */
 const bench_workload *bench_bezier_table(void);
 const bench_workload *bench_bspline_table(void);
+
 static const bench_table_fn tables[] = {
     bench_bezier_table,
     bench_bspline_table,

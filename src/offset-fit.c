@@ -235,7 +235,7 @@ source_fn(const void *ctx, double u, double *p, double *dp)
 /* g(u) = (C(u) - q) . C'(u): zero at a foot point. */
 static double
 foot_g(cf__pd_fn fn, const void *ctx, const double *q, double u,
-       double *dist)
+       double *dist, double *speed)
 {
     double p[2], dp[2];
     fn(ctx, u, p, dp);
@@ -243,6 +243,7 @@ foot_g(cf__pd_fn fn, const void *ctx, const double *q, double u,
         double dx = p[0] - q[0], dy = p[1] - q[1];
         *dist = sqrt(dx * dx + dy * dy);
     }
+    *speed = hypot(dp[0], dp[1]);
     return (p[0] - q[0]) * dp[0] + (p[1] - q[1]) * dp[1];
 }
 
@@ -263,14 +264,14 @@ cf__dist_sampled(cf__pd_fn fn, const void *ctx, const double *smp, int k,
     best = sqrt(best);
     for (int side = -1; side <= 1; side += 2) {
         int i0 = side < 0 ? j - 1 : j, i1 = i0 + 1;
-        double u0, u1, g0, g1, d0, d1;
+        double u0, u1, g0, g1, d0, d1, sp;
         int last = 0;
         if (i0 < 0 || i1 > k)
             continue;
         u0 = (double)i0 / k;
         u1 = (double)i1 / k;
-        g0 = foot_g(fn, ctx, q, u0, &d0);
-        g1 = foot_g(fn, ctx, q, u1, &d1);
+        g0 = foot_g(fn, ctx, q, u0, &d0, &sp);
+        g1 = foot_g(fn, ctx, q, u1, &d1, &sp);
         best = fmin(best, fmin(d0, d1));
         if (!(g0 < 0.0 && g1 > 0.0))
             continue;   /* no interior minimum in this interval */
@@ -278,9 +279,11 @@ cf__dist_sampled(cf__pd_fn fn, const void *ctx, const double *smp, int k,
             double um = (u0 * g1 - u1 * g0) / (g1 - g0), gm, dm;
             if (!(um > u0 && um < u1))
                 um = 0.5 * (u0 + u1);
-            gm = foot_g(fn, ctx, q, um, &dm);
+            gm = foot_g(fn, ctx, q, um, &dm, &sp);
             best = fmin(best, dm);
-            if (gm == 0.0)
+            /* at the foot point within an angle of 1e-8 (the distance is
+            ** then exact to about 1e-16 relative) */
+            if (fabs(gm) <= 1e-8 * dm * sp)
                 break;
             if (gm < 0.0) {
                 u0 = um;

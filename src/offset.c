@@ -247,7 +247,10 @@ greedy_dir(driver *dr, const cf__osrc_t *s, double a, double b, int dir,
         e_far = f.err;
         for (int it = 0; it < 60; it++) {
             double mid = 0.5 * (near + far), target = 0.99 * ACCEPT * dr->tol;
-            if (have && fabs(far - near) <= 2e-3 * fabs(far - t))
+            /* the curve itself (d = 0, for path output) needs no more
+            ** than 2 % of the piece: it is fitted on every rendering */
+            if (have && fabs(far - near) <=
+                            (dr->d == 0.0 ? 2e-2 : 2e-3) * fabs(far - t))
                 break;
             if (fabs(far - t) < MIN_WIDTH * w0)
                 break;

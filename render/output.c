@@ -391,8 +391,8 @@ eps_from_ps(const cf__buf_t *ps, cf__buf_t *eps)
             /* the language-level check: 4 more lines */
             static const char *const check[] = {
                 "{ pop languagelevel } { 1 } ifelse\n",
-                " lt { /Helvetica findfont 12 scalefont setfont 50 500 "
-                "moveto\n",
+                (" lt { /Helvetica findfont 12 scalefont setfont 50 500 "
+                 "moveto\n"),
                 "  (This print job requires a PostScript Language Level ",
                 "  showpage quit } if\n",
             };

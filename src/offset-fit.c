@@ -49,6 +49,50 @@ cf__bezier_unit_tangent(const cf_bezier_t *c, double t, int side,
     return -1;
 }
 
+/* ---- fast point and derivative of a planar curve -------------------------- */
+
+#define FAST_MAX_DEGREE 24
+
+/* Point and first derivative of the planar curve c at t by de Casteljau on
+** all stored coordinates at once, stopped one level early (the last two
+** points give the derivative; quotient rule when rational).  Returns -1
+** (nothing written) for curves it does not handle: dim != 2, degree 0 or
+** above FAST_MAX_DEGREE. */
+static int
+fast_pd(const cf_bezier_t *c, double t, double *p, double *dp)
+{
+    double b[3 * (FAST_MAX_DEGREE + 1)], u = 1.0 - t, h[3], dh[3];
+    int n = c->degree;
+    size_t hd = c->hdim;
+    if (c->dim != 2 || n < 1 || n > FAST_MAX_DEGREE)
+        return -1;
+    memcpy(b, c->pts, (size_t)(n + 1) * hd * sizeof(double));
+    for (int r = 1; r < n; r++)
+        for (size_t i = 0; i < (size_t)(n - r + 1) * hd; i++)
+            b[i] = u * b[i] + t * b[i + hd];
+    for (size_t j = 0; j < hd; j++) {
+        h[j] = u * b[j] + t * b[hd + j];
+        dh[j] = n * (b[hd + j] - b[j]);
+    }
+    if (!c->rational) {
+        p[0] = h[0];
+        p[1] = h[1];
+        if (dp != NULL) {
+            dp[0] = dh[0];
+            dp[1] = dh[1];
+        }
+    } else {
+        double w = h[2];
+        p[0] = h[0] / w;
+        p[1] = h[1] / w;
+        if (dp != NULL) {
+            dp[0] = (dh[0] - p[0] * dh[2]) / w;
+            dp[1] = (dh[1] - p[1] * dh[2]) / w;
+        }
+    }
+    return 0;
+}
+
 /* ---- sources ------------------------------------------------------------- */
 
 void
@@ -97,7 +141,8 @@ src_point_dir(const cf__osrc_t *s, double t, int side, double *p, double *u)
         double base[2], tan[2];
         if (s->d == 0.0 && u == NULL) {
             /* the curve itself: no tangent needed */
-            cf__bezier_eval_point(s->c, t, p);
+            if (fast_pd(s->c, t, p, NULL) != 0)
+                cf__bezier_eval_point(s->c, t, p);
             return 0;
         }
         if (cf__bezier_unit_tangent(s->c, t, side, s->scale, base, tan) != 0) {
@@ -137,6 +182,8 @@ cf__osrc_deriv(const cf__osrc_t *s, double t, double *p, double *dp)
         /* o' = c' (1 - d (c' x c'') / |c'|^3) */
         double v[6], sp, f;
         if (s->d == 0.0) {
+            if (fast_pd(s->c, t, p, dp) == 0)
+                return 0;
             cf_bezier_eval_derivs(s->c, t, 1, v);
             p[0] = v[0];
             p[1] = v[1];
@@ -243,7 +290,7 @@ foot_g(cf__pd_fn fn, const void *ctx, const double *q, double u,
         double dx = p[0] - q[0], dy = p[1] - q[1];
         *dist = sqrt(dx * dx + dy * dy);
     }
-    *speed = hypot(dp[0], dp[1]);
+    *speed = sqrt(dp[0] * dp[0] + dp[1] * dp[1]);
     return (p[0] - q[0]) * dp[0] + (p[1] - q[1]) * dp[1];
 }
 

@@ -10,6 +10,76 @@
 #include "bezier-private.h"
 #include "offset-private.h"
 
+/* ---- fast point and derivative of a planar curve -------------------------- */
+
+#define FAST_MAX_DEGREE 24
+
+/* Point, first and (k == 2) second derivative of the planar curve c at t,
+** into v[0..2k+1] like cf_bezier_eval_derivs, by de Casteljau on all stored
+** coordinates at once, stopped k levels early (the last k + 1 points give
+** the derivatives; quotient rule when rational).  Returns -1 (nothing
+** written) for curves it does not handle: dim != 2, degree < k or above
+** FAST_MAX_DEGREE. */
+static int
+fast_derivs(const cf_bezier_t *c, double t, int k, double *v)
+{
+    double b[3 * (FAST_MAX_DEGREE + 1)], u = 1.0 - t;
+    double h[3] = { 0 }, d1[3] = { 0 }, d2[3] = { 0 };
+    int n = c->degree;
+    size_t hd = c->hdim;
+    if (c->dim != 2 || n < k || n > FAST_MAX_DEGREE)
+        return -1;
+    memcpy(b, c->pts, (size_t)(n + 1) * hd * sizeof(double));
+    for (int r = 1; r <= n - k; r++)
+        for (size_t i = 0; i < (size_t)(n - r + 1) * hd; i++)
+            b[i] = u * b[i] + t * b[i + hd];
+    for (size_t j = 0; j < hd; j++) {
+        if (k == 1) {
+            h[j] = u * b[j] + t * b[hd + j];
+            d1[j] = n * (b[hd + j] - b[j]);
+            d2[j] = 0.0;
+        } else {
+            double q0 = b[j], q1 = b[hd + j], q2 = b[2 * hd + j];
+            h[j] = u * (u * q0 + t * q1) + t * (u * q1 + t * q2);
+            d1[j] = n * (u * (q1 - q0) + t * (q2 - q1));
+            d2[j] = n * (n - 1) * (q2 - 2.0 * q1 + q0);
+        }
+    }
+    if (!c->rational) {
+        for (int j = 0; j < 2; j++) {
+            v[j] = h[j];
+            v[2 + j] = d1[j];
+            if (k == 2)
+                v[4 + j] = d2[j];
+        }
+    } else {
+        double w = h[2];
+        for (int j = 0; j < 2; j++) {
+            v[j] = h[j] / w;
+            v[2 + j] = (d1[j] - v[j] * d1[2]) / w;
+            if (k == 2)
+                v[4 + j] = (d2[j] - 2.0 * v[2 + j] * d1[2] - v[j] * d2[2]) / w;
+        }
+    }
+    return 0;
+}
+
+/* Point and first derivative (dp may be NULL) of the planar curve c. */
+static int
+fast_pd(const cf_bezier_t *c, double t, double *p, double *dp)
+{
+    double v[4];
+    if (fast_derivs(c, t, 1, v) != 0)
+        return -1;
+    p[0] = v[0];
+    p[1] = v[1];
+    if (dp != NULL) {
+        dp[0] = v[2];
+        dp[1] = v[3];
+    }
+    return 0;
+}
+
 /* ---- unit tangent with higher derivatives -------------------------------- */
 
 int
@@ -19,7 +89,8 @@ cf__bezier_unit_tangent(const cf_bezier_t *c, double t, int side,
     double v[2 * 9];
     int n = c->degree, kmax = n < 8 ? n : 8;
     double len;
-    cf_bezier_eval_derivs(c, t, 1, v);
+    if (fast_derivs(c, t, 1, v) != 0)
+        cf_bezier_eval_derivs(c, t, 1, v);
     if (p != NULL) {
         p[0] = v[0];
         p[1] = v[1];
@@ -47,50 +118,6 @@ cf__bezier_unit_tangent(const cf_bezier_t *c, double t, int side,
         }
     }
     return -1;
-}
-
-/* ---- fast point and derivative of a planar curve -------------------------- */
-
-#define FAST_MAX_DEGREE 24
-
-/* Point and first derivative of the planar curve c at t by de Casteljau on
-** all stored coordinates at once, stopped one level early (the last two
-** points give the derivative; quotient rule when rational).  Returns -1
-** (nothing written) for curves it does not handle: dim != 2, degree 0 or
-** above FAST_MAX_DEGREE. */
-static int
-fast_pd(const cf_bezier_t *c, double t, double *p, double *dp)
-{
-    double b[3 * (FAST_MAX_DEGREE + 1)], u = 1.0 - t, h[3], dh[3];
-    int n = c->degree;
-    size_t hd = c->hdim;
-    if (c->dim != 2 || n < 1 || n > FAST_MAX_DEGREE)
-        return -1;
-    memcpy(b, c->pts, (size_t)(n + 1) * hd * sizeof(double));
-    for (int r = 1; r < n; r++)
-        for (size_t i = 0; i < (size_t)(n - r + 1) * hd; i++)
-            b[i] = u * b[i] + t * b[i + hd];
-    for (size_t j = 0; j < hd; j++) {
-        h[j] = u * b[j] + t * b[hd + j];
-        dh[j] = n * (b[hd + j] - b[j]);
-    }
-    if (!c->rational) {
-        p[0] = h[0];
-        p[1] = h[1];
-        if (dp != NULL) {
-            dp[0] = dh[0];
-            dp[1] = dh[1];
-        }
-    } else {
-        double w = h[2];
-        p[0] = h[0] / w;
-        p[1] = h[1] / w;
-        if (dp != NULL) {
-            dp[0] = (dh[0] - p[0] * dh[2]) / w;
-            dp[1] = (dh[1] - p[1] * dh[2]) / w;
-        }
-    }
-    return 0;
 }
 
 /* ---- sources ------------------------------------------------------------- */
@@ -191,7 +218,8 @@ cf__osrc_deriv(const cf__osrc_t *s, double t, double *p, double *dp)
             dp[1] = v[3];
             return 0;
         }
-        cf_bezier_eval_derivs(s->c, t, 2, v);
+        if (fast_derivs(s->c, t, 2, v) != 0)
+            cf_bezier_eval_derivs(s->c, t, 2, v);
         sp = sqrt(v[2] * v[2] + v[3] * v[3]);
         if (!(sp > 1e-14 * s->scale)) {
             src_point_dir(s, t, 1, p, NULL);

@@ -265,6 +265,7 @@ typedef struct meas {
     const double *pts;
     int k;
     double *sp, *cp;        /* k + 1 samples of source and cubic */
+    double *dsp, *dcp;      /* their derivatives (in u) */
 } meas;
 
 /* which = 0: the cubic on [0, 1]; which = 1: the source on [a, b]; the
@@ -322,9 +323,30 @@ foot_g(cf__pd_fn fn, const void *ctx, const double *q, double u,
     return (p[0] - q[0]) * dp[0] + (p[1] - q[1]) * dp[1];
 }
 
-double
-cf__dist_sampled(cf__pd_fn fn, const void *ctx, const double *smp, int k,
-                 const double *q)
+/* g, distance and speed at sample i from the cached point smp and
+** derivative dsmp (the values fn gives at u = i / k), else from fn. */
+static double
+foot_g_at(cf__pd_fn fn, const void *ctx, const double *smp,
+          const double *dsmp, int i, int k, const double *q, double *dist,
+          double *speed)
+{
+    const double *p = smp + 2 * i, *dp;
+    double dx, dy;
+    if (dsmp == NULL)
+        return foot_g(fn, ctx, q, (double)i / k, dist, speed);
+    dp = dsmp + 2 * i;
+    dx = p[0] - q[0];
+    dy = p[1] - q[1];
+    *dist = sqrt(dx * dx + dy * dy);
+    *speed = sqrt(dp[0] * dp[0] + dp[1] * dp[1]);
+    return dx * dp[0] + dy * dp[1];
+}
+
+/* cf__dist_sampled with the derivatives at the samples (dsmp, may be
+** NULL) cached. */
+static double
+dist_sampled_d(cf__pd_fn fn, const void *ctx, const double *smp,
+               const double *dsmp, int k, const double *q)
 {
     int j = 0;
     double best = INFINITY;
@@ -345,8 +367,8 @@ cf__dist_sampled(cf__pd_fn fn, const void *ctx, const double *smp, int k,
             continue;
         u0 = (double)i0 / k;
         u1 = (double)i1 / k;
-        g0 = foot_g(fn, ctx, q, u0, &d0, &sp);
-        g1 = foot_g(fn, ctx, q, u1, &d1, &sp);
+        g0 = foot_g_at(fn, ctx, smp, dsmp, i0, k, q, &d0, &sp);
+        g1 = foot_g_at(fn, ctx, smp, dsmp, i1, k, q, &d1, &sp);
         best = fmin(best, fmin(d0, d1));
         if (!(g0 < 0.0 && g1 > 0.0))
             continue;   /* no interior minimum in this interval */
@@ -378,12 +400,20 @@ cf__dist_sampled(cf__pd_fn fn, const void *ctx, const double *smp, int k,
     return best;
 }
 
-/* Distance from q to curve `which` (samples smp[0..k]). */
+double
+cf__dist_sampled(cf__pd_fn fn, const void *ctx, const double *smp, int k,
+                 const double *q)
+{
+    return dist_sampled_d(fn, ctx, smp, NULL, k, q);
+}
+
+/* Distance from q to curve `which` (samples smp[0..k], derivatives there
+** cached). */
 static double
 dist_to(const meas *m, int which, const double *smp, const double *q)
 {
-    return cf__dist_sampled(which == 0 ? cubic_fn : source_fn, m, smp, m->k,
-                            q);
+    return dist_sampled_d(which == 0 ? cubic_fn : source_fn, m, smp,
+                          smp == m->cp ? m->dcp : m->dsp, m->k, q);
 }
 
 /* Directed distance from curve `from` to the other, with the maximum
@@ -438,13 +468,13 @@ cf_status_t
 cf__fit_error(const cf__osrc_t *s, double a, double b, const double *pts,
               int k, double *err)
 {
-    double stack[2 * 2 * 129];
+    double stack[4 * 2 * 129];
     double *buf = stack;
     meas m;
     if (k < 4)
         k = 4;
     if (k > 128) {
-        buf = cf__alloc_array((size_t)(4 * (k + 1)), sizeof(double));
+        buf = cf__alloc_array((size_t)(8 * (k + 1)), sizeof(double));
         if (buf == NULL)
             return CF_STATUS_NO_MEMORY;
     }
@@ -455,10 +485,14 @@ cf__fit_error(const cf__osrc_t *s, double a, double b, const double *pts,
     m.k = k;
     m.sp = buf;
     m.cp = buf + 2 * (k + 1);
+    m.dsp = buf + 4 * (k + 1);
+    m.dcp = buf + 6 * (k + 1);
+    /* point and derivative, exactly as the foot-point search evaluates
+    ** them (the samples are the ends of its intervals) */
     for (int i = 0; i <= k; i++) {
         double u = (double)i / k;
-        curve_pd(&m, 1, u, m.sp + 2 * i, NULL);
-        curve_pd(&m, 0, u, m.cp + 2 * i, NULL);
+        curve_pd(&m, 1, u, m.sp + 2 * i, m.dsp + 2 * i);
+        curve_pd(&m, 0, u, m.cp + 2 * i, m.dcp + 2 * i);
     }
     *err = fmax(directed(&m, 0), directed(&m, 1));
     if (buf != stack)

@@ -830,40 +830,84 @@ eval_many_impl(const cf_bspline_t *c, const double *u, size_t n, double *out,
 /*
 ** Polynomial cubic curves in the plane, the common case, written out: the
 ** triangular scheme with the reciprocals (the same operations in the same
-** order as basis_rk), then the sum over the four points.
+** order as basis_rk), then the sum over the four points.  The parameters
+** u[0..m-1] all lie on span k: the span's knots, reciprocals and points
+** are loop constants, so that the loop is straight-line code the compiler
+** vectorises over the parameters.
 */
 CF__INLINE void
-cubic_basis(const double *U, const double *R1, const double *R2,
-            const double *R3, size_t k, double x, double *N)
+cubic2_run(const double *U, const double *R1, const double *R2,
+           const double *R3, const double *P, size_t k,
+           const double *restrict u, size_t m, double *restrict out,
+           int deriv)
 {
-    double d1 = x - U[k], d2 = x - U[k - 1], d3 = x - U[k - 2];
-    double e1 = U[k + 1] - x, e2 = U[k + 2] - x, e3 = U[k + 3] - x;
-    double t = R1[k], n0 = e1 * t, n1 = d1 * t, t0, t1, t2, m0, m1, m2;
-    t0 = n0 * R2[k - 1];
-    t1 = n1 * R2[k];
-    m0 = e1 * t0;
-    m1 = d2 * t0 + e2 * t1;
-    m2 = d1 * t1;
-    t0 = m0 * R3[k - 2];
-    t1 = m1 * R3[k - 1];
-    t2 = m2 * R3[k];
-    N[0] = e1 * t0;
-    N[1] = d3 * t0 + e2 * t1;
-    N[2] = d2 * t1 + e3 * t2;
-    N[3] = d1 * t2;
+    const double *q = P + 2 * (k - 3);
+    const double um2 = U[k - 2], um1 = U[k - 1], u0 = U[k];
+    const double u1 = U[k + 1], u2 = U[k + 2], u3 = U[k + 3];
+    const double r1 = R1[k], r2a = R2[k - 1], r2b = R2[k];
+    const double r3a = R3[k - 2], r3b = R3[k - 1], r3c = R3[k];
+    const double q0 = q[0], q1 = q[1], q2 = q[2], q3 = q[3];
+    const double q4 = q[4], q5 = q[5], q6 = q[6], q7 = q[7];
+    if (!deriv) {
+        for (size_t i = 0; i < m; i++) {
+            double x = u[i];
+            double d1 = x - u0, d2 = x - um1, d3 = x - um2;
+            double e1 = u1 - x, e2 = u2 - x, e3 = u3 - x;
+            double n0 = e1 * r1, n1 = d1 * r1, t0, t1, t2, m0, m1, m2;
+            double N0, N1, N2, N3;
+            t0 = n0 * r2a;
+            t1 = n1 * r2b;
+            m0 = e1 * t0;
+            m1 = d2 * t0 + e2 * t1;
+            m2 = d1 * t1;
+            t0 = m0 * r3a;
+            t1 = m1 * r3b;
+            t2 = m2 * r3c;
+            N0 = e1 * t0;
+            N1 = d3 * t0 + e2 * t1;
+            N2 = d2 * t1 + e3 * t2;
+            N3 = d1 * t2;
+            out[2 * i] = N0 * q0 + N1 * q2 + N2 * q4 + N3 * q6;
+            out[2 * i + 1] = N0 * q1 + N1 * q3 + N2 * q5 + N3 * q7;
+        }
+    } else {
+        /* C' = 3 sum N_i^2 (P_i - P_{i-1}) / (u_{i+3} - u_i) */
+        const double g0 = q2 - q0, g1 = q4 - q2, g2 = q6 - q4;
+        const double h0 = q3 - q1, h1 = q5 - q3, h2 = q7 - q5;
+        for (size_t i = 0; i < m; i++) {
+            double x = u[i];
+            double d1 = x - u0, d2 = x - um1;
+            double e1 = u1 - x, e2 = u2 - x;
+            double n0 = e1 * r1, n1 = d1 * r1, t0, t1, f0, f1, f2;
+            t0 = n0 * r2a;
+            t1 = n1 * r2b;
+            f0 = 3.0 * (e1 * t0) * r3a;
+            f1 = 3.0 * (d2 * t0 + e2 * t1) * r3b;
+            f2 = 3.0 * (d1 * t1) * r3c;
+            out[2 * i] = f0 * g0 + f1 * g1 + f2 * g2;
+            out[2 * i + 1] = f0 * h0 + f1 * h1 + f2 * h2;
+        }
+    }
 }
 
+/* One clone per x86-64 level (an ifunc), as in bezier-eval.c; the file is
+** compiled without contraction, so every clone rounds alike.  Not in
+** sanitizer builds: the resolvers run before the sanitizer runtime. */
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__) && \
+    !defined(__SANITIZE_ADDRESS__)
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#endif
 static cf_status_t
 eval_cubic2(const cf_bspline_t *c, const double *u, size_t n, double *out,
             int deriv)
 {
     const double *U = c->U, *P = c->P, *R1 = c->rk;
     const double *R2 = R1 + c->nknots, *R3 = R2 + c->nknots;
-    size_t k = c->first_span;
+    size_t k = c->first_span, i = 0;
     double a = c->a, b = c->b, lo = U[k], hi = U[k + 1];
-    for (size_t i = 0; i < n; i++) {
-        double x = u[i], N[4];
-        const double *q;
+    while (i < n) {
+        double x = u[i];
+        size_t j = i + 1;
         if (CF__UNLIKELY(!(x >= a && x <= b)))
             return isfinite(x) ? CF_STATUS_DOMAIN : CF_STATUS_NOT_FINITE;
         /* one branch, predictable both for sorted parameters (mostly
@@ -871,32 +915,28 @@ eval_cubic2(const cf_bspline_t *c, const double *u, size_t n, double *out,
         ** first comparison a coin toss for random parameters; no "next
         ** span" shortcut for the same reason */
         if ((int)(x >= lo) + (int)(x < hi) != 2) {
+            /* a new span: this parameter alone, straight-line code */
             k = grid_span(c, x);
             lo = U[k];
             hi = U[k + 1];
+            cubic2_run(U, R1, R2, R3, P, k, u + i, 1, out + 2 * i, deriv);
+            i = j;
+            continue;
         }
-        q = P + 2 * (k - 3);
-        if (!deriv) {
-            cubic_basis(U, R1, R2, R3, k, x, N);
-            out[2 * i] = N[0] * q[0] + N[1] * q[2] + N[2] * q[4]
-                         + N[3] * q[6];
-            out[2 * i + 1] = N[0] * q[1] + N[1] * q[3] + N[2] * q[5]
-                             + N[3] * q[7];
-        } else {
-            /* C' = 3 sum N_i^2 (P_i - P_{i-1}) / (u_{i+3} - u_i) */
-            double d1 = x - U[k], d2 = x - U[k - 1];
-            double e1 = U[k + 1] - x, e2 = U[k + 2] - x;
-            double t = R1[k], n0 = e1 * t, n1 = d1 * t, t0, t1, f0, f1, f2;
-            t0 = n0 * R2[k - 1];
-            t1 = n1 * R2[k];
-            f0 = 3.0 * (e1 * t0) * R3[k - 2];
-            f1 = 3.0 * (d2 * t0 + e2 * t1) * R3[k - 1];
-            f2 = 3.0 * (d1 * t1) * R3[k];
-            out[2 * i] = f0 * (q[2] - q[0]) + f1 * (q[4] - q[2])
-                         + f2 * (q[6] - q[4]);
-            out[2 * i + 1] = f0 * (q[3] - q[1]) + f1 * (q[5] - q[3])
-                             + f2 * (q[7] - q[5]);
+        /* still on span k (sorted parameters): the run of parameters
+        ** on it, eight at a time first ([lo, hi) lies in the domain, and
+        ** NaN ends the run), evaluated by the vectorised loop */
+        for (; j + 8 <= n; j += 8) {
+            int in = 1;
+            for (size_t l = 0; l < 8; l++)
+                in &= (u[j + l] >= lo) & (u[j + l] < hi);
+            if (!in)
+                break;
         }
+        while (j < n && (int)(u[j] >= lo) + (int)(u[j] < hi) == 2)
+            j++;
+        cubic2_run(U, R1, R2, R3, P, k, u + i, j - i, out + 2 * i, deriv);
+        i = j;
     }
     return CF_STATUS_OK;
 }

@@ -378,9 +378,10 @@ dist_sampled_d(cf__pd_fn fn, const void *ctx, const double *smp,
                 um = 0.5 * (u0 + u1);
             gm = foot_g(fn, ctx, q, um, &dm, &sp);
             best = fmin(best, dm);
-            /* at the foot point within an angle of 1e-8 (the distance is
-            ** then exact to about 1e-16 relative) */
-            if (fabs(gm) <= 1e-8 * dm * sp)
+            /* at the foot point within an angle of 1e-6: the distance
+            ** is then high by at most about 1e-12 relative (never low:
+            ** every dm is the distance to a point of the curve) */
+            if (fabs(gm) <= 1e-6 * dm * sp)
                 break;
             if (gm < 0.0) {
                 u0 = um;

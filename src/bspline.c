@@ -897,6 +897,9 @@ cubic2_run(const double *U, const double *R1, const double *R2,
     !defined(__SANITIZE_ADDRESS__)
 __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #endif
+/* parameters per block of span searches (random parameters) */
+#define RBLK 32
+
 static cf_status_t
 eval_cubic2(const cf_bspline_t *c, const double *u, size_t n, double *out,
             int deriv)
@@ -915,12 +918,32 @@ eval_cubic2(const cf_bspline_t *c, const double *u, size_t n, double *out,
         ** first comparison a coin toss for random parameters; no "next
         ** span" shortcut for the same reason */
         if ((int)(x >= lo) + (int)(x < hi) != 2) {
-            /* a new span: this parameter alone, straight-line code */
-            k = grid_span(c, x);
+            /* a new span (random parameters): the spans of the next
+            ** RBLK parameters first, without branches, then the points,
+            ** so that the table loads do not wait for the search */
+            size_t ks[RBLK], mb = n - i < RBLK ? n - i : RBLK;
+            int ok = 1;
+            for (size_t l = 0; l < mb; l++) {
+                double y = u[i + l], yc = y >= a ? y : a;
+                ok &= (y >= a) & (y <= b);
+                ks[l] = grid_span(c, yc <= b ? yc : b);
+            }
+            if (!ok)
+                mb = 1; /* the bad parameter is found above */
+            else
+                for (size_t l = 0; l < mb; l++)
+                    cubic2_run(U, R1, R2, R3, P, ks[l], u + i + l, 1,
+                               out + 2 * (i + l), deriv);
+            if (!ok) {
+                k = grid_span(c, x);
+                cubic2_run(U, R1, R2, R3, P, k, u + i, 1, out + 2 * i,
+                           deriv);
+            } else {
+                k = ks[mb - 1];
+            }
             lo = U[k];
             hi = U[k + 1];
-            cubic2_run(U, R1, R2, R3, P, k, u + i, 1, out + 2 * i, deriv);
-            i = j;
+            i += mb;
             continue;
         }
         /* still on span k (sorted parameters): the run of parameters

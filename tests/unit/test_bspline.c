@@ -429,6 +429,55 @@ test_eval_many_w3_shape(void **state)
     cf_bspline_destroy(c);
 }
 
+/* The planar cubic batch path takes sorted parameters in runs on one span
+** and random ones in blocks of span searches: a bad parameter anywhere
+** (inside a run, inside a block, first, last) is reported, and the points
+** before it are the ones of the good parameters (checked against de Boor,
+** same tolerance reasoning as test_eval_many_w3_shape). */
+static void
+test_eval_many_cubic2_bad_parameter_anywhere(void **state)
+{
+    enum { N = 40, M = 100 };
+    double U[N + 4], P[2 * N], u[M], out[2 * M], D[2];
+    const double bad[3] = { NAN, -0.25, 1.5 };
+    const cf_status_t want[3] = { CF_STATUS_NOT_FINITE, CF_STATUS_DOMAIN,
+                                  CF_STATUS_DOMAIN };
+    cf_bspline_t *c = NULL;
+    tu_rng r;
+    (void)state;
+    tu_rng_seed(&r, 1009);
+    for (int i = 0; i < 4; i++) {
+        U[i] = 0.0;
+        U[N + i] = 1.0;
+    }
+    for (int i = 1; i < N - 3; i++)
+        U[3 + i] = i / (double)(N - 3);
+    for (int i = 0; i < 2 * N; i++)
+        P[i] = tu_rng_u01(&r);
+    assert_int_equal(cf_bspline_create(2, 3, U, N + 4, P, N, NULL, &c, NULL),
+                     0);
+    for (int sorted = 0; sorted < 2; sorted++)
+        for (int kind = 0; kind < 3; kind++)
+            for (int at = 0; at < M; at++)
+                for (int deriv = 0; deriv < 2; deriv++) {
+                    for (int i = 0; i < M; i++)
+                        u[i] = sorted ? (i + 0.5) / M : tu_rng_u01(&r);
+                    u[at] = bad[kind];
+                    assert_int_equal(
+                        deriv ? cf_bspline_eval_deriv_many(c, 1, u, M, out)
+                              : cf_bspline_eval_many(c, u, M, out),
+                        want[kind]);
+                    if (deriv)
+                        continue;
+                    for (int i = 0; i < at; i++) {
+                        assert_int_equal(cf_bspline_eval(c, u[i], D), 0);
+                        assert_true(tu_max_diff(D, out + 2 * i, 2)
+                                    <= 8 * EPS);
+                    }
+                }
+    cf_bspline_destroy(c);
+}
+
 /* Derivatives: against central differences, and the batch form. */
 static void
 test_derivatives_central_differences(void **state)
@@ -1660,6 +1709,7 @@ main(void)
         cmocka_unit_test(test_figure_helpers),
         cmocka_unit_test(test_eval_many_matches_deboor),
         cmocka_unit_test(test_eval_many_w3_shape),
+        cmocka_unit_test(test_eval_many_cubic2_bad_parameter_anywhere),
         cmocka_unit_test(test_eval_many_without_accelerators),
         cmocka_unit_test(test_batch_span_search_exact),
         cmocka_unit_test(test_derivatives_central_differences),

@@ -259,6 +259,11 @@ cf__cubic_pd(const double *pts, double s, double *p, double *dp)
 
 /* ---- distance of a point to one of the two curves ----------------------- */
 
+/* sample counts of the error estimates: quick screening, coarse, fine */
+#define K_QUICK 4
+#define K_COARSE 12
+#define K_FINE 40
+
 typedef struct meas {
     const cf__osrc_t *s;
     double a, b;
@@ -424,8 +429,13 @@ directed(const meas *m, int from)
 {
     const double *own = from == 0 ? m->cp : m->sp;
     const double *other = from == 0 ? m->sp : m->cp;
-    int k = m->k, imax = 0;
+    int k = m->k, imax = 0, iters = k <= 16 ? 8 : 16;
     double hmax = -1.0;
+    /* the quick screening estimate of a fit of the curve itself (d = 0)
+    ** is the samples' maximum only (the golden-section refinement changes
+    ** no piece count there; it does for offsets) */
+    if (k <= K_QUICK && m->s->kind == 0 && m->s->d == 0.0)
+        iters = 0;
     for (int i = 0; i <= k; i++) {
         double h = dist_to(m, 1 - from, other, own + 2 * i);
         if (h > hmax) {
@@ -443,7 +453,7 @@ directed(const meas *m, int from)
         f1 = dist_to(m, 1 - from, other, p);
         curve_pd(m, from, x2, p, NULL);
         f2 = dist_to(m, 1 - from, other, p);
-        for (int it = 0; it < (k <= 16 ? 8 : 16); it++) {
+        for (int it = 0; it < iters; it++) {
             if (f1 > f2) {
                 hi = x2;
                 x2 = x1;
@@ -862,10 +872,6 @@ tiller_hanson(const cf__osrc_t *s, double a, double b, double *pts)
 }
 
 /* ---- one piece ------------------------------------------------------------ */
-
-#define K_QUICK 4
-#define K_COARSE 12
-#define K_FINE 40
 
 /* Pattern search on the arm lengths of pts (end points and tangent
 ** directions fixed), lowering the coarse error *err until it is at most

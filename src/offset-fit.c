@@ -14,6 +14,24 @@
 
 #define FAST_MAX_DEGREE 24
 
+/* The points b[0..n-levels] (hd doubles each) of de Casteljau level
+** `levels` at t from the control points p[0..n]. */
+static inline void
+casteljau_levels(double *b, const double *p, int n, int levels, size_t hd,
+                 double t)
+{
+    double u = 1.0 - t;
+    if (levels == 0) {
+        memcpy(b, p, (size_t)(n + 1) * hd * sizeof(double));
+        return;
+    }
+    for (size_t i = 0; i < (size_t)n * hd; i++)
+        b[i] = u * p[i] + t * p[i + hd];
+    for (int r = 2; r <= levels; r++)
+        for (size_t i = 0; i < (size_t)(n - r + 1) * hd; i++)
+            b[i] = u * b[i] + t * b[i + hd];
+}
+
 /* Point, first and (k == 2) second derivative of the planar curve c at t,
 ** into v[0..2k+1] like cf_bezier_eval_derivs, by de Casteljau on all stored
 ** coordinates at once, stopped k levels early (the last k + 1 points give
@@ -29,10 +47,11 @@ fast_derivs(const cf_bezier_t *c, double t, int k, double *v)
     size_t hd = c->hdim;
     if (c->dim != 2 || n < k || n > FAST_MAX_DEGREE)
         return -1;
-    memcpy(b, c->pts, (size_t)(n + 1) * hd * sizeof(double));
-    for (int r = 1; r <= n - k; r++)
-        for (size_t i = 0; i < (size_t)(n - r + 1) * hd; i++)
-            b[i] = u * b[i] + t * b[i + hd];
+    /* a literal hd lets the compiler unroll the levels */
+    if (hd == 2)
+        casteljau_levels(b, c->pts, n, n - k, 2, t);
+    else
+        casteljau_levels(b, c->pts, n, n - k, 3, t);
     for (size_t j = 0; j < hd; j++) {
         if (k == 1) {
             h[j] = u * b[j] + t * b[hd + j];

@@ -376,6 +376,15 @@ cf_bezier_eval_derivs(const cf_bezier_t *c, double t, int k, double *out)
 static cf_status_t
 check_params(const double *t, size_t n)
 {
+    /* A branch-free pass first (NaN and infinities fail the comparisons,
+    ** so every bad parameter fails it); the per-parameter loop below runs
+    ** only to find and classify a bad one.  This check was most of the
+    ** time of a cubic batch evaluation when it branched per parameter. */
+    int ok = 1;
+    for (size_t i = 0; i < n; i++)
+        ok &= (t[i] >= 0.0) & (t[i] <= 1.0);
+    if (ok)
+        return CF_STATUS_OK;
     for (size_t i = 0; i < n; i++) {
         cf_status_t st = check_param(t[i]);
         if (st != CF_STATUS_OK)

@@ -1015,6 +1015,25 @@ rational_derivative(const cf_bezier_t *c, cf_bezier_t **out, cf_diag_t *diag)
     return CF_STATUS_OK;
 }
 
+/* A derivative's control points are differences times the degree: they
+** overflow for coordinates near DBL_MAX.  Refuse such a result (and free
+** it) rather than return infinite points. */
+static cf_status_t
+check_derivative(cf_bezier_t *d, cf_diag_t *diag)
+{
+    for (int i = 0; i <= d->degree; i++)
+        for (size_t k = 0; k < d->hdim; k++) {
+            double v = d->pts[(size_t)i * d->hdim + k];
+            if (!isfinite(v)) {
+                cf__free(d);
+                return cf__error(diag, CF_STATUS_NOT_FINITE, i,
+                                 "derivative: control point %d overflows "
+                                 "(coordinate %zu is %g)", i, k + 1, v);
+            }
+        }
+    return CF_STATUS_OK;
+}
+
 cf_status_t
 cf_bezier_derivative(const cf_bezier_t *c, int k, cf_bezier_t **out,
                      cf_diag_t *diag)
@@ -1054,6 +1073,9 @@ cf_bezier_derivative(const cf_bezier_t *c, int k, cf_bezier_t **out,
             memcpy(d->pts, tmp, ((size_t)m + 1) * dim * sizeof *tmp);
             cf__free(tmp);
         }
+        st = check_derivative(d, diag);
+        if (st != CF_STATUS_OK)
+            return st;
         *out = d;
         return CF_STATUS_OK;
     }
@@ -1080,6 +1102,9 @@ cf_bezier_derivative(const cf_bezier_t *c, int k, cf_bezier_t **out,
             return st;
         cur = next;
     }
+    st = check_derivative(cur, diag);
+    if (st != CF_STATUS_OK)
+        return st;
     *out = cur;
     return CF_STATUS_OK;
 }

@@ -904,6 +904,44 @@ test_errors_construction(void **state)
     assert_int_equal(cf_bezier_copy(NULL, NULL, NULL), CF_STATUS_INVALID_ARG);
 }
 
+/* Differences of coordinates near DBL_MAX overflow: the derivative is
+** refused with the point named, never returned with infinite points
+** (hardening finding F5). */
+static void
+test_derivative_overflow_refused(void **state)
+{
+    const double huge_pts[] = { -1.7e308, 0.0, 1.7e308, 0.0 };
+    const double w[] = { 1.0, 1.0 };   /* larger weights overflow w x */
+    cf_bezier_t *c = NULL, *d = (cf_bezier_t *)&d;
+    cf_diag_t diag;
+    (void)state;
+    assert_int_equal(cf_bezier_create(2, 1, huge_pts, NULL, &c, NULL),
+                     CF_STATUS_OK);
+    cf_diag_clear(&diag);
+    assert_int_equal(cf_bezier_derivative(c, 1, &d, &diag),
+                     CF_STATUS_NOT_FINITE);
+    assert_null(d);
+    assert_string_equal(diag.msg, "derivative: control point 0 overflows "
+                                  "(coordinate 1 is inf)");
+    cf_bezier_destroy(c);
+    /* the rational path too (its numerator has the same differences) */
+    assert_int_equal(cf_bezier_create(2, 1, huge_pts, w, &c, NULL), CF_STATUS_OK);
+    d = (cf_bezier_t *)&d;
+    assert_int_equal(cf_bezier_derivative(c, 1, &d, NULL),
+                     CF_STATUS_NOT_FINITE);
+    assert_null(d);
+    cf_bezier_destroy(c);
+    /* a large but representable derivative is fine */
+    {
+        const double ok[] = { -1e300, 0.0, 1e300, 0.0 };
+        assert_int_equal(cf_bezier_create(2, 1, ok, NULL, &c, NULL),
+                         CF_STATUS_OK);
+        assert_int_equal(cf_bezier_derivative(c, 1, &d, NULL), CF_STATUS_OK);
+        cf_bezier_destroy(d);
+        cf_bezier_destroy(c);
+    }
+}
+
 static void
 test_errors_operations(void **state)
 {
@@ -1214,6 +1252,7 @@ main(void)
         cmocka_unit_test(test_queries),
         cmocka_unit_test(test_errors_construction),
         cmocka_unit_test(test_errors_operations),
+        cmocka_unit_test(test_derivative_overflow_refused),
         cmocka_unit_test(test_out_of_memory),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

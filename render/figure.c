@@ -1658,6 +1658,15 @@ cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay, cf_diag_t *diag)
             win[3] += 0.5 * span;
         }
     }
+    /* the extent must itself be a finite number: coordinates near
+    ** DBL_MAX (or a window of such width) overflow it (finding F4) */
+    if (!isfinite(win[1] - win[0]) || !isfinite(win[3] - win[2]))
+        return cf__error(diag != NULL ? diag : &fig->err,
+                         CF_STATUS_NOT_FINITE, -1,
+                         "the %s spans %g x %g, too large to draw "
+                         "(coordinates up to about 1e307)",
+                         fig->window_set ? "window" : "drawing",
+                         win[1] - win[0], win[3] - win[2]);
     keep = fig->aspect == 1;
     if (fig->aspect < 0) {
         keep = true;

@@ -243,7 +243,7 @@ static const char *const language[] = {
     "    opacity     0..1                  marker \"dot\" \"circle\" \"square\"\n",
     "                \"diamond\" \"triangle\" \"cross\" \"plus\" \"star\" \"tick\" \"none\"\n",
     "    marker_size bp                    font_size  bp\n",
-    "    place (or anchor)  center n ne e se s sw w nw (above below left right)\n",
+    "    place (or anchor)  center n ne e se s sw w nw auto (above below left right)\n",
     "    offset      gap between a label and its point, bp\n",
     "    arrow_size  arrow head length, bp\n",
     NULL,

@@ -1223,6 +1223,41 @@ test_bad_input(void **state)
     cf_bezier_destroy(c1);
 }
 
+/* Coordinates near DBL_MAX: the extent overflows; the write fails with a
+** message saying so, not with a tolerance the user never set (finding
+** F4). */
+static void
+test_huge_extent_refused(void **state)
+{
+    const double pts[] = { -1.7e308, 0.0, 1.7e308, 1.0 };
+    cf_figure_t *fig = NULL;
+    unsigned char *data = NULL;
+    size_t size = 0;
+    cf_diag_t d;
+    (void)state;
+    assert_int_equal(cf_figure_create(8, 6, CF_UNIT_CM, &fig, NULL),
+                     CF_STATUS_OK);
+    assert_int_equal(cf_figure_add_polyline(fig, pts, 2, false, NULL),
+                     CF_STATUS_OK);
+    cf_diag_clear(&d);
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_SVG, NULL, &data,
+                                      &size, &d), CF_STATUS_NOT_FINITE);
+    assert_null(data);
+    assert_non_null(strstr(d.msg, "the drawing spans"));
+    assert_non_null(strstr(d.msg, "too large"));
+    cf_figure_destroy(fig);
+
+    assert_int_equal(cf_figure_create(8, 6, CF_UNIT_CM, &fig, NULL),
+                     CF_STATUS_OK);
+    assert_int_equal(cf_figure_set_window(fig, -1e308, 1e308, -1e308,
+                                          1e308), CF_STATUS_OK);
+    cf_diag_clear(&d);
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_SVG, NULL, &data,
+                                      &size, &d), CF_STATUS_NOT_FINITE);
+    assert_non_null(strstr(d.msg, "the window spans"));
+    cf_figure_destroy(fig);
+}
+
 static void
 test_sticky_error(void **state)
 {
@@ -1318,6 +1353,7 @@ main(void)
         cmocka_unit_test(test_hull),
         cmocka_unit_test(test_label_halo),
         cmocka_unit_test(test_bad_input),
+        cmocka_unit_test(test_huge_extent_refused),
         cmocka_unit_test(test_sticky_error),
         cmocka_unit_test(test_out_of_memory),
     };

@@ -585,13 +585,17 @@ l_figure(lua_State *L)
     cf__lua_field(L, 1, "height");
     h = read_length(L, -1, "figure", "height", cf_length_to_bp(6, CF_UNIT_CM));
     lua_pop(L, 2);
-    b = lua_newuserdatauv(L, sizeof *b, 2);
+    b = lua_newuserdatauv(L, sizeof *b, 3);
     b->fig = NULL;
     luaL_setmetatable(L, CF__LUA_FIGURE);
     lua_pushvalue(L, 2);
     lua_setiuservalue(L, -2, 1);
     lua_pushvalue(L, 3);
     lua_setiuservalue(L, -2, 2);
+    /* where the figure was made ("file:line:"), for errors found only
+    ** when it is written */
+    luaL_where(L, 1);
+    lua_setiuservalue(L, -2, 3);
     cf_diag_clear(&diag);
     check_(L, "figure", NULL,
            cf_figure_create(w, h, CF_UNIT_BP, &b->fig, &diag), &diag);

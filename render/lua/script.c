@@ -819,3 +819,9 @@ cf_script_figure_caption(const cf_script_t *s, size_t i)
 {
     return s != NULL ? cf__lua_figure_string(s->L, i, 2) : "";
 }
+
+const char *
+cf_script_figure_where(const cf_script_t *s, size_t i)
+{
+    return s != NULL ? cf__lua_figure_string(s->L, i, 3) : "";
+}

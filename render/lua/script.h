@@ -62,6 +62,8 @@ size_t cf_script_figure_count(const cf_script_t *script);
 struct cf_figure *cf_script_figure(const cf_script_t *script, size_t i);
 const char *cf_script_figure_name(const cf_script_t *script, size_t i);
 const char *cf_script_figure_caption(const cf_script_t *script, size_t i);
+/* Where the script made figure i: "FILE:LINE:" of its figure{} call. */
+const char *cf_script_figure_where(const cf_script_t *script, size_t i);
 
 #ifdef __cplusplus
 }

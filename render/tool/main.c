@@ -352,8 +352,15 @@ render_figures(const cf_script_t *s, const options *o)
         cf_diag_clear(&diag);
         st = cf_figure_write_all(fig, base, o->formats, &wo, &diag);
         if (st != CF_STATUS_OK) {
-            fprintf(stderr, "curvefig: %s: figure '%s': %s\n", o->script,
-                    name, diag.msg[0] ? diag.msg : cf_status_to_string(st));
+            const char *where = cf_script_figure_where(s, i);
+            if (where[0] != '\0')
+                fprintf(stderr, "curvefig: %sfigure '%s': %s\n", where,
+                        name,
+                        diag.msg[0] ? diag.msg : cf_status_to_string(st));
+            else
+                fprintf(stderr, "curvefig: %s: figure '%s': %s\n",
+                        o->script, name,
+                        diag.msg[0] ? diag.msg : cf_status_to_string(st));
             rc = EXIT_SCRIPT;
         } else if (o->verbose) {
             for (int f = 0; f < CF_FORMAT_LAST_; f++)

@@ -954,6 +954,75 @@ cf_figure_add_graph_list(cf_figure_t *fig, const cf_bezier_list_t *list,
     return commit(fig, e, st);
 }
 
+/* The graph of N_i^p over the whole knot vector [u_0, u_{m-1}].  The
+** spline with the single coefficient e_{i+p} on U padded by p knots at
+** each end (spacing the length of U, or 1) equals N_i^p on the padded
+** domain, which contains [u_0, u_{m-1}]: N_i^p depends only on
+** u_i .. u_{i+p+1}, so the padding does not change it.  Its Bézier pieces
+** over [u_0, u_{m-1}] are the graph, exact. */
+cf_status_t
+cf_figure_add_basis(cf_figure_t *fig, const double *knots, size_t nknots,
+                    int i, int p, const cf_style_t *style)
+{
+    cf_bspline_t *spl = NULL;
+    cf_bezier_list_t *list = NULL;
+    double *pu, *coef, h;
+    size_t m = nknots, count, k;
+    cf_status_t st;
+    FIG_CHECK(fig);
+    if (knots == NULL)
+        return cf__error(&fig->err, CF_STATUS_INVALID_ARG, -1,
+                         "basis: knots are NULL");
+    if (p < 0 || p > CF_BSPLINE_MAX_DEGREE)
+        return cf__error(&fig->err, CF_STATUS_BAD_DEGREE, -1,
+                         "basis: degree %d is outside 0 .. %d", p,
+                         CF_BSPLINE_MAX_DEGREE);
+    if (i < 0 || (size_t)i + (size_t)p + 2 > m)
+        return cf__error(&fig->err, CF_STATUS_INVALID_ARG, i,
+                         "basis: N_%d^%d needs knots u_%d .. u_%d; %zu "
+                         "given", i, p, i, i + p + 1, m);
+    if (cf__check_finite_points(knots, m, 1, 1, "knot", &fig->err)
+        != CF_STATUS_OK || check_style(fig, style) != CF_STATUS_OK)
+        return fig->err.status;
+    for (k = 1; k < m; k++)
+        if (knots[k] < knots[k - 1])
+            return cf__error(&fig->err, CF_STATUS_BAD_KNOTS, (long)k,
+                             "basis: knot %zu (%g) is smaller than knot %zu "
+                             "(%g)", k, knots[k], k - 1, knots[k - 1]);
+    if (!(knots[m - 1] > knots[0]))
+        return cf__error(&fig->err, CF_STATUS_BAD_KNOTS, -1,
+                         "basis: the knots span no interval (all %g)",
+                         knots[0]);
+    h = knots[m - 1] - knots[0];
+    count = m + (size_t)p - 1;
+    pu = cf__alloc_array(m + 2 * (size_t)p, sizeof *pu);
+    coef = cf__calloc(count, sizeof *coef);
+    if (pu == NULL || coef == NULL) {
+        cf__free(pu);
+        cf__free(coef);
+        return cf__error(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                         "out of memory for a basis function");
+    }
+    for (int r = 0; r < p; r++) {
+        pu[r] = knots[0] - h * (p - r);
+        pu[m + (size_t)p + (size_t)r] = knots[m - 1] + h * (r + 1);
+    }
+    memcpy(pu + p, knots, m * sizeof *knots);
+    coef[(size_t)i + (size_t)p] = 1.0;
+    /* the padded spline's domain [pu_p, pu_{count}] is [u_0, u_{m-1}] */
+    st = cf_bspline_create(1, p, pu, m + 2 * (size_t)p, coef, count, NULL,
+                           &spl, &fig->err);
+    cf__free(pu);
+    cf__free(coef);
+    if (st == CF_STATUS_OK)
+        st = cf_bspline_to_beziers(spl, &list, &fig->err);
+    cf_bspline_destroy(spl);
+    if (st == CF_STATUS_OK)
+        st = cf_figure_add_graph_list(fig, list, style);
+    cf_bezier_list_destroy(list);
+    return st;
+}
+
 /* Sampling state of cf_figure_add_function. */
 typedef struct sampler {
     cf_function_t f;

@@ -429,6 +429,17 @@ cf_status_t cf_figure_add_graph_list(cf_figure_t *fig,
                                      const cf_bezier_list_t *list,
                                      const cf_style_t *style);
 
+/* The graph of the B-spline basis function N_i^p over the knots
+** u_0 .. u_{nknots-1} (non-decreasing, finite, u_0 < u_{nknots-1}; any
+** length >= i + p + 2), drawn over the whole range [u_0, u_{nknots-1}]:
+** zero outside [u_i, u_{i+p+1}], exact (its polynomial pieces become graph
+** pieces as in cf_figure_add_graph).  0 <= p <= CF_BSPLINE_MAX_DEGREE.
+** Errors name the knot: "basis: knot 4 (0.3) is smaller than knot 3
+** (0.5)".  Role CF_ROLE_GRAPH. */
+cf_status_t cf_figure_add_basis(cf_figure_t *fig, const double *knots,
+                                size_t nknots, int i, int p,
+                                const cf_style_t *style);
+
 /* The graph of y = f(x) on [a, b] (a < b) for any function: sampled now
 ** (f is not kept), fitted by cubic Hermite segments with derivatives from
 ** differences, subdividing until the midpoint error is below 2e-5 of the

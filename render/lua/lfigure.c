@@ -1310,18 +1310,15 @@ m_graph(lua_State *L)
 
 /* f:basis(U, i, p, {...}): the graph of N_i^p over the knots U (any
 ** length >= i + p + 2) on [u_0, u_m]; U may be a B-spline (p = its
-** degree when omitted).  U is padded by p knots at each end so that the
-** spline with the single coefficient e_{i+p} exists; N_i^p depends only on
-** u_i .. u_{i+p+1}, so the padding does not change it. */
+** degree when omitted).  cf_figure_add_basis. */
 static int
 m_basis(lua_State *L)
 {
     cf_figure_t *fig = check_fig(L, 1);
     lua_settop(L, 5);
-    cf_bspline_t *src = cf__lua_to_bspline(L, 2), **spl;
-    size_t m, count;
+    cf_bspline_t *src = cf__lua_to_bspline(L, 2);
+    size_t m;
     const double *u;
-    double *pu, *pts, h;
     int i, p, opts = 5;
     cf_style_t st;
     cf_diag_t diag;
@@ -1336,27 +1333,10 @@ m_basis(lua_State *L)
         p = cf_bspline_degree(src);
     else
         p = cf__lua_check_int(L, 4, "basis", "p", 0, CF_BSPLINE_MAX_DEGREE);
-    if ((size_t)i + (size_t)p + 2 > m)
-        return cf__lua_error(L, "basis: N_%d^%d needs knots u_%d .. u_%d; "
-                             "%zu given", i, p, i, i + p + 1, m);
     check_keys(L, opts, "basis", NULL);
     read_style(L, opts, "basis", fig, &st);
-    h = u[m - 1] - u[0] > 0 ? u[m - 1] - u[0] : 1.0;
-    pu = cf__lua_buffer(L, m + 2 * (size_t)p);
-    for (int k = 0; k < p; k++) {
-        pu[k] = u[0] - h * (p - k);
-        pu[m + (size_t)p + (size_t)k] = u[m - 1] + h * (k + 1);
-    }
-    memcpy(pu + p, u, m * sizeof *u);
-    count = m + (size_t)p - 1;
-    pts = cf__lua_buffer(L, count);
-    memset(pts, 0, count * sizeof *pts);
-    pts[i + p] = 1.0;
-    spl = cf__lua_new_bspline(L);
     cf_diag_clear(&diag);
-    check(L, "basis", cf_bspline_create(1, p, pu, m + 2 * (size_t)p, pts,
-                                        count, NULL, spl, &diag), &diag);
-    graph_bspline(L, fig, *spl, &st, "basis");
+    check(L, "basis", cf_figure_add_basis(fig, u, m, i, p, &st), &diag);
     lua_settop(L, 1);
     return 1;
 }

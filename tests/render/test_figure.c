@@ -393,6 +393,104 @@ test_tolerance_option(void **state)
     cf_bezier_destroy(c);
 }
 
+/* N_i^p by the Cox-de Boor recursion (0/0 = 0) on half-open spans: the
+** independent value for test_basis_graph (whose knots are all simple, so
+** N_i^p is continuous and the right end of the range needs no care). */
+static double
+cox_de_boor(const double *u, int i, int p, double x)
+{
+    double a = 0, b = 0;
+    if (p == 0)
+        return u[i] <= x && x < u[i + 1] ? 1 : 0;
+    if (u[i + p] > u[i])
+        a = (x - u[i]) / (u[i + p] - u[i]) * cox_de_boor(u, i, p - 1, x);
+    if (u[i + p + 1] > u[i + 1])
+        b = (u[i + p + 1] - x) / (u[i + p + 1] - u[i + 1])
+            * cox_de_boor(u, i + 1, p - 1, x);
+    return a + b;
+}
+
+static void
+test_basis_graph(void **state)
+{
+    /* N_1^2 and N_2^3 over uneven knots, drawn over the whole range
+    ** [0, 15]: the path must follow Cox-de Boor's values (zero outside
+    ** the support) within the 1/256 pt rounding plus the sag of the
+    ** 6001-point reference polyline (below 1e-4 pt here) */
+    static const double U[] = { 0, 1, 3, 6, 10, 11, 15 };
+    static const int cases[][2] = { { 1, 2 }, { 2, 3 }, { 0, 1 } };
+    size_t n = 6001;
+    double *exact = malloc(2 * n * sizeof *exact);
+    paths_t *ps = malloc(sizeof *ps);
+    (void)state;
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        cf_figure_t *fig = new_fig();
+        const seg_t *last;
+        double px, py;
+        map_t m;
+        char *svg;
+        assert_int_equal(cf_figure_add_basis(fig, U, 7, cases[c][0],
+                                             cases[c][1], NULL),
+                         CF_STATUS_OK);
+        for (size_t k = 0; k < n; k++) {
+            double x = 15.0 * (double)k / (double)(n - 1);
+            exact[2 * k] = x;
+            exact[2 * k + 1] = cox_de_boor(U, cases[c][0], cases[c][1], x);
+        }
+        svg = render_svg(fig);
+        stroked_paths(svg, ps);
+        assert_true(ps->nseg >= 1);
+        assert_int_equal(ps->nmove, 1);   /* continuous for p >= 1 */
+        m = map_from(fig, ps, 0.0, 0.0);  /* N(0) = 0: starts at (0, 0) */
+        assert_true(path_error(ps, &m, exact, n) <= 2 * ROUNDING);
+        /* and ends at (15, 0): the whole knot range is drawn */
+        last = &ps->seg[ps->nseg - 1];
+        to_page(&m, 15.0, 0.0, &px, &py);
+        assert_true(fabs(last->p[6] - px) <= ROUNDING
+                    && fabs(last->p[7] - py) <= ROUNDING);
+        free(svg);
+        cf_figure_destroy(fig);
+    }
+    free(exact);
+    free(ps);
+}
+
+static void
+test_basis_errors(void **state)
+{
+    static const double up[] = { 0, 1, 3, 2, 10 }, flat[] = { 2, 2, 2, 2 };
+    static const double nan_knots[] = { 0, 1, NAN, 3, 4 };
+    static const struct {
+        const double *u;
+        size_t m;
+        int i, p;
+        cf_status_t st;
+        const char *msg;
+    } cases[] = {
+        { up, 5, 0, 2, CF_STATUS_BAD_KNOTS,
+          "basis: knot 3 (2) is smaller than knot 2 (3)" },
+        { up, 5, 2, 2, CF_STATUS_INVALID_ARG,
+          "basis: N_2^2 needs knots u_2 .. u_5; 5 given" },
+        { up, 5, 0, -1, CF_STATUS_BAD_DEGREE, "degree -1" },
+        { flat, 4, 0, 2, CF_STATUS_BAD_KNOTS, "span no interval" },
+        { nan_knots, 5, 0, 2, CF_STATUS_NOT_FINITE, "knot 2" },
+    };
+    (void)state;
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        cf_figure_t *fig = new_fig();
+        cf_diag_t d;
+        cf_diag_clear(&d);
+        assert_int_equal(cf_figure_add_basis(fig, cases[c].u, cases[c].m,
+                                             cases[c].i, cases[c].p, NULL),
+                         cases[c].st);
+        assert_int_equal(cf_figure_status(fig, &d), cases[c].st);
+        if (strstr(d.msg, cases[c].msg) == NULL)
+            fail_msg("case %zu: \"%s\" lacks \"%s\"", c, d.msg,
+                     cases[c].msg);
+        cf_figure_destroy(fig);
+    }
+}
+
 static void
 test_graph_exact(void **state)
 {
@@ -1344,6 +1442,8 @@ main(void)
         cmocka_unit_test(test_rational_arc_fitted),
         cmocka_unit_test(test_tolerance_option),
         cmocka_unit_test(test_graph_exact),
+        cmocka_unit_test(test_basis_graph),
+        cmocka_unit_test(test_basis_errors),
         cmocka_unit_test(test_function_graph),
         cmocka_unit_test(test_bspline_pieces),
         cmocka_unit_test(test_net_colours_and_projection),

@@ -631,6 +631,7 @@ test_figure(void **state)
     BAD(cf_figure_add_axes(NULL, &ax, &st));
     BAD(cf_figure_add_graph(NULL, NULL, NULL, 0, &st));
     BAD(cf_figure_add_graph_list(NULL, NULL, &st));
+    BAD(cf_figure_add_basis(NULL, NULL, 0, 0, 0, &st));
     BAD(cf_figure_add_function(NULL, plot_nan, NULL, 0, 1, &st));
     BAD(cf_figure_write(NULL, "/nonexistent/x.svg", CF_FORMAT_SVG, NULL,
                         NULL));
@@ -690,6 +691,7 @@ test_figure(void **state)
     BAD(cf_figure_add_axes(fig, NULL, &st));
     BAD(cf_figure_add_graph(fig, NULL, NULL, 1, &st));
     BAD(cf_figure_add_graph_list(fig, NULL, &st));
+    BAD(cf_figure_add_basis(fig, NULL, 5, 0, 2, &st));
     BAD(cf_figure_add_function(fig, NULL, NULL, 0, 1, &st));
     BAD(cf_figure_add_function(fig, plot_nan, NULL, 1, 0, &st));
     BAD(cf_figure_get_window(fig, NULL, &sx, &sy));

@@ -1889,10 +1889,16 @@ draw_curve(cf_figure_t *fig, element_t *e, const cf__layout_t *l,
         if (pc->bez == NULL) {
             path_cubic(cr, l, pc->cubic, last);
         } else {
-            if (pc->cache == NULL || pc->cache_tol != l->tol) {
+            /* a fit within a smaller tolerance serves a larger one: the
+            ** layout's ink pass fits at the first, larger scale, and the
+            ** page (smaller once labels took their room) reuses it */
+            if (pc->cache == NULL || pc->cache_tol > l->tol) {
                 cf_cubics_t *c = NULL;
-                cf_status_t st = cf_bezier_to_cubics(pc->bez, l->tol, &c,
-                                                     &fig->err);
+                /* polynomial curves of degree >= 4: Hermite pieces
+                ** within the a-priori bound, no fitting (rational ones:
+                ** the Levien fit) */
+                cf_status_t st = cf_bezier_to_cubics_bounded(pc->bez, l->tol,
+                                                             &c, &fig->err);
                 if (st != CF_STATUS_OK)
                     return fig_fail(fig, st, "curve to cubics");
                 cf_cubics_destroy(pc->cache);

@@ -15,6 +15,15 @@
 ** curve is measured as max |H(u) - c(a + u (b-a))| over SAMPLES + 1 evenly
 ** spaced u, which bounds the distance between the two curves from above at
 ** those samples (a parametric correspondence); pieces above tol are halved.
+**
+** cf_bezier_to_cubics_bounded (polynomial curves of degree >= 4, any
+** dimension) measures nothing: cubic Hermite interpolation on a piece of
+** parameter length h errs by at most (t-a)^2 (t-b)^2 / 4! max|c^(4)| <=
+** h^4 / 384 max|c^(4)| in every coordinate (the classical remainder), and
+** max|c^(4)| is bounded by the hull of the fourth-difference control
+** points; so N = ceil((max|c^(4)| / (384 tol))^(1/4)) uniform pieces are
+** within tol, parameter for parameter, hence also in Hausdorff distance.
+** More pieces than the Levien fit, a thousand times less work: for drawing.
 */
 #include <math.h>
 #include <string.h>
@@ -117,15 +126,11 @@ fit_range(fit *f, double a, double b, int depth, double *seg)
     return fit_range(f, 0.5 * (a + b), b, depth + 1, seg);
 }
 
-cf_status_t
-cf_bezier_to_cubics(const cf_bezier_t *c, double tol, cf_cubics_t **out,
-                    cf_diag_t *diag)
+/* The arguments of both conversions; *out = NULL when out is given. */
+static cf_status_t
+check_args(const cf_bezier_t *c, double tol, cf_cubics_t **out,
+           cf_diag_t *diag)
 {
-    cf_cubics_t *r;
-    fit f;
-    double *seg;
-    cf_status_t st;
-
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "the output pointer is NULL");
@@ -135,6 +140,21 @@ cf_bezier_to_cubics(const cf_bezier_t *c, double tol, cf_cubics_t **out,
     if (!(tol > 0.0) || !isfinite(tol))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "tolerance %g must be finite and positive", tol);
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_bezier_to_cubics(const cf_bezier_t *c, double tol, cf_cubics_t **out,
+                    cf_diag_t *diag)
+{
+    cf_cubics_t *r;
+    fit f;
+    double *seg;
+    cf_status_t st;
+
+    st = check_args(c, tol, out, diag);
+    if (st != CF_STATUS_OK)
+        return st;
     r = cf__calloc(1, sizeof *r);
     if (r == NULL)
         return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
@@ -228,6 +248,94 @@ cf_bezier_to_cubics(const cf_bezier_t *c, double tol, cf_cubics_t **out,
     r->t = f.t;
     r->count = f.count;
     r->max_error = f.max_error;
+    *out = r;
+    return CF_STATUS_OK;
+}
+
+/* A bound of |c^(4)| over [0, 1]: coordinate by coordinate the fourth
+** derivative is the Bezier curve of the n!/(n-4)! Delta^4 P_i, inside the
+** hull of those values; the maxima are combined as a vector norm.  A
+** non-finite result means overflow. */
+static double
+fourth_derivative_bound(const cf_bezier_t *c)
+{
+    size_t dim = c->dim, hd = c->hdim;
+    int n = c->degree;
+    double k = (double)n * (n - 1) * (n - 2) * (n - 3), m2 = 0.0;
+    for (size_t j = 0; j < dim; j++) {
+        double mj = 0.0;
+        for (int i = 0; i + 4 <= n; i++) {
+            const double *p = c->pts + (size_t)i * hd + j;
+            double d4 = p[0] - 4.0 * p[hd] + 6.0 * p[2 * hd]
+                        - 4.0 * p[3 * hd] + p[4 * hd];
+            mj = fmax(mj, fabs(d4));
+        }
+        m2 += (k * mj) * (k * mj);
+    }
+    return sqrt(m2);
+}
+
+cf_status_t
+cf_bezier_to_cubics_bounded(const cf_bezier_t *c, double tol,
+                            cf_cubics_t **out, cf_diag_t *diag)
+{
+    cf_cubics_t *r;
+    size_t dim, count;
+    double m4, pieces, *d0, *d1;
+    cf_status_t st = check_args(c, tol, out, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    if (c->rational || c->degree <= 3)
+        return cf_bezier_to_cubics(c, tol, out, diag);
+    dim = c->dim;
+    m4 = fourth_derivative_bound(c);
+    if (!isfinite(m4))
+        return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
+                         "the fourth derivative of the curve overflows "
+                         "(control points too large)");
+    /* N pieces of length h = 1/N with h^4/384 * m4 <= tol */
+    pieces = m4 > 0.0 ? ceil(pow(m4 / (384.0 * tol), 0.25)) : 1.0;
+    if (!(pieces <= MAX_SEGMENTS))
+        return cf__error(diag, CF_STATUS_NO_CONVERGENCE, -1,
+                         "%.3g cubic pieces would be needed for %g "
+                         "(at most %d)", pieces, tol, MAX_SEGMENTS);
+    count = (size_t)fmax(pieces, 1.0);
+    r = cf__calloc(1, sizeof *r);
+    d0 = cf__alloc_array(2 * dim, sizeof *d0);
+    if (r != NULL) {
+        r->pts = cf__alloc_array(count, 4 * dim * sizeof *r->pts);
+        r->t = cf__alloc_array(count + 1, sizeof *r->t);
+    }
+    if (r == NULL || d0 == NULL || r->pts == NULL || r->t == NULL) {
+        cf_cubics_destroy(r);
+        cf__free(d0);
+        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+                         "out of memory (%zu cubic segments)", count);
+    }
+    d1 = d0 + dim;
+    r->dim = dim;
+    r->count = count;
+    r->t[0] = 0.0;
+    point_and_deriv(c, 0.0, r->pts, d0);
+    for (size_t i = 0; i < count; i++) {
+        double *seg = r->pts + 4 * dim * i;
+        double b = i + 1 == count ? 1.0 : (double)(i + 1) / (double)count;
+        double h = b - r->t[i];
+        if (i > 0) {
+            /* the previous end, shared exactly: the chain is C1 */
+            memcpy(seg, seg - dim, dim * sizeof *seg);
+            memcpy(d0, d1, dim * sizeof *d0);
+        }
+        point_and_deriv(c, b, seg + 3 * dim, d1);
+        for (size_t k = 0; k < dim; k++) {
+            seg[dim + k] = seg[k] + h / 3.0 * d0[k];
+            seg[2 * dim + k] = seg[3 * dim + k] - h / 3.0 * d1[k];
+        }
+        r->t[i + 1] = b;
+    }
+    /* the bound itself: h^4/384 max|c^(4)| with h = 1/N */
+    r->max_error = m4 / (384.0 * pow((double)count, 4.0));
+    cf__free(d0);
     *out = r;
     return CF_STATUS_OK;
 }

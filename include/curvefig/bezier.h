@@ -211,6 +211,18 @@ typedef struct cf_cubics {
 ** distance; NO_CONVERGENCE when tol cannot be reached. */
 cf_status_t cf_bezier_to_cubics(const cf_bezier_t *c, double tol,
                                 cf_cubics_t **out, cf_diag_t *diag);
+
+/* The same chain for drawing, without measuring: polynomial curves of
+** degree >= 4 (any dim) become N uniform cubic Hermite pieces (C1, end
+** points and derivatives of the curve), N the smallest with
+** max|c^(4)| / (384 N^4) <= tol, max|c^(4)| bounded by the hull of the
+** fourth differences; max_error is that bound (a guarantee, parameter for
+** parameter).  Cheaper than cf_bezier_to_cubics by orders of magnitude,
+** usually with a few more pieces.  Degree <= 3 and rational curves: as
+** cf_bezier_to_cubics.  NOT_FINITE when the fourth derivative overflows. */
+cf_status_t cf_bezier_to_cubics_bounded(const cf_bezier_t *c, double tol,
+                                        cf_cubics_t **out,
+                                        cf_diag_t *diag);
 void cf_cubics_destroy(cf_cubics_t *cubics);
 
 /* ---- lists of curves (results of conic and B-spline operations) --------- */

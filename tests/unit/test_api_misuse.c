@@ -264,6 +264,9 @@ test_bezier(void **state)
     BAD(cf_bezier_to_cubics(c, 0.0, &cu, NULL));
     BAD(cf_bezier_to_cubics(NULL, 0.1, &cu, NULL));
     BAD(cf_bezier_to_cubics(c, 0.1, NULL, NULL));
+    BAD(cf_bezier_to_cubics_bounded(c, 0.0, &cu, NULL));
+    BAD(cf_bezier_to_cubics_bounded(NULL, 0.1, &cu, NULL));
+    BAD(cf_bezier_to_cubics_bounded(c, 0.1, NULL, NULL));
     assert_null(cu);
     cf_cubics_destroy(NULL);
     cf_bezier_list_destroy(NULL);

@@ -724,6 +724,143 @@ test_to_cubics(void **state)
     cf_cubics_destroy(NULL);
 }
 
+/* Largest distance between segment i of cu at u and the curve at the
+** corresponding parameter (the parametric error the bound promises). */
+static double
+parametric_error(const cf_bezier_t *c, const cf_cubics_t *cu, size_t i,
+                 double u)
+{
+    size_t dim = cf_bezier_dim(c);
+    const double *s = cu->pts + 4 * dim * i;
+    double q[4], v = 1.0 - u, e2 = 0.0;
+    double b[4] = { v * v * v, 3 * v * v * u, 3 * v * u * u, u * u * u };
+    cf_bezier_eval(c, cu->t[i] + u * (cu->t[i + 1] - cu->t[i]), q);
+    for (size_t k = 0; k < dim; k++) {
+        double h = b[0] * s[k] + b[1] * s[dim + k] + b[2] * s[2 * dim + k]
+                   + b[3] * s[3 * dim + k];
+        e2 += (h - q[k]) * (h - q[k]);
+    }
+    return sqrt(e2);
+}
+
+static void
+test_to_cubics_bounded(void **state)
+{
+    tu_rng r;
+    cf_cubics_t *cu, *ref;
+    cf_bezier_t *c;
+    cf_diag_t d;
+    (void)state;
+    tu_rng_seed(&r, 29);
+    /* degree 4: c^(4) is the constant 24 Delta^4 P, and the Hermite
+    ** remainder f^(4)/4! (t-a)^2 (t-b)^2 is exactly h^4/384 |c^(4)| at every
+    ** piece's midpoint -- the bound is attained there (by hand, the
+    ** classical remainder), so the reported bound must equal the measured
+    ** midpoint error to rounding (1e-9 relative) */
+    for (size_t dim = 1; dim <= 3; dim++) {
+        c = random_curve(&r, dim, 4, false, 10.0);
+        assert_int_equal(cf_bezier_to_cubics_bounded(c, 1e-4, &cu, NULL),
+                         CF_STATUS_OK);
+        assert_true(cu->count >= 2 && cu->max_error <= 1e-4);
+        for (size_t i = 0; i < cu->count; i++)
+            tu_assert_close(parametric_error(c, cu, i, 0.5), cu->max_error,
+                            1e-9, 1e-15);
+        /* and N is the smallest count: N - 1 pieces would exceed tol */
+        assert_true(cu->max_error * pow((double)cu->count /
+                                        (double)(cu->count - 1), 4.0)
+                    > 1e-4);
+        cf_cubics_destroy(cu);
+        cf_bezier_destroy(c);
+    }
+    /* degrees 4..12, dims 1..3, tolerances 1e-2..1e-8: within the bound
+    ** parameter for parameter (1e-12 of the size for rounding), within tol
+    ** two-sided (check_cubics: independent sampling), C1 at the joins */
+    for (int it = 0; it < 27; it++) {
+        int n = 4 + it % 9;
+        size_t dim = 1 + (size_t)(it / 3) % 3;
+        double tol = it % 3 == 0 ? 1e-2 : it % 3 == 1 ? 1e-5 : 1e-8;
+        c = random_curve(&r, dim, n, false, 10.0);
+        assert_int_equal(cf_bezier_to_cubics_bounded(c, tol, &cu, NULL),
+                         CF_STATUS_OK);
+        assert_true(cu->max_error <= tol && cu->max_error > 0.0);
+        for (size_t i = 0; i < cu->count; i++)
+            for (int j = 0; j <= 32; j++)
+                assert_true(parametric_error(c, cu, i, j / 32.0)
+                            <= cu->max_error + 1e-12 * curve_size(c));
+        /* the two-sided check costs count x 257^2 foot points: on the
+        ** chains of up to 60 pieces (the parametric bound above already
+        ** implies it) */
+        if (cu->count <= 60)
+            check_cubics(c, cu, tol + 1e-12 * curve_size(c));
+        for (size_t i = 1; i < cu->count; i++) {
+            /* c'(t_i) from both sides: 3 (P1 - P0) / h and 3 (P3 - P2) / h */
+            const double *s0 = cu->pts + 4 * dim * (i - 1);
+            const double *s1 = cu->pts + 4 * dim * i;
+            double h0 = cu->t[i] - cu->t[i - 1], h1 = cu->t[i + 1] - cu->t[i];
+            for (size_t k = 0; k < dim; k++)
+                tu_assert_close(3 * (s0[3 * dim + k] - s0[2 * dim + k]) / h0,
+                                3 * (s1[dim + k] - s1[k]) / h1, 1e-9,
+                                1e-9 * curve_size(c) * n);
+        }
+        cf_cubics_destroy(cu);
+        cf_bezier_destroy(c);
+    }
+    /* degree <= 3 and rational curves: exactly cf_bezier_to_cubics */
+    for (int it = 0; it < 4; it++) {
+        bool rat = it >= 2;
+        c = random_curve(&r, 2, rat ? 2 + it : 3, rat, 5.0);
+        assert_int_equal(cf_bezier_to_cubics_bounded(c, 1e-3, &cu, NULL),
+                         CF_STATUS_OK);
+        assert_int_equal(cf_bezier_to_cubics(c, 1e-3, &ref, NULL),
+                         CF_STATUS_OK);
+        assert_int_equal(cu->count, ref->count);
+        assert_memory_equal(cu->pts, ref->pts,
+                            8 * cu->count * sizeof *cu->pts);
+        cf_cubics_destroy(cu);
+        cf_cubics_destroy(ref);
+        cf_bezier_destroy(c);
+    }
+    /* errors: NULL, a bad tolerance, a fourth derivative that overflows;
+    ** and out of memory at every allocation, without leaks */
+    c = random_curve(&r, 2, 6, false, 1.0);
+    assert_int_equal(cf_bezier_to_cubics_bounded(c, 1e-3, NULL, NULL),
+                     CF_STATUS_INVALID_ARG);
+    assert_int_equal(cf_bezier_to_cubics_bounded(NULL, 1e-3, &cu, NULL),
+                     CF_STATUS_INVALID_ARG);
+    assert_int_equal(cf_bezier_to_cubics_bounded(c, 0.0, &cu, NULL),
+                     CF_STATUS_INVALID_ARG);
+    assert_int_equal(cf_bezier_to_cubics_bounded(c, NAN, &cu, NULL),
+                     CF_STATUS_INVALID_ARG);
+    assert_null(cu);
+    for (long k = 0;; k++) {
+        long live = tu_alloc_live();
+        cf_status_t st;
+        tu_fail_alloc_after(k);
+        st = cf_bezier_to_cubics_bounded(c, 1e-3, &cu, NULL);
+        tu_fail_alloc_reset();
+        if (st == CF_STATUS_OK) {
+            cf_cubics_destroy(cu);
+            break;
+        }
+        assert_int_equal(st, CF_STATUS_NO_MEMORY);
+        assert_null(cu);
+        assert_int_equal(tu_alloc_live(), live);
+    }
+    cf_bezier_destroy(c);
+    {
+        double huge_pts[14];
+        for (int i = 0; i < 14; i++)
+            huge_pts[i] = (i % 2 ? 1.0 : -1.0) * 1e306;
+        assert_int_equal(cf_bezier_create(2, 6, huge_pts, NULL, &c, NULL),
+                         CF_STATUS_OK);
+        cf_diag_clear(&d);
+        assert_int_equal(cf_bezier_to_cubics_bounded(c, 1e-3, &cu, &d),
+                         CF_STATUS_NOT_FINITE);
+        assert_non_null(strstr(d.msg, "fourth derivative"));
+        cf_bezier_destroy(c);
+    }
+}
+
 static void
 test_to_cubics_counts(void **state)
 {
@@ -1249,6 +1386,7 @@ main(void)
         cmocka_unit_test(test_tangent_normal_curvature),
         cmocka_unit_test(test_to_cubics),
         cmocka_unit_test(test_to_cubics_counts),
+        cmocka_unit_test(test_to_cubics_bounded),
         cmocka_unit_test(test_queries),
         cmocka_unit_test(test_errors_construction),
         cmocka_unit_test(test_errors_operations),

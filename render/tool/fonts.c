@@ -99,6 +99,18 @@ static const char synthetic_rules[] =
     " <edit name=\"weight\" mode=\"assign\"><const>bold</const></edit>\n"
     "</match>\n";
 
+/* Latin Modern's design sizes are families of their own ("LM Roman 7")
+** listed after "Latin Modern Roman".  pango names a font by its first
+** family, and pango's cairo fonts compute their metrics (asked for by
+** every layout, for line heights) by laying out a sample sentence in that
+** family: for an LM Roman 7 subscript, a whole LM Roman 10 face loaded and
+** shaped for nothing.  With the design's family first, that sentence is
+** set in the font itself. */
+static const char design_families[] =
+    "<match target=\"font\"><test name=\"family\"><string>LM Roman %d"
+    "</string></test><edit name=\"family\" mode=\"prepend_first\">"
+    "<string>LM Roman %d</string></edit></match>\n";
+
 static bool
 is_dir(const char *path)
 {
@@ -118,6 +130,7 @@ env_set(const char *name)
 static bool
 config_text(char *buf, size_t cap)
 {
+    static const int designs[] = { 5, 6, 7, 8, 9, 12, 17 };
     size_t i, len;
     int n = snprintf(buf, cap, "<?xml version=\"1.0\"?>\n<fontconfig>\n");
     if (n < 0 || (size_t)n >= cap)
@@ -135,8 +148,19 @@ config_text(char *buf, size_t cap)
             return false;
         len += (size_t)n;
     }
-    n = snprintf(buf + len, cap - len, "%s%s%s</fontconfig>\n", cache_dirs,
+    n = snprintf(buf + len, cap - len, "%s%s%s", cache_dirs,
                  select_families, synthetic_rules);
+    if (n < 0 || (size_t)n >= cap - len)
+        return false;
+    len += (size_t)n;
+    for (i = 0; i < sizeof designs / sizeof designs[0]; i++) {
+        n = snprintf(buf + len, cap - len, design_families, designs[i],
+                     designs[i]);
+        if (n < 0 || (size_t)n >= cap - len)
+            return false;
+        len += (size_t)n;
+    }
+    n = snprintf(buf + len, cap - len, "</fontconfig>\n");
     return n >= 0 && (size_t)n < cap - len;
 }
 
@@ -144,7 +168,7 @@ const char *
 cf__tool_fonts_init(void)
 {
     static const char *which = NULL;
-    char text[4096];
+    char text[8192];
     FcConfig *config;
 
     if (which != NULL)

@@ -403,18 +403,29 @@ label_points(lua_State *L, cf_figure_t *fig, int opts, const double *pts,
         lua_Integer arg = start + (lua_Integer)i;
         cf_style_t ls = base;
         const char *text = item_label(L, opts, i, &arg, 1);
-        /* label_place: one place for all, or a table with one per point */
+        /* label_place: one place for all, a table with one per point, or
+        ** a function(i, x, y) of the label's index (as labels gets it)
+        ** and point returning a place or nil */
         int t = cf__lua_field(L, opts, "label_place");
-        if (t == LUA_TTABLE)
+        if (t == LUA_TTABLE) {
             t = lua_geti(L, -1, (lua_Integer)i + 1);
+        } else if (t == LUA_TFUNCTION) {
+            lua_pushinteger(L, start + (lua_Integer)i);
+            lua_pushnumber(L, pts[2 * i]);
+            lua_pushnumber(L, pts[2 * i + 1]);
+            lua_call(L, 3, 1);
+            t = lua_type(L, -1);
+        }
         if (t == LUA_TSTRING) {
             cf_diag_clear(&diag);
             if (cf_place_from_name(lua_tostring(L, -1), &ls.place, &diag))
                 luaL_error(L, "%s: label_place: %s", fn, diag.msg);
             ls.set |= CF_STYLE_PLACE;
         } else if (t != LUA_TNIL) {
-            luaL_error(L, "%s: label_place is a place (\"ne\") or a table "
-                       "of places, one per point", fn);
+            luaL_error(L, "%s: label_place is a place (\"ne\"), a table "
+                       "of places, one per point, or a function(i, x, y) "
+                       "returning a place (label %d got a %s)", fn,
+                       (int)(start + (lua_Integer)i), lua_typename(L, t));
         }
         if (text != NULL) {
             cf_diag_clear(&diag);

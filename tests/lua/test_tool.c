@@ -487,6 +487,32 @@ test_every_figure_method(void **state)
     assert_int_equal(count_files(r->dir), 5);
 }
 
+/* label_place as a function(i, x, y): the figure is the one drawn with the
+** table of the places it returns, byte for byte but for the <title>. */
+static void
+test_label_place_function(void **state)
+{
+    result *r = *state;
+    const char *args[] = { "render", src("label_place_fn.lua"), "-f", "svg",
+                           "--only", "place-table,place-fn", NULL };
+    static char a[65536], b[65536];
+    char path[600];
+    const char *ta, *tb;
+    run_tool(r, args);
+    assert_int_equal(r->status, 0);
+    assert_string_equal(r->out, "label_place function: ok\n");
+    snprintf(path, sizeof path, "%s/place-table.svg", r->dir);
+    slurp(path, a, sizeof a);
+    snprintf(path, sizeof path, "%s/place-fn.svg", r->dir);
+    slurp(path, b, sizeof b);
+    ta = strstr(a, "</title>");
+    tb = strstr(b, "</title>");
+    assert_non_null(ta);
+    assert_non_null(tb);
+    assert_true(strlen(ta) > 1000);   /* the labels' glyphs are in it */
+    assert_string_equal(ta, tb);
+}
+
 /* ---- the sandbox -------------------------------------------------------- */
 
 static void
@@ -726,6 +752,7 @@ main(int argc, char **argv)
         T(test_list_and_only),
         T(test_gallery),
         T(test_every_figure_method),
+        T(test_label_place_function),
         T(test_hostile_os),
         T(test_hostile_io),
         T(test_hostile_require),

@@ -152,6 +152,7 @@ cf__osrc_init_offset(cf__osrc_t *s, const cf_bezier_t *c, double d)
     s->scale = cf__deriv_scale(c);
     if (!(s->scale > 0.0))
         s->scale = 1.0;
+    s->cusp_a = s->cusp_b = -1.0;
 }
 
 void
@@ -167,6 +168,7 @@ cf__osrc_init_arc(cf__osrc_t *s, double cx, double cy, double r, double a0,
     s->a0 = a0;
     s->sweep = sweep;
     s->scale = r;
+    s->cusp_a = s->cusp_b = -1.0;
 }
 
 /* Point at t (side: which limit where c' = 0) and travel direction u
@@ -680,6 +682,21 @@ make_cubic(const frame *f, const double *u0, const double *u1, double d0,
     pts[7] = f->p3[1];
 }
 
+/* The candidate with arm d0 and d1 = N(d0) / D(d0) from the area, if that
+** is in [0, ARM_MAX], appended to cand. */
+static void
+area_candidate(const frame *f, const double *u0, const double *u1,
+               const double *N, const double *D, double d0,
+               double cand[][8], int *nc)
+{
+    double den = D[0] + D[1] * d0, d1;
+    if (fabs(den) < 1e-12)
+        return;
+    d1 = (N[0] + N[1] * d0) / den;
+    if (d1 >= 0.0 && d1 <= ARM_MAX)
+        make_cubic(f, u0, u1, d0, d1, cand[(*nc)++]);
+}
+
 /* The candidate cubics of the Levien fit plus the fallbacks. */
 static cf_status_t
 levien_candidates(const cf__osrc_t *s, double a, double b,
@@ -757,15 +774,31 @@ levien_candidates(const cf__osrc_t *s, double a, double b,
         st = cf__bp_roots(bern, 6, roots, 16, &nr);
         if (st != CF_STATUS_OK)
             return st;
-        for (size_t k = 0; k < nr && nc < MAX_CAND - 4; k++) {
-            double d0 = roots[k] * ARM_MAX;
-            double den = D[0] + D[1] * d0, d1;
-            if (fabs(den) < 1e-12)
-                continue;
-            d1 = (N[0] + N[1] * d0) / den;
-            if (!(d1 >= 0.0 && d1 <= ARM_MAX))
-                continue;
-            make_cubic(&f, u0, u1, d0, d1, cand[nc++]);
+        for (size_t k = 0; k < nr && nc < MAX_CAND - 4; k++)
+            area_candidate(&f, u0, u1, N, D, roots[k] * ARM_MAX, cand, &nc);
+        /* where two roots of the moment equation have just merged and
+        ** left the real line, |F| keeps a local minimum near zero: the
+        ** arms there match the area exactly and the moment nearly, and
+        ** fit about as well as the lost pair (without them the error
+        ** jumps as the piece grows past the merge) */
+        {
+            double dbern[6], crit[8];
+            size_t ncr = 0;
+            cf__bp_deriv(bern, 6, dbern);
+            st = cf__bp_roots(dbern, 5, crit, 8, &ncr);
+            if (st != CF_STATUS_OK)
+                return st;
+            for (size_t k = 0; k < ncr && nc < MAX_CAND - 4; k++) {
+                double x = crit[k], h = 1e-3;
+                double fx = cf__bp_eval(bern, 6, x);
+                double fl = cf__bp_eval(bern, 6, fmax(0.0, x - h));
+                double fr = cf__bp_eval(bern, 6, fmin(1.0, x + h));
+                /* a local minimum of |F| that is not a root */
+                if (fx > 0.0 ? fl > fx && fr > fx
+                             : fx < 0.0 && fl < fx && fr < fx)
+                    area_candidate(&f, u0, u1, N, D, x * ARM_MAX, cand,
+                                   &nc);
+            }
         }
         /* one arm zero, the other from the area */
         if (fabs(D[0]) > 1e-12) {
@@ -946,6 +979,228 @@ polish_arms(const cf__osrc_t *s, double a, double b, double target,
     return CF_STATUS_OK;
 }
 
+/* ---- a piece that ends at an offset cusp ----------------------------------- */
+
+/* The offset near a cusp at t_c is o_c + A tau^2 + B tau^3 + ... (tau =
+** t - t_c, A along the cusp tangent): a semicubical cusp.  A cubic with a
+** zero arm there, P0 + 3 (P2 - P0) s^2 + (...) s^3, has that very form, so
+** the best cusp-side control point lies close to the cusp; the area and
+** moment equations miss it by a factor 5-20 in error.  At a cusp the chain
+** need only be continuous (the offset itself turns back there), so the
+** cusp-side control point is free in the plane; the arm at a non-cusp end
+** keeps its tangent (G1 with the neighbour).  These 3 (4 with cusps at both
+** ends) unknowns are optimised on the coarse measured error by a
+** Nelder-Mead search; the result is measured again like any fit. */
+
+#define CUSP_EVALS 150          /* error evaluations of the search */
+#define ROUND_EVALS 60          /* of one Nelder-Mead round */
+#define CUSP_RANGE 10.0         /* no search above this error / tolerance */
+
+typedef struct armfit {
+    const cf__osrc_t *s;
+    double a, b;
+    double p0[2], p3[2], u0[2], u1[2];
+    int free0, free1;           /* the control point at that end is free */
+} armfit;
+
+/* The cubic of the unknowns x (arm lengths along the end tangents, then
+** the normal offsets of the free control points) into pts, and its coarse
+** error (infinite for a negative arm). */
+static cf_status_t
+arm_error(const armfit *af, const double *x, double *pts, double *err)
+{
+    double n0 = af->free0 ? x[2] : 0.0, n1 = af->free1 ? x[2 + af->free0]
+                                                       : 0.0;
+    pts[0] = af->p0[0];
+    pts[1] = af->p0[1];
+    pts[2] = af->p0[0] + x[0] * af->u0[0] - n0 * af->u0[1];
+    pts[3] = af->p0[1] + x[0] * af->u0[1] + n0 * af->u0[0];
+    pts[4] = af->p3[0] - x[1] * af->u1[0] - n1 * af->u1[1];
+    pts[5] = af->p3[1] - x[1] * af->u1[1] + n1 * af->u1[0];
+    pts[6] = af->p3[0];
+    pts[7] = af->p3[1];
+    if (!(x[0] >= 0.0 && x[1] >= 0.0)) {
+        *err = INFINITY;
+        return CF_STATUS_OK;
+    }
+    return cf__fit_error(af->s, af->a, af->b, pts, K_COARSE, err);
+}
+
+/* One Nelder-Mead search from x0 (error *f0) with initial steps step (the
+** arms) and 0.01 step (the normal offsets), at most *evals more errors;
+** the best point found replaces x0 and *f0. */
+static cf_status_t
+nm_round(const armfit *af, int n, double step, double target, double chord,
+         double *x0, double *f0, int *evals)
+{
+    double x[5][4], f[5], tp[8];
+    int lo = 0, budget = *evals + ROUND_EVALS;
+    cf_status_t st;
+    memcpy(x[0], x0, sizeof x[0]);
+    f[0] = *f0;
+    for (int i = 1; i <= n; i++) {
+        memcpy(x[i], x0, sizeof x[0]);
+        if (i <= 2)
+            /* a long arm shortened (the cusp-side optimum is small) */
+            x[i][i - 1] += x0[i - 1] > step ? -step : step;
+        else
+            x[i][i - 1] += 0.01 * step;
+        st = arm_error(af, x[i], tp, &f[i]);
+        if (st != CF_STATUS_OK)
+            return st;
+    }
+    *evals += n;
+    while (*evals < budget) {
+        int hi = 0, nh;
+        double c[4] = { 0, 0, 0, 0 }, r[4], fr, size = 0.0;
+        lo = 0;
+        for (int i = 1; i <= n; i++) {
+            if (f[i] < f[lo])
+                lo = i;
+            if (f[i] > f[hi])
+                hi = i;
+        }
+        if (hi == lo)
+            hi = lo == 0 ? 1 : 0;
+        nh = lo;
+        for (int i = 0; i <= n; i++)
+            if (i != hi && f[i] >= f[nh])
+                nh = i;
+        for (int i = 0; i <= n; i++)
+            for (int k = 0; k < n; k++)
+                size = fmax(size, fabs(x[i][k] - x[lo][k]));
+        if (f[lo] <= target || size < 1e-7 * chord)
+            break;
+        for (int i = 0; i <= n; i++)
+            if (i != hi)
+                for (int k = 0; k < n; k++)
+                    c[k] += x[i][k] / n;
+        for (int k = 0; k < n; k++)
+            r[k] = 2.0 * c[k] - x[hi][k];
+        st = arm_error(af, r, tp, &fr);
+        ++*evals;
+        if (st != CF_STATUS_OK)
+            return st;
+        if (fr < f[lo]) {
+            double e[4], fe;
+            for (int k = 0; k < n; k++)
+                e[k] = 3.0 * c[k] - 2.0 * x[hi][k];
+            st = arm_error(af, e, tp, &fe);
+            ++*evals;
+            if (st != CF_STATUS_OK)
+                return st;
+            memcpy(x[hi], fe < fr ? e : r, sizeof r);
+            f[hi] = fmin(fe, fr);
+        } else if (fr < f[nh]) {
+            memcpy(x[hi], r, sizeof r);
+            f[hi] = fr;
+        } else {
+            /* contract towards the better of the worst and its reflection,
+            ** else shrink towards the best */
+            double k[4], fk;
+            const double *w = fr < f[hi] ? r : x[hi];
+            for (int q = 0; q < n; q++)
+                k[q] = 0.5 * (c[q] + w[q]);
+            st = arm_error(af, k, tp, &fk);
+            ++*evals;
+            if (st != CF_STATUS_OK)
+                return st;
+            if (fk < fmin(fr, f[hi])) {
+                memcpy(x[hi], k, sizeof k);
+                f[hi] = fk;
+            } else {
+                for (int i = 0; i <= n; i++) {
+                    if (i == lo)
+                        continue;
+                    for (int q = 0; q < n; q++)
+                        x[i][q] = 0.5 * (x[i][q] + x[lo][q]);
+                    st = arm_error(af, x[i], tp, &f[i]);
+                    ++*evals;
+                    if (st != CF_STATUS_OK)
+                        return st;
+                }
+            }
+        }
+    }
+    lo = 0;
+    for (int i = 1; i <= n; i++)
+        if (f[i] < f[lo])
+            lo = i;
+    memcpy(x0, x[lo], sizeof x[0]);
+    *f0 = f[lo];
+    return CF_STATUS_OK;
+}
+
+/* Nelder-Mead on the unknowns of pts (see arm_error) from its current
+** arms, lowering *err (the coarse error of pts) until it is at most
+** target or CUSP_EVALS errors have been measured; the error is not smooth
+** (a maximum), so a search that stalls is restarted from its best point
+** with a fresh, smaller simplex. */
+static cf_status_t
+cusp_fit(const cf__osrc_t *s, double a, double b, bool free0, bool free1,
+         double target, double *pts, double *err)
+{
+    armfit af;
+    double x[4] = { 0, 0, 0, 0 }, fx, tp[8], chord, step;
+    int n, evals = 1;
+    cf_status_t st;
+    af.s = s;
+    af.a = a;
+    af.b = b;
+    af.free0 = free0;
+    af.free1 = free1;
+    n = 2 + af.free0 + af.free1;
+    src_point_dir(s, a, 1, af.p0, af.u0);
+    src_point_dir(s, b, -1, af.p3, af.u1);
+    chord = hypot(af.p3[0] - af.p0[0], af.p3[1] - af.p0[1]);
+    if (!(chord > 1e-13 * s->scale))
+        return CF_STATUS_OK;
+    /* the current arms (projections: a zero arm has no direction) */
+    x[0] = fmax(0.0, (pts[2] - pts[0]) * af.u0[0] +
+                         (pts[3] - pts[1]) * af.u0[1]);
+    x[1] = fmax(0.0, (pts[6] - pts[4]) * af.u1[0] +
+                         (pts[7] - pts[5]) * af.u1[1]);
+    st = arm_error(&af, x, tp, &fx);
+    if (st != CF_STATUS_OK)
+        return st;
+    step = 0.1 * fmax(chord, fmax(x[0], x[1]));
+    /* the semicubical start: the cusp-side arms zero, the other kept */
+    {
+        double y[4], fy, ystep = step;
+        memcpy(y, x, sizeof y);
+        if (free0)
+            y[0] = 0.0;
+        if (free1)
+            y[1] = 0.0;
+        st = arm_error(&af, y, tp, &fy);
+        evals++;
+        if (st != CF_STATUS_OK)
+            return st;
+        if (fy > target) {
+            st = nm_round(&af, n, ystep, target, chord, y, &fy, &evals);
+            if (st != CF_STATUS_OK)
+                return st;
+        }
+        if (fy < fx) {
+            memcpy(x, y, sizeof y);
+            fx = fy;
+        }
+    }
+    while (evals < CUSP_EVALS && fx > target && step > 1e-7 * chord) {
+        double before = fx;
+        st = nm_round(&af, n, step, target, chord, x, &fx, &evals);
+        if (st != CF_STATUS_OK)
+            return st;
+        /* the next simplex about the size of this round's progress */
+        step = fmin(0.5 * step, fmax(0.1 * step, fabs(x[0]) * 0.05));
+        if (!(fx < before))
+            step *= 0.1;
+    }
+    if (fx < *err)
+        return arm_error(&af, x, pts, err);
+    return CF_STATUS_OK;
+}
+
 cf_status_t
 cf__fit_piece(const cf__osrc_t *s, double a, double b,
               cf_offset_method_t method, double reject, cf__fit_t *out)
@@ -960,6 +1215,8 @@ cf__fit_piece(const cf__osrc_t *s, double a, double b,
     } else {
         double cand[MAX_CAND][8], quick[MAX_CAND], qbest = INFINITY;
         int nc = 0, best = 0;
+        bool at_cusp = s->kind == 0 && s->d != 0.0 &&
+                       (a == s->cusp_a || b == s->cusp_b);
         st = levien_candidates(s, a, b, cand, &nc);
         if (st != CF_STATUS_OK)
             return st;
@@ -973,7 +1230,7 @@ cf__fit_piece(const cf__osrc_t *s, double a, double b,
                 return st;
             qbest = fmin(qbest, quick[i]);
         }
-        if (qbest > 2.0 * reject) {
+        if (qbest > (at_cusp ? CUSP_RANGE : 2.0) * reject) {
             for (int i = 0; i < nc; i++)
                 if (quick[i] == qbest)
                     best = i;
@@ -994,12 +1251,22 @@ cf__fit_piece(const cf__osrc_t *s, double a, double b,
             }
         }
         memcpy(out->pts, cand[best], sizeof out->pts);
-        /* just above the tolerance: polish the two arm lengths by a
-        ** pattern search on the measured error (offsets only: for the
-        ** curve itself, d = 0, it costs 4-7x the time and saves a piece
-        ** only at tight tolerances) */
-        if (be > reject && be < 1.5 * reject &&
-            (s->kind != 0 || s->d != 0.0)) {
+        if (at_cusp) {
+            /* at a cusp: the free control point and the arms optimised
+            ** (see cusp_fit); a candidate error more than CUSP_RANGE times
+            ** the tolerance is not brought within it */
+            if (be > 0.9 * reject && be < CUSP_RANGE * reject) {
+                st = cusp_fit(s, a, b, a == s->cusp_a, b == s->cusp_b,
+                              0.9 * reject, out->pts, &be);
+                if (st != CF_STATUS_OK)
+                    return st;
+            }
+        } else if (be > reject && be < 1.5 * reject &&
+                   (s->kind != 0 || s->d != 0.0)) {
+            /* just above the tolerance: polish the two arm lengths by a
+            ** pattern search on the measured error (offsets only: for the
+            ** curve itself, d = 0, it costs 4-7x the time and saves a
+            ** piece only at tight tolerances) */
             st = polish_arms(s, a, b, 0.9 * reject, out->pts, &be);
             if (st != CF_STATUS_OK)
                 return st;

@@ -44,6 +44,10 @@ typedef struct cf__osrc {
     double sgn;             /* travel direction of o relative to c' (+-1) */
     double scale;           /* size of c' (for "vanishes" tests) */
     double cx, cy, r, a0, sweep;   /* arc: centre, radius, angles */
+    /* offset cusps at the ends of the interval being covered (-1: none);
+    ** a piece that ends exactly at one is fitted with both arms optimised
+    ** on the measured error (the offset is a semicubical cusp there) */
+    double cusp_a, cusp_b;
 } cf__osrc_t;
 
 /* Initialise an offset source of c at d (dim 2); scale from the points. */

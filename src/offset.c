@@ -393,6 +393,15 @@ cmp_double(const void *x, const void *y)
     return (a > b) - (a < b);
 }
 
+static bool
+in_list(const double *v, size_t n, double x)
+{
+    for (size_t i = 0; i < n; i++)
+        if (v[i] == x)
+            return true;
+    return false;
+}
+
 /* Offset of one Bézier piece appended to the chain. */
 static cf_status_t
 offset_piece(driver *dr, const cf_bezier_t *c)
@@ -451,6 +460,8 @@ offset_piece(driver *dr, const cf_bezier_t *c)
                                    (sp * sp * sp)
                        : 1.0;
             s.sgn = f < 0 ? -1.0 : 1.0;
+            s.cusp_a = in_list(cusps, nc, a) ? a : -1.0;
+            s.cusp_b = in_list(cusps, nc, b) ? b : -1.0;
             if (dr->method == CF_OFFSET_TILLER_HANSON)
                 st = fit_bisect(dr, &s, a, b, b - a, 0);
             else

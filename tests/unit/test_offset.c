@@ -774,6 +774,150 @@ test_tricky_cubics(void **state)
     }
 }
 
+/* Skia's "overstroke" cubic: at d = +-250 the offset has one cusp. */
+static const double overstroke[8] = { 0, 0, 25, 75, 75, -50, 100, 0 };
+
+/* Two-sided distance between the cubic P and the exact offset on [a, b]
+** (ctx x), n samples per side, nearest points by 400 samples plus
+** golden-section search.  The exact offset is sampled at parameters
+** clustered quadratically towards a cusp end (cusp: 0 none, -1 at a, +1 at
+** b), where the semicubical tip is: the last of n samples is n^-2 of the
+** piece from the cusp. */
+static double
+piece_error(const ofs_ctx *x, const double *P, int n, int cusp)
+{
+    double e = 0.0;
+    for (int j = 0; j <= n; j++) {
+        double p[2], u = (double)j / n, w = u;
+        if (cusp > 0)
+            w = 1.0 - (1.0 - u) * (1.0 - u);
+        else if (cusp < 0)
+            w = u * u;
+        offset_fn(x, w, p);
+        e = fmax(e, dist_to(cubic_fn, P, 400, p));
+        cubic_at(P, u, p);
+        e = fmax(e, dist_to(offset_fn, x, 400, p));
+    }
+    return e;
+}
+
+static void
+test_overstroke_counts_and_errors(void **state)
+{
+    /* the issue's targets at tol 1e-2 / 1e-3 / 1e-4: <= 7 / 9 / 14 pieces
+    ** on either side, with every piece within tolerance by this file's
+    ** own dense measure (2000 samples per side and piece, clustered at the
+    ** cusp), not the library's; what the library reaches now (6/8/13 and
+    ** 5/9/13) is checked too, as a regression bound */
+    static const int target[3] = { 7, 9, 14 };
+    static const int now[2][3] = { { 6, 8, 13 }, { 5, 9, 13 } };
+    const double tols[3] = { 1e-2, 1e-3, 1e-4 };
+    cf_bezier_t *c = cubic(overstroke);
+    (void)state;
+    for (int side = 0; side < 2; side++) {
+        double d = side == 0 ? 250.0 : -250.0, tc;
+        size_t nc = 0;
+        assert_int_equal(cf_offset_cusps(c, d, &tc, 1, &nc, NULL),
+                         CF_STATUS_OK);
+        assert_int_equal(nc, 1);
+        for (int k = 0; k < 3; k++) {
+            cf_offset_options_t opt;
+            cf_cubics_t *raw = NULL;
+            cf_offset_report_t rep;
+            double emax = 0.0;
+            cf_offset_options_init(&opt);
+            opt.tolerance = tols[k];
+            assert_int_equal(cf_bezier_offset(c, d, &opt, &raw, NULL, &rep,
+                                              NULL),
+                             CF_STATUS_OK);
+            assert_chain_sane(raw, 1e-9);
+            assert_int_equal(rep.cusps, 1);
+            assert_true((int)rep.segments <= target[k]);
+            assert_true((int)rep.segments <= now[side][k]);
+            assert_true(rep.converged && rep.max_error <= tols[k]);
+            for (size_t i = 0; i < raw->count; i++) {
+                ofs_ctx x = { c, d, raw->t[i], raw->t[i + 1] };
+                int cusp = raw->t[i] == tc ? -1 : raw->t[i + 1] == tc ? 1 : 0;
+                emax = fmax(emax, piece_error(&x, raw->pts + 8 * i,
+                                              cusp != 0 ? 2000 : 200, cusp));
+            }
+            assert_true(emax <= tols[k]);
+            /* the report is the measured error: it agrees with this
+            ** independent measure to 2 % */
+            tu_assert_close(emax, rep.max_error, 0.02, tols[k] * 1e-3);
+            cf_cubics_destroy(raw);
+        }
+    }
+    cf_bezier_destroy(c);
+}
+
+static void
+test_cusp_side_pieces(void **state)
+{
+    /* the pieces on either side of an offset cusp: they end exactly at the
+    ** cusp parameter, meet there (C0) at the exact cusp point to within the
+    ** tolerance, and every other join of the chain is G1 (the end tangents
+    ** of the two pieces parallel and pointing the same way) */
+    const double ds[3] = { 250.0, -250.0, -45.0 };
+    const double tols[2] = { 1e-3, 1e-4 };
+    (void)state;
+    for (int m = 0; m < 3; m++) {
+        cf_bezier_t *c = cubic(m < 2 ? overstroke : arch);
+        double tcs[2];
+        size_t nc = 0;
+        assert_int_equal(cf_offset_cusps(c, ds[m], tcs, 2, &nc, NULL),
+                         CF_STATUS_OK);
+        assert_int_equal(nc, m < 2 ? 1 : 2);
+        for (int k = 0; k < 2; k++) {
+            cf_offset_options_t opt;
+            cf_cubics_t *raw = NULL;
+            size_t found = 0;
+            cf_offset_options_init(&opt);
+            opt.tolerance = tols[k];
+            assert_int_equal(cf_bezier_offset(c, ds[m], &opt, &raw, NULL,
+                                              NULL, NULL),
+                             CF_STATUS_OK);
+            assert_chain_sane(raw, 1e-9);
+            for (size_t i = 1; i < raw->count; i++) {
+                const double *L = raw->pts + 8 * (i - 1), *R = L + 8;
+                bool at_cusp = false;
+                for (size_t j = 0; j < nc; j++)
+                    if (raw->t[i] == tcs[j])
+                        at_cusp = true;
+                if (at_cusp) {
+                    double o[2];
+                    found++;
+                    assert_int_equal(cf_offset_point(c, raw->t[i], ds[m], o),
+                                     CF_STATUS_OK);
+                    assert_true(hypot(L[6] - R[0], L[7] - R[1]) <= 1e-9);
+                    assert_true(hypot(R[0] - o[0], R[1] - o[1]) <= tols[k]);
+                } else {
+                    /* tangents from the nearest distinct control points */
+                    const double *l = L + 4, *r = R + 2;
+                    double lx, ly, rx, ry, cr, dt;
+                    if (hypot(L[6] - l[0], L[7] - l[1]) == 0.0)
+                        l = L + 2;
+                    if (hypot(r[0] - R[0], r[1] - R[1]) == 0.0)
+                        r = R + 4;
+                    lx = L[6] - l[0];
+                    ly = L[7] - l[1];
+                    rx = r[0] - R[0];
+                    ry = r[1] - R[1];
+                    cr = lx * ry - ly * rx;
+                    dt = lx * rx + ly * ry;
+                    /* sin of the angle below 1e-6 */
+                    assert_true(fabs(cr) <=
+                                1e-6 * hypot(lx, ly) * hypot(rx, ry));
+                    assert_true(dt > 0.0);
+                }
+            }
+            assert_int_equal(found, nc);
+            cf_cubics_destroy(raw);
+        }
+        cf_bezier_destroy(c);
+    }
+}
+
 static void
 test_pieces_and_joins(void **state)
 {
@@ -992,6 +1136,8 @@ main(void)
         cmocka_unit_test(test_tiller_hanson_baseline),
         cmocka_unit_test(test_degenerate_input),
         cmocka_unit_test(test_tricky_cubics),
+        cmocka_unit_test(test_overstroke_counts_and_errors),
+        cmocka_unit_test(test_cusp_side_pieces),
         cmocka_unit_test(test_pieces_and_joins),
         cmocka_unit_test(test_bad_arguments),
         cmocka_unit_test(test_out_of_memory),

@@ -801,11 +801,7 @@ levien_candidates(const cf__osrc_t *s, double a, double b,
             }
         }
         /* one arm zero, the other from the area */
-        if (fabs(D[0]) > 1e-12) {
-            double d1 = N[0] / D[0];
-            if (d1 >= 0.0 && d1 <= ARM_MAX)
-                make_cubic(&f, u0, u1, 0.0, d1, cand[nc++]);
-        }
+        area_candidate(&f, u0, u1, N, D, 0.0, cand, &nc);
         if (fabs(A.q[1][0]) > 1e-12) {
             double d0 = (At - A.q[0][0]) / A.q[1][0];
             if (d0 >= 0.0 && d0 <= ARM_MAX)
@@ -1166,7 +1162,7 @@ cusp_fit(const cf__osrc_t *s, double a, double b, bool free0, bool free1,
     step = 0.1 * fmax(chord, fmax(x[0], x[1]));
     /* the semicubical start: the cusp-side arms zero, the other kept */
     {
-        double y[4], fy, ystep = step;
+        double y[4], fy;
         memcpy(y, x, sizeof y);
         if (free0)
             y[0] = 0.0;
@@ -1177,7 +1173,7 @@ cusp_fit(const cf__osrc_t *s, double a, double b, bool free0, bool free1,
         if (st != CF_STATUS_OK)
             return st;
         if (fy > target) {
-            st = nm_round(&af, n, ystep, target, chord, y, &fy, &evals);
+            st = nm_round(&af, n, step, target, chord, y, &fy, &evals);
             if (st != CF_STATUS_OK)
                 return st;
         }

@@ -118,3 +118,16 @@ cf_bezier_hull(const cf_bezier_t *c, size_t *idx, size_t *hull_count,
     cf__free(pts);
     return st;
 }
+
+cf_status_t
+cf_check_finite_points(const double *pts, size_t count, size_t dim,
+                       size_t stride, const char *what, cf_diag_t *diag)
+{
+    if (count > 0 && (pts == NULL || dim == 0 || stride < dim))
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "check of %s coordinates: no array, dim 0 or "
+                         "stride %zu < dim %zu",
+                         what != NULL ? what : "point", stride, dim);
+    return cf__check_finite_points(pts, count, dim, stride,
+                                   what != NULL ? what : "point", diag);
+}

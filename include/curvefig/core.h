@@ -68,6 +68,31 @@ void cf_get_allocator(cf_allocator_t *allocator);
 ** is released with cf_free. cf_free(NULL) is harmless. */
 void cf_free(void *ptr);
 
+/*
+** Allocation through the hook, for code built on curvefig (the renderer,
+** the figure language) whose memory should be accounted with the curves':
+** cf_malloc(size); cf_calloc(n, size) zeroed; cf_alloc_array(n, size) and
+** cf_realloc_array(ptr, n, size) check n * size for overflow.  Each returns
+** NULL on failure (cf_realloc_array leaves ptr untouched then).  Memory from
+** them is released with cf_free.
+*/
+void *cf_malloc(size_t size);
+void *cf_calloc(size_t n, size_t size);
+void *cf_alloc_array(size_t n, size_t size);
+void *cf_realloc_array(void *ptr, size_t n, size_t size);
+
+/*
+** Fill a diag the way curvefig's own functions do, for code built on
+** curvefig that reports through the same record: if diag is not NULL and
+** still OK, its status, index and printf-formatted message are set.
+** Returns status, so that `return cf_diag_set(diag, ...)` reads naturally.
+*/
+#if defined(__GNUC__)
+__attribute__((format(printf, 4, 5)))
+#endif
+cf_status_t cf_diag_set(cf_diag_t *diag, cf_status_t status, long index,
+                        const char *fmt, ...);
+
 #ifdef __cplusplus
 }
 #endif

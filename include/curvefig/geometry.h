@@ -31,6 +31,16 @@ cf_status_t cf_convex_hull_2d(const double *pts, size_t count, size_t stride,
 cf_status_t cf_bezier_hull(const cf_bezier_t *c, size_t *idx,
                            size_t *hull_count, cf_diag_t *diag);
 
+/*
+** Check that count points of dim coordinates (point i at pts[i * stride])
+** are finite.  NOT_FINITE names the first bad one: "<what> 3 has
+** coordinate 2 = nan; coordinates must be finite", where `what` names the
+** array ("point", "vertex").
+*/
+cf_status_t cf_check_finite_points(const double *pts, size_t count,
+                                   size_t dim, size_t stride,
+                                   const char *what, cf_diag_t *diag);
+
 #ifdef __cplusplus
 }
 #endif

@@ -65,6 +65,46 @@ test_core(void **state)
     cf_get_allocator(&a);
     assert_non_null(a.realloc);
     cf_free(NULL);
+    /* the allocation helpers: overflow and zero sizes, never a crash */
+    assert_null(cf_alloc_array(SIZE_MAX, 2));
+    assert_null(cf_calloc(SIZE_MAX / 2, 4));
+    assert_null(cf_malloc(SIZE_MAX));
+    {
+        double *p = cf_alloc_array(4, sizeof *p);
+        assert_non_null(p);
+        assert_null(cf_realloc_array(p, SIZE_MAX, 2));   /* p kept */
+        p = cf_realloc_array(p, 8, sizeof *p);
+        assert_non_null(p);
+        cf_free(p);
+        p = cf_realloc_array(NULL, 2, sizeof *p);
+        assert_non_null(p);
+        cf_free(p);
+        p = cf_calloc(3, sizeof *p);
+        assert_non_null(p);
+        assert_true(p[0] == 0.0 && p[2] == 0.0);
+        cf_free(p);
+        cf_free(cf_malloc(0));
+    }
+    /* cf_diag_set: the first error is kept, NULL is harmless */
+    IS(CF_STATUS_DOMAIN, cf_diag_set(NULL, CF_STATUS_DOMAIN, 3, "x %d", 1));
+    cf_diag_clear(&diag);
+    IS(CF_STATUS_DOMAIN, cf_diag_set(&diag, CF_STATUS_DOMAIN, 3, "u = %g", 2.5));
+    IS(CF_STATUS_IO, cf_diag_set(&diag, CF_STATUS_IO, 4, "second"));
+    assert_int_equal(diag.status, CF_STATUS_DOMAIN);
+    assert_int_equal(diag.index, 3);
+    assert_string_equal(diag.msg, "u = 2.5");
+    /* cf_check_finite_points */
+    IS(CF_STATUS_OK, cf_check_finite_points(P4, 4, 2, 2, "point", NULL));
+    IS(CF_STATUS_OK, cf_check_finite_points(NULL, 0, 2, 2, "point", NULL));
+    IS(CF_STATUS_INVALID_ARG, cf_check_finite_points(NULL, 2, 2, 2, "p", NULL));
+    IS(CF_STATUS_INVALID_ARG, cf_check_finite_points(P4, 2, 2, 1, "p", NULL));
+    IS(CF_STATUS_INVALID_ARG, cf_check_finite_points(P4, 2, 0, 2, NULL, NULL));
+    cf_diag_clear(&diag);
+    IS(CF_STATUS_NOT_FINITE, cf_check_finite_points(
+           (const double[]){ 0, 1, 2, NAN }, 2, 2, 2, "vertex", &diag));
+    assert_int_equal(diag.index, 1);
+    assert_string_equal(diag.msg, "vertex 1 has coordinate 2 = nan; "
+                                  "coordinates must be finite");
 }
 
 static void

@@ -140,8 +140,8 @@ cf__tool_manifest_line(FILE *f, const char *name, const char *caption,
 
 /* ---- the gallery -------------------------------------------------------- */
 
-static void
-put_html(FILE *f, const char *s, size_t n)
+void
+cf__tool_put_html(FILE *f, const char *s, size_t n)
 {
     for (size_t i = 0; i < n && s[i] != '\0'; i++) {
         switch (s[i]) {
@@ -191,26 +191,26 @@ gallery_entry(FILE *out, char *line, char *group, size_t group_size)
     if (strlen(group) != plen || strncmp(group, name, plen) != 0) {
         snprintf(group, group_size, "%.*s", (int)plen, name);
         fputs("<h2>", out);
-        put_html(out, group, plen);
+        cf__tool_put_html(out, group, plen);
         fputs("</h2>\n", out);
     }
     fputs("<figure id=\"", out);
-    put_html(out, name, strlen(name));
+    cf__tool_put_html(out, name, strlen(name));
     fputs("\">", out);
     if (strstr(fmts, "svg") != NULL || strstr(fmts, "png") != NULL) {
         const char *img = strstr(fmts, "svg") != NULL ? "svg" : "png";
         fputs("<a href=\"", out);
-        put_html(out, name, strlen(name));
+        cf__tool_put_html(out, name, strlen(name));
         fprintf(out, ".%s\"><img src=\"", img);
-        put_html(out, name, strlen(name));
+        cf__tool_put_html(out, name, strlen(name));
         fprintf(out, ".%s\" alt=\"", img);
-        put_html(out, cap, strlen(cap));
+        cf__tool_put_html(out, cap, strlen(cap));
         fputs("\" loading=\"lazy\"></a>", out);
     }
     fputs("\n<figcaption><b>", out);
-    put_html(out, name, strlen(name));
+    cf__tool_put_html(out, name, strlen(name));
     fputs("</b> ", out);
-    put_html(out, cap, strlen(cap));
+    cf__tool_put_html(out, cap, strlen(cap));
     fputs("<br>", out);
     for (char *f = strtok(fmts, ","); f != NULL; f = strtok(NULL, ",")) {
         char upper[8];
@@ -219,7 +219,7 @@ gallery_entry(FILE *out, char *line, char *group, size_t group_size)
             upper[k] = (char)(f[k] >= 'a' && f[k] <= 'z' ? f[k] - 32 : f[k]);
         upper[k] = '\0';
         fputs(" <a href=\"", out);
-        put_html(out, name, strlen(name));
+        cf__tool_put_html(out, name, strlen(name));
         fprintf(out, ".%s\">%s</a>", f, upper);
     }
     fputs("</figcaption></figure>\n", out);

@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "checks.h"
 #include "help.h"
 
 static const char *const overview[] = {
@@ -21,8 +22,12 @@ static const char *const overview[] = {
     "  gallery -o INDEX.html MANIFEST...\n",
     "                      write an HTML page showing the figures listed in\n",
     "                      render manifests (see --manifest), in that order\n",
+    "  compare A B         compare two images (PNG or SVG) pixel by pixel\n",
+    "  test SCRIPT... | DIR --references REF [--update]\n",
+    "                      check every figure against its reference image\n",
     "  help [TOPIC]        this text; TOPIC: render, run, list, gallery,\n",
-    "                      language (the figure language reference)\n",
+    "                      compare, test, language (the figure language\n",
+    "                      reference)\n",
     "  --version           print the version\n",
     "\n",
     "Options of render:\n",
@@ -268,6 +273,8 @@ cf__tool_help(const char *topic)
         put_lines(overview);
         return 0;
     }
+    if (cf__tool_checks_help(topic) == 0)
+        return 0;
     if (strcmp(topic, "language") == 0) {
         put_lines(language);
         return 0;
@@ -279,6 +286,6 @@ cf__tool_help(const char *topic)
         }
     }
     fprintf(stderr, "curvefig: no help on '%s'; topics: render, run, list, "
-            "gallery, language\n", topic);
+            "gallery, compare, test, language\n", topic);
     return 2;
 }

@@ -20,6 +20,8 @@ void cf__tool_discard_atomic(FILE *f, const char *path);
 /* One line of a render manifest: name TAB formats TAB caption. */
 void cf__tool_manifest_line(FILE *f, const char *name, const char *caption,
                             unsigned formats);
+/* Write the first n bytes of s (up to a NUL) with & < > " escaped. */
+void cf__tool_put_html(FILE *f, const char *s, size_t n);
 /* Write the HTML gallery `out` from manifests in the given order; returns
 ** the exit status. */
 int cf__tool_gallery(const char *out, const char *title,

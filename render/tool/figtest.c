@@ -20,7 +20,6 @@
 ** and lists every figure as new, changed or unchanged, and with DIR
 ** operands removes the references of figures that are gone.
 */
-#include <dirent.h>
 #include <errno.h>
 #include <stdarg.h>
 #include <stdbool.h>
@@ -31,6 +30,7 @@
 
 #include "checks.h"
 #include "curvefig/figure.h"
+#include "figtest.h"
 #include "imgfile.h"
 #include "report.h"
 #include "script.h"
@@ -51,9 +51,7 @@ typedef struct test_run {
     double dpi;
     double threshold;
     bool update;
-    bool whole_dirs;           /* every operand was a directory */
-    char **scripts;
-    size_t nscripts, capscripts;
+    cf__tool_scripts scripts;
     produced *figs;            /* the figures rendered */
     size_t nfigs, capfigs;
     cf__tool_failure *fails;
@@ -84,68 +82,6 @@ grow(void **p, size_t *cap, size_t n, size_t size)
     return 0;
 }
 
-static int
-add_script(test_run *t, const char *path)
-{
-    char *s;
-    if (grow((void **)&t->scripts, &t->capscripts, t->nscripts,
-             sizeof *t->scripts) != 0 || (s = strdup(path)) == NULL)
-        return -1;
-    t->scripts[t->nscripts++] = s;
-    return 0;
-}
-
-static int
-by_name(const void *a, const void *b)
-{
-    return strcmp(*(char *const *)a, *(char *const *)b);
-}
-
-static bool
-ends_with(const char *s, const char *tail)
-{
-    size_t n = strlen(s), m = strlen(tail);
-    return n > m && strcmp(s + n - m, tail) == 0;
-}
-
-/* The *.lua files of dir, in name order. */
-static int
-add_dir(test_run *t, const char *dir)
-{
-    DIR *d = opendir(dir);
-    struct dirent *e;
-    size_t first = t->nscripts;
-    if (d == NULL) {
-        fprintf(stderr, "curvefig: test: cannot read the directory %s: %s\n",
-                dir, strerror(errno));
-        return -1;
-    }
-    while ((e = readdir(d)) != NULL) {
-        char *p;
-        struct stat sb;
-        if (e->d_name[0] == '.' || !ends_with(e->d_name, ".lua"))
-            continue;
-        p = cf__tool_join(dir, e->d_name);
-        if (p == NULL || (stat(p, &sb) == 0 && S_ISREG(sb.st_mode) &&
-                          add_script(t, p) != 0)) {
-            free(p);
-            closedir(d);
-            fprintf(stderr, "curvefig: test: out of memory\n");
-            return -1;
-        }
-        free(p);
-    }
-    closedir(d);
-    if (t->nscripts == first) {
-        fprintf(stderr, "curvefig: test: %s holds no figure script "
-                "(*.lua)\n", dir);
-        return -1;
-    }
-    qsort(t->scripts + first, t->nscripts - first, sizeof *t->scripts,
-          by_name);
-    return 0;
-}
-
 /* 0, or the exit status to return (-1: help printed). */
 static int
 parse(int argc, char **argv, test_run *t)
@@ -154,10 +90,8 @@ parse(int argc, char **argv, test_run *t)
     t->outdir = "curvefig-test";
     t->dpi = CF__IMGCMP_DPI;
     t->threshold = CF__IMGCMP_THRESHOLD;
-    t->whole_dirs = true;
     for (int i = 1; i < argc; i++) {
         const char *o = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        struct stat sb;
         if (strcmp(o, "-h") == 0 || strcmp(o, "--help") == 0) {
             cf__tool_checks_help("test");
             return -1;
@@ -166,16 +100,8 @@ parse(int argc, char **argv, test_run *t)
             continue;
         } else if (o[0] != '-' || o[1] == '\0') {
             operands = true;
-            if (stat(o, &sb) != 0)
-                return usage("cannot read ", o);
-            if (S_ISDIR(sb.st_mode)) {
-                if (add_dir(t, o) != 0)
-                    return ERROR;
-            } else {
-                t->whole_dirs = false;
-                if (add_script(t, o) != 0)
-                    return ERROR;
-            }
+            if (cf__tool_scripts_add(&t->scripts, o) != 0)
+                return ERROR;
             continue;
         } else if (v == NULL && (strcmp(o, "--references") == 0 ||
                                  strcmp(o, "-o") == 0 ||
@@ -404,81 +330,8 @@ check_pair(test_run *t, const char *script, const char *name,
     return res.match;
 }
 
-/* Copy from to `to` through a temporary name. */
-static int
-copy_atomic(const char *from, const char *to)
-{
-    char buf[65536];
-    size_t n;
-    FILE *in = fopen(from, "rb"), *out;
-    if (in == NULL)
-        return -1;
-    out = cf__tool_open_atomic(to);
-    if (out == NULL) {
-        fclose(in);
-        return -1;
-    }
-    while ((n = fread(buf, 1, sizeof buf, in)) > 0)
-        if (fwrite(buf, 1, n, out) != n)
-            break;
-    if (ferror(in) || n > 0) {
-        fclose(in);
-        cf__tool_discard_atomic(out, to);
-        errno = EIO;
-        return -1;
-    }
-    fclose(in);
-    return cf__tool_close_atomic(out, to);
-}
-
-enum { UNCHANGED, CHANGED, ADDED, UPDATE_FAILED };
-
-/* Write the reference ref from the new PNG unless their pixels are the
-** same; what changed goes into verdict. */
-static int
-update_reference(test_run *t, bool labels, const char *png_path,
-                 cairo_surface_t *png, const char *ref_path, char *verdict,
-                 size_t size)
-{
-    struct stat sb;
-    int state = ADDED;
-    char err[1024];
-    verdict[0] = '\0';
-    if (stat(ref_path, &sb) == 0) {
-        cairo_surface_t *ref = cf__tool_image_read(ref_path, t->dpi, err,
-                                                   sizeof err);
-        state = CHANGED;
-        if (ref == NULL) {
-            snprintf(verdict, size, "the old reference was unreadable");
-        } else {
-            cf__imgcmp_options opt = layer_options(t, labels, ref);
-            cf__imgcmp_result res;
-            long pixels = (long)cairo_image_surface_get_width(ref) *
-                          cairo_image_surface_get_height(ref);
-            if (cf__tool_image_compare(png, ref, &opt, &res, NULL) != 0)
-                snprintf(verdict, size, "the size changed from %dx%d to "
-                         "%dx%d pixels", cairo_image_surface_get_width(ref),
-                         cairo_image_surface_get_height(ref),
-                         cairo_image_surface_get_width(png),
-                         cairo_image_surface_get_height(png));
-            else if (res.identical)
-                state = UNCHANGED;
-            else
-                cf__tool_image_verdict(verdict, size, &res, &opt, pixels);
-            cairo_surface_destroy(ref);
-        }
-    }
-    if (state != UNCHANGED && copy_atomic(png_path, ref_path) != 0) {
-        fprintf(stderr, "curvefig: test: cannot write the reference %s: "
-                "%s\n", ref_path, strerror(errno));
-        t->errors++;
-        return UPDATE_FAILED;
-    }
-    return state;
-}
-
 /* The comparisons of one layer of one figure; returns its update state
-** (UNCHANGED when not updating). */
+** (unchanged when not updating). */
 static int
 check_layer(test_run *t, const char *script, const char *name, bool labels,
             char *verdict, size_t vsize)
@@ -490,7 +343,7 @@ check_layer(test_run *t, const char *script, const char *name, bool labels,
                           name);
     cairo_surface_t *png = NULL, *svg = NULL, *ref = NULL;
     char err[1024], what[1200];
-    int state = UNCHANGED;
+    int state = CF__TOOL_REF_UNCHANGED;
     const char *layer = labels ? "" : ", without labels";
     verdict[0] = '\0';
     if (png_path == NULL || svg_path == NULL || ref_path == NULL) {
@@ -514,8 +367,11 @@ check_layer(test_run *t, const char *script, const char *name, bool labels,
         check_pair(t, script, name, labels ? "svg" : "svg-nolabels", what,
                    labels, svg, png);
     if (t->update) {
-        state = update_reference(t, labels, png_path, png, ref_path, verdict,
-                                 vsize);
+        cf__imgcmp_options opt = layer_options(t, labels, png);
+        state = cf__tool_ref_update(png_path, png, ref_path, &opt, t->dpi,
+                                    verdict, vsize);
+        if (state == CF__TOOL_REF_FAILED)
+            t->errors++;
         goto out;
     }
     snprintf(what, sizeof what, "its PNG against the reference %s%s",
@@ -526,6 +382,8 @@ check_layer(test_run *t, const char *script, const char *name, bool labels,
         if (stat(ref_path, &sb) != 0)
             snprintf(err, sizeof err, "no reference image %s (write it with "
                      "--update)", ref_path);
+        else
+            t->errors++;    /* a reference that cannot be read */
         record_failure(t, script, name,
                        labels ? "reference" : "reference-nolabels", what,
                        err, NULL, png, NULL);
@@ -561,19 +419,19 @@ check_figure(test_run *t, const char *script, const char *name)
             printf("ok   %s\n", name);
         return;
     }
-    if (a == UPDATE_FAILED || b == UPDATE_FAILED)
+    if (a == CF__TOOL_REF_FAILED || b == CF__TOOL_REF_FAILED)
         return;
-    if (a == ADDED) {
+    if (a == CF__TOOL_REF_ADDED) {
         t->added++;
         printf("new:       %s\n", name);
-    } else if (a == CHANGED || b != UNCHANGED) {
+    } else if (a == CF__TOOL_REF_CHANGED || b != CF__TOOL_REF_UNCHANGED) {
         t->changed++;
         printf("changed:   %s\n", name);
-        if (a == CHANGED)
+        if (a == CF__TOOL_REF_CHANGED)
             printf("           with labels: %s\n", v_labels);
-        if (b != UNCHANGED)
+        if (b != CF__TOOL_REF_UNCHANGED)
             printf("           without labels: %s\n",
-                   b == ADDED ? "new" : v_plain);
+                   b == CF__TOOL_REF_ADDED ? "new" : v_plain);
     } else {
         t->unchanged++;
         printf("unchanged: %s\n", name);
@@ -582,56 +440,50 @@ check_figure(test_run *t, const char *script, const char *name)
 
 /* ---- the whole run ------------------------------------------------------ */
 
-/* References no figure of the run produced: with --update removed, else
-** failures.  A name stale in both layers counts once. */
+/* One reference no figure of the run produced: with --update removed,
+** else a failure.  A name stale in both layers counts once. */
+static void
+stale_reference(test_run *t, const char *dir, const char *name, bool plain)
+{
+    char *path = dupf("%s/%s.png", dir, name);
+    char *twin = plain ? dupf("%s/%s.png", t->refdir, name) : NULL;
+    struct stat sb;
+    if (path == NULL || (plain && twin == NULL)) {
+        t->errors++;
+    } else if (t->update) {
+        if (remove(path) != 0) {
+            fprintf(stderr, "curvefig: test: cannot remove %s: %s\n", path,
+                    strerror(errno));
+            t->errors++;
+        } else if (!plain) {
+            t->removed++;
+            printf("removed:   %s (%s)\n", name, path);
+        }
+    } else if (!plain || stat(twin, &sb) != 0) {
+        char verdict[1024];
+        snprintf(verdict, sizeof verdict, "the reference %s has no figure "
+                 "any more: the figure was removed or renamed (--update "
+                 "removes the reference)", path);
+        record_failure(t, "-", name, "removed", "a reference without its "
+                       "figure", verdict, NULL, NULL, NULL);
+        t->stale++;
+    }
+    free(path);
+    free(twin);
+}
+
 static void
 stale_references(test_run *t)
 {
     for (int layer = 0; layer < 2; layer++) {
         const char *dir = layer == 0 ? t->refdir : t->ref_nolabels;
-        DIR *d = opendir(dir);
-        struct dirent *e;
-        if (d == NULL)
-            continue;
-        while ((e = readdir(d)) != NULL) {
-            char name[256], *path, *twin;
-            size_t n = strlen(e->d_name);
-            struct stat sb;
-            bool counted;
-            if (e->d_name[0] == '.' || !ends_with(e->d_name, ".png") ||
-                n - 4 >= sizeof name)
-                continue;
-            memcpy(name, e->d_name, n - 4);
-            name[n - 4] = '\0';
-            if (owner_of(t, name) != NULL)
-                continue;
-            path = cf__tool_join(dir, e->d_name);
-            twin = layer == 1 ? cf__tool_join(t->refdir, e->d_name) : NULL;
-            counted = twin != NULL && stat(twin, &sb) == 0 && !t->update;
-            if (path == NULL) {
-                t->errors++;
-            } else if (t->update) {
-                if (remove(path) != 0) {
-                    fprintf(stderr, "curvefig: test: cannot remove %s: %s\n",
-                            path, strerror(errno));
-                    t->errors++;
-                } else if (layer == 0) {
-                    t->removed++;
-                    printf("removed:   %s (%s)\n", name, path);
-                }
-            } else if (!counted) {
-                char verdict[1024];
-                snprintf(verdict, sizeof verdict, "the reference %s has no "
-                         "figure any more: the figure was removed or renamed "
-                         "(--update removes the reference)", path);
-                record_failure(t, "-", name, "removed", "a reference without "
-                               "its figure", verdict, NULL, NULL, NULL);
-                t->stale++;
-            }
-            free(path);
-            free(twin);
-        }
-        closedir(d);
+        size_t n;
+        char **names = cf__tool_list_dir(dir, ".png", &n);
+        for (size_t i = 0; i < n; i++)
+            if (owner_of(t, names[i]) == NULL)
+                stale_reference(t, dir, names[i], layer == 1);
+        if (names != NULL)
+            cf__tool_free_list(names, n);
     }
 }
 
@@ -639,20 +491,16 @@ stale_references(test_run *t)
 static void
 clear_failures(const char *dir)
 {
-    DIR *d = opendir(dir);
-    struct dirent *e;
-    if (d == NULL)
-        return;
-    while ((e = readdir(d)) != NULL) {
-        char *p;
-        if (e->d_name[0] == '.' || !ends_with(e->d_name, ".png"))
-            continue;
-        p = cf__tool_join(dir, e->d_name);
+    size_t n;
+    char **names = cf__tool_list_dir(dir, ".png", &n);
+    for (size_t i = 0; i < n; i++) {
+        char *p = dupf("%s/%s.png", dir, names[i]);
         if (p != NULL)
             remove(p);
         free(p);
     }
-    closedir(d);
+    if (names != NULL)
+        cf__tool_free_list(names, n);
 }
 
 static int
@@ -693,8 +541,8 @@ prepare_dirs(test_run *t)
 static void
 run_scripts(test_run *t)
 {
-    for (size_t k = 0; k < t->nscripts; k++) {
-        const char *script = t->scripts[k];
+    for (size_t k = 0; k < t->scripts.count; k++) {
+        const char *script = t->scripts.path[k];
         size_t first = t->nfigs;
         int n = render_layer(t, script, true, t->outdir);
         int m = n < 0 ? n : render_layer(t, script, false, t->out_nolabels);
@@ -730,11 +578,11 @@ finish(test_run *t)
         snprintf(summary, sizeof summary, "references in %s: %zu new, %zu "
                  "changed, %zu unchanged, %zu removed; %zu figure(s) of %zu "
                  "script(s), %zu failing", t->refdir, t->added, t->changed,
-                 t->unchanged, t->removed, t->nfigs, t->nscripts,
+                 t->unchanged, t->removed, t->nfigs, t->scripts.count,
                  t->failed_figures);
     else
         snprintf(summary, sizeof summary, "%zu figure(s) of %zu script(s): "
-                 "%zu pass, %zu fail%s%s", t->nfigs, t->nscripts,
+                 "%zu pass, %zu fail%s%s", t->nfigs, t->scripts.count,
                  t->nfigs - t->failed_figures, t->failed_figures, stale,
                  t->errors ? "; errors (see the messages above)" : "");
     printf("curvefig test: %s\n", summary);
@@ -753,13 +601,11 @@ finish(test_run *t)
 static void
 release(test_run *t)
 {
-    for (size_t i = 0; i < t->nscripts; i++)
-        free(t->scripts[i]);
     for (size_t i = 0; i < t->nfigs; i++)
         free(t->figs[i].name);
     for (size_t i = 0; i < t->nfails; i++)
         cf__tool_failure_free(&t->fails[i]);
-    free(t->scripts);
+    cf__tool_scripts_free(&t->scripts);
     free(t->figs);
     free(t->fails);
     free(t->out_nolabels);
@@ -779,7 +625,7 @@ cf__tool_test(int argc, char **argv)
     if (rc == 0) {
         cf__tool_fonts_init();
         run_scripts(&t);
-        if (t.whole_dirs && t.errors == 0)
+        if (t.scripts.only_dirs && t.errors == 0)
             stale_references(&t);
         rc = finish(&t);
     }

@@ -1,7 +1,9 @@
 /*
 ** Output files of the tool: directories, atomic writes, render manifests
-** and the HTML gallery that `ninja figures` builds from them.
+** and the HTML gallery that `ninja figures` builds from them; directory
+** listings.
 */
+#include <dirent.h>
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
@@ -261,4 +263,67 @@ cf__tool_gallery(const char *out_path, const char *title,
         return 1;
     }
     return 0;
+}
+
+/* ---- directory listings ------------------------------------------------- */
+
+static int
+by_name(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+void
+cf__tool_free_list(char **list, size_t count)
+{
+    for (size_t i = 0; i < count; i++)
+        free(list[i]);
+    free(list);
+}
+
+char **
+cf__tool_list_dir(const char *dir, const char *suffix, size_t *count)
+{
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    char **list = NULL;
+    size_t n = 0, cap = 0, m = strlen(suffix);
+    *count = 0;
+    if (d == NULL)
+        return NULL;
+    while ((e = readdir(d)) != NULL) {
+        size_t len = strlen(e->d_name);
+        char *name;
+        if (e->d_name[0] == '.' || len <= m ||
+            strcmp(e->d_name + len - m, suffix) != 0)
+            continue;
+        if (n == cap) {
+            char **more = realloc(list, (cap ? 2 * cap : 16) * sizeof *list);
+            if (more == NULL)
+                goto fail;
+            list = more;
+            cap = cap ? 2 * cap : 16;
+        }
+        name = malloc(len - m + 1);
+        if (name == NULL)
+            goto fail;
+        memcpy(name, e->d_name, len - m);
+        name[len - m] = '\0';
+        list[n++] = name;
+    }
+    closedir(d);
+    if (list == NULL)
+        list = malloc(sizeof *list);     /* an empty list, not a failure */
+    if (list == NULL) {
+        errno = ENOMEM;
+        return NULL;
+    }
+    qsort(list, n, sizeof *list, by_name);
+    *count = n;
+    return list;
+fail:
+    closedir(d);
+    cf__tool_free_list(list, n);
+    errno = ENOMEM;
+    return NULL;
 }

@@ -299,6 +299,29 @@ def main():
               "figures/twin.lua" in se, se)
         os.remove(os.path.join(figs, "twin.lua"))
 
+        # a reference that is not a PNG any more: an error naming it
+        bad = os.path.join(ref, "nolabels", "cubic.png")
+        with open(bad, "wb") as f:
+            f.write(b"\x89PNG\r\n\x1a\n broken")
+        rc, so, se = test("figures", "--references", "ref", "-o", "out")
+        check("a corrupt reference: exit 2", rc == 2, so + se)
+        check("a corrupt reference: the message names it",
+              "ref/nolabels/cubic.png: not a readable PNG file" in so, so)
+        rc, so, se = test("figures", "--references", "ref", "-o", "out",
+                          "--update")
+        check("a corrupt reference: --update replaces it", rc == 0 and
+              "changed:   cubic" in so and
+              "without labels: the old reference was unreadable" in so,
+              so + se)
+
+        # an output directory that cannot be made
+        with open(os.path.join(repo, "ref-file"), "w") as f:
+            f.write("x")
+        rc, so, se = test("figures", "--references", "ref", "-o",
+                          "ref-file/out")
+        check("an output directory that cannot be made: exit 2", rc == 2 and
+              "cannot create the output directory" in se, se)
+
         # usage errors
         rc, so, se = test("figures")
         check("no --references: exit 2", rc == 2 and
@@ -306,8 +329,6 @@ def main():
         rc, so, se = test("nowhere", "--references", "ref")
         check("a missing operand: exit 2", rc == 2 and
               "cannot read nowhere" in se, se)
-        with open(os.path.join(repo, "ref-file"), "w") as f:
-            f.write("x")
         rc, so, se = test("figures", "--references", "ref-file")
         check("a reference directory that is a file: exit 2", rc == 2 and
               "ref-file is not a directory" in se, se)

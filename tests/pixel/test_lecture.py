@@ -244,6 +244,27 @@ def main():
         rc, so, se = test("figures", "--references", "ref", "-o", "out")
         check("check after the update: exit 0", rc == 0, so + se)
 
+        # a figure made wider: a failure saying both sizes, no diff image
+        path = os.path.join(figs, "cubic.lua")
+        with open(path, encoding="utf-8") as f:
+            text = f.read()
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(text.replace('width = "6cm"', 'width = "6.5cm"'))
+        w, h, _ = read_png(os.path.join(ref, "cubic.png"))
+        rc, so, se = test("figures", "--references", "ref", "-o", "out")
+        check("a wider figure: exit 1", rc == 1, so + se)
+        w2 = read_png(os.path.join(out, "cubic.png"))[0]
+        check("a wider figure: both sizes in the message",
+              "the sizes differ: %dx%d pixels, expected %dx%d" % (w2, h, w, h)
+              in so, so)
+        check("a wider figure: expected and actual kept, no diff",
+              os.path.isfile(os.path.join(
+                  out, "failures", "cubic.reference.expected.png")) and
+              not os.path.exists(os.path.join(
+                  out, "failures", "cubic.reference.diff.png")))
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(text)
+
         # a single script checks its figures only
         rc, so, se = test("figures/hull.lua", "--references", "ref", "-o",
                           "out")

@@ -7,6 +7,8 @@
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
+#include <stdint.h>
+#include <string.h>
 
 #include <cmocka.h>
 
@@ -166,6 +168,65 @@ test_colour_change_fails(void **state)
     cairo_surface_destroy(b);
 }
 
+/* The diff image: the expected image faded (dark ink becomes light grey),
+** red where the images differ, yellow where only anti-aliasing does. */
+static void
+count_diff(const unsigned char *diff, int *red, int *yellow, int *faded_ink)
+{
+    *red = *yellow = *faded_ink = 0;
+    for (int i = 0; i < 80 * 60; i++) {
+        uint32_t v;
+        memcpy(&v, diff + 4 * i, sizeof v);
+        if (v == 0xffff0000u)
+            (*red)++;
+        else if (v == 0xffffd700u)
+            (*yellow)++;
+        else if (v != 0xffffffffu)
+            (*faded_ink)++;
+        /* a faded pixel is grey and light: 255 - 0.1 (255 - luma) */
+        if (v != 0xffff0000u && v != 0xffffd700u)
+            assert_true((v & 0xff) >= 229 && ((v >> 8) & 0xff) == (v & 0xff) &&
+                        ((v >> 16) & 0xff) == (v & 0xff));
+    }
+}
+
+static void
+test_diff_image(void **state)
+{
+    cf__imgcmp_result r;
+    cf__imgcmp_options opt = { 0.1, 1, 0 };
+    static unsigned char diff[80 * 60 * 4];
+    int red, yellow, ink;
+    cairo_surface_t *a = draw(polygon_marker, 40), *b = draw(polygon_marker, 40);
+    cf__imgcmp_image ia = view(a), ib = view(b);
+    (void)state;
+    /* identical: the faded copy alone */
+    assert_int_equal(cf__imgcmp_compare(&ia, &ib, &opt, &r, diff), 0);
+    count_diff(diff, &red, &yellow, &ink);
+    assert_int_equal(red, 0);
+    assert_int_equal(yellow, 0);
+    assert_true(ink > 50);
+    cairo_surface_destroy(b);
+    /* a sub-pixel shift: yellow only */
+    b = draw(polygon_marker, 40.35);
+    ib = view(b);
+    assert_int_equal(cf__imgcmp_compare(&ia, &ib, &opt, &r, diff), 0);
+    count_diff(diff, &red, &yellow, &ink);
+    assert_int_equal(red, 0);
+    assert_int_equal(yellow, r.aa_pixels);
+    assert_true(yellow > 0);
+    cairo_surface_destroy(b);
+    /* a two-pixel move: as many red pixels as bad ones */
+    b = draw(polygon_marker, 42);
+    ib = view(b);
+    assert_int_equal(cf__imgcmp_compare(&ia, &ib, &opt, &r, diff), 0);
+    count_diff(diff, &red, &yellow, &ink);
+    assert_int_equal(red, r.bad_pixels);
+    assert_true(red > 0);
+    cairo_surface_destroy(a);
+    cairo_surface_destroy(b);
+}
+
 static void
 test_size_mismatch(void **state)
 {
@@ -190,6 +251,7 @@ main(void)
         cmocka_unit_test(test_half_pixel_line_placement_is_same_ink),
         cmocka_unit_test(test_two_pixel_move_fails),
         cmocka_unit_test(test_colour_change_fails),
+        cmocka_unit_test(test_diff_image),
         cmocka_unit_test(test_size_mismatch),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

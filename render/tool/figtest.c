@@ -30,10 +30,11 @@
 
 #include "checks.h"
 #include "curvefig/figure.h"
-#include "figtest.h"
 #include "imgfile.h"
+#include "refs.h"
 #include "report.h"
 #include "script.h"
+#include "operands.h"
 #include "tool.h"
 
 #define PASSED 0

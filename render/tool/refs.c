@@ -1,12 +1,12 @@
 /*
-** The reference images `curvefig test --update` writes; see figtest.h.
+** The reference images `curvefig test --update` writes; see refs.h.
 */
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
 
-#include "figtest.h"
+#include "refs.h"
 #include "imgfile.h"
 #include "tool.h"
 

@@ -1,5 +1,5 @@
 /*
-** The figure scripts `curvefig test` is given; see figtest.h.
+** The figure scripts `curvefig test` is given; see operands.h.
 */
 #include <errno.h>
 #include <stdio.h>
@@ -7,7 +7,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "figtest.h"
+#include "operands.h"
 #include "tool.h"
 
 static int

@@ -1,27 +1,13 @@
 /*
-** The parts of `curvefig test` (figtest.c): the scripts its operands name
-** (scripts.c) and the reference images it writes (refs.c).
+** The reference images `curvefig test --update` writes (refs.c).
 */
-#ifndef CURVEFIG_TOOL_FIGTEST_H
-#define CURVEFIG_TOOL_FIGTEST_H
+#ifndef CURVEFIG_TOOL_REFS_H
+#define CURVEFIG_TOOL_REFS_H
 
 #include <cairo.h>
-#include <stdbool.h>
 #include <stddef.h>
 
 #include "imgcmp.h"
-
-typedef struct cf__tool_scripts {
-    char **path;
-    size_t count, cap;
-    bool only_dirs;      /* every operand so far was a directory */
-} cf__tool_scripts;
-
-/* Add an operand: a script, or a directory standing for its *.lua files
-** in name order.  -1 with a message printed when it cannot be read or a
-** directory holds no script. */
-int cf__tool_scripts_add(cf__tool_scripts *s, const char *operand);
-void cf__tool_scripts_free(cf__tool_scripts *s);
 
 typedef enum cf__tool_ref_state {
     CF__TOOL_REF_UNCHANGED,  /* the same pixels: the file is left alone */

@@ -182,7 +182,7 @@ render_layer(test_run *t, const char *script, bool labels, const char *dir)
         }
         base = cf__tool_join(dir, name);
         if (base == NULL)
-            goto out;
+            goto oom;
         cf_diag_clear(&diag);
         st = cf_figure_write_all(cf_script_figure(s, i), base,
                                  CF_FORMAT_BIT(CF_FORMAT_SVG) |
@@ -201,7 +201,7 @@ render_layer(test_run *t, const char *script, bool labels, const char *dir)
                 grow((void **)&t->figs, &t->capfigs, t->nfigs,
                      sizeof *t->figs) != 0) {
                 free(copy);
-                goto out;
+                goto oom;
             }
             t->figs[t->nfigs].name = copy;
             t->figs[t->nfigs++].script = script;
@@ -211,6 +211,9 @@ render_layer(test_run *t, const char *script, bool labels, const char *dir)
 out:
     cf_script_destroy(s);
     return n;
+oom:
+    fprintf(stderr, "curvefig: test: %s: out of memory\n", script);
+    goto out;
 }
 
 /* ---- comparing ---------------------------------------------------------- */
@@ -332,7 +335,7 @@ check_pair(test_run *t, const char *script, const char *name,
 }
 
 /* The comparisons of one layer of one figure; returns its update state
-** (unchanged when not updating). */
+** (unchanged when not updating, failed when an error stopped it). */
 static int
 check_layer(test_run *t, const char *script, const char *name, bool labels,
             char *verdict, size_t vsize)
@@ -344,7 +347,7 @@ check_layer(test_run *t, const char *script, const char *name, bool labels,
                           name);
     cairo_surface_t *png = NULL, *svg = NULL, *ref = NULL;
     char err[1024], what[1200];
-    int state = CF__TOOL_REF_UNCHANGED;
+    int state = t->update ? CF__TOOL_REF_FAILED : CF__TOOL_REF_UNCHANGED;
     const char *layer = labels ? "" : ", without labels";
     verdict[0] = '\0';
     if (png_path == NULL || svg_path == NULL || ref_path == NULL) {

@@ -14,7 +14,7 @@
 
 #include <pango/pangocairo.h>
 
-#include "render-private.h"
+#include "label-private.h"
 
 #define SCRIPT_RATIO 0.7       /* 10 pt -> 7 pt */
 #define SCRIPT2_RATIO 0.5      /* 10 pt -> 5 pt */
@@ -145,7 +145,7 @@ put_text(cf_label_t *lab, const font_t *f, double x, double y,
     if (r != NULL && lab->merge_ok && r->rule_h == 0 && r->size == f->size && r->italic == f->italic
         && r->bold == f->bold && r->y == y && r->kind == f->kind
         && r->level == f->level && fabs(r->x + r->width - x) < 1e-9) {
-        t = cf__realloc_array(r->text, r->text_len + n + 1, 1);
+        t = cf_realloc_array(r->text, r->text_len + n + 1, 1);
         if (t == NULL)
             return NAN;
         memcpy(t + r->text_len, s, n);
@@ -155,13 +155,13 @@ put_text(cf_label_t *lab, const font_t *f, double x, double y,
     } else {
         if (lab->count == lab->cap) {
             size_t cap = lab->cap ? 2 * lab->cap : 8;
-            run_t *nr = cf__realloc_array(lab->runs, cap, sizeof *nr);
+            run_t *nr = cf_realloc_array(lab->runs, cap, sizeof *nr);
             if (nr == NULL)
                 return NAN;
             lab->runs = nr;
             lab->cap = cap;
         }
-        t = cf__malloc(n + 1);
+        t = cf_malloc(n + 1);
         if (t == NULL)
             return NAN;
         memcpy(t, s, n);
@@ -220,7 +220,7 @@ static cf_status_t
 perr(parser_t *p, size_t at, const char *what)
 {
     if (p->st == CF_STATUS_OK)
-        p->st = cf__error(p->diag, CF_STATUS_INVALID_ARG, (long)at,
+        p->st = cf_diag_set(p->diag, CF_STATUS_INVALID_ARG, (long)at,
                           "label \"%s\": %s at byte %zu", p->s, what, at);
     return p->st;
 }
@@ -229,7 +229,7 @@ static cf_status_t
 pnomem(parser_t *p)
 {
     if (p->st == CF_STATUS_OK)
-        p->st = cf__error(p->diag, CF_STATUS_NO_MEMORY, -1,
+        p->st = cf_diag_set(p->diag, CF_STATUS_NO_MEMORY, -1,
                           "label \"%s\": out of memory", p->s);
     return p->st;
 }
@@ -1008,16 +1008,16 @@ cf_label_destroy(cf_label_t *label)
     if (label == NULL)
         return;
     for (i = 0; i < label->count; i++) {
-        cf__free(label->runs[i].text);
+        cf_free(label->runs[i].text);
         if (label->runs[i].layout != NULL)
             g_object_unref(label->runs[i].layout);
     }
-    cf__free(label->runs);
-    cf__free(label->boxes);
-    cf__free(label->family);
+    cf_free(label->runs);
+    cf_free(label->boxes);
+    cf_free(label->family);
     if (label->ctx != NULL)
         g_object_unref(label->ctx);
-    cf__free(label);
+    cf_free(label);
 }
 
 static PangoContext *
@@ -1057,28 +1057,28 @@ cf_label_create(const char *text, const char *family, double size_bp,
     if (out != NULL)
         *out = NULL;
     if (text == NULL || out == NULL)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
                          "label text or output is NULL");
     if (!(isfinite(size_bp) && size_bp > 0 && size_bp <= 1000))
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
                          "label \"%s\": font size %g must lie in (0, 1000] "
                          "bp", text, size_bp);
     if (family == NULL)
         family = CF__DEFAULT_FAMILY;
     if (family[0] == '\0' || strlen(family) >= CF_FONT_FAMILY_MAX)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
                          "font family list is empty or longer than %d bytes",
                          CF_FONT_FAMILY_MAX - 1);
-    lab = cf__calloc(1, sizeof *lab);
+    lab = cf_calloc(1, sizeof *lab);
     if (lab == NULL)
-        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+        return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
                          "out of memory for a label");
     len = strlen(family);
-    lab->family = cf__malloc(len + 1);
+    lab->family = cf_malloc(len + 1);
     lab->ctx = make_context();
     if (lab->family == NULL || lab->ctx == NULL) {
         cf_label_destroy(lab);
-        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+        return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
                          "out of memory for a label");
     }
     memcpy(lab->family, family, len + 1);
@@ -1105,16 +1105,16 @@ cf_label_create(const char *text, const char *family, double size_bp,
     f.text = p.has_dollar;   /* with $: text outside, math inside */
     if (!parse_list(&p, &f, 0.0, 0.0, 0, &all)) {
         cf_status_t st = p.st != CF_STATUS_OK ? p.st
-            : cf__error(diag, CF_STATUS_INVALID_ARG, -1, "label \"%s\"",
+            : cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1, "label \"%s\"",
                         text);
         cf_label_destroy(lab);
         return st;
     }
-    lab->boxes = cf__alloc_array(lab->count ? lab->count : 1,
+    lab->boxes = cf_alloc_array(lab->count ? lab->count : 1,
                                  sizeof *lab->boxes);
     if (lab->boxes == NULL) {
         cf_label_destroy(lab);
-        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+        return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
                          "out of memory for a label");
     }
     for (i = 0; i < lab->count; i++) {
@@ -1234,7 +1234,8 @@ cf__label_draw(const cf_label_t *label, cairo_t *cr, double x, double y,
     if (label == NULL)
         return;
     cairo_save(cr);
-    cf__set_color(cr, color, opacity);
+    cairo_set_source_rgba(cr, color->r, color->g, color->b,
+                          color->a * opacity);
     for (i = 0; i < label->count; i++) {
         const run_t *r = &label->runs[i];
         if (!(r->ink[3] > r->ink[1]))

@@ -112,7 +112,8 @@ seg(cf__dl_t *dl, cf__seg_t kind, const double *v, size_t n)
                  sizeof *dl->coords))
         return;
     dl->segs[dl->nsegs++] = (unsigned char)kind;
-    memcpy(dl->coords + dl->ncoords, v, n * sizeof *v);
+    if (n > 0)
+        memcpy(dl->coords + dl->ncoords, v, n * sizeof *v);
     dl->ncoords += n;
 }
 

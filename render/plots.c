@@ -16,7 +16,7 @@ static cf_status_t
 graph_bezier(cf_figure_t *fig, const cf_bezier_t *c, double x0, double x1,
              cf_bezier_t **out)
 {
-    int deg = cf_bezier_degree(c), i;
+    int deg = cf_bezier_degree(c), n, i;
     const double *y = cf_bezier_hpoints(c);
     double *q;
     cf_status_t st;
@@ -25,22 +25,18 @@ graph_bezier(cf_figure_t *fig, const cf_bezier_t *c, double x0, double x1,
                          "a graph piece must be a polynomial Bézier in R^1 "
                          "(this one is in R^%zu%s)", cf_bezier_dim(c),
                          cf_bezier_is_rational(c) ? ", rational" : "");
-    q = cf_alloc_array(2 * ((size_t)deg + 1), sizeof *q);
+    /* a constant (degree 0) becomes a degree-1 segment over the whole
+    ** interval: two control points */
+    n = deg > 0 ? deg : 1;
+    q = cf_alloc_array(2 * ((size_t)n + 1), sizeof *q);
     if (q == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory for a graph");
-    for (i = 0; i <= deg; i++) {
-        q[2 * i] = deg > 0 ? x0 + (x1 - x0) * i / deg : x0;
-        q[2 * i + 1] = y[i];
+                           "out of memory for a graph");
+    for (i = 0; i <= n; i++) {
+        q[2 * i] = deg > 0 ? x0 + (x1 - x0) * i / deg : i == 0 ? x0 : x1;
+        q[2 * i + 1] = y[deg > 0 ? i : 0];
     }
-    if (deg == 0) {
-        /* a constant: a degree-1 segment over the whole interval */
-        q[2] = x1;
-        q[3] = y[0];
-        st = cf_bezier_create(2, 1, q, NULL, out, &fig->err);
-    } else {
-        st = cf_bezier_create(2, deg, q, NULL, out, &fig->err);
-    }
+    st = cf_bezier_create(2, n, q, NULL, out, &fig->err);
     cf_free(q);
     return st;
 }

@@ -1386,6 +1386,44 @@ test_sticky_error(void **state)
     cf_figure_destroy(fig);
 }
 
+/* A constant (degree-0) graph piece is drawn as a horizontal segment over
+** its whole interval (f:bernstein(0, 0) in the figure language: B_0^0 = 1
+** on [0, 1]).  The piece is widened to degree 1 inside the renderer. */
+static void
+test_graph_constant_piece(void **state)
+{
+    double y0 = 0.75, breaks[] = { -1, 2 };
+    cf_bezier_t *c = NULL;
+    const cf_bezier_t *pieces[1];
+    cf_figure_t *fig = NULL;
+    char *text = NULL;
+    const char *p;
+    size_t size;
+    double w[4], x0, ya, x1, yb, c1[4];
+    (void)state;
+    assert_int_equal(cf_bezier_create(1, 0, &y0, NULL, &c, NULL), 0);
+    assert_int_equal(cf_figure_create(60, 40, CF_UNIT_MM, &fig, NULL), 0);
+    pieces[0] = c;
+    assert_int_equal(cf_figure_add_graph(fig, pieces, breaks, 1, NULL), 0);
+    assert_int_equal(cf_figure_get_window(fig, w, NULL, NULL), 0);
+    assert_float_equal(w[0], -1, 1e-12);
+    assert_float_equal(w[1], 2, 1e-12);
+    assert_int_equal(cf_figure_dump(fig, NULL, &text, &size, NULL), 0);
+    p = strstr(text, " : M ");
+    assert_non_null(p);
+    assert_int_equal(sscanf(p, " : M %lf %lf C %lf %lf %lf %lf %lf %lf", &x0,
+                            &ya, &c1[0], &c1[1], &c1[2], &c1[3], &x1, &yb),
+                     8);
+    /* one horizontal cubic from the left end to the right end */
+    assert_float_equal(ya, yb, 1e-9);
+    assert_float_equal(c1[1], ya, 1e-9);
+    assert_float_equal(c1[3], ya, 1e-9);
+    assert_true(x1 - x0 > 100);
+    cf_free(text);
+    cf_figure_destroy(fig);
+    cf_bezier_destroy(c);
+}
+
 static void
 test_out_of_memory(void **state)
 {
@@ -1455,6 +1493,7 @@ main(void)
         cmocka_unit_test(test_bad_input),
         cmocka_unit_test(test_huge_extent_refused),
         cmocka_unit_test(test_sticky_error),
+        cmocka_unit_test(test_graph_constant_piece),
         cmocka_unit_test(test_out_of_memory),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

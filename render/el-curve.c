@@ -443,3 +443,132 @@ cf_figure_add_bspline_knots(cf_figure_t *fig, const struct cf_bspline *s,
     cf_free(pts);
     return st;
 }
+
+cf_status_t
+cf_figure_bspline_knots(cf_figure_t *fig, const struct cf_bspline *s,
+                        double *u, size_t *first, size_t *mult, double *pts,
+                        size_t *count)
+{
+    const double *k;
+    size_t m, dim, i, j, n = 0;
+    double lo, hi, *buf;
+    CF__FIG_CHECK(fig);
+    if (s == NULL || count == NULL)
+        return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
+                           "B-spline knots: curve or count is NULL");
+    *count = 0;
+    k = cf_bspline_knots(s);
+    m = cf_bspline_nknots(s);
+    dim = cf_bspline_dim(s);
+    cf_bspline_domain(s, &lo, &hi);
+    buf = cf_alloc_array(dim, sizeof *buf);
+    if (buf == NULL)
+        return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                           "out of memory for B-spline knots");
+    for (i = 0; i < m; i++) {
+        size_t copies = 0;
+        if (k[i] < lo || k[i] > hi || (i > 0 && k[i] == k[i - 1]))
+            continue;
+        if (cf_bspline_eval(s, k[i], buf) != CF_STATUS_OK)
+            continue;
+        for (j = 0; j < m; j++)
+            copies += k[j] == k[i];
+        if (u != NULL)
+            u[n] = k[i];
+        if (first != NULL)
+            first[n] = i;
+        if (mult != NULL)
+            mult[n] = copies;
+        if (pts != NULL)
+            cf__fig_project1(fig, buf, dim, pts + 2 * n);
+        n++;
+    }
+    cf_free(buf);
+    *count = n;
+    return CF_STATUS_OK;
+}
+
+/* The tangent arrow from d[0 .. dim) (the point) and d[dim .. 2 dim) (the
+** derivative). */
+static cf_status_t
+tangent_arrow(cf_figure_t *fig, double *d, size_t dim, int deg, double scale,
+              const cf_style_t *style, double tip[2])
+{
+    double pd[4];
+    size_t k;
+    if (!(scale > 0))
+        scale = deg > 0 ? 1.0 / deg : 1.0;
+    for (k = 0; k < dim; k++)
+        d[dim + k] = d[k] + scale * d[dim + k];
+    if (cf_figure_project(fig, d, 2, dim, pd) != CF_STATUS_OK)
+        return fig->err.status;
+    if (tip != NULL) {
+        tip[0] = pd[2];
+        tip[1] = pd[3];
+    }
+    return cf_figure_add_arrow(fig, pd[0], pd[1], pd[2] - pd[0],
+                               pd[3] - pd[1], style);
+}
+
+static cf_status_t
+tangent_domain(cf_figure_t *fig, double t, double lo, double hi)
+{
+    if (!isfinite(t))
+        return cf_diag_set(&fig->err, CF_STATUS_NOT_FINITE, -1,
+                           "tangent: t = %g is not finite", t);
+    return cf_diag_set(&fig->err, CF_STATUS_DOMAIN, -1,
+                       "tangent: t = %g is outside the domain [%g, %g]", t,
+                       lo, hi);
+}
+
+cf_status_t
+cf_figure_add_bezier_tangent(cf_figure_t *fig, const cf_bezier_t *c,
+                             double t, double scale, const cf_style_t *style,
+                             double tip[2])
+{
+    size_t dim;
+    double *d;
+    cf_status_t st;
+    CF__FIG_CHECK(fig);
+    if (check_curve(fig, c, style, "Bézier curve") != CF_STATUS_OK)
+        return fig->err.status;
+    dim = cf_bezier_dim(c);
+    d = cf_alloc_array(2 * dim, sizeof *d);
+    if (d == NULL)
+        return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                           "out of memory for a tangent");
+    if (cf_bezier_eval_derivs(c, t, 1, d) != CF_STATUS_OK)
+        st = tangent_domain(fig, t, 0, 1);
+    else
+        st = tangent_arrow(fig, d, dim, cf_bezier_degree(c), scale, style,
+                           tip);
+    cf_free(d);
+    return st;
+}
+
+cf_status_t
+cf_figure_add_bspline_tangent(cf_figure_t *fig, const struct cf_bspline *s,
+                              double t, double scale,
+                              const cf_style_t *style, double tip[2])
+{
+    size_t dim;
+    double *d, lo, hi;
+    cf_status_t st;
+    CF__FIG_CHECK(fig);
+    if (check_curve(fig, s, style, "B-spline curve") != CF_STATUS_OK)
+        return fig->err.status;
+    dim = cf_bspline_dim(s);
+    d = cf_alloc_array(2 * dim, sizeof *d);
+    if (d == NULL)
+        return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                           "out of memory for a tangent");
+    if (cf_bspline_eval_derivs(s, t, 1, d) != CF_STATUS_OK) {
+        cf_bspline_domain(s, &lo, &hi);
+        st = tangent_domain(fig, t, lo, hi);
+    } else {
+        st = tangent_arrow(fig, d, dim, cf_bspline_degree(s), scale, style,
+                           tip);
+    }
+    cf_free(d);
+    return st;
+}

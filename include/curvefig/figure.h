@@ -159,6 +159,35 @@ CF_API cf_status_t cf_figure_add_bspline_knots(cf_figure_t *fig,
                                         const struct cf_bspline *s,
                                         const cf_style_t *style);
 
+/* The distinct knots of s inside its domain, in order (the ones
+** cf_figure_add_bspline_knots marks): value u[k], the index first[k] of
+** its first copy in the knot vector, its multiplicity mult[k] (copies in
+** the whole vector) and the curve point C(u[k]) projected into the plane
+** (cf_figure_project) at pts[2k], pts[2k + 1].  Any array may be NULL;
+** each needs room for cf_bspline_nknots(s) entries (pts: twice that).
+** *count receives the number of distinct knots. */
+CF_API cf_status_t cf_figure_bspline_knots(cf_figure_t *fig,
+                                           const struct cf_bspline *s,
+                                           double *u, size_t *first,
+                                           size_t *mult, double *pts,
+                                           size_t *count);
+
+/* A tangent arrow: from c(t) to c(t) + scale * c'(t), projected into the
+** plane (scale <= 0: 1 / degree, the end legs of a Bézier; 1 for degree
+** 0).  tip (may be NULL) receives the arrow's end in the plane, for a
+** label.  t outside the domain is CF_STATUS_DOMAIN naming the domain.
+** Role CF_ROLE_ARROW. */
+CF_API cf_status_t cf_figure_add_bezier_tangent(cf_figure_t *fig,
+                                                const cf_bezier_t *c,
+                                                double t, double scale,
+                                                const cf_style_t *style,
+                                                double tip[2]);
+CF_API cf_status_t cf_figure_add_bspline_tangent(cf_figure_t *fig,
+                                                 const struct cf_bspline *s,
+                                                 double t, double scale,
+                                                 const cf_style_t *style,
+                                                 double tip[2]);
+
 /* Marks at given points; tangents (2 * n doubles, any length, may be NULL)
 ** orient CF_MARKER_TICK bars across the curve.  Role CF_ROLE_KNOTS. */
 CF_API cf_status_t cf_figure_add_knot_marks(cf_figure_t *fig, const double *pts,

@@ -237,6 +237,14 @@ cf_figure_set_fit(cf_figure_t *fig, double margin_bp, bool keep_aspect)
 }
 
 cf_status_t
+cf_figure_set_clip(cf_figure_t *fig, bool clip)
+{
+    CF__FIG_CHECK(fig);
+    fig->clip_page = clip;
+    return CF_STATUS_OK;
+}
+
+cf_status_t
 cf_figure_set_tolerance(cf_figure_t *fig, double tol_bp)
 {
     CF__FIG_CHECK(fig);

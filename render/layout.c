@@ -172,3 +172,107 @@ cf_figure_get_window(cf_figure_t *fig, double window[4], double *sx,
         *sy = lay.sy;
     return CF_STATUS_OK;
 }
+
+/* ---- the page ----------------------------------------------------------- */
+
+/* Ink outside the page below this (bp) is rounding, not an overflow. */
+#define PAGE_SLACK 0.05
+
+/* How far ink box b sticks out of a w x h page (bp, <= 0: not at all),
+** and on which side. */
+static double
+overflow(const double b[4], double w, double h, const char **side)
+{
+    double o[4] = { -b[0], -b[1], b[2] - w, b[3] - h }, worst = o[0];
+    static const char *const sides[4] = { "left", "top", "right",
+                                          "bottom" };
+    int k, at = 0;
+    for (k = 1; k < 4; k++)
+        if (o[k] > worst) {
+            worst = o[k];
+            at = k;
+        }
+    *side = sides[at];
+    return worst;
+}
+
+static bool
+draws(const cf__op_t *op)
+{
+    return op->kind == CF__OP_PATH || op->kind == CF__OP_MARKER
+        || op->kind == CF__OP_TEXT;
+}
+
+/* The element (GROUP ... END at ops [g, e)) whose ink sticks out
+** farthest: an error naming it. */
+static cf_status_t
+page_overflow(const cf__dl_t *dl, double w, double h, cf_diag_t *diag)
+{
+    size_t i = 0, worst_g = 0;
+    double worst = 0;
+    const char *worst_side = "", *text = NULL;
+    while (i < dl->count) {
+        size_t g = i, e = i + 1;
+        double ink[4], o;
+        const char *sd;
+        if (dl->ops[i].kind != CF__OP_GROUP) {
+            i++;
+            continue;
+        }
+        while (e < dl->count && dl->ops[e].kind != CF__OP_END)
+            e++;
+        i = e + 1;
+        if (cf__cairo_ink(dl, g, e + 1, ink) != 0)
+            continue;
+        if (!(ink[2] > ink[0] && ink[3] > ink[1]))
+            continue;
+        o = overflow(ink, w, h, &sd);
+        if (o > worst) {
+            worst = o;
+            worst_g = g;
+            worst_side = sd;
+        }
+    }
+    if (!(worst > PAGE_SLACK))
+        return CF_STATUS_OK;
+    for (i = worst_g; i < dl->count && dl->ops[i].kind != CF__OP_END; i++)
+        if (dl->ops[i].kind == CF__OP_TEXT) {
+            text = dl->ops[i].u.text.source;
+            break;
+        }
+    return cf_diag_set(diag, CF_STATUS_INVALID_ARG,
+                       (long)dl->ops[worst_g].u.group.index,
+                       "%s %zu%s%s%s sticks out of the %.1f x %.1f mm page "
+                       "by %.1f mm (%.1f pt) on the %s; make the page or "
+                       "the margin larger, or let the figure clip "
+                       "(clip = true)",
+                       dl->ops[worst_g].u.group.name,
+                       dl->ops[worst_g].u.group.index + 1,
+                       text != NULL ? " \"" : "", text != NULL ? text : "",
+                       text != NULL ? "\"" : "", w * 25.4 / 72,
+                       h * 25.4 / 72, worst * 25.4 / 72, worst, worst_side);
+}
+
+cf_status_t
+cf__figure_check_page(const cf_figure_t *fig, const cf__dl_t *dl, double w,
+                      double h, bool fixed, cf_diag_t *diag)
+{
+    double ink[4];
+    const char *side;
+    size_t i;
+    bool any = false;
+    for (i = 0; i < dl->count && !any; i++)
+        any = draws(&dl->ops[i]);
+    if (!any)
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "the figure draws nothing (%zu elements, none "
+                           "with anything to show on the page)", fig->count);
+    if (fig->clip_page || !fixed)
+        return CF_STATUS_OK;
+    if (cf__cairo_ink(dl, 0, dl->count, ink) != 0)
+        return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                           "cairo failed measuring the ink");
+    if (!(overflow(ink, w, h, &side) > PAGE_SLACK))
+        return CF_STATUS_OK;
+    return page_overflow(dl, w, h, diag);
+}

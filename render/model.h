@@ -233,6 +233,14 @@ cf_status_t cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay);
 cf_status_t cf__figure_build(cf_figure_t *fig, const cf__layout_t *lay,
                              cf__dl_t *dl);
 
+/* Whether a display list on a page of w x h bp shows the figure: an error
+** (in diag) when it draws nothing at all, and on a fixed page (not cropped
+** to the ink) one naming the element whose ink sticks out farthest and by
+** how much, unless the figure clips. */
+cf_status_t cf__figure_check_page(const cf_figure_t *fig, const cf__dl_t *dl,
+                                  double w, double h, bool fixed,
+                                  cf_diag_t *diag);
+
 /* ---- place.c ------------------------------------------------------------ */
 
 /* Choose the places of the labels placed CF_PLACE_AUTO for a layout. */

@@ -90,7 +90,8 @@ make_job(cf_figure_t *fig, const cf_write_options_t *o, bool need_ink,
     }
     if (cf__figure_build(fig, &job->lay, &job->dl) != CF_STATUS_OK)
         return cf_figure_status(fig, diag);
-    return CF_STATUS_OK;
+    return cf__figure_check_page(fig, &job->dl, job->page.width,
+                                 job->page.height, !o->tight, diag);
 }
 
 static void

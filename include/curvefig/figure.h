@@ -103,6 +103,13 @@ CF_API cf_status_t cf_figure_set_fit(cf_figure_t *fig, double margin_bp,
 CF_API cf_status_t cf_figure_get_window(cf_figure_t *fig, double window[4],
                                  double *sx, double *sy);
 
+/* What is drawn must lie on the page: writing or rendering a figure (not
+** cropped with the tight option) whose ink sticks out of its fixed page is
+** CF_STATUS_INVALID_ARG, naming the element and by how much (mm and pt),
+** and a figure that draws nothing at all is too.  With clip true, ink
+** outside the page is cut off instead (default false). */
+CF_API cf_status_t cf_figure_set_clip(cf_figure_t *fig, bool clip);
+
 /* Tolerance (bp on the page, > 0, default 0.01) for curves that are fitted
 ** by cubic segments. */
 CF_API cf_status_t cf_figure_set_tolerance(cf_figure_t *fig, double tol_bp);

@@ -265,6 +265,72 @@ test_dump_deterministic(void **state)
     cf_figure_destroy(b);
 }
 
+/* Ink outside a fixed page is an error naming the element and how far it
+** sticks out; clipping or a tight page accepts it.  A figure that draws
+** nothing is an error. */
+static void
+test_page_checks(void **state)
+{
+    static const double line[] = { 0, 0, 10, 10 };
+    cf_figure_t *fig = NULL;
+    cf_write_options_t tight;
+    unsigned char *data = NULL;
+    size_t size = 0;
+    cf_style_t big;
+    cf_diag_t d;
+    double ink[4], pw, ph;
+    (void)state;
+    assert_int_equal(cf_figure_create(40, 30, CF_UNIT_MM, &fig, NULL), 0);
+    cf_diag_clear(&d);
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_SVG, NULL, &data, &size,
+                                      &d), CF_STATUS_INVALID_ARG);
+    assert_non_null(strstr(d.msg, "the figure draws nothing (0 elements"));
+    assert_null(data);
+    /* elements, all outside an explicit window: nothing drawn either */
+    assert_int_equal(cf_figure_add_points(fig, line, 2, NULL), 0);
+    assert_int_equal(cf_figure_set_window(fig, 20, 30, 20, 30), 0);
+    cf_diag_clear(&d);
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_PNG, NULL, &data, &size,
+                                      &d), CF_STATUS_INVALID_ARG);
+    assert_non_null(strstr(d.msg, "draws nothing (1 elements"));
+    /* a wide label at the window's right edge sticks out of the page */
+    assert_int_equal(cf_figure_set_window(fig, 0, 10, 0, 10), 0);
+    cf_style_init(&big);
+    big.set = CF_STYLE_FONT_SIZE | CF_STYLE_PLACE;
+    big.font_size = 14;
+    big.place = CF_PLACE_E;
+    assert_int_equal(cf_figure_add_label(fig, 10, 5, "P_0 = c(0) = start",
+                                         &big), 0);
+    cf_diag_clear(&d);
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_SVG, NULL, &data, &size,
+                                      &d), CF_STATUS_INVALID_ARG);
+    assert_null(data);
+    assert_non_null(strstr(d.msg, "label 2 \"P_0 = c(0) = start\" sticks "
+                           "out of the 40.0 x 30.0 mm page by "));
+    assert_non_null(strstr(d.msg, " on the right"));
+    assert_int_equal(d.index, 1);
+    /* how far: the ink box's right edge beyond the page, in mm */
+    assert_int_equal(cf_figure_ink_box(fig, NULL, ink, &pw, &ph, NULL), 0);
+    {
+        char want[32];
+        snprintf(want, sizeof want, "by %.1f mm", (ink[2] - pw) * 25.4 / 72);
+        assert_non_null(strstr(d.msg, want));
+    }
+    /* the figure itself is not in error: a tight page or clipping draws */
+    assert_int_equal(cf_figure_status(fig, NULL), CF_STATUS_OK);
+    cf_write_options_init(&tight);
+    tight.tight = true;
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_SVG, &tight, &data,
+                                      &size, NULL), 0);
+    cf_free(data);
+    assert_int_equal(cf_figure_set_clip(fig, true), 0);
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_SVG, NULL, &data, &size,
+                                      NULL), 0);
+    assert_true(size > 0);
+    cf_free(data);
+    cf_figure_destroy(fig);
+}
+
 int
 main(void)
 {
@@ -272,6 +338,7 @@ main(void)
         cmocka_unit_test(test_dump_content),
         cmocka_unit_test(test_backend_independence),
         cmocka_unit_test(test_dump_deterministic),
+        cmocka_unit_test(test_page_checks),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

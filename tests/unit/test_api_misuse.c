@@ -750,6 +750,7 @@ test_figure(void **state)
     assert_null(data);
     BAD(cf_figure_ink_box(fig, NULL, NULL, &pw, &ph, NULL));
     BAD(cf_figure_dump(fig, NULL, NULL, &size, NULL));
+    BAD(cf_figure_set_clip(NULL, true));
     BAD(cf_figure_bspline_knots(fig, NULL, NULL, NULL, NULL, NULL, NULL));
     BAD(cf_figure_add_bezier_tangent(fig, NULL, 0, 0, NULL, NULL));
     BAD(cf_figure_add_bspline_tangent(NULL, s, 0, 0, NULL, NULL));

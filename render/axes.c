@@ -129,7 +129,7 @@ make_ticks(cf_figure_t *fig, const double *pos, size_t count,
     if (count > 0) {
         if (pos == NULL)
             return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                             "%s ticks: positions are NULL", axis);
+                               "%s ticks: positions are NULL", axis);
         if (cf_check_finite_points(pos, count, 1, 1, "tick", &fig->err)
             != CF_STATUS_OK)
             return fig->err.status;
@@ -139,20 +139,20 @@ make_ticks(cf_figure_t *fig, const double *pos, size_t count,
             return CF_STATUS_OK;
         if (!isfinite(step))
             return cf_diag_set(&fig->err, CF_STATUS_NOT_FINITE, -1,
-                             "%s tick step is not finite", axis);
+                               "%s tick step is not finite", axis);
         if (step == 0)
             step = nice_step(hi - lo);
         if ((hi - lo) / step > 200)
             return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                             "%s tick step %g gives more than 200 ticks",
-                             axis, step);
+                               "%s tick step %g gives more than 200 ticks",
+                               axis, step);
         first = ceil(lo / step - 1e-9) * step;
         n = (size_t)floor((hi - first) / step + 1e-9) + 1;
     }
     t = cf_calloc(n ? n : 1, sizeof *t);
     if (t == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory for ticks");
+                           "out of memory for ticks");
     for (i = 0; i < n && st == CF_STATUS_OK; i++) {
         char buf[64];
         const char *text = buf;
@@ -362,22 +362,22 @@ cf_figure_add_axes(cf_figure_t *fig, const cf_axes_t *axes,
     CF__FIG_CHECK(fig);
     if (a == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "axes are NULL");
+                           "axes are NULL");
     if (!(isfinite(a->xmin) && isfinite(a->xmax) && isfinite(a->ymin)
           && isfinite(a->ymax)))
         return cf_diag_set(&fig->err, CF_STATUS_NOT_FINITE, -1,
-                         "axes ranges are not finite");
+                           "axes ranges are not finite");
     if (!(a->xmin < a->xmax && a->ymin < a->ymax))
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "axes ranges [%g, %g] x [%g, %g] are empty",
-                         a->xmin, a->xmax, a->ymin, a->ymax);
+                           "axes ranges [%g, %g] x [%g, %g] are empty",
+                           a->xmin, a->xmax, a->ymin, a->ymax);
     if (a->knot_count > 0 && a->knots == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "axes: %zu knots but the array is NULL",
-                         a->knot_count);
+                           "axes: %zu knots but the array is NULL",
+                           a->knot_count);
     if (a->knot_count > 0
         && cf_check_finite_points(a->knots, a->knot_count, 1, 1, "knot",
-                                   &fig->err) != CF_STATUS_OK)
+                                  &fig->err) != CF_STATUS_OK)
         return fig->err.status;
     if (cf__fig_check_style(fig, style) != CF_STATUS_OK)
         return fig->err.status;
@@ -395,8 +395,7 @@ cf_figure_add_axes(cf_figure_t *fig, const cf_axes_t *axes,
         double *dv = cf_alloc_array(a->knot_count, sizeof *dv);
         size_t nd = 0, j;
         if (dv == NULL)
-            return cf__element_commit(fig, ax, cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY,
-                                            -1, "out of memory for axes"));
+            return cf__element_commit(fig, ax, cf__fig_nomem(fig, "axes"));
         for (i = 0; i < a->knot_count; i++) {
             for (j = 0; j < nd && dv[j] != a->knots[i]; j++)
                 ;
@@ -419,7 +418,7 @@ cf_figure_add_axes(cf_figure_t *fig, const cf_axes_t *axes,
         ax->kn = cf_calloc(a->knot_count, sizeof *ax->kn);
         if (ax->kn == NULL)
             st = cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                           "out of memory for knots");
+                             "out of memory for knots");
         else
             ax->nkn = a->knot_count;
         for (i = 0; i < ax->nkn && st == CF_STATUS_OK; i++) {

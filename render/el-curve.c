@@ -193,14 +193,14 @@ planar_bezier(cf_figure_t *fig, const cf_bezier_t *c, cf_bezier_t **out)
         return cf_bezier_copy(c, out, &fig->err);
     if (dim < 2)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "a curve in R^%zu cannot be drawn as a plane "
-                         "curve (use a graph for functions)", dim);
+                           "a curve in R^%zu cannot be drawn as a plane "
+                           "curve (use a graph for functions)", dim);
     hd = dim + (rat ? 1 : 0);
     np = (size_t)deg + 1;
     q = cf_alloc_array(np * 3, sizeof *q);
     if (q == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory projecting a curve");
+                           "out of memory projecting a curve");
     for (i = 0; i < np; i++) {
         /* the projection is linear, so it maps (w x, w) to (w Px, w) */
         cf__fig_project1(fig, hp + i * hd, dim, q + i * (rat ? 3 : 2));
@@ -221,7 +221,7 @@ check_curve(cf_figure_t *fig, const void *c, const cf_style_t *style,
 {
     if (c == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "%s is NULL", what);
+                           "%s is NULL", what);
     return cf__fig_check_style(fig, style);
 }
 
@@ -237,11 +237,11 @@ cf_figure_add_bezier_range(cf_figure_t *fig, const cf_bezier_t *c, double a,
         return fig->err.status;
     if (!(isfinite(a) && isfinite(b)))
         return cf_diag_set(&fig->err, CF_STATUS_NOT_FINITE, -1,
-                         "curve range [%g, %g] is not finite", a, b);
+                           "curve range [%g, %g] is not finite", a, b);
     if (!(0 <= a && a < b && b <= 1))
         return cf_diag_set(&fig->err, CF_STATUS_DOMAIN, -1,
-                         "curve range [%g, %g] must satisfy 0 <= a < b <= 1",
-                         a, b);
+                           "curve range [%g, %g] must satisfy 0 <= a < b <= 1",
+                           a, b);
     st = planar_bezier(fig, c, &plane);
     if (st != CF_STATUS_OK)
         return cf__fig_fail(fig, st, "Bézier curve");
@@ -279,12 +279,12 @@ cf_figure_add_bezier_list(cf_figure_t *fig, const cf_bezier_list_t *list,
         return fig->err.status;
     if (list->count > 0 && list->items == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "Bézier list of %zu items has no items",
-                         list->count);
+                           "Bézier list of %zu items has no items",
+                           list->count);
     for (i = 0; i < list->count; i++)
         if (list->items[i] == NULL)
             return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, (long)i,
-                             "Bézier list item %zu is NULL", i);
+                               "Bézier list item %zu is NULL", i);
     e = cf__curve_new(fig, CF_ROLE_CURVE, style);
     if (e == NULL)
         return fig->err.status;
@@ -310,10 +310,10 @@ cf_figure_add_cubics(cf_figure_t *fig, const cf_cubics_t *cubics,
     dim = cubics->dim;
     if (dim < 2 || (cubics->count > 0 && cubics->pts == NULL))
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "cubic chain: dimension %zu (need >= 2) or no "
-                         "points", dim);
+                           "cubic chain: dimension %zu (need >= 2) or no "
+                           "points", dim);
     if (cf_check_finite_points(cubics->pts, 4 * cubics->count, dim, dim,
-                                "cubic control point", &fig->err)
+                               "cubic control point", &fig->err)
         != CF_STATUS_OK)
         return fig->err.status;
     e = cf__curve_new(fig, CF_ROLE_CURVE, style);
@@ -322,7 +322,8 @@ cf_figure_add_cubics(cf_figure_t *fig, const cf_cubics_t *cubics,
     for (i = 0; i < cubics->count && st == CF_STATUS_OK; i++) {
         double q[8];
         for (j = 0; j < 4; j++)
-            cf__fig_project1(fig, cubics->pts + (4 * i + j) * dim, dim, q + 2 * j);
+            cf__fig_project1(fig, cubics->pts + (4 * i + j) * dim, dim,
+                             q + 2 * j);
         st = cf__curve_add(fig, e, NULL, q);
     }
     return cf__element_commit(fig, e, st);
@@ -344,11 +345,11 @@ bspline_pieces(cf_figure_t *fig, cf__element_t *e, const cf_bspline_t *s,
     }
     if (!(isfinite(a) && isfinite(b)))
         return cf_diag_set(&fig->err, CF_STATUS_NOT_FINITE, -1,
-                         "B-spline range [%g, %g] is not finite", a, b);
+                           "B-spline range [%g, %g] is not finite", a, b);
     if (!(lo <= a && a < b && b <= hi))
         return cf_diag_set(&fig->err, CF_STATUS_DOMAIN, -1,
-                         "B-spline range [%g, %g] must lie inside the "
-                         "domain [%g, %g]", a, b, lo, hi);
+                           "B-spline range [%g, %g] must lie inside the "
+                           "domain [%g, %g]", a, b, lo, hi);
     st = cf_bspline_to_beziers(s, &list, &fig->err);
     if (st != CF_STATUS_OK)
         return st;
@@ -386,9 +387,9 @@ cf_figure_add_bspline(cf_figure_t *fig, const struct cf_bspline *s,
         return fig->err.status;
     if (cf_bspline_dim(s) < 2)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "a B-spline in R^%zu cannot be drawn as a plane "
-                         "curve (use a graph for functions)",
-                         cf_bspline_dim(s));
+                           "a B-spline in R^%zu cannot be drawn as a plane "
+                           "curve (use a graph for functions)",
+                           cf_bspline_dim(s));
     e = cf__curve_new(fig, CF_ROLE_CURVE, style);
     if (e == NULL)
         return fig->err.status;
@@ -409,8 +410,8 @@ cf_figure_add_bspline_knots(cf_figure_t *fig, const struct cf_bspline *s,
     dim = cf_bspline_dim(s);
     if (dim < 2)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "knot marks need a curve in R^2 or more, not "
-                         "R^%zu", dim);
+                           "knot marks need a curve in R^2 or more, not "
+                           "R^%zu", dim);
     u = cf_bspline_knots(s);
     m = cf_bspline_nknots(s);
     cf_bspline_domain(s, &lo, &hi);
@@ -420,7 +421,7 @@ cf_figure_add_bspline_knots(cf_figure_t *fig, const struct cf_bspline *s,
         cf_free(buf);
         cf_free(pts);
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory for knot marks");
+                           "out of memory for knot marks");
     }
     /* layout of pts: n points, then (after compaction) n tangents */
     for (i = 0; i < m && st == CF_STATUS_OK; i++) {

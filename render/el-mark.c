@@ -89,7 +89,7 @@ cf_figure_add_label(cf_figure_t *fig, double x, double y, const char *text,
     return cf__element_commit(
         fig, e,
         cf__text_set(fig, &e->text, text,
-                     cf__role_font_size(fig, CF_ROLE_LABEL, style)));
+                              cf__role_font_size(fig, CF_ROLE_LABEL, style)));
 }
 
 /* ---- arrows ------------------------------------------------------------- */

@@ -271,10 +271,7 @@ add_points_el(cf_figure_t *fig, const cf__kind_t *kind, cf_role_t role,
     e->n = n;
     e->closed = closed;
     if (e->pts == NULL)
-        return cf__element_commit(fig, e,
-                                  cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY,
-                                              -1, "out of memory for %s",
-                                              what));
+        return cf__element_commit(fig, e, cf__fig_nomem(fig, what));
     return cf__element_commit(fig, e, CF_STATUS_OK);
 }
 
@@ -330,15 +327,14 @@ cf_figure_add_knot_marks(cf_figure_t *fig, const double *pts,
         return fig->err.status;
     if (tangents != NULL
         && cf_check_finite_points(tangents, n, 2, 2, "knot tangent",
-                                   &fig->err) != CF_STATUS_OK)
+                                  &fig->err) != CF_STATUS_OK)
         return fig->err.status;
     e = cf__element_new(fig, &knots_kind, sizeof *e, CF_ROLE_KNOTS, style);
     if (e == NULL)
         return fig->err.status;
     e->pts = cf_alloc_array(4 * n, sizeof *e->pts);
     if (e->pts == NULL)
-        return cf__element_commit(fig, e, cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                                        "out of memory for knot marks"));
+        return cf__element_commit(fig, e, cf__fig_nomem(fig, "knot marks"));
     memcpy(e->pts, pts, 2 * n * sizeof *pts);
     if (tangents != NULL)
         memcpy(e->pts + 2 * n, tangents, 2 * n * sizeof *pts);
@@ -356,11 +352,11 @@ cf_figure_add_net(cf_figure_t *fig, const double *pts, const size_t *counts,
     CF__FIG_CHECK(fig);
     if (counts == NULL || levels == 0)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "net: counts NULL or no level");
+                           "net: counts NULL or no level");
     for (j = 0; j < levels; j++) {
         if (counts[j] == 0 || counts[j] > ((size_t)1 << 24))
             return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, (long)j,
-                             "net level %zu has %zu points", j, counts[j]);
+                               "net level %zu has %zu points", j, counts[j]);
         total += counts[j];
     }
     if (cf__fig_check_points(fig, pts, total, 1, "net point") != CF_STATUS_OK
@@ -390,8 +386,7 @@ cf_figure_add_net(cf_figure_t *fig, const double *pts, const size_t *counts,
     }
     if (e->p.pts == NULL || e->counts == NULL
         || (colors != NULL && e->colors == NULL))
-        return cf__element_commit(fig, e, cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                                        "out of memory for a net"));
+        return cf__element_commit(fig, e, cf__fig_nomem(fig, "a net"));
     memcpy(e->counts, counts, levels * sizeof *counts);
     return cf__element_commit(fig, e, CF_STATUS_OK);
 }

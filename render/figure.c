@@ -20,6 +20,13 @@ cf__fig_fail(cf_figure_t *fig, cf_status_t st, const char *what)
 }
 
 cf_status_t
+cf__fig_nomem(cf_figure_t *fig, const char *what)
+{
+    return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                       "out of memory for %s", what);
+}
+
+cf_status_t
 cf__fig_check_points(cf_figure_t *fig, const double *pts, size_t n,
                      size_t min, const char *what)
 {
@@ -49,25 +56,25 @@ cf_figure_create(double width, double height, cf_unit_t unit,
     double w, h;
     if (out == NULL)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "figure output pointer is NULL");
+                           "figure output pointer is NULL");
     *out = NULL;
     if ((unsigned)unit >= CF_UNIT_LAST_)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "unknown unit %d", (int)unit);
+                           "unknown unit %d", (int)unit);
     w = cf_length_to_bp(width, unit);
     h = cf_length_to_bp(height, unit);
     if (!(isfinite(w) && isfinite(h) && w > 0 && h > 0))
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "figure size %g x %g must be finite and positive",
-                         width, height);
+                           "figure size %g x %g must be finite and positive",
+                           width, height);
     if (w > 14400 || h > 14400)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "figure size %g x %g bp exceeds 14400 bp (200 in)",
-                         w, h);
+                           "figure size %g x %g bp exceeds 14400 bp (200 in)",
+                           w, h);
     fig = cf_calloc(1, sizeof *fig);
     if (fig == NULL)
         return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory for a figure");
+                           "out of memory for a figure");
     cf_diag_clear(&fig->err);
     fig->width = w;
     fig->height = h;
@@ -129,7 +136,7 @@ set_string(cf_figure_t *fig, char **dst, const char *src, const char *what)
         copy = cf_malloc(n + 1);
         if (copy == NULL)
             return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                             "out of memory for the %s", what);
+                               "out of memory for the %s", what);
         memcpy(copy, src, n + 1);
     }
     cf_free(*dst);
@@ -157,7 +164,7 @@ cf_figure_set_theme(cf_figure_t *fig, const cf_theme_t *theme)
     CF__FIG_CHECK(fig);
     if (theme == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "theme is NULL");
+                           "theme is NULL");
     for (i = 0; i < CF_ROLE_LAST_; i++) {
         cf_style_t s = theme->role[i];
         s.set = CF_STYLE_ALL_;
@@ -166,16 +173,16 @@ cf_figure_set_theme(cf_figure_t *fig, const cf_theme_t *theme)
     }
     if (theme->palette_size < 1 || theme->palette_size > CF_PALETTE_MAX)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "theme palette has %zu colours (1 to %d allowed)",
-                         theme->palette_size, CF_PALETTE_MAX);
+                           "theme palette has %zu colours (1 to %d allowed)",
+                           theme->palette_size, CF_PALETTE_MAX);
     if (memchr(theme->font_family, '\0', CF_FONT_FAMILY_MAX) == NULL
         || theme->font_family[0] == '\0')
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "theme font family is empty or not terminated");
+                           "theme font family is empty or not terminated");
     if (!(isfinite(theme->tick_size) && theme->tick_size >= 0))
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "theme tick size %g must be finite and >= 0",
-                         theme->tick_size);
+                           "theme tick size %g must be finite and >= 0",
+                           theme->tick_size);
     fig->theme = *theme;
     return CF_STATUS_OK;
 }
@@ -199,12 +206,12 @@ cf_figure_set_window(cf_figure_t *fig, double xmin, double xmax, double ymin,
     if (!(isfinite(xmin) && isfinite(xmax) && isfinite(ymin)
           && isfinite(ymax)))
         return cf_diag_set(&fig->err, CF_STATUS_NOT_FINITE, -1,
-                         "window [%g, %g] x [%g, %g] is not finite", xmin,
-                         xmax, ymin, ymax);
+                           "window [%g, %g] x [%g, %g] is not finite", xmin,
+                           xmax, ymin, ymax);
     if (!(xmin < xmax && ymin < ymax))
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "window [%g, %g] x [%g, %g] is empty", xmin, xmax,
-                         ymin, ymax);
+                           "window [%g, %g] x [%g, %g] is empty", xmin, xmax,
+                           ymin, ymax);
     fig->window_set = true;
     fig->win[0] = xmin;
     fig->win[1] = xmax;
@@ -228,9 +235,9 @@ cf_figure_set_fit(cf_figure_t *fig, double margin_bp, bool keep_aspect)
     if (!(isfinite(margin_bp) && margin_bp >= 0
           && 2 * margin_bp < fmin(fig->width, fig->height)))
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "margin %g bp must be >= 0 and leave room on a "
-                         "%g x %g bp page", margin_bp, fig->width,
-                         fig->height);
+                           "margin %g bp must be >= 0 and leave room on a "
+                           "%g x %g bp page", margin_bp, fig->width,
+                           fig->height);
     fig->margin = margin_bp;
     fig->aspect = keep_aspect ? 1 : 0;
     return CF_STATUS_OK;
@@ -250,7 +257,7 @@ cf_figure_set_tolerance(cf_figure_t *fig, double tol_bp)
     CF__FIG_CHECK(fig);
     if (!(isfinite(tol_bp) && tol_bp > 0))
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "tolerance %g must be finite and positive", tol_bp);
+                           "tolerance %g must be finite and positive", tol_bp);
     fig->tol = tol_bp;
     return CF_STATUS_OK;
 }
@@ -262,15 +269,15 @@ cf_figure_set_projection(cf_figure_t *fig, size_t dim, const double *m)
     CF__FIG_CHECK(fig);
     if (dim < 2 || dim > 64 || m == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "projection: dimension %zu must be 2..64 and the "
-                         "matrix not NULL", dim);
+                           "projection: dimension %zu must be 2..64 and the "
+                           "matrix not NULL", dim);
     if (cf_check_finite_points(m, 2, dim, dim, "projection row",
-                                &fig->err) != CF_STATUS_OK)
+                               &fig->err) != CF_STATUS_OK)
         return fig->err.status;
     copy = cf_alloc_array(2 * dim, sizeof *copy);
     if (copy == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory for a projection");
+                           "out of memory for a projection");
     memcpy(copy, m, 2 * dim * sizeof *copy);
     cf_free(fig->proj);
     fig->proj = copy;
@@ -305,10 +312,10 @@ cf_figure_project(cf_figure_t *fig, const double *in, size_t n, size_t dim,
     CF__FIG_CHECK(fig);
     if ((in == NULL || out == NULL) && n > 0)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "project: points or output are NULL");
+                           "project: points or output are NULL");
     if (dim < 2)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "project: dimension %zu is below 2", dim);
+                           "project: dimension %zu is below 2", dim);
     if (cf_check_finite_points(in, n, dim, dim, "point", &fig->err)
         != CF_STATUS_OK)
         return fig->err.status;

@@ -27,7 +27,7 @@ cf_format_from_name(const char *name, cf_format_t *out, cf_diag_t *diag)
     int i;
     if (name == NULL || out == NULL)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "format name or output is NULL");
+                           "format name or output is NULL");
     for (i = 0; i < CF_FORMAT_LAST_; i++) {
         if (strcmp(name, format_names[i]) == 0) {
             *out = (cf_format_t)i;
@@ -35,8 +35,8 @@ cf_format_from_name(const char *name, cf_format_t *out, cf_diag_t *diag)
         }
     }
     return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                     "unknown format \"%s\" (use svg, pdf, ps, eps or png)",
-                     name);
+                       "unknown format \"%s\" (use svg, pdf, ps, eps or png)",
+                       name);
 }
 
 const char *

@@ -41,7 +41,7 @@ perr(parser_t *p, size_t at, const char *what)
 {
     if (p->st == CF_STATUS_OK)
         p->st = cf_diag_set(p->diag, CF_STATUS_INVALID_ARG, (long)at,
-                          "label \"%s\": %s at byte %zu", p->s, what, at);
+                            "label \"%s\": %s at byte %zu", p->s, what, at);
     return p->st;
 }
 
@@ -50,7 +50,7 @@ pnomem(parser_t *p)
 {
     if (p->st == CF_STATUS_OK)
         p->st = cf_diag_set(p->diag, CF_STATUS_NO_MEMORY, -1,
-                          "label \"%s\": out of memory", p->s);
+                            "label \"%s\": out of memory", p->s);
     return p->st;
 }
 
@@ -227,7 +227,8 @@ parse_frac(parser_t *p, const font_t *f, double x, double y, piece_t *pc,
     move_runs(p->lab, num.first, num.end, (w - wn) / 2, up);
     move_runs(p->lab, den.first, den.end, (w - wd) / 2, -down);
     /* the rule, as a run without text */
-    if (isnan(cf__label_put_text(p->lab, f, x + pad, y + axis - th / 2, "", 0))) {
+    if (isnan(cf__label_put_text(p->lab, f, x + pad, y + axis - th / 2, "",
+                                 0))) {
         pnomem(p);
         return false;
     }

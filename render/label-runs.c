@@ -89,7 +89,8 @@ cf__label_put_text(cf_label_t *lab, const font_t *f, double x, double y,
     run_t *r = lab->count > 0 ? &lab->runs[lab->count - 1] : NULL;
     char *t;
 
-    if (r != NULL && lab->merge_ok && r->rule_h == 0 && r->size == f->size && r->italic == f->italic
+    if (r != NULL && lab->merge_ok && r->rule_h == 0 && r->size == f->size
+        && r->italic == f->italic
         && r->bold == f->bold && r->y == y && r->kind == f->kind
         && r->level == f->level && fabs(r->x + r->width - x) < 1e-9) {
         t = cf_realloc_array(r->text, r->text_len + n + 1, 1);
@@ -140,7 +141,8 @@ cf__label_put_text(cf_label_t *lab, const font_t *f, double x, double y,
 ** 0.222 em); an OpenType text italic has no such table, so it is measured
 ** on the glyph outline of the character alone. */
 double
-cf__label_italic_correction(cf_label_t *lab, const font_t *f, const char *s, size_t n)
+cf__label_italic_correction(cf_label_t *lab, const font_t *f, const char *s,
+                            size_t n)
 {
     run_t r;
     char text[8];

@@ -62,28 +62,28 @@ cf_label_create(const char *text, const char *family, double size_bp,
         *out = NULL;
     if (text == NULL || out == NULL)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "label text or output is NULL");
+                           "label text or output is NULL");
     if (!(isfinite(size_bp) && size_bp > 0 && size_bp <= 1000))
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "label \"%s\": font size %g must lie in (0, 1000] "
-                         "bp", text, size_bp);
+                           "label \"%s\": font size %g must lie in (0, 1000] "
+                           "bp", text, size_bp);
     if (family == NULL)
         family = CF__DEFAULT_FAMILY;
     if (family[0] == '\0' || strlen(family) >= CF_FONT_FAMILY_MAX)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "font family list is empty or longer than %d bytes",
-                         CF_FONT_FAMILY_MAX - 1);
+                           "font family list is empty or longer than %d bytes",
+                           CF_FONT_FAMILY_MAX - 1);
     lab = cf_calloc(1, sizeof *lab);
     if (lab == NULL)
         return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory for a label");
+                           "out of memory for a label");
     len = strlen(family);
     lab->family = cf_malloc(len + 1);
     lab->ctx = make_context();
     if (lab->family == NULL || lab->ctx == NULL) {
         cf_label_destroy(lab);
         return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory for a label");
+                           "out of memory for a label");
     }
     memcpy(lab->family, family, len + 1);
     lab->size = size_bp;
@@ -96,11 +96,11 @@ cf_label_create(const char *text, const char *family, double size_bp,
         }
     }
     lab->boxes = cf_alloc_array(lab->count ? lab->count : 1,
-                                 sizeof *lab->boxes);
+                                sizeof *lab->boxes);
     if (lab->boxes == NULL) {
         cf_label_destroy(lab);
         return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory for a label");
+                           "out of memory for a label");
     }
     for (i = 0; i < lab->count; i++) {
         const run_t *r = &lab->runs[i];

@@ -103,11 +103,11 @@ cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
     ** DBL_MAX (or a window of such width) overflow it */
     if (!isfinite(win[1] - win[0]) || !isfinite(win[3] - win[2]))
         return cf_diag_set(&fig->err,
-                         CF_STATUS_NOT_FINITE, -1,
-                         "the %s spans %g x %g, too large to draw "
-                         "(coordinates up to about 1e307)",
-                         fig->window_set ? "window" : "drawing",
-                         win[1] - win[0], win[3] - win[2]);
+                           CF_STATUS_NOT_FINITE, -1,
+                           "the %s spans %g x %g, too large to draw "
+                           "(coordinates up to about 1e307)",
+                           fig->window_set ? "window" : "drawing",
+                           win[1] - win[0], win[3] - win[2]);
     keep = fig->aspect == 1;
     if (fig->aspect < 0) {
         keep = true;

@@ -161,6 +161,8 @@ struct cf_figure {
 
 /* Record st in the figure (a generic message if the callee left none). */
 cf_status_t cf__fig_fail(cf_figure_t *fig, cf_status_t st, const char *what);
+/* "out of memory for <what>" in the figure. */
+cf_status_t cf__fig_nomem(cf_figure_t *fig, const char *what);
 /* n >= min finite points (what names them in messages). */
 cf_status_t cf__fig_check_points(cf_figure_t *fig, const double *pts,
                                  size_t n, size_t min, const char *what);

@@ -253,18 +253,18 @@ write_atomic(const char *path, const unsigned char *data, size_t n,
 
     if (path[0] == '\0' || path[strlen(path) - 1] == '/')
         return cf_diag_set(diag, CF_STATUS_IO, -1,
-                         "\"%s\" is not a file name", path);
+                           "\"%s\" is not a file name", path);
     tmp = cf_malloc(dlen + 16);
     if (tmp == NULL)
         return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory for a file name");
+                           "out of memory for a file name");
     memcpy(tmp, path, dlen);
     memcpy(tmp + dlen, ".cf-tmp-XXXXXX", 15);
     fd = mkstemp(tmp);
     if (fd < 0) {
         st = cf_diag_set(diag, CF_STATUS_IO, -1,
-                       "cannot create a temporary file for \"%s\": %s",
-                       path, strerror(errno));
+                         "cannot create a temporary file for \"%s\": %s",
+                         path, strerror(errno));
         cf_free(tmp);
         return st;
     }
@@ -274,22 +274,22 @@ write_atomic(const char *path, const unsigned char *data, size_t n,
             continue;
         if (w <= 0) {
             st = cf_diag_set(diag, CF_STATUS_IO, -1,
-                           "cannot write \"%s\": %s", tmp,
-                           w < 0 ? strerror(errno) : "no progress");
+                             "cannot write \"%s\": %s", tmp,
+                             w < 0 ? strerror(errno) : "no progress");
             break;
         }
         off += (size_t)w;
     }
     if (st == CF_STATUS_OK && fchmod(fd, 0644) != 0)
         st = cf_diag_set(diag, CF_STATUS_IO, -1, "cannot chmod \"%s\": %s",
-                       tmp, strerror(errno));
+                         tmp, strerror(errno));
     if (close(fd) != 0 && st == CF_STATUS_OK)
         st = cf_diag_set(diag, CF_STATUS_IO, -1, "cannot close \"%s\": %s",
-                       tmp, strerror(errno));
+                         tmp, strerror(errno));
     if (st == CF_STATUS_OK && rename(tmp, path) != 0)
         st = cf_diag_set(diag, CF_STATUS_IO, -1,
-                       "cannot rename the temporary file to \"%s\": %s",
-                       path, strerror(errno));
+                         "cannot rename the temporary file to \"%s\": %s",
+                         path, strerror(errno));
     if (st != CF_STATUS_OK)
         unlink(tmp);
     cf_free(tmp);

@@ -22,9 +22,9 @@ graph_bezier(cf_figure_t *fig, const cf_bezier_t *c, double x0, double x1,
     cf_status_t st;
     if (cf_bezier_dim(c) != 1 || cf_bezier_is_rational(c))
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "a graph piece must be a polynomial Bézier in R^1 "
-                         "(this one is in R^%zu%s)", cf_bezier_dim(c),
-                         cf_bezier_is_rational(c) ? ", rational" : "");
+                           "a graph piece must be a polynomial Bézier in R^1 "
+                           "(this one is in R^%zu%s)", cf_bezier_dim(c),
+                           cf_bezier_is_rational(c) ? ", rational" : "");
     /* a constant (degree 0) becomes a degree-1 segment over the whole
     ** interval: two control points */
     n = deg > 0 ? deg : 1;
@@ -52,21 +52,21 @@ cf_figure_add_graph(cf_figure_t *fig, const cf_bezier_t *const *pieces,
     CF__FIG_CHECK(fig);
     if (pieces == NULL || breaks == NULL || count == 0)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "graph: pieces or breaks NULL, or no piece");
+                           "graph: pieces or breaks NULL, or no piece");
     if (cf__fig_check_style(fig, style) != CF_STATUS_OK)
         return fig->err.status;
     if (cf_check_finite_points(breaks, count + 1, 1, 1, "graph break",
-                                &fig->err) != CF_STATUS_OK)
+                               &fig->err) != CF_STATUS_OK)
         return fig->err.status;
     for (i = 0; i < count; i++) {
         if (breaks[i + 1] < breaks[i])
             return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, (long)i + 1,
-                             "graph break %zu (%g) is smaller than break "
-                             "%zu (%g)", i + 1, breaks[i + 1], i,
-                             breaks[i]);
+                               "graph break %zu (%g) is smaller than break "
+                               "%zu (%g)", i + 1, breaks[i + 1], i,
+                               breaks[i]);
         if (pieces[i] == NULL)
             return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, (long)i,
-                             "graph piece %zu is NULL", i);
+                               "graph piece %zu is NULL", i);
     }
     e = cf__curve_new(fig, CF_ROLE_GRAPH, style);
     if (e == NULL)
@@ -94,23 +94,23 @@ cf_figure_add_graph_list(cf_figure_t *fig, const cf_bezier_list_t *list,
     if (list == NULL || list->count == 0 || list->items == NULL
         || list->t0 == NULL || list->t1 == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "graph list: NULL, empty, or without t0/t1 ranges");
+                           "graph list: NULL, empty, or without t0/t1 ranges");
     if (cf__fig_check_style(fig, style) != CF_STATUS_OK)
         return fig->err.status;
     breaks = cf_alloc_array(2 * list->count, sizeof *breaks);
     if (breaks == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory for a graph");
+                           "out of memory for a graph");
     for (i = 0; i < list->count; i++) {
         breaks[2 * i] = list->t0[i];
         breaks[2 * i + 1] = list->t1[i];
     }
     st = cf_check_finite_points(breaks, 2 * list->count, 1, 1,
-                                 "graph range", &fig->err);
+                                "graph range", &fig->err);
     for (i = 0; i < list->count && st == CF_STATUS_OK; i++) {
         if (list->items[i] == NULL || breaks[2 * i + 1] < breaks[2 * i])
             st = cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, (long)i,
-                           "graph list item %zu is NULL or has t1 < t0", i);
+                             "graph list item %zu is NULL or has t1 < t0", i);
     }
     if (st != CF_STATUS_OK) {
         cf_free(breaks);
@@ -165,27 +165,27 @@ cf_figure_add_basis(cf_figure_t *fig, const double *knots, size_t nknots,
     CF__FIG_CHECK(fig);
     if (knots == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "basis: knots are NULL");
+                           "basis: knots are NULL");
     if (p < 0 || p > CF_BSPLINE_MAX_DEGREE)
         return cf_diag_set(&fig->err, CF_STATUS_BAD_DEGREE, -1,
-                         "basis: degree %d is outside 0 .. %d", p,
-                         CF_BSPLINE_MAX_DEGREE);
+                           "basis: degree %d is outside 0 .. %d", p,
+                           CF_BSPLINE_MAX_DEGREE);
     if (i < 0 || (size_t)i + (size_t)p + 2 > m)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, i,
-                         "basis: N_%d^%d needs knots u_%d .. u_%d; %zu "
-                         "given", i, p, i, i + p + 1, m);
+                           "basis: N_%d^%d needs knots u_%d .. u_%d; %zu "
+                           "given", i, p, i, i + p + 1, m);
     if (cf_check_finite_points(knots, m, 1, 1, "knot", &fig->err)
         != CF_STATUS_OK || cf__fig_check_style(fig, style) != CF_STATUS_OK)
         return fig->err.status;
     for (k = 1; k < m; k++)
         if (knots[k] < knots[k - 1])
             return cf_diag_set(&fig->err, CF_STATUS_BAD_KNOTS, (long)k,
-                             "basis: knot %zu (%g) is smaller than knot %zu "
-                             "(%g)", k, knots[k], k - 1, knots[k - 1]);
+                               "basis: knot %zu (%g) is smaller than knot %zu "
+                               "(%g)", k, knots[k], k - 1, knots[k - 1]);
     if (!(knots[m - 1] > knots[0]))
         return cf_diag_set(&fig->err, CF_STATUS_BAD_KNOTS, -1,
-                         "basis: the knots span no interval (all %g)",
-                         knots[0]);
+                           "basis: the knots span no interval (all %g)",
+                           knots[0]);
     count = m + (size_t)p - 1;
     pu = cf_alloc_array(m + 2 * (size_t)p, sizeof *pu);
     coef = cf_calloc(count, sizeof *coef);
@@ -265,15 +265,15 @@ cf_figure_add_function(cf_figure_t *fig, cf_function_t f, void *closure,
     CF__FIG_CHECK(fig);
     if (f == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "function is NULL");
+                           "function is NULL");
     if (cf__fig_check_style(fig, style) != CF_STATUS_OK)
         return fig->err.status;
     if (!(isfinite(a) && isfinite(b)))
         return cf_diag_set(&fig->err, CF_STATUS_NOT_FINITE, -1,
-                         "function range [%g, %g] is not finite", a, b);
+                           "function range [%g, %g] is not finite", a, b);
     if (!(a < b))
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                         "function range [%g, %g] is empty", a, b);
+                           "function range [%g, %g] is empty", a, b);
     s.f = f;
     s.closure = closure;
     s.a = a;
@@ -353,11 +353,11 @@ cf_figure_add_function(cf_figure_t *fig, cf_function_t f, void *closure,
 done:
     if (st == CF_STATUS_OK && s.stopped)
         st = cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                       "the plotted function reported an error");
+                         "the plotted function reported an error");
     if (st == CF_STATUS_OK && s.bad)
         st = cf_diag_set(&fig->err, CF_STATUS_NOT_FINITE, -1,
-                       "the plotted function is not finite on [%g, %g]", a,
-                       b);
+                         "the plotted function is not finite on [%g, %g]", a,
+                         b);
     return cf__element_commit(fig, e, st);
 }
 

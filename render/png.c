@@ -152,8 +152,8 @@ write_idat(const unsigned char *data, int width, int height, int stride,
         cf_free(line);
         cf_free(zbuf);
         return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory compressing a PNG of %d x %d "
-                         "pixels", width, height);
+                           "out of memory compressing a PNG of %d x %d "
+                           "pixels", width, height);
     }
     z.next_out = zbuf;
     z.avail_out = IDAT_MAX;
@@ -195,8 +195,8 @@ write_idat(const unsigned char *data, int width, int height, int stride,
     cf_free(zbuf);
     if (failed)
         return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory writing a PNG of %d x %d pixels",
-                         width, height);
+                           "out of memory writing a PNG of %d x %d pixels",
+                           width, height);
     return CF_STATUS_OK;
 }
 
@@ -216,11 +216,11 @@ cf__png_encode(cairo_surface_t *image, double dpi, cf__buf_t *out,
 
     if (image == NULL || out == NULL)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "PNG: image or output is NULL");
+                           "PNG: image or output is NULL");
     if (cairo_surface_status(image) != CAIRO_STATUS_SUCCESS
         || cairo_surface_get_type(image) != CAIRO_SURFACE_TYPE_IMAGE)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "PNG: not a valid cairo image surface");
+                           "PNG: not a valid cairo image surface");
     cairo_surface_flush(image);
     format = cairo_image_surface_get_format(image);
     width = cairo_image_surface_get_width(image);
@@ -229,15 +229,15 @@ cf__png_encode(cairo_surface_t *image, double dpi, cf__buf_t *out,
     data = cairo_image_surface_get_data(image);
     if (format != CAIRO_FORMAT_ARGB32 && format != CAIRO_FORMAT_RGB24)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "PNG: image format %d is not ARGB32 or RGB24",
-                         (int)format);
+                           "PNG: image format %d is not ARGB32 or RGB24",
+                           (int)format);
     if (data == NULL || width < 1 || height < 1)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "PNG: image of %d x %d pixels has no data", width,
-                         height);
+                           "PNG: image of %d x %d pixels has no data", width,
+                           height);
     if (!isfinite(dpi))
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "PNG: resolution %g dpi is not finite", dpi);
+                           "PNG: resolution %g dpi is not finite", dpi);
     rgba = format == CAIRO_FORMAT_ARGB32
         && !all_opaque(data, width, height, stride);
 
@@ -251,7 +251,7 @@ cf__png_encode(cairo_surface_t *image, double dpi, cf__buf_t *out,
     if (cf__buf_append(out, signature, sizeof signature) != 0
         || append_chunk(out, "IHDR", ihdr, sizeof ihdr) != 0)
         return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory writing a PNG header");
+                           "out of memory writing a PNG header");
     if (dpi > 0) {
         /* pixels per metre, the same along x and y; unit 1 = metre */
         double ppm = floor(dpi / 0.0254 + 0.5);
@@ -261,13 +261,13 @@ cf__png_encode(cairo_surface_t *image, double dpi, cf__buf_t *out,
         phys[8] = 1;
         if (append_chunk(out, "pHYs", phys, sizeof phys) != 0)
             return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
-                             "out of memory writing a PNG header");
+                               "out of memory writing a PNG header");
     }
     st = write_idat(data, width, height, stride, rgba, out, diag);
     if (st != CF_STATUS_OK)
         return st;
     if (append_chunk(out, "IEND", NULL, 0) != 0)
         return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory writing a PNG trailer");
+                           "out of memory writing a PNG trailer");
     return CF_STATUS_OK;
 }

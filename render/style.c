@@ -49,12 +49,12 @@ cf_unit_from_name(const char *name, cf_unit_t *out, cf_diag_t *diag)
     int i;
     if (name == NULL || out == NULL)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "unit name or output is NULL");
+                           "unit name or output is NULL");
     i = name_index(name, names, sizeof names / sizeof names[0]);
     if (i < 0)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "unknown unit \"%s\" (use bp, pt, texpt, mm, cm "
-                         "or in)", name);
+                           "unknown unit \"%s\" (use bp, pt, texpt, mm, cm "
+                           "or in)", name);
     *out = units[i];
     return CF_STATUS_OK;
 }
@@ -107,7 +107,7 @@ cf_color_parse(const char *text, cf_color_t *out, cf_diag_t *diag)
     size_t i, len;
     if (text == NULL || out == NULL)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "colour text or output is NULL");
+                           "colour text or output is NULL");
     len = strlen(text);
     if (text[0] == '#' && (len == 7 || len == 9)) {
         unsigned v[4] = { 0, 0, 0, 255 };
@@ -116,8 +116,8 @@ cf_color_parse(const char *text, cf_color_t *out, cf_diag_t *diag)
             int lo = hex_digit(text[2 + 2 * i]);
             if (hi < 0 || lo < 0)
                 return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                                 "colour \"%s\" is not #rrggbb or "
-                                 "#rrggbbaa", text);
+                                   "colour \"%s\" is not #rrggbb or "
+                                   "#rrggbbaa", text);
             v[i] = (unsigned)(hi * 16 + lo);
         }
         *out = rgb_color((v[0] << 16) | (v[1] << 8) | v[2], v[3] / 255.0);
@@ -134,8 +134,8 @@ cf_color_parse(const char *text, cf_color_t *out, cf_diag_t *diag)
         }
     }
     return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                     "unknown colour \"%s\" (use #rrggbb, #rrggbbaa, none "
-                     "or a colour name such as black, grey, blue)", text);
+                       "unknown colour \"%s\" (use #rrggbb, #rrggbbaa, none "
+                       "or a colour name such as black, grey, blue)", text);
 }
 
 /* ---- markers and places ------------------------------------------------- */
@@ -150,13 +150,13 @@ cf_marker_from_name(const char *name, cf_marker_t *out, cf_diag_t *diag)
     int i;
     if (name == NULL || out == NULL)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "marker name or output is NULL");
+                           "marker name or output is NULL");
     i = name_index(name, names, CF_MARKER_LAST_);
     if (i < 0)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "unknown marker \"%s\" (use none, dot, circle, "
-                         "square, diamond, triangle, cross, plus, star or "
-                         "tick)", name);
+                           "unknown marker \"%s\" (use none, dot, circle, "
+                           "square, diamond, triangle, cross, plus, star or "
+                           "tick)", name);
     *out = (cf_marker_t)i;
     return CF_STATUS_OK;
 }
@@ -177,14 +177,14 @@ cf_place_from_name(const char *name, cf_place_t *out, cf_diag_t *diag)
     int i;
     if (name == NULL || out == NULL)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "place name or output is NULL");
+                           "place name or output is NULL");
     i = name_index(name, names, sizeof names / sizeof names[0]);
     if (i < 0)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "unknown label place \"%s\" (use center, n, ne, "
-                         "e, se, s, sw, w, nw, above, below, left, right "
-                         "or auto)",
-                         name);
+                           "unknown label place \"%s\" (use center, n, ne, "
+                           "e, se, s, sw, w, nw, above, below, left, right "
+                           "or auto)",
+                           name);
     *out = places[i];
     return CF_STATUS_OK;
 }
@@ -215,73 +215,73 @@ cf__style_check(const cf_style_t *s, cf_diag_t *diag)
         return CF_STATUS_OK;
     if (s->set & ~(unsigned)CF_STYLE_ALL_)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: unknown bits 0x%x in set",
-                         s->set & ~(unsigned)CF_STYLE_ALL_);
+                           "style: unknown bits 0x%x in set",
+                           s->set & ~(unsigned)CF_STYLE_ALL_);
     if ((s->set & CF_STYLE_COLOR) && !color_ok(&s->color))
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: colour components must lie in [0, 1]");
+                           "style: colour components must lie in [0, 1]");
     if ((s->set & CF_STYLE_FILL) && !color_ok(&s->fill))
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: fill components must lie in [0, 1]");
+                           "style: fill components must lie in [0, 1]");
     if ((s->set & CF_STYLE_MARKER_COLOR) && !color_ok(&s->marker_color))
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: marker colour components must lie in "
-                         "[0, 1]");
+                           "style: marker colour components must lie in "
+                           "[0, 1]");
     if ((s->set & CF_STYLE_WIDTH) && !(isfinite(s->width) && s->width > 0))
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: line width %g must be finite and positive",
-                         s->width);
+                           "style: line width %g must be finite and positive",
+                           s->width);
     if (s->set & CF_STYLE_DASH) {
         double sum = 0;
         if (s->dash_count > CF_STYLE_DASH_MAX)
             return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                             "style: %zu dash lengths (at most %d)",
-                             s->dash_count, CF_STYLE_DASH_MAX);
+                               "style: %zu dash lengths (at most %d)",
+                               s->dash_count, CF_STYLE_DASH_MAX);
         for (i = 0; i < s->dash_count; i++) {
             if (!(isfinite(s->dash[i]) && s->dash[i] >= 0))
                 return cf_diag_set(diag, CF_STATUS_INVALID_ARG, (long)i,
-                                 "style: dash length %zu (%g) must be "
-                                 "finite and >= 0", i, s->dash[i]);
+                                   "style: dash length %zu (%g) must be "
+                                   "finite and >= 0", i, s->dash[i]);
             sum += s->dash[i];
         }
         if (s->dash_count > 0 && !(sum > 0))
             return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                             "style: dash lengths are all zero");
+                               "style: dash lengths are all zero");
     }
     if ((s->set & CF_STYLE_OPACITY)
         && !(isfinite(s->opacity) && s->opacity >= 0 && s->opacity <= 1))
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: opacity %g must lie in [0, 1]", s->opacity);
+                           "style: opacity %g must lie in [0, 1]", s->opacity);
     if ((s->set & CF_STYLE_MARKER)
         && ((unsigned)s->marker >= CF_MARKER_LAST_))
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: unknown marker %d", (int)s->marker);
+                           "style: unknown marker %d", (int)s->marker);
     if ((s->set & CF_STYLE_MARKER_SIZE)
         && !(isfinite(s->marker_size) && s->marker_size >= 0))
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: marker size %g must be finite and >= 0",
-                         s->marker_size);
+                           "style: marker size %g must be finite and >= 0",
+                           s->marker_size);
     if ((s->set & CF_STYLE_FONT_SIZE)
         && !(isfinite(s->font_size) && s->font_size > 0
              && s->font_size <= 1000))
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: font size %g must lie in (0, 1000] bp",
-                         s->font_size);
+                           "style: font size %g must lie in (0, 1000] bp",
+                           s->font_size);
     if ((s->set & CF_STYLE_PLACE) && ((unsigned)s->place >= CF_PLACE_LAST_))
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: unknown label place %d", (int)s->place);
+                           "style: unknown label place %d", (int)s->place);
     if ((s->set & CF_STYLE_OFFSET) && !isfinite(s->offset))
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: label offset is not finite");
+                           "style: label offset is not finite");
     if ((s->set & CF_STYLE_HALO)
         && !(isfinite(s->halo) && s->halo >= 0 && s->halo <= 100))
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: halo %g must lie in [0, 100] bp", s->halo);
+                           "style: halo %g must lie in [0, 100] bp", s->halo);
     if ((s->set & CF_STYLE_ARROW_SIZE)
         && !(isfinite(s->arrow_size) && s->arrow_size >= 0))
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: arrow size %g must be finite and >= 0",
-                         s->arrow_size);
+                           "style: arrow size %g must be finite and >= 0",
+                           s->arrow_size);
     return CF_STATUS_OK;
 }
 
@@ -441,13 +441,13 @@ cf_theme_get(const char *name, cf_theme_t *out, cf_diag_t *diag)
 {
     if (name == NULL || out == NULL)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "theme name or output is NULL");
+                           "theme name or output is NULL");
     if (strcmp(name, "default") == 0)
         theme_default(out);
     else if (strcmp(name, "mono") == 0)
         theme_mono(out);
     else
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                         "unknown theme \"%s\" (use default or mono)", name);
+                           "unknown theme \"%s\" (use default or mono)", name);
     return CF_STATUS_OK;
 }

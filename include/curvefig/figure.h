@@ -52,8 +52,9 @@ typedef struct cf_figure cf_figure_t;
 
 /* A figure of width x height (> 0, finite) in the given unit.  *out is
 ** NULL on failure. */
-CF_API cf_status_t cf_figure_create(double width, double height, cf_unit_t unit,
-                             cf_figure_t **out, cf_diag_t *diag);
+CF_API cf_status_t cf_figure_create(double width, double height,
+                                    cf_unit_t unit, cf_figure_t **out,
+                                    cf_diag_t *diag);
 CF_API void cf_figure_destroy(cf_figure_t *fig);
 
 /* The figure's first error (CF_STATUS_OK if none); fills diag (if not
@@ -62,16 +63,18 @@ CF_API cf_status_t cf_figure_status(const cf_figure_t *fig, cf_diag_t *diag);
 
 /* Page size in bp (before any tight cropping). */
 CF_API void cf_figure_get_size(const cf_figure_t *fig, double *width_bp,
-                        double *height_bp);
+                               double *height_bp);
 
 /* Title and description: SVG <title>/<desc>, PDF Title/Subject metadata.
 ** UTF-8, copied.  NULL clears. */
 CF_API cf_status_t cf_figure_set_title(cf_figure_t *fig, const char *title);
-CF_API cf_status_t cf_figure_set_caption(cf_figure_t *fig, const char *caption);
+CF_API cf_status_t cf_figure_set_caption(cf_figure_t *fig,
+                                         const char *caption);
 
 /* Copy a theme into the figure (default: cf_theme_get("default")).
 ** Applies to all elements, including ones already added. */
-CF_API cf_status_t cf_figure_set_theme(cf_figure_t *fig, const cf_theme_t *theme);
+CF_API cf_status_t cf_figure_set_theme(cf_figure_t *fig,
+                                       const cf_theme_t *theme);
 /* The figure's current theme (to modify and set back). */
 CF_API void cf_figure_get_theme(const cf_figure_t *fig, cf_theme_t *out);
 
@@ -84,8 +87,8 @@ CF_API void cf_figure_get_theme(const cf_figure_t *fig, cf_theme_t *out);
 ** vertices and labels anchored outside the window are left out; arrows
 ** and axes are drawn whole.  Only what remains is given room (a close-up
 ** of a larger drawing keeps its scale). */
-CF_API cf_status_t cf_figure_set_window(cf_figure_t *fig, double xmin, double xmax,
-                                 double ymin, double ymax);
+CF_API cf_status_t cf_figure_set_window(cf_figure_t *fig, double xmin,
+                                        double xmax, double ymin, double ymax);
 /* Go back to a window fitted to what is drawn (the default): the tight
 ** box of curves (not of their control points, unless those are drawn too),
 ** polygon vertices, points, arrow ends, label anchors, axes ranges. */
@@ -96,12 +99,12 @@ CF_API cf_status_t cf_figure_set_window_auto(cf_figure_t *fig);
 ** equal scales on both axes.  Until this is called the aspect ratio is
 ** kept, except in figures with axes (function plots). */
 CF_API cf_status_t cf_figure_set_fit(cf_figure_t *fig, double margin_bp,
-                              bool keep_aspect);
+                                     bool keep_aspect);
 /* The window and the data -> page map the figure would use now:
 ** window[4] = xmin xmax ymin ymax; page x = sx * (x - xmin) + ox, page
 ** y (down) = oy - sy * (y - ymin).  Any output may be NULL. */
 CF_API cf_status_t cf_figure_get_window(cf_figure_t *fig, double window[4],
-                                 double *sx, double *sy);
+                                        double *sx, double *sy);
 
 /* What is drawn must lie on the page: writing or rendering a figure (not
 ** cropped with the tight option) whose ink sticks out of its fixed page is
@@ -119,11 +122,11 @@ CF_API cf_status_t cf_figure_set_tolerance(cf_figure_t *fig, double tol_bp);
 ** cf_figure_project and for curves of dim >= 3.  Default for any dim:
 ** (x, y) = first two coordinates. */
 CF_API cf_status_t cf_figure_set_projection(cf_figure_t *fig, size_t dim,
-                                     const double *m);
+                                            const double *m);
 /* out[2 * n] = projection of n points of dimension dim (stride dim);
 ** dim == 2 copies.  out may equal in only when dim == 2. */
-CF_API cf_status_t cf_figure_project(cf_figure_t *fig, const double *in, size_t n,
-                              size_t dim, double *out);
+CF_API cf_status_t cf_figure_project(cf_figure_t *fig, const double *in,
+                                     size_t n, size_t dim, double *out);
 
 /* ---- elements (drawn in the order added) -------------------------------- */
 
@@ -131,40 +134,42 @@ CF_API cf_status_t cf_figure_project(cf_figure_t *fig, const double *in, size_t 
 ** the projection.  The curve is copied.  dim 1: INVALID_ARG (use
 ** cf_figure_add_graph).  Role CF_ROLE_CURVE. */
 CF_API cf_status_t cf_figure_add_bezier(cf_figure_t *fig, const cf_bezier_t *c,
-                                 const cf_style_t *style);
+                                        const cf_style_t *style);
 
 /* Only the arc on [a, b] of the parameter domain [0, 1] (0 <= a < b <= 1),
 ** e.g. to highlight a part of a curve drawn before. */
 CF_API cf_status_t cf_figure_add_bezier_range(cf_figure_t *fig,
-                                       const cf_bezier_t *c, double a,
-                                       double b, const cf_style_t *style);
+                                              const cf_bezier_t *c, double a,
+                                              double b,
+                                              const cf_style_t *style);
 
 /* The curves of a list (cf_bspline_to_beziers, Ferguson and Coons chains,
 ** ...) drawn as one path: consecutive items that meet continue the same
 ** subpath, so joins are joins, not two line caps.  Items of dim >= 3 are
 ** projected; every item is copied. */
 CF_API cf_status_t cf_figure_add_bezier_list(cf_figure_t *fig,
-                                      const cf_bezier_list_t *list,
-                                      const cf_style_t *style);
+                                             const cf_bezier_list_t *list,
+                                             const cf_style_t *style);
 
 /* A chain of cubic segments (cf_bezier_to_cubics, offsets) of dim 2, drawn
 ** as one path (a jump between segments starts a new subpath). Copied. */
-CF_API cf_status_t cf_figure_add_cubics(cf_figure_t *fig, const cf_cubics_t *cubics,
-                                 const cf_style_t *style);
+CF_API cf_status_t cf_figure_add_cubics(cf_figure_t *fig,
+                                        const cf_cubics_t *cubics,
+                                        const cf_style_t *style);
 
 /* A B-spline or NURBS curve (include/curvefig/bspline.h), drawn through its
 ** Bézier pieces.  a < b restricts it to the parameter range [a, b] (inside
 ** the domain); a == b (e.g. both 0) draws the whole domain. */
 CF_API cf_status_t cf_figure_add_bspline(cf_figure_t *fig,
-                                  const struct cf_bspline *s, double a,
-                                  double b, const cf_style_t *style);
+                                         const struct cf_bspline *s, double a,
+                                         double b, const cf_style_t *style);
 
 /* Knot marks: C(u_i) for every distinct knot u_i in the curve's domain,
 ** drawn as the style's marker (CF_MARKER_TICK: a bar across the curve).
 ** Role CF_ROLE_KNOTS. */
 CF_API cf_status_t cf_figure_add_bspline_knots(cf_figure_t *fig,
-                                        const struct cf_bspline *s,
-                                        const cf_style_t *style);
+                                               const struct cf_bspline *s,
+                                               const cf_style_t *style);
 
 /* The distinct knots of s inside its domain, in order (the ones
 ** cf_figure_add_bspline_knots marks): value u[k], the index first[k] of
@@ -197,45 +202,47 @@ CF_API cf_status_t cf_figure_add_bspline_tangent(cf_figure_t *fig,
 
 /* Marks at given points; tangents (2 * n doubles, any length, may be NULL)
 ** orient CF_MARKER_TICK bars across the curve.  Role CF_ROLE_KNOTS. */
-CF_API cf_status_t cf_figure_add_knot_marks(cf_figure_t *fig, const double *pts,
-                                     const double *tangents, size_t n,
-                                     const cf_style_t *style);
+CF_API cf_status_t cf_figure_add_knot_marks(cf_figure_t *fig,
+                                            const double *pts,
+                                            const double *tangents, size_t n,
+                                            const cf_style_t *style);
 
 /* A control polygon: n >= 1 points joined by thin lines, a marker at each
 ** vertex.  Role CF_ROLE_POLYGON. */
 CF_API cf_status_t cf_figure_add_polygon(cf_figure_t *fig, const double *pts,
-                                  size_t n, const cf_style_t *style);
+                                         size_t n, const cf_style_t *style);
 
 /* Lines through n >= 2 points (closed: back to the first), no markers
 ** unless the style sets one.  Role CF_ROLE_POLYLINE. */
 CF_API cf_status_t cf_figure_add_polyline(cf_figure_t *fig, const double *pts,
-                                   size_t n, bool closed,
-                                   const cf_style_t *style);
+                                          size_t n, bool closed,
+                                          const cf_style_t *style);
 
 /* The convex hull of n >= 1 points, filled translucent and outlined.
 ** Role CF_ROLE_HULL. */
 CF_API cf_status_t cf_figure_add_hull(cf_figure_t *fig, const double *pts,
-                               size_t n, const cf_style_t *style);
+                                      size_t n, const cf_style_t *style);
 
 /* A filled polygon with these n >= 3 vertices as given.  Role CF_ROLE_FILL. */
 CF_API cf_status_t cf_figure_add_fill(cf_figure_t *fig, const double *pts,
-                               size_t n, const cf_style_t *style);
+                                      size_t n, const cf_style_t *style);
 
 /* Point markers.  Role CF_ROLE_POINTS. */
 CF_API cf_status_t cf_figure_add_points(cf_figure_t *fig, const double *pts,
-                                 size_t n, const cf_style_t *style);
+                                        size_t n, const cf_style_t *style);
 
 /* An arrow from (x, y) to (x + dx, y + dy) with a head at the end.
 ** Role CF_ROLE_ARROW. */
 CF_API cf_status_t cf_figure_add_arrow(cf_figure_t *fig, double x, double y,
-                                double dx, double dy,
-                                const cf_style_t *style);
+                                       double dx, double dy,
+                                       const cf_style_t *style);
 
 /* A label (syntax below) placed at style.place of (x, y), style.offset bp
 ** away.  Role CF_ROLE_LABEL.  Text is parsed when added (syntax errors are
 ** reported here, with the byte position). */
 CF_API cf_status_t cf_figure_add_label(cf_figure_t *fig, double x, double y,
-                                const char *text, const cf_style_t *style);
+                                       const char *text,
+                                       const cf_style_t *style);
 
 /* A de Casteljau triangle or de Boor net: level j has counts[j] points,
 ** stored one level after another in pts (2D).  Each level is drawn as a
@@ -244,9 +251,9 @@ CF_API cf_status_t cf_figure_add_label(cf_figure_t *fig, double x, double y,
 ** cf_bezier_decasteljau (counts n+1, n, ..., 1) fits directly.
 ** Role CF_ROLE_NET. */
 CF_API cf_status_t cf_figure_add_net(cf_figure_t *fig, const double *pts,
-                              const size_t *counts, size_t levels,
-                              const cf_color_t *colors,
-                              const cf_style_t *style);
+                                     const size_t *counts, size_t levels,
+                                     const cf_color_t *colors,
+                                     const cf_style_t *style);
 
 /* ---- function plots ----------------------------------------------------- */
 
@@ -285,7 +292,7 @@ CF_API void cf_axes_init(cf_axes_t *axes);
 /* Axes; their ranges are part of the fitted window.  Strings are copied.
 ** Role CF_ROLE_AXES. */
 CF_API cf_status_t cf_figure_add_axes(cf_figure_t *fig, const cf_axes_t *axes,
-                               const cf_style_t *style);
+                                      const cf_style_t *style);
 
 /* The graph of a piecewise polynomial function, exact: piece i is a
 ** dim-1 polynomial Bézier (Bernstein coefficients = its control values)
@@ -296,15 +303,15 @@ CF_API cf_status_t cf_figure_add_axes(cf_figure_t *fig, const cf_axes_t *axes,
 ** B-spline basis functions: the Bézier pieces of a 1D spline with control
 ** values e_i; Bernstein B_i^n: one piece with coefficients e_i. */
 CF_API cf_status_t cf_figure_add_graph(cf_figure_t *fig,
-                                const cf_bezier_t *const *pieces,
-                                const double *breaks, size_t count,
-                                const cf_style_t *style);
+                                       const cf_bezier_t *const *pieces,
+                                       const double *breaks, size_t count,
+                                       const cf_style_t *style);
 
 /* The same from a list with t0/t1 ranges (cf_bspline to_beziers of a 1D
 ** spline): piece i over [t0[i], t1[i]]. */
 CF_API cf_status_t cf_figure_add_graph_list(cf_figure_t *fig,
-                                     const cf_bezier_list_t *list,
-                                     const cf_style_t *style);
+                                            const cf_bezier_list_t *list,
+                                            const cf_style_t *style);
 
 /* The graph of the B-spline basis function N_i^p over the knots
 ** u_0 .. u_{nknots-1} (non-decreasing, finite, u_0 < u_{nknots-1}; any
@@ -314,8 +321,8 @@ CF_API cf_status_t cf_figure_add_graph_list(cf_figure_t *fig,
 ** Errors name the knot: "basis: knot 4 (0.3) is smaller than knot 3
 ** (0.5)".  Role CF_ROLE_GRAPH. */
 CF_API cf_status_t cf_figure_add_basis(cf_figure_t *fig, const double *knots,
-                                size_t nknots, int i, int p,
-                                const cf_style_t *style);
+                                       size_t nknots, int i, int p,
+                                       const cf_style_t *style);
 
 /* The graph of y = f(x) on [a, b] (a < b) for any function: sampled now
 ** (f is not kept), fitted by cubic Hermite segments with derivatives from
@@ -324,8 +331,8 @@ CF_API cf_status_t cf_figure_add_basis(cf_figure_t *fig, const double *knots,
 ** (INVALID_ARG).  Non-finite values: NOT_FINITE.  Role CF_ROLE_GRAPH. */
 typedef int (*cf_function_t)(void *closure, double x, double *y);
 CF_API cf_status_t cf_figure_add_function(cf_figure_t *fig, cf_function_t f,
-                                   void *closure, double a, double b,
-                                   const cf_style_t *style);
+                                          void *closure, double a, double b,
+                                          const cf_style_t *style);
 
 /* ---- output ------------------------------------------------------------- */
 
@@ -342,7 +349,7 @@ typedef enum cf_format {
 
 /* "svg" "pdf" "ps" "eps" "png" -> format; INVALID_ARG otherwise. */
 CF_API cf_status_t cf_format_from_name(const char *name, cf_format_t *out,
-                                cf_diag_t *diag);
+                                       cf_diag_t *diag);
 /* "svg", ... ("" for an invalid value). */
 CF_API const char *cf_format_extension(cf_format_t format);
 
@@ -362,22 +369,22 @@ CF_API void cf_write_options_init(cf_write_options_t *options);
 ** %%CreationDate, SVG ids numbered per file, SVG units in pt, SVG
 ** <title>/<desc> from the title and caption. */
 CF_API cf_status_t cf_figure_write(cf_figure_t *fig, const char *path,
-                            cf_format_t format,
-                            const cf_write_options_t *options,
-                            cf_diag_t *diag);
+                                   cf_format_t format,
+                                   const cf_write_options_t *options,
+                                   cf_diag_t *diag);
 
 /* Write basename.<ext> for every format whose CF_FORMAT_BIT is in
 ** formats; stops at the first failure. */
 CF_API cf_status_t cf_figure_write_all(cf_figure_t *fig, const char *basename,
-                                unsigned formats,
-                                const cf_write_options_t *options,
-                                cf_diag_t *diag);
+                                       unsigned formats,
+                                       const cf_write_options_t *options,
+                                       cf_diag_t *diag);
 
 /* Render to memory: *data (release with cf_free) and *size. */
 CF_API cf_status_t cf_figure_render(cf_figure_t *fig, cf_format_t format,
-                             const cf_write_options_t *options,
-                             unsigned char **data, size_t *size,
-                             cf_diag_t *diag);
+                                    const cf_write_options_t *options,
+                                    unsigned char **data, size_t *size,
+                                    cf_diag_t *diag);
 
 /* The display list of the figure as text, one drawing operation a line
 ** (page, groups per element, clips, paths with their paint, markers, text
@@ -393,9 +400,9 @@ CF_API cf_status_t cf_figure_dump(cf_figure_t *fig,
 /* The ink box of everything drawn, in page bp (x0 y0 x1 y1, y down) at the
 ** physical size, and the page size the options give (tight or not). */
 CF_API cf_status_t cf_figure_ink_box(cf_figure_t *fig,
-                              const cf_write_options_t *options,
-                              double box[4], double *page_width,
-                              double *page_height, cf_diag_t *diag);
+                                     const cf_write_options_t *options,
+                                     double box[4], double *page_width,
+                                     double *page_height, cf_diag_t *diag);
 
 #ifdef __cplusplus
 }

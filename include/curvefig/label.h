@@ -68,19 +68,20 @@ typedef struct cf_label cf_label_t;
 /* Parse and lay out text at font size size_bp with the family list family
 ** (NULL: the default theme's). */
 CF_API cf_status_t cf_label_create(const char *text, const char *family,
-                            double size_bp, cf_label_t **out,
-                            cf_diag_t *diag);
+                                   double size_bp, cf_label_t **out,
+                                   cf_diag_t *diag);
 CF_API void cf_label_destroy(cf_label_t *label);
 
 CF_API size_t cf_label_box_count(const cf_label_t *label);
 /* Box i (NULL if out of range). */
-CF_API const cf_label_box_t *cf_label_get_box(const cf_label_t *label, size_t i);
+CF_API const cf_label_box_t *cf_label_get_box(const cf_label_t *label,
+                                              size_t i);
 /* The UTF-8 text of run i ("" if out of range). */
 CF_API const char *cf_label_run_text(const cf_label_t *label, size_t i);
 /* Logical size of the whole label: width, ascent above and descent below
 ** the base line (bp). */
 CF_API void cf_label_get_extents(const cf_label_t *label, double *width,
-                          double *ascent, double *descent);
+                                 double *ascent, double *descent);
 /* Number of characters no font of the family list (nor fontconfig's
 ** fallback) could show: 0 means no empty boxes. */
 CF_API size_t cf_label_unknown_glyphs(const cf_label_t *label);

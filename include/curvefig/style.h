@@ -33,7 +33,7 @@ CF_API double cf_length_to_bp(double value, cf_unit_t unit);
 
 /* "bp", "pt", "texpt", "mm", "cm", "in" -> unit; INVALID_ARG otherwise. */
 CF_API cf_status_t cf_unit_from_name(const char *name, cf_unit_t *out,
-                              cf_diag_t *diag);
+                                     cf_diag_t *diag);
 
 /* ---- colours and styles ------------------------------------------------- */
 
@@ -45,7 +45,7 @@ typedef struct cf_color {
 ** green blue orange yellow purple brown cyan magenta darkblue darkred
 ** darkgreen lightgrey.  INVALID_ARG otherwise. */
 CF_API cf_status_t cf_color_parse(const char *text, cf_color_t *out,
-                           cf_diag_t *diag);
+                                  cf_diag_t *diag);
 
 typedef enum cf_marker {
     CF_MARKER_NONE = 0,
@@ -64,7 +64,7 @@ typedef enum cf_marker {
 /* "none" "dot" "circle" "square" "diamond" "triangle" "cross" "plus"
 ** "star" "tick". */
 CF_API cf_status_t cf_marker_from_name(const char *name, cf_marker_t *out,
-                                cf_diag_t *diag);
+                                       cf_diag_t *diag);
 
 /* Where a label goes relative to its anchor point. */
 typedef enum cf_place {
@@ -88,7 +88,7 @@ typedef enum cf_place {
 /* "center" "n" "ne" "e" "se" "s" "sw" "w" "nw" "auto" (also "above",
 ** "below", "left", "right"). */
 CF_API cf_status_t cf_place_from_name(const char *name, cf_place_t *out,
-                               cf_diag_t *diag);
+                                      cf_diag_t *diag);
 
 #define CF_STYLE_DASH_MAX 8
 
@@ -176,7 +176,8 @@ typedef struct cf_theme {
 /* Built-in themes: "default" (colour, legible in print, on a projector
 ** and in greyscale) and "mono" (black and greys only).  INVALID_ARG for
 ** another name. */
-CF_API cf_status_t cf_theme_get(const char *name, cf_theme_t *out, cf_diag_t *diag);
+CF_API cf_status_t cf_theme_get(const char *name, cf_theme_t *out,
+                                cf_diag_t *diag);
 
 #ifdef __cplusplus
 }

@@ -3,13 +3,15 @@
 ** element record every kind starts with, and the class (a table of
 ** functions) that gives each kind its bounds and its drawing.
 **
-** Layers, each calling only the ones below it:
-**   output.c                 the public render and write functions
-**   layout.c place.c         window, map to the page, label places, ink box
-**   el-*.c axes.c plots.c    element kinds: record, bounds, display list
-**   text.c figure.c          labels of elements; the figure and its setters
-**   backend-*.c formats.c    devices; deterministic file fix-ups
-**   dlist.c label.c style.c  display list; label layout; styles
+** Layers, each calling only the ones below it (tests/render/cycles.py
+** checks the object files):
+**   output.c                  the public render and write functions
+**   layout.c place.c          window, map to the page, label places, ink
+**   plots.c axes.c el-*.c     element kinds: record, bounds, display list
+**   text.c figure.c           labels of elements; the figure, its setters
+**   formats.c backend-*.c     output formats and their fix-ups; devices
+**   backend.c png.c           a display list to a backend; PNG encoding
+**   label*.c dlist.c style.c  labels; the display list; styles
 */
 #ifndef CURVEFIG_RENDER_MODEL_H
 #define CURVEFIG_RENDER_MODEL_H

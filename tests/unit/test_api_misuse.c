@@ -799,7 +799,7 @@ test_every_function_listed(void **state)
         "core.h", "knots.h", "bernstein.h", "bezier.h", "bspline.h",
         "geometry.h", "conic.h", "interp.h", "offset.h",
 #ifdef CF_TEST_RENDER
-        "figure.h", "style.h", "label.h",
+        "figure.h", "style.h", "label.h", "output.h",
 #endif
     };
     static char me[200000], text[200000];

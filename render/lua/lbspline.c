@@ -17,6 +17,7 @@
 #include "lbezier.h"
 #include "lbspline.h"
 #include "lcommon.h"
+#include "lschema.h"
 
 typedef struct box {
     cf_bspline_t *c;
@@ -34,7 +35,8 @@ cf__lua_new_bspline(lua_State *L)
 cf_bspline_t *
 cf__lua_check_bspline(lua_State *L, int idx)
 {
-    box *b = luaL_checkudata(L, idx, CF__LUA_BSPLINE);
+    box *b = idx == 1 ? cf__lua_check_self(L, CF__LUA_BSPLINE, "curve")
+                      : luaL_checkudata(L, idx, CF__LUA_BSPLINE);
     if (b->c == NULL)
         luaL_error(L, "bspline: the curve was closed");
     return b->c;
@@ -93,6 +95,7 @@ l_bspline(lua_State *L)
     cf_diag_t diag;
     cf_status_t st;
     luaL_checktype(L, 1, LUA_TTABLE);
+    cf__lua_check_table(L, 1, CF__KEYS_BSPLINE);
     cf__lua_field(L, 1, "degree");
     p = cf__lua_check_int(L, -1, "bspline", "degree", 0,
                           CF_BSPLINE_MAX_DEGREE);
@@ -142,6 +145,7 @@ l_coons(lua_State *L)
     cf_bspline_t **out;
     cf_diag_t diag;
     luaL_checktype(L, 1, LUA_TTABLE);
+    cf__lua_check_table(L, 1, CF__KEYS_COONS);
     cf__lua_field(L, 1, "points");
     pts = cf__lua_check_points(L, -1, "coons", "point", 1, &n, &dim);
     cf__lua_field(L, 1, "ends");
@@ -177,6 +181,7 @@ l_nurbs_arc(lua_State *L)
     cf_bspline_t **out;
     cf_diag_t diag;
     luaL_checktype(L, 1, LUA_TTABLE);
+    cf__lua_check_table(L, 1, CF__KEYS_NURBS_ARC);
     cf__lua_field(L, 1, "center");
     o = cf__lua_check_point(L, -1, "nurbs_arc", "center", &dim);
     if (dim < 2)

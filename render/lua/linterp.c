@@ -21,6 +21,7 @@
 #include "lbezier.h"
 #include "lbspline.h"
 #include "lcommon.h"
+#include "lschema.h"
 
 /* The options shared by interpolate and approximate; tangents and params
 ** stay in Lua-owned buffers on the stack. */
@@ -72,6 +73,7 @@ l_interpolate(lua_State *L)
     cf_diag_t diag;
     lua_settop(L, 1);
     luaL_checktype(L, 1, LUA_TTABLE);
+    cf__lua_check_table(L, 1, CF__KEYS_INTERPOLATE);
     cf__lua_field(L, 1, "points");
     pts = cf__lua_check_points(L, -1, "interpolate", "point", 1, &n, &dim);
     read_options(L, "interpolate", dim, n, &opt);
@@ -94,6 +96,7 @@ l_approximate(lua_State *L)
     bool fix = true;
     lua_settop(L, 1);
     luaL_checktype(L, 1, LUA_TTABLE);
+    cf__lua_check_table(L, 1, CF__KEYS_APPROXIMATE);
     cf__lua_field(L, 1, "points");
     pts = cf__lua_check_points(L, -1, "approximate", "point", 1, &n, &dim);
     cf__lua_field(L, 1, "count");
@@ -219,6 +222,7 @@ l_coons_chain(lua_State *L)
     cf_status_t st;
     lua_settop(L, 1);
     luaL_checktype(L, 1, LUA_TTABLE);
+    cf__lua_check_table(L, 1, CF__KEYS_COONS_CHAIN);
     cf__lua_field(L, 1, "points");
     p = cf__lua_check_points(L, -1, "coons_chain", "point", 1, &n, &dim);
     cf__lua_field(L, 1, "ends");

@@ -20,6 +20,7 @@
 #include "lbezier.h"
 #include "lbspline.h"
 #include "lcommon.h"
+#include "lschema.h"
 
 static void
 read_options(lua_State *L, int idx, cf_offset_options_t *opt)
@@ -28,7 +29,7 @@ read_options(lua_State *L, int idx, cf_offset_options_t *opt)
     cf_offset_options_init(opt);
     if (lua_isnoneornil(L, idx))
         return;
-    luaL_checktype(L, idx, LUA_TTABLE);
+    cf__lua_check_table(L, idx, CF__KEYS_OFFSET);
     if (cf__lua_field(L, idx, "tolerance") != LUA_TNIL)
         opt->tolerance = cf__lua_check_finite(L, -1, "offset", "tolerance");
     if (cf__lua_field(L, idx, "trim") != LUA_TNIL)

@@ -12,6 +12,7 @@
 #include "lbspline.h"
 #include "lcommon.h"
 #include "lfigure.h"
+#include "lschema.h"
 #include "lpattern.h"
 #include "script.h"
 
@@ -386,6 +387,7 @@ open_sandbox(lua_State *L)
     cf__lua_open_interp(L);
     cf__lua_open_conic(L);
     cf__lua_open_figure(L);
+    cf__lua_guard_names(L);
     return 0;
 }
 

@@ -46,20 +46,27 @@ check_len(lua_State *L, int idx, const char *fn, const char *what)
     return (size_t)n;
 }
 
+/* Coordinate k of the point at tbl: point i (counted from 1) of a list,
+** or the one point when i is 0. */
 static double
 coord(lua_State *L, int tbl, lua_Integer k, const char *fn, const char *what,
       size_t i)
 {
     int isnum;
     double v;
+    char point[80];
+    if (i > 0)
+        snprintf(point, sizeof point, "%s %zu", what, i);
+    else
+        snprintf(point, sizeof point, "%s", what);
     lua_geti(L, tbl, k);
     v = (double)lua_tonumberx(L, -1, &isnum);
     if (!isnum)
-        cf__lua_error(L, "%s: %s %zu coordinate %d is %s, not a number", fn,
-                      what, i, (int)k, luaL_typename(L, -1));
+        cf__lua_error(L, "%s: %s coordinate %d is %s, not a number", fn,
+                      point, (int)k, luaL_typename(L, -1));
     if (!isfinite(v))
-        cf__lua_error(L, "%s: %s %zu coordinate %d is %g; coordinates must be "
-                      "finite", fn, what, i, (int)k, v);
+        cf__lua_error(L, "%s: %s coordinate %d is %g; coordinates must be "
+                      "finite", fn, point, (int)k, v);
     lua_pop(L, 1);
     return v;
 }
@@ -80,16 +87,17 @@ cf__lua_check_points(lua_State *L, int idx, const char *fn, const char *what,
         lua_geti(L, idx, (lua_Integer)i + 1);
         if (!lua_istable(L, -1))
             cf__lua_error(L, "%s: %s %zu must be a table {x, y, ...}, "
-                          "got %s", fn, what, i, luaL_typename(L, -1));
+                          "got %s", fn, what, i + 1, luaL_typename(L, -1));
         di = (size_t)luaL_len(L, -1);
         lua_pop(L, 1);
         if (di < 1)
-            cf__lua_error(L, "%s: %s %zu has no coordinates", fn, what, i);
+            cf__lua_error(L, "%s: %s %zu has no coordinates", fn, what,
+                          i + 1);
         if (i == 0)
             d = di;
         else if (di != d)
-            cf__lua_error(L, "%s: %s %zu has %zu coordinates, %s 0 has %zu",
-                          fn, what, i, di, what, d);
+            cf__lua_error(L, "%s: %s %zu has %zu coordinates, %s 1 has %zu",
+                          fn, what, i + 1, di, what, d);
     }
     if (n > 0 && d > 64)
         cf__lua_error(L, "%s: points with %zu coordinates; at most 64", fn, d);
@@ -98,7 +106,7 @@ cf__lua_check_points(lua_State *L, int idx, const char *fn, const char *what,
         lua_geti(L, idx, (lua_Integer)i + 1);
         for (size_t k = 0; k < d; k++)
             buf[i * d + k] = coord(L, lua_gettop(L), (lua_Integer)k + 1, fn,
-                                   what, i);
+                                   what, i + 1);
         lua_pop(L, 1);
     }
     *count = n;
@@ -140,11 +148,11 @@ cf__lua_check_numbers(lua_State *L, int idx, const char *fn, const char *what,
         lua_geti(L, idx, (lua_Integer)i + 1);
         buf[i] = (double)lua_tonumberx(L, -1, &isnum);
         if (!isnum)
-            cf__lua_error(L, "%s: %s %zu is %s, not a number", fn, what, i,
-                          luaL_typename(L, -1));
+            cf__lua_error(L, "%s: %s %zu is %s, not a number", fn, what,
+                          i + 1, luaL_typename(L, -1));
         if (!isfinite(buf[i]))
             cf__lua_error(L, "%s: %s %zu is %g; it must be finite", fn, what,
-                          i, buf[i]);
+                          i + 1, buf[i]);
         lua_pop(L, 1);
     }
     *count = n;

@@ -56,6 +56,13 @@ static const cf__lua_key_t text_style[] = {
     KEY("color"), KEY("opacity"), KEY("font_size"), NAMES("place", places),
     NAMES("anchor", places), KEY("offset"), END,
 };
+/* every style key: refused, with a hint, where no style is taken */
+static const cf__lua_key_t any_style[] = {
+    KEY("color"), KEY("fill"), KEY("width"), KEY("dash"), KEY("opacity"),
+    KEY("marker"), KEY("marker_size"), KEY("marker_color"),
+    KEY("arrow_size"), KEY("font_size"), KEY("place"), KEY("anchor"),
+    KEY("offset"), END,
+};
 /* the labels of the points a method draws (labels.c of the binding) */
 static const cf__lua_key_t point_labels[] = {
     KEY("labels"), KEY("label_start"), PLACES("label_place"),
@@ -128,13 +135,13 @@ static const cf__lua_key_t plot_keys[] = {
 #define METHOD(fn, a, b, c, ex) \
     { fn, "option", { a, b, c }, false, NULL, NULL, ex }
 #define MAKER(fn, a, b, positional, ex) \
-    { fn, "field", { a, b, NULL }, positional, line_style, STYLE_HINT, ex }
+    { fn, "field", { a, b, NULL }, positional, any_style, STYLE_HINT, ex }
 
 static const cf__lua_schema_t schemas[CF__KEYS_COUNT_] = {
     [CF__KEYS_NONE] = { "", "option", { NULL, NULL, NULL }, false, NULL,
                         NULL, NULL },
     [CF__KEYS_FIGURE] = { "figure", "option", { figure_keys, NULL, NULL },
-                          false, line_style, FIGURE_HINT, "figure(%s)" },
+                          false, any_style, FIGURE_HINT, "figure(%s)" },
     [CF__KEYS_BEZIER] = MAKER("bezier", bezier_keys, NULL, true,
                               "bezier(%s)"),
     [CF__KEYS_BSPLINE] = MAKER("bspline", bspline_keys, NULL, false,

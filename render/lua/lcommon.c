@@ -240,6 +240,14 @@ cf__lua_field(lua_State *L, int idx, const char *key)
     return lua_getfield(L, idx, key);
 }
 
+bool
+cf__lua_memory_exceeded(lua_State *L)
+{
+    void *ud = NULL;
+    lua_getallocf(L, &ud);
+    return ud != NULL && ((const cf__lua_budget_t *)ud)->memory_exceeded;
+}
+
 int
 cf__lua_fail(lua_State *L, const char *fn, cf_status_t status,
              const cf_diag_t *diag)

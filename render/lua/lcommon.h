@@ -7,6 +7,8 @@
 #ifndef CURVEFIG_RENDER_LUA_LCOMMON_H
 #define CURVEFIG_RENDER_LUA_LCOMMON_H
 
+#include <stdbool.h>
+
 #include <lauxlib.h>
 #include <lua.h>
 
@@ -86,8 +88,15 @@ void cf__lua_open_offset(lua_State *L);
 void cf__lua_open_interp(lua_State *L);
 void cf__lua_open_conic(lua_State *L);
 
-/* The budget hook the script module installs; the bindings map a
-** NO_MEMORY status to the memory-limit message through it. */
-int cf__lua_memory_exceeded(lua_State *L);
+/* The allocator's user data of every state the script module makes
+** (script.c) begins with this: the bindings tell the memory limit from
+** another failure by it, without calling up into the script module. */
+typedef struct cf__lua_budget {
+    bool memory_exceeded; /* the script's memory limit was reached */
+} cf__lua_budget_t;
+
+/* True when the state's memory limit was reached (a NO_MEMORY status is
+** then reported as "out of memory" for the limit's message). */
+bool cf__lua_memory_exceeded(lua_State *L);
 
 #endif

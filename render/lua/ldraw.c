@@ -21,29 +21,50 @@
 #define check(L, fn, call, diag) cf__lua_fig_check((L), (fn), fig, (call), \
                                                    (diag))
 
+/* The range = {a, b} option of f:curve ({0, 0}: the whole curve). */
+static void
+read_range(lua_State *L, int opts, double *a, double *b)
+{
+    size_t n;
+    double *r;
+    *a = *b = 0.0;
+    if (cf__lua_field(L, opts, "range") != LUA_TNIL) {
+        r = cf__lua_check_numbers(L, -1, "curve", "range", &n);
+        if (n != 2)
+            luaL_error(L, "curve: range is {a, b}");
+        *a = r[0];
+        *b = r[1];
+    }
+}
+
+static cf_status_t
+add_curve(lua_State *L, cf_figure_t *fig, int idx, double a, double b,
+          const cf_style_t *st)
+{
+    cf_bspline_t *bs = cf__lua_to_bspline(L, idx);
+    if (bs != NULL)
+        return cf_figure_add_bspline(fig, bs, a, b, st);
+    if (a != 0.0 || b != 0.0)
+        return cf_figure_add_bezier_range(fig, cf__lua_check_bezier(L, idx),
+                                          a, b, st);
+    return cf_figure_add_bezier(fig, cf__lua_check_bezier(L, idx), st);
+}
+
 /* f:curve(c, {range = {a, b}, style...}); c a Bézier, a B-spline or a list
 ** of them. */
 static int
 m_curve(lua_State *L)
 {
     cf_figure_t *fig = cf__lua_check_figure(L);
-    double a = 0.0, b = 0.0;
+    double a, b;
     cf_style_t st;
     cf_diag_t diag;
-    cf_bspline_t *bs;
     lua_settop(L, 3);
     cf__lua_check_table(L, 3, CF__KEYS_CURVE);
     cf__lua_read_style(L, 3, "curve", fig, &st);
-    if (cf__lua_field(L, 3, "range") != LUA_TNIL) {
-        size_t n;
-        double *r = cf__lua_check_numbers(L, -1, "curve", "range", &n);
-        if (n != 2)
-            return luaL_error(L, "curve: range is {a, b}");
-        a = r[0];
-        b = r[1];
-    }
-    bs = cf__lua_to_bspline(L, 2);
-    if (!cf__lua_to_bezier(L, 2) && bs == NULL && lua_istable(L, 2)) {
+    read_range(L, 3, &a, &b);
+    if (!cf__lua_to_bezier(L, 2) && !cf__lua_to_bspline(L, 2) &&
+        lua_istable(L, 2)) {
         /* a list of curves */
         for (lua_Integer i = 1; i <= luaL_len(L, 2); i++) {
             lua_pushcfunction(L, m_curve);
@@ -52,18 +73,9 @@ m_curve(lua_State *L)
             lua_pushvalue(L, 3);
             lua_call(L, 3, 0);
         }
-    } else if (bs != NULL) {
-        cf_diag_clear(&diag);
-        check(L, "curve", cf_figure_add_bspline(fig, bs, a, b, &st), &diag);
-    } else if (a != 0.0 || b != 0.0) {
-        cf_diag_clear(&diag);
-        check(L, "curve", cf_figure_add_bezier_range(
-                              fig, cf__lua_check_bezier(L, 2), a, b, &st),
-              &diag);
     } else {
         cf_diag_clear(&diag);
-        check(L, "curve", cf_figure_add_bezier(fig, cf__lua_check_bezier(L, 2),
-                                               &st), &diag);
+        check(L, "curve", add_curve(L, fig, 2, a, b, &st), &diag);
     }
     lua_settop(L, 1);
     return 1;
@@ -282,6 +294,31 @@ m_knots(lua_State *L)
     return 1;
 }
 
+/* The colours of the levels of a net from opts.colors (NULL: none given);
+** a buffer pushed on the stack. */
+static cf_color_t *
+level_colors(lua_State *L, const cf_figure_t *fig, size_t levels,
+             const char *fn)
+{
+    cf_color_t *colors;
+    int t = cf__lua_field(L, 4, "colors");
+    if (t == LUA_TNIL)
+        return NULL;
+    if (t != LUA_TTABLE)
+        luaL_error(L, "%s: colors is a list of colours, one per level (color "
+                   "gives all levels one)", fn);
+    if ((size_t)luaL_len(L, -1) < levels)
+        luaL_error(L, "%s: %d colours for %d levels", fn,
+                   (int)luaL_len(L, -1), (int)levels);
+    colors = lua_newuserdatauv(L, levels * sizeof *colors, 0);
+    for (size_t j = 0; j < levels; j++) {
+        lua_geti(L, -2, (lua_Integer)j + 1);
+        colors[j] = cf__lua_read_color(L, -1, fn, "colors", fig);
+        lua_pop(L, 1);
+    }
+    return colors;
+}
+
 /* Draw a net (levels of counts[j] points, dim-D, in pts): colours from
 ** opts.colors, labels of (index, level), the final point from opts.point
 ** (a style table or true). */
@@ -293,7 +330,7 @@ draw_net(lua_State *L, cf_figure_t *fig, const double *pts,
     size_t total = 0, k = 0;
     double *p2;
     lua_Integer *args;
-    cf_color_t *colors = NULL;
+    cf_color_t *colors;
     cf_style_t st, ps;
     cf_diag_t diag;
     cf__lua_read_style(L, 4, fn, fig, &st);
@@ -304,17 +341,7 @@ draw_net(lua_State *L, cf_figure_t *fig, const double *pts,
         total += counts[j];
     p2 = cf__lua_buffer(L, 2 * total);
     check(L, fn, cf_figure_project(fig, pts, total, dim, p2), NULL);
-    if (cf__lua_field(L, 4, "colors") == LUA_TTABLE) {
-        if ((size_t)luaL_len(L, -1) < levels)
-            luaL_error(L, "%s: %d colours for %d levels", fn,
-                       (int)luaL_len(L, -1), (int)levels);
-        colors = lua_newuserdatauv(L, levels * sizeof *colors, 0);
-        for (size_t j = 0; j < levels; j++) {
-            lua_geti(L, -2, (lua_Integer)j + 1);
-            colors[j] = cf__lua_read_color(L, -1, fn, "colors", fig);
-            lua_pop(L, 1);
-        }
-    }
+    colors = level_colors(L, fig, levels, fn);
     cf_diag_clear(&diag);
     check(L, fn, cf_figure_add_net(fig, p2, counts, levels, colors, &st),
           &diag);

@@ -67,42 +67,50 @@ check_name(lua_State *L, const char *name)
     lua_pop(L, 1);
 }
 
+/* The projection of view = {azimuth, elevation} (degrees) into m[6]. */
+static void
+view_matrix(lua_State *L, int idx, double m[6])
+{
+    size_t n;
+    double *v = cf__lua_check_numbers(L, idx, "figure", "view angle", &n);
+    double az, el;
+    if (n != 2)
+        luaL_error(L, "figure: view is {azimuth, elevation} in degrees");
+    az = v[0] * 3.14159265358979323846 / 180.0;
+    el = v[1] * 3.14159265358979323846 / 180.0;
+    m[0] = -sin(az);
+    m[1] = cos(az);
+    m[2] = 0.0;
+    m[3] = -cos(az) * sin(el);
+    m[4] = -sin(az) * sin(el);
+    m[5] = cos(el);
+}
+
 /* projection = {{row 1}, {row 2}} or view = {azimuth, elevation}. */
 static void
 read_projection(lua_State *L, cf_figure_t *fig)
 {
     cf_diag_t diag;
-    if (cf__lua_field(L, 1, "projection") != LUA_TNIL) {
+    int top = lua_gettop(L);
+    bool proj = cf__lua_field(L, 1, "projection") != LUA_TNIL;
+    bool view = cf__lua_field(L, 1, "view") != LUA_TNIL;
+    cf_diag_clear(&diag);
+    if (proj && view)
+        luaL_error(L, "figure: give either projection or view, not both");
+    if (proj) {
         size_t rows, dim;
-        double *m = cf__lua_check_points(L, -1, "figure", "projection row", 2,
-                                         &rows, &dim);
+        double *m = cf__lua_check_points(L, top + 1, "figure",
+                                         "projection row", 2, &rows, &dim);
         if (rows != 2)
             luaL_error(L, "figure: projection has %d rows; give 2",
                        (int)rows);
-        cf_diag_clear(&diag);
         check(L, "figure", cf_figure_set_projection(fig, dim, m), &diag);
-        lua_pop(L, 1);
-    }
-    lua_pop(L, 1);
-    if (cf__lua_field(L, 1, "view") != LUA_TNIL) {
-        size_t n;
-        double *v = cf__lua_check_numbers(L, -1, "figure", "view angle", &n);
-        double az, el, m[6];
-        if (n != 2)
-            luaL_error(L, "figure: view is {azimuth, elevation} in degrees");
-        az = v[0] * 3.14159265358979323846 / 180.0;
-        el = v[1] * 3.14159265358979323846 / 180.0;
-        m[0] = -sin(az);
-        m[1] = cos(az);
-        m[2] = 0.0;
-        m[3] = -cos(az) * sin(el);
-        m[4] = -sin(az) * sin(el);
-        m[5] = cos(el);
-        cf_diag_clear(&diag);
+    } else if (view) {
+        double m[6];
+        view_matrix(L, top + 2, m);
         check(L, "figure", cf_figure_set_projection(fig, 3, m), &diag);
-        lua_pop(L, 1);
     }
-    lua_pop(L, 1);
+    lua_settop(L, top);
 }
 
 static void
@@ -175,6 +183,28 @@ new_figure(lua_State *L, int name, int caption, double w, double h)
     return b->fig;
 }
 
+/* width and height (pushed) in bp */
+static void
+read_page(lua_State *L, double *w, double *h)
+{
+    cf__lua_field(L, 1, "width");
+    *w = cf__lua_read_length(L, -1, "figure", "width",
+                             cf_length_to_bp(8, CF_UNIT_CM));
+    cf__lua_field(L, 1, "height");
+    *h = cf__lua_read_length(L, -1, "figure", "height",
+                             cf_length_to_bp(6, CF_UNIT_CM));
+}
+
+/* Append the figure value at idx to the list the tool renders. */
+static void
+keep_figure(lua_State *L, int idx)
+{
+    lua_getfield(L, LUA_REGISTRYINDEX, FIGURES_KEY);
+    lua_pushvalue(L, idx);
+    lua_rawseti(L, -2, (lua_Integer)lua_rawlen(L, -2) + 1);
+    lua_pop(L, 1);
+}
+
 /* figure{ name = "markova-2.17", caption = "...", width = "8cm", ... } */
 static int
 l_figure(lua_State *L)
@@ -189,28 +219,18 @@ l_figure(lua_State *L)
                           "the files)");
     check_name(L, lua_tostring(L, 2));
     cf__lua_field(L, 1, "caption");
-    luaL_optstring(L, 3, "");
     cf__lua_field(L, 1, "title");
-    cf__lua_field(L, 1, "width");
-    w = cf__lua_read_length(L, -1, "figure", "width",
-                            cf_length_to_bp(8, CF_UNIT_CM));
-    cf__lua_field(L, 1, "height");
-    h = cf__lua_read_length(L, -1, "figure", "height",
-                            cf_length_to_bp(6, CF_UNIT_CM));
+    read_page(L, &w, &h);
     fig = new_figure(L, 2, 3, w, h);
     check(L, "figure", cf_figure_set_title(fig, luaL_optstring(L, 4,
-                                                               lua_tostring(L, 2))),
-          NULL);
+                                           lua_tostring(L, 2))), NULL);
     check(L, "figure", cf_figure_set_caption(fig, luaL_optstring(L, 3, "")),
           NULL);
     read_theme(L, fig);
     read_frame(L, fig, w, h);
     read_projection(L, fig);
     lua_settop(L, 7);
-    lua_getfield(L, LUA_REGISTRYINDEX, FIGURES_KEY);
-    lua_pushvalue(L, 7);
-    lua_rawseti(L, -2, (lua_Integer)lua_rawlen(L, -2) + 1);
-    lua_settop(L, 7);
+    keep_figure(L, 7);
     return 1;
 }
 

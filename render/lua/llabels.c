@@ -122,6 +122,24 @@ label_place(lua_State *L, int idx, size_t k, const lua_Integer *args,
     lua_pop(L, 1);
 }
 
+/* Label k with the integers a (nargs of them) at xy, if it has a text;
+** labels and places at top + 1, top + 2. */
+static void
+label_one(lua_State *L, cf_figure_t *fig, int top, size_t k,
+          const lua_Integer *a, int nargs, const double *xy,
+          const cf_style_t *base, const char *fn)
+{
+    const char *text = cf__lua_item_label(L, top + 1, k, a, nargs, fn);
+    cf_style_t ls = *base;
+    cf_diag_t diag;
+    if (text == NULL)
+        return;
+    label_place(L, top + 2, k, a, nargs, xy, text, &ls, fn);
+    cf_diag_clear(&diag);
+    cf__lua_fig_check(L, fn, fig, cf_figure_add_label(fig, xy[0], xy[1], text,
+                                                      &ls), &diag);
+}
+
 void
 cf__lua_label_items(lua_State *L, cf_figure_t *fig, int opts,
                     const char *labels_key, const double *pts, size_t n,
@@ -143,23 +161,11 @@ cf__lua_label_items(lua_State *L, cf_figure_t *fig, int opts,
     cf__lua_read_sub_style(L, opts, "label_style", fn, fig, &base);
     a = lua_newuserdatauv(L, (nargs > 0 ? (size_t)nargs : 1) * sizeof *a, 0);
     for (size_t k = 0; k < n; k++) {
-        const char *text;
         if (nargs > 0) {
             memcpy(a, args + k * (size_t)nargs, (size_t)nargs * sizeof *a);
             a[0] += start;
         }
-        text = cf__lua_item_label(L, top + 1, k, a, nargs, fn);
-        if (text != NULL) {
-            cf_style_t ls = base;
-            cf_diag_t diag;
-            label_place(L, top + 2, k, a, nargs, pts + 2 * k, text, &ls,
-                        fn);
-            cf_diag_clear(&diag);
-            cf__lua_fig_check(L, fn, fig,
-                              cf_figure_add_label(fig, pts[2 * k],
-                                                  pts[2 * k + 1], text, &ls),
-                              &diag);
-        }
+        label_one(L, fig, top, k, a, nargs, pts + 2 * k, &base, fn);
         lua_settop(L, top + 4);
     }
     lua_settop(L, top);

@@ -18,6 +18,33 @@
 #define check(L, fn, call, diag) cf__lua_fig_check((L), (fn), fig, (call), \
                                                    (diag))
 
+/* The labels of count ticks from opts[labels_key] (NULL: none given); the
+** strings stay in the table, left on the stack. */
+static const char *const *
+tick_labels(lua_State *L, const char *key, const char *labels_key,
+            size_t count)
+{
+    int t = cf__lua_field(L, 2, labels_key);
+    size_t n;
+    const char **l;
+    if (t == LUA_TNIL)
+        return NULL;
+    if (t != LUA_TTABLE)
+        luaL_error(L, "plot: %s is a list of strings, one per tick",
+                   labels_key);
+    n = (size_t)luaL_len(L, -1);
+    if (n != count)
+        luaL_error(L, "plot: %d %s for %d %s", (int)n, labels_key, (int)count,
+                   key);
+    l = lua_newuserdatauv(L, (n ? n : 1) * sizeof *l, 0);
+    for (size_t i = 0; i < n; i++) {
+        lua_geti(L, -2, (lua_Integer)i + 1);
+        l[i] = luaL_checkstring(L, -1);
+        lua_pop(L, 1);
+    }
+    return l;
+}
+
 /* Tick positions (a number: step; a table: positions) and labels. */
 static void
 read_ticks(lua_State *L, const char *key, const char *labels_key,
@@ -41,20 +68,7 @@ read_ticks(lua_State *L, const char *key, const char *labels_key,
         luaL_error(L, "plot: %s is a step, a list of positions or false",
                    key);
     }
-    if (cf__lua_field(L, 2, labels_key) == LUA_TTABLE) {
-        size_t n = (size_t)luaL_len(L, -1);
-        const char **l;
-        if (n != *count)
-            luaL_error(L, "plot: %d %s for %d %s", (int)n, labels_key,
-                       (int)*count, key);
-        l = lua_newuserdatauv(L, (n ? n : 1) * sizeof *l, 0);
-        for (size_t i = 0; i < n; i++) {
-            lua_geti(L, -2, (lua_Integer)i + 1);
-            l[i] = luaL_checkstring(L, -1);
-            lua_pop(L, 1); /* the string stays in the labels table */
-        }
-        *labels = l;
-    }
+    *labels = tick_labels(L, key, labels_key, *count);
 }
 
 static void

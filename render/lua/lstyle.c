@@ -46,38 +46,51 @@ cf__lua_fig_check(lua_State *L, const char *fn, const cf_figure_t *fig,
     return cf__lua_fail(L, fn, st, &fd);
 }
 
+/* Palette colour k (from 1) of fig's theme. */
+static cf_color_t
+palette_color(lua_State *L, lua_Integer k, const char *fn, const char *what,
+              const cf_figure_t *fig)
+{
+    cf_theme_t th;
+    cf_figure_get_theme(fig, &th);
+    if (k < 1 || th.palette_size == 0)
+        luaL_error(L, "%s: %s %d: palette colours count from 1", fn, what,
+                   (int)k);
+    return th.palette[(size_t)(k - 1) % th.palette_size];
+}
+
+/* {r, g, b} or {r, g, b, a} in 0..1 */
+static cf_color_t
+table_color(lua_State *L, int idx, const char *fn, const char *what)
+{
+    double v[4] = { 0, 0, 0, 1 };
+    size_t n = (size_t)luaL_len(L, idx);
+    cf_color_t c;
+    if (n < 3 || n > 4)
+        luaL_error(L, "%s: %s as a table is {r, g, b} or {r, g, b, a}", fn,
+                   what);
+    for (size_t k = 0; k < n; k++) {
+        lua_geti(L, idx, (lua_Integer)k + 1);
+        v[k] = cf__lua_check_finite(L, -1, fn, what);
+        lua_pop(L, 1);
+    }
+    c.r = v[0];
+    c.g = v[1];
+    c.b = v[2];
+    c.a = v[3];
+    return c;
+}
+
 cf_color_t
 cf__lua_read_color(lua_State *L, int idx, const char *fn, const char *what,
                    const cf_figure_t *fig)
 {
     cf_color_t c = { 0, 0, 0, 1 };
     cf_diag_t diag;
-    if (lua_isinteger(L, idx) && fig != NULL) {
-        cf_theme_t th;
-        lua_Integer k = lua_tointeger(L, idx);
-        cf_figure_get_theme(fig, &th);
-        if (k < 1 || th.palette_size == 0)
-            luaL_error(L, "%s: %s %d: palette colours count from 1", fn, what,
-                       (int)k);
-        return th.palette[(size_t)(k - 1) % th.palette_size];
-    }
-    if (lua_istable(L, idx)) {
-        double v[4] = { 0, 0, 0, 1 };
-        size_t n = (size_t)luaL_len(L, idx);
-        if (n < 3 || n > 4)
-            luaL_error(L, "%s: %s as a table is {r, g, b} or {r, g, b, a}",
-                       fn, what);
-        for (size_t k = 0; k < n; k++) {
-            lua_geti(L, idx, (lua_Integer)k + 1);
-            v[k] = cf__lua_check_finite(L, -1, fn, what);
-            lua_pop(L, 1);
-        }
-        c.r = v[0];
-        c.g = v[1];
-        c.b = v[2];
-        c.a = v[3];
-        return c;
-    }
+    if (lua_isinteger(L, idx) && fig != NULL)
+        return palette_color(L, lua_tointeger(L, idx), fn, what, fig);
+    if (lua_istable(L, idx))
+        return table_color(L, idx, fn, what);
     if (lua_type(L, idx) != LUA_TSTRING)
         luaL_error(L, "%s: %s must be a colour name, \"#rrggbb\", {r, g, b} "
                    "or a palette number", fn, what);
@@ -103,43 +116,43 @@ cf__lua_opt_number(lua_State *L, int idx, const char *key, const char *fn,
     return v;
 }
 
+/* The named dash patterns (on, off, ... in bp). */
+static const struct named_dash {
+    const char *name;
+    size_t count;
+    double dash[4];
+} named_dashes[] = {
+    { "solid", 0, { 0, 0, 0, 0 } },
+    { "dashed", 2, { 4, 2.5, 0, 0 } },
+    { "dotted", 2, { 0.8, 1.6, 0, 0 } },
+    { "dashdot", 4, { 4, 1.6, 0.8, 1.6 } },
+};
+
 static void
 read_dash(lua_State *L, int idx, const char *fn, cf_style_t *s)
 {
+    size_t n;
+    double *v;
+    s->set |= CF_STYLE_DASH;
     if (lua_type(L, idx) == LUA_TSTRING) {
         const char *d = lua_tostring(L, idx);
-        if (strcmp(d, "dashed") == 0) {
-            s->dash[0] = 4;
-            s->dash[1] = 2.5;
-            s->dash_count = 2;
-        } else if (strcmp(d, "dotted") == 0) {
-            s->dash[0] = 0.8;
-            s->dash[1] = 1.6;
-            s->dash_count = 2;
-        } else if (strcmp(d, "dashdot") == 0) {
-            s->dash[0] = 4;
-            s->dash[1] = 1.6;
-            s->dash[2] = 0.8;
-            s->dash[3] = 1.6;
-            s->dash_count = 4;
-        } else if (strcmp(d, "solid") == 0) {
-            s->dash_count = 0;
-        } else {
-            luaL_error(L, "%s: dash \"%s\": use \"solid\", \"dashed\", "
-                       "\"dotted\", \"dashdot\" or {on, off, ...} in bp", fn,
-                       d);
+        for (size_t i = 0; i < sizeof named_dashes / sizeof *named_dashes;
+             i++) {
+            if (strcmp(d, named_dashes[i].name) == 0) {
+                s->dash_count = named_dashes[i].count;
+                memcpy(s->dash, named_dashes[i].dash, sizeof s->dash[0] * 4);
+                return;
+            }
         }
-    } else {
-        size_t n;
-        double *v = cf__lua_check_numbers(L, idx, fn, "dash length", &n);
-        if (n > CF_STYLE_DASH_MAX)
-            luaL_error(L, "%s: at most %d dash lengths", fn,
-                       CF_STYLE_DASH_MAX);
-        memcpy(s->dash, v, n * sizeof *v);
-        s->dash_count = n;
-        lua_pop(L, 1);
+        luaL_error(L, "%s: dash \"%s\": use \"solid\", \"dashed\", "
+                   "\"dotted\", \"dashdot\" or {on, off, ...} in bp", fn, d);
     }
-    s->set |= CF_STYLE_DASH;
+    v = cf__lua_check_numbers(L, idx, fn, "dash length", &n);
+    if (n > CF_STYLE_DASH_MAX)
+        luaL_error(L, "%s: at most %d dash lengths", fn, CF_STYLE_DASH_MAX);
+    memcpy(s->dash, v, n * sizeof *v);
+    s->dash_count = n;
+    lua_pop(L, 1);
 }
 
 /* The colour and number fields of a style. */
@@ -274,40 +287,46 @@ cf__lua_opt_bool(lua_State *L, int idx, const char *key, bool def)
 }
 
 
-/* Points given as a curve (its control points), a list of points or one
-** point; pushes a buffer of 2D points (projected if needed). */
+/* The points at idx, in their own dimension: a curve's control points, a
+** list of points or one point; a buffer pushed on the stack. */
+static double *
+any_points(lua_State *L, int idx, const char *fn, size_t *n, size_t *dim)
+{
+    cf_bezier_t *bz = cf__lua_to_bezier(L, idx);
+    cf_bspline_t *bs = cf__lua_to_bspline(L, idx);
+    double *p;
+    int first = LUA_TNIL;
+    if (bz != NULL) {
+        *dim = cf_bezier_dim(bz);
+        *n = (size_t)cf_bezier_degree(bz) + 1;
+        p = cf__lua_buffer(L, *n * *dim);
+        cf_bezier_get_points(bz, p);
+        return p;
+    }
+    if (bs != NULL) {
+        *dim = cf_bspline_dim(bs);
+        *n = cf_bspline_count(bs);
+        p = cf__lua_buffer(L, *n * *dim);
+        cf_bspline_get_points(bs, p);
+        return p;
+    }
+    if (lua_istable(L, idx)) {
+        first = lua_geti(L, idx, 1);
+        lua_pop(L, 1);
+    }
+    *dim = 0;
+    *n = 1;
+    if (first == LUA_TNUMBER)
+        return cf__lua_check_point(L, idx, fn, "point", dim);
+    return cf__lua_check_points(L, idx, fn, "point", 1, n, dim);
+}
+
 double *
 cf__lua_check_points2d(lua_State *L, cf_figure_t *fig, int idx,
                        const char *fn, size_t *count)
 {
     size_t n, dim;
-    double *p, *out;
-    cf_bezier_t *bz = cf__lua_to_bezier(L, idx);
-    cf_bspline_t *bs = cf__lua_to_bspline(L, idx);
-    if (bz != NULL) {
-        dim = cf_bezier_dim(bz);
-        n = (size_t)cf_bezier_degree(bz) + 1;
-        p = cf__lua_buffer(L, n * dim);
-        cf_bezier_get_points(bz, p);
-    } else if (bs != NULL) {
-        dim = cf_bspline_dim(bs);
-        n = cf_bspline_count(bs);
-        p = cf__lua_buffer(L, n * dim);
-        cf_bspline_get_points(bs, p);
-    } else {
-        int first = LUA_TNIL;
-        if (lua_istable(L, idx)) {
-            first = lua_geti(L, idx, 1);
-            lua_pop(L, 1);
-        }
-        dim = 0;
-        if (first == LUA_TNUMBER) {
-            p = cf__lua_check_point(L, idx, fn, "point", &dim);
-            n = 1;
-        } else {
-            p = cf__lua_check_points(L, idx, fn, "point", 1, &n, &dim);
-        }
-    }
+    double *p = any_points(L, idx, fn, &n, &dim), *out;
     if (dim < 2)
         luaL_error(L, "%s: points in R^1 cannot be drawn; give {x, y}", fn);
     out = cf__lua_buffer(L, 2 * n);
@@ -316,4 +335,3 @@ cf__lua_check_points2d(lua_State *L, cf_figure_t *fig, int idx,
     *count = n;
     return out;
 }
-

@@ -33,6 +33,7 @@
 enum { LIMIT_NONE, LIMIT_MEMORY, LIMIT_INSTRUCTIONS };
 
 struct cf_script {
+    cf__lua_budget_t budget; /* first: the bindings read it (lcommon.h) */
     lua_State *L;
     FILE *out;
     size_t used, max_memory, reserve;
@@ -93,6 +94,7 @@ budget_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
     if (nsize > old && (nsize - old > cap || s->used > cap - (nsize - old))) {
         if (s->limit_hit == LIMIT_NONE) {
             s->limit_hit = LIMIT_MEMORY;
+            s->budget.memory_exceeded = true;
             note_position(s);
         }
         return NULL;
@@ -106,14 +108,6 @@ budget_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
     if (nsize > old)
         s->instructions += (nsize - old) / ALLOC_BYTES;
     return p;
-}
-
-int
-cf__lua_memory_exceeded(lua_State *L)
-{
-    void *ud;
-    lua_getallocf(L, &ud);
-    return ((cf_script_t *)ud)->limit_hit == LIMIT_MEMORY;
 }
 
 /* A memory budget in the unit it was given in: "256 MiB", "512 KiB",

@@ -84,6 +84,32 @@ done(lua_State *L, const char *fn, cf_status_t st, const cf_diag_t *diag,
 
 /* ---- constructors ------------------------------------------------------- */
 
+/* The curve of kind (clamped, closed, uniform) with its own knots. */
+static cf_status_t
+create_kind(lua_State *L, const char *kind, size_t dim, int p,
+            const double *pts, size_t n, const double *w, cf_bspline_t **out,
+            cf_diag_t *diag)
+{
+    cf_status_t st;
+    double *u;
+    if (strcmp(kind, "clamped") == 0)
+        return cf_bspline_create_clamped(dim, p, pts, n, w, out, diag);
+    if (strcmp(kind, "closed") == 0)
+        return cf_bspline_create_closed(dim, p, pts, n, w, out, diag);
+    if (strcmp(kind, "uniform") != 0)
+        return luaL_error(L, "bspline: kind \"%s\": use \"clamped\", "
+                          "\"closed\" or \"uniform\" (or give knots)", kind);
+    u = cf__lua_buffer(L, cf_knots_count(p, n));
+    st = cf_knots_uniform(p, n, 0.0, 1.0, u, diag);
+    if (st == CF_STATUS_OK)
+        st = cf_bspline_create(dim, p, u, cf_knots_count(p, n), pts, n, w,
+                               out, diag);
+    lua_pop(L, 1);
+    return st;
+}
+
+/* bspline{ degree = p, points = {...}, weights = {...}, knots = {...} or
+** kind = "clamped" | "closed" | "uniform" } */
 static int
 l_bspline(lua_State *L)
 {
@@ -93,7 +119,6 @@ l_bspline(lua_State *L)
     int p;
     cf_bspline_t **out;
     cf_diag_t diag;
-    cf_status_t st;
     luaL_checktype(L, 1, LUA_TTABLE);
     cf__lua_check_table(L, 1, CF__KEYS_BSPLINE);
     cf__lua_field(L, 1, "degree");
@@ -108,30 +133,16 @@ l_bspline(lua_State *L)
                              nw, n);
     if (cf__lua_field(L, 1, "knots") != LUA_TNIL)
         knots = cf__lua_check_numbers(L, -1, "bspline", "knot", &nk);
-    cf__lua_field(L, 1, "kind");
-    kind = luaL_optstring(L, -1, knots != NULL ? "given" : "clamped");
+    if (cf__lua_field(L, 1, "kind") != LUA_TNIL && knots != NULL)
+        return luaL_error(L, "bspline: give either knots or kind");
+    kind = luaL_optstring(L, -1, "clamped");
     out = cf__lua_new_bspline(L);
     cf_diag_clear(&diag);
-    if (knots != NULL) {
-        if (strcmp(kind, "given") != 0)
-            return luaL_error(L, "bspline: give either knots or kind");
-        st = cf_bspline_create(dim, p, knots, nk, pts, n, w, out, &diag);
-    } else if (strcmp(kind, "clamped") == 0) {
-        st = cf_bspline_create_clamped(dim, p, pts, n, w, out, &diag);
-    } else if (strcmp(kind, "closed") == 0) {
-        st = cf_bspline_create_closed(dim, p, pts, n, w, out, &diag);
-    } else if (strcmp(kind, "uniform") == 0) {
-        double *u = cf__lua_buffer(L, cf_knots_count(p, n));
-        st = cf_knots_uniform(p, n, 0.0, 1.0, u, &diag);
-        if (st == CF_STATUS_OK)
-            st = cf_bspline_create(dim, p, u, cf_knots_count(p, n), pts, n, w,
-                                   out, &diag);
-        lua_pop(L, 1);
-    } else {
-        return luaL_error(L, "bspline: kind \"%s\": use \"clamped\", "
-                          "\"closed\" or \"uniform\" (or give knots)", kind);
-    }
-    return done(L, "bspline", st, &diag, 1);
+    if (knots != NULL)
+        return done(L, "bspline", cf_bspline_create(dim, p, knots, nk, pts, n,
+                                                    w, out, &diag), &diag, 1);
+    return done(L, "bspline", create_kind(L, kind, dim, p, pts, n, w, out,
+                                          &diag), &diag, 1);
 }
 
 /* coons{ points = {...}, ends = "plain" | "tripled" | "closed" } */

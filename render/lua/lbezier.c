@@ -120,7 +120,9 @@ l_bezier(lua_State *L)
     }
     if (cf__lua_field(L, 1, "weights") != LUA_TNIL)
         w = cf__lua_check_numbers(L, -1, "bezier", "weight", &nw);
-    pts = cf__lua_check_points(L, pidx, "bezier", "point", 1, &n, &dim);
+    pts = pidx == 1
+              ? cf__lua_check_point_list(L, 1, "bezier", "point", 1, &n, &dim)
+              : cf__lua_check_points(L, pidx, "bezier", "point", 1, &n, &dim);
     if (w != NULL && nw != n)
         return cf__lua_error(L, "bezier: %zu weights given for %zu points",
                              nw, n);

@@ -13,6 +13,9 @@
 ** (and keeps n * dim * sizeof(double) far from overflow). */
 #define MAX_ITEMS ((size_t)1 << 26)
 
+/* What check_len refuses besides entries 1..n */
+enum { LIST, ONE_POINT, NAMES_CHECKED };
+
 int
 cf__lua_error(lua_State *L, const char *fmt, ...)
 {
@@ -32,8 +35,33 @@ cf__lua_buffer(lua_State *L, size_t n)
     return lua_newuserdatauv(L, (n ? n : 1) * sizeof(double), 0);
 }
 
+/* A list takes no names: an entry of the table at idx whose key is not
+** one of 1..n is refused (one = true: the table is one point). */
+static void
+refuse_names(lua_State *L, int idx, lua_Integer n, const char *fn,
+             const char *what, bool one)
+{
+    lua_pushnil(L);
+    while (lua_next(L, idx) != 0) {
+        lua_Integer k;
+        lua_pop(L, 1);
+        k = lua_isinteger(L, -1) ? lua_tointeger(L, -1) : 0;
+        if (k >= 1 && k <= n)
+            continue;
+        if (lua_type(L, -1) == LUA_TSTRING)
+            luaL_error(L, "%s: %s%s%s has an entry named '%s'; %s", fn,
+                       one ? "" : "the ", what, one ? "" : " list",
+                       lua_tostring(L, -1),
+                       one ? "a point is {x, y, ...}"
+                           : "a list takes no names (options go in the "
+                             "table after it)");
+        luaL_error(L, "%s: %s%s%s has an entry outside 1..%d", fn,
+                   one ? "" : "the ", what, one ? "" : " list", (int)n);
+    }
+}
+
 static size_t
-check_len(lua_State *L, int idx, const char *fn, const char *what)
+check_len(lua_State *L, int idx, const char *fn, const char *what, int names)
 {
     lua_Integer n;
     if (!lua_istable(L, idx))
@@ -43,6 +71,8 @@ check_len(lua_State *L, int idx, const char *fn, const char *what)
     if (n < 0 || (lua_Unsigned)n > MAX_ITEMS)
         cf__lua_error(L, "%s: %s has %lld entries; too many", fn, what,
                       (long long)n);
+    if (names != NAMES_CHECKED)
+        refuse_names(L, idx, n, fn, what, names == ONE_POINT);
     return (size_t)n;
 }
 
@@ -71,14 +101,14 @@ coord(lua_State *L, int tbl, lua_Integer k, const char *fn, const char *what,
     return v;
 }
 
-double *
-cf__lua_check_points(lua_State *L, int idx, const char *fn, const char *what,
-                     size_t min, size_t *count, size_t *dim)
+static double *
+check_points(lua_State *L, int idx, const char *fn, const char *what,
+             size_t min, size_t *count, size_t *dim, int names)
 {
     size_t n, d = 0;
     double *buf;
     idx = lua_absindex(L, idx);
-    n = check_len(L, idx, fn, what);
+    n = check_len(L, idx, fn, what, names);
     if (n < min)
         cf__lua_error(L, "%s: %zu %s%s given, at least %zu needed", fn, n,
                       what, n == 1 ? "" : "s", min);
@@ -89,6 +119,7 @@ cf__lua_check_points(lua_State *L, int idx, const char *fn, const char *what,
             cf__lua_error(L, "%s: %s %zu must be a table {x, y, ...}, "
                           "got %s", fn, what, i + 1, luaL_typename(L, -1));
         di = (size_t)luaL_len(L, -1);
+        refuse_names(L, lua_gettop(L), (lua_Integer)di, fn, what, true);
         lua_pop(L, 1);
         if (di < 1)
             cf__lua_error(L, "%s: %s %zu has no coordinates", fn, what,
@@ -115,13 +146,28 @@ cf__lua_check_points(lua_State *L, int idx, const char *fn, const char *what,
 }
 
 double *
+cf__lua_check_points(lua_State *L, int idx, const char *fn, const char *what,
+                     size_t min, size_t *count, size_t *dim)
+{
+    return check_points(L, idx, fn, what, min, count, dim, LIST);
+}
+
+double *
+cf__lua_check_point_list(lua_State *L, int idx, const char *fn,
+                         const char *what, size_t min, size_t *count,
+                         size_t *dim)
+{
+    return check_points(L, idx, fn, what, min, count, dim, NAMES_CHECKED);
+}
+
+double *
 cf__lua_check_point(lua_State *L, int idx, const char *fn, const char *what,
                     size_t *dim)
 {
     size_t d;
     double *buf;
     idx = lua_absindex(L, idx);
-    d = check_len(L, idx, fn, what);
+    d = check_len(L, idx, fn, what, ONE_POINT);
     if (d < 1)
         luaL_error(L, "%s: %s has no coordinates", fn, what);
     if (*dim != 0 && d != *dim)
@@ -141,7 +187,7 @@ cf__lua_check_numbers(lua_State *L, int idx, const char *fn, const char *what,
     size_t n;
     double *buf;
     idx = lua_absindex(L, idx);
-    n = check_len(L, idx, fn, what);
+    n = check_len(L, idx, fn, what, LIST);
     buf = cf__lua_buffer(L, n);
     for (size_t i = 0; i < n; i++) {
         int isnum;

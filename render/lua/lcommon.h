@@ -38,10 +38,18 @@ double *cf__lua_buffer(lua_State *L, size_t n);
 ** Pushes a scratch buffer holding them interleaved; *count and *dim
 ** receive their number and dimension.  fn names the calling function in
 ** messages ("bezier: point 3 has 3 coordinates, point 1 has 2"). min is
-** the least number of points accepted. */
+** the least number of points accepted.  A list takes no names: an entry
+** other than 1..n of the list, or of one of its points, is refused ("the
+** point list has an entry named 'closed'"); so in the other readers
+** of lists and points below. */
 double *cf__lua_check_points(lua_State *L, int idx, const char *fn,
                              const char *what, size_t min, size_t *count,
                              size_t *dim);
+/* The same for the list part of a table whose names its function has
+** checked (bezier{ P0, P1, weights = {...} }). */
+double *cf__lua_check_point_list(lua_State *L, int idx, const char *fn,
+                                 const char *what, size_t min,
+                                 size_t *count, size_t *dim);
 /* One point {x, y, ...} of dimension dim (0: any, then *dim is set). */
 double *cf__lua_check_point(lua_State *L, int idx, const char *fn,
                             const char *what, size_t *dim);

@@ -310,6 +310,15 @@ cf__lua_fail(lua_State *L, const char *fn, cf_status_t status,
     return luaL_error(L, "%s: %s", fn, cf_status_to_string(status));
 }
 
+int
+cf__lua_done(lua_State *L, const char *fn, cf_status_t status,
+             const cf_diag_t *diag, int nresults)
+{
+    if (status != CF_STATUS_OK)
+        return cf__lua_fail(L, fn, status, diag);
+    return nresults;
+}
+
 /* ---- holders ------------------------------------------------------------ */
 
 typedef struct holder {

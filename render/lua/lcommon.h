@@ -77,6 +77,10 @@ int cf__lua_field(lua_State *L, int idx, const char *key);
 int cf__lua_fail(lua_State *L, const char *fn, cf_status_t status,
                  const cf_diag_t *diag);
 
+/* nresults when status is OK; otherwise the error of cf__lua_fail. */
+int cf__lua_done(lua_State *L, const char *fn, cf_status_t status,
+                 const cf_diag_t *diag, int nresults);
+
 /* A holder: a userdata that frees a library object in __gc unless it was
 ** released.  Push one, store the object in *slot, and call
 ** cf__lua_holder_release when it has been taken apart. */
@@ -92,6 +96,7 @@ void cf__lua_new_class(lua_State *L, const char *name, const luaL_Reg *methods,
 /* The openers (each sets its globals in the state). */
 void cf__lua_open_bezier(lua_State *L);
 void cf__lua_open_bernstein(lua_State *L);
+void cf__lua_open_knots(lua_State *L);
 void cf__lua_open_offset(lua_State *L);
 void cf__lua_open_interp(lua_State *L);
 void cf__lua_open_conic(lua_State *L);

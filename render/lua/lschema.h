@@ -7,7 +7,8 @@
 ** take, for a nested table (label_style, point, ...) the schema of that
 ** table.  cf__lua_check_table refuses, before the function reads anything:
 **
-**   an unknown key        bspline: unknown field 'knot' (did you mean 'knots'?)
+**   an unknown key        bspline: unknown field 'knot' (did you mean
+**                         'knots'?)
 **   an unknown name       interpolate: method "natral" is unknown (did you
 **                         mean "natural"?)
 **   an entry without a    curve: option 1 has no name; options are named,

@@ -246,6 +246,18 @@ cf__lua_opt_int(lua_State *L, int idx, const char *fn, const char *what,
     return cf__lua_check_int(L, idx, fn, what, lo, hi);
 }
 
+bool
+cf__lua_opt_bool_arg(lua_State *L, int idx, const char *fn, const char *what,
+                     bool def)
+{
+    if (lua_isnoneornil(L, idx))
+        return def;
+    if (!lua_isboolean(L, idx))
+        luaL_error(L, "%s: %s is true or false, got %s", fn, what,
+                   luaL_typename(L, idx));
+    return lua_toboolean(L, idx);
+}
+
 void
 cf__lua_push_point(lua_State *L, const double *p, size_t dim)
 {

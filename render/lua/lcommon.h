@@ -64,6 +64,10 @@ int cf__lua_check_int(lua_State *L, int idx, const char *fn,
                       const char *what, int lo, int hi);
 int cf__lua_opt_int(lua_State *L, int idx, const char *fn, const char *what,
                     int lo, int hi, int def);
+/* true or false (nil or none: def); another value is refused, not read as
+** Lua's truth ("closed = 'no'" is no longer true). */
+bool cf__lua_opt_bool_arg(lua_State *L, int idx, const char *fn,
+                          const char *what, bool def);
 
 void cf__lua_push_point(lua_State *L, const double *p, size_t dim);
 void cf__lua_push_points(lua_State *L, const double *p, size_t count,

@@ -154,10 +154,11 @@ add_closed(cf_figure_t *fig, const double *p, size_t n, const cf_style_t *st)
 static int
 m_polyline(lua_State *L)
 {
+    bool closed;
     lua_settop(L, 3);
+    closed = cf__lua_opt_bool(L, 3, "closed", "polyline", false);
     return draw_points(L, "polyline", CF__KEYS_POLYLINE,
-                       cf__lua_opt_bool(L, 3, "closed", false) ? add_closed
-                                                               : add_open);
+                       closed ? add_closed : add_open);
 }
 
 /* f:line(p, q, {...}): the segment pq */

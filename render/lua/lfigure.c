@@ -135,7 +135,7 @@ static void
 read_frame(lua_State *L, cf_figure_t *fig, double w, double h)
 {
     cf_diag_t diag;
-    bool given;
+    bool given, aspect;
     double margin, tol;
     if (cf__lua_field(L, 1, "window") != LUA_TNIL) {
         size_t n;
@@ -152,9 +152,8 @@ read_frame(lua_State *L, cf_figure_t *fig, double w, double h)
         cf__lua_error(L, "figure: the page of %g x %g bp leaves no room "
                       "inside the margin of %g bp (a bare number is in bp; "
                       "give a unit: width = \"8cm\")", w, h, margin);
-    check(L, "figure", cf_figure_set_fit(fig, margin,
-                                         cf__lua_opt_bool(L, 1, "aspect",
-                                                          true)), NULL);
+    aspect = cf__lua_opt_bool(L, 1, "aspect", "figure", true);
+    check(L, "figure", cf_figure_set_fit(fig, margin, aspect), NULL);
     tol = cf__lua_opt_number(L, 1, "tolerance", "figure", 0.01, &given);
     if (given)
         check(L, "figure", cf_figure_set_tolerance(fig, tol), NULL);

@@ -47,7 +47,7 @@ read_options(lua_State *L, const char *fn, size_t dim, size_t count,
         opt->param = CF_PARAM_POWER;
     }
     if (cf__lua_field(L, 1, "closed") != LUA_TNIL)
-        opt->closed = lua_toboolean(L, -1);
+        opt->closed = cf__lua_opt_bool_arg(L, -1, fn, "closed", false);
     if (cf__lua_field(L, 1, "params") != LUA_TNIL) {
         size_t n;
         opt->params = cf__lua_check_numbers(L, -1, fn, "parameter", &n);
@@ -102,7 +102,7 @@ l_approximate(lua_State *L)
     cf__lua_field(L, 1, "count");
     ncontrol = cf__lua_check_int(L, -1, "approximate", "count", 1, 1 << 20);
     if (cf__lua_field(L, 1, "fix_ends") != LUA_TNIL)
-        fix = lua_toboolean(L, -1);
+        fix = cf__lua_opt_bool_arg(L, -1, "approximate", "fix_ends", true);
     read_options(L, "approximate", dim, n, &opt);
     out = cf__lua_new_bspline(L);
     cf_diag_clear(&diag);
@@ -128,7 +128,7 @@ l_parameters(lua_State *L)
     if (!lua_isnil(L, 2) &&
         cf_param_from_string(luaL_checkstring(L, 2), &param, &diag))
         return luaL_error(L, "parameters: %s", diag.msg);
-    closed = lua_toboolean(L, 3);
+    closed = cf__lua_opt_bool_arg(L, 3, "parameters", "closed", false);
     u = cf__lua_buffer(L, n + 1);
     if (cf_interp_parameters(dim, pts, n, param, 0.5, closed, u, &diag))
         return cf__lua_fail(L, "parameters", diag.status, &diag);

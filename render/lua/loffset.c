@@ -33,7 +33,7 @@ read_options(lua_State *L, int idx, cf_offset_options_t *opt)
     if (cf__lua_field(L, idx, "tolerance") != LUA_TNIL)
         opt->tolerance = cf__lua_check_finite(L, -1, "offset", "tolerance");
     if (cf__lua_field(L, idx, "trim") != LUA_TNIL)
-        opt->trim = lua_toboolean(L, -1);
+        opt->trim = cf__lua_opt_bool_arg(L, -1, "offset", "trim", false);
     if (cf__lua_field(L, idx, "method") != LUA_TNIL)
         opt->method = (cf_offset_method_t)luaL_checkoption(L, -1, NULL,
                                                            methods);

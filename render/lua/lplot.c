@@ -142,9 +142,9 @@ read_axes(lua_State *L, cf_axes_t *ax)
         ax->xtick_labels = ax->ytick_labels = ax->knot_labels = NULL;
         ax->xlabel = ax->ylabel = NULL;
     }
-    ax->arrows = cf__lua_opt_bool(L, 2, "arrows", true);
-    ax->grid = cf__lua_opt_bool(L, 2, "grid", false);
-    ax->box = cf__lua_opt_bool(L, 2, "box", false);
+    ax->arrows = cf__lua_opt_bool(L, 2, "arrows", "plot", true);
+    ax->grid = cf__lua_opt_bool(L, 2, "grid", "plot", false);
+    ax->box = cf__lua_opt_bool(L, 2, "box", "plot", false);
 }
 
 /* f:plot{ x = {0, 10}, y = {0, 1}, knots = {...}, knot_labels = "u_%d",

@@ -244,9 +244,11 @@ cf__lua_read_sub_style(lua_State *L, int idx, const char *key,
     cf_style_init(s);
     if (cf__lua_field(L, idx, key) != LUA_TNIL) {
         present = lua_toboolean(L, -1);
-        if (lua_istable(L, -1)) {
+        if (lua_istable(L, -1))
             cf__lua_read_style(L, lua_gettop(L), fn, fig, s);
-        }
+        else if (!lua_isboolean(L, -1))
+            luaL_error(L, "%s: %s is a style table, e.g. { color = \"red\" }, "
+                       "got %s", fn, key, luaL_typename(L, -1));
     }
     lua_pop(L, 1);
     return present;
@@ -277,11 +279,12 @@ cf__lua_read_length(lua_State *L, int idx, const char *fn, const char *what,
 
 
 bool
-cf__lua_opt_bool(lua_State *L, int idx, const char *key, bool def)
+cf__lua_opt_bool(lua_State *L, int idx, const char *key, const char *fn,
+                 bool def)
 {
-    bool v = def;
-    if (cf__lua_field(L, idx, key) != LUA_TNIL)
-        v = lua_toboolean(L, -1);
+    bool v;
+    cf__lua_field(L, idx, key);
+    v = cf__lua_opt_bool_arg(L, -1, fn, key, def);
     lua_pop(L, 1);
     return v;
 }

@@ -41,7 +41,8 @@ cf_color_t cf__lua_read_color(lua_State *L, int idx, const char *fn,
 ** *given, if not NULL, tells which). */
 double cf__lua_opt_number(lua_State *L, int idx, const char *key,
                           const char *fn, double def, bool *given);
-bool cf__lua_opt_bool(lua_State *L, int idx, const char *key, bool def);
+bool cf__lua_opt_bool(lua_State *L, int idx, const char *key,
+                      const char *fn, bool def);
 /* The style fields of the options table at idx (nil: none set). */
 void cf__lua_read_style(lua_State *L, int idx, const char *fn,
                         const cf_figure_t *fig, cf_style_t *s);

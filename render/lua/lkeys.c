@@ -1,12 +1,12 @@
 /*
-** The schemas of every named table of the figure language (lschema.h):
+** The schemas of every named table of the figure language (lkeys.h):
 ** what each function takes by name.  A key added here is known to the
 ** check, listed to the tests (which misspell every key and every name
 ** and expect the suggestion), and documented by docs/language.md.
 */
 #include <stddef.h>
 
-#include "lschema.h"
+#include "lkeys.h"
 
 /* ---- enumerated names --------------------------------------------------- */
 

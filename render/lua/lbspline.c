@@ -129,7 +129,7 @@ l_bspline(lua_State *L)
         knots = cf__lua_check_numbers(L, -1, "bspline", "knot", &nk);
     if (cf__lua_field(L, 1, "kind") != LUA_TNIL && knots != NULL)
         return luaL_error(L, "bspline: give either knots or kind");
-    kind = luaL_optstring(L, -1, "clamped");
+    kind = cf__lua_opt_text(L, -1, "bspline", "kind", "clamped");
     out = cf__lua_new_bspline(L);
     cf_diag_clear(&diag);
     if (knots != NULL)
@@ -154,6 +154,7 @@ l_coons(lua_State *L)
     cf__lua_field(L, 1, "points");
     pts = cf__lua_check_points(L, -1, "coons", "point", 1, &n, &dim);
     cf__lua_field(L, 1, "ends");
+    cf__lua_opt_text(L, -1, "coons", "ends", "plain");
     e = luaL_checkoption(L, -1, "plain", ends);
     out = cf__lua_new_bspline(L);
     cf_diag_clear(&diag);
@@ -205,7 +206,8 @@ l_nurbs_arc(lua_State *L)
     cf__lua_field(L, 1, "r");
     r = cf__lua_check_finite(L, -1, "nurbs_arc", "r");
     cf__lua_field(L, 1, "from");
-    a0 = luaL_optnumber(L, -1, 0.0);
+    a0 = lua_isnil(L, -1) ? 0.0
+                          : cf__lua_check_finite(L, -1, "nurbs_arc", "from");
     cf__lua_field(L, 1, "to");
     a1 = cf__lua_check_finite(L, -1, "nurbs_arc", "to");
     out = cf__lua_new_bspline(L);

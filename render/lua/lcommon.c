@@ -246,6 +246,18 @@ cf__lua_opt_int(lua_State *L, int idx, const char *fn, const char *what,
     return cf__lua_check_int(L, idx, fn, what, lo, hi);
 }
 
+const char *
+cf__lua_opt_text(lua_State *L, int idx, const char *fn, const char *what,
+                 const char *def)
+{
+    if (lua_isnoneornil(L, idx) && def != NULL)
+        return def;
+    if (!lua_isstring(L, idx))
+        luaL_error(L, "%s: %s must be a string, got %s", fn, what,
+                   luaL_typename(L, idx));
+    return lua_tostring(L, idx);
+}
+
 bool
 cf__lua_opt_bool_arg(lua_State *L, int idx, const char *fn, const char *what,
                      bool def)

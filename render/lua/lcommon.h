@@ -64,6 +64,10 @@ int cf__lua_check_int(lua_State *L, int idx, const char *fn,
                       const char *what, int lo, int hi);
 int cf__lua_opt_int(lua_State *L, int idx, const char *fn, const char *what,
                     int lo, int hi, int def);
+/* A string (or a number, as text) argument; def when nil or none (def
+** NULL: required).  "bspline: kind must be a string, got table". */
+const char *cf__lua_opt_text(lua_State *L, int idx, const char *fn,
+                             const char *what, const char *def);
 /* true or false (nil or none: def); another value is refused, not read as
 ** Lua's truth ("closed = 'no'" is no longer true). */
 bool cf__lua_opt_bool_arg(lua_State *L, int idx, const char *fn,

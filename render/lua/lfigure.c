@@ -120,7 +120,8 @@ read_theme(lua_State *L, cf_figure_t *fig)
     cf_theme_t th;
     if (cf__lua_field(L, 1, "theme") != LUA_TNIL) {
         cf_diag_clear(&diag);
-        if (cf_theme_get(luaL_checkstring(L, -1), &th, &diag))
+        if (cf_theme_get(cf__lua_opt_text(L, -1, "figure", "theme", NULL),
+                         &th, &diag))
             luaL_error(L, "figure: theme: %s", diag.msg);
         if (cf_figure_set_theme(fig, &th) != CF_STATUS_OK) {
             cf_figure_status(fig, &diag);
@@ -182,6 +183,18 @@ new_figure(lua_State *L, int name, int caption, double w, double h)
     return b->fig;
 }
 
+/* The text at idx (def when nil): a string or a number. */
+static const char *
+opt_text(lua_State *L, int idx, const char *what, const char *def)
+{
+    if (lua_isnil(L, idx))
+        return def;
+    if (!lua_isstring(L, idx))
+        luaL_error(L, "figure: %s must be a string, got %s", what,
+                   luaL_typename(L, idx));
+    return lua_tostring(L, idx);
+}
+
 /* width and height (pushed) in bp */
 static void
 read_page(lua_State *L, double *w, double *h)
@@ -221,10 +234,10 @@ l_figure(lua_State *L)
     cf__lua_field(L, 1, "title");
     read_page(L, &w, &h);
     fig = new_figure(L, 2, 3, w, h);
-    check(L, "figure", cf_figure_set_title(fig, luaL_optstring(L, 4,
+    check(L, "figure", cf_figure_set_title(fig, opt_text(L, 4, "title",
                                            lua_tostring(L, 2))), NULL);
-    check(L, "figure", cf_figure_set_caption(fig, luaL_optstring(L, 3, "")),
-          NULL);
+    check(L, "figure", cf_figure_set_caption(fig, opt_text(L, 3, "caption",
+                                                           "")), NULL);
     read_theme(L, fig);
     read_frame(L, fig, w, h);
     read_projection(L, fig);

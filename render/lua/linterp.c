@@ -33,11 +33,12 @@ read_options(lua_State *L, const char *fn, size_t dim, size_t count,
     cf_interp_options_init(opt);
     cf_diag_clear(&diag);
     if (cf__lua_field(L, 1, "method") != LUA_TNIL &&
-        cf_interp_method_from_string(luaL_checkstring(L, -1), &opt->method,
-                                     &diag))
+        cf_interp_method_from_string(
+            cf__lua_opt_text(L, -1, fn, "method", NULL), &opt->method, &diag))
         luaL_error(L, "%s: method: %s", fn, diag.msg);
     if (cf__lua_field(L, 1, "param") != LUA_TNIL &&
-        cf_param_from_string(luaL_checkstring(L, -1), &opt->param, &diag))
+        cf_param_from_string(cf__lua_opt_text(L, -1, fn, "param", NULL),
+                             &opt->param, &diag))
         luaL_error(L, "%s: param: %s", fn, diag.msg);
     if (cf__lua_field(L, 1, "degree") != LUA_TNIL)
         opt->degree = cf__lua_check_int(L, -1, fn, "degree", 0,
@@ -226,6 +227,7 @@ l_coons_chain(lua_State *L)
     cf__lua_field(L, 1, "points");
     p = cf__lua_check_points(L, -1, "coons_chain", "point", 1, &n, &dim);
     cf__lua_field(L, 1, "ends");
+    cf__lua_opt_text(L, -1, "coons_chain", "ends", "plain");
     e = luaL_checkoption(L, -1, "plain", ends);
     slot = cf__lua_holder(L, free_list);
     cf_diag_clear(&diag);

@@ -34,7 +34,8 @@ read_options(lua_State *L, int idx, cf_offset_options_t *opt)
         opt->tolerance = cf__lua_check_finite(L, -1, "offset", "tolerance");
     if (cf__lua_field(L, idx, "trim") != LUA_TNIL)
         opt->trim = cf__lua_opt_bool_arg(L, -1, "offset", "trim", false);
-    if (cf__lua_field(L, idx, "method") != LUA_TNIL)
+    if (cf__lua_field(L, idx, "method") != LUA_TNIL &&
+        cf__lua_opt_text(L, -1, "offset", "method", NULL) != NULL)
         opt->method = (cf_offset_method_t)luaL_checkoption(L, -1, NULL,
                                                            methods);
     lua_pop(L, 3);

@@ -39,7 +39,7 @@ tick_labels(lua_State *L, const char *key, const char *labels_key,
     l = lua_newuserdatauv(L, (n ? n : 1) * sizeof *l, 0);
     for (size_t i = 0; i < n; i++) {
         lua_geti(L, -2, (lua_Integer)i + 1);
-        l[i] = luaL_checkstring(L, -1);
+        l[i] = cf__lua_opt_text(L, -1, "plot", labels_key, NULL);
         lua_pop(L, 1);
     }
     return l;
@@ -125,9 +125,9 @@ read_axes(lua_State *L, cf_axes_t *ax)
     read_ticks(L, "yticks", "ytick_labels", &ax->yticks, &ax->ytick_count,
                &ax->ytick_labels, &ax->ytick_step);
     if (cf__lua_field(L, 2, "xlabel") != LUA_TNIL)
-        ax->xlabel = luaL_checkstring(L, -1);
+        ax->xlabel = cf__lua_opt_text(L, -1, "plot", "xlabel", NULL);
     if (cf__lua_field(L, 2, "ylabel") != LUA_TNIL)
-        ax->ylabel = luaL_checkstring(L, -1);
+        ax->ylabel = cf__lua_opt_text(L, -1, "plot", "ylabel", NULL);
     if (cf__lua_field(L, 2, "knots") != LUA_TNIL) {
         ax->knots = cf__lua_check_numbers(L, -1, "plot", "knot",
                                           &ax->knot_count);

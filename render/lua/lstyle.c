@@ -185,7 +185,7 @@ read_name(lua_State *L, int idx, const char *key, const char *fn,
     cf_diag_t diag;
     bool given = cf__lua_field(L, idx, key) != LUA_TNIL;
     cf_diag_clear(&diag);
-    if (given && parse(luaL_checkstring(L, -1), out, &diag))
+    if (given && parse(cf__lua_opt_text(L, -1, fn, key, NULL), out, &diag))
         luaL_error(L, "%s: %s: %s", fn, key, diag.msg);
     lua_pop(L, 1);
     return given;

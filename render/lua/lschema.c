@@ -153,6 +153,9 @@ check_values(lua_State *L, const char *where, const cf__lua_key_t *k,
 {
     if (lua_type(L, idx) == LUA_TSTRING) {
         check_name(L, where, k, idx);
+    } else if (lua_type(L, idx) == LUA_TNUMBER) {
+        luaL_error(L, "%s: %s is a name, e.g. \"%s\", not a number", where,
+                   k->name, k->values[0]);
     } else if (lua_istable(L, idx)) {
         lua_Integer n = (lua_Integer)lua_rawlen(L, idx);
         for (lua_Integer i = 1; i <= n; i++) {

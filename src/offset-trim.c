@@ -431,13 +431,38 @@ inside(const trim *tr, double g, double margin)
     return base_dist(tr, p) < fabs(tr->d) - margin * tr->tol;
 }
 
-/* Inside on the exact offset of raw piece i's source at parameter T. */
+/* Inside on the source at its parameter t (by |d| - KEEP tol). */
+static bool
+src_inside(const trim *tr, const cf__osrc_t *src, double t)
+{
+    double p[2];
+    cf__osrc_point(src, t, p);
+    return base_dist(tr, p) < fabs(tr->d) - KEEP * tr->tol;
+}
+
+/* The same at source parameter T of base piece k's exact offset. */
 static bool
 exact_inside(const trim *tr, const cf__osrc_t *src, size_t k, double T)
 {
-    double p[2];
-    cf__osrc_point(src, to_local(tr, k, T), p);
-    return base_dist(tr, p) < fabs(tr->d) - KEEP * tr->tol;
+    return src_inside(tr, src, to_local(tr, k, T));
+}
+
+/* A cut at u_cut of the source, kept towards u_kept, moved (bisection) to
+** where the source's distance reaches |d| - KEEP tol; unchanged if it is
+** not inside or u_kept is inside too. */
+static double
+src_keep(const trim *tr, const cf__osrc_t *src, double u_cut, double u_kept)
+{
+    if (!src_inside(tr, src, u_cut) || src_inside(tr, src, u_kept))
+        return u_cut;
+    for (int it = 0; it < 60; it++) {
+        double mid = 0.5 * (u_cut + u_kept);
+        if (src_inside(tr, src, mid))
+            u_cut = mid;
+        else
+            u_kept = mid;
+    }
+    return u_kept;
 }
 
 /* The transition between g_in (inside) and g_out (kept) of the raw chain
@@ -473,6 +498,41 @@ exact_transition(const trim *tr, double g_in, double g_out, double *g,
     *T = T_out;
     *g = (double)i + fmin(1.0, fmax(0.0, (T_out - raw->t[i]) /
                                              (raw->t[i + 1] - raw->t[i])));
+    return 0;
+}
+
+/* The transition at the raw chain's cut g (kept side towards g_out) when
+** its bracket is not one of the exact offset: from the projection of the
+** cut onto the exact offset of its piece, bisection towards the kept end
+** of that piece until the distance is |d| - KEEP tol.  -1 on a join arc
+** or if that end is inside too. */
+static int
+exact_cut(const trim *tr, double g_cut, double g_out, double *g, double *T)
+{
+    const cf_cubics_t *raw = tr->raw;
+    size_t i = piece_at(tr, g_cut), k;
+    cf__osrc_t src;
+    double q[2], T_in, T_out;
+    if (piece_source(tr, i, &src, &k) != 0)
+        return -1;
+    chain_point(tr, g_cut, q);
+    T_in = project(tr, i, &src, k, q);
+    if (exact_inside(tr, &src, k, T_in)) {
+        T_out = g_out > g_cut ? raw->t[i + 1] : raw->t[i];
+        if (exact_inside(tr, &src, k, T_out))
+            return -1;
+        for (int it = 0; it < 60; it++) {
+            double mid = 0.5 * (T_in + T_out);
+            if (exact_inside(tr, &src, k, mid))
+                T_in = mid;
+            else
+                T_out = mid;
+        }
+        T_in = T_out;
+    }
+    *T = T_in;
+    *g = (double)i + fmin(1.0, fmax(0.0, (T_in - raw->t[i]) /
+                                            (raw->t[i + 1] - raw->t[i])));
     return 0;
 }
 
@@ -551,7 +611,18 @@ refit_part(trim *tr, cf__chain_t *ch, size_t i, const double *seg, const cut *c0
     size_t k;
     double Ta, Tb;
     if (piece_source(tr, i, &src, &k) != 0) {
+        /* a join arc: a cut end that is not a crossing is moved along the
+        ** circle to where its distance reaches |d| - KEEP tol */
+        double ua = 0.0, ub = 1.0;
         arc_source(tr, i, seg, &src);
+        if (c0 != NULL && snap0 == NULL)
+            ua = src_keep(tr, &src, 0.0, 1.0);
+        if (c1 != NULL && snap1 == NULL)
+            ub = src_keep(tr, &src, 1.0, ua);
+        if (!(ub > ua))
+            return CF_STATUS_OK;
+        cf__osrc_init_arc(&src, src.cx, src.cy, src.r,
+                          src.a0 + src.sweep * ua, src.sweep * (ub - ua));
         return refit(tr, ch, &src, 0.0, 1.0, raw->t[i], raw->t[i],
                      snap0, snap1, 0);
     }
@@ -736,7 +807,15 @@ cf__offset_trim(const cf_bezier_t *const *base, size_t nbase,
                 ** be bracketed there */
                 cend.has_T = exact_transition(&tr, cls[m] ? lo : hi,
                                               cls[m] ? hi : lo, &end,
-                                              &cend.T) == 0;
+                                              &cend.T) == 0 ||
+                             exact_cut(&tr, out_end, cls[m] ? hi : lo, &end,
+                                       &cend.T) == 0;
+                if (!(end >= start && end <= g1)) {
+                    /* the exact transition is outside this interval of
+                    ** the raw chain: the raw one (projected) */
+                    end = out_end;
+                    cend.has_T = false;
+                }
                 cend.snap = NULL;
             }
             if (!cls[m]) {

@@ -447,6 +447,22 @@ exact_inside(const trim *tr, const cf__osrc_t *src, size_t k, double T)
     return src_inside(tr, src, to_local(tr, k, T));
 }
 
+/* Bisection between t_in (inside) and t_out (kept) on the source: the
+** kept end of the last bracket. */
+static double
+bisect_keep(const trim *tr, const cf__osrc_t *src, double t_in,
+            double t_out)
+{
+    for (int it = 0; it < 60; it++) {
+        double mid = 0.5 * (t_in + t_out);
+        if (src_inside(tr, src, mid))
+            t_in = mid;
+        else
+            t_out = mid;
+    }
+    return t_out;
+}
+
 /* A cut at u_cut of the source, kept towards u_kept, moved (bisection) to
 ** where the source's distance reaches |d| - KEEP tol; unchanged if it is
 ** not inside or u_kept is inside too. */
@@ -455,14 +471,16 @@ src_keep(const trim *tr, const cf__osrc_t *src, double u_cut, double u_kept)
 {
     if (!src_inside(tr, src, u_cut) || src_inside(tr, src, u_kept))
         return u_cut;
-    for (int it = 0; it < 60; it++) {
-        double mid = 0.5 * (u_cut + u_kept);
-        if (src_inside(tr, src, mid))
-            u_cut = mid;
-        else
-            u_kept = mid;
-    }
-    return u_kept;
+    return bisect_keep(tr, src, u_cut, u_kept);
+}
+
+/* The raw chain's g of source parameter T on raw piece i. */
+static double
+T_to_g(const trim *tr, size_t i, double T)
+{
+    const cf_cubics_t *raw = tr->raw;
+    return (double)i + fmin(1.0, fmax(0.0, (T - raw->t[i]) /
+                                               (raw->t[i + 1] - raw->t[i])));
 }
 
 /* The transition between g_in (inside) and g_out (kept) of the raw chain
@@ -487,17 +505,11 @@ exact_transition(const trim *tr, double g_in, double g_out, double *g,
     T_out = g_to_T(tr, i_out, g_out);
     if (!exact_inside(tr, &src, k, T_in) || exact_inside(tr, &src, k, T_out))
         return -1;
-    for (int it = 0; it < 60; it++) {
-        double mid = 0.5 * (T_in + T_out);
-        if (exact_inside(tr, &src, k, mid))
-            T_in = mid;
-        else
-            T_out = mid;
-    }
+    T_out = to_global(tr, k, bisect_keep(tr, &src, to_local(tr, k, T_in),
+                                         to_local(tr, k, T_out)));
     i = T_out >= raw->t[i_out] && T_out <= raw->t[i_out + 1] ? i_out : i_in;
     *T = T_out;
-    *g = (double)i + fmin(1.0, fmax(0.0, (T_out - raw->t[i]) /
-                                             (raw->t[i + 1] - raw->t[i])));
+    *g = T_to_g(tr, i, T_out);
     return 0;
 }
 
@@ -521,18 +533,11 @@ exact_cut(const trim *tr, double g_cut, double g_out, double *g, double *T)
         T_out = g_out > g_cut ? raw->t[i + 1] : raw->t[i];
         if (exact_inside(tr, &src, k, T_out))
             return -1;
-        for (int it = 0; it < 60; it++) {
-            double mid = 0.5 * (T_in + T_out);
-            if (exact_inside(tr, &src, k, mid))
-                T_in = mid;
-            else
-                T_out = mid;
-        }
-        T_in = T_out;
+        T_in = to_global(tr, k, bisect_keep(tr, &src, to_local(tr, k, T_in),
+                                            to_local(tr, k, T_out)));
     }
     *T = T_in;
-    *g = (double)i + fmin(1.0, fmax(0.0, (T_in - raw->t[i]) /
-                                            (raw->t[i + 1] - raw->t[i])));
+    *g = T_to_g(tr, i, T_in);
     return 0;
 }
 

@@ -608,8 +608,9 @@ refit(trim *tr, cf__chain_t *ch, const cf__osrc_t *src, double a, double b,
 /* Refit the part seg of raw piece i whose ends are the cuts c0 (NULL: the
 ** piece's start) and c1 (NULL: its end). */
 static cf_status_t
-refit_part(trim *tr, cf__chain_t *ch, size_t i, const double *seg, const cut *c0, const cut *c1,
-           const double *snap0, const double *snap1)
+refit_part(trim *tr, cf__chain_t *ch, size_t i, const double *seg,
+           const cut *c0, const cut *c1, const double *snap0,
+           const double *snap1)
 {
     const cf_cubics_t *raw = tr->raw;
     cf__osrc_t src;
@@ -633,10 +634,21 @@ refit_part(trim *tr, cf__chain_t *ch, size_t i, const double *seg, const cut *c0
     }
     Ta = raw->t[i];
     Tb = raw->t[i + 1];
+    /* an end without a parameter (a crossing of the raw chain only): the
+    ** projection of the raw cut, moved towards the kept part to where the
+    ** distance reaches |d| - KEEP tol */
     if (c0 != NULL)
-        Ta = c0->has_T ? c0->T : project(tr, i, &src, k, seg);
+        Ta = c0->has_T ? c0->T
+                       : to_global(tr, k, src_keep(tr, &src,
+                                         to_local(tr, k, project(tr, i, &src,
+                                                                 k, seg)),
+                                         to_local(tr, k, Tb)));
     if (c1 != NULL)
-        Tb = c1->has_T ? c1->T : project(tr, i, &src, k, seg + 6);
+        Tb = c1->has_T ? c1->T
+                       : to_global(tr, k, src_keep(tr, &src,
+                                         to_local(tr, k, project(tr, i, &src,
+                                                                 k, seg + 6)),
+                                         to_local(tr, k, Ta)));
     Ta = fmax(raw->t[i], fmin(raw->t[i + 1], Ta));
     Tb = fmax(raw->t[i], fmin(raw->t[i + 1], Tb));
     if (!(Tb > Ta))

@@ -129,10 +129,13 @@ void cf__chain_fini(cf__chain_t *ch);
 cf_status_t cf__fit_plain(const cf_bezier_t *c, double tol,
                           cf_cubics_t **out, bool *converged);
 
-/* Trim the raw chain of the pieces `base[0..n-1]` at d: split at the
-** self-intersections and keep the parts at distance >= |d| - tol. */
+/* Trim the raw chain of the pieces `base[0..n-1]` (source parameters
+** [t0[k], t1[k]], or [k, k + 1] when NULL) at d: split at the
+** self-intersections and keep the parts at distance >= |d| - tol, a cut
+** piece fitted again; each chain's max_error is its measured error. */
 cf_status_t cf__offset_trim(const cf_bezier_t *const *base, size_t nbase,
-                            double d, double tol, const cf_cubics_t *raw,
+                            const double *t0, const double *t1, double d,
+                            double tol, const cf_cubics_t *raw,
                             cf_cubics_list_t **out, size_t *nisect);
 
 #endif

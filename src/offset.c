@@ -642,14 +642,20 @@ offset_pieces(const cf_bezier_t *const *pieces, size_t n, const double *t0,
     if (opt.trim) {
         cf_cubics_list_t *tr = NULL;
         size_t nis = 0;
-        st = cf__offset_trim(pieces, n, d, opt.tolerance, dr.chain.cubics,
-                             &tr, &nis);
+        st = cf__offset_trim(pieces, n, t0, t1, d, opt.tolerance,
+                             dr.chain.cubics, &tr, &nis);
         if (st != CF_STATUS_OK)
             goto fail;
         dr.rep.self_intersections = nis;
         dr.rep.trimmed_chains = tr->count;
-        for (size_t k = 0; k < tr->count; k++)
+        for (size_t k = 0; k < tr->count; k++) {
+            /* the report covers the trimmed pieces too */
+            double e = tr->chains[k]->max_error;
             dr.rep.trimmed_segments += tr->chains[k]->count;
+            dr.rep.max_error = fmax(dr.rep.max_error, e);
+            if (!(e <= opt.tolerance))
+                dr.rep.converged = false;
+        }
         if (trimmed != NULL)
             *trimmed = tr;
         else

@@ -35,9 +35,10 @@
 ** Error.  Every piece's error is measured as a two-sided Hausdorff estimate
 ** against the exact offset on its parameter range (dense sampling, local
 ** refinement of every nearest distance and of the maximum).  The report
-** gives the largest; if a piece cannot reach the tolerance above a minimum
-** parameter width (1e-9 of its interval) it is kept and report.converged is
-** false.
+** gives the largest over everything returned, the raw pieces and (when
+** trimming) the trimmed ones; if a piece cannot reach the tolerance above
+** a minimum parameter width (1e-9 of its interval) it is kept and
+** report.converged is false.
 **
 ** Joins.  Where c' = 0 inside a curve (a cusp of the base curve, e.g.
 ** (0,0) (128,128) (128,0) (0,128)) and between Bézier pieces of a spline
@@ -50,6 +51,14 @@
 ** boundary of the swept disk on that side) is obtained by splitting the raw
 ** chain at its self-intersections and dropping the parts whose distance to
 ** the base curve is smaller than |d| - tolerance.  It is a list of chains.
+** A raw piece that is cut is fitted again (Levien's fit, whatever the
+** method; split in two if it must be) on the parameter range of the exact
+** offset it keeps: from the crossing of the exact offset (Newton's method
+** from the raw crossing; both chains end at that point) or from where the
+** exact offset's distance to the curve reaches |d| - 0.03 tolerance.  The
+** trimmed offset is so within the tolerance of the exact one on the same
+** ranges, at most one piece more per cut end than the raw pieces it
+** overlaps.
 */
 #ifndef CURVEFIG_OFFSET_H
 #define CURVEFIG_OFFSET_H
@@ -78,7 +87,8 @@ void cf_offset_options_init(cf_offset_options_t *opt);
 
 typedef struct cf_offset_report {
     size_t segments;            /* cubics in the raw offset */
-    double max_error;           /* largest measured error of a raw piece */
+    double max_error;           /* largest measured error of a returned
+                                ** piece (raw, and trimmed when trimming) */
     bool converged;             /* every piece within tolerance */
     size_t cusps;               /* offset cusps found (split points) */
     size_t joins;               /* round joins (c' = 0 inside, corners) */
@@ -123,8 +133,9 @@ cf_status_t cf_offset_cusps(const cf_bezier_t *c, double d, double *ts,
 ** chain, raw->t[i] .. raw->t[i + 1] the parameter range of c that piece i
 ** offsets (equal for a join arc), raw->max_error the largest measured error.
 ** *trimmed (may be NULL; computed when opt->trim) receives the trimmed
-** offset; its chains keep the parameters of their raw pieces (a part of a
-** piece gets that piece's range).  rep may be NULL.  d == 0 gives the curve
+** offset; its chains carry the parameters of c that their pieces offset
+** (a cut piece the part of its raw range it keeps) and their measured
+** max_error.  rep may be NULL.  d == 0 gives the curve
 ** itself (cf_bezier_to_cubics).  Release with cf_cubics_destroy and
 ** cf_cubics_list_destroy.
 */

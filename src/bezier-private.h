@@ -6,6 +6,7 @@
 #ifndef CURVEFIG_BEZIER_PRIVATE_H
 #define CURVEFIG_BEZIER_PRIVATE_H
 
+#include <math.h>
 #include <stdbool.h>
 #include <stddef.h>
 
@@ -35,15 +36,23 @@ cf_status_t cf__bezier_from_hpoints(size_t dim, int degree, bool rational,
                                     const double *hpts, cf_bezier_t **out,
                                     cf_diag_t *diag);
 
+/* The status of a curve parameter t: NOT_FINITE, DOMAIN outside [0, 1],
+** or OK. */
+static inline cf_status_t
+cf__bezier_check_param(double t)
+{
+    if (!isfinite(t))
+        return CF_STATUS_NOT_FINITE;
+    if (t < 0.0 || t > 1.0)
+        return CF_STATUS_DOMAIN;
+    return CF_STATUS_OK;
+}
+
 /* A list of count NULL items (t0/t1 allocated when with_params). */
 cf_bezier_list_t *cf__bezier_list_new(size_t count, bool with_params);
 
 /* de Casteljau on one coordinate: v[0..n] (destroyed) at t; returns c(t). */
 double cf__decasteljau_1(double *v, int n, double t);
-
-/* Evaluate the stored (homogeneous when rational) point at t into
-** out[hdim], by de Casteljau, without allocating. */
-void cf__bezier_eval_h(const cf_bezier_t *c, double t, double *out);
 
 /* The Cartesian point at t into out[dim] by de Casteljau; no checks. */
 void cf__bezier_eval_point(const cf_bezier_t *c, double t, double *out);

@@ -5,7 +5,8 @@
 **   offset-fit.c    exact offset sources, Levien and Tiller-Hanson fits,
 **                   error measurement
 **   offset-trim.c   self-intersections of the raw chain and trimming
-**   offset.c        public entry points, chains and joins
+**   offset-chain.c  the chain driver: splits, greedy covers, joins
+**   offset.c        public entry points and the independent measure
 */
 #ifndef CURVEFIG_OFFSET_PRIVATE_H
 #define CURVEFIG_OFFSET_PRIVATE_H
@@ -14,6 +15,7 @@
 #include <stddef.h>
 
 #include "curvefig/offset.h"
+#include "cubics-private.h"
 
 /* ---- 1-D Bernstein polynomials on [0, 1]: coefficients a[0..n] --------- */
 
@@ -105,22 +107,28 @@ cf_status_t cf__base_cusps_alloc(const cf_bezier_t *c, double **ts,
 /* A size of c' for relative tests: degree * max |P_i - P_0|. */
 double cf__deriv_scale(const cf_bezier_t *c);
 
-/* ---- chains ------------------------------------------------------------ */
+/* ---- the chain driver (offset-chain.c) ------------------------------- */
 
-/* A growing chain of cubics (dim 2). */
-typedef struct cf__chain {
-    cf_cubics_t *cubics;
-    size_t cap;
-} cf__chain_t;
+/* The cover of pieces by fitted cubics: splits at offset cusps and zeros
+** of c', greedy longest pieces (Levien) or bisection (Tiller-Hanson), round
+** joins; the report accumulates. */
+typedef struct cf__driver {
+    cf__chain_t chain;
+    double tol;
+    cf_offset_method_t method;
+    double d;
+    double T0, T1;              /* parameter range of the current piece */
+    cf_offset_report_t rep;
+} cf__driver_t;
 
-cf_status_t cf__chain_init(cf__chain_t *ch);
-/* Append a cubic covering source parameters [t0, t1] (t0 must equal the
-** last end parameter; the first call sets the start). */
-cf_status_t cf__chain_push(cf__chain_t *ch, const double *pts, double t0,
-                           double t1);
-/* Hand the chain over (NULL on an empty chain is not an error). */
-cf_cubics_t *cf__chain_take(cf__chain_t *ch);
-void cf__chain_fini(cf__chain_t *ch);
+/* A driver with an empty chain (NO_MEMORY only). */
+cf_status_t cf__driver_init(cf__driver_t *dr, double tol,
+                            cf_offset_method_t method, double d);
+/* Append the offset of the planar piece c (parameters [T0, T1]). */
+cf_status_t cf__driver_piece(cf__driver_t *dr, const cf_bezier_t *c);
+/* The round join between consecutive pieces that meet at an angle. */
+cf_status_t cf__driver_join(cf__driver_t *dr, const cf_bezier_t *prev,
+                            const cf_bezier_t *next);
 
 /* The planar curve c itself (not a polynomial of degree <= 3) as a chain
 ** of cubics fitted by the offset machinery at d = 0 (split at the zeros of

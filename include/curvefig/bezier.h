@@ -204,8 +204,8 @@ typedef struct cf_cubics {
 /* Polynomial curves of degree <= 3: exact (one segment, degree raised).
 ** Other planar curves (dim 2): split at the zeros of c', then covered by
 ** the longest cubics matching end points, end tangents, signed area and
-** moment (the offset module's Levien fit at d = 0) whose measured
-** two-sided Hausdorff distance to the curve is <= tol (tol > 0).  Other
+** moment (Levien's fit) whose measured two-sided Hausdorff distance to the
+** curve is <= tol (tol > 0).  Other
 ** dimensions: cubic Hermite pieces halved until the distance measured at
 ** 47 interior parameters is <= tol.  max_error is the largest measured
 ** distance; NO_CONVERGENCE when tol cannot be reached. */

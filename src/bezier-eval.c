@@ -48,12 +48,6 @@
 #define CF__CLONES
 #endif
 
-#if defined(__GNUC__)
-#define CF__INLINE static inline __attribute__((always_inline))
-#else
-#define CF__INLINE static inline
-#endif
-
 /* a[i] = C(n, i) p[i * stride] */
 static void
 scaled_coeffs(const double *p, size_t stride, int n, double *a)
@@ -258,16 +252,6 @@ cf__bezier_deriv_many_fast(const cf_bezier_t *c, int k, const double *t,
 
 /* ---- evaluation ---------------------------------------------------------- */
 
-double
-cf__decasteljau_1(double *v, int n, double t)
-{
-    double s = 1.0 - t;
-    for (int r = n; r > 0; r--)
-        for (int i = 0; i < r; i++)
-            v[i] = s * v[i] + t * v[i + 1];
-    return v[0];
-}
-
 void
 cf__bezier_eval_point(const cf_bezier_t *c, double t, double *out)
 {
@@ -276,12 +260,12 @@ cf__bezier_eval_point(const cf_bezier_t *c, double t, double *out)
     if (c->rational) {
         for (int i = 0; i <= n; i++)
             v[i] = c->pts[(size_t)i * c->hdim + c->dim];
-        w = cf__decasteljau_1(v, n, t);
+        w = cf__bp_decasteljau(v, n, t);
     }
     for (size_t k = 0; k < c->dim; k++) {
         for (int i = 0; i <= n; i++)
             v[i] = c->pts[(size_t)i * c->hdim + k];
-        out[k] = cf__decasteljau_1(v, n, t);
+        out[k] = cf__bp_decasteljau(v, n, t);
         if (c->rational)
             out[k] /= w;
     }
@@ -317,7 +301,7 @@ poly_derivs(double *v, int n, double t, int kk, double *res)
     for (int j = 0; j <= kk; j++) {
         int m = kk - j;
         memcpy(tmp, v, ((size_t)m + 1) * sizeof tmp[0]);
-        res[j] = fac * cf__decasteljau_1(tmp, m, t);
+        res[j] = fac * cf__bp_decasteljau(tmp, m, t);
         fac *= (double)(n - j);
         for (int i = 0; i < m; i++)
             v[i] = v[i + 1] - v[i];

@@ -171,12 +171,6 @@ cf_bspline_insert_knot(const cf_bspline_t *c, double u, int r,
 
 /* ---- refinement --------------------------------------------------------- */
 
-#if defined(__GNUC__)
-#define CF__INLINE static inline __attribute__((always_inline))
-#else
-#define CF__INLINE static inline
-#endif
-
 /* The heart of A5.4, from the right: the old points above the next new
 ** knot move up, then p points are recomputed (inlined with a constant
 ** hd for the common dimensions). */
@@ -230,11 +224,10 @@ cf_bspline_refine(const cf_bspline_t *c, const double *X, size_t nx,
         st = cf__bspline_check_param(c, X[j], diag);
         if (st != CF_STATUS_OK)
             return st;
-        if (j > 0 && X[j] < X[j - 1])
-            return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)j,
-                             "refine: new knot %zu (%g) is smaller than new "
-                             "knot %zu (%g)", j, X[j], j - 1, X[j - 1]);
     }
+    st = cf__check_knot_order(X, nx, "new knot", diag);
+    if (st != CF_STATUS_OK)
+        return st;
     /* final multiplicities: walk the sorted new knots and the knot vector
     ** together */
     {
@@ -1042,37 +1035,19 @@ cf_bspline_transform(const cf_bspline_t *c, const double *A, const double *b,
                      cf_bspline_t **out, cf_diag_t *diag)
 {
     cf_status_t st = check_in(c, out, diag);
-    size_t dim, hd;
+    size_t dim;
     cf_bspline_t *q;
     if (st != CF_STATUS_OK)
         return st;
-    if (A == NULL)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "transform: matrix is NULL");
     dim = c->dim;
-    st = cf__check_finite_points(A, dim, dim, dim, "matrix row", diag);
-    if (st == CF_STATUS_OK && b != NULL)
-        st = cf__check_finite_points(b, 1, dim, dim, "offset", diag);
+    st = cf__check_affine(A, b, dim, diag);
     if (st != CF_STATUS_OK)
         return st;
     q = cf__bspline_alloc(dim, c->rational, c->p, c->count);
     if (q == NULL)
         return no_memory(diag);
-    hd = c->hdim;
     memcpy(q->U, c->U, c->nknots * sizeof *q->U);
-    for (size_t i = 0; i < c->count; i++) {
-        const double *s = c->P + i * hd;
-        double *d = q->P + i * hd;
-        double w = c->rational ? s[dim] : 1.0;
-        for (size_t r = 0; r < dim; r++) {
-            double v = b != NULL ? w * b[r] : 0.0;
-            for (size_t k = 0; k < dim; k++)
-                v += A[r * dim + k] * s[k];
-            d[r] = v;
-        }
-        if (c->rational)
-            d[dim] = w;
-    }
+    cf__affine_points(A, b, dim, c->rational, c->P, c->count, c->hdim, q->P);
     st = check_overflow(q, "transform", diag);
     if (st != CF_STATUS_OK) {
         cf_bspline_destroy(q);

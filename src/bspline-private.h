@@ -79,6 +79,13 @@ void cf__basis_deriv(int p, const double *U, size_t nknots, const double *rk,
                      size_t k, double u, int d, double *v);
 
 /* Unchecked: the multiplicity of u in U (a sorted vector). */
+/* Knots U[0..n-1] finite and non-decreasing; the one check and wording
+** ("knot 4 (0.30) is smaller than knot 3 (0.50)", `what` naming the
+** array: "knot", "new knot"), with as many digits as tell the two apart.
+** NOT_FINITE or BAD_KNOTS with the index. */
+cf_status_t cf__check_knot_order(const double *U, size_t n, const char *what,
+                                 cf_diag_t *diag);
+
 int cf__knots_mult(const double *U, size_t nknots, double u);
 
 #endif

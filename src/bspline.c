@@ -8,12 +8,6 @@
 
 #include "bspline-private.h"
 
-#if defined(__GNUC__)
-#define CF__INLINE static inline __attribute__((always_inline))
-#else
-#define CF__INLINE static inline
-#endif
-
 /* Largest count of control points (the span grid stores 32-bit spans). */
 #define MAX_COUNT ((size_t)1 << 30)
 

@@ -252,3 +252,44 @@ cf__binomial(int n, int k)
         r = r * (double)(n - k + i) / (double)i;
     return nearbyint(r);
 }
+
+int
+cf__cmp_double(const void *x, const void *y)
+{
+    double a = *(const double *)x, b = *(const double *)y;
+    return (a > b) - (a < b);
+}
+
+cf_status_t
+cf__check_affine(const double *A, const double *b, size_t dim,
+                 cf_diag_t *diag)
+{
+    cf_status_t st;
+    if (A == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "the matrix is NULL");
+    st = cf__check_finite_points(A, dim, dim, dim, "matrix row", diag);
+    if (st == CF_STATUS_OK && b != NULL)
+        st = cf__check_finite_points(b, 1, dim, dim, "translation", diag);
+    return st;
+}
+
+void
+cf__affine_points(const double *A, const double *b, size_t dim,
+                  bool rational, const double *src, size_t count,
+                  size_t stride, double *dst)
+{
+    for (size_t i = 0; i < count; i++) {
+        const double *p = src + i * stride;
+        double *q = dst + i * stride;
+        double w = rational ? p[dim] : 1.0;
+        for (size_t k = 0; k < dim; k++) {
+            double s = 0.0;
+            for (size_t j = 0; j < dim; j++)
+                s += A[k * dim + j] * p[j];
+            q[k] = s + (b != NULL ? b[k] * w : 0.0);
+        }
+        if (rational)
+            q[dim] = w;
+    }
+}

@@ -106,7 +106,7 @@ cf__cubics_exact(const cf_bezier_t *c, cf_cubics_t **out)
         memcpy(r->pts + c->dim, c->pts, c->dim * sizeof *r->pts);
     /* raise to 3: degree 0 is first made a segment (degree 1) */
     from = c->degree == 0 ? 1 : c->degree;
-    cf__elevate_in_place(r->pts, c->dim, from, 3 - from);
+    cf__bp_elevate(r->pts, c->dim, from, 3 - from);
     r->count = 1;
     r->t[0] = 0.0;
     r->t[1] = 1.0;

@@ -29,6 +29,28 @@ format_pair(double x, double y, char *bx, char *by, size_t size)
     }
 }
 
+cf_status_t
+cf__check_knot_order(const double *U, size_t n, const char *what,
+                     cf_diag_t *diag)
+{
+    char b1[64], b2[64];
+    for (size_t i = 0; i < n; i++) {
+        if (!isfinite(U[i]))
+            return cf__error(diag, CF_STATUS_NOT_FINITE, (long)i,
+                             "%s %zu is %g; knots must be finite", what, i,
+                             U[i]);
+    }
+    for (size_t i = 1; i < n; i++) {
+        if (U[i] < U[i - 1]) {
+            format_pair(U[i], U[i - 1], b1, b2, sizeof b1);
+            return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)i,
+                             "%s %zu (%s) is smaller than %s %zu (%s)", what,
+                             i, b1, what, i - 1, b2);
+        }
+    }
+    return CF_STATUS_OK;
+}
+
 /* The degree and the number of points (or parameters) for a curve;
 ** `who` prefixes the message ("bspline", "knots"). */
 static cf_status_t
@@ -51,7 +73,7 @@ cf_knots_validate(int degree, size_t npoints, const double *knots,
                   size_t nknots, cf_diag_t *diag)
 {
     size_t need, m;
-    char b1[64], b2[64];
+    char b1[64];
     cf_status_t st = check_degree_count("bspline", 0, degree, npoints,
                                         "points", diag);
 
@@ -65,20 +87,9 @@ cf_knots_validate(int degree, size_t npoints, const double *knots,
         return cf__error(diag, CF_STATUS_BAD_KNOTS, -1,
                          "bspline: %zu knots given, degree %d with %zu "
                          "points needs %zu", nknots, degree, npoints, need);
-    for (size_t i = 0; i < nknots; i++) {
-        if (!isfinite(knots[i]))
-            return cf__error(diag, CF_STATUS_NOT_FINITE, (long)i,
-                             "knot %zu is %g; knots must be finite", i,
-                             knots[i]);
-    }
-    for (size_t i = 1; i < nknots; i++) {
-        if (knots[i] < knots[i - 1]) {
-            format_pair(knots[i], knots[i - 1], b1, b2, sizeof b1);
-            return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)i,
-                             "knot %zu (%s) is smaller than knot %zu (%s)",
-                             i, b1, i - 1, b2);
-        }
-    }
+    st = cf__check_knot_order(knots, nknots, "knot", diag);
+    if (st != CF_STATUS_OK)
+        return st;
     for (size_t i = 0; i < nknots;) {
         size_t j = i;
         while (j + 1 < nknots && knots[j + 1] == knots[i])
@@ -463,18 +474,10 @@ check_one(int i, int degree, const double *U, size_t nknots, double u,
         return cf__error(diag, CF_STATUS_BAD_KNOTS, i,
                          "basis: N_%d^%d needs knots u_%d..u_%d, %zu given",
                          i, degree, i, i + degree + 1, U ? nknots : 0);
-    for (size_t j = 0; j < nknots; j++) {
-        if (!isfinite(U[j]))
-            return cf__error(diag, CF_STATUS_NOT_FINITE, (long)j,
-                             "knot %zu is %g; knots must be finite", j,
-                             U[j]);
-        if (j > 0 && U[j] < U[j - 1]) {
-            char b1[64], b2[64];
-            format_pair(U[j], U[j - 1], b1, b2, sizeof b1);
-            return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)j,
-                             "knot %zu (%s) is smaller than knot %zu (%s)",
-                             j, b1, j - 1, b2);
-        }
+    {
+        cf_status_t st = cf__check_knot_order(U, nknots, "knot", diag);
+        if (st != CF_STATUS_OK)
+            return st;
     }
     if (!isfinite(u))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,

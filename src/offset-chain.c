@@ -250,13 +250,6 @@ base_cusp_join(cf__driver_t *dr, const cf__osrc_t *s, double t)
     return join_arc(dr, p, from, phi, map_t(dr, t));
 }
 
-static int
-cmp_double(const void *x, const void *y)
-{
-    double a = *(const double *)x, b = *(const double *)y;
-    return (a > b) - (a < b);
-}
-
 static bool
 in_list(const double *v, size_t n, double x)
 {
@@ -311,7 +304,7 @@ cf__driver_piece(cf__driver_t *dr, const cf_bezier_t *c)
     for (size_t i = 0; i < nb; i++)
         splits[ns++] = bc[i];
     splits[ns++] = 1.0;
-    qsort(splits, ns, sizeof(double), cmp_double);
+    qsort(splits, ns, sizeof(double), cf__cmp_double);
     for (size_t i = 0; i + 1 < ns; i++) {
         double a = splits[i], b = splits[i + 1];
         bool is_base = false;

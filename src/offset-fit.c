@@ -867,9 +867,9 @@ tiller_hanson(const cf__osrc_t *s, double a, double b, double *pts)
     if (c->degree != 3 || c->rational)
         return CF_STATUS_INVALID_ARG;
     /* control points of c on [a, b] */
-    cf__split_h(c->pts, 2, 3, b, tmp, NULL);
+    cf__bp_split(c->pts, 2, 3, b, tmp, NULL);
     if (b > 0.0)
-        cf__split_h(tmp, 2, 3, a / b, NULL, seg);
+        cf__bp_split(tmp, 2, 3, a / b, NULL, seg);
     else
         memcpy(seg, tmp, sizeof seg);
     for (int i = 0; i < 4; i++) {

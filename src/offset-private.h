@@ -1,6 +1,5 @@
 /*
 ** Internals shared by the offset files (prefix cf__):
-**   offset-poly.c   1-D Bernstein polynomial arithmetic and root isolation
 **   offset-cusp.c   cusp polynomial, cusps and zeros of c'
 **   offset-fit.c    exact offset sources, Levien and Tiller-Hanson fits,
 **                   error measurement
@@ -15,27 +14,8 @@
 #include <stddef.h>
 
 #include "curvefig/offset.h"
+#include "bpoly-private.h"
 #include "cubics-private.h"
-
-/* ---- 1-D Bernstein polynomials on [0, 1]: coefficients a[0..n] --------- */
-
-double cf__bp_eval(const double *a, int n, double t);
-/* out[m + n + 1] = a * b (out must not alias a or b). */
-void cf__bp_mul(const double *a, int m, const double *b, int n,
-                double *out);
-/* out[m + r + 1]: a raised to degree m + r (out must not alias a). */
-void cf__bp_elevate(const double *a, int m, int r, double *out);
-/* out[m]: the derivative, degree m - 1 (m >= 1). */
-void cf__bp_deriv(const double *a, int m, double *out);
-/* Power basis p(x) = sum p[k] x^k on [0, h] to Bernstein on [0, 1] in the
-** variable s = x / h. */
-void cf__bp_from_power(const double *p, int n, double h, double *out);
-/* The real roots in [0, 1] of a degree-n polynomial, ascending, isolated by
-** subdivision with Descartes' rule of signs and polished by bisection; a
-** cluster narrower than 1e-13 is one root.  Writes at most cap roots and
-** sets *count to the number found (<= cap).  NO_MEMORY only. */
-cf_status_t cf__bp_roots(const double *a, int n, double *roots, size_t cap,
-                         size_t *count);
 
 /* ---- sources: the exact curves that pieces approximate ----------------- */
 

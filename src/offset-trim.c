@@ -307,9 +307,9 @@ append_part(const trim *tr, cf__chain_t *ch, double g0, double g1,
         cf_status_t st;
         if (s1 - s0 <= 1e-12)
             continue;
-        cf__split_h(raw->pts + 8 * i, 2, 3, s1, tmp, NULL);
+        cf__bp_split(raw->pts + 8 * i, 2, 3, s1, tmp, NULL);
         if (s0 > 0.0)
-            cf__split_h(tmp, 2, 3, s0 / s1, NULL, seg);
+            cf__bp_split(tmp, 2, 3, s0 / s1, NULL, seg);
         else
             memcpy(seg, tmp, sizeof seg);
         for (int k = 0; k < 2; k++) {

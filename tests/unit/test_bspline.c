@@ -1503,8 +1503,8 @@ test_create_errors(void **state)
         cf_diag_clear(&d);
         assert_int_equal(cf_bspline_refine(c, X, 2, &l, &d),
                          CF_STATUS_BAD_KNOTS);
-        assert_string_equal(d.msg, "refine: new knot 1 (0.4) is smaller than "
-                            "new knot 0 (0.6)");
+        assert_string_equal(d.msg, "new knot 1 (0.40) is smaller than "
+                            "new knot 0 (0.60)");
         {
             double X3[3] = { 0.5, 0.5, 0.5 };
             cf_diag_clear(&d);

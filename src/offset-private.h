@@ -1,8 +1,8 @@
 /*
 ** Internals shared by the offset files (prefix cf__):
 **   offset-cusp.c   cusp polynomial, cusps and zeros of c'
-**   offset-fit.c    exact offset sources, Levien and Tiller-Hanson fits,
-**                   error measurement
+**   offset-source.c exact offset sources and the error measurement
+**   offset-fit.c    Levien and Tiller-Hanson fits, cusp pieces
 **   offset-trim.c   self-intersections of the raw chain and trimming
 **   offset-chain.c  the chain driver: splits, greedy covers, joins
 **   offset.c        public entry points and the independent measure
@@ -36,8 +36,10 @@ typedef struct cf__osrc {
 void cf__osrc_init_offset(cf__osrc_t *s, const cf_bezier_t *c, double d);
 void cf__osrc_init_arc(cf__osrc_t *s, double cx, double cy, double r,
                        double a0, double sweep);
-/* Point of the source at t. */
-int cf__osrc_point(const cf__osrc_t *s, double t, double *p);
+/* Point at t (side: which limit where c' = 0) and travel direction u (may
+** be NULL).  Returns -1 where the direction is undefined (u = 0). */
+int cf__osrc_point_dir(const cf__osrc_t *s, double t, int side, double *p,
+                       double *u);
 /* Point and derivative with respect to t (for quadrature). */
 int cf__osrc_deriv(const cf__osrc_t *s, double t, double *p, double *dp);
 
@@ -70,6 +72,11 @@ typedef struct cf__fit {
 cf_status_t cf__fit_piece(const cf__osrc_t *s, double a, double b,
                           cf_offset_method_t method, double reject,
                           cf__fit_t *out);
+
+/* Sample counts of the error estimates: quick screening, coarse, fine. */
+#define CF__FIT_K_QUICK 4
+#define CF__FIT_K_COARSE 12
+#define CF__FIT_K_FINE 40
 
 /* Two-sided Hausdorff estimate between the source on [a, b] and the cubic
 ** pts[8], with k samples each side (k >= 4). */

@@ -7,7 +7,18 @@
 #include <cairo.h>
 
 #include "curvefig/figure.h"
-#include "core-private.h"
+#include "curvefig/geometry.h"
+
+/* The core's public allocation and error functions under the names the
+** renderer's files still use (the core's internals are not exported). */
+#define CF__PI 3.14159265358979323846
+#define cf__error cf_diag_set
+#define cf__malloc cf_malloc
+#define cf__calloc cf_calloc
+#define cf__alloc_array cf_alloc_array
+#define cf__realloc_array cf_realloc_array
+#define cf__free cf_free
+#define cf__check_finite_points cf_check_finite_points
 
 #define CF__DEFAULT_FAMILY "Latin Modern Roman,CMU Serif,Noto Serif CJK SC"
 

@@ -168,9 +168,9 @@ __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 /* parameters per block of span searches (random parameters) */
 #define RBLK 32
 
-cf_status_t
-cf__bspline_eval_cubic2(const cf_bspline_t *c, const double *u, size_t n,
-                        double *out, int deriv)
+static cf_status_t
+eval_cubic2(const cf_bspline_t *c, const double *u, size_t n, double *out,
+            int deriv)
 {
     const double *U = c->U, *P = c->P, *R1 = c->rk;
     const double *R2 = R1 + c->nknots, *R3 = R2 + c->nknots;
@@ -230,6 +230,14 @@ cf__bspline_eval_cubic2(const cf_bspline_t *c, const double *u, size_t n,
         i = j;
     }
     return CF_STATUS_OK;
+}
+
+/* Not itself cloned: the ifunc resolver of a clone would be exported. */
+cf_status_t
+cf__bspline_eval_cubic2(const cf_bspline_t *c, const double *u, size_t n,
+                        double *out, int deriv)
+{
+    return eval_cubic2(c, u, n, out, deriv);
 }
 
 /* ---- any derivative, one parameter at a time --------------------------- */
@@ -317,7 +325,7 @@ cf_bspline_eval_many(const cf_bspline_t *c, const double *u, size_t n,
         case 2:
             return eval_many_impl(c, u, n, out, 2, 2, 2, false);
         case 3:
-            return cf__bspline_eval_cubic2(c, u, n, out, 0);
+            return eval_cubic2(c, u, n, out, 0);
         default:
             break;
         }

@@ -58,9 +58,26 @@ CF_API void cf_diag_clear(cf_diag_t *diag);
 
 /*
 ** Allocator hook, shaped like lua_Alloc: realloc(ud, ptr, old_size,
-** new_size); new_size == 0 frees and returns NULL.  The default (and the one
-** restored by cf_set_allocator(NULL)) uses the C library.  Not thread-safe
-** to change while other threads use curvefig.
+** new_size); new_size == 0 frees and returns NULL.
+**
+** Every block remembers the allocator that made it: it is resized and
+** freed by that one, whichever allocator is current when cf_free (or a
+** destroy function) runs.  New blocks come from the current allocator of
+** the calling thread:
+**
+**   - cf_use_allocator(a, &prev) makes a current for this thread only, and
+**     stores the one it replaces in prev; cf_use_allocator(&prev, NULL)
+**     puts that back.  Scopes nest, and callers who each keep their own
+**     allocator (a sandboxed script, a test) coexist in one process.
+**     a == NULL (or a->realloc == NULL) leaves the thread without one of
+**     its own.
+**   - A thread without one uses the process default: the C library, or
+**     what cf_set_allocator installed (cf_set_allocator(NULL) restores the
+**     C library).  Not thread-safe to change while other threads allocate
+**     through the default.
+**
+** cf_get_allocator gives the calling thread's current allocator.  An
+** allocator must stay usable as long as blocks made by it are alive.
 */
 typedef struct cf_allocator {
     void *(*realloc)(void *ud, void *ptr, size_t old_size, size_t new_size);
@@ -69,6 +86,8 @@ typedef struct cf_allocator {
 
 CF_API void cf_set_allocator(const cf_allocator_t *allocator);
 CF_API void cf_get_allocator(cf_allocator_t *allocator);
+CF_API void cf_use_allocator(const cf_allocator_t *allocator,
+                             cf_allocator_t *previous);
 
 /* Memory the library hands out as plain arrays (documented per function)
 ** is released with cf_free. cf_free(NULL) is harmless. */

@@ -635,7 +635,7 @@ check_derivative(cf_bezier_t *d, cf_diag_t *diag)
             if (!isfinite(v)) {
                 cf__free(d);
                 return cf__error(diag, CF_STATUS_NOT_FINITE, i,
-                                 "derivative: control point %d overflows "
+                                 "control point %d overflows "
                                  "(coordinate %zu is %g)", i, k + 1, v);
             }
         }

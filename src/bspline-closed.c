@@ -18,14 +18,14 @@ cf_bspline_create_closed(size_t dim, int degree, const double *points,
         *out = NULL;
     if (degree < 1 || degree > CF_BSPLINE_MAX_DEGREE)
         return cf__error(diag, CF_STATUS_BAD_DEGREE, -1,
-                         "bspline: closed curves need a degree in 1..%d, "
+                         "closed curves need a degree in 1..%d, "
                          "not %d", CF_BSPLINE_MAX_DEGREE, degree);
     if (points == NULL || dim < 1 || dim > CF__BSPLINE_MAX_COUNT)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "bspline: points are NULL or dimension is 0");
+                         "points are NULL or dimension is 0");
     if (count < (size_t)degree + 1 || count > CF__BSPLINE_MAX_COUNT)
         return cf__error(diag, CF_STATUS_TOO_FEW_POINTS, -1,
-                         "bspline: a closed curve of degree %d needs at "
+                         "a closed curve of degree %d needs at "
                          "least %d points, %zu given", degree, degree + 1,
                          count);
     p = (size_t)degree;
@@ -37,7 +37,7 @@ cf_bspline_create_closed(size_t dim, int degree, const double *points,
         W = cf__alloc_array(total, sizeof *W);
     if (U == NULL || P == NULL || (weights != NULL && W == NULL)) {
         st = cf__error(diag, CF_STATUS_NO_MEMORY, -1,
-                       "bspline: out of memory");
+                       "out of memory");
         goto done;
     }
     for (size_t i = 0; i < nk; i++)
@@ -67,7 +67,7 @@ cf_bspline_create_coons(size_t dim, const double *points, size_t count,
         *out = NULL;
     if (points == NULL || dim < 1 || dim > CF__BSPLINE_MAX_COUNT)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "coons: points are NULL or dimension is 0");
+                         "points are NULL or dimension is 0");
     switch (ends) {
     case CF_COONS_PLAIN:
         need = 4;
@@ -83,17 +83,17 @@ cf_bspline_create_coons(size_t dim, const double *points, size_t count,
         break;
     default:
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "coons: unknown end treatment %d", (int)ends);
+                         "unknown end treatment %d", (int)ends);
     }
     if (count < need || count > CF__BSPLINE_MAX_COUNT)
         return cf__error(diag, CF_STATUS_TOO_FEW_POINTS, -1,
-                         "coons: %zu points given, this end treatment "
+                         "%zu points given, this end treatment "
                          "needs at least %zu", count, need);
     nk = total + 4;
     U = cf__alloc_array(nk, sizeof *U);
     P = cf__alloc_array(total, dim * sizeof *P);
     if (U == NULL || P == NULL) {
-        st = cf__error(diag, CF_STATUS_NO_MEMORY, -1, "coons: out of memory");
+        st = cf__error(diag, CF_STATUS_NO_MEMORY, -1, "out of memory");
         goto done;
     }
     for (size_t i = 0; i < nk; i++)

@@ -108,7 +108,7 @@ cf_bspline_eval_deriv_many(const cf_bspline_t *c, int k, const double *u,
     }
     if (c->rational && k > CF__BSPLINE_MAX_RATIONAL_DERIV)
         return cf__error(NULL, CF_STATUS_INVALID_ARG, -1,
-                         "bspline: derivative order %d of a NURBS is above "
+                         "derivative order %d of a NURBS is above "
                          "%d", k, CF__BSPLINE_MAX_RATIONAL_DERIV);
     return cf__bspline_derivs_general(c, k, rk, u, n, out);
 }

@@ -75,13 +75,13 @@ insert_check(const cf_bspline_t *c, double u, int r, size_t *k, int *s,
         return st;
     if (r < 1)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "insert: the knot must be inserted at least once, "
+                         "the knot must be inserted at least once, "
                          "not %d times", r);
     *k = cf__knots_last_le(c->U, c->nknots, u);
     *s = cf__knots_mult(c->U, c->nknots, u);
     if (*s + r > c->p + 1)
         return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)*k,
-                         "insert: knot %g has multiplicity %d; inserting it "
+                         "knot %g has multiplicity %d; inserting it "
                          "%d more times exceeds degree + 1 = %d", u, *s, r,
                          c->p + 1);
     return CF_STATUS_OK;
@@ -166,7 +166,7 @@ cf_bspline_refine(const cf_bspline_t *c, const double *X, size_t nx,
         return cf_bspline_copy(c, out, diag);
     if (X == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "refine: knots are NULL");
+                         "knots are NULL");
     for (size_t j = 0; j < nx; j++) {
         st = cf__bspline_check_param(c, X[j], diag);
         if (st != CF_STATUS_OK)
@@ -189,7 +189,7 @@ cf_bspline_refine(const cf_bspline_t *c, const double *X, size_t nx,
                 s++;
             if (s + (e - j + 1) > (size_t)c->p + 1)
                 return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)j,
-                                 "refine: knot %g would get multiplicity "
+                                 "knot %g would get multiplicity "
                                  "%zu; degree %d allows at most %d", X[j],
                                  s + (e - j + 1), c->p, c->p + 1);
             j = e + 1;
@@ -197,7 +197,7 @@ cf_bspline_refine(const cf_bspline_t *c, const double *X, size_t nx,
     }
     if (nx > ((size_t)1 << 30))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "refine: too many knots");
+                         "too many knots");
     q = cf__bspline_alloc(c->dim, c->rational, c->p, c->count + nx);
     if (q == NULL)
         return cf__bspline_no_memory(diag);
@@ -254,17 +254,17 @@ cf_bspline_remove_knot(const cf_bspline_t *c, double u, int num, double tol,
         return st;
     if (num < 1)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "remove: count %d must be at least 1", num);
+                         "count %d must be at least 1", num);
     if (!isfinite(tol) || tol < 0.0)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "remove: tolerance %g must be finite and >= 0", tol);
+                         "tolerance %g must be finite and >= 0", tol);
     if (!isfinite(u))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "remove: knot is %g", u);
+                         "knot is %g", u);
     s = cf__knots_mult(c->U, c->nknots, u);
     if (s == 0 || !(u > c->a && u < c->b))
         return cf__error(diag, CF_STATUS_BAD_KNOTS, -1,
-                         "remove: %g is not an interior knot of the domain "
+                         "%g is not an interior knot of the domain "
                          "[%g, %g]", u, c->a, c->b);
     p = (size_t)c->p;
     hd = c->hdim;

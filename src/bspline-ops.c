@@ -78,13 +78,13 @@ cf_bspline_split(const cf_bspline_t *c, double u, cf_bspline_t **left,
         *right = NULL;
     if (c == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "split: NULL curve");
+                         "NULL curve");
     st = cf__bspline_check_param(c, u, diag);
     if (st != CF_STATUS_OK)
         return st;
     if (!(u > c->a && u < c->b))
         return cf__error(diag, CF_STATUS_DOMAIN, -1,
-                         "split: %g must lie strictly inside the domain "
+                         "%g must lie strictly inside the domain "
                          "[%g, %g]", u, c->a, c->b);
     return cut(c, u, left, right, diag);
 }
@@ -104,7 +104,7 @@ cf_bspline_segment(const cf_bspline_t *c, double a, double b,
         return st;
     if (!(a < b))
         return cf__error(diag, CF_STATUS_DOMAIN, -1,
-                         "segment: [%g, %g] is empty", a, b);
+                         "[%g, %g] is empty", a, b);
     st = cut(c, a, NULL, &r, diag);
     if (st != CF_STATUS_OK)
         return st;
@@ -221,7 +221,7 @@ cf_bspline_bezier_points(const cf_bspline_t *c, double **hpoints,
         *count = 0;
     if (c == NULL || hpoints == NULL || count == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "bspline: NULL argument");
+                         "NULL argument");
     st = clamped(c, &w, &owned, diag);
     if (st != CF_STATUS_OK)
         return st;
@@ -256,7 +256,7 @@ cf_bspline_to_beziers(const cf_bspline_t *c, cf_bezier_list_t **out,
         *out = NULL;
     if (c == NULL || out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "bspline: NULL argument");
+                         "NULL argument");
     st = cf_bspline_bezier_points(c, &Q, &B, &nseg, diag);
     if (st != CF_STATUS_OK)
         return st;
@@ -299,7 +299,7 @@ cf_bspline_elevate(const cf_bspline_t *c, int t, cf_bspline_t **out,
         return st;
     if (t < 0 || c->p + t > CF_BSPLINE_MAX_DEGREE)
         return cf__error(diag, CF_STATUS_BAD_DEGREE, -1,
-                         "elevate: degree %d + %d is outside 0..%d", c->p, t,
+                         "degree %d + %d is outside 0..%d", c->p, t,
                          CF_BSPLINE_MAX_DEGREE);
     if (t == 0)
         return cf_bspline_copy(c, out, diag);
@@ -446,7 +446,7 @@ derivative_rational(const cf_bspline_t *c, cf_bspline_t **out,
     deg = (size_t)cf_bezier_degree(der[0]);
     if (deg > CF_BSPLINE_MAX_DEGREE) {
         st = cf__error(diag, CF_STATUS_BAD_DEGREE, -1,
-                       "derivative: degree %zu is above %d", deg,
+                       "degree %zu is above %d", deg,
                        CF_BSPLINE_MAX_DEGREE);
         goto done;
     }
@@ -514,7 +514,7 @@ cf_bspline_derivative(const cf_bspline_t *c, int k, cf_bspline_t **out,
         return st;
     if (k < 0)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "derivative: order %d is negative", k);
+                         "order %d is negative", k);
     st = cf_bspline_copy(c, &cur, diag);
     for (int i = 0; i < k && st == CF_STATUS_OK; i++) {
         cf_bspline_t *nxt = NULL;
@@ -576,7 +576,7 @@ cf_bspline_reverse(const cf_bspline_t *c, cf_bspline_t **out,
             q->U[i] < q->U[i - 1]) {
             cf_bspline_destroy(q);
             return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)(m - i),
-                             "reverse: knots %zu and %zu (%.17g, %.17g) are "
+                             "knots %zu and %zu (%.17g, %.17g) are "
                              "too close to be reversed exactly", m - i,
                              m - i + 1, c->U[m - i], c->U[m - i + 1]);
         }

@@ -186,10 +186,10 @@ cf__bspline_check_param(const cf_bspline_t *c, double u, cf_diag_t *diag)
 {
     if (!isfinite(u))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "bspline: parameter is %g", u);
+                         "parameter is %g", u);
     if (u < c->a || u > c->b)
         return cf__error(diag, CF_STATUS_DOMAIN, -1,
-                         "bspline: parameter %.17g is outside the domain "
+                         "parameter %.17g is outside the domain "
                          "[%.17g, %.17g]", u, c->a, c->b);
     return CF_STATUS_OK;
 }
@@ -197,7 +197,7 @@ cf__bspline_check_param(const cf_bspline_t *c, double u, cf_diag_t *diag)
 cf_status_t
 cf__bspline_no_memory(cf_diag_t *diag)
 {
-    return cf__error(diag, CF_STATUS_NO_MEMORY, -1, "bspline: out of memory");
+    return cf__error(diag, CF_STATUS_NO_MEMORY, -1, "out of memory");
 }
 
 cf_status_t
@@ -207,7 +207,7 @@ cf__bspline_check_in(const cf_bspline_t *c, cf_bspline_t **out, cf_diag_t *diag)
         *out = NULL;
     if (c == NULL || out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "bspline: NULL argument");
+                         "NULL argument");
     return CF_STATUS_OK;
 }
 
@@ -220,17 +220,17 @@ check_common(size_t dim, int degree, const double *knots, size_t nknots,
 {
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "bspline: output pointer is NULL");
+                         "output pointer is NULL");
     *out = NULL;
     if (dim < 1)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "bspline: dimension must be at least 1");
+                         "dimension must be at least 1");
     if (pts == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "bspline: points are NULL");
+                         "points are NULL");
     if (count > CF__BSPLINE_MAX_COUNT || dim > CF__BSPLINE_MAX_COUNT)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "bspline: %zu points of dimension %zu are too many",
+                         "%zu points of dimension %zu are too many",
                          count, dim);
     return cf_knots_validate(degree, count, knots, nknots, diag);
 }
@@ -253,7 +253,7 @@ cf_bspline_create(size_t dim, int degree, const double *knots, size_t nknots,
     c = cf__bspline_alloc(dim, weights != NULL, degree, count);
     if (c == NULL)
         return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
-                         "bspline: out of memory");
+                         "out of memory");
     memcpy(c->U, knots, nknots * sizeof *knots);
     for (size_t i = 0; i < count; i++) {
         double w = weights != NULL ? weights[i] : 1.0;
@@ -292,7 +292,7 @@ cf_bspline_create_homogeneous(size_t dim, int degree, const double *knots,
     c = cf__bspline_alloc(dim, true, degree, count);
     if (c == NULL)
         return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
-                         "bspline: out of memory");
+                         "out of memory");
     memcpy(c->U, knots, nknots * sizeof *knots);
     memcpy(c->P, hpoints, count * (dim + 1) * sizeof *hpoints);
     cf__bspline_finish(c);
@@ -312,17 +312,17 @@ cf_bspline_create_clamped(size_t dim, int degree, const double *points,
         *out = NULL;
     if (degree < 0 || degree > CF_BSPLINE_MAX_DEGREE)
         return cf__error(diag, CF_STATUS_BAD_DEGREE, -1,
-                         "bspline: degree %d is outside 0..%d", degree,
+                         "degree %d is outside 0..%d", degree,
                          CF_BSPLINE_MAX_DEGREE);
     if (count < (size_t)degree + 1 || count > CF__BSPLINE_MAX_COUNT)
         return cf__error(diag, CF_STATUS_TOO_FEW_POINTS, -1,
-                         "bspline: degree %d needs at least %d points, %zu "
+                         "degree %d needs at least %d points, %zu "
                          "given", degree, degree + 1, count);
     nk = count + (size_t)degree + 1;
     U = cf__alloc_array(nk, sizeof *U);
     if (U == NULL)
         return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
-                         "bspline: out of memory");
+                         "out of memory");
     st = cf_knots_clamped_uniform(degree, count, 0.0, 1.0, U, diag);
     if (st == CF_STATUS_OK)
         st = cf_bspline_create(dim, degree, U, nk, points, count, weights,
@@ -339,13 +339,13 @@ cf_bspline_copy(const cf_bspline_t *c, cf_bspline_t **out, cf_diag_t *diag)
         if (out != NULL)
             *out = NULL;
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "bspline: copy of NULL");
+                         "copy of NULL");
     }
     r = cf__bspline_alloc(c->dim, c->rational, c->p, c->count);
     if (r == NULL) {
         *out = NULL;
         return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
-                         "bspline: out of memory");
+                         "out of memory");
     }
     memcpy(r->U, c->U, c->nknots * sizeof *c->U);
     memcpy(r->P, c->P, c->count * c->hdim * sizeof *c->P);
@@ -452,7 +452,7 @@ cf_bspline_support(const cf_bspline_t *c, size_t i, double *lo, double *hi)
         return cf__error(NULL, CF_STATUS_INVALID_ARG, -1, "NULL curve");
     if (i >= c->count)
         return cf__error(NULL, CF_STATUS_INVALID_ARG, (long)i,
-                         "bspline: point %zu does not exist (%zu points)", i,
+                         "point %zu does not exist (%zu points)", i,
                          c->count);
     if (lo != NULL)
         *lo = c->U[i];
@@ -491,10 +491,10 @@ cf_bspline_move_point(const cf_bspline_t *c, size_t i, const double *v,
         *out = NULL;
     if (c == NULL || v == NULL || out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "bspline: NULL argument");
+                         "NULL argument");
     if (i >= c->count)
         return cf__error(diag, CF_STATUS_INVALID_ARG, (long)i,
-                         "bspline: point %zu does not exist (%zu points)", i,
+                         "point %zu does not exist (%zu points)", i,
                          c->count);
     st = cf__check_finite_points(v, 1, c->dim, c->dim, "vector", diag);
     if (st != CF_STATUS_OK)

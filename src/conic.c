@@ -332,16 +332,16 @@ cf_nurbs_arc(size_t dim, const double *O, const double *X, const double *Y,
     if (out == NULL || O == NULL || X == NULL || Y == NULL || dim < 2
         || dim > CF__BSPLINE_MAX_COUNT)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "arc: NULL argument or dimension below 2");
+                         "NULL argument or dimension below 2");
     if (!isfinite(r) || !isfinite(a0) || !isfinite(a1))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "arc: radius or angles are not finite");
+                         "radius or angles are not finite");
     if (!(r > 0.0))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "arc: radius %g must be positive", r);
+                         "radius %g must be positive", r);
     if (!(sweep > 0.0) || sweep > 2.0 * CF__PI * (1.0 + 1e-15))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "arc: sweep %g must be in (0, 2 pi]", sweep);
+                         "sweep %g must be in (0, 2 pi]", sweep);
     /* one quadratic rational piece per quarter turn or less */
     narcs = (size_t)ceil(sweep / (0.5 * CF__PI) - 1e-12);
     if (narcs < 1)
@@ -355,7 +355,7 @@ cf_nurbs_arc(size_t dim, const double *O, const double *X, const double *Y,
     U = cf__alloc_array(nk, sizeof *U);
     H = cf__alloc_array(count, (dim + 1) * sizeof *H);
     if (U == NULL || H == NULL) {
-        st = cf__error(diag, CF_STATUS_NO_MEMORY, -1, "arc: out of memory");
+        st = cf__error(diag, CF_STATUS_NO_MEMORY, -1, "out of memory");
         goto done;
     }
     for (size_t i = 0; i < 3; i++) {
@@ -399,13 +399,13 @@ cf_nurbs_circle(const double *centre, double r, cf_bspline_t **out,
         *out = NULL;
     if (centre == NULL || out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "circle: NULL argument");
+                         "NULL argument");
     if (!isfinite(r) || !isfinite(centre[0]) || !isfinite(centre[1]))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "circle: centre or radius is not finite");
+                         "centre or radius is not finite");
     if (!(r > 0.0))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "circle: radius %g must be positive", r);
+                         "radius %g must be positive", r);
     for (int i = 0; i < 9; i++) {
         P[2 * i] = centre[0] + r * dx[i];
         P[2 * i + 1] = centre[1] + r * dy[i];

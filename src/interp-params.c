@@ -54,7 +54,7 @@ cf_interp_method_from_string(const char *name, cf_interp_method_t *out,
 {
     if (name == NULL || out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "interpolation method: NULL argument");
+                         "NULL argument");
     for (size_t i = 0; i < NMETHODS; i++) {
         if (strcmp(name, method_names[i]) == 0) {
             *out = (cf_interp_method_t)i;
@@ -72,7 +72,7 @@ cf_param_from_string(const char *name, cf_param_t *out, cf_diag_t *diag)
 {
     if (name == NULL || out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "parametrisation: NULL argument");
+                         "NULL argument");
     for (size_t i = 0; i < NPARAMS; i++) {
         if (strcmp(name, param_names[i]) == 0) {
             *out = (cf_param_t)i;
@@ -125,10 +125,10 @@ cf_interp_parameters(size_t dim, const double *points, size_t count,
     double e, total = 0.0;
     if (points == NULL || out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "parameters: points and out must not be NULL");
+                         "points and out must not be NULL");
     if (dim < 1)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "parameters: dimension must be at least 1, got 0");
+                         "dimension must be at least 1, got 0");
     if (count < 2)
         return cf__error(diag, CF_STATUS_TOO_FEW_POINTS, (long)count,
                          "parameters need at least 2 points, got %zu",

@@ -138,7 +138,7 @@ cf_interpolate(size_t dim, const double *points, size_t count,
     cf_status_t st;
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "interpolate: out must not be NULL");
+                         "out must not be NULL");
     *out = NULL;
     if (opt != NULL)
         local = *opt;
@@ -148,10 +148,10 @@ cf_interpolate(size_t dim, const double *points, size_t count,
         local.degree = 3;
     if (dim < 1)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "interpolate: dimension must be at least 1, got 0");
+                         "dimension must be at least 1, got 0");
     if (points == NULL && count > 0)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "interpolate: points must not be NULL");
+                         "points must not be NULL");
     st = check_options(dim, o, diag);
     if (st != CF_STATUS_OK)
         return st;
@@ -260,11 +260,11 @@ cf_ferguson_cubic(size_t dim, const double *p0, const double *p1,
     cf_status_t st;
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "ferguson: out must not be NULL");
+                         "out must not be NULL");
     *out = NULL;
     if (dim < 1)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "ferguson: dimension must be at least 1, got 0");
+                         "dimension must be at least 1, got 0");
     if ((st = check_vec(p0, dim, "P0", diag)) != CF_STATUS_OK ||
         (st = check_vec(p1, dim, "P1", diag)) != CF_STATUS_OK ||
         (st = check_vec(t0, dim, "tangent T0", diag)) != CF_STATUS_OK ||
@@ -287,11 +287,11 @@ cf_ferguson_chain(size_t dim, const double *points, const double *tangents,
     cf_status_t st;
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "ferguson chain: out must not be NULL");
+                         "out must not be NULL");
     *out = NULL;
     if (dim < 1 || points == NULL || tangents == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "ferguson chain: needs dim >= 1, points and "
+                         "needs dim >= 1, points and "
                          "tangents");
     if (count < 2)
         return cf__error(diag, CF_STATUS_TOO_FEW_POINTS, (long)count,
@@ -351,11 +351,11 @@ cf_coons_cubic(size_t dim, const double *p4, cf_bezier_t **out,
     cf_status_t st;
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "coons: out must not be NULL");
+                         "out must not be NULL");
     *out = NULL;
     if (dim < 1 || p4 == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "coons: needs dim >= 1 and four points");
+                         "needs dim >= 1 and four points");
     st = cf__check_finite_points(p4, 4, dim, dim, "point", diag);
     if (st != CF_STATUS_OK)
         return st;
@@ -394,14 +394,14 @@ cf_coons_chain(size_t dim, const double *points, size_t count,
     cf_status_t st;
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "coons chain: out must not be NULL");
+                         "out must not be NULL");
     *out = NULL;
     if (dim < 1 || points == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "coons chain: needs dim >= 1 and points");
+                         "needs dim >= 1 and points");
     if ((unsigned)ends > CF_COONS_CLOSED)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "coons chain: unknown end treatment %d", (int)ends);
+                         "unknown end treatment %d", (int)ends);
     if (count < need[ends])
         return cf__error(diag, CF_STATUS_TOO_FEW_POINTS, (long)count,
                          "%s Coons B-spline needs at least %zu points, got "

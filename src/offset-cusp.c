@@ -354,7 +354,7 @@ cf_offset_cusps(const cf_bezier_t *c, double d, double *ts, size_t cap,
         *count = 0;
     if (c == NULL || count == NULL || (ts == NULL && cap > 0))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "offset cusps: curve, count or ts is NULL");
+                         "curve, count or ts is NULL");
     if (cf_bezier_dim(c) != 2)
         return cf__error(diag, CF_STATUS_DIM_MISMATCH, -1,
                          "offsets are planar; the curve has dim %zu",
@@ -364,7 +364,7 @@ cf_offset_cusps(const cf_bezier_t *c, double d, double *ts, size_t cap,
                          "offset distance %g is not finite", d);
     st = cf__offset_cusps_alloc(c, d, &all, &n);
     if (st != CF_STATUS_OK)
-        return cf__error(diag, st, -1, "offset cusps: out of memory");
+        return cf__error(diag, st, -1, "out of memory");
     for (size_t i = 0; i < n && i < cap; i++)
         ts[i] = all[i];
     *count = n;

@@ -116,7 +116,7 @@ offset_pieces(const cf_bezier_t *const *pieces, size_t n, const double *t0,
     for (size_t i = 0; i < n; i++) {
         if (pieces[i] == NULL)
             return cf__error(diag, CF_STATUS_INVALID_ARG, (long)i,
-                             "offset: piece %zu is NULL", i);
+                             "piece %zu is NULL", i);
         if (pieces[i]->dim != 2)
             return cf__error(diag, CF_STATUS_DIM_MISMATCH, (long)i,
                              "offsets are planar; piece %zu has dim %zu", i,
@@ -130,7 +130,7 @@ offset_pieces(const cf_bezier_t *const *pieces, size_t n, const double *t0,
                              pieces[i]->degree);
         if (cf__deriv_scale(pieces[i]) == 0.0 && d != 0.0)
             return cf__error(diag, CF_STATUS_DEGENERATE, (long)i,
-                             "offset: piece %zu is a single point; its "
+                             "piece %zu is a single point; its "
                              "normal is undefined", i);
     }
     if (cf__driver_init(&dr, opt.tolerance, opt.method, d) != CF_STATUS_OK)
@@ -223,7 +223,7 @@ cf_bezier_offset(const cf_bezier_t *c, double d,
 {
     if (c == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "offset: the curve is NULL");
+                         "the curve is NULL");
     return offset_pieces(&c, 1, NULL, NULL, d, opt, raw, trimmed, rep, diag);
 }
 
@@ -235,7 +235,7 @@ cf_bezier_list_offset(const cf_bezier_list_t *list, double d,
 {
     if (list == NULL || list->count == 0 || list->items == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "offset: the list of pieces is NULL or empty");
+                         "the list of pieces is NULL or empty");
     return offset_pieces((const cf_bezier_t *const *)list->items,
                          list->count, list->t0, list->t1, d, opt, raw,
                          trimmed, rep, diag);
@@ -255,7 +255,7 @@ cf_bspline_offset(const cf_bspline_t *s, double d,
         *trimmed = NULL;
     if (s == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "offset: the B-spline is NULL");
+                         "the B-spline is NULL");
     st = cf_bspline_to_beziers(s, &list, diag);
     if (st != CF_STATUS_OK)
         return st;
@@ -292,10 +292,10 @@ cf_offset_measure(const cf_bezier_t *c, double d, const cf_cubics_t *approx,
     cf_status_t st = check_curve(c);
     if (st != CF_STATUS_OK || approx == NULL || error == NULL)
         return cf__error(diag, st != CF_STATUS_OK ? st : CF_STATUS_INVALID_ARG,
-                         -1, "offset measure: bad curve or NULL argument");
+                         -1, "bad curve or NULL argument");
     if (approx->dim != 2 || samples < 16)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "offset measure: chain dim %zu, samples %zu "
+                         "chain dim %zu, samples %zu "
                          "(need 2 and >= 16)", approx->dim, samples);
     fine = 4 * samples;
     ex = cf__alloc_array(2 * (fine + 1), sizeof(double));

@@ -278,7 +278,7 @@ test_validate_messages(void **state)
 
     cf_diag_clear(&d);
     assert_msg(cf_knots_validate(2, 8, good, 10, &d), CF_STATUS_BAD_KNOTS, &d,
-               "bspline: 10 knots given, degree 2 with 8 points needs 11");
+               "10 knots given, degree 2 with 8 points needs 11");
 
     memcpy(U, good, sizeof U);
     U[4] = 0.3;
@@ -316,7 +316,7 @@ test_validate_messages(void **state)
         ** points on z: multiplicity rule first */
         assert_msg(cf_knots_validate(3, 3, e, 7, &d),
                    CF_STATUS_TOO_FEW_POINTS, &d,
-                   "bspline: degree 3 needs at least 4 points, 3 given");
+                   "degree 3 needs at least 4 points, 3 given");
         cf_diag_clear(&d);
         assert_msg(cf_knots_validate(1, 4, z, 6, &d), CF_STATUS_BAD_KNOTS,
                    &d, "knot 1 (0.5) has multiplicity 4; degree 1 allows at "
@@ -331,10 +331,10 @@ test_validate_messages(void **state)
     }
     cf_diag_clear(&d);
     assert_msg(cf_knots_validate(-1, 8, good, 11, &d), CF_STATUS_BAD_DEGREE,
-               &d, "bspline: degree -1 is outside 0..32");
+               &d, "degree -1 is outside 0..32");
     cf_diag_clear(&d);
     assert_msg(cf_knots_validate(2, 8, NULL, 11, &d), CF_STATUS_INVALID_ARG,
-               &d, "bspline: knots are NULL");
+               &d, "knots are NULL");
     /* an interior knot of multiplicity p + 1 is allowed (the curve splits) */
     {
         double s[] = { 0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1 };
@@ -381,7 +381,7 @@ test_generators(void **state)
     cf_diag_clear(&d);
     assert_int_equal(cf_knots_uniform(2, 5, 1.0, 1.0, U, &d),
                      CF_STATUS_INVALID_ARG);
-    assert_string_equal(d.msg, "knots: interval [1, 1] is empty");
+    assert_string_equal(d.msg, "interval [1, 1] is empty");
     assert_int_equal(cf_knots_clamped_uniform(3, 2, 0, 1, U, NULL),
                      CF_STATUS_TOO_FEW_POINTS);
     assert_int_equal(cf_knots_clamped_averaged(0, 6, par, U, NULL),
@@ -435,7 +435,7 @@ test_basis_errors(void **state)
     cf_diag_clear(&d);
     assert_int_equal(cf_basis_one(1, 3, U, 5, 1.0, &v, &d),
                      CF_STATUS_BAD_KNOTS);
-    assert_string_equal(d.msg, "basis: N_1^3 needs knots u_1..u_5, 5 given");
+    assert_string_equal(d.msg, "N_1^3 needs knots u_1..u_5, 5 given");
     cf_diag_clear(&d);
     assert_int_equal(cf_basis_one(0, 3, B, 5, 1.0, &v, &d),
                      CF_STATUS_BAD_KNOTS);
@@ -453,12 +453,12 @@ test_basis_errors(void **state)
     assert_int_equal(cf_basis_funs(3, U, 5, 1.0, NULL, N, &d),
                      CF_STATUS_BAD_KNOTS);
     assert_string_equal(d.msg,
-                        "basis: degree 3 needs at least 8 knots, 5 given");
+                        "degree 3 needs at least 8 knots, 5 given");
     cf_diag_clear(&d);
     assert_int_equal(cf_basis_funs(1, U, 5, 0.5, NULL, N, &d),
                      CF_STATUS_DOMAIN);
     assert_string_equal(d.msg,
-                        "basis: parameter 0.5 is outside the domain [1, 6]");
+                        "parameter 0.5 is outside the domain [1, 6]");
     assert_int_equal(cf_basis_funs(1, U, 5, INFINITY, NULL, N, NULL),
                      CF_STATUS_NOT_FINITE);
     assert_int_equal(cf_basis_funs(1, U, 5, 2.0, NULL, NULL, NULL),

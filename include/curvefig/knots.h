@@ -152,6 +152,23 @@ CF_API cf_status_t cf_basis_one(int i, int degree, const double *knots,
                                 size_t nknots, double u, double *value,
                                 cf_diag_t *diag);
 
+/*
+** One basis function over the whole knot vector, as a curve to draw: *out
+** is a 1-D B-spline of degree p whose domain is [u_0, u_{m-1}] (the first
+** and last of the nknots = m knots) and whose value there is N_i^p(u) of
+** the given knots, with the conventions of cf_basis_one (0 outside
+** [u_i, u_{i+p+1}), the left limit at u_{m-1}).  The knots are padded with
+** p knots on either side at spacing u_{m-1} - u_0, and every coefficient
+** is 0 except that of N_i^p, which is 1.  cf_bspline_to_beziers gives its
+** polynomial pieces.  Needs 0 <= i, i + p + 2 <= m, knots finite and
+** non-decreasing with u_{m-1} > u_0, no knot of multiplicity above p + 1
+** (BAD_KNOTS, as for a curve).  Destroy with cf_bspline_destroy.
+*/
+typedef struct cf_bspline cf_bspline_t;
+CF_API cf_status_t cf_basis_one_spline(int i, int degree,
+                                       const double *knots, size_t nknots,
+                                       cf_bspline_t **out, cf_diag_t *diag);
+
 /* Derivatives of one basis function: out[d] = d^d/du^d N_i^p(u),
 ** d = 0..nder (0 for d > p); the same conventions as cf_basis_one
 ** (one-sided: the derivative of the polynomial piece that owns u). */

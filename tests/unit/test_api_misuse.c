@@ -174,6 +174,14 @@ test_knots(void **state)
     BAD(cf_basis_one_ders(0, 2, U7, 7, 0.5, -1, out, NULL));
     BAD(cf_basis_one_ders(0, 2, NULL, 7, 0.5, 1, out, NULL));
     BAD(cf_basis_one_ders(0, 2, U7, 7, 0.5, 1, NULL, NULL));
+    {
+        cf_bspline_t *bs = NULL;
+        BAD(cf_basis_one_spline(0, 2, NULL, 7, &bs, NULL));
+        BAD(cf_basis_one_spline(0, 2, U7, 7, NULL, NULL));
+        BAD(cf_basis_one_spline(5, 2, U7, 7, &bs, NULL));
+        BAD(cf_basis_one_spline(0, 40, U7, 7, &bs, NULL));
+        assert_null(bs);
+    }
 }
 
 static void

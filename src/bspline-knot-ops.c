@@ -291,7 +291,7 @@ cf_bspline_remove_knot(const cf_bspline_t *c, double u, int num, double tol,
     /* temp[0 .. last + 1 - off]: last + 1 - off = p - s + 2 + 2t with
     ** t < num <= s, so at most p + s <= 2p + 1 (s = p + 1, a knot where
     ** the curve may jump, removed p + 1 times).  The NURBS Book sizes it
-    ** 2p + 1, which is one short in that case (found by the fuzzer). */
+    ** 2p + 1, which is one short in that case. */
     temp = cf__alloc_array(2 * p + 2, hd * sizeof *temp);
     if (Pw == NULL || temp == NULL) {
         cf__free(Pw);
@@ -337,16 +337,12 @@ cf_bspline_remove_knot(const cf_bspline_t *c, double u, int num, double tol,
                        hd) <= TOL;
         } else {
             double ai = (u - c->U[i]) / (c->U[i + (long)p + 1 + t] - c->U[i]);
-            double x[CF_BSPLINE_MAX_DEGREE + 2];
-            double *tmpx = hd <= CF_BSPLINE_MAX_DEGREE + 2 ? x : NULL;
             double dd = 0.0;
             for (size_t d = 0; d < hd; d++) {
                 double v = ai * temp[(ii + t + 1) * (long)hd + (long)d]
                            + (1.0 - ai) * temp[(ii - 1) * (long)hd + (long)d];
                 double e = Pw[i * (long)hd + (long)d] - v;
                 dd += e * e;
-                if (tmpx != NULL)
-                    tmpx[d] = v;
             }
             ok = sqrt(dd) <= TOL;
         }

@@ -487,8 +487,7 @@ done:
 /* The points of a computed curve are finite: differences of huge
 ** coordinates, or quotients by tiny knot spans (p / (u_{i+p+1} - u_{i+1})
 ** with spans near 1e-320), overflow to inf, and an affine map with huge
-** entries can too.  Such a curve is refused rather than returned (found by
-** the bad-input corpus). */
+** entries can too.  Such a curve is refused rather than returned. */
 static cf_status_t
 check_overflow(const cf_bspline_t *q, const char *what, cf_diag_t *diag)
 {
@@ -554,7 +553,7 @@ cf_bspline_reverse(const cf_bspline_t *c, cf_bspline_t **out,
     ** computed knots stay non-decreasing; the ends are then set exactly
     ** (knots equal to u_m become u_0 and vice versa), and everything else is
     ** kept inside [u_0, u_m]: forcing only u'_0 and u'_m could leave
-    ** u'_1 < u'_0 by one ulp (found by the fuzzer). */
+    ** u'_1 < u'_0 by one ulp. */
     for (size_t i = 0; i <= m; i++) {
         double u = c->U[m - i];
         if (u == c->U[m])
@@ -566,7 +565,7 @@ cf_bspline_reverse(const cf_bspline_t *c, cf_bspline_t **out,
                            c->U[m]);
         /* Knots an ulp apart may round onto one value at the scale of
         ** u_0 + u_m, which would merge two runs into one of too high a
-        ** multiplicity (found by the fuzzer): keep distinct knots
+        ** multiplicity: keep distinct knots
         ** distinct by stepping to the next double. */
         if (i > 0 && c->U[m - i] < c->U[m - i + 1] && !(q->U[i] > q->U[i - 1]))
             q->U[i] = nextafter(q->U[i - 1], INFINITY);

@@ -39,10 +39,8 @@ deriv_numerator(const cf_bezier_t *c, size_t k, double *out, double *tmp)
         tmp[n + i] = (double)n * (c->pts[(size_t)(i + 1) * h + c->dim] -
                                   c->pts[(size_t)i * h + c->dim]);
     }
-    cf__bp_mul(tmp, n - 1, 1, c->pts + c->dim, n, h, out, 1, 1.0,
-                          false);
-    cf__bp_mul(c->pts + k, n, h, tmp + n, n - 1, 1, out, 1, -1.0,
-                          true);
+    cf__bp_mul(tmp, n - 1, 1, c->pts + c->dim, n, h, out, 1, 1.0, false);
+    cf__bp_mul(c->pts + k, n, h, tmp + n, n - 1, 1, out, 1, -1.0, true);
     return 2 * n - 1;
 }
 

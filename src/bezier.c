@@ -447,7 +447,7 @@ cf_bezier_split(const cf_bezier_t *c, double t, cf_bezier_t **left,
         }
     }
     cf__bp_split(c->pts, c->hdim, c->degree, t, l != NULL ? l->pts : NULL,
-                r != NULL ? r->pts : NULL);
+                 r != NULL ? r->pts : NULL);
     if (left != NULL)
         *left = l;
     if (right != NULL)
@@ -608,16 +608,16 @@ rational_derivative(const cf_bezier_t *c, cf_bezier_t **out, cf_diag_t *diag)
                              c->pts[(size_t)i * h + k]);
     /* numerator, degree 2n - 1, stored at stride h in d->pts */
     for (size_t k = 0; k < dim; k++) {
-        cf__bp_mul(diff + k, n - 1, h, c->pts + dim, n, h,
-                          d->pts + k, h, 1.0, false);
-        cf__bp_mul(c->pts + k, n, h, diff + dim, n - 1, h,
-                          d->pts + k, h, -1.0, true);
+        cf__bp_mul(diff + k, n - 1, h, c->pts + dim, n, h, d->pts + k, h,
+                   1.0, false);
+        cf__bp_mul(c->pts + k, n, h, diff + dim, n - 1, h, d->pts + k, h,
+                   -1.0, true);
     }
     for (int i = 0; i < 2 * n; i++)
         d->pts[(size_t)i * h + dim] = 1.0;   /* any value: the weights are overwritten below */
     cf__bp_elevate(d->pts, h, 2 * n - 1, 1);
-    cf__bp_mul(c->pts + dim, n, h, c->pts + dim, n, h, d->pts + dim,
-                      h, 1.0, false);
+    cf__bp_mul(c->pts + dim, n, h, c->pts + dim, n, h, d->pts + dim, h, 1.0,
+               false);
     cf__free(diff);
     *out = d;
     return CF_STATUS_OK;

@@ -50,7 +50,8 @@ cf__bspline_insert_raw(const cf_bspline_t *c, double u, size_t k, int s, int r)
             L = k - p + j;
             for (size_t i = 0; i + j + S <= p; i++) {
                 double al = (u - U[L + i]) / (U[i + k + 1] - U[L + i]);
-                cf__bspline_lerp(Rw + i * hd, Rw + i * hd, Rw + (i + 1) * hd, al, hd);
+                cf__bspline_lerp(Rw + i * hd, Rw + i * hd, Rw + (i + 1) * hd,
+                                 al, hd);
             }
             memcpy(q->P + L * hd, Rw, hd * sizeof *P);
             if (j + S <= p)
@@ -130,7 +131,8 @@ refine_loop(const double *U, const double *P, double *V, double *Q,
     for (size_t jj = nx; jj-- > 0;) {
         double x = X[jj];
         while (x <= U[i] && i > a) {
-            cf__bspline_copy_pt(Q + (kk - p - 1) * hd, P + (i - p - 1) * hd, hd);
+            cf__bspline_copy_pt(Q + (kk - p - 1) * hd, P + (i - p - 1) * hd,
+                                hd);
             V[kk] = U[i];
             kk--;
             i--;
@@ -143,8 +145,8 @@ refine_loop(const double *U, const double *P, double *V, double *Q,
                 cf__bspline_copy_pt(Q + (ind - 1) * hd, Q + ind * hd, hd);
             } else {
                 al /= V[kk + l] - U[i - p + l];
-                cf__bspline_lerp(Q + (ind - 1) * hd, Q + ind * hd, Q + (ind - 1) * hd,
-                     al, hd);
+                cf__bspline_lerp(Q + (ind - 1) * hd, Q + ind * hd,
+                                 Q + (ind - 1) * hd, al, hd);
             }
         }
         V[kk] = x;

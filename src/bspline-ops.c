@@ -185,8 +185,8 @@ decompose(const cf_bspline_t *c, double *Q, double *breaks)
             for (size_t j = 1; j <= r; j++) {
                 size_t save = r - j, s = mult + j;
                 for (size_t k = p; k >= s; k--)
-                    cf__bspline_lerp(cur + k * hd, cur + (k - 1) * hd, cur + k * hd,
-                         alphas[k - s], hd);
+                    cf__bspline_lerp(cur + k * hd, cur + (k - 1) * hd,
+                                     cur + k * hd, alphas[k - s], hd);
                 if (b < m)
                     cf__bspline_copy_pt(cur + seg + save * hd, cur + p * hd, hd);
             }

@@ -126,8 +126,8 @@ cf__bspline_grid_span(const cf_bspline_t *c, double u)
 /* The nonzero basis functions on span k with the precomputed reciprocals
 ** (the triangular scheme, A2.2). */
 CF__INLINE void
-cf__bspline_basis_rk(const double *U, const double *rk, size_t nk, size_t k, int p,
-         double u, double *N)
+cf__bspline_basis_rk(const double *U, const double *rk, size_t nk, size_t k,
+                     int p, double u, double *N)
 {
     double left[CF_BSPLINE_MAX_DEGREE + 1], right[CF_BSPLINE_MAX_DEGREE + 1];
     N[0] = 1.0;
@@ -201,7 +201,8 @@ cf_status_t cf__bspline_check_in(const cf_bspline_t *c, cf_bspline_t **out,
 
 /* dst = (1 - a) x + a y over hdim doubles. */
 CF__INLINE void
-cf__bspline_lerp(double *dst, const double *x, const double *y, double a, size_t hd)
+cf__bspline_lerp(double *dst, const double *x, const double *y, double a,
+                 size_t hd)
 {
     for (size_t d = 0; d < hd; d++)
         dst[d] = (1.0 - a) * x[d] + a * y[d];

@@ -37,8 +37,8 @@ emit(cf__driver_t *dr, const cf__fit_t *f, double a, double b)
 
 /* Tiller-Hanson: bisection until within tolerance. */
 static cf_status_t
-fit_bisect(cf__driver_t *dr, const cf__osrc_t *s, double a, double b, double w0,
-           int depth)
+fit_bisect(cf__driver_t *dr, const cf__osrc_t *s, double a, double b,
+           double w0, int depth)
 {
     cf__fit_t f;
     cf_status_t st =
@@ -82,7 +82,8 @@ plist_add(plist *l, const cf__fit_t *f, double a, double b)
 }
 
 static cf_status_t
-fit_range(cf__driver_t *dr, const cf__osrc_t *s, double x, double y, cf__fit_t *f)
+fit_range(cf__driver_t *dr, const cf__osrc_t *s, double x, double y,
+          cf__fit_t *f)
 {
     return cf__fit_piece(s, fmin(x, y), fmax(x, y), dr->method,
                          ACCEPT * dr->tol, f);
@@ -197,8 +198,8 @@ fit_greedy(cf__driver_t *dr, const cf__osrc_t *s, double a, double b)
 
 /* Round join: arc of radius |d| about centre from `from` turning by phi. */
 static cf_status_t
-join_arc(cf__driver_t *dr, const double *centre, const double *from, double phi,
-         double tpar)
+join_arc(cf__driver_t *dr, const double *centre, const double *from,
+         double phi, double tpar)
 {
     cf__osrc_t arc;
     double r = hypot(from[0] - centre[0], from[1] - centre[1]);
@@ -381,7 +382,8 @@ cf__fit_plain(const cf_bezier_t *c, double tol, cf_cubics_t **out,
 
 /* Join between consecutive pieces that meet at an angle. */
 cf_status_t
-cf__driver_join(cf__driver_t *dr, const cf_bezier_t *prev, const cf_bezier_t *next)
+cf__driver_join(cf__driver_t *dr, const cf_bezier_t *prev,
+                const cf_bezier_t *next)
 {
     cf_cubics_t *cu = dr->chain.cubics;
     double p[2], ul[2], ur[2], start[2], *end;

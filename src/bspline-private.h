@@ -68,7 +68,11 @@ bool cf__bspline_accel(const cf_bspline_t *c);
 
 /* Unchecked span search on a curve (the conventions of
 ** cf_knots_find_span). */
-size_t cf__bspline_span(const cf_bspline_t *c, double u);
+static inline size_t
+cf__bspline_span(const cf_bspline_t *c, double u)
+{
+    return cf_knots_find_span(c->p, c->U, c->nknots, u);
+}
 
 /* Check u is finite and inside the domain. */
 cf_status_t cf__bspline_check_param(const cf_bspline_t *c, double u,

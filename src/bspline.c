@@ -175,12 +175,6 @@ cf__bspline_accel(const cf_bspline_t *cc)
     return atomic_load_explicit(&c->accel, memory_order_acquire) == 2;
 }
 
-size_t
-cf__bspline_span(const cf_bspline_t *c, double u)
-{
-    return cf_knots_find_span(c->p, c->U, c->nknots, u);
-}
-
 cf_status_t
 cf__bspline_check_param(const cf_bspline_t *c, double u, cf_diag_t *diag)
 {

@@ -94,6 +94,11 @@ default_realloc(void *ud, void *ptr, size_t old_size, size_t new_size)
 /* The process default (cf_set_allocator) and the calling thread's current
 ** one (cf_use_allocator; realloc NULL: none, the default applies). */
 static cf_allocator_t default_allocator = { default_realloc, NULL };
+#if defined(__GNUC__)
+/* initial-exec: one load, no call per allocation (the library is linked,
+** not opened at run time) */
+__attribute__((tls_model("initial-exec")))
+#endif
 static _Thread_local cf_allocator_t thread_allocator = { NULL, NULL };
 
 static const cf_allocator_t *

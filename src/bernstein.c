@@ -104,7 +104,7 @@ cf_bernstein_eval(int n, const double *coef, double t, double *out)
     if (coef == NULL || out == NULL)
         return CF_STATUS_INVALID_ARG;
     memcpy(v, coef, ((size_t)n + 1) * sizeof *v);
-    *out = cf__decasteljau_1(v, n, t);
+    *out = cf__bp_decasteljau(v, n, t);
     return CF_STATUS_OK;
 }
 
@@ -195,7 +195,7 @@ cf_bernstein_from_power(int n, const double *a, double *b, cf_diag_t *diag)
         st = check_matrix_degree(n, b, diag);
     if (st != CF_STATUS_OK)
         return st;
-    apply(n, minv_entry, a, b);
+    cf__bp_from_power(a, n, 1.0, b);
     return CF_STATUS_OK;
 }
 

@@ -191,6 +191,13 @@ g_to_T(const trim *tr, size_t i, double g)
     return raw->t[i] + s * (raw->t[i + 1] - raw->t[i]);
 }
 
+/* The point of an offset source at t (the limit from the left at t = 1). */
+static void
+osrc_point(const cf__osrc_t *s, double t, double *p)
+{
+    (void)cf__osrc_point_dir(s, t, t >= 1.0 ? -1 : 1, p, NULL);
+}
+
 /* The source parameter of the point of the exact offset of raw piece i
 ** (src, on base piece k) nearest q: samples, then golden-section search. */
 static double
@@ -205,7 +212,7 @@ project(const trim *tr, size_t i, const cf__osrc_t *src, size_t k,
     int jb = 0;
     for (int j = 0; j <= N; j++) {
         double dd;
-        cf__osrc_point(src, la + (lb - la) * j / N, p);
+        osrc_point(src, la + (lb - la) * j / N, p);
         dd = hypot(p[0] - q[0], p[1] - q[1]);
         if (dd < best) {
             best = dd;
@@ -217,8 +224,8 @@ project(const trim *tr, size_t i, const cf__osrc_t *src, size_t k,
     for (int it = 0; it < 60; it++) {
         double x1 = hi - gr * (hi - lo), x2 = lo + gr * (hi - lo), p1[2],
                p2[2];
-        cf__osrc_point(src, x1, p1);
-        cf__osrc_point(src, x2, p2);
+        osrc_point(src, x1, p1);
+        osrc_point(src, x2, p2);
         if (hypot(p1[0] - q[0], p1[1] - q[1]) <
             hypot(p2[0] - q[0], p2[1] - q[1]))
             hi = x2;
@@ -436,7 +443,7 @@ static bool
 src_inside(const trim *tr, const cf__osrc_t *src, double t)
 {
     double p[2];
-    cf__osrc_point(src, t, p);
+    osrc_point(src, t, p);
     return base_dist(tr, p) < fabs(tr->d) - KEEP * tr->tol;
 }
 
@@ -689,9 +696,9 @@ append_part(trim *tr, cf__chain_t *ch, double g0, double g1, const cut *c0,
         if (s1 - s0 <= 1e-12)
             continue;
         if (s0 > 0.0 || s1 < 1.0) {
-            cf__split_h(raw->pts + 8 * i, 2, 3, s1, tmp, NULL);
+            cf__bp_split(raw->pts + 8 * i, 2, 3, s1, tmp, NULL);
             if (s0 > 0.0)
-                cf__split_h(tmp, 2, 3, s0 / s1, NULL, seg);
+                cf__bp_split(tmp, 2, 3, s0 / s1, NULL, seg);
             else
                 memcpy(seg, tmp, sizeof seg);
             st = refit_part(tr, ch, i, seg,

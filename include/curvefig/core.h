@@ -6,12 +6,18 @@
 ** message naming what was wrong and where ("knot 4 (0.30) is smaller than
 ** knot 3 (0.50)").  Passing NULL is always allowed.  Nothing in the core
 ** prints, aborts, uses errno or longjmp.
+**
+** The API is what these headers declare with CF_API (export.h):
+** libcurvefig-core is built with hidden visibility and exports exactly
+** those functions; the internals (cf__ names) are not part of it.
 */
 #ifndef CURVEFIG_CORE_H
 #define CURVEFIG_CORE_H
 
 #include <stdbool.h>
 #include <stddef.h>
+
+#include "curvefig/export.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -36,7 +42,7 @@ typedef enum cf_status {
 } cf_status_t;
 
 /* A static English description of a status ("invalid knot vector"). */
-const char *cf_status_to_string(cf_status_t status);
+CF_API const char *cf_status_to_string(cf_status_t status);
 
 /* Optional detail record.  The first error is kept: a function that fails
 ** writes into a diag whose status is CF_STATUS_OK only. */
@@ -48,25 +54,44 @@ typedef struct cf_diag {
 } cf_diag_t;
 
 /* Reset a diag to "no error". */
-void cf_diag_clear(cf_diag_t *diag);
+CF_API void cf_diag_clear(cf_diag_t *diag);
 
 /*
 ** Allocator hook, shaped like lua_Alloc: realloc(ud, ptr, old_size,
-** new_size); new_size == 0 frees and returns NULL.  The default (and the one
-** restored by cf_set_allocator(NULL)) uses the C library.  Not thread-safe
-** to change while other threads use curvefig.
+** new_size); new_size == 0 frees and returns NULL.
+**
+** Every block remembers the allocator that made it: it is resized and
+** freed by that one, whichever allocator is current when cf_free (or a
+** destroy function) runs.  New blocks come from the current allocator of
+** the calling thread:
+**
+**   - cf_use_allocator(a, &prev) makes a current for this thread only, and
+**     stores the one it replaces in prev; cf_use_allocator(&prev, NULL)
+**     puts that back.  Scopes nest, and callers who each keep their own
+**     allocator (a sandboxed script, a test) coexist in one process.
+**     a == NULL (or a->realloc == NULL) leaves the thread without one of
+**     its own.
+**   - A thread without one uses the process default: the C library, or
+**     what cf_set_allocator installed (cf_set_allocator(NULL) restores the
+**     C library).  Not thread-safe to change while other threads allocate
+**     through the default.
+**
+** cf_get_allocator gives the calling thread's current allocator.  An
+** allocator must stay usable as long as blocks made by it are alive.
 */
 typedef struct cf_allocator {
     void *(*realloc)(void *ud, void *ptr, size_t old_size, size_t new_size);
     void *ud;
 } cf_allocator_t;
 
-void cf_set_allocator(const cf_allocator_t *allocator);
-void cf_get_allocator(cf_allocator_t *allocator);
+CF_API void cf_set_allocator(const cf_allocator_t *allocator);
+CF_API void cf_get_allocator(cf_allocator_t *allocator);
+CF_API void cf_use_allocator(const cf_allocator_t *allocator,
+                             cf_allocator_t *previous);
 
 /* Memory the library hands out as plain arrays (documented per function)
 ** is released with cf_free. cf_free(NULL) is harmless. */
-void cf_free(void *ptr);
+CF_API void cf_free(void *ptr);
 
 /*
 ** Allocation through the hook, for code built on curvefig (the renderer,
@@ -76,10 +101,10 @@ void cf_free(void *ptr);
 ** NULL on failure (cf_realloc_array leaves ptr untouched then).  Memory from
 ** them is released with cf_free.
 */
-void *cf_malloc(size_t size);
-void *cf_calloc(size_t n, size_t size);
-void *cf_alloc_array(size_t n, size_t size);
-void *cf_realloc_array(void *ptr, size_t n, size_t size);
+CF_API void *cf_malloc(size_t size);
+CF_API void *cf_calloc(size_t n, size_t size);
+CF_API void *cf_alloc_array(size_t n, size_t size);
+CF_API void *cf_realloc_array(void *ptr, size_t n, size_t size);
 
 /*
 ** Fill a diag the way curvefig's own functions do, for code built on
@@ -90,8 +115,8 @@ void *cf_realloc_array(void *ptr, size_t n, size_t size);
 #if defined(__GNUC__)
 __attribute__((format(printf, 4, 5)))
 #endif
-cf_status_t cf_diag_set(cf_diag_t *diag, cf_status_t status, long index,
-                        const char *fmt, ...);
+CF_API cf_status_t cf_diag_set(cf_diag_t *diag, cf_status_t status, long index,
+                               const char *fmt, ...);
 
 #ifdef __cplusplus
 }

@@ -83,7 +83,7 @@ typedef struct cf_offset_options {
 } cf_offset_options_t;
 
 /* Defaults: tolerance 1e-3, Levien fit, no trimming. */
-void cf_offset_options_init(cf_offset_options_t *opt);
+CF_API void cf_offset_options_init(cf_offset_options_t *opt);
 
 typedef struct cf_offset_report {
     size_t segments;            /* cubics in the raw offset */
@@ -104,26 +104,26 @@ typedef struct cf_cubics_list {
     cf_cubics_t **chains;
 } cf_cubics_list_t;
 
-void cf_cubics_list_destroy(cf_cubics_list_t *list);
+CF_API void cf_cubics_list_destroy(cf_cubics_list_t *list);
 
 /* ---- exact offset ------------------------------------------------------- */
 
 /* out[2] = c(t) + d n(t) for a planar (dim 2) curve, polynomial or
 ** rational; t in [0, 1].  Never allocates.  DEGENERATE if every derivative
 ** vanishes (a single point) and d != 0. */
-cf_status_t cf_offset_point(const cf_bezier_t *c, double t, double d,
-                            double *out);
+CF_API cf_status_t cf_offset_point(const cf_bezier_t *c, double t, double d,
+                                   double *out);
 
 /* out[2 * n]: the offset at n parameters (allocation-free batch form). */
-cf_status_t cf_offset_point_many(const cf_bezier_t *c, const double *t,
-                                 size_t n, double d, double *out);
+CF_API cf_status_t cf_offset_point_many(const cf_bezier_t *c, const double *t,
+                                        size_t n, double d, double *out);
 
 /* The cusp parameters of the offset at d inside (0, 1), ascending: the
 ** parameters where the radius of curvature equals |d| on the side of d.
 ** Writes min(count, cap) of them into ts (ts may be NULL when cap == 0) and
 ** the total into *count. */
-cf_status_t cf_offset_cusps(const cf_bezier_t *c, double d, double *ts,
-                            size_t cap, size_t *count, cf_diag_t *diag);
+CF_API cf_status_t cf_offset_cusps(const cf_bezier_t *c, double d, double *ts,
+                                   size_t cap, size_t *count, cf_diag_t *diag);
 
 /* ---- approximation by cubics -------------------------------------------- */
 
@@ -139,10 +139,11 @@ cf_status_t cf_offset_cusps(const cf_bezier_t *c, double d, double *ts,
 ** itself (cf_bezier_to_cubics).  Release with cf_cubics_destroy and
 ** cf_cubics_list_destroy.
 */
-cf_status_t cf_bezier_offset(const cf_bezier_t *c, double d,
-                             const cf_offset_options_t *opt,
-                             cf_cubics_t **raw, cf_cubics_list_t **trimmed,
-                             cf_offset_report_t *rep, cf_diag_t *diag);
+CF_API cf_status_t cf_bezier_offset(const cf_bezier_t *c, double d,
+                                    const cf_offset_options_t *opt,
+                                    cf_cubics_t **raw,
+                                    cf_cubics_list_t **trimmed,
+                                    cf_offset_report_t *rep, cf_diag_t *diag);
 
 /*
 ** The same for a piecewise curve given as consecutive Bézier pieces (the
@@ -150,19 +151,22 @@ cf_status_t cf_bezier_offset(const cf_bezier_t *c, double d,
 ** must meet).  Parameters in the output are those of list->t0/t1 when given
 ** (the spline's knots), otherwise piece i covers [i, i + 1].
 */
-cf_status_t cf_bezier_list_offset(const cf_bezier_list_t *list, double d,
-                                  const cf_offset_options_t *opt,
-                                  cf_cubics_t **raw,
-                                  cf_cubics_list_t **trimmed,
-                                  cf_offset_report_t *rep, cf_diag_t *diag);
+CF_API cf_status_t cf_bezier_list_offset(const cf_bezier_list_t *list,
+                                         double d,
+                                         const cf_offset_options_t *opt,
+                                         cf_cubics_t **raw,
+                                         cf_cubics_list_t **trimmed,
+                                         cf_offset_report_t *rep,
+                                         cf_diag_t *diag);
 
 /* A B-spline or NURBS curve (dim 2): its Bézier pieces
 ** (cf_bspline_to_beziers) through cf_bezier_list_offset; parameters in the
 ** output are the spline's. */
-cf_status_t cf_bspline_offset(const cf_bspline_t *s, double d,
-                              const cf_offset_options_t *opt,
-                              cf_cubics_t **raw, cf_cubics_list_t **trimmed,
-                              cf_offset_report_t *rep, cf_diag_t *diag);
+CF_API cf_status_t cf_bspline_offset(const cf_bspline_t *s, double d,
+                                     const cf_offset_options_t *opt,
+                                     cf_cubics_t **raw,
+                                     cf_cubics_list_t **trimmed,
+                                     cf_offset_report_t *rep, cf_diag_t *diag);
 
 /*
 ** Independent check of an offset approximation of c at d: the two-sided
@@ -173,9 +177,9 @@ cf_status_t cf_bspline_offset(const cf_bspline_t *s, double d,
 ** ranges) are measured against the circle of radius |d| about c(t[i]).
 ** An upper bound, up to sampling, of the Hausdorff distance of the unions.
 */
-cf_status_t cf_offset_measure(const cf_bezier_t *c, double d,
-                              const cf_cubics_t *approx, size_t samples,
-                              double *error, cf_diag_t *diag);
+CF_API cf_status_t cf_offset_measure(const cf_bezier_t *c, double d,
+                                     const cf_cubics_t *approx, size_t samples,
+                                     double *error, cf_diag_t *diag);
 
 #ifdef __cplusplus
 }

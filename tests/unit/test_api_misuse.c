@@ -64,6 +64,15 @@ test_core(void **state)
     cf_set_allocator(NULL);            /* restores the default */
     cf_get_allocator(&a);
     assert_non_null(a.realloc);
+    /* no allocator of the thread's own, no previous wanted: harmless */
+    cf_use_allocator(NULL, NULL);
+    {
+        cf_allocator_t none = { NULL, NULL }, prev;
+        cf_use_allocator(&none, &prev);
+        assert_null(prev.realloc);
+        cf_get_allocator(&a);
+        assert_non_null(a.realloc);
+    }
     cf_free(NULL);
     /* the allocation helpers: overflow and zero sizes, never a crash */
     assert_null(cf_alloc_array(SIZE_MAX, 2));
@@ -165,6 +174,14 @@ test_knots(void **state)
     BAD(cf_basis_one_ders(0, 2, U7, 7, 0.5, -1, out, NULL));
     BAD(cf_basis_one_ders(0, 2, NULL, 7, 0.5, 1, out, NULL));
     BAD(cf_basis_one_ders(0, 2, U7, 7, 0.5, 1, NULL, NULL));
+    {
+        cf_bspline_t *bs = NULL;
+        BAD(cf_basis_one_spline(0, 2, NULL, 7, &bs, NULL));
+        BAD(cf_basis_one_spline(0, 2, U7, 7, NULL, NULL));
+        BAD(cf_basis_one_spline(5, 2, U7, 7, &bs, NULL));
+        BAD(cf_basis_one_spline(0, 40, U7, 7, &bs, NULL));
+        assert_null(bs);
+    }
 }
 
 static void

@@ -4,6 +4,7 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include <cmocka.h>
@@ -118,6 +119,93 @@ test_allocator_hook(void **state)
     assert_non_null(a.realloc);
 }
 
+/* Two counting allocators: blocks remember the one that made them. */
+typedef struct counter {
+    long live, calls;
+} counter;
+
+static void *
+counting_realloc(void *ud, void *ptr, size_t old_size, size_t new_size)
+{
+    counter *c = ud;
+    (void)old_size;
+    c->calls++;
+    if (new_size == 0) {
+        if (ptr != NULL)
+            c->live--;
+        free(ptr);
+        return NULL;
+    }
+    if (ptr == NULL)
+        c->live++;
+    return realloc(ptr, new_size);
+}
+
+static void
+test_allocator_per_block(void **state)
+{
+    counter ca = { 0, 0 }, cb = { 0, 0 };
+    cf_allocator_t A = { counting_realloc, &ca }, B = { counting_realloc, &cb };
+    cf_allocator_t prev, prev2, cur;
+    double *pa, *pb, *pd;
+    (void)state;
+    /* A current for this thread: new blocks come from A */
+    cf_use_allocator(&A, &prev);
+    assert_null(prev.realloc);
+    cf_get_allocator(&cur);
+    assert_true(cur.realloc == counting_realloc && cur.ud == &ca);
+    pa = cf__alloc_array(16, sizeof *pa);
+    assert_non_null(pa);
+    assert_int_equal(ca.live, 1);
+    /* a nested scope with B */
+    cf_use_allocator(&B, &prev2);
+    assert_true(prev2.ud == &ca);
+    pb = cf__malloc(64);
+    assert_int_equal(cb.live, 1);
+    /* a block of A resized and freed while B is current goes back to A */
+    pa = cf__realloc_array(pa, 4000, sizeof *pa);
+    assert_non_null(pa);
+    assert_int_equal(ca.live, 1);
+    assert_int_equal(cb.live, 1);
+    cf__free(pa);
+    assert_int_equal(ca.live, 0);
+    assert_int_equal(cb.live, 1);
+    cf_use_allocator(&prev2, NULL);      /* back to A */
+    cf_get_allocator(&cur);
+    assert_true(cur.ud == &ca);
+    /* B's block freed under A goes to B */
+    cf_free(pb);
+    assert_int_equal(cb.live, 0);
+    assert_int_equal(ca.live, 0);
+    cf_use_allocator(&prev, NULL);       /* no allocator of the thread's */
+    /* the default again: a block made now is not A's or B's */
+    {
+        long calls_a = ca.calls, calls_b = cb.calls;
+        pd = cf__calloc(8, sizeof *pd);
+        assert_non_null(pd);
+        /* freed while A is current: still the default's */
+        cf_use_allocator(&A, &prev);
+        cf__free(pd);
+        cf_use_allocator(&prev, NULL);
+        assert_int_equal(ca.calls, calls_a);
+        assert_int_equal(cb.calls, calls_b);
+    }
+    /* cf_set_allocator sets the process default, which a thread-current
+    ** allocator overrides */
+    cf_set_allocator(&B);
+    pb = cf__malloc(8);
+    assert_int_equal(cb.live, 1);
+    cf_use_allocator(&A, &prev);
+    pa = cf__malloc(8);
+    assert_int_equal(ca.live, 1);
+    cf_use_allocator(&prev, NULL);
+    cf_set_allocator(NULL);
+    cf__free(pa);
+    cf__free(pb);
+    assert_int_equal(ca.live, 0);
+    assert_int_equal(cb.live, 0);
+}
+
 int
 main(void)
 {
@@ -127,6 +215,7 @@ main(void)
         cmocka_unit_test(test_checks_name_the_culprit),
         cmocka_unit_test(test_binomial),
         cmocka_unit_test(test_allocator_hook),
+        cmocka_unit_test(test_allocator_per_block),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

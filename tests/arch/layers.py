@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
-"""The core's object files call downward only.
+"""The object files of a library call downward only.
 
 Usage: layers.py NM ARCHIVE
 
-Runs NM over the object files of ARCHIVE (the core library's objects) and
+Runs NM over the object files of ARCHIVE (a library's objects) and
 builds the graph "A calls B" (a symbol undefined in A is defined in B).
 Fails, naming the objects and the symbols, when two objects call each other
 directly or around a circle; prints the layers (each object with the objects

@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "checks.h"
 #include "help.h"
 #include "language-text.h"   /* generated from docs/language.md */
 
@@ -23,8 +24,12 @@ static const char *const overview[] = {
     "  gallery -o INDEX.html MANIFEST...\n",
     "                      write an HTML page showing the figures listed in\n",
     "                      render manifests (see --manifest), in that order\n",
+    "  compare A B         compare two images (PNG or SVG) pixel by pixel\n",
+    "  test SCRIPT... | DIR --references REF [--update]\n",
+    "                      check every figure against its reference image\n",
     "  help [TOPIC]        this text; TOPIC: render, run, list, gallery,\n",
-    "                      language (the figure language reference)\n",
+    "                      compare, test, language (the figure language\n",
+    "                      reference)\n",
     "  --version           print the version\n",
     "\n",
     "Options of render:\n",
@@ -93,6 +98,8 @@ cf__tool_help(const char *topic)
         put_lines(overview);
         return 0;
     }
+    if (cf__tool_checks_help(topic) == 0)
+        return 0;
     if (strcmp(topic, "language") == 0) {
         put_lines(language);
         return 0;
@@ -104,6 +111,6 @@ cf__tool_help(const char *topic)
         }
     }
     fprintf(stderr, "curvefig: no help on '%s'; topics: render, run, list, "
-            "gallery, language\n", topic);
+            "gallery, compare, test, language\n", topic);
     return 2;
 }

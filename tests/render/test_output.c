@@ -427,7 +427,8 @@ test_write_all_and_magic(void **state)
     cf_figure_t *fig = build_figure(false);
     char base[128], path[160];
     const char *magic[] = { "<?xml", "%PDF-", "%!PS-Adobe-3.0\n",
-                            "%!PS-Adobe-3.0 EPSF-3.0", "\x89PNG" };
+                            "%!PS-Adobe-3.0 EPSF-3.0", "\x89PNG",
+                            "% curvefig picture" };
     int f;
     cf_write_options_t tight;
     (void)state;
@@ -440,7 +441,7 @@ test_write_all_and_magic(void **state)
     tight.dpi = 96;
     for (int pass = 0; pass < 2; pass++) {
         const cf_write_options_t *o = pass == 0 ? NULL : &tight;
-        assert_int_equal(cf_figure_write_all(fig, base, 0x1f, o, NULL), 0);
+        assert_int_equal(cf_figure_write_all(fig, base, 0x3f, o, NULL), 0);
         for (f = 0; f < CF_FORMAT_LAST_; f++) {
             blob_t b, m;
             snprintf(path, sizeof path, "%s.%s", base,

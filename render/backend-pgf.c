@@ -118,15 +118,15 @@ begin_page(void *ctx, const cf__page_t *pg)
 {
     cf__pgf_t *g = ctx;
     const char *s;
-    char line[160];
     g->height = pg->height;
     g->width = pg->width;
     g->depth = 0;
     g->overlays = 0;
-    snprintf(line, sizeof line, "%% curvefig picture, %.4g x %.4g bp: a "
-             "pgfpicture; \\usepackage{pgf} (or tikz)\n", pg->width,
-             pg->height);
-    put(g, line);
+    put(g, "% curvefig picture, ");
+    put_num(g, pg->width);
+    put(g, " x ");
+    put_num(g, pg->height);
+    put(g, " bp: a pgfpicture; \\usepackage{pgf} (or tikz)\n");
     if (g->title != NULL) {
         put(g, "% ");
         for (s = g->title; *s != '\0'; s++)
@@ -416,7 +416,16 @@ pgftext(cf__pgf_t *g, const cf__text_op_t *t, const char *tex, double dx,
     put(g, "at=");
     put_point(g, t->px + places[p].sx * d + dx, t->py + places[p].sy * d + dy);
     put(g, "]{");
-    put(g, tex);
+    /* the size relative to the document's: 10 pt labels at its size */
+    if (fabs(t->font_size / CF__PGF_BASE_SIZE - 1) > 0.005) {
+        put(g, "\\scalebox{");
+        put_num(g, t->font_size / CF__PGF_BASE_SIZE);
+        put(g, "}{");
+        put(g, tex);
+        put(g, "}");
+    } else {
+        put(g, tex);
+    }
     put(g, "}\n");
 }
 

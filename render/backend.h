@@ -80,6 +80,9 @@ extern const cf__backend_t cf__dump_backend;
 ** with cf__pgf_fini.  end_page fails when out ran out of memory or a
 ** coordinate lies beyond CF__PGF_MAX_BP (bad_value: the first). */
 #define CF__PGF_MAX_BP 16000.0   /* TeX's largest dimension: 16322 bp */
+/* Labels of this size (10 TeX pt, the theme's) are set at the document's
+** size; others scaled by their ratio to it (\scalebox). */
+#define CF__PGF_BASE_SIZE (10.0 * 72.0 / 72.27)
 struct cf__buf;
 typedef struct cf__pgf {
     struct cf__buf *out;

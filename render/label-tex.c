@@ -88,6 +88,36 @@ put_symbol(tex_t *t, const char *name, bool math)
     }
 }
 
+/* Symbols of mathematics typed as Unicode that the label syntax has no
+** command for but TeX has. */
+static const char *
+unicode_math(unsigned cp)
+{
+    static const struct {
+        unsigned cp;
+        const char *tex;
+    } map[] = {
+        { 0xb7, "\\cdot " },           { 0x2033, "''" },
+        { 0x2190, "\\leftarrow " },    { 0x2194, "\\leftrightarrow " },
+        { 0x21d2, "\\Rightarrow " },   { 0x21d4, "\\Leftrightarrow " },
+        { 0x2200, "\\forall " },       { 0x2203, "\\exists " },
+        { 0x2205, "\\emptyset " },     { 0x2206, "\\Delta " },
+        { 0x220a, "\\in " },           { 0x221a, "\\surd " },
+        { 0x221d, "\\propto " },       { 0x2227, "\\wedge " },
+        { 0x2228, "\\vee " },          { 0x2229, "\\cap " },
+        { 0x222a, "\\cup " },          { 0x223c, "\\sim " },
+        { 0x2286, "\\subseteq " },     { 0x2287, "\\supseteq " },
+        { 0x2283, "\\supset " },       { 0x2295, "\\oplus " },
+        { 0x2297, "\\otimes " },       { 0x22a5, "\\perp " },
+        { 0x2225, "\\parallel " },     { 0x2220, "\\angle " },
+    };
+    size_t i;
+    for (i = 0; i < sizeof map / sizeof map[0]; i++)
+        if (map[i].cp == cp)
+            return map[i].tex;
+    return NULL;
+}
+
 /* Uppercase Greek letters that TeX has no command for: their Latin
 ** twins. */
 static char
@@ -114,6 +144,12 @@ put_unicode(tex_t *t, unsigned cp, const char *utf8, size_t n, bool math)
     }
     if (name != NULL) {
         put_symbol(t, name, math);
+        return;
+    }
+    if ((name = unicode_math(cp)) != NULL) {
+        put(t, math ? "" : "\\ensuremath{");
+        put(t, name);
+        put(t, math ? "" : "}");
         return;
     }
     if ((one[0] = greek_latin(cp)) != 0) {

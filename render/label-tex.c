@@ -19,6 +19,7 @@ typedef struct tex {
     size_t pos, len;
     bool has_dollar;
     bool unsettable;
+    bool after_sup;       /* the last atom was a superscript */
     cf__buf_t *out;
 } tex_t;
 
@@ -188,6 +189,8 @@ put_ascii(tex_t *t, char c, bool math)
     };
     char one[2] = { c, 0 };
     size_t i;
+    if ((unsigned char)c < 0x20 || c == 0x7f)
+        one[0] = ' ';   /* a line break or tab: a space, never a \\par */
     if (math) {
         for (i = 0; i < sizeof in_math / sizeof in_math[0]; i++)
             if (c == in_math[i][0][0]) {
@@ -359,8 +362,17 @@ list(tex_t *t, bool math, int stop)
             skip_spaces(t);
             atom(t, true);
             put(t, "}");
+            t->after_sup = c == '^';
             continue;
         }
+        /* a prime after a superscript: TeX would see a double
+        ** superscript, so it goes on an empty atom */
+        if (math && t->after_sup
+            && (c == '\''
+                || (t->pos + 2 < t->len
+                    && memcmp(t->s + t->pos, "\xe2\x80\xb2", 3) == 0)))
+            put(t, "{}");
+        t->after_sup = false;
         atom(t, math);
     }
 }

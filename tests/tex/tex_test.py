@@ -287,6 +287,7 @@ LABELS = [
     (r"$\alpha$ a_b^c <x> |y| ~ # \{\} \\ \deg \hat{e}", True),
     (r"$\frac{a}{b}$ $\mathrm{x}$ \mathbf{bold} \mathit{it}", True),
     ("$ΑΒΕ$ α ≤ č", True), ("w = √2/2 · ∀x ∈ ∅ ⇒ x′″", True),
+    ("x^2' + y^{n}′ + z_1'", True), ("a\tb\n\nc", True),
     ("Кривая Безье", False), ("$кривая$ b_0", False), ("贝塞尔曲线", False),
 ]
 

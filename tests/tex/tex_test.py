@@ -218,40 +218,52 @@ def check_engines():
 def check_pixels():
     need("pdftoppm")
     nl = os.path.join(WORK, "nolabels")
-    os.makedirs(nl, exist_ok=True)
+    tight = os.path.join(WORK, "tight")
+    for d in (nl, tight):
+        os.makedirs(d, exist_ok=True)
     for s in figures():
         render(s, "pdf,pgf", ["--no-labels"], out=nl)
-    names = sorted(f[:-4] for f in os.listdir(nl) if f.endswith(".pgf"))
+    for s in PGF_FIGS + ("orazem-decasteljau.lua",):
+        render(s, "pdf,pgf", ["--no-labels", "--tight"], out=tight)
+    figs = [(d, f[:-4]) for d in ("nolabels", "tight")
+            for f in sorted(os.listdir(os.path.join(WORK, d)))
+            if f.endswith(".pgf")]
     # one page per figure, each page the figure's size (pdfTeX primitives)
     pages = []
-    for n in names:
-        w, h = pgf_size(os.path.join(nl, n + ".pgf"))
+    for d, n in figs:
+        w, h = pgf_size(os.path.join(WORK, d, n + ".pgf"))
         pages.append("\\pdfpagewidth=%.4fbp \\pdfpageheight=%.4fbp\n"
-                     "\\shipout\\hbox{\\input{nolabels/%s.pgf}}\n" % (w, h, n))
+                     "\\shipout\\hbox{\\input{%s/%s.pgf}}\n" % (w, h, d, n))
     tex("pixels", "\\documentclass{article}\n\\usepackage{pgf}\n"
         "\\hoffset=-1in \\voffset=-1in\n\\begin{document}\n%s"
         "\\end{document}\n" % "".join(pages))
     dpi = "100"
     run(["pdftoppm", "-r", dpi, "-png", "pixels.pdf", "pgf"])
     bad = []
-    for k, n in enumerate(names):
+    width = len(str(len(figs)))
+    for k, (d, n) in enumerate(figs):
+        b = "cairo-%s-%s" % (d, n)
         run(["pdftoppm", "-r", dpi, "-png", "-singlefile",
-             os.path.join(nl, n + ".pdf"), "cairo-" + n])
-        width = len(str(len(names)))
+             os.path.join(WORK, d, n + ".pdf"), b])
         a = "pgf-%0*d.png" % (width, k + 1)
         # poppler rasterises both, so edges anti-alias alike; the PGF's
         # quarter-turn arcs and 4-decimal coordinates move an edge by
         # well under a pixel: the default threshold and anti-aliasing
         # radius, no pixel beyond them
-        r = subprocess.run([TOOL, "compare", a, "cairo-%s.png" % n, "--diff",
-                            "diff-%s.png" % n], cwd=WORK,
+        r = subprocess.run([TOOL, "compare", a, b + ".png", "--diff",
+                            "diff-%s-%s.png" % (d, n)], cwd=WORK,
                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                            text=True)
         if r.returncode != 0:
-            bad.append("%s: %s" % (n, r.stdout.strip().splitlines()[-1]))
+            bad.append("%s/%s: %s" % (d, n, r.stdout.strip().splitlines()[-1]))
     if bad:
         fail("PGF and PDF differ:\n  " + "\n  ".join(bad))
-    print("ok: %d figures without labels: PGF pixels = PDF pixels" % len(names))
+    print("ok: %d figures without labels (%d cropped): PGF pixels = PDF "
+          "pixels" % (len(figs), len(figs) - len(figures_in(nl))))
+
+
+def figures_in(d):
+    return [f for f in os.listdir(d) if f.endswith(".pgf")]
 
 
 def check_figures():

@@ -429,8 +429,9 @@ pgftext(cf__pgf_t *g, const cf__text_op_t *t, const char *tex, double dx,
     put(g, "}\n");
 }
 
-/* A label TeX can set: the halo as 8 copies around it in the halo
-** colour, then the text. */
+/* A label TeX can set: the halo as copies around it in the halo colour
+** (16 on a ring of the halo's width, 8 on one of half of it, so that
+** strokes between them are covered), then the text. */
 static void
 tex_text(cf__pgf_t *g, const cf__text_op_t *t, const char *tex)
 {
@@ -441,9 +442,13 @@ tex_text(cf__pgf_t *g, const cf__text_op_t *t, const char *tex)
         put(g, "\\color{cftext}");
         put_opacity(g, "\\pgfsetfillopacity", t->halo_color.a);
         put(g, "\n");
-        for (k = 0; k < 8; k++)
-            pgftext(g, t, tex, t->halo * cos(k * PI / 4),
-                    t->halo * sin(k * PI / 4));
+        for (k = 0; k < 24; k++) {
+            /* 16 on a ring at the halo's width, 8 at half of it */
+            bool outer = k < 16;
+            double r = outer ? t->halo : 0.5 * t->halo;
+            double a = outer ? PI * k / 8 : PI * (k - 16) / 4;
+            pgftext(g, t, tex, r * cos(a), r * sin(a));
+        }
         put(g, "\\end{pgfscope}\n");
     }
     put(g, "\\begin{pgfscope}");

@@ -297,7 +297,7 @@ test_pgf_backend(void **state)
     assert_int_equal(count_str(text, "\\begin{pgfscope}% "), groups);
     assert_int_equal(count_str(text, "\\begin{pgfscope}"),
                      count_str(text, "\\end{pgfscope}"));
-    assert_int_equal(count_str(text, "\\pgftext["), texts + 8 * halos);
+    assert_int_equal(count_str(text, "\\pgftext["), texts + 24 * halos);
     assert_true(count_str(text, "\\pgfpathcurveto") >= curves);
     assert_true(dashes > 0);
     assert_int_equal(count_str(text, "\\pgfsetdash{"), dashes);

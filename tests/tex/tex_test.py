@@ -21,7 +21,8 @@ CHECK is one of:
   figures  every shipped figure, labels and all, as PGF in one pdflatex
            document; the PGF is the same on a second run
   labels   labels in every part of the label syntax compile with
-           pdflatex; labels in scripts pdflatex cannot set are outlines
+           pdflatex (OT1 Computer Modern, and T1 Latin Modern with
+           amsmath); labels in scripts pdflatex cannot set are outlines
 
 Exit 77 (skipped) when pdflatex is not installed.
 """
@@ -324,7 +325,11 @@ def check_labels():
             fail("label %r: %s" % (src, "drawn as outlines" if settable
                                    else "handed to TeX"))
     tex("labels-doc", doc("[11pt]{article}", "\\input{labels.pgf}"))
-    print("ok: %d labels compile with pdflatex" % len(LABELS))
+    # also with T1 fonts, Latin Modern and amsmath's \text
+    tex("labels-t1", doc("[11pt]{article}", "\\input{labels.pgf}",
+                         "\\usepackage[T1]{fontenc}\n\\usepackage{lmodern}\n"
+                         "\\usepackage{amsmath}\n"))
+    print("ok: %d labels compile with pdflatex (OT1 and T1)" % len(LABELS))
 
 
 def main():

@@ -14,7 +14,8 @@ cf__dl_play(const cf__dl_t *dl, size_t from, size_t to,
         cf__path_t path;
         switch (op->kind) {
         case CF__OP_GROUP:
-            be->begin_group(ctx, op->u.group.name, op->u.group.index);
+            be->begin_group(ctx, op->u.group.name, op->u.group.index,
+                           op->u.group.overlay);
             break;
         case CF__OP_END:
             be->end_group(ctx);

@@ -178,7 +178,7 @@ parse_args(int argc, char **argv, options *o, int *rc)
         } else if (strcmp(a, "-f") == 0 || strcmp(a, "--formats") == 0) {
             if (parse_formats(v, &o->formats) != 0) {
                 *rc = usage_error("bad format list '%s' (use svg, pdf, png, "
-                                  "ps, eps or all, separated by commas)", v);
+                                  "ps, eps, pgf or all, separated by commas)", v);
                 return -1;
             }
         } else if (strcmp(a, "--dpi") == 0) {

@@ -1,5 +1,5 @@
 /* The display list and its backends: one figure with every element kind is
-** laid out into a display list; the dump backend and the cairo backend are
+** laid out into a display list; the dump, cairo and PGF backends are
 ** handed that same list, and what each gives is compared with the public
 ** functions' output, so the model and the layout are shown not to depend
 ** on the backend asked for. */
@@ -211,7 +211,7 @@ static void
 test_backend_independence(void **state)
 {
     static const cf_format_t formats[] = { CF_FORMAT_SVG, CF_FORMAT_PNG,
-                                           CF_FORMAT_PDF };
+                                           CF_FORMAT_PDF, CF_FORMAT_PGF };
     cf_figure_t *fig = every_kind();
     cf__dl_t dl;
     cf__page_t page;
@@ -242,6 +242,81 @@ test_backend_independence(void **state)
     cf_free(d.text);
     cf_free(before);
     cf_free(after);
+    cf__dl_free(&dl);
+    cf_figure_destroy(fig);
+}
+
+static size_t
+count_str(const char *text, const char *s)
+{
+    size_t n = 0;
+    const char *p = text;
+    while ((p = strstr(p, s)) != NULL) {
+        n++;
+        p += strlen(s);
+    }
+    return n;
+}
+
+/* The PGF backend handed the list: a pgfscope per group and per clip, all
+** closed; a \pgftext per label (none of the figure's needs outlines;
+** eight more per halo); every cubic of the list a \pgfpathcurveto, every
+** dash a \pgfsetdash; the page as the bounding box.  A group with an
+** overlay specification is \visible<spec>{...}, and the dump shows it. */
+static void
+test_pgf_backend(void **state)
+{
+    cf_figure_t *fig = every_kind();
+    cf__dl_t dl;
+    cf__page_t page;
+    cf__buf_t out;
+    cf__pgf_t g;
+    cf__dump_t d;
+    char *text, *dumped, want[96];
+    size_t groups, texts, halos, curves, dashes, clips;
+    (void)state;
+    build(fig, &dl, &page);
+    memset(&d, 0, sizeof d);
+    assert_int_equal(cf__dl_play_page(&dl, &page, &cf__dump_backend, &d), 0);
+    dumped = d.text;
+    groups = count_lines(dumped, "group ");
+    texts = count_lines(dumped, "text ");
+    halos = count_str(dumped, " halo ");
+    curves = count_str(dumped, " C ");
+    dashes = count_str(dumped, " dash ") - count_str(dumped, " dash 0 ");
+    clips = count_lines(dumped, "clip ") - count_lines(dumped, "clip none");
+
+    dl.ops[0].u.group.overlay = "2-";
+    memset(&out, 0, sizeof out);
+    memset(&g, 0, sizeof g);
+    g.out = &out;
+    assert_int_equal(cf__dl_play_page(&dl, &page, &cf__pgf_backend, &g), 0);
+    cf__pgf_fini(&g);
+    assert_int_equal(cf__buf_append(&out, "", 1), 0);
+    text = (char *)out.data;
+    assert_int_equal(count_str(text, "\\begin{pgfscope}% "), groups);
+    assert_int_equal(count_str(text, "\\begin{pgfscope}"),
+                     count_str(text, "\\end{pgfscope}"));
+    assert_int_equal(count_str(text, "\\pgftext["), texts + 24 * halos);
+    assert_true(count_str(text, "\\pgfpathcurveto") >= curves);
+    assert_true(dashes > 0);
+    assert_int_equal(count_str(text, "\\pgfsetdash{"), dashes);
+    assert_int_equal(count_str(text, "\\pgfusepath{clip}"), clips);
+    assert_int_equal(count_str(text, "\\begin{pgfpicture}"), 1);
+    assert_non_null(strstr(text, "\\end{pgfpicture}%\n"));
+    assert_non_null(strstr(text, "\\pgfusepath{use as bounding box}"));
+    snprintf(want, sizeof want, "\\visible<2->{\\begin{pgfscope}%% 0 %s\n",
+             dl.ops[0].u.group.name);
+    assert_non_null(strstr(text, want));
+    assert_int_equal(count_str(text, "\\fi\\visible<"), 1);
+    cf_free(d.text);
+    memset(&d, 0, sizeof d);
+    assert_int_equal(cf__dl_play_page(&dl, &page, &cf__dump_backend, &d), 0);
+    snprintf(want, sizeof want, "group 0 %s overlay 2-\n",
+             dl.ops[0].u.group.name);
+    assert_non_null(strstr(d.text, want));
+    cf_free(d.text);
+    cf__buf_free(&out);
     cf__dl_free(&dl);
     cf_figure_destroy(fig);
 }
@@ -338,6 +413,7 @@ main(void)
         cmocka_unit_test(test_dump_content),
         cmocka_unit_test(test_backend_independence),
         cmocka_unit_test(test_dump_deterministic),
+        cmocka_unit_test(test_pgf_backend),
         cmocka_unit_test(test_page_checks),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -1,11 +1,11 @@
 /*
-** curvefig-bench: runs the workloads of ../shared/BENCHMARKS.md.
+** curvefig-bench: runs the workloads of docs/benchmarks.md.
 **
 **   curvefig-bench [--json] [--runs N] [--only ID[,ID...]]
 **
 ** Each workload: setup (untimed), one warm-up run, then N (>= 5) timed runs;
 ** reports the median.  The checksum of the last run is compared with the
-** table of BENCHMARKS.md to 1e-9 relative; a mismatch makes the exit status
+** table of docs/benchmarks.md to 1e-9 relative; a mismatch makes the exit status
 ** 1, so `meson test --benchmark` fails on a wrong answer.
 */
 #include <math.h>
@@ -16,7 +16,7 @@
 
 #include "bench.h"
 
-/* Tables of the module files, in the order of BENCHMARKS.md (add the
+/* Tables of the module files, in the order of docs/benchmarks.md (add the
 ** declaration and the entry when a module gets its workloads). */
 const bench_workload *bench_bezier_table(void);
 const bench_workload *bench_bspline_table(void);

@@ -1,5 +1,5 @@
 /*
-** The benchmark harness: workloads of ../shared/BENCHMARKS.md register
+** The benchmark harness: workloads of docs/benchmarks.md register
 ** themselves here; bench.c times them (median of >= 5 runs after a warm-up)
 ** and prints one JSON line each with its checksum.
 */
@@ -9,7 +9,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* splitmix64 exactly as BENCHMARKS.md defines it. */
+/* splitmix64 exactly as docs/benchmarks.md defines it. */
 typedef struct bench_rng {
     uint64_t state;
 } bench_rng;
@@ -42,7 +42,7 @@ typedef struct bench_workload {
     ** success. */
     int (*run)(void *state, double checksum[2]);
     void (*teardown)(void *state);
-    double expect[2];      /* the checksum of BENCHMARKS.md */
+    double expect[2];      /* the checksum of docs/benchmarks.md */
 } bench_workload;
 
 /* Each module file provides its table (terminated by an entry with id ==

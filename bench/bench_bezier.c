@@ -1,5 +1,5 @@
 /*
-** Bézier workloads of BENCHMARKS.md: W1, W2, W1d, W7cubic, W7deg7.
+** Bézier workloads of docs/benchmarks.md: W1, W2, W1d, W7cubic, W7deg7.
 */
 #include <stdlib.h>
 #include <string.h>

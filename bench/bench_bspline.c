@@ -1,5 +1,5 @@
 /*
-** B-spline workloads of BENCHMARKS.md: W3s, W3r, W4, W5ins, W5bez.
+** B-spline workloads of docs/benchmarks.md: W3s, W3r, W4, W5ins, W5bez.
 */
 #include <math.h>
 #include <stdlib.h>

@@ -19,7 +19,7 @@
 **    figure NAME in the same three formats, `PYTHON MPLSCRIPT OUTDIR`;
 **    bench/matplotlib/): that script, once to warm matplotlib's font
 **    cache, then 7 runs; the median wall and CPU time, and how many times
-**    faster the tool is (the issue's target: at least 20 times).
+**    faster the tool is (the target: at least 20 times).
 ** One JSON line per measurement.  Exit status 1 when a render fails.
 */
 #include <dirent.h>

@@ -1,6 +1,6 @@
 /*
-** curvefig-offset-bench: segment counts, errors and times of offset curves
-** (issue 7).  Unlike curvefig-bench (fixed-checksum workloads), it prints
+** curvefig-offset-bench: segment counts, errors and times of offset
+** curves.  Unlike curvefig-bench (fixed-checksum workloads), it prints
 ** one JSON line per curve, distance, method and tolerance:
 **
 **   {"curve": "arch", "d": -45, "method": "levien", "tol": 0.001,

@@ -1,9 +1,9 @@
 /*
-** bench-sisl: the B-spline workloads of BENCHMARKS.md (W3s, W3r, W4, W5ins,
+** bench-sisl: the B-spline workloads of docs/benchmarks.md (W3s, W3r, W4, W5ins,
 ** W5bez) run through SISL (Debian libsisl-dev) on the same inputs, to see
 ** the ratio to curvefig-bench on this machine.  Built only when SISL is
 ** found.  Prints one line per workload with its checksum (which must match
-** the table of BENCHMARKS.md) and the median of 5 runs.
+** the table of docs/benchmarks.md) and the median of 5 runs.
 */
 #include <math.h>
 #include <stdio.h>

@@ -7,7 +7,7 @@
 -- p = 3 keeps farthest from it.  Knot points C(u_i) are marked: they cut
 -- each curve into its pieces of degree p.  Knots:
 --   p = 1: U = {0, 0, 1/7, 2/7, ..., 6/7, 1, 1} (clamped, equally spaced
---          interior knots, as FIGURES.md asks for p = 1 and 3);
+--          interior knots, as docs/figures.md asks for p = 1 and 3);
 --   p = 2: the sample curve's U = {0, 0, 0, 0.17, 0.33, 0.5, 0.67, 0.83,
 --          1, 1, 1} (seed data);
 --   p = 3: U = {0, 0, 0, 0, 0.2, 0.4, 0.6, 0.8, 1, 1, 1, 1}.

@@ -10,7 +10,7 @@
 --   2.7: p = 2, the sample curve's U = {0,0,0,0.17,0.33,0.5,0.67,0.83,1,1,1};
 --        u = 0.6 lies in [u_5, u_6) = [0.5, 0.67): hull of P_3, P_4, P_5.
 --   2.8: p = 3, clamped U = {0,0,0,0,0.2,0.4,0.6,0.8,1,1,1,1} (equally
---        spaced interior knots, FIGURES.md's choice for p = 3); u = 0.3
+--        spaced interior knots, docs/figures.md's choice for p = 3); u = 0.3
 --        lies in [u_4, u_5) = [0.2, 0.4): hull of P_1, P_2, P_3, P_4.
 -- The span and the points come from the library (s:active_points); the
 -- script asserts that they are the ones named here.  Same window and size

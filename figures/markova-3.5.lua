@@ -5,7 +5,7 @@
 -- De Boor's algorithm: to find C(u), insert u until its multiplicity is
 -- p; the last point of the triangular scheme is C(u) = P_{k-s,p-s}.
 --
--- DATA NOT IN THE SEED (FIGURES.md allows it): the thesis' sample curve
+-- DATA NOT IN THE SEED (docs/figures.md allows it): the thesis' sample curve
 -- has p = 2 and u = 0.5 is its simple knot u_5, so de Boor inserts 0.5
 -- only p - s = 1 time and the "triangle" is one new point.  These
 -- figures therefore use the sample's control points P_0..P_7 with

@@ -1,5 +1,5 @@
 -- markova-basis-all (seed 002, "B-spline křivky", chapter 1, §1.2
--- "Vlastnosti bázových funkcí"; a figure added to the seed's, FIGURES.md
+-- "Vlastnosti bázových funkcí"; a figure added to the seed's, docs/figures.md
 -- row markova-basis-all).
 -- All eight quadratic basis functions N_0^2 ... N_7^2 over the knot vector
 -- of the thesis' sample curve ("vzorová křivka", §2.10),

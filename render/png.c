@@ -121,14 +121,14 @@ static voidpf
 z_alloc(voidpf opaque, uInt items, uInt size)
 {
     (void)opaque;
-    return cf__alloc_array(items, size);
+    return cf_alloc_array(items, size);
 }
 
 static void
 z_free(voidpf opaque, voidpf ptr)
 {
     (void)opaque;
-    cf__free(ptr);
+    cf_free(ptr);
 }
 
 /* The zlib stream of the filtered rows as IDAT chunks. */
@@ -144,16 +144,16 @@ write_idat(const unsigned char *data, int width, int height, int stride,
     memset(&z, 0, sizeof z);
     z.zalloc = z_alloc;
     z.zfree = z_free;
-    line = cf__malloc(rowbytes + 1);
-    zbuf = cf__malloc(IDAT_MAX);
+    line = cf_malloc(rowbytes + 1);
+    zbuf = cf_malloc(IDAT_MAX);
     if (line == NULL || zbuf == NULL
         || deflateInit2(&z, ZLEVEL, Z_DEFLATED, 15, ZMEMLEVEL,
                         Z_DEFAULT_STRATEGY) != Z_OK) {
-        cf__free(line);
-        cf__free(zbuf);
-        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory compressing a PNG of %d x %d "
-                         "pixels", width, height);
+        cf_free(line);
+        cf_free(zbuf);
+        return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                           "out of memory compressing a PNG of %d x %d "
+                           "pixels", width, height);
     }
     z.next_out = zbuf;
     z.avail_out = IDAT_MAX;
@@ -191,12 +191,12 @@ write_idat(const unsigned char *data, int width, int height, int stride,
         && append_chunk(out, "IDAT", zbuf, IDAT_MAX - z.avail_out) != 0)
         failed = 1;
     deflateEnd(&z);
-    cf__free(line);
-    cf__free(zbuf);
+    cf_free(line);
+    cf_free(zbuf);
     if (failed)
-        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory writing a PNG of %d x %d pixels",
-                         width, height);
+        return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                           "out of memory writing a PNG of %d x %d pixels",
+                           width, height);
     return CF_STATUS_OK;
 }
 
@@ -215,12 +215,12 @@ cf__png_encode(cairo_surface_t *image, double dpi, cf__buf_t *out,
     cf_status_t st;
 
     if (image == NULL || out == NULL)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "PNG: image or output is NULL");
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "PNG: image or output is NULL");
     if (cairo_surface_status(image) != CAIRO_STATUS_SUCCESS
         || cairo_surface_get_type(image) != CAIRO_SURFACE_TYPE_IMAGE)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "PNG: not a valid cairo image surface");
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "PNG: not a valid cairo image surface");
     cairo_surface_flush(image);
     format = cairo_image_surface_get_format(image);
     width = cairo_image_surface_get_width(image);
@@ -228,16 +228,16 @@ cf__png_encode(cairo_surface_t *image, double dpi, cf__buf_t *out,
     stride = cairo_image_surface_get_stride(image);
     data = cairo_image_surface_get_data(image);
     if (format != CAIRO_FORMAT_ARGB32 && format != CAIRO_FORMAT_RGB24)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "PNG: image format %d is not ARGB32 or RGB24",
-                         (int)format);
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "PNG: image format %d is not ARGB32 or RGB24",
+                           (int)format);
     if (data == NULL || width < 1 || height < 1)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "PNG: image of %d x %d pixels has no data", width,
-                         height);
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "PNG: image of %d x %d pixels has no data", width,
+                           height);
     if (!isfinite(dpi))
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "PNG: resolution %g dpi is not finite", dpi);
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "PNG: resolution %g dpi is not finite", dpi);
     rgba = format == CAIRO_FORMAT_ARGB32
         && !all_opaque(data, width, height, stride);
 
@@ -250,8 +250,8 @@ cf__png_encode(cairo_surface_t *image, double dpi, cf__buf_t *out,
     ihdr[12] = 0;               /* not interlaced */
     if (cf__buf_append(out, signature, sizeof signature) != 0
         || append_chunk(out, "IHDR", ihdr, sizeof ihdr) != 0)
-        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory writing a PNG header");
+        return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                           "out of memory writing a PNG header");
     if (dpi > 0) {
         /* pixels per metre, the same along x and y; unit 1 = metre */
         double ppm = floor(dpi / 0.0254 + 0.5);
@@ -260,14 +260,14 @@ cf__png_encode(cairo_surface_t *image, double dpi, cf__buf_t *out,
         put_u32(phys + 4, v);
         phys[8] = 1;
         if (append_chunk(out, "pHYs", phys, sizeof phys) != 0)
-            return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
-                             "out of memory writing a PNG header");
+            return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                               "out of memory writing a PNG header");
     }
     st = write_idat(data, width, height, stride, rgba, out, diag);
     if (st != CF_STATUS_OK)
         return st;
     if (append_chunk(out, "IEND", NULL, 0) != 0)
-        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory writing a PNG trailer");
+        return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                           "out of memory writing a PNG trailer");
     return CF_STATUS_OK;
 }

@@ -5,7 +5,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "render-private.h"
+#include "label-private.h"
+#include "model.h"
 
 /* ---- units -------------------------------------------------------------- */
 
@@ -47,13 +48,13 @@ cf_unit_from_name(const char *name, cf_unit_t *out, cf_diag_t *diag)
                                        CF_UNIT_MM, CF_UNIT_CM, CF_UNIT_IN };
     int i;
     if (name == NULL || out == NULL)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "unit name or output is NULL");
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "unit name or output is NULL");
     i = name_index(name, names, sizeof names / sizeof names[0]);
     if (i < 0)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "unknown unit \"%s\" (use bp, pt, texpt, mm, cm "
-                         "or in)", name);
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "unknown unit \"%s\" (use bp, pt, texpt, mm, cm "
+                           "or in)", name);
     *out = units[i];
     return CF_STATUS_OK;
 }
@@ -105,8 +106,8 @@ cf_color_parse(const char *text, cf_color_t *out, cf_diag_t *diag)
 {
     size_t i, len;
     if (text == NULL || out == NULL)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "colour text or output is NULL");
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "colour text or output is NULL");
     len = strlen(text);
     if (text[0] == '#' && (len == 7 || len == 9)) {
         unsigned v[4] = { 0, 0, 0, 255 };
@@ -114,9 +115,9 @@ cf_color_parse(const char *text, cf_color_t *out, cf_diag_t *diag)
             int hi = hex_digit(text[1 + 2 * i]);
             int lo = hex_digit(text[2 + 2 * i]);
             if (hi < 0 || lo < 0)
-                return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                                 "colour \"%s\" is not #rrggbb or "
-                                 "#rrggbbaa", text);
+                return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                                   "colour \"%s\" is not #rrggbb or "
+                                   "#rrggbbaa", text);
             v[i] = (unsigned)(hi * 16 + lo);
         }
         *out = rgb_color((v[0] << 16) | (v[1] << 8) | v[2], v[3] / 255.0);
@@ -132,9 +133,9 @@ cf_color_parse(const char *text, cf_color_t *out, cf_diag_t *diag)
             return CF_STATUS_OK;
         }
     }
-    return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                     "unknown colour \"%s\" (use #rrggbb, #rrggbbaa, none "
-                     "or a colour name such as black, grey, blue)", text);
+    return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                       "unknown colour \"%s\" (use #rrggbb, #rrggbbaa, none "
+                       "or a colour name such as black, grey, blue)", text);
 }
 
 /* ---- markers and places ------------------------------------------------- */
@@ -148,14 +149,14 @@ cf_marker_from_name(const char *name, cf_marker_t *out, cf_diag_t *diag)
     };
     int i;
     if (name == NULL || out == NULL)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "marker name or output is NULL");
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "marker name or output is NULL");
     i = name_index(name, names, CF_MARKER_LAST_);
     if (i < 0)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "unknown marker \"%s\" (use none, dot, circle, "
-                         "square, diamond, triangle, cross, plus, star or "
-                         "tick)", name);
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "unknown marker \"%s\" (use none, dot, circle, "
+                           "square, diamond, triangle, cross, plus, star or "
+                           "tick)", name);
     *out = (cf_marker_t)i;
     return CF_STATUS_OK;
 }
@@ -175,15 +176,15 @@ cf_place_from_name(const char *name, cf_place_t *out, cf_diag_t *diag)
     };
     int i;
     if (name == NULL || out == NULL)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "place name or output is NULL");
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "place name or output is NULL");
     i = name_index(name, names, sizeof names / sizeof names[0]);
     if (i < 0)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "unknown label place \"%s\" (use center, n, ne, "
-                         "e, se, s, sw, w, nw, above, below, left, right "
-                         "or auto)",
-                         name);
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "unknown label place \"%s\" (use center, n, ne, "
+                           "e, se, s, sw, w, nw, above, below, left, right "
+                           "or auto)",
+                           name);
     *out = places[i];
     return CF_STATUS_OK;
 }
@@ -213,74 +214,74 @@ cf__style_check(const cf_style_t *s, cf_diag_t *diag)
     if (s == NULL)
         return CF_STATUS_OK;
     if (s->set & ~(unsigned)CF_STYLE_ALL_)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: unknown bits 0x%x in set",
-                         s->set & ~(unsigned)CF_STYLE_ALL_);
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "style: unknown bits 0x%x in set",
+                           s->set & ~(unsigned)CF_STYLE_ALL_);
     if ((s->set & CF_STYLE_COLOR) && !color_ok(&s->color))
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: colour components must lie in [0, 1]");
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "style: colour components must lie in [0, 1]");
     if ((s->set & CF_STYLE_FILL) && !color_ok(&s->fill))
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: fill components must lie in [0, 1]");
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "style: fill components must lie in [0, 1]");
     if ((s->set & CF_STYLE_MARKER_COLOR) && !color_ok(&s->marker_color))
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: marker colour components must lie in "
-                         "[0, 1]");
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "style: marker colour components must lie in "
+                           "[0, 1]");
     if ((s->set & CF_STYLE_WIDTH) && !(isfinite(s->width) && s->width > 0))
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: line width %g must be finite and positive",
-                         s->width);
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "style: line width %g must be finite and positive",
+                           s->width);
     if (s->set & CF_STYLE_DASH) {
         double sum = 0;
         if (s->dash_count > CF_STYLE_DASH_MAX)
-            return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                             "style: %zu dash lengths (at most %d)",
-                             s->dash_count, CF_STYLE_DASH_MAX);
+            return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                               "style: %zu dash lengths (at most %d)",
+                               s->dash_count, CF_STYLE_DASH_MAX);
         for (i = 0; i < s->dash_count; i++) {
             if (!(isfinite(s->dash[i]) && s->dash[i] >= 0))
-                return cf__error(diag, CF_STATUS_INVALID_ARG, (long)i,
-                                 "style: dash length %zu (%g) must be "
-                                 "finite and >= 0", i, s->dash[i]);
+                return cf_diag_set(diag, CF_STATUS_INVALID_ARG, (long)i,
+                                   "style: dash length %zu (%g) must be "
+                                   "finite and >= 0", i, s->dash[i]);
             sum += s->dash[i];
         }
         if (s->dash_count > 0 && !(sum > 0))
-            return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                             "style: dash lengths are all zero");
+            return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                               "style: dash lengths are all zero");
     }
     if ((s->set & CF_STYLE_OPACITY)
         && !(isfinite(s->opacity) && s->opacity >= 0 && s->opacity <= 1))
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: opacity %g must lie in [0, 1]", s->opacity);
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "style: opacity %g must lie in [0, 1]", s->opacity);
     if ((s->set & CF_STYLE_MARKER)
         && ((unsigned)s->marker >= CF_MARKER_LAST_))
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: unknown marker %d", (int)s->marker);
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "style: unknown marker %d", (int)s->marker);
     if ((s->set & CF_STYLE_MARKER_SIZE)
         && !(isfinite(s->marker_size) && s->marker_size >= 0))
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: marker size %g must be finite and >= 0",
-                         s->marker_size);
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "style: marker size %g must be finite and >= 0",
+                           s->marker_size);
     if ((s->set & CF_STYLE_FONT_SIZE)
         && !(isfinite(s->font_size) && s->font_size > 0
              && s->font_size <= 1000))
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: font size %g must lie in (0, 1000] bp",
-                         s->font_size);
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "style: font size %g must lie in (0, 1000] bp",
+                           s->font_size);
     if ((s->set & CF_STYLE_PLACE) && ((unsigned)s->place >= CF_PLACE_LAST_))
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: unknown label place %d", (int)s->place);
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "style: unknown label place %d", (int)s->place);
     if ((s->set & CF_STYLE_OFFSET) && !isfinite(s->offset))
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: label offset is not finite");
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "style: label offset is not finite");
     if ((s->set & CF_STYLE_HALO)
         && !(isfinite(s->halo) && s->halo >= 0 && s->halo <= 100))
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: halo %g must lie in [0, 100] bp", s->halo);
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "style: halo %g must lie in [0, 100] bp", s->halo);
     if ((s->set & CF_STYLE_ARROW_SIZE)
         && !(isfinite(s->arrow_size) && s->arrow_size >= 0))
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "style: arrow size %g must be finite and >= 0",
-                         s->arrow_size);
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "style: arrow size %g must be finite and >= 0",
+                           s->arrow_size);
     return CF_STATUS_OK;
 }
 
@@ -439,137 +440,14 @@ cf_status_t
 cf_theme_get(const char *name, cf_theme_t *out, cf_diag_t *diag)
 {
     if (name == NULL || out == NULL)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "theme name or output is NULL");
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "theme name or output is NULL");
     if (strcmp(name, "default") == 0)
         theme_default(out);
     else if (strcmp(name, "mono") == 0)
         theme_mono(out);
     else
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "unknown theme \"%s\" (use default or mono)", name);
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "unknown theme \"%s\" (use default or mono)", name);
     return CF_STATUS_OK;
-}
-
-/* ---- drawing helpers ---------------------------------------------------- */
-
-void
-cf__set_color(cairo_t *cr, const cf_color_t *c, double opacity)
-{
-    cairo_set_source_rgba(cr, c->r, c->g, c->b, c->a * opacity);
-}
-
-void
-cf__set_line(cairo_t *cr, const cf_style_t *s)
-{
-    cairo_set_line_width(cr, s->width);
-    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
-    if (s->dash_count > 0) {
-        cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
-        cairo_set_dash(cr, s->dash, (int)s->dash_count, 0.0);
-    } else {
-        cairo_set_dash(cr, NULL, 0, 0.0);
-    }
-}
-
-static void
-regular_polygon(cairo_t *cr, double x, double y, double r, int n,
-                double phase, double inner)
-{
-    int i, k = inner > 0 ? 2 * n : n;
-    for (i = 0; i < k; i++) {
-        double a = phase + 2.0 * CF__PI * i / k;
-        double rr = (inner > 0 && (i & 1)) ? inner : r;
-        double px = x + rr * cos(a), py = y - rr * sin(a);
-        if (i == 0)
-            cairo_move_to(cr, px, py);
-        else
-            cairo_line_to(cr, px, py);
-    }
-    cairo_close_path(cr);
-}
-
-void
-cf__draw_marker(cairo_t *cr, const cf_style_t *s, cf_marker_t marker,
-                double x, double y, const double *dir)
-{
-    double r = 0.5 * s->marker_size, op = s->opacity;
-    const cf_color_t *mc = &s->marker_color;
-    bool filled = true;
-
-    if (marker == CF_MARKER_NONE || !(r > 0))
-        return;
-    cairo_save(cr);
-    cairo_set_dash(cr, NULL, 0, 0.0);
-    cairo_new_path(cr);
-    switch (marker) {
-    case CF_MARKER_DOT:
-        cairo_arc(cr, x, y, r, 0, 2 * CF__PI);
-        break;
-    case CF_MARKER_CIRCLE:
-        cairo_arc(cr, x, y, r * 0.85, 0, 2 * CF__PI);
-        filled = false;
-        break;
-    case CF_MARKER_SQUARE:
-        cairo_rectangle(cr, x - 0.85 * r, y - 0.85 * r, 1.7 * r, 1.7 * r);
-        break;
-    case CF_MARKER_DIAMOND:
-        regular_polygon(cr, x, y, 1.1 * r, 4, CF__PI / 2, 0);
-        break;
-    case CF_MARKER_TRIANGLE:
-        regular_polygon(cr, x, y + 0.2 * r, 1.15 * r, 3, CF__PI / 2, 0);
-        break;
-    case CF_MARKER_STAR:
-        regular_polygon(cr, x, y, 1.45 * r, 5, CF__PI / 2, 0.6 * r);
-        break;
-    case CF_MARKER_CROSS:
-    case CF_MARKER_PLUS: {
-        double a = marker == CF_MARKER_CROSS ? CF__PI / 4 : 0;
-        double c = cos(a) * r, sn = sin(a) * r;
-        cairo_move_to(cr, x - c, y - sn);
-        cairo_line_to(cr, x + c, y + sn);
-        cairo_move_to(cr, x + sn, y - c);
-        cairo_line_to(cr, x - sn, y + c);
-        cairo_set_line_width(cr, fmax(0.6, 0.28 * r));
-        cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
-        cf__set_color(cr, mc, op);
-        cairo_stroke(cr);
-        cairo_restore(cr);
-        return;
-    }
-    case CF_MARKER_TICK: {
-        /* a bar across the curve: perpendicular to dir (page coords) */
-        double nx = 0, ny = -1, len;
-        if (dir != NULL) {
-            len = hypot(dir[0], dir[1]);
-            if (len > 0) {
-                nx = -dir[1] / len;
-                ny = dir[0] / len;
-            }
-        }
-        cairo_move_to(cr, x - nx * r, y - ny * r);
-        cairo_line_to(cr, x + nx * r, y + ny * r);
-        cairo_set_line_width(cr, fmax(0.5, s->width));
-        cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
-        cf__set_color(cr, mc, op);
-        cairo_stroke(cr);
-        cairo_restore(cr);
-        return;
-    }
-    default:
-        cairo_restore(cr);
-        return;
-    }
-    if (filled) {
-        cf__set_color(cr, mc, op);
-        cairo_fill(cr);
-    } else {
-        cf__set_color(cr, &s->fill, op);
-        cairo_fill_preserve(cr);
-        cairo_set_line_width(cr, fmax(0.5, 0.3 * r));
-        cf__set_color(cr, mc, op);
-        cairo_stroke(cr);
-    }
-    cairo_restore(cr);
 }

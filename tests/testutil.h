@@ -9,7 +9,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* splitmix64, the generator of bench/BENCHMARKS.md. */
+/* splitmix64, the generator of docs/benchmarks.md. */
 typedef struct tu_rng {
     uint64_t state;
 } tu_rng;

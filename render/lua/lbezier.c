@@ -12,6 +12,7 @@
 #include "curvefig/bezier.h"
 #include "lbezier.h"
 #include "lcommon.h"
+#include "lschema.h"
 
 typedef struct box {
     cf_bezier_t *c;
@@ -29,7 +30,8 @@ cf__lua_new_bezier(lua_State *L)
 cf_bezier_t *
 cf__lua_check_bezier(lua_State *L, int idx)
 {
-    box *b = luaL_checkudata(L, idx, CF__LUA_BEZIER);
+    box *b = idx == 1 ? cf__lua_check_self(L, CF__LUA_BEZIER, "curve")
+                      : luaL_checkudata(L, idx, CF__LUA_BEZIER);
     if (b->c == NULL)
         luaL_error(L, "bezier: the curve was closed");
     return b->c;
@@ -96,7 +98,8 @@ tostring(lua_State *L)
     return 1;
 }
 
-/* bezier{ P0, P1, ... } or bezier{ points = {...}, weights = {...} } */
+/* bezier{ P0, P1, ... } or bezier{ points = {...} }, either with
+** weights = {...} (rational) */
 static int
 l_bezier(lua_State *L)
 {
@@ -107,13 +110,19 @@ l_bezier(lua_State *L)
     cf_status_t st;
     int pidx = 1;
     luaL_checktype(L, 1, LUA_TTABLE);
+    cf__lua_check_table(L, 1, CF__KEYS_BEZIER);
     if (cf__lua_field(L, 1, "points") != LUA_TNIL) {
+        if (lua_rawlen(L, 1) > 0)
+            return luaL_error(L, "bezier: give the points either as the "
+                              "list, bezier{ {x, y}, ... }, or as points = "
+                              "{...}, not both");
         pidx = lua_gettop(L);
-        if (cf__lua_field(L, 1, "weights") != LUA_TNIL) {
-            w = cf__lua_check_numbers(L, -1, "bezier", "weight", &nw);
-        }
     }
-    pts = cf__lua_check_points(L, pidx, "bezier", "point", 1, &n, &dim);
+    if (cf__lua_field(L, 1, "weights") != LUA_TNIL)
+        w = cf__lua_check_numbers(L, -1, "bezier", "weight", &nw);
+    pts = pidx == 1
+              ? cf__lua_check_point_list(L, 1, "bezier", "point", 1, &n, &dim)
+              : cf__lua_check_points(L, pidx, "bezier", "point", 1, &n, &dim);
     if (w != NULL && nw != n)
         return cf__lua_error(L, "bezier: %zu weights given for %zu points",
                              nw, n);

@@ -1,6 +1,6 @@
 /*
-** Lua binding of B-spline and NURBS curves (include/curvefig/bspline.h)
-** and of knot vectors and basis functions (include/curvefig/knots.h).
+** Lua binding of B-spline and NURBS curves (include/curvefig/bspline.h);
+** knot vectors and basis functions are in lknots.c.
 **
 **   bspline{ degree = 2, knots = {...}, points = {...}, weights = {...} }
 **   bspline{ degree = 2, points = {...}, kind = "clamped" | "closed" |
@@ -17,6 +17,10 @@
 #include "lbezier.h"
 #include "lbspline.h"
 #include "lcommon.h"
+#include "lschema.h"
+
+/* nresults, or the error of a failed status */
+#define done cf__lua_done
 
 typedef struct box {
     cf_bspline_t *c;
@@ -34,7 +38,8 @@ cf__lua_new_bspline(lua_State *L)
 cf_bspline_t *
 cf__lua_check_bspline(lua_State *L, int idx)
 {
-    box *b = luaL_checkudata(L, idx, CF__LUA_BSPLINE);
+    box *b = idx == 1 ? cf__lua_check_self(L, CF__LUA_BSPLINE, "curve")
+                      : luaL_checkudata(L, idx, CF__LUA_BSPLINE);
     if (b->c == NULL)
         luaL_error(L, "bspline: the curve was closed");
     return b->c;
@@ -71,17 +76,34 @@ tostring(lua_State *L)
     return 1;
 }
 
-static int
-done(lua_State *L, const char *fn, cf_status_t st, const cf_diag_t *diag,
-     int nresults)
-{
-    if (st != CF_STATUS_OK)
-        return cf__lua_fail(L, fn, st, diag);
-    return nresults;
-}
-
 /* ---- constructors ------------------------------------------------------- */
 
+/* The curve of kind (clamped, closed, uniform) with its own knots. */
+static cf_status_t
+create_kind(lua_State *L, const char *kind, size_t dim, int p,
+            const double *pts, size_t n, const double *w, cf_bspline_t **out,
+            cf_diag_t *diag)
+{
+    cf_status_t st;
+    double *u;
+    if (strcmp(kind, "clamped") == 0)
+        return cf_bspline_create_clamped(dim, p, pts, n, w, out, diag);
+    if (strcmp(kind, "closed") == 0)
+        return cf_bspline_create_closed(dim, p, pts, n, w, out, diag);
+    if (strcmp(kind, "uniform") != 0)
+        return luaL_error(L, "bspline: kind \"%s\": use \"clamped\", "
+                          "\"closed\" or \"uniform\" (or give knots)", kind);
+    u = cf__lua_buffer(L, cf_knots_count(p, n));
+    st = cf_knots_uniform(p, n, 0.0, 1.0, u, diag);
+    if (st == CF_STATUS_OK)
+        st = cf_bspline_create(dim, p, u, cf_knots_count(p, n), pts, n, w,
+                               out, diag);
+    lua_pop(L, 1);
+    return st;
+}
+
+/* bspline{ degree = p, points = {...}, weights = {...}, knots = {...} or
+** kind = "clamped" | "closed" | "uniform" } */
 static int
 l_bspline(lua_State *L)
 {
@@ -91,8 +113,8 @@ l_bspline(lua_State *L)
     int p;
     cf_bspline_t **out;
     cf_diag_t diag;
-    cf_status_t st;
     luaL_checktype(L, 1, LUA_TTABLE);
+    cf__lua_check_table(L, 1, CF__KEYS_BSPLINE);
     cf__lua_field(L, 1, "degree");
     p = cf__lua_check_int(L, -1, "bspline", "degree", 0,
                           CF_BSPLINE_MAX_DEGREE);
@@ -105,30 +127,16 @@ l_bspline(lua_State *L)
                              nw, n);
     if (cf__lua_field(L, 1, "knots") != LUA_TNIL)
         knots = cf__lua_check_numbers(L, -1, "bspline", "knot", &nk);
-    cf__lua_field(L, 1, "kind");
-    kind = luaL_optstring(L, -1, knots != NULL ? "given" : "clamped");
+    if (cf__lua_field(L, 1, "kind") != LUA_TNIL && knots != NULL)
+        return luaL_error(L, "bspline: give either knots or kind");
+    kind = cf__lua_opt_text(L, -1, "bspline", "kind", "clamped");
     out = cf__lua_new_bspline(L);
     cf_diag_clear(&diag);
-    if (knots != NULL) {
-        if (strcmp(kind, "given") != 0)
-            return luaL_error(L, "bspline: give either knots or kind");
-        st = cf_bspline_create(dim, p, knots, nk, pts, n, w, out, &diag);
-    } else if (strcmp(kind, "clamped") == 0) {
-        st = cf_bspline_create_clamped(dim, p, pts, n, w, out, &diag);
-    } else if (strcmp(kind, "closed") == 0) {
-        st = cf_bspline_create_closed(dim, p, pts, n, w, out, &diag);
-    } else if (strcmp(kind, "uniform") == 0) {
-        double *u = cf__lua_buffer(L, cf_knots_count(p, n));
-        st = cf_knots_uniform(p, n, 0.0, 1.0, u, &diag);
-        if (st == CF_STATUS_OK)
-            st = cf_bspline_create(dim, p, u, cf_knots_count(p, n), pts, n, w,
-                                   out, &diag);
-        lua_pop(L, 1);
-    } else {
-        return luaL_error(L, "bspline: kind \"%s\": use \"clamped\", "
-                          "\"closed\" or \"uniform\" (or give knots)", kind);
-    }
-    return done(L, "bspline", st, &diag, 1);
+    if (knots != NULL)
+        return done(L, "bspline", cf_bspline_create(dim, p, knots, nk, pts, n,
+                                                    w, out, &diag), &diag, 1);
+    return done(L, "bspline", create_kind(L, kind, dim, p, pts, n, w, out,
+                                          &diag), &diag, 1);
 }
 
 /* coons{ points = {...}, ends = "plain" | "tripled" | "closed" } */
@@ -142,9 +150,11 @@ l_coons(lua_State *L)
     cf_bspline_t **out;
     cf_diag_t diag;
     luaL_checktype(L, 1, LUA_TTABLE);
+    cf__lua_check_table(L, 1, CF__KEYS_COONS);
     cf__lua_field(L, 1, "points");
     pts = cf__lua_check_points(L, -1, "coons", "point", 1, &n, &dim);
     cf__lua_field(L, 1, "ends");
+    cf__lua_opt_text(L, -1, "coons", "ends", "plain");
     e = luaL_checkoption(L, -1, "plain", ends);
     out = cf__lua_new_bspline(L);
     cf_diag_clear(&diag);
@@ -177,6 +187,7 @@ l_nurbs_arc(lua_State *L)
     cf_bspline_t **out;
     cf_diag_t diag;
     luaL_checktype(L, 1, LUA_TTABLE);
+    cf__lua_check_table(L, 1, CF__KEYS_NURBS_ARC);
     cf__lua_field(L, 1, "center");
     o = cf__lua_check_point(L, -1, "nurbs_arc", "center", &dim);
     if (dim < 2)
@@ -195,7 +206,8 @@ l_nurbs_arc(lua_State *L)
     cf__lua_field(L, 1, "r");
     r = cf__lua_check_finite(L, -1, "nurbs_arc", "r");
     cf__lua_field(L, 1, "from");
-    a0 = luaL_optnumber(L, -1, 0.0);
+    a0 = lua_isnil(L, -1) ? 0.0
+                          : cf__lua_check_finite(L, -1, "nurbs_arc", "from");
     cf__lua_field(L, 1, "to");
     a1 = cf__lua_check_finite(L, -1, "nurbs_arc", "to");
     out = cf__lua_new_bspline(L);
@@ -617,221 +629,11 @@ static const luaL_Reg methods[] = {
     { NULL, NULL },
 };
 
-/* ---- knot vectors and basis functions (global table `knots`) ------------ */
-
-static int
-k_generate(lua_State *L, int clamped)
-{
-    const char *fn = clamped ? "knots.clamped" : "knots.uniform";
-    int p = cf__lua_check_int(L, 1, fn, "degree", 0, CF_BSPLINE_MAX_DEGREE);
-    int n = cf__lua_check_int(L, 2, fn, "number of points", 1, 1 << 20);
-    double a = luaL_optnumber(L, 3, 0.0), b = luaL_optnumber(L, 4, 1.0);
-    size_t m = cf_knots_count(p, (size_t)n);
-    double *u = cf__lua_buffer(L, m);
-    cf_diag_t diag;
-    cf_status_t st;
-    cf_diag_clear(&diag);
-    st = clamped ? cf_knots_clamped_uniform(p, (size_t)n, a, b, u, &diag)
-                 : cf_knots_uniform(p, (size_t)n, a, b, u, &diag);
-    if (st != CF_STATUS_OK)
-        return cf__lua_fail(L, fn, st, &diag);
-    cf__lua_push_numbers(L, u, m);
-    return 1;
-}
-
-static int
-k_uniform(lua_State *L)
-{
-    return k_generate(L, 0);
-}
-
-static int
-k_clamped(lua_State *L)
-{
-    return k_generate(L, 1);
-}
-
-/* knots.averaged(p, params) */
-static int
-k_averaged(lua_State *L)
-{
-    int p = cf__lua_check_int(L, 1, "knots.averaged", "degree", 1,
-                              CF_BSPLINE_MAX_DEGREE);
-    size_t n;
-    double *t = cf__lua_check_numbers(L, 2, "knots.averaged", "parameter",
-                                      &n);
-    double *u = cf__lua_buffer(L, cf_knots_count(p, n));
-    cf_diag_t diag;
-    cf_diag_clear(&diag);
-    if (done(L, "knots.averaged", cf_knots_clamped_averaged(p, n, t, u,
-                                                            &diag),
-             &diag, 1) != 1)
-        return 0;
-    cf__lua_push_numbers(L, u, cf_knots_count(p, n));
-    return 1;
-}
-
-/* knots.validate(p, npoints, U) -> true or false, message */
-static int
-k_validate(lua_State *L)
-{
-    int p = (int)luaL_checkinteger(L, 1);
-    lua_Integer np = luaL_checkinteger(L, 2);
-    size_t m;
-    double *u = cf__lua_check_numbers(L, 3, "knots.validate", "knot", &m);
-    cf_diag_t diag;
-    cf_diag_clear(&diag);
-    if (np < 0 || cf_knots_validate(p, (size_t)np, u, m, &diag)) {
-        lua_pushboolean(L, 0);
-        lua_pushstring(L, np < 0 ? "negative number of points" : diag.msg);
-        return 2;
-    }
-    lua_pushboolean(L, 1);
-    return 1;
-}
-
-static int
-k_multiplicity(lua_State *L)
-{
-    size_t m;
-    double *u = cf__lua_check_numbers(L, 1, "knots.multiplicity", "knot", &m);
-    double x = cf__lua_check_finite(L, 2, "knots.multiplicity", "u");
-    lua_pushinteger(L, cf_knots_multiplicity(u, m, x));
-    return 1;
-}
-
-/* A knot vector valid for degree p (for the queries that do not check). */
-static double *
-valid_knots(lua_State *L, int pidx, int uidx, const char *fn, int *p,
-            size_t *m)
-{
-    double *u;
-    cf_diag_t diag;
-    *p = cf__lua_check_int(L, pidx, fn, "degree", 0, CF_BSPLINE_MAX_DEGREE);
-    u = cf__lua_check_numbers(L, uidx, fn, "knot", m);
-    cf_diag_clear(&diag);
-    if (*m < 2 * (size_t)*p + 2)
-        cf__lua_error(L, "%s: %zu knots; degree %d needs at least %d", fn, *m,
-                      *p, 2 * *p + 2);
-    if (cf_knots_validate(*p, *m - (size_t)*p - 1, u, *m, &diag))
-        cf__lua_fail(L, fn, diag.status, &diag);
-    return u;
-}
-
-/* knots.span(p, U, u) -> k */
-static int
-k_span(lua_State *L)
-{
-    int p;
-    size_t m;
-    double *u = valid_knots(L, 1, 2, "knots.span", &p, &m);
-    double x = cf__lua_check_finite(L, 3, "knots.span", "u");
-    lua_pushinteger(L, (lua_Integer)cf_knots_find_span(p, u, m, x));
-    return 1;
-}
-
-static int
-k_domain(lua_State *L)
-{
-    int p;
-    size_t m;
-    double *u = valid_knots(L, 1, 2, "knots.domain", &p, &m), a, b;
-    cf_knots_domain(p, u, m, &a, &b);
-    lua_pushnumber(L, a);
-    lua_pushnumber(L, b);
-    return 2;
-}
-
-static int
-k_kind(lua_State *L)
-{
-    int p;
-    size_t m;
-    double *u = valid_knots(L, 1, 2, "knots.kind", &p, &m);
-    lua_pushstring(L, cf_knot_kind_to_string(cf_knots_classify(p, u, m)));
-    return 1;
-}
-
-static int
-k_count(lua_State *L)
-{
-    int p = cf__lua_check_int(L, 1, "knots.count", "degree", 0,
-                              CF_BSPLINE_MAX_DEGREE);
-    int n = cf__lua_check_int(L, 2, "knots.count", "number of points", 0,
-                              1 << 20);
-    lua_pushinteger(L, (lua_Integer)cf_knots_count(p, (size_t)n));
-    return 1;
-}
-
-/* basis(U, i, p, u [, k]) -> N_i^p(u) (k given: { N, N', ..., N^(k) }) */
-static int
-l_basis(lua_State *L)
-{
-    lua_settop(L, 5);
-    size_t m;
-    double *u = cf__lua_check_numbers(L, 1, "basis", "knot", &m);
-    int i = cf__lua_check_int(L, 2, "basis", "i", 0, 1 << 20);
-    int p = cf__lua_check_int(L, 3, "basis", "p", 0, CF_BSPLINE_MAX_DEGREE);
-    double x = cf__lua_check_finite(L, 4, "basis", "u"), v;
-    cf_diag_t diag;
-    cf_diag_clear(&diag);
-    if (!lua_isnoneornil(L, 5)) {
-        int k = cf__lua_check_int(L, 5, "basis", "k", 0, 64);
-        double *d = cf__lua_buffer(L, (size_t)k + 1);
-        if (done(L, "basis", cf_basis_one_ders(i, p, u, m, x, k, d, &diag),
-                 &diag, 1) != 1)
-            return 0;
-        cf__lua_push_numbers(L, d, (size_t)k + 1);
-        return 1;
-    }
-    if (done(L, "basis", cf_basis_one(i, p, u, m, x, &v, &diag), &diag, 1) !=
-        1)
-        return 0;
-    lua_pushnumber(L, v);
-    return 1;
-}
-
-/* basis_funs(U, p, u) -> span k, { N_{k-p}^p(u), ..., N_k^p(u) } */
-static int
-l_basis_funs(lua_State *L)
-{
-    lua_settop(L, 3);
-    size_t m, span;
-    double *u = cf__lua_check_numbers(L, 1, "basis_funs", "knot", &m);
-    int p = cf__lua_check_int(L, 2, "basis_funs", "p", 0,
-                              CF_BSPLINE_MAX_DEGREE);
-    double x = cf__lua_check_finite(L, 3, "basis_funs", "u");
-    double *N = cf__lua_buffer(L, (size_t)p + 1);
-    cf_diag_t diag;
-    cf_diag_clear(&diag);
-    if (done(L, "basis_funs", cf_basis_funs(p, u, m, x, &span, N, &diag),
-             &diag, 1) != 1)
-        return 0;
-    lua_pushinteger(L, (lua_Integer)span);
-    cf__lua_push_numbers(L, N, (size_t)p + 1);
-    return 2;
-}
-
-static const luaL_Reg knots_lib[] = {
-    { "uniform", k_uniform },
-    { "clamped", k_clamped },
-    { "averaged", k_averaged },
-    { "validate", k_validate },
-    { "multiplicity", k_multiplicity },
-    { "span", k_span },
-    { "domain", k_domain },
-    { "kind", k_kind },
-    { "count", k_count },
-    { NULL, NULL },
-};
-
 static const luaL_Reg globals[] = {
     { "bspline", l_bspline },
     { "coons", l_coons },
     { "nurbs_circle", l_nurbs_circle },
     { "nurbs_arc", l_nurbs_arc },
-    { "basis", l_basis },
-    { "basis_funs", l_basis_funs },
     { NULL, NULL },
 };
 
@@ -842,6 +644,4 @@ cf__lua_open_bspline(lua_State *L)
     lua_pushglobaltable(L);
     luaL_setfuncs(L, globals, 0);
     lua_pop(L, 1);
-    luaL_newlib(L, knots_lib);
-    lua_setglobal(L, "knots");
 }

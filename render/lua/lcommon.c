@@ -13,6 +13,9 @@
 ** (and keeps n * dim * sizeof(double) far from overflow). */
 #define MAX_ITEMS ((size_t)1 << 26)
 
+/* What check_len refuses besides entries 1..n */
+enum { LIST, ONE_POINT, NAMES_CHECKED };
+
 int
 cf__lua_error(lua_State *L, const char *fmt, ...)
 {
@@ -32,8 +35,33 @@ cf__lua_buffer(lua_State *L, size_t n)
     return lua_newuserdatauv(L, (n ? n : 1) * sizeof(double), 0);
 }
 
+/* A list takes no names: an entry of the table at idx whose key is not
+** one of 1..n is refused (one = true: the table is one point). */
+static void
+refuse_names(lua_State *L, int idx, lua_Integer n, const char *fn,
+             const char *what, bool one)
+{
+    lua_pushnil(L);
+    while (lua_next(L, idx) != 0) {
+        lua_Integer k;
+        lua_pop(L, 1);
+        k = lua_isinteger(L, -1) ? lua_tointeger(L, -1) : 0;
+        if (k >= 1 && k <= n)
+            continue;
+        if (lua_type(L, -1) == LUA_TSTRING)
+            luaL_error(L, "%s: %s%s%s has an entry named '%s'; %s", fn,
+                       one ? "" : "the ", what, one ? "" : " list",
+                       lua_tostring(L, -1),
+                       one ? "a point is {x, y, ...}"
+                           : "a list takes no names (options go in the "
+                             "table after it)");
+        luaL_error(L, "%s: %s%s%s has an entry outside 1..%d", fn,
+                   one ? "" : "the ", what, one ? "" : " list", (int)n);
+    }
+}
+
 static size_t
-check_len(lua_State *L, int idx, const char *fn, const char *what)
+check_len(lua_State *L, int idx, const char *fn, const char *what, int names)
 {
     lua_Integer n;
     if (!lua_istable(L, idx))
@@ -43,35 +71,44 @@ check_len(lua_State *L, int idx, const char *fn, const char *what)
     if (n < 0 || (lua_Unsigned)n > MAX_ITEMS)
         cf__lua_error(L, "%s: %s has %lld entries; too many", fn, what,
                       (long long)n);
+    if (names != NAMES_CHECKED)
+        refuse_names(L, idx, n, fn, what, names == ONE_POINT);
     return (size_t)n;
 }
 
+/* Coordinate k of the point at tbl: point i (counted from 1) of a list,
+** or the one point when i is 0. */
 static double
 coord(lua_State *L, int tbl, lua_Integer k, const char *fn, const char *what,
       size_t i)
 {
     int isnum;
     double v;
+    char point[80];
+    if (i > 0)
+        snprintf(point, sizeof point, "%s %zu", what, i);
+    else
+        snprintf(point, sizeof point, "%s", what);
     lua_geti(L, tbl, k);
     v = (double)lua_tonumberx(L, -1, &isnum);
     if (!isnum)
-        cf__lua_error(L, "%s: %s %zu coordinate %d is %s, not a number", fn,
-                      what, i, (int)k, luaL_typename(L, -1));
+        cf__lua_error(L, "%s: %s coordinate %d is %s, not a number", fn,
+                      point, (int)k, luaL_typename(L, -1));
     if (!isfinite(v))
-        cf__lua_error(L, "%s: %s %zu coordinate %d is %g; coordinates must be "
-                      "finite", fn, what, i, (int)k, v);
+        cf__lua_error(L, "%s: %s coordinate %d is %g; coordinates must be "
+                      "finite", fn, point, (int)k, v);
     lua_pop(L, 1);
     return v;
 }
 
-double *
-cf__lua_check_points(lua_State *L, int idx, const char *fn, const char *what,
-                     size_t min, size_t *count, size_t *dim)
+static double *
+check_points(lua_State *L, int idx, const char *fn, const char *what,
+             size_t min, size_t *count, size_t *dim, int names)
 {
     size_t n, d = 0;
     double *buf;
     idx = lua_absindex(L, idx);
-    n = check_len(L, idx, fn, what);
+    n = check_len(L, idx, fn, what, names);
     if (n < min)
         cf__lua_error(L, "%s: %zu %s%s given, at least %zu needed", fn, n,
                       what, n == 1 ? "" : "s", min);
@@ -80,16 +117,18 @@ cf__lua_check_points(lua_State *L, int idx, const char *fn, const char *what,
         lua_geti(L, idx, (lua_Integer)i + 1);
         if (!lua_istable(L, -1))
             cf__lua_error(L, "%s: %s %zu must be a table {x, y, ...}, "
-                          "got %s", fn, what, i, luaL_typename(L, -1));
+                          "got %s", fn, what, i + 1, luaL_typename(L, -1));
         di = (size_t)luaL_len(L, -1);
+        refuse_names(L, lua_gettop(L), (lua_Integer)di, fn, what, true);
         lua_pop(L, 1);
         if (di < 1)
-            cf__lua_error(L, "%s: %s %zu has no coordinates", fn, what, i);
+            cf__lua_error(L, "%s: %s %zu has no coordinates", fn, what,
+                          i + 1);
         if (i == 0)
             d = di;
         else if (di != d)
-            cf__lua_error(L, "%s: %s %zu has %zu coordinates, %s 0 has %zu",
-                          fn, what, i, di, what, d);
+            cf__lua_error(L, "%s: %s %zu has %zu coordinates, %s 1 has %zu",
+                          fn, what, i + 1, di, what, d);
     }
     if (n > 0 && d > 64)
         cf__lua_error(L, "%s: points with %zu coordinates; at most 64", fn, d);
@@ -98,12 +137,27 @@ cf__lua_check_points(lua_State *L, int idx, const char *fn, const char *what,
         lua_geti(L, idx, (lua_Integer)i + 1);
         for (size_t k = 0; k < d; k++)
             buf[i * d + k] = coord(L, lua_gettop(L), (lua_Integer)k + 1, fn,
-                                   what, i);
+                                   what, i + 1);
         lua_pop(L, 1);
     }
     *count = n;
     *dim = d;
     return buf;
+}
+
+double *
+cf__lua_check_points(lua_State *L, int idx, const char *fn, const char *what,
+                     size_t min, size_t *count, size_t *dim)
+{
+    return check_points(L, idx, fn, what, min, count, dim, LIST);
+}
+
+double *
+cf__lua_check_point_list(lua_State *L, int idx, const char *fn,
+                         const char *what, size_t min, size_t *count,
+                         size_t *dim)
+{
+    return check_points(L, idx, fn, what, min, count, dim, NAMES_CHECKED);
 }
 
 double *
@@ -113,7 +167,7 @@ cf__lua_check_point(lua_State *L, int idx, const char *fn, const char *what,
     size_t d;
     double *buf;
     idx = lua_absindex(L, idx);
-    d = check_len(L, idx, fn, what);
+    d = check_len(L, idx, fn, what, ONE_POINT);
     if (d < 1)
         luaL_error(L, "%s: %s has no coordinates", fn, what);
     if (*dim != 0 && d != *dim)
@@ -133,18 +187,18 @@ cf__lua_check_numbers(lua_State *L, int idx, const char *fn, const char *what,
     size_t n;
     double *buf;
     idx = lua_absindex(L, idx);
-    n = check_len(L, idx, fn, what);
+    n = check_len(L, idx, fn, what, LIST);
     buf = cf__lua_buffer(L, n);
     for (size_t i = 0; i < n; i++) {
         int isnum;
         lua_geti(L, idx, (lua_Integer)i + 1);
         buf[i] = (double)lua_tonumberx(L, -1, &isnum);
         if (!isnum)
-            cf__lua_error(L, "%s: %s %zu is %s, not a number", fn, what, i,
-                          luaL_typename(L, -1));
+            cf__lua_error(L, "%s: %s %zu is %s, not a number", fn, what,
+                          i + 1, luaL_typename(L, -1));
         if (!isfinite(buf[i]))
             cf__lua_error(L, "%s: %s %zu is %g; it must be finite", fn, what,
-                          i, buf[i]);
+                          i + 1, buf[i]);
         lua_pop(L, 1);
     }
     *count = n;
@@ -192,6 +246,30 @@ cf__lua_opt_int(lua_State *L, int idx, const char *fn, const char *what,
     return cf__lua_check_int(L, idx, fn, what, lo, hi);
 }
 
+const char *
+cf__lua_opt_text(lua_State *L, int idx, const char *fn, const char *what,
+                 const char *def)
+{
+    if (lua_isnoneornil(L, idx) && def != NULL)
+        return def;
+    if (!lua_isstring(L, idx))
+        luaL_error(L, "%s: %s must be a string, got %s", fn, what,
+                   luaL_typename(L, idx));
+    return lua_tostring(L, idx);
+}
+
+bool
+cf__lua_opt_bool_arg(lua_State *L, int idx, const char *fn, const char *what,
+                     bool def)
+{
+    if (lua_isnoneornil(L, idx))
+        return def;
+    if (!lua_isboolean(L, idx))
+        luaL_error(L, "%s: %s is true or false, got %s", fn, what,
+                   luaL_typename(L, idx));
+    return lua_toboolean(L, idx);
+}
+
 void
 cf__lua_push_point(lua_State *L, const double *p, size_t dim)
 {
@@ -232,6 +310,14 @@ cf__lua_field(lua_State *L, int idx, const char *key)
     return lua_getfield(L, idx, key);
 }
 
+bool
+cf__lua_memory_exceeded(lua_State *L)
+{
+    void *ud = NULL;
+    lua_getallocf(L, &ud);
+    return ud != NULL && ((const cf__lua_budget_t *)ud)->memory_exceeded;
+}
+
 int
 cf__lua_fail(lua_State *L, const char *fn, cf_status_t status,
              const cf_diag_t *diag)
@@ -246,6 +332,15 @@ cf__lua_fail(lua_State *L, const char *fn, cf_status_t status,
         return luaL_error(L, "%s: %s", fn, diag->msg);
     }
     return luaL_error(L, "%s: %s", fn, cf_status_to_string(status));
+}
+
+int
+cf__lua_done(lua_State *L, const char *fn, cf_status_t status,
+             const cf_diag_t *diag, int nresults)
+{
+    if (status != CF_STATUS_OK)
+        return cf__lua_fail(L, fn, status, diag);
+    return nresults;
 }
 
 /* ---- holders ------------------------------------------------------------ */

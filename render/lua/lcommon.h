@@ -7,6 +7,8 @@
 #ifndef CURVEFIG_RENDER_LUA_LCOMMON_H
 #define CURVEFIG_RENDER_LUA_LCOMMON_H
 
+#include <stdbool.h>
+
 #include <lauxlib.h>
 #include <lua.h>
 
@@ -36,10 +38,18 @@ double *cf__lua_buffer(lua_State *L, size_t n);
 ** Pushes a scratch buffer holding them interleaved; *count and *dim
 ** receive their number and dimension.  fn names the calling function in
 ** messages ("bezier: point 3 has 3 coordinates, point 1 has 2"). min is
-** the least number of points accepted. */
+** the least number of points accepted.  A list takes no names: an entry
+** other than 1..n of the list, or of one of its points, is refused ("the
+** point list has an entry named 'closed'"); so in the other readers
+** of lists and points below. */
 double *cf__lua_check_points(lua_State *L, int idx, const char *fn,
                              const char *what, size_t min, size_t *count,
                              size_t *dim);
+/* The same for the list part of a table whose names its function has
+** checked (bezier{ P0, P1, weights = {...} }). */
+double *cf__lua_check_point_list(lua_State *L, int idx, const char *fn,
+                                 const char *what, size_t min,
+                                 size_t *count, size_t *dim);
 /* One point {x, y, ...} of dimension dim (0: any, then *dim is set). */
 double *cf__lua_check_point(lua_State *L, int idx, const char *fn,
                             const char *what, size_t *dim);
@@ -54,6 +64,14 @@ int cf__lua_check_int(lua_State *L, int idx, const char *fn,
                       const char *what, int lo, int hi);
 int cf__lua_opt_int(lua_State *L, int idx, const char *fn, const char *what,
                     int lo, int hi, int def);
+/* A string (or a number, as text) argument; def when nil or none (def
+** NULL: required).  "bspline: kind must be a string, got table". */
+const char *cf__lua_opt_text(lua_State *L, int idx, const char *fn,
+                             const char *what, const char *def);
+/* true or false (nil or none: def); another value is refused, not read as
+** Lua's truth ("closed = 'no'" is no longer true). */
+bool cf__lua_opt_bool_arg(lua_State *L, int idx, const char *fn,
+                          const char *what, bool def);
 
 void cf__lua_push_point(lua_State *L, const double *p, size_t dim);
 void cf__lua_push_points(lua_State *L, const double *p, size_t count,
@@ -66,6 +84,10 @@ int cf__lua_field(lua_State *L, int idx, const char *key);
 /* Raise "fn: message" for a failed status, with the script's position. */
 int cf__lua_fail(lua_State *L, const char *fn, cf_status_t status,
                  const cf_diag_t *diag);
+
+/* nresults when status is OK; otherwise the error of cf__lua_fail. */
+int cf__lua_done(lua_State *L, const char *fn, cf_status_t status,
+                 const cf_diag_t *diag, int nresults);
 
 /* A holder: a userdata that frees a library object in __gc unless it was
 ** released.  Push one, store the object in *slot, and call
@@ -82,12 +104,20 @@ void cf__lua_new_class(lua_State *L, const char *name, const luaL_Reg *methods,
 /* The openers (each sets its globals in the state). */
 void cf__lua_open_bezier(lua_State *L);
 void cf__lua_open_bernstein(lua_State *L);
+void cf__lua_open_knots(lua_State *L);
 void cf__lua_open_offset(lua_State *L);
 void cf__lua_open_interp(lua_State *L);
 void cf__lua_open_conic(lua_State *L);
 
-/* The budget hook the script module installs; the bindings map a
-** NO_MEMORY status to the memory-limit message through it. */
-int cf__lua_memory_exceeded(lua_State *L);
+/* The allocator's user data of every state the script module makes
+** (script.c) begins with this: the bindings tell the memory limit from
+** another failure by it, without calling up into the script module. */
+typedef struct cf__lua_budget {
+    bool memory_exceeded; /* the script's memory limit was reached */
+} cf__lua_budget_t;
+
+/* True when the state's memory limit was reached (a NO_MEMORY status is
+** then reported as "out of memory" for the limit's message). */
+bool cf__lua_memory_exceeded(lua_State *L);
 
 #endif

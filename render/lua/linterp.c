@@ -21,6 +21,7 @@
 #include "lbezier.h"
 #include "lbspline.h"
 #include "lcommon.h"
+#include "lschema.h"
 
 /* The options shared by interpolate and approximate; tangents and params
 ** stay in Lua-owned buffers on the stack. */
@@ -32,11 +33,12 @@ read_options(lua_State *L, const char *fn, size_t dim, size_t count,
     cf_interp_options_init(opt);
     cf_diag_clear(&diag);
     if (cf__lua_field(L, 1, "method") != LUA_TNIL &&
-        cf_interp_method_from_string(luaL_checkstring(L, -1), &opt->method,
-                                     &diag))
+        cf_interp_method_from_string(
+            cf__lua_opt_text(L, -1, fn, "method", NULL), &opt->method, &diag))
         luaL_error(L, "%s: method: %s", fn, diag.msg);
     if (cf__lua_field(L, 1, "param") != LUA_TNIL &&
-        cf_param_from_string(luaL_checkstring(L, -1), &opt->param, &diag))
+        cf_param_from_string(cf__lua_opt_text(L, -1, fn, "param", NULL),
+                             &opt->param, &diag))
         luaL_error(L, "%s: param: %s", fn, diag.msg);
     if (cf__lua_field(L, 1, "degree") != LUA_TNIL)
         opt->degree = cf__lua_check_int(L, -1, fn, "degree", 0,
@@ -46,7 +48,7 @@ read_options(lua_State *L, const char *fn, size_t dim, size_t count,
         opt->param = CF_PARAM_POWER;
     }
     if (cf__lua_field(L, 1, "closed") != LUA_TNIL)
-        opt->closed = lua_toboolean(L, -1);
+        opt->closed = cf__lua_opt_bool_arg(L, -1, fn, "closed", false);
     if (cf__lua_field(L, 1, "params") != LUA_TNIL) {
         size_t n;
         opt->params = cf__lua_check_numbers(L, -1, fn, "parameter", &n);
@@ -72,6 +74,7 @@ l_interpolate(lua_State *L)
     cf_diag_t diag;
     lua_settop(L, 1);
     luaL_checktype(L, 1, LUA_TTABLE);
+    cf__lua_check_table(L, 1, CF__KEYS_INTERPOLATE);
     cf__lua_field(L, 1, "points");
     pts = cf__lua_check_points(L, -1, "interpolate", "point", 1, &n, &dim);
     read_options(L, "interpolate", dim, n, &opt);
@@ -94,12 +97,13 @@ l_approximate(lua_State *L)
     bool fix = true;
     lua_settop(L, 1);
     luaL_checktype(L, 1, LUA_TTABLE);
+    cf__lua_check_table(L, 1, CF__KEYS_APPROXIMATE);
     cf__lua_field(L, 1, "points");
     pts = cf__lua_check_points(L, -1, "approximate", "point", 1, &n, &dim);
     cf__lua_field(L, 1, "count");
     ncontrol = cf__lua_check_int(L, -1, "approximate", "count", 1, 1 << 20);
     if (cf__lua_field(L, 1, "fix_ends") != LUA_TNIL)
-        fix = lua_toboolean(L, -1);
+        fix = cf__lua_opt_bool_arg(L, -1, "approximate", "fix_ends", true);
     read_options(L, "approximate", dim, n, &opt);
     out = cf__lua_new_bspline(L);
     cf_diag_clear(&diag);
@@ -125,7 +129,7 @@ l_parameters(lua_State *L)
     if (!lua_isnil(L, 2) &&
         cf_param_from_string(luaL_checkstring(L, 2), &param, &diag))
         return luaL_error(L, "parameters: %s", diag.msg);
-    closed = lua_toboolean(L, 3);
+    closed = cf__lua_opt_bool_arg(L, 3, "parameters", "closed", false);
     u = cf__lua_buffer(L, n + 1);
     if (cf_interp_parameters(dim, pts, n, param, 0.5, closed, u, &diag))
         return cf__lua_fail(L, "parameters", diag.status, &diag);
@@ -219,9 +223,11 @@ l_coons_chain(lua_State *L)
     cf_status_t st;
     lua_settop(L, 1);
     luaL_checktype(L, 1, LUA_TTABLE);
+    cf__lua_check_table(L, 1, CF__KEYS_COONS_CHAIN);
     cf__lua_field(L, 1, "points");
     p = cf__lua_check_points(L, -1, "coons_chain", "point", 1, &n, &dim);
     cf__lua_field(L, 1, "ends");
+    cf__lua_opt_text(L, -1, "coons_chain", "ends", "plain");
     e = luaL_checkoption(L, -1, "plain", ends);
     slot = cf__lua_holder(L, free_list);
     cf_diag_clear(&diag);

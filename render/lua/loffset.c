@@ -20,6 +20,7 @@
 #include "lbezier.h"
 #include "lbspline.h"
 #include "lcommon.h"
+#include "lschema.h"
 
 static void
 read_options(lua_State *L, int idx, cf_offset_options_t *opt)
@@ -28,12 +29,13 @@ read_options(lua_State *L, int idx, cf_offset_options_t *opt)
     cf_offset_options_init(opt);
     if (lua_isnoneornil(L, idx))
         return;
-    luaL_checktype(L, idx, LUA_TTABLE);
+    cf__lua_check_table(L, idx, CF__KEYS_OFFSET);
     if (cf__lua_field(L, idx, "tolerance") != LUA_TNIL)
         opt->tolerance = cf__lua_check_finite(L, -1, "offset", "tolerance");
     if (cf__lua_field(L, idx, "trim") != LUA_TNIL)
-        opt->trim = lua_toboolean(L, -1);
-    if (cf__lua_field(L, idx, "method") != LUA_TNIL)
+        opt->trim = cf__lua_opt_bool_arg(L, -1, "offset", "trim", false);
+    if (cf__lua_field(L, idx, "method") != LUA_TNIL &&
+        cf__lua_opt_text(L, -1, "offset", "method", NULL) != NULL)
         opt->method = (cf_offset_method_t)luaL_checkoption(L, -1, NULL,
                                                            methods);
     lua_pop(L, 3);
@@ -80,6 +82,47 @@ push_report(lua_State *L, const cf_offset_report_t *r)
     set_count(L, "trimmed_segments", r->trimmed_segments);
 }
 
+/* The offset of the B-spline at 1, through its Bézier pieces. */
+static cf_status_t
+bspline_offset(lua_State *L, double d, const cf_offset_options_t *opt,
+               cf_cubics_t **raw, cf_cubics_list_t **trimmed,
+               cf_offset_report_t *rep, cf_diag_t *diag)
+{
+    cf_bspline_t *s = cf__lua_check_bspline(L, 1);
+    void **slot = cf__lua_holder(L, free_bezier_list);
+    cf_bezier_list_t *list = NULL;
+    cf_status_t st = cf_bspline_to_beziers(s, &list, diag);
+    *slot = list;
+    if (st != CF_STATUS_OK)
+        return st;
+    return cf_bezier_list_offset(list, d, opt, raw, trimmed, rep, diag);
+}
+
+/* Push all the pieces of the trimmed chains (with .chains and .report),
+** the report and the chains. */
+static int
+push_trimmed(lua_State *L, const cf_cubics_list_t *trimmed,
+             const cf_offset_report_t *rep)
+{
+    lua_newtable(L);                                     /* all pieces */
+    lua_createtable(L, (int)trimmed->count, 0);          /* chains */
+    for (size_t i = 0; i < trimmed->count; i++) {
+        cf__lua_push_cubics(L, trimmed->chains[i]);
+        for (lua_Integer k = 1; k <= (lua_Integer)lua_rawlen(L, -1); k++) {
+            lua_rawgeti(L, -1, k);
+            lua_rawseti(L, -4, (lua_Integer)lua_rawlen(L, -4) + 1);
+        }
+        lua_rawseti(L, -2, (lua_Integer)i + 1);
+    }
+    lua_pushvalue(L, -1);
+    lua_setfield(L, -3, "chains");                       /* all.chains */
+    push_report(L, rep);
+    lua_pushvalue(L, -1);
+    lua_setfield(L, -4, "report");                       /* all.report */
+    lua_insert(L, -2);
+    return 3;                                  /* all, report, chains */
+}
+
 /* c:offset(d, opts) for a Bézier (c at 1) or a B-spline (its pieces). */
 static int
 m_offset(lua_State *L)
@@ -98,20 +141,12 @@ m_offset(lua_State *L)
     raw_slot = cf__lua_holder(L, free_cubics);           /* 4 */
     trim_slot = cf__lua_holder(L, free_cubics_list);     /* 5 */
     cf_diag_clear(&diag);
-    if (bz != NULL) {
+    if (bz != NULL)
         st = cf_bezier_offset(bz, d, &opt, &raw, opt.trim ? &trimmed : NULL,
                               &rep, &diag);
-    } else {
-        cf_bspline_t *s = cf__lua_check_bspline(L, 1);
-        void **slot = cf__lua_holder(L, free_bezier_list);
-        cf_bezier_list_t *list = NULL;
-        st = cf_bspline_to_beziers(s, &list, &diag);
-        *slot = list;
-        if (st == CF_STATUS_OK)
-            st = cf_bezier_list_offset(list, d, &opt, &raw,
-                                       opt.trim ? &trimmed : NULL, &rep,
-                                       &diag);
-    }
+    else
+        st = bspline_offset(L, d, &opt, &raw, opt.trim ? &trimmed : NULL,
+                            &rep, &diag);
     *raw_slot = raw;
     *trim_slot = trimmed;
     if (st != CF_STATUS_OK)
@@ -123,23 +158,7 @@ m_offset(lua_State *L)
         lua_setfield(L, -3, "report");
         return 2;
     }
-    lua_newtable(L);                                     /* all pieces */
-    lua_createtable(L, (int)trimmed->count, 0);          /* chains */
-    for (size_t i = 0; i < trimmed->count; i++) {
-        cf__lua_push_cubics(L, trimmed->chains[i]);
-        for (lua_Integer k = 1; k <= (lua_Integer)lua_rawlen(L, -1); k++) {
-            lua_rawgeti(L, -1, k);
-            lua_rawseti(L, -4, (lua_Integer)lua_rawlen(L, -4) + 1);
-        }
-        lua_rawseti(L, -2, (lua_Integer)i + 1);
-    }
-    lua_pushvalue(L, -1);
-    lua_setfield(L, -3, "chains");                       /* all.chains */
-    push_report(L, &rep);
-    lua_pushvalue(L, -1);
-    lua_setfield(L, -4, "report");                       /* all.report */
-    lua_insert(L, -2);
-    return 3;                                  /* all, report, chains */
+    return push_trimmed(L, trimmed, &rep);
 }
 
 /* c:offset_point(t, d) -> c(t) + d n(t) */

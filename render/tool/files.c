@@ -1,7 +1,9 @@
 /*
 ** Output files of the tool: directories, atomic writes, render manifests
-** and the HTML gallery that `ninja figures` builds from them.
+** and the HTML gallery that `ninja figures` builds from them; directory
+** listings.
 */
+#include <dirent.h>
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
@@ -140,8 +142,8 @@ cf__tool_manifest_line(FILE *f, const char *name, const char *caption,
 
 /* ---- the gallery -------------------------------------------------------- */
 
-static void
-put_html(FILE *f, const char *s, size_t n)
+void
+cf__tool_put_html(FILE *f, const char *s, size_t n)
 {
     for (size_t i = 0; i < n && s[i] != '\0'; i++) {
         switch (s[i]) {
@@ -191,26 +193,26 @@ gallery_entry(FILE *out, char *line, char *group, size_t group_size)
     if (strlen(group) != plen || strncmp(group, name, plen) != 0) {
         snprintf(group, group_size, "%.*s", (int)plen, name);
         fputs("<h2>", out);
-        put_html(out, group, plen);
+        cf__tool_put_html(out, group, plen);
         fputs("</h2>\n", out);
     }
     fputs("<figure id=\"", out);
-    put_html(out, name, strlen(name));
+    cf__tool_put_html(out, name, strlen(name));
     fputs("\">", out);
     if (strstr(fmts, "svg") != NULL || strstr(fmts, "png") != NULL) {
         const char *img = strstr(fmts, "svg") != NULL ? "svg" : "png";
         fputs("<a href=\"", out);
-        put_html(out, name, strlen(name));
+        cf__tool_put_html(out, name, strlen(name));
         fprintf(out, ".%s\"><img src=\"", img);
-        put_html(out, name, strlen(name));
+        cf__tool_put_html(out, name, strlen(name));
         fprintf(out, ".%s\" alt=\"", img);
-        put_html(out, cap, strlen(cap));
+        cf__tool_put_html(out, cap, strlen(cap));
         fputs("\" loading=\"lazy\"></a>", out);
     }
     fputs("\n<figcaption><b>", out);
-    put_html(out, name, strlen(name));
+    cf__tool_put_html(out, name, strlen(name));
     fputs("</b> ", out);
-    put_html(out, cap, strlen(cap));
+    cf__tool_put_html(out, cap, strlen(cap));
     fputs("<br>", out);
     for (char *f = strtok(fmts, ","); f != NULL; f = strtok(NULL, ",")) {
         char upper[8];
@@ -219,7 +221,7 @@ gallery_entry(FILE *out, char *line, char *group, size_t group_size)
             upper[k] = (char)(f[k] >= 'a' && f[k] <= 'z' ? f[k] - 32 : f[k]);
         upper[k] = '\0';
         fputs(" <a href=\"", out);
-        put_html(out, name, strlen(name));
+        cf__tool_put_html(out, name, strlen(name));
         fprintf(out, ".%s\">%s</a>", f, upper);
     }
     fputs("</figcaption></figure>\n", out);
@@ -261,4 +263,67 @@ cf__tool_gallery(const char *out_path, const char *title,
         return 1;
     }
     return 0;
+}
+
+/* ---- directory listings ------------------------------------------------- */
+
+static int
+by_name(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+void
+cf__tool_free_list(char **list, size_t count)
+{
+    for (size_t i = 0; i < count; i++)
+        free(list[i]);
+    free(list);
+}
+
+char **
+cf__tool_list_dir(const char *dir, const char *suffix, size_t *count)
+{
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    char **list = NULL;
+    size_t n = 0, cap = 0, m = strlen(suffix);
+    *count = 0;
+    if (d == NULL)
+        return NULL;
+    while ((e = readdir(d)) != NULL) {
+        size_t len = strlen(e->d_name);
+        char *name;
+        if (e->d_name[0] == '.' || len <= m ||
+            strcmp(e->d_name + len - m, suffix) != 0)
+            continue;
+        if (n == cap) {
+            char **more = realloc(list, (cap ? 2 * cap : 16) * sizeof *list);
+            if (more == NULL)
+                goto fail;
+            list = more;
+            cap = cap ? 2 * cap : 16;
+        }
+        name = malloc(len - m + 1);
+        if (name == NULL)
+            goto fail;
+        memcpy(name, e->d_name, len - m);
+        name[len - m] = '\0';
+        list[n++] = name;
+    }
+    closedir(d);
+    if (list == NULL)
+        list = malloc(sizeof *list);     /* an empty list, not a failure */
+    if (list == NULL) {
+        errno = ENOMEM;
+        return NULL;
+    }
+    qsort(list, n, sizeof *list, by_name);
+    *count = n;
+    return list;
+fail:
+    closedir(d);
+    cf__tool_free_list(list, n);
+    errno = ENOMEM;
+    return NULL;
 }

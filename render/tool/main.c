@@ -6,6 +6,8 @@
 **   curvefig run SCRIPT.lua
 **   curvefig list SCRIPT.lua
 **   curvefig gallery -o INDEX.html MANIFEST...
+**   curvefig compare A B ...; curvefig test SCRIPT... --references DIR ...
+**   (checks.h)
 **
 ** Exit status: 0 success, 1 the script (or a figure, or writing a file)
 ** failed, 2 usage error (bad command line, unreadable script).
@@ -18,6 +20,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "checks.h"
 #include "curvefig/figure.h"
 #include "help.h"
 #include "script.h"
@@ -453,6 +456,10 @@ main(int argc, char **argv)
 {
     options o;
     int rc = 0;
+    if (argc > 1 && strcmp(argv[1], "compare") == 0)
+        return cf__tool_compare(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "test") == 0)
+        return cf__tool_test(argc - 1, argv + 1);
     if (parse_args(argc, argv, &o, &rc) == 0) {
         if (strcmp(o.command, "gallery") == 0)
             rc = cf__tool_gallery(o.outdir, o.gallery_title,

@@ -17,9 +17,17 @@ int cf__tool_close_atomic(FILE *f, const char *path);
 /* Close and remove the temporary file (the target is left as it was). */
 void cf__tool_discard_atomic(FILE *f, const char *path);
 
+/* The names in dir that end in suffix (and do not start with '.'), the
+** suffix cut off, in strcmp order; *count of them.  NULL (*count 0, errno
+** set) when dir cannot be read or memory runs out. */
+char **cf__tool_list_dir(const char *dir, const char *suffix, size_t *count);
+void cf__tool_free_list(char **list, size_t count);
+
 /* One line of a render manifest: name TAB formats TAB caption. */
 void cf__tool_manifest_line(FILE *f, const char *name, const char *caption,
                             unsigned formats);
+/* Write the first n bytes of s (up to a NUL) with & < > " escaped. */
+void cf__tool_put_html(FILE *f, const char *s, size_t n);
 /* Write the HTML gallery `out` from manifests in the given order; returns
 ** the exit status. */
 int cf__tool_gallery(const char *out, const char *title,

@@ -17,5 +17,5 @@ local ok, err = pcall(function()
   figure{ name = "bad" }:polygon(P, { labels = "P_%d", label_start = 0,
     label_place = function(i) return i == 4 and 17 or "n" end })
 end)
-assert(not ok and err:find("label 4 got a number", 1, true), err)
+assert(not ok and err:find('the label "P_4" got a number', 1, true), err)
 print("label_place function: ok")

@@ -96,11 +96,11 @@ test_error_messages(void **state)
 
 /* Messages of the figure methods: a tick step that is not positive is
 ** refused (the library reads step < 0 as "no ticks" and 0 as automatic),
-** and f:func reports the figure's own message (finding F10: its diag was
-** left uninitialised, which printed stack garbage). */
+** and f:func reports the figure's own message (from an initialised
+** diag, never stack garbage). */
 /* Source nested too deeply: the parser's "C stack overflow" carries no
 ** position of its own; the message gets the chunk's name and the line
-** the parser had reached (finding F3), in the same form as the parser's
+** the parser had reached, in the same form as the parser's
 ** other messages (a long name shortened the same way). */
 static void
 test_parser_nesting(void **state)
@@ -214,8 +214,8 @@ test_limits(void **state)
 
 /* Lua runs finalisers with the hooks off: setmetatable refuses a __gc
 ** field (even a placeholder, which marks the object for finalisation), so
-** no script code can run outside the instruction limit (finding F2: an
-** endless loop in __gc hung the process for ever).  Other metamethods,
+** no script code can run outside the instruction limit (an endless loop
+** in __gc would hang the process).  Other metamethods,
 ** __close included, stay under the limit. */
 static void
 test_no_finalisers(void **state)
@@ -268,8 +268,8 @@ count_lines(const char *s)
 
 /* A stack overflow (~500 000 frames) is reported at once with a short
 ** traceback: the top frames, "...", the bottom ones, and a frame repeated
-** in a row as one line with its count (finding F1: the traceback used to
-** probe every level, quadratic in the depth, and ran for minutes). */
+** in a row as one line with its count (a traceback that probed every
+** level would be quadratic in the depth and run for minutes). */
 static void
 test_deep_recursion(void **state)
 {
@@ -318,7 +318,7 @@ test_deep_recursion(void **state)
     cf_script_destroy(s);
 }
 
-/* Budgets in bytes (finding F8): the messages name the budget in the unit
+/* Budgets in bytes: the messages name the budget in the unit
 ** it was given in, a budget too small for the sandbox itself is refused
 ** by cf_script_create, and the reserve used to report the limit lies
 ** inside the budget, so Lua's own count never goes past it. */

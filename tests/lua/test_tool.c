@@ -533,21 +533,21 @@ static void
 test_hostile_os(void **state)
 {
     hostile(state, "hostile/os_execute.lua",
-            "os_execute.lua:2: attempt to index a nil value (global 'os')");
+            "os_execute.lua:2: 'os' is not available to figure scripts");
 }
 
 static void
 test_hostile_io(void **state)
 {
     hostile(state, "hostile/io_open.lua",
-            "io_open.lua:2: attempt to index a nil value (global 'io')");
+            "io_open.lua:2: 'io' is not available to figure scripts");
 }
 
 static void
 test_hostile_require(void **state)
 {
     hostile(state, "hostile/require.lua",
-            "require.lua:2: attempt to call a nil value (global 'require')");
+            "require.lua:2: 'require' is not available to figure scripts");
 }
 
 static void

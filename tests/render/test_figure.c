@@ -1386,6 +1386,118 @@ test_sticky_error(void **state)
     cf_figure_destroy(fig);
 }
 
+/* A constant (degree-0) graph piece is drawn as a horizontal segment over
+** its whole interval (f:bernstein(0, 0) in the figure language: B_0^0 = 1
+** on [0, 1]).  The piece is widened to degree 1 inside the renderer. */
+static void
+test_graph_constant_piece(void **state)
+{
+    double y0 = 0.75, breaks[] = { -1, 2 };
+    cf_bezier_t *c = NULL;
+    const cf_bezier_t *pieces[1];
+    cf_figure_t *fig = NULL;
+    char *text = NULL;
+    const char *p;
+    size_t size;
+    double w[4], x0, ya, x1, yb, c1[4];
+    (void)state;
+    assert_int_equal(cf_bezier_create(1, 0, &y0, NULL, &c, NULL), 0);
+    assert_int_equal(cf_figure_create(60, 40, CF_UNIT_MM, &fig, NULL), 0);
+    pieces[0] = c;
+    assert_int_equal(cf_figure_add_graph(fig, pieces, breaks, 1, NULL), 0);
+    assert_int_equal(cf_figure_get_window(fig, w, NULL, NULL), 0);
+    assert_float_equal(w[0], -1, 1e-12);
+    assert_float_equal(w[1], 2, 1e-12);
+    assert_int_equal(cf_figure_dump(fig, NULL, &text, &size, NULL), 0);
+    p = strstr(text, " : M ");
+    assert_non_null(p);
+    assert_int_equal(sscanf(p, " : M %lf %lf C %lf %lf %lf %lf %lf %lf", &x0,
+                            &ya, &c1[0], &c1[1], &c1[2], &c1[3], &x1, &yb),
+                     8);
+    /* one horizontal cubic from the left end to the right end */
+    assert_float_equal(ya, yb, 1e-9);
+    assert_float_equal(c1[1], ya, 1e-9);
+    assert_float_equal(c1[3], ya, 1e-9);
+    assert_true(x1 - x0 > 100);
+    cf_free(text);
+    cf_figure_destroy(fig);
+    cf_bezier_destroy(c);
+}
+
+/* The distinct knots of a B-spline with their first index and
+** multiplicity, at the curve's points; tangent arrows end at c(t) +
+** c'(t) / degree (for a cubic Bézier at t = 0: P1; at t = 1: 2 P3 - P2). */
+static void
+test_knot_list_and_tangents(void **state)
+{
+    static const double U[] = { 0, 0, 0, 0, 0.5, 0.5, 1, 1, 1, 1 };
+    static const double P[] = { 0, 0, 1, 2, 2, 3, 3, 1, 4, 2, 5, 0 };
+    static const double B[] = { 0, 0, 1, 2, 3, 2, 4, 0 };
+    cf_bspline_t *s = NULL;
+    cf_bezier_t *c = NULL;
+    cf_figure_t *fig = NULL;
+    double u[10], pts[20], tip[2], want[2];
+    size_t first[10], mult[10], n = 0, k;
+    cf_diag_t d;
+    (void)state;
+    assert_int_equal(cf_bspline_create(2, 3, U, 10, P, 6, NULL, &s, NULL),
+                     0);
+    assert_int_equal(cf_bezier_create(2, 3, B, NULL, &c, NULL), 0);
+    assert_int_equal(cf_figure_create(60, 40, CF_UNIT_MM, &fig, NULL), 0);
+    assert_int_equal(cf_figure_bspline_knots(fig, s, u, first, mult, pts,
+                                             &n), 0);
+    assert_int_equal(n, 3);
+    assert_float_equal(u[0], 0, 0);
+    assert_float_equal(u[1], 0.5, 0);
+    assert_float_equal(u[2], 1, 0);
+    assert_int_equal(first[0], 0);
+    assert_int_equal(first[1], 4);
+    assert_int_equal(first[2], 6);
+    assert_int_equal(mult[0], 4);
+    assert_int_equal(mult[1], 2);
+    assert_int_equal(mult[2], 4);
+    for (k = 0; k < n; k++) {
+        double p[2];
+        assert_int_equal(cf_bspline_eval(s, u[k], p), 0);
+        assert_float_equal(pts[2 * k], p[0], 1e-12);
+        assert_float_equal(pts[2 * k + 1], p[1], 1e-12);
+    }
+    /* clamped ends: the first and last control points */
+    assert_float_equal(pts[0], 0, 1e-12);
+    assert_float_equal(pts[4], 5, 1e-12);
+    assert_int_equal(cf_figure_add_bezier_tangent(fig, c, 0, 0, NULL, tip),
+                     0);
+    assert_float_equal(tip[0], 1, 1e-12);
+    assert_float_equal(tip[1], 2, 1e-12);
+    assert_int_equal(cf_figure_add_bezier_tangent(fig, c, 1, 0, NULL, tip),
+                     0);
+    assert_float_equal(tip[0], 5, 1e-12);
+    assert_float_equal(tip[1], -2, 1e-12);
+    /* scale 1 at the B-spline's start: P0 + C'(0), where
+    ** C'(0) = 3 (P1 - P0) / (u_4 - u_1) = 3 (P1 - P0) / 0.5 */
+    assert_int_equal(cf_figure_add_bspline_tangent(fig, s, 0, 1, NULL, tip),
+                     0);
+    want[0] = 0 + 3 * (1 - 0) / 0.5;
+    want[1] = 0 + 3 * (2 - 0) / 0.5;
+    assert_float_equal(tip[0], want[0], 1e-9);
+    assert_float_equal(tip[1], want[1], 1e-9);
+    cf_diag_clear(&d);
+    assert_int_equal(cf_figure_add_bezier_tangent(fig, c, 1.5, 0, NULL,
+                                                  NULL), CF_STATUS_DOMAIN);
+    assert_int_equal(cf_figure_status(fig, &d), CF_STATUS_DOMAIN);
+    assert_non_null(strstr(d.msg, "outside the domain [0, 1]"));
+    cf_figure_destroy(fig);
+    assert_int_equal(cf_figure_create(60, 40, CF_UNIT_MM, &fig, NULL), 0);
+    cf_diag_clear(&d);
+    assert_int_equal(cf_figure_add_bspline_tangent(fig, s, 2, 0, NULL, NULL),
+                     CF_STATUS_DOMAIN);
+    assert_int_equal(cf_figure_status(fig, &d), CF_STATUS_DOMAIN);
+    assert_non_null(strstr(d.msg, "t = 2 is outside the domain [0, 1]"));
+    cf_figure_destroy(fig);
+    cf_bspline_destroy(s);
+    cf_bezier_destroy(c);
+}
+
 static void
 test_out_of_memory(void **state)
 {
@@ -1455,6 +1567,8 @@ main(void)
         cmocka_unit_test(test_bad_input),
         cmocka_unit_test(test_huge_extent_refused),
         cmocka_unit_test(test_sticky_error),
+        cmocka_unit_test(test_graph_constant_piece),
+        cmocka_unit_test(test_knot_list_and_tangents),
         cmocka_unit_test(test_out_of_memory),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -751,6 +751,12 @@ test_figure(void **state)
     BAD(cf_figure_render(fig, CF_FORMAT_PNG, &wo, &data, &size, NULL));
     assert_null(data);
     BAD(cf_figure_ink_box(fig, NULL, NULL, &pw, &ph, NULL));
+    BAD(cf_figure_dump(fig, NULL, NULL, &size, NULL));
+    BAD(cf_figure_set_clip(NULL, true));
+    BAD(cf_figure_bspline_knots(fig, NULL, NULL, NULL, NULL, NULL, NULL));
+    BAD(cf_figure_add_bezier_tangent(fig, NULL, 0, 0, NULL, NULL));
+    BAD(cf_figure_add_bspline_tangent(NULL, s, 0, 0, NULL, NULL));
+    BAD(cf_figure_dump(NULL, NULL, (char **)&data, &size, NULL));
     BAD(cf_figure_set_title(fig, NULL) == CF_STATUS_OK &&
         cf_figure_set_caption(fig, NULL) == CF_STATUS_OK
         ? CF_STATUS_OK : CF_STATUS_INVALID_ARG);
@@ -795,7 +801,7 @@ test_every_function_listed(void **state)
         "core.h", "knots.h", "bernstein.h", "bezier.h", "bspline.h",
         "geometry.h", "conic.h", "interp.h", "offset.h", "version.h.in",
 #ifdef CF_TEST_RENDER
-        "figure.h",
+        "figure.h", "style.h", "label.h", "output.h",
 #endif
     };
     static char me[200000], text[200000];

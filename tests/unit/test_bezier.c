@@ -867,7 +867,7 @@ test_to_cubics_counts(void **state)
     /* the renderer's cases at its default tolerance 0.01 pt: a rational
     ** quarter circle of radius 300 (one cubic is off by 2.7e-4 r = 0.08,
     ** two by 300 * 4.2e-6 = 1.3e-3 < 0.01) and a degree-5 curve 190 x 300
-    ** across (22 and 8 segments with the earlier Hermite halving) */
+    ** across */
     double Q[] = { 300, 0, 300, 300, 0, 300 }, w[] = { 1, sqrt(0.5), 1 };
     double P[] = { 0, 0, 1, 4, 2, -3, 3, 5, 4, -2, 5, 1 };
     cf_bezier_t *c;
@@ -1042,8 +1042,7 @@ test_errors_construction(void **state)
 }
 
 /* Differences of coordinates near DBL_MAX overflow: the derivative is
-** refused with the point named, never returned with infinite points
-** (hardening finding F5). */
+** refused with the point named, never returned with infinite points. */
 static void
 test_derivative_overflow_refused(void **state)
 {

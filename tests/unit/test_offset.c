@@ -804,7 +804,7 @@ piece_error(const ofs_ctx *x, const double *P, int n, int cusp)
 static void
 test_overstroke_counts_and_errors(void **state)
 {
-    /* the issue's targets at tol 1e-2 / 1e-3 / 1e-4: <= 7 / 9 / 14 pieces
+    /* the targets at tol 1e-2 / 1e-3 / 1e-4: <= 7 / 9 / 14 pieces
     ** on either side, with every piece within tolerance by this file's
     ** own dense measure (1000 samples per side on a piece at the cusp,
     ** clustered there, 200 elsewhere), not the library's; what the library reaches now (6/8/13 and

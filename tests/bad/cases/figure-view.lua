@@ -1,3 +1,3 @@
--- expect: 1 "figure: view angle 0 is string, not a number"
+-- expect: 1 "figure: view angle 1 is string, not a number"
 -- a view with a string
 local f = figure{ name = 'z', view = {'up', 30} }

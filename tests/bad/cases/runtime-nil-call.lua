@@ -1,3 +1,3 @@
--- expect: 1 "attempt to call a nil value (global 'undefined_function')"
+-- expect: 1 "unknown name 'undefined_function'"
 -- a call of nil
 undefined_function()

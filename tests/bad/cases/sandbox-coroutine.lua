@@ -1,3 +1,3 @@
--- expect: 1 "attempt to index a nil value (global 'coroutine')"
+-- expect: 1 "'coroutine' is not available to figure scripts"
 -- coroutines
 local co = coroutine.create(function() end)

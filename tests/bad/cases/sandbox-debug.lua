@@ -1,3 +1,3 @@
--- expect: 1 "attempt to index a nil value (global 'debug')"
+-- expect: 1 "'debug' is not available to figure scripts"
 -- the debug library
 debug.sethook()

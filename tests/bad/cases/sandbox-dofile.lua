@@ -1,3 +1,3 @@
--- expect: 1 "attempt to call a nil value (global 'dofile')"
+-- expect: 1 "'dofile' is not available to figure scripts"
 -- dofile
 dofile('/etc/passwd')

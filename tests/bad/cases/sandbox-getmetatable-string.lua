@@ -1,4 +1,4 @@
--- expect: 1 "attempt to call a nil value (local 'x')"
+-- expect: 1 "'os' is not available to figure scripts"
 -- changing the string metatable
 local mt = getmetatable('')
 mt.__index = function() return os end

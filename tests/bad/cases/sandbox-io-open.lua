@@ -1,3 +1,3 @@
--- expect: 1 "attempt to index a nil value (global 'io')"
+-- expect: 1 "'io' is not available to figure scripts"
 -- io.open
 local f = io.open('/etc/passwd')

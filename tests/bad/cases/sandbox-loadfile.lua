@@ -1,3 +1,3 @@
--- expect: 1 "attempt to call a nil value (global 'loadfile')"
+-- expect: 1 "'loadfile' is not available to figure scripts"
 -- loadfile
 local f = loadfile('/etc/passwd')

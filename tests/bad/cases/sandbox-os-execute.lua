@@ -1,3 +1,3 @@
--- expect: 1 "attempt to index a nil value (global 'os')"
+-- expect: 1 "'os' is not available to figure scripts"
 -- os.execute
 os.execute('touch /tmp/curvefig-escaped')

@@ -1,3 +1,3 @@
--- expect: 1 "attempt to index a nil value (global 'package')"
+-- expect: 1 "'package' is not available to figure scripts"
 -- package.loadlib
 package.loadlib('/lib/x86_64-linux-gnu/libc.so.6', 'system')

@@ -1,3 +1,3 @@
--- expect: 1 "attempt to call a nil value (global 'require')"
+-- expect: 1 "'require' is not available to figure scripts"
 -- require of a module
 local m = require('os')

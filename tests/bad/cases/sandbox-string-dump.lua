@@ -1,3 +1,3 @@
--- expect: 1 "attempt to call a nil value (field 'dump')"
+-- expect: 1 "string has no field 'dump'"
 -- string.dump
 local d = string.dump(function() end)

@@ -1,4 +1,4 @@
--- expect: 1 "points: marker: unknown marker "heart" (use none, dot, circle,"
+-- expect: 1 "points: marker "heart" is unknown; the names are "none", "dot""
 -- an unknown marker
 local f = figure{ name = 'z' }
 f:points({ {0, 0} }, { marker = 'heart' })

@@ -1,4 +1,4 @@
--- expect: 1 "label: place: unknown label place "up" (use center, n, ne, e, se, s,"
+-- expect: 1 "label: place "up" is unknown; the names are "center""
 -- an unknown label place
 local f = figure{ name = 'z' }
 f:label({0, 0}, 'P', { place = 'up' })

@@ -1,5 +1,5 @@
 /*
-** Image comparison for the pixel tests; see pixelcmp.h.
+** The image comparator; see imgcmp.h.
 **
 ** The colour distance is the YIQ measure of Kotsarenko & Ramos (2010), as
 ** used by pixelmatch: delta = 0.5053 dY^2 + 0.299 dI^2 + 0.1957 dQ^2 on
@@ -10,7 +10,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "pixelcmp.h"
+#include "imgcmp.h"
 
 #define YIQ_MAX 35215.0
 
@@ -25,7 +25,7 @@ on_white(uint32_t p, double *r, double *g, double *b)
 }
 
 double
-pc_pixel_delta(uint32_t a, uint32_t b)
+cf__imgcmp_pixel_delta(uint32_t a, uint32_t b)
 {
     double r1, g1, b1, r2, g2, b2, y, i, q, d;
     if (a == b)
@@ -43,12 +43,47 @@ pc_pixel_delta(uint32_t a, uint32_t b)
 }
 
 static uint32_t
-px(const pc_image *im, int x, int y)
+px(const cf__imgcmp_image *im, int x, int y)
 {
     uint32_t v;
     memcpy(&v, im->data + (size_t)y * (size_t)im->stride + 4 * (size_t)x,
            sizeof v);
     return v;
+}
+
+/* The colours (on white) of im's (2r+1)^2 neighbourhood of (x, y), cut
+** at the edges: their range channel by channel, and their mean. */
+typedef struct neighbourhood {
+    double lo[3], hi[3], mean[3];
+} neighbourhood;
+
+static void
+survey(const cf__imgcmp_image *im, int x, int y, int r, neighbourhood *nb)
+{
+    double v[3];
+    int n = 0;
+    for (int k = 0; k < 3; k++) {
+        nb->lo[k] = 1e9;
+        nb->hi[k] = -1e9;
+        nb->mean[k] = 0.0;
+    }
+    for (int yy = y - r; yy <= y + r; yy++) {
+        if (yy < 0 || yy >= im->height)
+            continue;
+        for (int xx = x - r; xx <= x + r; xx++) {
+            if (xx < 0 || xx >= im->width)
+                continue;
+            on_white(px(im, xx, yy), &v[0], &v[1], &v[2]);
+            for (int k = 0; k < 3; k++) {
+                nb->lo[k] = fmin(nb->lo[k], v[k]);
+                nb->hi[k] = fmax(nb->hi[k], v[k]);
+                nb->mean[k] += v[k];
+            }
+            n++;
+        }
+    }
+    for (int k = 0; k < 3; k++)
+        nb->mean[k] /= n;
 }
 
 /*
@@ -60,59 +95,17 @@ px(const pc_image *im, int x, int y)
 ** not there at all.
 */
 static int
-near_match(const pc_image *im, int x, int y, int r, uint32_t c, double t)
+near_match(const cf__imgcmp_image *im, int x, int y, int r, uint32_t c,
+           double t)
 {
-    double lo[3] = { 1e9, 1e9, 1e9 }, hi[3] = { -1e9, -1e9, -1e9 }, v[3];
-    double slack = t * 255.0;
-    for (int dy = -r; dy <= r; dy++) {
-        int yy = y + dy;
-        if (yy < 0 || yy >= im->height)
-            continue;
-        for (int dx = -r; dx <= r; dx++) {
-            int xx = x + dx;
-            if (xx < 0 || xx >= im->width)
-                continue;
-            on_white(px(im, xx, yy), &v[0], &v[1], &v[2]);
-            for (int k = 0; k < 3; k++) {
-                if (v[k] < lo[k])
-                    lo[k] = v[k];
-                if (v[k] > hi[k])
-                    hi[k] = v[k];
-            }
-        }
-    }
+    neighbourhood nb;
+    double v[3], slack = t * 255.0;
+    survey(im, x, y, r, &nb);
     on_white(c, &v[0], &v[1], &v[2]);
     for (int k = 0; k < 3; k++)
-        if (v[k] < lo[k] - slack || v[k] > hi[k] + slack)
+        if (v[k] < nb.lo[k] - slack || v[k] > nb.hi[k] + slack)
             return 0;
     return 1;
-}
-
-/* Mean colour (on white) of the (2r+1)^2 neighbourhood of (x, y). */
-static void
-box_mean(const pc_image *im, int x, int y, int r, double *m)
-{
-    double v[3];
-    int n = 0;
-    m[0] = m[1] = m[2] = 0.0;
-    for (int dy = -r; dy <= r; dy++) {
-        int yy = y + dy;
-        if (yy < 0 || yy >= im->height)
-            continue;
-        for (int dx = -r; dx <= r; dx++) {
-            int xx = x + dx;
-            if (xx < 0 || xx >= im->width)
-                continue;
-            on_white(px(im, xx, yy), &v[0], &v[1], &v[2]);
-            m[0] += v[0];
-            m[1] += v[1];
-            m[2] += v[2];
-            n++;
-        }
-    }
-    m[0] /= n;
-    m[1] /= n;
-    m[2] /= n;
 }
 
 /*
@@ -122,19 +115,33 @@ box_mean(const pc_image *im, int x, int y, int r, double *m)
 ** neighbourhood; a stroke moved by two pixels or recoloured does not.
 */
 static int
-same_ink(const pc_image *a, const pc_image *b, int x, int y, int r, double t)
+same_ink(const cf__imgcmp_image *a, const cf__imgcmp_image *b, int x, int y,
+         int r, double t)
 {
-    double ma[3], mb[3], d;
+    neighbourhood na, nb;
+    double *ma = na.mean, *mb = nb.mean, d;
     uint32_t pa, pb;
-    box_mean(a, x, y, r, ma);
-    box_mean(b, x, y, r, mb);
+    survey(a, x, y, r, &na);
+    survey(b, x, y, r, &nb);
     /* back to opaque pixels, to measure with the YIQ distance */
     pa = 0xff000000u | ((uint32_t)lrint(ma[0]) << 16) |
          ((uint32_t)lrint(ma[1]) << 8) | (uint32_t)lrint(ma[2]);
     pb = 0xff000000u | ((uint32_t)lrint(mb[0]) << 16) |
          ((uint32_t)lrint(mb[1]) << 8) | (uint32_t)lrint(mb[2]);
-    d = pc_pixel_delta(pa, pb);
+    d = cf__imgcmp_pixel_delta(pa, pb);
     return d <= t;
+}
+
+/* The expected pixel faded: its grey level, mostly white. */
+static uint32_t
+faded(uint32_t e)
+{
+    double r, g, b, l;
+    unsigned v;
+    on_white(e, &r, &g, &b);
+    l = 255.0 - 0.1 * (255.0 - (0.299 * r + 0.587 * g + 0.114 * b));
+    v = (unsigned)lrint(l);
+    return 0xff000000u | (v << 16) | (v << 8) | v;
 }
 
 static void
@@ -144,8 +151,10 @@ put(unsigned char *diff, int w, int x, int y, uint32_t v)
 }
 
 int
-pc_compare(const pc_image *actual, const pc_image *expected,
-           const pc_options *opt, pc_result *res, unsigned char *diff)
+cf__imgcmp_compare(const cf__imgcmp_image *actual,
+                   const cf__imgcmp_image *expected,
+                   const cf__imgcmp_options *opt, cf__imgcmp_result *res,
+                   unsigned char *diff)
 {
     int w = actual->width, h = actual->height, rows_equal = 1;
 
@@ -164,24 +173,19 @@ pc_compare(const pc_image *actual, const pc_image *expected,
         if (diff != NULL)
             for (int y = 0; y < h; y++)
                 for (int x = 0; x < w; x++)
-                    put(diff, w, x, y, 0xffffffffu);
+                    put(diff, w, x, y, faded(px(expected, x, y)));
         return 0;
     }
 
     for (int y = 0; y < h; y++) {
         for (int x = 0; x < w; x++) {
             uint32_t a = px(actual, x, y), e = px(expected, x, y);
-            double d = pc_pixel_delta(a, e);
+            double d = cf__imgcmp_pixel_delta(a, e);
             uint32_t out;
             if (d > res->max_delta)
                 res->max_delta = d;
             if (d <= opt->threshold) {
-                /* faded expected image: grey level of e, mostly white */
-                double r, g, b, l;
-                on_white(e, &r, &g, &b);
-                l = 255.0 - 0.1 * (255.0 - (0.299 * r + 0.587 * g + 0.114 * b));
-                unsigned v = (unsigned)lrint(l);
-                out = 0xff000000u | (v << 16) | (v << 8) | v;
+                out = faded(e);
             } else if (opt->aa_radius > 0 &&
                        ((near_match(expected, x, y, opt->aa_radius, a,
                                     opt->threshold) &&

@@ -1,0 +1,93 @@
+/*
+** curvefig labels: a small TeX-like syntax laid out with pango (library
+** curvefig-render; included by curvefig/figure.h).
+*/
+#ifndef CURVEFIG_LABEL_H
+#define CURVEFIG_LABEL_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "curvefig/core.h"
+#include "curvefig/export.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- labels ------------------------------------------------------------- */
+
+/*
+** Label syntax.  A text without `$` is all math; with `$`, text outside
+** $...$ is upright text and inside is math.
+**   math: ASCII letters italic; digits, punctuation, ( ) [ ] upright;
+**         `-` becomes the minus sign U+2212; + − = < > get thin spaces
+**         around them at the base level; spaces are kept, except next
+**         to such operators (TeX's spacing applies there).
+**   x_i  x_{...}  subscript; x^n  x^{...}  superscript; both (any order)
+**         stack at the same x: B_i^n, N_{i}^{p}; scripts nest (size 70 %,
+**         then 50 %; Latin Modern's 7 pt and 5 pt designs are used for
+**         them, as in TeX).  ' is a prime (U+2032).
+**   \alpha ... \omega, \Gamma ... \Omega (also \varepsilon \vartheta
+**         \varphi \varrho \varsigma): lowercase italic, uppercase upright.
+**   \cdot \times \infty \partial \nabla \pm \leq \geq \neq \to \ldots
+**         \dots \sum \prod \int, \, \; \quad spaces, \{ \} \_ \$ \\ escapes.
+**   \mathrm{...} \text{...} upright; \mathbf{...} bold; \mathit{...}.
+**   \frac{num}{den} (script size, centred, rule on the math axis);
+**   \hat \bar \tilde \vec \dot \ddot over one character.
+**   Any UTF-8 text (Czech, Russian, Slovene, Chinese): letters outside
+**   ASCII are set upright; the family list supplies Cyrillic and CJK.
+** Errors (unbalanced braces, unknown command, dangling _ or ^, invalid
+** UTF-8) are INVALID_ARG with the byte position in diag->index.
+*/
+
+/* One run of glyphs of a laid-out label. */
+typedef enum cf_label_kind {
+    CF_LABEL_BASE = 0,  /* at the level's baseline */
+    CF_LABEL_SUB,       /* a subscript run */
+    CF_LABEL_SUP        /* a superscript run */
+} cf_label_kind_t;
+
+typedef struct cf_label_box {
+    double x, y;             /* left end of the run's baseline, bp, relative
+                                to the label origin; y UP */
+    double width;            /* advance width, bp */
+    double ascent, descent;  /* logical extents above/below the baseline
+                                (descent positive) */
+    double size;             /* font size, bp */
+    int level;               /* 0 base, 1 script, 2 scriptscript */
+    cf_label_kind_t kind;    /* innermost script kind of the run */
+    bool italic;
+    size_t start, end;       /* 0 and the byte length of the run's text
+                                (cf_label_run_text; "" for a fraction
+                                rule) */
+} cf_label_box_t;
+
+typedef struct cf_label cf_label_t;
+
+/* Parse and lay out text at font size size_bp with the family list family
+** (NULL: the default theme's). */
+CF_API cf_status_t cf_label_create(const char *text, const char *family,
+                                   double size_bp, cf_label_t **out,
+                                   cf_diag_t *diag);
+CF_API void cf_label_destroy(cf_label_t *label);
+
+CF_API size_t cf_label_box_count(const cf_label_t *label);
+/* Box i (NULL if out of range). */
+CF_API const cf_label_box_t *cf_label_get_box(const cf_label_t *label,
+                                              size_t i);
+/* The UTF-8 text of run i ("" if out of range). */
+CF_API const char *cf_label_run_text(const cf_label_t *label, size_t i);
+/* Logical size of the whole label: width, ascent above and descent below
+** the base line (bp). */
+CF_API void cf_label_get_extents(const cf_label_t *label, double *width,
+                                 double *ascent, double *descent);
+/* Number of characters no font of the family list (nor fontconfig's
+** fallback) could show: 0 means no empty boxes. */
+CF_API size_t cf_label_unknown_glyphs(const cf_label_t *label);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

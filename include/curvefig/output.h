@@ -1,0 +1,93 @@
+/*
+** curvefig figure output: the formats, the write options, and writing a
+** figure to files or memory (library curvefig-render; included by
+** curvefig/figure.h, where the figure is made).
+*/
+#ifndef CURVEFIG_OUTPUT_H
+#define CURVEFIG_OUTPUT_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "curvefig/core.h"
+#include "curvefig/export.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct cf_figure cf_figure_t;
+
+typedef enum cf_format {
+    CF_FORMAT_SVG = 0,
+    CF_FORMAT_PDF,
+    CF_FORMAT_PS,
+    CF_FORMAT_EPS,
+    CF_FORMAT_PNG,
+    CF_FORMAT_LAST_
+} cf_format_t;
+
+#define CF_FORMAT_BIT(f) (1u << (f))
+
+/* "svg" "pdf" "ps" "eps" "png" -> format; INVALID_ARG otherwise. */
+CF_API cf_status_t cf_format_from_name(const char *name, cf_format_t *out,
+                                       cf_diag_t *diag);
+/* "svg", ... ("" for an invalid value). */
+CF_API const char *cf_format_extension(cf_format_t format);
+
+typedef struct cf_write_options {
+    double dpi;       /* PNG resolution, default 150, range [1, 2400] */
+    bool tight;       /* crop the page to the ink box (strokes and labels
+                         included) plus padding; default false */
+    double padding;   /* bp around the ink box when tight, default 0 */
+} cf_write_options_t;
+
+CF_API void cf_write_options_init(cf_write_options_t *options);
+
+/* Write the figure to path in one format (options NULL: defaults).  The
+** file is written to a temporary name in the same directory and renamed:
+** on failure the old file is left as it was (or none is made).  Output is
+** deterministic: PDF CreationDate from SOURCE_DATE_EPOCH or none, no PS
+** %%CreationDate, SVG ids numbered per file, SVG units in pt, SVG
+** <title>/<desc> from the title and caption. */
+CF_API cf_status_t cf_figure_write(cf_figure_t *fig, const char *path,
+                                   cf_format_t format,
+                                   const cf_write_options_t *options,
+                                   cf_diag_t *diag);
+
+/* Write basename.<ext> for every format whose CF_FORMAT_BIT is in
+** formats; stops at the first failure. */
+CF_API cf_status_t cf_figure_write_all(cf_figure_t *fig, const char *basename,
+                                       unsigned formats,
+                                       const cf_write_options_t *options,
+                                       cf_diag_t *diag);
+
+/* Render to memory: *data (release with cf_free) and *size. */
+CF_API cf_status_t cf_figure_render(cf_figure_t *fig, cf_format_t format,
+                                    const cf_write_options_t *options,
+                                    unsigned char **data, size_t *size,
+                                    cf_diag_t *diag);
+
+/* The display list of the figure as text, one drawing operation a line
+** (page, groups per element, clips, paths with their paint, markers, text
+** with its source and placement), laid out as cf_figure_render would lay
+** it out with these options.  The same figure gives the same text on
+** every run: tests compare it.  *text (NUL-terminated, length *size) is
+** released with cf_free. */
+CF_API cf_status_t cf_figure_dump(cf_figure_t *fig,
+                                  const cf_write_options_t *options,
+                                  char **text, size_t *size,
+                                  cf_diag_t *diag);
+
+/* The ink box of everything drawn, in page bp (x0 y0 x1 y1, y down) at the
+** physical size, and the page size the options give (tight or not). */
+CF_API cf_status_t cf_figure_ink_box(cf_figure_t *fig,
+                                     const cf_write_options_t *options,
+                                     double box[4], double *page_width,
+                                     double *page_height, cf_diag_t *diag);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,275 @@
+/*
+** The cairo backend: a display list drawn onto a cairo context, whatever
+** its surface (SVG, PDF, PS, PNG in render/output.c; the recording surface
+** of the ink box; the raster of automatic label placement).  Every stroke
+** sets width, cap, join and dash, so an operation draws the same whatever
+** came before it.
+*/
+#include <math.h>
+
+#include <cairo.h>
+
+#include "backend.h"
+#include "label-private.h"
+
+#define PI 3.14159265358979323846
+
+static void
+set_source(cairo_t *cr, const cf_color_t *c, double opacity)
+{
+    cairo_set_source_rgba(cr, c->r, c->g, c->b, c->a * opacity);
+}
+
+static void
+set_stroke(cairo_t *cr, const cf__stroke_t *s)
+{
+    cairo_set_line_width(cr, s->width);
+    cairo_set_line_join(cr, s->join == CF__JOIN_ROUND ? CAIRO_LINE_JOIN_ROUND
+                                                      : CAIRO_LINE_JOIN_MITER);
+    cairo_set_line_cap(cr, s->cap == CF__CAP_ROUND ? CAIRO_LINE_CAP_ROUND
+                                                   : CAIRO_LINE_CAP_BUTT);
+    if (s->dash_count > 0)
+        cairo_set_dash(cr, s->dash, (int)s->dash_count, 0.0);
+    else
+        cairo_set_dash(cr, NULL, 0, 0.0);
+}
+
+static void
+begin_page(void *ctx, const cf__page_t *pg)
+{
+    cairo_t *cr = ctx;
+    const cf_color_t *bg = &pg->background;
+    if (!(bg->a > 0))
+        return;
+    cairo_save(cr);
+    cairo_set_source_rgba(cr, bg->r, bg->g, bg->b, bg->a);
+    if (pg->raster) {
+        cairo_paint(cr);
+    } else {
+        cairo_rectangle(cr, 0, 0, pg->width, pg->height);
+        cairo_fill(cr);
+    }
+    cairo_restore(cr);
+}
+
+static void
+begin_group(void *ctx, const char *name, size_t index)
+{
+    (void)name;
+    (void)index;
+    cairo_save(ctx);
+}
+
+static void
+restore(void *ctx)
+{
+    cairo_restore(ctx);
+}
+
+static void
+clip(void *ctx, bool has_rect, const double r[4])
+{
+    cairo_t *cr = ctx;
+    cairo_save(cr);
+    if (!has_rect)
+        return;
+    cairo_new_path(cr);
+    cairo_rectangle(cr, r[0], r[1], r[2], r[3]);
+    cairo_clip(cr);
+}
+
+static void
+append_path(cairo_t *cr, const cf__path_t *p)
+{
+    const double *v = p->coords;
+    size_t i;
+    cairo_new_path(cr);
+    for (i = 0; i < p->nsegs; i++) {
+        switch ((cf__seg_t)p->segs[i]) {
+        case CF__SEG_MOVE:
+            cairo_move_to(cr, v[0], v[1]);
+            v += 2;
+            break;
+        case CF__SEG_LINE:
+            cairo_line_to(cr, v[0], v[1]);
+            v += 2;
+            break;
+        case CF__SEG_CURVE:
+            cairo_curve_to(cr, v[0], v[1], v[2], v[3], v[4], v[5]);
+            v += 6;
+            break;
+        case CF__SEG_RECT:
+            cairo_rectangle(cr, v[0], v[1], v[2], v[3]);
+            v += 4;
+            break;
+        case CF__SEG_ARC:
+            cairo_arc(cr, v[0], v[1], v[2], v[3], v[4]);
+            v += 5;
+            break;
+        case CF__SEG_CLOSE:
+            cairo_close_path(cr);
+            break;
+        }
+    }
+}
+
+static void
+draw_path(void *ctx, const cf__path_t *path, const cf__paint_t *paint)
+{
+    cairo_t *cr = ctx;
+    append_path(cr, path);
+    if (paint->fill) {
+        set_source(cr, &paint->fill_color, paint->fill_opacity);
+        if (!paint->stroke) {
+            cairo_fill(cr);
+            return;
+        }
+        cairo_fill_preserve(cr);
+    }
+    set_stroke(cr, &paint->line);
+    set_source(cr, &paint->line.color, paint->line.opacity);
+    cairo_stroke(cr);
+}
+
+static void
+regular_polygon(cairo_t *cr, double x, double y, double r, int n,
+                double phase, double inner)
+{
+    int i, k = inner > 0 ? 2 * n : n;
+    for (i = 0; i < k; i++) {
+        double a = phase + 2.0 * PI * i / k;
+        double rr = (inner > 0 && (i & 1)) ? inner : r;
+        double px = x + rr * cos(a), py = y - rr * sin(a);
+        if (i == 0)
+            cairo_move_to(cr, px, py);
+        else
+            cairo_line_to(cr, px, py);
+    }
+    cairo_close_path(cr);
+}
+
+/* A stroked symbol (cross, plus, tick) of line width w. */
+static void
+stroke_symbol(cairo_t *cr, const cf__marker_op_t *m, double w)
+{
+    cairo_set_line_width(cr, w);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+    set_source(cr, &m->color, m->opacity);
+    cairo_stroke(cr);
+}
+
+static void
+draw_marker(void *ctx, const cf__marker_op_t *m)
+{
+    cairo_t *cr = ctx;
+    double r = 0.5 * m->size, x = m->x, y = m->y;
+    bool filled = true;
+
+    cairo_save(cr);
+    cairo_set_dash(cr, NULL, 0, 0.0);
+    cairo_new_path(cr);
+    switch (m->marker) {
+    case CF_MARKER_DOT:
+        cairo_arc(cr, x, y, r, 0, 2 * PI);
+        break;
+    case CF_MARKER_CIRCLE:
+        cairo_arc(cr, x, y, r * 0.85, 0, 2 * PI);
+        filled = false;
+        break;
+    case CF_MARKER_SQUARE:
+        cairo_rectangle(cr, x - 0.85 * r, y - 0.85 * r, 1.7 * r, 1.7 * r);
+        break;
+    case CF_MARKER_DIAMOND:
+        regular_polygon(cr, x, y, 1.1 * r, 4, PI / 2, 0);
+        break;
+    case CF_MARKER_TRIANGLE:
+        regular_polygon(cr, x, y + 0.2 * r, 1.15 * r, 3, PI / 2, 0);
+        break;
+    case CF_MARKER_STAR:
+        regular_polygon(cr, x, y, 1.45 * r, 5, PI / 2, 0.6 * r);
+        break;
+    case CF_MARKER_CROSS:
+    case CF_MARKER_PLUS: {
+        double a = m->marker == CF_MARKER_CROSS ? PI / 4 : 0;
+        double c = cos(a) * r, sn = sin(a) * r;
+        cairo_move_to(cr, x - c, y - sn);
+        cairo_line_to(cr, x + c, y + sn);
+        cairo_move_to(cr, x + sn, y - c);
+        cairo_line_to(cr, x - sn, y + c);
+        stroke_symbol(cr, m, fmax(0.6, 0.28 * r));
+        cairo_restore(cr);
+        return;
+    }
+    case CF_MARKER_TICK: {
+        /* a bar across the curve: perpendicular to dir (page coords) */
+        double nx = 0, ny = -1, len;
+        if (m->has_dir) {
+            len = hypot(m->dir[0], m->dir[1]);
+            if (len > 0) {
+                nx = -m->dir[1] / len;
+                ny = m->dir[0] / len;
+            }
+        }
+        cairo_move_to(cr, x - nx * r, y - ny * r);
+        cairo_line_to(cr, x + nx * r, y + ny * r);
+        stroke_symbol(cr, m, fmax(0.5, m->width));
+        cairo_restore(cr);
+        return;
+    }
+    default:
+        cairo_restore(cr);
+        return;
+    }
+    if (filled) {
+        set_source(cr, &m->color, m->opacity);
+        cairo_fill(cr);
+    } else {
+        set_source(cr, &m->fill, m->opacity);
+        cairo_fill_preserve(cr);
+        cairo_set_line_width(cr, fmax(0.5, 0.3 * r));
+        set_source(cr, &m->color, m->opacity);
+        cairo_stroke(cr);
+    }
+    cairo_restore(cr);
+}
+
+static void
+draw_text(void *ctx, const cf__text_op_t *t)
+{
+    if (t->halo > 0)
+        cf__label_draw_halo(t->label, ctx, t->ox, t->oy, &t->halo_color,
+                            t->halo);
+    cf__label_draw(t->label, ctx, t->ox, t->oy, &t->color, t->opacity);
+}
+
+static int
+end_page(void *ctx)
+{
+    return cairo_status(ctx) != CAIRO_STATUS_SUCCESS;
+}
+
+const cf__backend_t cf__cairo_backend = {
+    "cairo", begin_page, begin_group, restore, clip, restore, draw_path,
+    draw_marker, draw_text, end_page
+};
+
+int
+cf__cairo_ink(const cf__dl_t *dl, size_t from, size_t to, double ink[4])
+{
+    cairo_surface_t *rec;
+    cairo_t *cr;
+    double x, y, w, h;
+    int bad;
+    rec = cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, NULL);
+    cr = cairo_create(rec);
+    cf__dl_play(dl, from, to, &cf__cairo_backend, cr);
+    cairo_destroy(cr);
+    cairo_recording_surface_ink_extents(rec, &x, &y, &w, &h);
+    bad = cairo_surface_status(rec) != CAIRO_STATUS_SUCCESS;
+    cairo_surface_destroy(rec);
+    ink[0] = x;
+    ink[1] = y;
+    ink[2] = x + w;
+    ink[3] = y + h;
+    return bad;
+}

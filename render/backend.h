@@ -1,0 +1,72 @@
+/*
+** The seam between the layout and the output devices: a backend is a
+** struct of functions that receive a page and the operations of a display
+** list (render/dlist.h) in order, as matplotlib's RendererBase receives
+** draw_path, draw_markers and draw_text.  A new backend (PGF/TikZ, a
+** browser canvas) is one more of these; the model and the layout do not
+** change.
+**
+** Backends:
+**   cairo (render/backend-cairo.c): SVG, PDF, PS, EPS and PNG surfaces, and
+**     the recording and raster surfaces the layout measures ink with;
+**   dump  (render/backend-dump.c): one line of text per operation,
+**     deterministic, for tests.
+*/
+#ifndef CURVEFIG_RENDER_BACKEND_H
+#define CURVEFIG_RENDER_BACKEND_H
+
+#include "dlist.h"
+
+/* The page a display list is drawn on. */
+typedef struct cf__page {
+    double width, height;      /* bp */
+    cf_color_t background;     /* a = 0: none */
+    bool raster;               /* whole pixels: the background covers the
+                                  partly covered last row and column */
+} cf__page_t;
+
+typedef struct cf__backend {
+    const char *name;
+    void (*begin_page)(void *ctx, const cf__page_t *page);
+    void (*begin_group)(void *ctx, const char *name, size_t index);
+    void (*end_group)(void *ctx);
+    void (*clip)(void *ctx, bool has_rect, const double rect[4]);
+    void (*unclip)(void *ctx);
+    void (*draw_path)(void *ctx, const cf__path_t *path,
+                      const cf__paint_t *paint);
+    void (*draw_marker)(void *ctx, const cf__marker_op_t *marker);
+    void (*draw_text)(void *ctx, const cf__text_op_t *text);
+    /* Finish the page; nonzero when the device failed. */
+    int (*end_page)(void *ctx);
+} cf__backend_t;
+
+/* Hand ops [from, to) of dl to a backend (no begin_page / end_page). */
+void cf__dl_play(const cf__dl_t *dl, size_t from, size_t to,
+                 const cf__backend_t *be, void *ctx);
+/* A whole page: begin_page, every op, end_page (its result). */
+int cf__dl_play_page(const cf__dl_t *dl, const cf__page_t *page,
+                     const cf__backend_t *be, void *ctx);
+
+/* ---- the cairo backend -------------------------------------------------- */
+
+/* Its functions; ctx is a cairo_t * set up by the caller (surface,
+** scale).  begin_page paints the background. */
+extern const cf__backend_t cf__cairo_backend;
+
+/* Ink extents (page bp: x0 y0 x1 y1) of ops [from, to) of dl, drawn on a
+** recording surface; nonzero when cairo failed. */
+int cf__cairo_ink(const cf__dl_t *dl, size_t from, size_t to,
+                  double ink[4]);
+
+/* ---- the dump backend --------------------------------------------------- */
+
+/* Its functions; ctx is a cf__dump_t. */
+typedef struct cf__dump {
+    char *text;          /* NUL-terminated; cf_free */
+    size_t len, cap;
+    bool failed;
+} cf__dump_t;
+
+extern const cf__backend_t cf__dump_backend;
+
+#endif

@@ -1,0 +1,168 @@
+/*
+** The display list: what a laid-out figure draws, as device-independent
+** operations in page units (bp, y down, origin at the top left of the
+** page).  The layout writes it (render/layout.c and the element kinds);
+** backends read it (render/backend.h).  Nothing here knows cairo.
+**
+** Operations, in drawing order:
+**   GROUP / END      one element of the figure (its kind name and index);
+**                    a backend keeps the drawing state local to it
+**   CLIP / UNCLIP    what follows, up to UNCLIP or the group's END, is
+**                    clipped to a rectangle (or only scoped, without one)
+**   PATH             segments (move, line, cubic, rectangle, arc, close)
+**                    and a paint: fill, stroke, or fill then stroke
+**   MARKER           a marker symbol at a point (draw_markers)
+**   TEXT             a laid-out label (its pango runs) with its TeX-like
+**                    source, anchor, placement and origin, so that a
+**                    backend draws the glyphs or hands the source to TeX
+*/
+#ifndef CURVEFIG_RENDER_DLIST_H
+#define CURVEFIG_RENDER_DLIST_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include "curvefig/figure.h"
+
+typedef enum cf__seg {
+    CF__SEG_MOVE,      /* x y */
+    CF__SEG_LINE,      /* x y */
+    CF__SEG_CURVE,     /* x1 y1 x2 y2 x3 y3 */
+    CF__SEG_RECT,      /* x y w h: a closed subpath */
+    CF__SEG_ARC,       /* cx cy r a0 a1: counter-clockwise on the page's
+                          y-down axes, as cairo_arc */
+    CF__SEG_CLOSE
+} cf__seg_t;
+
+typedef enum cf__cap { CF__CAP_BUTT, CF__CAP_ROUND } cf__cap_t;
+typedef enum cf__join { CF__JOIN_MITER, CF__JOIN_ROUND } cf__join_t;
+
+/* How a line is stroked. */
+typedef struct cf__stroke {
+    cf_color_t color;
+    double opacity;          /* multiplies color.a */
+    double width;
+    cf__cap_t cap;
+    cf__join_t join;
+    size_t dash_count;       /* 0: solid */
+    double dash[CF_STYLE_DASH_MAX];
+} cf__stroke_t;
+
+/* The paint of a path: fill (with fill colour), stroke, or both (fill
+** first). */
+typedef struct cf__paint {
+    bool fill, stroke;
+    cf_color_t fill_color;
+    double fill_opacity;
+    cf__stroke_t line;
+} cf__paint_t;
+
+typedef struct cf__path {
+    const unsigned char *segs;   /* cf__seg_t each */
+    const double *coords;        /* the segments' numbers, in order */
+    size_t nsegs;
+} cf__path_t;
+
+/* A marker symbol (the style fields it uses, resolved). */
+typedef struct cf__marker_op {
+    cf_marker_t marker;
+    double x, y;
+    bool has_dir;
+    double dir[2];           /* page direction of the curve (ticks) */
+    double size;             /* marker_size */
+    double width;            /* the element's line width (ticks) */
+    cf_color_t color;        /* marker_color */
+    cf_color_t fill;         /* inside of an open circle */
+    double opacity;
+} cf__marker_op_t;
+
+/* A label.  The glyphs are `label` drawn with its baseline origin at
+** (ox, oy); the same text for TeX is `source`, placed at `place` of the
+** anchor (px, py) with gap `offset`. */
+typedef struct cf__text_op {
+    const cf_label_t *label;
+    const char *source;
+    double px, py;
+    cf_place_t place;
+    double offset;
+    double font_size;
+    double ox, oy;
+    double ink[4];           /* ink box relative to the origin */
+    cf_color_t color;
+    double opacity;
+    double halo;             /* > 0: a border of halo_color first */
+    cf_color_t halo_color;
+} cf__text_op_t;
+
+typedef enum cf__op_kind {
+    CF__OP_GROUP,
+    CF__OP_END,
+    CF__OP_CLIP,
+    CF__OP_UNCLIP,
+    CF__OP_PATH,
+    CF__OP_MARKER,
+    CF__OP_TEXT
+} cf__op_kind_t;
+
+typedef struct cf__op {
+    cf__op_kind_t kind;
+    union {
+        struct { const char *name; size_t index; } group;
+        struct { bool has_rect; double rect[4]; } clip;   /* x y w h */
+        struct { size_t seg0, nsegs, coord0; cf__paint_t paint; } path;
+        cf__marker_op_t marker;
+        cf__text_op_t text;
+    } u;
+} cf__op_t;
+
+typedef struct cf__dl {
+    cf__op_t *ops;
+    size_t count, cap;
+    unsigned char *segs;
+    size_t nsegs, segcap;
+    double *coords;
+    size_t ncoords, coordcap;
+    size_t path_seg0, path_coord0;   /* the path being built */
+    bool failed;                      /* an allocation failed */
+} cf__dl_t;
+
+void cf__dl_init(cf__dl_t *dl);
+void cf__dl_free(cf__dl_t *dl);
+/* Drop every operation (keeps the memory). */
+void cf__dl_reset(cf__dl_t *dl);
+
+void cf__dl_group(cf__dl_t *dl, const char *name, size_t index);
+void cf__dl_end(cf__dl_t *dl);
+/* rect NULL: a scope without a clip. */
+void cf__dl_clip(cf__dl_t *dl, const double *rect);
+void cf__dl_unclip(cf__dl_t *dl);
+
+/* A path: segments appended after cf__dl_path_begin, then painted (or
+** dropped) by cf__dl_path_paint. */
+void cf__dl_path_begin(cf__dl_t *dl);
+void cf__dl_move(cf__dl_t *dl, double x, double y);
+void cf__dl_line(cf__dl_t *dl, double x, double y);
+void cf__dl_curve(cf__dl_t *dl, double x1, double y1, double x2, double y2,
+                  double x3, double y3);
+void cf__dl_rect(cf__dl_t *dl, double x, double y, double w, double h);
+void cf__dl_arc(cf__dl_t *dl, double cx, double cy, double r, double a0,
+                double a1);
+void cf__dl_close(cf__dl_t *dl);
+/* paint NULL: the segments are dropped (nothing drawn). */
+void cf__dl_path_paint(cf__dl_t *dl, const cf__paint_t *paint);
+
+void cf__dl_marker(cf__dl_t *dl, const cf__marker_op_t *m);
+void cf__dl_text(cf__dl_t *dl, const cf__text_op_t *t);
+
+/* The path of a PATH operation. */
+void cf__dl_op_path(const cf__dl_t *dl, const cf__op_t *op, cf__path_t *out);
+
+/* Paint helpers from a resolved style: the stroke of its line (width,
+** colour, opacity, dash; round caps and joins, butt caps when dashed). */
+void cf__stroke_from_style(const cf_style_t *s, cf__stroke_t *out);
+/* A marker of the resolved style at a page point. */
+void cf__marker_from_style(const cf_style_t *s, cf_marker_t marker,
+                           double x, double y, const double *dir,
+                           cf__marker_op_t *out);
+
+#endif

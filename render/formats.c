@@ -1,0 +1,461 @@
+/*
+** The output formats: SVG, PDF, PS, EPS and PNG pages drawn from a
+** display list by the cairo backend into memory, and made deterministic
+** there (no creation dates, no per-process ids; title and caption as
+** metadata).
+*/
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cairo-pdf.h>
+#include <cairo-ps.h>
+#include <cairo-svg.h>
+
+#include "backend.h"
+#include "png-private.h"
+#include "render-private.h"
+
+static const char *const format_names[CF_FORMAT_LAST_] = {
+    "svg", "pdf", "ps", "eps", "png"
+};
+
+cf_status_t
+cf_format_from_name(const char *name, cf_format_t *out, cf_diag_t *diag)
+{
+    int i;
+    if (name == NULL || out == NULL)
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "format name or output is NULL");
+    for (i = 0; i < CF_FORMAT_LAST_; i++) {
+        if (strcmp(name, format_names[i]) == 0) {
+            *out = (cf_format_t)i;
+            return CF_STATUS_OK;
+        }
+    }
+    return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                       "unknown format \"%s\" (use svg, pdf, ps, eps or png)",
+                       name);
+}
+
+const char *
+cf_format_extension(cf_format_t format)
+{
+    if ((unsigned)format >= CF_FORMAT_LAST_)
+        return "";
+    return format_names[format];
+}
+
+
+/* ---- buffers ------------------------------------------------------------ */
+
+static cairo_status_t
+stream_write(void *closure, const unsigned char *data, unsigned int length)
+{
+    return cf__buf_append(closure, data, length) == 0
+        ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
+}
+
+/* ---- deterministic post-processing -------------------------------------- */
+
+static int
+buf_append_str(cf__buf_t *b, const char *s)
+{
+    return cf__buf_append(b, s, strlen(s));
+}
+
+static int
+append_xml_escaped(cf__buf_t *b, const char *s)
+{
+    for (; *s != '\0'; s++) {
+        int r;
+        switch (*s) {
+        case '<':
+            r = buf_append_str(b, "&lt;");
+            break;
+        case '>':
+            r = buf_append_str(b, "&gt;");
+            break;
+        case '&':
+            r = buf_append_str(b, "&amp;");
+            break;
+        case '"':
+            r = buf_append_str(b, "&quot;");
+            break;
+        default:
+            r = cf__buf_append(b, s, 1);
+        }
+        if (r != 0)
+            return r;
+    }
+    return 0;
+}
+
+static const unsigned char *
+find_bytes(const unsigned char *h, size_t n, const char *needle)
+{
+    size_t m = strlen(needle), i;
+    if (m > n)
+        return NULL;
+    for (i = 0; i + m <= n; i++)
+        if (h[i] == (unsigned char)needle[0] && memcmp(h + i, needle, m) == 0)
+            return h + i;
+    return NULL;
+}
+
+/* SVG: <title>/<desc> after the opening <svg ...> tag, and the ids cairo
+** numbers per process ("surface123") renumbered in order of appearance. */
+static int
+svg_fix(const char *title, const char *cap, const cf__buf_t *in,
+        cf__buf_t *out)
+{
+    const unsigned char *p = in->data, *end = in->data + in->size, *svg, *gt;
+    long map_from[64];
+    size_t nmap = 0;
+
+    svg = find_bytes(p, in->size, "<svg");
+    gt = svg != NULL ? memchr(svg, '>', (size_t)(end - svg)) : NULL;
+    if (gt == NULL)
+        return -1;
+    if (cf__buf_append(out, p, (size_t)(gt + 1 - p)) != 0)
+        return -1;
+    if (title != NULL || cap != NULL) {
+        if (buf_append_str(out, "\n<title>") != 0
+            || append_xml_escaped(out, title != NULL ? title : cap) != 0
+            || buf_append_str(out, "</title>") != 0)
+            return -1;
+        if (cap != NULL
+            && (buf_append_str(out, "\n<desc>") != 0
+                || append_xml_escaped(out, cap) != 0
+                || buf_append_str(out, "</desc>") != 0))
+            return -1;
+    }
+    p = gt + 1;
+    while (p < end) {
+        const unsigned char *s = find_bytes(p, (size_t)(end - p), "surface");
+        const unsigned char *d;
+        long v = 0;
+        size_t k;
+        char num[32];
+        if (s == NULL) {
+            if (cf__buf_append(out, p, (size_t)(end - p)) != 0)
+                return -1;
+            break;
+        }
+        d = s + 7;
+        if (d >= end || *d < '0' || *d > '9') {
+            if (cf__buf_append(out, p, (size_t)(d - p)) != 0)
+                return -1;
+            p = d;
+            continue;
+        }
+        while (d < end && *d >= '0' && *d <= '9' && v < 100000000)
+            v = v * 10 + (*d++ - '0');
+        for (k = 0; k < nmap && map_from[k] != v; k++)
+            ;
+        if (k == nmap) {
+            if (nmap == sizeof map_from / sizeof map_from[0])
+                return -1;
+            map_from[nmap++] = v;
+        }
+        snprintf(num, sizeof num, "surface%zu", k + 1);
+        if (cf__buf_append(out, p, (size_t)(s - p)) != 0
+            || buf_append_str(out, num) != 0)
+            return -1;
+        p = d;
+    }
+    return out->failed ? -1 : 0;
+}
+
+/* PS/EPS: drop the %%CreationDate line. */
+static int
+ps_fix(const cf__buf_t *in, cf__buf_t *out)
+{
+    const unsigned char *p = in->data, *end = in->data + in->size;
+    while (p < end) {
+        const unsigned char *nl = memchr(p, '\n', (size_t)(end - p));
+        const unsigned char *next = nl != NULL ? nl + 1 : end;
+        size_t n = (size_t)(next - p);
+        if (!(n >= 15 && memcmp(p, "%%CreationDate:", 15) == 0))
+            if (cf__buf_append(out, p, n) != 0)
+                return -1;
+        p = next;
+    }
+    return out->failed ? -1 : 0;
+}
+
+/* EPS from PS.  cairo's PostScript writer (cairo 1.16) emits the same
+** program for PS and EPS except for a few header and setup lines, and a
+** PS page with translucent elements costs a fallback image at 300 dpi
+** (half the time of the whole figure set went into PS and EPS).  So when
+** both are written, the EPS is derived from the PS:
+**   line 1 "%!PS-Adobe-3.0" gets " EPSF-3.0";
+**   "%%DocumentMedia:", "%%PageMedia:" and "W H cairo_set_page_size" go;
+**   the language-level check after "%%BeginProlog" (5 lines) becomes
+**   "50 dict begin", and "end" follows "%%Trailer";
+**   the definition "/cairo_set_page_size { ... } def" goes.
+** Every piece must be found exactly once, else -1 and the caller renders
+** the EPS through cairo; only used with cairo 1.16.0, the version the
+** test (tests/render/test_output.c) compares against byte for byte.
+** 0 on success, -1 unexpected input, -2 out of memory. */
+static bool
+line_is(const unsigned char *p, size_t n, const char *s)
+{
+    return n == strlen(s) && memcmp(p, s, n) == 0;
+}
+
+static bool
+line_starts(const unsigned char *p, size_t n, const char *s)
+{
+    return n >= strlen(s) && memcmp(p, s, strlen(s)) == 0;
+}
+
+/* "W H cairo_set_page_size\n" with W and H unsigned numbers. */
+static bool
+is_set_page_size(const unsigned char *p, size_t n)
+{
+    static const char tail[] = " cairo_set_page_size\n";
+    size_t t = sizeof tail - 1, i, spaces = 0;
+    if (n <= t || memcmp(p + n - t, tail, t) != 0)
+        return false;
+    for (i = 0; i < n - t; i++) {
+        if (p[i] == ' ')
+            spaces++;
+        else if (!((p[i] >= '0' && p[i] <= '9') || p[i] == '.'))
+            return false;
+    }
+    return spaces == 1 && p[0] != ' ' && p[n - t - 1] != ' ';
+}
+
+int
+cf__eps_from_ps(const cf__buf_t *ps, cf__buf_t *eps)
+{
+    const unsigned char *p = ps->data, *end = ps->data + ps->size;
+    int media = 0, level = 0, setpage_def = 0, page_media = 0;
+    int setpage_call = 0, trailer = 0, in_def = 0, line_no = 0;
+    int in_header = 1, skip_level = 0;
+
+    while (p < end) {
+        const unsigned char *nl = memchr(p, '\n', (size_t)(end - p));
+        size_t n;
+        int r = 0;
+        if (nl == NULL)
+            return -1;
+        n = (size_t)(nl + 1 - p);
+        line_no++;
+        if (line_no == 1) {
+            if (!line_is(p, n, "%!PS-Adobe-3.0\n"))
+                return -1;
+            r = buf_append_str(eps, "%!PS-Adobe-3.0 EPSF-3.0\n");
+        } else if (skip_level > 0) {
+            /* the language-level check: 4 more lines */
+            static const char *const check[] = {
+                "{ pop languagelevel } { 1 } ifelse\n",
+                (" lt { /Helvetica findfont 12 scalefont setfont 50 500 "
+                 "moveto\n"),
+                "  (This print job requires a PostScript Language Level ",
+                "  showpage quit } if\n",
+            };
+            const char *want = check[4 - skip_level];
+            bool ok = skip_level == 3
+                ? n > strlen(want) && p[0] >= '1' && p[0] <= '3'
+                      && line_is(p + 1, n - 1, want)
+                : skip_level == 2 ? line_starts(p, n, want)
+                                  : line_is(p, n, want);
+            if (!ok)
+                return -1;
+            skip_level--;
+        } else if (in_def) {
+            if (line_is(p, n, "} def\n"))
+                in_def = 0;
+        } else if (in_header && line_starts(p, n, "%%DocumentMedia: ")) {
+            media++;
+        } else if (line_is(p, n, "%%EndComments\n")) {
+            in_header = 0;
+            r = cf__buf_append(eps, p, n);
+        } else if (line_is(p, n, "/languagelevel where\n")) {
+            level++;
+            skip_level = 4;
+            r = buf_append_str(eps, "50 dict begin\n");
+        } else if (line_is(p, n, "/cairo_set_page_size {\n")) {
+            setpage_def++;
+            in_def = 1;
+        } else if (line_starts(p, n, "%%PageMedia: ")) {
+            page_media++;
+        } else if (is_set_page_size(p, n)) {
+            setpage_call++;
+        } else if (line_is(p, n, "%%Trailer\n")) {
+            trailer++;
+            r = buf_append_str(eps, "%%Trailer\nend\n");
+        } else {
+            r = cf__buf_append(eps, p, n);
+        }
+        if (r != 0)
+            return -2;
+        p = nl + 1;
+    }
+    if (media != 1 || level != 1 || setpage_def != 1 || page_media != 1
+        || setpage_call != 1 || trailer != 1 || in_def || skip_level > 0)
+        return -1;
+    return 0;
+}
+
+/* PDF dates: from SOURCE_DATE_EPOCH (ISO 8601, UTC), else 2000-01-01 so
+** that the clock never enters the file. */
+static void
+pdf_date(char *buf, size_t cap)
+{
+    const char *e = getenv("SOURCE_DATE_EPOCH");
+    long long t = 946684800;   /* 2000-01-01T00:00:00Z */
+    long long days, secs, y, m, d, era, doe, yoe, doy, mp;
+    if (e != NULL && *e != '\0') {
+        char *endp;
+        long long v = strtoll(e, &endp, 10);
+        if (*endp == '\0' && v >= 0 && v < 253402300800LL)
+            t = v;
+    }
+    days = t / 86400;
+    secs = t % 86400;
+    /* civil from days (H. Hinnant's algorithm) */
+    days += 719468;
+    era = days / 146097;
+    doe = days - era * 146097;
+    yoe = (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
+    y = yoe + era * 400;
+    doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    mp = (5 * doy + 2) / 153;
+    d = doy - (153 * mp + 2) / 5 + 1;
+    m = mp < 10 ? mp + 3 : mp - 9;
+    if (m <= 2)
+        y++;
+    snprintf(buf, cap, "%04lld-%02lld-%02lldT%02lld:%02lld:%02lldZ", y, m, d,
+             secs / 3600, secs / 60 % 60, secs % 60);
+}
+
+/* ---- one page in one format -------------------------------------------- */
+
+static cairo_surface_t *
+make_surface(cf_format_t format, const cf__page_t *pg, double dpi,
+             const char *title, const char *caption, cf__buf_t *raw,
+             cf_diag_t *diag)
+{
+    cairo_surface_t *surf = NULL;
+    switch (format) {
+    case CF_FORMAT_SVG:
+        surf = cairo_svg_surface_create_for_stream(stream_write, raw,
+                                                   pg->width, pg->height);
+        cairo_svg_surface_restrict_to_version(surf, CAIRO_SVG_VERSION_1_1);
+        cairo_svg_surface_set_document_unit(surf, CAIRO_SVG_UNIT_PT);
+        break;
+    case CF_FORMAT_PDF: {
+        char date[40];
+        surf = cairo_pdf_surface_create_for_stream(stream_write, raw,
+                                                   pg->width, pg->height);
+        pdf_date(date, sizeof date);
+        cairo_pdf_surface_set_metadata(surf, CAIRO_PDF_METADATA_CREATE_DATE,
+                                       date);
+        cairo_pdf_surface_set_metadata(surf, CAIRO_PDF_METADATA_MOD_DATE,
+                                       date);
+        if (title != NULL)
+            cairo_pdf_surface_set_metadata(surf, CAIRO_PDF_METADATA_TITLE,
+                                           title);
+        if (caption != NULL)
+            cairo_pdf_surface_set_metadata(surf, CAIRO_PDF_METADATA_SUBJECT,
+                                           caption);
+        break;
+    }
+    case CF_FORMAT_PS:
+    case CF_FORMAT_EPS:
+        surf = cairo_ps_surface_create_for_stream(stream_write, raw,
+                                                  pg->width, pg->height);
+        cairo_ps_surface_set_eps(surf, format == CF_FORMAT_EPS);
+        break;
+    case CF_FORMAT_PNG: {
+        double k = dpi / 72.0;
+        double wpx = ceil(pg->width * k - 1e-6);
+        double hpx = ceil(pg->height * k - 1e-6);
+        if (wpx > 32000 || hpx > 32000) {
+            cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                        "PNG of %.0f x %.0f pixels is too large (at most "
+                        "32000 a side); lower the dpi", wpx, hpx);
+            return NULL;
+        }
+        surf = cairo_image_surface_create(CAIRO_FORMAT_ARGB32,
+                                          (int)fmax(1, wpx),
+                                          (int)fmax(1, hpx));
+        break;
+    }
+    default:
+        cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1, "unknown format %d",
+                    (int)format);
+        return NULL;
+    }
+    return surf;
+}
+
+cf_status_t
+cf__format_render(cf_format_t format, const cf__dl_t *dl,
+                  const cf__page_t *page, double dpi, const char *title,
+                  const char *caption, cf__buf_t *out, cf_diag_t *diag)
+{
+    cf__page_t pg = *page;
+    cf__buf_t raw;
+    cairo_surface_t *surf;
+    cairo_t *cr;
+    cairo_status_t cst;
+    cf_status_t st;
+    int r;
+
+    memset(&raw, 0, sizeof raw);
+    pg.raster = format == CF_FORMAT_PNG;
+    surf = make_surface(format, &pg, dpi, title, caption, &raw, diag);
+    if (surf == NULL)
+        return diag != NULL && diag->status != CF_STATUS_OK
+            ? diag->status : CF_STATUS_INVALID_ARG;
+    cr = cairo_create(surf);
+    if (format == CF_FORMAT_PNG)
+        cairo_scale(cr, dpi / 72.0, dpi / 72.0);
+    cf__dl_play_page(dl, &pg, &cf__cairo_backend, cr);
+    cst = cairo_status(cr);
+    cairo_destroy(cr);
+    if (format == CF_FORMAT_PNG && cst == CAIRO_STATUS_SUCCESS) {
+        st = cf__png_encode(surf, dpi, &raw, diag);
+        if (st != CF_STATUS_OK) {
+            cairo_surface_destroy(surf);
+            cf__buf_free(&raw);
+            return st;
+        }
+    }
+    cairo_surface_finish(surf);
+    if (cst == CAIRO_STATUS_SUCCESS)
+        cst = cairo_surface_status(surf);
+    cairo_surface_destroy(surf);
+    if (cst != CAIRO_STATUS_SUCCESS || raw.failed) {
+        cf__buf_free(&raw);
+        if (cst == CAIRO_STATUS_NO_MEMORY || cst == CAIRO_STATUS_WRITE_ERROR
+            || raw.failed)
+            return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                               "out of memory rendering %s",
+                               format_names[format]);
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "cairo failed rendering %s: %s",
+                           format_names[format],
+                           cairo_status_to_string(cst));
+    }
+    if (format != CF_FORMAT_SVG && format != CF_FORMAT_PS
+        && format != CF_FORMAT_EPS) {
+        *out = raw;
+        return CF_STATUS_OK;
+    }
+    r = format == CF_FORMAT_SVG ? svg_fix(title, caption, &raw, out)
+                                : ps_fix(&raw, out);
+    cf__buf_free(&raw);
+    if (r != 0) {
+        cf__buf_free(out);
+        return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                           "out of memory post-processing %s",
+                           format_names[format]);
+    }
+    return CF_STATUS_OK;
+}

@@ -1,0 +1,182 @@
+/*
+** The characters of labels: UTF-8, and the tables of symbol commands
+** (\\alpha, \\leq), spaces (\\, \\quad) and accents (\\hat).
+*/
+#include <string.h>
+
+#include "label-impl.h"
+
+size_t
+cf__utf8_decode(const char *s, size_t len, size_t pos, unsigned *cp)
+{
+    const unsigned char *u = (const unsigned char *)s + pos;
+    size_t n, i, avail = len - pos;
+    unsigned c;
+    if (u[0] < 0x80) {
+        *cp = u[0];
+        return 1;
+    }
+    if ((u[0] & 0xe0) == 0xc0) {
+        n = 2;
+        c = u[0] & 0x1f;
+    } else if ((u[0] & 0xf0) == 0xe0) {
+        n = 3;
+        c = u[0] & 0x0f;
+    } else if ((u[0] & 0xf8) == 0xf0) {
+        n = 4;
+        c = u[0] & 0x07;
+    } else {
+        return 0;
+    }
+    if (n > avail)
+        return 0;
+    for (i = 1; i < n; i++) {
+        if ((u[i] & 0xc0) != 0x80)
+            return 0;
+        c = (c << 6) | (u[i] & 0x3f);
+    }
+    if ((n == 2 && c < 0x80) || (n == 3 && c < 0x800)
+        || (n == 4 && (c < 0x10000 || c > 0x10ffff))
+        || (c >= 0xd800 && c <= 0xdfff))
+        return 0;
+    *cp = c;
+    return n;
+}
+
+size_t
+cf__utf8_encode(unsigned c, char *out)
+{
+    if (c < 0x80) {
+        out[0] = (char)c;
+        return 1;
+    }
+    if (c < 0x800) {
+        out[0] = (char)(0xc0 | (c >> 6));
+        out[1] = (char)(0x80 | (c & 0x3f));
+        return 2;
+    }
+    if (c < 0x10000) {
+        out[0] = (char)(0xe0 | (c >> 12));
+        out[1] = (char)(0x80 | ((c >> 6) & 0x3f));
+        out[2] = (char)(0x80 | (c & 0x3f));
+        return 3;
+    }
+    out[0] = (char)(0xf0 | (c >> 18));
+    out[1] = (char)(0x80 | ((c >> 12) & 0x3f));
+    out[2] = (char)(0x80 | ((c >> 6) & 0x3f));
+    out[3] = (char)(0x80 | (c & 0x3f));
+    return 4;
+}
+
+typedef struct command {
+    const char *name;
+    unsigned cp;
+    int cls;
+    int italic;   /* 1 italic in math, 0 upright */
+} command_t;
+
+static const command_t commands[] = {
+    { "alpha", 0x3b1, CLS_ORD, 1 },    { "beta", 0x3b2, CLS_ORD, 1 },
+    { "gamma", 0x3b3, CLS_ORD, 1 },    { "delta", 0x3b4, CLS_ORD, 1 },
+    { "epsilon", 0x3f5, CLS_ORD, 1 },  { "varepsilon", 0x3b5, CLS_ORD, 1 },
+    { "zeta", 0x3b6, CLS_ORD, 1 },     { "eta", 0x3b7, CLS_ORD, 1 },
+    { "theta", 0x3b8, CLS_ORD, 1 },    { "vartheta", 0x3d1, CLS_ORD, 1 },
+    { "iota", 0x3b9, CLS_ORD, 1 },     { "kappa", 0x3ba, CLS_ORD, 1 },
+    { "lambda", 0x3bb, CLS_ORD, 1 },   { "mu", 0x3bc, CLS_ORD, 1 },
+    { "nu", 0x3bd, CLS_ORD, 1 },       { "xi", 0x3be, CLS_ORD, 1 },
+    { "omicron", 0x3bf, CLS_ORD, 1 },  { "pi", 0x3c0, CLS_ORD, 1 },
+    { "varpi", 0x3d6, CLS_ORD, 1 },    { "rho", 0x3c1, CLS_ORD, 1 },
+    { "varrho", 0x3f1, CLS_ORD, 1 },   { "sigma", 0x3c3, CLS_ORD, 1 },
+    { "varsigma", 0x3c2, CLS_ORD, 1 }, { "tau", 0x3c4, CLS_ORD, 1 },
+    { "upsilon", 0x3c5, CLS_ORD, 1 },  { "phi", 0x3d5, CLS_ORD, 1 },
+    { "varphi", 0x3c6, CLS_ORD, 1 },   { "chi", 0x3c7, CLS_ORD, 1 },
+    { "psi", 0x3c8, CLS_ORD, 1 },      { "omega", 0x3c9, CLS_ORD, 1 },
+    { "Gamma", 0x393, CLS_ORD, 0 },    { "Delta", 0x394, CLS_ORD, 0 },
+    { "Theta", 0x398, CLS_ORD, 0 },    { "Lambda", 0x39b, CLS_ORD, 0 },
+    { "Xi", 0x39e, CLS_ORD, 0 },       { "Pi", 0x3a0, CLS_ORD, 0 },
+    { "Sigma", 0x3a3, CLS_ORD, 0 },    { "Upsilon", 0x3a5, CLS_ORD, 0 },
+    { "Phi", 0x3a6, CLS_ORD, 0 },      { "Psi", 0x3a8, CLS_ORD, 0 },
+    { "Omega", 0x3a9, CLS_ORD, 0 },
+    { "cdot", 0x22c5, CLS_BIN, 0 },    { "times", 0xd7, CLS_BIN, 0 },
+    { "pm", 0xb1, CLS_BIN, 0 },        { "mp", 0x2213, CLS_BIN, 0 },
+    { "circ", 0x2218, CLS_BIN, 0 },
+    { "leq", 0x2264, CLS_REL, 0 },     { "le", 0x2264, CLS_REL, 0 },
+    { "geq", 0x2265, CLS_REL, 0 },     { "ge", 0x2265, CLS_REL, 0 },
+    { "neq", 0x2260, CLS_REL, 0 },     { "ne", 0x2260, CLS_REL, 0 },
+    { "approx", 0x2248, CLS_REL, 0 },  { "equiv", 0x2261, CLS_REL, 0 },
+    { "to", 0x2192, CLS_REL, 0 },      { "rightarrow", 0x2192, CLS_REL, 0 },
+    { "mapsto", 0x21a6, CLS_REL, 0 },  { "in", 0x2208, CLS_REL, 0 },
+    { "subset", 0x2282, CLS_REL, 0 },
+    { "infty", 0x221e, CLS_ORD, 0 },   { "partial", 0x2202, CLS_ORD, 1 },
+    { "nabla", 0x2207, CLS_ORD, 0 },   { "ldots", 0x2026, CLS_ORD, 0 },
+    { "dots", 0x2026, CLS_ORD, 0 },    { "cdots", 0x22ef, CLS_ORD, 0 },
+    { "sum", 0x2211, CLS_ORD, 0 },     { "prod", 0x220f, CLS_ORD, 0 },
+    { "int", 0x222b, CLS_ORD, 0 },     { "prime", 0x2032, CLS_ORD, 0 },
+    { "ell", 0x2113, CLS_ORD, 0 },     { "deg", 0xb0, CLS_ORD, 0 },
+    { "langle", 0x27e8, CLS_OPEN, 0 }, { "rangle", 0x27e9, CLS_CLOSE, 0 },
+    { "{", '{', CLS_OPEN, 0 },         { "}", '}', CLS_CLOSE, 0 },
+    { "_", '_', CLS_ORD, 0 },          { "$", '$', CLS_ORD, 0 },
+    { "\\", '\\', CLS_ORD, 0 },        { "^", '^', CLS_ORD, 0 },
+    { "%", '%', CLS_ORD, 0 },          { "#", '#', CLS_ORD, 0 },
+    { "&", '&', CLS_ORD, 0 },          { "|", 0x2016, CLS_ORD, 0 },
+};
+
+/* Horizontal spaces in em. */
+static const struct {
+    const char *name;
+    double em;
+} spaces[] = {
+    { ",", 3.0 / 18 }, { ":", 4.0 / 18 }, { ";", 5.0 / 18 },
+    { "!", -3.0 / 18 }, { " ", 6.0 / 18 }, { "quad", 1.0 },
+    { "qquad", 2.0 },
+};
+
+/* Accents over a single character (spacing forms, placed by hand). */
+static const struct {
+    const char *name;
+    unsigned cp;
+} accents[] = {
+    { "hat", 0x2c6 }, { "bar", 0xaf }, { "tilde", 0x2dc },
+    { "vec", 0x2192 }, { "dot", 0x2d9 }, { "ddot", 0xa8 },
+};
+
+bool
+cf__label_symbol(const char *name, unsigned *cp, int *cls, bool *italic)
+{
+    size_t i;
+    for (i = 0; i < sizeof commands / sizeof commands[0]; i++) {
+        if (strcmp(name, commands[i].name) == 0) {
+            *cp = commands[i].cp;
+            *cls = commands[i].cls;
+            *italic = commands[i].italic != 0;
+            return true;
+        }
+    }
+    return false;
+}
+
+bool
+cf__label_space(const char *name, double *em)
+{
+    size_t i;
+    for (i = 0; i < sizeof spaces / sizeof spaces[0]; i++) {
+        if (strcmp(name, spaces[i].name) == 0) {
+            *em = spaces[i].em;
+            return true;
+        }
+    }
+    return false;
+}
+
+bool
+cf__label_accent(const char *name, unsigned *cp)
+{
+    size_t i;
+    for (i = 0; i < sizeof accents / sizeof accents[0]; i++) {
+        if (strcmp(name, accents[i].name) == 0) {
+            *cp = accents[i].cp;
+            return true;
+        }
+    }
+    return false;
+}

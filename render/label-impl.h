@@ -1,0 +1,98 @@
+/*
+** Internals shared by the files of labels: the runs of a laid-out label,
+** the font state of the parser, and the character tables.
+**   label.c        the public functions, ink box and drawing
+**   label-parse.c  the parser, which lays out as it reads
+**   label-runs.c   runs of glyphs measured with pango
+**   label-chars.c  UTF-8 and the tables of commands, spaces and accents
+*/
+#ifndef CURVEFIG_RENDER_LABEL_IMPL_H
+#define CURVEFIG_RENDER_LABEL_IMPL_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+#include <pango/pangocairo.h>
+
+#include "label-private.h"
+
+#define SCRIPT_RATIO 0.7       /* 10 pt -> 7 pt */
+#define SCRIPT2_RATIO 0.5      /* 10 pt -> 5 pt */
+#define MAX_DEPTH 32           /* nesting of groups */
+
+typedef struct run {
+    char *text;
+    size_t text_len;
+    double x, y;              /* baseline origin, y up */
+    double size;
+    int level;
+    cf_label_kind_t kind;
+    bool italic, bold;
+    PangoLayout *layout;
+    double width, ascent, descent;   /* logical */
+    double ink[4];                   /* x0 y0 x1 y1 relative to origin,
+                                        y down */
+    double baseline;                 /* layout top to baseline */
+    double rule_h;                   /* > 0: a fraction rule of this
+                                        thickness, width `width`, its
+                                        bottom at y (no text) */
+} run_t;
+
+struct cf_label {
+    run_t *runs;
+    size_t count, cap;
+    char *family;
+    double size;
+    size_t unknown;
+    PangoContext *ctx;
+    bool merge_ok;            /* the last atom may be extended */
+    cf_label_box_t *boxes;    /* public view of the runs */
+};
+
+typedef struct font {
+    double size;
+    int level;
+    cf_label_kind_t kind;
+    bool italic, bold;
+    bool text;            /* text mode: upright, no scripts */
+} font_t;
+
+/* Spacing classes of atoms (TeX's, text style). */
+enum { CLS_NONE, CLS_ORD, CLS_BIN, CLS_REL, CLS_OPEN, CLS_CLOSE,
+       CLS_PUNCT, CLS_SPACE };
+
+/* ---- label-runs.c ------------------------------------------------------- */
+
+/* Append UTF-8 bytes at (x, y) in font f; merges with the previous run
+** when it continues it.  Returns the new pen x, or NAN when out of
+** memory. */
+double cf__label_put_text(cf_label_t *lab, const font_t *f, double x,
+                          double y, const char *s, size_t n);
+/* TeX's italic correction of one slanted character in font f: how far
+** its ink reaches right of its advance width (0 when it does not). */
+double cf__label_italic_correction(cf_label_t *lab, const font_t *f,
+                                   const char *s, size_t n);
+
+/* ---- label-chars.c ------------------------------------------------------ */
+
+/* Decode one UTF-8 character at s[pos]; returns its length (0 when
+** invalid) and the code point. */
+size_t cf__utf8_decode(const char *s, size_t len, size_t pos, unsigned *cp);
+/* Encode c into out (4 bytes of room); returns the length. */
+size_t cf__utf8_encode(unsigned c, char *out);
+/* The symbol a command names: code point, class, italic in math. */
+bool cf__label_symbol(const char *name, unsigned *cp, int *cls,
+                      bool *italic);
+/* A horizontal space command: its width in em. */
+bool cf__label_space(const char *name, double *em);
+/* An accent command: the code point of its spacing form. */
+bool cf__label_accent(const char *name, unsigned *cp);
+
+/* ---- label-parse.c ------------------------------------------------------ */
+
+/* Parse and lay out text into lab (empty, with family, size and context
+** set). */
+cf_status_t cf__label_parse(cf_label_t *lab, const char *text,
+                            cf_diag_t *diag);
+
+#endif

@@ -1,0 +1,278 @@
+/*
+** Layout: the data window (explicit, or fitted to what is drawn), the
+** data -> page map, room for what sticks out of the data box (labels,
+** markers, arrow heads, line widths: the ink of a first pass), and the
+** display list of a layout.
+*/
+#include <math.h>
+#include <string.h>
+
+#include "backend.h"
+#include "model.h"
+
+static void
+compute_map(const cf_figure_t *fig, const double win[4], bool keep,
+            const double avail[4], cf__layout_t *lay)
+{
+    double aw = avail[2] - avail[0], ah = avail[3] - avail[1];
+    double dx = win[1] - win[0], dy = win[3] - win[2];
+    lay->xmin = win[0];
+    lay->xmax = win[1];
+    lay->ymin = win[2];
+    lay->ymax = win[3];
+    lay->sx = aw / dx;
+    lay->sy = ah / dy;
+    if (keep) {
+        double s = fmin(lay->sx, lay->sy);
+        lay->sx = lay->sy = s;
+    }
+    /* centre in the available box */
+    lay->ox = avail[0] + 0.5 * (aw - lay->sx * dx);
+    lay->oy = avail[3] - 0.5 * (ah - lay->sy * dy);
+    lay->tol = fig->tol / fmax(lay->sx, lay->sy);
+}
+
+
+/* The ink box of the figure drawn with layout lay. */
+static cf_status_t
+ink_of(cf_figure_t *fig, const cf__layout_t *lay, double ink[4])
+{
+    cf__dl_t dl;
+    cf_status_t st;
+    cf__dl_init(&dl);
+    st = cf__figure_build(fig, lay, &dl);
+    if (st == CF_STATUS_OK)
+        cf__cairo_ink(&dl, 0, dl.count, ink);
+    cf__dl_free(&dl);
+    return st;
+}
+
+cf_status_t
+cf__figure_build(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
+{
+    size_t i;
+    if (cf__place_auto_labels(fig, lay) != CF_STATUS_OK)
+        return fig->err.status;
+    for (i = 0; i < fig->count; i++)
+        if (cf__element_draw(fig, i, lay, dl) != CF_STATUS_OK)
+            return fig->err.status;
+    if (dl->failed)
+        return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                           "out of memory for the display list");
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
+{
+    double win[4], avail[4], ink[4], m = fig->margin;
+    cf__bounds_t b;
+    bool keep;
+    size_t i;
+
+    memset(&b, 0, sizeof b);
+    for (i = 0; i < fig->count; i++)
+        fig->els[i]->kind->bounds(fig->els[i], &b);
+    lay->clip = fig->window_set;
+    if (fig->window_set) {
+        memcpy(win, fig->win, sizeof win);
+    } else if (!b.any) {
+        win[0] = 0;
+        win[1] = 1;
+        win[2] = 0;
+        win[3] = 1;
+    } else {
+        double span = fmax(b.x1 - b.x0, b.y1 - b.y0);
+        if (!(span > 0))
+            span = fmax(1.0, fabs(b.x0) + fabs(b.y0));
+        win[0] = b.x0;
+        win[1] = b.x1;
+        win[2] = b.y0;
+        win[3] = b.y1;
+        /* a flat box (a horizontal segment) gets some height */
+        if (!(win[1] - win[0] > 1e-9 * span)) {
+            win[0] -= 0.5 * span;
+            win[1] += 0.5 * span;
+        }
+        if (!(win[3] - win[2] > 1e-9 * span)) {
+            win[2] -= 0.5 * span;
+            win[3] += 0.5 * span;
+        }
+    }
+    /* the extent must itself be a finite number: coordinates near
+    ** DBL_MAX (or a window of such width) overflow it */
+    if (!isfinite(win[1] - win[0]) || !isfinite(win[3] - win[2]))
+        return cf_diag_set(&fig->err,
+                           CF_STATUS_NOT_FINITE, -1,
+                           "the %s spans %g x %g, too large to draw "
+                           "(coordinates up to about 1e307)",
+                           fig->window_set ? "window" : "drawing",
+                           win[1] - win[0], win[3] - win[2]);
+    keep = fig->aspect == 1;
+    if (fig->aspect < 0) {
+        keep = true;
+        for (i = 0; i < fig->count; i++)
+            if (fig->els[i]->kind->flags & CF__KIND_AXES)
+                keep = false;
+    }
+    avail[0] = m;
+    avail[1] = m;
+    avail[2] = fig->width - m;
+    avail[3] = fig->height - m;
+    compute_map(fig, win, keep, avail, lay);
+    if (fig->count == 0)
+        return CF_STATUS_OK;
+    /* second pass: leave room for what sticks out of the data box
+    ** (labels, markers, arrow heads, line widths) */
+    if (ink_of(fig, lay, ink) != CF_STATUS_OK)
+        return fig->err.status;
+    {
+        double dl = lay->ox, dr = lay->ox + lay->sx * (win[1] - win[0]);
+        double db = lay->oy, dt = lay->oy - lay->sy * (win[3] - win[2]);
+        double ol = fmax(0, dl - ink[0]), or_ = fmax(0, ink[2] - dr);
+        double ot = fmax(0, dt - ink[1]), ob = fmax(0, ink[3] - db);
+        double maxw = 0.4 * (fig->width - 2 * m);
+        double maxh = 0.4 * (fig->height - 2 * m);
+        if (ol + or_ > maxw) {
+            double k = maxw / (ol + or_);
+            ol *= k;
+            or_ *= k;
+        }
+        if (ot + ob > maxh) {
+            double k = maxh / (ot + ob);
+            ot *= k;
+            ob *= k;
+        }
+        avail[0] = m + ol;
+        avail[2] = fig->width - m - or_;
+        avail[1] = m + ot;
+        avail[3] = fig->height - m - ob;
+    }
+    compute_map(fig, win, keep, avail, lay);
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_figure_get_window(cf_figure_t *fig, double window[4], double *sx,
+                     double *sy)
+{
+    cf__layout_t lay;
+    CF__FIG_CHECK(fig);
+    if (cf__figure_layout(fig, &lay) != CF_STATUS_OK)
+        return fig->err.status;
+    if (window != NULL) {
+        window[0] = lay.xmin;
+        window[1] = lay.xmax;
+        window[2] = lay.ymin;
+        window[3] = lay.ymax;
+    }
+    if (sx != NULL)
+        *sx = lay.sx;
+    if (sy != NULL)
+        *sy = lay.sy;
+    return CF_STATUS_OK;
+}
+
+/* ---- the page ----------------------------------------------------------- */
+
+/* Ink outside the page below this (bp) is rounding, not an overflow. */
+#define PAGE_SLACK 0.05
+
+/* How far ink box b sticks out of a w x h page (bp, <= 0: not at all),
+** and on which side. */
+static double
+overflow(const double b[4], double w, double h, const char **side)
+{
+    double o[4] = { -b[0], -b[1], b[2] - w, b[3] - h }, worst = o[0];
+    static const char *const sides[4] = { "left", "top", "right",
+                                          "bottom" };
+    int k, at = 0;
+    for (k = 1; k < 4; k++)
+        if (o[k] > worst) {
+            worst = o[k];
+            at = k;
+        }
+    *side = sides[at];
+    return worst;
+}
+
+static bool
+draws(const cf__op_t *op)
+{
+    return op->kind == CF__OP_PATH || op->kind == CF__OP_MARKER
+        || op->kind == CF__OP_TEXT;
+}
+
+/* The element (GROUP ... END at ops [g, e)) whose ink sticks out
+** farthest: an error naming it. */
+static cf_status_t
+page_overflow(const cf__dl_t *dl, double w, double h, cf_diag_t *diag)
+{
+    size_t i = 0, worst_g = 0;
+    double worst = 0;
+    const char *worst_side = "", *text = NULL;
+    while (i < dl->count) {
+        size_t g = i, e = i + 1;
+        double ink[4], o;
+        const char *sd;
+        if (dl->ops[i].kind != CF__OP_GROUP) {
+            i++;
+            continue;
+        }
+        while (e < dl->count && dl->ops[e].kind != CF__OP_END)
+            e++;
+        i = e + 1;
+        if (cf__cairo_ink(dl, g, e + 1, ink) != 0)
+            continue;
+        if (!(ink[2] > ink[0] && ink[3] > ink[1]))
+            continue;
+        o = overflow(ink, w, h, &sd);
+        if (o > worst) {
+            worst = o;
+            worst_g = g;
+            worst_side = sd;
+        }
+    }
+    if (!(worst > PAGE_SLACK))
+        return CF_STATUS_OK;
+    for (i = worst_g; i < dl->count && dl->ops[i].kind != CF__OP_END; i++)
+        if (dl->ops[i].kind == CF__OP_TEXT) {
+            text = dl->ops[i].u.text.source;
+            break;
+        }
+    return cf_diag_set(diag, CF_STATUS_INVALID_ARG,
+                       (long)dl->ops[worst_g].u.group.index,
+                       "%s %zu%s%s%s sticks out of the %.1f x %.1f mm page "
+                       "by %.1f mm (%.1f pt) on the %s; make the page or "
+                       "the margin larger, or let the figure clip "
+                       "(clip = true)",
+                       dl->ops[worst_g].u.group.name,
+                       dl->ops[worst_g].u.group.index + 1,
+                       text != NULL ? " \"" : "", text != NULL ? text : "",
+                       text != NULL ? "\"" : "", w * 25.4 / 72,
+                       h * 25.4 / 72, worst * 25.4 / 72, worst, worst_side);
+}
+
+cf_status_t
+cf__figure_check_page(const cf_figure_t *fig, const cf__dl_t *dl, double w,
+                      double h, bool fixed, cf_diag_t *diag)
+{
+    double ink[4];
+    const char *side;
+    size_t i;
+    bool any = false;
+    for (i = 0; i < dl->count && !any; i++)
+        any = draws(&dl->ops[i]);
+    if (!any)
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "the figure draws nothing (%zu elements, none "
+                           "with anything to show on the page)", fig->count);
+    if (fig->clip_page || !fixed)
+        return CF_STATUS_OK;
+    if (cf__cairo_ink(dl, 0, dl->count, ink) != 0)
+        return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                           "cairo failed measuring the ink");
+    if (!(overflow(ink, w, h, &side) > PAGE_SLACK))
+        return CF_STATUS_OK;
+    return page_overflow(dl, w, h, diag);
+}

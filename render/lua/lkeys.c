@@ -1,0 +1,216 @@
+/*
+** The schemas of every named table of the figure language (lkeys.h):
+** what each function takes by name.  A key added here is known to the
+** check, listed to the tests (which misspell every key and every name
+** and expect the suggestion), and documented by docs/language.md.
+*/
+#include <stddef.h>
+
+#include "lkeys.h"
+
+/* ---- enumerated names --------------------------------------------------- */
+
+static const char *const places[] = {
+    "center", "n", "ne", "e", "se", "s", "sw", "w", "nw", "auto",
+    "above", "below", "left", "right", NULL,
+};
+static const char *const markers[] = {
+    "none", "dot", "circle", "square", "diamond", "triangle", "cross",
+    "plus", "star", "tick", NULL,
+};
+static const char *const dashes[] = {
+    "solid", "dashed", "dotted", "dashdot", NULL,
+};
+static const char *const themes[] = { "default", "mono", NULL };
+static const char *const kinds[] = { "clamped", "closed", "uniform", NULL };
+static const char *const ends[] = { "plain", "tripled", "closed", NULL };
+static const char *const interp_methods[] = {
+    "natural", "clamped", "not-a-knot", "periodic", "catmull-rom", "global",
+    NULL,
+};
+static const char *const params[] = {
+    "uniform", "chord", "centripetal", "default", NULL,
+};
+static const char *const offset_methods[] = {
+    "levien", "tiller-hanson", NULL,
+};
+
+/* ---- key lists ---------------------------------------------------------- */
+
+#define END { NULL, NULL, CF__KEYS_NONE, NULL }
+#define KEY(name) { name, NULL, CF__KEYS_NONE, NULL }
+#define NAMES(name, values) { name, values, CF__KEYS_NONE, NULL }
+#define TABLE(name, schema) { name, NULL, schema, NULL }
+#define PLACES(name) { name, places, CF__KEYS_NONE, \
+                       "a table of places or a function returning one" }
+
+/* the style of lines, areas and markers */
+static const cf__lua_key_t line_style[] = {
+    KEY("color"), KEY("fill"), KEY("width"),
+    { "dash", dashes, CF__KEYS_NONE, "{on, off, ...} in bp" },
+    KEY("opacity"), NAMES("marker", markers), KEY("marker_size"),
+    KEY("marker_color"), KEY("arrow_size"), END,
+};
+/* the style of text */
+static const cf__lua_key_t text_style[] = {
+    KEY("color"), KEY("opacity"), KEY("font_size"), NAMES("place", places),
+    NAMES("anchor", places), KEY("offset"), END,
+};
+/* every style key: refused, with a hint, where no style is taken */
+static const cf__lua_key_t any_style[] = {
+    KEY("color"), KEY("fill"), KEY("width"), KEY("dash"), KEY("opacity"),
+    KEY("marker"), KEY("marker_size"), KEY("marker_color"),
+    KEY("arrow_size"), KEY("font_size"), KEY("place"), KEY("anchor"),
+    KEY("offset"), END,
+};
+/* the labels of the points a method draws (labels.c of the binding) */
+static const cf__lua_key_t point_labels[] = {
+    KEY("labels"), KEY("label_start"), PLACES("label_place"),
+    TABLE("label_style", CF__KEYS_LABEL_STYLE), END,
+};
+/* the one label of an arrow */
+static const cf__lua_key_t arrow_label[] = {
+    KEY("label"), PLACES("label_place"),
+    TABLE("label_style", CF__KEYS_LABEL_STYLE), END,
+};
+
+static const cf__lua_key_t figure_keys[] = {
+    KEY("name"), KEY("caption"), KEY("title"), KEY("width"), KEY("height"),
+    KEY("window"), KEY("margin"), KEY("aspect"), NAMES("theme", themes),
+    KEY("tolerance"), KEY("projection"), KEY("view"), END,
+};
+static const cf__lua_key_t bezier_keys[] = {
+    KEY("points"), KEY("weights"), END,
+};
+static const cf__lua_key_t bspline_keys[] = {
+    KEY("degree"), KEY("points"), KEY("weights"), KEY("knots"),
+    NAMES("kind", kinds), END,
+};
+static const cf__lua_key_t coons_keys[] = {
+    KEY("points"), NAMES("ends", ends), END,
+};
+static const cf__lua_key_t arc_keys[] = {
+    KEY("center"), KEY("x"), KEY("y"), KEY("r"), KEY("from"), KEY("to"),
+    END,
+};
+/* interpolate and approximate (approximate has no method) */
+static const cf__lua_key_t fit_keys[] = {
+    KEY("points"), NAMES("param", params), KEY("degree"), KEY("exponent"),
+    KEY("closed"), KEY("params"), KEY("start_tangent"), KEY("end_tangent"),
+    END,
+};
+static const cf__lua_key_t interpolate_keys[] = {
+    NAMES("method", interp_methods), END,
+};
+static const cf__lua_key_t approximate_keys[] = {
+    KEY("count"), KEY("fix_ends"), END,
+};
+static const cf__lua_key_t offset_keys[] = {
+    KEY("tolerance"), KEY("trim"), NAMES("method", offset_methods), END,
+};
+static const cf__lua_key_t range_keys[] = { KEY("range"), END };
+static const cf__lua_key_t closed_keys[] = { KEY("closed"), END };
+static const cf__lua_key_t scale_keys[] = { KEY("scale"), END };
+static const cf__lua_key_t net_keys[] = {
+    KEY("colors"), KEY("labels"), KEY("label_start"),
+    PLACES("label_place"),
+    TABLE("label_style", CF__KEYS_LABEL_STYLE),
+    TABLE("point", CF__KEYS_POINT_STYLE), KEY("levels"), END,
+};
+static const cf__lua_key_t plot_keys[] = {
+    KEY("x"), KEY("y"), KEY("xticks"), KEY("yticks"), KEY("xtick_labels"),
+    KEY("ytick_labels"), KEY("xlabel"), KEY("ylabel"), KEY("knots"),
+    KEY("knot_labels"), KEY("arrows"), KEY("grid"), KEY("box"),
+    KEY("font_size"), END,
+};
+
+/* ---- the schemas -------------------------------------------------------- */
+
+#define STYLE_HINT "a curve has no style; give it to the drawing method, " \
+    "f:curve(c, { color = \"red\" })"
+#define FIGURE_HINT "a style belongs to what is drawn, f:curve(c, { color " \
+    "= \"red\" }); theme = \"mono\" restyles the whole figure"
+
+/* a method whose table comes last: the first %s of the example */
+#define METHOD(fn, a, b, c, ex) \
+    { fn, "option", { a, b, c }, false, NULL, NULL, ex }
+#define MAKER(fn, a, b, positional, ex) \
+    { fn, "field", { a, b, NULL }, positional, any_style, STYLE_HINT, ex }
+
+static const cf__lua_schema_t schemas[CF__KEYS_COUNT_] = {
+    [CF__KEYS_NONE] = { "", "option", { NULL, NULL, NULL }, false, NULL,
+                        NULL, NULL },
+    [CF__KEYS_FIGURE] = { "figure", "option", { figure_keys, NULL, NULL },
+                          false, any_style, FIGURE_HINT, "figure(%s)" },
+    [CF__KEYS_BEZIER] = MAKER("bezier", bezier_keys, NULL, true,
+                              "bezier(%s)"),
+    [CF__KEYS_BSPLINE] = MAKER("bspline", bspline_keys, NULL, false,
+                               "bspline(%s)"),
+    [CF__KEYS_COONS] = MAKER("coons", coons_keys, NULL, false, "coons(%s)"),
+    [CF__KEYS_NURBS_ARC] = MAKER("nurbs_arc", arc_keys, NULL, false,
+                                 "nurbs_arc(%s)"),
+    [CF__KEYS_INTERPOLATE] = MAKER("interpolate", fit_keys, interpolate_keys,
+                                   false, "interpolate(%s)"),
+    [CF__KEYS_APPROXIMATE] = MAKER("approximate", fit_keys, approximate_keys,
+                                   false, "approximate(%s)"),
+    [CF__KEYS_COONS_CHAIN] = MAKER("coons_chain", coons_keys, NULL, false,
+                                   "coons_chain(%s)"),
+    [CF__KEYS_OFFSET] = METHOD("offset", offset_keys, NULL, NULL,
+                               "c:offset(0.1, %s)"),
+    [CF__KEYS_CURVE] = METHOD("curve", line_style, range_keys, NULL,
+                              "f:curve(c, %s)"),
+    [CF__KEYS_POLYGON] = METHOD("polygon", line_style, point_labels, NULL,
+                                "f:polygon(P, %s)"),
+    [CF__KEYS_POINTS] = METHOD("points", line_style, point_labels, NULL,
+                               "f:points(P, %s)"),
+    [CF__KEYS_HULL] = METHOD("hull", line_style, point_labels, NULL,
+                             "f:hull(P, %s)"),
+    [CF__KEYS_FILL] = METHOD("fill", line_style, point_labels, NULL,
+                             "f:fill(P, %s)"),
+    [CF__KEYS_POLYLINE] = METHOD("polyline", line_style, point_labels,
+                                 closed_keys, "f:polyline(P, %s)"),
+    [CF__KEYS_LINE] = METHOD("line", line_style, NULL, NULL,
+                             "f:line({0, 0}, {1, 1}, %s)"),
+    [CF__KEYS_LABEL] = METHOD("label", text_style, NULL, NULL,
+                              "f:label({0, 0}, 'P', %s)"),
+    [CF__KEYS_ARROW] = METHOD("arrow", line_style, arrow_label, NULL,
+                              "f:arrow({0, 0}, {1, 1}, %s)"),
+    [CF__KEYS_ARROW_TO] = METHOD("arrow_to", line_style, arrow_label, NULL,
+                                 "f:arrow_to({0, 0}, {1, 1}, %s)"),
+    [CF__KEYS_TANGENT] = METHOD("tangent", line_style, arrow_label,
+                                scale_keys, "f:tangent(c, 0.5, %s)"),
+    [CF__KEYS_KNOTS] = METHOD("knots", line_style, point_labels, NULL,
+                              "f:knots(s, %s)"),
+    [CF__KEYS_DECASTELJAU] = METHOD("decasteljau", line_style, net_keys,
+                                    NULL, "f:decasteljau(c, 0.5, %s)"),
+    [CF__KEYS_DEBOOR] = METHOD("deboor", line_style, net_keys, NULL,
+                               "f:deboor(s, 0.5, %s)"),
+    [CF__KEYS_PLOT] = METHOD("plot", line_style, plot_keys, NULL,
+                             "f:plot(%s)"),
+    [CF__KEYS_FUNC] = METHOD("func", line_style, NULL, NULL,
+                             "f:func(math.sin, 0, 1, %s)"),
+    [CF__KEYS_GRAPH] = METHOD("graph", line_style, NULL, NULL,
+                              "f:graph(c, %s)"),
+    [CF__KEYS_BASIS] = METHOD("basis", line_style, NULL, NULL,
+                              "f:basis(s, 0, 2, %s)"),
+    [CF__KEYS_BERNSTEIN] = METHOD("bernstein", line_style, NULL, NULL,
+                                  "f:bernstein(3, 1, %s)"),
+    [CF__KEYS_LABEL_STYLE] = METHOD("label_style", text_style, NULL, NULL,
+                                    "f:points(P, { labels = 'P', "
+                                    "label_style = %s })"),
+    [CF__KEYS_POINT_STYLE] = METHOD("point", line_style, NULL, NULL,
+                                    "f:decasteljau(c, 0.5, { point = %s })"),
+};
+
+const char cf__lua_schema_prelude[] =
+    "local f = figure{ name = 'schema' }\n"
+    "local c = bezier{ {0, 0}, {1, 2}, {2, 0} }\n"
+    "local s = bspline{ degree = 2, points = { {0, 0}, {1, 2}, {2, 0}, "
+    "{3, 1} } }\n"
+    "local P = { {0, 0}, {1, 2}, {2, 0} }\n";
+
+const cf__lua_schema_t *
+cf__lua_schema_at(cf__lua_keys_t i)
+{
+    return &schemas[(unsigned)i < CF__KEYS_COUNT_ ? i : CF__KEYS_NONE];
+}

@@ -1,0 +1,253 @@
+/*
+** The figure model, private to the renderer: the figure object, the
+** element record every kind starts with, and the class (a table of
+** functions) that gives each kind its bounds and its drawing.
+**
+** Layers, each calling only the ones below it (tests/render/cycles.py
+** checks the object files):
+**   output.c                  the public render and write functions
+**   layout.c place.c          window, map to the page, label places, ink
+**   plots.c axes.c el-*.c     element kinds: record, bounds, display list
+**   text.c figure.c           labels of elements; the figure, its setters
+**   formats.c backend-*.c     output formats and their fix-ups; devices
+**   backend.c png.c           a display list to a backend; PNG encoding
+**   label*.c dlist.c style.c  labels; the display list; styles
+*/
+#ifndef CURVEFIG_RENDER_MODEL_H
+#define CURVEFIG_RENDER_MODEL_H
+
+#include <stdbool.h>
+
+#include "curvefig/figure.h"
+#include "curvefig/geometry.h"
+#include "dlist.h"
+
+/* ---- layout (filled in by layout.c, read by the element kinds) -------- */
+
+/* The page layout of one rendering. */
+typedef struct cf__layout {
+    double xmin, xmax, ymin, ymax;   /* data window */
+    double sx, sy;                   /* bp per data unit */
+    double ox, oy;                   /* page position of (xmin, ymin) */
+    double tol;                      /* fitting tolerance, data units */
+    bool clip;                       /* explicit window: lines clipped to
+                                        it, points outside it left out */
+} cf__layout_t;
+
+static inline void
+cf__map(const cf__layout_t *l, double x, double y, double *px, double *py)
+{
+    *px = l->ox + l->sx * (x - l->xmin);
+    *py = l->oy - l->sy * (y - l->ymin);
+}
+
+/* Whether a point is drawn: always, unless the window was set explicitly
+** and the point lies outside it (beyond rounding: 1e-9 of its size). */
+static inline bool
+cf__in_window(const cf__layout_t *l, double x, double y)
+{
+    double ex = 1e-9 * (l->xmax - l->xmin), ey = 1e-9 * (l->ymax - l->ymin);
+    return !l->clip
+        || (x >= l->xmin - ex && x <= l->xmax + ex && y >= l->ymin - ey
+            && y <= l->ymax + ey);
+}
+
+/* A CLIP to an explicit window widened by pad bp on every side (a line
+** lying on the window's edge stays whole); without one, a CLIP that only
+** scopes what follows. */
+static inline void
+cf__clip_to_window(const cf__layout_t *l, double pad, cf__dl_t *dl)
+{
+    double x0, y0, x1, y1, r[4];
+    if (!l->clip) {
+        cf__dl_clip(dl, NULL);
+        return;
+    }
+    cf__map(l, l->xmin, l->ymax, &x0, &y0);
+    cf__map(l, l->xmax, l->ymin, &x1, &y1);
+    r[0] = x0 - pad;
+    r[1] = y0 - pad;
+    r[2] = x1 - x0 + 2 * pad;
+    r[3] = y1 - y0 + 2 * pad;
+    cf__dl_clip(dl, r);
+}
+
+/* ---- elements ----------------------------------------------------------- */
+
+typedef struct cf__bounds {
+    double x0, x1, y0, y1;
+    bool any;
+} cf__bounds_t;
+
+static inline void
+cf__bounds_add(cf__bounds_t *b, double x, double y)
+{
+    if (!b->any) {
+        b->x0 = b->x1 = x;
+        b->y0 = b->y1 = y;
+        b->any = true;
+        return;
+    }
+    b->x0 = b->x0 < x ? b->x0 : x;
+    b->x1 = b->x1 > x ? b->x1 : x;
+    b->y0 = b->y0 < y ? b->y0 : y;
+    b->y1 = b->y1 > y ? b->y1 : y;
+}
+
+/* A label of an element: its source and its current layout. */
+typedef struct cf__text {
+    char *src;
+    cf_label_t *lab;
+} cf__text_t;
+
+typedef struct cf__element cf__element_t;
+
+/* Flags of a kind. */
+enum {
+    CF__KIND_SHADING = 1u << 0,   /* automatic labels may sit on it: left
+                                     out of the placement raster */
+    CF__KIND_AXES = 1u << 1       /* a figure with axes keeps no aspect
+                                     ratio unless asked */
+};
+
+/* What a kind does; one static table per kind, beside its record. */
+typedef struct cf__kind {
+    const char *name;             /* "curve", "label" (messages, dumps) */
+    unsigned flags;
+    void (*fini)(cf__element_t *e);
+    void (*bounds)(const cf__element_t *e, cf__bounds_t *b);
+    /* Append the element's operations for layout l; s is its resolved
+    ** style.  Errors go into fig. */
+    cf_status_t (*draw)(cf_figure_t *fig, cf__element_t *e,
+                        const cf__layout_t *l, const cf_style_t *s,
+                        cf__dl_t *dl);
+    /* Labels placed CF_PLACE_AUTO: the anchor (data), the text and the
+    ** place chosen for the current layout.  NULL for other kinds. */
+    bool (*auto_label)(cf__element_t *e, double *x, double *y,
+                       cf__text_t **text, cf_place_t **place);
+} cf__kind_t;
+
+/* The start of every element record. */
+struct cf__element {
+    const cf__kind_t *kind;
+    cf_role_t role;
+    cf_style_t style;             /* overrides */
+};
+
+struct cf_figure {
+    cf_diag_t err;           /* the first error (sticky) */
+    double width, height;    /* bp */
+    char *title, *caption;
+    cf_theme_t theme;
+    bool window_set;
+    double win[4];
+    double margin;
+    int aspect;              /* -1 automatic, 0 free, 1 kept */
+    double tol;
+    bool clip_page;          /* ink outside the page is cut, not an error */
+    size_t proj_dim;
+    double *proj;            /* 2 x proj_dim */
+    cf__element_t **els;
+    size_t count, cap;
+};
+
+/* ---- figure.c: the figure's helpers for the element kinds -------------- */
+
+#define CF__FIG_CHECK(fig)                                                 \
+    do {                                                                   \
+        if ((fig) == NULL)                                                 \
+            return CF_STATUS_INVALID_ARG;                                  \
+        if ((fig)->err.status != CF_STATUS_OK)                             \
+            return (fig)->err.status;                                      \
+    } while (0)
+
+/* Record st in the figure (a generic message if the callee left none). */
+cf_status_t cf__fig_fail(cf_figure_t *fig, cf_status_t st, const char *what);
+/* "out of memory for <what>" in the figure. */
+cf_status_t cf__fig_nomem(cf_figure_t *fig, const char *what);
+/* n >= min finite points (what names them in messages). */
+cf_status_t cf__fig_check_points(cf_figure_t *fig, const double *pts,
+                                 size_t n, size_t min, const char *what);
+cf_status_t cf__fig_check_style(cf_figure_t *fig, const cf_style_t *style);
+/* A zeroed record of `size` bytes of kind k, not yet in the figure. */
+void *cf__element_new(cf_figure_t *fig, const cf__kind_t *k, size_t size,
+                      cf_role_t role, const cf_style_t *style);
+/* Append the record made by cf__element_new, or release it if st fails. */
+cf_status_t cf__element_commit(cf_figure_t *fig, void *e, cf_status_t st);
+/* Project one point of dimension dim (stride 1) into out[2]. */
+void cf__fig_project1(const cf_figure_t *fig, const double *p, size_t dim,
+                      double *out);
+double *cf__copy_doubles(const double *src, size_t n);
+/* Element i's operations for a layout: a GROUP ... END. */
+cf_status_t cf__element_draw(cf_figure_t *fig, size_t i,
+                             const cf__layout_t *lay, cf__dl_t *dl);
+/* The label font size of a role with overrides s. */
+double cf__role_font_size(const cf_figure_t *fig, cf_role_t role,
+                          const cf_style_t *s);
+
+/* ---- text.c: labels of elements ----------------------------------------- */
+
+cf_status_t cf__text_set(cf_figure_t *fig, cf__text_t *t, const char *src,
+                         double size);
+/* Lay the label out again if the theme's family or the size changed. */
+cf_status_t cf__text_ensure(cf_figure_t *fig, cf__text_t *t, double size);
+void cf__text_fini(cf__text_t *t);
+/* Origin of a label placed at `place` of page point (px, py), gap off. */
+void cf__label_origin(const cf_label_t *lab, cf_place_t place, double off,
+                      double px, double py, double *ox, double *oy);
+/* Append the text at `place` of page point (px, py) in style s (colour,
+** opacity, font size, halo); nothing when t has no source. */
+cf_status_t cf__text_draw(cf_figure_t *fig, cf__text_t *t, const cf_style_t *s,
+                          double px, double py, cf_place_t place,
+                          double off, cf__dl_t *dl);
+
+/* ---- el-curve.c: curves made of pieces, for the plots ------------------- */
+
+
+/* An empty curve element of role (CF_ROLE_CURVE or CF_ROLE_GRAPH). */
+cf__element_t *cf__curve_new(cf_figure_t *fig, cf_role_t role,
+                             const cf_style_t *style);
+/* Append a planar Bézier (taken over, even on failure) or, with bez NULL,
+** a fixed cubic segment (8 doubles). */
+cf_status_t cf__curve_add(cf_figure_t *fig, cf__element_t *e,
+                          cf_bezier_t *bez, const double *cubic);
+
+/* ---- el-mark.c: the head of an arrow, for the axes --------------------- */
+
+/* A slightly concave ("stealth") triangle with its tip at (tx, ty)
+** pointing along the unit vector (ux, uy), length len, filled. */
+void cf__arrow_head(cf__dl_t *dl, double tx, double ty, double ux, double uy,
+                    double len, const cf_color_t *color, double opacity);
+
+/* ---- style.c ------------------------------------------------------------ */
+
+/* The effective style of an element: the theme's role style with the
+** element's set fields applied over it. */
+void cf__style_resolve(const cf_theme_t *theme, cf_role_t role,
+                       const cf_style_t *over, cf_style_t *out);
+/* Check the fields an element sets (finite, in range); names `what`. */
+cf_status_t cf__style_check(const cf_style_t *style, cf_diag_t *diag);
+
+/* ---- layout.c ----------------------------------------------------------- */
+
+/* Compute the layout for the figure's page (errors go into fig). */
+cf_status_t cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay);
+/* The display list of every element for a layout (automatic label places
+** chosen first). */
+cf_status_t cf__figure_build(cf_figure_t *fig, const cf__layout_t *lay,
+                             cf__dl_t *dl);
+
+/* Whether a display list on a page of w x h bp shows the figure: an error
+** (in diag) when it draws nothing at all, and on a fixed page (not cropped
+** to the ink) one naming the element whose ink sticks out farthest and by
+** how much, unless the figure clips. */
+cf_status_t cf__figure_check_page(const cf_figure_t *fig, const cf__dl_t *dl,
+                                  double w, double h, bool fixed,
+                                  cf_diag_t *diag);
+
+/* ---- place.c ------------------------------------------------------------ */
+
+/* Choose the places of the labels placed CF_PLACE_AUTO for a layout. */
+cf_status_t cf__place_auto_labels(cf_figure_t *fig, const cf__layout_t *lay);
+
+#endif

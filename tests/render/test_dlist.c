@@ -1,0 +1,344 @@
+/* The display list and its backends: one figure with every element kind is
+** laid out into a display list; the dump backend and the cairo backend are
+** handed that same list, and what each gives is compared with the public
+** functions' output, so the model and the layout are shown not to depend
+** on the backend asked for. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "backend.h"
+#include "curvefig/bspline.h"
+#include "curvefig/figure.h"
+#include "model.h"
+#include "render-private.h"
+
+static int
+square(void *closure, double x, double *y)
+{
+    (void)closure;
+    *y = x * x;
+    return 0;
+}
+
+/* A figure with every kind of element (and an automatic label place). */
+static cf_figure_t *
+every_kind(void)
+{
+    static const double ctrl[] = { 0, 0, 1, 2, 3, 2, 4, 0 };
+    static const double quintic[] = { 0, 0, 1, 1, 2, -1, 3, 1, 4, 0, 5, 1 };
+    static const double knots[] = { 0, 0, 0, 0, 0.5, 1, 1, 1, 1 };
+    static const double spline[] = { 0, 1, 1, 3, 2, 0, 3, 3, 4, 1 };
+    static const double net[] = { 0, 0, 1, 2, 3, 2, 0.5, 1, 2, 2, 1.25, 1.5 };
+    static const size_t counts[] = { 3, 2, 1 };
+    static const double tri[] = { 0, 0, 4, 0, 2, 3 };
+    static const double tangents[] = { 1, 0, 0, 1 };
+    static const double axknots[] = { 0, 0.5, 0.5, 1 };
+    static const char *const knot_labels[] = { "u_0", "u_1", "u_2", "u_3" };
+    cf_figure_t *fig = NULL;
+    cf_bezier_t *c = NULL, *q = NULL, *g = NULL;
+    cf_bspline_t *s = NULL;
+    cf_style_t st, auto_place, dashed;
+    cf_axes_t ax;
+    double y01[] = { 0.2, 0.8 }, breaks[] = { 0, 4 };
+    const cf_bezier_t *pieces[1];
+
+    assert_int_equal(cf_figure_create(8, 6, CF_UNIT_CM, &fig, NULL), 0);
+    assert_int_equal(cf_bezier_create(2, 3, ctrl, NULL, &c, NULL), 0);
+    assert_int_equal(cf_bezier_create(2, 5, quintic, NULL, &q, NULL), 0);
+    assert_int_equal(cf_bezier_create(1, 1, y01, NULL, &g, NULL), 0);
+    assert_int_equal(cf_bspline_create(2, 3, knots, 9, spline, 5, NULL, &s,
+                                       NULL), 0);
+    cf_style_init(&st);
+    cf_style_init(&auto_place);
+    auto_place.set = CF_STYLE_PLACE | CF_STYLE_HALO;
+    auto_place.place = CF_PLACE_AUTO;
+    auto_place.halo = 1.5;
+    cf_style_init(&dashed);
+    dashed.set = CF_STYLE_DASH;
+    dashed.dash[0] = 3;
+    dashed.dash[1] = 2;
+    dashed.dash_count = 2;
+    cf_axes_init(&ax);
+    ax.xmin = -0.5;
+    ax.xmax = 5;
+    ax.ymin = -1;
+    ax.ymax = 3.5;
+    ax.grid = true;
+    ax.knots = axknots;
+    ax.knot_count = 4;
+    ax.knot_labels = knot_labels;
+    ax.xlabel = "t";
+    ax.ylabel = "N_i^3(t)";
+    pieces[0] = g;
+    assert_int_equal(cf_figure_add_axes(fig, &ax, NULL), 0);
+    assert_int_equal(cf_figure_add_fill(fig, tri, 3, NULL), 0);
+    assert_int_equal(cf_figure_add_hull(fig, ctrl, 4, NULL), 0);
+    assert_int_equal(cf_figure_add_polygon(fig, ctrl, 4, NULL), 0);
+    assert_int_equal(cf_figure_add_bezier(fig, c, NULL), 0);
+    assert_int_equal(cf_figure_add_bezier(fig, q, &dashed), 0);
+    assert_int_equal(cf_figure_add_bspline(fig, s, 0, 0, NULL), 0);
+    assert_int_equal(cf_figure_add_bspline_knots(fig, s, NULL), 0);
+    assert_int_equal(cf_figure_add_knot_marks(fig, ctrl, tangents, 2, NULL),
+                     0);
+    assert_int_equal(cf_figure_add_polyline(fig, tri, 3, true, &dashed), 0);
+    assert_int_equal(cf_figure_add_points(fig, tri, 3, NULL), 0);
+    assert_int_equal(cf_figure_add_net(fig, net, counts, 3, NULL, NULL), 0);
+    assert_int_equal(cf_figure_add_arrow(fig, 0, 0, 1, 1, NULL), 0);
+    assert_int_equal(cf_figure_add_graph(fig, pieces, breaks, 1, NULL), 0);
+    assert_int_equal(cf_figure_add_basis(fig, knots, 9, 2, 3, NULL), 0);
+    assert_int_equal(cf_figure_add_function(fig, square, NULL, 0, 1.5, NULL),
+                     0);
+    assert_int_equal(cf_figure_add_label(fig, 3, 2, "P_3", &auto_place), 0);
+    assert_int_equal(cf_figure_add_label(fig, 1, 2, "\\hat{P}_1", &st), 0);
+    cf_bezier_destroy(c);
+    cf_bezier_destroy(q);
+    cf_bezier_destroy(g);
+    cf_bspline_destroy(s);
+    return fig;
+}
+
+static char *
+dump(cf_figure_t *fig)
+{
+    char *text = NULL;
+    size_t size = 0;
+    cf_diag_t d;
+    cf_diag_clear(&d);
+    if (cf_figure_dump(fig, NULL, &text, &size, &d) != CF_STATUS_OK)
+        fail_msg("dump: %s", d.msg);
+    assert_int_equal(strlen(text), size);
+    return text;
+}
+
+/* The display list the output functions build: layout, then the list. */
+static void
+build(cf_figure_t *fig, cf__dl_t *dl, cf__page_t *page)
+{
+    cf__layout_t lay;
+    cf__dl_init(dl);
+    assert_int_equal(cf__figure_layout(fig, &lay), 0);
+    assert_int_equal(cf__figure_build(fig, &lay, dl), 0);
+    memset(page, 0, sizeof *page);
+    cf_figure_get_size(fig, &page->width, &page->height);
+    page->background = fig->theme.background;
+}
+
+static size_t
+count_lines(const char *text, const char *prefix)
+{
+    size_t n = 0, k = strlen(prefix);
+    const char *p = text;
+    while (p != NULL && *p != '\0') {
+        if (strncmp(p, prefix, k) == 0)
+            n++;
+        p = strchr(p, '\n');
+        if (p != NULL)
+            p++;
+    }
+    return n;
+}
+
+/* The place number in the dump of the label with this source. */
+static int
+label_place(const char *text, const char *src)
+{
+    char key[64];
+    const char *q;
+    int place = -1;
+    snprintf(key, sizeof key, "text \"%s\"", src);
+    q = strstr(text, key);
+    assert_non_null(q);
+    q = strstr(q, " place ");
+    assert_non_null(q);
+    assert_int_equal(sscanf(q, " place %d", &place), 1);
+    return place;
+}
+
+/* The dump names every element kind once per element, carries the
+** labels' TeX-like sources and their placement, and paths with cubic
+** segments, dashes and fills. */
+static void
+test_dump_content(void **state)
+{
+    static const char *const kinds[] = {
+        "axes", "fill", "hull", "polygon", "curve", "knot marks",
+        "polyline", "points", "net", "arrow", "label"
+    };
+    cf_figure_t *fig = every_kind();
+    char *text = dump(fig), line[64];
+    const char *p;
+    size_t i;
+    (void)state;
+    assert_int_equal(count_lines(text, "page "), 1);
+    assert_int_equal(count_lines(text, "group "), 18);
+    assert_int_equal(count_lines(text, "end\n"), 18);
+    for (i = 0; i < sizeof kinds / sizeof kinds[0]; i++) {
+        snprintf(line, sizeof line, " %s\n", kinds[i]);
+        assert_non_null(strstr(text, line));
+    }
+    /* six curves: Bézier, quintic, B-spline, graph, basis, function */
+    for (i = 0, p = text; (p = strstr(p, " curve\n")) != NULL; p++)
+        i++;
+    assert_int_equal(i, 6);
+    assert_non_null(strstr(text, "text \"P_3\" anchor "));
+    assert_non_null(strstr(text, "text \"\\\\hat{P}_1\" anchor "));
+    assert_non_null(strstr(text, "text \"N_i^3(t)\" anchor "));
+    assert_non_null(strstr(text, " halo 1.5 "));
+    assert_non_null(strstr(text, " dash 2 3 2 :"));
+    assert_non_null(strstr(text, "path fill "));
+    assert_non_null(strstr(text, " C "));
+    assert_non_null(strstr(text, "marker tick "));
+    /* the automatic label got a place: not CF_PLACE_AUTO */
+    assert_int_not_equal(label_place(text, "P_3"), (int)CF_PLACE_AUTO);
+    assert_int_equal(label_place(text, "\\\\hat{P}_1"), (int)CF_PLACE_NE);
+    cf_free(text);
+    cf_figure_destroy(fig);
+}
+
+/* The list the dump backend is handed is the one the cairo backend
+** consumes: the SVG and the PNG drawn from this very list equal the public
+** renderer's files, its dump equals cf_figure_dump's, and using one backend
+** changes nothing the other sees. */
+static void
+test_backend_independence(void **state)
+{
+    static const cf_format_t formats[] = { CF_FORMAT_SVG, CF_FORMAT_PNG,
+                                           CF_FORMAT_PDF };
+    cf_figure_t *fig = every_kind();
+    cf__dl_t dl;
+    cf__page_t page;
+    cf__dump_t d;
+    char *before = dump(fig), *after;
+    size_t f;
+    (void)state;
+    build(fig, &dl, &page);
+    memset(&d, 0, sizeof d);
+    assert_int_equal(cf__dl_play_page(&dl, &page, &cf__dump_backend, &d), 0);
+    assert_string_equal(d.text, before);
+    for (f = 0; f < sizeof formats / sizeof formats[0]; f++) {
+        unsigned char *data = NULL;
+        size_t size = 0;
+        cf__buf_t mine;
+        memset(&mine, 0, sizeof mine);
+        assert_int_equal(cf_figure_render(fig, formats[f], NULL, &data,
+                                          &size, NULL), 0);
+        assert_int_equal(cf__format_render(formats[f], &dl, &page, 150,
+                                           NULL, NULL, &mine, NULL), 0);
+        assert_int_equal(mine.size, size);
+        assert_memory_equal(mine.data, data, size);
+        cf__buf_free(&mine);
+        cf_free(data);
+    }
+    after = dump(fig);
+    assert_string_equal(after, before);
+    cf_free(d.text);
+    cf_free(before);
+    cf_free(after);
+    cf__dl_free(&dl);
+    cf_figure_destroy(fig);
+}
+
+/* Nothing in a dump depends on the run: two figures built alike dump
+** alike, and a changed element changes the dump. */
+static void
+test_dump_deterministic(void **state)
+{
+    cf_figure_t *a = every_kind(), *b = every_kind();
+    char *ta = dump(a), *tb = dump(b), *tc;
+    (void)state;
+    assert_string_equal(ta, tb);
+    assert_int_equal(cf_figure_add_arrow(b, 1, 1, 0, 1, NULL), 0);
+    tc = dump(b);
+    assert_string_not_equal(ta, tc);
+    cf_free(ta);
+    cf_free(tb);
+    cf_free(tc);
+    cf_figure_destroy(a);
+    cf_figure_destroy(b);
+}
+
+/* Ink outside a fixed page is an error naming the element and how far it
+** sticks out; clipping or a tight page accepts it.  A figure that draws
+** nothing is an error. */
+static void
+test_page_checks(void **state)
+{
+    static const double line[] = { 0, 0, 10, 10 };
+    cf_figure_t *fig = NULL;
+    cf_write_options_t tight;
+    unsigned char *data = NULL;
+    size_t size = 0;
+    cf_style_t big;
+    cf_diag_t d;
+    double ink[4], pw, ph;
+    (void)state;
+    assert_int_equal(cf_figure_create(40, 30, CF_UNIT_MM, &fig, NULL), 0);
+    cf_diag_clear(&d);
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_SVG, NULL, &data, &size,
+                                      &d), CF_STATUS_INVALID_ARG);
+    assert_non_null(strstr(d.msg, "the figure draws nothing (0 elements"));
+    assert_null(data);
+    /* elements, all outside an explicit window: nothing drawn either */
+    assert_int_equal(cf_figure_add_points(fig, line, 2, NULL), 0);
+    assert_int_equal(cf_figure_set_window(fig, 20, 30, 20, 30), 0);
+    cf_diag_clear(&d);
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_PNG, NULL, &data, &size,
+                                      &d), CF_STATUS_INVALID_ARG);
+    assert_non_null(strstr(d.msg, "draws nothing (1 elements"));
+    /* a wide label at the window's right edge sticks out of the page */
+    assert_int_equal(cf_figure_set_window(fig, 0, 10, 0, 10), 0);
+    cf_style_init(&big);
+    big.set = CF_STYLE_FONT_SIZE | CF_STYLE_PLACE;
+    big.font_size = 14;
+    big.place = CF_PLACE_E;
+    assert_int_equal(cf_figure_add_label(fig, 10, 5, "P_0 = c(0) = start",
+                                         &big), 0);
+    cf_diag_clear(&d);
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_SVG, NULL, &data, &size,
+                                      &d), CF_STATUS_INVALID_ARG);
+    assert_null(data);
+    assert_non_null(strstr(d.msg, "label 2 \"P_0 = c(0) = start\" sticks "
+                           "out of the 40.0 x 30.0 mm page by "));
+    assert_non_null(strstr(d.msg, " on the right"));
+    assert_int_equal(d.index, 1);
+    /* how far: the ink box's right edge beyond the page, in mm */
+    assert_int_equal(cf_figure_ink_box(fig, NULL, ink, &pw, &ph, NULL), 0);
+    {
+        char want[32];
+        snprintf(want, sizeof want, "by %.1f mm", (ink[2] - pw) * 25.4 / 72);
+        assert_non_null(strstr(d.msg, want));
+    }
+    /* the figure itself is not in error: a tight page or clipping draws */
+    assert_int_equal(cf_figure_status(fig, NULL), CF_STATUS_OK);
+    cf_write_options_init(&tight);
+    tight.tight = true;
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_SVG, &tight, &data,
+                                      &size, NULL), 0);
+    cf_free(data);
+    assert_int_equal(cf_figure_set_clip(fig, true), 0);
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_SVG, NULL, &data, &size,
+                                      NULL), 0);
+    assert_true(size > 0);
+    cf_free(data);
+    cf_figure_destroy(fig);
+}
+
+int
+main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_dump_content),
+        cmocka_unit_test(test_backend_independence),
+        cmocka_unit_test(test_dump_deterministic),
+        cmocka_unit_test(test_page_checks),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -46,6 +46,14 @@ if [ -f "$libdir/libcurvefig-core.a" ]; then
     "$root/static" >/dev/null
     echo "ok: knot-insertion linked statically"
 fi
+# The headers in every C standard from C89 on.
+printf '#include <curvefig/curvefig.h>\n#include <curvefig/figure.h>\nint main(void) { return cf_version() == CF_VERSION ? 0 : 1; }\n' > "$root/v.c"
+for std in c89 c99 c11 c17; do
+    # shellcheck disable=SC2046
+    $cc -std=$std -Wall -Wextra -pedantic -Werror -fsyntax-only "$root/v.c" \
+        $(pkg-config --cflags curvefig-core) $(pkg-config --exists curvefig-render && pkg-config --cflags curvefig-render)
+done
+echo "ok: the headers as C89, C99, C11 and C17"
 # C++ compilers read the headers too.
 if command -v c++ >/dev/null 2>&1; then
     printf '#include <curvefig/curvefig.h>\nint main() { return cf_version() == CF_VERSION ? 0 : 1; }\n' > "$root/v.cc"

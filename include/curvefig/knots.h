@@ -164,10 +164,11 @@ CF_API cf_status_t cf_basis_one(int i, int degree, const double *knots,
 ** non-decreasing with u_{m-1} > u_0, no knot of multiplicity above p + 1
 ** (BAD_KNOTS, as for a curve).  Destroy with cf_bspline_destroy.
 */
-typedef struct cf_bspline cf_bspline_t;
+struct cf_bspline;   /* cf_bspline_t, curvefig/bspline.h */
 CF_API cf_status_t cf_basis_one_spline(int i, int degree,
                                        const double *knots, size_t nknots,
-                                       cf_bspline_t **out, cf_diag_t *diag);
+                                       struct cf_bspline **out,
+                                       cf_diag_t *diag);
 
 /* Derivatives of one basis function: out[d] = d^d/du^d N_i^p(u),
 ** d = 0..nder (0 for d > p); the same conventions as cf_basis_one

@@ -74,6 +74,8 @@ test_core(void **state)
         assert_non_null(a.realloc);
     }
     cf_free(NULL);
+    assert_int_equal(cf_version(), CF_VERSION);
+    assert_string_equal(cf_version_string(), CF_VERSION_STRING);
     /* the allocation helpers: overflow and zero sizes, never a crash */
     assert_null(cf_alloc_array(SIZE_MAX, 2));
     assert_null(cf_calloc(SIZE_MAX / 2, 4));
@@ -814,7 +816,7 @@ test_every_function_listed(void **state)
 {
     static const char *const headers[] = {
         "core.h", "knots.h", "bernstein.h", "bezier.h", "bspline.h",
-        "geometry.h", "conic.h", "interp.h", "offset.h",
+        "geometry.h", "conic.h", "interp.h", "offset.h", "version.h.in",
 #ifdef CF_TEST_RENDER
         "figure.h", "style.h", "label.h", "output.h",
 #endif

@@ -5,11 +5,13 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
+#include <stdio.h>
 #include <string.h>
 
 #include <cmocka.h>
 
 #include "curvefig/core.h"
+#include "curvefig/version.h"
 #include "../../src/core-private.h"
 #include "testutil.h"
 
@@ -206,11 +208,31 @@ test_allocator_per_block(void **state)
     assert_int_equal(cb.live, 0);
 }
 
+/* The run-time version is the headers' version, and the macros agree
+** with each other and with the string. */
+static void
+test_version(void **state)
+{
+    char expect[32];
+    (void)state;
+    snprintf(expect, sizeof expect, "%d.%d.%d", CF_VERSION_MAJOR,
+             CF_VERSION_MINOR, CF_VERSION_PATCH);
+    assert_string_equal(CF_VERSION_STRING, expect);
+    assert_string_equal(cf_version_string(), CF_VERSION_STRING);
+    assert_int_equal(cf_version(), CF_VERSION);
+    assert_int_equal(CF_VERSION, CF_VERSION_MAJOR * 10000
+                                     + CF_VERSION_MINOR * 100
+                                     + CF_VERSION_PATCH);
+    assert_true(CF_VERSION_ENCODE(0, 1, 0) < CF_VERSION_ENCODE(0, 1, 1));
+    assert_true(CF_VERSION_ENCODE(0, 9, 9) < CF_VERSION_ENCODE(1, 0, 0));
+}
+
 int
 main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_status_strings),
+        cmocka_unit_test(test_version),
         cmocka_unit_test(test_diag_keeps_first_error),
         cmocka_unit_test(test_checks_name_the_culprit),
         cmocka_unit_test(test_binomial),

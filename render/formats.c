@@ -24,6 +24,7 @@ static const char *const format_names[CF_FORMAT_LAST_] = {
 cf_status_t
 cf_format_from_name(const char *name, cf_format_t *out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     int i;
     if (name == NULL || out == NULL)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,

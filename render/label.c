@@ -55,6 +55,7 @@ cf_status_t
 cf_label_create(const char *text, const char *family, double size_bp,
                 cf_label_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_label_t *lab;
     size_t i, len;
 

@@ -12,6 +12,7 @@ cf_status_t
 cf_basis_one_spline(int i, int degree, const double *knots, size_t nknots,
                     cf_bspline_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     size_t m = nknots, p, count;
     double *pu, *coef, h;
     cf_status_t st;

@@ -147,6 +147,7 @@ cf_status_t
 cf_bezier_to_cubics(const cf_bezier_t *c, double tol, cf_cubics_t **out,
                     cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_cubics_t *r;
     fit f;
     double *seg;
@@ -260,6 +261,7 @@ cf_status_t
 cf_bezier_to_cubics_bounded(const cf_bezier_t *c, double tol,
                             cf_cubics_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_cubics_t *r;
     size_t dim, count;
     double m4, pieces, *d0, *d1;

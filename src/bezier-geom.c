@@ -351,6 +351,7 @@ cf_status_t
 cf_bezier_reduce(const cf_bezier_t *c, cf_bezier_t **out, double *max_error,
                  cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     int n;
     size_t h, dim;
     cf_bezier_t *r;

@@ -87,6 +87,7 @@ cf_status_t
 cf_bezier_create(size_t dim, int degree, const double *points,
                  const double *weights, cf_bezier_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = check_common(dim, degree, points, out, diag);
     size_t np;
     cf_bezier_t *c;
@@ -127,6 +128,7 @@ cf_status_t
 cf_bezier_create_homogeneous(size_t dim, int degree, const double *hpoints,
                              cf_bezier_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = check_common(dim, degree, hpoints, out, diag);
     size_t np;
 
@@ -153,6 +155,7 @@ cf_bezier_create_homogeneous(size_t dim, int degree, const double *hpoints,
 cf_status_t
 cf_bezier_copy(const cf_bezier_t *c, cf_bezier_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     if (out == NULL || c == NULL) {
         if (out != NULL)
             *out = NULL;
@@ -422,6 +425,7 @@ cf_status_t
 cf_bezier_split(const cf_bezier_t *c, double t, cf_bezier_t **left,
                 cf_bezier_t **right, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_bezier_t *l = NULL, *r = NULL;
     cf_status_t st;
     if (left != NULL)
@@ -474,6 +478,7 @@ cf_status_t
 cf_bezier_segment(const cf_bezier_t *c, double a, double b,
                   cf_bezier_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_bezier_t *s;
     cf_status_t st;
     st = begin_op(c, out, diag);
@@ -503,6 +508,7 @@ cf_bezier_segment(const cf_bezier_t *c, double a, double b,
 cf_status_t
 cf_bezier_reverse(const cf_bezier_t *c, cf_bezier_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_bezier_t *r;
     cf_status_t st;
     st = begin_op(c, out, diag);
@@ -523,6 +529,7 @@ cf_status_t
 cf_bezier_transform(const cf_bezier_t *c, const double *A, const double *b,
                     cf_bezier_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_bezier_t *r;
     cf_status_t st;
     size_t dim;
@@ -552,6 +559,7 @@ cf_status_t
 cf_bezier_elevate(const cf_bezier_t *c, int r, cf_bezier_t **out,
                   cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_bezier_t *e;
     cf_status_t st;
     st = begin_op(c, out, diag);
@@ -646,6 +654,7 @@ cf_status_t
 cf_bezier_derivative(const cf_bezier_t *c, int k, cf_bezier_t **out,
                      cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_bezier_t *cur;
     cf_status_t st;
     st = begin_op(c, out, diag);

@@ -11,6 +11,7 @@ cf_bspline_create_closed(size_t dim, int degree, const double *points,
                          size_t count, const double *weights,
                          cf_bspline_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     size_t p, total, nk;
     double *U = NULL, *P = NULL, *W = NULL;
     cf_status_t st;
@@ -60,6 +61,7 @@ cf_bspline_create_coons(size_t dim, const double *points, size_t count,
                         cf_coons_ends_t ends, cf_bspline_t **out,
                         cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     size_t need, total, nk, j = 0;
     double *U = NULL, *P = NULL;
     cf_status_t st;

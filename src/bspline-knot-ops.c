@@ -93,6 +93,7 @@ cf_bspline_insert_knot(const cf_bspline_t *c, double u, int r,
                        cf_bspline_t **out, cf_bspline_insert_info_t *info,
                        cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = cf__bspline_check_in(c, out, diag);
     size_t k = 0, p;
     int s = 0;
@@ -158,6 +159,7 @@ cf_status_t
 cf_bspline_refine(const cf_bspline_t *c, const double *X, size_t nx,
                   cf_bspline_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = cf__bspline_check_in(c, out, diag);
     size_t p, hd, n, m, a, b;
     const double *U, *P;
@@ -244,6 +246,7 @@ cf_status_t
 cf_bspline_remove_knot(const cf_bspline_t *c, double u, int num, double tol,
                        cf_bspline_t **out, int *removed, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = cf__bspline_check_in(c, out, diag);
     size_t p, hd, n, m, r, nk;
     long first, last, off, fout;

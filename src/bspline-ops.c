@@ -71,6 +71,7 @@ cf_status_t
 cf_bspline_split(const cf_bspline_t *c, double u, cf_bspline_t **left,
                  cf_bspline_t **right, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st;
     if (left != NULL)
         *left = NULL;
@@ -93,6 +94,7 @@ cf_status_t
 cf_bspline_segment(const cf_bspline_t *c, double a, double b,
                    cf_bspline_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = cf__bspline_check_in(c, out, diag);
     cf_bspline_t *r = NULL, *l = NULL;
     if (st != CF_STATUS_OK)
@@ -208,6 +210,7 @@ cf_status_t
 cf_bspline_bezier_points(const cf_bspline_t *c, double **hpoints,
                          double **breaks, size_t *count, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     const cf_bspline_t *w;
     cf_bspline_t *owned;
     cf_status_t st;
@@ -248,6 +251,7 @@ cf_status_t
 cf_bspline_to_beziers(const cf_bspline_t *c, cf_bezier_list_t **out,
                       cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     double *Q, *B;
     size_t nseg, seg;
     cf_status_t st;
@@ -290,6 +294,7 @@ cf_status_t
 cf_bspline_elevate(const cf_bspline_t *c, int t, cf_bspline_t **out,
                    cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = cf__bspline_check_in(c, out, diag);
     const cf_bspline_t *w;
     cf_bspline_t *owned = NULL, *cur = NULL;
@@ -507,6 +512,7 @@ cf_status_t
 cf_bspline_derivative(const cf_bspline_t *c, int k, cf_bspline_t **out,
                       cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = cf__bspline_check_in(c, out, diag);
     cf_bspline_t *cur = NULL;
     if (st != CF_STATUS_OK)
@@ -538,6 +544,7 @@ cf_status_t
 cf_bspline_reverse(const cf_bspline_t *c, cf_bspline_t **out,
                    cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = cf__bspline_check_in(c, out, diag);
     size_t m, n, hd;
     cf_bspline_t *q;
@@ -591,6 +598,7 @@ cf_status_t
 cf_bspline_transform(const cf_bspline_t *c, const double *A, const double *b,
                      cf_bspline_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = cf__bspline_check_in(c, out, diag);
     size_t dim;
     cf_bspline_t *q;

@@ -234,6 +234,7 @@ cf_bspline_create(size_t dim, int degree, const double *knots, size_t nknots,
                   const double *points, size_t count, const double *weights,
                   cf_bspline_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = check_common(dim, degree, knots, nknots, points, count,
                                   out, diag);
     cf_bspline_t *c;
@@ -267,6 +268,7 @@ cf_bspline_create_homogeneous(size_t dim, int degree, const double *knots,
                               size_t count, cf_bspline_t **out,
                               cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = check_common(dim, degree, knots, nknots, hpoints, count,
                                   out, diag);
     cf_bspline_t *c;
@@ -299,6 +301,7 @@ cf_bspline_create_clamped(size_t dim, int degree, const double *points,
                           size_t count, const double *weights,
                           cf_bspline_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     double *U;
     cf_status_t st;
     size_t nk;
@@ -328,6 +331,7 @@ cf_bspline_create_clamped(size_t dim, int degree, const double *points,
 cf_status_t
 cf_bspline_copy(const cf_bspline_t *c, cf_bspline_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_bspline_t *r;
     if (out == NULL || c == NULL) {
         if (out != NULL)
@@ -480,6 +484,7 @@ cf_status_t
 cf_bspline_move_point(const cf_bspline_t *c, size_t i, const double *v,
                       cf_bspline_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st;
     if (out != NULL)
         *out = NULL;

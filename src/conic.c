@@ -179,6 +179,7 @@ cf_status_t
 cf_conic_arc(double cx, double cy, double r, double a0, double a1,
              cf_bezier_list_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     static const char *const names[] = { "center x", "center y", "radius",
                                           "start angle", "end angle" };
     const double v[] = { cx, cy, r, a0, a1 };
@@ -197,6 +198,7 @@ cf_status_t
 cf_conic_circle(double cx, double cy, double r, cf_bezier_list_t **out,
                 cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     /* quadrant points and corners of the unit square, exact */
     static const double q[4][6] = {
         { 1, 0, 1, 1, 0, 1 },
@@ -228,6 +230,7 @@ cf_conic_ellipse(double cx, double cy, double a, double b, double rotation,
                  double t0, double t1, cf_bezier_list_t **out,
                  cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     static const char *const names[] = { "center x", "center y",
                                          "semi-axis a", "semi-axis b",
                                          "rotation", "start parameter",
@@ -250,6 +253,7 @@ cf_status_t
 cf_conic_parabola(double vx, double vy, double f, double axis, double u0,
                   double u1, cf_bezier_list_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     static const char *const names[] = { "vertex x", "vertex y",
                                          "focal length", "axis angle",
                                          "start parameter",
@@ -289,6 +293,7 @@ cf_conic_hyperbola(double cx, double cy, double a, double b, double rotation,
                    double s0, double s1, cf_bezier_list_t **out,
                    cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     static const char *const names[] = { "center x", "center y",
                                          "semi-axis a", "semi-axis b",
                                          "rotation", "start parameter",
@@ -323,6 +328,7 @@ cf_nurbs_arc(size_t dim, const double *O, const double *X, const double *Y,
              double r, double a0, double a1, cf_bspline_t **out,
              cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     double sweep = a1 - a0, dth, w1;
     size_t narcs, count, nk;
     double *U = NULL, *H = NULL;
@@ -390,6 +396,7 @@ cf_status_t
 cf_nurbs_circle(const double *centre, double r, cf_bspline_t **out,
                 cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     static const double U[12] = { 0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75,
                                   1, 1, 1 };
     static const double dx[9] = { 1, 1, 0, -1, -1, -1, 0, 1, 1 };

@@ -52,6 +52,7 @@ cf_status_t
 cf_interp_method_from_string(const char *name, cf_interp_method_t *out,
                              cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     if (name == NULL || out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "NULL argument");
@@ -70,6 +71,7 @@ cf_interp_method_from_string(const char *name, cf_interp_method_t *out,
 cf_status_t
 cf_param_from_string(const char *name, cf_param_t *out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     if (name == NULL || out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "NULL argument");
@@ -121,6 +123,7 @@ cf_interp_parameters(size_t dim, const double *points, size_t count,
                      cf_param_t param, double exponent, bool closed,
                      double *out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     size_t nseg;
     double e, total = 0.0;
     if (points == NULL || out == NULL)

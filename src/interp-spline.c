@@ -466,6 +466,7 @@ cf_approximate_lsq(size_t dim, const double *points, size_t count,
                    bool fix_ends, cf_bspline_t **out, double *residual,
                    cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_interp_options_t o;
     cf__lsq_band_t lb = { 0 };
     double *u = NULL, *knots = NULL, *b = NULL, *x = NULL;

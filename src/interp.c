@@ -130,6 +130,7 @@ cf_interpolate(size_t dim, const double *points, size_t count,
                const cf_interp_options_t *opt, cf_bspline_t **out,
                cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_interp_options_t local;
     const cf_interp_options_t *o = &local;
     bool closed;
@@ -256,6 +257,7 @@ cf_ferguson_cubic(size_t dim, const double *p0, const double *p1,
                   const double *t0, const double *t1, cf_bezier_t **out,
                   cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_bezier_t *c;
     cf_status_t st;
     if (out == NULL)
@@ -283,6 +285,7 @@ cf_status_t
 cf_ferguson_chain(size_t dim, const double *points, const double *tangents,
                   size_t count, cf_bezier_list_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_bezier_list_t *list;
     cf_status_t st;
     if (out == NULL)
@@ -347,6 +350,7 @@ cf_status_t
 cf_coons_cubic(size_t dim, const double *p4, cf_bezier_t **out,
                cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_bezier_t *c;
     cf_status_t st;
     if (out == NULL)
@@ -386,6 +390,7 @@ cf_status_t
 cf_coons_chain(size_t dim, const double *points, size_t count,
                cf_coons_ends_t ends, cf_bezier_list_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     static const size_t need[] = { 4, 2, 3 };
     static const char *const names[] = { "plain", "tripled-end",
                                          "closed" };

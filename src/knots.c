@@ -71,6 +71,7 @@ cf_status_t
 cf_knots_validate(int degree, size_t npoints, const double *knots,
                   size_t nknots, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     size_t need, m;
     char b1[64];
     cf_status_t st = check_degree_count(0, degree, npoints,
@@ -146,6 +147,7 @@ cf_status_t
 cf_knots_uniform(int degree, size_t npoints, double a, double b, double *out,
                  cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = check_gen(degree, npoints, a, b, out, diag);
     size_t m;
     if (st != CF_STATUS_OK)
@@ -160,6 +162,7 @@ cf_status_t
 cf_knots_clamped_uniform(int degree, size_t npoints, double a, double b,
                          double *out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = check_gen(degree, npoints, a, b, out, diag);
     size_t p, n, inner;
     if (st != CF_STATUS_OK)
@@ -180,6 +183,7 @@ cf_status_t
 cf_knots_clamped_averaged(int degree, size_t npoints, const double *params,
                           double *out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     size_t p, n;
     cf_status_t st = check_degree_count(1, degree, npoints,
                                         "parameters", diag);
@@ -426,6 +430,7 @@ cf_status_t
 cf_basis_funs(int degree, const double *knots, size_t nknots, double u,
               size_t *span, double *N, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = check_curve_knots(degree, knots, nknots, u, diag);
     size_t k;
     if (st != CF_STATUS_OK)
@@ -444,6 +449,7 @@ cf_status_t
 cf_basis_ders(int degree, const double *knots, size_t nknots, double u,
               int nder, size_t *span, double *ders, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = check_curve_knots(degree, knots, nknots, u, diag);
     size_t k, w = (size_t)degree + 1;
     if (st != CF_STATUS_OK)
@@ -516,6 +522,7 @@ cf_status_t
 cf_basis_one(int i, int degree, const double *knots, size_t nknots, double u,
              double *value, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     double N[CF_BSPLINE_MAX_DEGREE + 1];
     cf_status_t st = check_one(i, degree, knots, nknots, u, diag);
     if (st != CF_STATUS_OK)
@@ -532,6 +539,7 @@ cf_status_t
 cf_basis_one_ders(int i, int degree, const double *U, size_t nknots,
                   double u, int nder, double *out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     double N[CF_BSPLINE_MAX_DEGREE + 1];
     cf_status_t st = check_one(i, degree, U, nknots, u, diag);
     if (st != CF_STATUS_OK)

@@ -347,6 +347,7 @@ cf_status_t
 cf_offset_cusps(const cf_bezier_t *c, double d, double *ts, size_t cap,
                 size_t *count, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     double *all = NULL;
     size_t n = 0;
     cf_status_t st;

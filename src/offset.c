@@ -227,6 +227,7 @@ cf_bezier_offset(const cf_bezier_t *c, double d,
                  cf_cubics_list_t **trimmed, cf_offset_report_t *rep,
                  cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     if (c == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "the curve is NULL");
@@ -239,6 +240,7 @@ cf_bezier_list_offset(const cf_bezier_list_t *list, double d,
                       cf_cubics_list_t **trimmed, cf_offset_report_t *rep,
                       cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     if (list == NULL || list->count == 0 || list->items == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "the list of pieces is NULL or empty");
@@ -253,6 +255,7 @@ cf_bspline_offset(const cf_bspline_t *s, double d,
                   cf_cubics_list_t **trimmed, cf_offset_report_t *rep,
                   cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_bezier_list_t *list = NULL;
     cf_status_t st;
     if (raw != NULL)
@@ -293,6 +296,7 @@ cf_status_t
 cf_offset_measure(const cf_bezier_t *c, double d, const cf_cubics_t *approx,
                   size_t samples, double *error, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     double *ex, *cx, emax = 0.0;
     size_t fine;
     cf_status_t st = check_curve(c);

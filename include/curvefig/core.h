@@ -7,6 +7,27 @@
 ** knot 3 (0.50)").  Passing NULL is always allowed.  Nothing in the core
 ** prints, aborts, uses errno or longjmp.
 **
+** Ownership and failure, for every header of curvefig:
+**   - An object (cf_bezier_t, cf_bspline_t, cf_figure_t, ...) comes from a
+**     create function or an operation and is released with its destroy
+**     function; destroy(NULL) is harmless.  Curves are immutable: every
+**     operation returns a new object and leaves its inputs as they were.
+**   - A function that returns an object through `**out` sets *out to NULL
+**     when it fails (never a half-built object).  So the variable passed
+**     as out loses whatever it held: cf_bspline_insert_knot(c, u, 1, &c,
+**     ...) overwrites c, with the result or with NULL.  Write results into
+**     a new variable.
+**   - Lists (cf_bezier_list_t, cf_cubics_list_t) own their items: their
+**     destroy function destroys every item and the list.  Copy an item
+**     (cf_bezier_copy) to keep it.
+**   - The arrays inside public structs (cf_cubics_t.pts, .t; a list's
+**     items, t0, t1) belong to the struct: read them, never free, resize or
+**     keep them past the struct's destroy.
+**   - Plain arrays a function hands out (said per function) are released
+**     with cf_free.
+**   - Input arrays are copied: the caller may change or free them as soon
+**     as the call returns.
+**
 ** The API is what these headers declare with CF_API (export.h):
 ** libcurvefig-core is built with hidden visibility and exports exactly
 ** those functions; the internals (cf__ names) are not part of it.
@@ -44,8 +65,14 @@ typedef enum cf_status {
 /* A static English description of a status ("invalid knot vector"). */
 CF_API const char *cf_status_to_string(cf_status_t status);
 
-/* Optional detail record.  The first error is kept: a function that fails
-** writes into a diag whose status is CF_STATUS_OK only. */
+/*
+** Optional detail record.  Every function that takes one resets it on
+** entry, so after the call it describes that call alone, whether or not
+** the caller cleared it: on failure the same status as the return value,
+** the offending index (or -1) and a NUL-terminated message; on success
+** CF_STATUS_OK, index -1 and an empty message.  Inside one call the first
+** error is kept (cf_diag_set writes into a diag that is still OK only).
+*/
 #define CF_DIAG_MSG_SIZE 192
 typedef struct cf_diag {
     cf_status_t status;

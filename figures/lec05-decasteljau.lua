@@ -52,9 +52,9 @@ f:decasteljau(c, t, { colors = { "grey", blue, orange, "black" },
                       point = { marker = "star", marker_size = 10, color = "black",
                                 marker_color = "black" } })
 local place = {
-  [0] = { "s", "nw", "ne", "e" },
-  [1] = { "w", "n", "e" },
-  [2] = { "nw", "ne" },
+  [0] = { "s", "nw", "ne", "auto" },
+  [1] = { "w", "n", "auto" },
+  [2] = { "auto", "ne" },
   [3] = { "s" },
 }
 for r = 0, n do

@@ -27,7 +27,7 @@ local settings = {
   { name = "(c)  ω_2 = ω_3 = 3", w = { 1, 1, 3, 3, 1, 1, 1, 1 } },
   { name = "(d)  ω_1 = ω_6 = 8", w = { 1, 8, 1, 1, 1, 1, 8, 1 } },
 }
-local place = { "w", "n", "w", "s", "w", "ne", "s", "e" }
+local place = { "w", "n", "w", "s", "w", "auto", "auto", "e" }
 
 local f = figure{
   name = "lecture5-rational",

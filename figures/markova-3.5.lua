@@ -165,7 +165,7 @@ h:label(P[5], "P_4", { place = "s", color = "grey" })
 h:curve(n)
 h:knots(n)
 local Q = n:points()
-local new = { { 3, "P_{3,1}", "ne" }, { 4, "P_{4,2}", "n" },
+local new = { { 3, "P_{3,1}", "ne" }, { 4, "P_{4,2}", "auto" },
               { 6, "P_{5,2}", "n" },
               { 7, "P_{5,1}", "sw" } }
 for _, e in ipairs(new) do

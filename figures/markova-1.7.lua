@@ -51,7 +51,7 @@ for k, ip in ipairs(which) do
       .. "[u_%d, u_%d) = [%g, %g) shaded%s (Obr. 1.%d: N_%d^%d(u))",
       i, p, i, i + p + 1, a, b,
       double and (p == 1
-        and "; C^-1 at the double knot: the filled dot is the value "
+        and "; C^{-1} at the double knot: the filled dot is the value "
             .. "N_1^1(1) = 1 taken, the hollow circle the limit 0 from "
             .. "the left, not taken"
         or string.format("; C^%d at the double knot, the dot the value "

@@ -408,7 +408,7 @@ render_figures(const cf_script_t *s, const options *o)
                 continue;
             cf__tool_manifest_line(man, cf_script_figure_name(s, i),
                                    cf_script_figure_caption(s, i),
-                                   o->formats);
+                                   o->formats, o->script);
         }
         if (cf__tool_close_atomic(man, o->manifest) != 0) {
             fprintf(stderr, "curvefig: cannot write %s: %s\n", o->manifest,

@@ -27,7 +27,8 @@ static const char *const groups[][2] = {
     { "orazem", "Seed 003 · Maruša Oražem, Bezierjeva krivulja in njen "
                 "odmik (Slovene)" },
     { "sir", "Seed 000 · Zbyněk Šír, Bézierovy křivky (Czech)" },
-    { "lecture5", "Seed 001 · Lecture 5, rational curves (Russian)" },
+    { "lecture5", "Seed 001 · Лекция 5: Кривые и поверхности в "
+                  "компьютерной геометрии, I (Russian)" },
     { "lec05", "Seed 004 · Lec05, Bezier曲线 B样条曲线 (Chinese)" },
 };
 

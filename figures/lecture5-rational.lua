@@ -59,6 +59,8 @@ for k, s in ipairs(settings) do
   f:polygon(plain)
   f:curve(rat, { color = red, width = 2 })
   f:curve(plain, { color = blue, dash = "dashed", width = 1.4 })
+  -- the control points again, over the curves (p_6 lies under them)
+  f:points(Q, { color = "#3c3c3c", marker_color = "#3c3c3c" })
   for i, q in ipairs(Q) do
     f:label(q, string.format("p_%d", i - 1),
             { place = place[i], font_size = 9,

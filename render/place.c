@@ -80,10 +80,9 @@ place_cost(const raster_t *r, const double ink[4], double ox, double oy)
     return a + 0.25 * fmax(0, b - a);
 }
 
-/* Draw element i into cr. */
+/* Element i's operations into r->dl. */
 static cf_status_t
-raster_element(cf_figure_t *fig, size_t i, const cf__layout_t *lay,
-               raster_t *r, cairo_t *cr)
+element_ops(cf_figure_t *fig, size_t i, const cf__layout_t *lay, raster_t *r)
 {
     cf_status_t st;
     cf__dl_reset(&r->dl);
@@ -91,6 +90,15 @@ raster_element(cf_figure_t *fig, size_t i, const cf__layout_t *lay,
     if (r->dl.failed && st == CF_STATUS_OK)
         st = cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
                          "out of memory placing labels");
+    return st;
+}
+
+/* Draw element i into cr. */
+static cf_status_t
+raster_element(cf_figure_t *fig, size_t i, const cf__layout_t *lay,
+               raster_t *r, cairo_t *cr)
+{
+    cf_status_t st = element_ops(fig, i, lay, r);
     if (st == CF_STATUS_OK)
         cf__dl_play(&r->dl, 0, r->dl.count, &cf__cairo_backend, cr);
     return st;
@@ -137,12 +145,13 @@ cheapest(const raster_t *r, const cf_label_t *lab, const cf_style_t *s,
         }
 }
 
-/* Pixels inked more than half both in r->one and in img. */
+/* Pixels inked more than half both in one and in img, within the pixel
+** box px (x0 y0 x1 y1; NULL: everywhere). */
 static long
-common_pixels(cairo_surface_t *one, cairo_surface_t *img)
+common_pixels(cairo_surface_t *one, cairo_surface_t *img, const int *px)
 {
     const unsigned char *a, *b;
-    int w, h, stride, i, j;
+    int w, h, stride, i, j, i0 = 0, j0 = 0;
     long n = 0;
     cairo_surface_flush(one);
     cairo_surface_flush(img);
@@ -151,8 +160,14 @@ common_pixels(cairo_surface_t *one, cairo_surface_t *img)
     w = cairo_image_surface_get_width(one);
     h = cairo_image_surface_get_height(one);
     stride = cairo_image_surface_get_stride(one);
-    for (j = 0; j < h; j++)
-        for (i = 0; i < w; i++) {
+    if (px != NULL) {
+        i0 = px[0] > 0 ? px[0] : 0;
+        j0 = px[1] > 0 ? px[1] : 0;
+        w = px[2] < w ? px[2] : w;
+        h = px[3] < h ? px[3] : h;
+    }
+    for (j = j0; j < h; j++)
+        for (i = i0; i < w; i++) {
             size_t at = (size_t)j * (size_t)stride + (size_t)i;
             n += a[at] > HIT_ALPHA && b[at] > HIT_ALPHA;
         }
@@ -214,7 +229,7 @@ what_is_under(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
         clear(r->cr1);
         if (raster_element(fig, j, lay, r, r->cr1) != CF_STATUS_OK)
             return fig->count;
-        n = common_pixels(r->one, mask);
+        n = common_pixels(r->one, mask, NULL);
         if (n > most) {
             most = n;
             worst = j;
@@ -236,12 +251,30 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
     cairo_surface_t *mask;
     cairo_t *mcr;
     cf_status_t st;
+    double ink[4];
+    int px[4];
     long n;
-    clear(r->cr1);
-    st = raster_element(fig, i, lay, r, r->cr1);
+    /* only the label's box is cleared, drawn and compared */
+    st = element_ops(fig, i, lay, r);
     if (st != CF_STATUS_OK)
         return st;
-    n = common_pixels(r->one, r->img);
+    if (cf__cairo_ink(&r->dl, 0, r->dl.count, ink) != 0)
+        return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                           "cairo failed measuring a label");
+    if (!(ink[2] > ink[0] && ink[3] > ink[1]))
+        return CF_STATUS_OK;   /* nothing drawn */
+    px[0] = (int)floor(ink[0] * r->res) - 1;
+    px[1] = (int)floor(ink[1] * r->res) - 1;
+    px[2] = (int)ceil(ink[2] * r->res) + 1;
+    px[3] = (int)ceil(ink[3] * r->res) + 1;
+    cairo_save(r->cr1);
+    cairo_identity_matrix(r->cr1);
+    cairo_rectangle(r->cr1, px[0], px[1], px[2] - px[0], px[3] - px[1]);
+    cairo_set_operator(r->cr1, CAIRO_OPERATOR_CLEAR);
+    cairo_fill(r->cr1);
+    cairo_restore(r->cr1);
+    cf__dl_play(&r->dl, 0, r->dl.count, &cf__cairo_backend, r->cr1);
+    n = common_pixels(r->one, r->img, px);
     if (n > 1) {
         size_t j;
         /* keep the label's mask: naming what is under it reuses r->one */
@@ -249,6 +282,8 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
             CAIRO_FORMAT_A8, cairo_image_surface_get_width(r->one),
             cairo_image_surface_get_height(r->one));
         mcr = cairo_create(mask);
+        cairo_rectangle(mcr, px[0], px[1], px[2] - px[0], px[3] - px[1]);
+        cairo_clip(mcr);
         cairo_set_source_surface(mcr, r->one, 0, 0);
         cairo_paint(mcr);
         cairo_destroy(mcr);
@@ -263,7 +298,8 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
                  automatic ? "placed automatically " : "place ",
                  place_names[place]);
     }
-    return raster_element(fig, i, lay, r, r->cr);
+    cf__dl_play(&r->dl, 0, r->dl.count, &cf__cairo_backend, r->cr);
+    return CF_STATUS_OK;
 }
 
 static cf_status_t

@@ -391,6 +391,7 @@ theme_default(cf_theme_t *t)
     t->role[CF_ROLE_LABEL] = role_style(0x000000, 0.5, CF_MARKER_NONE, 0,
                                         0x000000);
     t->role[CF_ROLE_LABEL].offset = 4.0;   /* clear of a 3.6 bp dot */
+    t->role[CF_ROLE_LABEL].place = CF_PLACE_AUTO;
     t->role[CF_ROLE_ARROW] = role_style(0xb22222, 0.9, CF_MARKER_NONE, 0,
                                         0xb22222);
     t->role[CF_ROLE_ARROW].arrow_size = 6.0;

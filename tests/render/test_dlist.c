@@ -196,9 +196,11 @@ test_dump_content(void **state)
     assert_non_null(strstr(text, "path fill "));
     assert_non_null(strstr(text, " C "));
     assert_non_null(strstr(text, "marker tick "));
-    /* the automatic label got a place: not CF_PLACE_AUTO */
+    /* the automatic label got a place: not CF_PLACE_AUTO; so did the
+    ** label given none (automatic by default) */
     assert_int_not_equal(label_place(text, "P_3"), (int)CF_PLACE_AUTO);
-    assert_int_equal(label_place(text, "\\\\hat{P}_1"), (int)CF_PLACE_NE);
+    assert_int_not_equal(label_place(text, "\\\\hat{P}_1"), (int)CF_PLACE_AUTO);
+    assert_int_not_equal(label_place(text, "\\\\hat{P}_1"), (int)CF_PLACE_CENTER);
     cf_free(text);
     cf_figure_destroy(fig);
 }
@@ -406,6 +408,44 @@ test_page_checks(void **state)
     cf_figure_destroy(fig);
 }
 
+/* A label given a place on a stroke is kept and reported; the same label
+** placed automatically moves off the stroke and is not. */
+static void
+test_label_on_ink(void **state)
+{
+    static const double line[] = { 0, 0, 4, 0 };
+    cf_figure_t *fig;
+    cf_style_t at;
+    char *text;
+    const char *w;
+    int pass;
+    (void)state;
+    for (pass = 0; pass < 2; pass++) {
+        assert_int_equal(cf_figure_create(40, 30, CF_UNIT_MM, &fig, NULL), 0);
+        assert_int_equal(cf_figure_add_polyline(fig, line, 2, false, NULL), 0);
+        cf_style_init(&at);
+        if (pass == 0) {
+            at.place = CF_PLACE_CENTER;
+            at.set |= CF_STYLE_PLACE;
+        }
+        assert_int_equal(cf_figure_add_label(fig, 2, 0, "W_1", &at), 0);
+        text = dump(fig);
+        w = cf_figure_warnings(fig);
+        if (pass == 0) {
+            assert_non_null(strstr(w, "label \"W_1\" (place center) lies "
+                                      "on polyline 1\n"));
+            /* kept where it was put */
+            assert_int_equal(label_place(text, "W_1"), (int)CF_PLACE_CENTER);
+        } else {
+            assert_string_equal(w, "");
+            assert_int_not_equal(label_place(text, "W_1"),
+                                 (int)CF_PLACE_CENTER);
+        }
+        cf_free(text);
+        cf_figure_destroy(fig);
+    }
+}
+
 int
 main(void)
 {
@@ -415,6 +455,7 @@ main(void)
         cmocka_unit_test(test_dump_deterministic),
         cmocka_unit_test(test_pgf_backend),
         cmocka_unit_test(test_page_checks),
+        cmocka_unit_test(test_label_on_ink),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -674,6 +674,7 @@ test_figure(void **state)
     cf_figure_destroy(NULL);
     /* every figure function on NULL */
     BAD(cf_figure_status(NULL, NULL));
+    assert_string_equal(cf_figure_warnings(NULL), "");
     cf_figure_get_size(NULL, &w, &w);
     BAD(cf_figure_set_title(NULL, "t"));
     BAD(cf_figure_set_caption(NULL, "c"));

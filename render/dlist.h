@@ -154,6 +154,11 @@ void cf__dl_path_paint(cf__dl_t *dl, const cf__paint_t *paint);
 void cf__dl_marker(cf__dl_t *dl, const cf__marker_op_t *m);
 void cf__dl_text(cf__dl_t *dl, const cf__text_op_t *t);
 
+/* Append every operation of src to dst, moved by (dx, dy) on the page
+** (a panel's display list into its cell). */
+void cf__dl_append_moved(cf__dl_t *dst, const cf__dl_t *src, double dx,
+                         double dy);
+
 /* The path of a PATH operation. */
 void cf__dl_op_path(const cf__dl_t *dl, const cf__op_t *op, cf__path_t *out);
 

@@ -178,9 +178,8 @@ push_panel(lua_State *L, int parent, cf_figure_t *p, int k)
 
 /* titles = false, or a list of titles (label syntax) */
 static void
-read_titles(lua_State *L, cf_figure_t *fig, cf_figure_t **panels, int n)
+read_titles(lua_State *L, cf_figure_t **panels, int n)
 {
-    (void)fig;
     if (cf__lua_field(L, 2, "titles") != LUA_TTABLE) {
         lua_pop(L, 1);
         return;
@@ -223,12 +222,14 @@ m_panels(lua_State *L)
         flags |= CF_PANELS_SHARE_X;
     if (cf__lua_opt_bool(L, 2, "share_y", "panels", false))
         flags |= CF_PANELS_SHARE_Y;
-    if (cf__lua_field(L, 2, "titles") == LUA_TBOOLEAN && !lua_toboolean(L, -1))
+    if ((cf__lua_field(L, 2, "titles") == LUA_TBOOLEAN
+         && !lua_toboolean(L, -1)) || !cf__lua_labels_on(L))
         flags |= CF_PANELS_NO_TITLES;
     lua_settop(L, 2);
     check(L, "panels", cf_figure_add_panels(fig, rows, cols, gap, flags,
                                              panels));
-    read_titles(L, fig, panels, rows * cols);
+    if (cf__lua_labels_on(L))
+        read_titles(L, panels, rows * cols);
     luaL_checkstack(L, rows * cols, "panels");
     for (k = 0; k < rows * cols; k++)
         push_panel(L, 1, panels[k], k);

@@ -399,14 +399,16 @@ test_legend_auto_avoids_ink(void **state)
 /* The page x of the markers of a points element drawn in each panel at
 ** data x = xs[j], read from the dump in drawing order. */
 static void
-marker_xs(const lines_t *l, double *out, size_t n)
+marker_xys(const lines_t *l, double *xs, double *ys, size_t n)
 {
     size_t i, k = 0;
     for (i = 0; i < l->n && k < n; i++) {
         double x, y;
         char name[32];
-        if (sscanf(l->line[i], "marker %31s %lf %lf", name, &x, &y) == 3)
-            out[k++] = x;
+        if (sscanf(l->line[i], "marker %31s %lf %lf", name, &x, &y) == 3) {
+            xs[k] = x;
+            ys[k++] = y;
+        }
     }
     assert_int_equal(k, n);
 }
@@ -445,7 +447,7 @@ test_panels_share_x(void **state)
 {
     cf_figure_t *p[2], *fig;
     lines_t l;
-    double x[4];
+    double x[4], y[4];
     (void)state;
     fig = two_panels(CF_PANELS_SHARE_X, p);
     dump_lines(fig, &l);
@@ -453,17 +455,45 @@ test_panels_share_x(void **state)
     assert_non_null(strstr(l.text, "group 1 panel"));
     assert_non_null(strstr(l.text, "text \"(a)\""));
     assert_non_null(strstr(l.text, "text \"(b)\""));
-    marker_xs(&l, x, 4);
+    marker_xys(&l, x, y, 4);
     assert_true(x[0] == x[2]);
     assert_true(x[1] == x[3]);
     assert_true(x[1] - x[0] > 10);
+    /* the top panel keeps its aspect: page dy / dx = data 0.2 / 0.5 */
+    assert_true(fabs((y[0] - y[1]) / (x[1] - x[0]) - 0.4) < 1e-9);
     lines_free(&l);
     cf_figure_destroy(fig);
 
     fig = two_panels(0, p);
     dump_lines(fig, &l);
-    marker_xs(&l, x, 4);
+    marker_xys(&l, x, y, 4);
     assert_true(fabs(x[0] - x[2]) > 1 || fabs(x[1] - x[3]) > 1);
+    lines_free(&l);
+    cf_figure_destroy(fig);
+}
+
+/* CF_PANELS_SHARE_Y: panels side by side put a data y at one page y. */
+static void
+test_panels_share_y(void **state)
+{
+    static const double a[] = { 0, 0.2, 1, 0.7 };
+    static const double b[] = { 5, 0.2, 9, 0.7, 7, 3 };
+    cf_figure_t *fig = NULL, *p[2];
+    lines_t l;
+    double x[5], y[5];
+    (void)state;
+    assert_int_equal(cf_figure_create(10, 5, CF_UNIT_CM, &fig, NULL), 0);
+    assert_int_equal(cf_figure_add_panels(fig, 1, 2, 4, CF_PANELS_SHARE_Y,
+                                          p), 0);
+    assert_int_equal(cf_figure_set_fit(p[0], 10, false), 0);
+    assert_int_equal(cf_figure_set_fit(p[1], 10, false), 0);
+    assert_int_equal(cf_figure_add_points(p[0], a, 2, NULL), 0);
+    assert_int_equal(cf_figure_add_points(p[1], b, 3, NULL), 0);
+    dump_lines(fig, &l);
+    marker_xys(&l, x, y, 5);
+    assert_true(y[0] == y[2]);
+    assert_true(y[1] == y[3]);
+    assert_true(x[2] > x[1]);   /* the second panel right of the first */
     lines_free(&l);
     cf_figure_destroy(fig);
 }
@@ -623,6 +653,7 @@ main(void)
         cmocka_unit_test(test_legend_auto_avoids_ink),
         cmocka_unit_test(test_legend_bad_input),
         cmocka_unit_test(test_panels_share_x),
+        cmocka_unit_test(test_panels_share_y),
         cmocka_unit_test(test_panels_bad_input),
         cmocka_unit_test(test_inset_is_affine_image),
         cmocka_unit_test(test_inset_bad_input),

@@ -127,6 +127,59 @@ connectors(const double rb[4], const double ib[4], const cf__paint_t *p,
     cf__dl_path_paint(dl, p);
 }
 
+/* The magnification of inset in for layout lay; the region's page box
+** into rb (x0 y0 x1 y1). */
+static double
+magnification(const cf_figure_t *fig, const cf__layout_t *lay,
+              const cf_inset_t *in, double rb[4])
+{
+    const double *r = in->region;
+    cf__map(lay, r[0], r[3], &rb[0], &rb[1]);
+    cf__map(lay, r[2], r[1], &rb[2], &rb[3]);
+    if (in->has_rect)
+        return fmin(in->rect[2] / (rb[2] - rb[0]),
+                    in->rect[3] / (rb[3] - rb[1]));
+    if (in->scale > 0)
+        return in->scale;
+    return (in->size > 0 ? in->size : fig->width / 3) / (rb[2] - rb[0]);
+}
+
+static void
+page_box(const cf_figure_t *fig, const cf__layout_t *lay, double page[4])
+{
+    page[0] = lay->px;
+    page[1] = lay->py;
+    page[2] = lay->px + fig->width;
+    page[3] = lay->py + fig->height;
+}
+
+cf_status_t
+cf__insets_fit(cf_figure_t *fig, const cf__layout_t *lay,
+               const cf__dl_t *dl, double *w, double *h, bool *covered)
+{
+    size_t k;
+    *w = *h = 0;
+    *covered = false;
+    for (k = 0; k < fig->ninsets; k++) {
+        const cf_inset_t *in = &fig->insets[k];
+        double rb[4], page[4], at[2], mag, bw, bh;
+        size_t n = 0;
+        if (in->has_rect || in->place != CF_PLACE_AUTO)
+            continue;
+        mag = magnification(fig, lay, in, rb);
+        bw = mag * (rb[2] - rb[0]);
+        bh = mag * (rb[3] - rb[1]);
+        page_box(fig, lay, page);
+        if (cf__room_find(fig, dl, page, bw, bh, CF_PLACE_AUTO, INSET_EDGE,
+                          at, &n) != CF_STATUS_OK)
+            return fig->err.status;
+        *w = fmax(*w, bw);
+        *h = fmax(*h, bh);
+        *covered = *covered || n > 0;
+    }
+    return CF_STATUS_OK;
+}
+
 static cf_status_t
 draw_inset(cf_figure_t *fig, const cf__layout_t *lay, size_t k,
            cf__dl_t *dl)
@@ -146,27 +199,16 @@ draw_inset(cf_figure_t *fig, const cf__layout_t *lay, size_t k,
                            "the window [%g, %g] x [%g, %g]", k + 1, r[0],
                            r[1], r[2], r[3], lay->xmin, lay->xmax,
                            lay->ymin, lay->ymax);
-    cf__map(lay, r[0], r[3], &rb[0], &rb[1]);
-    cf__map(lay, r[2], r[1], &rb[2], &rb[3]);
+    mag = magnification(fig, lay, in, rb);
+    bw = mag * (rb[2] - rb[0]);
+    bh = mag * (rb[3] - rb[1]);
     if (in->has_rect) {
-        mag = fmin(in->rect[2] / (rb[2] - rb[0]),
-                   in->rect[3] / (rb[3] - rb[1]));
         at[0] = lay->px + in->rect[0];
         at[1] = lay->py + in->rect[1];
     } else {
-        mag = in->scale > 0 ? in->scale
-            : (in->size > 0 ? in->size : fig->width / 3) / (rb[2] - rb[0]);
-    }
-    bw = mag * (rb[2] - rb[0]);
-    bh = mag * (rb[3] - rb[1]);
-    if (!in->has_rect) {
-        page[0] = lay->px;
-        page[1] = lay->py;
-        page[2] = lay->px + fig->width;
-        page[3] = lay->py + fig->height;
+        page_box(fig, lay, page);
         if (cf__room_find(fig, dl, page, bw, bh, in->place, INSET_EDGE, at,
-                          NULL)
-            != CF_STATUS_OK)
+                          NULL) != CF_STATUS_OK)
             return fig->err.status;
     }
     ib[0] = at[0];

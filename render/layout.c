@@ -129,48 +129,68 @@ cf__figure_build(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
     return CF_STATUS_OK;
 }
 
-/* bp between the drawing and a legend band */
-#define LEGEND_BAND_GAP 6.0
+/* bp between the drawing and a band for insets or the legend */
+#define BAND_GAP 6.0
 
-/* An automatic legend that finds no corner or side free of ink (of the
-** elements and the insets) gets a band of its own, at the right or at the bottom of the drawing,
-** whichever keeps the larger scale. */
-static cf_status_t
-legend_band(cf_figure_t *fig, const double win[4], bool keep,
-            const double avail[4], cf__layout_t *lay)
+/* Take a band of w (at the right) or h (at the bottom) bp out of the
+** available box avail, whichever keeps the larger scale, and lay out
+** again; nothing when neither leaves a fifth of the box. */
+static void
+take_band(cf_figure_t *fig, const double win[4], bool keep, double avail[4],
+          double w, double h, cf__layout_t *lay)
 {
-    cf__dl_t dl;
-    cf__layout_t right, below;
-    double w, h, ra[4], ba[4];
-    bool covered = false;
-    cf_status_t st;
-    if (fig->nlegend == 0 || fig->legend_place != 0)
-        return CF_STATUS_OK;
-    cf__dl_init(&dl);
-    st = build_elements(fig, lay, &dl);
-    if (st == CF_STATUS_OK)
-        st = cf__insets_draw(fig, lay, &dl);
-    if (st == CF_STATUS_OK)
-        st = cf__legend_fits(fig, lay, &dl, &w, &h, &covered);
-    cf__dl_free(&dl);
-    if (st != CF_STATUS_OK || !covered)
-        return st;
-    right = below = *lay;
+    cf__layout_t right = *lay, below = *lay;
+    double ra[4], ba[4];
+    bool r_ok, b_ok;
     memcpy(ra, avail, sizeof ra);
     memcpy(ba, avail, sizeof ba);
-    ra[2] -= w + LEGEND_BAND_GAP;
-    ba[3] -= h + LEGEND_BAND_GAP;
-    if (!(ra[2] - ra[0] > 0.2 * (avail[2] - avail[0]))
-        && !(ba[3] - ba[1] > 0.2 * (avail[3] - avail[1])))
-        return CF_STATUS_OK;
+    ra[2] -= w + BAND_GAP;
+    ba[3] -= h + BAND_GAP;
+    r_ok = ra[2] - ra[0] > 0.2 * (avail[2] - avail[0]);
+    b_ok = ba[3] - ba[1] > 0.2 * (avail[3] - avail[1]);
+    if (!r_ok && !b_ok)
+        return;
     compute_map(fig, win, keep, ra, &right);
     compute_map(fig, win, keep, ba, &below);
-    if (!(ba[3] - ba[1] > 0.2 * (avail[3] - avail[1]))
-        || ((ra[2] - ra[0] > 0.2 * (avail[2] - avail[0]))
-            && fmin(right.sx, right.sy) >= fmin(below.sx, below.sy)))
+    if (!b_ok || (r_ok && fmin(right.sx, right.sy)
+                              >= fmin(below.sx, below.sy))) {
         *lay = right;
-    else
+        memcpy(avail, ra, sizeof ra);
+    } else {
         *lay = below;
+        memcpy(avail, ba, sizeof ba);
+    }
+}
+
+/* Insets and then an automatic legend that find no corner or side free
+** of ink (the elements', then the insets' too) get a band of their own
+** at the right or at the bottom of the drawing. */
+static cf_status_t
+make_bands(cf_figure_t *fig, const double win[4], bool keep,
+           double avail[4], cf__layout_t *lay)
+{
+    int pass;
+    if (fig->ninsets == 0 && fig->nlegend == 0)
+        return CF_STATUS_OK;
+    for (pass = 0; pass < 2; pass++) {
+        cf__dl_t dl;
+        double w = 0, h = 0;
+        bool covered = false;
+        cf_status_t st;
+        cf__dl_init(&dl);
+        st = build_elements(fig, lay, &dl);
+        if (st == CF_STATUS_OK && pass == 0)
+            st = cf__insets_fit(fig, lay, &dl, &w, &h, &covered);
+        if (st == CF_STATUS_OK && pass == 1)
+            st = cf__insets_draw(fig, lay, &dl);
+        if (st == CF_STATUS_OK && pass == 1)
+            st = cf__legend_fits(fig, lay, &dl, &w, &h, &covered);
+        cf__dl_free(&dl);
+        if (st != CF_STATUS_OK)
+            return st;
+        if (covered)
+            take_band(fig, win, keep, avail, w, h, lay);
+    }
     return CF_STATUS_OK;
 }
 
@@ -262,7 +282,7 @@ cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
         avail[3] = fig->height - m - ob;
     }
     compute_map(fig, win, keep, avail, lay);
-    return legend_band(fig, win, keep, avail, lay);
+    return make_bands(fig, win, keep, avail, lay);
 }
 
 cf_status_t

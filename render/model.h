@@ -274,6 +274,12 @@ cf_status_t cf__figure_check_page(const cf_figure_t *fig, const cf__dl_t *dl,
 ** groups drawn at ops [from, dl->count). */
 cf_status_t cf__legend_draw(cf_figure_t *fig, const cf__layout_t *lay,
                             size_t from, cf__dl_t *dl);
+/* The largest size of the insets placed automatically, and whether one
+** of them finds no place free of the ink of dl (the elements drawn with
+** lay). */
+cf_status_t cf__insets_fit(cf_figure_t *fig, const cf__layout_t *lay,
+                           const cf__dl_t *dl, double *w, double *h,
+                           bool *covered);
 /* Every inset: the elements drawn again in its box, frames, connectors. */
 cf_status_t cf__insets_draw(cf_figure_t *fig, const cf__layout_t *lay,
                             cf__dl_t *dl);

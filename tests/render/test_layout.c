@@ -273,29 +273,16 @@ box_distance(const double b[4], double x, double y)
     return hypot(dx, dy);
 }
 
-/* No stroke of any element passes through the automatic legend's box:
-** every cubic and line of the elements' paths, sampled finely, keeps half
-** its line width away; and the rendered page is blank in a ring just
-** inside the frame (nothing crosses into it). */
-static void
-test_legend_auto_avoids_ink(void **state)
+/* No stroke or marker drawn at lines [0, to) of the dump comes into box
+** (x0 y0 x1 y1): every line and cubic, sampled finely, keeps half its
+** width away, every marker its radius.  The number of samples. */
+static size_t
+assert_no_ink_in(const lines_t *l, size_t to, const double box[4])
 {
-    cf_figure_t *fig = legend_figure();
-    lines_t l;
-    size_t lg, i;
-    double box[4], v[4096];
-    unsigned char *png;
-    size_t png_size, checked = 0;
-    (void)state;
-    dump_lines(fig, &l);
-    lg = find(&l, 0, "group 3 legend");
-    assert_int_equal(path_numbers(l.line[lg + 1], v, 8), 4);
-    box[0] = v[0];
-    box[1] = v[1];
-    box[2] = v[0] + v[2];
-    box[3] = v[1] + v[3];
-    for (i = 0; i < lg; i++) {
-        const char *ln = l.line[i];
+    double v[4096];
+    size_t i, checked = 0;
+    for (i = 0; i < to; i++) {
+        const char *ln = l->line[i];
         const char *w;
         double half, x = 0, y = 0;
         size_t n, j = 0;
@@ -343,15 +330,40 @@ test_legend_auto_avoids_ink(void **state)
         }
         assert_int_equal(j, n);
     }
-    assert_true(checked > 400);
     /* markers: their whole disc outside the box */
-    for (i = 0; i < lg; i++) {
+    for (i = 0; i < to; i++) {
         double mx, my, ms;
         char name[32];
-        if (sscanf(l.line[i], "marker %31s %lf %lf size %lf", name, &mx, &my,
+        if (sscanf(l->line[i], "marker %31s %lf %lf size %lf", name, &mx, &my,
                    &ms) == 4)
             assert_true(box_distance(box, mx, my) > 0.5 * ms);
     }
+    return checked;
+}
+
+/* No stroke of any element passes through the automatic legend's box:
+** every cubic and line of the elements' paths, sampled finely, keeps half
+** its line width away; and the rendered page is blank in a ring just
+** inside the frame (nothing crosses into it). */
+static void
+test_legend_auto_avoids_ink(void **state)
+{
+    cf_figure_t *fig = legend_figure();
+    lines_t l;
+    size_t lg;
+    double box[4], v[8];
+    unsigned char *png;
+    size_t png_size, checked;
+    (void)state;
+    dump_lines(fig, &l);
+    lg = find(&l, 0, "group 3 legend");
+    assert_int_equal(path_numbers(l.line[lg + 1], v, 8), 4);
+    box[0] = v[0];
+    box[1] = v[1];
+    box[2] = v[0] + v[2];
+    box[3] = v[1] + v[3];
+    checked = assert_no_ink_in(&l, lg, box);
+    assert_true(checked > 400);
     /* the PNG without the frame (the same place): in the ring between
     ** the box's edge and its content nothing is drawn */
     assert_int_equal(cf_figure_set_legend_place(fig, CF_PLACE_AUTO, false),
@@ -575,6 +587,40 @@ test_inset_is_affine_image(void **state)
     cf_bezier_destroy(c);
 }
 
+/* An automatic inset on a page the drawing fills: the drawing makes
+** room, and no element's stroke or marker comes into the inset's box. */
+static void
+test_inset_auto_finds_room(void **state)
+{
+    static const double poly[] = { 0, 0, 4, 3, 0, 3, 4, 0 };
+    cf_figure_t *fig = NULL;
+    cf_bezier_t *c = cubic(0, 0, 4, 3, 0, 3, 4, 0);
+    cf_inset_t in;
+    lines_t l;
+    size_t g;
+    double f[4];
+    (void)state;
+    assert_int_equal(cf_figure_create(8, 6, CF_UNIT_CM, &fig, NULL), 0);
+    assert_int_equal(cf_figure_add_polygon(fig, poly, 4, NULL), 0);
+    assert_int_equal(cf_figure_add_bezier(fig, c, NULL), 0);
+    cf_inset_init(&in);
+    in.region[0] = 1.7;
+    in.region[1] = 2.0;
+    in.region[2] = 2.3;
+    in.region[3] = 2.5;
+    in.scale = 3;
+    assert_int_equal(cf_figure_add_inset(fig, &in), 0);
+    dump_lines(fig, &l);
+    g = find(&l, 0, "group 0 inset");
+    assert_int_equal(path_numbers(l.line[g + 3], f, 4), 4);
+    f[2] += f[0];
+    f[3] += f[1];
+    assert_true(assert_no_ink_in(&l, g, f) > 300);
+    lines_free(&l);
+    cf_figure_destroy(fig);
+    cf_bezier_destroy(c);
+}
+
 /* A region outside the window, an empty one, an unknown place. */
 static void
 test_inset_bad_input(void **state)
@@ -656,6 +702,7 @@ main(void)
         cmocka_unit_test(test_panels_share_y),
         cmocka_unit_test(test_panels_bad_input),
         cmocka_unit_test(test_inset_is_affine_image),
+        cmocka_unit_test(test_inset_auto_finds_room),
         cmocka_unit_test(test_inset_bad_input),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -247,7 +247,7 @@ cf__marker_from_style(const cf_style_t *s, cf_marker_t marker, double x,
     out->opacity = s->opacity;
 }
 
-/* ---- moving --------------------------------------------------------------- */
+/* ---- moving ------------------------------------------------------------- */
 
 /* The numbers of a segment kind, and how many of them from the first are
 ** (x, y) pairs that move (the rest: sizes, radius, angles). */

@@ -144,15 +144,6 @@ magnification(const cf_figure_t *fig, const cf__layout_t *lay,
     return (in->size > 0 ? in->size : fig->width / 3) / (rb[2] - rb[0]);
 }
 
-static void
-page_box(const cf_figure_t *fig, const cf__layout_t *lay, double page[4])
-{
-    page[0] = lay->px;
-    page[1] = lay->py;
-    page[2] = lay->px + fig->width;
-    page[3] = lay->py + fig->height;
-}
-
 cf_status_t
 cf__insets_fit(cf_figure_t *fig, const cf__layout_t *lay,
                const cf__dl_t *dl, double *w, double *h, bool *covered)
@@ -162,15 +153,14 @@ cf__insets_fit(cf_figure_t *fig, const cf__layout_t *lay,
     *covered = false;
     for (k = 0; k < fig->ninsets; k++) {
         const cf_inset_t *in = &fig->insets[k];
-        double rb[4], page[4], at[2], mag, bw, bh;
+        double rb[4], at[2], mag, bw, bh;
         size_t n = 0;
         if (in->has_rect || in->place != CF_PLACE_AUTO)
             continue;
         mag = magnification(fig, lay, in, rb);
         bw = mag * (rb[2] - rb[0]);
         bh = mag * (rb[3] - rb[1]);
-        page_box(fig, lay, page);
-        if (cf__room_find(fig, dl, page, bw, bh, CF_PLACE_AUTO, INSET_EDGE,
+        if (cf__room_find(fig, lay, dl, bw, bh, CF_PLACE_AUTO, INSET_EDGE,
                           at, &n) != CF_STATUS_OK)
             return fig->err.status;
         *w = fmax(*w, bw);
@@ -187,7 +177,7 @@ draw_inset(cf_figure_t *fig, const cf__layout_t *lay, size_t k,
     const cf_inset_t *in = &fig->insets[k];
     const double *r = in->region;
     double e = 1e-9 * fmax(lay->xmax - lay->xmin, lay->ymax - lay->ymin);
-    double rb[4], ib[4], bw, bh, mag, at[2], page[4];
+    double rb[4], ib[4], bw, bh, mag, at[2];
     cf__layout_t il;
     cf__paint_t line, bg;
     cf_style_t axes;
@@ -206,8 +196,7 @@ draw_inset(cf_figure_t *fig, const cf__layout_t *lay, size_t k,
         at[0] = lay->px + in->rect[0];
         at[1] = lay->py + in->rect[1];
     } else {
-        page_box(fig, lay, page);
-        if (cf__room_find(fig, dl, page, bw, bh, in->place, INSET_EDGE, at,
+        if (cf__room_find(fig, lay, dl, bw, bh, in->place, INSET_EDGE, at,
                           NULL) != CF_STATUS_OK)
             return fig->err.status;
     }

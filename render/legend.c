@@ -165,21 +165,12 @@ measure(cf_figure_t *fig, const cf_style_t *ls, double *rows, double *w,
     return CF_STATUS_OK;
 }
 
-static void
-page_box(const cf_figure_t *fig, const cf__layout_t *lay, double page[4])
-{
-    page[0] = lay->px;
-    page[1] = lay->py;
-    page[2] = lay->px + fig->width;
-    page[3] = lay->py + fig->height;
-}
-
 cf_status_t
 cf__legend_fits(cf_figure_t *fig, const cf__layout_t *lay,
                 const cf__dl_t *dl, double *w, double *h, bool *covered)
 {
     cf_style_t ls;
-    double page[4], at[2];
+    double at[2];
     size_t n = 0;
     *covered = false;
     *w = *h = 0;
@@ -188,9 +179,8 @@ cf__legend_fits(cf_figure_t *fig, const cf__layout_t *lay,
     cf__style_resolve(&fig->theme, CF_ROLE_LABEL, NULL, &ls);
     if (measure(fig, &ls, NULL, w, h) != CF_STATUS_OK)
         return fig->err.status;
-    page_box(fig, lay, page);
     if (fig->legend_place == 0
-        && cf__room_find(fig, dl, page, *w, *h, CF_PLACE_AUTO, LEG_EDGE, at,
+        && cf__room_find(fig, lay, dl, *w, *h, CF_PLACE_AUTO, LEG_EDGE, at,
                          &n) != CF_STATUS_OK)
         return fig->err.status;
     *covered = n > 0;
@@ -224,7 +214,7 @@ cf__legend_draw(cf_figure_t *fig, const cf__layout_t *lay, size_t from,
 {
     cf_style_t ls, axes;
     sample_t *samples;
-    double *rows, w = 0, h = 0, at[2], page[4], y;
+    double *rows, w = 0, h = 0, at[2], y;
     cf_place_t place;
     size_t i;
     if (fig->nlegend == 0)
@@ -242,9 +232,8 @@ cf__legend_draw(cf_figure_t *fig, const cf__layout_t *lay, size_t from,
         find_sample(dl, from, fig->legend[i].el, &samples[i]);
     if (measure(fig, &ls, rows, &w, &h) != CF_STATUS_OK)
         goto done;
-    page_box(fig, lay, page);
     place = fig->legend_place == 0 ? CF_PLACE_AUTO : fig->legend_place;
-    if (cf__room_find(fig, dl, page, w, h, place, LEG_EDGE, at, NULL)
+    if (cf__room_find(fig, lay, dl, w, h, place, LEG_EDGE, at, NULL)
         != CF_STATUS_OK)
         goto done;
     cf__dl_group(dl, "legend", fig->count);

@@ -290,13 +290,13 @@ void cf__panels_share(const cf_figure_t *fig, cf__layout_t *lays);
 /* The title of panel k (laid out at the label font size) into dl. */
 cf_status_t cf__panel_title_draw(cf_figure_t *fig, int k,
                                  const cf__layout_t *lay, cf__dl_t *dl);
-/* Where a w x h box goes on the page box page[4] (x0 y0 x1 y1) of the
-** ink in ops [0, dl->count): at place (AUTO: the first of ne nw se sw n s
-** e w covering no ink, else the least), gap bp inside the page edge; its
-** top left into at[2], the raster pixels of ink it covers into *covered
-** (may be NULL). */
-cf_status_t cf__room_find(cf_figure_t *fig, const cf__dl_t *dl,
-                          const double page[4], double w, double h,
+/* Where a w x h box goes on the page of a figure laid out with lay, of
+** the ink in ops [0, dl->count): at place (AUTO: the first of ne nw se sw
+** n s e w covering no ink, else the least), gap bp inside the page edge;
+** its top left into at[2], the raster pixels of ink it covers into
+** *covered (may be NULL). */
+cf_status_t cf__room_find(cf_figure_t *fig, const cf__layout_t *lay,
+                          const cf__dl_t *dl, double w, double h,
                           cf_place_t place, double gap, double at[2],
                           size_t *covered);
 /* The size of the legend, and whether an automatic one finds no place

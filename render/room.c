@@ -25,8 +25,10 @@ inked_pixels(cairo_surface_t *img, double res, const double b[4])
     int w = cairo_image_surface_get_width(img);
     int h = cairo_image_surface_get_height(img);
     int stride = cairo_image_surface_get_stride(img);
-    int i0 = (int)fmax(0, floor(b[0] * res)), i1 = (int)fmin(w, ceil(b[2] * res));
-    int j0 = (int)fmax(0, floor(b[1] * res)), j1 = (int)fmin(h, ceil(b[3] * res));
+    int i0 = (int)fmax(0, floor(b[0] * res));
+    int i1 = (int)fmin(w, ceil(b[2] * res));
+    int j0 = (int)fmax(0, floor(b[1] * res));
+    int j1 = (int)fmin(h, ceil(b[3] * res));
     size_t n = 0;
     int i, j;
     for (j = j0; j < j1; j++)
@@ -57,7 +59,7 @@ box_at(const double page[4], double w, double h, cf_place_t place,
 }
 
 cf_status_t
-cf__room_find(cf_figure_t *fig, const cf__dl_t *dl, const double page[4],
+cf__room_find(cf_figure_t *fig, const cf__layout_t *lay, const cf__dl_t *dl,
               double w, double h, cf_place_t place, double gap, double at[2],
               size_t *covered)
 {
@@ -65,6 +67,8 @@ cf__room_find(cf_figure_t *fig, const cf__dl_t *dl, const double page[4],
         CF_PLACE_NE, CF_PLACE_NW, CF_PLACE_SE, CF_PLACE_SW,
         CF_PLACE_N, CF_PLACE_S, CF_PLACE_E, CF_PLACE_W
     };
+    double page[4] = { lay->px, lay->py, lay->px + fig->width,
+                       lay->py + fig->height };
     double res = ROOM_RES, pw = page[2], ph = page[3];
     cairo_surface_t *img;
     cairo_t *cr;

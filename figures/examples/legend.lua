@@ -7,9 +7,10 @@ local f = figure{ name = "example-legend", width = "8cm", height = "5.5cm",
                             "their legend" }
 local P = { {0, 0}, {1, 3}, {4, 3.5}, {6, 0.5} }
 f:polygon(P, { legend = "control polygon $P_0 \\ldots P_3$" })
-f:curve(bezier(P), { legend = "Bézier cubic $c(t)$" })
+local c = bezier(P)
+f:curve(c, { legend = "Bézier cubic $c(t)$" })
 f:curve(bezier{ {0, 0}, {1, 3}, {5.5, 2}, {6, 0.5} },
         { dash = "dashed", color = "red",
           legend = "$P_2$ moved: $\\tilde{c}(t)$" })
-f:points({ {3, 1.2} }, { marker = "star", color = "darkgreen",
-                         legend = "$c(1/2)$" })
+f:points({ c:eval(0.5) }, { marker = "star", color = "darkgreen",
+                            marker_size = 8, legend = "$c(1/2)$" })

@@ -40,9 +40,9 @@ CF_API size_t cf_figure_element_count(const cf_figure_t *fig);
 ** and sides of the page, in the order ne nw se sw n s e w, and takes the
 ** first whose box covers no ink (with none clear, the drawing is made
 ** smaller to leave a band for it at the right or the bottom, whichever
-** keeps the larger scale); another place puts it at that corner or side.  CF_PLACE_CENTER
-** is INVALID_ARG.  frame: a thin frame on a background-filled box
-** (default true). */
+** keeps the larger scale); another place puts it at that corner or
+** side.  CF_PLACE_CENTER is INVALID_ARG.  frame: a thin frame on a
+** background-filled box (default true). */
 CF_API cf_status_t cf_figure_set_legend_place(cf_figure_t *fig,
                                               cf_place_t place, bool frame);
 

@@ -45,7 +45,8 @@ with_legend(lua_State *L)
     lua_rawgeti(L, LUA_REGISTRYINDEX, ref);
     luaL_unref(L, LUA_REGISTRYINDEX, ref);
     if (cf__lua_labels_on(L) && cf_figure_element_count(fig) > before)
-        check(L, fn, cf_figure_add_legend_at(fig, before, lua_tostring(L, -1)));
+        check(L, fn,
+              cf_figure_add_legend_at(fig, before, lua_tostring(L, -1)));
     lua_pop(L, 1);
     return n;
 }

@@ -89,7 +89,8 @@ test_panels(void **state)
             "a:curve(bezier{ {0, 0}, {1, 2}, {2, 0} }, { legend = 'c' })\n"
             "b:plot{ x = { 0, 2 }, y = { 0, 1 } }\n"
             "b:bernstein(2, 1)\n"
-            "b:inset{ region = { 0.5, 0.2, 1, 0.5 }, at = { 10, 10, 40, 30 } }\n"
+            "b:inset{ region = { 0.5, 0.2, 1, 0.5 },\n"
+            "         at = { 10, 10, 40, 30 } }\n"
             "a, b = nil, nil\n"
             "collectgarbage()\n");
     assert_int_equal(cf_script_figure_count(s), 1);

@@ -247,3 +247,69 @@ cf__marker_from_style(const cf_style_t *s, cf_marker_t marker, double x,
     out->fill = s->fill;
     out->opacity = s->opacity;
 }
+
+/* ---- moving ------------------------------------------------------------- */
+
+/* The numbers of a segment kind, and how many of them from the first are
+** (x, y) pairs that move (the rest: sizes, radius, angles). */
+static void
+seg_numbers(unsigned char kind, size_t *n, size_t *moved)
+{
+    static const unsigned char count[] = { 2, 2, 6, 4, 5, 0 };
+    static const unsigned char pairs[] = { 2, 2, 6, 2, 2, 0 };
+    *n = kind < sizeof count ? count[kind] : 0;
+    *moved = kind < sizeof pairs ? pairs[kind] : 0;
+}
+
+static void
+append_path(cf__dl_t *dst, const cf__dl_t *src, const cf__op_t *op,
+            double dx, double dy)
+{
+    cf__path_t p;
+    size_t i, c = 0;
+    cf__dl_op_path(src, op, &p);
+    cf__dl_path_begin(dst);
+    for (i = 0; i < p.nsegs; i++) {
+        double v[6];
+        size_t n, moved, j;
+        seg_numbers(p.segs[i], &n, &moved);
+        for (j = 0; j < n; j++)
+            v[j] = p.coords[c + j] + (j < moved ? (j % 2 ? dy : dx) : 0);
+        seg(dst, (cf__seg_t)p.segs[i], v, n);
+        c += n;
+    }
+    cf__dl_path_paint(dst, &op->u.path.paint);
+}
+
+void
+cf__dl_append_moved(cf__dl_t *dst, const cf__dl_t *src, double dx,
+                    double dy)
+{
+    size_t i;
+    if (src->failed)
+        dst->failed = true;
+    for (i = 0; i < src->count; i++) {
+        const cf__op_t *op = &src->ops[i];
+        cf__op_t *o;
+        if (op->kind == CF__OP_PATH) {
+            append_path(dst, src, op, dx, dy);
+            continue;
+        }
+        o = push_op(dst, op->kind);
+        if (o == NULL)
+            return;
+        *o = *op;
+        if (op->kind == CF__OP_CLIP) {
+            o->u.clip.rect[0] += dx;
+            o->u.clip.rect[1] += dy;
+        } else if (op->kind == CF__OP_MARKER) {
+            o->u.marker.x += dx;
+            o->u.marker.y += dy;
+        } else if (op->kind == CF__OP_TEXT) {
+            o->u.text.px += dx;
+            o->u.text.py += dy;
+            o->u.text.ox += dx;
+            o->u.text.oy += dy;
+        }
+    }
+}

@@ -181,6 +181,11 @@ typedef struct cf__marker_shape {
 bool cf__marker_shape(const cf__marker_op_t *m, cf__marker_shape_t *out);
 void cf__dl_text(cf__dl_t *dl, const cf__text_op_t *t);
 
+/* Append every operation of src to dst, moved by (dx, dy) on the page
+** (a panel's display list into its cell). */
+void cf__dl_append_moved(cf__dl_t *dst, const cf__dl_t *src, double dx,
+                         double dy);
+
 /* The path of a PATH operation. */
 void cf__dl_op_path(const cf__dl_t *dl, const cf__op_t *op, cf__path_t *out);
 

@@ -99,6 +99,15 @@ cf_figure_destroy(cf_figure_t *fig)
         cf_free(fig->els[i]);
     }
     cf_free(fig->els);
+    for (i = 0; i < fig->nlegend; i++)
+        cf__text_fini(&fig->legend[i].text);
+    cf_free(fig->legend);
+    cf_free(fig->insets);
+    for (i = 0; fig->panels != NULL && i < (size_t)(fig->rows * fig->cols);
+         i++)
+        cf_figure_destroy(fig->panels[i]);
+    cf_free(fig->panels);
+    cf__text_fini(&fig->panel_title);
     cf_free(fig->title);
     cf_free(fig->caption);
     cf_free(fig->proj);

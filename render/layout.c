@@ -33,22 +33,9 @@ compute_map(const cf_figure_t *fig, const double win[4], bool keep,
 }
 
 
-/* The ink box of the figure drawn with layout lay. */
+/* The elements (their automatic label places chosen first). */
 static cf_status_t
-ink_of(cf_figure_t *fig, const cf__layout_t *lay, double ink[4])
-{
-    cf__dl_t dl;
-    cf_status_t st;
-    cf__dl_init(&dl);
-    st = cf__figure_build(fig, lay, &dl);
-    if (st == CF_STATUS_OK)
-        cf__cairo_ink(&dl, 0, dl.count, ink);
-    cf__dl_free(&dl);
-    return st;
-}
-
-cf_status_t
-cf__figure_build(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
+build_elements(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
 {
     size_t i;
     if (cf__place_labels(fig, lay) != CF_STATUS_OK)
@@ -56,9 +43,154 @@ cf__figure_build(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
     for (i = 0; i < fig->count; i++)
         if (cf__element_draw(fig, i, lay, dl) != CF_STATUS_OK)
             return fig->err.status;
+    return CF_STATUS_OK;
+}
+
+/* The ink box of the figure drawn with layout lay. */
+static cf_status_t
+ink_of(cf_figure_t *fig, const cf__layout_t *lay, double ink[4])
+{
+    cf__dl_t dl;
+    cf_status_t st;
+    cf__dl_init(&dl);
+    st = build_elements(fig, lay, &dl);
+    if (st == CF_STATUS_OK)
+        cf__cairo_ink(&dl, 0, dl.count, ink);
+    cf__dl_free(&dl);
+    return st;
+}
+
+/* A panel's error in its parent, naming the panel. */
+static cf_status_t
+panel_failed(cf_figure_t *fig, int k, const cf_figure_t *p)
+{
+    return cf_diag_set(&fig->err, p->err.status, p->err.index,
+                       "panel (%c): %s", 'a' + k, p->err.msg);
+}
+
+/* Each panel laid out on its own page (its cell's size), the shared axes
+** made one, drawn, and its display list moved into its cell as a group
+** after its title. */
+static cf_status_t
+build_panels(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
+{
+    int k, n = fig->rows * fig->cols;
+    cf__layout_t *lays = cf_alloc_array((size_t)n, sizeof *lays);
+    cf__dl_t pdl;
+    if (lays == NULL)
+        return cf__fig_nomem(fig, "the panels' layouts");
+    for (k = 0; k < n && fig->err.status == CF_STATUS_OK; k++) {
+        cf_figure_t *p = fig->panels[k];
+        double cell[4];
+        cf__panel_cell(fig, k, cell);
+        p->width = cell[2];
+        p->height = cell[3];
+        if (p->err.status != CF_STATUS_OK
+            || cf__figure_layout(p, &lays[k]) != CF_STATUS_OK)
+            panel_failed(fig, k, p);
+    }
+    if (fig->err.status == CF_STATUS_OK)
+        cf__panels_share(fig, lays);
+    cf__dl_init(&pdl);
+    for (k = 0; k < n && fig->err.status == CF_STATUS_OK; k++) {
+        double cell[4];
+        cf__panel_cell(fig, k, cell);
+        cf__dl_reset(&pdl);
+        if (cf__figure_build(fig->panels[k], &lays[k], &pdl)
+            != CF_STATUS_OK) {
+            panel_failed(fig, k, fig->panels[k]);
+            break;
+        }
+        cf__dl_group(dl, "panel", (size_t)k);
+        if (cf__panel_title_draw(fig, k, lay, dl) != CF_STATUS_OK)
+            break;
+        cf__dl_append_moved(dl, &pdl, lay->px + cell[0], lay->py + cell[1]);
+        cf__dl_end(dl);
+    }
+    cf__dl_free(&pdl);
+    cf_free(lays);
+    return fig->err.status;
+}
+
+cf_status_t
+cf__figure_build(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
+{
+    size_t from;
+    if (fig->panels != NULL && build_panels(fig, lay, dl) != CF_STATUS_OK)
+        return fig->err.status;
+    from = dl->count;
+    if (build_elements(fig, lay, dl) != CF_STATUS_OK
+        || cf__insets_draw(fig, lay, dl) != CF_STATUS_OK
+        || cf__legend_draw(fig, lay, from, dl) != CF_STATUS_OK)
+        return fig->err.status;
     if (dl->failed)
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
                            "out of memory for the display list");
+    return CF_STATUS_OK;
+}
+
+/* bp between the drawing and a band for insets or the legend */
+#define BAND_GAP 6.0
+
+/* Take a band of w (at the right) or h (at the bottom) bp out of the
+** available box avail, whichever keeps the larger scale, and lay out
+** again; nothing when neither leaves a fifth of the box. */
+static void
+take_band(cf_figure_t *fig, const double win[4], bool keep, double avail[4],
+          double w, double h, cf__layout_t *lay)
+{
+    cf__layout_t right = *lay, below = *lay;
+    double ra[4], ba[4];
+    bool r_ok, b_ok;
+    memcpy(ra, avail, sizeof ra);
+    memcpy(ba, avail, sizeof ba);
+    ra[2] -= w + BAND_GAP;
+    ba[3] -= h + BAND_GAP;
+    r_ok = ra[2] - ra[0] > 0.2 * (avail[2] - avail[0]);
+    b_ok = ba[3] - ba[1] > 0.2 * (avail[3] - avail[1]);
+    if (!r_ok && !b_ok)
+        return;
+    compute_map(fig, win, keep, ra, &right);
+    compute_map(fig, win, keep, ba, &below);
+    if (!b_ok || (r_ok && fmin(right.sx, right.sy)
+                              >= fmin(below.sx, below.sy))) {
+        *lay = right;
+        memcpy(avail, ra, sizeof ra);
+    } else {
+        *lay = below;
+        memcpy(avail, ba, sizeof ba);
+    }
+}
+
+/* Insets and then an automatic legend that find no corner or side free
+** of ink (the elements', then the insets' too) get a band of their own
+** at the right or at the bottom of the drawing. */
+static cf_status_t
+make_bands(cf_figure_t *fig, const double win[4], bool keep,
+           double avail[4], cf__layout_t *lay)
+{
+    int pass;
+    if (fig->ninsets == 0 && fig->nlegend == 0)
+        return CF_STATUS_OK;
+    for (pass = 0; pass < 2; pass++) {
+        cf__dl_t dl;
+        double w = 0, h = 0;
+        bool covered = false;
+        cf_status_t st;
+        cf__dl_init(&dl);
+        st = build_elements(fig, lay, &dl);
+        if (st == CF_STATUS_OK && pass == 0)
+            st = cf__insets_fit(fig, lay, &dl, &w, &h, &covered);
+        if (st == CF_STATUS_OK && pass == 1)
+            st = cf__insets_draw(fig, lay, &dl);
+        if (st == CF_STATUS_OK && pass == 1)
+            st = cf__legend_fits(fig, lay, &dl, &w, &h, &covered);
+        cf__dl_free(&dl);
+        if (st != CF_STATUS_OK)
+            return st;
+        if (covered)
+            take_band(fig, win, keep, avail, w, h, lay);
+    }
     return CF_STATUS_OK;
 }
 
@@ -71,6 +203,7 @@ cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
     size_t i;
 
     memset(&b, 0, sizeof b);
+    lay->px = lay->py = 0;
     for (i = 0; i < fig->count; i++)
         fig->els[i]->kind->bounds(fig->els[i], &b);
     lay->clip = fig->window_set;
@@ -149,7 +282,7 @@ cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
         avail[3] = fig->height - m - ob;
     }
     compute_map(fig, win, keep, avail, lay);
-    return CF_STATUS_OK;
+    return make_bands(fig, win, keep, avail, lay);
 }
 
 cf_status_t

@@ -32,6 +32,8 @@ typedef struct cf__layout {
     double tol;                      /* fitting tolerance, data units */
     bool clip;                       /* explicit window: lines clipped to
                                         it, points outside it left out */
+    double px, py;                   /* page position of the figure's top
+                                        left (a panel's cell, a crop) */
 } cf__layout_t;
 
 static inline void
@@ -142,6 +144,12 @@ struct cf__element {
     cf_style_t style;             /* overrides */
 };
 
+/* A legend entry: element el and its text. */
+typedef struct cf__legend_entry {
+    size_t el;
+    cf__text_t text;
+} cf__legend_entry_t;
+
 struct cf_figure {
     cf_diag_t err;           /* the first error (sticky) */
     double width, height;    /* bp */
@@ -159,6 +167,21 @@ struct cf_figure {
     size_t count, cap;
     char *warnings;          /* of the last layout, a line each; NULL: none */
     size_t warnings_len;
+    /* legend (render/legend.c) */
+    cf__legend_entry_t *legend;
+    size_t nlegend;
+    cf_place_t legend_place;      /* CENTER (never set): automatic */
+    bool legend_noframe;
+    /* insets (render/inset.c) */
+    cf_inset_t *insets;
+    size_t ninsets;
+    /* panels (render/panel.c): rows x cols figures, or a panel's parent */
+    cf_figure_t **panels;
+    int rows, cols;
+    unsigned panel_flags;
+    double panel_gap;
+    cf_figure_t *parent;
+    cf__text_t panel_title;
 };
 
 /* ---- figure.c: the figure's helpers for the element kinds -------------- */
@@ -254,6 +277,43 @@ cf_status_t cf__figure_build(cf_figure_t *fig, const cf__layout_t *lay,
 cf_status_t cf__figure_check_page(const cf_figure_t *fig, const cf__dl_t *dl,
                                   double w, double h, bool fixed,
                                   cf_diag_t *diag);
+
+/* ---- legend.c inset.c panel.c room.c ----------------------------------- */
+
+/* The legend of the figure's entries, from the samples of the element
+** groups drawn at ops [from, dl->count). */
+cf_status_t cf__legend_draw(cf_figure_t *fig, const cf__layout_t *lay,
+                            size_t from, cf__dl_t *dl);
+/* The largest size of the insets placed automatically, and whether one
+** of them finds no place free of the ink of dl (the elements drawn with
+** lay). */
+cf_status_t cf__insets_fit(cf_figure_t *fig, const cf__layout_t *lay,
+                           const cf__dl_t *dl, double *w, double *h,
+                           bool *covered);
+/* Every inset: the elements drawn again in its box, frames, connectors. */
+cf_status_t cf__insets_draw(cf_figure_t *fig, const cf__layout_t *lay,
+                            cf__dl_t *dl);
+/* Cell k of a figure split into panels: x y w h, page bp. */
+void cf__panel_cell(const cf_figure_t *fig, int k, double cell[4]);
+/* Make the panels' layouts agree on the shared axes (lays[rows * cols]). */
+void cf__panels_share(const cf_figure_t *fig, cf__layout_t *lays);
+/* The title of panel k (laid out at the label font size) into dl. */
+cf_status_t cf__panel_title_draw(cf_figure_t *fig, int k,
+                                 const cf__layout_t *lay, cf__dl_t *dl);
+/* Where a w x h box goes on the page of a figure laid out with lay, of
+** the ink in ops [0, dl->count): at place (AUTO: the first of ne nw se sw
+** n s e w covering no ink, else the least), gap bp inside the page edge;
+** its top left into at[2], the raster pixels of ink it covers into
+** *covered (may be NULL). */
+cf_status_t cf__room_find(cf_figure_t *fig, const cf__layout_t *lay,
+                          const cf__dl_t *dl, double w, double h,
+                          cf_place_t place, double gap, double at[2],
+                          size_t *covered);
+/* The size of the legend, and whether an automatic one finds no place
+** free of the ink of dl (the elements drawn with lay). */
+cf_status_t cf__legend_fits(cf_figure_t *fig, const cf__layout_t *lay,
+                            const cf__dl_t *dl, double *w, double *h,
+                            bool *covered);
 
 /* ---- place.c ------------------------------------------------------------ */
 

@@ -83,6 +83,8 @@ make_job(cf_figure_t *fig, const cf_write_options_t *o, bool need_ink,
             job->page.height = h + 2 * o->padding;
             job->lay.ox += o->padding - ink[0];
             job->lay.oy += o->padding - ink[1];
+            job->lay.px += o->padding - ink[0];
+            job->lay.py += o->padding - ink[1];
             cf__dl_reset(&job->dl);
         } else {
             return CF_STATUS_OK;

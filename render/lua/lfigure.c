@@ -11,6 +11,7 @@
 #include "lcommon.h"
 #include "ldraw.h"
 #include "lfigure.h"
+#include "llayout.h"
 #include "lschema.h"
 #include "lstyle.h"
 
@@ -23,7 +24,8 @@ static int
 gc(lua_State *L)
 {
     cf__lua_fbox_t *b = luaL_checkudata(L, 1, CF__LUA_FIGURE);
-    cf_figure_destroy(b->fig);
+    if (!b->borrowed)
+        cf_figure_destroy(b->fig);
     b->fig = NULL;
     return 0;
 }
@@ -169,6 +171,7 @@ new_figure(lua_State *L, int name, int caption, double w, double h)
     cf__lua_fbox_t *b = lua_newuserdatauv(L, sizeof *b, 3);
     cf_diag_t diag;
     b->fig = NULL;
+    b->borrowed = false;
     luaL_setmetatable(L, CF__LUA_FIGURE);
     lua_pushvalue(L, name);
     lua_setiuservalue(L, -2, 1);
@@ -241,6 +244,7 @@ l_figure(lua_State *L)
     read_theme(L, fig);
     read_frame(L, fig, w, h);
     read_projection(L, fig);
+    cf__lua_read_figure_legend(L, fig);
     lua_settop(L, 7);
     keep_figure(L, 7);
     return 1;
@@ -302,8 +306,9 @@ cf__lua_open_figure(lua_State *L)
     cf__lua_new_class(L, CF__LUA_FIGURE, frame_methods, gc, tostring);
     luaL_getmetatable(L, CF__LUA_FIGURE);
     lua_getfield(L, -1, "__index");
-    luaL_setfuncs(L, cf__lua_draw_methods, 0);
-    luaL_setfuncs(L, cf__lua_plot_methods, 0);
+    cf__lua_set_legend_methods(L, cf__lua_draw_methods);
+    cf__lua_set_legend_methods(L, cf__lua_plot_methods);
+    luaL_setfuncs(L, cf__lua_layout_methods, 0);
     lua_pop(L, 2);
     lua_pushcfunction(L, l_figure);
     lua_setglobal(L, "figure");

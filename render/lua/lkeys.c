@@ -21,6 +21,11 @@ static const char *const markers[] = {
 static const char *const dashes[] = {
     "solid", "dashed", "dotted", "dashdot", NULL,
 };
+/* the places of a legend or an inset: a corner, a side, or auto */
+static const char *const box_places[] = {
+    "auto", "n", "ne", "e", "se", "s", "sw", "w", "nw", "above", "below",
+    "left", "right", NULL,
+};
 static const char *const themes[] = { "default", "mono", NULL };
 static const char *const kinds[] = { "clamped", "closed", "uniform", NULL };
 static const char *const ends[] = { "plain", "tripled", "closed", NULL };
@@ -49,7 +54,7 @@ static const cf__lua_key_t line_style[] = {
     KEY("color"), KEY("fill"), KEY("width"),
     { "dash", dashes, CF__KEYS_NONE, "{on, off, ...} in bp" },
     KEY("opacity"), NAMES("marker", markers), KEY("marker_size"),
-    KEY("marker_color"), KEY("arrow_size"), END,
+    KEY("marker_color"), KEY("arrow_size"), KEY("legend"), END,
 };
 /* the style of text */
 static const cf__lua_key_t text_style[] = {
@@ -61,7 +66,7 @@ static const cf__lua_key_t any_style[] = {
     KEY("color"), KEY("fill"), KEY("width"), KEY("dash"), KEY("opacity"),
     KEY("marker"), KEY("marker_size"), KEY("marker_color"),
     KEY("arrow_size"), KEY("font_size"), KEY("place"), KEY("anchor"),
-    KEY("offset"), END,
+    KEY("offset"), KEY("legend"), END,
 };
 /* the labels of the points a method draws (labels.c of the binding) */
 static const cf__lua_key_t point_labels[] = {
@@ -77,7 +82,20 @@ static const cf__lua_key_t arrow_label[] = {
 static const cf__lua_key_t figure_keys[] = {
     KEY("name"), KEY("caption"), KEY("title"), KEY("width"), KEY("height"),
     KEY("window"), KEY("margin"), KEY("aspect"), NAMES("theme", themes),
-    KEY("tolerance"), KEY("projection"), KEY("view"), END,
+    KEY("tolerance"), KEY("projection"), KEY("view"),
+    NAMES("legend_place", box_places), KEY("legend_frame"), END,
+};
+static const cf__lua_key_t legend_keys[] = {
+    NAMES("place", box_places), KEY("frame"), END,
+};
+static const cf__lua_key_t inset_keys[] = {
+    KEY("region"),
+    { "at", box_places, CF__KEYS_NONE, "{x, y, w, h} in page units" },
+    KEY("scale"), KEY("size"), END,
+};
+static const cf__lua_key_t panels_keys[] = {
+    KEY("rows"), KEY("cols"), KEY("gap"), KEY("share_x"), KEY("share_y"),
+    KEY("titles"), END,
 };
 static const cf__lua_key_t bezier_keys[] = {
     KEY("points"), KEY("weights"), END,
@@ -200,6 +218,12 @@ static const cf__lua_schema_t schemas[CF__KEYS_COUNT_] = {
                                     "label_style = %s })"),
     [CF__KEYS_POINT_STYLE] = METHOD("point", line_style, NULL, NULL,
                                     "f:decasteljau(c, 0.5, { point = %s })"),
+    [CF__KEYS_LEGEND] = METHOD("legend", legend_keys, NULL, NULL,
+                               "f:legend(%s)"),
+    [CF__KEYS_INSET] = METHOD("inset", inset_keys, NULL, NULL,
+                              "f:curve(c); f:inset(%s)"),
+    [CF__KEYS_PANELS] = METHOD("panels", panels_keys, NULL, NULL,
+                               "f:panels(%s)"),
 };
 
 const char cf__lua_schema_prelude[] =

@@ -43,6 +43,9 @@ typedef enum cf__lua_keys {
     CF__KEYS_BERNSTEIN,
     CF__KEYS_LABEL_STYLE,   /* nested: label_style = { ... } */
     CF__KEYS_POINT_STYLE,   /* nested: point = { ... } of the nets */
+    CF__KEYS_LEGEND,
+    CF__KEYS_INSET,
+    CF__KEYS_PANELS,
     CF__KEYS_COUNT_
 } cf__lua_keys_t;
 

@@ -17,6 +17,7 @@
 /* The userdata of a figure value. */
 typedef struct cf__lua_fbox {
     cf_figure_t *fig;
+    bool borrowed;   /* a panel: its figure belongs to its parent's */
 } cf__lua_fbox_t;
 
 /* The figure a method is called on (argument 1); the hint to write

@@ -77,7 +77,7 @@ static const cf__lua_key_t arrow_label[] = {
 static const cf__lua_key_t figure_keys[] = {
     KEY("name"), KEY("caption"), KEY("title"), KEY("width"), KEY("height"),
     KEY("window"), KEY("margin"), KEY("aspect"), NAMES("theme", themes),
-    KEY("tolerance"), KEY("projection"), KEY("view"), END,
+    KEY("tolerance"), KEY("projection"), KEY("view"), KEY("clip"), END,
 };
 static const cf__lua_key_t bezier_keys[] = {
     KEY("points"), KEY("weights"), END,

@@ -220,7 +220,8 @@ test_clip(void **state)
     char *svg;
     (void)state;
     svg = svg_of("local f = figure{ name = 'c', width = '1cm', height = "
-                 "'1cm', margin = '1mm', window = {0, 1, 0, 1}, clip = true }\n"
+                 "'1cm', margin = '1mm', window = {0, 1, 0, 1},\n"
+                 "  clip = true }\n"
                  "f:label({0.9, 0.5}, 'P_0 = start')\n");
     assert_non_null(strstr(svg, "<svg"));
     free(svg);

@@ -14,7 +14,6 @@
 #include "lcommon.h"
 #include "ldraw.h"
 #include "llabels.h"
-#include "lmarks.h"
 #include "lschema.h"
 #include "lstyle.h"
 
@@ -260,14 +259,49 @@ static int
 m_tangent(lua_State *L)
 {
     cf_figure_t *fig = cf__lua_check_figure(L);
-    double t, pd[4];
+    cf_bezier_t *bz;
+    double t, scale, tip[2];
+    bool given;
+    cf_style_t st;
     lua_settop(L, 4);
     t = cf__lua_check_finite(L, 3, "tangent", "t");
     cf__lua_check_table(L, 4, CF__KEYS_TANGENT);
-    cf__lua_tangent_arrow(L, fig, 2, t, 4, pd);
-    draw_arrow(L, fig, 4, pd, "tangent");
+    cf__lua_read_style(L, 4, "tangent", fig, &st);
+    scale = cf__lua_opt_number(L, 4, "scale", "tangent", 0.0, &given);
+    if (given && !(scale > 0.0))
+        return cf__lua_error(L, "tangent: scale = %g; it must be > 0", scale);
+    bz = cf__lua_to_bezier(L, 2);
+    if (bz != NULL)
+        check(L, "tangent", cf_figure_add_bezier_tangent(fig, bz, t, scale,
+                                                         &st, tip), NULL);
+    else
+        check(L, "tangent", cf_figure_add_bspline_tangent(
+                                fig, cf__lua_check_bspline(L, 2), t, scale,
+                                &st, tip), NULL);
+    cf__lua_label_items(L, fig, 4, "label", tip, 1, NULL, 0, "tangent");
     lua_settop(L, 1);
     return 1;
+}
+
+/* The distinct knots of s in its domain at their points (*pts, 2D) with
+** the label integers (index of the first copy, multiplicity) in *args;
+** buffers pushed on the stack.  Returns how many. */
+static size_t
+knot_marks(lua_State *L, cf_figure_t *fig, const cf_bspline_t *s,
+           double **pts, lua_Integer **args)
+{
+    size_t m = cf_bspline_nknots(s), n = 0;
+    size_t *first = lua_newuserdatauv(L, 2 * (m ? m : 1) * sizeof *first, 0);
+    size_t *mult = first + (m ? m : 1);
+    *pts = cf__lua_buffer(L, 2 * m);
+    check(L, "knots", cf_figure_bspline_knots(fig, s, NULL, first, mult,
+                                              *pts, &n), NULL);
+    *args = lua_newuserdatauv(L, 2 * (n ? n : 1) * sizeof **args, 0);
+    for (size_t k = 0; k < n; k++) {
+        (*args)[2 * k] = (lua_Integer)first[k];
+        (*args)[2 * k + 1] = (lua_Integer)mult[k];
+    }
+    return n;
 }
 
 /* f:knots(s, {labels = "u_%d", ...}): marks at C(u_i) for the distinct
@@ -289,7 +323,7 @@ m_knots(lua_State *L)
     cf__lua_read_style(L, 3, "knots", fig, &st);
     cf_diag_clear(&diag);
     check(L, "knots", cf_figure_add_bspline_knots(fig, s, &st), &diag);
-    n = cf__lua_knot_marks(L, fig, s, &pts, &args);
+    n = knot_marks(L, fig, s, &pts, &args);
     cf__lua_label_items(L, fig, 3, "labels", pts, n, args, 2, "knots");
     lua_settop(L, 1);
     return 1;

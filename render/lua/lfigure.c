@@ -133,7 +133,7 @@ read_theme(lua_State *L, cf_figure_t *fig)
     lua_pop(L, 1);
 }
 
-/* window, margin, aspect, tolerance; w and h the page in bp */
+/* window, margin, aspect, tolerance, clip; w and h the page in bp */
 static void
 read_frame(lua_State *L, cf_figure_t *fig, double w, double h)
 {
@@ -157,6 +157,9 @@ read_frame(lua_State *L, cf_figure_t *fig, double w, double h)
                       "give a unit: width = \"8cm\")", w, h, margin);
     aspect = cf__lua_opt_bool(L, 1, "aspect", "figure", true);
     check(L, "figure", cf_figure_set_fit(fig, margin, aspect), NULL);
+    check(L, "figure", cf_figure_set_clip(fig, cf__lua_opt_bool(L, 1, "clip",
+                                                                "figure",
+                                                                false)), NULL);
     tol = cf__lua_opt_number(L, 1, "tolerance", "figure", 0.01, &given);
     if (given)
         check(L, "figure", cf_figure_set_tolerance(fig, tol), NULL);

@@ -82,7 +82,7 @@ static const cf__lua_key_t arrow_label[] = {
 static const cf__lua_key_t figure_keys[] = {
     KEY("name"), KEY("caption"), KEY("title"), KEY("width"), KEY("height"),
     KEY("window"), KEY("margin"), KEY("aspect"), NAMES("theme", themes),
-    KEY("tolerance"), KEY("projection"), KEY("view"),
+    KEY("tolerance"), KEY("projection"), KEY("view"), KEY("clip"),
     NAMES("legend_place", box_places), KEY("legend_frame"), END,
 };
 static const cf__lua_key_t legend_keys[] = {

@@ -3,9 +3,9 @@
 ** script passes by name.
 **
 ** Each function that takes a table of named entries has a schema
-** (lkeys.h, the lists in lkeys.c): its keys, for an enumerated value the names it may
-** take, for a nested table (label_style, point, ...) the schema of that
-** table.  cf__lua_check_table refuses, before the function reads anything:
+** (lkeys.h, the lists in lkeys.c): its keys, for an enumerated value the
+** names it may take, for a nested table (label_style, point, ...) the
+** schema of that table.  cf__lua_check_table refuses, before the function reads anything:
 **
 **   an unknown key        bspline: unknown field 'knot' (did you mean
 **                         'knots'?)

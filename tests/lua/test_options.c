@@ -212,6 +212,21 @@ test_subscript_grouped(void **state)
                 "labels = function(i) return i .. '%' end");
 }
 
+/* clip = true cuts off what a fixed page cannot hold, where without it
+** the figure is refused (the bad-input case page-ink-outside). */
+static void
+test_clip(void **state)
+{
+    char *svg;
+    (void)state;
+    svg = svg_of("local f = figure{ name = 'c', width = '1cm', height = "
+                 "'1cm', margin = '1mm', window = {0, 1, 0, 1},\n"
+                 "  clip = true }\n"
+                 "f:label({0.9, 0.5}, 'P_0 = start')\n");
+    assert_non_null(strstr(svg, "<svg"));
+    free(svg);
+}
+
 int
 main(void)
 {
@@ -222,6 +237,7 @@ main(void)
         cmocka_unit_test(test_arrow_label_style),
         cmocka_unit_test(test_knot_multiplicity),
         cmocka_unit_test(test_subscript_grouped),
+        cmocka_unit_test(test_clip),
     };
     int rc;
     sink = fopen("/dev/null", "w");

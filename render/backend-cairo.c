@@ -53,10 +53,11 @@ begin_page(void *ctx, const cf__page_t *pg)
 }
 
 static void
-begin_group(void *ctx, const char *name, size_t index)
+begin_group(void *ctx, const char *name, size_t index, const char *overlay)
 {
     (void)name;
     (void)index;
+    (void)overlay;
     cairo_save(ctx);
 }
 

@@ -4,7 +4,7 @@
 ** run and machine (no addresses, no clock), so tests compare dumps.
 **
 **   page W H background R G B A
-**   group INDEX KIND ... end
+**   group INDEX KIND [overlay SPEC] ... end
 **   clip X Y W H | clip none ... unclip
 **   path fill R G B A OPACITY | stroke R G B A OPACITY WIDTH CAP JOIN
 **        dash N D1 .. : M x y L x y C x1 y1 x2 y2 x3 y3 R x y w h
@@ -72,9 +72,12 @@ begin_page(void *ctx, const cf__page_t *pg)
 }
 
 static void
-begin_group(void *ctx, const char *name, size_t index)
+begin_group(void *ctx, const char *name, size_t index, const char *overlay)
 {
-    put(ctx, "group %zu %s\n", index, name);
+    if (overlay != NULL)
+        put(ctx, "group %zu %s overlay %s\n", index, name, overlay);
+    else
+        put(ctx, "group %zu %s\n", index, name);
 }
 
 static void

@@ -70,6 +70,7 @@ cf__dl_group(cf__dl_t *dl, const char *name, size_t index)
     if (op != NULL) {
         op->u.group.name = name;
         op->u.group.index = index;
+        op->u.group.overlay = NULL;
     }
 }
 

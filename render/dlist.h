@@ -107,7 +107,12 @@ typedef enum cf__op_kind {
 typedef struct cf__op {
     cf__op_kind_t kind;
     union {
-        struct { const char *name; size_t index; } group;
+        struct {
+            const char *name;
+            size_t index;
+            const char *overlay;   /* beamer overlay specification ("2-"),
+                                      NULL: visible on every step */
+        } group;
         struct { bool has_rect; double rect[4]; } clip;   /* x y w h */
         struct { size_t seg0, nsegs, coord0; cf__paint_t paint; } path;
         cf__marker_op_t marker;

@@ -132,6 +132,8 @@ struct cf__element {
     const cf__kind_t *kind;
     cf_role_t role;
     cf_style_t style;             /* overrides */
+    char *overlay;                /* the steps it is shown on (a beamer
+                                     overlay specification), NULL: all */
 };
 
 struct cf_figure {
@@ -149,6 +151,9 @@ struct cf_figure {
     double *proj;            /* 2 x proj_dim */
     cf__element_t **els;
     size_t count, cap;
+    unsigned steps;          /* largest step named by an overlay, 0: none */
+    char *overlay;           /* given to the elements added next, or NULL */
+    unsigned overlay_last;   /* the largest step it names */
 };
 
 /* ---- figure.c: the figure's helpers for the element kinds -------------- */

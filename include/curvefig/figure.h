@@ -39,6 +39,7 @@
 #include "curvefig/export.h"
 #include "curvefig/label.h"
 #include "curvefig/output.h"
+#include "curvefig/overlay.h"
 #include "curvefig/style.h"
 
 #ifdef __cplusplus

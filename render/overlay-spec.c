@@ -49,6 +49,10 @@ one_range(const char **p, range_t *r, char *why, size_t cap)
     bool open_lo = false;
     r->lo = 1;
     r->hi = 0;
+    if (*s == '+' || *s == '.')
+        return fail(why, cap, "\"%.12s\": incremental specifications "
+                    "(\"+-\", \".-\") are not supported; give the step "
+                    "numbers", s, 0, 0);
     if (*s == '-') {
         open_lo = true;
         s++;
@@ -72,10 +76,7 @@ one_range(const char **p, range_t *r, char *why, size_t cap)
         r->hi = r->lo;
     }
     if (*s != '\0' && *s != ',')
-        return fail(why, cap, *s == '+' || *s == '.'
-                        ? "\"%.12s\": incremental specifications (\"+-\", "
-                          "\".-\") are not supported; give the step numbers"
-                        : "unexpected \"%.12s\"", s, 0, 0);
+        return fail(why, cap, "unexpected \"%.12s\"", s, 0, 0);
     if (r->lo == 0 || (open_lo && r->hi == 0))
         return fail(why, cap, "step 0: steps count from 1%s", "", 0, 0);
     if (r->lo > CF__OVERLAY_MAX_STEP || r->hi > CF__OVERLAY_MAX_STEP)

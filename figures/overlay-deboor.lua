@@ -11,7 +11,8 @@
 --   step 2  column 1: P_{3,1} P_{4,1} P_{5,1} (blue);
 --   step 3  column 2: P_{4,2} P_{5,2} (orange);
 --   step 4  column 3: P_{5,3} = C(u) (red star).
--- Colours those of markova-3.6; window and size those of markova-3.5.
+-- Colours, window and size those of markova-3.6 (the close-up of the
+-- region of P_2..P_5; the polygon and the curve are clipped to it).
 
 local P = { {3,1}, {3.75,2}, {5,3}, {4,4}, {3,3}, {2,4}, {1,3}, {2.25,2} }
 local U = { 0, 0, 0, 0, 0.25, 0.4, 0.7, 0.85, 1, 1, 1, 1 }
@@ -27,12 +28,12 @@ local f = figure{
   caption = "De Boor's algorithm at u = 0.5 (p = 3), column by column in " ..
             "four overlay steps: P_2 ... P_5, then P_{i,1} (blue), " ..
             "P_{i,2} (orange) and P_{5,3} = C(u) (red)",
-  width = "12cm", height = "9.35cm", window = { 0.6, 5.4, 0.7, 4.45 },
+  width = "16cm", height = "7.35cm", window = { 1.85, 5.15, 2.85, 4.25 },
 }
 f:polygon(s, { color = "grey", marker_color = "grey" })
 f:curve(s, { color = "#9fb0d0", width = 1.2 })
 f:polyline(L[1], { color = "black", width = 1.0 })
-for i = 0, 7 do
+for i = 2, 5 do
   f:label(P[i + 1], string.format("P_%d", i), { place = place[i + 1] })
 end
 local lplace = {

@@ -2,6 +2,7 @@
 ** Overlay specifications (render/overlay-spec.h): parsing, checking and
 ** asking whether a step is shown.
 */
+#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -29,14 +30,13 @@ number(const char **p, unsigned *out)
 }
 
 static int
-fail(char *why, size_t cap, const char *fmt, const char *near, unsigned a,
-     unsigned b)
+fail(char *why, size_t cap, const char *fmt, ...)
 {
+    va_list ap;
     if (why != NULL && cap > 0) {
-        if (near != NULL)
-            snprintf(why, cap, fmt, near);
-        else
-            snprintf(why, cap, fmt, a, b);
+        va_start(ap, fmt);
+        vsnprintf(why, cap, fmt, ap);
+        va_end(ap);
     }
     return -1;
 }
@@ -52,20 +52,19 @@ one_range(const char **p, range_t *r, char *why, size_t cap)
     if (*s == '+' || *s == '.')
         return fail(why, cap, "\"%.12s\": incremental specifications "
                     "(\"+-\", \".-\") are not supported; give the step "
-                    "numbers", s, 0, 0);
+                    "numbers", s);
     if (*s == '-') {
         open_lo = true;
         s++;
     } else if (number(&s, &r->lo) != 0) {
-        return fail(why, cap, *s == '\0' || *s == ','
-                        ? "an empty range%s"
-                        : "\"%.12s\" is not a step number",
-                    *s == '\0' || *s == ',' ? "" : s, 0, 0);
+        return *s == '\0' || *s == ','
+            ? fail(why, cap, "an empty range")
+            : fail(why, cap, "\"%.12s\" is not a step number", s);
     }
     if (open_lo) {
         if (number(&s, &r->hi) != 0)
             return fail(why, cap, "\"-\" needs a step after it (\"-3\": "
-                        "steps 1 to 3)%s", "", 0, 0);
+                        "steps 1 to 3)");
     } else if (*s == '-') {
         s++;
         if (*s >= '0' && *s <= '9')
@@ -76,14 +75,13 @@ one_range(const char **p, range_t *r, char *why, size_t cap)
         r->hi = r->lo;
     }
     if (*s != '\0' && *s != ',')
-        return fail(why, cap, "unexpected \"%.12s\"", s, 0, 0);
+        return fail(why, cap, "unexpected \"%.12s\"", s);
     if (r->lo == 0 || (open_lo && r->hi == 0))
-        return fail(why, cap, "step 0: steps count from 1%s", "", 0, 0);
+        return fail(why, cap, "step 0: steps count from 1");
     if (r->lo > CF__OVERLAY_MAX_STEP || r->hi > CF__OVERLAY_MAX_STEP)
-        return fail(why, cap, "steps go up to %u", NULL,
-                    CF__OVERLAY_MAX_STEP, 0);
+        return fail(why, cap, "steps go up to %u", CF__OVERLAY_MAX_STEP);
     if (r->hi != 0 && r->hi < r->lo)
-        return fail(why, cap, "the range %u-%u runs backwards", NULL, r->lo,
+        return fail(why, cap, "the range %u-%u runs backwards", r->lo,
                     r->hi);
     *p = s;
     return 0;
@@ -96,7 +94,7 @@ cf__overlay_parse(const char *spec, unsigned *last, char *why, size_t cap)
     unsigned top = 0;
     if (spec == NULL || *spec == '\0')
         return fail(why, cap, "the specification is empty; give steps, "
-                    "e.g. \"2-\"%s", "", 0, 0);
+                    "e.g. \"2-\"");
     for (;;) {
         range_t r;
         if (one_range(&p, &r, why, cap) != 0)

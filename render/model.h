@@ -8,9 +8,12 @@
 **   output.c                  the public render and write functions
 **   layout.c place.c          window, map to the page, label places, ink
 **   plots.c axes.c el-*.c     element kinds: record, bounds, display list
-**   text.c figure.c           labels of elements; the figure, its setters
+**   text.c figure.c overlay.c labels of elements; the figure, its setters,
+**                             its overlay steps
+**   svg-steps.c               the animated SVG of overlay steps
 **   formats.c backend-*.c     output formats and their fix-ups; devices
 **   backend.c png.c           a display list to a backend; PNG encoding
+**   overlay-spec.c            beamer's overlay specifications
 **   label*.c dlist.c style.c  labels; the display list; styles
 */
 #ifndef CURVEFIG_RENDER_MODEL_H

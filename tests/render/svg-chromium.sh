@@ -2,7 +2,9 @@
 # The animated SVG of an overlay figure plays in Chromium: a headless
 # screenshot in the middle of each step matches that step's PNG (the
 # tool's comparator, anti-aliasing forgiven) and not the next step's.
-# Skipped (77) without chromium.
+# The SVG sits inline in a page whose script pauses its SMIL timeline at
+# the time of the screenshot (setCurrentTime), so that a loaded machine
+# does not shift the time.  Skipped (77) without chromium.
 # usage: svg-chromium.sh CURVEFIG SCRIPT.lua NAME STEPS
 set -u
 tool=$1 script=$2 name=$3 steps=$4
@@ -19,11 +21,18 @@ fail=0
 k=1
 while [ "$k" -le "$steps" ]; do
   ms=$(( (k - 1) * 1500 + 750 ))   # the middle of step k (1.5 s a step)
+  { printf '<!DOCTYPE html><html><head><style>body { margin: 0 }</style>'
+    printf '</head><body>\n'
+    sed 1d "$out/$name.svg"   # without the XML declaration
+    printf '<script>var s = document.querySelector("svg");\n'
+    printf 's.pauseAnimations(); s.setCurrentTime(%d.%03d);</script>\n' \
+      $((ms / 1000)) $((ms % 1000))
+    printf '</body></html>\n'; } > "$out/step-$k.html"
   timeout 120 "$browser" --headless --no-sandbox --disable-gpu \
     --disable-background-networking --no-first-run --hide-scrollbars \
     --user-data-dir="$out/profile-$k" --window-size="$size" \
-    --virtual-time-budget="$ms" --screenshot="$out/shot-$k.png" \
-    "file://$out/$name.svg" >/dev/null 2>&1
+    --virtual-time-budget=200 --screenshot="$out/shot-$k.png" \
+    "file://$out/step-$k.html" >/dev/null 2>&1
   if [ ! -s "$out/shot-$k.png" ]; then
     echo "FAIL step $k: no screenshot"; fail=1
   elif ! "$tool" compare "$out/shot-$k.png" "$out/$name-$k.png" \

@@ -124,7 +124,7 @@ static const cf__lua_key_t plot_keys[] = {
     KEY("font_size"), END,
 };
 
-/* the steps an element is shown on (render/lua/loverlay.c) */
+/* the steps an element is shown on (read with the style, lstyle.c) */
 static const cf__lua_key_t overlay_keys[] = { KEY("visible"), END };
 
 /* ---- the schemas -------------------------------------------------------- */

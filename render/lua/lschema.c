@@ -222,11 +222,7 @@ check_at(lua_State *L, int idx, cf__lua_keys_t id, const char *where)
 void
 cf__lua_check_table(lua_State *L, int idx, cf__lua_keys_t k)
 {
-    const cf__lua_schema_t *s = cf__lua_schema_at(k);
-    idx = lua_absindex(L, idx);
-    check_at(L, idx, k, s->fn);
-    if (s->keys[CF__LUA_KEY_LISTS - 1] != NULL)
-        cf__lua_read_overlay(L, idx, s->fn);
+    check_at(L, idx, k, cf__lua_schema_at(k)->fn);
 }
 
 /* ---- missing names ------------------------------------------------------ */

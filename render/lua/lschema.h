@@ -35,11 +35,6 @@
 ** check); raises the error described above. */
 void cf__lua_check_table(lua_State *L, int idx, cf__lua_keys_t k);
 
-/* The visible = "2-" option of a drawing method's options at idx (nil:
-** none) set as the overlay of figure argument 1 for what it adds next
-** (loverlay.c); raises an error for a bad specification. */
-void cf__lua_read_overlay(lua_State *L, int idx, const char *fn);
-
 /* Damerau-Levenshtein distance (adjacent transpositions count one),
 ** capped at 100. */
 int cf__lua_distance(const char *a, const char *b);

@@ -52,18 +52,18 @@ f:decasteljau(c, t, { colors = { "grey", blue, orange, "black" },
                       point = { marker = "star", marker_size = 10, color = "black",
                                 marker_color = "black" } })
 local place = {
-  [0] = { "s", "nw", "ne", "e" },
-  [1] = { "w", "n", "e" },
-  [2] = { "nw", "ne" },
-  [3] = { "s" },
+  [0] = { "s", "nw", "ne", "auto" },
+  [1] = { "w", "n", "auto" },
+  [2] = { "auto", "ne" },
+  [3] = { "auto" },
 }
 for r = 0, n do
   for i = 0, n - r do
     local text
     if r == 0 then text = string.format("b_%d", i)
-    elseif r == n then text = "x(t) = b_0^3"
+    elseif r == n then text = "x(0.4) = b_0^3"
     else text = string.format("b_%d^%d", i, r) end
     f:label(L[r + 1][i + 1], text, { place = place[r][i + 1],
-                                     offset = r == n and 9 or nil })
+                                     offset = r == n and 6 or nil })
   end
 end

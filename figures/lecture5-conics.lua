@@ -49,20 +49,20 @@ local function panel(title, whole, arc, dx, dy, places, title_at)
 end
 
 -- circle
-panel("circle arc", conic.circle(0, 0, 2), conic.arc(0, 0, 2, pi / 4, 3 * pi / 4),
+panel("дуга окружности", conic.circle(0, 0, 2), conic.arc(0, 0, 2, pi / 4, 3 * pi / 4),
       0, 0, { "e", "n", "w" }, { 0, -2.9 })
 -- ellipse
-panel("ellipse arc", conic.ellipse(0, 0, 3, 1.5, 0, 0, 2 * pi),
+panel("дуга эллипса", conic.ellipse(0, 0, 3, 1.5, 0, 0, 2 * pi),
       conic.ellipse(0, 0, 3, 1.5, 0, -pi / 4, pi / 4),
       8.5, 0.3, { "s", "e", "n" }, { 0, -2.6 })
 -- parabola
-panel("parabola", conic.parabola(0, 0, 0.5, pi / 2, -2.6, 2.6),
+panel("парабола", conic.parabola(0, 0, 0.5, pi / 2, -2.6, 2.6),
       conic.parabola(0, 0, 0.5, pi / 2, -2, 2),
       0, -7.6, { "w", "e", "e" }, { 0, -3.0 })
 -- hyperbola, with its asymptotes
 local hx, hy = 6.6, -7.6
 f:line({ hx - 0.6, hy - 0.6 }, { hx + 3.4, hy + 3.4 }, { color = "grey", dash = "dotted", width = 0.6 })
 f:line({ hx - 0.6, hy + 0.6 }, { hx + 3.4, hy - 3.4 }, { color = "grey", dash = "dotted", width = 0.6 })
-panel("hyperbola", conic.hyperbola(0, 0, 1.4, 1.4, 0, -1.5, 1.5),
+panel("гипербола", conic.hyperbola(0, 0, 1.4, 1.4, 0, -1.5, 1.5),
       conic.hyperbola(0, 0, 1.4, 1.4, 0, -1, 1),
       hx, hy, { "e", "s", "e" }, { 1.9, -3.6 })

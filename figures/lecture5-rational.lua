@@ -27,7 +27,7 @@ local settings = {
   { name = "(c)  ω_2 = ω_3 = 3", w = { 1, 1, 3, 3, 1, 1, 1, 1 } },
   { name = "(d)  ω_1 = ω_6 = 8", w = { 1, 8, 1, 1, 1, 1, 8, 1 } },
 }
-local place = { "w", "n", "w", "s", "w", "ne", "s", "e" }
+local place = { "w", "n", "w", "s", "w", "auto", "auto", "e" }
 
 local f = figure{
   name = "lecture5-rational",
@@ -59,6 +59,8 @@ for k, s in ipairs(settings) do
   f:polygon(plain)
   f:curve(rat, { color = red, width = 2 })
   f:curve(plain, { color = blue, dash = "dashed", width = 1.4 })
+  -- the control points again, over the curves (p_6 lies under them)
+  f:points(Q, { color = "#3c3c3c", marker_color = "#3c3c3c" })
   for i, q in ipairs(Q) do
     f:label(q, string.format("p_%d", i - 1),
             { place = place[i], font_size = 9,

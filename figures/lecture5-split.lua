@@ -40,7 +40,7 @@ local text = {
   [0] = { "p_0 = p_0^a", "p_1", "p_2", "p_3 = p_3^b" },
   [1] = { "p_0^{(1)} = p_1^a", "p_1^{(1)}", "p_2^{(1)} = p_2^b" },
   [2] = { "p_0^{(2)} = p_2^a", "p_1^{(2)} = p_1^b" },
-  [3] = { "r(t^*) = p_0^{(3)} = p_3^a = p_0^b" },
+  [3] = { "r(0.6) = p_0^{(3)} = p_3^a = p_0^b" },
 }
 local place = {
   [0] = { "e", "nw", "ne", "w" },
@@ -51,7 +51,8 @@ local place = {
 for k = 0, n do
   for i = 0, n - k do
     f:label(L[k + 1][i + 1], text[k][i + 1],
-            { place = place[k][i + 1], offset = k == n and 24 or nil })
+            { place = place[k][i + 1],
+              offset = k == n and 24 or (k == 2 and i == 1) and 32 or nil })
   end
 end
 f:label(ra:eval(0.35), "r^a", { place = "se", color = ca })

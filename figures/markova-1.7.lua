@@ -12,8 +12,10 @@
 -- N_1^1 jumps (C^{-1}; right-continuous, so the filled dot is the value
 -- and the open circle the limit from the left), N_0^2 has a corner (C^0),
 -- N_1^2 starts with a non-zero slope (C^0), N_0^3 and N_1^3 are C^1,
--- N_0^4 is C^2.  For these a dotted line marks u = 1, a circle the value
--- N_i^p(1), and a note gives the continuity.  N_2^1, N_3^1, N_2^2 do not
+-- N_0^4 is C^2.  For these a dotted line marks u = 1, a filled dot the
+-- value N_i^p(1) (taken: N_i^p is continuous from the right, §1.2
+-- "zprava spojitá"), and a note gives the continuity; the hollow circle
+-- appears only in 1.7, for the value not taken.  N_2^1, N_3^1, N_2^2 do not
 -- reach the double knot with both copies and have no note.
 -- Not in the seed: the plot size, the common y range, the shading, the
 -- notes and the places of the labels (chosen so that nothing collides).
@@ -48,7 +50,12 @@ for k, ip in ipairs(which) do
       .. "{0, 1, 1, 3, 6, 10} (double knot u_1 = u_2 = 1), support "
       .. "[u_%d, u_%d) = [%g, %g) shaded%s (Obr. 1.%d: N_%d^%d(u))",
       i, p, i, i + p + 1, a, b,
-      double and string.format("; C^%d at the double knot", p - 2) or "",
+      double and (p == 1
+        and "; C^{-1} at the double knot: the filled dot is the value "
+            .. "N_1^1(1) = 1 taken, the hollow circle the limit 0 from "
+            .. "the left, not taken"
+        or string.format("; C^%d at the double knot, the dot the value "
+                         .. "N_%d^%d(1) taken", p - 2, i, p)) or "",
       k + 6, i, p),
     width = "8cm", height = "4.6cm",
   }
@@ -71,13 +78,14 @@ for k, ip in ipairs(which) do
       f:points({ 1, 1 }, { marker = "dot" })
       f:points({ 1, 0 }, { marker = "circle", fill = "white",
                            marker_color = "#14306e" })
-      note = "$u_1 = u_2 = 1$: $C^{-1}$ (a jump)"
+      note = "$u_1 = u_2 = 1$: $C^{-1}$ (skok)"
     else
-      f:points({ 1, basis(U, i, p, 1) }, { marker = "circle",
-                                           fill = "white",
-                                           marker_color = "#14306e" })
+      f:points({ 1, basis(U, i, p, 1) }, { marker = "dot" })
       note = string.format("$u_1 = u_2 = 1$: $C^%d$", p - 2)
     end
-    f:label({ 9.9, 0.92 }, note, { place = "w", font_size = 8.5 })
+    -- right of the shading; above it where its edge u_{i+p+1} = 6 would
+    -- cut the note
+    f:label({ 9.9, b == 6 and 1.15 or 0.92 }, note,
+            { place = "w", font_size = 8.5 })
   end
 end

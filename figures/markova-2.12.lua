@@ -51,4 +51,7 @@ for _, g in ipairs(figs) do
   for i, q in ipairs(Q) do
     f:label(q, string.format("P_%d", i - 1), { place = g[3][i] })
   end
+  -- the ends of the piece, named as in the text
+  f:label(c:eval(lo), "C(u_5)", { color = "#b35f00", font_size = 8 })
+  f:label(c:eval(hi), "C(u_6)", { color = "#b35f00", font_size = 8 })
 end

@@ -47,4 +47,7 @@ for _, g in ipairs(figs) do
   for i, q in ipairs(c:points()) do
     f:label(q, string.format("P_%d", i - 1), { place = place[i] })
   end
+  -- the ends of the arc, named as in the text
+  f:label(c:eval(lo), "C(u_4)", { color = "#b35f00", font_size = 8 })
+  f:label(c:eval(hi), "C(u_7)", { color = "#b35f00", font_size = 8 })
 end

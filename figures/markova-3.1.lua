@@ -48,6 +48,9 @@ end
 f:curve(s)
 f:curve(s, { range = { U[6], U[7] }, color = "darkgreen", width = 2.2 })
 f:knots(s)
+-- the ends of the span, named as in the text
+f:label(s:eval(U[6]), "C(u_5)", { color = "darkgreen", font_size = 8.5 })
+f:label(s:eval(U[7]), "C(u_6)", { color = "darkgreen", font_size = 8.5 })
 -- where t will go: a pointer from above the dip of the curve
 local function mark_t(fig, c)
   local ct = c:eval(t)

@@ -37,6 +37,11 @@
 -- markova-3.5 and 3.7 share one window and size; 3.6 is the close-up.
 
 local P = { {3,1}, {3.75,2}, {5,3}, {4,4}, {3,3}, {2,4}, {1,3}, {2.25,2} }
+-- Not the thesis's sample curve (vzorová křivka, degree 2): every caption
+-- says which curve is drawn.
+local SAMPLE = "; the curve here: p = 3, U = {0, 0, 0, 0, 0.25, 0.4, " ..
+  "0.7, 0.85, 1, 1, 1, 1} on the sample points, not the thesis's sample " ..
+  "curve of degree 2"
 local U = { 0, 0, 0, 0, 0.25, 0.4, 0.7, 0.85, 1, 1, 1, 1 }
 local s = bspline{ degree = 3, knots = U, points = P }
 local u = 0.5
@@ -63,7 +68,7 @@ local f = figure{
   name = "markova-3.5",
   caption = "De Boor's algorithm at u = 0.5 on the sample points with " ..
             "p = 3: the points P_2 ... P_5 acting on the span [u_5, u_6) " ..
-            "and the point C(u) (Obr. 3.5: u = 0.5)",
+            "and the point C(u) (Obr. 3.5: u = 0.5)" .. SAMPLE,
   width = W, height = H, window = window,
 }
 f:polygon(s, { })
@@ -72,6 +77,9 @@ label_P(f)
 f:curve(s)
 f:curve(s, { range = { U[6], U[7] }, color = "darkgreen", width = 2.2 })
 f:knots(s)
+-- the ends of the span, named as in the text
+f:label(s:eval(U[6]), "C(u_5)", { color = "darkgreen", font_size = 8.5 })
+f:label(s:eval(U[7]), "C(u_6)", { color = "darkgreen", font_size = 8.5 })
 f:points({ L[4][1] }, { marker = "star", color = "red", marker_color = "red",
                         marker_size = 9 })
 f:label(L[4][1], "C(0.5)", { place = "se", color = "red", offset = 6 })
@@ -81,7 +89,7 @@ local g = figure{
   name = "markova-3.6",
   caption = "De Boor's algorithm at u = 0.5, the new points column by " ..
             "column: P_{i,1} (blue), P_{i,2} (orange), P_{5,3} = C(u) " ..
-            "(red) (Obr. 3.6: Výpočet nových bodů)",
+            "(red) (Obr. 3.6: Výpočet nových bodů)" .. SAMPLE,
   width = ZW, height = ZH, window = zoom,
 }
 -- Only what lies inside the close-up window is drawn (the renderer
@@ -151,7 +159,7 @@ local h = figure{
   name = "markova-3.7",
   caption = "The new curve: u = 0.5 inserted three times; the same " ..
             "curve, its new polygon passes through C(u) = P_{5,3} " ..
-            "(Obr. 3.7: Nová křivka)",
+            "(Obr. 3.7: Nová křivka)" .. SAMPLE,
   width = W, height = H, window = window,
 }
 h:polyline({ P[3], P[4], P[5], P[6] }, { color = "grey", dash = "dashed",
@@ -165,7 +173,7 @@ h:label(P[5], "P_4", { place = "s", color = "grey" })
 h:curve(n)
 h:knots(n)
 local Q = n:points()
-local new = { { 3, "P_{3,1}", "ne" }, { 4, "P_{4,2}", "n" },
+local new = { { 3, "P_{3,1}", "ne" }, { 4, "P_{4,2}", "auto" },
               { 6, "P_{5,2}", "n" },
               { 7, "P_{5,1}", "sw" } }
 for _, e in ipairs(new) do

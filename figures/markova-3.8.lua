@@ -27,6 +27,11 @@
 -- 3.8, 3.10 and 3.11 share one window and size (that of markova-3.5).
 
 local P = { {3,1}, {3.75,2}, {5,3}, {4,4}, {3,3}, {2,4}, {1,3}, {2.25,2} }
+-- Not the thesis's sample curve (vzorová křivka, degree 2): every caption
+-- says which curve is drawn.
+local SAMPLE = "; the curve here: p = 3, U = {0, 0, 0, 0, 0.25, 0.4, " ..
+  "0.7, 0.85, 1, 1, 1, 1} on the sample points, not the thesis's sample " ..
+  "curve of degree 2"
 local U = { 0, 0, 0, 0, 0.25, 0.4, 0.7, 0.85, 1, 1, 1, 1 }
 local s = bspline{ degree = 3, knots = U, points = P }
 local u = 0.5
@@ -76,7 +81,7 @@ local f = figure{
   name = "markova-3.8",
   caption = "Subdivision at u = 0.5: the point C(u) divides the curve " ..
             "(p = 3 on the sample points) into the arcs [0, u] and " ..
-            "[u, 1] (Obr. 3.8: u = 0.5)",
+            "[u, 1] (Obr. 3.8: u = 0.5)" .. SAMPLE,
   width = W, height = H, window = window,
 }
 f:polygon(s, { })
@@ -116,7 +121,7 @@ local g = figure{
   caption = "Subdivision at u = 0.5, the de Boor net: the first points " ..
             "of its columns P_2, P_{3,1}, P_{4,2}, P_{5,3} (green) and " ..
             "the last ones P_{5,3}, P_{5,2}, P_{5,1}, P_5 (purple) go to " ..
-            "the two parts (Obr. 3.9: Výpočet nových bodů)",
+            "the two parts (Obr. 3.9: Výpočet nových bodů)" .. SAMPLE,
   width = ZW, height = ZH, window = zoom,
 }
 -- the legs of the polygon inside the close-up (the renderer reserves
@@ -151,7 +156,7 @@ g:label(C, "P_{5,3} = C(u)", { place = "se", color = "red", offset = 5 })
 
 -- markova-3.10, markova-3.11 ---------------------------------------------------
 local function part(name, caption, c, range_other, color, plabels, newlabels)
-  local h = figure{ name = name, caption = caption,
+  local h = figure{ name = name, caption = caption .. SAMPLE,
                     width = W, height = H, window = window }
   h:curve(s, { range = range_other, color = light, width = 1.0,
                dash = "dashed" })

@@ -128,7 +128,7 @@ do
   f:curve(c)
   f:points({ c:eval(0), c:eval(1) }, { marker = "dot", color = "darkred",
                                         marker_color = "darkred" })
-  f:label(c:eval(0), "Q(0)", { place = "s", color = "darkred" })
+  f:label(c:eval(0), "Q(0)", { color = "darkred" })
   f:label(c:eval(1), "Q(1)", { place = "s", color = "darkred" })
 end
 

@@ -10,9 +10,11 @@
 -- below at 101 parameters), so the curve turns left everywhere and its
 -- centres of curvature lie on the left of the direction of travel, on
 -- the side of c:normal(t); "inward" is therefore the left normal, d > 0
--- in c:offset(d).  The smallest radius of curvature is about 0.83 (near
--- t = 0.4), so d = 0.5 gives a regular offset while d = 1.5 and d = 3
--- exceed it: two cusps each and a loop ("pridejo zelo čudne stvari").
+-- in c:offset(d).  The smallest radius of curvature is 0.687 (at
+-- t = 0.357), so d = 0.5 gives a regular offset while d = 1.5 and d = 3
+-- exceed it: two cusps each ("pridejo zelo čudne stvari"); at d = 1.5
+-- the raw offset also crosses itself (a swallow-tail), at d = 3 it does
+-- not (two cusps, no loop).
 -- Drawn in each figure: the curve (thick, dark) with its control
 -- polygon; a few inward normals of length d (thin grey arrows at
 -- t = 0.1, 0.3, ..., 0.9); the raw offset c(t) + d n(t) (orange, thin,
@@ -71,8 +73,8 @@ local _, k2 = offset_figure("orazem-offset-2", 1.5,
   "green (Figure 2: Normala obrnjena navznoter, d = 1.5)")
 assert(#k2 == 2)
 local _, k3 = offset_figure("orazem-offset-3", 3,
-  "Offset with the normal turned inward, d = 3: cusps and a large " ..
-  "swallow-tail in the raw offset (orange dashed, cusps red); only the " ..
+  "Offset with the normal turned inward, d = 3: two cusps and no loop " ..
+  "in the raw offset (orange dashed, cusps red); only the " ..
   "green part is at distance 3 from the curve (Figure 3: Normala " ..
   "obrnjena navznoter, d = 3)")
 assert(#k3 == 2)

@@ -58,7 +58,7 @@ local place = {
 for i = 0, n do
   for j = 0, n - i do
     local text = string.format("P_{%d,%d}", i, j)
-    if i == n then text = text .. " = c(t)" end
+    if i == n then text = text .. " = c(0.4)" end
     local at = L[i + 1][j + 1]
     if i == n then at = { at[1] + 0.35, at[2] } end  -- clear of the blue arc
     f:label(at, text,

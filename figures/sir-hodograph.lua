@@ -28,13 +28,14 @@ local f = figure{
   name = "sir-hodograph",
   caption = "A cubic c(t) (left) and its hodograph c'(t) (right, from the "
     .. "origin O, scale 1 : 3): the quadratic Bézier curve with control "
-    .. "points Q_i = 3(P_{i+1} − P_i); the vector c'(0.8) is the same in both",
+    .. "points Q_i = 3(P_{i+1} − P_i); the vector c'(0.8) is the same in both, "
+    .. "drawn at a third of its length on the left too (měřítko = scale)",
   width = "15cm", height = "7cm",
 }
 -- the hodograph's frame: axes through O, and its scale
 f:arrow({ O[1] - 0.5, O[2] }, { 3.4, 0 }, { color = "grey", width = 0.6 })
 f:arrow({ O[1], O[2] - 2.7 }, { 0, 5.6 }, { color = "grey", width = 0.6 })
-f:label({ O[1] + 3.4, O[2] - 2.1 }, "\\text{scale} 1 : 3", { place = "w", color = "grey", font_size = 8 })
+f:label({ O[1] + 3.4, O[2] - 2.1 }, "\\text{měřítko} 1 : 3", { place = "w", color = "grey", font_size = 8 })
 for i = 1, #hq do
   f:arrow_to(O, hq[i], { color = "grey", width = 0.6, dash = "dashed" })
 end
@@ -62,6 +63,7 @@ local t0 = 0.8
 local p0, d = c:eval(t0), c:derivs(t0, 1)[2]
 f:arrow(p0, { s * d[1], s * d[2] }, { color = "darkred", width = 1.4 })
 f:points(p0, { marker = "dot", color = "darkred", marker_color = "darkred" })
-f:label({ p0[1] + s * d[1], p0[2] + s * d[2] }, "c'(0.8)", { place = "e", color = "darkred" })
+-- drawn at a third of its length, as in the hodograph's frame: said here
+f:label({ p0[1] + s * d[1], p0[2] + s * d[2] }, "\\frac{1}{3}\\,c'(0.8)", { place = "e", color = "darkred" })
 f:arrow(O, { s * d[1], s * d[2] }, { color = "darkred", width = 1.4 })
 f:label({ O[1] + 0.45 * s * d[1], O[2] + 0.45 * s * d[2] }, "c'(0.8)", { place = "ne", color = "darkred", offset = 2 })

@@ -14,12 +14,10 @@
 -- the two can be compared side by side.
 --
 -- sir-affine: the cubic c(t) with P_0 ... P_3 and its image under the
--- affine map x ↦ Ax + a with A = ((0.8, −0.5), (0.45, 0.9)), a = (6.5, −4.5)
--- (the seed states the theorem for a Euclidean congruence; it holds for
--- every affine map, so a map with rotation, shear and scaling is chosen
--- to show it in general).  The image points P̃_i = AP_i + a with their
--- curve c̃(t) (drawn from the P̃_i) and the correspondence P_i ↦ P̃_i and
--- c(1/2) ↦ c̃(1/2) = Ac(1/2) + a by thin dotted lines.
+-- Euclidean congruence x ↦ Ax + a the slide states: A the rotation by
+-- −40°, a = (5.5, −1).  The image points P̃_i = AP_i + a with their curve
+-- c̃(t) (drawn from the P̃_i, not by moving c) and the correspondence
+-- P_i ↦ P̃_i and c(1/2) ↦ c̃(1/2) = Ac(1/2) + a by thin dotted lines.
 --
 -- Data chosen (the seed gives none): P_0 ... P_3 = (0,0) (0.8,2.4)
 -- (3.4,2.6) (4.2,0.6).
@@ -72,12 +70,14 @@ local a, b = c:eval(0.25), r:eval(0.75)
 f:points(a, { marker = "dot", color = "darkblue", marker_color = "darkblue" })
 f:points(b, { marker = "dot", color = "darkred", marker_color = "darkred" })
 f:label(a, "c(1/4)", { place = "e" })
-f:label(b, "\\tilde{c}(3/4)", { place = "w" })
+f:label(b, "\\tilde{c}(3/4)")
 f:label(c:eval(0.5), "c(t)", { place = "s", offset = 34 })
 f:label(r:eval(0.5), "\\tilde{c}(t) = c(1 − t)", { place = "s", offset = 34 })
 
 -- sir-affine -----------------------------------------------------------
-local A, av = { {0.8, -0.5}, {0.45, 0.9} }, { 6.5, -4.5 }
+local th = math.rad(-40)
+local A = { { math.cos(th), -math.sin(th) }, { math.sin(th), math.cos(th) } }
+local av = { 5.5, -1 }
 local function map(p)
   return { A[1][1] * p[1] + A[1][2] * p[2] + av[1],
            A[2][1] * p[1] + A[2][2] * p[2] + av[2] }
@@ -88,9 +88,10 @@ local g_img = bezier(R)  -- drawn from the image points, not by mapping c
 
 local g = figure{
   name = "sir-affine",
-  caption = "Affine invariance: the image points P̃_i = AP_i + a "
-    .. "(A = ((0.8, −0.5), (0.45, 0.9)), a = (6.5, −4.5)) define the image "
-    .. "curve c̃(t) = Ac(t) + a; dotted: P_i ↦ P̃_i and c(1/2) ↦ c̃(1/2)",
+  caption = "Invariance under a Euclidean congruence x ↦ Ax + a "
+    .. "(A the rotation by −40°, a = (5.5, −1)): the image points "
+    .. "P̃_i = AP_i + a define the image curve c̃(t) = Ac(t) + a; "
+    .. "dotted: P_i ↦ P̃_i and c(1/2) ↦ c̃(1/2)",
   width = "10cm", height = "7.5cm",
 }
 for i = 1, 4 do
@@ -103,12 +104,11 @@ g:curve(c)
 g:polygon(g_img)
 g:curve(g_img, { color = "darkred" })
 local lq = { "sw", "nw", "n", "sw" }
-local lr = { "s", "w", "ne", "e" }
 for i = 1, 4 do
   g:label(P[i], string.format("P_%d", i - 1), { place = lq[i] })
-  g:label(R[i], string.format("\\tilde{P}_%d", i - 1), { place = lr[i] })
+  g:label(R[i], string.format("\\tilde{P}_%d", i - 1))
 end
 g:points(m, { marker = "dot", color = "darkblue", marker_color = "darkblue" })
 g:points(mi, { marker = "dot", color = "darkred", marker_color = "darkred" })
-g:label(m, "c(1/2)", { place = "n", offset = 2 })
-g:label(mi, "\\tilde{c}(1/2)", { place = "s" })
+g:label(m, "c(1/2)")
+g:label(mi, "\\tilde{c}(1/2)")

@@ -17,7 +17,8 @@ local fig = figure{
   name = "sir-weierstrass",
   caption = "Bernstein approximation f_n = Σ f(i/n) B_i^n of the continuous "
     .. "f(t) = 1/4 + |t − 1/2| + sin(2πt)/4 for n = 2, 5, 10, 50, converging "
-    .. "uniformly to f (Bernstein 1912)",
+    .. "uniformly to f (Bernstein 1912); dots: the samples f(i/10), the "
+    .. "control values of f_10",
   width = "10cm", height = "6.5cm",
 }
 fig:plot{ x = {0, 1}, y = {0, 0.9}, xticks = 0.25, yticks = { 0, 0.25, 0.5, 0.75 },

@@ -5,14 +5,10 @@
 ** sets width, cap, join and dash, so an operation draws the same whatever
 ** came before it.
 */
-#include <math.h>
-
 #include <cairo.h>
 
 #include "backend.h"
 #include "label-private.h"
-
-#define PI 3.14159265358979323846
 
 static void
 set_source(cairo_t *cr, const cf_color_t *c, double opacity)
@@ -133,103 +129,34 @@ draw_path(void *ctx, const cf__path_t *path, const cf__paint_t *paint)
 }
 
 static void
-regular_polygon(cairo_t *cr, double x, double y, double r, int n,
-                double phase, double inner)
-{
-    int i, k = inner > 0 ? 2 * n : n;
-    for (i = 0; i < k; i++) {
-        double a = phase + 2.0 * PI * i / k;
-        double rr = (inner > 0 && (i & 1)) ? inner : r;
-        double px = x + rr * cos(a), py = y - rr * sin(a);
-        if (i == 0)
-            cairo_move_to(cr, px, py);
-        else
-            cairo_line_to(cr, px, py);
-    }
-    cairo_close_path(cr);
-}
-
-/* A stroked symbol (cross, plus, tick) of line width w. */
-static void
-stroke_symbol(cairo_t *cr, const cf__marker_op_t *m, double w)
-{
-    cairo_set_line_width(cr, w);
-    cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
-    set_source(cr, &m->color, m->opacity);
-    cairo_stroke(cr);
-}
-
-static void
 draw_marker(void *ctx, const cf__marker_op_t *m)
 {
     cairo_t *cr = ctx;
-    double r = 0.5 * m->size, x = m->x, y = m->y;
-    bool filled = true;
+    cf__marker_shape_t sh;
 
+    if (!cf__marker_shape(m, &sh))
+        return;
     cairo_save(cr);
     cairo_set_dash(cr, NULL, 0, 0.0);
-    cairo_new_path(cr);
-    switch (m->marker) {
-    case CF_MARKER_DOT:
-        cairo_arc(cr, x, y, r, 0, 2 * PI);
-        break;
-    case CF_MARKER_CIRCLE:
-        cairo_arc(cr, x, y, r * 0.85, 0, 2 * PI);
-        filled = false;
-        break;
-    case CF_MARKER_SQUARE:
-        cairo_rectangle(cr, x - 0.85 * r, y - 0.85 * r, 1.7 * r, 1.7 * r);
-        break;
-    case CF_MARKER_DIAMOND:
-        regular_polygon(cr, x, y, 1.1 * r, 4, PI / 2, 0);
-        break;
-    case CF_MARKER_TRIANGLE:
-        regular_polygon(cr, x, y + 0.2 * r, 1.15 * r, 3, PI / 2, 0);
-        break;
-    case CF_MARKER_STAR:
-        regular_polygon(cr, x, y, 1.45 * r, 5, PI / 2, 0.6 * r);
-        break;
-    case CF_MARKER_CROSS:
-    case CF_MARKER_PLUS: {
-        double a = m->marker == CF_MARKER_CROSS ? PI / 4 : 0;
-        double c = cos(a) * r, sn = sin(a) * r;
-        cairo_move_to(cr, x - c, y - sn);
-        cairo_line_to(cr, x + c, y + sn);
-        cairo_move_to(cr, x + sn, y - c);
-        cairo_line_to(cr, x - sn, y + c);
-        stroke_symbol(cr, m, fmax(0.6, 0.28 * r));
-        cairo_restore(cr);
-        return;
-    }
-    case CF_MARKER_TICK: {
-        /* a bar across the curve: perpendicular to dir (page coords) */
-        double nx = 0, ny = -1, len;
-        if (m->has_dir) {
-            len = hypot(m->dir[0], m->dir[1]);
-            if (len > 0) {
-                nx = -m->dir[1] / len;
-                ny = m->dir[0] / len;
-            }
-        }
-        cairo_move_to(cr, x - nx * r, y - ny * r);
-        cairo_line_to(cr, x + nx * r, y + ny * r);
-        stroke_symbol(cr, m, fmax(0.5, m->width));
-        cairo_restore(cr);
-        return;
-    }
-    default:
-        cairo_restore(cr);
-        return;
-    }
-    if (filled) {
+    append_path(cr, &sh.path);
+    switch (sh.paint) {
+    case CF__MARKER_FILL:
         set_source(cr, &m->color, m->opacity);
         cairo_fill(cr);
-    } else {
+        break;
+    case CF__MARKER_FILL_STROKE:
         set_source(cr, &m->fill, m->opacity);
         cairo_fill_preserve(cr);
-        cairo_set_line_width(cr, fmax(0.5, 0.3 * r));
+        cairo_set_line_width(cr, sh.line_width);
         set_source(cr, &m->color, m->opacity);
         cairo_stroke(cr);
+        break;
+    case CF__MARKER_STROKE:
+        cairo_set_line_width(cr, sh.line_width);
+        cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+        set_source(cr, &m->color, m->opacity);
+        cairo_stroke(cr);
+        break;
     }
     cairo_restore(cr);
 }

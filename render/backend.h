@@ -10,7 +10,9 @@
 **   cairo (render/backend-cairo.c): SVG, PDF, PS, EPS and PNG surfaces, and
 **     the recording and raster surfaces the layout measures ink with;
 **   dump  (render/backend-dump.c): one line of text per operation,
-**     deterministic, for tests.
+**     deterministic, for tests;
+**   pgf   (render/backend-pgf.c): a pgfpicture for TeX, labels as TeX
+**     source.
 */
 #ifndef CURVEFIG_RENDER_BACKEND_H
 #define CURVEFIG_RENDER_BACKEND_H
@@ -78,5 +80,30 @@ typedef struct cf__dump {
 } cf__dump_t;
 
 extern const cf__backend_t cf__dump_backend;
+
+/* ---- the PGF backend ---------------------------------------------------- */
+
+/* Its functions; ctx is a cf__pgf_t with out (empty) and title (NULL or
+** a line for the comment at the top) set and the rest zero; release it
+** with cf__pgf_fini.  end_page fails when out ran out of memory or a
+** coordinate lies beyond CF__PGF_MAX_BP (bad_value: the first). */
+#define CF__PGF_MAX_BP 16000.0   /* TeX's largest dimension: 16322 bp */
+/* Labels of this size (10 TeX pt, the theme's) are set at the document's
+** size; others scaled by their ratio to it (\scalebox). */
+#define CF__PGF_BASE_SIZE (10.0 * 72.0 / 72.27)
+struct cf__buf;
+typedef struct cf__pgf {
+    struct cf__buf *out;
+    const char *title;
+    double width, height;
+    int depth;                     /* groups open */
+    unsigned long long overlays;   /* bit k: group k has an overlay */
+    bool range_error;
+    double bad_value;
+    void *glyphs;                  /* cairo_t * for outlines of labels */
+} cf__pgf_t;
+
+extern const cf__backend_t cf__pgf_backend;
+void cf__pgf_fini(cf__pgf_t *g);
 
 #endif

@@ -157,6 +157,28 @@ void cf__dl_close(cf__dl_t *dl);
 void cf__dl_path_paint(cf__dl_t *dl, const cf__paint_t *paint);
 
 void cf__dl_marker(cf__dl_t *dl, const cf__marker_op_t *m);
+
+/* The outline of a marker symbol (render/marker.c), the same for every
+** backend: its path and how it is painted — filled in the marker colour,
+** filled with `fill` then stroked in the marker colour, or only stroked
+** (butt caps); strokes of width line_width, no dash. */
+typedef enum cf__marker_paint {
+    CF__MARKER_FILL,
+    CF__MARKER_FILL_STROKE,
+    CF__MARKER_STROKE
+} cf__marker_paint_t;
+
+typedef struct cf__marker_shape {
+    unsigned char segs[16];
+    double coords[48];
+    size_t ncoords;
+    cf__path_t path;          /* points into segs and coords */
+    cf__marker_paint_t paint;
+    double line_width;
+} cf__marker_shape_t;
+
+/* false: nothing to draw (CF_MARKER_NONE or unknown). */
+bool cf__marker_shape(const cf__marker_op_t *m, cf__marker_shape_t *out);
 void cf__dl_text(cf__dl_t *dl, const cf__text_op_t *t);
 
 /* The path of a PATH operation. */

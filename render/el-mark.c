@@ -12,8 +12,8 @@ typedef struct label_el {
     cf__element_t base;
     cf__text_t text;
     double x, y;
-    cf_place_t auto_place;   /* CF_PLACE_AUTO: the place chosen for the
-                                current layout */
+    cf__auto_place_t chosen;  /* CF_PLACE_AUTO: the place chosen for the
+                                 current layout */
 } label_el_t;
 
 typedef struct arrow_el {
@@ -45,20 +45,21 @@ label_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
     if (!cf__in_window(l, e->x, e->y))
         return CF_STATUS_OK;
     cf__map(l, e->x, e->y, &px, &py);
-    return cf__text_draw(fig, &e->text, s, px, py,
-                         s->place == CF_PLACE_AUTO ? e->auto_place : s->place,
-                         s->offset, dl);
+    if (s->place == CF_PLACE_AUTO)
+        return cf__text_draw(fig, &e->text, s, px, py, e->chosen.place,
+                             e->chosen.offset, dl);
+    return cf__text_draw(fig, &e->text, s, px, py, s->place, s->offset, dl);
 }
 
 static bool
 label_auto(cf__element_t *el, double *x, double *y, cf__text_t **text,
-           cf_place_t **place)
+           cf__auto_place_t **chosen)
 {
     label_el_t *e = (label_el_t *)el;
     *x = e->x;
     *y = e->y;
     *text = &e->text;
-    *place = &e->auto_place;
+    *chosen = &e->chosen;
     return true;
 }
 
@@ -86,6 +87,8 @@ cf_figure_add_label(cf_figure_t *fig, double x, double y, const char *text,
         return fig->err.status;
     e->x = x;
     e->y = y;
+    e->chosen.place = CF_PLACE_NE;
+    e->chosen.offset = 4.0;
     return cf__element_commit(
         fig, e,
         cf__text_set(fig, &e->text, text,

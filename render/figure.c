@@ -52,6 +52,7 @@ cf_status_t
 cf_figure_create(double width, double height, cf_unit_t unit,
                  cf_figure_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_figure_t *fig;
     double w, h;
     if (out == NULL)
@@ -103,6 +104,7 @@ cf_figure_destroy(cf_figure_t *fig)
     cf_free(fig->title);
     cf_free(fig->caption);
     cf_free(fig->proj);
+    cf_free(fig->warnings);
     cf_free(fig);
 }
 
@@ -110,6 +112,7 @@ cf_figure_destroy(cf_figure_t *fig)
 cf_status_t
 cf_figure_status(const cf_figure_t *fig, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     if (fig == NULL)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1, "figure is NULL");
     if (fig->err.status != CF_STATUS_OK && diag != NULL

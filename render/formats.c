@@ -2,7 +2,7 @@
 ** The output formats: SVG, PDF, PS, EPS and PNG pages drawn from a
 ** display list by the cairo backend into memory, and made deterministic
 ** there (no creation dates, no per-process ids; title and caption as
-** metadata).
+** metadata); PGF pages by the PGF backend.
 */
 #include <math.h>
 #include <stdio.h>
@@ -18,12 +18,13 @@
 #include "render-private.h"
 
 static const char *const format_names[CF_FORMAT_LAST_] = {
-    "svg", "pdf", "ps", "eps", "png"
+    "svg", "pdf", "ps", "eps", "png", "pgf"
 };
 
 cf_status_t
 cf_format_from_name(const char *name, cf_format_t *out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     int i;
     if (name == NULL || out == NULL)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
@@ -35,7 +36,7 @@ cf_format_from_name(const char *name, cf_format_t *out, cf_diag_t *diag)
         }
     }
     return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                       "unknown format \"%s\" (use svg, pdf, ps, eps or png)",
+                       "unknown format \"%s\" (use svg, pdf, ps, eps, png or pgf)",
                        name);
 }
 
@@ -335,6 +336,29 @@ pdf_date(char *buf, size_t cap)
 
 /* ---- one page in one format -------------------------------------------- */
 
+/* PGF: the PGF backend into out, without cairo surfaces. */
+static cf_status_t
+pgf_render(const cf__dl_t *dl, const cf__page_t *page, const char *title,
+           cf__buf_t *out, cf_diag_t *diag)
+{
+    cf__pgf_t g;
+    int r;
+    memset(&g, 0, sizeof g);
+    g.out = out;
+    g.title = title;
+    r = cf__dl_play_page(dl, page, &cf__pgf_backend, &g);
+    cf__pgf_fini(&g);
+    if (r == 0)
+        return CF_STATUS_OK;
+    cf__buf_free(out);
+    if (g.range_error)
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "pgf: coordinate %g bp lies beyond what TeX can "
+                           "hold (%g bp)", g.bad_value, CF__PGF_MAX_BP);
+    return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                       "out of memory rendering pgf");
+}
+
 static cairo_surface_t *
 make_surface(cf_format_t format, const cf__page_t *pg, double dpi,
              const char *title, const char *caption, cf__buf_t *raw,
@@ -426,6 +450,8 @@ cf__format_render(cf_format_t format, const cf__dl_t *dl,
     int r;
 
     memset(&raw, 0, sizeof raw);
+    if (format == CF_FORMAT_PGF)
+        return pgf_render(dl, page, title, out, diag);
     pg.raster = format == CF_FORMAT_PNG;
     surf = make_surface(format, &pg, dpi, title, caption, &raw, diag);
     if (surf == NULL)

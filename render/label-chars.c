@@ -68,6 +68,19 @@ cf__utf8_encode(unsigned c, char *out)
     return 4;
 }
 
+bool
+cf__label_has_dollar(const char *text)
+{
+    size_t i, n = strlen(text);
+    for (i = 0; i < n; i++) {
+        if (text[i] == '\\' && i + 1 < n)
+            i++;
+        else if (text[i] == '$')
+            return true;
+    }
+    return false;
+}
+
 typedef struct command {
     const char *name;
     unsigned cp;
@@ -153,6 +166,16 @@ cf__label_symbol(const char *name, unsigned *cp, int *cls, bool *italic)
         }
     }
     return false;
+}
+
+const char *
+cf__label_symbol_name(unsigned cp)
+{
+    size_t i;
+    for (i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        if (commands[i].cp == cp)
+            return commands[i].name;
+    return NULL;
 }
 
 bool

@@ -85,6 +85,10 @@ bool cf__label_symbol(const char *name, unsigned *cp, int *cls,
                       bool *italic);
 /* A horizontal space command: its width in em. */
 bool cf__label_space(const char *name, double *em);
+/* Whether text has a `$` (not \\$): then text outside $...$ is text. */
+bool cf__label_has_dollar(const char *text);
+/* The first symbol command of code point cp (NULL: none). */
+const char *cf__label_symbol_name(unsigned cp);
 /* An accent command: the code point of its spacing form. */
 bool cf__label_accent(const char *name, unsigned *cp);
 

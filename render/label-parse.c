@@ -705,22 +705,13 @@ cf__label_parse(cf_label_t *lab, const char *text, cf_diag_t *diag)
     parser_t p;
     font_t f;
     piece_t all;
-    size_t i;
 
     memset(&p, 0, sizeof p);
     p.s = text;
     p.len = strlen(text);
     p.lab = lab;
     p.diag = diag;
-    p.has_dollar = false;
-    for (i = 0; i < p.len; i++) {
-        if (text[i] == '\\' && i + 1 < p.len) {
-            i++;
-            continue;
-        }
-        if (text[i] == '$')
-            p.has_dollar = true;
-    }
+    p.has_dollar = cf__label_has_dollar(text);
     memset(&f, 0, sizeof f);
     f.size = lab->size;
     f.level = 0;

@@ -55,6 +55,7 @@ cf_status_t
 cf_label_create(const char *text, const char *family, double size_bp,
                 cf_label_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_label_t *lab;
     size_t i, len;
 
@@ -238,14 +239,11 @@ cf__label_draw(const cf_label_t *label, cairo_t *cr, double x, double y,
 }
 
 void
-cf__label_draw_halo(const cf_label_t *label, cairo_t *cr, double x,
-                    double y, const cf_color_t *halo_color, double halo)
+cf__label_path(const cf_label_t *label, cairo_t *cr, double x, double y)
 {
     size_t i;
-    if (label == NULL || !(halo > 0) || halo_color->a <= 0)
+    if (label == NULL)
         return;
-    cairo_save(cr);
-    cairo_new_path(cr);
     for (i = 0; i < label->count; i++) {
         const run_t *r = &label->runs[i];
         if (!(r->ink[3] > r->ink[1]))
@@ -258,6 +256,17 @@ cf__label_draw_halo(const cf_label_t *label, cairo_t *cr, double x,
         cairo_move_to(cr, x + r->x, y - r->y - r->baseline);
         pango_cairo_layout_path(cr, r->layout);
     }
+}
+
+void
+cf__label_draw_halo(const cf_label_t *label, cairo_t *cr, double x,
+                    double y, const cf_color_t *halo_color, double halo)
+{
+    if (label == NULL || !(halo > 0) || halo_color->a <= 0)
+        return;
+    cairo_save(cr);
+    cairo_new_path(cr);
+    cf__label_path(label, cr, x, y);
     cairo_set_source_rgba(cr, halo_color->r, halo_color->g, halo_color->b,
                           halo_color->a);
     cairo_set_line_width(cr, 2 * halo);

@@ -51,7 +51,7 @@ cf_status_t
 cf__figure_build(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
 {
     size_t i;
-    if (cf__place_auto_labels(fig, lay) != CF_STATUS_OK)
+    if (cf__place_labels(fig, lay) != CF_STATUS_OK)
         return fig->err.status;
     for (i = 0; i < fig->count; i++)
         if (cf__element_draw(fig, i, lay, dl) != CF_STATUS_OK)

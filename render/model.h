@@ -105,6 +105,13 @@ typedef struct cf__text {
 
 typedef struct cf__element cf__element_t;
 
+/* The place and the distance from its anchor (bp) of a label placed
+** automatically, for the current layout. */
+typedef struct cf__auto_place {
+    cf_place_t place;
+    double offset;
+} cf__auto_place_t;
+
 /* Flags of a kind. */
 enum {
     CF__KIND_SHADING = 1u << 0,   /* automatic labels may sit on it: left
@@ -124,10 +131,11 @@ typedef struct cf__kind {
     cf_status_t (*draw)(cf_figure_t *fig, cf__element_t *e,
                         const cf__layout_t *l, const cf_style_t *s,
                         cf__dl_t *dl);
-    /* Labels placed CF_PLACE_AUTO: the anchor (data), the text and the
-    ** place chosen for the current layout.  NULL for other kinds. */
+    /* Labels: the anchor (data), the text and where the place chosen
+    ** for the current layout goes (used when placed CF_PLACE_AUTO).
+    ** NULL for other kinds. */
     bool (*auto_label)(cf__element_t *e, double *x, double *y,
-                       cf__text_t **text, cf_place_t **place);
+                       cf__text_t **text, cf__auto_place_t **chosen);
 } cf__kind_t;
 
 /* The start of every element record. */
@@ -154,6 +162,8 @@ struct cf_figure {
     double *proj;            /* 2 x proj_dim */
     cf__element_t **els;
     size_t count, cap;
+    char *warnings;          /* of the last layout, a line each; NULL: none */
+    size_t warnings_len;
     unsigned steps;          /* largest step named by an overlay, 0: none */
     char *overlay;           /* given to the elements added next, or NULL */
     unsigned overlay_last;   /* the largest step it names */
@@ -255,7 +265,8 @@ cf_status_t cf__figure_check_page(const cf_figure_t *fig, const cf__dl_t *dl,
 
 /* ---- place.c ------------------------------------------------------------ */
 
-/* Choose the places of the labels placed CF_PLACE_AUTO for a layout. */
-cf_status_t cf__place_auto_labels(cf_figure_t *fig, const cf__layout_t *lay);
+/* Choose the places of the labels placed CF_PLACE_AUTO for a layout, and
+** note in the figure's warnings every label that lies on ink. */
+cf_status_t cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay);
 
 #endif

@@ -180,6 +180,7 @@ cf_figure_render(cf_figure_t *fig, cf_format_t format,
                  const cf_write_options_t *options, unsigned char **data,
                  size_t *size, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf__buf_t buf;
     cf_status_t st;
     if (data == NULL || size == NULL)
@@ -200,6 +201,7 @@ cf_figure_ink_box(cf_figure_t *fig, const cf_write_options_t *options,
                   double box[4], double *page_width, double *page_height,
                   cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_write_options_t o;
     job_t job;
     cf_status_t st = check_fig_format(fig, CF_FORMAT_SVG, diag);
@@ -224,6 +226,7 @@ cf_status_t
 cf_figure_dump(cf_figure_t *fig, const cf_write_options_t *options,
                char **text, size_t *size, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_write_options_t o;
     job_t job;
     cf__dump_t d;
@@ -320,6 +323,7 @@ cf_status_t
 cf_figure_write(cf_figure_t *fig, const char *path, cf_format_t format,
                 const cf_write_options_t *options, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf__buf_t buf;
     cf_status_t st;
     if (path == NULL)
@@ -369,6 +373,7 @@ cf_status_t
 cf_figure_write_all(cf_figure_t *fig, const char *basename, unsigned formats,
                     const cf_write_options_t *options, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_write_options_t o;
     job_t job;
     cf__buf_t ps;

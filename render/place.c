@@ -1,10 +1,18 @@
 /*
-** Automatic label places: a label placed CF_PLACE_AUTO takes the side of
-** its anchor where it covers the least ink.  Everything else is drawn
-** into a coarse raster (by the cairo backend), then each automatic label
-** in turn takes the cheapest of the eight places and is added to it.
+** Label places.  Everything but the labels (and the shadings, on which a
+** label may sit) is drawn into a coarse raster of the page's ink by the
+** cairo backend.  Each label placed by hand is then tested against it,
+** glyph by glyph, and added to it; each label placed CF_PLACE_AUTO (the
+** default) takes the cheapest of the eight places around its anchor at
+** growing distances, and is added to the raster in turn, so that later
+** labels avoid it.  A label that still lies on ink, placed by hand or
+** automatically, is kept and reported in the figure's warnings
+** (cf_figure_warnings): which label, at which place, on what.
 */
 #include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
 
 #include <cairo.h>
 
@@ -16,6 +24,18 @@
 #define AUTO_MAX_PIXELS 4e6   /* larger pages get a coarser raster */
 #define AUTO_GAP 1.0          /* bp around a label that should stay clear */
 #define AUTO_NEAR 3.0         /* bp: ink this close costs a quarter */
+#define AUTO_FAR 0.15         /* cost (bp^2) of each bp farther out */
+#define HIT_ALPHA 127         /* a pixel inked more than half */
+
+/* The distances tried, in bp beyond the style's offset. */
+static const double further[] = { 0.0, 2.5, 5.5, 9.0, 14.0, 20.0 };
+
+typedef struct raster {
+    cairo_surface_t *img, *one;   /* the page's ink; one element's */
+    cairo_t *cr, *cr1;
+    double res;
+    cf__dl_t dl;
+} raster_t;
 
 /* Ink in the page box x0 y0 x1 y1 (bp) of an A8 raster at res pixels per
 ** bp, in bp^2 of full ink; pixels off the page count as full ink. */
@@ -44,8 +64,7 @@ raster_ink(cairo_surface_t *img, double res, const double b[4])
 ** origin (ox, oy): ink under the box widened by AUTO_GAP, plus a quarter
 ** of the ink in the ring out to AUTO_NEAR. */
 static double
-place_cost(cairo_surface_t *img, double res, const double ink[4], double ox,
-           double oy)
+place_cost(const raster_t *r, const double ink[4], double ox, double oy)
 {
     double hard[4], near[4], a, b;
     hard[0] = ox + ink[0] - AUTO_GAP;
@@ -56,122 +75,319 @@ place_cost(cairo_surface_t *img, double res, const double ink[4], double ox,
     near[1] = oy + ink[1] - AUTO_NEAR;
     near[2] = ox + ink[2] + AUTO_NEAR;
     near[3] = oy + ink[3] + AUTO_NEAR;
-    a = raster_ink(img, res, hard);
-    b = raster_ink(img, res, near);
+    a = raster_ink(r->img, r->res, hard);
+    b = raster_ink(r->img, r->res, near);
     return a + 0.25 * fmax(0, b - a);
 }
 
-/* Draw element i into the raster. */
+/* Element i's operations into r->dl. */
 static cf_status_t
-raster_element(cf_figure_t *fig, size_t i, const cf__layout_t *lay,
-               cf__dl_t *dl, cairo_t *cr)
+element_ops(cf_figure_t *fig, size_t i, const cf__layout_t *lay, raster_t *r)
 {
     cf_status_t st;
-    cf__dl_reset(dl);
-    st = cf__element_draw(fig, i, lay, dl);
-    if (dl->failed && st == CF_STATUS_OK)
+    cf__dl_reset(&r->dl);
+    st = cf__element_draw(fig, i, lay, &r->dl);
+    if (r->dl.failed && st == CF_STATUS_OK)
         st = cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
                          "out of memory placing labels");
-    if (st == CF_STATUS_OK)
-        cf__dl_play(dl, 0, dl->count, &cf__cairo_backend, cr);
     return st;
 }
 
-/* Whether element i is a label placed automatically; its anchor, text
-** and chosen place then. */
+/* Draw element i into cr. */
+static cf_status_t
+raster_element(cf_figure_t *fig, size_t i, const cf__layout_t *lay,
+               raster_t *r, cairo_t *cr)
+{
+    cf_status_t st = element_ops(fig, i, lay, r);
+    if (st == CF_STATUS_OK)
+        cf__dl_play(&r->dl, 0, r->dl.count, &cf__cairo_backend, cr);
+    return st;
+}
+
+/* Whether element i is a label; its anchor, text, place (its style's)
+** and where the place chosen automatically goes. */
 static bool
-is_auto(cf_figure_t *fig, size_t i, double *x, double *y, cf__text_t **t,
-        cf_place_t **place, cf_style_t *s)
+is_label(cf_figure_t *fig, size_t i, double *x, double *y, cf__text_t **t,
+         cf__auto_place_t **chosen, cf_style_t *s)
 {
     cf__element_t *e = fig->els[i];
     if (e->kind->auto_label == NULL)
         return false;
     cf__style_resolve(&fig->theme, e->role, &e->style, s);
-    if (s->place != CF_PLACE_AUTO)
-        return false;
-    return e->kind->auto_label(e, x, y, t, place);
+    return e->kind->auto_label(e, x, y, t, chosen);
 }
 
-/* The cheapest place of a label with ink box ink at page point (px, py). */
-static cf_place_t
-cheapest(cairo_surface_t *img, double res, const cf_label_t *lab,
-         const cf_style_t *s, double px, double py)
+/* The cheapest place and distance of a label at page point (px, py). */
+static void
+cheapest(const raster_t *r, const cf_label_t *lab, const cf_style_t *s,
+         double px, double py, cf__auto_place_t *chosen)
 {
     static const cf_place_t order[] = {
         CF_PLACE_NE, CF_PLACE_NW, CF_PLACE_SE, CF_PLACE_SW,
         CF_PLACE_N, CF_PLACE_S, CF_PLACE_E, CF_PLACE_W
     };
     double ink[4], best = INFINITY;
-    cf_place_t place = order[0];
-    size_t k;
+    size_t k, d;
     cf__label_ink(lab, ink);
+    chosen->place = order[0];
+    chosen->offset = s->offset;
+    for (d = 0; d < sizeof further / sizeof further[0]; d++)
+        for (k = 0; k < sizeof order / sizeof order[0]; k++) {
+            double ox, oy, c, off = s->offset + further[d];
+            cf__label_origin(lab, order[k], off, px, py, &ox, &oy);
+            c = place_cost(r, ink, ox, oy) + AUTO_FAR * further[d];
+            /* a later candidate must be clearly better (0.05 bp^2) */
+            if (c < best - 0.05) {
+                best = c;
+                chosen->place = order[k];
+                chosen->offset = off;
+            }
+        }
+}
+
+/* Pixels inked more than half both in one and in img, within the pixel
+** box px (x0 y0 x1 y1; NULL: everywhere). */
+static long
+common_pixels(cairo_surface_t *one, cairo_surface_t *img, const int *px)
+{
+    const unsigned char *a, *b;
+    int w, h, stride, i, j, i0 = 0, j0 = 0;
+    long n = 0;
+    cairo_surface_flush(one);
     cairo_surface_flush(img);
-    for (k = 0; k < sizeof order / sizeof order[0]; k++) {
-        double ox, oy, c;
-        cf__label_origin(lab, order[k], s->offset, px, py, &ox, &oy);
-        c = place_cost(img, res, ink, ox, oy);
-        /* a later place must be clearly better (0.05 bp^2) */
-        if (c < best - 0.05) {
-            best = c;
-            place = order[k];
+    a = cairo_image_surface_get_data(one);
+    b = cairo_image_surface_get_data(img);
+    w = cairo_image_surface_get_width(one);
+    h = cairo_image_surface_get_height(one);
+    stride = cairo_image_surface_get_stride(one);
+    if (px != NULL) {
+        i0 = px[0] > 0 ? px[0] : 0;
+        j0 = px[1] > 0 ? px[1] : 0;
+        w = px[2] < w ? px[2] : w;
+        h = px[3] < h ? px[3] : h;
+    }
+    for (j = j0; j < h; j++)
+        for (i = i0; i < w; i++) {
+            size_t at = (size_t)j * (size_t)stride + (size_t)i;
+            n += a[at] > HIT_ALPHA && b[at] > HIT_ALPHA;
+        }
+    return n;
+}
+
+static void
+clear(cairo_t *cr)
+{
+    cairo_save(cr);
+    cairo_set_operator(cr, CAIRO_OPERATOR_CLEAR);
+    cairo_paint(cr);
+    cairo_restore(cr);
+}
+
+/* Append a line to the figure's warnings. */
+static void
+warn(cf_figure_t *fig, const char *fmt, ...)
+{
+    char line[512];
+    size_t n;
+    char *t;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(line, sizeof line, fmt, ap);
+    va_end(ap);
+    n = strlen(line);
+    t = cf_realloc_array(fig->warnings, fig->warnings_len + n + 2, 1);
+    if (t == NULL)
+        return;
+    memcpy(t + fig->warnings_len, line, n);
+    t[fig->warnings_len + n] = '\n';
+    t[fig->warnings_len + n + 1] = '\0';
+    fig->warnings = t;
+    fig->warnings_len += n + 1;
+}
+
+/* The element of the page's ink most under label `lab` (drawn in r->one):
+** its index, or fig->count when none is found alone. */
+static size_t
+what_is_under(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
+              size_t lab, bool automatic, cairo_surface_t *mask)
+{
+    size_t j, worst = fig->count;
+    long most = 0;
+    for (j = 0; j < fig->count; j++) {
+        double x, y;
+        cf__text_t *t;
+        cf__auto_place_t *c;
+        cf_style_t s;
+        long n;
+        if (j == lab || (fig->els[j]->kind->flags & CF__KIND_SHADING))
+            continue;
+        /* the labels not yet in the raster */
+        if (is_label(fig, j, &x, &y, &t, &c, &s)
+            && ((s.place == CF_PLACE_AUTO) ? !automatic || j > lab
+                                           : !automatic && j > lab))
+            continue;
+        clear(r->cr1);
+        if (raster_element(fig, j, lay, r, r->cr1) != CF_STATUS_OK)
+            return fig->count;
+        n = common_pixels(r->one, mask, NULL);
+        if (n > most) {
+            most = n;
+            worst = j;
         }
     }
-    return place;
+    return worst;
+}
+
+static const char *const place_names[] = {
+    "center", "n", "ne", "e", "se", "s", "sw", "w", "nw", "auto"
+};
+
+/* Test label i (not yet in the raster) against the ink; a warning when
+** it lies on some.  Then add it to the raster. */
+static cf_status_t
+check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
+            size_t i, const cf__text_t *t, cf_place_t place, bool automatic)
+{
+    cairo_surface_t *mask;
+    cairo_t *mcr;
+    cf_status_t st;
+    double ink[4];
+    int px[4];
+    long n;
+    /* only the label's box is cleared, drawn and compared */
+    st = element_ops(fig, i, lay, r);
+    if (st != CF_STATUS_OK)
+        return st;
+    if (cf__cairo_ink(&r->dl, 0, r->dl.count, ink) != 0)
+        return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                           "cairo failed measuring a label");
+    if (!(ink[2] > ink[0] && ink[3] > ink[1]))
+        return CF_STATUS_OK;   /* nothing drawn */
+    px[0] = (int)floor(ink[0] * r->res) - 1;
+    px[1] = (int)floor(ink[1] * r->res) - 1;
+    px[2] = (int)ceil(ink[2] * r->res) + 1;
+    px[3] = (int)ceil(ink[3] * r->res) + 1;
+    cairo_save(r->cr1);
+    cairo_identity_matrix(r->cr1);
+    cairo_rectangle(r->cr1, px[0], px[1], px[2] - px[0], px[3] - px[1]);
+    cairo_set_operator(r->cr1, CAIRO_OPERATOR_CLEAR);
+    cairo_fill(r->cr1);
+    cairo_restore(r->cr1);
+    cf__dl_play(&r->dl, 0, r->dl.count, &cf__cairo_backend, r->cr1);
+    n = common_pixels(r->one, r->img, px);
+    if (n > 1) {
+        size_t j;
+        /* keep the label's mask: naming what is under it reuses r->one */
+        mask = cairo_image_surface_create(
+            CAIRO_FORMAT_A8, cairo_image_surface_get_width(r->one),
+            cairo_image_surface_get_height(r->one));
+        mcr = cairo_create(mask);
+        cairo_rectangle(mcr, px[0], px[1], px[2] - px[0], px[3] - px[1]);
+        cairo_clip(mcr);
+        cairo_set_source_surface(mcr, r->one, 0, 0);
+        cairo_paint(mcr);
+        cairo_destroy(mcr);
+        j = what_is_under(fig, lay, r, i, automatic, mask);
+        cairo_surface_destroy(mask);
+        if (j < fig->count)
+            warn(fig, "label \"%s\" (%s%s) lies on %s %zu", t->src,
+                 automatic ? "placed automatically " : "place ",
+                 place_names[place], fig->els[j]->kind->name, j + 1);
+        else
+            warn(fig, "label \"%s\" (%s%s) lies on ink", t->src,
+                 automatic ? "placed automatically " : "place ",
+                 place_names[place]);
+    }
+    cf__dl_play(&r->dl, 0, r->dl.count, &cf__cairo_backend, r->cr);
+    return CF_STATUS_OK;
+}
+
+static cf_status_t
+raster_open(cf_figure_t *fig, raster_t *r)
+{
+    int w, h;
+    r->res = AUTO_RES;
+    if (fig->width * fig->height * r->res * r->res > AUTO_MAX_PIXELS)
+        r->res = sqrt(AUTO_MAX_PIXELS / (fig->width * fig->height));
+    w = (int)ceil(fig->width * r->res);
+    h = (int)ceil(fig->height * r->res);
+    r->img = cairo_image_surface_create(CAIRO_FORMAT_A8, w, h);
+    r->one = cairo_image_surface_create(CAIRO_FORMAT_A8, w, h);
+    r->cr = cairo_create(r->img);
+    r->cr1 = cairo_create(r->one);
+    cf__dl_init(&r->dl);
+    if (cairo_status(r->cr) != CAIRO_STATUS_SUCCESS
+        || cairo_status(r->cr1) != CAIRO_STATUS_SUCCESS)
+        return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                           "out of memory placing labels");
+    cairo_scale(r->cr, r->res, r->res);
+    cairo_scale(r->cr1, r->res, r->res);
+    return CF_STATUS_OK;
+}
+
+static void
+raster_close(raster_t *r)
+{
+    cf__dl_free(&r->dl);
+    cairo_destroy(r->cr);
+    cairo_destroy(r->cr1);
+    cairo_surface_destroy(r->img);
+    cairo_surface_destroy(r->one);
 }
 
 cf_status_t
-cf__place_auto_labels(cf_figure_t *fig, const cf__layout_t *lay)
+cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay)
 {
-    cairo_surface_t *img;
-    cairo_t *cr;
-    cf__dl_t dl;
+    raster_t r;
     cf_style_t s;
     cf__text_t *t;
-    cf_place_t *place;
-    double res = AUTO_RES, x, y;
+    cf__auto_place_t *chosen;
+    double x, y;
     size_t i;
     bool any = false;
-    cf_status_t st = CF_STATUS_OK;
+    cf_status_t st;
 
+    cf_free(fig->warnings);
+    fig->warnings = NULL;
+    fig->warnings_len = 0;
     for (i = 0; i < fig->count && !any; i++)
-        any = is_auto(fig, i, &x, &y, &t, &place, &s);
+        any = is_label(fig, i, &x, &y, &t, &chosen, &s);
     if (!any)
         return CF_STATUS_OK;
-    if (fig->width * fig->height * res * res > AUTO_MAX_PIXELS)
-        res = sqrt(AUTO_MAX_PIXELS / (fig->width * fig->height));
-    img = cairo_image_surface_create(CAIRO_FORMAT_A8,
-                                     (int)ceil(fig->width * res),
-                                     (int)ceil(fig->height * res));
-    cr = cairo_create(img);
-    if (cairo_status(cr) != CAIRO_STATUS_SUCCESS) {
-        cairo_destroy(cr);
-        cairo_surface_destroy(img);
-        return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                           "out of memory placing labels");
-    }
-    cairo_scale(cr, res, res);
-    cf__dl_init(&dl);
+    st = raster_open(fig, &r);
     /* fills and hulls left out: labels may sit on a shading */
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
         if ((fig->els[i]->kind->flags & CF__KIND_SHADING)
-            || is_auto(fig, i, &x, &y, &t, &place, &s))
+            || is_label(fig, i, &x, &y, &t, &chosen, &s))
             continue;
-        st = raster_element(fig, i, lay, &dl, cr);
+        st = raster_element(fig, i, lay, &r, r.cr);
+    }
+    /* the labels placed by hand first: the automatic ones avoid them */
+    for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
+        if (!is_label(fig, i, &x, &y, &t, &chosen, &s)
+            || s.place == CF_PLACE_AUTO || !cf__in_window(lay, x, y))
+            continue;
+        st = check_label(fig, lay, &r, i, t, s.place, false);
     }
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
         double px, py;
-        if (!is_auto(fig, i, &x, &y, &t, &place, &s)
-            || !cf__in_window(lay, x, y))
+        if (!is_label(fig, i, &x, &y, &t, &chosen, &s)
+            || s.place != CF_PLACE_AUTO || !cf__in_window(lay, x, y))
             continue;
         st = cf__text_ensure(fig, t, s.font_size);
-        if (st != CF_STATUS_OK)
-            break;
+        if (st != CF_STATUS_OK || t->lab == NULL)
+            continue;
         cf__map(lay, x, y, &px, &py);
-        *place = cheapest(img, res, t->lab, &s, px, py);
-        st = raster_element(fig, i, lay, &dl, cr);
+        cairo_surface_flush(r.img);
+        cheapest(&r, t->lab, &s, px, py, chosen);
+        st = check_label(fig, lay, &r, i, t, chosen->place, true);
     }
-    cf__dl_free(&dl);
-    cairo_destroy(cr);
-    cairo_surface_destroy(img);
+    raster_close(&r);
     return st;
+}
+
+const char *
+cf_figure_warnings(const cf_figure_t *fig)
+{
+    return fig != NULL && fig->warnings != NULL ? fig->warnings : "";
 }

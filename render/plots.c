@@ -134,74 +134,19 @@ cf_figure_add_graph_list(cf_figure_t *fig, const cf_bezier_list_t *list,
     return cf__element_commit(fig, e, st);
 }
 
-/* U padded by p knots at each end, spaced the length of U: out receives
-** m + 2p knots whose middle m are U. */
-static void
-pad_knots(const double *knots, size_t m, int p, double *out)
-{
-    double h = knots[m - 1] - knots[0];
-    for (int r = 0; r < p; r++) {
-        out[r] = knots[0] - h * (p - r);
-        out[m + (size_t)p + (size_t)r] = knots[m - 1] + h * (r + 1);
-    }
-    memcpy(out + p, knots, m * sizeof *knots);
-}
-
-/* The graph of N_i^p over the whole knot vector [u_0, u_{m-1}].  The
-** spline with the single coefficient e_{i+p} on U padded by p knots at
-** each end (spacing the length of U, or 1) equals N_i^p on the padded
-** domain, which contains [u_0, u_{m-1}]: N_i^p depends only on
-** u_i .. u_{i+p+1}, so the padding does not change it.  Its Bézier pieces
-** over [u_0, u_{m-1}] are the graph, exact. */
+/* The graph of N_i^p over the whole knot vector [u_0, u_{m-1}]: the Bézier
+** pieces of the core's spline of that one basis function, exact. */
 cf_status_t
 cf_figure_add_basis(cf_figure_t *fig, const double *knots, size_t nknots,
                     int i, int p, const cf_style_t *style)
 {
     cf_bspline_t *spl = NULL;
     cf_bezier_list_t *list = NULL;
-    double *pu, *coef;
-    size_t m = nknots, count, k;
     cf_status_t st;
     CF__FIG_CHECK(fig);
-    if (knots == NULL)
-        return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                           "basis: knots are NULL");
-    if (p < 0 || p > CF_BSPLINE_MAX_DEGREE)
-        return cf_diag_set(&fig->err, CF_STATUS_BAD_DEGREE, -1,
-                           "basis: degree %d is outside 0 .. %d", p,
-                           CF_BSPLINE_MAX_DEGREE);
-    if (i < 0 || (size_t)i + (size_t)p + 2 > m)
-        return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, i,
-                           "basis: N_%d^%d needs knots u_%d .. u_%d; %zu "
-                           "given", i, p, i, i + p + 1, m);
-    if (cf_check_finite_points(knots, m, 1, 1, "knot", &fig->err)
-        != CF_STATUS_OK || cf__fig_check_style(fig, style) != CF_STATUS_OK)
+    if (cf__fig_check_style(fig, style) != CF_STATUS_OK)
         return fig->err.status;
-    for (k = 1; k < m; k++)
-        if (knots[k] < knots[k - 1])
-            return cf_diag_set(&fig->err, CF_STATUS_BAD_KNOTS, (long)k,
-                               "basis: knot %zu (%g) is smaller than knot %zu "
-                               "(%g)", k, knots[k], k - 1, knots[k - 1]);
-    if (!(knots[m - 1] > knots[0]))
-        return cf_diag_set(&fig->err, CF_STATUS_BAD_KNOTS, -1,
-                           "basis: the knots span no interval (all %g)",
-                           knots[0]);
-    count = m + (size_t)p - 1;
-    pu = cf_alloc_array(m + 2 * (size_t)p, sizeof *pu);
-    coef = cf_calloc(count, sizeof *coef);
-    if (pu == NULL || coef == NULL) {
-        cf_free(pu);
-        cf_free(coef);
-        return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                           "out of memory for a basis function");
-    }
-    pad_knots(knots, m, p, pu);
-    coef[(size_t)i + (size_t)p] = 1.0;
-    /* the padded spline's domain [pu_p, pu_{count}] is [u_0, u_{m-1}] */
-    st = cf_bspline_create(1, p, pu, m + 2 * (size_t)p, coef, count, NULL,
-                           &spl, &fig->err);
-    cf_free(pu);
-    cf_free(coef);
+    st = cf_basis_one_spline(i, p, knots, nknots, &spl, &fig->err);
     if (st == CF_STATUS_OK)
         st = cf_bspline_to_beziers(spl, &list, &fig->err);
     cf_bspline_destroy(spl);

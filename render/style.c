@@ -42,6 +42,7 @@ name_index(const char *name, const char *const *names, size_t count)
 cf_status_t
 cf_unit_from_name(const char *name, cf_unit_t *out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     static const char *const names[] = { "bp", "pt", "texpt", "mm", "cm",
                                          "in" };
     static const cf_unit_t units[] = { CF_UNIT_BP, CF_UNIT_PT, CF_UNIT_TEXPT,
@@ -104,6 +105,7 @@ rgb_color(unsigned rgb, double a)
 cf_status_t
 cf_color_parse(const char *text, cf_color_t *out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     size_t i, len;
     if (text == NULL || out == NULL)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
@@ -143,6 +145,7 @@ cf_color_parse(const char *text, cf_color_t *out, cf_diag_t *diag)
 cf_status_t
 cf_marker_from_name(const char *name, cf_marker_t *out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     static const char *const names[CF_MARKER_LAST_] = {
         "none", "dot", "circle", "square", "diamond", "triangle", "cross",
         "plus", "star", "tick"
@@ -164,6 +167,7 @@ cf_marker_from_name(const char *name, cf_marker_t *out, cf_diag_t *diag)
 cf_status_t
 cf_place_from_name(const char *name, cf_place_t *out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     static const char *const names[] = {
         "center", "n", "ne", "e", "se", "s", "sw", "w", "nw",
         "centre", "above", "right", "below", "left", "auto"
@@ -387,6 +391,7 @@ theme_default(cf_theme_t *t)
     t->role[CF_ROLE_LABEL] = role_style(0x000000, 0.5, CF_MARKER_NONE, 0,
                                         0x000000);
     t->role[CF_ROLE_LABEL].offset = 4.0;   /* clear of a 3.6 bp dot */
+    t->role[CF_ROLE_LABEL].place = CF_PLACE_AUTO;
     t->role[CF_ROLE_ARROW] = role_style(0xb22222, 0.9, CF_MARKER_NONE, 0,
                                         0xb22222);
     t->role[CF_ROLE_ARROW].arrow_size = 6.0;
@@ -439,6 +444,7 @@ theme_mono(cf_theme_t *t)
 cf_status_t
 cf_theme_get(const char *name, cf_theme_t *out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     if (name == NULL || out == NULL)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
                            "theme name or output is NULL");

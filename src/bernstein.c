@@ -104,7 +104,7 @@ cf_bernstein_eval(int n, const double *coef, double t, double *out)
     if (coef == NULL || out == NULL)
         return CF_STATUS_INVALID_ARG;
     memcpy(v, coef, ((size_t)n + 1) * sizeof *v);
-    *out = cf__decasteljau_1(v, n, t);
+    *out = cf__bp_decasteljau(v, n, t);
     return CF_STATUS_OK;
 }
 
@@ -164,6 +164,7 @@ apply(int n, entry_fn e, const double *in, double *out)
 cf_status_t
 cf_bernstein_to_power_matrix(int n, double *M, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = check_matrix_degree(n, M, diag);
     if (st != CF_STATUS_OK)
         return st;
@@ -174,6 +175,7 @@ cf_bernstein_to_power_matrix(int n, double *M, cf_diag_t *diag)
 cf_status_t
 cf_power_to_bernstein_matrix(int n, double *Minv, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = check_matrix_degree(n, Minv, diag);
     if (st != CF_STATUS_OK)
         return st;
@@ -190,18 +192,20 @@ cf_power_to_bernstein_matrix(int n, double *Minv, cf_diag_t *diag)
 cf_status_t
 cf_bernstein_from_power(int n, const double *a, double *b, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = check_matrix_degree(n, a, diag);
     if (st == CF_STATUS_OK)
         st = check_matrix_degree(n, b, diag);
     if (st != CF_STATUS_OK)
         return st;
-    apply(n, minv_entry, a, b);
+    cf__bp_from_power(a, n, 1.0, b);
     return CF_STATUS_OK;
 }
 
 cf_status_t
 cf_bernstein_to_power(int n, const double *b, double *a, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = check_matrix_degree(n, a, diag);
     if (st == CF_STATUS_OK)
         st = check_matrix_degree(n, b, diag);
@@ -215,6 +219,7 @@ cf_status_t
 cf_bernstein_approx(cf_real_func_t f, void *ud, int n, double *coef,
                     cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     if (f == NULL || coef == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "the function or the coefficient array is NULL");
@@ -235,6 +240,7 @@ cf_status_t
 cf_bernstein_approx_curve(cf_real_func_t f, void *ud, int n,
                           cf_bezier_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     double coef[MAXN + 1];
     cf_bezier_t *c;
     cf_status_t st;

@@ -4,7 +4,7 @@
 **
 ** Degree <= 3 polynomial curves are converted exactly (degree raised to 3).
 ** Planar curves otherwise go through the offset machinery at d = 0
-** (cf__fit_plain, offset.c / offset-fit.c): split at the zeros of c', each
+** (cf__fit_plain, offset-chain.c / offset-fit.c): split at the zeros of c', each
 ** piece covered by the longest cubics matching end points, end tangents,
 ** signed area and x-moment (Levien), accepted by their measured two-sided
 ** Hausdorff distance.
@@ -147,6 +147,7 @@ cf_status_t
 cf_bezier_to_cubics(const cf_bezier_t *c, double tol, cf_cubics_t **out,
                     cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_cubics_t *r;
     fit f;
     double *seg;
@@ -155,39 +156,15 @@ cf_bezier_to_cubics(const cf_bezier_t *c, double tol, cf_cubics_t **out,
     st = check_args(c, tol, out, diag);
     if (st != CF_STATUS_OK)
         return st;
-    r = cf__calloc(1, sizeof *r);
-    if (r == NULL)
-        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory (cubic segments)");
-    r->dim = c->dim;
     if (!c->rational && c->degree <= 3) {
-        r->pts = cf__alloc_array(4 * c->dim, sizeof *r->pts);
-        r->t = cf__alloc_array(2, sizeof *r->t);
-        if (r->pts == NULL || r->t == NULL) {
-            cf_cubics_destroy(r);
+        if (cf__cubics_exact(c, out) != CF_STATUS_OK)
             return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
                              "out of memory (cubic segments)");
-        }
-        memcpy(r->pts, c->pts,
-               ((size_t)c->degree + 1) * c->dim * sizeof *r->pts);
-        if (c->degree == 0)
-            memcpy(r->pts + c->dim, c->pts, c->dim * sizeof *r->pts);
-        /* raise to 3: degree 0 is first made a segment (degree 1) */
-        {
-            int from = c->degree == 0 ? 1 : c->degree;
-            cf__elevate_in_place(r->pts, c->dim, from, 3 - from);
-        }
-        r->count = 1;
-        r->t[0] = 0.0;
-        r->t[1] = 1.0;
-        r->max_error = 0.0;
-        *out = r;
         return CF_STATUS_OK;
     }
     if (c->dim == 2) {
         cf_cubics_t *fit2 = NULL;
         bool converged = true;
-        cf__free(r);
         if (cf__deriv_scale(c) == 0.0) {
             /* a single point: one constant segment */
             double p[2], pt4[8];
@@ -221,6 +198,11 @@ cf_bezier_to_cubics(const cf_bezier_t *c, double tol, cf_cubics_t **out,
         *out = fit2;
         return CF_STATUS_OK;
     }
+    r = cf__calloc(1, sizeof *r);
+    if (r == NULL)
+        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
+                         "out of memory (cubic segments)");
+    r->dim = c->dim;
     memset(&f, 0, sizeof f);
     f.c = c;
     f.tol = tol;
@@ -279,6 +261,7 @@ cf_status_t
 cf_bezier_to_cubics_bounded(const cf_bezier_t *c, double tol,
                             cf_cubics_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_cubics_t *r;
     size_t dim, count;
     double m4, pieces, *d0, *d1;
@@ -338,14 +321,4 @@ cf_bezier_to_cubics_bounded(const cf_bezier_t *c, double tol,
     cf__free(d0);
     *out = r;
     return CF_STATUS_OK;
-}
-
-void
-cf_cubics_destroy(cf_cubics_t *cubics)
-{
-    if (cubics == NULL)
-        return;
-    cf__free(cubics->pts);
-    cf__free(cubics->t);
-    cf__free(cubics);
 }

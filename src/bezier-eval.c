@@ -1,5 +1,6 @@
 /*
-** Batch evaluation of Bézier curves: the fast path behind
+** Evaluation of Bézier curves: points and derivatives by de Casteljau (one
+** parameter), the de Casteljau triangle, and the fast batch path behind
 ** cf_bezier_eval_many and cf_bezier_eval_deriv_many.
 **
 ** For a polynomial curve of degree n <= FAST_MAX each coordinate is
@@ -23,6 +24,224 @@
 
 #include "bezier-private.h"
 
+#define MAXN CF_BEZIER_MAX_DEGREE
+
+/* ---- evaluation ---------------------------------------------------------- */
+
+void
+cf__bezier_eval_point(const cf_bezier_t *c, double t, double *out)
+{
+    double v[MAXN + 1], w = 1.0;
+    int n = c->degree;
+    if (c->rational) {
+        for (int i = 0; i <= n; i++)
+            v[i] = c->pts[(size_t)i * c->hdim + c->dim];
+        w = cf__bp_decasteljau(v, n, t);
+    }
+    for (size_t k = 0; k < c->dim; k++) {
+        for (int i = 0; i <= n; i++)
+            v[i] = c->pts[(size_t)i * c->hdim + k];
+        out[k] = cf__bp_decasteljau(v, n, t);
+        if (c->rational)
+            out[k] /= w;
+    }
+}
+
+cf_status_t
+cf_bezier_eval(const cf_bezier_t *c, double t, double *out)
+{
+    cf_status_t st;
+    if (c == NULL || out == NULL)
+        return CF_STATUS_INVALID_ARG;
+    st = cf__bezier_check_param(t);
+    if (st != CF_STATUS_OK)
+        return st;
+    cf__bezier_eval_point(c, t, out);
+    return CF_STATUS_OK;
+}
+
+/*
+** Derivatives 0..kk of a polynomial of degree n with Bernstein coefficients
+** v[0..n] (destroyed) at t: de Casteljau down to level n - kk, then the j-th
+** derivative is n!/(n-j)! times de Casteljau of the j-th forward
+** differences of those kk + 1 points (differences commute with de
+** Casteljau's convex combinations).
+*/
+static void
+poly_derivs(double *v, int n, double t, int kk, double *res)
+{
+    double tmp[MAXN + 1], s = 1.0 - t, fac = 1.0;
+    for (int r = n; r > kk; r--)
+        for (int i = 0; i < r; i++)
+            v[i] = s * v[i] + t * v[i + 1];
+    for (int j = 0; j <= kk; j++) {
+        int m = kk - j;
+        memcpy(tmp, v, ((size_t)m + 1) * sizeof tmp[0]);
+        res[j] = fac * cf__bp_decasteljau(tmp, m, t);
+        fac *= (double)(n - j);
+        for (int i = 0; i < m; i++)
+            v[i] = v[i + 1] - v[i];
+    }
+}
+
+void
+cf__bezier_coord_derivs(const cf_bezier_t *c, size_t coord, double t, int k,
+                        double *res)
+{
+    double v[MAXN + 1], wd[MAXN + 1], binom[MAXN + 2];
+    int n = c->degree, kk = k < n ? k : n;
+
+    for (int i = 0; i <= n; i++)
+        v[i] = c->pts[(size_t)i * c->hdim + coord];
+    poly_derivs(v, n, t, kk, res);
+    for (int j = kk + 1; j <= k; j++)
+        res[j] = 0.0;
+    if (!c->rational)
+        return;
+    for (int i = 0; i <= n; i++)
+        v[i] = c->pts[(size_t)i * c->hdim + c->dim];
+    poly_derivs(v, n, t, kk, wd);
+    /* A = w x  =>  x^(m) = (A^(m) - sum_{j=1..m} C(m,j) w^(j) x^(m-j)) / w */
+    binom[0] = 1.0;
+    for (int m = 0; m <= k; m++) {
+        double a = res[m];
+        int jmax = m < kk ? m : kk;
+        if (m > 0) {
+            binom[m] = 1.0;
+            for (int j = m - 1; j > 0; j--)
+                binom[j] += binom[j - 1];
+        }
+        for (int j = 1; j <= jmax; j++)
+            a -= binom[j] * wd[j] * res[m - j];
+        res[m] = a / wd[0];
+    }
+}
+
+cf_status_t
+cf_bezier_eval_derivs(const cf_bezier_t *c, double t, int k, double *out)
+{
+    double res[MAXN + 1];
+    cf_status_t st;
+    if (c == NULL || out == NULL || k < 0)
+        return CF_STATUS_INVALID_ARG;
+    if (k > MAXN)
+        return CF_STATUS_BAD_DEGREE;
+    st = cf__bezier_check_param(t);
+    if (st != CF_STATUS_OK)
+        return st;
+    for (size_t d = 0; d < c->dim; d++) {
+        cf__bezier_coord_derivs(c, d, t, k, res);
+        for (int j = 0; j <= k; j++)
+            out[(size_t)j * c->dim + d] = res[j];
+    }
+    return CF_STATUS_OK;
+}
+
+static cf_status_t
+check_params(const double *t, size_t n)
+{
+    /* A branch-free pass first (NaN and infinities fail the comparisons,
+    ** so every bad parameter fails it); the per-parameter loop below runs
+    ** only to find and classify a bad one.  This check was most of the
+    ** time of a cubic batch evaluation when it branched per parameter. */
+    int ok = 1;
+    for (size_t i = 0; i < n; i++)
+        ok &= (t[i] >= 0.0) & (t[i] <= 1.0);
+    if (ok)
+        return CF_STATUS_OK;
+    for (size_t i = 0; i < n; i++) {
+        cf_status_t st = cf__bezier_check_param(t[i]);
+        if (st != CF_STATUS_OK)
+            return st;
+    }
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_bezier_eval_deriv_many(const cf_bezier_t *c, int k, const double *t,
+                          size_t n, double *out)
+{
+    double res[MAXN + 1];
+    cf_status_t st;
+    if (c == NULL || (n > 0 && (t == NULL || out == NULL)) || k < 0)
+        return CF_STATUS_INVALID_ARG;
+    if (k > MAXN)
+        return CF_STATUS_BAD_DEGREE;
+    st = check_params(t, n);
+    if (st != CF_STATUS_OK)
+        return st;
+    if (k == 0)
+        return cf__bezier_eval_many_fast(c, t, n, out);
+    if (!c->rational && cf__bezier_deriv_many_fast(c, k, t, n, out))
+        return CF_STATUS_OK;
+    for (size_t i = 0; i < n; i++)
+        for (size_t d = 0; d < c->dim; d++) {
+            cf__bezier_coord_derivs(c, d, t[i], k, res);
+            out[i * c->dim + d] = res[k];
+        }
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_bezier_eval_many(const cf_bezier_t *c, const double *t, size_t n,
+                    double *out)
+{
+    cf_status_t st;
+    if (c == NULL || (n > 0 && (t == NULL || out == NULL)))
+        return CF_STATUS_INVALID_ARG;
+    st = check_params(t, n);
+    if (st != CF_STATUS_OK)
+        return st;
+    return cf__bezier_eval_many_fast(c, t, n, out);
+}
+
+size_t
+cf_bezier_decasteljau_size(const cf_bezier_t *c)
+{
+    size_t n1;
+    if (c == NULL)
+        return 0;
+    n1 = (size_t)c->degree + 1;
+    return n1 * (n1 + 1) / 2 * c->dim;
+}
+
+cf_status_t
+cf_bezier_decasteljau(const cf_bezier_t *c, double t, double *out)
+{
+    double v[MAXN + 1], w[MAXN + 1], s;
+    int n;
+    cf_status_t st;
+    if (c == NULL || out == NULL)
+        return CF_STATUS_INVALID_ARG;
+    st = cf__bezier_check_param(t);
+    if (st != CF_STATUS_OK)
+        return st;
+    n = c->degree;
+    s = 1.0 - t;
+    for (size_t k = 0; k < c->dim; k++) {
+        size_t base = 0;   /* first point of the current level */
+        for (int i = 0; i <= n; i++) {
+            v[i] = c->pts[(size_t)i * c->hdim + k];
+            w[i] = c->rational ? c->pts[(size_t)i * c->hdim + c->dim] : 1.0;
+        }
+        for (int r = 0; r <= n; r++) {
+            if (r > 0) {
+                for (int i = 0; i <= n - r; i++) {
+                    v[i] = s * v[i] + t * v[i + 1];
+                    if (c->rational)
+                        w[i] = s * w[i] + t * w[i + 1];
+                }
+            }
+            for (int i = 0; i <= n - r; i++)
+                out[(base + (size_t)i) * c->dim + k] =
+                    c->rational ? v[i] / w[i] : v[i];
+            base += (size_t)(n - r) + 1;
+        }
+    }
+    return CF_STATUS_OK;
+}
+
+/* ---- the fast batch path ------------------------------------------------ */
 
 /* Fused multiply-adds where the target has them (the x86-64-v3 and v4
 ** clones): they only remove roundings; the accuracy test runs whichever
@@ -43,12 +262,6 @@
                                  "default")))
 #else
 #define CF__CLONES
-#endif
-
-#if defined(__GNUC__)
-#define CF__INLINE static inline __attribute__((always_inline))
-#else
-#define CF__INLINE static inline
 #endif
 
 /* a[i] = C(n, i) p[i * stride] */

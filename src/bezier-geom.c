@@ -2,11 +2,8 @@
 ** Geometry of Bézier curves: tight bounding box, arc length, closest point,
 ** flattening to a polyline, degree reduction.
 **
-** Roots of polynomials are found in the Bernstein form by subdivision: a
-** polynomial whose coefficients on an interval have no sign change has no
-** root there; one sign change between end values of opposite sign means
-** exactly one root (Descartes' rule for the Bernstein basis), found by
-** bisection to full precision; otherwise the interval is halved.
+** Extremes and closest points are roots of polynomials in the Bernstein
+** form (cf__bp_roots, by subdivision with Descartes' rule of signs).
 */
 #include <float.h>
 #include <math.h>
@@ -15,120 +12,9 @@
 #include "bezier-private.h"
 
 #define MAXN CF_BEZIER_MAX_DEGREE
-#define ROOT_DEPTH 60
 
-/* ---- roots of a Bernstein polynomial on [0, 1] ---------------------------- */
-
-typedef struct roots {
-    int n;
-    double *work;      /* (ROOT_DEPTH + 2) * 2 * (n + 1) + (n + 1) */
-    double *t;         /* found roots */
-    size_t count, cap;
-} roots;
-
-static cf_status_t
-roots_init(roots *r, int n)
-{
-    size_t n1 = (size_t)n + 1;
-    r->n = n;
-    r->count = 0;
-    r->cap = 2 * n1 + 8;
-    r->work = cf__alloc_array((ROOT_DEPTH + 2) * 2 * n1 + n1,
-                              sizeof *r->work);
-    r->t = cf__alloc_array(r->cap, sizeof *r->t);
-    if (r->work == NULL || r->t == NULL) {
-        cf__free(r->work);
-        cf__free(r->t);
-        return CF_STATUS_NO_MEMORY;
-    }
-    return CF_STATUS_OK;
-}
-
-static void
-roots_fini(roots *r)
-{
-    cf__free(r->work);
-    cf__free(r->t);
-}
-
-static void
-roots_add(roots *r, double t)
-{
-    if (r->count < r->cap)
-        r->t[r->count++] = t;
-}
-
-static double
-eval_local(roots *r, const double *coef, double u)
-{
-    double *tmp = r->work + (ROOT_DEPTH + 2) * 2 * ((size_t)r->n + 1);
-    memcpy(tmp, coef, ((size_t)r->n + 1) * sizeof *tmp);
-    return cf__decasteljau_1(tmp, r->n, u);
-}
-
-static void
-roots_rec(roots *r, const double *coef, double a, double b, int depth)
-{
-    int n = r->n, changes = 0;
-    double last = 0.0;
-    size_t n1 = (size_t)n + 1;
-    double *left, *right;
-
-    for (int i = 0; i <= n; i++) {
-        if (coef[i] == 0.0)
-            continue;
-        if (last != 0.0 && (coef[i] > 0.0) != (last > 0.0))
-            changes++;
-        last = coef[i];
-    }
-    if (changes == 0)
-        return;
-    if (changes == 1 && coef[0] != 0.0 && coef[n] != 0.0 &&
-        (coef[0] > 0.0) != (coef[n] > 0.0)) {
-        /* exactly one simple root: bisection in the local parameter */
-        double lo = 0.0, hi = 1.0, flo = coef[0];
-        for (int it = 0; it < 200; it++) {
-            double mid = 0.5 * (lo + hi), fm;
-            if (!(a + mid * (b - a) > a + lo * (b - a) &&
-                  a + mid * (b - a) < a + hi * (b - a)))
-                break;
-            fm = eval_local(r, coef, mid);
-            if (fm == 0.0) {
-                lo = hi = mid;
-                break;
-            }
-            if ((fm > 0.0) == (flo > 0.0)) {
-                lo = mid;
-                flo = fm;
-            } else {
-                hi = mid;
-            }
-        }
-        roots_add(r, a + 0.5 * (lo + hi) * (b - a));
-        return;
-    }
-    if (depth >= ROOT_DEPTH || b - a <= 4 * DBL_EPSILON) {
-        roots_add(r, 0.5 * (a + b));   /* a cluster of roots */
-        return;
-    }
-    left = r->work + (size_t)depth * 2 * n1;
-    right = left + n1;
-    cf__split_h(coef, 1, n, 0.5, left, right);
-    roots_rec(r, left, a, 0.5 * (a + b), depth + 1);
-    if (right[0] == 0.0)
-        roots_add(r, 0.5 * (a + b));   /* a root exactly at the midpoint */
-    roots_rec(r, right, 0.5 * (a + b), b, depth + 1);
-}
-
-/* Roots in (0, 1) of the polynomial with coefficients coef[0..n] (not
-** modified).  r must be initialised for degree n. */
-static void
-find_roots(roots *r, const double *coef)
-{
-    r->count = 0;
-    if (r->n >= 1)
-        roots_rec(r, coef, 0.0, 1.0, 0);
-}
+/* Room for the roots of a polynomial of degree m. */
+#define ROOTS_CAP(m) (2 * ((size_t)(m) + 1) + 8)
 
 /*
 ** Coefficients (degree returned) of the numerator of the derivative of
@@ -153,10 +39,8 @@ deriv_numerator(const cf_bezier_t *c, size_t k, double *out, double *tmp)
         tmp[n + i] = (double)n * (c->pts[(size_t)(i + 1) * h + c->dim] -
                                   c->pts[(size_t)i * h + c->dim]);
     }
-    cf__bernstein_product(tmp, n - 1, 1, c->pts + c->dim, n, h, out, 1, 1.0,
-                          false);
-    cf__bernstein_product(c->pts + k, n, h, tmp + n, n - 1, 1, out, 1, -1.0,
-                          true);
+    cf__bp_mul(tmp, n - 1, 1, c->pts + c->dim, n, h, out, 1, 1.0, false);
+    cf__bp_mul(c->pts + k, n, h, tmp + n, n - 1, 1, out, 1, -1.0, true);
     return 2 * n - 1;
 }
 
@@ -173,8 +57,8 @@ coord_at(const cf_bezier_t *c, size_t k, double t)
 cf_status_t
 cf_bezier_bbox(const cf_bezier_t *c, double *lo, double *hi)
 {
-    roots r;
-    double *coef;
+    double *coef, *rt;
+    size_t nr;
     int n, m;
     if (c == NULL || lo == NULL || hi == NULL)
         return CF_STATUS_INVALID_ARG;
@@ -191,23 +75,23 @@ cf_bezier_bbox(const cf_bezier_t *c, double *lo, double *hi)
     m = c->rational ? 2 * n - 1 : n - 1;
     if (m > MAXN)
         return CF_STATUS_BAD_DEGREE;
-    coef = cf__alloc_array(((size_t)m + 1) + 2 * (size_t)n, sizeof *coef);
+    coef = cf__alloc_array(((size_t)m + 1) + 2 * (size_t)n + ROOTS_CAP(m),
+                           sizeof *coef);
     if (coef == NULL)
         return CF_STATUS_NO_MEMORY;
-    if (roots_init(&r, m) != CF_STATUS_OK) {
-        cf__free(coef);
-        return CF_STATUS_NO_MEMORY;
-    }
+    rt = coef + ((size_t)m + 1) + 2 * (size_t)n;
     for (size_t k = 0; k < c->dim; k++) {
         deriv_numerator(c, k, coef, coef + m + 1);
-        find_roots(&r, coef);
-        for (size_t i = 0; i < r.count; i++) {
-            double v = coord_at(c, k, r.t[i]);
+        if (cf__bp_roots(coef, m, rt, ROOTS_CAP(m), &nr) != CF_STATUS_OK) {
+            cf__free(coef);
+            return CF_STATUS_NO_MEMORY;
+        }
+        for (size_t i = 0; i < nr; i++) {
+            double v = coord_at(c, k, rt[i]);
             lo[k] = fmin(lo[k], v);
             hi[k] = fmax(hi[k], v);
         }
     }
-    roots_fini(&r);
     cf__free(coef);
     return CF_STATUS_OK;
 }
@@ -299,8 +183,9 @@ cf_bezier_closest(const cf_bezier_t *c, const double *p, double *t,
 {
     int n, m;
     size_t h, dim, n1;
-    double *buf, *coef, *num, *e, *tmp, *q, best_t = 0.0, best = INFINITY;
-    roots r;
+    double *buf, *coef, *num, *e, *tmp, *q, *rt, best_t = 0.0,
+           best = INFINITY;
+    size_t nr = 0;
 
     if (c == NULL || p == NULL)
         return CF_STATUS_INVALID_ARG;
@@ -319,7 +204,7 @@ cf_bezier_closest(const cf_bezier_t *c, const double *p, double *t,
     if (m > MAXN)
         return CF_STATUS_BAD_DEGREE;
     buf = cf__alloc_array((size_t)m + 1 + 2 * (size_t)m + 2 + n1 + 2 * n1 +
-                              dim, sizeof *buf);
+                              dim + ROOTS_CAP(m), sizeof *buf);
     if (buf == NULL)
         return CF_STATUS_NO_MEMORY;
     coef = buf;                    /* m + 1 */
@@ -327,11 +212,8 @@ cf_bezier_closest(const cf_bezier_t *c, const double *p, double *t,
     e = num + 2 * (size_t)m + 2;   /* n + 1 */
     tmp = e + n1;                  /* 2n */
     q = tmp + 2 * n1;              /* dim */
+    rt = q + dim;                  /* the roots */
     if (n >= 1) {
-        if (roots_init(&r, m) != CF_STATUS_OK) {
-            cf__free(buf);
-            return CF_STATUS_NO_MEMORY;
-        }
         memset(coef, 0, ((size_t)m + 1) * sizeof *coef);
         for (size_t k = 0; k < dim; k++) {
             int dn = deriv_numerator(c, k, num, tmp);
@@ -339,16 +221,15 @@ cf_bezier_closest(const cf_bezier_t *c, const double *p, double *t,
                 e[i] = c->pts[(size_t)i * h + k] -
                        p[k] * (c->rational ? c->pts[(size_t)i * h + dim]
                                            : 1.0);
-            cf__bernstein_product(e, n, 1, num, dn, 1, coef, 1, 1.0, true);
+            cf__bp_mul(e, n, 1, num, dn, 1, coef, 1, 1.0, true);
         }
-        find_roots(&r, coef);
-    } else {
-        r.count = 0;
-        r.t = NULL;
-        r.work = NULL;
+        if (cf__bp_roots(coef, m, rt, ROOTS_CAP(m), &nr) != CF_STATUS_OK) {
+            cf__free(buf);
+            return CF_STATUS_NO_MEMORY;
+        }
     }
-    for (size_t i = 0; i < r.count + 2; i++) {
-        double tt = i == 0 ? 0.0 : i == 1 ? 1.0 : r.t[i - 2], d2 = 0.0;
+    for (size_t i = 0; i < nr + 2; i++) {
+        double tt = i == 0 ? 0.0 : i == 1 ? 1.0 : rt[i - 2], d2 = 0.0;
         cf__bezier_eval_point(c, tt, q);
         for (size_t k = 0; k < dim; k++)
             d2 += (q[k] - p[k]) * (q[k] - p[k]);
@@ -357,8 +238,6 @@ cf_bezier_closest(const cf_bezier_t *c, const double *p, double *t,
             best_t = tt;
         }
     }
-    if (n >= 1)
-        roots_fini(&r);
     cf__free(buf);
     if (t != NULL)
         *t = best_t;
@@ -433,7 +312,7 @@ flat_rec(flat *f, const double *pts, double a, double b, int depth)
     }
     left = f->work + (size_t)depth * 2 * sz;
     right = left + sz;
-    cf__split_h(pts, f->c->hdim, f->c->degree, 0.5, left, right);
+    cf__bp_split(pts, f->c->hdim, f->c->degree, 0.5, left, right);
     flat_rec(f, left, a, 0.5 * (a + b), depth + 1);
     flat_rec(f, right, 0.5 * (a + b), b, depth + 1);
 }
@@ -472,6 +351,7 @@ cf_status_t
 cf_bezier_reduce(const cf_bezier_t *c, cf_bezier_t **out, double *max_error,
                  cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     int n;
     size_t h, dim;
     cf_bezier_t *r;

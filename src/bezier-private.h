@@ -6,11 +6,13 @@
 #ifndef CURVEFIG_BEZIER_PRIVATE_H
 #define CURVEFIG_BEZIER_PRIVATE_H
 
+#include <math.h>
 #include <stdbool.h>
 #include <stddef.h>
 
 #include "curvefig/bezier.h"
 #include "core-private.h"
+#include "bpoly-private.h"
 
 /*
 ** One allocation: the header followed by (degree + 1) * hdim doubles.
@@ -35,15 +37,20 @@ cf_status_t cf__bezier_from_hpoints(size_t dim, int degree, bool rational,
                                     const double *hpts, cf_bezier_t **out,
                                     cf_diag_t *diag);
 
+/* The status of a curve parameter t: NOT_FINITE, DOMAIN outside [0, 1],
+** or OK. */
+static inline cf_status_t
+cf__bezier_check_param(double t)
+{
+    if (!isfinite(t))
+        return CF_STATUS_NOT_FINITE;
+    if (t < 0.0 || t > 1.0)
+        return CF_STATUS_DOMAIN;
+    return CF_STATUS_OK;
+}
+
 /* A list of count NULL items (t0/t1 allocated when with_params). */
 cf_bezier_list_t *cf__bezier_list_new(size_t count, bool with_params);
-
-/* de Casteljau on one coordinate: v[0..n] (destroyed) at t; returns c(t). */
-double cf__decasteljau_1(double *v, int n, double t);
-
-/* Evaluate the stored (homogeneous when rational) point at t into
-** out[hdim], by de Casteljau, without allocating. */
-void cf__bezier_eval_h(const cf_bezier_t *c, double t, double *out);
 
 /* The Cartesian point at t into out[dim] by de Casteljau; no checks. */
 void cf__bezier_eval_point(const cf_bezier_t *c, double t, double *out);
@@ -57,11 +64,6 @@ void cf__bezier_coord_derivs(const cf_bezier_t *c, size_t coord, double t,
 ** used for relative tolerances). */
 double cf__bezier_size(const cf_bezier_t *c);
 
-/* Split stored points src (degree n, hdim doubles each) at t into left and
-** right (either may be NULL; left may not alias src, right may). */
-void cf__split_h(const double *src, size_t hdim, int n, double t,
-                 double *left, double *right);
-
 /* Batch evaluation of points (no checks; t already validated): a fast
 ** Horner-Bernstein scheme for polynomial curves of low degree, de Casteljau
 ** otherwise.  Never allocates. */
@@ -72,17 +74,5 @@ cf_status_t cf__bezier_eval_many_fast(const cf_bezier_t *c, const double *t,
 ** apply (rational or high degree). */
 bool cf__bezier_deriv_many_fast(const cf_bezier_t *c, int k, const double *t,
                                 size_t n, double *out);
-
-/* Elevate pts (degree m, stored with room for degree m + r, hdim doubles
-** per point) r times, in place: Q_i = i/(m+1) P_{i-1} + (1 - i/(m+1)) P_i. */
-void cf__elevate_in_place(double *pts, size_t hdim, int m, int r);
-
-/* Bernstein product: f (degree nf, stride sf) times g (degree ng, stride
-** sg) into h (degree nf + ng <= CF_BEZIER_MAX_DEGREE, stride sh), times
-** sign, added to h when accumulate:
-** h_k = sum_{i+j=k} C(nf,i) C(ng,j) / C(nf+ng,k) f_i g_j. */
-void cf__bernstein_product(const double *f, int nf, size_t sf,
-                           const double *g, int ng, size_t sg, double *h,
-                           size_t sh, double sign, bool accumulate);
 
 #endif

@@ -1,7 +1,8 @@
 /*
 ** Bézier curves in R^N, polynomial and rational: construction, queries,
-** evaluation (de Casteljau), derivatives, subdivision, reversal, affine
-** maps, degree elevation and the derivative as a curve.
+** tangents and curvature, subdivision, reversal, affine maps, degree
+** elevation and the derivative as a curve.  Evaluation is in
+** bezier-eval.c.
 **
 ** Rational curves are stored homogeneously, (w x, w); every construction
 ** below runs on the stored points unchanged and divides by w only when a
@@ -86,6 +87,7 @@ cf_status_t
 cf_bezier_create(size_t dim, int degree, const double *points,
                  const double *weights, cf_bezier_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = check_common(dim, degree, points, out, diag);
     size_t np;
     cf_bezier_t *c;
@@ -126,6 +128,7 @@ cf_status_t
 cf_bezier_create_homogeneous(size_t dim, int degree, const double *hpoints,
                              cf_bezier_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = check_common(dim, degree, hpoints, out, diag);
     size_t np;
 
@@ -152,6 +155,7 @@ cf_bezier_create_homogeneous(size_t dim, int degree, const double *hpoints,
 cf_status_t
 cf_bezier_copy(const cf_bezier_t *c, cf_bezier_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     if (out == NULL || c == NULL) {
         if (out != NULL)
             *out = NULL;
@@ -230,253 +234,6 @@ cf__bezier_size(const cf_bezier_t *c)
     return m;
 }
 
-/* ---- evaluation ---------------------------------------------------------- */
-
-static cf_status_t
-check_param(double t)
-{
-    if (!isfinite(t))
-        return CF_STATUS_NOT_FINITE;
-    if (t < 0.0 || t > 1.0)
-        return CF_STATUS_DOMAIN;
-    return CF_STATUS_OK;
-}
-
-double
-cf__decasteljau_1(double *v, int n, double t)
-{
-    double s = 1.0 - t;
-    for (int r = n; r > 0; r--)
-        for (int i = 0; i < r; i++)
-            v[i] = s * v[i] + t * v[i + 1];
-    return v[0];
-}
-
-void
-cf__bezier_eval_h(const cf_bezier_t *c, double t, double *out)
-{
-    double v[MAXN + 1];
-    int n = c->degree;
-    for (size_t k = 0; k < c->hdim; k++) {
-        for (int i = 0; i <= n; i++)
-            v[i] = c->pts[(size_t)i * c->hdim + k];
-        out[k] = cf__decasteljau_1(v, n, t);
-    }
-}
-
-void
-cf__bezier_eval_point(const cf_bezier_t *c, double t, double *out)
-{
-    double v[MAXN + 1], w = 1.0;
-    int n = c->degree;
-    if (c->rational) {
-        for (int i = 0; i <= n; i++)
-            v[i] = c->pts[(size_t)i * c->hdim + c->dim];
-        w = cf__decasteljau_1(v, n, t);
-    }
-    for (size_t k = 0; k < c->dim; k++) {
-        for (int i = 0; i <= n; i++)
-            v[i] = c->pts[(size_t)i * c->hdim + k];
-        out[k] = cf__decasteljau_1(v, n, t);
-        if (c->rational)
-            out[k] /= w;
-    }
-}
-
-cf_status_t
-cf_bezier_eval(const cf_bezier_t *c, double t, double *out)
-{
-    cf_status_t st;
-    if (c == NULL || out == NULL)
-        return CF_STATUS_INVALID_ARG;
-    st = check_param(t);
-    if (st != CF_STATUS_OK)
-        return st;
-    cf__bezier_eval_point(c, t, out);
-    return CF_STATUS_OK;
-}
-
-/*
-** Derivatives 0..kk of a polynomial of degree n with Bernstein coefficients
-** v[0..n] (destroyed) at t: de Casteljau down to level n - kk, then the j-th
-** derivative is n!/(n-j)! times de Casteljau of the j-th forward
-** differences of those kk + 1 points (differences commute with de
-** Casteljau's convex combinations).
-*/
-static void
-poly_derivs(double *v, int n, double t, int kk, double *res)
-{
-    double tmp[MAXN + 1], s = 1.0 - t, fac = 1.0;
-    for (int r = n; r > kk; r--)
-        for (int i = 0; i < r; i++)
-            v[i] = s * v[i] + t * v[i + 1];
-    for (int j = 0; j <= kk; j++) {
-        int m = kk - j;
-        memcpy(tmp, v, ((size_t)m + 1) * sizeof tmp[0]);
-        res[j] = fac * cf__decasteljau_1(tmp, m, t);
-        fac *= (double)(n - j);
-        for (int i = 0; i < m; i++)
-            v[i] = v[i + 1] - v[i];
-    }
-}
-
-void
-cf__bezier_coord_derivs(const cf_bezier_t *c, size_t coord, double t, int k,
-                        double *res)
-{
-    double v[MAXN + 1], wd[MAXN + 1], binom[MAXN + 2];
-    int n = c->degree, kk = k < n ? k : n;
-
-    for (int i = 0; i <= n; i++)
-        v[i] = c->pts[(size_t)i * c->hdim + coord];
-    poly_derivs(v, n, t, kk, res);
-    for (int j = kk + 1; j <= k; j++)
-        res[j] = 0.0;
-    if (!c->rational)
-        return;
-    for (int i = 0; i <= n; i++)
-        v[i] = c->pts[(size_t)i * c->hdim + c->dim];
-    poly_derivs(v, n, t, kk, wd);
-    /* A = w x  =>  x^(m) = (A^(m) - sum_{j=1..m} C(m,j) w^(j) x^(m-j)) / w */
-    binom[0] = 1.0;
-    for (int m = 0; m <= k; m++) {
-        double a = res[m];
-        int jmax = m < kk ? m : kk;
-        if (m > 0) {
-            binom[m] = 1.0;
-            for (int j = m - 1; j > 0; j--)
-                binom[j] += binom[j - 1];
-        }
-        for (int j = 1; j <= jmax; j++)
-            a -= binom[j] * wd[j] * res[m - j];
-        res[m] = a / wd[0];
-    }
-}
-
-cf_status_t
-cf_bezier_eval_derivs(const cf_bezier_t *c, double t, int k, double *out)
-{
-    double res[MAXN + 1];
-    cf_status_t st;
-    if (c == NULL || out == NULL || k < 0)
-        return CF_STATUS_INVALID_ARG;
-    if (k > MAXN)
-        return CF_STATUS_BAD_DEGREE;
-    st = check_param(t);
-    if (st != CF_STATUS_OK)
-        return st;
-    for (size_t d = 0; d < c->dim; d++) {
-        cf__bezier_coord_derivs(c, d, t, k, res);
-        for (int j = 0; j <= k; j++)
-            out[(size_t)j * c->dim + d] = res[j];
-    }
-    return CF_STATUS_OK;
-}
-
-static cf_status_t
-check_params(const double *t, size_t n)
-{
-    /* A branch-free pass first (NaN and infinities fail the comparisons,
-    ** so every bad parameter fails it); the per-parameter loop below runs
-    ** only to find and classify a bad one.  This check was most of the
-    ** time of a cubic batch evaluation when it branched per parameter. */
-    int ok = 1;
-    for (size_t i = 0; i < n; i++)
-        ok &= (t[i] >= 0.0) & (t[i] <= 1.0);
-    if (ok)
-        return CF_STATUS_OK;
-    for (size_t i = 0; i < n; i++) {
-        cf_status_t st = check_param(t[i]);
-        if (st != CF_STATUS_OK)
-            return st;
-    }
-    return CF_STATUS_OK;
-}
-
-cf_status_t
-cf_bezier_eval_deriv_many(const cf_bezier_t *c, int k, const double *t,
-                          size_t n, double *out)
-{
-    double res[MAXN + 1];
-    cf_status_t st;
-    if (c == NULL || (n > 0 && (t == NULL || out == NULL)) || k < 0)
-        return CF_STATUS_INVALID_ARG;
-    if (k > MAXN)
-        return CF_STATUS_BAD_DEGREE;
-    st = check_params(t, n);
-    if (st != CF_STATUS_OK)
-        return st;
-    if (k == 0)
-        return cf__bezier_eval_many_fast(c, t, n, out);
-    if (!c->rational && cf__bezier_deriv_many_fast(c, k, t, n, out))
-        return CF_STATUS_OK;
-    for (size_t i = 0; i < n; i++)
-        for (size_t d = 0; d < c->dim; d++) {
-            cf__bezier_coord_derivs(c, d, t[i], k, res);
-            out[i * c->dim + d] = res[k];
-        }
-    return CF_STATUS_OK;
-}
-
-cf_status_t
-cf_bezier_eval_many(const cf_bezier_t *c, const double *t, size_t n,
-                    double *out)
-{
-    cf_status_t st;
-    if (c == NULL || (n > 0 && (t == NULL || out == NULL)))
-        return CF_STATUS_INVALID_ARG;
-    st = check_params(t, n);
-    if (st != CF_STATUS_OK)
-        return st;
-    return cf__bezier_eval_many_fast(c, t, n, out);
-}
-
-size_t
-cf_bezier_decasteljau_size(const cf_bezier_t *c)
-{
-    size_t n1;
-    if (c == NULL)
-        return 0;
-    n1 = (size_t)c->degree + 1;
-    return n1 * (n1 + 1) / 2 * c->dim;
-}
-
-cf_status_t
-cf_bezier_decasteljau(const cf_bezier_t *c, double t, double *out)
-{
-    double v[MAXN + 1], w[MAXN + 1], s;
-    int n;
-    cf_status_t st;
-    if (c == NULL || out == NULL)
-        return CF_STATUS_INVALID_ARG;
-    st = check_param(t);
-    if (st != CF_STATUS_OK)
-        return st;
-    n = c->degree;
-    s = 1.0 - t;
-    for (size_t k = 0; k < c->dim; k++) {
-        size_t base = 0;   /* first point of the current level */
-        for (int i = 0; i <= n; i++) {
-            v[i] = c->pts[(size_t)i * c->hdim + k];
-            w[i] = c->rational ? c->pts[(size_t)i * c->hdim + c->dim] : 1.0;
-        }
-        for (int r = 0; r <= n; r++) {
-            if (r > 0) {
-                for (int i = 0; i <= n - r; i++) {
-                    v[i] = s * v[i] + t * v[i + 1];
-                    if (c->rational)
-                        w[i] = s * w[i] + t * w[i + 1];
-                }
-            }
-            for (int i = 0; i <= n - r; i++)
-                out[(base + (size_t)i) * c->dim + k] =
-                    c->rational ? v[i] / w[i] : v[i];
-            base += (size_t)(n - r) + 1;
-        }
-    }
-    return CF_STATUS_OK;
-}
-
 /* ---- tangent, normal, curvature ------------------------------------------ */
 
 /* |c^(j)(t)|^2 and a scale below which it counts as zero. */
@@ -520,7 +277,7 @@ cf_bezier_tangent(const cf_bezier_t *c, double t, double *out)
     cf_status_t st;
     if (c == NULL || out == NULL)
         return CF_STATUS_INVALID_ARG;
-    st = check_param(t);
+    st = cf__bezier_check_param(t);
     if (st != CF_STATUS_OK)
         return st;
     j = first_nonzero_deriv(c, t);
@@ -567,7 +324,7 @@ cf_bezier_normal(const cf_bezier_t *c, double t, double *out)
         out[1] = tg[0];
         return CF_STATUS_OK;
     }
-    st = check_param(t);
+    st = cf__bezier_check_param(t);
     if (st != CF_STATUS_OK)
         return st;
     d12_sums(c, t, &s11, &s22, &s12);
@@ -594,7 +351,7 @@ cf_bezier_curvature(const cf_bezier_t *c, double t, double *kappa)
     cf_status_t st;
     if (c == NULL || kappa == NULL)
         return CF_STATUS_INVALID_ARG;
-    st = check_param(t);
+    st = cf__bezier_check_param(t);
     if (st != CF_STATUS_OK)
         return st;
     if (c->dim == 1) {
@@ -630,90 +387,6 @@ cf_bezier_curvature(const cf_bezier_t *c, double t, double *kappa)
 }
 
 /* ---- subdivision ---------------------------------------------------------- */
-
-/* The planar split on a local interleaved array (the same operations as
-** below), with the degree a constant after inlining so that the loops
-** unroll.  x and y stay together: the compiler pairs them in one vector
-** register, and every load meets a store of the same width (separate x
-** and y arrays made it pair neighbours and stall on store forwarding). */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void
-split2(int n, const double *src, double t, double *left, double *right)
-{
-    double q[32], s = 1.0 - t;
-    memcpy(q, src, 2 * ((size_t)n + 1) * sizeof *q);
-    for (int r = 1; r <= n; r++) {
-        left[2 * (r - 1)] = q[0];
-        left[2 * (r - 1) + 1] = q[1];
-        for (int i = 0; i <= n - r; i++) {
-            q[2 * i] = s * q[2 * i] + t * q[2 * i + 2];
-            q[2 * i + 1] = s * q[2 * i + 1] + t * q[2 * i + 3];
-        }
-    }
-    left[2 * n] = q[0];
-    left[2 * n + 1] = q[1];
-    memcpy(right, q, 2 * ((size_t)n + 1) * sizeof *q);
-}
-
-static void
-split2_const(int n, const double *src, double t, double *left,
-             double *right)
-{
-    switch (n) {
-    case 0: split2(0, src, t, left, right); break;
-    case 1: split2(1, src, t, left, right); break;
-    case 2: split2(2, src, t, left, right); break;
-    case 3: split2(3, src, t, left, right); break;
-    case 4: split2(4, src, t, left, right); break;
-    case 5: split2(5, src, t, left, right); break;
-    case 6: split2(6, src, t, left, right); break;
-    case 7: split2(7, src, t, left, right); break;
-    default: split2(n, src, t, left, right); break;
-    }
-}
-
-void
-cf__split_h(const double *src, size_t hdim, int n, double t, double *left,
-            double *right)
-{
-    double s = 1.0 - t;
-    size_t np = (size_t)n + 1;
-    if (hdim == 2 && n >= 0 && n <= 15 && left != NULL && right != NULL) {
-        split2_const(n, src, t, left, right);
-        return;
-    }
-    if (right != NULL) {
-        /* in place in right: after level r, right[0] = P_{r,0} and
-        ** right[n-r] = P_{r,n-r} stays fixed from then on */
-        if (right != src)
-            memmove(right, src, np * hdim * sizeof *right);
-        for (int r = 1; r <= n; r++) {
-            if (left != NULL)
-                memcpy(left + (size_t)(r - 1) * hdim, right,
-                       hdim * sizeof *right);
-            for (size_t i = 0; i + (size_t)r <= (size_t)n; i++) {
-                double *a = right + i * hdim, *b = a + hdim;
-                for (size_t k = 0; k < hdim; k++)
-                    a[k] = s * a[k] + t * b[k];
-            }
-        }
-        if (left != NULL)
-            memcpy(left + (size_t)n * hdim, right, hdim * sizeof *right);
-    } else if (left != NULL) {
-        /* in place in left, from the top: after level r, left[r] = P_{r,0} */
-        if (left != src)
-            memmove(left, src, np * hdim * sizeof *left);
-        for (int r = 1; r <= n; r++) {
-            for (size_t i = (size_t)n; i >= (size_t)r; i--) {
-                double *b = left + i * hdim, *a = b - hdim;
-                for (size_t k = 0; k < hdim; k++)
-                    b[k] = s * a[k] + t * b[k];
-            }
-        }
-    }
-}
 
 static cf_status_t
 check_curve(const cf_bezier_t *c, cf_diag_t *diag)
@@ -752,6 +425,7 @@ cf_status_t
 cf_bezier_split(const cf_bezier_t *c, double t, cf_bezier_t **left,
                 cf_bezier_t **right, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_bezier_t *l = NULL, *r = NULL;
     cf_status_t st;
     if (left != NULL)
@@ -776,8 +450,8 @@ cf_bezier_split(const cf_bezier_t *c, double t, cf_bezier_t **left,
             return no_memory(diag, "right half of a split");
         }
     }
-    cf__split_h(c->pts, c->hdim, c->degree, t, l != NULL ? l->pts : NULL,
-                r != NULL ? r->pts : NULL);
+    cf__bp_split(c->pts, c->hdim, c->degree, t, l != NULL ? l->pts : NULL,
+                 r != NULL ? r->pts : NULL);
     if (left != NULL)
         *left = l;
     if (right != NULL)
@@ -796,7 +470,7 @@ cf_bezier_split_into(const cf_bezier_t *c, double t, double *left_hpoints,
         return CF_STATUS_NOT_FINITE;
     if (!(t > 0.0 && t < 1.0))
         return CF_STATUS_DOMAIN;
-    cf__split_h(c->pts, c->hdim, c->degree, t, left_hpoints, right_hpoints);
+    cf__bp_split(c->pts, c->hdim, c->degree, t, left_hpoints, right_hpoints);
     return CF_STATUS_OK;
 }
 
@@ -804,6 +478,7 @@ cf_status_t
 cf_bezier_segment(const cf_bezier_t *c, double a, double b,
                   cf_bezier_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_bezier_t *s;
     cf_status_t st;
     st = begin_op(c, out, diag);
@@ -823,9 +498,9 @@ cf_bezier_segment(const cf_bezier_t *c, double a, double b,
     memcpy(s->pts, c->pts,
            ((size_t)c->degree + 1) * c->hdim * sizeof(double));
     if (b < 1.0)
-        cf__split_h(s->pts, s->hdim, s->degree, b, s->pts, NULL);
+        cf__bp_split(s->pts, s->hdim, s->degree, b, s->pts, NULL);
     if (a > 0.0)
-        cf__split_h(s->pts, s->hdim, s->degree, a / b, NULL, s->pts);
+        cf__bp_split(s->pts, s->hdim, s->degree, a / b, NULL, s->pts);
     *out = s;
     return CF_STATUS_OK;
 }
@@ -833,6 +508,7 @@ cf_bezier_segment(const cf_bezier_t *c, double a, double b,
 cf_status_t
 cf_bezier_reverse(const cf_bezier_t *c, cf_bezier_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_bezier_t *r;
     cf_status_t st;
     st = begin_op(c, out, diag);
@@ -853,37 +529,22 @@ cf_status_t
 cf_bezier_transform(const cf_bezier_t *c, const double *A, const double *b,
                     cf_bezier_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_bezier_t *r;
     cf_status_t st;
     size_t dim;
     st = begin_op(c, out, diag);
     if (st != CF_STATUS_OK)
         return st;
-    if (A == NULL)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "the matrix is NULL");
     dim = c->dim;
-    st = cf__check_finite_points(A, dim, dim, dim, "matrix row", diag);
-    if (st == CF_STATUS_OK && b != NULL)
-        st = cf__check_finite_points(b, 1, dim, dim, "translation", diag);
+    st = cf__check_affine(A, b, dim, diag);
     if (st != CF_STATUS_OK)
         return st;
     r = cf__bezier_new(dim, c->degree, c->rational);
     if (r == NULL)
         return no_memory(diag, "transformed curve");
-    for (int i = 0; i <= c->degree; i++) {
-        const double *p = c->pts + (size_t)i * c->hdim;
-        double *q = r->pts + (size_t)i * c->hdim;
-        double w = c->rational ? p[dim] : 1.0;
-        for (size_t k = 0; k < dim; k++) {
-            double s = 0.0;
-            for (size_t j = 0; j < dim; j++)
-                s += A[k * dim + j] * p[j];
-            q[k] = s + (b != NULL ? b[k] * w : 0.0);
-        }
-        if (c->rational)
-            q[dim] = w;
-    }
+    cf__affine_points(A, b, dim, c->rational, c->pts, (size_t)c->degree + 1,
+                      c->hdim, r->pts);
     st = cf__check_finite_points(r->pts, (size_t)c->degree + 1, r->hdim,
                                  r->hdim, "transformed point", diag);
     if (st != CF_STATUS_OK) {
@@ -894,26 +555,11 @@ cf_bezier_transform(const cf_bezier_t *c, const double *A, const double *b,
     return CF_STATUS_OK;
 }
 
-void
-cf__elevate_in_place(double *pts, size_t hdim, int m, int r)
-{
-    for (int step = 0; step < r; step++, m++) {
-        double inv = 1.0 / (double)(m + 1);
-        memcpy(pts + (size_t)(m + 1) * hdim, pts + (size_t)m * hdim,
-               hdim * sizeof *pts);
-        for (int i = m; i >= 1; i--) {
-            double a = (double)i * inv, b = (double)(m + 1 - i) * inv;
-            double *q = pts + (size_t)i * hdim;
-            for (size_t k = 0; k < hdim; k++)
-                q[k] = a * q[(ptrdiff_t)k - (ptrdiff_t)hdim] + b * q[k];
-        }
-    }
-}
-
 cf_status_t
 cf_bezier_elevate(const cf_bezier_t *c, int r, cf_bezier_t **out,
                   cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_bezier_t *e;
     cf_status_t st;
     st = begin_op(c, out, diag);
@@ -928,42 +574,12 @@ cf_bezier_elevate(const cf_bezier_t *c, int r, cf_bezier_t **out,
         return no_memory(diag, "elevated curve");
     memcpy(e->pts, c->pts,
            ((size_t)c->degree + 1) * c->hdim * sizeof(double));
-    cf__elevate_in_place(e->pts, e->hdim, c->degree, r);
+    cf__bp_elevate(e->pts, e->hdim, c->degree, r);
     *out = e;
     return CF_STATUS_OK;
 }
 
 /* ---- the derivative as a curve ------------------------------------------- */
-
-static void
-binomial_row(int n, double *row)
-{
-    row[0] = 1.0;
-    for (int i = 1; i <= n; i++)
-        row[i] = nearbyint(row[i - 1] * (double)(n - i + 1) / (double)i);
-}
-
-void
-cf__bernstein_product(const double *f, int nf, size_t sf, const double *g,
-                  int ng, size_t sg, double *h, size_t sh, double sign,
-                  bool accumulate)
-{
-    double bf[MAXN + 1], bg[MAXN + 1], bh[MAXN + 1];
-    binomial_row(nf, bf);
-    binomial_row(ng, bg);
-    binomial_row(nf + ng, bh);
-    for (int k = 0; k <= nf + ng; k++) {
-        double s = 0.0;
-        int i0 = k - ng > 0 ? k - ng : 0, i1 = k < nf ? k : nf;
-        for (int i = i0; i <= i1; i++)
-            s += bf[i] * bg[k - i] / bh[k] * f[(size_t)i * sf] *
-                 g[(size_t)(k - i) * sg];
-        if (accumulate)
-            h[(size_t)k * sh] += sign * s;
-        else
-            h[(size_t)k * sh] = sign * s;
-    }
-}
 
 /* (A/w)' = (A' w - A w') / w^2, as a rational curve of degree 2n. */
 static cf_status_t
@@ -1000,16 +616,16 @@ rational_derivative(const cf_bezier_t *c, cf_bezier_t **out, cf_diag_t *diag)
                              c->pts[(size_t)i * h + k]);
     /* numerator, degree 2n - 1, stored at stride h in d->pts */
     for (size_t k = 0; k < dim; k++) {
-        cf__bernstein_product(diff + k, n - 1, h, c->pts + dim, n, h,
-                          d->pts + k, h, 1.0, false);
-        cf__bernstein_product(c->pts + k, n, h, diff + dim, n - 1, h,
-                          d->pts + k, h, -1.0, true);
+        cf__bp_mul(diff + k, n - 1, h, c->pts + dim, n, h, d->pts + k, h,
+                   1.0, false);
+        cf__bp_mul(c->pts + k, n, h, diff + dim, n - 1, h, d->pts + k, h,
+                   -1.0, true);
     }
     for (int i = 0; i < 2 * n; i++)
         d->pts[(size_t)i * h + dim] = 1.0;   /* any value: the weights are overwritten below */
-    cf__elevate_in_place(d->pts, h, 2 * n - 1, 1);
-    cf__bernstein_product(c->pts + dim, n, h, c->pts + dim, n, h, d->pts + dim,
-                      h, 1.0, false);
+    cf__bp_elevate(d->pts, h, 2 * n - 1, 1);
+    cf__bp_mul(c->pts + dim, n, h, c->pts + dim, n, h, d->pts + dim, h, 1.0,
+               false);
     cf__free(diff);
     *out = d;
     return CF_STATUS_OK;
@@ -1027,7 +643,7 @@ check_derivative(cf_bezier_t *d, cf_diag_t *diag)
             if (!isfinite(v)) {
                 cf__free(d);
                 return cf__error(diag, CF_STATUS_NOT_FINITE, i,
-                                 "derivative: control point %d overflows "
+                                 "control point %d overflows "
                                  "(coordinate %zu is %g)", i, k + 1, v);
             }
         }
@@ -1038,6 +654,7 @@ cf_status_t
 cf_bezier_derivative(const cf_bezier_t *c, int k, cf_bezier_t **out,
                      cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_bezier_t *cur;
     cf_status_t st;
     st = begin_op(c, out, diag);

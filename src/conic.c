@@ -1,5 +1,6 @@
 /*
-** Conics as exact quadratic (rational) Bézier curves.
+** Conics as exact quadratic (rational) Bézier curves, and NURBS arcs and
+** circles.
 **
 ** A conic arc between P0 and P2 with end tangents meeting at P1 is the
 ** rational quadratic (P0, P1, P2; 1, w, 1).  On the unit circle, the piece
@@ -13,6 +14,7 @@
 
 #include "curvefig/conic.h"
 #include "bezier-private.h"
+#include "bspline-private.h"
 
 #define MAX_PIECES 100000
 
@@ -177,6 +179,7 @@ cf_status_t
 cf_conic_arc(double cx, double cy, double r, double a0, double a1,
              cf_bezier_list_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     static const char *const names[] = { "center x", "center y", "radius",
                                           "start angle", "end angle" };
     const double v[] = { cx, cy, r, a0, a1 };
@@ -195,6 +198,7 @@ cf_status_t
 cf_conic_circle(double cx, double cy, double r, cf_bezier_list_t **out,
                 cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     /* quadrant points and corners of the unit square, exact */
     static const double q[4][6] = {
         { 1, 0, 1, 1, 0, 1 },
@@ -226,6 +230,7 @@ cf_conic_ellipse(double cx, double cy, double a, double b, double rotation,
                  double t0, double t1, cf_bezier_list_t **out,
                  cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     static const char *const names[] = { "center x", "center y",
                                          "semi-axis a", "semi-axis b",
                                          "rotation", "start parameter",
@@ -248,6 +253,7 @@ cf_status_t
 cf_conic_parabola(double vx, double vy, double f, double axis, double u0,
                   double u1, cf_bezier_list_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     static const char *const names[] = { "vertex x", "vertex y",
                                          "focal length", "axis angle",
                                          "start parameter",
@@ -287,6 +293,7 @@ cf_conic_hyperbola(double cx, double cy, double a, double b, double rotation,
                    double s0, double s1, cf_bezier_list_t **out,
                    cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     static const char *const names[] = { "center x", "center y",
                                          "semi-axis a", "semi-axis b",
                                          "rotation", "start parameter",
@@ -312,4 +319,104 @@ cf_conic_hyperbola(double cx, double cy, double a, double b, double rotation,
     n = (size_t)ceil((s1 - s0) / 2.0 * (1.0 - 1e-12));
     affine_init(&A, cx, cy, a, b, rotation);
     return unit_pieces(&A, s0, s1, n < 1 ? 1 : n, true, out, diag);
+}
+
+/* ---- NURBS conics ------------------------------------------------------- */
+
+cf_status_t
+cf_nurbs_arc(size_t dim, const double *O, const double *X, const double *Y,
+             double r, double a0, double a1, cf_bspline_t **out,
+             cf_diag_t *diag)
+{
+    cf_diag_clear(diag);
+    double sweep = a1 - a0, dth, w1;
+    size_t narcs, count, nk;
+    double *U = NULL, *H = NULL;
+    cf_status_t st;
+    if (out != NULL)
+        *out = NULL;
+    if (out == NULL || O == NULL || X == NULL || Y == NULL || dim < 2
+        || dim > CF__BSPLINE_MAX_COUNT)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "NULL argument or dimension below 2");
+    if (!isfinite(r) || !isfinite(a0) || !isfinite(a1))
+        return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
+                         "radius or angles are not finite");
+    if (!(r > 0.0))
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "radius %g must be positive", r);
+    if (!(sweep > 0.0) || sweep > 2.0 * CF__PI * (1.0 + 1e-15))
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "sweep %g must be in (0, 2 pi]", sweep);
+    /* one quadratic rational piece per quarter turn or less */
+    narcs = (size_t)ceil(sweep / (0.5 * CF__PI) - 1e-12);
+    if (narcs < 1)
+        narcs = 1;
+    if (narcs > 4)
+        narcs = 4;
+    dth = sweep / (double)narcs;
+    w1 = cos(0.5 * dth);
+    count = 2 * narcs + 1;
+    nk = count + 3;
+    U = cf__alloc_array(nk, sizeof *U);
+    H = cf__alloc_array(count, (dim + 1) * sizeof *H);
+    if (U == NULL || H == NULL) {
+        st = cf__error(diag, CF_STATUS_NO_MEMORY, -1, "out of memory");
+        goto done;
+    }
+    for (size_t i = 0; i < 3; i++) {
+        U[i] = 0.0;
+        U[nk - 1 - i] = 1.0;
+    }
+    for (size_t i = 1; i < narcs; i++)
+        U[1 + 2 * i] = U[2 + 2 * i] = (double)i / (double)narcs;
+    for (size_t i = 0; i < count; i++) {
+        /* even points on the circle, odd points at the intersection of the
+        ** end tangents, at distance r / cos(dth / 2) from O */
+        double th = a0 + 0.5 * dth * (double)i;
+        double w = (i % 2 == 0) ? 1.0 : w1;
+        double rr = (i % 2 == 0) ? r : r / w1;
+        double cs = cos(th), sn = sin(th);
+        if (i == count - 1) {
+            cs = cos(a1);
+            sn = sin(a1);
+        }
+        for (size_t d = 0; d < dim; d++)
+            H[i * (dim + 1) + d] = w * (O[d] + rr * (cs * X[d] + sn * Y[d]));
+        H[i * (dim + 1) + dim] = w;
+    }
+    st = cf_bspline_create_homogeneous(dim, 2, U, nk, H, count, out, diag);
+done:
+    cf__free(U);
+    cf__free(H);
+    return st;
+}
+
+cf_status_t
+cf_nurbs_circle(const double *centre, double r, cf_bspline_t **out,
+                cf_diag_t *diag)
+{
+    cf_diag_clear(diag);
+    static const double U[12] = { 0, 0, 0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75,
+                                  1, 1, 1 };
+    static const double dx[9] = { 1, 1, 0, -1, -1, -1, 0, 1, 1 };
+    static const double dy[9] = { 0, 1, 1, 1, 0, -1, -1, -1, 0 };
+    double P[18], W[9];
+    if (out != NULL)
+        *out = NULL;
+    if (centre == NULL || out == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "NULL argument");
+    if (!isfinite(r) || !isfinite(centre[0]) || !isfinite(centre[1]))
+        return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
+                         "centre or radius is not finite");
+    if (!(r > 0.0))
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "radius %g must be positive", r);
+    for (int i = 0; i < 9; i++) {
+        P[2 * i] = centre[0] + r * dx[i];
+        P[2 * i + 1] = centre[1] + r * dy[i];
+        W[i] = (i % 2 == 0) ? 1.0 : sqrt(0.5);
+    }
+    return cf_bspline_create(2, 2, U, 12, P, 9, W, out, diag);
 }

@@ -5,6 +5,7 @@
 #define CURVEFIG_CORE_PRIVATE_H
 
 #include <stdarg.h>
+#include <stdbool.h>
 #include <stddef.h>
 
 #include "curvefig/core.h"
@@ -14,9 +15,12 @@
 #if defined(__GNUC__)
 #define CF__PRINTF(f, a) __attribute__((format(printf, f, a)))
 #define CF__UNLIKELY(x) __builtin_expect(!!(x), 0)
+/* a small kernel inlined into its loop even at -O2 */
+#define CF__INLINE static inline __attribute__((always_inline))
 #else
 #define CF__PRINTF(f, a)
 #define CF__UNLIKELY(x) (x)
+#define CF__INLINE static inline
 #endif
 
 /*
@@ -43,6 +47,20 @@ cf_status_t cf__check_finite_points(const double *pts, size_t count,
                                     const char *what, cf_diag_t *diag);
 cf_status_t cf__check_weights(const double *w, size_t count,
                               cf_diag_t *diag);
+
+/* The affine map x -> A x + b of R^dim (A row-major dim x dim, b NULL for
+** none): A and b finite (INVALID_ARG, NOT_FINITE naming "matrix row" or
+** "translation"), then applied to count points at `stride` doubles each,
+** homogeneous (w x, w) when rational (b scaled by w, w kept).  dst may be
+** src. */
+cf_status_t cf__check_affine(const double *A, const double *b, size_t dim,
+                             cf_diag_t *diag);
+void cf__affine_points(const double *A, const double *b, size_t dim,
+                       bool rational, const double *src, size_t count,
+                       size_t stride, double *dst);
+
+/* qsort comparison of doubles, ascending. */
+int cf__cmp_double(const void *x, const void *y);
 
 /* n choose k as a double (exact for the ranges curvefig uses). */
 double cf__binomial(int n, int k);

@@ -91,16 +91,31 @@ default_realloc(void *ud, void *ptr, size_t old_size, size_t new_size)
     return realloc(ptr, new_size);
 }
 
-static cf_allocator_t allocator = { default_realloc, NULL };
+/* The process default (cf_set_allocator) and the calling thread's current
+** one (cf_use_allocator; realloc NULL: none, the default applies). */
+static cf_allocator_t default_allocator = { default_realloc, NULL };
+#if defined(__GNUC__)
+/* initial-exec: one load, no call per allocation (the library is linked,
+** not opened at run time) */
+__attribute__((tls_model("initial-exec")))
+#endif
+static _Thread_local cf_allocator_t thread_allocator = { NULL, NULL };
+
+static const cf_allocator_t *
+current(void)
+{
+    return thread_allocator.realloc != NULL ? &thread_allocator
+                                            : &default_allocator;
+}
 
 void
 cf_set_allocator(const cf_allocator_t *a)
 {
     if (a == NULL || a->realloc == NULL) {
-        allocator.realloc = default_realloc;
-        allocator.ud = NULL;
+        default_allocator.realloc = default_realloc;
+        default_allocator.ud = NULL;
     } else {
-        allocator = *a;
+        default_allocator = *a;
     }
 }
 
@@ -108,26 +123,46 @@ void
 cf_get_allocator(cf_allocator_t *a)
 {
     if (a != NULL)
-        *a = allocator;
+        *a = *current();
+}
+
+void
+cf_use_allocator(const cf_allocator_t *a, cf_allocator_t *previous)
+{
+    if (previous != NULL)
+        *previous = thread_allocator;
+    if (a == NULL || a->realloc == NULL) {
+        thread_allocator.realloc = NULL;
+        thread_allocator.ud = NULL;
+    } else {
+        thread_allocator = *a;
+    }
 }
 
 /* A header in front of every block remembers its size, so that the hook
-** receives the old size as lua_Alloc does.  16 bytes keep the alignment. */
+** receives the old size as lua_Alloc does, and the allocator that made it,
+** so that the block is resized and freed by that one whichever is current
+** then.  A multiple of max_align_t keeps the alignment. */
 typedef union {
-    size_t size;
+    struct {
+        size_t size;
+        cf_allocator_t by;
+    } b;
     max_align_t align_;
 } block_header;
 
 void *
 cf__malloc(size_t size)
 {
+    const cf_allocator_t *a = current();
     block_header *h;
     if (size > SIZE_MAX - sizeof *h)
         return NULL;
-    h = allocator.realloc(allocator.ud, NULL, 0, sizeof *h + size);
+    h = a->realloc(a->ud, NULL, 0, sizeof *h + size);
     if (h == NULL)
         return NULL;
-    h->size = size;
+    h->b.size = size;
+    h->b.by = *a;
     return h + 1;
 }
 
@@ -152,6 +187,7 @@ void *
 cf__realloc_array(void *ptr, size_t n, size_t size)
 {
     block_header *h, *nh;
+    cf_allocator_t by;
     size_t bytes;
     if (ptr == NULL)
         return cf__alloc_array(n, size);
@@ -161,11 +197,11 @@ cf__realloc_array(void *ptr, size_t n, size_t size)
     if (bytes > SIZE_MAX - sizeof *h)
         return NULL;
     h = (block_header *)ptr - 1;
-    nh = allocator.realloc(allocator.ud, h, sizeof *h + h->size,
-                           sizeof *h + bytes);
+    by = h->b.by;
+    nh = by.realloc(by.ud, h, sizeof *h + h->b.size, sizeof *h + bytes);
     if (nh == NULL)
         return NULL;
-    nh->size = bytes;
+    nh->b.size = bytes;
     return nh + 1;
 }
 
@@ -173,10 +209,12 @@ void
 cf__free(void *ptr)
 {
     block_header *h;
+    cf_allocator_t by;
     if (ptr == NULL)
         return;
     h = (block_header *)ptr - 1;
-    allocator.realloc(allocator.ud, h, sizeof *h + h->size, 0);
+    by = h->b.by;
+    by.realloc(by.ud, h, sizeof *h + h->b.size, 0);
 }
 
 void
@@ -251,4 +289,45 @@ cf__binomial(int n, int k)
     for (int i = 1; i <= k; i++)
         r = r * (double)(n - k + i) / (double)i;
     return nearbyint(r);
+}
+
+int
+cf__cmp_double(const void *x, const void *y)
+{
+    double a = *(const double *)x, b = *(const double *)y;
+    return (a > b) - (a < b);
+}
+
+cf_status_t
+cf__check_affine(const double *A, const double *b, size_t dim,
+                 cf_diag_t *diag)
+{
+    cf_status_t st;
+    if (A == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "the matrix is NULL");
+    st = cf__check_finite_points(A, dim, dim, dim, "matrix row", diag);
+    if (st == CF_STATUS_OK && b != NULL)
+        st = cf__check_finite_points(b, 1, dim, dim, "translation", diag);
+    return st;
+}
+
+void
+cf__affine_points(const double *A, const double *b, size_t dim,
+                  bool rational, const double *src, size_t count,
+                  size_t stride, double *dst)
+{
+    for (size_t i = 0; i < count; i++) {
+        const double *p = src + i * stride;
+        double *q = dst + i * stride;
+        double w = rational ? p[dim] : 1.0;
+        for (size_t k = 0; k < dim; k++) {
+            double s = 0.0;
+            for (size_t j = 0; j < dim; j++)
+                s += A[k * dim + j] * p[j];
+            q[k] = s + (b != NULL ? b[k] * w : 0.0);
+        }
+        if (rational)
+            q[dim] = w;
+    }
 }

@@ -34,6 +34,7 @@ cf_status_t
 cf_convex_hull_2d(const double *pts, size_t count, size_t stride, size_t *idx,
                   size_t *hull_count, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     hpt *p, **h;
     size_t m = 0, k = 0;
     cf_status_t st;
@@ -100,6 +101,7 @@ cf_status_t
 cf_bezier_hull(const cf_bezier_t *c, size_t *idx, size_t *hull_count,
                cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     double *pts;
     cf_status_t st;
     if (c == NULL)
@@ -123,6 +125,7 @@ cf_status_t
 cf_check_finite_points(const double *pts, size_t count, size_t dim,
                        size_t stride, const char *what, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     if (count > 0 && (pts == NULL || dim == 0 || stride < dim))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "check of %s coordinates: no array, dim 0 or "

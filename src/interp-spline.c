@@ -301,7 +301,7 @@ cf__interp_periodic(size_t dim, const double *points, size_t count,
         size_t span = basis_at(3, knots, nknots, u[i], 0, N);
         if (span != i + 3) {
             st = cf__error(diag, CF_STATUS_DEGENERATE, (long)i,
-                           "periodic spline: parameter %zu (%g) is not "
+                           "parameter %zu (%g) is not "
                            "in its own knot span", i, u[i]);
             goto done;
         }
@@ -414,7 +414,7 @@ lsq_check(size_t dim, const double *points, size_t count, size_t ncontrol,
     int p = o->degree == 0 ? 3 : o->degree;
     if (dim < 1 || points == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "least squares: needs dim >= 1 and points");
+                         "needs dim >= 1 and points");
     if (o->start_tangent != NULL || o->end_tangent != NULL || o->closed)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "least squares takes no end tangents and cannot "
@@ -466,6 +466,7 @@ cf_approximate_lsq(size_t dim, const double *points, size_t count,
                    bool fix_ends, cf_bspline_t **out, double *residual,
                    cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_interp_options_t o;
     cf__lsq_band_t lb = { 0 };
     double *u = NULL, *knots = NULL, *b = NULL, *x = NULL;
@@ -476,7 +477,7 @@ cf_approximate_lsq(size_t dim, const double *points, size_t count,
     cf_status_t st;
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "least squares: out must not be NULL");
+                         "out must not be NULL");
     *out = NULL;
     if (opt != NULL)
         o = *opt;

@@ -1,7 +1,8 @@
 /*
-** Interpolation front end: options, names, data parameters, input checks
-** and dispatch (cf_interpolate); the chapter-4 cubics of Ferguson and Coons.
-** The spline constructions themselves are in interp-spline.c.
+** Interpolation front end: input checks and dispatch (cf_interpolate); the
+** chapter-4 cubics of Ferguson and Coons.  Options, names and data
+** parameters are in interp-params.c, the spline constructions in
+** interp-spline.c.
 */
 #include <math.h>
 #include <stdio.h>
@@ -9,215 +10,6 @@
 
 #include "bezier-private.h"
 #include "interp-private.h"
-
-/* ---- options and names -------------------------------------------------- */
-
-void
-cf_interp_options_init(cf_interp_options_t *opt)
-{
-    if (opt == NULL)
-        return;
-    memset(opt, 0, sizeof *opt);
-    opt->method = CF_INTERP_NATURAL;
-    opt->degree = 3;
-    opt->param = CF_PARAM_DEFAULT;
-}
-
-static const char *const method_names[] = {
-    [CF_INTERP_NATURAL] = "natural",
-    [CF_INTERP_CLAMPED] = "clamped",
-    [CF_INTERP_NOT_A_KNOT] = "not-a-knot",
-    [CF_INTERP_PERIODIC] = "periodic",
-    [CF_INTERP_CATMULL_ROM] = "catmull-rom",
-    [CF_INTERP_GLOBAL] = "global",
-};
-#define NMETHODS (sizeof method_names / sizeof method_names[0])
-
-static const char *const param_names[] = {
-    [CF_PARAM_DEFAULT] = "default",
-    [CF_PARAM_UNIFORM] = "uniform",
-    [CF_PARAM_CHORD] = "chord",
-    [CF_PARAM_CENTRIPETAL] = "centripetal",
-};
-#define NPARAMS (sizeof param_names / sizeof param_names[0])
-
-const char *
-cf_interp_method_to_string(cf_interp_method_t method)
-{
-    if ((unsigned)method >= NMETHODS)
-        return "unknown";
-    return method_names[method];
-}
-
-cf_status_t
-cf_interp_method_from_string(const char *name, cf_interp_method_t *out,
-                             cf_diag_t *diag)
-{
-    if (name == NULL || out == NULL)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "interpolation method: NULL argument");
-    for (size_t i = 0; i < NMETHODS; i++) {
-        if (strcmp(name, method_names[i]) == 0) {
-            *out = (cf_interp_method_t)i;
-            return CF_STATUS_OK;
-        }
-    }
-    return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                     "unknown interpolation method \"%.40s\"; expected "
-                     "natural, clamped, not-a-knot, periodic, catmull-rom "
-                     "or global", name);
-}
-
-cf_status_t
-cf_param_from_string(const char *name, cf_param_t *out, cf_diag_t *diag)
-{
-    if (name == NULL || out == NULL)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "parametrisation: NULL argument");
-    for (size_t i = 0; i < NPARAMS; i++) {
-        if (strcmp(name, param_names[i]) == 0) {
-            *out = (cf_param_t)i;
-            return CF_STATUS_OK;
-        }
-    }
-    return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                     "unknown parametrisation \"%.40s\"; expected uniform, "
-                     "chord or centripetal", name);
-}
-
-/* ---- data parameters ---------------------------------------------------- */
-
-/* "(1, 2)": at most four coordinates, then "...". */
-static void
-format_point(char *buf, size_t size, const double *p, size_t dim)
-{
-    size_t len = 0;
-    len += (size_t)snprintf(buf, size, "(");
-    for (size_t k = 0; k < dim && k < 4 && len < size; k++)
-        len += (size_t)snprintf(buf + len, size - len, "%s%g",
-                                k > 0 ? ", " : "", p[k]);
-    if (dim > 4 && len < size)
-        len += (size_t)snprintf(buf + len, size - len, ", ...");
-    if (len < size)
-        snprintf(buf + len, size - len, ")");
-}
-
-static const char *
-param_phrase(cf_param_t param)
-{
-    switch (param) {
-    case CF_PARAM_CHORD:
-        return "chord-length parameters need";
-    case CF_PARAM_CENTRIPETAL:
-        return "centripetal parameters need";
-    case CF_PARAM_POWER:
-        return "power parameters need";
-    default:
-        return "interpolation needs";
-    }
-}
-
-cf_status_t
-cf_interp_parameters(size_t dim, const double *points, size_t count,
-                     cf_param_t param, double exponent, bool closed,
-                     double *out, cf_diag_t *diag)
-{
-    size_t nseg;
-    double e, total = 0.0;
-    if (points == NULL || out == NULL)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "parameters: points and out must not be NULL");
-    if (dim < 1)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "parameters: dimension must be at least 1, got 0");
-    if (count < 2)
-        return cf__error(diag, CF_STATUS_TOO_FEW_POINTS, (long)count,
-                         "parameters need at least 2 points, got %zu",
-                         count);
-    switch (param) {
-    case CF_PARAM_DEFAULT:
-    case CF_PARAM_CHORD:
-        e = 1.0;
-        break;
-    case CF_PARAM_UNIFORM:
-        e = 0.0;
-        break;
-    case CF_PARAM_CENTRIPETAL:
-        e = 0.5;
-        break;
-    case CF_PARAM_POWER:
-        if (!(exponent >= 0.0 && exponent <= 1.0))
-            return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                             "parameter exponent %g is outside [0, 1]",
-                             exponent);
-        e = exponent;
-        break;
-    default:
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "unknown parametrisation %d", (int)param);
-    }
-    {
-        cf_status_t st = cf__check_finite_points(points, count, dim, dim,
-                                                 "point", diag);
-        if (st != CF_STATUS_OK)
-            return st;
-    }
-    nseg = closed ? count : count - 1;
-    out[0] = 0.0;
-    for (size_t i = 0; i < nseg; i++) {
-        size_t j = (i + 1) % count;
-        const double *a = points + i * dim, *b = points + j * dim;
-        double big = 0.0, s = 0.0, d, step;
-        /* |b - a| scaled by its largest coordinate (no overflow) */
-        for (size_t k = 0; k < dim; k++)
-            big = fmax(big, fabs(b[k] - a[k]));
-        if (big == 0.0) {
-            char pa[96];
-            format_point(pa, sizeof pa, a, dim);
-            return cf__error(diag, CF_STATUS_DEGENERATE, (long)j,
-                             "points %zu and %zu coincide %s; %s distinct "
-                             "consecutive points", i, j, pa,
-                             param_phrase(param));
-        }
-        for (size_t k = 0; k < dim; k++) {
-            double q = (b[k] - a[k]) / big;
-            s += q * q;
-        }
-        d = big * sqrt(s);
-        step = e == 0.0 ? 1.0 : e == 1.0 ? d : e == 0.5 ? sqrt(d)
-                                                    : pow(d, e);
-        if (!isfinite(step))
-            return cf__error(diag, CF_STATUS_NOT_FINITE, (long)j,
-                             "distance between points %zu and %zu "
-                             "overflows", i, j);
-        total += step;
-        out[i + 1] = total;
-    }
-    if (!isfinite(total) || !(total > 0.0))
-        return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "total parameter length %g is not finite", total);
-    for (size_t i = 1; i < nseg; i++)
-        out[i] /= total;
-    out[nseg] = 1.0;
-    return CF_STATUS_OK;
-}
-
-static cf_status_t
-check_explicit_params(const double *u, size_t n, cf_diag_t *diag)
-{
-    for (size_t i = 0; i < n; i++) {
-        if (!isfinite(u[i]))
-            return cf__error(diag, CF_STATUS_NOT_FINITE, (long)i,
-                             "parameter %zu is %g; parameters must be "
-                             "finite", i, u[i]);
-        if (i > 0 && !(u[i] > u[i - 1]))
-            return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)i,
-                             "parameter %zu (%g) is not larger than "
-                             "parameter %zu (%g); parameters must increase "
-                             "strictly", i, u[i], i - 1, u[i - 1]);
-    }
-    return CF_STATUS_OK;
-}
 
 static cf_status_t
 check_tangent(const double *t, size_t dim, const char *name, cf_diag_t *diag)
@@ -231,27 +23,6 @@ check_tangent(const double *t, size_t dim, const char *name, cf_diag_t *diag)
                              "be finite", name, k + 1, t[k]);
     }
     return CF_STATUS_OK;
-}
-
-cf_status_t
-cf__interp_prepare_params(size_t dim, const double *points, size_t count,
-                          const cf_interp_options_t *opt, bool closed,
-                          double *u, cf_diag_t *diag)
-{
-    size_t nu = closed ? count + 1 : count;
-    cf_param_t param = opt->param;
-    cf_status_t st;
-    if (opt->params != NULL) {
-        st = check_explicit_params(opt->params, nu, diag);
-        if (st == CF_STATUS_OK)
-            memcpy(u, opt->params, nu * sizeof *u);
-        return st;
-    }
-    if (param == CF_PARAM_DEFAULT)
-        param = opt->method == CF_INTERP_CATMULL_ROM ? CF_PARAM_CENTRIPETAL
-                                                     : CF_PARAM_CHORD;
-    return cf_interp_parameters(dim, points, count, param, opt->exponent,
-                                closed, u, diag);
 }
 
 /* ---- the front end ------------------------------------------------------ */
@@ -304,7 +75,7 @@ static cf_status_t
 check_options(size_t dim, const cf_interp_options_t *o, cf_diag_t *diag)
 {
     const char *title;
-    if ((unsigned)o->method >= NMETHODS)
+    if ((unsigned)o->method > CF_INTERP_GLOBAL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "unknown interpolation method %d", (int)o->method);
     if ((unsigned)o->param > CF_PARAM_POWER)
@@ -359,6 +130,7 @@ cf_interpolate(size_t dim, const double *points, size_t count,
                const cf_interp_options_t *opt, cf_bspline_t **out,
                cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_interp_options_t local;
     const cf_interp_options_t *o = &local;
     bool closed;
@@ -367,7 +139,7 @@ cf_interpolate(size_t dim, const double *points, size_t count,
     cf_status_t st;
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "interpolate: out must not be NULL");
+                         "out must not be NULL");
     *out = NULL;
     if (opt != NULL)
         local = *opt;
@@ -377,10 +149,10 @@ cf_interpolate(size_t dim, const double *points, size_t count,
         local.degree = 3;
     if (dim < 1)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "interpolate: dimension must be at least 1, got 0");
+                         "dimension must be at least 1, got 0");
     if (points == NULL && count > 0)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "interpolate: points must not be NULL");
+                         "points must not be NULL");
     st = check_options(dim, o, diag);
     if (st != CF_STATUS_OK)
         return st;
@@ -485,15 +257,16 @@ cf_ferguson_cubic(size_t dim, const double *p0, const double *p1,
                   const double *t0, const double *t1, cf_bezier_t **out,
                   cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_bezier_t *c;
     cf_status_t st;
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "ferguson: out must not be NULL");
+                         "out must not be NULL");
     *out = NULL;
     if (dim < 1)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "ferguson: dimension must be at least 1, got 0");
+                         "dimension must be at least 1, got 0");
     if ((st = check_vec(p0, dim, "P0", diag)) != CF_STATUS_OK ||
         (st = check_vec(p1, dim, "P1", diag)) != CF_STATUS_OK ||
         (st = check_vec(t0, dim, "tangent T0", diag)) != CF_STATUS_OK ||
@@ -512,15 +285,16 @@ cf_status_t
 cf_ferguson_chain(size_t dim, const double *points, const double *tangents,
                   size_t count, cf_bezier_list_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_bezier_list_t *list;
     cf_status_t st;
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "ferguson chain: out must not be NULL");
+                         "out must not be NULL");
     *out = NULL;
     if (dim < 1 || points == NULL || tangents == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "ferguson chain: needs dim >= 1, points and "
+                         "needs dim >= 1, points and "
                          "tangents");
     if (count < 2)
         return cf__error(diag, CF_STATUS_TOO_FEW_POINTS, (long)count,
@@ -576,15 +350,16 @@ cf_status_t
 cf_coons_cubic(size_t dim, const double *p4, cf_bezier_t **out,
                cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_bezier_t *c;
     cf_status_t st;
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "coons: out must not be NULL");
+                         "out must not be NULL");
     *out = NULL;
     if (dim < 1 || p4 == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "coons: needs dim >= 1 and four points");
+                         "needs dim >= 1 and four points");
     st = cf__check_finite_points(p4, 4, dim, dim, "point", diag);
     if (st != CF_STATUS_OK)
         return st;
@@ -615,6 +390,7 @@ cf_status_t
 cf_coons_chain(size_t dim, const double *points, size_t count,
                cf_coons_ends_t ends, cf_bezier_list_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     static const size_t need[] = { 4, 2, 3 };
     static const char *const names[] = { "plain", "tripled-end",
                                          "closed" };
@@ -623,14 +399,14 @@ cf_coons_chain(size_t dim, const double *points, size_t count,
     cf_status_t st;
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "coons chain: out must not be NULL");
+                         "out must not be NULL");
     *out = NULL;
     if (dim < 1 || points == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "coons chain: needs dim >= 1 and points");
+                         "needs dim >= 1 and points");
     if ((unsigned)ends > CF_COONS_CLOSED)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "coons chain: unknown end treatment %d", (int)ends);
+                         "unknown end treatment %d", (int)ends);
     if (count < need[ends])
         return cf__error(diag, CF_STATUS_TOO_FEW_POINTS, (long)count,
                          "%s Coons B-spline needs at least %zu points, got "

@@ -29,20 +29,41 @@ format_pair(double x, double y, char *bx, char *by, size_t size)
     }
 }
 
-/* The degree and the number of points (or parameters) for a curve;
-** `who` prefixes the message ("bspline", "knots"). */
+cf_status_t
+cf__check_knot_order(const double *U, size_t n, const char *what,
+                     cf_diag_t *diag)
+{
+    char b1[64], b2[64];
+    for (size_t i = 0; i < n; i++) {
+        if (!isfinite(U[i]))
+            return cf__error(diag, CF_STATUS_NOT_FINITE, (long)i,
+                             "%s %zu is %g; knots must be finite", what, i,
+                             U[i]);
+    }
+    for (size_t i = 1; i < n; i++) {
+        if (U[i] < U[i - 1]) {
+            format_pair(U[i], U[i - 1], b1, b2, sizeof b1);
+            return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)i,
+                             "%s %zu (%s) is smaller than %s %zu (%s)", what,
+                             i, b1, what, i - 1, b2);
+        }
+    }
+    return CF_STATUS_OK;
+}
+
+/* The degree and the number of points (or parameters) for a curve. */
 static cf_status_t
-check_degree_count(const char *who, int lo, int degree, size_t npoints,
-                   const char *what, cf_diag_t *diag)
+check_degree_count(int lo, int degree, size_t npoints, const char *what,
+                   cf_diag_t *diag)
 {
     if (degree < lo || degree > CF_BSPLINE_MAX_DEGREE)
         return cf__error(diag, CF_STATUS_BAD_DEGREE, -1,
-                         "%s: degree %d is outside %d..%d", who, degree, lo,
+                         "degree %d is outside %d..%d", degree, lo,
                          CF_BSPLINE_MAX_DEGREE);
     if (npoints < (size_t)degree + 1)
         return cf__error(diag, CF_STATUS_TOO_FEW_POINTS, -1,
-                         "%s: degree %d needs at least %d %s, %zu given",
-                         who, degree, degree + 1, what, npoints);
+                         "degree %d needs at least %d %s, %zu given",
+                         degree, degree + 1, what, npoints);
     return CF_STATUS_OK;
 }
 
@@ -50,9 +71,10 @@ cf_status_t
 cf_knots_validate(int degree, size_t npoints, const double *knots,
                   size_t nknots, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     size_t need, m;
-    char b1[64], b2[64];
-    cf_status_t st = check_degree_count("bspline", 0, degree, npoints,
+    char b1[64];
+    cf_status_t st = check_degree_count(0, degree, npoints,
                                         "points", diag);
 
     if (st != CF_STATUS_OK)
@@ -60,25 +82,14 @@ cf_knots_validate(int degree, size_t npoints, const double *knots,
     need = npoints + (size_t)degree + 1;
     if (knots == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "bspline: knots are NULL");
+                         "knots are NULL");
     if (nknots != need)
         return cf__error(diag, CF_STATUS_BAD_KNOTS, -1,
-                         "bspline: %zu knots given, degree %d with %zu "
+                         "%zu knots given, degree %d with %zu "
                          "points needs %zu", nknots, degree, npoints, need);
-    for (size_t i = 0; i < nknots; i++) {
-        if (!isfinite(knots[i]))
-            return cf__error(diag, CF_STATUS_NOT_FINITE, (long)i,
-                             "knot %zu is %g; knots must be finite", i,
-                             knots[i]);
-    }
-    for (size_t i = 1; i < nknots; i++) {
-        if (knots[i] < knots[i - 1]) {
-            format_pair(knots[i], knots[i - 1], b1, b2, sizeof b1);
-            return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)i,
-                             "knot %zu (%s) is smaller than knot %zu (%s)",
-                             i, b1, i - 1, b2);
-        }
-    }
+    st = cf__check_knot_order(knots, nknots, "knot", diag);
+    if (st != CF_STATUS_OK)
+        return st;
     for (size_t i = 0; i < nknots;) {
         size_t j = i;
         while (j + 1 < nknots && knots[j + 1] == knots[i])
@@ -105,19 +116,19 @@ static cf_status_t
 check_gen(int degree, size_t npoints, double a, double b, const double *out,
           cf_diag_t *diag)
 {
-    cf_status_t st = check_degree_count("knots", 0, degree, npoints,
+    cf_status_t st = check_degree_count(0, degree, npoints,
                                         "points", diag);
     if (st != CF_STATUS_OK)
         return st;
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "knots: output is NULL");
+                         "output is NULL");
     if (!isfinite(a) || !isfinite(b))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "knots: interval [%g, %g] is not finite", a, b);
+                         "interval [%g, %g] is not finite", a, b);
     if (!(a < b))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "knots: interval [%g, %g] is empty", a, b);
+                         "interval [%g, %g] is empty", a, b);
     return CF_STATUS_OK;
 }
 
@@ -136,6 +147,7 @@ cf_status_t
 cf_knots_uniform(int degree, size_t npoints, double a, double b, double *out,
                  cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = check_gen(degree, npoints, a, b, out, diag);
     size_t m;
     if (st != CF_STATUS_OK)
@@ -150,6 +162,7 @@ cf_status_t
 cf_knots_clamped_uniform(int degree, size_t npoints, double a, double b,
                          double *out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = check_gen(degree, npoints, a, b, out, diag);
     size_t p, n, inner;
     if (st != CF_STATUS_OK)
@@ -170,14 +183,15 @@ cf_status_t
 cf_knots_clamped_averaged(int degree, size_t npoints, const double *params,
                           double *out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     size_t p, n;
-    cf_status_t st = check_degree_count("knots", 1, degree, npoints,
+    cf_status_t st = check_degree_count(1, degree, npoints,
                                         "parameters", diag);
     if (st != CF_STATUS_OK)
         return st;
     if (params == NULL || out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "knots: parameters or output are NULL");
+                         "parameters or output are NULL");
     for (size_t i = 0; i < npoints; i++) {
         if (!isfinite(params[i]))
             return cf__error(diag, CF_STATUS_NOT_FINITE, (long)i,
@@ -392,22 +406,22 @@ check_curve_knots(int degree, const double *U, size_t nknots, double u,
     size_t p;
     if (degree < 0 || degree > CF_BSPLINE_MAX_DEGREE)
         return cf__error(diag, CF_STATUS_BAD_DEGREE, -1,
-                         "basis: degree %d is outside 0..%d", degree,
+                         "degree %d is outside 0..%d", degree,
                          CF_BSPLINE_MAX_DEGREE);
     p = (size_t)degree;
     if (U == NULL || nknots < 2 * p + 2)
         return cf__error(diag, CF_STATUS_BAD_KNOTS, -1,
-                         "basis: degree %d needs at least %zu knots, %zu "
+                         "degree %d needs at least %zu knots, %zu "
                          "given", degree, 2 * p + 2, U ? nknots : 0);
     st = cf_knots_validate(degree, nknots - p - 1, U, nknots, diag);
     if (st != CF_STATUS_OK)
         return st;
     if (!isfinite(u))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "basis: parameter is %g", u);
+                         "parameter is %g", u);
     if (u < U[p] || u > U[nknots - 1 - p])
         return cf__error(diag, CF_STATUS_DOMAIN, -1,
-                         "basis: parameter %g is outside the domain "
+                         "parameter %g is outside the domain "
                          "[%g, %g]", u, U[p], U[nknots - 1 - p]);
     return CF_STATUS_OK;
 }
@@ -416,13 +430,14 @@ cf_status_t
 cf_basis_funs(int degree, const double *knots, size_t nknots, double u,
               size_t *span, double *N, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = check_curve_knots(degree, knots, nknots, u, diag);
     size_t k;
     if (st != CF_STATUS_OK)
         return st;
     if (N == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "basis: output is NULL");
+                         "output is NULL");
     k = cf_knots_find_span(degree, knots, nknots, u);
     cf__basis_deriv(degree, knots, nknots, NULL, k, u, 0, N);
     if (span != NULL)
@@ -434,13 +449,14 @@ cf_status_t
 cf_basis_ders(int degree, const double *knots, size_t nknots, double u,
               int nder, size_t *span, double *ders, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = check_curve_knots(degree, knots, nknots, u, diag);
     size_t k, w = (size_t)degree + 1;
     if (st != CF_STATUS_OK)
         return st;
     if (ders == NULL || nder < 0)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "basis: output is NULL or derivative order %d < 0",
+                         "output is NULL or derivative order %d < 0",
                          nder);
     k = cf_knots_find_span(degree, knots, nknots, u);
     for (int d = 0; d <= nder; d++)
@@ -457,28 +473,20 @@ check_one(int i, int degree, const double *U, size_t nknots, double u,
 {
     if (degree < 0 || degree > CF_BSPLINE_MAX_DEGREE)
         return cf__error(diag, CF_STATUS_BAD_DEGREE, -1,
-                         "basis: degree %d is outside 0..%d", degree,
+                         "degree %d is outside 0..%d", degree,
                          CF_BSPLINE_MAX_DEGREE);
     if (U == NULL || i < 0 || (size_t)i + (size_t)degree + 2 > nknots)
         return cf__error(diag, CF_STATUS_BAD_KNOTS, i,
-                         "basis: N_%d^%d needs knots u_%d..u_%d, %zu given",
+                         "N_%d^%d needs knots u_%d..u_%d, %zu given",
                          i, degree, i, i + degree + 1, U ? nknots : 0);
-    for (size_t j = 0; j < nknots; j++) {
-        if (!isfinite(U[j]))
-            return cf__error(diag, CF_STATUS_NOT_FINITE, (long)j,
-                             "knot %zu is %g; knots must be finite", j,
-                             U[j]);
-        if (j > 0 && U[j] < U[j - 1]) {
-            char b1[64], b2[64];
-            format_pair(U[j], U[j - 1], b1, b2, sizeof b1);
-            return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)j,
-                             "knot %zu (%s) is smaller than knot %zu (%s)",
-                             j, b1, j - 1, b2);
-        }
+    {
+        cf_status_t st = cf__check_knot_order(U, nknots, "knot", diag);
+        if (st != CF_STATUS_OK)
+            return st;
     }
     if (!isfinite(u))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "basis: parameter is %g", u);
+                         "parameter is %g", u);
     return CF_STATUS_OK;
 }
 
@@ -514,13 +522,14 @@ cf_status_t
 cf_basis_one(int i, int degree, const double *knots, size_t nknots, double u,
              double *value, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     double N[CF_BSPLINE_MAX_DEGREE + 1];
     cf_status_t st = check_one(i, degree, knots, nknots, u, diag);
     if (st != CF_STATUS_OK)
         return st;
     if (value == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "basis: output is NULL");
+                         "output is NULL");
     one_triangle(i, degree, degree, knots, nknots, u, N);
     *value = N[0];
     return CF_STATUS_OK;
@@ -530,13 +539,14 @@ cf_status_t
 cf_basis_one_ders(int i, int degree, const double *U, size_t nknots,
                   double u, int nder, double *out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     double N[CF_BSPLINE_MAX_DEGREE + 1];
     cf_status_t st = check_one(i, degree, U, nknots, u, diag);
     if (st != CF_STATUS_OK)
         return st;
     if (out == NULL || nder < 0)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "basis: output is NULL or derivative order %d < 0",
+                         "output is NULL or derivative order %d < 0",
                          nder);
     for (int d = 0; d <= nder; d++) {
         int q = degree - d;

@@ -61,22 +61,10 @@ cf_status_t cf__band_init(cf__band_t *b, size_t n, size_t kl, size_t ku,
 void cf__band_fini(cf__band_t *b);
 /* Set entry (i, j); |j - i| must lie in the band (asserted: misuse). */
 void cf__band_set(cf__band_t *b, size_t i, size_t j, double v);
-/* Entry (i, j) of the (unfactored) matrix, 0 outside the band. */
-double cf__band_get(const cf__band_t *b, size_t i, size_t j);
 /* LU factorisation in place. */
 cf_status_t cf__band_factor(cf__band_t *b, cf_diag_t *diag);
 /* Solve with the factorisation; rhs (in/out) is n x nrhs. */
 void cf__band_solve(const cf__band_t *b, double *rhs, size_t nrhs);
-
-/*
-** Linear least squares min |A x - B| (Frobenius norm over the nrhs
-** columns) by Householder QR.  A is m x n row-major (m >= n >= 1), B is
-** m x nrhs; both are overwritten.  x receives n x nrhs.  A matrix of
-** numerical rank < n gives CF_STATUS_DEGENERATE naming the column.
-** Allocates m doubles of scratch.
-*/
-cf_status_t cf__lsq_qr(size_t m, size_t n, double *A, double *B,
-                       size_t nrhs, double *x, cf_diag_t *diag);
 
 /*
 ** Banded least squares by Givens rotations, one row at a time (for

@@ -1,6 +1,6 @@
 /*
 ** Linear solvers for interpolation: Thomas (tridiagonal), Sherman-Morrison
-** (cyclic tridiagonal), banded LU with partial pivoting and Householder QR
+** (cyclic tridiagonal), banded LU with partial pivoting and Givens
 ** least squares.  See linsolve-private.h for the contracts.
 */
 #include <assert.h>
@@ -176,14 +176,6 @@ cf__band_set(cf__band_t *b, size_t i, size_t j, double v)
     *band_at(b, i, j) = v;
 }
 
-double
-cf__band_get(const cf__band_t *b, size_t i, size_t j)
-{
-    if (i >= b->n || j >= b->n || j + b->kl < i || j > i + b->ku)
-        return 0.0;
-    return *band_at(b, i, j);
-}
-
 cf_status_t
 cf__band_factor(cf__band_t *b, cf_diag_t *diag)
 {
@@ -266,85 +258,6 @@ cf__band_solve(const cf__band_t *b, double *rhs, size_t nrhs)
             rhs[i * nrhs + c] = s / d;
         }
     }
-}
-
-/* ---- Householder least squares ----------------------------------------- */
-
-/*
-** Column k: v = a_k(k..m-1) - alpha e_1 with alpha = -sign(a_kk) |a_k|, so
-** that H = I - 2 v v^T / (v^T v) maps a_k onto alpha e_1 without
-** cancellation.  H is applied to the remaining columns of A and to B.
-*/
-cf_status_t
-cf__lsq_qr(size_t m, size_t n, double *A, double *B, size_t nrhs, double *x,
-           cf_diag_t *diag)
-{
-    double *v, maxnorm = 0.0;
-    if (n == 0 || m < n || nrhs == 0)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "least squares with %zu rows and %zu unknowns "
-                         "(need rows >= unknowns >= 1)", m, n);
-    for (size_t j = 0; j < n; j++) {
-        double s = 0.0;
-        for (size_t i = 0; i < m; i++)
-            s += A[i * n + j] * A[i * n + j];
-        if (!isfinite(s))
-            return cf__error(diag, CF_STATUS_NOT_FINITE, (long)j,
-                             "least-squares matrix column %zu is not "
-                             "finite", j);
-        if (sqrt(s) > maxnorm)
-            maxnorm = sqrt(s);
-    }
-    v = cf__alloc_array(m, sizeof *v);
-    if (v == NULL)
-        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
-                         "no memory for least squares with %zu rows", m);
-    for (size_t k = 0; k < n; k++) {
-        double norm2 = 0.0, norm, alpha, vv;
-        for (size_t i = k; i < m; i++)
-            norm2 += A[i * n + k] * A[i * n + k];
-        norm = sqrt(norm2);
-        if (!(norm > (double)m * DBL_EPSILON * maxnorm)) {
-            cf__free(v);
-            return cf__error(diag, CF_STATUS_DEGENERATE, (long)k,
-                             "least-squares matrix is rank deficient: "
-                             "column %zu depends on the previous ones", k);
-        }
-        alpha = A[k * n + k] > 0.0 ? -norm : norm;
-        for (size_t i = k; i < m; i++)
-            v[i] = A[i * n + k];
-        v[k] -= alpha;
-        vv = norm2 - A[k * n + k] * A[k * n + k] + v[k] * v[k];
-        for (size_t j = k + 1; j < n; j++) {
-            double s = 0.0;
-            for (size_t i = k; i < m; i++)
-                s += v[i] * A[i * n + j];
-            s *= 2.0 / vv;
-            for (size_t i = k; i < m; i++)
-                A[i * n + j] -= s * v[i];
-        }
-        for (size_t c = 0; c < nrhs; c++) {
-            double s = 0.0;
-            for (size_t i = k; i < m; i++)
-                s += v[i] * B[i * nrhs + c];
-            s *= 2.0 / vv;
-            for (size_t i = k; i < m; i++)
-                B[i * nrhs + c] -= s * v[i];
-        }
-        A[k * n + k] = alpha;
-        for (size_t i = k + 1; i < m; i++)
-            A[i * n + k] = 0.0;
-    }
-    for (size_t i = n; i-- > 0;) {
-        for (size_t c = 0; c < nrhs; c++) {
-            double s = B[i * nrhs + c];
-            for (size_t j = i + 1; j < n; j++)
-                s -= A[i * n + j] * x[j * nrhs + c];
-            x[i * nrhs + c] = s / A[i * n + i];
-        }
-    }
-    cf__free(v);
-    return CF_STATUS_OK;
 }
 
 /* ---- banded least squares by Givens rotations --------------------------- */

@@ -92,8 +92,8 @@ build_d(const cf_bezier_t *c, const double *X, const double *Y,
         cf__bp_deriv(W, n, dw);
         for (int k = 0; k < 2; k++) {
             cf__bp_deriv(coord[k], n, dp);
-            cf__bp_mul(dp, n - 1, W, n, dst[k]);
-            cf__bp_mul(coord[k], n, dw, n - 1, tmp2);
+            cf__bp_mul(dp, n - 1, 1, W, n, 1, dst[k], 1, 1.0, false);
+            cf__bp_mul(coord[k], n, 1, dw, n - 1, 1, tmp2, 1, 1.0, false);
             for (int i = 0; i <= 2 * n - 1; i++)
                 dst[k][i] -= tmp2[i];
         }
@@ -138,13 +138,6 @@ dwork_begin(const cf_bezier_t *c, size_t deg_max, size_t extra, dwork *w)
     build_d(c, w->X, w->Y, w->W, w->Dx, w->Dy, w->DDx, w->DDy, w->t1, w->t2,
             &w->m);
     return 0;
-}
-
-static int
-cmp_double(const void *x, const void *y)
-{
-    double a = *(const double *)x, b = *(const double *)y;
-    return (a > b) - (a < b);
 }
 
 /* Copy the kept roots into a new array and free the work buffer. */
@@ -222,27 +215,28 @@ cf__offset_cusps_alloc(const cf_bezier_t *c, double d, double **ts,
     roots = poly + deg_max;     /* 2 * deg_max */
 
     /* |D|^2, degree 2m; |D|^6, degree 6m */
-    cf__bp_mul(Dx, m, Dx, m, g);
-    cf__bp_mul(Dy, m, Dy, m, t1);
+    cf__bp_mul(Dx, m, 1, Dx, m, 1, g, 1, 1.0, false);
+    cf__bp_mul(Dy, m, 1, Dy, m, 1, t1, 1, 1.0, false);
     for (int i = 0; i <= 2 * m; i++)
         g[i] += t1[i];
-    cf__bp_mul(g, 2 * m, g, 2 * m, g2);
-    cf__bp_mul(g2, 4 * m, g, 2 * m, g3);
+    cf__bp_mul(g, 2 * m, 1, g, 2 * m, 1, g2, 1, 1.0, false);
+    cf__bp_mul(g2, 4 * m, 1, g, 2 * m, 1, g3, 1, 1.0, false);
     pd = 6 * m;
     /* D x D', degree 2m - 1; squared 4m - 2 */
-    cf__bp_mul(Dx, m, DDy, m - 1, cr);
-    cf__bp_mul(Dy, m, DDx, m - 1, t1);
+    cf__bp_mul(Dx, m, 1, DDy, m - 1, 1, cr, 1, 1.0, false);
+    cf__bp_mul(Dy, m, 1, DDx, m - 1, 1, t1, 1, 1.0, false);
     for (int i = 0; i <= 2 * m - 1; i++)
         cr[i] -= t1[i];
-    cf__bp_mul(cr, 2 * m - 1, cr, 2 * m - 1, cr2);
+    cf__bp_mul(cr, 2 * m - 1, 1, cr, 2 * m - 1, 1, cr2, 1, 1.0, false);
     if (c->rational) {
         /* times W^4: degree 4m - 2 + 4n = 12n - 6 = 6m */
-        cf__bp_mul(W, n, W, n, w2);
-        cf__bp_mul(w2, 2 * n, w2, 2 * n, w4);
-        cf__bp_mul(cr2, 4 * m - 2, w4, 4 * n, t1);
+        cf__bp_mul(W, n, 1, W, n, 1, w2, 1, 1.0, false);
+        cf__bp_mul(w2, 2 * n, 1, w2, 2 * n, 1, w4, 1, 1.0, false);
+        cf__bp_mul(cr2, 4 * m - 2, 1, w4, 4 * n, 1, t1, 1, 1.0, false);
     } else {
         /* raise 4m - 2 to 6m */
-        cf__bp_elevate(cr2, 4 * m - 2, 2 * m + 2, t1);
+        memcpy(t1, cr2, (size_t)(4 * m - 1) * sizeof *t1);
+        cf__bp_elevate(t1, 1, 4 * m - 2, 2 * m + 2);
     }
     for (int i = 0; i <= pd; i++)
         poly[i] = g3[i] - dn * dn * t1[i];
@@ -289,7 +283,7 @@ cf__offset_cusps_alloc(const cf_bezier_t *c, double d, double **ts,
             roots[kept++] = t;
         }
     }
-    qsort(roots, kept, sizeof(double), cmp_double);
+    qsort(roots, kept, sizeof(double), cf__cmp_double);
     return hand_over(buf, roots, kept, ts, nout);
 }
 
@@ -325,8 +319,8 @@ cf__base_cusps_alloc(const cf_bezier_t *c, double **ts, size_t *nout)
         cf__free(buf);
         return CF_STATUS_OK;
     }
-    cf__bp_mul(Dx, m, DDx, m - 1, dot);
-    cf__bp_mul(Dy, m, DDy, m - 1, t1);
+    cf__bp_mul(Dx, m, 1, DDx, m - 1, 1, dot, 1, 1.0, false);
+    cf__bp_mul(Dy, m, 1, DDy, m - 1, 1, t1, 1, 1.0, false);
     for (int i = 0; i <= 2 * m - 1; i++)
         dot[i] += t1[i];
     st = cf__bp_roots(dot, 2 * m - 1, roots, 2 * deg_max, &nroots);
@@ -353,6 +347,7 @@ cf_status_t
 cf_offset_cusps(const cf_bezier_t *c, double d, double *ts, size_t cap,
                 size_t *count, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     double *all = NULL;
     size_t n = 0;
     cf_status_t st;
@@ -360,7 +355,7 @@ cf_offset_cusps(const cf_bezier_t *c, double d, double *ts, size_t cap,
         *count = 0;
     if (c == NULL || count == NULL || (ts == NULL && cap > 0))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "offset cusps: curve, count or ts is NULL");
+                         "curve, count or ts is NULL");
     if (cf_bezier_dim(c) != 2)
         return cf__error(diag, CF_STATUS_DIM_MISMATCH, -1,
                          "offsets are planar; the curve has dim %zu",
@@ -370,7 +365,7 @@ cf_offset_cusps(const cf_bezier_t *c, double d, double *ts, size_t cap,
                          "offset distance %g is not finite", d);
     st = cf__offset_cusps_alloc(c, d, &all, &n);
     if (st != CF_STATUS_OK)
-        return cf__error(diag, st, -1, "offset cusps: out of memory");
+        return cf__error(diag, st, -1, "out of memory");
     for (size_t i = 0; i < n && i < cap; i++)
         ts[i] = all[i];
     *count = n;

@@ -1,7 +1,8 @@
 /*
-** The exact curves that offset pieces approximate ("sources": the offset of
-** a Bézier curve, or a circular join arc), the fits (Levien's area and
-** moment fit, Tiller-Hanson) and the measured two-sided Hausdorff error.
+** The fitting strategies of one offset piece: Levien's area and moment fit
+** with its candidates, Tiller-Hanson, and the search of both arms of a
+** piece that ends at an offset cusp; every candidate judged by its
+** measured error (offset-source.c).
 */
 #include <math.h>
 #include <string.h>
@@ -9,528 +10,6 @@
 #include "core-private.h"
 #include "bezier-private.h"
 #include "offset-private.h"
-
-/* ---- fast point and derivative of a planar curve -------------------------- */
-
-#define FAST_MAX_DEGREE 24
-
-/* The points b[0..n-levels] (hd doubles each) of de Casteljau level
-** `levels` at t from the control points p[0..n]. */
-static inline void
-casteljau_levels(double *b, const double *p, int n, int levels, size_t hd,
-                 double t)
-{
-    double u = 1.0 - t;
-    if (levels == 0) {
-        memcpy(b, p, (size_t)(n + 1) * hd * sizeof(double));
-        return;
-    }
-    for (size_t i = 0; i < (size_t)n * hd; i++)
-        b[i] = u * p[i] + t * p[i + hd];
-    for (int r = 2; r <= levels; r++)
-        for (size_t i = 0; i < (size_t)(n - r + 1) * hd; i++)
-            b[i] = u * b[i] + t * b[i + hd];
-}
-
-/* Point, first and (k == 2) second derivative of the planar curve c at t,
-** into v[0..2k+1] like cf_bezier_eval_derivs, by de Casteljau on all stored
-** coordinates at once, stopped k levels early (the last k + 1 points give
-** the derivatives; quotient rule when rational).  Returns -1 (nothing
-** written) for curves it does not handle: dim != 2, degree < k or above
-** FAST_MAX_DEGREE. */
-static int
-fast_derivs(const cf_bezier_t *c, double t, int k, double *v)
-{
-    double b[3 * (FAST_MAX_DEGREE + 1)], u = 1.0 - t;
-    double h[3] = { 0 }, d1[3] = { 0 }, d2[3] = { 0 };
-    int n = c->degree;
-    size_t hd = c->hdim;
-    if (c->dim != 2 || n < k || n > FAST_MAX_DEGREE)
-        return -1;
-    /* a literal hd lets the compiler unroll the levels */
-    if (hd == 2)
-        casteljau_levels(b, c->pts, n, n - k, 2, t);
-    else
-        casteljau_levels(b, c->pts, n, n - k, 3, t);
-    for (size_t j = 0; j < hd; j++) {
-        if (k == 1) {
-            h[j] = u * b[j] + t * b[hd + j];
-            d1[j] = n * (b[hd + j] - b[j]);
-            d2[j] = 0.0;
-        } else {
-            double q0 = b[j], q1 = b[hd + j], q2 = b[2 * hd + j];
-            h[j] = u * (u * q0 + t * q1) + t * (u * q1 + t * q2);
-            d1[j] = n * (u * (q1 - q0) + t * (q2 - q1));
-            d2[j] = n * (n - 1) * (q2 - 2.0 * q1 + q0);
-        }
-    }
-    if (!c->rational) {
-        for (int j = 0; j < 2; j++) {
-            v[j] = h[j];
-            v[2 + j] = d1[j];
-            if (k == 2)
-                v[4 + j] = d2[j];
-        }
-    } else {
-        double w = h[2];
-        for (int j = 0; j < 2; j++) {
-            v[j] = h[j] / w;
-            v[2 + j] = (d1[j] - v[j] * d1[2]) / w;
-            if (k == 2)
-                v[4 + j] = (d2[j] - 2.0 * v[2 + j] * d1[2] - v[j] * d2[2]) / w;
-        }
-    }
-    return 0;
-}
-
-/* Point and first derivative (dp may be NULL) of the planar curve c. */
-static int
-fast_pd(const cf_bezier_t *c, double t, double *p, double *dp)
-{
-    double v[4];
-    if (fast_derivs(c, t, 1, v) != 0)
-        return -1;
-    p[0] = v[0];
-    p[1] = v[1];
-    if (dp != NULL) {
-        dp[0] = v[2];
-        dp[1] = v[3];
-    }
-    return 0;
-}
-
-/* ---- unit tangent with higher derivatives -------------------------------- */
-
-int
-cf__bezier_unit_tangent(const cf_bezier_t *c, double t, int side,
-                        double scale, double *p, double *u)
-{
-    double v[2 * 9];
-    int n = c->degree, kmax = n < 8 ? n : 8;
-    double len;
-    if (fast_derivs(c, t, 1, v) != 0)
-        cf_bezier_eval_derivs(c, t, 1, v);
-    if (p != NULL) {
-        p[0] = v[0];
-        p[1] = v[1];
-    }
-    len = sqrt(v[2] * v[2] + v[3] * v[3]);
-    if (len > 1e-12 * scale && len > 0.0) {
-        u[0] = v[2] / len;
-        u[1] = v[3] / len;
-        return 0;
-    }
-    /* c' vanishes: near t, c'(t + h) ~ c^(m)(t) h^(m-1) / (m-1)!, so the
-    ** direction is that of the first non-zero derivative from the right
-    ** and (-1)^(m-1) times it from the left. */
-    if (kmax < 2)
-        return -1;
-    cf_bezier_eval_derivs(c, t, kmax, v);
-    for (int m = 2; m <= kmax; m++) {
-        double x = v[2 * m], y = v[2 * m + 1];
-        len = hypot(x, y);
-        if (len > 1e-12 * scale && len > 0.0) {
-            double sg = (side < 0 && (m - 1) % 2 == 1) ? -1.0 : 1.0;
-            u[0] = sg * x / len;
-            u[1] = sg * y / len;
-            return 0;
-        }
-    }
-    return -1;
-}
-
-/* ---- sources ------------------------------------------------------------- */
-
-void
-cf__osrc_init_offset(cf__osrc_t *s, const cf_bezier_t *c, double d)
-{
-    memset(s, 0, sizeof *s);
-    s->kind = 0;
-    s->c = c;
-    s->d = d;
-    s->sgn = 1.0;
-    s->scale = cf__deriv_scale(c);
-    if (!(s->scale > 0.0))
-        s->scale = 1.0;
-    s->cusp_a = s->cusp_b = -1.0;
-}
-
-void
-cf__osrc_init_arc(cf__osrc_t *s, double cx, double cy, double r, double a0,
-                  double sweep)
-{
-    memset(s, 0, sizeof *s);
-    s->kind = 1;
-    s->sgn = sweep >= 0 ? 1.0 : -1.0;
-    s->cx = cx;
-    s->cy = cy;
-    s->r = r;
-    s->a0 = a0;
-    s->sweep = sweep;
-    s->scale = r;
-    s->cusp_a = s->cusp_b = -1.0;
-}
-
-/* Point at t (side: which limit where c' = 0) and travel direction u
-** (may be NULL). */
-static int
-src_point_dir(const cf__osrc_t *s, double t, int side, double *p, double *u)
-{
-    if (s->kind == 1) {
-        double th = s->a0 + s->sweep * t;
-        p[0] = s->cx + s->r * cos(th);
-        p[1] = s->cy + s->r * sin(th);
-        if (u != NULL) {
-            u[0] = -s->sgn * sin(th);
-            u[1] = s->sgn * cos(th);
-        }
-        return 0;
-    } else {
-        double base[2], tan[2];
-        if (s->d == 0.0 && u == NULL) {
-            /* the curve itself: no tangent needed */
-            if (fast_pd(s->c, t, p, NULL) != 0)
-                cf__bezier_eval_point(s->c, t, p);
-            return 0;
-        }
-        if (cf__bezier_unit_tangent(s->c, t, side, s->scale, base, tan) != 0) {
-            p[0] = base[0];
-            p[1] = base[1];
-            if (u != NULL)
-                u[0] = u[1] = 0.0;
-            return -1;
-        }
-        p[0] = base[0] - s->d * tan[1];
-        p[1] = base[1] + s->d * tan[0];
-        if (u != NULL) {
-            u[0] = s->sgn * tan[0];
-            u[1] = s->sgn * tan[1];
-        }
-        return 0;
-    }
-}
-
-int
-cf__osrc_point(const cf__osrc_t *s, double t, double *p)
-{
-    return src_point_dir(s, t, t >= 1.0 ? -1 : 1, p, NULL);
-}
-
-int
-cf__osrc_deriv(const cf__osrc_t *s, double t, double *p, double *dp)
-{
-    if (s->kind == 1) {
-        double th = s->a0 + s->sweep * t;
-        p[0] = s->cx + s->r * cos(th);
-        p[1] = s->cy + s->r * sin(th);
-        dp[0] = -s->r * s->sweep * sin(th);
-        dp[1] = s->r * s->sweep * cos(th);
-        return 0;
-    } else {
-        /* o' = c' (1 - d (c' x c'') / |c'|^3) */
-        double v[6], sp, f;
-        if (s->d == 0.0) {
-            if (fast_pd(s->c, t, p, dp) == 0)
-                return 0;
-            cf_bezier_eval_derivs(s->c, t, 1, v);
-            p[0] = v[0];
-            p[1] = v[1];
-            dp[0] = v[2];
-            dp[1] = v[3];
-            return 0;
-        }
-        if (fast_derivs(s->c, t, 2, v) != 0)
-            cf_bezier_eval_derivs(s->c, t, 2, v);
-        sp = sqrt(v[2] * v[2] + v[3] * v[3]);
-        if (!(sp > 1e-14 * s->scale)) {
-            src_point_dir(s, t, 1, p, NULL);
-            dp[0] = dp[1] = 0.0;
-            return 0;
-        }
-        f = 1.0 - s->d * (v[2] * v[5] - v[3] * v[4]) / (sp * sp * sp);
-        p[0] = v[0] - s->d * v[3] / sp;
-        p[1] = v[1] + s->d * v[2] / sp;
-        dp[0] = v[2] * f;
-        dp[1] = v[3] * f;
-        return 0;
-    }
-}
-
-/* ---- the cubic ------------------------------------------------------------ */
-
-/* Point and derivative (dp may be NULL) of the cubic pts[8] at s, from its
-** Bernstein coefficients per coordinate. */
-void
-cf__cubic_pd(const double *pts, double s, double *p, double *dp)
-{
-    /* the four cubic Bernstein polynomials and those of degree 2 */
-    double u = 1.0 - s;
-    double b0 = u * u * u, b1 = 3.0 * u * u * s, b2 = 3.0 * u * s * s,
-           b3 = s * s * s;
-    p[0] = b0 * pts[0] + b1 * pts[2] + b2 * pts[4] + b3 * pts[6];
-    p[1] = b0 * pts[1] + b1 * pts[3] + b2 * pts[5] + b3 * pts[7];
-    if (dp != NULL) {
-        double c0 = 3.0 * u * u, c1 = 6.0 * u * s, c2 = 3.0 * s * s;
-        dp[0] = c0 * (pts[2] - pts[0]) + c1 * (pts[4] - pts[2]) +
-                c2 * (pts[6] - pts[4]);
-        dp[1] = c0 * (pts[3] - pts[1]) + c1 * (pts[5] - pts[3]) +
-                c2 * (pts[7] - pts[5]);
-    }
-}
-
-/* ---- distance of a point to one of the two curves ----------------------- */
-
-/* sample counts of the error estimates: quick screening, coarse, fine */
-#define K_QUICK 4
-#define K_COARSE 12
-#define K_FINE 40
-
-typedef struct meas {
-    const cf__osrc_t *s;
-    double a, b;
-    const double *pts;
-    int k;
-    double *sp, *cp;        /* k + 1 samples of source and cubic */
-    double *dsp, *dcp;      /* their derivatives (in u) */
-} meas;
-
-/* which = 0: the cubic on [0, 1]; which = 1: the source on [a, b]; the
-** parameter is the local u in [0, 1] in both cases. */
-static void
-curve_pd(const void *ctx, int which, double u, double *p, double *dp)
-{
-    const meas *m = ctx;
-    if (which == 0) {
-        cf__cubic_pd(m->pts, u, p, dp);
-    } else {
-        double t = m->a + (m->b - m->a) * u;
-        if (u <= 0.0 || u >= 1.0) {
-            src_point_dir(m->s, t, u <= 0.0 ? 1 : -1, p, NULL);
-            if (dp != NULL) {
-                double q[2];
-                cf__osrc_deriv(m->s, t, q, dp);
-            }
-        } else if (dp != NULL) {
-            cf__osrc_deriv(m->s, t, p, dp);
-        } else {
-            src_point_dir(m->s, t, 1, p, NULL);
-        }
-        if (dp != NULL) {
-            dp[0] *= m->b - m->a;
-            dp[1] *= m->b - m->a;
-        }
-    }
-}
-
-static void
-cubic_fn(const void *ctx, double u, double *p, double *dp)
-{
-    curve_pd(ctx, 0, u, p, dp);
-}
-
-static void
-source_fn(const void *ctx, double u, double *p, double *dp)
-{
-    curve_pd(ctx, 1, u, p, dp);
-}
-
-/* g(u) = (C(u) - q) . C'(u): zero at a foot point. */
-static double
-foot_g(cf__pd_fn fn, const void *ctx, const double *q, double u,
-       double *dist, double *speed)
-{
-    double p[2], dp[2];
-    fn(ctx, u, p, dp);
-    {
-        double dx = p[0] - q[0], dy = p[1] - q[1];
-        *dist = sqrt(dx * dx + dy * dy);
-    }
-    *speed = sqrt(dp[0] * dp[0] + dp[1] * dp[1]);
-    return (p[0] - q[0]) * dp[0] + (p[1] - q[1]) * dp[1];
-}
-
-/* g, distance and speed at sample i from the cached point smp and
-** derivative dsmp (the values fn gives at u = i / k), else from fn. */
-static double
-foot_g_at(cf__pd_fn fn, const void *ctx, const double *smp,
-          const double *dsmp, int i, int k, const double *q, double *dist,
-          double *speed)
-{
-    const double *p = smp + 2 * i, *dp;
-    double dx, dy;
-    if (dsmp == NULL)
-        return foot_g(fn, ctx, q, (double)i / k, dist, speed);
-    dp = dsmp + 2 * i;
-    dx = p[0] - q[0];
-    dy = p[1] - q[1];
-    *dist = sqrt(dx * dx + dy * dy);
-    *speed = sqrt(dp[0] * dp[0] + dp[1] * dp[1]);
-    return dx * dp[0] + dy * dp[1];
-}
-
-/* cf__dist_sampled with the derivatives at the samples (dsmp, may be
-** NULL) cached. */
-static double
-dist_sampled_d(cf__pd_fn fn, const void *ctx, const double *smp,
-               const double *dsmp, int k, const double *q)
-{
-    int j = 0;
-    double best = INFINITY;
-    for (int i = 0; i <= k; i++) {
-        double dx = smp[2 * i] - q[0], dy = smp[2 * i + 1] - q[1];
-        double dd = dx * dx + dy * dy;
-        if (dd < best) {
-            best = dd;
-            j = i;
-        }
-    }
-    best = sqrt(best);
-    for (int side = -1; side <= 1; side += 2) {
-        int i0 = side < 0 ? j - 1 : j, i1 = i0 + 1;
-        double u0, u1, g0, g1, d0, d1, sp;
-        int last = 0;
-        if (i0 < 0 || i1 > k)
-            continue;
-        u0 = (double)i0 / k;
-        u1 = (double)i1 / k;
-        g0 = foot_g_at(fn, ctx, smp, dsmp, i0, k, q, &d0, &sp);
-        g1 = foot_g_at(fn, ctx, smp, dsmp, i1, k, q, &d1, &sp);
-        best = fmin(best, fmin(d0, d1));
-        if (!(g0 < 0.0 && g1 > 0.0))
-            continue;   /* no interior minimum in this interval */
-        for (int it = 0; it < 40 && u1 - u0 > 1e-15; it++) {
-            double um = (u0 * g1 - u1 * g0) / (g1 - g0), gm, dm;
-            if (!(um > u0 && um < u1))
-                um = 0.5 * (u0 + u1);
-            gm = foot_g(fn, ctx, q, um, &dm, &sp);
-            best = fmin(best, dm);
-            /* at the foot point within an angle of 1e-6: the distance
-            ** is then high by at most about 1e-12 relative (never low:
-            ** every dm is the distance to a point of the curve) */
-            if (fabs(gm) <= 1e-6 * dm * sp)
-                break;
-            if (gm < 0.0) {
-                u0 = um;
-                g0 = gm;
-                if (last == -1)
-                    g1 *= 0.5;
-                last = -1;
-            } else {
-                u1 = um;
-                g1 = gm;
-                if (last == 1)
-                    g0 *= 0.5;
-                last = 1;
-            }
-        }
-    }
-    return best;
-}
-
-double
-cf__dist_sampled(cf__pd_fn fn, const void *ctx, const double *smp, int k,
-                 const double *q)
-{
-    return dist_sampled_d(fn, ctx, smp, NULL, k, q);
-}
-
-/* Distance from q to curve `which` (samples smp[0..k], derivatives there
-** cached). */
-static double
-dist_to(const meas *m, int which, const double *smp, const double *q)
-{
-    return dist_sampled_d(which == 0 ? cubic_fn : source_fn, m, smp,
-                          smp == m->cp ? m->dcp : m->dsp, m->k, q);
-}
-
-/* Directed distance from curve `from` to the other, with the maximum
-** refined by golden-section search around the largest sample. */
-static double
-directed(const meas *m, int from)
-{
-    const double *own = from == 0 ? m->cp : m->sp;
-    const double *other = from == 0 ? m->sp : m->cp;
-    int k = m->k, imax = 0, iters = k <= 16 ? 8 : 16;
-    double hmax = -1.0;
-    /* the quick screening estimate of a fit of the curve itself (d = 0)
-    ** is the samples' maximum only (the golden-section refinement changes
-    ** no piece count there; it does for offsets) */
-    if (k <= K_QUICK && m->s->kind == 0 && m->s->d == 0.0)
-        iters = 0;
-    for (int i = 0; i <= k; i++) {
-        double h = dist_to(m, 1 - from, other, own + 2 * i);
-        if (h > hmax) {
-            hmax = h;
-            imax = i;
-        }
-    }
-    {
-        const double gr = 0.6180339887498949;
-        double lo = (double)(imax > 0 ? imax - 1 : 0) / k;
-        double hi = (double)(imax < k ? imax + 1 : k) / k;
-        double x1 = hi - gr * (hi - lo), x2 = lo + gr * (hi - lo), f1, f2,
-               p[2];
-        curve_pd(m, from, x1, p, NULL);
-        f1 = dist_to(m, 1 - from, other, p);
-        curve_pd(m, from, x2, p, NULL);
-        f2 = dist_to(m, 1 - from, other, p);
-        for (int it = 0; it < iters; it++) {
-            if (f1 > f2) {
-                hi = x2;
-                x2 = x1;
-                f2 = f1;
-                x1 = hi - gr * (hi - lo);
-                curve_pd(m, from, x1, p, NULL);
-                f1 = dist_to(m, 1 - from, other, p);
-            } else {
-                lo = x1;
-                x1 = x2;
-                f1 = f2;
-                x2 = lo + gr * (hi - lo);
-                curve_pd(m, from, x2, p, NULL);
-                f2 = dist_to(m, 1 - from, other, p);
-            }
-            hmax = fmax(hmax, fmax(f1, f2));
-        }
-    }
-    return hmax;
-}
-
-cf_status_t
-cf__fit_error(const cf__osrc_t *s, double a, double b, const double *pts,
-              int k, double *err)
-{
-    double stack[4 * 2 * 129];
-    double *buf = stack;
-    meas m;
-    if (k < 4)
-        k = 4;
-    if (k > 128) {
-        buf = cf__alloc_array((size_t)(8 * (k + 1)), sizeof(double));
-        if (buf == NULL)
-            return CF_STATUS_NO_MEMORY;
-    }
-    m.s = s;
-    m.a = a;
-    m.b = b;
-    m.pts = pts;
-    m.k = k;
-    m.sp = buf;
-    m.cp = buf + 2 * (k + 1);
-    m.dsp = buf + 4 * (k + 1);
-    m.dcp = buf + 6 * (k + 1);
-    /* point and derivative, exactly as the foot-point search evaluates
-    ** them (the samples are the ends of its intervals) */
-    for (int i = 0; i <= k; i++) {
-        double u = (double)i / k;
-        curve_pd(&m, 1, u, m.sp + 2 * i, m.dsp + 2 * i);
-        curve_pd(&m, 0, u, m.cp + 2 * i, m.dcp + 2 * i);
-    }
-    *err = fmax(directed(&m, 0), directed(&m, 1));
-    if (buf != stack)
-        cf__free(buf);
-    return CF_STATUS_OK;
-}
 
 /* ---- Levien's fit --------------------------------------------------------- */
 
@@ -706,8 +185,8 @@ levien_candidates(const cf__osrc_t *s, double a, double b,
     double u0[2], u1[2], dp[2], q[2], n0[2], n1[2];
     int nc = 0;
 
-    src_point_dir(s, a, 1, f.p0, u0);
-    src_point_dir(s, b, -1, f.p3, u1);
+    cf__osrc_point_dir(s, a, 1, f.p0, u0);
+    cf__osrc_point_dir(s, b, -1, f.p3, u1);
 
     /* Hermite cubic (derivatives matched): always a candidate */
     {
@@ -867,9 +346,9 @@ tiller_hanson(const cf__osrc_t *s, double a, double b, double *pts)
     if (c->degree != 3 || c->rational)
         return CF_STATUS_INVALID_ARG;
     /* control points of c on [a, b] */
-    cf__split_h(c->pts, 2, 3, b, tmp, NULL);
+    cf__bp_split(c->pts, 2, 3, b, tmp, NULL);
     if (b > 0.0)
-        cf__split_h(tmp, 2, 3, a / b, NULL, seg);
+        cf__bp_split(tmp, 2, 3, a / b, NULL, seg);
     else
         memcpy(seg, tmp, sizeof seg);
     for (int i = 0; i < 4; i++) {
@@ -957,9 +436,9 @@ polish_arms(const cf__osrc_t *s, double a, double b, double target,
                     trial[5] = pts[7] + na * u[1][1];
                 }
                 /* the quick estimate (about a lower bound) first */
-                st = cf__fit_error(s, a, b, trial, K_QUICK, &e);
+                st = cf__fit_error(s, a, b, trial, CF__FIT_K_QUICK, &e);
                 if (st == CF_STATUS_OK && e < *err)
-                    st = cf__fit_error(s, a, b, trial, K_COARSE, &e);
+                    st = cf__fit_error(s, a, b, trial, CF__FIT_K_COARSE, &e);
                 if (st != CF_STATUS_OK)
                     return st;
                 if (e < *err) {
@@ -1019,7 +498,7 @@ arm_error(const armfit *af, const double *x, double *pts, double *err)
         *err = INFINITY;
         return CF_STATUS_OK;
     }
-    return cf__fit_error(af->s, af->a, af->b, pts, K_COARSE, err);
+    return cf__fit_error(af->s, af->a, af->b, pts, CF__FIT_K_COARSE, err);
 }
 
 /* One Nelder-Mead search from x0 (error *f0) with initial steps step (the
@@ -1146,8 +625,8 @@ cusp_fit(const cf__osrc_t *s, double a, double b, bool free0, bool free1,
     af.free0 = free0;
     af.free1 = free1;
     n = 2 + af.free0 + af.free1;
-    src_point_dir(s, a, 1, af.p0, af.u0);
-    src_point_dir(s, b, -1, af.p3, af.u1);
+    cf__osrc_point_dir(s, a, 1, af.p0, af.u0);
+    cf__osrc_point_dir(s, b, -1, af.p3, af.u1);
     chord = hypot(af.p3[0] - af.p0[0], af.p3[1] - af.p0[1]);
     if (!(chord > 1e-13 * s->scale))
         return CF_STATUS_OK;
@@ -1207,7 +686,7 @@ cf__fit_piece(const cf__osrc_t *s, double a, double b,
         st = tiller_hanson(s, a, b, out->pts);
         if (st != CF_STATUS_OK)
             return st;
-        st = cf__fit_error(s, a, b, out->pts, K_COARSE, &be);
+        st = cf__fit_error(s, a, b, out->pts, CF__FIT_K_COARSE, &be);
     } else {
         double cand[MAX_CAND][8], quick[MAX_CAND], qbest = INFINITY;
         int nc = 0, best = 0;
@@ -1216,12 +695,12 @@ cf__fit_piece(const cf__osrc_t *s, double a, double b,
         st = levien_candidates(s, a, b, cand, &nc);
         if (st != CF_STATUS_OK)
             return st;
-        /* a quick estimate at K_QUICK samples (a subset of the coarse
+        /* a quick estimate at CF__FIT_K_QUICK samples (a subset of the coarse
         ** ones, so roughly a lower bound of the coarse estimate) screens
         ** the candidates: one it puts above the best coarse error so far,
         ** or all of them far above the tolerance, are not measured on */
         for (int i = 0; i < nc; i++) {
-            st = cf__fit_error(s, a, b, cand[i], K_QUICK, &quick[i]);
+            st = cf__fit_error(s, a, b, cand[i], CF__FIT_K_QUICK, &quick[i]);
             if (st != CF_STATUS_OK)
                 return st;
             qbest = fmin(qbest, quick[i]);
@@ -1238,7 +717,7 @@ cf__fit_piece(const cf__osrc_t *s, double a, double b,
             double e;
             if (quick[i] >= be)
                 continue;
-            st = cf__fit_error(s, a, b, cand[i], K_COARSE, &e);
+            st = cf__fit_error(s, a, b, cand[i], CF__FIT_K_COARSE, &e);
             if (st != CF_STATUS_OK)
                 return st;
             if (e < be) {
@@ -1276,7 +755,7 @@ cf__fit_piece(const cf__osrc_t *s, double a, double b,
         out->err = be;
         return CF_STATUS_OK;
     }
-    st = cf__fit_error(s, a, b, out->pts, K_FINE, &out->err);
+    st = cf__fit_error(s, a, b, out->pts, CF__FIT_K_FINE, &out->err);
     if (st == CF_STATUS_OK)
         out->err = fmax(out->err, be);
     return st;

@@ -1,11 +1,11 @@
 /*
 ** Internals shared by the offset files (prefix cf__):
-**   offset-poly.c   1-D Bernstein polynomial arithmetic and root isolation
 **   offset-cusp.c   cusp polynomial, cusps and zeros of c'
-**   offset-fit.c    exact offset sources, Levien and Tiller-Hanson fits,
-**                   error measurement
+**   offset-source.c exact offset sources and the error measurement
+**   offset-fit.c    Levien and Tiller-Hanson fits, cusp pieces
 **   offset-trim.c   self-intersections of the raw chain and trimming
-**   offset.c        public entry points, chains and joins
+**   offset-chain.c  the chain driver: splits, greedy covers, joins
+**   offset.c        public entry points and the independent measure
 */
 #ifndef CURVEFIG_OFFSET_PRIVATE_H
 #define CURVEFIG_OFFSET_PRIVATE_H
@@ -14,26 +14,8 @@
 #include <stddef.h>
 
 #include "curvefig/offset.h"
-
-/* ---- 1-D Bernstein polynomials on [0, 1]: coefficients a[0..n] --------- */
-
-double cf__bp_eval(const double *a, int n, double t);
-/* out[m + n + 1] = a * b (out must not alias a or b). */
-void cf__bp_mul(const double *a, int m, const double *b, int n,
-                double *out);
-/* out[m + r + 1]: a raised to degree m + r (out must not alias a). */
-void cf__bp_elevate(const double *a, int m, int r, double *out);
-/* out[m]: the derivative, degree m - 1 (m >= 1). */
-void cf__bp_deriv(const double *a, int m, double *out);
-/* Power basis p(x) = sum p[k] x^k on [0, h] to Bernstein on [0, 1] in the
-** variable s = x / h. */
-void cf__bp_from_power(const double *p, int n, double h, double *out);
-/* The real roots in [0, 1] of a degree-n polynomial, ascending, isolated by
-** subdivision with Descartes' rule of signs and polished by bisection; a
-** cluster narrower than 1e-13 is one root.  Writes at most cap roots and
-** sets *count to the number found (<= cap).  NO_MEMORY only. */
-cf_status_t cf__bp_roots(const double *a, int n, double *roots, size_t cap,
-                         size_t *count);
+#include "bpoly-private.h"
+#include "cubics-private.h"
 
 /* ---- sources: the exact curves that pieces approximate ----------------- */
 
@@ -54,8 +36,10 @@ typedef struct cf__osrc {
 void cf__osrc_init_offset(cf__osrc_t *s, const cf_bezier_t *c, double d);
 void cf__osrc_init_arc(cf__osrc_t *s, double cx, double cy, double r,
                        double a0, double sweep);
-/* Point of the source at t. */
-int cf__osrc_point(const cf__osrc_t *s, double t, double *p);
+/* Point at t (side: which limit where c' = 0) and travel direction u (may
+** be NULL).  Returns -1 where the direction is undefined (u = 0). */
+int cf__osrc_point_dir(const cf__osrc_t *s, double t, int side, double *p,
+                       double *u);
 /* Point and derivative with respect to t (for quadrature). */
 int cf__osrc_deriv(const cf__osrc_t *s, double t, double *p, double *dp);
 
@@ -89,6 +73,11 @@ cf_status_t cf__fit_piece(const cf__osrc_t *s, double a, double b,
                           cf_offset_method_t method, double reject,
                           cf__fit_t *out);
 
+/* Sample counts of the error estimates: quick screening, coarse, fine. */
+#define CF__FIT_K_QUICK 4
+#define CF__FIT_K_COARSE 12
+#define CF__FIT_K_FINE 40
+
 /* Two-sided Hausdorff estimate between the source on [a, b] and the cubic
 ** pts[8], with k samples each side (k >= 4). */
 cf_status_t cf__fit_error(const cf__osrc_t *s, double a, double b,
@@ -105,22 +94,28 @@ cf_status_t cf__base_cusps_alloc(const cf_bezier_t *c, double **ts,
 /* A size of c' for relative tests: degree * max |P_i - P_0|. */
 double cf__deriv_scale(const cf_bezier_t *c);
 
-/* ---- chains ------------------------------------------------------------ */
+/* ---- the chain driver (offset-chain.c) ------------------------------- */
 
-/* A growing chain of cubics (dim 2). */
-typedef struct cf__chain {
-    cf_cubics_t *cubics;
-    size_t cap;
-} cf__chain_t;
+/* The cover of pieces by fitted cubics: splits at offset cusps and zeros
+** of c', greedy longest pieces (Levien) or bisection (Tiller-Hanson), round
+** joins; the report accumulates. */
+typedef struct cf__driver {
+    cf__chain_t chain;
+    double tol;
+    cf_offset_method_t method;
+    double d;
+    double T0, T1;              /* parameter range of the current piece */
+    cf_offset_report_t rep;
+} cf__driver_t;
 
-cf_status_t cf__chain_init(cf__chain_t *ch);
-/* Append a cubic covering source parameters [t0, t1] (t0 must equal the
-** last end parameter; the first call sets the start). */
-cf_status_t cf__chain_push(cf__chain_t *ch, const double *pts, double t0,
-                           double t1);
-/* Hand the chain over (NULL on an empty chain is not an error). */
-cf_cubics_t *cf__chain_take(cf__chain_t *ch);
-void cf__chain_fini(cf__chain_t *ch);
+/* A driver with an empty chain (NO_MEMORY only). */
+cf_status_t cf__driver_init(cf__driver_t *dr, double tol,
+                            cf_offset_method_t method, double d);
+/* Append the offset of the planar piece c (parameters [T0, T1]). */
+cf_status_t cf__driver_piece(cf__driver_t *dr, const cf_bezier_t *c);
+/* The round join between consecutive pieces that meet at an angle. */
+cf_status_t cf__driver_join(cf__driver_t *dr, const cf_bezier_t *prev,
+                            const cf_bezier_t *next);
 
 /* The planar curve c itself (not a polynomial of degree <= 3) as a chain
 ** of cubics fitted by the offset machinery at d = 0 (split at the zeros of
@@ -129,10 +124,13 @@ void cf__chain_fini(cf__chain_t *ch);
 cf_status_t cf__fit_plain(const cf_bezier_t *c, double tol,
                           cf_cubics_t **out, bool *converged);
 
-/* Trim the raw chain of the pieces `base[0..n-1]` at d: split at the
-** self-intersections and keep the parts at distance >= |d| - tol. */
+/* Trim the raw chain of the pieces `base[0..n-1]` (source parameters
+** [t0[k], t1[k]], or [k, k + 1] when NULL) at d: split at the
+** self-intersections and keep the parts at distance >= |d| - tol, a cut
+** piece fitted again; each chain's max_error is its measured error. */
 cf_status_t cf__offset_trim(const cf_bezier_t *const *base, size_t nbase,
-                            double d, double tol, const cf_cubics_t *raw,
+                            const double *t0, const double *t1, double d,
+                            double tol, const cf_cubics_t *raw,
                             cf_cubics_list_t **out, size_t *nisect);
 
 #endif

@@ -4,6 +4,9 @@
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+
+#include <dirent.h>
 
 #include <cmocka.h>
 
@@ -123,4 +126,30 @@ long
 tu_alloc_live(void)
 {
     return live_blocks;
+}
+
+static int
+by_name(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+size_t
+tu_figure_scripts(const char *dir, char **names, size_t max)
+{
+    DIR *d = opendir(dir);
+    struct dirent *de;
+    size_t n = 0;
+    assert_non_null(d);
+    while ((de = readdir(d)) != NULL && n < max) {
+        size_t k = strlen(de->d_name);
+        if (k > 4 && strcmp(de->d_name + k - 4, ".lua") == 0) {
+            names[n] = malloc(k + 1);
+            assert_non_null(names[n]);
+            memcpy(names[n++], de->d_name, k + 1);
+        }
+    }
+    closedir(d);
+    qsort(names, n, sizeof *names, by_name);
+    return n;
 }

@@ -40,4 +40,8 @@ void tu_fail_alloc_after(long k);
 void tu_fail_alloc_reset(void);
 long tu_alloc_live(void);
 
+/* The names of the figure scripts (*.lua) in dir, sorted, strdup'd into
+** names (at most max); their number. */
+size_t tu_figure_scripts(const char *dir, char **names, size_t max);
+
 #endif

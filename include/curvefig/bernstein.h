@@ -24,18 +24,18 @@ extern "C" {
 #define CF_BERNSTEIN_MATRIX_MAX_DEGREE 64
 
 /* *out = B_i^n(t) (0 when i < 0 or i > n). */
-cf_status_t cf_bernstein_value(int n, int i, double t, double *out);
+CF_API cf_status_t cf_bernstein_value(int n, int i, double t, double *out);
 
 /* out[0..n] = B_0^n(t) ... B_n^n(t). */
-cf_status_t cf_bernstein_all(int n, double t, double *out);
+CF_API cf_status_t cf_bernstein_all(int n, double t, double *out);
 
 /* out[0..n] = the k-th derivatives (k >= 0) of B_0^n ... B_n^n at t
 ** (all zero when k > n). */
-cf_status_t cf_bernstein_all_deriv(int n, int k, double t, double *out);
+CF_API cf_status_t cf_bernstein_all_deriv(int n, int k, double t, double *out);
 
 /* Evaluate sum_i coef[i] B_i^n(t) (de Casteljau); allocates nothing. */
-cf_status_t cf_bernstein_eval(int n, const double *coef, double t,
-                              double *out);
+CF_API cf_status_t cf_bernstein_eval(int n, const double *coef, double t,
+                                     double *out);
 
 /*
 ** The conversion matrices of seed 004, (n + 1) x (n + 1), row-major:
@@ -47,16 +47,17 @@ cf_status_t cf_bernstein_eval(int n, const double *coef, double t,
 **   M^-1[i][j] = C(i, j) / C(n, j) for i >= j, 0 above.
 ** Both are lower triangular.  0 <= n <= CF_BERNSTEIN_MATRIX_MAX_DEGREE.
 */
-cf_status_t cf_bernstein_to_power_matrix(int n, double *M, cf_diag_t *diag);
-cf_status_t cf_power_to_bernstein_matrix(int n, double *Minv,
-                                         cf_diag_t *diag);
+CF_API cf_status_t cf_bernstein_to_power_matrix(int n, double *M,
+                                                cf_diag_t *diag);
+CF_API cf_status_t cf_power_to_bernstein_matrix(int n, double *Minv,
+                                                cf_diag_t *diag);
 
 /* Coefficient conversions with those matrices (in and out may not alias):
 ** power a[0..n] (sum a_j t^j) -> Bernstein b[0..n] and back. */
-cf_status_t cf_bernstein_from_power(int n, const double *a, double *b,
-                                    cf_diag_t *diag);
-cf_status_t cf_bernstein_to_power(int n, const double *b, double *a,
-                                  cf_diag_t *diag);
+CF_API cf_status_t cf_bernstein_from_power(int n, const double *a, double *b,
+                                           cf_diag_t *diag);
+CF_API cf_status_t cf_bernstein_to_power(int n, const double *b, double *a,
+                                         cf_diag_t *diag);
 
 /* A real function of one variable for the approximation below. */
 typedef double (*cf_real_func_t)(double t, void *ud);
@@ -67,14 +68,15 @@ typedef double (*cf_real_func_t)(double t, void *ud);
 ** (n >= 1); a non-finite f(i/n) is an error naming i.  Evaluate f_n with
 ** cf_bernstein_eval.
 */
-cf_status_t cf_bernstein_approx(cf_real_func_t f, void *ud, int n,
-                                double *coef, cf_diag_t *diag);
+CF_API cf_status_t cf_bernstein_approx(cf_real_func_t f, void *ud, int n,
+                                       double *coef, cf_diag_t *diag);
 
 /* The graph of f_n as a planar Bézier curve of degree n: control points
 ** (i/n, f(i/n)) (linear precision makes its x coordinate equal to t), so
 ** the curve is t -> (t, f_n(t)). */
-cf_status_t cf_bernstein_approx_curve(cf_real_func_t f, void *ud, int n,
-                                      cf_bezier_t **out, cf_diag_t *diag);
+CF_API cf_status_t cf_bernstein_approx_curve(cf_real_func_t f, void *ud, int n,
+                                             cf_bezier_t **out,
+                                             cf_diag_t *diag);
 
 #ifdef __cplusplus
 }

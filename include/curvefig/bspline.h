@@ -42,25 +42,30 @@ typedef struct cf_bspline cf_bspline_t;
 ** weights == NULL makes a polynomial B-spline; otherwise count finite
 ** positive weights make a NURBS.  Inputs are copied.
 */
-cf_status_t cf_bspline_create(size_t dim, int degree, const double *knots,
-                              size_t nknots, const double *points,
-                              size_t count, const double *weights,
-                              cf_bspline_t **out, cf_diag_t *diag);
+CF_API cf_status_t cf_bspline_create(size_t dim, int degree,
+                                     const double *knots, size_t nknots,
+                                     const double *points, size_t count,
+                                     const double *weights, cf_bspline_t **out,
+                                     cf_diag_t *diag);
 
 /* A NURBS from homogeneous points (w*x, w), dim + 1 doubles each; every
 ** weight (last coordinate) must be finite and positive. */
-cf_status_t cf_bspline_create_homogeneous(size_t dim, int degree,
-                                          const double *knots, size_t nknots,
-                                          const double *hpoints, size_t count,
-                                          cf_bspline_t **out,
-                                          cf_diag_t *diag);
+CF_API cf_status_t cf_bspline_create_homogeneous(size_t dim, int degree,
+                                                 const double *knots,
+                                                 size_t nknots,
+                                                 const double *hpoints,
+                                                 size_t count,
+                                                 cf_bspline_t **out,
+                                                 cf_diag_t *diag);
 
 /* Clamped curve with uniform interior knots on the domain [0, 1]
 ** (cf_knots_clamped_uniform); weights may be NULL.  count >= degree + 1. */
-cf_status_t cf_bspline_create_clamped(size_t dim, int degree,
-                                      const double *points, size_t count,
-                                      const double *weights,
-                                      cf_bspline_t **out, cf_diag_t *diag);
+CF_API cf_status_t cf_bspline_create_clamped(size_t dim, int degree,
+                                             const double *points,
+                                             size_t count,
+                                             const double *weights,
+                                             cf_bspline_t **out,
+                                             cf_diag_t *diag);
 
 /*
 ** Closed (periodic) curve through wrapping: the count given points
@@ -69,10 +74,11 @@ cf_status_t cf_bspline_create_clamped(size_t dim, int degree,
 ** u_i = (i - p) / c, i = 0..c+2p, so the domain is [0, 1] and the curve is
 ** C^{p-1} at C(0) = C(1).  weights (count of them) may be NULL.
 */
-cf_status_t cf_bspline_create_closed(size_t dim, int degree,
-                                     const double *points, size_t count,
-                                     const double *weights,
-                                     cf_bspline_t **out, cf_diag_t *diag);
+CF_API cf_status_t cf_bspline_create_closed(size_t dim, int degree,
+                                            const double *points, size_t count,
+                                            const double *weights,
+                                            cf_bspline_t **out,
+                                            cf_diag_t *diag);
 
 /*
 ** Uniform cubic (Coons) B-spline of the thesis, chapter 4: degree 3,
@@ -90,9 +96,10 @@ typedef enum cf_coons_ends {
     CF_COONS_CLOSED
 } cf_coons_ends_t;
 
-cf_status_t cf_bspline_create_coons(size_t dim, const double *points,
-                                    size_t count, cf_coons_ends_t ends,
-                                    cf_bspline_t **out, cf_diag_t *diag);
+CF_API cf_status_t cf_bspline_create_coons(size_t dim, const double *points,
+                                           size_t count, cf_coons_ends_t ends,
+                                           cf_bspline_t **out,
+                                           cf_diag_t *diag);
 
 /* The closed form of one Coons segment (chapter 4):
 ** Q(t) = 1/6 [ (1-t)^3 P0 + (3t^3 - 6t^2 + 4) P1
@@ -100,12 +107,12 @@ cf_status_t cf_bspline_create_coons(size_t dim, const double *points,
 ** b[4] receives the four weights; cf_coons_eval writes out[dim] from the
 ** four points p4[4 * dim].  Independent of the de Boor code (tests compare
 ** the two). */
-void cf_coons_basis(double t, double b[4]);
-void cf_coons_eval(size_t dim, const double *p4, double t, double *out);
+CF_API void cf_coons_basis(double t, double b[4]);
+CF_API void cf_coons_eval(size_t dim, const double *p4, double t, double *out);
 
-cf_status_t cf_bspline_copy(const cf_bspline_t *c, cf_bspline_t **out,
-                            cf_diag_t *diag);
-void cf_bspline_destroy(cf_bspline_t *c);
+CF_API cf_status_t cf_bspline_copy(const cf_bspline_t *c, cf_bspline_t **out,
+                                   cf_diag_t *diag);
+CF_API void cf_bspline_destroy(cf_bspline_t *c);
 
 /* ---- NURBS conics (exact) ----------------------------------------------- */
 
@@ -116,41 +123,43 @@ void cf_bspline_destroy(cf_bspline_t *c);
 ** + r sin(theta) Y.  Quadratic NURBS with one rational Bézier piece per
 ** quarter turn or less (double interior knots), clamped on [0, 1].
 */
-cf_status_t cf_nurbs_arc(size_t dim, const double *O, const double *X,
-                         const double *Y, double r, double a0, double a1,
-                         cf_bspline_t **out, cf_diag_t *diag);
+CF_API cf_status_t cf_nurbs_arc(size_t dim, const double *O, const double *X,
+                                const double *Y, double r, double a0,
+                                double a1, cf_bspline_t **out,
+                                cf_diag_t *diag);
 
 /* Full circle in the plane: centre[2], radius r > 0, counter-clockwise
 ** from (cx + r, cy); 9 control points, weights 1, sqrt(2)/2, ...,
 ** knots {0,0,0,1/4,1/4,1/2,1/2,3/4,3/4,1,1,1}. */
-cf_status_t cf_nurbs_circle(const double *centre, double r,
-                            cf_bspline_t **out, cf_diag_t *diag);
+CF_API cf_status_t cf_nurbs_circle(const double *centre, double r,
+                                   cf_bspline_t **out, cf_diag_t *diag);
 
 /* ---- queries (never fail on a valid curve; 0 / NULL / false on NULL) ---- */
 
-size_t cf_bspline_dim(const cf_bspline_t *c);        /* Cartesian N */
-int cf_bspline_degree(const cf_bspline_t *c);
-size_t cf_bspline_count(const cf_bspline_t *c);      /* n + 1 points */
-size_t cf_bspline_nknots(const cf_bspline_t *c);     /* n + p + 2 */
-bool cf_bspline_is_rational(const cf_bspline_t *c);
+CF_API size_t cf_bspline_dim(const cf_bspline_t *c);        /* Cartesian N */
+CF_API int cf_bspline_degree(const cf_bspline_t *c);
+CF_API size_t cf_bspline_count(const cf_bspline_t *c);      /* n + 1 points */
+CF_API size_t cf_bspline_nknots(const cf_bspline_t *c);     /* n + p + 2 */
+CF_API bool cf_bspline_is_rational(const cf_bspline_t *c);
 /* The whole knot vector (cf_bspline_nknots doubles), owned by the curve. */
-const double *cf_bspline_knots(const cf_bspline_t *c);
+CF_API const double *cf_bspline_knots(const cf_bspline_t *c);
 /* The stored points: count * (dim + rational) doubles, owned by the curve. */
-const double *cf_bspline_hpoints(const cf_bspline_t *c);
+CF_API const double *cf_bspline_hpoints(const cf_bspline_t *c);
 /* Cartesian control points into out[count * dim]. */
-void cf_bspline_get_points(const cf_bspline_t *c, double *out);
+CF_API void cf_bspline_get_points(const cf_bspline_t *c, double *out);
 /* Weights into out[count] (all 1 for a polynomial curve). */
-void cf_bspline_get_weights(const cf_bspline_t *c, double *out);
+CF_API void cf_bspline_get_weights(const cf_bspline_t *c, double *out);
 /* The domain [u_p, u_{m-p}] (either pointer may be NULL). */
-void cf_bspline_domain(const cf_bspline_t *c, double *a, double *b);
+CF_API void cf_bspline_domain(const cf_bspline_t *c, double *a, double *b);
 /* cf_knots_classify of the curve's knots. */
-cf_knot_kind_t cf_bspline_knot_kind(const cf_bspline_t *c);
+CF_API cf_knot_kind_t cf_bspline_knot_kind(const cf_bspline_t *c);
 
 /* ---- evaluation --------------------------------------------------------- */
 
 /* out[dim] = C(u) by de Boor's algorithm (one coordinate at a time, no
 ** allocation), divided by w for a NURBS. */
-cf_status_t cf_bspline_eval(const cf_bspline_t *c, double u, double *out);
+CF_API cf_status_t cf_bspline_eval(const cf_bspline_t *c, double u,
+                                   double *out);
 
 /*
 ** out[n * dim] = C(u[0]) ... C(u[n-1]); allocates nothing.  Uses the
@@ -163,23 +172,23 @@ cf_status_t cf_bspline_eval(const cf_bspline_t *c, double u, double *out);
 ** size of the control points (tested).  On an invalid parameter, returns
 ** its status with out[0 .. i*dim) written.
 */
-cf_status_t cf_bspline_eval_many(const cf_bspline_t *c, const double *u,
-                                 size_t n, double *out);
+CF_API cf_status_t cf_bspline_eval_many(const cf_bspline_t *c, const double *u,
+                                        size_t n, double *out);
 
 /* out[(k + 1) * dim] = C(u), C'(u), ..., C^(k)(u), k >= 0 (A3.2 on the
 ** basis derivatives; for a NURBS the exact rational derivatives by the
 ** quotient rule on the homogeneous derivatives, A4.2).  At an interior
 ** knot the derivatives are those of the piece on the right (right
 ** limit); at the right end of the domain those of the last piece. */
-cf_status_t cf_bspline_eval_derivs(const cf_bspline_t *c, double u, int k,
-                                   double *out);
+CF_API cf_status_t cf_bspline_eval_derivs(const cf_bspline_t *c, double u,
+                                          int k, double *out);
 
 /* out[n * dim] = C^(k)(u[i]) for each i (k >= 0; for a NURBS k <= 128,
 ** INVALID_ARG above); allocates nothing; spans are found like
 ** cf_bspline_eval_many. */
-cf_status_t cf_bspline_eval_deriv_many(const cf_bspline_t *c, int k,
-                                       const double *u, size_t n,
-                                       double *out);
+CF_API cf_status_t cf_bspline_eval_deriv_many(const cf_bspline_t *c, int k,
+                                              const double *u, size_t n,
+                                              double *out);
 
 /*
 ** The whole de Boor net at u (thesis §3.2, figures 3.5-3.7), Cartesian,
@@ -194,15 +203,15 @@ cf_status_t cf_bspline_eval_deriv_many(const cf_bspline_t *c, int k,
 ** level are old control points repeated (the thesis uses the first p - s
 ** levels only).  For a NURBS the net is divided by w point by point.
 */
-size_t cf_bspline_deboor_size(const cf_bspline_t *c);
-cf_status_t cf_bspline_deboor(const cf_bspline_t *c, double u, double *out,
-                              size_t *span, int *mult);
+CF_API size_t cf_bspline_deboor_size(const cf_bspline_t *c);
+CF_API cf_status_t cf_bspline_deboor(const cf_bspline_t *c, double u,
+                                     double *out, size_t *span, int *mult);
 
 /* The nonzero B-spline basis functions of the curve at u: N[j] =
 ** N_{first+j}^p(u), j = 0..p, *first = k - p (may be NULL).  For a NURBS
 ** these are the polynomial N (the rational basis is N_i w_i / sum N w). */
-cf_status_t cf_bspline_basis(const cf_bspline_t *c, double u, size_t *first,
-                             double *N);
+CF_API cf_status_t cf_bspline_basis(const cf_bspline_t *c, double u,
+                                    size_t *first, double *N);
 
 /* ---- constructions returning curves ------------------------------------- */
 
@@ -220,8 +229,8 @@ cf_status_t cf_bspline_basis(const cf_bspline_t *c, double u, size_t *first,
 ** (the pieces share no control points).  Its evaluation equals
 ** cf_bspline_eval_derivs to rounding; prefer the latter for numbers.
 */
-cf_status_t cf_bspline_derivative(const cf_bspline_t *c, int k,
-                                  cf_bspline_t **out, cf_diag_t *diag);
+CF_API cf_status_t cf_bspline_derivative(const cf_bspline_t *c, int k,
+                                         cf_bspline_t **out, cf_diag_t *diag);
 
 /* What a knot insertion did to the control polygon (figures 3.1-3.4). */
 typedef struct cf_bspline_insert_info {
@@ -246,16 +255,16 @@ typedef struct cf_bspline_insert_info {
 ** naming both).  The p + 1-th copy of an interior knot splits the curve.
 ** info (may be NULL) says which points were cut and which are new.
 */
-cf_status_t cf_bspline_insert_knot(const cf_bspline_t *c, double u, int r,
-                                   cf_bspline_t **out,
-                                   cf_bspline_insert_info_t *info,
-                                   cf_diag_t *diag);
+CF_API cf_status_t cf_bspline_insert_knot(const cf_bspline_t *c, double u,
+                                          int r, cf_bspline_t **out,
+                                          cf_bspline_insert_info_t *info,
+                                          cf_diag_t *diag);
 
 /* Knot refinement (A5.4): insert all nx knots x[] (non-decreasing, inside
 ** the domain, final multiplicities <= p + 1) at once.  nx == 0 copies. */
-cf_status_t cf_bspline_refine(const cf_bspline_t *c, const double *x,
-                              size_t nx, cf_bspline_t **out,
-                              cf_diag_t *diag);
+CF_API cf_status_t cf_bspline_refine(const cf_bspline_t *c, const double *x,
+                                     size_t nx, cf_bspline_t **out,
+                                     cf_diag_t *diag);
 
 /*
 ** Knot removal (A5.8): try to remove the interior knot u (a knot strictly
@@ -265,9 +274,10 @@ cf_status_t cf_bspline_refine(const cf_bspline_t *c, const double *x,
 ** *removed (may be NULL) receives how many times it was removed (0 when
 ** none: *out is then a copy).  BAD_KNOTS when u is not an interior knot.
 */
-cf_status_t cf_bspline_remove_knot(const cf_bspline_t *c, double u, int r,
-                                   double tol, cf_bspline_t **out,
-                                   int *removed, cf_diag_t *diag);
+CF_API cf_status_t cf_bspline_remove_knot(const cf_bspline_t *c, double u,
+                                          int r, double tol,
+                                          cf_bspline_t **out, int *removed,
+                                          cf_diag_t *diag);
 
 /*
 ** Split at u strictly inside the domain (thesis §3.3): left on [a, u],
@@ -275,14 +285,15 @@ cf_status_t cf_bspline_remove_knot(const cf_bspline_t *c, double u, int r,
 ** reparametrisation); u becomes a clamped end (multiplicity p + 1) of
 ** both, the other ends keep their knots.  Either output may be NULL.
 */
-cf_status_t cf_bspline_split(const cf_bspline_t *c, double u,
-                             cf_bspline_t **left, cf_bspline_t **right,
-                             cf_diag_t *diag);
+CF_API cf_status_t cf_bspline_split(const cf_bspline_t *c, double u,
+                                    cf_bspline_t **left, cf_bspline_t **right,
+                                    cf_diag_t *diag);
 
 /* The piece on [a, b] (domain start <= a < b <= domain end), clamped at
 ** a and b, original parameters kept. */
-cf_status_t cf_bspline_segment(const cf_bspline_t *c, double a, double b,
-                               cf_bspline_t **out, cf_diag_t *diag);
+CF_API cf_status_t cf_bspline_segment(const cf_bspline_t *c, double a,
+                                      double b, cf_bspline_t **out,
+                                      cf_diag_t *diag);
 
 /*
 ** Decomposition into Bézier segments (A5.6, after clamping an open curve
@@ -291,56 +302,57 @@ cf_status_t cf_bspline_segment(const cf_bspline_t *c, double a, double b,
 ** [0, 1]; t0[i], t1[i] give its parameter range in the B-spline.  Free
 ** with cf_bezier_list_destroy.
 */
-cf_status_t cf_bspline_to_beziers(const cf_bspline_t *c,
-                                  cf_bezier_list_t **out, cf_diag_t *diag);
+CF_API cf_status_t cf_bspline_to_beziers(const cf_bspline_t *c,
+                                         cf_bezier_list_t **out,
+                                         cf_diag_t *diag);
 
 /* The same as flat arrays, with no per-segment object: *hpoints receives
 ** *count * (p + 1) * (dim + rational) doubles (segment after segment,
 ** homogeneous layout like cf_bspline_hpoints), *breaks the *count + 1
 ** break parameters.  Both arrays are freed with cf_free; breaks may be
 ** NULL when not wanted. */
-cf_status_t cf_bspline_bezier_points(const cf_bspline_t *c, double **hpoints,
-                                     double **breaks, size_t *count,
-                                     cf_diag_t *diag);
+CF_API cf_status_t cf_bspline_bezier_points(const cf_bspline_t *c,
+                                            double **hpoints, double **breaks,
+                                            size_t *count, cf_diag_t *diag);
 
 /* Degree elevation by t >= 0 (p + t <= CF_BSPLINE_MAX_DEGREE): the same
 ** curve with degree p + t, every interior knot's multiplicity raised by t
 ** (continuity kept).  Works through the Bézier pieces, so an open curve
 ** comes back clamped to its domain. */
-cf_status_t cf_bspline_elevate(const cf_bspline_t *c, int t,
-                               cf_bspline_t **out, cf_diag_t *diag);
+CF_API cf_status_t cf_bspline_elevate(const cf_bspline_t *c, int t,
+                                      cf_bspline_t **out, cf_diag_t *diag);
 
 /* Reversal: points in opposite order, knots u'_i = u_0 + u_m - u_{m-i},
 ** so R(u) = C(u_0 + u_m - u). */
-cf_status_t cf_bspline_reverse(const cf_bspline_t *c, cf_bspline_t **out,
-                               cf_diag_t *diag);
+CF_API cf_status_t cf_bspline_reverse(const cf_bspline_t *c,
+                                      cf_bspline_t **out, cf_diag_t *diag);
 
 /* Affine image x -> A x + b (A dim x dim row-major, b[dim] or NULL for 0),
 ** applied to the control points (weights unchanged). */
-cf_status_t cf_bspline_transform(const cf_bspline_t *c, const double *A,
-                                 const double *b, cf_bspline_t **out,
-                                 cf_diag_t *diag);
+CF_API cf_status_t cf_bspline_transform(const cf_bspline_t *c, const double *A,
+                                        const double *b, cf_bspline_t **out,
+                                        cf_diag_t *diag);
 
 /* ---- figure helpers ----------------------------------------------------- */
 
 /* The interval [u_i, u_{i+p+1}) on which control point i acts (local
 ** control, thesis §2.3).  INVALID_ARG when i >= count. */
-cf_status_t cf_bspline_support(const cf_bspline_t *c, size_t i, double *lo,
-                               double *hi);
+CF_API cf_status_t cf_bspline_support(const cf_bspline_t *c, size_t i,
+                                      double *lo, double *hi);
 
 /* The control points acting on the span that contains u (strong convex
 ** hull, figures 2.7-2.8): P_first .. P_{first+p}, first = k - p, and the
 ** span [u_k, u_{k+1}) itself (span_lo, span_hi may be NULL). */
-cf_status_t cf_bspline_active_points(const cf_bspline_t *c, double u,
-                                     size_t *first, double *span_lo,
-                                     double *span_hi);
+CF_API cf_status_t cf_bspline_active_points(const cf_bspline_t *c, double u,
+                                            size_t *first, double *span_lo,
+                                            double *span_hi);
 
 /* A new curve with control point i moved by v[dim] (Cartesian; weight
 ** kept).  Polynomial: D(u) = C(u) + N_i^p(u) v (thesis §2.6); NURBS: the
 ** same with the rational basis R_i. */
-cf_status_t cf_bspline_move_point(const cf_bspline_t *c, size_t i,
-                                  const double *v, cf_bspline_t **out,
-                                  cf_diag_t *diag);
+CF_API cf_status_t cf_bspline_move_point(const cf_bspline_t *c, size_t i,
+                                         const double *v, cf_bspline_t **out,
+                                         cf_diag_t *diag);
 
 #ifdef __cplusplus
 }

@@ -30,22 +30,23 @@ extern "C" {
 ** angle a1 (radians, counter-clockwise when a1 > a0, clockwise when
 ** a1 < a0; any nonzero span, more than a turn allowed), split into
 ** ceil(|a1 - a0| / (pi/2)) equal pieces. */
-cf_status_t cf_conic_arc(double cx, double cy, double r, double a0,
-                         double a1, cf_bezier_list_t **out, cf_diag_t *diag);
+CF_API cf_status_t cf_conic_arc(double cx, double cy, double r, double a0,
+                                double a1, cf_bezier_list_t **out,
+                                cf_diag_t *diag);
 
 /* The full circle, counter-clockwise from angle 0, as four quarter arcs
 ** with exact quadrant points (closed: the last end equals the first
 ** start). */
-cf_status_t cf_conic_circle(double cx, double cy, double r,
-                            cf_bezier_list_t **out, cf_diag_t *diag);
+CF_API cf_status_t cf_conic_circle(double cx, double cy, double r,
+                                   cf_bezier_list_t **out, cf_diag_t *diag);
 
 /* Arc of the ellipse C + R(rotation) (a cos t, b sin t), a, b > 0, for t
 ** from t0 to t1 (the eccentric anomaly; split like cf_conic_arc).  The
 ** pieces are the affine image of the unit circle's arc pieces (weights
 ** unchanged), hence exact. */
-cf_status_t cf_conic_ellipse(double cx, double cy, double a, double b,
-                             double rotation, double t0, double t1,
-                             cf_bezier_list_t **out, cf_diag_t *diag);
+CF_API cf_status_t cf_conic_ellipse(double cx, double cy, double a, double b,
+                                    double rotation, double t0, double t1,
+                                    cf_bezier_list_t **out, cf_diag_t *diag);
 
 /* Arc of the parabola with vertex (vx, vy), focal length f > 0 (vertex to
 ** focus) and axis direction `axis` (radians; the focus is at
@@ -54,16 +55,16 @@ cf_status_t cf_conic_ellipse(double cx, double cy, double a, double b,
 ** for u from u0 to u1 (u0 < u1); u is the coordinate along the tangent at
 ** the vertex (for axis = pi/2 the parabola y = vy + (x - vx)^2 / (4 f)).
 ** One polynomial quadratic: P1 = the intersection of the end tangents. */
-cf_status_t cf_conic_parabola(double vx, double vy, double f, double axis,
-                              double u0, double u1, cf_bezier_list_t **out,
-                              cf_diag_t *diag);
+CF_API cf_status_t cf_conic_parabola(double vx, double vy, double f,
+                                     double axis, double u0, double u1,
+                                     cf_bezier_list_t **out, cf_diag_t *diag);
 
 /* Arc of one branch of the hyperbola C + R(rotation) (a cosh s, b sinh s),
 ** a, b > 0 (semi-axes; the branch through C + R(rotation) (a, 0)), for s
 ** from s0 to s1 (s0 < s1), in pieces of |s1 - s0| <= 2. */
-cf_status_t cf_conic_hyperbola(double cx, double cy, double a, double b,
-                               double rotation, double s0, double s1,
-                               cf_bezier_list_t **out, cf_diag_t *diag);
+CF_API cf_status_t cf_conic_hyperbola(double cx, double cy, double a, double b,
+                                      double rotation, double s0, double s1,
+                                      cf_bezier_list_t **out, cf_diag_t *diag);
 
 #ifdef __cplusplus
 }

@@ -6,6 +6,7 @@
 #ifndef CURVEFIG_H
 #define CURVEFIG_H
 
+#include "curvefig/version.h"
 #include "curvefig/core.h"
 #include "curvefig/bezier.h"
 #include "curvefig/bernstein.h"

@@ -61,6 +61,14 @@ CF_API void cf_figure_destroy(cf_figure_t *fig);
 ** NULL) with its message.  NULL fig: INVALID_ARG. */
 CF_API cf_status_t cf_figure_status(const cf_figure_t *fig, cf_diag_t *diag);
 
+/* What the last layout of the figure (a render, a dump, an ink box)
+** noted without failing: every label that lies on drawn ink (on a stroke,
+** a marker or another label; shadings do not count), placed by hand or
+** automatically, as `label "TEXT" (place P) lies on KIND N` (N counts the
+** elements from 1), one line each.  "" when none (or fig is NULL); valid
+** until the next layout or cf_figure_destroy. */
+CF_API const char *cf_figure_warnings(const cf_figure_t *fig);
+
 /* Page size in bp (before any tight cropping). */
 CF_API void cf_figure_get_size(const cf_figure_t *fig, double *width_bp,
                                double *height_bp);

@@ -21,15 +21,15 @@ extern "C" {
 ** equal: one vertex; all on a line: its two ends.  idx needs room for count
 ** entries.  count >= 1; coordinates must be finite.
 */
-cf_status_t cf_convex_hull_2d(const double *pts, size_t count, size_t stride,
-                              size_t *idx, size_t *hull_count,
-                              cf_diag_t *diag);
+CF_API cf_status_t cf_convex_hull_2d(const double *pts, size_t count,
+                                     size_t stride, size_t *idx,
+                                     size_t *hull_count, cf_diag_t *diag);
 
 /* The hull of a planar Bézier curve's (Cartesian) control points, which
 ** contains the curve (also for rational curves: weights are positive).
 ** idx needs room for degree + 1 entries.  DIM_MISMATCH unless dim == 2. */
-cf_status_t cf_bezier_hull(const cf_bezier_t *c, size_t *idx,
-                           size_t *hull_count, cf_diag_t *diag);
+CF_API cf_status_t cf_bezier_hull(const cf_bezier_t *c, size_t *idx,
+                                  size_t *hull_count, cf_diag_t *diag);
 
 /*
 ** Check that count points of dim coordinates (point i at pts[i * stride])
@@ -37,9 +37,9 @@ cf_status_t cf_bezier_hull(const cf_bezier_t *c, size_t *idx,
 ** coordinate 2 = nan; coordinates must be finite", where `what` names the
 ** array ("point", "vertex").
 */
-cf_status_t cf_check_finite_points(const double *pts, size_t count,
-                                   size_t dim, size_t stride,
-                                   const char *what, cf_diag_t *diag);
+CF_API cf_status_t cf_check_finite_points(const double *pts, size_t count,
+                                          size_t dim, size_t stride,
+                                          const char *what, cf_diag_t *diag);
 
 #ifdef __cplusplus
 }

@@ -56,10 +56,10 @@ typedef enum cf_param {
 ** their coordinates), also P_{count-1} and P_0 when closed.  count >= 2.
 ** exponent is used by CF_PARAM_POWER only and must lie in [0, 1].
 */
-cf_status_t cf_interp_parameters(size_t dim, const double *points,
-                                 size_t count, cf_param_t param,
-                                 double exponent, bool closed, double *out,
-                                 cf_diag_t *diag);
+CF_API cf_status_t cf_interp_parameters(size_t dim, const double *points,
+                                        size_t count, cf_param_t param,
+                                        double exponent, bool closed,
+                                        double *out, cf_diag_t *diag);
 
 /* ---- interpolation through points --------------------------------------- */
 
@@ -98,7 +98,7 @@ typedef struct cf_interp_options {
 } cf_interp_options_t;
 
 /* Defaults: NATURAL, degree 3, CF_PARAM_DEFAULT, no tangents, open. */
-void cf_interp_options_init(cf_interp_options_t *opt);
+CF_API void cf_interp_options_init(cf_interp_options_t *opt);
 
 /*
 ** The curve through count points (opt NULL = defaults).  The result is a
@@ -137,20 +137,20 @@ void cf_interp_options_init(cf_interp_options_t *opt);
 ** The cubic methods solve banded (or, PERIODIC, cyclic tridiagonal)
 ** collocation systems; they are exact interpolants up to rounding.
 */
-cf_status_t cf_interpolate(size_t dim, const double *points, size_t count,
-                           const cf_interp_options_t *opt,
-                           cf_bspline_t **out, cf_diag_t *diag);
+CF_API cf_status_t cf_interpolate(size_t dim, const double *points,
+                                  size_t count, const cf_interp_options_t *opt,
+                                  cf_bspline_t **out, cf_diag_t *diag);
 
 /* Names used by the figure language: "natural", "clamped", "not-a-knot",
 ** "periodic", "catmull-rom", "global"; and "uniform", "chord",
 ** "centripetal" (also "default").  INVALID_ARG with the list of valid
 ** names otherwise. */
-cf_status_t cf_interp_method_from_string(const char *name,
-                                         cf_interp_method_t *out,
-                                         cf_diag_t *diag);
-cf_status_t cf_param_from_string(const char *name, cf_param_t *out,
-                                 cf_diag_t *diag);
-const char *cf_interp_method_to_string(cf_interp_method_t method);
+CF_API cf_status_t cf_interp_method_from_string(const char *name,
+                                                cf_interp_method_t *out,
+                                                cf_diag_t *diag);
+CF_API cf_status_t cf_param_from_string(const char *name, cf_param_t *out,
+                                        cf_diag_t *diag);
+CF_API const char *cf_interp_method_to_string(cf_interp_method_t method);
 
 /* ---- least squares ------------------------------------------------------ */
 
@@ -168,11 +168,11 @@ const char *cf_interp_method_to_string(cf_interp_method_t method);
 ** interpolates).  *residual (may be NULL) receives
 ** sqrt(sum_k |C(u_k) - P_k|^2), evaluated on the result.
 */
-cf_status_t cf_approximate_lsq(size_t dim, const double *points,
-                               size_t count, size_t ncontrol,
-                               const cf_interp_options_t *opt, bool fix_ends,
-                               cf_bspline_t **out, double *residual,
-                               cf_diag_t *diag);
+CF_API cf_status_t cf_approximate_lsq(size_t dim, const double *points,
+                                      size_t count, size_t ncontrol,
+                                      const cf_interp_options_t *opt,
+                                      bool fix_ends, cf_bspline_t **out,
+                                      double *residual, cf_diag_t *diag);
 
 /* ---- chapter 4: Ferguson and Coons cubics ------------------------------- */
 
@@ -184,9 +184,10 @@ cf_status_t cf_approximate_lsq(size_t dim, const double *points,
 ** F3 = t^3 - t^2; as a Bézier cubic with control points
 ** P_0, P_0 + T_0 / 3, P_1 - T_1 / 3, P_1.  Tangents may be zero.
 */
-cf_status_t cf_ferguson_cubic(size_t dim, const double *p0, const double *p1,
-                              const double *t0, const double *t1,
-                              cf_bezier_t **out, cf_diag_t *diag);
+CF_API cf_status_t cf_ferguson_cubic(size_t dim, const double *p0,
+                                     const double *p1, const double *t0,
+                                     const double *t1, cf_bezier_t **out,
+                                     cf_diag_t *diag);
 
 /*
 ** C^1 chain of Ferguson cubics through count >= 2 points with a tangent
@@ -194,9 +195,9 @@ cf_status_t cf_ferguson_cubic(size_t dim, const double *p0, const double *p1,
 ** with tangents T_i and T_{i+1}; in the chain's parameter s = i + t the
 ** chain is C^1 (list t0[i] = i, t1[i] = i + 1).
 */
-cf_status_t cf_ferguson_chain(size_t dim, const double *points,
-                              const double *tangents, size_t count,
-                              cf_bezier_list_t **out, cf_diag_t *diag);
+CF_API cf_status_t cf_ferguson_chain(size_t dim, const double *points,
+                                     const double *tangents, size_t count,
+                                     cf_bezier_list_t **out, cf_diag_t *diag);
 
 /*
 ** Coons cubic: the uniform cubic B-spline segment of four points
@@ -205,8 +206,8 @@ cf_status_t cf_ferguson_chain(size_t dim, const double *points,
 **   B_2 = (P_1 + 2 P_2) / 3,       B_3 = (P_1 + 4 P_2 + P_3) / 6.
 ** It does not pass through P_0 or P_3 in general.
 */
-cf_status_t cf_coons_cubic(size_t dim, const double *p4, cf_bezier_t **out,
-                           cf_diag_t *diag);
+CF_API cf_status_t cf_coons_cubic(size_t dim, const double *p4,
+                                  cf_bezier_t **out, cf_diag_t *diag);
 
 /*
 ** Chain of Coons cubics (the uniform cubic B-spline of §4.3.4 as Bézier
@@ -217,9 +218,9 @@ cf_status_t cf_coons_cubic(size_t dim, const double *p4, cf_bezier_t **out,
 ** repeated at the end, count >= 3, count segments, a closed C^2 curve).
 ** Item i covers [i, i + 1] of the B-spline parameter (t0, t1).
 */
-cf_status_t cf_coons_chain(size_t dim, const double *points, size_t count,
-                           cf_coons_ends_t ends, cf_bezier_list_t **out,
-                           cf_diag_t *diag);
+CF_API cf_status_t cf_coons_chain(size_t dim, const double *points,
+                                  size_t count, cf_coons_ends_t ends,
+                                  cf_bezier_list_t **out, cf_diag_t *diag);
 
 #ifdef __cplusplus
 }

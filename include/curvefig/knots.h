@@ -47,7 +47,7 @@ typedef enum cf_knot_kind {
 
 /* Number of knots a curve of degree p with npoints control points needs:
 ** npoints + p + 1. */
-size_t cf_knots_count(int degree, size_t npoints);
+CF_API size_t cf_knots_count(int degree, size_t npoints);
 
 /*
 ** Check a knot vector for a curve of the given degree and number of control
@@ -68,54 +68,56 @@ size_t cf_knots_count(int degree, size_t npoints);
 ** An interior knot of multiplicity p + 1 is accepted: the curve may jump
 ** there (it splits into two independent curves).
 */
-cf_status_t cf_knots_validate(int degree, size_t npoints, const double *knots,
-                              size_t nknots, cf_diag_t *diag);
+CF_API cf_status_t cf_knots_validate(int degree, size_t npoints,
+                                     const double *knots, size_t nknots,
+                                     cf_diag_t *diag);
 
 /* Uniform (open) knots: out[i] = a + i (b - a) / m, i = 0..m, with
 ** m = npoints + degree; a < b.  The curve's domain is then [u_p, u_{m-p}],
 ** a sub-interval of [a, b].  out needs cf_knots_count() doubles. */
-cf_status_t cf_knots_uniform(int degree, size_t npoints, double a, double b,
-                             double *out, cf_diag_t *diag);
+CF_API cf_status_t cf_knots_uniform(int degree, size_t npoints, double a,
+                                    double b, double *out, cf_diag_t *diag);
 
 /* Clamped uniform knots: p + 1 copies of a, the n - p interior knots
 ** a + j (b - a) / (n - p + 1), j = 1..n-p, and p + 1 copies of b
 ** (n + 1 = npoints >= p + 1; a < b).  The domain is [a, b]. */
-cf_status_t cf_knots_clamped_uniform(int degree, size_t npoints, double a,
-                                     double b, double *out, cf_diag_t *diag);
+CF_API cf_status_t cf_knots_clamped_uniform(int degree, size_t npoints,
+                                            double a, double b, double *out,
+                                            cf_diag_t *diag);
 
 /* Clamped knots averaged from data parameters t_0 < ... < t_n
 ** (npoints of them, strictly increasing, finite): u_0..u_p = t_0,
 ** u_{j+p} = (t_j + ... + t_{j+p-1}) / p for j = 1..n-p, u_{m-p}..u_m = t_n
 ** (The NURBS Book eq. 9.8).  degree >= 1. */
-cf_status_t cf_knots_clamped_averaged(int degree, size_t npoints,
-                                      const double *params, double *out,
-                                      cf_diag_t *diag);
+CF_API cf_status_t cf_knots_clamped_averaged(int degree, size_t npoints,
+                                             const double *params, double *out,
+                                             cf_diag_t *diag);
 
 /* ---- queries (no checking; the vector must be valid for the degree) ----
 ** Misuse is harmless: NULL, a degree outside [0, CF_BSPLINE_MAX_DEGREE] or
 ** fewer than 2p + 2 knots give a NaN domain, span max(p, 0) and OPEN. */
 
 /* The domain [u_p, u_{m-p}] of a curve of degree p. */
-void cf_knots_domain(int degree, const double *knots, size_t nknots,
-                     double *a, double *b);
+CF_API void cf_knots_domain(int degree, const double *knots, size_t nknots,
+                            double *a, double *b);
 
 /* Span search by bisection: the k with u_k <= u < u_{k+1}, p <= k <= n
 ** (n = nknots - p - 2).  u below the domain gives p; u at or beyond the
 ** right end of the domain gives the last non-empty span (left limit). */
-size_t cf_knots_find_span(int degree, const double *knots, size_t nknots,
-                          double u);
+CF_API size_t cf_knots_find_span(int degree, const double *knots,
+                                 size_t nknots, double u);
 
 /* How many knots equal u exactly (0 when u is not a knot). */
-int cf_knots_multiplicity(const double *knots, size_t nknots, double u);
+CF_API int cf_knots_multiplicity(const double *knots, size_t nknots, double u);
 
 /* Classification for degree p (see cf_knot_kind_t; relative tolerance
 ** 1e-12 of the knot range for "equal" intervals of PERIODIC; CLAMPED wins
 ** when both apply, which happens only for p = 0). */
-cf_knot_kind_t cf_knots_classify(int degree, const double *knots,
-                                 size_t nknots);
+CF_API cf_knot_kind_t cf_knots_classify(int degree, const double *knots,
+                                        size_t nknots);
 
 /* A static name: "open", "clamped", "periodic". */
-const char *cf_knot_kind_to_string(cf_knot_kind_t kind);
+CF_API const char *cf_knot_kind_to_string(cf_knot_kind_t kind);
 
 /* ---- basis functions ---------------------------------------------------- */
 
@@ -126,17 +128,18 @@ const char *cf_knot_kind_to_string(cf_knot_kind_t kind);
 ** The vector is validated for a curve (nknots >= 2p + 2); u must lie in the
 ** domain [u_p, u_{m-p}] (DOMAIN otherwise).  N has p + 1 doubles.
 */
-cf_status_t cf_basis_funs(int degree, const double *knots, size_t nknots,
-                          double u, size_t *span, double *N, cf_diag_t *diag);
+CF_API cf_status_t cf_basis_funs(int degree, const double *knots,
+                                 size_t nknots, double u, size_t *span,
+                                 double *N, cf_diag_t *diag);
 
 /*
 ** Derivatives of the nonzero basis functions (A2.3): ders[d * (p + 1) + j]
 ** = d^d/du^d N_{k-p+j}^p(u) for d = 0..nder (rows beyond p are 0).
 ** ders has (nder + 1) * (p + 1) doubles; nder >= 0.
 */
-cf_status_t cf_basis_ders(int degree, const double *knots, size_t nknots,
-                          double u, int nder, size_t *span, double *ders,
-                          cf_diag_t *diag);
+CF_API cf_status_t cf_basis_ders(int degree, const double *knots,
+                                 size_t nknots, double u, int nder,
+                                 size_t *span, double *ders, cf_diag_t *diag);
 
 /*
 ** One basis function N_i^p(u) anywhere on the real line, for plots
@@ -145,16 +148,34 @@ cf_status_t cf_basis_ders(int degree, const double *knots, size_t nknots,
 ** non-decreasing and finite.  Outside [u_i, u_{i+p+1}) the value is 0;
 ** at u = u_m (the last knot) the left limit is taken.
 */
-cf_status_t cf_basis_one(int i, int degree, const double *knots,
-                         size_t nknots, double u, double *value,
-                         cf_diag_t *diag);
+CF_API cf_status_t cf_basis_one(int i, int degree, const double *knots,
+                                size_t nknots, double u, double *value,
+                                cf_diag_t *diag);
+
+/*
+** One basis function over the whole knot vector, as a curve to draw: *out
+** is a 1-D B-spline of degree p whose domain is [u_0, u_{m-1}] (the first
+** and last of the nknots = m knots) and whose value there is N_i^p(u) of
+** the given knots, with the conventions of cf_basis_one (0 outside
+** [u_i, u_{i+p+1}), the left limit at u_{m-1}).  The knots are padded with
+** p knots on either side at spacing u_{m-1} - u_0, and every coefficient
+** is 0 except that of N_i^p, which is 1.  cf_bspline_to_beziers gives its
+** polynomial pieces.  Needs 0 <= i, i + p + 2 <= m, knots finite and
+** non-decreasing with u_{m-1} > u_0, no knot of multiplicity above p + 1
+** (BAD_KNOTS, as for a curve).  Destroy with cf_bspline_destroy.
+*/
+struct cf_bspline;   /* cf_bspline_t, curvefig/bspline.h */
+CF_API cf_status_t cf_basis_one_spline(int i, int degree,
+                                       const double *knots, size_t nknots,
+                                       struct cf_bspline **out,
+                                       cf_diag_t *diag);
 
 /* Derivatives of one basis function: out[d] = d^d/du^d N_i^p(u),
 ** d = 0..nder (0 for d > p); the same conventions as cf_basis_one
 ** (one-sided: the derivative of the polynomial piece that owns u). */
-cf_status_t cf_basis_one_ders(int i, int degree, const double *knots,
-                              size_t nknots, double u, int nder, double *out,
-                              cf_diag_t *diag);
+CF_API cf_status_t cf_basis_one_ders(int i, int degree, const double *knots,
+                                     size_t nknots, double u, int nder,
+                                     double *out, cf_diag_t *diag);
 
 #ifdef __cplusplus
 }

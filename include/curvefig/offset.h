@@ -35,9 +35,10 @@
 ** Error.  Every piece's error is measured as a two-sided Hausdorff estimate
 ** against the exact offset on its parameter range (dense sampling, local
 ** refinement of every nearest distance and of the maximum).  The report
-** gives the largest; if a piece cannot reach the tolerance above a minimum
-** parameter width (1e-9 of its interval) it is kept and report.converged is
-** false.
+** gives the largest over everything returned, the raw pieces and (when
+** trimming) the trimmed ones; if a piece cannot reach the tolerance above
+** a minimum parameter width (1e-9 of its interval) it is kept and
+** report.converged is false.
 **
 ** Joins.  Where c' = 0 inside a curve (a cusp of the base curve, e.g.
 ** (0,0) (128,128) (128,0) (0,128)) and between Bézier pieces of a spline
@@ -50,6 +51,14 @@
 ** boundary of the swept disk on that side) is obtained by splitting the raw
 ** chain at its self-intersections and dropping the parts whose distance to
 ** the base curve is smaller than |d| - tolerance.  It is a list of chains.
+** A raw piece that is cut is fitted again (Levien's fit, whatever the
+** method; split in two if it must be) on the parameter range of the exact
+** offset it keeps: from the crossing of the exact offset (Newton's method
+** from the raw crossing; both chains end at that point) or from where the
+** exact offset's distance to the curve reaches |d| - 0.03 tolerance.  The
+** trimmed offset is so within the tolerance of the exact one on the same
+** ranges, at most one piece more per cut end than the raw pieces it
+** overlaps.
 */
 #ifndef CURVEFIG_OFFSET_H
 #define CURVEFIG_OFFSET_H
@@ -74,11 +83,12 @@ typedef struct cf_offset_options {
 } cf_offset_options_t;
 
 /* Defaults: tolerance 1e-3, Levien fit, no trimming. */
-void cf_offset_options_init(cf_offset_options_t *opt);
+CF_API void cf_offset_options_init(cf_offset_options_t *opt);
 
 typedef struct cf_offset_report {
     size_t segments;            /* cubics in the raw offset */
-    double max_error;           /* largest measured error of a raw piece */
+    double max_error;           /* largest measured error of a returned
+                                ** piece (raw, and trimmed when trimming) */
     bool converged;             /* every piece within tolerance */
     size_t cusps;               /* offset cusps found (split points) */
     size_t joins;               /* round joins (c' = 0 inside, corners) */
@@ -94,26 +104,26 @@ typedef struct cf_cubics_list {
     cf_cubics_t **chains;
 } cf_cubics_list_t;
 
-void cf_cubics_list_destroy(cf_cubics_list_t *list);
+CF_API void cf_cubics_list_destroy(cf_cubics_list_t *list);
 
 /* ---- exact offset ------------------------------------------------------- */
 
 /* out[2] = c(t) + d n(t) for a planar (dim 2) curve, polynomial or
 ** rational; t in [0, 1].  Never allocates.  DEGENERATE if every derivative
 ** vanishes (a single point) and d != 0. */
-cf_status_t cf_offset_point(const cf_bezier_t *c, double t, double d,
-                            double *out);
+CF_API cf_status_t cf_offset_point(const cf_bezier_t *c, double t, double d,
+                                   double *out);
 
 /* out[2 * n]: the offset at n parameters (allocation-free batch form). */
-cf_status_t cf_offset_point_many(const cf_bezier_t *c, const double *t,
-                                 size_t n, double d, double *out);
+CF_API cf_status_t cf_offset_point_many(const cf_bezier_t *c, const double *t,
+                                        size_t n, double d, double *out);
 
 /* The cusp parameters of the offset at d inside (0, 1), ascending: the
 ** parameters where the radius of curvature equals |d| on the side of d.
 ** Writes min(count, cap) of them into ts (ts may be NULL when cap == 0) and
 ** the total into *count. */
-cf_status_t cf_offset_cusps(const cf_bezier_t *c, double d, double *ts,
-                            size_t cap, size_t *count, cf_diag_t *diag);
+CF_API cf_status_t cf_offset_cusps(const cf_bezier_t *c, double d, double *ts,
+                                   size_t cap, size_t *count, cf_diag_t *diag);
 
 /* ---- approximation by cubics -------------------------------------------- */
 
@@ -123,15 +133,17 @@ cf_status_t cf_offset_cusps(const cf_bezier_t *c, double d, double *ts,
 ** chain, raw->t[i] .. raw->t[i + 1] the parameter range of c that piece i
 ** offsets (equal for a join arc), raw->max_error the largest measured error.
 ** *trimmed (may be NULL; computed when opt->trim) receives the trimmed
-** offset; its chains keep the parameters of their raw pieces (a part of a
-** piece gets that piece's range).  rep may be NULL.  d == 0 gives the curve
+** offset; its chains carry the parameters of c that their pieces offset
+** (a cut piece the part of its raw range it keeps) and their measured
+** max_error.  rep may be NULL.  d == 0 gives the curve
 ** itself (cf_bezier_to_cubics).  Release with cf_cubics_destroy and
 ** cf_cubics_list_destroy.
 */
-cf_status_t cf_bezier_offset(const cf_bezier_t *c, double d,
-                             const cf_offset_options_t *opt,
-                             cf_cubics_t **raw, cf_cubics_list_t **trimmed,
-                             cf_offset_report_t *rep, cf_diag_t *diag);
+CF_API cf_status_t cf_bezier_offset(const cf_bezier_t *c, double d,
+                                    const cf_offset_options_t *opt,
+                                    cf_cubics_t **raw,
+                                    cf_cubics_list_t **trimmed,
+                                    cf_offset_report_t *rep, cf_diag_t *diag);
 
 /*
 ** The same for a piecewise curve given as consecutive Bézier pieces (the
@@ -139,19 +151,22 @@ cf_status_t cf_bezier_offset(const cf_bezier_t *c, double d,
 ** must meet).  Parameters in the output are those of list->t0/t1 when given
 ** (the spline's knots), otherwise piece i covers [i, i + 1].
 */
-cf_status_t cf_bezier_list_offset(const cf_bezier_list_t *list, double d,
-                                  const cf_offset_options_t *opt,
-                                  cf_cubics_t **raw,
-                                  cf_cubics_list_t **trimmed,
-                                  cf_offset_report_t *rep, cf_diag_t *diag);
+CF_API cf_status_t cf_bezier_list_offset(const cf_bezier_list_t *list,
+                                         double d,
+                                         const cf_offset_options_t *opt,
+                                         cf_cubics_t **raw,
+                                         cf_cubics_list_t **trimmed,
+                                         cf_offset_report_t *rep,
+                                         cf_diag_t *diag);
 
 /* A B-spline or NURBS curve (dim 2): its Bézier pieces
 ** (cf_bspline_to_beziers) through cf_bezier_list_offset; parameters in the
 ** output are the spline's. */
-cf_status_t cf_bspline_offset(const cf_bspline_t *s, double d,
-                              const cf_offset_options_t *opt,
-                              cf_cubics_t **raw, cf_cubics_list_t **trimmed,
-                              cf_offset_report_t *rep, cf_diag_t *diag);
+CF_API cf_status_t cf_bspline_offset(const cf_bspline_t *s, double d,
+                                     const cf_offset_options_t *opt,
+                                     cf_cubics_t **raw,
+                                     cf_cubics_list_t **trimmed,
+                                     cf_offset_report_t *rep, cf_diag_t *diag);
 
 /*
 ** Independent check of an offset approximation of c at d: the two-sided
@@ -162,9 +177,9 @@ cf_status_t cf_bspline_offset(const cf_bspline_t *s, double d,
 ** ranges) are measured against the circle of radius |d| about c(t[i]).
 ** An upper bound, up to sampling, of the Hausdorff distance of the unions.
 */
-cf_status_t cf_offset_measure(const cf_bezier_t *c, double d,
-                              const cf_cubics_t *approx, size_t samples,
-                              double *error, cf_diag_t *diag);
+CF_API cf_status_t cf_offset_measure(const cf_bezier_t *c, double d,
+                                     const cf_cubics_t *approx, size_t samples,
+                                     double *error, cf_diag_t *diag);
 
 #ifdef __cplusplus
 }

@@ -24,12 +24,14 @@ typedef enum cf_format {
     CF_FORMAT_PS,
     CF_FORMAT_EPS,
     CF_FORMAT_PNG,
+    CF_FORMAT_PGF,    /* a pgfpicture to \input in a TeX document that loads
+                         pgf or tikz; labels set by TeX (docs/latex.md) */
     CF_FORMAT_LAST_
 } cf_format_t;
 
 #define CF_FORMAT_BIT(f) (1u << (f))
 
-/* "svg" "pdf" "ps" "eps" "png" -> format; INVALID_ARG otherwise. */
+/* "svg" "pdf" "ps" "eps" "png" "pgf" -> format; INVALID_ARG otherwise. */
 CF_API cf_status_t cf_format_from_name(const char *name, cf_format_t *out,
                                        cf_diag_t *diag);
 /* "svg", ... ("" for an invalid value). */

@@ -35,7 +35,8 @@ l_bernstein_all(lua_State *L)
     int n = cf__lua_check_int(L, 1, "bernstein_all", "n", 0,
                               CF_BEZIER_MAX_DEGREE);
     double t = cf__lua_check_finite(L, 2, "bernstein_all", "t");
-    int k = cf__lua_opt_int(L, 3, "bernstein_all", "k", 0, 64, 0);
+    int k = cf__lua_opt_int(L, 3, "bernstein_all", "k", 0, CF__LUA_MAX_DERIV,
+                            0);
     double *v = cf__lua_buffer(L, (size_t)n + 1);
     if (cf_bernstein_all_deriv(n, k, t, v) != CF_STATUS_OK)
         return cf__lua_error(L, "bernstein_all: t = %g is outside [0, 1]", t);

@@ -169,7 +169,7 @@ m_derivs(lua_State *L)
 {
     cf_bezier_t *c = cf__lua_check_bezier(L, 1);
     double t = cf__lua_check_finite(L, 2, "derivs", "t");
-    int k = cf__lua_opt_int(L, 3, "derivs", "k", 0, 64, 1);
+    int k = cf__lua_opt_int(L, 3, "derivs", "k", 0, CF__LUA_MAX_DERIV, 1);
     size_t dim = cf_bezier_dim(c);
     double *out = cf__lua_buffer(L, (size_t)(k + 1) * dim);
     cf_status_t st = cf_bezier_eval_derivs(c, t, k, out);
@@ -227,7 +227,7 @@ static int
 m_derivative(lua_State *L)
 {
     cf_bezier_t *c = cf__lua_check_bezier(L, 1);
-    int k = cf__lua_opt_int(L, 2, "derivative", "k", 0, 64, 1);
+    int k = cf__lua_opt_int(L, 2, "derivative", "k", 0, CF__LUA_MAX_DERIV, 1);
     cf_bezier_t **out = cf__lua_new_bezier(L);
     cf_diag_t diag;
     cf_status_t st;

@@ -249,7 +249,7 @@ m_derivs(lua_State *L)
 {
     cf_bspline_t *c = cf__lua_check_bspline(L, 1);
     double u = cf__lua_check_finite(L, 2, "derivs", "u");
-    int k = cf__lua_opt_int(L, 3, "derivs", "k", 0, 64, 1);
+    int k = cf__lua_opt_int(L, 3, "derivs", "k", 0, CF__LUA_MAX_DERIV, 1);
     size_t dim = cf_bspline_dim(c);
     double *out = cf__lua_buffer(L, (size_t)(k + 1) * dim);
     if (cf_bspline_eval_derivs(c, u, k, out) != CF_STATUS_OK)
@@ -301,7 +301,7 @@ static int
 m_derivative(lua_State *L)
 {
     cf_bspline_t *c = cf__lua_check_bspline(L, 1);
-    int k = cf__lua_opt_int(L, 2, "derivative", "k", 0, 64, 1);
+    int k = cf__lua_opt_int(L, 2, "derivative", "k", 0, CF__LUA_MAX_DERIV, 1);
     cf_bspline_t **out = cf__lua_new_bspline(L);
     cf_diag_t diag;
     cf_diag_clear(&diag);

@@ -130,8 +130,9 @@ check_points(lua_State *L, int idx, const char *fn, const char *what,
             cf__lua_error(L, "%s: %s %zu has %zu coordinates, %s 1 has %zu",
                           fn, what, i + 1, di, what, d);
     }
-    if (n > 0 && d > 64)
-        cf__lua_error(L, "%s: points with %zu coordinates; at most 64", fn, d);
+    if (n > 0 && d > CF__LUA_MAX_DIM)
+        cf__lua_error(L, "%s: points with %zu coordinates; at most %d", fn, d,
+                      CF__LUA_MAX_DIM);
     buf = cf__lua_buffer(L, n * d);
     for (size_t i = 0; i < n; i++) {
         lua_geti(L, idx, (lua_Integer)i + 1);

@@ -23,6 +23,11 @@
 /* Registry flag: true when labels are left out (render --no-labels). */
 #define CF__LUA_NO_LABELS "curvefig.nolabels"
 
+/* Limits of the figure language, relied on by the bindings' stack
+** buffers: coordinates per point, and the highest derivative order. */
+#define CF__LUA_MAX_DIM 64
+#define CF__LUA_MAX_DERIV 64
+
 /* luaL_error with the C library's printf (%zu, %g), message <= 511 bytes;
 ** the script's file and line are put in front. */
 int cf__lua_error(lua_State *L, const char *fmt, ...)

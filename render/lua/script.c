@@ -42,7 +42,7 @@ struct cf_script {
     int limit_hit;
     int running;       /* a script is running (the stack can be read) */
     char where[160];   /* "file:line:" last seen by the hook, or "" */
-    cf_allocator_t saved_allocator;
+    cf_allocator_t alloc;   /* the budget, current while the script runs */
     char *error;
 };
 
@@ -401,7 +401,8 @@ cf_script_create(const cf_script_limits_t *limits, FILE *out,
                  cf_script_t **script, cf_diag_t *diag)
 {
     cf_script_t *s;
-    cf_allocator_t a;
+    cf_allocator_t prev;
+    int rc;
     if (script == NULL)
         return fail(diag, CF_STATUS_INVALID_ARG, "script is NULL%s", NULL);
     *script = NULL;
@@ -423,13 +424,14 @@ cf_script_create(const cf_script_limits_t *limits, FILE *out,
         free(s);
         return st;
     }
-    cf_get_allocator(&s->saved_allocator);
-    a.realloc = library_alloc;
-    a.ud = s;
-    cf_set_allocator(&a);
+    s->alloc.realloc = library_alloc;
+    s->alloc.ud = s;
     lua_pushcfunction(s->L, open_sandbox);
+    cf_use_allocator(&s->alloc, &prev);
+    rc = lua_pcall(s->L, 0, 0, 0);
+    cf_use_allocator(&prev, NULL);
     /* the budget must hold the sandbox without touching the reserve */
-    if (lua_pcall(s->L, 0, 0, 0) != LUA_OK || s->limit_hit) {
+    if (rc != LUA_OK || s->limit_hit) {
         cf_status_t st = s->limit_hit
                              ? too_small(s, diag)
                              : fail(diag, CF_STATUS_NO_MEMORY,
@@ -449,7 +451,6 @@ cf_script_destroy(cf_script_t *s)
     if (s == NULL)
         return;
     lua_close(s->L);
-    cf_set_allocator(&s->saved_allocator);
     free(s->error);
     free(s);
 }
@@ -494,12 +495,15 @@ static cf_status_t
 run_loaded(cf_script_t *s, int rc, const char *name)
 {
     lua_State *L = s->L;
+    cf_allocator_t prev;
     if (rc != LUA_OK)
         return finish(s, rc, name);
     lua_pushcfunction(L, cf__lua_traceback);
     lua_insert(L, -2);
     s->running = 1;
+    cf_use_allocator(&s->alloc, &prev);
     rc = lua_pcall(L, 0, 0, -2);
+    cf_use_allocator(&prev, NULL);
     s->running = 0;
     return finish(s, rc, name);
 }

@@ -37,9 +37,11 @@ typedef struct cf_script_limits {
 #define CF_SCRIPT_DEFAULT_INSTRUCTIONS 500000000ull
 
 /* A fresh sandbox; `out` receives what the script prints (NULL: stdout).
-** limits may be NULL (defaults).  The script's memory budget becomes the
-** curve library's allocator (cf_set_allocator) until cf_script_destroy
-** puts the previous one back: one script at a time per process. */
+** limits may be NULL (defaults).  The script's memory budget is the curve
+** library's current allocator of the calling thread while the script runs
+** (cf_use_allocator), so the curves it makes count against its own limit;
+** scripts are independent: several may be alive in one process, created
+** and destroyed in any order. */
 cf_status_t cf_script_create(const cf_script_limits_t *limits, FILE *out,
                              cf_script_t **script, cf_diag_t *diag);
 void cf_script_destroy(cf_script_t *script);

@@ -124,7 +124,7 @@ put_oneline(FILE *f, const char *s)
 
 void
 cf__tool_manifest_line(FILE *f, const char *name, const char *caption,
-                       unsigned formats)
+                       unsigned formats, const char *script)
 {
     int first = 1;
     fprintf(f, "%s\t", name);
@@ -137,10 +137,12 @@ cf__tool_manifest_line(FILE *f, const char *name, const char *caption,
     }
     fputc('\t', f);
     put_oneline(f, caption);
+    fputc('\t', f);
+    put_oneline(f, script);
     fputc('\n', f);
 }
 
-/* ---- the gallery -------------------------------------------------------- */
+/* ---- HTML --------------------------------------------------------------- */
 
 void
 cf__tool_put_html(FILE *f, const char *s, size_t n)
@@ -154,115 +156,6 @@ cf__tool_put_html(FILE *f, const char *s, size_t n)
         default: fputc(s[i], f); break;
         }
     }
-}
-
-static const char gallery_head[] =
-    "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-    "<meta name=\"viewport\" "
-    "content=\"width=device-width, initial-scale=1\">\n"
-    "<title>%s</title>\n<style>\n"
-    "body{font-family:serif;margin:2em auto;max-width:72em;padding:0 1em}\n"
-    "main{display:grid;"
-    "grid-template-columns:repeat(auto-fill,minmax(20em,1fr));"
-    "gap:1.5em}\n"
-    "h2{grid-column:1/-1;margin:1em 0 0;border-bottom:1px solid #ccc}\n"
-    "figure{margin:0;padding:.5em;border:1px solid #ddd;border-radius:4px}\n"
-    "figure img{width:100%%;height:14em;object-fit:contain}\n"
-    "figcaption{font-size:.9em}\nfigcaption b{font-family:monospace}\n"
-    "</style>\n</head>\n<body>\n<h1>%s</h1>\n<main>\n";
-
-/* One manifest line: name TAB formats TAB caption. */
-static void
-gallery_entry(FILE *out, char *line, char *group, size_t group_size)
-{
-    char *name = line, *fmts, *cap, *e;
-    size_t plen;
-    fmts = strchr(name, '\t');
-    if (fmts == NULL)
-        return;
-    *fmts++ = '\0';
-    cap = strchr(fmts, '\t');
-    if (cap == NULL)
-        return;
-    *cap++ = '\0';
-    e = strchr(cap, '\n');
-    if (e != NULL)
-        *e = '\0';
-    /* a heading whenever the seed prefix (before the first '-') changes */
-    plen = strcspn(name, "-");
-    if (strlen(group) != plen || strncmp(group, name, plen) != 0) {
-        snprintf(group, group_size, "%.*s", (int)plen, name);
-        fputs("<h2>", out);
-        cf__tool_put_html(out, group, plen);
-        fputs("</h2>\n", out);
-    }
-    fputs("<figure id=\"", out);
-    cf__tool_put_html(out, name, strlen(name));
-    fputs("\">", out);
-    if (strstr(fmts, "svg") != NULL || strstr(fmts, "png") != NULL) {
-        const char *img = strstr(fmts, "svg") != NULL ? "svg" : "png";
-        fputs("<a href=\"", out);
-        cf__tool_put_html(out, name, strlen(name));
-        fprintf(out, ".%s\"><img src=\"", img);
-        cf__tool_put_html(out, name, strlen(name));
-        fprintf(out, ".%s\" alt=\"", img);
-        cf__tool_put_html(out, cap, strlen(cap));
-        fputs("\" loading=\"lazy\"></a>", out);
-    }
-    fputs("\n<figcaption><b>", out);
-    cf__tool_put_html(out, name, strlen(name));
-    fputs("</b> ", out);
-    cf__tool_put_html(out, cap, strlen(cap));
-    fputs("<br>", out);
-    for (char *f = strtok(fmts, ","); f != NULL; f = strtok(NULL, ",")) {
-        char upper[8];
-        size_t k;
-        for (k = 0; k + 1 < sizeof upper && f[k] != '\0'; k++)
-            upper[k] = (char)(f[k] >= 'a' && f[k] <= 'z' ? f[k] - 32 : f[k]);
-        upper[k] = '\0';
-        fputs(" <a href=\"", out);
-        cf__tool_put_html(out, name, strlen(name));
-        fprintf(out, ".%s\">%s</a>", f, upper);
-    }
-    fputs("</figcaption></figure>\n", out);
-}
-
-int
-cf__tool_gallery(const char *out_path, const char *title,
-                 const char *const *manifests, int count)
-{
-    FILE *out;
-    char line[4096], group[64] = "";
-    if (title == NULL)
-        title = "curvefig figures";
-    if (out_path == NULL || strcmp(out_path, ".") == 0)
-        out_path = "index.html";
-    out = cf__tool_open_atomic(out_path);
-    if (out == NULL) {
-        fprintf(stderr, "curvefig: cannot write %s: %s\n", out_path,
-                strerror(errno));
-        return 1;
-    }
-    fprintf(out, gallery_head, title, title);
-    for (int i = 0; i < count; i++) {
-        FILE *m = fopen(manifests[i], "r");
-        if (m == NULL) {
-            fprintf(stderr, "curvefig: cannot read %s: %s\n", manifests[i],
-                    strerror(errno));
-            cf__tool_discard_atomic(out, out_path);
-            return 2;
-        }
-        while (fgets(line, sizeof line, m) != NULL)
-            gallery_entry(out, line, group, sizeof group);
-        fclose(m);
-    }
-    fputs("</main>\n</body>\n</html>\n", out);
-    if (cf__tool_close_atomic(out, out_path) != 0) {
-        fprintf(stderr, "curvefig: cannot write %s: %s\n", out_path,
-                strerror(errno));
-        return 1;
-    }
-    return 0;
 }
 
 /* ---- directory listings ------------------------------------------------- */

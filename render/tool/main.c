@@ -182,7 +182,7 @@ parse_args(int argc, char **argv, options *o, int *rc)
         } else if (strcmp(a, "-f") == 0 || strcmp(a, "--formats") == 0) {
             if (parse_formats(v, &o->formats) != 0) {
                 *rc = usage_error("bad format list '%s' (use svg, pdf, png, "
-                                  "ps, eps or all, separated by commas)", v);
+                                  "ps, eps, pgf or all, separated by commas)", v);
                 return -1;
             }
         } else if (strcmp(a, "--dpi") == 0) {
@@ -345,6 +345,26 @@ print_written(const char *base, unsigned formats, unsigned steps,
     }
 }
 
+/* The figure's warnings (labels on ink) on stderr, each naming the
+** figure; they do not fail the render. */
+static void
+warn_labels(const cf_script_t *s, size_t i, const char *script)
+{
+    const char *w = cf_figure_warnings(cf_script_figure(s, i));
+    const char *where = cf_script_figure_where(s, i);
+    while (*w != '\0') {
+        const char *nl = strchr(w, '\n');
+        int n = nl != NULL ? (int)(nl - w) : (int)strlen(w);
+        if (where[0] != '\0')
+            fprintf(stderr, "curvefig: %sfigure '%s': warning: %.*s\n",
+                    where, cf_script_figure_name(s, i), n, w);
+        else
+            fprintf(stderr, "curvefig: %s: figure '%s': warning: %.*s\n",
+                    script, cf_script_figure_name(s, i), n, w);
+        w += n + (nl != NULL);
+    }
+}
+
 static int
 render_figures(const cf_script_t *s, const options *o)
 {
@@ -386,7 +406,10 @@ render_figures(const cf_script_t *s, const options *o)
                         o->script, name,
                         diag.msg[0] ? diag.msg : cf_status_to_string(st));
             rc = EXIT_SCRIPT;
-        } else if (o->verbose) {
+        } else {
+            warn_labels(s, i, o->script);
+        }
+        if (st == CF_STATUS_OK && o->verbose) {
             print_written(base, o->formats, cf_figure_steps(fig), o->steps);
         }
         free(base);
@@ -403,7 +426,7 @@ render_figures(const cf_script_t *s, const options *o)
                 continue;
             cf__tool_manifest_line(man, cf_script_figure_name(s, i),
                                    cf_script_figure_caption(s, i),
-                                   o->formats);
+                                   o->formats, o->script);
         }
         if (cf__tool_close_atomic(man, o->manifest) != 0) {
             fprintf(stderr, "curvefig: cannot write %s: %s\n", o->manifest,

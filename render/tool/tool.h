@@ -23,13 +23,14 @@ void cf__tool_discard_atomic(FILE *f, const char *path);
 char **cf__tool_list_dir(const char *dir, const char *suffix, size_t *count);
 void cf__tool_free_list(char **list, size_t count);
 
-/* One line of a render manifest: name TAB formats TAB caption. */
+/* One line of a render manifest: name TAB formats TAB caption TAB script
+** (the path of the script that made the figure). */
 void cf__tool_manifest_line(FILE *f, const char *name, const char *caption,
-                            unsigned formats);
+                            unsigned formats, const char *script);
 /* Write the first n bytes of s (up to a NUL) with & < > " escaped. */
 void cf__tool_put_html(FILE *f, const char *s, size_t n);
-/* Write the HTML gallery `out` from manifests in the given order; returns
-** the exit status. */
+/* Write the HTML gallery `out` from manifests in the given order
+** (gallery.c); returns the exit status. */
 int cf__tool_gallery(const char *out, const char *title,
                      const char *const *manifests, int count);
 

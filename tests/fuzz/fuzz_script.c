@@ -9,7 +9,8 @@
 ** Lua's hooks off, so an endless loop in one escapes the instruction
 ** limit and only the tool's wall-clock watchdog stops it.  A script either runs or fails with
 ** a message; the figures it defined are then rendered to SVG in memory
-** (at most 2, to keep an execution short).  What the script prints goes to
+** (at most 2, to keep an execution short), the first also to PGF (a
+** whole pgfpicture, or an error).  What the script prints goes to
 ** /dev/null.
 */
 #include <stdint.h>
@@ -72,6 +73,21 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             FZ_CHECK(st != CF_STATUS_OK || (out != NULL && outlen > 0),
                      "rendered something");
             cf_free(out);
+            if (i == 0) {
+                static const char end[] = "\\end{pgfpicture}%\n";
+                out = NULL;
+                outlen = 0;
+                cf_diag_clear(&diag);
+                st = cf_figure_render(fig, CF_FORMAT_PGF, NULL, &out,
+                                      &outlen, &diag);
+                fz_check_status(st, &diag, "figure_render pgf");
+                FZ_CHECK(st != CF_STATUS_OK
+                             || (outlen > sizeof end
+                                 && memcmp(out + outlen - (sizeof end - 1),
+                                           end, sizeof end - 1) == 0),
+                         "a whole pgfpicture");
+                cf_free(out);
+            }
         }
     }
     cf_script_destroy(s);

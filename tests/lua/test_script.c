@@ -1,8 +1,8 @@
 /*
 ** The script runner in-process (render/lua/script.h): its API, the limits,
-** the allocator hand-over, and a seeded mutation fuzz of a figure script
-** (every mutant must end with OK or a script error, never a crash; run
-** under ASan/UBSan in CI).
+** two scripts with their own allocators, and a seeded mutation fuzz of a
+** figure script (every mutant must end with OK or a script error, never a
+** crash; run under ASan/UBSan in CI).
 */
 #include <math.h>
 #include <setjmp.h>
@@ -418,21 +418,44 @@ test_pattern_budget(void **state)
     cf_script_destroy(s);
 }
 
-/* The script installs its budget as the library's allocator and puts the
-** previous one back when it is destroyed. */
+/* Two scripts alive at once, each with its own budget: the curves a script
+** makes count against its own limit only (10 elevated curves are 5 MB, so
+** two runs exceed 8 MiB in one script but not one run in each of two),
+** the thread's allocator outside a run is untouched, and scripts may be
+** destroyed in any order. */
 static void
-test_allocator_restored(void **state)
+test_two_scripts(void **state)
 {
-    cf_allocator_t before, during, after;
-    cf_script_t *s;
+    static const char grow[] =
+        "local P = {}\n"
+        "for i = 1, 2 do\n"
+        "  local p = {} for k = 1, 64 do p[k] = k end P[i] = p end\n"
+        "keep = rawget(_ENV, \"keep\") or {}\n"
+        "for i = 1, 10 do keep[#keep + 1] = bezier(P):elevate(1000) end\n";
+    cf_allocator_t before, during;
+    cf_script_t *a, *b, *c;
     (void)state;
     cf_get_allocator(&before);
-    s = new_script(16, 1000000);
+    a = new_script(8, 1000000000);
+    b = new_script(8, 1000000000);
     cf_get_allocator(&during);
-    assert_true(during.realloc != before.realloc || during.ud != before.ud);
-    cf_script_destroy(s);
-    cf_get_allocator(&after);
-    assert_true(after.realloc == before.realloc && after.ud == before.ud);
+    assert_true(during.realloc == before.realloc && during.ud == before.ud);
+    assert_int_equal(cf_script_run_string(a, grow, "a.lua"), CF_STATUS_OK);
+    assert_int_equal(cf_script_run_string(b, grow, "b.lua"), CF_STATUS_OK);
+    assert_int_equal(cf_script_run_string(a, grow, "a.lua"), CF_STATUS_SCRIPT);
+    assert_non_null(strstr(cf_script_error(a), "memory limit of 8 MiB"));
+    c = new_script(32, 1000000000);
+    /* the first one goes first: b and c are not disturbed */
+    cf_script_destroy(a);
+    assert_int_equal(cf_script_run_string(c, grow, "c.lua"), CF_STATUS_OK);
+    assert_int_equal(cf_script_run_string(c, grow, "c.lua"), CF_STATUS_OK);
+    assert_int_equal(cf_script_run_string(b, "x = #keep", "b.lua"),
+                     CF_STATUS_OK);
+    cf_script_destroy(b);
+    assert_int_equal(cf_script_run_string(c, grow, "c.lua"), CF_STATUS_OK);
+    cf_script_destroy(c);
+    cf_get_allocator(&during);
+    assert_true(during.realloc == before.realloc && during.ud == before.ud);
 }
 
 static const char fuzz_seed[] =
@@ -514,7 +537,7 @@ main(void)
         cmocka_unit_test(test_no_finalisers),
         cmocka_unit_test(test_small_budgets),
         cmocka_unit_test(test_pattern_budget),
-        cmocka_unit_test(test_allocator_restored),
+        cmocka_unit_test(test_two_scripts),
         cmocka_unit_test(test_fuzz_mutations),
     };
     int rc;

@@ -461,7 +461,8 @@ test_gallery(void **state)
     assert_int_equal(r->status, 0);
     snprintf(man, sizeof man, "%s/m.txt", r->dir);
     slurp(man, page, sizeof page);
-    assert_contains(page, "multi-1\tsvg,pdf,png\tpart 1 <of> 3\n");
+    assert_contains(page, "multi-1\tsvg,pdf,png\tpart 1 <of> 3\t");
+    assert_contains(page, "multi.lua\n");
     run_tool(r, gallery); /* in the same directory */
     assert_int_equal(r->status, 0);
     snprintf(html, sizeof html, "%s/index.html", r->dir);
@@ -470,6 +471,45 @@ test_gallery(void **state)
     assert_contains(page, "<a href=\"multi-3.pdf\">PDF</a>");
     assert_contains(page, "part 2 &lt;of&gt; 3");
     assert_true(strstr(page, "multi-1") < strstr(page, "multi-2"));
+    /* an index of the groups, the figures beside their script's source,
+    ** each linked to it */
+    assert_contains(page, "<nav><ul>\n<li><a href=\"#g-multi\">multi</a>:"
+                          " <a href=\"#multi-1\">1</a>");
+    assert_contains(page, "<div class=\"src\" id=\"src-multi.lua\">"
+                          "<h3>multi.lua</h3><pre>");
+    assert_contains(page, "<a href=\"#src-multi.lua\">script</a>");
+    assert_contains(page, "figure{");
+}
+
+/* Captions typeset like the labels: TeX-like scripts as HTML sub and sup,
+** stacked when both follow a base; a lone ^ or _ is kept. */
+static void
+test_gallery_captions(void **state)
+{
+    result *r = *state;
+    char man[600], html[600], page[65536];
+    const char *gallery[] = { "gallery", "-o", "index.html", "m.txt",
+                              NULL };
+    FILE *f;
+    if (r->dir[0] == '\0') {   /* the manifest first, in the tool's dir */
+        snprintf(r->dir, sizeof r->dir, "/tmp/curvefig-test-XXXXXX");
+        assert_non_null(mkdtemp(r->dir));
+    }
+    snprintf(man, sizeof man, "%s/m.txt", r->dir);
+    f = fopen(man, "w");
+    assert_non_null(f);
+    fputs("sir-a\tpng\tN_0^1 and P_{i,1} and C^{-1}, x ^ y, a_ b\n", f);
+    fclose(f);
+    run_tool(r, gallery);
+    assert_int_equal(r->status, 0);
+    snprintf(html, sizeof html, "%s/index.html", r->dir);
+    slurp(html, page, sizeof page);
+    assert_contains(page, "N<span class=\"ss\"><sup>1</sup><sub>0</sub>"
+                          "</span> and P<sub>i,1</sub> and C<sup>-1</sup>, "
+                          "x ^ y, a_ b");
+    /* the seed's title for a known prefix; no source without a script */
+    assert_contains(page, "<h2>Seed 000 · Zbyněk Šír");
+    assert_true(strstr(page, "<pre>") == NULL);
 }
 
 static void
@@ -751,6 +791,7 @@ main(int argc, char **argv)
         T(test_several_figures_each_written),
         T(test_list_and_only),
         T(test_gallery),
+        T(test_gallery_captions),
         T(test_every_figure_method),
         T(test_label_place_function),
         T(test_hostile_os),

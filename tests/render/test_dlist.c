@@ -1,5 +1,5 @@
 /* The display list and its backends: one figure with every element kind is
-** laid out into a display list; the dump backend and the cairo backend are
+** laid out into a display list; the dump, cairo and PGF backends are
 ** handed that same list, and what each gives is compared with the public
 ** functions' output, so the model and the layout are shown not to depend
 ** on the backend asked for. */
@@ -196,9 +196,11 @@ test_dump_content(void **state)
     assert_non_null(strstr(text, "path fill "));
     assert_non_null(strstr(text, " C "));
     assert_non_null(strstr(text, "marker tick "));
-    /* the automatic label got a place: not CF_PLACE_AUTO */
+    /* the automatic label got a place: not CF_PLACE_AUTO; so did the
+    ** label given none (automatic by default) */
     assert_int_not_equal(label_place(text, "P_3"), (int)CF_PLACE_AUTO);
-    assert_int_equal(label_place(text, "\\\\hat{P}_1"), (int)CF_PLACE_NE);
+    assert_int_not_equal(label_place(text, "\\\\hat{P}_1"), (int)CF_PLACE_AUTO);
+    assert_int_not_equal(label_place(text, "\\\\hat{P}_1"), (int)CF_PLACE_CENTER);
     cf_free(text);
     cf_figure_destroy(fig);
 }
@@ -211,7 +213,7 @@ static void
 test_backend_independence(void **state)
 {
     static const cf_format_t formats[] = { CF_FORMAT_SVG, CF_FORMAT_PNG,
-                                           CF_FORMAT_PDF };
+                                           CF_FORMAT_PDF, CF_FORMAT_PGF };
     cf_figure_t *fig = every_kind();
     cf__dl_t dl;
     cf__page_t page;
@@ -242,6 +244,81 @@ test_backend_independence(void **state)
     cf_free(d.text);
     cf_free(before);
     cf_free(after);
+    cf__dl_free(&dl);
+    cf_figure_destroy(fig);
+}
+
+static size_t
+count_str(const char *text, const char *s)
+{
+    size_t n = 0;
+    const char *p = text;
+    while ((p = strstr(p, s)) != NULL) {
+        n++;
+        p += strlen(s);
+    }
+    return n;
+}
+
+/* The PGF backend handed the list: a pgfscope per group and per clip, all
+** closed; a \pgftext per label (none of the figure's needs outlines;
+** eight more per halo); every cubic of the list a \pgfpathcurveto, every
+** dash a \pgfsetdash; the page as the bounding box.  A group with an
+** overlay specification is \visible<spec>{...}, and the dump shows it. */
+static void
+test_pgf_backend(void **state)
+{
+    cf_figure_t *fig = every_kind();
+    cf__dl_t dl;
+    cf__page_t page;
+    cf__buf_t out;
+    cf__pgf_t g;
+    cf__dump_t d;
+    char *text, *dumped, want[96];
+    size_t groups, texts, halos, curves, dashes, clips;
+    (void)state;
+    build(fig, &dl, &page);
+    memset(&d, 0, sizeof d);
+    assert_int_equal(cf__dl_play_page(&dl, &page, &cf__dump_backend, &d), 0);
+    dumped = d.text;
+    groups = count_lines(dumped, "group ");
+    texts = count_lines(dumped, "text ");
+    halos = count_str(dumped, " halo ");
+    curves = count_str(dumped, " C ");
+    dashes = count_str(dumped, " dash ") - count_str(dumped, " dash 0 ");
+    clips = count_lines(dumped, "clip ") - count_lines(dumped, "clip none");
+
+    dl.ops[0].u.group.overlay = "2-";
+    memset(&out, 0, sizeof out);
+    memset(&g, 0, sizeof g);
+    g.out = &out;
+    assert_int_equal(cf__dl_play_page(&dl, &page, &cf__pgf_backend, &g), 0);
+    cf__pgf_fini(&g);
+    assert_int_equal(cf__buf_append(&out, "", 1), 0);
+    text = (char *)out.data;
+    assert_int_equal(count_str(text, "\\begin{pgfscope}% "), groups);
+    assert_int_equal(count_str(text, "\\begin{pgfscope}"),
+                     count_str(text, "\\end{pgfscope}"));
+    assert_int_equal(count_str(text, "\\pgftext["), texts + 24 * halos);
+    assert_true(count_str(text, "\\pgfpathcurveto") >= curves);
+    assert_true(dashes > 0);
+    assert_int_equal(count_str(text, "\\pgfsetdash{"), dashes);
+    assert_int_equal(count_str(text, "\\pgfusepath{clip}"), clips);
+    assert_int_equal(count_str(text, "\\begin{pgfpicture}"), 1);
+    assert_non_null(strstr(text, "\\end{pgfpicture}%\n"));
+    assert_non_null(strstr(text, "\\pgfusepath{use as bounding box}"));
+    snprintf(want, sizeof want, "\\visible<2->{\\begin{pgfscope}%% 0 %s\n",
+             dl.ops[0].u.group.name);
+    assert_non_null(strstr(text, want));
+    assert_int_equal(count_str(text, "\\fi\\visible<"), 1);
+    cf_free(d.text);
+    memset(&d, 0, sizeof d);
+    assert_int_equal(cf__dl_play_page(&dl, &page, &cf__dump_backend, &d), 0);
+    snprintf(want, sizeof want, "group 0 %s overlay 2-\n",
+             dl.ops[0].u.group.name);
+    assert_non_null(strstr(d.text, want));
+    cf_free(d.text);
+    cf__buf_free(&out);
     cf__dl_free(&dl);
     cf_figure_destroy(fig);
 }
@@ -331,6 +408,44 @@ test_page_checks(void **state)
     cf_figure_destroy(fig);
 }
 
+/* A label given a place on a stroke is kept and reported; the same label
+** placed automatically moves off the stroke and is not. */
+static void
+test_label_on_ink(void **state)
+{
+    static const double line[] = { 0, 0, 4, 0 };
+    cf_figure_t *fig;
+    cf_style_t at;
+    char *text;
+    const char *w;
+    int pass;
+    (void)state;
+    for (pass = 0; pass < 2; pass++) {
+        assert_int_equal(cf_figure_create(40, 30, CF_UNIT_MM, &fig, NULL), 0);
+        assert_int_equal(cf_figure_add_polyline(fig, line, 2, false, NULL), 0);
+        cf_style_init(&at);
+        if (pass == 0) {
+            at.place = CF_PLACE_CENTER;
+            at.set |= CF_STYLE_PLACE;
+        }
+        assert_int_equal(cf_figure_add_label(fig, 2, 0, "W_1", &at), 0);
+        text = dump(fig);
+        w = cf_figure_warnings(fig);
+        if (pass == 0) {
+            assert_non_null(strstr(w, "label \"W_1\" (place center) lies "
+                                      "on polyline 1\n"));
+            /* kept where it was put */
+            assert_int_equal(label_place(text, "W_1"), (int)CF_PLACE_CENTER);
+        } else {
+            assert_string_equal(w, "");
+            assert_int_not_equal(label_place(text, "W_1"),
+                                 (int)CF_PLACE_CENTER);
+        }
+        cf_free(text);
+        cf_figure_destroy(fig);
+    }
+}
+
 int
 main(void)
 {
@@ -338,7 +453,9 @@ main(void)
         cmocka_unit_test(test_dump_content),
         cmocka_unit_test(test_backend_independence),
         cmocka_unit_test(test_dump_deterministic),
+        cmocka_unit_test(test_pgf_backend),
         cmocka_unit_test(test_page_checks),
+        cmocka_unit_test(test_label_on_ink),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

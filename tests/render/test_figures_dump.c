@@ -1,7 +1,6 @@
 /* Every shipped figure (the scripts in figures/) dumps to the same display list on
 ** two independent runs of its script: the layout has no hidden state, no
 ** dependence on addresses, the clock or the order of allocation. */
-#include <dirent.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -14,6 +13,7 @@
 
 #include "curvefig/figure.h"
 #include "script.h"
+#include "testutil.h"
 
 /* The dumps of every figure a script defines, one after the other with
 ** their names; NULL when the script fails. */
@@ -47,28 +47,13 @@ dump_script(const char *path, size_t *nfig)
     return all;
 }
 
-static int
-by_name(const void *a, const void *b)
-{
-    return strcmp(*(char *const *)a, *(char *const *)b);
-}
-
 static void
 test_every_figure_twice(void **state)
 {
-    DIR *dir = opendir(CF_SOURCE_ROOT "/figures");
-    struct dirent *de;
     char *names[256];
-    size_t n = 0, i, figures = 0;
+    size_t n, i, figures = 0;
     (void)state;
-    assert_non_null(dir);
-    while ((de = readdir(dir)) != NULL && n < 256) {
-        size_t k = strlen(de->d_name);
-        if (k > 4 && strcmp(de->d_name + k - 4, ".lua") == 0)
-            names[n++] = strdup(de->d_name);
-    }
-    closedir(dir);
-    qsort(names, n, sizeof *names, by_name);
+    n = tu_figure_scripts(CF_SOURCE_ROOT "/figures", names, 256);
     for (i = 0; i < n; i++) {
         char path[1024];
         size_t n1 = 0, n2 = 0;

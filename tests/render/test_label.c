@@ -11,6 +11,8 @@
 #include <pango/pangocairo.h>
 
 #include "curvefig/figure.h"
+#include "label-private.h"
+#include "render-private.h"
 #include "testutil.h"
 
 #define SIZE 10.0
@@ -502,6 +504,53 @@ test_out_of_memory(void **state)
     fail_msg("label layout never succeeded");
 }
 
+/* Labels as TeX source for the PGF output (render/label-tex.c): every
+** part of the syntax, written as TeX would be typed by hand; scripts
+** pdflatex cannot set are refused. */
+static void
+test_label_tex(void **state)
+{
+    static const char *const cases[][2] = {
+        { "P_0", "$P_{0}$" },
+        { "B_i^n(t)", "$B_{i}^{n}(t)$" },
+        { "N_{i,p}", "$N_{{i,p}}$" },
+        { "\\omega_i \\geq 0", "$\\omega _{i} \\geq  0$" },
+        { "α ≤ −x′", "$\\alpha  \\leq  -x'$" },
+        { "x^2'", "$x^{2}{}'$" },
+        { "\\frac{1}{2} \\hat P", "$\\frac{1}{2} \\hat{P}$" },
+        { "\\omicron\\deg", "$o{}^{\\circ}$" },
+        { "\\operatorname{deg} č", "$\\mathrm{deg} \\text{č}$" },
+        { "a # b", "$a \\# b$" },
+        { "$the curve$ x_1 <y> ~", "$the curve$ x\\_1 \\textless{}y"
+                                   "\\textgreater{} \\textasciitilde{}" },
+        { "$x$ \\alpha \\mathbf{b} \\\\", "$x$ \\ensuremath{\\alpha} "
+                                           "\\textbf{b} \\textbackslash{}" },
+        { "√2 ⇒ ΑΒ", "$\\surd 2 \\Rightarrow  \\mathrm{A}\\mathrm{B}$" },
+        { "", "" },
+    };
+    static const char *const refused[] = {
+        "Кривая", "$кривая$ b_0", "贝塞尔", "x ∈ ℝ",
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        cf__buf_t b;
+        memset(&b, 0, sizeof b);
+        assert_int_equal(cf__label_tex(cases[i][0], &b), 0);
+        assert_int_equal(cf__buf_append(&b, "", 1), 0);
+        if (strcmp((const char *)b.data, cases[i][1]) != 0)
+            fail_msg("label \"%s\": TeX \"%s\", expected \"%s\"",
+                     cases[i][0], (const char *)b.data, cases[i][1]);
+        cf__buf_free(&b);
+    }
+    for (i = 0; i < sizeof refused / sizeof refused[0]; i++) {
+        cf__buf_t b;
+        memset(&b, 0, sizeof b);
+        assert_int_equal(cf__label_tex(refused[i], &b), 1);
+        cf__buf_free(&b);
+    }
+}
+
 int
 main(void)
 {
@@ -516,6 +565,7 @@ main(void)
         cmocka_unit_test(test_world_scripts_have_glyphs),
         cmocka_unit_test(test_syntax_errors),
         cmocka_unit_test(test_tex_points),
+        cmocka_unit_test(test_label_tex),
         cmocka_unit_test(test_out_of_memory),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

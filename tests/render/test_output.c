@@ -427,7 +427,8 @@ test_write_all_and_magic(void **state)
     cf_figure_t *fig = build_figure(false);
     char base[128], path[160];
     const char *magic[] = { "<?xml", "%PDF-", "%!PS-Adobe-3.0\n",
-                            "%!PS-Adobe-3.0 EPSF-3.0", "\x89PNG" };
+                            "%!PS-Adobe-3.0 EPSF-3.0", "\x89PNG",
+                            "% curvefig picture" };
     int f;
     cf_write_options_t tight;
     (void)state;
@@ -440,7 +441,7 @@ test_write_all_and_magic(void **state)
     tight.dpi = 96;
     for (int pass = 0; pass < 2; pass++) {
         const cf_write_options_t *o = pass == 0 ? NULL : &tight;
-        assert_int_equal(cf_figure_write_all(fig, base, 0x1f, o, NULL), 0);
+        assert_int_equal(cf_figure_write_all(fig, base, 0x3f, o, NULL), 0);
         for (f = 0; f < CF_FORMAT_LAST_; f++) {
             blob_t b, m;
             snprintf(path, sizeof path, "%s.%s", base,
@@ -553,6 +554,47 @@ test_failed_write_keeps_old_file(void **state)
     free(before.data);
     cf_figure_destroy(good);
     cf_figure_destroy(bad);
+}
+
+/* A coordinate beyond TeX's largest dimension (16383.99998 pt) — a line
+** from far away, clipped to the window — is an error for PGF that names
+** it; the old file stays, no temporary file is left.  The same figure
+** still renders as SVG. */
+static void
+test_pgf_too_large(void **state)
+{
+    static const double line[] = { -1e5, 0, 10, 10 };
+    cf_figure_t *fig = NULL, *good = build_figure(false);
+    char path[128];
+    blob_t before, after;
+    cf_diag_t d;
+    unsigned char *data = NULL;
+    size_t size = 0;
+    (void)state;
+    snprintf(path, sizeof path, "%s/big.pgf", tmpdir);
+    assert_int_equal(cf_figure_write(good, path, CF_FORMAT_PGF, NULL, NULL),
+                     0);
+    before = read_file(path);
+    assert_int_equal(cf_figure_create(100, 100, CF_UNIT_MM, &fig, NULL), 0);
+    assert_int_equal(cf_figure_set_window(fig, 0, 10, 0, 10), 0);
+    assert_int_equal(cf_figure_set_clip(fig, true), 0);
+    assert_int_equal(cf_figure_add_polyline(fig, line, 2, false, NULL), 0);
+    cf_diag_clear(&d);
+    assert_int_equal(cf_figure_write(fig, path, CF_FORMAT_PGF, NULL, &d),
+                     CF_STATUS_INVALID_ARG);
+    assert_non_null(strstr(d.msg, "pgf: coordinate -"));
+    assert_non_null(strstr(d.msg, "beyond what TeX can hold"));
+    after = read_file(path);
+    assert_int_equal(before.size, after.size);
+    assert_memory_equal(before.data, after.data, before.size);
+    assert_int_equal(count_entries(".cf-tmp-"), 0);
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_SVG, NULL, &data, &size,
+                                      NULL), 0);
+    cf_free(data);
+    free(before.data);
+    free(after.data);
+    cf_figure_destroy(fig);
+    cf_figure_destroy(good);
 }
 
 static void
@@ -1246,6 +1288,7 @@ main(int argc, char **argv)
         cmocka_unit_test(test_write_all_and_magic),
         cmocka_unit_test(test_write_all_eps_from_ps),
         cmocka_unit_test(test_failed_write_keeps_old_file),
+        cmocka_unit_test(test_pgf_too_large),
         cmocka_unit_test(test_write_errors),
         cmocka_unit_test(test_png_same_pixels_as_cairo),
         cmocka_unit_test(test_png_opaque_is_rgb),

@@ -64,7 +64,18 @@ test_core(void **state)
     cf_set_allocator(NULL);            /* restores the default */
     cf_get_allocator(&a);
     assert_non_null(a.realloc);
+    /* no allocator of the thread's own, no previous wanted: harmless */
+    cf_use_allocator(NULL, NULL);
+    {
+        cf_allocator_t none = { NULL, NULL }, prev;
+        cf_use_allocator(&none, &prev);
+        assert_null(prev.realloc);
+        cf_get_allocator(&a);
+        assert_non_null(a.realloc);
+    }
     cf_free(NULL);
+    assert_int_equal(cf_version(), CF_VERSION);
+    assert_string_equal(cf_version_string(), CF_VERSION_STRING);
     /* the allocation helpers: overflow and zero sizes, never a crash */
     assert_null(cf_alloc_array(SIZE_MAX, 2));
     assert_null(cf_calloc(SIZE_MAX / 2, 4));
@@ -165,6 +176,14 @@ test_knots(void **state)
     BAD(cf_basis_one_ders(0, 2, U7, 7, 0.5, -1, out, NULL));
     BAD(cf_basis_one_ders(0, 2, NULL, 7, 0.5, 1, out, NULL));
     BAD(cf_basis_one_ders(0, 2, U7, 7, 0.5, 1, NULL, NULL));
+    {
+        cf_bspline_t *bs = NULL;
+        BAD(cf_basis_one_spline(0, 2, NULL, 7, &bs, NULL));
+        BAD(cf_basis_one_spline(0, 2, U7, 7, NULL, NULL));
+        BAD(cf_basis_one_spline(5, 2, U7, 7, &bs, NULL));
+        BAD(cf_basis_one_spline(0, 40, U7, 7, &bs, NULL));
+        assert_null(bs);
+    }
 }
 
 static void
@@ -317,14 +336,27 @@ test_bezier(void **state)
     BAD(cf_convex_hull_2d(NANS, 4, 2, idx, &n, NULL));
     BAD(cf_bezier_hull(NULL, idx, &n, NULL));
     BAD(cf_bezier_hull(c, NULL, &n, NULL));
-    /* a diag that already holds an error keeps the first one */
-    cf_diag_clear(&diag);
-    BAD(cf_bezier_elevate(c, -1, &o, &diag));
+    /* a diag is reset on entry: after a failure it holds that failure
+    ** (never an earlier call's message), after a success "no error" --
+    ** also when the caller never cleared it */
+    memset(&diag, 0xab, sizeof diag);
     {
-        cf_diag_t first = diag;
-        BAD(cf_bezier_derivative(c, -1, &o, &diag));
-        assert_int_equal(diag.status, first.status);
-        assert_string_equal(diag.msg, first.msg);
+        cf_status_t st = cf_bezier_elevate(c, -1, &o, &diag);
+        char first[CF_DIAG_MSG_SIZE];
+        BAD(st);
+        assert_int_equal(diag.status, st);
+        assert_non_null(memchr(diag.msg, '\0', sizeof diag.msg));
+        assert_true(diag.msg[0] != '\0');
+        memcpy(first, diag.msg, sizeof first);
+        st = cf_bezier_derivative(c, 99999, &o, &diag);
+        BAD(st);
+        assert_int_equal(diag.status, st);
+        assert_string_not_equal(diag.msg, first);
+        IS(CF_STATUS_OK, cf_bezier_elevate(c, 1, &o, &diag));
+        assert_int_equal(diag.status, CF_STATUS_OK);
+        assert_int_equal(diag.index, -1);
+        assert_string_equal(diag.msg, "");
+        cf_bezier_destroy(o);
     }
     cf_bezier_destroy(c);
 }
@@ -642,6 +674,7 @@ test_figure(void **state)
     cf_figure_destroy(NULL);
     /* every figure function on NULL */
     BAD(cf_figure_status(NULL, NULL));
+    assert_string_equal(cf_figure_warnings(NULL), "");
     cf_figure_get_size(NULL, &w, &w);
     BAD(cf_figure_set_title(NULL, "t"));
     BAD(cf_figure_set_caption(NULL, "c"));
@@ -791,13 +824,60 @@ test_figure(void **state)
 }
 #endif
 
+/* A failing function sets *out to NULL, whatever the variable held
+** (core.h, "Ownership and failure"). */
+static void
+test_out_null_on_failure(void **state)
+{
+    static const double P[] = { 0, 0, 1, 2, 2, 0, 3, 1 };
+    cf_bezier_t *c = NULL, *o, *l, *r;
+    cf_bspline_t *s;
+    cf_cubics_t *cu;
+    cf_bezier_list_t *li;
+    void *junk = (void *)P;
+    (void)state;
+    IS(CF_STATUS_OK, cf_bezier_create(2, 3, P, NULL, &c, NULL));
+    o = junk;
+    BAD(cf_bezier_create(2, -1, P, NULL, &o, NULL));
+    assert_null(o);
+    o = junk;
+    BAD(cf_bezier_create(0, 3, NULL, NULL, &o, NULL));
+    assert_null(o);
+    o = junk;
+    BAD(cf_bezier_elevate(c, -1, &o, NULL));
+    assert_null(o);
+    o = junk;
+    BAD(cf_bezier_elevate(NULL, 1, &o, NULL));
+    assert_null(o);
+    o = junk;
+    BAD(cf_bezier_derivative(c, -1, &o, NULL));
+    assert_null(o);
+    s = junk;
+    BAD(cf_bspline_create(2, 2, P, 3, P, 4, NULL, &s, NULL));
+    assert_null(s);
+    s = junk;
+    BAD(cf_nurbs_circle(NULL, 1, &s, NULL));
+    assert_null(s);
+    l = r = junk;
+    BAD(cf_bezier_split(c, 2.0, &l, &r, NULL));
+    assert_null(l);
+    assert_null(r);
+    cu = junk;
+    BAD(cf_bezier_to_cubics(c, -1, &cu, NULL));
+    assert_null(cu);
+    li = junk;
+    BAD(cf_conic_circle(0, 0, -1, &li, NULL));
+    assert_null(li);
+    cf_bezier_destroy(c);
+}
+
 /* Every function declared in the public headers is named in this file. */
 static void
 test_every_function_listed(void **state)
 {
     static const char *const headers[] = {
         "core.h", "knots.h", "bernstein.h", "bezier.h", "bspline.h",
-        "geometry.h", "conic.h", "interp.h", "offset.h",
+        "geometry.h", "conic.h", "interp.h", "offset.h", "version.h.in",
 #ifdef CF_TEST_RENDER
         "figure.h", "style.h", "label.h", "output.h",
 #endif
@@ -869,6 +949,7 @@ main(void)
 #ifdef CF_TEST_RENDER
         cmocka_unit_test(test_figure),
 #endif
+        cmocka_unit_test(test_out_null_on_failure),
         cmocka_unit_test(test_every_function_listed),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

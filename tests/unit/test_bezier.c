@@ -1057,7 +1057,7 @@ test_derivative_overflow_refused(void **state)
     assert_int_equal(cf_bezier_derivative(c, 1, &d, &diag),
                      CF_STATUS_NOT_FINITE);
     assert_null(d);
-    assert_string_equal(diag.msg, "derivative: control point 0 overflows "
+    assert_string_equal(diag.msg, "control point 0 overflows "
                                   "(coordinate 1 is inf)");
     cf_bezier_destroy(c);
     /* the rational path too (its numerator has the same differences) */

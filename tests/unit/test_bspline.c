@@ -713,7 +713,7 @@ test_insertion_thesis_figures(void **state)
         assert_int_equal(cf_bspline_insert_knot(c, 0.5, 3, &q, NULL, &d),
                          CF_STATUS_BAD_KNOTS);
         assert_null(q);
-        assert_string_equal(d.msg, "insert: knot 0.5 has multiplicity 1; "
+        assert_string_equal(d.msg, "knot 0.5 has multiplicity 1; "
                             "inserting it 3 more times exceeds degree + 1 "
                             "= 3");
         cf_diag_clear(&d);
@@ -936,7 +936,7 @@ test_insert_then_remove(void **state)
         cf_diag_clear(&d);
         assert_int_equal(cf_bspline_remove_knot(c, 0.4, 1, 1.0, &q, &removed,
                                                 &d), CF_STATUS_BAD_KNOTS);
-        assert_string_equal(d.msg, "remove: 0.4 is not an interior knot of "
+        assert_string_equal(d.msg, "0.4 is not an interior knot of "
                             "the domain [0, 1]");
         assert_int_equal(cf_bspline_remove_knot(c, 1.0, 1, 1.0, &q, &removed,
                                                 NULL), CF_STATUS_BAD_KNOTS);
@@ -1246,7 +1246,7 @@ test_circle_and_arcs(void **state)
         cf_diag_clear(&d);
         assert_int_equal(cf_nurbs_circle(O, -1.0, &c, &d),
                          CF_STATUS_INVALID_ARG);
-        assert_string_equal(d.msg, "circle: radius -1 must be positive");
+        assert_string_equal(d.msg, "radius -1 must be positive");
         assert_int_equal(cf_nurbs_circle(NULL, 1.0, &c, NULL),
                          CF_STATUS_INVALID_ARG);
         assert_int_equal(cf_nurbs_circle(O, NAN, &c, NULL),
@@ -1399,7 +1399,7 @@ test_create_errors(void **state)
     cf_diag_clear(&d);
     assert_int_equal(cf_bspline_create(2, 2, SAMPLE_U, 10, SAMPLE_P, 8, NULL,
                                        &c, &d), CF_STATUS_BAD_KNOTS);
-    assert_string_equal(d.msg, "bspline: 10 knots given, degree 2 with 8 "
+    assert_string_equal(d.msg, "10 knots given, degree 2 with 8 "
                         "points needs 11");
     memcpy(U, SAMPLE_U, sizeof U);
     U[4] = 0.3;
@@ -1490,7 +1490,7 @@ test_create_errors(void **state)
         cf_diag_clear(&d);
         assert_int_equal(cf_bspline_split(c, 1.0, &l, &r, &d),
                          CF_STATUS_DOMAIN);
-        assert_string_equal(d.msg, "split: 1 must lie strictly inside the "
+        assert_string_equal(d.msg, "1 must lie strictly inside the "
                             "domain [0, 1]");
         assert_null(l);
         assert_null(r);
@@ -1503,14 +1503,14 @@ test_create_errors(void **state)
         cf_diag_clear(&d);
         assert_int_equal(cf_bspline_refine(c, X, 2, &l, &d),
                          CF_STATUS_BAD_KNOTS);
-        assert_string_equal(d.msg, "refine: new knot 1 (0.4) is smaller than "
-                            "new knot 0 (0.6)");
+        assert_string_equal(d.msg, "new knot 1 (0.40) is smaller than "
+                            "new knot 0 (0.60)");
         {
             double X3[3] = { 0.5, 0.5, 0.5 };
             cf_diag_clear(&d);
             assert_int_equal(cf_bspline_refine(c, X3, 3, &l, &d),
                              CF_STATUS_BAD_KNOTS);
-            assert_string_equal(d.msg, "refine: knot 0.5 would get "
+            assert_string_equal(d.msg, "knot 0.5 would get "
                                 "multiplicity 4; degree 2 allows at most 3");
         }
         assert_int_equal(cf_bspline_refine(c, NULL, 2, &l, NULL),

@@ -4,11 +4,14 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdlib.h>
+#include <stdio.h>
 #include <string.h>
 
 #include <cmocka.h>
 
 #include "curvefig/core.h"
+#include "curvefig/version.h"
 #include "../../src/core-private.h"
 #include "testutil.h"
 
@@ -118,15 +121,123 @@ test_allocator_hook(void **state)
     assert_non_null(a.realloc);
 }
 
+/* Two counting allocators: blocks remember the one that made them. */
+typedef struct counter {
+    long live, calls;
+} counter;
+
+static void *
+counting_realloc(void *ud, void *ptr, size_t old_size, size_t new_size)
+{
+    counter *c = ud;
+    (void)old_size;
+    c->calls++;
+    if (new_size == 0) {
+        if (ptr != NULL)
+            c->live--;
+        free(ptr);
+        return NULL;
+    }
+    if (ptr == NULL)
+        c->live++;
+    return realloc(ptr, new_size);
+}
+
+static void
+test_allocator_per_block(void **state)
+{
+    counter ca = { 0, 0 }, cb = { 0, 0 };
+    cf_allocator_t A = { counting_realloc, &ca }, B = { counting_realloc, &cb };
+    cf_allocator_t prev, prev2, cur;
+    double *pa, *pb, *pd;
+    (void)state;
+    /* A current for this thread: new blocks come from A */
+    cf_use_allocator(&A, &prev);
+    assert_null(prev.realloc);
+    cf_get_allocator(&cur);
+    assert_true(cur.realloc == counting_realloc && cur.ud == &ca);
+    pa = cf__alloc_array(16, sizeof *pa);
+    assert_non_null(pa);
+    assert_int_equal(ca.live, 1);
+    /* a nested scope with B */
+    cf_use_allocator(&B, &prev2);
+    assert_true(prev2.ud == &ca);
+    pb = cf__malloc(64);
+    assert_int_equal(cb.live, 1);
+    /* a block of A resized and freed while B is current goes back to A */
+    pa = cf__realloc_array(pa, 4000, sizeof *pa);
+    assert_non_null(pa);
+    assert_int_equal(ca.live, 1);
+    assert_int_equal(cb.live, 1);
+    cf__free(pa);
+    assert_int_equal(ca.live, 0);
+    assert_int_equal(cb.live, 1);
+    cf_use_allocator(&prev2, NULL);      /* back to A */
+    cf_get_allocator(&cur);
+    assert_true(cur.ud == &ca);
+    /* B's block freed under A goes to B */
+    cf_free(pb);
+    assert_int_equal(cb.live, 0);
+    assert_int_equal(ca.live, 0);
+    cf_use_allocator(&prev, NULL);       /* no allocator of the thread's */
+    /* the default again: a block made now is not A's or B's */
+    {
+        long calls_a = ca.calls, calls_b = cb.calls;
+        pd = cf__calloc(8, sizeof *pd);
+        assert_non_null(pd);
+        /* freed while A is current: still the default's */
+        cf_use_allocator(&A, &prev);
+        cf__free(pd);
+        cf_use_allocator(&prev, NULL);
+        assert_int_equal(ca.calls, calls_a);
+        assert_int_equal(cb.calls, calls_b);
+    }
+    /* cf_set_allocator sets the process default, which a thread-current
+    ** allocator overrides */
+    cf_set_allocator(&B);
+    pb = cf__malloc(8);
+    assert_int_equal(cb.live, 1);
+    cf_use_allocator(&A, &prev);
+    pa = cf__malloc(8);
+    assert_int_equal(ca.live, 1);
+    cf_use_allocator(&prev, NULL);
+    cf_set_allocator(NULL);
+    cf__free(pa);
+    cf__free(pb);
+    assert_int_equal(ca.live, 0);
+    assert_int_equal(cb.live, 0);
+}
+
+/* The run-time version is the headers' version, and the macros agree
+** with each other and with the string. */
+static void
+test_version(void **state)
+{
+    char expect[32];
+    (void)state;
+    snprintf(expect, sizeof expect, "%d.%d.%d", CF_VERSION_MAJOR,
+             CF_VERSION_MINOR, CF_VERSION_PATCH);
+    assert_string_equal(CF_VERSION_STRING, expect);
+    assert_string_equal(cf_version_string(), CF_VERSION_STRING);
+    assert_int_equal(cf_version(), CF_VERSION);
+    assert_int_equal(CF_VERSION, CF_VERSION_MAJOR * 10000
+                                     + CF_VERSION_MINOR * 100
+                                     + CF_VERSION_PATCH);
+    assert_true(CF_VERSION_ENCODE(0, 1, 0) < CF_VERSION_ENCODE(0, 1, 1));
+    assert_true(CF_VERSION_ENCODE(0, 9, 9) < CF_VERSION_ENCODE(1, 0, 0));
+}
+
 int
 main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_status_strings),
+        cmocka_unit_test(test_version),
         cmocka_unit_test(test_diag_keeps_first_error),
         cmocka_unit_test(test_checks_name_the_culprit),
         cmocka_unit_test(test_binomial),
         cmocka_unit_test(test_allocator_hook),
+        cmocka_unit_test(test_allocator_per_block),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

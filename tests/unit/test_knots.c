@@ -9,6 +9,7 @@
 #include <cmocka.h>
 
 #include "curvefig/knots.h"
+#include "curvefig/bspline.h"
 #include "testutil.h"
 
 #define EPS 2.220446049250313e-16
@@ -278,7 +279,7 @@ test_validate_messages(void **state)
 
     cf_diag_clear(&d);
     assert_msg(cf_knots_validate(2, 8, good, 10, &d), CF_STATUS_BAD_KNOTS, &d,
-               "bspline: 10 knots given, degree 2 with 8 points needs 11");
+               "10 knots given, degree 2 with 8 points needs 11");
 
     memcpy(U, good, sizeof U);
     U[4] = 0.3;
@@ -316,7 +317,7 @@ test_validate_messages(void **state)
         ** points on z: multiplicity rule first */
         assert_msg(cf_knots_validate(3, 3, e, 7, &d),
                    CF_STATUS_TOO_FEW_POINTS, &d,
-                   "bspline: degree 3 needs at least 4 points, 3 given");
+                   "degree 3 needs at least 4 points, 3 given");
         cf_diag_clear(&d);
         assert_msg(cf_knots_validate(1, 4, z, 6, &d), CF_STATUS_BAD_KNOTS,
                    &d, "knot 1 (0.5) has multiplicity 4; degree 1 allows at "
@@ -331,10 +332,10 @@ test_validate_messages(void **state)
     }
     cf_diag_clear(&d);
     assert_msg(cf_knots_validate(-1, 8, good, 11, &d), CF_STATUS_BAD_DEGREE,
-               &d, "bspline: degree -1 is outside 0..32");
+               &d, "degree -1 is outside 0..32");
     cf_diag_clear(&d);
     assert_msg(cf_knots_validate(2, 8, NULL, 11, &d), CF_STATUS_INVALID_ARG,
-               &d, "bspline: knots are NULL");
+               &d, "knots are NULL");
     /* an interior knot of multiplicity p + 1 is allowed (the curve splits) */
     {
         double s[] = { 0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1 };
@@ -381,7 +382,7 @@ test_generators(void **state)
     cf_diag_clear(&d);
     assert_int_equal(cf_knots_uniform(2, 5, 1.0, 1.0, U, &d),
                      CF_STATUS_INVALID_ARG);
-    assert_string_equal(d.msg, "knots: interval [1, 1] is empty");
+    assert_string_equal(d.msg, "interval [1, 1] is empty");
     assert_int_equal(cf_knots_clamped_uniform(3, 2, 0, 1, U, NULL),
                      CF_STATUS_TOO_FEW_POINTS);
     assert_int_equal(cf_knots_clamped_averaged(0, 6, par, U, NULL),
@@ -435,7 +436,7 @@ test_basis_errors(void **state)
     cf_diag_clear(&d);
     assert_int_equal(cf_basis_one(1, 3, U, 5, 1.0, &v, &d),
                      CF_STATUS_BAD_KNOTS);
-    assert_string_equal(d.msg, "basis: N_1^3 needs knots u_1..u_5, 5 given");
+    assert_string_equal(d.msg, "N_1^3 needs knots u_1..u_5, 5 given");
     cf_diag_clear(&d);
     assert_int_equal(cf_basis_one(0, 3, B, 5, 1.0, &v, &d),
                      CF_STATUS_BAD_KNOTS);
@@ -453,12 +454,12 @@ test_basis_errors(void **state)
     assert_int_equal(cf_basis_funs(3, U, 5, 1.0, NULL, N, &d),
                      CF_STATUS_BAD_KNOTS);
     assert_string_equal(d.msg,
-                        "basis: degree 3 needs at least 8 knots, 5 given");
+                        "degree 3 needs at least 8 knots, 5 given");
     cf_diag_clear(&d);
     assert_int_equal(cf_basis_funs(1, U, 5, 0.5, NULL, N, &d),
                      CF_STATUS_DOMAIN);
     assert_string_equal(d.msg,
-                        "basis: parameter 0.5 is outside the domain [1, 6]");
+                        "parameter 0.5 is outside the domain [1, 6]");
     assert_int_equal(cf_basis_funs(1, U, 5, INFINITY, NULL, N, NULL),
                      CF_STATUS_NOT_FINITE);
     assert_int_equal(cf_basis_funs(1, U, 5, 2.0, NULL, NULL, NULL),
@@ -471,11 +472,119 @@ test_basis_errors(void **state)
                      CF_STATUS_BAD_KNOTS);
 }
 
+/* Cox-de Boor by the recursion itself (0/0 = 0), half-open intervals: an
+** independent N_i^p(u). */
+static double
+cox_de_boor(const double *U, int i, int p, double u)
+{
+    double a = 0.0, b = 0.0;
+    if (p == 0)
+        return U[i] <= u && u < U[i + 1] ? 1.0 : 0.0;
+    if (U[i + p] > U[i])
+        a = (u - U[i]) / (U[i + p] - U[i]) * cox_de_boor(U, i, p - 1, u);
+    if (U[i + p + 1] > U[i + 1])
+        b = (U[i + p + 1] - u) / (U[i + p + 1] - U[i + 1]) *
+            cox_de_boor(U, i + 1, p - 1, u);
+    return a + b;
+}
+
+/* N_i^p over the whole knot vector: the padded spline equals the basis
+** function everywhere on [u_0, u_{m-1}], zero outside its support, the left
+** limit at the last knot; its pieces are the graph. */
+static void
+test_basis_one_spline(void **state)
+{
+    static const double U1[] = { 0, 1, 3, 6, 10 };
+    static const double U2[] = { 0, 0, 0, 0.5, 0.5, 1, 2, 2, 2 };
+    static const double U3[] = { -1, 0, 0.25, 0.25, 0.25, 1.5, 2, 3 };
+    static const struct { const double *U; size_t m; } vecs[] = {
+        { U1, 5 }, { U2, 9 }, { U3, 8 },
+    };
+    cf_diag_t d;
+    (void)state;
+    for (size_t v = 0; v < 3; v++) {
+        const double *U = vecs[v].U;
+        size_t m = vecs[v].m;
+        for (int p = 0; p <= 3; p++)
+            for (int i = 0; (size_t)i + (size_t)p + 2 <= m; i++) {
+                cf_bspline_t *s = NULL;
+                cf_bezier_list_t *list = NULL;
+                double a, b;
+                int mult = 0;
+                for (size_t k = 0; k < m; k++) {
+                    int mk = cf_knots_multiplicity(U, m, U[k]);
+                    mult = mk > mult ? mk : mult;
+                }
+                if (mult > p + 1) {
+                    /* a knot of too high a multiplicity for a curve */
+                    assert_int_equal(
+                        cf_basis_one_spline(i, p, U, m, &s, NULL),
+                        CF_STATUS_BAD_KNOTS);
+                    assert_null(s);
+                    continue;
+                }
+                assert_int_equal(cf_basis_one_spline(i, p, U, m, &s, NULL),
+                                 CF_STATUS_OK);
+                assert_int_equal(cf_bspline_dim(s), 1);
+                assert_int_equal(cf_bspline_degree(s), p);
+                cf_bspline_domain(s, &a, &b);
+                assert_true(a == U[0] && b == U[m - 1]);
+                for (int k = 0; k <= 200; k++) {
+                    double u = U[0] + (U[m - 1] - U[0]) * k / 200.0, y, ref,
+                           one;
+                    assert_int_equal(cf_bspline_eval(s, u, &y), CF_STATUS_OK);
+                    assert_int_equal(cf_basis_one(i, p, U, m, u, &one, NULL),
+                                     CF_STATUS_OK);
+                    tu_assert_close(y, one, 1e-12, 1.0);
+                    if (k < 200) {
+                        ref = cox_de_boor(U, i, p, u);
+                        tu_assert_close(y, ref, 1e-12, 1.0);
+                    }
+                    if (u < U[i] || u > U[i + p + 1])
+                        assert_true(fabs(y) <= 1e-15);
+                }
+                assert_int_equal(cf_bspline_to_beziers(s, &list, NULL),
+                                 CF_STATUS_OK);
+                assert_true(list->count >= 1);
+                cf_bezier_list_destroy(list);
+                cf_bspline_destroy(s);
+            }
+    }
+    {
+        /* errors name what is wrong */
+        static const double bad[] = { 0, 1, 0.5, 2 }, flat[] = { 1, 1, 1 };
+        cf_bspline_t *s = (cf_bspline_t *)&d;
+        cf_diag_clear(&d);
+        assert_int_equal(cf_basis_one_spline(0, 2, bad, 4, &s, &d),
+                         CF_STATUS_BAD_KNOTS);
+        assert_null(s);
+        assert_string_equal(d.msg, "knot 2 (0.50) is smaller than knot 1 "
+                                   "(1.00)");
+        cf_diag_clear(&d);
+        assert_int_equal(cf_basis_one_spline(1, 3, U1, 5, &s, &d),
+                         CF_STATUS_INVALID_ARG);
+        assert_string_equal(d.msg, "N_1^3 needs knots u_1..u_5, 5 given");
+        cf_diag_clear(&d);
+        assert_int_equal(cf_basis_one_spline(0, 0, flat, 3, &s, &d),
+                         CF_STATUS_BAD_KNOTS);
+        assert_string_equal(d.msg, "the knots span no interval (all 1)");
+        assert_int_equal(cf_basis_one_spline(0, -1, U1, 5, &s, NULL),
+                         CF_STATUS_BAD_DEGREE);
+        assert_int_equal(cf_basis_one_spline(-1, 1, U1, 5, &s, NULL),
+                         CF_STATUS_INVALID_ARG);
+        assert_int_equal(cf_basis_one_spline(0, 1, NULL, 5, &s, NULL),
+                         CF_STATUS_INVALID_ARG);
+        assert_int_equal(cf_basis_one_spline(0, 1, U1, 5, NULL, NULL),
+                         CF_STATUS_INVALID_ARG);
+    }
+}
+
 int
 main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_basis_by_hand),
+        cmocka_unit_test(test_basis_one_spline),
         cmocka_unit_test(test_basis_double_knot),
         cmocka_unit_test(test_last_knot_left_limit),
         cmocka_unit_test(test_partition_of_unity),

@@ -76,6 +76,87 @@ max_abs(const double *v, size_t n)
     return m;
 }
 
+/*
+** Independent reference of the banded least squares: dense Householder QR
+** (below, checked against the normal equations) on the full matrix.
+*/
+/*
+** Column k: v = a_k(k..m-1) - alpha e_1 with alpha = -sign(a_kk) |a_k|, so
+** that H = I - 2 v v^T / (v^T v) maps a_k onto alpha e_1 without
+** cancellation.  H is applied to the remaining columns of A and to B.
+*/
+static cf_status_t
+dense_lsq(size_t m, size_t n, double *A, double *B, size_t nrhs, double *x,
+          cf_diag_t *diag)
+{
+    double *v, maxnorm = 0.0;
+    if (n == 0 || m < n || nrhs == 0)
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                         "least squares with %zu rows and %zu unknowns "
+                         "(need rows >= unknowns >= 1)", m, n);
+    for (size_t j = 0; j < n; j++) {
+        double s = 0.0;
+        for (size_t i = 0; i < m; i++)
+            s += A[i * n + j] * A[i * n + j];
+        if (!isfinite(s))
+            return cf_diag_set(diag, CF_STATUS_NOT_FINITE, (long)j,
+                             "least-squares matrix column %zu is not "
+                             "finite", j);
+        if (sqrt(s) > maxnorm)
+            maxnorm = sqrt(s);
+    }
+    v = malloc(m * sizeof *v);
+    if (v == NULL)
+        return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                         "no memory for least squares with %zu rows", m);
+    for (size_t k = 0; k < n; k++) {
+        double norm2 = 0.0, norm, alpha, vv;
+        for (size_t i = k; i < m; i++)
+            norm2 += A[i * n + k] * A[i * n + k];
+        norm = sqrt(norm2);
+        if (!(norm > (double)m * DBL_EPSILON * maxnorm)) {
+            free(v);
+            return cf_diag_set(diag, CF_STATUS_DEGENERATE, (long)k,
+                             "least-squares matrix is rank deficient: "
+                             "column %zu depends on the previous ones", k);
+        }
+        alpha = A[k * n + k] > 0.0 ? -norm : norm;
+        for (size_t i = k; i < m; i++)
+            v[i] = A[i * n + k];
+        v[k] -= alpha;
+        vv = norm2 - A[k * n + k] * A[k * n + k] + v[k] * v[k];
+        for (size_t j = k + 1; j < n; j++) {
+            double s = 0.0;
+            for (size_t i = k; i < m; i++)
+                s += v[i] * A[i * n + j];
+            s *= 2.0 / vv;
+            for (size_t i = k; i < m; i++)
+                A[i * n + j] -= s * v[i];
+        }
+        for (size_t c = 0; c < nrhs; c++) {
+            double s = 0.0;
+            for (size_t i = k; i < m; i++)
+                s += v[i] * B[i * nrhs + c];
+            s *= 2.0 / vv;
+            for (size_t i = k; i < m; i++)
+                B[i * nrhs + c] -= s * v[i];
+        }
+        A[k * n + k] = alpha;
+        for (size_t i = k + 1; i < m; i++)
+            A[i * n + k] = 0.0;
+    }
+    for (size_t i = n; i-- > 0;) {
+        for (size_t c = 0; c < nrhs; c++) {
+            double s = B[i * nrhs + c];
+            for (size_t j = i + 1; j < n; j++)
+                s -= A[i * n + j] * x[j * nrhs + c];
+            x[i * nrhs + c] = s / A[i * n + i];
+        }
+    }
+    free(v);
+    return CF_STATUS_OK;
+}
+
 static void
 test_tridiagonal_by_hand(void **state)
 {
@@ -252,9 +333,6 @@ test_band_random_against_dense(void **state)
         /* zero diagonal on every third trial: partial pivoting is needed;
         ** otherwise a strictly dominant diagonal */
         fill_band(&band, A, n, kl, ku, &r, trial % 3 == 0);
-        for (size_t i = 0; i < n; i++)
-            for (size_t j = 0; j < n; j++)
-                assert_true(cf__band_get(&band, i, j) == A[i * n + j]);
         for (size_t i = 0; i < 2 * n; i++)
             b[i] = rhs[i] = tu_rng_range(&r, -3, 3);
         if (cf__band_factor(&band, NULL) != CF_STATUS_OK) {
@@ -309,8 +387,6 @@ test_band_needs_pivoting(void **state)
     cf__band_set(&b, 1, 2, 1);
     cf__band_set(&b, 2, 1, 3);
     cf__band_set(&b, 2, 2, 1);
-    assert_true(cf__band_get(&b, 0, 2) == 0.0); /* outside the band */
-    assert_true(cf__band_get(&b, 2, 0) == 0.0);
     assert_int_equal(cf__band_factor(&b, NULL), CF_STATUS_OK);
     cf__band_solve(&b, rhs, 1);
     for (int i = 0; i < 3; i++)
@@ -357,9 +433,9 @@ test_lsq_by_hand(void **state)
     ** = 1/2.  Second column: exact data y = 1 + 2 x gives (1, 2). */
     double A[] = { 1, 0, 1, 1, 1, 2 };
     double B[] = { 0, 1, 1, 3, 1, 5 };
-    double x[4];
+    double x[4] = { 0 };
     (void)state;
-    assert_int_equal(cf__lsq_qr(3, 2, A, B, 2, x, NULL), CF_STATUS_OK);
+    assert_int_equal(dense_lsq(3, 2, A, B, 2, x, NULL), CF_STATUS_OK);
     /* Householder QR is backward stable; this matrix has condition ~ 4 */
     tu_assert_close(x[0], 1.0 / 6.0, 16 * DBL_EPSILON, 1.0);
     tu_assert_close(x[2], 0.5, 16 * DBL_EPSILON, 1.0);
@@ -382,7 +458,7 @@ test_lsq_random_normal_equations(void **state)
             A[i] = A2[i] = tu_rng_range(&r, -1, 1);
         for (size_t i = 0; i < m * 2; i++)
             B[i] = B2[i] = tu_rng_range(&r, -1, 1);
-        assert_int_equal(cf__lsq_qr(m, n, A, B, 2, x, NULL), CF_STATUS_OK);
+        assert_int_equal(dense_lsq(m, n, A, B, 2, x, NULL), CF_STATUS_OK);
         /* the residual is orthogonal to the columns: A^T (A x - B) = 0 */
         for (size_t j = 0; j < n; j++) {
             for (size_t c = 0; c < 2; c++) {
@@ -422,27 +498,6 @@ test_lsq_random_normal_equations(void **state)
 }
 
 static void
-test_lsq_errors(void **state)
-{
-    /* two equal columns: rank 1 */
-    double A[] = { 1, 1, 2, 2, 3, 3 }, B[] = { 1, 2, 3 }, x[2];
-    cf_diag_t d;
-    (void)state;
-    cf_diag_clear(&d);
-    assert_int_equal(cf__lsq_qr(3, 2, A, B, 1, x, &d), CF_STATUS_DEGENERATE);
-    assert_string_equal(d.msg, "least-squares matrix is rank deficient: "
-                               "column 1 depends on the previous ones");
-    cf_diag_clear(&d);
-    assert_int_equal(cf__lsq_qr(1, 2, A, B, 1, x, &d), CF_STATUS_INVALID_ARG);
-    assert_string_equal(d.msg, "least squares with 1 rows and 2 unknowns "
-                               "(need rows >= unknowns >= 1)");
-    cf_diag_clear(&d);
-    A[3] = INFINITY;
-    assert_int_equal(cf__lsq_qr(3, 2, A, B, 1, x, &d), CF_STATUS_NOT_FINITE);
-    assert_string_equal(d.msg, "least-squares matrix column 1 is not finite");
-}
-
-static void
 test_lsq_band_against_dense(void **state)
 {
     /* Random banded rows with non-decreasing first columns (as B-spline
@@ -477,12 +532,12 @@ test_lsq_band_against_dense(void **state)
         if (cf__lsq_band_solve(&lb, x, NULL) != CF_STATUS_OK) {
             /* a random sparse matrix may be rank deficient: then the
             ** dense solver must agree that it is */
-            assert_int_equal(cf__lsq_qr(m, n, A, B, 2, xd, NULL),
+            assert_int_equal(dense_lsq(m, n, A, B, 2, xd, NULL),
                              CF_STATUS_DEGENERATE);
             cf__lsq_band_fini(&lb);
             continue;
         }
-        if (cf__lsq_qr(m, n, A, B, 2, xd, NULL) == CF_STATUS_OK) {
+        if (dense_lsq(m, n, A, B, 2, xd, NULL) == CF_STATUS_OK) {
             /* both backward stable; random matrices of this size have
             ** condition numbers below ~1e4: agreement to 1e-10 */
             assert_true(tu_max_diff(x, xd, 2 * n) <=
@@ -539,7 +594,6 @@ test_out_of_memory(void **state)
     (void)state;
     for (long k = 1;; k++) {
         double rhs[] = { 6, 6, 6 };
-        double A[] = { 1, 0, 1, 1, 1, 2 }, B[] = { 0, 1, 1 }, x[2];
         cf__band_t b;
         cf_status_t s1, s2, s3, s4;
         cf_diag_t d;
@@ -553,13 +607,10 @@ test_out_of_memory(void **state)
         else
             assert_string_equal(d.msg,
                                 "no memory for a banded system of size 3");
-        s4 = cf__lsq_qr(3, 2, A, B, 1, x, NULL);
         {
             cf__lsq_band_t lb;
-            cf_status_t s5 = cf__lsq_band_init(&lb, 4, 2, 2, NULL);
+            s4 = cf__lsq_band_init(&lb, 4, 2, 2, NULL);
             cf__lsq_band_fini(&lb);
-            if (s4 == CF_STATUS_OK)
-                s4 = s5;
         }
         tu_fail_alloc_reset();
         assert_int_equal(tu_alloc_live(), 0);
@@ -589,7 +640,6 @@ main(void)
         cmocka_unit_test(test_band_errors),
         cmocka_unit_test(test_lsq_by_hand),
         cmocka_unit_test(test_lsq_random_normal_equations),
-        cmocka_unit_test(test_lsq_errors),
         cmocka_unit_test(test_lsq_band_against_dense),
         cmocka_unit_test(test_lsq_band_by_hand_and_errors),
         cmocka_unit_test(test_out_of_memory),

@@ -1,0 +1,420 @@
+/*
+** The HTML gallery (`curvefig gallery`): the figures of render manifests
+** (NAME TAB FORMATS TAB CAPTION [TAB SCRIPT] a line), grouped by the
+** seed their name starts with (the part before the first '-'), with an
+** index of the groups and their figures at the top.  The figures of one
+** script stand beside its source (read from SCRIPT, a path as the
+** manifest gives it, relative to the current directory), and each
+** figure links to it.  Captions are typeset like the labels: the
+** TeX-like scripts of N_{i,1}^p become HTML subscripts and superscripts
+** (stacked when both follow one base), so that the page needs no other
+** files and its text can still be searched and copied.
+*/
+#include <errno.h>
+#include <stdbool.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "tool.h"
+
+typedef struct entry {
+    char *name, *formats, *caption, *script;   /* script "" if none */
+} entry_t;
+
+/* What the name prefixes stand for: the seeds of the shipped figures. */
+static const char *const groups[][2] = {
+    { "markova", "Seed 002 · Hana Marková, B-spline křivky (Czech)" },
+    { "orazem", "Seed 003 · Maruša Oražem, Bezierjeva krivulja in njen "
+                "odmik (Slovene)" },
+    { "sir", "Seed 000 · Zbyněk Šír, Bézierovy křivky (Czech)" },
+    { "lecture5", "Seed 001 · Лекция 5: Кривые и поверхности в "
+                  "компьютерной геометрии, I (Russian)" },
+    { "lec05", "Seed 004 · Lec05, Bezier曲线 B样条曲线 (Chinese)" },
+};
+
+static const char gallery_head[] =
+    "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+    "<meta name=\"viewport\" "
+    "content=\"width=device-width, initial-scale=1\">\n"
+    "<title>%s</title>\n<style>\n"
+    "body{font-family:serif;margin:2em auto;max-width:90em;padding:0 1em}\n"
+    "nav li{margin:.3em 0}nav a{text-decoration:none}\n"
+    "h2{margin:1.5em 0 .5em;border-bottom:1px solid #ccc}\n"
+    ".script{display:grid;grid-template-columns:minmax(0,3fr) "
+    "minmax(0,2fr);gap:1em;margin:1em 0;padding-top:.5em;"
+    "border-top:1px dashed #ddd}\n"
+    ".figs{display:grid;grid-template-columns:repeat(auto-fill,"
+    "minmax(18em,1fr));gap:1em;align-content:start}\n"
+    "figure{margin:0;padding:.5em;border:1px solid #ddd;border-radius:4px}\n"
+    "figure img{width:100%%;height:14em;object-fit:contain}\n"
+    "figcaption{font-size:.9em}\nfigcaption b{font-family:monospace}\n"
+    ".src h3{font:bold .9em monospace;margin:0 0 .3em}\n"
+    ".src pre{font-size:.75em;max-height:40em;overflow:auto;margin:0;"
+    "padding:.5em;background:#f7f7f7;border:1px solid #ddd}\n"
+    ".ss{display:inline-flex;flex-direction:column;vertical-align:.42em;"
+    "font-size:.75em;line-height:1.05}\n"
+    ".ss sup,.ss sub{font-size:1em;vertical-align:baseline}\n"
+    "@media (max-width:60em){.script{grid-template-columns:1fr}}\n"
+    "</style>\n</head>\n<body>\n<h1>%s</h1>\n";
+
+static const char *
+group_title(const char *prefix, size_t n)
+{
+    for (size_t i = 0; i < sizeof groups / sizeof groups[0]; i++)
+        if (strlen(groups[i][0]) == n && strncmp(groups[i][0], prefix, n) == 0)
+            return groups[i][1];
+    return NULL;
+}
+
+/* The length of one script after s[0] (_ or ^): a {group} (its braces
+** counted, nested ones kept) or one UTF-8 character; *body, *blen its
+** text. */
+static size_t
+script_arg(const char *s, const char **body, size_t *blen)
+{
+    size_t k = 1;
+    if (s[1] == '{') {
+        int depth = 1;
+        for (k = 2; s[k] != '\0' && depth > 0; k++)
+            depth += s[k] == '{' ? 1 : s[k] == '}' ? -1 : 0;
+        if (depth > 0)
+            return 0;
+        *body = s + 2;
+        *blen = k - 3;
+        return k;
+    }
+    if (s[1] == '\0' || s[1] == ' ')
+        return 0;
+    k = 2;
+    while ((s[k] & 0xc0) == 0x80)
+        k++;
+    *body = s + 1;
+    *blen = k - 1;
+    return k;
+}
+
+static void put_math(FILE *f, const char *s, size_t n);
+
+static void
+put_script(FILE *f, char which, const char *body, size_t blen)
+{
+    fputs(which == '_' ? "<sub>" : "<sup>", f);
+    put_math(f, body, blen);
+    fputs(which == '_' ? "</sub>" : "</sup>", f);
+}
+
+/* The first n bytes of caption s as HTML, scripts typeset. */
+static void
+put_math(FILE *f, const char *s, size_t n)
+{
+    size_t i = 0;
+    while (i < n) {
+        const char *b1, *b2;
+        size_t l1, l2, k1, k2;
+        if ((s[i] != '_' && s[i] != '^') || i == 0 || s[i - 1] == ' '
+            || (k1 = script_arg(s + i, &b1, &l1)) == 0 || i + k1 > n) {
+            const char *e = s + i + 1;
+            while (e < s + n && *e != '_' && *e != '^')
+                e++;
+            cf__tool_put_html(f, s + i, (size_t)(e - (s + i)));
+            i = (size_t)(e - s);
+            continue;
+        }
+        /* a subscript and a superscript on one base: stacked */
+        if ((s[i + k1] == '_' || s[i + k1] == '^') && s[i + k1] != s[i]
+            && (k2 = script_arg(s + i + k1, &b2, &l2)) != 0
+            && i + k1 + k2 <= n) {
+            fputs("<span class=\"ss\">", f);
+            if (s[i] == '^') {
+                put_script(f, '^', b1, l1);
+                put_script(f, '_', b2, l2);
+            } else {
+                put_script(f, '^', b2, l2);
+                put_script(f, '_', b1, l1);
+            }
+            fputs("</span>", f);
+            i += k1 + k2;
+        } else {
+            put_script(f, s[i], b1, l1);
+            i += k1;
+        }
+    }
+}
+
+static void
+put_source(FILE *out, const char *script)
+{
+    FILE *f = fopen(script, "r");
+    char buf[4096];
+    size_t n;
+    if (f == NULL) {
+        fputs("<p>(source not found)</p>", out);
+        return;
+    }
+    fputs("<pre>", out);
+    while ((n = fread(buf, 1, sizeof buf, f)) > 0)
+        cf__tool_put_html(out, buf, n);
+    fputs("</pre>", out);
+    fclose(f);
+}
+
+static const char *
+base_name(const char *path)
+{
+    const char *b = strrchr(path, '/');
+    return b != NULL ? b + 1 : path;
+}
+
+static void
+put_figure(FILE *out, const entry_t *e)
+{
+    const char *name = e->name, *cap = e->caption;
+    char fmts[64];
+    fputs("<figure id=\"", out);
+    cf__tool_put_html(out, name, strlen(name));
+    fputs("\">", out);
+    if (strstr(e->formats, "svg") != NULL || strstr(e->formats, "png") != NULL) {
+        const char *img = strstr(e->formats, "svg") != NULL ? "svg" : "png";
+        fputs("<a href=\"", out);
+        cf__tool_put_html(out, name, strlen(name));
+        fprintf(out, ".%s\"><img src=\"", img);
+        cf__tool_put_html(out, name, strlen(name));
+        fprintf(out, ".%s\" alt=\"", img);
+        cf__tool_put_html(out, cap, strlen(cap));
+        fputs("\" loading=\"lazy\"></a>", out);
+    }
+    fputs("\n<figcaption><b>", out);
+    cf__tool_put_html(out, name, strlen(name));
+    fputs("</b> ", out);
+    put_math(out, cap, strlen(cap));
+    fputs("<br>", out);
+    snprintf(fmts, sizeof fmts, "%s", e->formats);
+    for (char *f = strtok(fmts, ","); f != NULL; f = strtok(NULL, ",")) {
+        char upper[8];
+        size_t k;
+        for (k = 0; k + 1 < sizeof upper && f[k] != '\0'; k++)
+            upper[k] = (char)(f[k] >= 'a' && f[k] <= 'z' ? f[k] - 32 : f[k]);
+        upper[k] = '\0';
+        fputs(" <a href=\"", out);
+        cf__tool_put_html(out, name, strlen(name));
+        fprintf(out, ".%s\">%s</a>", f, upper);
+    }
+    if (e->script[0] != '\0') {
+        fputs(" · <a href=\"#src-", out);
+        cf__tool_put_html(out, base_name(e->script), strlen(base_name(e->script)));
+        fputs("\">script</a>", out);
+    }
+    fputs("</figcaption></figure>\n", out);
+}
+
+static size_t
+prefix_len(const char *name)
+{
+    return strcspn(name, "-");
+}
+
+static void
+put_group_heading(FILE *out, const char *tag, const char *name, bool link)
+{
+    size_t plen = prefix_len(name);
+    const char *t = group_title(name, plen);
+    fprintf(out, "<%s>", tag);
+    if (link) {
+        fputs("<a href=\"#g-", out);
+        cf__tool_put_html(out, name, plen);
+        fputs("\">", out);
+    }
+    if (t != NULL)
+        cf__tool_put_html(out, t, strlen(t));
+    else
+        cf__tool_put_html(out, name, plen);
+    fputs(link ? "</a>" : "", out);
+    if (strcmp(tag, "li") != 0)   /* an index entry stays open */
+        fprintf(out, "</%s>", tag);
+}
+
+static bool
+same_group(const entry_t *a, const entry_t *b)
+{
+    size_t n = prefix_len(a->name);
+    return n == prefix_len(b->name) && strncmp(a->name, b->name, n) == 0;
+}
+
+/* The index: per group its title and its figures. */
+static void
+put_index(FILE *out, const entry_t *es, size_t n)
+{
+    fputs("<nav><ul>\n", out);
+    for (size_t i = 0; i < n; i++) {
+        const char *short_name = es[i].name + prefix_len(es[i].name);
+        if (i == 0 || !same_group(&es[i - 1], &es[i])) {
+            if (i > 0)
+                fputs("</li>\n", out);
+            put_group_heading(out, "li", es[i].name, true);
+            fputs(":", out);
+        }
+        if (*short_name == '-')
+            short_name++;
+        fputs(" <a href=\"#", out);
+        cf__tool_put_html(out, es[i].name, strlen(es[i].name));
+        fputs("\">", out);
+        cf__tool_put_html(out, short_name, strlen(short_name));
+        fputs("</a>", out);
+    }
+    if (n > 0)
+        fputs("</li>\n", out);
+    fputs("</ul></nav>\n", out);
+}
+
+static void
+put_body(FILE *out, const entry_t *es, size_t n)
+{
+    size_t i = 0;
+    while (i < n) {
+        size_t j = i + 1;
+        if (i == 0 || !same_group(&es[i - 1], &es[i])) {
+            fputs("<section id=\"g-", out);
+            cf__tool_put_html(out, es[i].name, prefix_len(es[i].name));
+            fputs("\">", out);
+            put_group_heading(out, "h2", es[i].name, false);
+            fputs("\n", out);
+        }
+        /* the figures of one script, beside its source */
+        while (j < n && strcmp(es[j].script, es[i].script) == 0
+               && es[i].script[0] != '\0' && same_group(&es[i], &es[j]))
+            j++;
+        fputs("<div class=\"script\"><div class=\"figs\">\n", out);
+        for (size_t k = i; k < j; k++)
+            put_figure(out, &es[k]);
+        fputs("</div>", out);
+        if (es[i].script[0] != '\0') {
+            const char *b = base_name(es[i].script);
+            fputs("<div class=\"src\" id=\"src-", out);
+            cf__tool_put_html(out, b, strlen(b));
+            fputs("\"><h3>", out);
+            cf__tool_put_html(out, b, strlen(b));
+            fputs("</h3>", out);
+            put_source(out, es[i].script);
+            fputs("</div>", out);
+        }
+        fputs("</div>\n", out);
+        if (j == n || !same_group(&es[j - 1], &es[j]))
+            fputs("</section>\n", out);
+        i = j;
+    }
+}
+
+/* Split one manifest line into e (its fields copied); false when it is
+** not one. */
+static bool
+parse_line(char *line, entry_t *e)
+{
+    char *f[4] = { line, NULL, NULL, NULL }, *nl = strchr(line, '\n');
+    if (nl != NULL)
+        *nl = '\0';
+    for (int k = 1; k < 4; k++) {
+        char *t = strchr(f[k - 1], '\t');
+        if (t == NULL)
+            break;
+        *t = '\0';
+        f[k] = t + 1;
+    }
+    if (f[2] == NULL)
+        return false;
+    e->name = strdup(f[0]);
+    e->formats = strdup(f[1]);
+    e->caption = strdup(f[2]);
+    e->script = strdup(f[3] != NULL ? f[3] : "");
+    return e->name != NULL && e->formats != NULL && e->caption != NULL
+        && e->script != NULL;
+}
+
+static void
+free_entries(entry_t *es, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        free(es[i].name);
+        free(es[i].formats);
+        free(es[i].caption);
+        free(es[i].script);
+    }
+    free(es);
+}
+
+/* Every line of the manifests; NULL (a message said why) on failure. */
+static entry_t *
+read_manifests(const char *const *manifests, int count, size_t *n)
+{
+    entry_t *es = NULL;
+    size_t cap = 0;
+    char line[8192];
+    *n = 0;
+    for (int i = 0; i < count; i++) {
+        FILE *m = fopen(manifests[i], "r");
+        if (m == NULL) {
+            fprintf(stderr, "curvefig: cannot read %s: %s\n", manifests[i],
+                    strerror(errno));
+            free_entries(es, *n);
+            return NULL;
+        }
+        while (fgets(line, sizeof line, m) != NULL) {
+            if (*n == cap) {
+                entry_t *more = realloc(es, (cap ? 2 * cap : 64) * sizeof *es);
+                if (more == NULL)
+                    goto nomem;
+                es = more;
+                cap = cap ? 2 * cap : 64;
+            }
+            memset(&es[*n], 0, sizeof es[*n]);
+            if (parse_line(line, &es[*n]))
+                (*n)++;
+            else if (es[*n].name != NULL)
+                goto nomem;
+        }
+        fclose(m);
+        continue;
+nomem:
+        fclose(m);
+        fprintf(stderr, "curvefig: out of memory reading %s\n", manifests[i]);
+        free_entries(es, *n + 1);
+        return NULL;
+    }
+    if (es == NULL)
+        es = calloc(1, sizeof *es);
+    return es;
+}
+
+int
+cf__tool_gallery(const char *out_path, const char *title,
+                 const char *const *manifests, int count)
+{
+    FILE *out;
+    entry_t *es;
+    size_t n;
+    if (title == NULL)
+        title = "curvefig figures";
+    if (out_path == NULL || strcmp(out_path, ".") == 0)
+        out_path = "index.html";
+    es = read_manifests(manifests, count, &n);
+    if (es == NULL)
+        return 2;
+    out = cf__tool_open_atomic(out_path);
+    if (out == NULL) {
+        fprintf(stderr, "curvefig: cannot write %s: %s\n", out_path,
+                strerror(errno));
+        free_entries(es, n);
+        return 1;
+    }
+    fprintf(out, gallery_head, title, title);
+    put_index(out, es, n);
+    fputs("<main>\n", out);
+    put_body(out, es, n);
+    fputs("</main>\n</body>\n</html>\n", out);
+    free_entries(es, n);
+    if (cf__tool_close_atomic(out, out_path) != 0) {
+        fprintf(stderr, "curvefig: cannot write %s: %s\n", out_path,
+                strerror(errno));
+        return 1;
+    }
+    return 0;
+}

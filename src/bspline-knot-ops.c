@@ -1,0 +1,402 @@
+/*
+** Knot insertion (thesis §3.1, A5.1), refinement (A5.4) and removal (A5.8)
+** on B-spline and NURBS curves, on the stored (homogeneous) points.
+*/
+#include <math.h>
+#include <string.h>
+
+#include "bspline-private.h"
+
+/* ---- knot insertion ----------------------------------------------------- */
+
+/*
+** Insert u (a <= u <= b) r times where k is the largest index with
+** U[k] <= u and s the multiplicity of u (s + r <= p + 1).  A5.1: only
+** the p - s + 1 points P_{k-p} .. P_{k-s} take part; column j of the
+** thesis' scheme uses a_{i,j} = (u - u_i) / (u_{i+p-j+1} - u_i).
+*/
+cf_bspline_t *
+cf__bspline_insert_raw(const cf_bspline_t *c, double u, size_t k, int s, int r)
+{
+    size_t p = (size_t)c->p, hd = c->hdim, n = c->count - 1;
+    size_t nk = c->nknots, R = (size_t)r, S = (size_t)s;
+    const double *U = c->U, *P = c->P;
+    double *Rw;
+    size_t L;
+    cf_bspline_t *q = cf__bspline_alloc(c->dim, c->rational, c->p,
+                                        c->count + R);
+    if (q == NULL)
+        return NULL;
+    Rw = cf__alloc_array(p - S + 1, hd * sizeof *Rw);
+    if (Rw == NULL) {
+        cf__free(q);
+        return NULL;
+    }
+    /* knots */
+    memcpy(q->U, U, (k + 1) * sizeof *U);
+    for (size_t i = 1; i <= R; i++)
+        q->U[k + i] = u;
+    memcpy(q->U + k + 1 + R, U + k + 1, (nk - k - 1) * sizeof *U);
+    /* unchanged points */
+    memcpy(q->P, P, (k - p + 1) * hd * sizeof *P);
+    memcpy(q->P + (k - S + R) * hd, P + (k - S) * hd,
+           (n - (k - S) + 1) * hd * sizeof *P);
+    /* the working column R_0 .. R_{p-s} = P_{k-p} .. P_{k-s} */
+    L = k - p + 1;
+    {
+        size_t need = (p - S + 1) * hd;
+        memcpy(Rw, P + (k - p) * hd, need * sizeof *P);
+        for (size_t j = 1; j <= R; j++) {
+            L = k - p + j;
+            for (size_t i = 0; i + j + S <= p; i++) {
+                double al = (u - U[L + i]) / (U[i + k + 1] - U[L + i]);
+                cf__bspline_lerp(Rw + i * hd, Rw + i * hd, Rw + (i + 1) * hd,
+                                 al, hd);
+            }
+            memcpy(q->P + L * hd, Rw, hd * sizeof *P);
+            if (j + S <= p)
+                memcpy(q->P + (k + R - j - S) * hd, Rw + (p - j - S) * hd,
+                       hd * sizeof *P);
+        }
+        for (size_t i = L + 1; i + 1 + S <= k; i++)
+            memcpy(q->P + i * hd, Rw + (i - L) * hd, hd * sizeof *P);
+    }
+    cf__free(Rw);
+    cf__bspline_finish(q);
+    return q;
+}
+
+/* Check u for insertion and find k and s. */
+static cf_status_t
+insert_check(const cf_bspline_t *c, double u, int r, size_t *k, int *s,
+             cf_diag_t *diag)
+{
+    cf_status_t st = cf__bspline_check_param(c, u, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    if (r < 1)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "the knot must be inserted at least once, "
+                         "not %d times", r);
+    *k = cf__knots_last_le(c->U, c->nknots, u);
+    *s = cf__knots_mult(c->U, c->nknots, u);
+    if (*s + r > c->p + 1)
+        return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)*k,
+                         "knot %g has multiplicity %d; inserting it "
+                         "%d more times exceeds degree + 1 = %d", u, *s, r,
+                         c->p + 1);
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_bspline_insert_knot(const cf_bspline_t *c, double u, int r,
+                       cf_bspline_t **out, cf_bspline_insert_info_t *info,
+                       cf_diag_t *diag)
+{
+    cf_diag_clear(diag);
+    cf_status_t st = cf__bspline_check_in(c, out, diag);
+    size_t k = 0, p;
+    int s = 0;
+    if (st != CF_STATUS_OK)
+        return st;
+    st = insert_check(c, u, r, &k, &s, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    *out = cf__bspline_insert_raw(c, u, k, s, r);
+    if (*out == NULL)
+        return cf__bspline_no_memory(diag);
+    if (info != NULL) {
+        p = (size_t)c->p;
+        info->span = k;
+        info->multiplicity = s;
+        info->times = r;
+        info->cut_first = k - p + 1;
+        info->cut_count = p > (size_t)s + 1 ? p - (size_t)s - 1 : 0;
+        info->new_first = k - p + 1;
+        info->new_count = p + (size_t)r - (size_t)s - 1;
+    }
+    return CF_STATUS_OK;
+}
+
+/* ---- refinement --------------------------------------------------------- */
+
+/* The heart of A5.4, from the right: the old points above the next new
+** knot move up, then p points are recomputed (inlined with a constant
+** hd for the common dimensions). */
+CF__INLINE void
+refine_loop(const double *U, const double *P, double *V, double *Q,
+            const double *X, size_t nx, size_t p, size_t a, size_t b,
+            size_t hd)
+{
+    size_t i = b + p - 1, kk = b + p + nx - 1;
+    for (size_t jj = nx; jj-- > 0;) {
+        double x = X[jj];
+        while (x <= U[i] && i > a) {
+            cf__bspline_copy_pt(Q + (kk - p - 1) * hd, P + (i - p - 1) * hd,
+                                hd);
+            V[kk] = U[i];
+            kk--;
+            i--;
+        }
+        cf__bspline_copy_pt(Q + (kk - p - 1) * hd, Q + (kk - p) * hd, hd);
+        for (size_t l = 1; l <= p; l++) {
+            size_t ind = kk - p + l;
+            double al = V[kk + l] - x;
+            if (al == 0.0) {
+                cf__bspline_copy_pt(Q + (ind - 1) * hd, Q + ind * hd, hd);
+            } else {
+                al /= V[kk + l] - U[i - p + l];
+                cf__bspline_lerp(Q + (ind - 1) * hd, Q + ind * hd,
+                                 Q + (ind - 1) * hd, al, hd);
+            }
+        }
+        V[kk] = x;
+        kk--;
+    }
+}
+
+cf_status_t
+cf_bspline_refine(const cf_bspline_t *c, const double *X, size_t nx,
+                  cf_bspline_t **out, cf_diag_t *diag)
+{
+    cf_diag_clear(diag);
+    cf_status_t st = cf__bspline_check_in(c, out, diag);
+    size_t p, hd, n, m, a, b;
+    const double *U, *P;
+    cf_bspline_t *q;
+    if (st != CF_STATUS_OK)
+        return st;
+    if (nx == 0)
+        return cf_bspline_copy(c, out, diag);
+    if (X == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "knots are NULL");
+    for (size_t j = 0; j < nx; j++) {
+        st = cf__bspline_check_param(c, X[j], diag);
+        if (st != CF_STATUS_OK)
+            return st;
+    }
+    st = cf__check_knot_order(X, nx, "new knot", diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    /* final multiplicities: walk the sorted new knots and the knot vector
+    ** together */
+    {
+        size_t at = 0;
+        for (size_t j = 0; j < nx;) {
+            size_t e = j, s = 0;
+            while (e + 1 < nx && X[e + 1] == X[j])
+                e++;
+            while (at < c->nknots && c->U[at] < X[j])
+                at++;
+            while (at + s < c->nknots && c->U[at + s] == X[j])
+                s++;
+            if (s + (e - j + 1) > (size_t)c->p + 1)
+                return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)j,
+                                 "knot %g would get multiplicity "
+                                 "%zu; degree %d allows at most %d", X[j],
+                                 s + (e - j + 1), c->p, c->p + 1);
+            j = e + 1;
+        }
+    }
+    if (nx > ((size_t)1 << 30))
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "too many knots");
+    q = cf__bspline_alloc(c->dim, c->rational, c->p, c->count + nx);
+    if (q == NULL)
+        return cf__bspline_no_memory(diag);
+    p = (size_t)c->p;
+    hd = c->hdim;
+    n = c->count - 1;
+    m = n + p + 1;
+    U = c->U;
+    P = c->P;
+    /* A5.4: the points outside [a - p, b - 1] are copied, the others
+    ** rebuilt from the right, one new knot at a time */
+    a = cf__bspline_span(c, X[0]);
+    b = cf__bspline_span(c, X[nx - 1]) + 1;
+    memcpy(q->P, P, (a - p + 1) * hd * sizeof *P);
+    memcpy(q->P + (b + nx - 1) * hd, P + (b - 1) * hd,
+           (n - b + 2) * hd * sizeof *P);
+    memcpy(q->U, U, (a + 1) * sizeof *U);
+    memcpy(q->U + b + p + nx, U + b + p, (m - b - p + 1) * sizeof *U);
+    if (hd == 2)
+        refine_loop(U, P, q->U, q->P, X, nx, p, a, b, 2);
+    else if (hd == 3)
+        refine_loop(U, P, q->U, q->P, X, nx, p, a, b, 3);
+    else
+        refine_loop(U, P, q->U, q->P, X, nx, p, a, b, hd);
+    cf__bspline_finish(q);
+    *out = q;
+    return CF_STATUS_OK;
+}
+
+/* ---- removal ------------------------------------------------------------ */
+
+static double
+hdist(const double *x, const double *y, size_t n)
+{
+    double s = 0.0;
+    for (size_t d = 0; d < n; d++)
+        s += (x[d] - y[d]) * (x[d] - y[d]);
+    return sqrt(s);
+}
+
+cf_status_t
+cf_bspline_remove_knot(const cf_bspline_t *c, double u, int num, double tol,
+                       cf_bspline_t **out, int *removed, cf_diag_t *diag)
+{
+    cf_diag_clear(diag);
+    cf_status_t st = cf__bspline_check_in(c, out, diag);
+    size_t p, hd, n, m, r, nk;
+    long first, last, off, fout;
+    int s, t;
+    double TOL, *Pw = NULL, *temp = NULL;
+    cf_bspline_t *q;
+    if (removed != NULL)
+        *removed = 0;
+    if (st != CF_STATUS_OK)
+        return st;
+    if (num < 1)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "count %d must be at least 1", num);
+    if (!isfinite(tol) || tol < 0.0)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "tolerance %g must be finite and >= 0", tol);
+    if (!isfinite(u))
+        return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
+                         "knot is %g", u);
+    s = cf__knots_mult(c->U, c->nknots, u);
+    if (s == 0 || !(u > c->a && u < c->b))
+        return cf__error(diag, CF_STATUS_BAD_KNOTS, -1,
+                         "%g is not an interior knot of the domain "
+                         "[%g, %g]", u, c->a, c->b);
+    p = (size_t)c->p;
+    hd = c->hdim;
+    n = c->count - 1;
+    m = n + p + 1;
+    nk = c->nknots;
+    r = cf__knots_last_le(c->U, nk, u);   /* last index of the run */
+    if (num > s)
+        num = s;
+    TOL = tol;
+    if (c->rational) {
+        /* NURBS Book (5.30): homogeneous tolerance tol w_min / (1 + |P|max) */
+        double wmin = INFINITY, pmax = 0.0;
+        for (size_t i = 0; i <= n; i++) {
+            double w = c->P[i * hd + c->dim], s2 = 0.0;
+            for (size_t d = 0; d < c->dim; d++)
+                s2 += (c->P[i * hd + d] / w) * (c->P[i * hd + d] / w);
+            wmin = fmin(wmin, w);
+            pmax = fmax(pmax, sqrt(s2));
+        }
+        TOL = tol * wmin / (1.0 + pmax);
+    }
+    Pw = cf__alloc_array(c->count, hd * sizeof *Pw);
+    /* temp[0 .. last + 1 - off]: last + 1 - off = p - s + 2 + 2t with
+    ** t < num <= s, so at most p + s <= 2p + 1 (s = p + 1, a knot where
+    ** the curve may jump, removed p + 1 times).  The NURBS Book sizes it
+    ** 2p + 1, which is one short in that case. */
+    temp = cf__alloc_array(2 * p + 2, hd * sizeof *temp);
+    if (Pw == NULL || temp == NULL) {
+        cf__free(Pw);
+        cf__free(temp);
+        return cf__bspline_no_memory(diag);
+    }
+    memcpy(Pw, c->P, c->count * hd * sizeof *Pw);
+    fout = (long)(2 * r - (size_t)s - p) / 2;
+    last = (long)r - s;
+    first = (long)r - (long)p;
+    for (t = 0; t < num; t++) {
+        long i, j, ii, jj;
+        bool ok = false;
+        off = first - 1;
+        memcpy(temp, Pw + off * (long)hd, hd * sizeof *temp);
+        memcpy(temp + (last + 1 - off) * (long)hd, Pw + (last + 1) * (long)hd,
+               hd * sizeof *temp);
+        i = first;
+        j = last;
+        ii = 1;
+        jj = last - off;
+        /* solve for the new points from both ends inwards */
+        while (j - i > t) {
+            double ai = (u - c->U[i]) / (c->U[i + (long)p + 1 + t] - c->U[i]);
+            double aj = (u - c->U[j - t]) / (c->U[j + (long)p + 1]
+                                             - c->U[j - t]);
+            for (size_t d = 0; d < hd; d++) {
+                temp[ii * (long)hd + (long)d] =
+                    (Pw[i * (long)hd + (long)d]
+                     - (1.0 - ai) * temp[(ii - 1) * (long)hd + (long)d]) / ai;
+                temp[jj * (long)hd + (long)d] =
+                    (Pw[j * (long)hd + (long)d]
+                     - aj * temp[(jj + 1) * (long)hd + (long)d])
+                    / (1.0 - aj);
+            }
+            i++;
+            ii++;
+            j--;
+            jj--;
+        }
+        if (j - i < t) {
+            ok = hdist(temp + (ii - 1) * (long)hd, temp + (jj + 1) * (long)hd,
+                       hd) <= TOL;
+        } else {
+            double ai = (u - c->U[i]) / (c->U[i + (long)p + 1 + t] - c->U[i]);
+            double dd = 0.0;
+            for (size_t d = 0; d < hd; d++) {
+                double v = ai * temp[(ii + t + 1) * (long)hd + (long)d]
+                           + (1.0 - ai) * temp[(ii - 1) * (long)hd + (long)d];
+                double e = Pw[i * (long)hd + (long)d] - v;
+                dd += e * e;
+            }
+            ok = sqrt(dd) <= TOL;
+        }
+        if (!ok)
+            break;
+        i = first;
+        j = last;
+        while (j - i > t) {
+            memcpy(Pw + i * (long)hd, temp + (i - off) * (long)hd,
+                   hd * sizeof *Pw);
+            memcpy(Pw + j * (long)hd, temp + (j - off) * (long)hd,
+                   hd * sizeof *Pw);
+            i++;
+            j--;
+        }
+        first--;
+        last++;
+    }
+    cf__free(temp);
+    if (t == 0) {
+        cf__free(Pw);
+        return cf_bspline_copy(c, out, diag);
+    }
+    q = cf__bspline_alloc(c->dim, c->rational, c->p, c->count - (size_t)t);
+    if (q == NULL) {
+        cf__free(Pw);
+        return cf__bspline_no_memory(diag);
+    }
+    /* knots: drop t copies of u */
+    memcpy(q->U, c->U, (r + 1 - (size_t)t) * sizeof *q->U);
+    memcpy(q->U + r + 1 - (size_t)t, c->U + r + 1,
+           (m - r) * sizeof *q->U);
+    {
+        /* points: the block that lost t points is closed up */
+        long jj = fout, ii = fout;
+        for (int k2 = 1; k2 < t; k2++) {
+            if (k2 % 2 == 1)
+                ii++;
+            else
+                jj--;
+        }
+        memcpy(q->P, Pw, (size_t)jj * hd * sizeof *Pw);
+        memcpy(q->P + (size_t)jj * hd, Pw + (size_t)(ii + 1) * hd,
+               (n - (size_t)ii) * hd * sizeof *Pw);
+    }
+    cf__free(Pw);
+    cf__bspline_finish(q);
+    *out = q;
+    if (removed != NULL)
+        *removed = t;
+    return CF_STATUS_OK;
+}

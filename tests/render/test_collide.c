@@ -1,0 +1,295 @@
+/* Every shipped figure (the scripts in figures/), rendered through the
+** cairo backend into rasters of its page: no label glyph lies on drawn
+** ink or on another label, and no ink touches the edge of the page.
+**
+** A figure's display list is drawn three ways at RES pixels per bp, each
+** into an alpha-only raster: everything (the page: its border rows and
+** columns must stay empty, also in a figure that lets the page clip);
+** everything but the text, with the fills of shadings left out (a label
+** may sit on a shading, not on its outline);
+** and each text operation alone (its glyph mask).  A pixel counts as ink
+** when its alpha exceeds one half: two anti-aliased edges that only touch
+** never both pass that, two shapes that overlap by a third of a bp do.
+** A label collides when one of its glyph pixels is ink of the rest, or of
+** an earlier label. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+#include <cairo.h>
+
+#include "backend.h"
+#include "model.h"
+#include "script.h"
+#include "testutil.h"
+
+#define RES 3.0      /* raster pixels per bp (216 dpi) */
+#define HALF 127     /* alpha of a pixel inked more than half */
+
+typedef struct mask {
+    int x0, y0, w, h;    /* the box of the glyphs, in raster pixels */
+    unsigned char *a;    /* w * h alphas */
+    const char *src;
+} mask_t;
+
+static void
+no_text(void *ctx, const cf__text_op_t *t)
+{
+    (void)ctx;
+    (void)t;
+}
+
+static cairo_t *
+raster(int w, int h, cairo_surface_t **img)
+{
+    cairo_t *cr;
+    *img = cairo_image_surface_create(CAIRO_FORMAT_A8, w, h);
+    cr = cairo_create(*img);
+    assert_int_equal(cairo_status(cr), CAIRO_STATUS_SUCCESS);
+    cairo_scale(cr, RES, RES);
+    return cr;
+}
+
+static unsigned char
+alpha(cairo_surface_t *img, int x, int y)
+{
+    return cairo_image_surface_get_data(img)
+        [(size_t)y * (size_t)cairo_image_surface_get_stride(img)
+         + (size_t)x];
+}
+
+/* Pixels of the raster's border rows and columns with any ink. */
+static long
+border_pixels(cairo_surface_t *img)
+{
+    int w = cairo_image_surface_get_width(img);
+    int h = cairo_image_surface_get_height(img), x, y;
+    long n = 0;
+    cairo_surface_flush(img);
+    for (x = 0; x < w; x++)
+        n += (alpha(img, x, 0) > 0) + (alpha(img, x, h - 1) > 0);
+    for (y = 1; y < h - 1; y++)
+        n += (alpha(img, 0, y) > 0) + (alpha(img, w - 1, y) > 0);
+    return n;
+}
+
+/* The glyph mask of text operation k. */
+static void
+text_mask(const cf__dl_t *dl, size_t k, int w, int h, mask_t *m)
+{
+    cairo_surface_t *img;
+    cairo_t *cr = raster(w, h, &img);
+    double ink[4];
+    int x, y;
+    assert_int_equal(cf__cairo_ink(dl, k, k + 1, ink), 0);
+    m->x0 = (int)fmax(0, floor(ink[0] * RES) - 1);
+    m->y0 = (int)fmax(0, floor(ink[1] * RES) - 1);
+    m->w = (int)fmin(w, ceil(ink[2] * RES) + 1) - m->x0;
+    m->h = (int)fmin(h, ceil(ink[3] * RES) + 1) - m->y0;
+    if (m->w < 0)
+        m->w = 0;
+    if (m->h < 0)
+        m->h = 0;
+    m->a = calloc((size_t)m->w * (size_t)m->h + 1, 1);
+    m->src = dl->ops[k].u.text.source;
+    cf__dl_play(dl, k, k + 1, &cf__cairo_backend, cr);
+    cairo_surface_flush(img);
+    for (y = 0; y < m->h; y++)
+        for (x = 0; x < m->w; x++)
+            m->a[(size_t)y * (size_t)m->w + (size_t)x] =
+                alpha(img, m->x0 + x, m->y0 + y);
+    cairo_destroy(cr);
+    cairo_surface_destroy(img);
+}
+
+static long
+mask_on_raster(const mask_t *m, cairo_surface_t *img)
+{
+    long n = 0;
+    int x, y;
+    for (y = 0; y < m->h; y++)
+        for (x = 0; x < m->w; x++)
+            n += m->a[(size_t)y * (size_t)m->w + (size_t)x] > HALF
+                 && alpha(img, m->x0 + x, m->y0 + y) > HALF;
+    return n;
+}
+
+static long
+mask_on_mask(const mask_t *a, const mask_t *b)
+{
+    long n = 0;
+    int x, y;
+    for (y = 0; y < a->h; y++)
+        for (x = 0; x < a->w; x++) {
+            int bx = a->x0 + x - b->x0, by = a->y0 + y - b->y0;
+            if (bx < 0 || by < 0 || bx >= b->w || by >= b->h)
+                continue;
+            n += a->a[(size_t)y * (size_t)a->w + (size_t)x] > HALF
+                 && b->a[(size_t)by * (size_t)b->w + (size_t)bx] > HALF;
+        }
+    return n;
+}
+
+/* The collisions of one figure, printed; their number. */
+static int
+check_figure(cf_figure_t *fig, const char *name)
+{
+    cf__layout_t lay;
+    cf__dl_t dl;
+    cf__backend_t ink_only = cf__cairo_backend;
+    cairo_surface_t *page, *ink;
+    cairo_t *cr;
+    double pw, ph;
+    int w, h, bad = 0;
+    size_t i, k, nt = 0;
+    mask_t *masks;
+    long n;
+
+    cf__dl_init(&dl);
+    assert_int_equal(cf__figure_layout(fig, &lay), CF_STATUS_OK);
+    assert_int_equal(cf__figure_build(fig, &lay, &dl), CF_STATUS_OK);
+    cf_figure_get_size(fig, &pw, &ph);
+    w = (int)ceil(pw * RES);
+    h = (int)ceil(ph * RES);
+
+    cr = raster(w, h, &page);
+    cf__dl_play(&dl, 0, dl.count, &cf__cairo_backend, cr);
+    cairo_destroy(cr);
+    n = border_pixels(page);
+    if (n > 0) {
+        print_message("%s: ink on %ld pixels of the page's edge\n", name, n);
+        bad++;
+    }
+    cairo_surface_destroy(page);
+
+    /* the shadings' fills are left out: a label may sit on a shading */
+    for (i = 0; i < dl.count; i++) {
+        cf__op_t *op = &dl.ops[i];
+        if (op->kind == CF__OP_GROUP
+            && (fig->els[op->u.group.index]->kind->flags & CF__KIND_SHADING))
+            for (k = i + 1; k < dl.count && dl.ops[k].kind != CF__OP_END; k++)
+                if (dl.ops[k].kind == CF__OP_PATH)
+                    dl.ops[k].u.path.paint.fill = false;
+    }
+    ink_only.draw_text = no_text;
+    cr = raster(w, h, &ink);
+    cf__dl_play(&dl, 0, dl.count, &ink_only, cr);
+    cairo_destroy(cr);
+    cairo_surface_flush(ink);
+
+    masks = calloc(dl.count + 1, sizeof *masks);
+    for (i = 0; i < dl.count; i++) {
+        mask_t *m;
+        if (dl.ops[i].kind != CF__OP_TEXT)
+            continue;
+        m = &masks[nt++];
+        text_mask(&dl, i, w, h, m);
+        n = mask_on_raster(m, ink);
+        if (n > 0) {
+            print_message("%s: label \"%s\" lies on ink (%ld pixels)\n",
+                          name, m->src, n);
+            bad++;
+        }
+        for (k = 0; k + 1 < nt; k++) {
+            n = mask_on_mask(m, &masks[k]);
+            if (n > 0) {
+                print_message("%s: labels \"%s\" and \"%s\" overlap "
+                              "(%ld pixels)\n", name, masks[k].src, m->src,
+                              n);
+                bad++;
+            }
+        }
+    }
+    for (k = 0; k < nt; k++)
+        free(masks[k].a);
+    free(masks);
+    cairo_surface_destroy(ink);
+    cf__dl_free(&dl);
+    return bad;
+}
+
+static void
+test_no_label_on_ink(void **state)
+{
+    char *names[256];
+    size_t n, i, figures = 0, failed = 0;
+    (void)state;
+    n = tu_figure_scripts(CF_SOURCE_ROOT "/figures", names, 256);
+    for (i = 0; i < n; i++) {
+        char path[1024];
+        cf_script_t *sc = NULL;
+        size_t f;
+        snprintf(path, sizeof path, "%s/figures/%s", CF_SOURCE_ROOT,
+                 names[i]);
+        assert_int_equal(cf_script_create(NULL, NULL, &sc, NULL), 0);
+        if (cf_script_run_file(sc, path) != CF_STATUS_OK)
+            fail_msg("%s: %s", path, cf_script_error(sc));
+        for (f = 0; f < cf_script_figure_count(sc); f++) {
+            figures++;
+            failed += check_figure(cf_script_figure(sc, f),
+                                   cf_script_figure_name(sc, f)) > 0;
+        }
+        cf_script_destroy(sc);
+        free(names[i]);
+    }
+    print_message("%zu figures, %zu with a label on ink, on another label "
+                  "or ink on the page's edge\n", figures, failed);
+    assert_true(figures >= 60);
+    assert_int_equal(failed, 0);
+}
+
+/* The test sees what it must: a label put on a stroke, two labels on one
+** another, ink on the page's edge; and passes a clean figure. */
+static void
+test_detects(void **state)
+{
+    static const double line[] = { 0, 0, 4, 0 }, edge[] = { 0, 0, 4, 3 };
+    cf_figure_t *fig;
+    cf_style_t at;
+    int k;
+    (void)state;
+    cf_style_init(&at);
+    at.place = CF_PLACE_CENTER;
+    at.set |= CF_STYLE_PLACE;
+    for (k = 0; k < 4; k++) {
+        assert_int_equal(cf_figure_create(40, 30, CF_UNIT_MM, &fig, NULL), 0);
+        assert_int_equal(cf_figure_add_polyline(fig, line, 2, false, NULL),
+                         0);
+        if (k == 0)   /* on the stroke */
+            assert_int_equal(cf_figure_add_label(fig, 2, 0, "W", &at), 0);
+        if (k == 1) { /* two labels centred on one point */
+            assert_int_equal(cf_figure_add_label(fig, 2, 1, "AB", &at), 0);
+            assert_int_equal(cf_figure_add_label(fig, 2, 1, "CD", &at), 0);
+        }
+        if (k == 2) { /* a line out of the page, cut by it */
+            assert_int_equal(cf_figure_set_fit(fig, 0, false), 0);
+            assert_int_equal(cf_figure_set_window(fig, 0, 2, 0, 1.5), 0);
+            assert_int_equal(cf_figure_set_clip(fig, true), 0);
+            assert_int_equal(cf_figure_add_polyline(fig, edge, 2, false,
+                                                    NULL), 0);
+        }
+        if (k == 3)   /* clean: automatic, above the stroke */
+            assert_int_equal(cf_figure_add_label(fig, 2, 0, "W", NULL), 0);
+        if (k < 3)
+            assert_true(check_figure(fig, "negative") > 0);
+        else
+            assert_int_equal(check_figure(fig, "clean"), 0);
+        cf_figure_destroy(fig);
+    }
+}
+
+int
+main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_detects),
+        cmocka_unit_test(test_no_label_on_ink),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -3,6 +3,7 @@
 ** operation after the other.
 */
 #include "backend.h"
+#include "overlay-spec.h"
 
 void
 cf__dl_play(const cf__dl_t *dl, size_t from, size_t to,
@@ -47,4 +48,36 @@ cf__dl_play_page(const cf__dl_t *dl, const cf__page_t *page,
     be->begin_page(ctx, page);
     cf__dl_play(dl, 0, dl->count, be, ctx);
     return be->end_page(ctx);
+}
+
+void
+cf__dl_play_step(const cf__dl_t *dl, unsigned k, const cf__backend_t *be,
+                 void *ctx)
+{
+    size_t i = 0, from = 0;
+    if (k == 0) {
+        cf__dl_play(dl, 0, dl->count, be, ctx);
+        return;
+    }
+    while (i < dl->count) {
+        const cf__op_t *op = &dl->ops[i];
+        size_t e = i + 1;
+        int depth = 1;
+        if (op->kind != CF__OP_GROUP
+            || cf__overlay_visible(op->u.group.overlay, k)) {
+            i++;
+            continue;
+        }
+        /* a hidden group: play what came before it, skip to its END */
+        cf__dl_play(dl, from, i, be, ctx);
+        while (e < dl->count && depth > 0) {
+            if (dl->ops[e].kind == CF__OP_GROUP)
+                depth++;
+            else if (dl->ops[e].kind == CF__OP_END)
+                depth--;
+            e++;
+        }
+        i = from = e;
+    }
+    cf__dl_play(dl, from, dl->count, be, ctx);
 }

@@ -25,6 +25,10 @@ typedef struct cf__page {
     cf_color_t background;     /* a = 0: none */
     bool raster;               /* whole pixels: the background covers the
                                   partly covered last row and column */
+    unsigned first_step, last_step;   /* overlay steps (render/overlay-
+                                  spec.h): 0, 0 every operation on one
+                                  page; else one page per step of
+                                  first..last with the groups shown on it */
 } cf__page_t;
 
 typedef struct cf__backend {
@@ -47,6 +51,10 @@ typedef struct cf__backend {
 /* Hand ops [from, to) of dl to a backend (no begin_page / end_page). */
 void cf__dl_play(const cf__dl_t *dl, size_t from, size_t to,
                  const cf__backend_t *be, void *ctx);
+/* The ops of dl shown on overlay step k: a group whose overlay leaves k
+** out is skipped whole (k 0: every op). */
+void cf__dl_play_step(const cf__dl_t *dl, unsigned k,
+                      const cf__backend_t *be, void *ctx);
 /* A whole page: begin_page, every op, end_page (its result). */
 int cf__dl_play_page(const cf__dl_t *dl, const cf__page_t *page,
                      const cf__backend_t *be, void *ctx);

@@ -96,6 +96,7 @@ cf_figure_destroy(cf_figure_t *fig)
         return;
     for (i = 0; i < fig->count; i++) {
         fig->els[i]->kind->fini(fig->els[i]);
+        cf_free(fig->els[i]->overlay);
         cf_free(fig->els[i]);
     }
     cf_free(fig->els);
@@ -108,6 +109,7 @@ cf_figure_destroy(cf_figure_t *fig)
         cf_figure_destroy(fig->panels[i]);
     cf_free(fig->panels);
     cf__text_fini(&fig->panel_title);
+    cf_free(fig->overlay);
     cf_free(fig->title);
     cf_free(fig->caption);
     cf_free(fig->proj);
@@ -115,6 +117,12 @@ cf_figure_destroy(cf_figure_t *fig)
     cf_free(fig);
 }
 
+
+size_t
+cf_figure_element_count(const cf_figure_t *fig)
+{
+    return fig != NULL ? fig->count : 0;
+}
 
 cf_status_t
 cf_figure_status(const cf_figure_t *fig, cf_diag_t *diag)
@@ -383,6 +391,18 @@ cf__element_commit(cf_figure_t *fig, void *el, cf_status_t st)
         cf_free(e);
         return cf__fig_fail(fig, st, "figure element");
     }
+    if (fig->overlay != NULL) {
+        size_t n = strlen(fig->overlay) + 1;
+        e->overlay = cf_malloc(n);
+        if (e->overlay == NULL) {
+            e->kind->fini(e);
+            cf_free(e);
+            return cf__fig_nomem(fig, "an overlay specification");
+        }
+        memcpy(e->overlay, fig->overlay, n);
+        if (fig->overlay_last > fig->steps)
+            fig->steps = fig->overlay_last;
+    }
     fig->els[fig->count++] = e;
     return CF_STATUS_OK;
 }
@@ -396,6 +416,8 @@ cf__element_draw(cf_figure_t *fig, size_t i, const cf__layout_t *lay,
     cf_status_t st;
     cf__style_resolve(&fig->theme, e->role, &e->style, &s);
     cf__dl_group(dl, e->kind->name, i);
+    if (e->overlay != NULL && !dl->failed && dl->count > 0)
+        dl->ops[dl->count - 1].u.group.overlay = e->overlay;
     st = e->kind->draw(fig, e, lay, &s, dl);
     cf__dl_end(dl);
     return st;

@@ -418,6 +418,24 @@ make_surface(cf_format_t format, const cf__page_t *pg, double dpi,
     return surf;
 }
 
+/* The page, or one page per overlay step (cairo_show_page between). */
+static void
+play_steps(const cf__dl_t *dl, const cf__page_t *pg, cairo_t *cr)
+{
+    unsigned k;
+    if (pg->first_step == 0) {
+        cf__dl_play_page(dl, pg, &cf__cairo_backend, cr);
+        return;
+    }
+    for (k = pg->first_step; k <= pg->last_step; k++) {
+        if (k > pg->first_step)
+            cairo_show_page(cr);
+        cf__cairo_backend.begin_page(cr, pg);
+        cf__dl_play_step(dl, k, &cf__cairo_backend, cr);
+        cf__cairo_backend.end_page(cr);
+    }
+}
+
 cf_status_t
 cf__format_render(cf_format_t format, const cf__dl_t *dl,
                   const cf__page_t *page, double dpi, const char *title,
@@ -442,7 +460,7 @@ cf__format_render(cf_format_t format, const cf__dl_t *dl,
     cr = cairo_create(surf);
     if (format == CF_FORMAT_PNG)
         cairo_scale(cr, dpi / 72.0, dpi / 72.0);
-    cf__dl_play_page(dl, &pg, &cf__cairo_backend, cr);
+    play_steps(dl, &pg, cr);
     cst = cairo_status(cr);
     cairo_destroy(cr);
     if (format == CF_FORMAT_PNG && cst == CAIRO_STATUS_SUCCESS) {

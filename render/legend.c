@@ -16,12 +16,6 @@
 #define LEG_EDGE 4.0      /* bp from the page edge */
 #define LEG_FRAME 0.4     /* bp: the frame's width */
 
-size_t
-cf_figure_element_count(const cf_figure_t *fig)
-{
-    return fig != NULL ? fig->count : 0;
-}
-
 cf_status_t
 cf_figure_add_legend(cf_figure_t *fig, const char *text)
 {

@@ -8,9 +8,12 @@
 **   output.c                  the public render and write functions
 **   layout.c place.c          window, map to the page, label places, ink
 **   plots.c axes.c el-*.c     element kinds: record, bounds, display list
-**   text.c figure.c           labels of elements; the figure, its setters
+**   text.c figure.c overlay.c labels of elements; the figure, its setters,
+**                             its overlay steps
+**   svg-steps.c               the animated SVG of overlay steps
 **   formats.c backend-*.c     output formats and their fix-ups; devices
 **   backend.c png.c           a display list to a backend; PNG encoding
+**   overlay-spec.c            beamer's overlay specifications
 **   label*.c dlist.c style.c  labels; the display list; styles
 */
 #ifndef CURVEFIG_RENDER_MODEL_H
@@ -142,6 +145,8 @@ struct cf__element {
     const cf__kind_t *kind;
     cf_role_t role;
     cf_style_t style;             /* overrides */
+    char *overlay;                /* the steps it is shown on (a beamer
+                                     overlay specification), NULL: all */
 };
 
 /* A legend entry: element el and its text. */
@@ -182,6 +187,9 @@ struct cf_figure {
     double panel_gap;
     cf_figure_t *parent;
     cf__text_t panel_title;
+    unsigned steps;          /* largest step named by an overlay, 0: none */
+    char *overlay;           /* given to the elements added next, or NULL */
+    unsigned overlay_last;   /* the largest step it names */
 };
 
 /* ---- figure.c: the figure's helpers for the element kinds -------------- */

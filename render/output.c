@@ -31,7 +31,7 @@ cf_write_options_init(cf_write_options_t *options)
 }
 
 static cf_status_t
-check_options(const cf_write_options_t *o, cf_diag_t *diag)
+check_options(const cf_write_options_t *o, unsigned steps, cf_diag_t *diag)
 {
     if (!(isfinite(o->dpi) && o->dpi >= 1 && o->dpi <= 2400))
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
@@ -41,6 +41,10 @@ check_options(const cf_write_options_t *o, cf_diag_t *diag)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
                            "padding %g bp must lie in [0, 1000]",
                            o->padding);
+    if (o->step > 0 && o->step > steps)
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "step %u: the figure has %u step%s", o->step,
+                           steps, steps == 1 ? "" : "s");
     return CF_STATUS_OK;
 }
 
@@ -102,23 +106,39 @@ job_free(job_t *job)
     cf__dl_free(&job->dl);
 }
 
+/* One format of a laid-out figure; with overlay steps, step o->step
+** alone, or the whole sequence (render/overlay.c, docs/overlays.md). */
 static cf_status_t
 render_job(cf_figure_t *fig, cf_format_t format, const cf_write_options_t *o,
            const job_t *job, cf__buf_t *out, cf_diag_t *diag)
 {
-    return cf__format_render(format, &job->dl, &job->page, o->dpi,
-                             fig->title, fig->caption, out, diag);
+    cf__page_t pg = job->page;
+    unsigned n = cf_figure_steps(fig);
+    bool multi;
+    if (n > 1 && o->step > 0) {
+        pg.first_step = pg.last_step = o->step;
+    } else if (n > 1 && format == CF_FORMAT_SVG) {
+        return cf__svg_steps(&job->dl, &pg, n, fig->title, fig->caption, out,
+                             diag);
+    } else if (n > 1) {
+        multi = format == CF_FORMAT_PDF || format == CF_FORMAT_PS;
+        pg.first_step = multi ? 1 : n;
+        pg.last_step = n;
+    }
+    return cf__format_render(format, &job->dl, &pg, o->dpi, fig->title,
+                             fig->caption, out, diag);
 }
 
 static cf_status_t
-options_or_default(const cf_write_options_t *options, cf_write_options_t *o,
+options_or_default(const cf_figure_t *fig,
+                   const cf_write_options_t *options, cf_write_options_t *o,
                    cf_diag_t *diag)
 {
     if (options != NULL)
         *o = *options;
     else
         cf_write_options_init(o);
-    return check_options(o, diag);
+    return check_options(o, cf_figure_steps(fig), diag);
 }
 
 static cf_status_t
@@ -147,7 +167,7 @@ render_checked(cf_figure_t *fig, cf_format_t format,
     cf_status_t st = check_fig_format(fig, format, diag);
     memset(buf, 0, sizeof *buf);
     if (st == CF_STATUS_OK)
-        st = options_or_default(options, &o, diag);
+        st = options_or_default(fig, options, &o, diag);
     if (st != CF_STATUS_OK)
         return st;
     st = make_job(fig, &o, false, &job, diag);
@@ -188,7 +208,7 @@ cf_figure_ink_box(cf_figure_t *fig, const cf_write_options_t *options,
     job_t job;
     cf_status_t st = check_fig_format(fig, CF_FORMAT_SVG, diag);
     if (st == CF_STATUS_OK)
-        st = options_or_default(options, &o, diag);
+        st = options_or_default(fig, options, &o, diag);
     if (st != CF_STATUS_OK)
         return st;
     st = make_job(fig, &o, true, &job, diag);
@@ -220,7 +240,7 @@ cf_figure_dump(cf_figure_t *fig, const cf_write_options_t *options,
     *size = 0;
     st = check_fig_format(fig, CF_FORMAT_SVG, diag);
     if (st == CF_STATUS_OK)
-        st = options_or_default(options, &o, diag);
+        st = options_or_default(fig, options, &o, diag);
     if (st != CF_STATUS_OK)
         return st;
     st = make_job(fig, &o, false, &job, diag);
@@ -319,6 +339,38 @@ cf_figure_write(cf_figure_t *fig, const char *path, cf_format_t format,
     return st;
 }
 
+/* basename-K.<ext> for every step K of a figure with steps: PNG always,
+** the other formats when o->step_files. */
+static cf_status_t
+write_steps(cf_figure_t *fig, const char *basename, unsigned formats,
+            const cf_write_options_t *o, const job_t *job, char *path,
+            size_t cap, cf_diag_t *diag)
+{
+    unsigned n = cf_figure_steps(fig), k;
+    cf_write_options_t one = *o;
+    cf_status_t st = CF_STATUS_OK;
+    int f;
+    if (n < 2 || o->step > 0)
+        return CF_STATUS_OK;
+    for (f = 0; f < CF_FORMAT_LAST_ && st == CF_STATUS_OK; f++) {
+        if (!(formats & CF_FORMAT_BIT(f))
+            || !(f == CF_FORMAT_PNG || o->step_files))
+            continue;
+        for (k = 1; k <= n && st == CF_STATUS_OK; k++) {
+            cf__buf_t buf;
+            memset(&buf, 0, sizeof buf);
+            one.step = k;
+            snprintf(path, cap, "%s-%u.%s", basename, k,
+                     cf_format_extension((cf_format_t)f));
+            st = render_job(fig, (cf_format_t)f, &one, job, &buf, diag);
+            if (st == CF_STATUS_OK)
+                st = write_atomic(path, buf.data, buf.size, diag);
+            cf__buf_free(&buf);
+        }
+    }
+    return st;
+}
+
 cf_status_t
 cf_figure_write_all(cf_figure_t *fig, const char *basename, unsigned formats,
                     const cf_write_options_t *options, cf_diag_t *diag)
@@ -342,21 +394,22 @@ cf_figure_write_all(cf_figure_t *fig, const char *basename, unsigned formats,
                            formats);
     st = check_fig_format(fig, CF_FORMAT_SVG, diag);
     if (st == CF_STATUS_OK)
-        st = options_or_default(options, &o, diag);
+        st = options_or_default(fig, options, &o, diag);
     if (st != CF_STATUS_OK)
         return st;
     /* one layout and one display list for every format: the page is the
     ** same */
     st = make_job(fig, &o, false, &job, diag);
     n = strlen(basename);
-    path = st == CF_STATUS_OK ? cf_malloc(n + 8) : NULL;
+    path = st == CF_STATUS_OK ? cf_malloc(n + 16) : NULL;
     if (st == CF_STATUS_OK && path == NULL)
         st = cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
                          "out of memory for a file name");
     /* PS before EPS in format order; the EPS is derived from the PS */
     derive_eps = (formats & CF_FORMAT_BIT(CF_FORMAT_PS))
         && (formats & CF_FORMAT_BIT(CF_FORMAT_EPS))
-        && cairo_version() == CAIRO_VERSION_ENCODE(1, 16, 0);
+        && cairo_version() == CAIRO_VERSION_ENCODE(1, 16, 0)
+        && (cf_figure_steps(fig) == 1 || o.step > 0);
     memset(&ps, 0, sizeof ps);
     for (f = 0; f < CF_FORMAT_LAST_ && st == CF_STATUS_OK; f++) {
         cf__buf_t buf;
@@ -385,6 +438,9 @@ cf_figure_write_all(cf_figure_t *fig, const char *basename, unsigned formats,
         cf__buf_free(&buf);
     }
     cf__buf_free(&ps);
+    if (st == CF_STATUS_OK)
+        st = write_steps(fig, basename, formats, &o, &job, path, n + 16,
+                         diag);
     cf_free(path);
     job_free(&job);
     return st;

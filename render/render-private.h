@@ -25,6 +25,13 @@ cf_status_t cf__format_render(cf_format_t format, const cf__dl_t *dl,
                               const char *title, const char *caption,
                               cf__buf_t *out, cf_diag_t *diag);
 
+/* The animated SVG of overlay steps 1..steps (render/svg-steps.c): every
+** step's SVG a frame, shown in turn. */
+cf_status_t cf__svg_steps(const cf__dl_t *dl, const cf__page_t *page,
+                          unsigned steps, const char *title,
+                          const char *caption, cf__buf_t *out,
+                          cf_diag_t *diag);
+
 /* The EPS of a PS page from cf__format_render (cairo 1.16.0 only): 0, or
 ** -1 when the PS is not as expected (render the EPS then), -2 out of
 ** memory. */

@@ -40,6 +40,7 @@
 #include "curvefig/label.h"
 #include "curvefig/output.h"
 #include "curvefig/layout.h"
+#include "curvefig/overlay.h"
 #include "curvefig/style.h"
 
 #ifdef __cplusplus
@@ -60,6 +61,10 @@ CF_API void cf_figure_destroy(cf_figure_t *fig);
 /* The figure's first error (CF_STATUS_OK if none); fills diag (if not
 ** NULL) with its message.  NULL fig: INVALID_ARG. */
 CF_API cf_status_t cf_figure_status(const cf_figure_t *fig, cf_diag_t *diag);
+
+/* The number of elements added so far (0 for NULL): element i of the
+** legend and overlay functions counts from 0 in the order added. */
+CF_API size_t cf_figure_element_count(const cf_figure_t *fig);
 
 /* What the last layout of the figure (a render, a dump, an ink box)
 ** noted without failing: every label that lies on drawn ink (on a stroke,

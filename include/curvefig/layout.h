@@ -33,8 +33,6 @@ CF_API cf_status_t cf_figure_add_legend(cf_figure_t *fig, const char *text);
 ** cf_figure_element_count). */
 CF_API cf_status_t cf_figure_add_legend_at(cf_figure_t *fig, size_t element,
                                            const char *text);
-/* The number of elements added so far (0 for NULL). */
-CF_API size_t cf_figure_element_count(const cf_figure_t *fig);
 
 /* Where the legend goes: CF_PLACE_AUTO (the default) tries the corners
 ** and sides of the page, in the order ne nw se sw n s e w, and takes the

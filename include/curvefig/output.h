@@ -42,6 +42,13 @@ typedef struct cf_write_options {
     bool tight;       /* crop the page to the ink box (strokes and labels
                          included) plus padding; default false */
     double padding;   /* bp around the ink box when tight, default 0 */
+    unsigned step;    /* a figure with overlay steps (curvefig/overlay.h):
+                         0 (default) the whole sequence (PDF and PS a page
+                         per step, SVG animated, PNG and EPS the last
+                         step); k >= 1 step k alone in every format */
+    bool step_files;  /* cf_figure_write_all of a figure with steps also
+                         writes basename-K.<ext>, step K alone, for every
+                         format; PNG always gets them */
 } cf_write_options_t;
 
 CF_API void cf_write_options_init(cf_write_options_t *options);

@@ -142,6 +142,9 @@ static const cf__lua_key_t plot_keys[] = {
     KEY("font_size"), END,
 };
 
+/* the steps an element is shown on (read with the style, lstyle.c) */
+static const cf__lua_key_t overlay_keys[] = { KEY("visible"), END };
+
 /* ---- the schemas -------------------------------------------------------- */
 
 #define STYLE_HINT "a curve has no style; give it to the drawing method, " \
@@ -151,14 +154,18 @@ static const cf__lua_key_t plot_keys[] = {
 
 /* a method whose table comes last: the first %s of the example */
 #define METHOD(fn, a, b, c, ex) \
-    { fn, "option", { a, b, c }, false, NULL, NULL, ex }
+    { fn, "option", { a, b, c, NULL }, false, NULL, NULL, ex }
+/* a method that draws: its elements may carry overlay steps */
+#define DRAW(fn, a, b, c, ex) \
+    { fn, "option", { a, b, c, overlay_keys }, false, NULL, NULL, ex }
 #define MAKER(fn, a, b, positional, ex) \
-    { fn, "field", { a, b, NULL }, positional, any_style, STYLE_HINT, ex }
+    { fn, "field", { a, b, NULL, NULL }, positional, any_style, STYLE_HINT, \
+      ex }
 
 static const cf__lua_schema_t schemas[CF__KEYS_COUNT_] = {
-    [CF__KEYS_NONE] = { "", "option", { NULL, NULL, NULL }, false, NULL,
+    [CF__KEYS_NONE] = { "", "option", { NULL, NULL, NULL, NULL }, false, NULL,
                         NULL, NULL },
-    [CF__KEYS_FIGURE] = { "figure", "option", { figure_keys, NULL, NULL },
+    [CF__KEYS_FIGURE] = { "figure", "option", { figure_keys, NULL, NULL, NULL },
                           false, any_style, FIGURE_HINT, "figure(%s)" },
     [CF__KEYS_BEZIER] = MAKER("bezier", bezier_keys, NULL, true,
                               "bezier(%s)"),
@@ -175,43 +182,43 @@ static const cf__lua_schema_t schemas[CF__KEYS_COUNT_] = {
                                    "coons_chain(%s)"),
     [CF__KEYS_OFFSET] = METHOD("offset", offset_keys, NULL, NULL,
                                "c:offset(0.1, %s)"),
-    [CF__KEYS_CURVE] = METHOD("curve", line_style, range_keys, NULL,
+    [CF__KEYS_CURVE] = DRAW("curve", line_style, range_keys, NULL,
                               "f:curve(c, %s)"),
-    [CF__KEYS_POLYGON] = METHOD("polygon", line_style, point_labels, NULL,
+    [CF__KEYS_POLYGON] = DRAW("polygon", line_style, point_labels, NULL,
                                 "f:polygon(P, %s)"),
-    [CF__KEYS_POINTS] = METHOD("points", line_style, point_labels, NULL,
+    [CF__KEYS_POINTS] = DRAW("points", line_style, point_labels, NULL,
                                "f:points(P, %s)"),
-    [CF__KEYS_HULL] = METHOD("hull", line_style, point_labels, NULL,
+    [CF__KEYS_HULL] = DRAW("hull", line_style, point_labels, NULL,
                              "f:hull(P, %s)"),
-    [CF__KEYS_FILL] = METHOD("fill", line_style, point_labels, NULL,
+    [CF__KEYS_FILL] = DRAW("fill", line_style, point_labels, NULL,
                              "f:fill(P, %s)"),
-    [CF__KEYS_POLYLINE] = METHOD("polyline", line_style, point_labels,
+    [CF__KEYS_POLYLINE] = DRAW("polyline", line_style, point_labels,
                                  closed_keys, "f:polyline(P, %s)"),
-    [CF__KEYS_LINE] = METHOD("line", line_style, NULL, NULL,
+    [CF__KEYS_LINE] = DRAW("line", line_style, NULL, NULL,
                              "f:line({0, 0}, {1, 1}, %s)"),
-    [CF__KEYS_LABEL] = METHOD("label", text_style, NULL, NULL,
+    [CF__KEYS_LABEL] = DRAW("label", text_style, NULL, NULL,
                               "f:label({0, 0}, 'P', %s)"),
-    [CF__KEYS_ARROW] = METHOD("arrow", line_style, arrow_label, NULL,
+    [CF__KEYS_ARROW] = DRAW("arrow", line_style, arrow_label, NULL,
                               "f:arrow({0, 0}, {1, 1}, %s)"),
-    [CF__KEYS_ARROW_TO] = METHOD("arrow_to", line_style, arrow_label, NULL,
+    [CF__KEYS_ARROW_TO] = DRAW("arrow_to", line_style, arrow_label, NULL,
                                  "f:arrow_to({0, 0}, {1, 1}, %s)"),
-    [CF__KEYS_TANGENT] = METHOD("tangent", line_style, arrow_label,
+    [CF__KEYS_TANGENT] = DRAW("tangent", line_style, arrow_label,
                                 scale_keys, "f:tangent(c, 0.5, %s)"),
-    [CF__KEYS_KNOTS] = METHOD("knots", line_style, point_labels, NULL,
+    [CF__KEYS_KNOTS] = DRAW("knots", line_style, point_labels, NULL,
                               "f:knots(s, %s)"),
-    [CF__KEYS_DECASTELJAU] = METHOD("decasteljau", line_style, net_keys,
+    [CF__KEYS_DECASTELJAU] = DRAW("decasteljau", line_style, net_keys,
                                     NULL, "f:decasteljau(c, 0.5, %s)"),
-    [CF__KEYS_DEBOOR] = METHOD("deboor", line_style, net_keys, NULL,
+    [CF__KEYS_DEBOOR] = DRAW("deboor", line_style, net_keys, NULL,
                                "f:deboor(s, 0.5, %s)"),
-    [CF__KEYS_PLOT] = METHOD("plot", line_style, plot_keys, NULL,
+    [CF__KEYS_PLOT] = DRAW("plot", line_style, plot_keys, NULL,
                              "f:plot(%s)"),
-    [CF__KEYS_FUNC] = METHOD("func", line_style, NULL, NULL,
+    [CF__KEYS_FUNC] = DRAW("func", line_style, NULL, NULL,
                              "f:func(math.sin, 0, 1, %s)"),
-    [CF__KEYS_GRAPH] = METHOD("graph", line_style, NULL, NULL,
+    [CF__KEYS_GRAPH] = DRAW("graph", line_style, NULL, NULL,
                               "f:graph(c, %s)"),
-    [CF__KEYS_BASIS] = METHOD("basis", line_style, NULL, NULL,
+    [CF__KEYS_BASIS] = DRAW("basis", line_style, NULL, NULL,
                               "f:basis(s, 0, 2, %s)"),
-    [CF__KEYS_BERNSTEIN] = METHOD("bernstein", line_style, NULL, NULL,
+    [CF__KEYS_BERNSTEIN] = DRAW("bernstein", line_style, NULL, NULL,
                                   "f:bernstein(3, 1, %s)"),
     [CF__KEYS_LABEL_STYLE] = METHOD("label_style", text_style, NULL, NULL,
                                     "f:points(P, { labels = 'P', "

@@ -58,10 +58,14 @@ typedef struct cf__lua_key {
                                    message ("{on, off, ...} in bp"), or NULL */
 } cf__lua_key_t;
 
+#define CF__LUA_KEY_LISTS 4
+
 typedef struct cf__lua_schema {
     const char *fn;               /* the function, as messages name it */
     const char *noun;             /* "field" (constructors), "option" */
-    const cf__lua_key_t *keys[3]; /* key lists, each ended by { NULL } */
+    /* key lists, each ended by { NULL }; the last the overlay key
+    ** (visible) of a method that draws, else NULL */
+    const cf__lua_key_t *keys[CF__LUA_KEY_LISTS];
     bool positional;              /* entries 1..n (a list) are taken too */
     /* keys that belong to another function: refused with this hint */
     const cf__lua_key_t *elsewhere;

@@ -63,7 +63,7 @@ static size_t
 key_names(const cf__lua_schema_t *s, const char **out, size_t cap)
 {
     size_t n = 0;
-    for (int l = 0; l < 3; l++)
+    for (int l = 0; l < CF__LUA_KEY_LISTS; l++)
         for (const cf__lua_key_t *k = s->keys[l]; k != NULL && k->name;
              k++)
             if (n < cap)
@@ -189,7 +189,7 @@ check_entry(lua_State *L, const cf__lua_schema_t *s, const char *where,
         luaL_error(L, "%s: a %s name must be a string, got %s", where,
                    s->noun, luaL_typename(L, -2));
     key = lua_tostring(L, -2);
-    k = find_key(s->keys, 3, key);
+    k = find_key(s->keys, CF__LUA_KEY_LISTS, key);
     if (k == NULL)
         unknown_key(L, s, where, key);
     if (k->values != NULL)

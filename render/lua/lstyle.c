@@ -204,9 +204,9 @@ parse_place(const char *name, void *out, cf_diag_t *diag)
 }
 
 /* Read the style fields of the options table at idx (may be nil). */
-void
-cf__lua_read_style(lua_State *L, int idx, const char *fn,
-                   const cf_figure_t *fig, cf_style_t *s)
+static void
+read_fields(lua_State *L, int idx, const char *fn, const cf_figure_t *fig,
+            cf_style_t *s)
 {
     cf_style_init(s);
     if (!lua_istable(L, idx))
@@ -235,6 +235,39 @@ cf__lua_read_style(lua_State *L, int idx, const char *fn,
         s->set |= CF_STYLE_PLACE;
 }
 
+/* The visible = "2-" option (the key check lets it through only where
+** a method draws), set as the figure's overlay for what the method adds
+** (curvefig/overlay.h); none given sets none. */
+static void
+read_overlay(lua_State *L, int idx, const char *fn, cf_figure_t *fig)
+{
+    const char *spec = NULL;
+    cf_diag_t diag;
+    int t = LUA_TNIL;
+    if (lua_istable(L, idx)) {
+        lua_pushliteral(L, "visible");
+        t = lua_rawget(L, idx < 0 ? idx - 1 : idx);
+        if (t == LUA_TSTRING || (t == LUA_TNUMBER && lua_isinteger(L, -1)))
+            spec = lua_tostring(L, -1);
+        else if (t != LUA_TNIL)
+            luaL_error(L, "%s: visible is an overlay specification, a "
+                       "string of steps such as \"2-\" or \"1,3\", not a %s",
+                       fn, luaL_typename(L, -1));
+    }
+    cf_diag_clear(&diag);
+    cf__lua_fig_check(L, fn, fig, cf_figure_set_overlay(fig, spec), &diag);
+    if (lua_istable(L, idx))
+        lua_pop(L, 1);
+}
+
+void
+cf__lua_read_style(lua_State *L, int idx, const char *fn, cf_figure_t *fig,
+                   cf_style_t *s)
+{
+    read_fields(L, idx, fn, fig, s);
+    read_overlay(L, idx, fn, fig);
+}
+
 /* A sub-table of options (e.g. point = {...}) read as a style. */
 bool
 cf__lua_read_sub_style(lua_State *L, int idx, const char *key,
@@ -245,7 +278,7 @@ cf__lua_read_sub_style(lua_State *L, int idx, const char *key,
     if (cf__lua_field(L, idx, key) != LUA_TNIL) {
         present = lua_toboolean(L, -1);
         if (lua_istable(L, -1))
-            cf__lua_read_style(L, lua_gettop(L), fn, fig, s);
+            read_fields(L, lua_gettop(L), fn, fig, s);
         else if (!lua_isboolean(L, -1))
             luaL_error(L, "%s: %s is a style table, e.g. { color = \"red\" }, "
                        "got %s", fn, key, luaL_typename(L, -1));

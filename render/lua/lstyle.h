@@ -44,9 +44,11 @@ double cf__lua_opt_number(lua_State *L, int idx, const char *key,
                           const char *fn, double def, bool *given);
 bool cf__lua_opt_bool(lua_State *L, int idx, const char *key,
                       const char *fn, bool def);
-/* The style fields of the options table at idx (nil: none set). */
+/* The style fields of a method's options table at idx (nil: none set),
+** and its visible = "2-" as the figure's overlay for what the method adds
+** next (none: none). */
 void cf__lua_read_style(lua_State *L, int idx, const char *fn,
-                        const cf_figure_t *fig, cf_style_t *s);
+                        cf_figure_t *fig, cf_style_t *s);
 /* A nested style table (label_style = {...}): true when the key is given
 ** and not false (point = true: a default style). */
 bool cf__lua_read_sub_style(lua_State *L, int idx, const char *key,

@@ -2,7 +2,7 @@
 ** curvefig: the command-line tool.
 **
 **   curvefig render SCRIPT.lua [-o DIR] [-f svg,pdf,png,ps,eps] [--dpi N]
-**                              [--only NAME[,NAME...]] [--tight] ...
+**                              [--only NAME[,NAME...]] [--tight] [--steps]
 **   curvefig run SCRIPT.lua
 **   curvefig list SCRIPT.lua
 **   curvefig gallery -o INDEX.html MANIFEST...
@@ -40,6 +40,7 @@ typedef struct options {
     double dpi;
     double timeout;
     bool tight;
+    bool steps;
     bool no_labels;
     bool verbose;
     bool long_list;
@@ -166,6 +167,9 @@ parse_args(int argc, char **argv, options *o, int *rc)
             takes = false;
         } else if (strcmp(a, "--tight") == 0) {
             o->tight = true;
+            takes = false;
+        } else if (strcmp(a, "--steps") == 0) {
+            o->steps = true;
             takes = false;
         } else if (strcmp(a, "--no-labels") == 0) {
             o->no_labels = true;
@@ -325,6 +329,22 @@ check_only(const cf_script_t *s, const options *o)
     return 0;
 }
 
+/* The files cf_figure_write_all wrote for base. */
+static void
+print_written(const char *base, unsigned formats, unsigned steps,
+              bool step_files)
+{
+    for (int f = 0; f < CF_FORMAT_LAST_; f++) {
+        if (!(formats & CF_FORMAT_BIT(f)))
+            continue;
+        printf("%s.%s\n", base, cf_format_extension((cf_format_t)f));
+        for (unsigned k = 1; steps > 1 && k <= steps
+                             && (f == CF_FORMAT_PNG || step_files); k++)
+            printf("%s-%u.%s\n", base, k,
+                   cf_format_extension((cf_format_t)f));
+    }
+}
+
 /* The figure's warnings (labels on ink) on stderr, each naming the
 ** figure; they do not fail the render. */
 static void
@@ -354,6 +374,7 @@ render_figures(const cf_script_t *s, const options *o)
     cf_write_options_init(&wo);
     wo.dpi = o->dpi;
     wo.tight = o->tight;
+    wo.step_files = o->steps;
     if (cf__tool_mkdir_p(o->outdir) != 0) {
         fprintf(stderr, "curvefig: cannot create the directory %s: %s\n",
                 o->outdir, strerror(errno));
@@ -389,10 +410,7 @@ render_figures(const cf_script_t *s, const options *o)
             warn_labels(s, i, o->script);
         }
         if (st == CF_STATUS_OK && o->verbose) {
-            for (int f = 0; f < CF_FORMAT_LAST_; f++)
-                if (o->formats & CF_FORMAT_BIT(f))
-                    printf("%s.%s\n", base,
-                           cf_format_extension((cf_format_t)f));
+            print_written(base, o->formats, cf_figure_steps(fig), o->steps);
         }
         free(base);
     }

@@ -134,7 +134,7 @@ static size_t
 all_keys(const cf__lua_schema_t *s, const char **names, size_t cap)
 {
     size_t n = 0;
-    for (int l = 0; l < 3; l++)
+    for (int l = 0; l < CF__LUA_KEY_LISTS; l++)
         for (const cf__lua_key_t *k = s->keys[l]; k && k->name; k++)
             if (n < cap)
                 names[n++] = k->name;
@@ -205,7 +205,7 @@ main(int argc, char **argv)
             fprintf(stderr, "FAIL schema %s has no example call\n", s->fn);
             continue;
         }
-        for (int l = 0; l < 3; l++)
+        for (int l = 0; l < CF__LUA_KEY_LISTS; l++)
             for (const cf__lua_key_t *k = s->keys[l]; k && k->name; k++) {
                 misspell_key(s, k->name);
                 keys++;

@@ -226,9 +226,14 @@ def check_pixels():
         render(s, "pdf,pgf", ["--no-labels"], out=nl)
     for s in PGF_FIGS + ("orazem-decasteljau.lua",):
         render(s, "pdf,pgf", ["--no-labels", "--tight"], out=tight)
+    # a figure with overlay steps (a PDF of several pages): its PGF outside
+    # beamer shows every step at once, which no cairo page does; beamer
+    # decks of it are checked by tests/render/beamer-overlay.sh
     figs = [(d, f[:-4]) for d in ("nolabels", "tight")
             for f in sorted(os.listdir(os.path.join(WORK, d)))
-            if f.endswith(".pgf")]
+            if f.endswith(".pgf") and re.search(
+                r"Pages:\s+1\n", run(["pdfinfo", os.path.join(
+                    WORK, d, f[:-4] + ".pdf")]))]
     # one page per figure, each page the figure's size (pdfTeX primitives)
     pages = []
     for d, n in figs:

@@ -821,6 +821,38 @@ test_figure(void **state)
     assert_string_equal(cf_label_run_text(NULL, 0), "");
     cf_label_get_extents(NULL, &w, &asc, &desc);
     assert_int_equal(cf_label_unknown_glyphs(NULL), 0);
+    /* legends, insets, panels and overlay steps */
+    {
+        cf_figure_t *g = NULL, *cells[2] = { NULL, NULL };
+        cf_inset_t in;
+        assert_int_equal(cf_figure_element_count(NULL), 0);
+        BAD(cf_figure_add_legend(NULL, "a"));
+        BAD(cf_figure_add_legend_at(NULL, 0, "a"));
+        BAD(cf_figure_set_legend_place(NULL, CF_PLACE_NE, true));
+        cf_inset_init(NULL);
+        cf_inset_init(&in);
+        BAD(cf_figure_add_inset(NULL, &in));
+        BAD(cf_figure_add_panels(NULL, 2, 1, 0, 0, cells));
+        BAD(cf_figure_set_panel_title(NULL, "(a)"));
+        BAD(cf_figure_set_overlay(NULL, "2-"));
+        assert_int_equal(cf_figure_steps(NULL), 0);
+        assert_false(cf_figure_visible_at(NULL, 0, 1));
+        IS(CF_STATUS_OK, cf_figure_create(8, 6, CF_UNIT_CM, &g, NULL));
+        BAD(cf_figure_add_legend(g, "nothing drawn yet"));
+        cf_figure_destroy(g);
+        IS(CF_STATUS_OK, cf_figure_create(8, 6, CF_UNIT_CM, &g, NULL));
+        BAD(cf_figure_add_legend_at(g, 5, "no element 5"));
+        cf_figure_destroy(g);
+        IS(CF_STATUS_OK, cf_figure_create(8, 6, CF_UNIT_CM, &g, NULL));
+        BAD(cf_figure_add_panels(g, 0, 1, 0, 0, cells));
+        cf_figure_destroy(g);
+        IS(CF_STATUS_OK, cf_figure_create(8, 6, CF_UNIT_CM, &g, NULL));
+        BAD(cf_figure_set_overlay(g, "3-1"));
+        cf_figure_destroy(g);
+        IS(CF_STATUS_OK, cf_figure_create(8, 6, CF_UNIT_CM, &g, NULL));
+        BAD(cf_figure_add_inset(g, NULL));
+        cf_figure_destroy(g);
+    }
 }
 #endif
 
@@ -879,7 +911,7 @@ test_every_function_listed(void **state)
         "core.h", "knots.h", "bernstein.h", "bezier.h", "bspline.h",
         "geometry.h", "conic.h", "interp.h", "offset.h", "version.h.in",
 #ifdef CF_TEST_RENDER
-        "figure.h", "style.h", "label.h", "output.h",
+        "figure.h", "style.h", "label.h", "output.h", "layout.h", "overlay.h",
 #endif
     };
     static char me[200000], text[200000];

@@ -69,7 +69,7 @@ cf_bernstein_value(int n, int i, double t, double *out)
 }
 
 cf_status_t
-cf_bernstein_all_deriv(int n, int k, double t, double *out)
+cf_bernstein_all_deriv(int n, double t, int k, double *out)
 {
     cf_status_t st = check_nt(n, t);
     int m;

@@ -158,8 +158,8 @@ check_params(const double *t, size_t n)
 }
 
 cf_status_t
-cf_bezier_eval_deriv_many(const cf_bezier_t *c, int k, const double *t,
-                          size_t n, double *out)
+cf_bezier_eval_deriv_many(const cf_bezier_t *c, const double *t, size_t n,
+                          int k, double *out)
 {
     double res[MAXN + 1];
     cf_status_t st;
@@ -172,7 +172,7 @@ cf_bezier_eval_deriv_many(const cf_bezier_t *c, int k, const double *t,
         return st;
     if (k == 0)
         return cf__bezier_eval_many_fast(c, t, n, out);
-    if (!c->rational && cf__bezier_deriv_many_fast(c, k, t, n, out))
+    if (!c->rational && cf__bezier_deriv_many_fast(c, t, n, k, out))
         return CF_STATUS_OK;
     for (size_t i = 0; i < n; i++)
         for (size_t d = 0; d < c->dim; d++) {
@@ -425,8 +425,8 @@ cf__bezier_eval_many_fast(const cf_bezier_t *c, const double *t, size_t n,
 }
 
 bool
-cf__bezier_deriv_many_fast(const cf_bezier_t *c, int k, const double *t,
-                           size_t n, double *out)
+cf__bezier_deriv_many_fast(const cf_bezier_t *c, const double *t, size_t n,
+                           int k, double *out)
 {
     double q[(FAST_MAX + 1) * DIM_CHUNK];
     int deg = c->degree;

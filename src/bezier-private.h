@@ -72,7 +72,7 @@ cf_status_t cf__bezier_eval_many_fast(const cf_bezier_t *c, const double *t,
 /* The k-th derivative (k >= 1) at many parameters by the fast scheme on the
 ** hodograph; returns false (doing nothing) when the fast scheme does not
 ** apply (rational or high degree). */
-bool cf__bezier_deriv_many_fast(const cf_bezier_t *c, int k, const double *t,
-                                size_t n, double *out);
+bool cf__bezier_deriv_many_fast(const cf_bezier_t *c, const double *t,
+                                size_t n, int k, double *out);
 
 #endif

@@ -90,8 +90,8 @@ deriv1_many(const cf_bspline_t *c, const double *u, size_t n, double *out,
 }
 
 cf_status_t
-cf_bspline_eval_deriv_many(const cf_bspline_t *c, int k, const double *u,
-                           size_t n, double *out)
+cf_bspline_eval_deriv_many(const cf_bspline_t *c, const double *u, size_t n,
+                           int k, double *out)
 {
     bool ready;
     const double *rk;

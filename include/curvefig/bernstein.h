@@ -31,7 +31,7 @@ CF_API cf_status_t cf_bernstein_all(int n, double t, double *out);
 
 /* out[0..n] = the k-th derivatives (k >= 0) of B_0^n ... B_n^n at t
 ** (all zero when k > n). */
-CF_API cf_status_t cf_bernstein_all_deriv(int n, int k, double t, double *out);
+CF_API cf_status_t cf_bernstein_all_deriv(int n, double t, int k, double *out);
 
 /* Evaluate sum_i coef[i] B_i^n(t) (de Casteljau); allocates nothing. */
 CF_API cf_status_t cf_bernstein_eval(int n, const double *coef, double t,

@@ -85,8 +85,8 @@ CF_API cf_status_t cf_bezier_eval_derivs(const cf_bezier_t *c, double t, int k,
                                          double *out);
 
 /* out[n * dim] = c^(k)(t[i]) for each i; allocates nothing. */
-CF_API cf_status_t cf_bezier_eval_deriv_many(const cf_bezier_t *c, int k,
-                                             const double *t, size_t n,
+CF_API cf_status_t cf_bezier_eval_deriv_many(const cf_bezier_t *c,
+                                             const double *t, size_t n, int k,
                                              double *out);
 
 /* The whole de Casteljau triangle at t, Cartesian, level by level: level 0

@@ -186,8 +186,8 @@ CF_API cf_status_t cf_bspline_eval_derivs(const cf_bspline_t *c, double u,
 /* out[n * dim] = C^(k)(u[i]) for each i (k >= 0; for a NURBS k <= 128,
 ** INVALID_ARG above); allocates nothing; spans are found like
 ** cf_bspline_eval_many. */
-CF_API cf_status_t cf_bspline_eval_deriv_many(const cf_bspline_t *c, int k,
-                                              const double *u, size_t n,
+CF_API cf_status_t cf_bspline_eval_deriv_many(const cf_bspline_t *c,
+                                              const double *u, size_t n, int k,
                                               double *out);
 
 /*

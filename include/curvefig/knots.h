@@ -134,11 +134,11 @@ CF_API cf_status_t cf_basis_funs(int degree, const double *knots,
 
 /*
 ** Derivatives of the nonzero basis functions (A2.3): ders[d * (p + 1) + j]
-** = d^d/du^d N_{k-p+j}^p(u) for d = 0..nder (rows beyond p are 0).
-** ders has (nder + 1) * (p + 1) doubles; nder >= 0.
+** = d^d/du^d N_{s-p+j}^p(u) for d = 0..k, s = *span (rows beyond p are 0).
+** ders has (k + 1) * (p + 1) doubles; k >= 0.
 */
 CF_API cf_status_t cf_basis_ders(int degree, const double *knots,
-                                 size_t nknots, double u, int nder,
+                                 size_t nknots, double u, int k,
                                  size_t *span, double *ders, cf_diag_t *diag);
 
 /*
@@ -171,10 +171,10 @@ CF_API cf_status_t cf_basis_one_spline(int i, int degree,
                                        cf_diag_t *diag);
 
 /* Derivatives of one basis function: out[d] = d^d/du^d N_i^p(u),
-** d = 0..nder (0 for d > p); the same conventions as cf_basis_one
+** d = 0..k (0 for d > p); the same conventions as cf_basis_one
 ** (one-sided: the derivative of the polynomial piece that owns u). */
 CF_API cf_status_t cf_basis_one_ders(int i, int degree, const double *knots,
-                                     size_t nknots, double u, int nder,
+                                     size_t nknots, double u, int k,
                                      double *out, cf_diag_t *diag);
 
 #ifdef __cplusplus

@@ -197,8 +197,8 @@ test_bernstein(void **state)
     BAD(cf_bernstein_value(3, 0, NAN, out));
     BAD(cf_bernstein_all(-1, 0.5, out));
     BAD(cf_bernstein_all(3, 0.5, NULL));
-    BAD(cf_bernstein_all_deriv(3, -1, 0.5, out));
-    BAD(cf_bernstein_all_deriv(3, 1, 0.5, NULL));
+    BAD(cf_bernstein_all_deriv(3, 0.5, -1, out));
+    BAD(cf_bernstein_all_deriv(3, 0.5, 1, NULL));
     BAD(cf_bernstein_eval(3, NULL, 0.5, out));
     BAD(cf_bernstein_eval(3, P4, 0.5, NULL));
     BAD(cf_bernstein_eval(-2, P4, 0.5, out));
@@ -268,9 +268,9 @@ test_bezier(void **state)
     BAD(cf_bezier_eval_derivs(c, 0.5, -1, out));
     BAD(cf_bezier_eval_derivs(c, 0.5, CF_BEZIER_MAX_DEGREE + 1, out));
     BAD(cf_bezier_eval_derivs(NULL, 0.5, 1, out));
-    BAD(cf_bezier_eval_deriv_many(c, -1, (const double[]){ 0.5 }, 1, out));
-    BAD(cf_bezier_eval_deriv_many(c, 1, NULL, 1, out));
-    BAD(cf_bezier_eval_deriv_many(NULL, 1, (const double[]){ 0.5 }, 1,
+    BAD(cf_bezier_eval_deriv_many(c, (const double[]){ 0.5 }, 1, -1, out));
+    BAD(cf_bezier_eval_deriv_many(c, NULL, 1, 1, out));
+    BAD(cf_bezier_eval_deriv_many(NULL, (const double[]){ 0.5 }, 1, 1,
                                   out));
     BAD(cf_bezier_decasteljau(NULL, 0.5, out));
     BAD(cf_bezier_decasteljau(c, 0.5, NULL));
@@ -418,8 +418,8 @@ test_bspline(void **state)
     BAD(cf_bspline_eval_many(NULL, (const double[]){ 0.5 }, 1, out));
     BAD(cf_bspline_eval_derivs(c, 0.5, -1, out));
     BAD(cf_bspline_eval_derivs(NULL, 0.5, 1, out));
-    BAD(cf_bspline_eval_deriv_many(c, -1, (const double[]){ 0.5 }, 1, out));
-    BAD(cf_bspline_eval_deriv_many(c, 1, NULL, 1, out));
+    BAD(cf_bspline_eval_deriv_many(c, (const double[]){ 0.5 }, 1, -1, out));
+    BAD(cf_bspline_eval_deriv_many(c, NULL, 1, 1, out));
     BAD(cf_bspline_deboor(NULL, 0.5, out, &span, &mult));
     BAD(cf_bspline_deboor(c, 0.5, NULL, &span, &mult));
     BAD(cf_bspline_deboor(c, -1, out, &span, &mult));

@@ -395,7 +395,7 @@ cf__basis_deriv(int p, const double *U, size_t nknots, const double *rk,
 }
 
 static cf_status_t
-check_curve_knots(int degree, const double *U, size_t nknots, double u,
+check_curve_knots(int degree, const double *U, size_t nknots, double *u,
                   cf_diag_t *diag)
 {
     cf_status_t st;
@@ -412,21 +412,14 @@ check_curve_knots(int degree, const double *U, size_t nknots, double u,
     st = cf_knots_validate(degree, nknots - p - 1, U, nknots, diag);
     if (st != CF_STATUS_OK)
         return st;
-    if (!isfinite(u))
-        return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "parameter is %g", u);
-    if (u < U[p] || u > U[nknots - 1 - p])
-        return cf__error(diag, CF_STATUS_DOMAIN, -1,
-                         "parameter %g is outside the domain "
-                         "[%g, %g]", u, U[p], U[nknots - 1 - p]);
-    return CF_STATUS_OK;
+    return cf__param_check(U[p], U[nknots - 1 - p], u, diag);
 }
 
 cf_status_t
 cf_basis_funs(int degree, const double *knots, size_t nknots, double u,
               size_t *span, double *N, cf_diag_t *diag)
 {
-    cf_status_t st = check_curve_knots(degree, knots, nknots, u, diag);
+    cf_status_t st = check_curve_knots(degree, knots, nknots, &u, diag);
     size_t k;
     if (st != CF_STATUS_OK)
         return st;
@@ -444,7 +437,7 @@ cf_status_t
 cf_basis_ders(int degree, const double *knots, size_t nknots, double u,
               int nder, size_t *span, double *ders, cf_diag_t *diag)
 {
-    cf_status_t st = check_curve_knots(degree, knots, nknots, u, diag);
+    cf_status_t st = check_curve_knots(degree, knots, nknots, &u, diag);
     size_t k, w = (size_t)degree + 1;
     if (st != CF_STATUS_OK)
         return st;

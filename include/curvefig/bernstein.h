@@ -8,7 +8,8 @@
 ** every degree up to CF_BEZIER_MAX_DEGREE), derivatives by
 ** d/dt B_i^n = n (B_(i-1)^(n-1) - B_i^(n-1)) applied k times.
 **
-** Parameters must be finite and in [0, 1] (CF_STATUS_DOMAIN otherwise).
+** Parameters must be finite and in [0, 1] (CF_STATUS_DOMAIN otherwise;
+** within 8 DBL_EPSILON of an end they are that end, as in bezier.h).
 */
 #ifndef CURVEFIG_BERNSTEIN_H
 #define CURVEFIG_BERNSTEIN_H

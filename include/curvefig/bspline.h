@@ -17,8 +17,16 @@
 **
 ** Objects are immutable: every operation returns a new curve that the
 ** caller releases with cf_bspline_destroy (destroy(NULL) is harmless).
-** Evaluation never allocates.  Parameters must be finite (NOT_FINITE) and
-** inside the domain (DOMAIN); no parameter is ever moved onto a nearby knot.
+** Evaluation never allocates.
+**
+** Parameters.  The evaluators (eval*, deboor, basis, active_points, and
+** cf_basis_funs / cf_basis_ders on a knot vector) take u in the domain
+** [a, b] = [u_p, u_{m-p}]; a u that misses an end by at most
+** 8 DBL_EPSILON max(|a|, |b|) is that end (the last value of the loop
+** a + (b - a) i / (N - 1) may overshoot b by rounding), further out is
+** DOMAIN, NaN and infinities NOT_FINITE.  No parameter is ever moved onto
+** a nearby interior knot.  Constructions (insert_knot, refine, split,
+** segment) take their parameters exactly: inside [a, b] or DOMAIN.
 */
 #ifndef CURVEFIG_BSPLINE_H
 #define CURVEFIG_BSPLINE_H

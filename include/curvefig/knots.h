@@ -126,7 +126,9 @@ CF_API const char *cf_knot_kind_to_string(cf_knot_kind_t kind);
 ** §2.5; The NURBS Book A2.2): N[j] = N_{k-p+j}^p(u), j = 0..p, where
 ** k = *span (may be NULL) is the span of u found by cf_knots_find_span.
 ** The vector is validated for a curve (nknots >= 2p + 2); u must lie in the
-** domain [u_p, u_{m-p}] (DOMAIN otherwise).  N has p + 1 doubles.
+** domain [u_p, u_{m-p}] (DOMAIN otherwise, naming it; within
+** 8 DBL_EPSILON max(|u_p|, |u_{m-p}|) of an end it is that end, as in
+** bspline.h).  N has p + 1 doubles.
 */
 CF_API cf_status_t cf_basis_funs(int degree, const double *knots,
                                  size_t nknots, double u, size_t *span,

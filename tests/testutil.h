@@ -40,4 +40,9 @@ void tu_fail_alloc_after(long k);
 void tu_fail_alloc_reset(void);
 long tu_alloc_live(void);
 
+/* The text of a public header (include/curvefig/<name> under the source
+** tree root) into buf, NUL-terminated; fails the test when unreadable. */
+void tu_read_header(const char *root, const char *name, char *buf,
+                    size_t size);
+
 #endif

@@ -831,15 +831,8 @@ test_every_function_listed(void **state)
     me[n] = '\0';
     fclose(f);
     for (size_t h = 0; h < sizeof headers / sizeof *headers; h++) {
-        char path[512];
         const char *p;
-        snprintf(path, sizeof path, "%s/include/curvefig/%s", CF_SOURCE_ROOT,
-                 headers[h]);
-        f = fopen(path, "r");
-        assert_non_null(f);
-        n = fread(text, 1, sizeof text - 1, f);
-        text[n] = '\0';
-        fclose(f);
+        tu_read_header(CF_SOURCE_ROOT, headers[h], text, sizeof text);
         /* a declaration: "cf_name(" at the start of a line or after the
         ** return type, outside comments and typedefs */
         for (p = text; (p = strstr(p, "cf_")) != NULL; p++) {

@@ -19,6 +19,8 @@
 
 #include <cmocka.h>
 
+#include "testutil.h"
+
 #ifndef CF_SOURCE_ROOT
 #error "CF_SOURCE_ROOT (the source tree) must be defined by the build"
 #endif
@@ -289,16 +291,7 @@ test_public_headers(void **state)
     int bad = 0, checked = 0;
     (void)state;
     for (size_t h = 0; h < sizeof headers / sizeof *headers; h++) {
-        char path[512];
-        size_t n;
-        FILE *f;
-        snprintf(path, sizeof path, "%s/include/curvefig/%s", CF_SOURCE_ROOT,
-                 headers[h]);
-        f = fopen(path, "r");
-        assert_non_null(f);
-        n = fread(text, 1, sizeof text - 1, f);
-        text[n] = '\0';
-        fclose(f);
+        tu_read_header(CF_SOURCE_ROOT, headers[h], text, sizeof text);
         bad += check_text(text, headers[h], &checked);
     }
     /* the parser found the evaluators (eval, eval_many, eval_derivs,

@@ -395,7 +395,7 @@ cf__basis_deriv(int p, const double *U, size_t nknots, const double *rk,
 }
 
 static cf_status_t
-check_curve_knots(int degree, const double *U, size_t nknots, double *u,
+check_curve_knots(int degree, const double *U, size_t nknots, double u,
                   cf_diag_t *diag)
 {
     cf_status_t st;
@@ -412,20 +412,23 @@ check_curve_knots(int degree, const double *U, size_t nknots, double *u,
     st = cf_knots_validate(degree, nknots - p - 1, U, nknots, diag);
     if (st != CF_STATUS_OK)
         return st;
-    return cf__param_check(U[p], U[nknots - 1 - p], u, diag);
+    return cf__param_check(U[p], U[nknots - 1 - p], &u, diag);
 }
 
 cf_status_t
 cf_basis_funs(int degree, const double *knots, size_t nknots, double u,
               size_t *span, double *N, cf_diag_t *diag)
 {
-    cf_status_t st = check_curve_knots(degree, knots, nknots, &u, diag);
+    cf_status_t st = check_curve_knots(degree, knots, nknots, u, diag);
     size_t k;
     if (st != CF_STATUS_OK)
         return st;
     if (N == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "output is NULL");
+    /* the end u misses by rounding, if it does (checked above) */
+    (void)cf__param_clamp(knots[degree], knots[nknots - 1 - (size_t)degree],
+                          &u);
     k = cf_knots_find_span(degree, knots, nknots, u);
     cf__basis_deriv(degree, knots, nknots, NULL, k, u, 0, N);
     if (span != NULL)
@@ -437,7 +440,7 @@ cf_status_t
 cf_basis_ders(int degree, const double *knots, size_t nknots, double u,
               int nder, size_t *span, double *ders, cf_diag_t *diag)
 {
-    cf_status_t st = check_curve_knots(degree, knots, nknots, &u, diag);
+    cf_status_t st = check_curve_knots(degree, knots, nknots, u, diag);
     size_t k, w = (size_t)degree + 1;
     if (st != CF_STATUS_OK)
         return st;
@@ -445,6 +448,8 @@ cf_basis_ders(int degree, const double *knots, size_t nknots, double u,
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "output is NULL or derivative order %d < 0",
                          nder);
+    (void)cf__param_clamp(knots[degree], knots[nknots - 1 - (size_t)degree],
+                          &u);
     k = cf_knots_find_span(degree, knots, nknots, u);
     for (int d = 0; d <= nder; d++)
         cf__basis_deriv(degree, knots, nknots, NULL, k, u, d,

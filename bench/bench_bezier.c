@@ -119,7 +119,7 @@ run_deriv(void *p, double sum[2])
     sum[0] = sum[1] = 0.0;
     for (int i = 0; i < CURVES; i++)
         for (int j = 0; j < PARAMS; j += CHUNK) {
-            if (cf_bezier_eval_deriv_many(st->c[i], 1, st->t + j, CHUNK,
+            if (cf_bezier_eval_deriv_many(st->c[i], st->t + j, CHUNK, 1,
                                           st->out) != CF_STATUS_OK)
                 return 1;
             add_sums(st->out, sum);

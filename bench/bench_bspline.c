@@ -111,7 +111,7 @@ w3_run_k(w3_state *s, int k, double sum[2])
         size_t m = s->n - j < CHUNK ? s->n - j : CHUNK, i = 0;
         cf_status_t st = k == 0
             ? cf_bspline_eval_many(s->curve, s->u + j, m, s->out)
-            : cf_bspline_eval_deriv_many(s->curve, 1, s->u + j, m, s->out);
+            : cf_bspline_eval_deriv_many(s->curve, s->u + j, m, 1, s->out);
         if (st != CF_STATUS_OK)
             return 1;
         for (; i + 4 <= m; i += 4)

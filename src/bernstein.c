@@ -11,16 +11,13 @@
 #define MAXN CF_BEZIER_MAX_DEGREE
 #define MAXM CF_BERNSTEIN_MATRIX_MAX_DEGREE
 
+/* The degree, and t by the domain rule on [0, 1] (clamped). */
 static cf_status_t
-check_nt(int n, double t)
+check_nt(int n, double *t)
 {
     if (n < 0 || n > MAXN)
         return CF_STATUS_BAD_DEGREE;
-    if (!isfinite(t))
-        return CF_STATUS_NOT_FINITE;
-    if (t < 0.0 || t > 1.0)
-        return CF_STATUS_DOMAIN;
-    return CF_STATUS_OK;
+    return cf__bezier_check_param(t);
 }
 
 /* out[0..n]: the recurrence B_i^m = (1-t) B_i^(m-1) + t B_(i-1)^(m-1),
@@ -41,7 +38,7 @@ all_values(int n, double t, double *out)
 cf_status_t
 cf_bernstein_all(int n, double t, double *out)
 {
-    cf_status_t st = check_nt(n, t);
+    cf_status_t st = check_nt(n, &t);
     if (st != CF_STATUS_OK)
         return st;
     if (out == NULL)
@@ -54,7 +51,7 @@ cf_status_t
 cf_bernstein_value(int n, int i, double t, double *out)
 {
     double v[MAXN + 1];
-    cf_status_t st = check_nt(n, t);
+    cf_status_t st = check_nt(n, &t);
     if (st != CF_STATUS_OK)
         return st;
     if (out == NULL)
@@ -69,9 +66,9 @@ cf_bernstein_value(int n, int i, double t, double *out)
 }
 
 cf_status_t
-cf_bernstein_all_deriv(int n, int k, double t, double *out)
+cf_bernstein_all_deriv(int n, double t, int k, double *out)
 {
-    cf_status_t st = check_nt(n, t);
+    cf_status_t st = check_nt(n, &t);
     int m;
     if (st != CF_STATUS_OK)
         return st;
@@ -98,7 +95,7 @@ cf_status_t
 cf_bernstein_eval(int n, const double *coef, double t, double *out)
 {
     double v[MAXN + 1];
-    cf_status_t st = check_nt(n, t);
+    cf_status_t st = check_nt(n, &t);
     if (st != CF_STATUS_OK)
         return st;
     if (coef == NULL || out == NULL)

@@ -53,7 +53,7 @@ cf_bezier_eval(const cf_bezier_t *c, double t, double *out)
     cf_status_t st;
     if (c == NULL || out == NULL)
         return CF_STATUS_INVALID_ARG;
-    st = cf__bezier_check_param(t);
+    st = cf__bezier_check_param(&t);
     if (st != CF_STATUS_OK)
         return st;
     cf__bezier_eval_point(c, t, out);
@@ -126,7 +126,7 @@ cf_bezier_eval_derivs(const cf_bezier_t *c, double t, int k, double *out)
         return CF_STATUS_INVALID_ARG;
     if (k > MAXN)
         return CF_STATUS_BAD_DEGREE;
-    st = cf__bezier_check_param(t);
+    st = cf__bezier_check_param(&t);
     if (st != CF_STATUS_OK)
         return st;
     for (size_t d = 0; d < c->dim; d++) {
@@ -137,62 +137,82 @@ cf_bezier_eval_derivs(const cf_bezier_t *c, double t, int k, double *out)
     return CF_STATUS_OK;
 }
 
-static cf_status_t
-check_params(const double *t, size_t n)
-{
-    /* A branch-free pass first (NaN and infinities fail the comparisons,
-    ** so every bad parameter fails it); the per-parameter loop below runs
-    ** only to find and classify a bad one.  This check was most of the
-    ** time of a cubic batch evaluation when it branched per parameter. */
-    int ok = 1;
-    for (size_t i = 0; i < n; i++)
-        ok &= (t[i] >= 0.0) & (t[i] <= 1.0);
-    if (ok)
-        return CF_STATUS_OK;
-    for (size_t i = 0; i < n; i++) {
-        cf_status_t st = cf__bezier_check_param(t[i]);
-        if (st != CF_STATUS_OK)
-            return st;
-    }
-    return CF_STATUS_OK;
-}
-
-cf_status_t
-cf_bezier_eval_deriv_many(const cf_bezier_t *c, int k, const double *t,
-                          size_t n, double *out)
+/* The k-th derivatives (k = 0: points) at parameters in [0, 1]. */
+static void
+deriv_many(const cf_bezier_t *c, const double *t, size_t n, int k,
+           double *out)
 {
     double res[MAXN + 1];
-    cf_status_t st;
-    if (c == NULL || (n > 0 && (t == NULL || out == NULL)) || k < 0)
-        return CF_STATUS_INVALID_ARG;
-    if (k > MAXN)
-        return CF_STATUS_BAD_DEGREE;
-    st = check_params(t, n);
-    if (st != CF_STATUS_OK)
-        return st;
-    if (k == 0)
-        return cf__bezier_eval_many_fast(c, t, n, out);
-    if (!c->rational && cf__bezier_deriv_many_fast(c, k, t, n, out))
-        return CF_STATUS_OK;
+    if (k == 0) {
+        cf__bezier_eval_many_fast(c, t, n, out);
+        return;
+    }
+    if (!c->rational && cf__bezier_deriv_many_fast(c, t, n, k, out))
+        return;
     for (size_t i = 0; i < n; i++)
         for (size_t d = 0; d < c->dim; d++) {
             cf__bezier_coord_derivs(c, d, t[i], k, res);
             out[i * c->dim + d] = res[k];
         }
+}
+
+/* parameters per block of the clamped copy */
+#define CLAMP_BLK 256
+
+/*
+** deriv_many after the domain rule.  A branch-free pass first (NaN and
+** infinities fail the comparisons, so every bad parameter fails it): the
+** parameters are used as given when it passes.  Otherwise each is checked
+** by the rule (nothing is written when one is refused), then the batch is
+** evaluated in blocks from a clamped copy.
+*/
+static cf_status_t
+checked_many(const cf_bezier_t *c, const double *t, size_t n, int k,
+             double *out)
+{
+    int ok = 1;
+    for (size_t i = 0; i < n; i++)
+        ok &= (t[i] >= 0.0) & (t[i] <= 1.0);
+    if (ok) {
+        deriv_many(c, t, n, k, out);
+        return CF_STATUS_OK;
+    }
+    for (size_t i = 0; i < n; i++) {
+        double x = t[i];
+        cf_status_t st = cf__bezier_check_param(&x);
+        if (st != CF_STATUS_OK)
+            return st;
+    }
+    for (size_t i0 = 0; i0 < n; i0 += CLAMP_BLK) {
+        double tc[CLAMP_BLK];
+        size_t m = n - i0 < CLAMP_BLK ? n - i0 : CLAMP_BLK;
+        for (size_t j = 0; j < m; j++) {
+            tc[j] = t[i0 + j];
+            (void)cf__bezier_check_param(&tc[j]);
+        }
+        deriv_many(c, tc, m, k, out + i0 * c->dim);
+    }
     return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_bezier_eval_deriv_many(const cf_bezier_t *c, const double *t, size_t n,
+                          int k, double *out)
+{
+    if (c == NULL || (n > 0 && (t == NULL || out == NULL)) || k < 0)
+        return CF_STATUS_INVALID_ARG;
+    if (k > MAXN)
+        return CF_STATUS_BAD_DEGREE;
+    return checked_many(c, t, n, k, out);
 }
 
 cf_status_t
 cf_bezier_eval_many(const cf_bezier_t *c, const double *t, size_t n,
                     double *out)
 {
-    cf_status_t st;
     if (c == NULL || (n > 0 && (t == NULL || out == NULL)))
         return CF_STATUS_INVALID_ARG;
-    st = check_params(t, n);
-    if (st != CF_STATUS_OK)
-        return st;
-    return cf__bezier_eval_many_fast(c, t, n, out);
+    return checked_many(c, t, n, 0, out);
 }
 
 size_t
@@ -213,7 +233,7 @@ cf_bezier_decasteljau(const cf_bezier_t *c, double t, double *out)
     cf_status_t st;
     if (c == NULL || out == NULL)
         return CF_STATUS_INVALID_ARG;
-    st = cf__bezier_check_param(t);
+    st = cf__bezier_check_param(&t);
     if (st != CF_STATUS_OK)
         return st;
     n = c->degree;
@@ -253,16 +273,6 @@ cf_bezier_decasteljau(const cf_bezier_t *c, double t, double *out)
 #define FAST_MAX 10
 #define BLK 256
 
-/* One clone per x86-64 level, picked at load time (an ifunc).  Not in
-** sanitizer builds: the resolvers run before the sanitizer runtime. */
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__) && \
-    !defined(__SANITIZE_ADDRESS__)
-#define CF__CLONES                                                          \
-    __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3",         \
-                                 "default")))
-#else
-#define CF__CLONES
-#endif
 
 /* a[i] = C(n, i) p[i * stride] */
 static void
@@ -425,8 +435,8 @@ cf__bezier_eval_many_fast(const cf_bezier_t *c, const double *t, size_t n,
 }
 
 bool
-cf__bezier_deriv_many_fast(const cf_bezier_t *c, int k, const double *t,
-                           size_t n, double *out)
+cf__bezier_deriv_many_fast(const cf_bezier_t *c, const double *t, size_t n,
+                           int k, double *out)
 {
     double q[(FAST_MAX + 1) * DIM_CHUNK];
     int deg = c->degree;

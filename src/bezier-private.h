@@ -12,6 +12,7 @@
 
 #include "curvefig/bezier.h"
 #include "core-private.h"
+#include "domain-private.h"
 #include "bpoly-private.h"
 
 /*
@@ -37,16 +38,12 @@ cf_status_t cf__bezier_from_hpoints(size_t dim, int degree, bool rational,
                                     const double *hpts, cf_bezier_t **out,
                                     cf_diag_t *diag);
 
-/* The status of a curve parameter t: NOT_FINITE, DOMAIN outside [0, 1],
-** or OK. */
+/* The status of a curve parameter *t by the domain rule on [0, 1]
+** (domain-private.h; *t clamped to an end it misses by rounding). */
 static inline cf_status_t
-cf__bezier_check_param(double t)
+cf__bezier_check_param(double *t)
 {
-    if (!isfinite(t))
-        return CF_STATUS_NOT_FINITE;
-    if (t < 0.0 || t > 1.0)
-        return CF_STATUS_DOMAIN;
-    return CF_STATUS_OK;
+    return cf__param_clamp(0.0, 1.0, t);
 }
 
 /* A list of count NULL items (t0/t1 allocated when with_params). */
@@ -72,7 +69,7 @@ cf_status_t cf__bezier_eval_many_fast(const cf_bezier_t *c, const double *t,
 /* The k-th derivative (k >= 1) at many parameters by the fast scheme on the
 ** hodograph; returns false (doing nothing) when the fast scheme does not
 ** apply (rational or high degree). */
-bool cf__bezier_deriv_many_fast(const cf_bezier_t *c, int k, const double *t,
-                                size_t n, double *out);
+bool cf__bezier_deriv_many_fast(const cf_bezier_t *c, const double *t,
+                                size_t n, int k, double *out);
 
 #endif

@@ -277,7 +277,7 @@ cf_bezier_tangent(const cf_bezier_t *c, double t, double *out)
     cf_status_t st;
     if (c == NULL || out == NULL)
         return CF_STATUS_INVALID_ARG;
-    st = cf__bezier_check_param(t);
+    st = cf__bezier_check_param(&t);
     if (st != CF_STATUS_OK)
         return st;
     j = first_nonzero_deriv(c, t);
@@ -324,7 +324,7 @@ cf_bezier_normal(const cf_bezier_t *c, double t, double *out)
         out[1] = tg[0];
         return CF_STATUS_OK;
     }
-    st = cf__bezier_check_param(t);
+    st = cf__bezier_check_param(&t);
     if (st != CF_STATUS_OK)
         return st;
     d12_sums(c, t, &s11, &s22, &s12);
@@ -351,7 +351,7 @@ cf_bezier_curvature(const cf_bezier_t *c, double t, double *kappa)
     cf_status_t st;
     if (c == NULL || kappa == NULL)
         return CF_STATUS_INVALID_ARG;
-    st = cf__bezier_check_param(t);
+    st = cf__bezier_check_param(&t);
     if (st != CF_STATUS_OK)
         return st;
     if (c->dim == 1) {

@@ -15,7 +15,7 @@ cf_bspline_eval_derivs(const cf_bspline_t *c, double u, int k, double *out)
     size_t kk, p, dim;
     if (c == NULL || out == NULL || k < 0)
         return cf__error(NULL, CF_STATUS_INVALID_ARG, -1, "bad argument");
-    st = cf__bspline_check_param(c, u, NULL);
+    st = cf__bspline_param(c, &u);
     if (st != CF_STATUS_OK)
         return st;
     kk = cf__bspline_span(c, u);
@@ -81,8 +81,11 @@ deriv1_many(const cf_bspline_t *c, const double *u, size_t n, double *out,
     size_t k = c->first_span;
     for (size_t i = 0; i < n; i++) {
         double x = u[i];
-        if (CF__UNLIKELY(!(x >= c->a && x <= c->b)))
-            return isfinite(x) ? CF_STATUS_DOMAIN : CF_STATUS_NOT_FINITE;
+        if (CF__UNLIKELY(!(x >= c->a && x <= c->b))) {
+            cf_status_t st = cf__bspline_param(c, &x);
+            if (st != CF_STATUS_OK)
+                return st;
+        }
         k = cf__bspline_next_span(c, k, x, true);
         deriv1_fast(c, k, x, p, hd, dim, out + i * dim);
     }
@@ -90,8 +93,8 @@ deriv1_many(const cf_bspline_t *c, const double *u, size_t n, double *out,
 }
 
 cf_status_t
-cf_bspline_eval_deriv_many(const cf_bspline_t *c, int k, const double *u,
-                           size_t n, double *out)
+cf_bspline_eval_deriv_many(const cf_bspline_t *c, const double *u, size_t n,
+                           int k, double *out)
 {
     bool ready;
     const double *rk;
@@ -154,7 +157,7 @@ cf_bspline_deboor(const cf_bspline_t *c, double u, double *out, size_t *span,
     cf_status_t st;
     if (c == NULL || out == NULL)
         return cf__error(NULL, CF_STATUS_INVALID_ARG, -1, "NULL argument");
-    st = cf__bspline_check_param(c, u, NULL);
+    st = cf__bspline_param(c, &u);
     if (st != CF_STATUS_OK)
         return st;
     k = cf__bspline_span(c, u);
@@ -180,7 +183,7 @@ cf_bspline_basis(const cf_bspline_t *c, double u, size_t *first, double *N)
     size_t k;
     if (c == NULL || N == NULL)
         return cf__error(NULL, CF_STATUS_INVALID_ARG, -1, "NULL argument");
-    st = cf__bspline_check_param(c, u, NULL);
+    st = cf__bspline_param(c, &u);
     if (st != CF_STATUS_OK)
         return st;
     k = cf__bspline_span(c, u);

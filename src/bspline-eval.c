@@ -37,7 +37,7 @@ cf_bspline_eval(const cf_bspline_t *c, double u, double *out)
     double w = 1.0;
     if (c == NULL || out == NULL)
         return cf__error(NULL, CF_STATUS_INVALID_ARG, -1, "NULL argument");
-    st = cf__bspline_check_param(c, u, NULL);
+    st = cf__bspline_param(c, &u);
     if (st != CF_STATUS_OK)
         return st;
     k = cf__bspline_span(c, u);
@@ -86,8 +86,11 @@ eval_many_impl(const cf_bspline_t *c, const double *u, size_t n, double *out,
     double a = c->a, b = c->b;
     for (size_t i = 0; i < n; i++) {
         double x = u[i];
-        if (CF__UNLIKELY(!(x >= a && x <= b)))
-            return isfinite(x) ? CF_STATUS_DOMAIN : CF_STATUS_NOT_FINITE;
+        if (CF__UNLIKELY(!(x >= a && x <= b))) {
+            cf_status_t st = cf__param_clamp(a, b, &x);
+            if (st != CF_STATUS_OK)
+                return st;
+        }
         k = cf__bspline_next_span(c, k, x, true);
         cf__bspline_basis_rk(U, rk, nk, k, p, x, N);
         combine(P, hdim, dim, rational, p, k, N, out + i * dim);
@@ -158,17 +161,12 @@ cubic2_run(const double *U, const double *R1, const double *R2,
     }
 }
 
-/* One clone per x86-64 level (an ifunc), as in bezier-eval.c; the file is
-** compiled without contraction, so every clone rounds alike.  Not in
-** sanitizer builds: the resolvers run before the sanitizer runtime. */
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__) && \
-    !defined(__SANITIZE_ADDRESS__)
-__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#endif
 /* parameters per block of span searches (random parameters) */
 #define RBLK 32
 
-static cf_status_t
+/* One clone per x86-64 level (CF__CLONES); the file is compiled without
+** contraction, so every clone rounds alike. */
+CF__CLONES static cf_status_t
 eval_cubic2(const cf_bspline_t *c, const double *u, size_t n, double *out,
             int deriv)
 {
@@ -179,8 +177,18 @@ eval_cubic2(const cf_bspline_t *c, const double *u, size_t n, double *out,
     while (i < n) {
         double x = u[i];
         size_t j = i + 1;
-        if (CF__UNLIKELY(!(x >= a && x <= b)))
-            return isfinite(x) ? CF_STATUS_DOMAIN : CF_STATUS_NOT_FINITE;
+        if (CF__UNLIKELY(!(x >= a && x <= b))) {
+            /* by the domain rule: the end it misses by rounding, alone */
+            cf_status_t st = cf__param_clamp(a, b, &x);
+            if (st != CF_STATUS_OK)
+                return st;
+            k = cf__bspline_grid_span(c, x);
+            cubic2_run(U, R1, R2, R3, P, k, &x, 1, out + 2 * i, deriv);
+            lo = U[k];
+            hi = U[k + 1];
+            i++;
+            continue;
+        }
         /* one branch, predictable both for sorted parameters (mostly
         ** inside) and random ones (mostly outside): `&&` would make the
         ** first comparison a coin toss for random parameters; no "next
@@ -266,8 +274,9 @@ cf__bspline_derivs_general(const cf_bspline_t *c, int k, const double *rk,
     kk = c->first_span;
     for (size_t i = 0; i < n; i++) {
         double x = u[i];
-        if (!(x >= c->a && x <= c->b))
-            return isfinite(x) ? CF_STATUS_DOMAIN : CF_STATUS_NOT_FINITE;
+        cf_status_t st = cf__bspline_param(c, &x);
+        if (st != CF_STATUS_OK)
+            return st;
         kk = cf__bspline_next_span(c, kk, x, rk != NULL);
         if (!c->rational) {
             deriv_poly_point(c, rk, kk, x, k, out + i * c->dim);

@@ -8,6 +8,7 @@
 #include <stdint.h>
 
 #include "core-private.h"
+#include "domain-private.h"
 #include "curvefig/bspline.h"
 
 /*
@@ -74,9 +75,18 @@ cf__bspline_span(const cf_bspline_t *c, double u)
     return cf_knots_find_span(c->p, c->U, c->nknots, u);
 }
 
-/* Check u is finite and inside the domain. */
+/* Check u is finite and inside the domain (constructions: knot insertion,
+** split, segment). */
 cf_status_t cf__bspline_check_param(const cf_bspline_t *c, double u,
                                     cf_diag_t *diag);
+
+/* An evaluator's parameter *u by the domain rule on the curve's domain
+** (domain-private.h; clamped to an end it misses by rounding). */
+CF__INLINE cf_status_t
+cf__bspline_param(const cf_bspline_t *c, double *u)
+{
+    return cf__param_clamp(c->a, c->b, u);
+}
 
 /* ---- the span search and the basis, inlined into the evaluators ---- */
 

@@ -467,7 +467,7 @@ cf_bspline_active_points(const cf_bspline_t *c, double u, size_t *first,
     size_t k;
     if (c == NULL)
         return cf__error(NULL, CF_STATUS_INVALID_ARG, -1, "NULL curve");
-    st = cf__bspline_check_param(c, u, NULL);
+    st = cf__bspline_param(c, &u);
     if (st != CF_STATUS_OK)
         return st;
     k = cf__bspline_span(c, u);

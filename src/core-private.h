@@ -12,6 +12,28 @@
 
 #define CF__PI 3.14159265358979323846
 
+/* A sanitizer runtime is linked in (GCC's and clang's spellings). */
+#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
+#define CF__SANITIZED 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer) || \
+    __has_feature(memory_sanitizer)
+#define CF__SANITIZED 1
+#endif
+#endif
+
+/* One clone of a hot function per x86-64 level, picked at load time (an
+** ifunc; GCC).  Not in sanitizer builds: the resolvers run before the
+** sanitizer runtime is initialised and crash the program before main. */
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__) && \
+    !defined(CF__SANITIZED)
+#define CF__CLONES                                                          \
+    __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3",         \
+                                 "default")))
+#else
+#define CF__CLONES
+#endif
+
 #if defined(__GNUC__)
 #define CF__PRINTF(f, a) __attribute__((format(printf, f, a)))
 #define CF__UNLIKELY(x) __builtin_expect(!!(x), 0)

@@ -416,14 +416,7 @@ check_curve_knots(int degree, const double *U, size_t nknots, double u,
     st = cf_knots_validate(degree, nknots - p - 1, U, nknots, diag);
     if (st != CF_STATUS_OK)
         return st;
-    if (!isfinite(u))
-        return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "parameter is %g", u);
-    if (u < U[p] || u > U[nknots - 1 - p])
-        return cf__error(diag, CF_STATUS_DOMAIN, -1,
-                         "parameter %g is outside the domain "
-                         "[%g, %g]", u, U[p], U[nknots - 1 - p]);
-    return CF_STATUS_OK;
+    return cf__param_check(U[p], U[nknots - 1 - p], &u, diag);
 }
 
 cf_status_t
@@ -438,6 +431,9 @@ cf_basis_funs(int degree, const double *knots, size_t nknots, double u,
     if (N == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "output is NULL");
+    /* the end u misses by rounding, if it does (checked above) */
+    (void)cf__param_clamp(knots[degree], knots[nknots - 1 - (size_t)degree],
+                          &u);
     k = cf_knots_find_span(degree, knots, nknots, u);
     cf__basis_deriv(degree, knots, nknots, NULL, k, u, 0, N);
     if (span != NULL)
@@ -458,6 +454,8 @@ cf_basis_ders(int degree, const double *knots, size_t nknots, double u,
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "output is NULL or derivative order %d < 0",
                          nder);
+    (void)cf__param_clamp(knots[degree], knots[nknots - 1 - (size_t)degree],
+                          &u);
     k = cf_knots_find_span(degree, knots, nknots, u);
     for (int d = 0; d <= nder; d++)
         cf__basis_deriv(degree, knots, nknots, NULL, k, u, d,

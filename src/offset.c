@@ -41,10 +41,11 @@ cf_offset_point(const cf_bezier_t *c, double t, double d, double *out)
     cf_status_t st = check_curve(c);
     if (st != CF_STATUS_OK || out == NULL)
         return st != CF_STATUS_OK ? st : CF_STATUS_INVALID_ARG;
-    if (!isfinite(t) || !isfinite(d))
+    if (!isfinite(d))
         return CF_STATUS_NOT_FINITE;
-    if (t < 0.0 || t > 1.0)
-        return CF_STATUS_DOMAIN;
+    st = cf__bezier_check_param(&t);
+    if (st != CF_STATUS_OK)
+        return st;
     if (cf__bezier_unit_tangent(c, t, t >= 1.0 ? -1 : 1, cf__deriv_scale(c),
                                 p, u) != 0) {
         if (d != 0.0)

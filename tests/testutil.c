@@ -153,3 +153,18 @@ tu_figure_scripts(const char *dir, char **names, size_t max)
     qsort(names, n, sizeof *names, by_name);
     return n;
 }
+
+void
+tu_read_header(const char *root, const char *name, char *buf, size_t size)
+{
+    char path[512];
+    size_t n;
+    FILE *f;
+    snprintf(path, sizeof path, "%s/include/curvefig/%s", root, name);
+    f = fopen(path, "r");
+    if (f == NULL)
+        fail_msg("cannot read %s", path);
+    n = fread(buf, 1, size - 1, f);
+    buf[n] = '\0';
+    fclose(f);
+}

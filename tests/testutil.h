@@ -44,4 +44,9 @@ long tu_alloc_live(void);
 ** names (at most max); their number. */
 size_t tu_figure_scripts(const char *dir, char **names, size_t max);
 
+/* The text of a public header (include/curvefig/<name> under the source
+** tree root) into buf, NUL-terminated; fails the test when unreadable. */
+void tu_read_header(const char *root, const char *name, char *buf,
+                    size_t size);
+
 #endif

@@ -8,7 +8,8 @@
 ** every degree up to CF_BEZIER_MAX_DEGREE), derivatives by
 ** d/dt B_i^n = n (B_(i-1)^(n-1) - B_i^(n-1)) applied k times.
 **
-** Parameters must be finite and in [0, 1] (CF_STATUS_DOMAIN otherwise).
+** Parameters must be finite and in [0, 1] (CF_STATUS_DOMAIN otherwise;
+** within 8 DBL_EPSILON of an end they are that end, as in bezier.h).
 */
 #ifndef CURVEFIG_BERNSTEIN_H
 #define CURVEFIG_BERNSTEIN_H
@@ -31,7 +32,7 @@ CF_API cf_status_t cf_bernstein_all(int n, double t, double *out);
 
 /* out[0..n] = the k-th derivatives (k >= 0) of B_0^n ... B_n^n at t
 ** (all zero when k > n). */
-CF_API cf_status_t cf_bernstein_all_deriv(int n, int k, double t, double *out);
+CF_API cf_status_t cf_bernstein_all_deriv(int n, double t, int k, double *out);
 
 /* Evaluate sum_i coef[i] B_i^n(t) (de Casteljau); allocates nothing. */
 CF_API cf_status_t cf_bernstein_eval(int n, const double *coef, double t,

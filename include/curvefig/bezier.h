@@ -14,10 +14,12 @@
 ** allocates; bbox, length, closest and flatten use a work buffer and may
 ** return CF_STATUS_NO_MEMORY.
 **
-** Parameters.  The domain is [0, 1].  Evaluators accept any t in [0, 1];
-** they return CF_STATUS_NOT_FINITE for NaN or infinite t and
-** CF_STATUS_DOMAIN for other t outside [0, 1]; split points must lie in the
-** open interval (0, 1).  Functions without a diag argument report NULL
+** Parameters.  The domain is [0, 1].  Evaluators (eval*, decasteljau,
+** tangent, normal, curvature, the offset points, the Bernstein basis)
+** accept any t in [0, 1], and t that misses an end by at most
+** 8 DBL_EPSILON (rounding) as that end; they return CF_STATUS_NOT_FINITE
+** for NaN or infinite t and CF_STATUS_DOMAIN for t further out (core.h,
+** "Parameters"); split points must lie in the open interval (0, 1).  Functions without a diag argument report NULL
 ** pointers and negative orders as CF_STATUS_INVALID_ARG.
 */
 #ifndef CURVEFIG_BEZIER_H
@@ -85,8 +87,8 @@ CF_API cf_status_t cf_bezier_eval_derivs(const cf_bezier_t *c, double t, int k,
                                          double *out);
 
 /* out[n * dim] = c^(k)(t[i]) for each i; allocates nothing. */
-CF_API cf_status_t cf_bezier_eval_deriv_many(const cf_bezier_t *c, int k,
-                                             const double *t, size_t n,
+CF_API cf_status_t cf_bezier_eval_deriv_many(const cf_bezier_t *c,
+                                             const double *t, size_t n, int k,
                                              double *out);
 
 /* The whole de Casteljau triangle at t, Cartesian, level by level: level 0

@@ -17,8 +17,16 @@
 **
 ** Objects are immutable: every operation returns a new curve that the
 ** caller releases with cf_bspline_destroy (destroy(NULL) is harmless).
-** Evaluation never allocates.  Parameters must be finite (NOT_FINITE) and
-** inside the domain (DOMAIN); no parameter is ever moved onto a nearby knot.
+** Evaluation never allocates.
+**
+** Parameters.  The evaluators (eval*, deboor, basis, active_points, and
+** cf_basis_funs / cf_basis_ders on a knot vector) take u in the domain
+** [a, b] = [u_p, u_{m-p}]; a u that misses an end by at most
+** 8 DBL_EPSILON max(|a|, |b|) is that end (the last value of the loop
+** a + (b - a) i / (N - 1) may overshoot b by rounding), further out is
+** DOMAIN, NaN and infinities NOT_FINITE.  No parameter is ever moved onto
+** a nearby interior knot.  Constructions (insert_knot, refine, split,
+** segment) take their parameters exactly: inside [a, b] or DOMAIN.
 */
 #ifndef CURVEFIG_BSPLINE_H
 #define CURVEFIG_BSPLINE_H
@@ -186,8 +194,8 @@ CF_API cf_status_t cf_bspline_eval_derivs(const cf_bspline_t *c, double u,
 /* out[n * dim] = C^(k)(u[i]) for each i (k >= 0; for a NURBS k <= 128,
 ** INVALID_ARG above); allocates nothing; spans are found like
 ** cf_bspline_eval_many. */
-CF_API cf_status_t cf_bspline_eval_deriv_many(const cf_bspline_t *c, int k,
-                                              const double *u, size_t n,
+CF_API cf_status_t cf_bspline_eval_deriv_many(const cf_bspline_t *c,
+                                              const double *u, size_t n, int k,
                                               double *out);
 
 /*

@@ -28,6 +28,21 @@
 **   - Input arrays are copied: the caller may change or free them as soon
 **     as the call returns.
 **
+** Argument order.  Every evaluator (a function that computes values of a
+** curve, a basis or an offset at parameters) takes, in this order: the
+** object (a curve, or what defines it: degree, knots, coefficients); the
+** parameter, or the parameter array and its count; the other numbers
+** (derivative order k, distance d); the outputs; the diag, if any:
+**   cf_bezier_eval_derivs(c, t, k, out)
+**   cf_bezier_eval_deriv_many(c, t, n, k, out)
+**   cf_offset_point_many(c, t, n, d, out)
+** (tests/unit/test_api_order.c checks every public header against it).
+**
+** Parameters.  A parameter that misses an end of its domain [a, b] by at
+** most 8 DBL_EPSILON max(|a|, |b|) is that end: the evaluators clamp it.
+** One further out is CF_STATUS_DOMAIN; NaN and infinities are
+** CF_STATUS_NOT_FINITE.
+**
 ** The API is what these headers declare with CF_API (export.h):
 ** libcurvefig-core is built with hidden visibility and exports exactly
 ** those functions; the internals (cf__ names) are not part of it.

@@ -126,7 +126,9 @@ CF_API const char *cf_knot_kind_to_string(cf_knot_kind_t kind);
 ** §2.5; The NURBS Book A2.2): N[j] = N_{k-p+j}^p(u), j = 0..p, where
 ** k = *span (may be NULL) is the span of u found by cf_knots_find_span.
 ** The vector is validated for a curve (nknots >= 2p + 2); u must lie in the
-** domain [u_p, u_{m-p}] (DOMAIN otherwise).  N has p + 1 doubles.
+** domain [u_p, u_{m-p}] (DOMAIN otherwise, naming it; within
+** 8 DBL_EPSILON max(|u_p|, |u_{m-p}|) of an end it is that end, as in
+** bspline.h).  N has p + 1 doubles.
 */
 CF_API cf_status_t cf_basis_funs(int degree, const double *knots,
                                  size_t nknots, double u, size_t *span,
@@ -134,11 +136,11 @@ CF_API cf_status_t cf_basis_funs(int degree, const double *knots,
 
 /*
 ** Derivatives of the nonzero basis functions (A2.3): ders[d * (p + 1) + j]
-** = d^d/du^d N_{k-p+j}^p(u) for d = 0..nder (rows beyond p are 0).
-** ders has (nder + 1) * (p + 1) doubles; nder >= 0.
+** = d^d/du^d N_{s-p+j}^p(u) for d = 0..k, s = *span (rows beyond p are 0).
+** ders has (k + 1) * (p + 1) doubles; k >= 0.
 */
 CF_API cf_status_t cf_basis_ders(int degree, const double *knots,
-                                 size_t nknots, double u, int nder,
+                                 size_t nknots, double u, int k,
                                  size_t *span, double *ders, cf_diag_t *diag);
 
 /*
@@ -171,10 +173,10 @@ CF_API cf_status_t cf_basis_one_spline(int i, int degree,
                                        cf_diag_t *diag);
 
 /* Derivatives of one basis function: out[d] = d^d/du^d N_i^p(u),
-** d = 0..nder (0 for d > p); the same conventions as cf_basis_one
+** d = 0..k (0 for d > p); the same conventions as cf_basis_one
 ** (one-sided: the derivative of the polynomial piece that owns u). */
 CF_API cf_status_t cf_basis_one_ders(int i, int degree, const double *knots,
-                                     size_t nknots, double u, int nder,
+                                     size_t nknots, double u, int k,
                                      double *out, cf_diag_t *diag);
 
 #ifdef __cplusplus

@@ -109,7 +109,7 @@ CF_API void cf_cubics_list_destroy(cf_cubics_list_t *list);
 /* ---- exact offset ------------------------------------------------------- */
 
 /* out[2] = c(t) + d n(t) for a planar (dim 2) curve, polynomial or
-** rational; t in [0, 1].  Never allocates.  DEGENERATE if every derivative
+** rational; t in [0, 1] (the rule of bezier.h).  Never allocates.  DEGENERATE if every derivative
 ** vanishes (a single point) and d != 0. */
 CF_API cf_status_t cf_offset_point(const cf_bezier_t *c, double t, double d,
                                    double *out);

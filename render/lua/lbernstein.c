@@ -38,7 +38,7 @@ l_bernstein_all(lua_State *L)
     int k = cf__lua_opt_int(L, 3, "bernstein_all", "k", 0, CF__LUA_MAX_DERIV,
                             0);
     double *v = cf__lua_buffer(L, (size_t)n + 1);
-    if (cf_bernstein_all_deriv(n, k, t, v) != CF_STATUS_OK)
+    if (cf_bernstein_all_deriv(n, t, k, v) != CF_STATUS_OK)
         return cf__lua_error(L, "bernstein_all: t = %g is outside [0, 1]", t);
     cf__lua_push_numbers(L, v, (size_t)n + 1);
     return 1;

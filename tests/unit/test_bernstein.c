@@ -87,7 +87,7 @@ test_maximum_at_i_over_n(void **state)
             double peak, d[13], v;
             double ti = (double)i / n;
             cf_bernstein_value(n, i, ti, &peak);
-            cf_bernstein_all_deriv(n, 1, ti, d);
+            cf_bernstein_all_deriv(n, ti, 1, d);
             if (i > 0 && i < n)
                 assert_true(fabs(d[i]) <= 64 * n * EPS);
             for (int j = 0; j <= 2000; j++) {
@@ -123,10 +123,10 @@ test_derivatives(void **state)
             for (int j = 0; j < 10; j++) {
                 double t = tu_rng_range(&r, 0.01, 0.99);
                 double dk[13], lp[13], lm[13], scale = 1.0;
-                assert_int_equal(cf_bernstein_all_deriv(n, k, t, dk),
+                assert_int_equal(cf_bernstein_all_deriv(n, t, k, dk),
                                  CF_STATUS_OK);
-                cf_bernstein_all_deriv(n, k - 1, t + h, lp);
-                cf_bernstein_all_deriv(n, k - 1, t - h, lm);
+                cf_bernstein_all_deriv(n, t + h, k - 1, lp);
+                cf_bernstein_all_deriv(n, t - h, k - 1, lm);
                 for (int i = 0; i <= n; i++)
                     scale = fmax(scale, fabs(dk[i]));
                 for (int i = 0; i <= n; i++)
@@ -142,8 +142,8 @@ test_derivatives(void **state)
     ** the second derivative formula n(n-1)(B_{i-2} - 2 B_{i-1} + B_i) */
     {
         double d1[8], d2[8], b6[7], b5[6], t = 0.3;
-        cf_bernstein_all_deriv(7, 1, t, d1);
-        cf_bernstein_all_deriv(7, 2, t, d2);
+        cf_bernstein_all_deriv(7, t, 1, d1);
+        cf_bernstein_all_deriv(7, t, 2, d2);
         cf_bernstein_all(6, t, b6);
         cf_bernstein_all(5, t, b5);
         for (int i = 0; i <= 7; i++) {
@@ -337,11 +337,11 @@ test_errors(void **state)
                      CF_STATUS_BAD_DEGREE);
     assert_int_equal(cf_bernstein_value(3, 1, 0.5, NULL),
                      CF_STATUS_INVALID_ARG);
-    assert_int_equal(cf_bernstein_all_deriv(3, -1, 0.5, out),
+    assert_int_equal(cf_bernstein_all_deriv(3, 0.5, -1, out),
                      CF_STATUS_INVALID_ARG);
-    assert_int_equal(cf_bernstein_all_deriv(3, 1, INFINITY, out),
+    assert_int_equal(cf_bernstein_all_deriv(3, INFINITY, 1, out),
                      CF_STATUS_NOT_FINITE);
-    assert_int_equal(cf_bernstein_all_deriv(3, 1, 0.5, NULL),
+    assert_int_equal(cf_bernstein_all_deriv(3, 0.5, 1, NULL),
                      CF_STATUS_INVALID_ARG);
     assert_int_equal(cf_bernstein_eval(3, NULL, 0.5, out),
                      CF_STATUS_INVALID_ARG);

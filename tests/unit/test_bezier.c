@@ -260,7 +260,7 @@ test_eval_many_large_dim_and_blocks(void **state)
     {
         cf_bezier_t *h;
         assert_int_equal(cf_bezier_derivative(c, 1, &h, NULL), CF_STATUS_OK);
-        assert_int_equal(cf_bezier_eval_deriv_many(c, 1, t, NT, out),
+        assert_int_equal(cf_bezier_eval_deriv_many(c, t, NT, 1, out),
                          CF_STATUS_OK);
         for (int j = 0; j < NT; j++) {
             cf_bezier_eval(h, t[j], ref);
@@ -293,7 +293,7 @@ test_deriv_many_matches(void **state)
         double scale = 0.0;
         for (int j = 0; j < 8; j++)
             t[j] = tu_rng_u01(&r);
-        assert_int_equal(cf_bezier_eval_deriv_many(c, k, t, 8, many),
+        assert_int_equal(cf_bezier_eval_deriv_many(c, t, 8, k, many),
                          CF_STATUS_OK);
         for (int j = 0; j < 8; j++) {
             assert_int_equal(cf_bezier_eval_derivs(c, t[j], k, d),
@@ -1114,14 +1114,14 @@ test_errors_operations(void **state)
     assert_int_equal(cf_bezier_eval_derivs(c, 2.0, 1, out), CF_STATUS_DOMAIN);
     assert_int_equal(cf_bezier_eval_derivs(NULL, 0.5, 1, out),
                      CF_STATUS_INVALID_ARG);
-    assert_int_equal(cf_bezier_eval_deriv_many(c, 1, t, 2, out),
+    assert_int_equal(cf_bezier_eval_deriv_many(c, t, 2, 1, out),
                      CF_STATUS_DOMAIN);
-    assert_int_equal(cf_bezier_eval_deriv_many(c, -1, t, 1, out),
+    assert_int_equal(cf_bezier_eval_deriv_many(c, t, 1, -1, out),
                      CF_STATUS_INVALID_ARG);
-    assert_int_equal(cf_bezier_eval_deriv_many(c, 1, NULL, 1, out),
+    assert_int_equal(cf_bezier_eval_deriv_many(c, NULL, 1, 1, out),
                      CF_STATUS_INVALID_ARG);
-    assert_int_equal(cf_bezier_eval_deriv_many(c, CF_BEZIER_MAX_DEGREE + 1,
-                                               t, 1, out),
+    assert_int_equal(cf_bezier_eval_deriv_many(c, t, 1,
+                                               CF_BEZIER_MAX_DEGREE + 1, out),
                      CF_STATUS_BAD_DEGREE);
     assert_int_equal(cf_bezier_decasteljau(c, -1.0, out), CF_STATUS_DOMAIN);
     assert_int_equal(cf_bezier_decasteljau(NULL, 0.5, out),

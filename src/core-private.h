@@ -46,12 +46,11 @@
 #endif
 
 /*
-** Every error is created here (one place for a breakpoint).  Fills diag (if
-** not NULL and still OK) with status, index and the formatted message, and
-** returns status.
+** Every error is created by cf_diag_set (core.h; one place for a
+** breakpoint): it fills diag (if not NULL and still OK) with status, index
+** and the formatted message, and returns status.
 */
-cf_status_t cf__error(cf_diag_t *diag, cf_status_t status, long index,
-                      const char *fmt, ...) CF__PRINTF(4, 5);
+#define cf__error cf_diag_set
 
 /* Allocation through the hook.  cf__alloc_array checks n * size for
 ** overflow; both return NULL on failure.  Memory from them is released with

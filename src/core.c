@@ -44,36 +44,18 @@ cf_diag_clear(cf_diag_t *diag)
     diag->msg[0] = '\0';
 }
 
-static void
-diag_vset(cf_diag_t *diag, cf_status_t status, long index, const char *fmt,
-          va_list ap)
-{
-    if (diag != NULL && diag->status == CF_STATUS_OK) {
-        diag->status = status;
-        diag->index = index;
-        vsnprintf(diag->msg, sizeof diag->msg, fmt, ap);
-    }
-}
-
-cf_status_t
-cf__error(cf_diag_t *diag, cf_status_t status, long index,
-          const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    diag_vset(diag, status, index, fmt, ap);
-    va_end(ap);
-    return status;
-}
-
 cf_status_t
 cf_diag_set(cf_diag_t *diag, cf_status_t status, long index,
             const char *fmt, ...)
 {
-    va_list ap;
-    va_start(ap, fmt);
-    diag_vset(diag, status, index, fmt, ap);
-    va_end(ap);
+    if (diag != NULL && diag->status == CF_STATUS_OK) {
+        va_list ap;
+        diag->status = status;
+        diag->index = index;
+        va_start(ap, fmt);
+        vsnprintf(diag->msg, sizeof diag->msg, fmt, ap);
+        va_end(ap);
+    }
     return status;
 }
 

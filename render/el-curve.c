@@ -516,9 +516,9 @@ tangent_domain(cf_figure_t *fig, double t, double lo, double hi)
 {
     if (!isfinite(t))
         return cf_diag_set(&fig->err, CF_STATUS_NOT_FINITE, -1,
-                           "tangent: t = %g is not finite", t);
+                           "t = %g is not finite", t);
     return cf_diag_set(&fig->err, CF_STATUS_DOMAIN, -1,
-                       "tangent: t = %g is outside the domain [%g, %g]", t,
+                       "t = %g is outside the domain [%g, %g]", t,
                        lo, hi);
 }
 

@@ -332,10 +332,10 @@ cf_figure_project(cf_figure_t *fig, const double *in, size_t n, size_t dim,
     CF__FIG_CHECK(fig);
     if ((in == NULL || out == NULL) && n > 0)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                           "project: points or output are NULL");
+                           "points or output are NULL");
     if (dim < 2)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                           "project: dimension %zu is below 2", dim);
+                           "dimension %zu is below 2", dim);
     if (cf_check_finite_points(in, n, dim, dim, "point", &fig->err)
         != CF_STATUS_OK)
         return fig->err.status;

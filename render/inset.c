@@ -29,7 +29,7 @@ cf_figure_add_inset(cf_figure_t *fig, const cf_inset_t *in)
     CF__FIG_CHECK(fig);
     if (in == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                           "inset: NULL");
+                           "NULL");
     r = in->region;
     if (cf_check_finite_points(r, 2, 2, 2, "inset region", &fig->err)
         != CF_STATUS_OK)

@@ -22,7 +22,7 @@ cf_figure_add_legend(cf_figure_t *fig, const char *text)
     CF__FIG_CHECK(fig);
     if (fig->count == 0)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                           "legend: no element drawn yet to name");
+                           "no element drawn yet to name");
     return cf_figure_add_legend_at(fig, fig->count - 1, text);
 }
 
@@ -34,15 +34,15 @@ cf_figure_add_legend_at(cf_figure_t *fig, size_t el, const char *text)
     CF__FIG_CHECK(fig);
     if (text == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                           "legend: the text is NULL");
+                           "the text is NULL");
     if (el >= fig->count)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, (long)el,
-                           "legend: element %zu is not drawn (%zu so far)",
+                           "element %zu is not drawn (%zu so far)",
                            el + 1, fig->count);
     for (i = 0; i < fig->nlegend; i++)
         if (fig->legend[i].el == el)
             return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, (long)el,
-                               "legend: element %zu has an entry already",
+                               "element %zu has an entry already",
                                el + 1);
     e = cf_realloc_array(fig->legend, fig->nlegend + 1, sizeof *e);
     if (e == NULL)

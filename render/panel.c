@@ -51,20 +51,20 @@ cf_figure_add_panels(cf_figure_t *fig, int rows, int cols, double gap_bp,
     CF__FIG_CHECK(fig);
     if (out == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                           "panels: the output array is NULL");
+                           "the output array is NULL");
     if (fig->panels != NULL || fig->parent != NULL)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                           "panels: the figure is split already (a panel "
+                           "the figure is split already (a panel "
                            "is not split again)");
     if (rows < 1 || rows > 8 || cols < 1 || cols > 8)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                           "panels: a grid of %d x %d; rows and cols are "
+                           "a grid of %d x %d; rows and cols are "
                            "1 to 8", rows, cols);
     if (!(isfinite(gap_bp) && gap_bp >= 0
           && (cols - 1) * gap_bp < 0.5 * fig->width
           && (rows - 1) * gap_bp < 0.5 * fig->height))
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                           "panels: gap %g bp leaves no room for %d x %d "
+                           "gap %g bp leaves no room for %d x %d "
                            "panels on a %g x %g bp page", gap_bp, rows, cols,
                            fig->width, fig->height);
     n = rows * cols;

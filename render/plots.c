@@ -52,7 +52,7 @@ cf_figure_add_graph(cf_figure_t *fig, const cf_bezier_t *const *pieces,
     CF__FIG_CHECK(fig);
     if (pieces == NULL || breaks == NULL || count == 0)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                           "graph: pieces or breaks NULL, or no piece");
+                           "pieces or breaks NULL, or no piece");
     if (cf__fig_check_style(fig, style) != CF_STATUS_OK)
         return fig->err.status;
     if (cf_check_finite_points(breaks, count + 1, 1, 1, "graph break",

@@ -500,9 +500,9 @@ check_overflow(const cf_bspline_t *q, const char *what, cf_diag_t *diag)
         if (!isfinite(q->P[i]))
             return cf__error(diag, CF_STATUS_NOT_FINITE,
                              (long)(i / q->hdim),
-                             "%s: control point %zu overflows (coordinate "
-                             "%zu is %g); the input is too large or its knot "
-                             "spans too small", what, i / q->hdim,
+                             "control point %zu of the %s overflows "
+                             "(coordinate %zu is %g); the input is too large "
+                             "or its knot spans too small", i / q->hdim, what,
                              i % q->hdim + 1, q->P[i]);
     }
     return CF_STATUS_OK;
@@ -529,7 +529,7 @@ cf_bspline_derivative(const cf_bspline_t *c, int k, cf_bspline_t **out,
         cur = nxt;
     }
     if (st == CF_STATUS_OK)
-        st = check_overflow(cur, "derivative", diag);
+        st = check_overflow(cur, "derivative curve", diag);
     if (st != CF_STATUS_OK) {
         cf_bspline_destroy(cur);
         return st;
@@ -613,7 +613,7 @@ cf_bspline_transform(const cf_bspline_t *c, const double *A, const double *b,
         return cf__bspline_no_memory(diag);
     memcpy(q->U, c->U, c->nknots * sizeof *q->U);
     cf__affine_points(A, b, dim, c->rational, c->P, c->count, c->hdim, q->P);
-    st = check_overflow(q, "transform", diag);
+    st = check_overflow(q, "transformed curve", diag);
     if (st != CF_STATUS_OK) {
         cf_bspline_destroy(q);
         return st;

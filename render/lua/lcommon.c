@@ -325,13 +325,8 @@ cf__lua_fail(lua_State *L, const char *fn, cf_status_t status,
 {
     if (status == CF_STATUS_NO_MEMORY && cf__lua_memory_exceeded(L))
         return luaL_error(L, "%s: out of memory", fn);
-    if (diag != NULL && diag->status != CF_STATUS_OK && diag->msg[0] != '\0') {
-        size_t n = strlen(fn);
-        /* the library's message may already name the function */
-        if (strncmp(diag->msg, fn, n) == 0 && diag->msg[n] == ':')
-            return luaL_error(L, "%s", diag->msg);
+    if (diag != NULL && diag->status != CF_STATUS_OK && diag->msg[0] != '\0')
         return luaL_error(L, "%s: %s", fn, diag->msg);
-    }
     return luaL_error(L, "%s: %s", fn, cf_status_to_string(status));
 }
 

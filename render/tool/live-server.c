@@ -34,6 +34,7 @@ typedef struct server {
     char *page;                   /* the HTML of the page */
     size_t page_len;
     pthread_mutex_t run_lock;     /* one script run at a time */
+    _Atomic bool stopping;        /* the long polls end */
 } server_t;
 
 /* The state of one request while its body arrives. */
@@ -94,7 +95,8 @@ make_page(server_t *sv)
 {
     static const char head[] =
         "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
-        "<title>curvefig live</title>\n<style>\n";
+        "<title>curvefig live</title>\n"
+        "<link rel=\"icon\" href=\"data:,\">\n<style>\n";
     static const char mid1[] = "</style>\n</head>\n<body>\n"
         "<div id=\"curvefig\"></div>\n<script>\n";
     static const char tail[] =
@@ -186,7 +188,7 @@ do_wait(struct MHD_Connection *c, server_t *sv)
     struct timespec tick = { 0, 100 * 1000 * 1000 };
     cf__live_version(sv->script, now);
     for (int i = 0; since != NULL && strcmp(now, since) == 0 &&
-                    i < WAIT_SECONDS * 10; i++) {
+                    i < WAIT_SECONDS * 10 && !sv->stopping; i++) {
         nanosleep(&tick, NULL);
         cf__live_version(sv->script, now);
     }
@@ -325,6 +327,7 @@ cf__live_serve(const char *script, const cf_script_limits_t *limits,
     fflush(stdout);
     while (sigwait(&stop, &sig) != 0)
         ;
+    sv.stopping = true;
     MHD_stop_daemon(d);
     pthread_mutex_destroy(&sv.run_lock);
     free(sv.page);

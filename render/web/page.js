@@ -12,7 +12,8 @@
 //     input#cf-slider-NAME (type range, data-param NAME), output#cf-value-NAME
 //   #cf-figures            div.cf-figure#cf-figure-NAME per figure, holding
 //                          its <svg>, in which circle.cf-handle#cf-handle-P-I
-//                          (data-param, data-index) are the draggable points
+//                          (data-param, data-index) are the draggable points;
+//                          its data-to-svg: the map data -> SVG units (JSON)
 //   pre#cf-error           the script's error (hidden when there is none)
 //   pre#cf-lua             the values as Lua, button#cf-copy, button#cf-reset
 //   root.dataset.runs      the number of replies shown so far;
@@ -24,7 +25,8 @@ function CurvefigPage(root, engine) {
   var params = [];          // the declarations of the last good reply
   var signature = null;     // of the declarations, to rebuild on a change
   var inFlight = false, pending = false, runs = 0;
-  var drag = null;          // { param, index, fig, circle, pointerId }
+  var drag = null;          // { param, index, fig, svg, circle }
+  var lastFigures = null;   // of the last reply shown
 
   function el(tag, attrs, text) {
     var e = document.createElement(tag);
@@ -145,7 +147,8 @@ function CurvefigPage(root, engine) {
   function showFigures(list) {
     figures.textContent = '';
     list.forEach(function (fig, k) {
-      var box = el('div', { class: 'cf-figure', id: 'cf-figure-' + fig.name });
+      var box = el('div', { class: 'cf-figure', id: 'cf-figure-' + fig.name,
+                            'data-to-svg': JSON.stringify(fig.to_svg) });
       box.innerHTML = uniqueIds(fig.svg, k);
       var svg = box.querySelector('svg');
       if (svg && fig.caption) svg.setAttribute('aria-label', fig.caption);
@@ -187,10 +190,13 @@ function CurvefigPage(root, engine) {
     request();
   }
 
+  // Released: the handles go where the last reply puts them (the map may
+  // have moved with the margins while the point was dragged).
   function pointerUp() {
     if (!drag) return;
     drag.circle.classList.remove('cf-dragging');
     drag = null;
+    if (!inFlight && lastFigures) showFigures(lastFigures);
   }
   window.addEventListener('pointermove', pointerMove);
   window.addEventListener('pointerup', pointerUp);
@@ -227,6 +233,7 @@ function CurvefigPage(root, engine) {
       error.hidden = true;
       error.textContent = '';
       figures.classList.remove('cf-stale');
+      lastFigures = reply.figures;
       if (!drag) showFigures(reply.figures);
       else updateFigures(reply.figures);
       lua.textContent = reply.lua;
@@ -243,8 +250,8 @@ function CurvefigPage(root, engine) {
       list.findIndex(function (f) { return f.name === drag.fig.name; })];
     if (!box) return;
     var svg = box.querySelector('svg');
-    var fresh = svg.querySelector('#cf-handle-' + drag.param + '-' +
-                                  drag.index);
+    var fresh = svg.querySelector('[id="cf-handle-' + drag.param + '-' +
+                                  drag.index + '"]');
     if (fresh) {
       fresh.setAttribute('cx', keep.getAttribute('cx'));
       fresh.setAttribute('cy', keep.getAttribute('cy'));

@@ -1,0 +1,186 @@
+#!/usr/bin/env python3
+"""Latency of `curvefig live`: from an input event to the new drawing.
+
+usage: live_latency.py CURVEFIG SOURCE_DIR [RUNS]
+
+For every shipped interactive example (figures/interactive/*.lua), on a
+server of its own on 127.0.0.1:
+  http     the time from sending the new values (one POST of the run, as
+           the page sends it on a slider's input event or a drag's pointer
+           move) to the whole reply received: the script run in a fresh
+           sandbox, every figure rendered to SVG, the JSON;
+  browser  (with /usr/bin/python3 + selenium + chromedriver) the time in
+           the page from dispatching the slider's input event to the new
+           SVG in the document (performance.now() around it).
+RUNS requests each (default 60), alternating slider values and point
+moves, after 5 warm-up requests.  Prints one JSON line per example and
+measurement: median and 95th percentile in ms; the target is a median
+under 50 ms.
+"""
+import json
+import os
+import re
+import statistics
+import subprocess
+import sys
+import time
+import urllib.request
+
+TARGET_MS = 50
+
+
+def start(tool, script):
+    p = subprocess.Popen([tool, 'live', script, '--port', '0'],
+                         stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                         text=True)
+    for _ in range(3):
+        m = re.search(r'http://127\.0\.0\.1:\d+/[0-9a-f]+/',
+                      p.stdout.readline())
+        if m:
+            return p, m.group(0)
+    p.kill()
+    sys.exit('curvefig live printed no URL (a build without the live '
+             'view?)')
+
+
+def post(url, values):
+    req = urllib.request.Request(url + 'run', data=json.dumps(values)
+                                 .encode(), method='POST')
+    req.add_header('Content-Type', 'application/json')
+    with urllib.request.urlopen(req, timeout=60) as r:
+        return json.loads(r.read())
+
+
+def inputs(params, k):
+    """The values of input event k: a slider moved, or a point dragged."""
+    vals = {}
+    sliders = [p for p in params if p['kind'] == 'slider']
+    pts = [p for p in params if p['kind'] == 'points']
+    if k % 2 == 0 and sliders:
+        s = sliders[(k // 2) % len(sliders)]
+        vals[s['name']] = s['min'] + (s['max'] - s['min']) * \
+            ((k * 0.137) % 1.0)
+    elif pts:
+        p = pts[0]
+        q = [list(xy) for xy in p['default']]
+        i = (k // 2) % len(q)
+        q[i][0] += 0.3 * ((k % 5) - 2) / 2
+        q[i][1] += 0.2 * ((k % 3) - 1)
+        vals[p['name']] = q
+    return vals
+
+
+def percentile(xs, q):
+    xs = sorted(xs)
+    return xs[min(len(xs) - 1, int(round(q * (len(xs) - 1))))]
+
+
+def report(name, what, ms):
+    med = statistics.median(ms)
+    print(json.dumps({'example': name, 'measure': what, 'runs': len(ms),
+                      'median_ms': round(med, 2),
+                      'p95_ms': round(percentile(ms, 0.95), 2),
+                      'target_median_ms': TARGET_MS,
+                      'met': med < TARGET_MS}), flush=True)
+    return med < TARGET_MS
+
+
+def http_latency(url, params, runs):
+    for k in range(5):
+        post(url, inputs(params, k))
+    ms = []
+    for k in range(runs):
+        v = inputs(params, k)
+        t0 = time.perf_counter()
+        reply = post(url, v)
+        ms.append((time.perf_counter() - t0) * 1000)
+        if reply['error'] is not None:
+            sys.exit('script error: ' + reply['error']['message'])
+    return ms
+
+
+# In the page: dispatch a slider's input event, resolve when the page has
+# shown the reply (data-runs grows): the time between, in ms.
+BROWSER_STEP = r'''
+var done = arguments[arguments.length - 1];
+var root = document.getElementById('curvefig');
+var input = document.getElementById('cf-slider-' + arguments[0]);
+var before = Number(root.dataset.runs);
+var obs = new MutationObserver(function () {
+  if (Number(root.dataset.runs) > before && root.dataset.busy === '0') {
+    obs.disconnect();
+    done(performance.now() - t0);
+  }
+});
+obs.observe(root, { attributes: true });
+input.value = arguments[1];
+var t0 = performance.now();
+input.dispatchEvent(new Event('input'));
+'''
+
+
+def browser_driver():
+    try:
+        from selenium import webdriver
+        from selenium.webdriver.chrome.service import Service
+    except ImportError:
+        return None
+    if not (os.access('/usr/bin/chromium', os.X_OK) and
+            os.access('/usr/bin/chromedriver', os.X_OK)):
+        return None
+    opts = webdriver.ChromeOptions()
+    opts.binary_location = '/usr/bin/chromium'
+    for a in ('--headless', '--no-sandbox', '--disable-gpu',
+              '--disable-dev-shm-usage', '--window-size=1400,1000'):
+        opts.add_argument(a)
+    return webdriver.Chrome(service=Service('/usr/bin/chromedriver'),
+                            options=opts)
+
+
+def browser_latency(drv, url, params, runs):
+    drv.get(url)
+    end = time.time() + 20
+    while time.time() < end and drv.execute_script(
+            'return document.getElementById("curvefig").dataset.busy') != '0':
+        time.sleep(0.05)
+    sliders = [p for p in params if p['kind'] == 'slider']
+    ms = []
+    for k in range(runs + 5):
+        s = sliders[k % len(sliders)]
+        v = s['min'] + (s['max'] - s['min']) * ((k * 0.137) % 1.0)
+        t = drv.execute_async_script(BROWSER_STEP, s['name'], v)
+        if k >= 5:
+            ms.append(t)
+    return ms
+
+
+def main():
+    tool, src = sys.argv[1], sys.argv[2]
+    runs = int(sys.argv[3]) if len(sys.argv) > 3 else 60
+    d = os.path.join(src, 'figures', 'interactive')
+    names = sorted(f[:-4] for f in os.listdir(d) if f.endswith('.lua'))
+    drv = browser_driver()
+    if drv is not None:
+        drv.set_script_timeout(60)
+    else:
+        print('# no selenium/chromium for ' + sys.executable +
+              ': the browser measurement is left out', flush=True)
+    try:
+        for name in names:
+            p, url = start(tool, os.path.join(d, name + '.lua'))
+            try:
+                params = post(url, {})['params']
+                report(name, 'http', http_latency(url, params, runs))
+                if drv is not None:
+                    report(name, 'browser', browser_latency(drv, url, params,
+                                                            runs))
+            finally:
+                p.terminate()
+                p.wait(30)
+    finally:
+        if drv is not None:
+            drv.get('about:blank')
+            drv.quit()
+
+
+main()

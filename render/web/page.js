@@ -210,7 +210,9 @@ function CurvefigPage(root, engine) {
       return [p.kind, p.name, p.label, p.min, p.max, p.step, p.default,
               p.figure, p.constrain];
     }));
-    if (reply.error === null || reply.params.length > 0) {
+    // on an error the controls stay as they were (the script may have
+    // stopped before declaring some of them)
+    if (reply.error === null) {
       if (sig !== signature && !drag) {
         signature = sig;
         params = reply.params;

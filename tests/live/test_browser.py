@@ -19,8 +19,10 @@ chromium, chromedriver or selenium.
 import json
 import os
 import re
+import shutil
 import subprocess
 import sys
+import tempfile
 import time
 
 try:
@@ -261,6 +263,61 @@ def test_example(drv, tool, script, name, spec):
         p.wait(10)
 
 
+def wait_for(drv, js, timeout=30):
+    end = time.time() + timeout
+    while time.time() < end:
+        if drv.execute_script(js):
+            return True
+        time.sleep(0.1)
+    return False
+
+
+def test_saving(drv, tool, src):
+    """Saving the script redraws the page: a mistake shows its message
+    and line in the page, the fix brings the figure back."""
+    tmp = tempfile.mkdtemp(prefix='cf-browser-')
+    script = os.path.join(tmp, 'decasteljau.lua')
+    shutil.copy(os.path.join(src, 'figures', 'interactive',
+                             'decasteljau.lua'), script)
+    with open(script) as f:
+        good = f.read()
+    p = subprocess.Popen([tool, 'live', script, '--port', '0'],
+                         stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                         text=True)
+    try:
+        url = re.search(r'http://\S+/', p.stdout.readline() +
+                        p.stdout.readline()).group(0)
+        drv.get(url)
+        settle(drv, 0)
+        time.sleep(0.3)     # the long poll has its version
+        line = good.split('\n').index('local c = bezier(P)') + 2
+        with open(script, 'w') as f:
+            f.write(good.replace('local c = bezier(P)',
+                                 'local c = bezier(P)\nerror("broken")'))
+        shown = wait_for(drv, 'var e = document.getElementById("cf-error");'
+                         'return !e.hidden && e.textContent.indexOf('
+                         '"decasteljau.lua:%d: broken") >= 0;' % line)
+        check(shown, 'saving a broken script shows its error and line %d '
+              'in the page' % line)
+        check(wait_for(drv, 'return document.getElementById("cf-figures")'
+                       '.classList.contains("cf-stale");'),
+              '... the figure stays, faded')
+        with open(script, 'w') as f:
+            f.write(good.replace('default = 0.75', 'default = 0.5'))
+        back = wait_for(drv, 'var e = document.getElementById("cf-error");'
+                        'return e.hidden && !document.getElementById('
+                        '"cf-figures").classList.contains("cf-stale");')
+        check(back, 'saving the fixed script brings the figure back')
+        logs = [e for e in drv.get_log('browser')
+                if e['level'] in ('SEVERE', 'WARNING')]
+        check(logs == [], 'saving: no console errors %s' % logs)
+        drv.get('about:blank')
+    finally:
+        p.terminate()
+        p.wait(10)
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
 def main():
     tool, src = os.path.abspath(sys.argv[1]), sys.argv[2]
     for path in (CHROMIUM, CHROMEDRIVER):
@@ -281,6 +338,8 @@ def main():
             script = os.path.join(src, 'figures', 'interactive',
                                   name + '.lua')
             test_example(drv, tool, script, name, EXAMPLES[name])
+        if not sys.argv[3:]:
+            test_saving(drv, tool, src)
     finally:
         drv.quit()
     shipped = sorted(f[:-4] for f in os.listdir(

@@ -65,13 +65,16 @@ static cf_status_t
 make_job(cf_figure_t *fig, const cf_write_options_t *o, bool need_ink,
          job_t *job, cf_diag_t *diag)
 {
+    bool tight = o->tight || fig->page_mode == CF_PAGE_INK;
+    double pad = fig->page_mode == CF_PAGE_INK ? fig->margin : o->padding;
     memset(job, 0, sizeof *job);
     cf__dl_init(&job->dl);
     if (cf__figure_layout(fig, &job->lay) != CF_STATUS_OK)
         return cf_figure_status(fig, diag);
     cf_figure_get_size(fig, &job->page.width, &job->page.height);
     job->page.background = fig->theme.background;
-    if (need_ink || o->tight) {
+    job->page.label_size = fig->theme.role[CF_ROLE_LABEL].font_size;
+    if (need_ink || tight) {
         double *ink = job->ink, w, h;
         if (cf__figure_build(fig, &job->lay, &job->dl) != CF_STATUS_OK)
             return cf_figure_status(fig, diag);
@@ -80,24 +83,26 @@ make_job(cf_figure_t *fig, const cf_write_options_t *o, bool need_ink,
                                "cairo failed measuring the ink");
         w = ink[2] - ink[0];
         h = ink[3] - ink[1];
-        if (o->tight && w > 0 && h > 0) {
+        if (tight && w > 0 && h > 0) {
             /* the shift goes into the data -> page map, so that the files
             ** carry plain coordinates (no SVG transform attributes) */
-            job->page.width = w + 2 * o->padding;
-            job->page.height = h + 2 * o->padding;
-            job->lay.ox += o->padding - ink[0];
-            job->lay.oy += o->padding - ink[1];
-            job->lay.px += o->padding - ink[0];
-            job->lay.py += o->padding - ink[1];
+            job->page.width = w + 2 * pad;
+            job->page.height = h + 2 * pad;
+            job->lay.ox += pad - ink[0];
+            job->lay.oy += pad - ink[1];
+            job->lay.px += pad - ink[0];
+            job->lay.py += pad - ink[1];
             cf__dl_reset(&job->dl);
-        } else {
+        } else if (!tight) {
             return CF_STATUS_OK;
+        } else {
+            cf__dl_reset(&job->dl);
         }
     }
     if (cf__figure_build(fig, &job->lay, &job->dl) != CF_STATUS_OK)
         return cf_figure_status(fig, diag);
     return cf__figure_check_page(fig, &job->dl, job->page.width,
-                                 job->page.height, !o->tight, diag);
+                                 job->page.height, !tight, diag);
 }
 
 static void
@@ -115,6 +120,10 @@ render_job(cf_figure_t *fig, cf_format_t format, const cf_write_options_t *o,
     cf__page_t pg = job->page;
     unsigned n = cf_figure_steps(fig);
     bool multi;
+    if (fig->background == CF_BACKGROUND_NONE
+        || (fig->background == CF_BACKGROUND_AUTO
+            && format != CF_FORMAT_PNG))
+        pg.background.a = 0;
     if (n > 1 && o->step > 0) {
         pg.first_step = pg.last_step = o->step;
     } else if (n > 1 && format == CF_FORMAT_SVG) {

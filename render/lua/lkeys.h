@@ -46,6 +46,7 @@ typedef enum cf__lua_keys {
     CF__KEYS_LEGEND,
     CF__KEYS_INSET,
     CF__KEYS_PANELS,
+    CF__KEYS_THEME,
     CF__KEYS_COUNT_
 } cf__lua_keys_t;
 

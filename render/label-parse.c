@@ -361,7 +361,8 @@ parse_accent(parser_t *p, const font_t *f, double x, double y, piece_t *pc,
     p->lab->merge_ok = false;
     n = cf__utf8_encode(acc_cp, buf);
     if (acc_cp == 0x2192) {
-        g.size = f->size * SCRIPT_RATIO;   /* a small arrow */
+        /* the math font's arrow at half size: TeX's \vec, 0.5 em wide */
+        g.size = f->size * SCRIPT2_RATIO;
         g.math = true;
     }
     if (isnan(cf__label_put_text(p->lab, &g, x, y, buf, n))) {

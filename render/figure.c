@@ -289,6 +289,28 @@ cf_figure_set_background(cf_figure_t *fig, cf_background_t mode)
 }
 
 cf_status_t
+cf_figure_get_fit(const cf_figure_t *fig, double *margin_bp,
+                  bool *keep_aspect)
+{
+    size_t i;
+    bool keep;
+    if (fig == NULL)
+        return CF_STATUS_INVALID_ARG;
+    keep = fig->aspect == 1;
+    if (fig->aspect < 0) {
+        keep = true;
+        for (i = 0; i < fig->count; i++)
+            if (fig->els[i]->kind->flags & CF__KIND_AXES)
+                keep = false;
+    }
+    if (margin_bp != NULL)
+        *margin_bp = fig->margin;
+    if (keep_aspect != NULL)
+        *keep_aspect = keep;
+    return CF_STATUS_OK;
+}
+
+cf_status_t
 cf_figure_set_clip(cf_figure_t *fig, bool clip)
 {
     CF__FIG_CHECK(fig);

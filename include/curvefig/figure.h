@@ -113,6 +113,10 @@ CF_API cf_status_t cf_figure_set_window_auto(cf_figure_t *fig);
 ** kept, except in figures with axes (function plots). */
 CF_API cf_status_t cf_figure_set_fit(cf_figure_t *fig, double margin_bp,
                                      bool keep_aspect);
+/* The margin (bp) and whether the aspect ratio is kept (automatic: false
+** with axes); either output may be NULL.  INVALID_ARG for a NULL fig. */
+CF_API cf_status_t cf_figure_get_fit(const cf_figure_t *fig,
+                                     double *margin_bp, bool *keep_aspect);
 /* What the written page is.  CF_PAGE_FIXED (the default): width x
 ** height, the drawing at least the margin inside it.  CF_PAGE_INK: the ink
 ** box of everything drawn (every overlay step together) plus the margin

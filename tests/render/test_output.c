@@ -308,9 +308,15 @@ test_page_is_ink_box(void **state)
     assert_true(ink[0] >= 0 && ink[1] >= 0 && ink[2] <= W && ink[3] <= H);
     cf_free(png.data);
 
-    /* tight: EPS bounding box, PDF page, SVG viewBox = ink box size */
+    /* tight: EPS bounding box, PDF page, SVG viewBox = ink box size, the
+    ** size of the tight PNG's ink (the drawing moved by the crop may
+    ** place an automatic label a little differently from the untrimmed
+    ** page, so its own pixels) */
     o.tight = true;
     assert_int_equal(cf_figure_ink_box(fig, &o, NULL, &pw, &ph, NULL), 0);
+    png = render(fig, CF_FORMAT_PNG, &o);
+    pixel_box(&png, box, &w, &h);
+    cf_free(png.data);
     assert_true(fabs(pw - (box[2] - box[0]) / 4.0) <= 1);
     assert_true(fabs(ph - (box[3] - box[1]) / 4.0) <= 1);
     eps = render(fig, CF_FORMAT_EPS, &o);

@@ -787,6 +787,7 @@ test_figure(void **state)
     BAD(cf_figure_dump(fig, NULL, NULL, &size, NULL));
     BAD(cf_figure_set_clip(NULL, true));
     BAD(cf_figure_set_page_mode(NULL, CF_PAGE_INK));
+    BAD(cf_figure_get_fit(NULL, NULL, NULL));
     cf_label_each_command(NULL, NULL);   /* no visitor: nothing */
     BAD(cf_theme_set_fonts(NULL, "sans", 10, NULL));
     BAD(cf_figure_set_background(NULL, CF_BACKGROUND_NONE));

@@ -53,7 +53,7 @@ f:decasteljau(c, t, { colors = { "grey", blue, orange, "black" },
                                 marker_color = "black" } })
 local place = {
   [0] = { "s", "nw", "ne", "auto" },
-  [1] = { "w", "n", "auto" },
+  [1] = { "w", "n", "sw" },
   [2] = { "auto", "ne" },
   [3] = { "auto" },
 }
@@ -63,7 +63,10 @@ for r = 0, n do
     if r == 0 then text = string.format("b_%d", i)
     elseif r == n then text = "x(0.4) = b_0^3"
     else text = string.format("b_%d^%d", i, r) end
+    -- b_2^1 sits in the narrow gap between the leg b_2 b_3 and the
+    -- dotted line below b_2: south-west of its point, a little farther
     f:label(L[r + 1][i + 1], text, { place = place[r][i + 1],
-                                     offset = r == n and 6 or nil })
+                                     offset = (r == n or (r == 1 and i == 2))
+                                              and 6 or nil })
   end
 end

@@ -38,7 +38,7 @@ f:tangent(c, 1, { scale = 1 / 3, color = red, width = 1.6 })
 f:points({ b[1], b[4] }, { marker = "dot", marker_size = 6, color = "black",
                          marker_color = "black" })
 f:label(b[1], "x(0) = b_0", { place = "e" })
-f:label(b[2], "b_1", { place = "w" })
+f:label(b[2], "b_1", { place = "nw" })
 f:label(b[3], "b_2", { place = "ne" })
 f:label(b[4], "x(1) = b_3", { place = "sw" })
 f:label(c:eval(0.5), "x(t)", { place = "s" })

@@ -52,7 +52,7 @@ for k = 0, n do
   for i = 0, n - k do
     f:label(L[k + 1][i + 1], text[k][i + 1],
             { place = place[k][i + 1],
-              offset = k == n and 24 or (k == 2 and i == 1) and 32 or nil })
+              offset = k == n and 24 or (k == 2 and i == 1) and 36 or nil })
   end
 end
 f:label(ra:eval(0.35), "r^a", { place = "se", color = ca })

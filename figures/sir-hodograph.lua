@@ -35,7 +35,7 @@ local f = figure{
 -- the hodograph's frame: axes through O, and its scale
 f:arrow({ O[1] - 0.5, O[2] }, { 3.4, 0 }, { color = "grey", width = 0.6 })
 f:arrow({ O[1], O[2] - 2.7 }, { 0, 5.6 }, { color = "grey", width = 0.6 })
-f:label({ O[1] + 3.4, O[2] - 2.1 }, "\\text{měřítko} 1 : 3", { place = "w", color = "grey", font_size = 8 })
+f:label({ O[1] + 3.4, O[2] - 2.1 }, "\\text{měřítko }1 : 3", { place = "w", color = "grey", font_size = 8 })
 for i = 1, #hq do
   f:arrow_to(O, hq[i], { color = "grey", width = 0.6, dash = "dashed" })
 end

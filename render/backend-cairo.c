@@ -181,6 +181,9 @@ const cf__backend_t cf__cairo_backend = {
     draw_marker, draw_text, end_page
 };
 
+/* device units per bp when measuring ink */
+#define INK_SCALE 64.0
+
 int
 cf__cairo_ink(const cf__dl_t *dl, size_t from, size_t to, double ink[4])
 {
@@ -190,14 +193,17 @@ cf__cairo_ink(const cf__dl_t *dl, size_t from, size_t to, double ink[4])
     int bad;
     rec = cairo_recording_surface_create(CAIRO_CONTENT_COLOR_ALPHA, NULL);
     cr = cairo_create(rec);
+    /* cairo rounds the extents out to whole device units: drawn at
+    ** INK_SCALE device units per bp, the box is exact to 1/INK_SCALE bp */
+    cairo_scale(cr, INK_SCALE, INK_SCALE);
     cf__dl_play(dl, from, to, &cf__cairo_backend, cr);
     cairo_destroy(cr);
     cairo_recording_surface_ink_extents(rec, &x, &y, &w, &h);
     bad = cairo_surface_status(rec) != CAIRO_STATUS_SUCCESS;
     cairo_surface_destroy(rec);
-    ink[0] = x;
-    ink[1] = y;
-    ink[2] = x + w;
-    ink[3] = y + h;
+    ink[0] = x / INK_SCALE;
+    ink[1] = y / INK_SCALE;
+    ink[2] = (x + w) / INK_SCALE;
+    ink[3] = (y + h) / INK_SCALE;
     return bad;
 }

@@ -120,6 +120,7 @@ begin_page(void *ctx, const cf__page_t *pg)
     const char *s;
     g->height = pg->height;
     g->width = pg->width;
+    g->base = pg->label_size > 0 ? pg->label_size : CF__PGF_BASE_SIZE;
     g->depth = 0;
     g->overlays = 0;
     put(g, "% curvefig picture, ");
@@ -134,7 +135,8 @@ begin_page(void *ctx, const cf__page_t *pg)
         put(g, "\n");
     }
     put(g, "\\begin{pgfpicture}\n"
-           "\\providecommand\\text[1]{\\mbox{#1}}\n");
+           "\\providecommand\\text[1]{\\mbox{#1}}\n"
+           "\\providecommand\\boldsymbol[1]{\\mbox{\\boldmath$#1$}}\n");
     if (pg->background.a > 0) {
         put(g, "\\begin{pgfscope}");
         set_fill(g, &pg->background, 1);
@@ -416,10 +418,11 @@ pgftext(cf__pgf_t *g, const cf__text_op_t *t, const char *tex, double dx,
     put(g, "at=");
     put_point(g, t->px + places[p].sx * d + dx, t->py + places[p].sy * d + dy);
     put(g, "]{");
-    /* the size relative to the document's: 10 pt labels at its size */
-    if (fabs(t->font_size / CF__PGF_BASE_SIZE - 1) > 0.005) {
+    /* the size relative to the document's: the theme's labels at its
+    ** size */
+    if (fabs(t->font_size / g->base - 1) > 0.005) {
         put(g, "\\scalebox{");
-        put_num(g, t->font_size / CF__PGF_BASE_SIZE);
+        put_num(g, t->font_size / g->base);
         put(g, "}{");
         put(g, tex);
         put(g, "}");

@@ -25,6 +25,8 @@ typedef struct cf__page {
     cf_color_t background;     /* a = 0: none */
     bool raster;               /* whole pixels: the background covers the
                                   partly covered last row and column */
+    double label_size;         /* the theme's label size, bp (0: 10 TeX
+                                  pt): PGF sets it at the document's */
     unsigned first_step, last_step;   /* overlay steps (render/overlay-
                                   spec.h): 0, 0 every operation on one
                                   page; else one page per step of
@@ -88,14 +90,16 @@ extern const cf__backend_t cf__dump_backend;
 ** with cf__pgf_fini.  end_page fails when out ran out of memory or a
 ** coordinate lies beyond CF__PGF_MAX_BP (bad_value: the first). */
 #define CF__PGF_MAX_BP 16000.0   /* TeX's largest dimension: 16322 bp */
-/* Labels of this size (10 TeX pt, the theme's) are set at the document's
-** size; others scaled by their ratio to it (\scalebox). */
+/* Labels of the theme's size (the page's label_size, else this: 10 TeX
+** pt) are set at the document's size; others scaled by their ratio to
+** it (\scalebox). */
 #define CF__PGF_BASE_SIZE (10.0 * 72.0 / 72.27)
 struct cf__buf;
 typedef struct cf__pgf {
     struct cf__buf *out;
     const char *title;
     double width, height;
+    double base;                   /* label size set at the document's */
     int depth;                     /* groups open */
     unsigned long long overlays;   /* bit k: group k has an overlay */
     bool range_error;

@@ -264,6 +264,53 @@ cf_figure_set_fit(cf_figure_t *fig, double margin_bp, bool keep_aspect)
 }
 
 cf_status_t
+cf_figure_set_page_mode(cf_figure_t *fig, cf_page_mode_t mode)
+{
+    CF__FIG_CHECK(fig);
+    if (mode != CF_PAGE_FIXED && mode != CF_PAGE_INK)
+        return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
+                           "unknown page mode %d (use CF_PAGE_FIXED or "
+                           "CF_PAGE_INK)", (int)mode);
+    fig->page_mode = mode;
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_figure_set_background(cf_figure_t *fig, cf_background_t mode)
+{
+    CF__FIG_CHECK(fig);
+    if (mode != CF_BACKGROUND_AUTO && mode != CF_BACKGROUND_ALWAYS
+        && mode != CF_BACKGROUND_NONE)
+        return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
+                           "unknown background mode %d (use "
+                           "CF_BACKGROUND_AUTO, _ALWAYS or _NONE)", (int)mode);
+    fig->background = mode;
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_figure_get_fit(const cf_figure_t *fig, double *margin_bp,
+                  bool *keep_aspect)
+{
+    size_t i;
+    bool keep;
+    if (fig == NULL)
+        return CF_STATUS_INVALID_ARG;
+    keep = fig->aspect == 1;
+    if (fig->aspect < 0) {
+        keep = true;
+        for (i = 0; i < fig->count; i++)
+            if (fig->els[i]->kind->flags & CF__KIND_AXES)
+                keep = false;
+    }
+    if (margin_bp != NULL)
+        *margin_bp = fig->margin;
+    if (keep_aspect != NULL)
+        *keep_aspect = keep;
+    return CF_STATUS_OK;
+}
+
+cf_status_t
 cf_figure_set_clip(cf_figure_t *fig, bool clip)
 {
     CF__FIG_CHECK(fig);

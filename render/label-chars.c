@@ -2,6 +2,7 @@
 ** The characters of labels: UTF-8, and the tables of symbol commands
 ** (\\alpha, \\leq), spaces (\\, \\quad) and accents (\\hat).
 */
+#include <stdio.h>
 #include <string.h>
 
 #include "label-impl.h"
@@ -119,12 +120,15 @@ static const command_t commands[] = {
     { "approx", 0x2248, CLS_REL, 0 },  { "equiv", 0x2261, CLS_REL, 0 },
     { "to", 0x2192, CLS_REL, 0 },      { "rightarrow", 0x2192, CLS_REL, 0 },
     { "mapsto", 0x21a6, CLS_REL, 0 },  { "in", 0x2208, CLS_REL, 0 },
-    { "subset", 0x2282, CLS_REL, 0 },
+    { "subset", 0x2282, CLS_REL, 0 },  { "sim", 0x223c, CLS_REL, 0 },
+    { "perp", 0x22a5, CLS_REL, 0 },    { "parallel", 0x2225, CLS_REL, 0 },
+    { "leftarrow", 0x2190, CLS_REL, 0 }, { "Rightarrow", 0x21d2, CLS_REL, 0 },
+    { "cup", 0x222a, CLS_BIN, 0 },     { "cap", 0x2229, CLS_BIN, 0 },
     { "infty", 0x221e, CLS_ORD, 0 },   { "partial", 0x2202, CLS_ORD, 1 },
     { "nabla", 0x2207, CLS_ORD, 0 },   { "ldots", 0x2026, CLS_ORD, 0 },
     { "dots", 0x2026, CLS_ORD, 0 },    { "cdots", 0x22ef, CLS_ORD, 0 },
-    { "sum", 0x2211, CLS_ORD, 0 },     { "prod", 0x220f, CLS_ORD, 0 },
-    { "int", 0x222b, CLS_ORD, 0 },     { "prime", 0x2032, CLS_ORD, 0 },
+    { "sum", 0x2211, CLS_OP, 0 },      { "prod", 0x220f, CLS_OP, 0 },
+    { "int", 0x222b, CLS_OP, 0 },     { "prime", 0x2032, CLS_ORD, 0 },
     { "ell", 0x2113, CLS_ORD, 0 },     { "deg", 0xb0, CLS_ORD, 0 },
     { "langle", 0x27e8, CLS_OPEN, 0 }, { "rangle", 0x27e9, CLS_CLOSE, 0 },
     { "{", '{', CLS_OPEN, 0 },         { "}", '}', CLS_CLOSE, 0 },
@@ -139,9 +143,9 @@ static const struct {
     const char *name;
     double em;
 } spaces[] = {
-    { ",", 3.0 / 18 }, { ":", 4.0 / 18 }, { ";", 5.0 / 18 },
-    { "!", -3.0 / 18 }, { " ", 6.0 / 18 }, { "quad", 1.0 },
-    { "qquad", 2.0 },
+    { ",", 3.0 / 18 }, { ":", 4.0 / 18 }, { ">", 4.0 / 18 },
+    { ";", 5.0 / 18 }, { "!", -3.0 / 18 }, { " ", 6.0 / 18 },
+    { "enspace", 0.5 }, { "quad", 1.0 }, { "qquad", 2.0 },
 };
 
 /* Accents over a single character (spacing forms, placed by hand). */
@@ -201,5 +205,117 @@ cf__label_accent(const char *name, unsigned *cp)
             return true;
         }
     }
+    return false;
+}
+
+/* The alphabets of mathematics (Unicode's Mathematical Alphanumeric
+** Symbols, as Latin Modern Math draws them): italic and bold italic
+** Latin and Greek, and the calligraphic capitals, with the letters
+** Unicode keeps in Letterlike Symbols. */
+unsigned
+cf__math_italic(unsigned cp, bool bold)
+{
+    static const struct {
+        unsigned from, to;
+    } greek_var[] = {
+        { 0x3f5, 0x1d716 - 0x1d6fc }, { 0x3d1, 0x1d717 - 0x1d6fc },
+        { 0x3d5, 0x1d719 - 0x1d6fc }, { 0x3f1, 0x1d71a - 0x1d6fc },
+        { 0x3d6, 0x1d71b - 0x1d6fc }, { 0x2202, 0x1d715 - 0x1d6fc },
+    };
+    size_t i;
+    if (cp >= 'A' && cp <= 'Z')
+        return (bold ? 0x1d468 : 0x1d434) + (cp - 'A');
+    if (cp >= 'a' && cp <= 'z') {
+        if (cp == 'h' && !bold)
+            return 0x210e;   /* Planck's constant: the math italic h */
+        return (bold ? 0x1d482 : 0x1d44e) + (cp - 'a');
+    }
+    if (cp >= 0x3b1 && cp <= 0x3c9)
+        return (bold ? 0x1d736 : 0x1d6fc) + (cp - 0x3b1);
+    for (i = 0; i < sizeof greek_var / sizeof greek_var[0]; i++)
+        if (cp == greek_var[i].from)
+            return (bold ? 0x1d736 : 0x1d6fc) + greek_var[i].to;
+    return 0;
+}
+
+unsigned
+cf__math_cal(unsigned cp)
+{
+    static const struct {
+        char letter;
+        unsigned cp;
+    } holes[] = {
+        { 'B', 0x212c }, { 'E', 0x2130 }, { 'F', 0x2131 }, { 'H', 0x210b },
+        { 'I', 0x2110 }, { 'L', 0x2112 }, { 'M', 0x2133 }, { 'R', 0x211b },
+    };
+    size_t i;
+    if (cp < 'A' || cp > 'Z')
+        return 0;
+    for (i = 0; i < sizeof holes / sizeof holes[0]; i++)
+        if (holes[i].letter == (char)cp)
+            return holes[i].cp;
+    return 0x1d49c + (cp - 'A');
+}
+
+/* Commands that take an argument (render/label-parse.c), for the list. */
+static const struct {
+    const char *name;
+    const char *what;
+} structures[] = {
+    { "frac", "\\frac{num}{den}: a fraction" },
+    { "mathrm", "\\mathrm{...}: upright" },
+    { "text", "\\text{...}: text (upright, spaces kept)" },
+    { "operatorname", "\\operatorname{...}: an operator name" },
+    { "mathit", "\\mathit{...}: italic" },
+    { "mathbf", "\\mathbf{...}: bold upright" },
+    { "boldsymbol", "\\boldsymbol{...}: bold, letters bold italic" },
+    { "mathcal", "\\mathcal{A}: calligraphic capitals" },
+    { "overline", "\\overline{...}: a rule over the group" },
+};
+
+void
+cf_label_each_command(void (*visit)(const char *kind, const char *name,
+                                     const char *what, void *ctx),
+                       void *ctx)
+{
+    static const char *const cls_name[] = {
+        "", "ordinary", "large operator", "binary operator", "relation",
+        "opening", "closing", "punctuation", "inner", "space",
+    };
+    char buf[64];
+    size_t i;
+    if (visit == NULL)
+        return;
+    for (i = 0; i < sizeof commands / sizeof commands[0]; i++) {
+        char u[8];
+        size_t n = cf__utf8_encode(commands[i].cp, u);
+        u[n] = '\0';
+        snprintf(buf, sizeof buf, "%s %s%s", u, cls_name[commands[i].cls],
+                 commands[i].italic ? ", italic" : "");
+        visit("symbol", commands[i].name, buf, ctx);
+    }
+    for (i = 0; i < sizeof spaces / sizeof spaces[0]; i++) {
+        snprintf(buf, sizeof buf, "a space of %g mu (%.4g em)",
+                 spaces[i].em * 18, spaces[i].em);
+        visit("space", spaces[i].name, buf, ctx);
+    }
+    for (i = 0; i < sizeof accents / sizeof accents[0]; i++) {
+        char u[8];
+        size_t n = cf__utf8_encode(accents[i].cp, u);
+        u[n] = '\0';
+        snprintf(buf, sizeof buf, "an accent %s over one character", u);
+        visit("accent", accents[i].name, buf, ctx);
+    }
+    for (i = 0; i < sizeof structures / sizeof structures[0]; i++)
+        visit("structure", structures[i].name, structures[i].what, ctx);
+}
+
+bool
+cf__label_structure(const char *name)
+{
+    size_t i;
+    for (i = 0; i < sizeof structures / sizeof structures[0]; i++)
+        if (strcmp(name, structures[i].name) == 0)
+            return true;
     return false;
 }

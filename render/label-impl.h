@@ -28,6 +28,7 @@ typedef struct run {
     int level;
     cf_label_kind_t kind;
     bool italic, bold;
+    bool math;                       /* set in the math font */
     PangoLayout *layout;
     double width, ascent, descent;   /* logical */
     double ink[4];                   /* x0 y0 x1 y1 relative to origin,
@@ -46,6 +47,8 @@ struct cf_label {
     size_t unknown;
     PangoContext *ctx;
     bool merge_ok;            /* the last atom may be extended */
+    bool tex_math;            /* a TeX family: letters of mathematics in
+                                 the math font's italic alphabet */
     cf_label_box_t *boxes;    /* public view of the runs */
 };
 
@@ -54,12 +57,18 @@ typedef struct font {
     int level;
     cf_label_kind_t kind;
     bool italic, bold;
+    bool math;            /* glyphs of the math font (CF__MATH_FAMILY) */
+    bool boldsymbol;      /* \boldsymbol: letters bold italic */
+    bool cal;             /* \mathcal: capitals calligraphic */
     bool text;            /* text mode: upright, no scripts */
 } font_t;
 
-/* Spacing classes of atoms (TeX's, text style). */
-enum { CLS_NONE, CLS_ORD, CLS_BIN, CLS_REL, CLS_OPEN, CLS_CLOSE,
-       CLS_PUNCT, CLS_SPACE };
+/* The math font: TeX's symbols and its math italic alphabet. */
+#define CF__MATH_FAMILY "Latin Modern Math"
+
+/* Spacing classes of atoms (TeX's). */
+enum { CLS_NONE, CLS_ORD, CLS_OP, CLS_BIN, CLS_REL, CLS_OPEN, CLS_CLOSE,
+       CLS_PUNCT, CLS_INNER, CLS_SPACE };
 
 /* ---- label-runs.c ------------------------------------------------------- */
 
@@ -91,6 +100,13 @@ bool cf__label_has_dollar(const char *text);
 const char *cf__label_symbol_name(unsigned cp);
 /* An accent command: the code point of its spacing form. */
 bool cf__label_accent(const char *name, unsigned *cp);
+/* The math italic (bold: bold italic) form of a Latin or Greek letter or
+** \partial in Latin Modern Math; 0 for another character. */
+unsigned cf__math_italic(unsigned cp, bool bold);
+/* The calligraphic form of a capital letter (\mathcal); 0 otherwise. */
+unsigned cf__math_cal(unsigned cp);
+/* Whether name is a command with an argument (\frac, \mathbf, ...). */
+bool cf__label_structure(const char *name);
 
 /* ---- label-parse.c ------------------------------------------------------ */
 

@@ -95,16 +95,53 @@ shift_runs(cf_label_t *lab, size_t first, size_t end, double dy)
         lab->runs[i].y += dy;
 }
 
+/* The form of code point *cp in mathematics, in font g (italic set for
+** a letter): a letter of a TeX family in the math italic (or bold italic)
+** alphabet of the math font, a calligraphic capital, TeX's symbols
+** (operators, relations, arrows) from the math font too.  False after an
+** error. */
+static bool
+math_form(parser_t *p, font_t *g, unsigned *cp, piece_t *pc)
+{
+    unsigned m = 0;
+    if (g->cal) {
+        m = cf__math_cal(*cp);
+        if (m == 0) {
+            perr(p, p->pos, "\\mathcal takes capital letters A-Z");
+            return false;
+        }
+    } else if (g->italic && p->lab->tex_math) {
+        m = cf__math_italic(*cp, g->boldsymbol);
+    } else if (!g->italic && ((*cp >= 0x2016 && *cp <= 0x2bff)
+                              || *cp == 0xd7 || *cp == 0xb1
+                              || *cp == 0xac)) {
+        g->math = true;
+        g->bold = false;
+    }
+    if (m != 0) {
+        /* the glyph is italic itself: the run stays marked italic */
+        *cp = m;
+        g->math = true;
+        g->italic = !g->cal;
+        g->bold = false;
+    }
+    (void)pc;
+    return true;
+}
+
 /* Emit one code point as an atom. */
 static bool
 emit_char(parser_t *p, const font_t *f, unsigned cp, bool italic, int cls,
           double x, double y, piece_t *pc)
 {
     char buf[8];
-    size_t n = cf__utf8_encode(cp, buf);
+    size_t n;
     font_t g = *f;
     double nx;
     g.italic = italic;
+    if (!f->text && !math_form(p, &g, &cp, pc))
+        return false;
+    n = cf__utf8_encode(cp, buf);
     piece_init(pc, p->lab, x);
     /* only ordinary atoms continue a run: operators get spaces */
     p->lab->merge_ok = p->lab->merge_ok && cls == CLS_ORD;
@@ -186,6 +223,30 @@ move_runs(cf_label_t *lab, size_t first, size_t end, double dx, double dy)
     }
 }
 
+/* A rule of thickness th and width w, its bottom at (x, y), as a run
+** without text; false when out of memory. */
+static bool
+add_rule(parser_t *p, const font_t *f, double x, double y, double w,
+         double th)
+{
+    run_t *r;
+    if (isnan(cf__label_put_text(p->lab, f, x, y, "", 0))) {
+        pnomem(p);
+        return false;
+    }
+    r = &p->lab->runs[p->lab->count - 1];
+    r->rule_h = th;
+    r->width = w;
+    r->ascent = th;
+    r->descent = 0;
+    r->ink[0] = 0;
+    r->ink[1] = -th;
+    r->ink[2] = w;
+    r->ink[3] = 0;
+    p->lab->merge_ok = false;
+    return true;
+}
+
 /* \frac{num}{den}: both at the next script level, centred over each
 ** other around a rule on the math axis (TeX rule 15, text style: num2 =
 ** 0.394 em, denom2 = 0.345 em, axis 0.25 em, rule 0.04 em, clearance one
@@ -198,7 +259,6 @@ parse_frac(parser_t *p, const font_t *f, double x, double y, piece_t *pc,
     font_t g;
     double s = f->size, base, wn, wd, w, pad = 0.12 * s, th = 0.04 * s;
     double axis = 0.25 * s, up = 0.394 * s, down = 0.345 * s;
-    run_t *r;
     int k;
 
     base = f->level == 0 ? s : s / (f->level == 1 ? SCRIPT_RATIO
@@ -226,22 +286,8 @@ parse_frac(parser_t *p, const font_t *f, double x, double y, piece_t *pc,
         down = den.top + th - (axis - th / 2);
     move_runs(p->lab, num.first, num.end, (w - wn) / 2, up);
     move_runs(p->lab, den.first, den.end, (w - wd) / 2, -down);
-    /* the rule, as a run without text */
-    if (isnan(cf__label_put_text(p->lab, f, x + pad, y + axis - th / 2, "",
-                                 0))) {
-        pnomem(p);
+    if (!add_rule(p, f, x + pad, y + axis - th / 2, w, th))
         return false;
-    }
-    r = &p->lab->runs[p->lab->count - 1];
-    r->rule_h = th;
-    r->width = w;
-    r->ascent = th;
-    r->descent = 0;
-    r->ink[0] = 0;
-    r->ink[1] = -th;
-    r->ink[2] = w;
-    r->ink[3] = 0;
-    p->lab->merge_ok = false;
     pc->first = num.first;
     pc->end = p->lab->count;
     pc->x0 = x;
@@ -314,8 +360,11 @@ parse_accent(parser_t *p, const font_t *f, double x, double y, piece_t *pc,
     g.italic = false;
     p->lab->merge_ok = false;
     n = cf__utf8_encode(acc_cp, buf);
-    if (acc_cp == 0x2192)
-        g.size = f->size * SCRIPT_RATIO;   /* a small arrow */
+    if (acc_cp == 0x2192) {
+        /* the math font's arrow at half size: TeX's \vec, 0.5 em wide */
+        g.size = f->size * SCRIPT2_RATIO;
+        g.math = true;
+    }
     if (isnan(cf__label_put_text(p->lab, &g, x, y, buf, n))) {
         pnomem(p);
         return false;
@@ -332,7 +381,9 @@ parse_font_command(parser_t *p, const font_t *f, const char *name,
 {
     font_t g = *f;
     g.italic = strcmp(name, "mathit") == 0;
-    g.bold = strcmp(name, "mathbf") == 0;
+    g.boldsymbol = strcmp(name, "boldsymbol") == 0;
+    g.bold = strcmp(name, "mathbf") == 0 || g.boldsymbol;
+    g.cal = strcmp(name, "mathcal") == 0;
     g.text = strcmp(name, "text") == 0 || strcmp(name, "mathrm") == 0
         || strcmp(name, "operatorname") == 0;
     while (p->pos < p->len && p->s[p->pos] == ' ')
@@ -344,12 +395,41 @@ parse_font_command(parser_t *p, const font_t *f, const char *name,
     return parse_atom(p, &g, x, y, pc);
 }
 
+/* \overline{...}: the group, and a rule of the default rule thickness
+** three thicknesses above its ink, as wide as the group (TeX rule 9). */
+static bool
+parse_overline(parser_t *p, const font_t *f, double x, double y,
+               piece_t *pc, size_t at)
+{
+    double th = 0.04 * f->size;
+    size_t first;
+    while (p->pos < p->len && p->s[p->pos] == ' ')
+        p->pos++;
+    if (p->pos >= p->len || p->s[p->pos] != '{') {
+        perr(p, at, "\\overline needs a {group}");
+        return false;
+    }
+    p->lab->merge_ok = false;
+    if (!parse_atom(p, f, x, y, pc))
+        return false;
+    first = pc->first;
+    piece_ink(p->lab, pc, y);
+    if (!add_rule(p, f, pc->x0, y + fmax(pc->top, 0.431 * f->size) + 3 * th,
+                  pc->x1 - pc->x0, th))
+        return false;
+    pc->first = first;
+    pc->end = p->lab->count;
+    pc->cls = CLS_ORD;
+    pc->group = true;
+    piece_ink(p->lab, pc, y);
+    return true;
+}
+
 static bool
 is_font_command(const char *name)
 {
-    return strcmp(name, "mathrm") == 0 || strcmp(name, "text") == 0
-        || strcmp(name, "mathbf") == 0 || strcmp(name, "mathit") == 0
-        || strcmp(name, "operatorname") == 0;
+    return cf__label_structure(name) && strcmp(name, "frac") != 0
+        && strcmp(name, "overline") != 0;
 }
 
 /* A command after '\\' at byte at: a space, a symbol, an accent, a
@@ -378,12 +458,15 @@ parse_command(parser_t *p, const font_t *f, double x, double y,
         return true;
     }
     if (cf__label_symbol(name, &cp, &cls, &italic))
-        return emit_char(p, f, cp, math && italic && !f->bold,
+        return emit_char(p, f, cp,
+                         math && italic && (!f->bold || f->boldsymbol),
                          math ? cls : CLS_ORD, x, y, pc);
     if (cf__label_accent(name, &cp))
         return parse_accent(p, f, x, y, pc, at, cp);
     if (strcmp(name, "frac") == 0)
         return parse_frac(p, f, x, y, pc, at);
+    if (strcmp(name, "overline") == 0)
+        return parse_overline(p, f, x, y, pc, at);
     if (is_font_command(name))
         return parse_font_command(p, f, name, x, y, pc, at);
     snprintf(msg, sizeof msg, "unknown command \\%s", name);
@@ -423,7 +506,7 @@ math_char(unsigned *cp, bool *italic, const font_t *f)
     *italic = false;
     if ((*cp >= 'a' && *cp <= 'z') || (*cp >= 'A' && *cp <= 'Z')
         || (*cp >= 0x3b1 && *cp <= 0x3c9)) {   /* lowercase Greek */
-        *italic = !f->bold;
+        *italic = !f->bold || f->boldsymbol;
         return CLS_ORD;
     }
     switch (*cp) {
@@ -444,6 +527,11 @@ math_char(unsigned *cp, bool *italic, const font_t *f)
         return CLS_OPEN;
     case ')':
     case ']':
+        return CLS_CLOSE;
+    case ':':
+        return CLS_REL;
+    case '!':
+    case '?':
         return CLS_CLOSE;
     case ',':
     case ';':
@@ -482,22 +570,35 @@ parse_atom(parser_t *p, const font_t *f, double x, double y, piece_t *pc)
     return emit_char(p, f, cp, italic, cls, x, y, pc);
 }
 
-/* Space in em between atoms of classes a and b (TeX's table, text style;
-** scripts get none). */
+/* TeX's spaces between atoms (The TeXbook, chapter 18, the table of
+** rule 20): 1 thin (3 mu), 2 medium (4 mu), 3 thick (5 mu); negative:
+** only in text style, not in scripts.  Rows: the left atom's class;
+** columns: the right one's, in the order ORD OP BIN REL OPEN CLOSE PUNCT
+** INNER. */
+static const signed char space_table[8][8] = {
+    /* ORD   */ { 0, 1, -2, -3, 0, 0, 0, -1 },
+    /* OP    */ { 1, 1, 0, -3, 0, 0, 0, -1 },
+    /* BIN   */ { -2, -2, 0, 0, -2, 0, 0, -2 },
+    /* REL   */ { -3, -3, 0, 0, -3, 0, 0, -3 },
+    /* OPEN  */ { 0, 0, 0, 0, 0, 0, 0, 0 },
+    /* CLOSE */ { 0, 1, -2, -3, 0, 0, 0, -1 },
+    /* PUNCT */ { -1, -1, 0, -1, -1, -1, -1, -1 },
+    /* INNER */ { -1, 1, -2, -3, -1, 0, -1, -1 },
+};
+
+/* Space in em (18 mu) between atoms of classes a and b at script level
+** level (0 text style). */
 static double
-atom_space(int a, int b)
+atom_space(int a, int b, int level)
 {
-    if (a == CLS_NONE || a == CLS_SPACE || b == CLS_SPACE)
+    static const double mu[4] = { 0, 3, 4, 5 };
+    int v;
+    if (a < CLS_ORD || a > CLS_INNER || b < CLS_ORD || b > CLS_INNER)
         return 0;
-    if (b == CLS_REL && a != CLS_REL && a != CLS_OPEN)
-        return 5.0 / 18;
-    if (a == CLS_REL && b != CLS_REL && b != CLS_CLOSE && b != CLS_PUNCT)
-        return 5.0 / 18;
-    if (b == CLS_BIN || a == CLS_BIN)
-        return 4.0 / 18;
-    if (a == CLS_PUNCT)
-        return 3.0 / 18;
-    return 0;
+    v = space_table[a - CLS_ORD][b - CLS_ORD];
+    if (v < 0 && level > 0)
+        return 0;
+    return mu[v < 0 ? -v : v] / 18;
 }
 
 /* Attach scripts after the nucleus nuc (base size f->size). */
@@ -574,35 +675,14 @@ parse_scripts(parser_t *p, const font_t *f, double y, piece_t *nuc)
     return true;
 }
 
-/* Whether the next non-blank input is a binary operator or a relation. */
-static bool
-next_is_operator(const parser_t *p)
-{
-    size_t i = p->pos;
-    char name[24];
-    unsigned cp;
-    int cls;
-    bool italic;
-    while (i < p->len && p->s[i] == ' ')
-        i++;
-    if (i >= p->len)
-        return true;   /* trailing space: dropped */
-    if (strchr("+-=<>*", p->s[i]) != NULL)
-        return true;
-    if (p->s[i] != '\\')
-        return false;
-    if (command_name(p, i + 1, name, sizeof name) == 0)
-        return false;
-    return cf__label_symbol(name, &cp, &cls, &italic)
-        && (cls == CLS_BIN || cls == CLS_REL);
-}
-
 /* A list of atoms until stop ('}' , '$' or 0 for the end). */
 static bool
 parse_list(parser_t *p, const font_t *f, double x, double y, int stop,
            piece_t *out)
 {
     int prev = CLS_NONE;
+    size_t prev_first = p->lab->count;
+    double prev_space = 0;    /* the space put before the last operator */
     piece_init(out, p->lab, x);
     while (p->pos < p->len) {
         char c = p->s[p->pos];
@@ -641,46 +721,43 @@ parse_list(parser_t *p, const font_t *f, double x, double y, int stop,
             return false;
         }
         if (!f->text && c == ' ') {
-            /* spaces are kept, as a normal inter-word space, except next
-            ** to an operator, which gets TeX's spacing instead */
-            piece_t sp;
-            double nx;
+            /* spaces in mathematics are ignored, as in TeX */
             p->pos++;
-            if (prev == CLS_BIN || prev == CLS_REL || prev == CLS_SPACE
-                || next_is_operator(p))
-                continue;
-            piece_init(&sp, p->lab, x);
-            nx = cf__label_put_text(p->lab, f, x, y, " ", 1);
-            if (isnan(nx))
-                return pnomem(p), false;
-            x = nx;
-            prev = CLS_SPACE;
             continue;
         }
         {
-            double x0 = x, sp;
+            double sp;
             size_t first_run = p->lab->count;
             if (!parse_atom(p, f, x, y, &pc))
                 return false;
-            /* class-dependent space before this atom (only at level 0;
-            ** a binary operator after nothing/an operator is unary) */
+            /* TeX rule 5: a binary operator after nothing, an operator, a
+            ** relation, an opening or punctuation is ordinary (a unary
+            ** minus); rule 6: so is one before a relation, a closing or
+            ** punctuation */
             if (pc.cls == CLS_BIN
-                && (prev == CLS_NONE || prev == CLS_BIN || prev == CLS_REL
-                    || prev == CLS_OPEN || prev == CLS_PUNCT
-                    || prev == CLS_SPACE))
+                && (prev == CLS_NONE || prev == CLS_BIN || prev == CLS_OP
+                    || prev == CLS_REL || prev == CLS_OPEN
+                    || prev == CLS_PUNCT))
                 pc.cls = CLS_ORD;
-            sp = (f->level == 0 && !f->text) ? atom_space(prev, pc.cls) : 0;
+            if (prev == CLS_BIN && (pc.cls == CLS_REL || pc.cls == CLS_CLOSE
+                                    || pc.cls == CLS_PUNCT)) {
+                /* the previous operator was unary after all: take its
+                ** spaces back */
+                move_runs(p->lab, prev_first, first_run, -prev_space, 0);
+                x -= prev_space;
+                move_runs(p->lab, first_run, p->lab->count, -prev_space, 0);
+                pc.x1 -= prev_space;
+                prev_space = 0;
+                prev = CLS_ORD;
+            }
+            sp = f->text ? 0 : atom_space(prev, pc.cls, f->level) * f->size;
+            if (pc.cls == CLS_SPACE)
+                sp = 0;
             if (sp != 0) {
-                size_t i;
-                double dx = sp * f->size;
-                /* move the atom's runs right; a run merged with the
-                ** previous atom is split off by re-emitting is not needed
-                ** because classes differing in space never merge: the
-                ** merge only happens for ORD-ORD pairs */
-                for (i = first_run; i < p->lab->count; i++)
-                    p->lab->runs[i].x += dx;
-                pc.x1 += dx;
-                (void)x0;
+                /* classes that get a space never share a run: the merge
+                ** only joins ordinary atoms */
+                move_runs(p->lab, first_run, p->lab->count, sp, 0);
+                pc.x1 += sp;
             }
             if (!f->text && p->pos < p->len
                 && (p->s[p->pos] == '_' || p->s[p->pos] == '^')) {
@@ -689,9 +766,17 @@ parse_list(parser_t *p, const font_t *f, double x, double y, int stop,
             } else {
                 pc.x1 += pc.ic;   /* before an upright symbol */
             }
+            prev_first = first_run;
+            prev_space = pc.cls == CLS_BIN ? sp : 0;
             x = pc.x1;
-            prev = pc.cls;
+            if (pc.cls != CLS_SPACE)
+                prev = pc.cls;
         }
+    }
+    /* rule 6 at the end of the list: a trailing operator is ordinary */
+    if (prev == CLS_BIN && prev_space != 0) {
+        move_runs(p->lab, prev_first, p->lab->count, -prev_space, 0);
+        x -= prev_space;
     }
     out->end = p->lab->count;
     out->x1 = x;

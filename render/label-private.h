@@ -13,6 +13,7 @@
 #include "curvefig/style.h"
 
 #define CF__DEFAULT_FAMILY "Latin Modern Roman,CMU Serif,Noto Serif CJK SC"
+#define CF__SANS_FAMILY "Latin Modern Sans,CMU Sans Serif,Noto Sans CJK SC"
 
 /* Ink box of the label relative to its origin (bp, y DOWN like cairo):
 ** x0 y0 x1 y1. */
@@ -38,5 +39,6 @@ void cf__label_draw_halo(const cf_label_t *label, cairo_t *cr, double x,
 ** out of memory. */
 struct cf__buf;
 int cf__label_tex(const char *src, struct cf__buf *out);
+
 
 #endif

@@ -22,26 +22,35 @@ family_for_size(const char *family, double size_bp, bool italic, bool bold,
     static const int regular[] = { 5, 6, 7, 8, 9, 10, 12, 17 };
     static const int slanted[] = { 7, 8, 9, 10, 12 };
     static const int heavy[] = { 5, 6, 7, 8, 9, 10, 12 };
-    const char *lm = "Latin Modern Roman";
-    size_t n = strlen(lm), i, count;
+    static const int sans[] = { 8, 9, 10, 12, 17 };
+    static const int sans_bold[] = { 10 };
+    const char *lm = "Latin Modern Roman", *lms = "Latin Modern Sans";
+    size_t n = strlen(lm), ns = strlen(lms), i, count;
     const int *d;
     double texpt = size_bp * 72.27 / 72;
     int pick;
 
-    if (strncmp(family, lm, n) != 0
+    if (strncmp(family, lms, ns) == 0
+        && (family[ns] == '\0' || family[ns] == ',')) {
+        d = bold ? sans_bold : sans;
+        count = bold ? 1 : sizeof sans / sizeof sans[0];
+        lm = "LM Sans";
+    } else if (strncmp(family, lm, n) != 0
         || (family[n] != '\0' && family[n] != ',')) {
         snprintf(out, cap, "%s", family);
         return;
+    } else {
+        d = italic ? slanted : bold ? heavy : regular;
+        count = italic ? sizeof slanted / sizeof slanted[0]
+              : bold ? sizeof heavy / sizeof heavy[0]
+                     : sizeof regular / sizeof regular[0];
+        lm = "LM Roman";
     }
-    d = italic ? slanted : bold ? heavy : regular;
-    count = italic ? sizeof slanted / sizeof slanted[0]
-          : bold ? sizeof heavy / sizeof heavy[0]
-                 : sizeof regular / sizeof regular[0];
     pick = d[0];
     for (i = 0; i < count; i++)
         if (d[i] <= texpt + 0.25)
             pick = d[i];
-    snprintf(out, cap, "LM Roman %d,%s", pick, family);
+    snprintf(out, cap, "%s %d,%s", lm, pick, family);
 }
 
 static void
@@ -54,11 +63,16 @@ run_measure(cf_label_t *lab, run_t *r)
     if (r->layout == NULL)
         r->layout = pango_layout_new(lab->ctx);
     fd = pango_font_description_new();
-    family_for_size(lab->family, r->size, r->italic, r->bold, family,
-                    sizeof family);
+    if (r->math)
+        snprintf(family, sizeof family, "%s,%s", CF__MATH_FAMILY,
+                 lab->family);
+    else
+        family_for_size(lab->family, r->size, r->italic, r->bold, family,
+                        sizeof family);
     pango_font_description_set_family(fd, family);
-    pango_font_description_set_style(fd, r->italic ? PANGO_STYLE_ITALIC
-                                                    : PANGO_STYLE_NORMAL);
+    pango_font_description_set_style(fd, r->italic && !r->math
+                                         ? PANGO_STYLE_ITALIC
+                                         : PANGO_STYLE_NORMAL);
     pango_font_description_set_weight(fd, r->bold ? PANGO_WEIGHT_BOLD
                                                   : PANGO_WEIGHT_NORMAL);
     pango_font_description_set_absolute_size(fd, r->size * PANGO_SCALE);
@@ -90,7 +104,7 @@ cf__label_put_text(cf_label_t *lab, const font_t *f, double x, double y,
     char *t;
 
     if (r != NULL && lab->merge_ok && r->rule_h == 0 && r->size == f->size
-        && r->italic == f->italic
+        && r->italic == f->italic && r->math == f->math
         && r->bold == f->bold && r->y == y && r->kind == f->kind
         && r->level == f->level && fabs(r->x + r->width - x) < 1e-9) {
         t = cf_realloc_array(r->text, r->text_len + n + 1, 1);
@@ -125,6 +139,7 @@ cf__label_put_text(cf_label_t *lab, const font_t *f, double x, double y,
         r->kind = f->kind;
         r->italic = f->italic;
         r->bold = f->bold;
+        r->math = f->math;
     }
     if (n == 0) {
         /* an empty run (a fraction rule): no layout */
@@ -156,6 +171,7 @@ cf__label_italic_correction(cf_label_t *lab, const font_t *f, const char *s,
     r.size = f->size;
     r.italic = f->italic;
     r.bold = f->bold;
+    r.math = f->math;
     run_measure(lab, &r);
     if (r.layout == NULL)
         return 0;

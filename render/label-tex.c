@@ -314,6 +314,14 @@ command(tex_t *t, bool math)
         skip_spaces(t);
         atom(t, true);
         put(t, math ? "" : "}");
+    } else if (strcmp(name, "boldsymbol") == 0 || strcmp(name, "mathcal") == 0
+               || strcmp(name, "overline") == 0) {
+        /* \boldsymbol: amsmath's, or the picture's \boldmath fallback */
+        put(t, math ? "\\" : "\\ensuremath{\\");
+        put(t, name);
+        skip_spaces(t);
+        atom(t, true);
+        put(t, math ? "" : "}");
     } else if (strcmp(name, "text") == 0) {
         put(t, math ? "\\text" : "\\mbox");
         skip_spaces(t);

@@ -88,6 +88,9 @@ cf_label_create(const char *text, const char *family, double size_bp,
     }
     memcpy(lab->family, family, len + 1);
     lab->size = size_bp;
+    /* TeX's own faces: mathematics takes TeX's math italic */
+    lab->tex_math = strncmp(family, "Latin Modern Roman", 18) == 0
+        || strncmp(family, "CMU Serif", 9) == 0;
 
     {
         cf_status_t st = cf__label_parse(lab, text, diag);

@@ -194,13 +194,56 @@ make_bands(cf_figure_t *fig, const double win[4], bool keep,
     return CF_STATUS_OK;
 }
 
+/* bp: a page cropped to its ink is laid out again until the room left
+** for what sticks out of the data box changes by less than this */
+#define REFINE_TOL 0.01
+
+/* The available box avail for the data box: the page inside the margin
+** less what sticks out of the data box of layout lay (ink, page bp), at
+** most 0.4 of the page each way (0.8 when the page is the ink box, which
+** must not grow past width x height, and which may also grow the data
+** box past the page where the ink does not reach it). */
+static void
+make_room(const cf_figure_t *fig, const double win[4], const double ink[4],
+          const cf__layout_t *lay, double avail[4])
+{
+    double m = fig->margin;
+    double dl = lay->ox, dr = lay->ox + lay->sx * (win[1] - win[0]);
+    double db = lay->oy, dt = lay->oy - lay->sy * (win[3] - win[2]);
+    /* a page cropped to the ink may also grow the data box where the
+    ** ink stops short of it (an explicit window larger than the drawing),
+    ** by at most the page's size */
+    double lo = fig->page_mode == CF_PAGE_INK
+        ? -fmax(fig->width, fig->height) : 0;
+    double ol = fmax(lo, dl - ink[0]), or_ = fmax(lo, ink[2] - dr);
+    double ot = fmax(lo, dt - ink[1]), ob = fmax(lo, ink[3] - db);
+    double k_max = fig->page_mode == CF_PAGE_INK ? 0.8 : 0.4;
+    double maxw = k_max * (fig->width - 2 * m);
+    double maxh = k_max * (fig->height - 2 * m);
+    if (ol + or_ > maxw) {
+        double k = maxw / (ol + or_);
+        ol *= k;
+        or_ *= k;
+    }
+    if (ot + ob > maxh) {
+        double k = maxh / (ot + ob);
+        ot *= k;
+        ob *= k;
+    }
+    avail[0] = m + ol;
+    avail[2] = fig->width - m - or_;
+    avail[1] = m + ot;
+    avail[3] = fig->height - m - ob;
+}
+
 cf_status_t
 cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
 {
     double win[4], avail[4], ink[4], m = fig->margin;
     cf__bounds_t b;
-    bool keep;
+    bool keep, refine = fig->page_mode == CF_PAGE_INK && fig->panels == NULL;
     size_t i;
+    int pass;
 
     memset(&b, 0, sizeof b);
     lay->px = lay->py = 0;
@@ -241,13 +284,7 @@ cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
                            "(coordinates up to about 1e307)",
                            fig->window_set ? "window" : "drawing",
                            win[1] - win[0], win[3] - win[2]);
-    keep = fig->aspect == 1;
-    if (fig->aspect < 0) {
-        keep = true;
-        for (i = 0; i < fig->count; i++)
-            if (fig->els[i]->kind->flags & CF__KIND_AXES)
-                keep = false;
-    }
+    cf_figure_get_fit(fig, NULL, &keep);
     avail[0] = m;
     avail[1] = m;
     avail[2] = fig->width - m;
@@ -255,33 +292,23 @@ cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
     compute_map(fig, win, keep, avail, lay);
     if (fig->count == 0)
         return CF_STATUS_OK;
-    /* second pass: leave room for what sticks out of the data box
-    ** (labels, markers, arrow heads, line widths) */
-    if (ink_of(fig, lay, ink) != CF_STATUS_OK)
-        return fig->err.status;
-    {
-        double dl = lay->ox, dr = lay->ox + lay->sx * (win[1] - win[0]);
-        double db = lay->oy, dt = lay->oy - lay->sy * (win[3] - win[2]);
-        double ol = fmax(0, dl - ink[0]), or_ = fmax(0, ink[2] - dr);
-        double ot = fmax(0, dt - ink[1]), ob = fmax(0, ink[3] - db);
-        double maxw = 0.4 * (fig->width - 2 * m);
-        double maxh = 0.4 * (fig->height - 2 * m);
-        if (ol + or_ > maxw) {
-            double k = maxw / (ol + or_);
-            ol *= k;
-            or_ *= k;
-        }
-        if (ot + ob > maxh) {
-            double k = maxh / (ot + ob);
-            ot *= k;
-            ob *= k;
-        }
-        avail[0] = m + ol;
-        avail[2] = fig->width - m - or_;
-        avail[1] = m + ot;
-        avail[3] = fig->height - m - ob;
+    /* room for what sticks out of the data box (labels, markers, arrow
+    ** heads, line widths), measured on the layout so far; a page cropped
+    ** to its ink is measured again until the ink fills the page inside
+    ** the margin (label places change a little with the scale) */
+    for (pass = 0; pass < (refine ? 8 : 1); pass++) {
+        double prev[4];
+        memcpy(prev, avail, sizeof prev);
+        if (ink_of(fig, lay, ink) != CF_STATUS_OK)
+            return fig->err.status;
+        make_room(fig, win, ink, lay, avail);
+        compute_map(fig, win, keep, avail, lay);
+        if (pass > 0 && fabs(prev[0] - avail[0]) < REFINE_TOL
+            && fabs(prev[1] - avail[1]) < REFINE_TOL
+            && fabs(prev[2] - avail[2]) < REFINE_TOL
+            && fabs(prev[3] - avail[3]) < REFINE_TOL)
+            break;
     }
-    compute_map(fig, win, keep, avail, lay);
     return make_bands(fig, win, keep, avail, lay);
 }
 

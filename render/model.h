@@ -163,6 +163,8 @@ struct cf_figure {
     bool window_set;
     double win[4];
     double margin;
+    cf_page_mode_t page_mode;
+    cf_background_t background;
     int aspect;              /* -1 automatic, 0 free, 1 kept */
     double tol;
     bool clip_page;          /* ink outside the page is cut, not an error */

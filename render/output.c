@@ -58,20 +58,40 @@ typedef struct job {
     cf__dl_t dl;
 } job_t;
 
+/* bp: a cropped page is laid out again until its ink lies this close to
+** the padding on every side (automatic label places may differ a little
+** once the drawing has moved) */
+#define CROP_TOL 0.01
+
+/* Whether the ink of job lies pad inside its page on every side. */
+static bool
+ink_fits(const job_t *job, double pad)
+{
+    const double *ink = job->ink;
+    return fabs(ink[0] - pad) < CROP_TOL && fabs(ink[1] - pad) < CROP_TOL
+        && fabs(job->page.width - pad - ink[2]) < CROP_TOL
+        && fabs(job->page.height - pad - ink[3]) < CROP_TOL;
+}
+
 /* Layout, page size and display list.  The ink box needs a first display
 ** list; it is made only when asked for (need_ink) or when the page is
-** cropped to it (tight); otherwise ink is left zero. */
+** cropped to it (tight; then the ink is in the cropped page's
+** coordinates); otherwise ink is left zero. */
 static cf_status_t
 make_job(cf_figure_t *fig, const cf_write_options_t *o, bool need_ink,
          job_t *job, cf_diag_t *diag)
 {
+    bool tight = o->tight || fig->page_mode == CF_PAGE_INK;
+    double pad = fig->page_mode == CF_PAGE_INK ? fig->margin : o->padding;
+    int tries;
     memset(job, 0, sizeof *job);
     cf__dl_init(&job->dl);
     if (cf__figure_layout(fig, &job->lay) != CF_STATUS_OK)
         return cf_figure_status(fig, diag);
     cf_figure_get_size(fig, &job->page.width, &job->page.height);
     job->page.background = fig->theme.background;
-    if (need_ink || o->tight) {
+    job->page.label_size = fig->theme.role[CF_ROLE_LABEL].font_size;
+    for (tries = 0; (need_ink || tight) && tries < 3; tries++) {
         double *ink = job->ink, w, h;
         if (cf__figure_build(fig, &job->lay, &job->dl) != CF_STATUS_OK)
             return cf_figure_status(fig, diag);
@@ -80,24 +100,32 @@ make_job(cf_figure_t *fig, const cf_write_options_t *o, bool need_ink,
                                "cairo failed measuring the ink");
         w = ink[2] - ink[0];
         h = ink[3] - ink[1];
-        if (o->tight && w > 0 && h > 0) {
-            /* the shift goes into the data -> page map, so that the files
-            ** carry plain coordinates (no SVG transform attributes) */
-            job->page.width = w + 2 * o->padding;
-            job->page.height = h + 2 * o->padding;
-            job->lay.ox += o->padding - ink[0];
-            job->lay.oy += o->padding - ink[1];
-            job->lay.px += o->padding - ink[0];
-            job->lay.py += o->padding - ink[1];
-            cf__dl_reset(&job->dl);
-        } else {
+        if (!tight)
             return CF_STATUS_OK;
+        if (!(w > 0 && h > 0)) {
+            cf__dl_reset(&job->dl);
+            break;
         }
+        if (tries > 0 && ink_fits(job, pad))
+            return cf__figure_check_page(fig, &job->dl, job->page.width,
+                                         job->page.height, false, diag);
+        /* the shift goes into the data -> page map, so that the files
+        ** carry plain coordinates (no SVG transform attributes) */
+        job->page.width = w + 2 * pad;
+        job->page.height = h + 2 * pad;
+        job->lay.ox += pad - ink[0];
+        job->lay.oy += pad - ink[1];
+        job->lay.px += pad - ink[0];
+        job->lay.py += pad - ink[1];
+        ink[2] += pad - ink[0];
+        ink[3] += pad - ink[1];
+        ink[0] = ink[1] = pad;
+        cf__dl_reset(&job->dl);
     }
     if (cf__figure_build(fig, &job->lay, &job->dl) != CF_STATUS_OK)
         return cf_figure_status(fig, diag);
     return cf__figure_check_page(fig, &job->dl, job->page.width,
-                                 job->page.height, !o->tight, diag);
+                                 job->page.height, !tight, diag);
 }
 
 static void
@@ -115,6 +143,10 @@ render_job(cf_figure_t *fig, cf_format_t format, const cf_write_options_t *o,
     cf__page_t pg = job->page;
     unsigned n = cf_figure_steps(fig);
     bool multi;
+    if (fig->background == CF_BACKGROUND_NONE
+        || (fig->background == CF_BACKGROUND_AUTO
+            && format != CF_FORMAT_PNG))
+        pg.background.a = 0;
     if (n > 1 && o->step > 0) {
         pg.first_step = pg.last_step = o->step;
     } else if (n > 1 && format == CF_FORMAT_SVG) {

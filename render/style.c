@@ -457,3 +457,37 @@ cf_theme_get(const char *name, cf_theme_t *out, cf_diag_t *diag)
                            "unknown theme \"%s\" (use default or mono)", name);
     return CF_STATUS_OK;
 }
+
+cf_status_t
+cf_theme_set_fonts(cf_theme_t *theme, const char *family, double size_bp,
+                   cf_diag_t *diag)
+{
+    cf_diag_clear(diag);
+    const char *list = family;
+    double k;
+    size_t i;
+    if (theme == NULL)
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "theme is NULL");
+    if (family != NULL && strcmp(family, "serif") == 0)
+        list = CF__DEFAULT_FAMILY;
+    else if (family != NULL && strcmp(family, "sans") == 0)
+        list = CF__SANS_FAMILY;
+    if (list != NULL && (list[0] == '\0'
+                         || strlen(list) >= CF_FONT_FAMILY_MAX))
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "font family \"%s\": give serif, sans or a "
+                           "family list of 1 to %d bytes", list,
+                           CF_FONT_FAMILY_MAX - 1);
+    if (!(isfinite(size_bp) && size_bp >= 0 && size_bp <= 1000))
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "font size %g bp must lie in (0, 1000]", size_bp);
+    if (list != NULL)
+        snprintf(theme->font_family, sizeof theme->font_family, "%s", list);
+    if (size_bp > 0) {
+        k = size_bp / theme->role[CF_ROLE_LABEL].font_size;
+        for (i = 0; i < CF_ROLE_LAST_; i++)
+            theme->role[i].font_size *= k;
+    }
+    return CF_STATUS_OK;
+}

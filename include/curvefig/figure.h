@@ -113,6 +113,37 @@ CF_API cf_status_t cf_figure_set_window_auto(cf_figure_t *fig);
 ** kept, except in figures with axes (function plots). */
 CF_API cf_status_t cf_figure_set_fit(cf_figure_t *fig, double margin_bp,
                                      bool keep_aspect);
+/* The margin (bp) and whether the aspect ratio is kept (automatic: false
+** with axes); either output may be NULL.  INVALID_ARG for a NULL fig. */
+CF_API cf_status_t cf_figure_get_fit(const cf_figure_t *fig,
+                                     double *margin_bp, bool *keep_aspect);
+/* What the written page is.  CF_PAGE_FIXED (the default): width x
+** height, the drawing at least the margin inside it.  CF_PAGE_INK: the ink
+** box of everything drawn (every overlay step together) plus the margin
+** on every side, the box TikZ, MetaPost and Asymptote give; the drawing is
+** scaled so that this page is at most width x height and reaches one of
+** them (both when the aspect ratio is free): width and height then size
+** the final box, not a page around it. */
+typedef enum cf_page_mode {
+    CF_PAGE_FIXED = 0,
+    CF_PAGE_INK
+} cf_page_mode_t;
+CF_API cf_status_t cf_figure_set_page_mode(cf_figure_t *fig,
+                                           cf_page_mode_t mode);
+/* Where the page is painted with the theme's background colour (the
+** colour also of label halos and legend boxes).  CF_BACKGROUND_AUTO (the
+** default): in PNG only, which goes to viewers and web pages that show a
+** transparent image on grey or black; PDF, SVG, PS, EPS and PGF, which go
+** into documents and slides, are transparent, so that a coloured slide
+** shows around the ink.  CF_BACKGROUND_ALWAYS: in every format;
+** CF_BACKGROUND_NONE: in none (a PNG with an alpha channel). */
+typedef enum cf_background {
+    CF_BACKGROUND_AUTO = 0,
+    CF_BACKGROUND_ALWAYS,
+    CF_BACKGROUND_NONE
+} cf_background_t;
+CF_API cf_status_t cf_figure_set_background(cf_figure_t *fig,
+                                            cf_background_t mode);
 /* The window and the data -> page map the figure would use now:
 ** window[4] = xmin xmax ymin ymax; page x = sx * (x - xmin) + ox, page
 ** y (down) = oy - sy * (y - ymin).  Any output may be NULL. */

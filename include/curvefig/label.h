@@ -20,10 +20,16 @@ extern "C" {
 /*
 ** Label syntax.  A text without `$` is all math; with `$`, text outside
 ** $...$ is upright text and inside is math.
-**   math: ASCII letters italic; digits, punctuation, ( ) [ ] upright;
-**         `-` becomes the minus sign U+2212; + − = < > get thin spaces
-**         around them at the base level; spaces are kept, except next
-**         to such operators (TeX's spacing applies there).
+**   math: letters in the math italic, as TeX sets them (with the serif
+**         family: Latin Modern Math's italic alphabet U+1D434..., h is
+**         U+210E; with another family: its italic); digits,
+**         punctuation, ( ) [ ] upright; operators and relations from
+**         Latin Modern Math (\ge is ≥, not ⩾); `-` is the minus sign.
+**         Spaces are ignored; TeX's spaces between atoms apply (The
+**         TeXbook, rule 20): thick 5 mu around relations, medium 4 mu
+**         around binary operators (none for a unary minus), thin 3 mu
+**         after punctuation and around large operators; in scripts only
+**         the thin ones; 18 mu = the font's quad (its size).
 **   x_i  x_{...}  subscript; x^n  x^{...}  superscript; both (any order)
 **         stack at the same x: B_i^n, N_{i}^{p}; scripts nest (size 70 %,
 **         then 50 %; Latin Modern's 7 pt and 5 pt designs are used for
@@ -32,7 +38,9 @@ extern "C" {
 **         \varphi \varrho \varsigma): lowercase italic, uppercase upright.
 **   \cdot \times \infty \partial \nabla \pm \leq \geq \neq \to \ldots
 **         \dots \sum \prod \int, \, \; \quad spaces, \{ \} \_ \$ \\ escapes.
-**   \mathrm{...} \text{...} upright; \mathbf{...} bold; \mathit{...}.
+**   \mathrm{...} \text{...} upright; \mathbf{...} bold; \mathit{...};
+**         \boldsymbol{...} bold italic letters; \mathcal{A} capitals;
+**         \overline{...} a rule over the group.
 **   \frac{num}{den} (script size, centred, rule on the math axis);
 **   \hat \bar \tilde \vec \dot \ddot over one character.
 **   Any UTF-8 text (Czech, Russian, Slovene, Chinese): letters outside
@@ -85,6 +93,14 @@ CF_API void cf_label_get_extents(const cf_label_t *label, double *width,
 /* Number of characters no font of the family list (nor fontconfig's
 ** fallback) could show: 0 means no empty boxes. */
 CF_API size_t cf_label_unknown_glyphs(const cf_label_t *label);
+
+/* Every command of the label syntax, from the parser's own tables (what
+** `curvefig help labels` lists): kind "symbol", "space", "accent" or
+** "structure", the name without its backslash, and what it gives. */
+CF_API void cf_label_each_command(void (*visit)(const char *kind,
+                                                const char *name,
+                                                const char *what, void *ctx),
+                                  void *ctx);
 
 #ifdef __cplusplus
 }

@@ -179,6 +179,15 @@ typedef struct cf_theme {
 CF_API cf_status_t cf_theme_get(const char *name, cf_theme_t *out,
                                 cf_diag_t *diag);
 
+/* The font of every label of a theme, set once: family "serif" (Latin
+** Modern Roman, mathematics in Latin Modern Math as TeX sets it), "sans"
+** (Latin Modern Sans, mathematics with its letters in Latin Modern Sans
+** Oblique as beamer sets it) or a Pango family list; NULL keeps the
+** family.  size_bp (> 0, <= 1000; 0 keeps the size) is the size of
+** labels; every other role's size (tick labels) is scaled with it. */
+CF_API cf_status_t cf_theme_set_fonts(cf_theme_t *theme, const char *family,
+                                      double size_bp, cf_diag_t *diag);
+
 #ifdef __cplusplus
 }
 #endif

@@ -14,6 +14,7 @@
 #include "llayout.h"
 #include "lschema.h"
 #include "lstyle.h"
+#include "ltheme.h"
 
 #define FIGURES_KEY "curvefig.figures"
 
@@ -133,12 +134,40 @@ read_theme(lua_State *L, cf_figure_t *fig)
     lua_pop(L, 1);
 }
 
+/* background = "auto" (PNG white, the other formats transparent),
+** "none" or a colour painted in every format */
+static void
+read_background(lua_State *L, cf_figure_t *fig)
+{
+    cf_diag_t diag;
+    const char *v;
+    cf_theme_t th;
+    cf__lua_field(L, 1, "background");
+    v = cf__lua_opt_text(L, -1, "figure", "background", "auto");
+    lua_pop(L, 1);
+    if (strcmp(v, "auto") == 0 || strcmp(v, "none") == 0) {
+        check(L, "figure", cf_figure_set_background(fig, v[0] == 'a'
+                                                    ? CF_BACKGROUND_AUTO
+                                                    : CF_BACKGROUND_NONE),
+              NULL);
+        return;
+    }
+    cf_figure_get_theme(fig, &th);
+    cf_diag_clear(&diag);
+    if (cf_color_parse(v, &th.background, &diag) != CF_STATUS_OK)
+        luaL_error(L, "figure: background = \"%s\": give \"auto\", "
+                   "\"none\" or a colour (%s)", v, diag.msg);
+    check(L, "figure", cf_figure_set_theme(fig, &th), NULL);
+    check(L, "figure", cf_figure_set_background(fig, CF_BACKGROUND_ALWAYS),
+          NULL);
+}
+
 /* window, margin, aspect, tolerance, clip; w and h the page in bp */
 static void
 read_frame(lua_State *L, cf_figure_t *fig, double w, double h)
 {
     cf_diag_t diag;
-    bool given, aspect;
+    bool given, aspect, fixed;
     double margin, tol;
     if (cf__lua_field(L, 1, "window") != LUA_TNIL) {
         size_t n;
@@ -149,8 +178,17 @@ read_frame(lua_State *L, cf_figure_t *fig, double w, double h)
         check(L, "figure", cf_figure_set_window(fig, v[0], v[1], v[2], v[3]),
               &diag);
     }
+    /* page = "ink" (the default): the page is the ink box plus a margin
+    ** of 1 bp; "fixed": width x height, the ink 14 bp inside it */
+    cf__lua_field(L, 1, "page");
+    fixed = strcmp(cf__lua_opt_text(L, -1, "figure", "page", "ink"),
+                   "fixed") == 0;
+    check(L, "figure", cf_figure_set_page_mode(fig, fixed ? CF_PAGE_FIXED
+                                                          : CF_PAGE_INK),
+          NULL);
     cf__lua_field(L, 1, "margin");
-    margin = cf__lua_read_length(L, -1, "figure", "margin", 14.0);
+    margin = cf__lua_read_length(L, -1, "figure", "margin",
+                                 fixed ? 14.0 : 1.0);
     if (margin >= 0 && (2 * margin >= w || 2 * margin >= h))
         cf__lua_error(L, "figure: the page of %g x %g bp leaves no room "
                       "inside the margin of %g bp (a bare number is in bp; "
@@ -245,6 +283,8 @@ l_figure(lua_State *L)
     check(L, "figure", cf_figure_set_caption(fig, opt_text(L, 3, "caption",
                                                            "")), NULL);
     read_theme(L, fig);
+    cf__lua_apply_fonts(L, 1, fig);
+    read_background(L, fig);
     read_frame(L, fig, w, h);
     read_projection(L, fig);
     cf__lua_read_figure_legend(L, fig);

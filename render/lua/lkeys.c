@@ -27,6 +27,7 @@ static const char *const box_places[] = {
     "left", "right", NULL,
 };
 static const char *const themes[] = { "default", "mono", NULL };
+static const char *const pages[] = { "ink", "fixed", NULL };
 static const char *const kinds[] = { "clamped", "closed", "uniform", NULL };
 static const char *const ends[] = { "plain", "tripled", "closed", NULL };
 static const char *const interp_methods[] = {
@@ -81,9 +82,14 @@ static const cf__lua_key_t arrow_label[] = {
 
 static const cf__lua_key_t figure_keys[] = {
     KEY("name"), KEY("caption"), KEY("title"), KEY("width"), KEY("height"),
-    KEY("window"), KEY("margin"), KEY("aspect"), NAMES("theme", themes),
+    NAMES("page", pages), KEY("window"), KEY("margin"), KEY("aspect"),
+    NAMES("theme", themes), KEY("background"), KEY("font"),
+    KEY("font_size"),
     KEY("tolerance"), KEY("projection"), KEY("view"), KEY("clip"),
     NAMES("legend_place", box_places), KEY("legend_frame"), END,
+};
+static const cf__lua_key_t theme_keys[] = {
+    KEY("family"), KEY("size"), END,
 };
 static const cf__lua_key_t legend_keys[] = {
     NAMES("place", box_places), KEY("frame"), END,
@@ -250,6 +256,8 @@ static const cf__lua_schema_t schemas[CF__KEYS_COUNT_] = {
     [CF__KEYS_CONSTRAIN] = METHOD("constrain", constrain_keys, NULL, NULL,
                                   "points{ name = 'Q', default = P, "
                                   "constrain = %s }"),
+    [CF__KEYS_THEME] = { "theme", "option", { theme_keys, NULL, NULL, NULL },
+                         false, NULL, NULL, "theme(%s)" },
 };
 
 const char cf__lua_schema_prelude[] =

@@ -49,6 +49,7 @@ typedef enum cf__lua_keys {
     CF__KEYS_SLIDER,
     CF__KEYS_PARAM_POINTS,  /* points{...}, a draggable point list */
     CF__KEYS_CONSTRAIN,     /* nested: constrain = { ... } of points{} */
+    CF__KEYS_THEME,
     CF__KEYS_COUNT_
 } cf__lua_keys_t;
 

@@ -164,7 +164,12 @@ m_plot(lua_State *L)
     read_axes(L, &ax);
     cf_diag_clear(&diag);
     check(L, "plot", cf_figure_add_axes(fig, &ax, &st), &diag);
-    check(L, "plot", cf_figure_set_fit(fig, 14.0, false), NULL);
+    {
+        /* a function plot keeps no aspect ratio; the figure's margin */
+        double margin = 0;
+        cf_figure_get_fit(fig, &margin, NULL);
+        check(L, "plot", cf_figure_set_fit(fig, margin, false), NULL);
+    }
     lua_settop(L, 1);
     return 1;
 }

@@ -13,6 +13,7 @@
 #include "lcommon.h"
 #include "lfigure.h"
 #include "lparams.h"
+#include "ltheme.h"
 #include "lschema.h"
 #include "lpattern.h"
 #include "ltrace.h"
@@ -386,6 +387,7 @@ open_sandbox(lua_State *L)
     cf__lua_open_conic(L);
     cf__lua_open_figure(L);
     cf__lua_open_params(L);
+    cf__lua_open_theme(L);
     cf__lua_guard_names(L);
     return 0;
 }
@@ -657,6 +659,13 @@ cf_script_set_labels(cf_script_t *s, bool enabled)
         return;
     lua_pushboolean(s->L, !enabled);
     lua_setfield(s->L, LUA_REGISTRYINDEX, CF__LUA_NO_LABELS);
+}
+
+void
+cf_script_set_fonts(cf_script_t *s, const char *family, double size_bp)
+{
+    if (s != NULL)
+        cf__lua_set_tool_fonts(s->L, family, size_bp);
 }
 
 const char *

@@ -50,6 +50,13 @@ void cf_script_destroy(cf_script_t *script);
 ** script defines from now on: the label-free layer of the pixel tests. */
 void cf_script_set_labels(cf_script_t *script, bool enabled);
 
+/* The fonts of every figure the script makes (family "serif", "sans" or
+** a Pango list, NULL: the script's; size_bp 0: the script's), over the
+** script's theme{} calls but not over a figure's own font and font_size
+** (render/lua/ltheme.c). */
+void cf_script_set_fonts(cf_script_t *script, const char *family,
+                         double size_bp);
+
 /* Load and run the file at path.  CF_STATUS_SCRIPT (or NO_MEMORY, IO) on
 ** failure; the full message (file, line, what went wrong, the Lua frames
 ** that led there) is then cf_script_error(). */

@@ -7,9 +7,10 @@
 #include <string.h>
 
 #include "checks.h"
+#include "curvefig/label.h"
 #include "help.h"
-#include "language-text.h"
-#include "live.h"   /* generated from docs/language.md */
+#include "language-text.h"   /* generated from docs/language.md */
+#include "live.h"
 
 static const char *const overview[] = {
     "usage: curvefig COMMAND [OPTIONS] SCRIPT.lua\n",
@@ -33,7 +34,8 @@ static const char *const overview[] = {
     "                      check every figure against its reference image\n",
     "  help [TOPIC]        this text; TOPIC: render, run, list, gallery,\n",
     "                      compare, test, live, language (the figure\n",
-    "                      language reference)\n",
+    "                      language reference), labels (every command\n",
+    "                      of labels)\n",
     "  --version           print the version\n",
     "\n",
     "Options of render:\n",
@@ -43,7 +45,16 @@ static const char *const overview[] = {
     "                      all (default svg,pdf,png)\n",
     "  --dpi N             PNG resolution, 1..2400 (default 150)\n",
     "  --only NAME[,NAME]  render only these figures (each must exist)\n",
-    "  --tight             crop every page to its ink box\n",
+    "  --tight             crop every page to its ink box (a figure with\n",
+    "                      page = \"fixed\" too; the others always are)\n",
+    "  --font FAMILY       the labels' family for every figure: serif\n",
+    "                      (Latin Modern), sans (Latin Modern Sans, beamer's\n",
+    "                      mathematics) or a font list; over theme{} calls\n",
+    "  --font-size SIZE    the labels' size, TeX points (11) or with a unit\n",
+    "                      (11bp, 4mm); tick labels scale with it\n",
+    "  --theme NAME        article (serif, 10 pt) or beamer (sans, 11 pt)\n",
+    "  --background B      auto (PNG white, other formats transparent;\n",
+    "                      default), none, or a colour for every format\n",
     "  --steps             a figure with overlay steps (visible = \"2-\")\n",
     "                      also as NAME-K.EXT, step K alone, in every format\n",
     "                      (PNG always; NAME.pdf and .ps have a page per\n",
@@ -93,6 +104,23 @@ static const char *const overview[] = {
     NULL,
 };
 
+static const char *const labels_head[] = {
+    "The commands of labels (curvefig's TeX-like syntax, valid TeX too:\n",
+    "docs/latex.md).  A label without $ is all mathematics; with $, the\n",
+    "text outside $...$ is text.  Also: x_i x^{n} scripts, ' a prime, { }\n",
+    "groups, any UTF-8 text (letters outside ASCII upright).\n",
+    "\n",
+    NULL,
+};
+
+static void
+put_command(const char *kind, const char *name, const char *what,
+            void *ctx)
+{
+    (void)ctx;
+    printf("  %-10s \\%-14s %s\n", kind, name, what);
+}
+
 static const char *const commands[] = { "render", "run", "list", "gallery",
                                         NULL };
 
@@ -120,6 +148,11 @@ cf__tool_help(const char *topic)
         put_lines(language);
         return 0;
     }
+    if (strcmp(topic, "labels") == 0) {
+        put_lines(labels_head);
+        cf_label_each_command(put_command, NULL);
+        return 0;
+    }
     for (int i = 0; commands[i] != NULL; i++) {
         if (strcmp(topic, commands[i]) == 0) {
             put_lines(overview);
@@ -127,6 +160,6 @@ cf__tool_help(const char *topic)
         }
     }
     fprintf(stderr, "curvefig: no help on '%s'; topics: render, run, list, "
-            "gallery, compare, test, live, language\n", topic);
+            "gallery, compare, test, live, language, labels\n", topic);
     return 2;
 }

@@ -14,6 +14,7 @@
 ** failed, 2 usage error (bad command line, unreadable script).
 */
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -42,6 +43,9 @@ typedef struct options {
     double dpi;
     double timeout;
     bool tight;
+    const char *font;         /* --font, --theme: NULL the scripts' */
+    double font_size;         /* bp; 0 the scripts' */
+    const char *background;   /* --background: NULL the scripts' */
     bool steps;
     bool no_labels;
     bool verbose;
@@ -100,12 +104,29 @@ parse_number(const char *s, double lo, double hi, double *out)
     return 0;
 }
 
+/* A font size: a number in TeX points, or a number and a unit (texpt,
+** bp, mm, cm, in); bp in *out. */
+static int
+parse_size(const char *s, double *out)
+{
+    char *end;
+    double v = strtod(s, &end);
+    cf_unit_t u = CF_UNIT_TEXPT;
+    if (end == s || !isfinite(v))
+        return -1;
+    if (*end != '\0' && cf_unit_from_name(end, &u, NULL) != CF_STATUS_OK)
+        return -1;
+    *out = cf_length_to_bp(v, u);
+    return *out > 0 && *out <= 1000 ? 0 : -1;
+}
+
 static bool
 takes_value(const char *opt)
 {
     static const char *const with_value[] = {
         "-o", "--output", "-f", "--formats", "--dpi", "--only", "--manifest",
-        "--title", "--max-memory", "--max-instructions", "--timeout", NULL,
+        "--title", "--max-memory", "--max-instructions", "--timeout",
+        "--font", "--font-size", "--theme", "--background", NULL,
     };
     for (int i = 0; with_value[i] != NULL; i++)
         if (strcmp(opt, with_value[i]) == 0)
@@ -193,6 +214,36 @@ parse_args(int argc, char **argv, options *o, int *rc)
                                   v);
                 return -1;
             }
+        } else if (strcmp(a, "--font") == 0) {
+            o->font = v;
+        } else if (strcmp(a, "--font-size") == 0) {
+            if (parse_size(v, &o->font_size) != 0) {
+                *rc = usage_error("--font-size '%s': give a size in TeX "
+                                  "points (11) or with a unit (11texpt, 11bp, 4mm)",
+                                  v);
+                return -1;
+            }
+        } else if (strcmp(a, "--theme") == 0) {
+            if (strcmp(v, "article") == 0) {
+                o->font = "serif";
+                o->font_size = 10 * 72.0 / 72.27;
+            } else if (strcmp(v, "beamer") == 0) {
+                o->font = "sans";
+                o->font_size = 11 * 72.0 / 72.27;
+            } else {
+                *rc = usage_error("--theme '%s': use article (serif, 10 pt) "
+                                  "or beamer (sans, 11 pt)", v);
+                return -1;
+            }
+        } else if (strcmp(a, "--background") == 0) {
+            cf_color_t c;
+            if (strcmp(v, "auto") != 0 && strcmp(v, "none") != 0
+                && cf_color_parse(v, &c, NULL) != CF_STATUS_OK) {
+                *rc = usage_error("--background '%s': use auto, none or a "
+                                  "colour (white, #fdf6e3)", v);
+                return -1;
+            }
+            o->background = v;
         } else if (strcmp(a, "--only") == 0) {
             o->only = v;
         } else if (strcmp(a, "--manifest") == 0) {
@@ -367,6 +418,24 @@ warn_labels(const cf_script_t *s, size_t i, const char *script)
     }
 }
 
+/* --background over the script's: auto, none or a colour (checked) */
+static void
+set_background(cf_figure_t *fig, const char *v)
+{
+    cf_theme_t th;
+    if (v == NULL)
+        return;
+    if (strcmp(v, "auto") == 0 || strcmp(v, "none") == 0) {
+        cf_figure_set_background(fig, v[0] == 'a' ? CF_BACKGROUND_AUTO
+                                                   : CF_BACKGROUND_NONE);
+        return;
+    }
+    cf_figure_get_theme(fig, &th);
+    cf_color_parse(v, &th.background, NULL);
+    cf_figure_set_theme(fig, &th);
+    cf_figure_set_background(fig, CF_BACKGROUND_ALWAYS);
+}
+
 static int
 render_figures(const cf_script_t *s, const options *o)
 {
@@ -396,6 +465,7 @@ render_figures(const cf_script_t *s, const options *o)
             return EXIT_SCRIPT;
         }
         cf_diag_clear(&diag);
+        set_background(fig, o->background);
         st = cf_figure_write_all(fig, base, o->formats, &wo, &diag);
         if (st != CF_STATUS_OK) {
             const char *where = cf_script_figure_where(s, i);
@@ -464,6 +534,7 @@ run_script(const options *o)
         return EXIT_SCRIPT;
     }
     cf_script_set_labels(s, !o->no_labels);
+    cf_script_set_fonts(s, o->font, o->font_size);
     st = cf_script_run_file(s, o->script);
     fflush(stdout);
     if (st == CF_STATUS_IO) {

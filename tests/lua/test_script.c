@@ -524,11 +524,52 @@ test_fuzz_mutations(void **state)
     assert_true(ok > 0 && failed > 0);
 }
 
+/* The theme's fonts: theme{} sets the family and size (TeX points) of
+** every figure made after it, figure{ font_size } one figure's, and the
+** tool's choice (cf_script_set_fonts) wins over theme{} but not over a
+** figure's own; tick labels scale with the labels. */
+static void
+test_theme_fonts(void **state)
+{
+    static const char code[] =
+        "theme{ family = 'sans', size = 11 }\n"
+        "figure{ name = 'a' }\n"
+        "figure{ name = 'b', font_size = 12, font = 'serif' }\n"
+        "figure{ name = 'c', font_size = '9bp' }\n";
+    const double pt = 72.0 / 72.27;
+    cf_theme_t th;
+    cf_script_t *s;
+    (void)state;
+    s = new_script(64, 0);
+    assert_int_equal(cf_script_run_string(s, code, "fonts"), CF_STATUS_OK);
+    cf_figure_get_theme(cf_script_figure(s, 0), &th);
+    assert_true(strncmp(th.font_family, "Latin Modern Sans", 17) == 0);
+    tu_assert_close(th.role[CF_ROLE_LABEL].font_size, 11 * pt, 1e-12, 0);
+    tu_assert_close(th.role[CF_ROLE_AXES].font_size, 8 * 1.1 * pt, 1e-12, 0);
+    cf_figure_get_theme(cf_script_figure(s, 1), &th);
+    assert_true(strncmp(th.font_family, "Latin Modern Roman", 18) == 0);
+    tu_assert_close(th.role[CF_ROLE_LABEL].font_size, 12 * pt, 1e-12, 0);
+    cf_figure_get_theme(cf_script_figure(s, 2), &th);
+    tu_assert_close(th.role[CF_ROLE_LABEL].font_size, 9, 1e-12, 0);
+    cf_script_destroy(s);
+    /* the tool's fonts over theme{}, a figure's own over the tool's */
+    s = new_script(64, 0);
+    cf_script_set_fonts(s, "serif", 10 * pt);
+    assert_int_equal(cf_script_run_string(s, code, "fonts"), CF_STATUS_OK);
+    cf_figure_get_theme(cf_script_figure(s, 0), &th);
+    assert_true(strncmp(th.font_family, "Latin Modern Roman", 18) == 0);
+    tu_assert_close(th.role[CF_ROLE_LABEL].font_size, 10 * pt, 1e-12, 0);
+    cf_figure_get_theme(cf_script_figure(s, 1), &th);
+    tu_assert_close(th.role[CF_ROLE_LABEL].font_size, 12 * pt, 1e-12, 0);
+    cf_script_destroy(s);
+}
+
 int
 main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_api_and_figures),
+        cmocka_unit_test(test_theme_fonts),
         cmocka_unit_test(test_error_messages),
         cmocka_unit_test(test_parser_nesting),
         cmocka_unit_test(test_figure_messages),

@@ -26,7 +26,7 @@ SCRIPTS = {
     "cubic.lua": """
 -- a cubic Bezier curve with its control polygon
 local c = bezier{ {0, 0}, {1, 2.5}, {3.5, 2.5}, {4.5, 0.5} }
-local f = figure{ name = "cubic", width = "6cm", height = "4cm",
+local f = figure{ name = "cubic", page = "fixed", width = "6cm", height = "4cm",
                   window = { -0.5, 5, -0.5, 3 } }
 f:polygon(c)
 f:curve(c)
@@ -244,7 +244,7 @@ def main():
         rc, so, se = test("figures", "--references", "ref", "-o", "out")
         check("check after the update: exit 0", rc == 0, so + se)
 
-        # a figure made wider: a failure saying both sizes, no diff image
+        # a fixed page made wider: a failure saying both sizes, no diff image
         path = os.path.join(figs, "cubic.lua")
         with open(path, encoding="utf-8") as f:
             text = f.read()

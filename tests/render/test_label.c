@@ -5,6 +5,7 @@
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <string.h>
 
 #include <cmocka.h>
@@ -28,13 +29,48 @@ layout(const char *text)
     return lab;
 }
 
-/* The first box whose run text equals s. */
+/* s with its ASCII letters in the math italic alphabet (U+1D434 A,
+** U+1D44E a, U+210E h), as mathematics sets them; static storage. */
+static const char *
+mi(const char *s)
+{
+    static char out[256];
+    size_t n = 0;
+    for (; *s != '\0' && n + 5 < sizeof out; s++) {
+        unsigned c = (unsigned char)*s, cp = 0;
+        if (c >= 'A' && c <= 'Z')
+            cp = 0x1d434 + (c - 'A');
+        else if (c == 'h')
+            cp = 0x210e;
+        else if (c >= 'a' && c <= 'z')
+            cp = 0x1d44e + (c - 'a');
+        if (cp == 0) {
+            out[n++] = (char)c;
+        } else if (cp < 0x10000) {
+            out[n++] = (char)(0xe0 | (cp >> 12));
+            out[n++] = (char)(0x80 | ((cp >> 6) & 0x3f));
+            out[n++] = (char)(0x80 | (cp & 0x3f));
+        } else {
+            out[n++] = (char)(0xf0 | (cp >> 18));
+            out[n++] = (char)(0x80 | ((cp >> 12) & 0x3f));
+            out[n++] = (char)(0x80 | ((cp >> 6) & 0x3f));
+            out[n++] = (char)(0x80 | (cp & 0x3f));
+        }
+    }
+    out[n] = '\0';
+    return out;
+}
+
+/* The first box whose run text equals s, or s set in the math italic. */
 static const cf_label_box_t *
 box_of(const cf_label_t *lab, const char *s)
 {
     size_t i;
     for (i = 0; i < cf_label_box_count(lab); i++)
         if (strcmp(cf_label_run_text(lab, i), s) == 0)
+            return cf_label_get_box(lab, i);
+    for (i = 0; i < cf_label_box_count(lab); i++)
+        if (strcmp(cf_label_run_text(lab, i), mi(s)) == 0)
             return cf_label_get_box(lab, i);
     fail_msg("no run \"%s\"", s);
     return NULL;
@@ -155,7 +191,10 @@ glyph_ink_right(const char *family, const char *glyph, double *ink_right,
                                             FALSE);
     pango_layout_context_changed(pl);
     pango_font_description_set_family(fd, family);
-    pango_font_description_set_style(fd, PANGO_STYLE_ITALIC);
+    /* the math font's italic alphabet is upright-styled: its glyphs lean */
+    pango_font_description_set_style(fd, strcmp(family, "Latin Modern Math")
+                                     == 0 ? PANGO_STYLE_NORMAL
+                                          : PANGO_STYLE_ITALIC);
     pango_font_description_set_absolute_size(fd, SIZE * PANGO_SCALE);
     pango_layout_set_font_description(pl, fd);
     pango_layout_set_text(pl, glyph, -1);
@@ -197,11 +236,11 @@ test_italic_correction(void **state)
         const cf_label_box_t *nuc, *sub, *sup;
         snprintf(text, sizeof text, "%s_0^4", letters[k]);
         lab = layout(text);
-        glyph_ink_right("LM Roman 10", letters[k], &ink_right,
+        glyph_ink_right("Latin Modern Math", mi(letters[k]), &ink_right,
                         &advance);
         nuc = box_of(lab, letters[k]);
         scripts_of(lab, &sub, &sup);
-        /* the nucleus is the 10 pt design's italic, as measured */
+        /* the nucleus is the math font's italic letter, as measured */
         tu_assert_close(nuc->width, advance, 1e-9, 1);
         /* the test's premise: these letters overhang (by more than
         ** 0.03 em; 1 pixel is 0.0025 em) */
@@ -236,7 +275,8 @@ test_italic_correction(void **state)
             cf_label_t *lab = layout(texts[k]);
             const cf_label_box_t *nuc = box_of(lab, letter);
             const cf_label_box_t *d = box_of(lab, next[k]);
-            glyph_ink_right("LM Roman 10", letter, &ink_right, &advance);
+            glyph_ink_right("Latin Modern Math", mi(letter), &ink_right,
+                            &advance);
             assert_true(ink_right - advance > 0.03 * SIZE);
             assert_true(d->x >= nuc->x + ink_right - 2.0 / 40);
             assert_true(d->x <= nuc->x + ink_right + 2.0 / 40);
@@ -279,7 +319,7 @@ test_group_subscript_and_minus(void **state)
         assert_true(b->y == y);
         strcat(joined, cf_label_run_text(lab, i));
     }
-    assert_string_equal(joined, "k\xe2\x88\x92p+1,1");
+    assert_string_equal(joined, mi("k\xe2\x88\x92p+1,1"));
     cf_label_destroy(lab);
 }
 
@@ -319,9 +359,9 @@ test_nested_scripts_and_greek(void **state)
     }
 
     lab = layout("\\omega_i\\Omega\\alpha");
-    assert_true(box_of(lab, "\xcf\x89")->italic);      /* ω italic */
+    assert_true(box_of(lab, "\xf0\x9d\x9c\x94")->italic);  /* ω italic */
     assert_false(box_of(lab, "\xce\xa9")->italic);     /* Ω upright */
-    assert_true(box_of(lab, "\xce\xb1")->italic);      /* α */
+    assert_true(box_of(lab, "\xf0\x9d\x9b\xbc")->italic);  /* α */
     assert_int_equal(cf_label_unknown_glyphs(lab), 0);
     cf_label_destroy(lab);
 }
@@ -551,6 +591,154 @@ test_label_tex(void **state)
     }
 }
 
+/* Letters of mathematics are TeX's math italic: the code points of Latin
+** Modern Math's italic alphabet (P U+1D443, h U+210E, alpha U+1D6FC),
+** \boldsymbol its bold italic, \mathcal its calligraphic capitals;
+** digits stay upright text. */
+static void
+test_math_italic_alphabet(void **state)
+{
+    cf_label_t *lab;
+    (void)state;
+    lab = layout("P");
+    assert_string_equal(cf_label_run_text(lab, 0), "\xf0\x9d\x91\x83");
+    cf_label_destroy(lab);
+    lab = layout("h");
+    assert_string_equal(cf_label_run_text(lab, 0), "\xe2\x84\x8e");
+    cf_label_destroy(lab);
+    lab = layout("\\alpha");
+    assert_string_equal(cf_label_run_text(lab, 0), "\xf0\x9d\x9b\xbc");
+    cf_label_destroy(lab);
+    lab = layout("\\boldsymbol{a}");
+    assert_string_equal(cf_label_run_text(lab, 0), "\xf0\x9d\x92\x82");
+    cf_label_destroy(lab);
+    lab = layout("\\mathcal{A}\\mathcal{B}");
+    assert_string_equal(cf_label_run_text(lab, 0),
+                        "\xf0\x9d\x92\x9c\xe2\x84\xac");
+    cf_label_destroy(lab);
+    lab = layout("12");
+    assert_string_equal(cf_label_run_text(lab, 0), "12");
+    cf_label_destroy(lab);
+    /* a sans family keeps its own italic: letters stay ASCII */
+    {
+        cf_label_t *l2 = NULL;
+        assert_int_equal(cf_label_create("x", "Latin Modern Sans", SIZE, &l2,
+                                         NULL), CF_STATUS_OK);
+        assert_string_equal(cf_label_run_text(l2, 0), "x");
+        assert_true(cf_label_get_box(l2, 0)->italic);
+        cf_label_destroy(l2);
+    }
+}
+
+/* The gap between the advance of box a and the start of box b. */
+static double
+gap(const cf_label_t *lab, size_t a, size_t b)
+{
+    const cf_label_box_t *ba = cf_label_get_box(lab, a);
+    const cf_label_box_t *bb = cf_label_get_box(lab, b);
+    return bb->x - (ba->x + ba->width);
+}
+
+/* TeX's spaces between atoms, in mu of the quad (18 mu = SIZE): 4 mu
+** around a binary operator, 5 around a relation, 3 after a comma, none
+** after a unary minus; spaces typed in mathematics are ignored; \, \: \;
+** \quad are 3, 4, 5 and 18 mu; scripts get no medium or thick space. */
+static void
+test_math_spacing(void **state)
+{
+    const double mu = SIZE / 18;
+    cf_label_t *lab, *l2;
+    (void)state;
+    lab = layout("1+2=3,4");
+    assert_int_equal(cf_label_box_count(lab), 7);
+    assert_true(fabs(gap(lab, 0, 1) - 4 * mu) < 1e-9);
+    assert_true(fabs(gap(lab, 1, 2) - 4 * mu) < 1e-9);
+    assert_true(fabs(gap(lab, 2, 3) - 5 * mu) < 1e-9);
+    assert_true(fabs(gap(lab, 3, 4) - 5 * mu) < 1e-9);
+    assert_true(fabs(gap(lab, 5, 6) - 3 * mu) < 1e-9);
+    /* spaces are ignored: the same layout */
+    l2 = layout("1 + 2  =  3, 4");
+    assert_int_equal(cf_label_box_count(l2), 7);
+    assert_true(fabs(cf_label_get_box(l2, 6)->x
+                     - cf_label_get_box(lab, 6)->x) < 1e-9);
+    cf_label_destroy(l2);
+    cf_label_destroy(lab);
+    /* a unary minus: no space after it, and (-1) neither */
+    lab = layout("-1");
+    assert_true(fabs(cf_label_get_box(lab, 0)->x) < 1e-9);
+    assert_true(fabs(gap(lab, 0, 1)) < 1e-9);
+    cf_label_destroy(lab);
+    lab = layout("1\\,2\\:3\\;4\\quad5");
+    assert_true(fabs(gap(lab, 0, 1) - 3 * mu) < 1e-9);
+    assert_true(fabs(gap(lab, 1, 2) - 4 * mu) < 1e-9);
+    assert_true(fabs(gap(lab, 2, 3) - 5 * mu) < 1e-9);
+    assert_true(fabs(gap(lab, 3, 4) - 18 * mu) < 1e-9);
+    cf_label_destroy(lab);
+    /* in a script, + gets no medium space */
+    lab = layout("x_{1+2}");
+    assert_true(fabs(gap(lab, 1, 2)) < 1e-9);
+    cf_label_destroy(lab);
+}
+
+/* \ge and \le are U+2265 and U+2264 from the math font (TeX's shapes,
+** not the slanted U+2A7E); \overline puts a rule over its group. */
+static void
+test_relations_and_overline(void **state)
+{
+    cf_label_t *lab;
+    const cf_label_box_t *rule = NULL, *a;
+    size_t i;
+    (void)state;
+    lab = layout("a\\ge b\\le c");
+    assert_string_equal(cf_label_run_text(lab, 1), "\xe2\x89\xa5");
+    assert_string_equal(cf_label_run_text(lab, 3), "\xe2\x89\xa4");
+    cf_label_destroy(lab);
+    lab = layout("\\overline{AB}");
+    for (i = 0; i < cf_label_box_count(lab); i++)
+        if (cf_label_run_text(lab, i)[0] == '\0')
+            rule = cf_label_get_box(lab, i);
+    assert_non_null(rule);
+    a = cf_label_get_box(lab, 0);
+    assert_true(fabs(rule->x - a->x) < 1e-9);
+    assert_true(rule->width >= a->width - 1e-9);
+    assert_true(rule->y > 0.6 * SIZE);
+    cf_label_destroy(lab);
+    assert_int_not_equal(cf_label_create("\\mathcal{a}", NULL, SIZE, &lab,
+                                         NULL), CF_STATUS_OK);
+}
+
+/* Every command of the list `curvefig help labels` prints parses. */
+static void
+visit_parse(const char *kind, const char *name, const char *what, void *ctx)
+{
+    char text[64];
+    cf_label_t *lab = NULL;
+    cf_diag_t d;
+    size_t *n = ctx;
+    (void)what;
+    if (strcmp(kind, "structure") == 0)
+        snprintf(text, sizeof text, strcmp(name, "frac") == 0
+                 ? "\\%s{A}{B}" : "\\%s{A}", name);
+    else if (strcmp(kind, "accent") == 0)
+        snprintf(text, sizeof text, "\\%s{x}", name);
+    else
+        snprintf(text, sizeof text, "a\\%s b", name);
+    cf_diag_clear(&d);
+    if (cf_label_create(text, NULL, SIZE, &lab, &d) != CF_STATUS_OK)
+        fail_msg("%s \"%s\": %s", kind, text, d.msg);
+    cf_label_destroy(lab);
+    (*n)++;
+}
+
+static void
+test_every_listed_command_parses(void **state)
+{
+    size_t n = 0;
+    (void)state;
+    cf_label_each_command(visit_parse, &n);
+    assert_true(n > 100);
+}
+
 int
 main(void)
 {
@@ -566,6 +754,10 @@ main(void)
         cmocka_unit_test(test_syntax_errors),
         cmocka_unit_test(test_tex_points),
         cmocka_unit_test(test_label_tex),
+        cmocka_unit_test(test_math_italic_alphabet),
+        cmocka_unit_test(test_math_spacing),
+        cmocka_unit_test(test_relations_and_overline),
+        cmocka_unit_test(test_every_listed_command_parses),
         cmocka_unit_test(test_out_of_memory),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -23,6 +23,14 @@ CHECK is one of:
   labels   labels in every part of the label syntax compile with
            pdflatex (OT1 Computer Modern, and T1 Latin Modern with
            amsmath); labels in scripts pdflatex cannot set are outlines
+  commands every command `curvefig help labels` lists parses (curvefig
+           renders it) and is valid TeX (pdflatex, with and without
+           amsmath)
+  slides   a beamer deck on a coloured background with figures rendered
+           --theme beamer: PGF frames in TeX's sans fonts, PDF frames in
+           curvefig's Latin Modern Sans; a transparent PDF figure shows
+           the frame's colour around its ink (pixels), a --background
+           white one a white box
 
 Exit 77 (skipped) when pdflatex is not installed.
 """
@@ -337,13 +345,130 @@ def check_labels():
     print("ok: %d labels compile with pdflatex (OT1 and T1)" % len(LABELS))
 
 
+def help_commands():
+    """(kind, name) of every line of `curvefig help labels`."""
+    out = run([TOOL, "help", "labels"])
+    cmds = re.findall(r"^  (symbol|space|accent|structure)\s+\\(\S+)", out,
+                      re.M)
+    if len(cmds) < 100:
+        fail("curvefig help labels lists %d commands" % len(cmds))
+    return cmds
+
+
+def check_commands():
+    labels = []
+    for kind, name in help_commands():
+        if kind == "structure":
+            labels.append("\\%s{A}{B}" % name if name == "frac"
+                          else "\\%s{A}" % name)
+        elif kind == "accent":
+            labels.append("\\%s{x}" % name)
+        else:
+            labels.append("a\\%s b" % name)
+    lua = ["local f = figure{ name = 'commands', width = '12cm', "
+           "height = '%dcm', window = {0, 4, 0, %d} }"
+           % (len(labels) // 4 + 2, len(labels) // 4 + 1)]
+    for k, src in enumerate(labels):
+        lua.append("f:label({%d, %d}, [==[%s]==], { place = 'e' })"
+                   % (k % 4, k // 4, src))
+    with open(os.path.join(WORK, "commands.lua"), "w") as f:
+        f.write("\n".join(lua) + "\n")
+    run([TOOL, "render", "commands.lua", "-o", WORK, "-f", "pgf,pdf"])
+    with open(os.path.join(WORK, "commands.pgf")) as f:
+        text = f.read()
+    if text.count("\\pgftext") != len(labels):
+        fail("expected %d labels set by TeX, found %d"
+             % (len(labels), text.count("\\pgftext")))
+    tex("commands-doc", doc("[11pt]{article}", "\\input{commands.pgf}"))
+    tex("commands-ams", doc("[11pt]{article}", "\\input{commands.pgf}",
+                            "\\usepackage{amsmath}\n"))
+    print("ok: %d listed commands parse and compile (with and without "
+          "amsmath)" % len(labels))
+
+
+def ppm(path):
+    """(width, height, bytes) of a binary PPM."""
+    with open(path, "rb") as f:
+        data = f.read()
+    m = re.match(rb"P6\s+(\d+)\s+(\d+)\s+(\d+)\s", data)
+    if m is None:
+        fail(path + ": not a binary PPM")
+    w, h = int(m.group(1)), int(m.group(2))
+    return w, h, data[m.end():m.end() + 3 * w * h]
+
+
+def page_pixels(pdf, page):
+    """Pixels of page of pdf at 40 dpi: (count, share of white, share of
+    the colour of the top left corner, the frame's)."""
+    base = "px-%d" % page
+    run(["pdftoppm", "-r", "40", "-f", str(page), "-l", str(page),
+         "-singlefile", pdf, base])
+    w, h, px = ppm(os.path.join(WORK, base + ".ppm"))
+    corner = px[0:3]
+    n = w * h
+    white = sum(1 for i in range(0, 3 * n, 3)
+                if px[i] >= 250 and px[i + 1] >= 250 and px[i + 2] >= 250)
+    frame = sum(1 for i in range(0, 3 * n, 3) if px[i:i + 3] == corner)
+    return n, white / n, frame / n, tuple(corner)
+
+
+def check_slides():
+    need("pdftoppm")
+    figs = ("lec05-decasteljau.lua", "markova-basis-all.lua")
+    for s in figs:
+        render(s, "pgf,pdf", ["--theme", "beamer"],
+               out=os.path.join(WORK, "slides"))
+    render(figs[0], "pdf", ["--theme", "beamer", "--background", "white"],
+           out=os.path.join(WORK, "white"))
+    frames = "".join("\\begin{frame}\n\\centering\\input{slides/%s.pgf}\n"
+                     "\\end{frame}\n" % s[:-4] for s in figs)
+    frames += "".join("\\begin{frame}\n\\centering\\includegraphics"
+                      "{slides/%s.pdf}\n\\end{frame}\n" % s[:-4]
+                      for s in figs)
+    frames += ("\\begin{frame}\n\\centering\\includegraphics"
+               "{white/%s.pdf}\n\\end{frame}\n" % figs[0][:-4])
+    pre = "\\setbeamercolor{background canvas}{bg=orange!30}\n"
+    tex("slides", "\\documentclass{beamer}\n%s\\begin{document}\n%s"
+        "\\end{document}\n" % (pre, frames))
+    pgf = fonts("slides.pdf", 1, 2)
+    if not pgf or any(t != "Type 1" for n, t in pgf):
+        fail("PGF frames use fonts that are not TeX's: %s" % pgf)
+    if not any(n.startswith("CMSS") for n, t in pgf):
+        fail("PGF frames: not in beamer's sans (CMSS): %s" % pgf)
+    pdf = fonts("slides.pdf", 3, 4)
+    names = set(n for n, t in pdf)
+    if not any(n.startswith("LMSans") for n in names):
+        fail("PDF frames: no Latin Modern Sans of --theme beamer: %s" % names)
+    if any(n.startswith("LMRoman") for n in names):
+        fail("PDF frames: serif Latin Modern in a sans theme: %s" % names)
+    # transparent: the frame's colour around the ink, no white box (white
+    # only in the halos of labels over lines, well under 2 % of the frame);
+    # the same figure with --background white: a white box
+    for page in (1, 3):
+        n, white, frame, corner = page_pixels("slides.pdf", page)
+        if corner[2] > 200 or white > 0.02 or frame < 0.8:
+            fail("page %d: %.2f %% white, %.1f %% frame colour %s: the "
+                 "figure is not transparent" % (page, 100 * white,
+                                                100 * frame, corner))
+    n, white5, frame5, _ = page_pixels("slides.pdf", 5)
+    if white5 < 0.1:
+        fail("page 5 (--background white): only %.2f %% white"
+             % (100 * white5))
+    print("ok: beamer deck, sans theme on orange!30; PGF fonts %s, PDF "
+          "fonts %s; transparent PDF: %.1f %% of the frame its colour, "
+          "white PDF: %.1f %% white" % (sorted(set(n for n, t in pgf)),
+                                        sorted(names), 100 * frame,
+                                        100 * white5))
+
+
 def main():
     need("pdflatex", "pdffonts", "pdfinfo")
     os.makedirs(WORK, exist_ok=True)
     checks = {"docs": check_docs, "article": check_article,
               "beamer": check_beamer, "engines": check_engines,
               "pixels": check_pixels, "figures": check_figures,
-              "labels": check_labels}
+              "labels": check_labels, "commands": check_commands,
+              "slides": check_slides}
     if CHECK not in checks:
         fail("unknown check " + CHECK)
     checks[CHECK]()

@@ -737,6 +737,8 @@ test_figure(void **state)
         assert_string_equal(d1.msg, d2.msg);
     }
     BAD(cf_figure_set_fit(fig, -1, true));
+    BAD(cf_figure_set_page_mode(fig, (cf_page_mode_t)7));
+    BAD(cf_figure_set_background(fig, (cf_background_t)7));
     BAD(cf_figure_set_tolerance(fig, 0));
     BAD(cf_figure_set_theme(fig, NULL));
     BAD(cf_figure_set_projection(fig, 3, NULL));
@@ -786,6 +788,11 @@ test_figure(void **state)
     BAD(cf_figure_page_map(fig, NULL, NULL, NULL));
     BAD(cf_figure_dump(fig, NULL, NULL, &size, NULL));
     BAD(cf_figure_set_clip(NULL, true));
+    BAD(cf_figure_set_page_mode(NULL, CF_PAGE_INK));
+    BAD(cf_figure_get_fit(NULL, NULL, NULL));
+    cf_label_each_command(NULL, NULL);   /* no visitor: nothing */
+    BAD(cf_theme_set_fonts(NULL, "sans", 10, NULL));
+    BAD(cf_figure_set_background(NULL, CF_BACKGROUND_NONE));
     BAD(cf_figure_bspline_knots(fig, NULL, NULL, NULL, NULL, NULL, NULL));
     BAD(cf_figure_add_bezier_tangent(fig, NULL, 0, 0, NULL, NULL));
     BAD(cf_figure_add_bspline_tangent(NULL, s, 0, 0, NULL, NULL));

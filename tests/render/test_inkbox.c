@@ -1,0 +1,204 @@
+/* The box of every shipped figure (the scripts in figures/, page = "ink"
+** by default) is its ink box plus the 1 bp margin, and it is sized by
+** width and height: measured on the PNG's pixels, the ink reaches the
+** page within the margin on all four sides, and the page reaches the
+** script's width or height (a figure with panels: at most them).  And the
+** C API alike: a figure of page mode CF_PAGE_INK with a free aspect ratio
+** is exactly width x height; the page is painted in PNG only. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+#include <cairo.h>
+
+#include "model.h"
+#include "script.h"
+#include "testutil.h"
+
+#define DPI 144.0
+#define MARGIN 1.0      /* bp: the default margin of page = "ink" */
+#define SLACK 0.05      /* bp: the layout's fit (0.01) and rounding */
+
+typedef struct reader {
+    const unsigned char *data;
+    size_t size, pos;
+} reader_t;
+
+static cairo_status_t
+read_mem(void *closure, unsigned char *out, unsigned int n)
+{
+    reader_t *r = closure;
+    if (r->pos + n > r->size)
+        return CAIRO_STATUS_READ_ERROR;
+    memcpy(out, r->data + r->pos, n);
+    r->pos += n;
+    return CAIRO_STATUS_SUCCESS;
+}
+
+/* The box of the pixels with ink (alpha > 0: white halos of labels are
+** ink too) of a transparent PNG in memory (x0 y0 x1 y1, pixels), and
+** its size. */
+static void
+ink_pixels(const unsigned char *png, size_t size, int box[4], int *w, int *h)
+{
+    reader_t r = { png, size, 0 };
+    cairo_surface_t *img = cairo_image_surface_create_from_png_stream(
+        read_mem, &r);
+    const unsigned char *px;
+    int x, y, stride;
+    assert_int_equal(cairo_surface_status(img), CAIRO_STATUS_SUCCESS);
+    *w = cairo_image_surface_get_width(img);
+    *h = cairo_image_surface_get_height(img);
+    px = cairo_image_surface_get_data(img);
+    stride = cairo_image_surface_get_stride(img);
+    box[0] = *w;
+    box[1] = *h;
+    box[2] = box[3] = 0;
+    for (y = 0; y < *h; y++)
+        for (x = 0; x < *w; x++) {
+            uint32_t p = *(const uint32_t *)(const void *)(px + y * stride
+                                                            + 4 * x);
+            if ((p >> 24) == 0)
+                continue;
+            box[0] = x < box[0] ? x : box[0];
+            box[1] = y < box[1] ? y : box[1];
+            box[2] = x + 1 > box[2] ? x + 1 : box[2];
+            box[3] = y + 1 > box[3] ? y + 1 : box[3];
+        }
+    cairo_surface_destroy(img);
+}
+
+/* Faults of one figure, printed; their number. */
+static int
+check_figure(cf_figure_t *fig, const char *name)
+{
+    cf_write_options_t o;
+    unsigned char *png = NULL;
+    size_t size = 0;
+    double ink[4], pw, ph, W, H, px = DPI / 72;
+    int box[4], w, h, bad = 0, k;
+    cf_write_options_init(&o);
+    o.dpi = DPI;
+    assert_int_equal(cf_figure_ink_box(fig, &o, ink, &pw, &ph, NULL), 0);
+    cf_figure_get_size(fig, &W, &H);
+    if (pw > W + SLACK || ph > H + SLACK
+        || (fig->panels == NULL && fabs(pw - W) > SLACK
+            && fabs(ph - H) > SLACK)) {
+        print_message("%s: box %.3f x %.3f bp for width x height %.3f x "
+                      "%.3f\n", name, pw, ph, W, H);
+        bad++;
+    }
+    assert_int_equal(cf_figure_set_background(fig, CF_BACKGROUND_NONE), 0);
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_PNG, &o, &png, &size,
+                                      NULL), 0);
+    ink_pixels(png, size, box, &w, &h);
+    /* (a PNG of a figure with steps shows the last one in the box of
+    ** them all) the margin of white on each side: 1 bp, give or take the
+    ** anti-aliasing pixel and the rounding of the page to pixels */
+    {
+        double white[4] = { box[0] / px, box[1] / px, (w - box[2]) / px,
+                            (h - box[3]) / px };
+        for (k = 0; k < 4 && cf_figure_steps(fig) <= 1; k++)
+            if (white[k] > MARGIN + 2 / px + SLACK) {
+                print_message("%s: %.2f bp of white on side %d (margin "
+                              "%g bp)\n", name, white[k], k, MARGIN);
+                bad++;
+                break;
+            }
+    }
+    cf_free(png);
+    return bad;
+}
+
+static void
+test_shipped_figures_fit(void **state)
+{
+    char *names[256];
+    size_t n, i, figures = 0, failed = 0;
+    (void)state;
+    n = tu_figure_scripts(CF_SOURCE_ROOT "/figures", names, 256);
+    for (i = 0; i < n; i++) {
+        char path[1024];
+        cf_script_t *sc = NULL;
+        size_t f;
+        snprintf(path, sizeof path, "%s/figures/%s", CF_SOURCE_ROOT,
+                 names[i]);
+        assert_int_equal(cf_script_create(NULL, NULL, &sc, NULL), 0);
+        if (cf_script_run_file(sc, path) != CF_STATUS_OK)
+            fail_msg("%s: %s", path, cf_script_error(sc));
+        for (f = 0; f < cf_script_figure_count(sc); f++) {
+            figures++;
+            failed += check_figure(cf_script_figure(sc, f),
+                                   cf_script_figure_name(sc, f)) > 0;
+        }
+        cf_script_destroy(sc);
+        free(names[i]);
+    }
+    print_message("%zu figures, %zu not fitted to their ink\n", figures,
+                  failed);
+    assert_true(figures >= 60);
+    assert_int_equal(failed, 0);
+}
+
+static bool
+has(const unsigned char *data, size_t size, const char *s)
+{
+    size_t n = strlen(s), i;
+    for (i = 0; i + n <= size; i++)
+        if (memcmp(data + i, s, n) == 0)
+            return true;
+    return false;
+}
+
+/* The C API: CF_PAGE_INK with a free aspect ratio fills width x height
+** exactly; CF_PAGE_FIXED keeps the page; the background is painted in PNG
+** only unless CF_BACKGROUND_ALWAYS (cairo's SVG paints it as a white
+** rectangle). */
+static void
+test_api_page_and_background(void **state)
+{
+    static const double P[] = { 0, 0, 1, 2, 3, 2, 4, 0 };
+    cf_figure_t *fig = NULL;
+    cf_bezier_t *c = NULL;
+    double pw, ph;
+    unsigned char *svg = NULL;
+    size_t size = 0;
+    const char *white = "fill:rgb(100%,100%,100%)";
+    (void)state;
+    assert_int_equal(cf_bezier_create(2, 3, P, NULL, &c, NULL), 0);
+    assert_int_equal(cf_figure_create(200, 120, CF_UNIT_BP, &fig, NULL), 0);
+    assert_int_equal(cf_figure_add_bezier(fig, c, NULL), 0);
+    assert_int_equal(cf_figure_set_fit(fig, 1, false), 0);
+    assert_int_equal(cf_figure_ink_box(fig, NULL, NULL, &pw, &ph, NULL), 0);
+    assert_true(pw == 200 && ph == 120);   /* fixed: the page */
+    assert_int_equal(cf_figure_set_page_mode(fig, CF_PAGE_INK), 0);
+    assert_int_equal(cf_figure_ink_box(fig, NULL, NULL, &pw, &ph, NULL), 0);
+    assert_true(fabs(pw - 200) < SLACK && fabs(ph - 120) < SLACK);
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_SVG, NULL, &svg, &size,
+                                      NULL), 0);
+    assert_false(has(svg, size, white));
+    cf_free(svg);
+    assert_int_equal(cf_figure_set_background(fig, CF_BACKGROUND_ALWAYS), 0);
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_SVG, NULL, &svg, &size,
+                                      NULL), 0);
+    assert_true(has(svg, size, white));
+    cf_free(svg);
+    cf_figure_destroy(fig);
+    cf_bezier_destroy(c);
+}
+
+int
+main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_api_page_and_background),
+        cmocka_unit_test(test_shipped_figures_fit),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

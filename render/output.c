@@ -271,8 +271,9 @@ cf_figure_page_map(cf_figure_t *fig, const cf_write_options_t *options,
         st = options_or_default(fig, options, &o, diag);
     if (st != CF_STATUS_OK)
         return st;
-    /* a tight page moves the map by the ink box, which needs the drawing */
-    if (o.tight) {
+    /* a tight or ink page moves the map by the ink box, which needs the
+    ** drawing */
+    if (o.tight || fig->page_mode == CF_PAGE_INK) {
         st = make_job(fig, &o, false, &job, diag);
     } else {
         memset(&job, 0, sizeof job);

@@ -19,6 +19,7 @@ local s = bspline{ degree = 3, knots = U, points = P }
 
 local f = figure{
   name = "deboor",
+  page = "fixed", clip = true,  -- one view while points are dragged
   caption = "De Boor's algorithm at the slider's u on the sample curve "
     .. "(p = 3): the points of the span, P_{i,1} (blue), P_{i,2} (orange), "
     .. "C(u) (red star)",

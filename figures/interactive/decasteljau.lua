@@ -18,6 +18,7 @@ local c = bezier(P)
 
 local f = figure{
   name = "decasteljau",
+  page = "fixed", clip = true,  -- one view while points are dragged
   caption = "De Casteljau's algorithm on P_0 ... P_4 at the slider's t: "
     .. "control polygon black, levels 1-3 blue, orange, yellow, the curve "
     .. "red, the point b_0^4(t) a green star",

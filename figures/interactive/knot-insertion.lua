@@ -22,6 +22,7 @@ local n, info = s:insert_knot(u)
 
 local f = figure{
   name = "knot-insertion",
+  page = "fixed", clip = true,  -- one view while points are dragged
   caption = "Knot insertion at the slider's u on the sample curve (p = 2): "
     .. "the old polygon dashed, the new one with its two new points blue, "
     .. "the knot point C(u) green; the curve stays",

@@ -25,6 +25,7 @@ local c = bezier(P)
 
 local f = figure{
   name = "offset",
+  page = "fixed", clip = true,  -- one view while points are dragged
   caption = "The inward offset at distance d of the slider: raw offset "
     .. "orange dashed with its cusps red, trimmed offset green",
   width = "9cm", height = "9.65cm", window = { -3.3, 9.2, -2.3, 11.1 },

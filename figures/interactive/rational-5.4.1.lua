@@ -24,6 +24,7 @@ end
 
 local f = figure{
   name = "rational-5.4.1",
+  page = "fixed", clip = true,  -- one view while points are dragged
   caption = "Example 5.4.1: the rational Bézier curve with weights ω_i "
     .. "(red) and the ordinary Bézier curve (blue, dashed) on the same "
     .. "eight points",

@@ -242,6 +242,43 @@ static const char *const place_names[] = {
     "center", "n", "ne", "e", "se", "s", "sw", "w", "nw", "auto"
 };
 
+/* A page box (x0 y0 x1 y1) holding everything a label's operations draw,
+** from the boxes of its texts (widened by their halos and a bp for the
+** rounding of the glyphs' outlines): false when it draws anything but
+** text, or nothing. */
+static bool
+ops_box(const cf__dl_t *dl, double box[4])
+{
+    size_t k;
+    bool any = false;
+    for (k = 0; k < dl->count; k++) {
+        const cf__op_t *op = &dl->ops[k];
+        const cf__text_op_t *t = &op->u.text;
+        double m, b[4];
+        if (op->kind == CF__OP_GROUP || op->kind == CF__OP_END)
+            continue;
+        if (op->kind != CF__OP_TEXT)
+            return false;
+        if (!(t->ink[2] > t->ink[0] && t->ink[3] > t->ink[1]))
+            continue;
+        m = 1.0 + (t->halo > 0 ? t->halo : 0);
+        b[0] = t->ox + t->ink[0] - m;
+        b[1] = t->oy + t->ink[1] - m;
+        b[2] = t->ox + t->ink[2] + m;
+        b[3] = t->oy + t->ink[3] + m;
+        if (!any) {
+            memcpy(box, b, sizeof b);
+            any = true;
+        } else {
+            box[0] = fmin(box[0], b[0]);
+            box[1] = fmin(box[1], b[1]);
+            box[2] = fmax(box[2], b[2]);
+            box[3] = fmax(box[3], b[3]);
+        }
+    }
+    return any;
+}
+
 /* Test label i (not yet in the raster) against the ink; a warning when
 ** it lies on some.  Then add it to the raster. */
 static cf_status_t
@@ -258,7 +295,8 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
     st = element_ops(fig, i, lay, r);
     if (st != CF_STATUS_OK)
         return st;
-    if (cf__cairo_ink(&r->dl, 0, r->dl.count, ink) != 0)
+    if (!ops_box(&r->dl, ink)
+        && cf__cairo_ink(&r->dl, 0, r->dl.count, ink) != 0)
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
                            "cairo failed measuring a label");
     if (!(ink[2] > ink[0] && ink[3] > ink[1]))
@@ -298,7 +336,14 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
                  automatic ? "placed automatically " : "place ",
                  place_names[place]);
     }
-    cf__dl_play(&r->dl, 0, r->dl.count, &cf__cairo_backend, r->cr);
+    /* the label's pixels, drawn once, into the page's ink */
+    cairo_surface_flush(r->one);
+    cairo_save(r->cr);
+    cairo_identity_matrix(r->cr);
+    cairo_set_source_surface(r->cr, r->one, 0, 0);
+    cairo_rectangle(r->cr, px[0], px[1], px[2] - px[0], px[3] - px[1]);
+    cairo_fill(r->cr);
+    cairo_restore(r->cr);
     return CF_STATUS_OK;
 }
 
@@ -335,8 +380,50 @@ raster_close(raster_t *r)
     cairo_surface_destroy(r->one);
 }
 
-cf_status_t
-cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay)
+/* The key of the places for layout lay: the layout, the ink (into ink:
+** every element but the labels and the shadings) and each label's own
+** operations, an automatic one drawn at a fixed place.  chosen[i] is set
+** for every label (NULL elsewhere). */
+static cf_status_t
+place_key(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *ink,
+          cf__auto_place_t **chosen, uint64_t *key)
+{
+    cf__dl_t one;
+    cf_style_t s;
+    cf__text_t *t;
+    double x, y;
+    size_t i;
+    cf_status_t st = CF_STATUS_OK;
+    *key = cf__hash_layout(fig, lay);
+    cf__dl_init(&one);
+    for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
+        chosen[i] = NULL;
+        if (is_label(fig, i, &x, &y, &t, &chosen[i], &s)) {
+            cf__auto_place_t keep = *chosen[i];
+            cf__hash_bytes(key, &s.place, sizeof s.place);
+            cf__hash_double(key, s.offset);
+            chosen[i]->place = CF_PLACE_NE;
+            chosen[i]->offset = 0;
+            cf__dl_reset(&one);
+            st = cf__element_draw(fig, i, lay, &one);
+            cf__hash_dl(key, &one);
+            *chosen[i] = keep;
+        } else if (!(fig->els[i]->kind->flags & CF__KIND_SHADING)) {
+            st = cf__element_draw(fig, i, lay, ink);
+        }
+    }
+    if (st == CF_STATUS_OK && (ink->failed || one.failed))
+        st = cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                         "out of memory placing labels");
+    cf__dl_free(&one);
+    cf__hash_dl(key, ink);
+    return st;
+}
+
+/* The places, for a layout not met before: the ink drawn, then the
+** labels placed by hand checked, then the automatic ones placed. */
+static cf_status_t
+place_all(cf_figure_t *fig, const cf__layout_t *lay, const cf__dl_t *ink)
 {
     raster_t r;
     cf_style_t s;
@@ -344,24 +431,15 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay)
     cf__auto_place_t *chosen;
     double x, y;
     size_t i;
-    bool any = false;
     cf_status_t st;
 
     cf_free(fig->warnings);
     fig->warnings = NULL;
     fig->warnings_len = 0;
-    for (i = 0; i < fig->count && !any; i++)
-        any = is_label(fig, i, &x, &y, &t, &chosen, &s);
-    if (!any)
-        return CF_STATUS_OK;
     st = raster_open(fig, &r);
     /* fills and hulls left out: labels may sit on a shading */
-    for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
-        if ((fig->els[i]->kind->flags & CF__KIND_SHADING)
-            || is_label(fig, i, &x, &y, &t, &chosen, &s))
-            continue;
-        st = raster_element(fig, i, lay, &r, r.cr);
-    }
+    if (st == CF_STATUS_OK)
+        cf__dl_play(ink, 0, ink->count, &cf__cairo_backend, r.cr);
     /* the labels placed by hand first: the automatic ones avoid them */
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
         if (!is_label(fig, i, &x, &y, &t, &chosen, &s)
@@ -383,6 +461,43 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay)
         st = check_label(fig, lay, &r, i, t, chosen->place, true);
     }
     raster_close(&r);
+    return st;
+}
+
+cf_status_t
+cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay)
+{
+    cf__auto_place_t **chosen, *c;
+    cf__dl_t ink;
+    uint64_t key;
+    cf_style_t s;
+    cf__text_t *t;
+    double x, y;
+    size_t i;
+    bool any = false;
+    cf_status_t st;
+
+    for (i = 0; i < fig->count && !any; i++)
+        any = is_label(fig, i, &x, &y, &t, &c, &s);
+    if (!any) {
+        cf_free(fig->warnings);
+        fig->warnings = NULL;
+        fig->warnings_len = 0;
+        return CF_STATUS_OK;
+    }
+    chosen = cf_calloc(fig->count, sizeof *chosen);
+    if (chosen == NULL)
+        return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                           "out of memory placing labels");
+    cf__dl_init(&ink);
+    st = place_key(fig, lay, &ink, chosen, &key);
+    if (st == CF_STATUS_OK && !cf__place_memo_find(fig, key, chosen)) {
+        st = place_all(fig, lay, &ink);
+        if (st == CF_STATUS_OK)
+            cf__place_memo_store(fig, key, chosen);
+    }
+    cf__dl_free(&ink);
+    cf_free(chosen);
     return st;
 }
 

@@ -247,6 +247,43 @@ cf_figure_ink_box(cf_figure_t *fig, const cf_write_options_t *options,
 }
 
 cf_status_t
+cf_figure_page_map(cf_figure_t *fig, const cf_write_options_t *options,
+                   double map[6], cf_diag_t *diag)
+{
+    cf_diag_clear(diag);
+    cf_write_options_t o;
+    job_t job;
+    cf_status_t st = check_fig_format(fig, CF_FORMAT_SVG, diag);
+    if (st == CF_STATUS_OK && map == NULL)
+        st = cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                         "page map: map is NULL");
+    if (st == CF_STATUS_OK)
+        st = options_or_default(fig, options, &o, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    /* a tight page moves the map by the ink box, which needs the drawing */
+    if (o.tight) {
+        st = make_job(fig, &o, false, &job, diag);
+    } else {
+        memset(&job, 0, sizeof job);
+        cf__dl_init(&job.dl);
+        if (cf__figure_layout(fig, &job.lay) != CF_STATUS_OK)
+            st = cf_figure_status(fig, diag);
+    }
+    if (st == CF_STATUS_OK) {
+        const cf__layout_t *l = &job.lay;
+        map[0] = l->sx;
+        map[1] = 0;
+        map[2] = 0;
+        map[3] = -l->sy;
+        map[4] = l->ox - l->sx * l->xmin;
+        map[5] = l->oy + l->sy * l->ymin;
+    }
+    job_free(&job);
+    return st;
+}
+
+cf_status_t
 cf_figure_dump(cf_figure_t *fig, const cf_write_options_t *options,
                char **text, size_t *size, cf_diag_t *diag)
 {

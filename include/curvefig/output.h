@@ -88,6 +88,15 @@ CF_API cf_status_t cf_figure_dump(cf_figure_t *fig,
                                   char **text, size_t *size,
                                   cf_diag_t *diag);
 
+/* The map from data coordinates (x, y) of the figure's window to page bp
+** (y down; the user units of the SVG) as the figure is laid out with
+** these options: page x = map[0] x + map[2] y + map[4], page y = map[1] x
+** + map[3] y + map[5], the order of SVG's matrix(a, b, c, d, e, f).  For a
+** figure split into panels, the map of the figure's own window. */
+CF_API cf_status_t cf_figure_page_map(cf_figure_t *fig,
+                                      const cf_write_options_t *options,
+                                      double map[6], cf_diag_t *diag);
+
 /* The ink box of everything drawn, in page bp (x0 y0 x1 y1, y down) at the
 ** physical size, and the page size the options give (tight or not). */
 CF_API cf_status_t cf_figure_ink_box(cf_figure_t *fig,

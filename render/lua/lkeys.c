@@ -142,6 +142,17 @@ static const cf__lua_key_t plot_keys[] = {
     KEY("font_size"), END,
 };
 
+/* the parameters of interactive figures (lparams.c) */
+static const cf__lua_key_t slider_keys[] = {
+    KEY("name"), KEY("label"), KEY("min"), KEY("max"), KEY("default"),
+    KEY("step"), END,
+};
+static const cf__lua_key_t param_points_keys[] = {
+    KEY("name"), KEY("default"), TABLE("constrain", CF__KEYS_CONSTRAIN),
+    KEY("figure"), END,
+};
+static const cf__lua_key_t constrain_keys[] = { KEY("grid"), KEY("line"), END };
+
 /* the steps an element is shown on (read with the style, lstyle.c) */
 static const cf__lua_key_t overlay_keys[] = { KEY("visible"), END };
 
@@ -231,6 +242,14 @@ static const cf__lua_schema_t schemas[CF__KEYS_COUNT_] = {
                               "f:curve(c); f:inset(%s)"),
     [CF__KEYS_PANELS] = METHOD("panels", panels_keys, NULL, NULL,
                                "f:panels(%s)"),
+    [CF__KEYS_SLIDER] = { "slider", "field", { slider_keys, NULL, NULL, NULL },
+                          false, NULL, NULL, "slider(%s)" },
+    [CF__KEYS_PARAM_POINTS] = { "points", "field",
+                                { param_points_keys, NULL, NULL, NULL },
+                                false, NULL, NULL, "points(%s)" },
+    [CF__KEYS_CONSTRAIN] = METHOD("constrain", constrain_keys, NULL, NULL,
+                                  "points{ name = 'Q', default = P, "
+                                  "constrain = %s }"),
 };
 
 const char cf__lua_schema_prelude[] =

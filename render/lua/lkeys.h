@@ -46,6 +46,9 @@ typedef enum cf__lua_keys {
     CF__KEYS_LEGEND,
     CF__KEYS_INSET,
     CF__KEYS_PANELS,
+    CF__KEYS_SLIDER,
+    CF__KEYS_PARAM_POINTS,  /* points{...}, a draggable point list */
+    CF__KEYS_CONSTRAIN,     /* nested: constrain = { ... } of points{} */
     CF__KEYS_COUNT_
 } cf__lua_keys_t;
 

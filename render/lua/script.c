@@ -12,6 +12,7 @@
 #include "lbspline.h"
 #include "lcommon.h"
 #include "lfigure.h"
+#include "lparams.h"
 #include "lschema.h"
 #include "lpattern.h"
 #include "ltrace.h"
@@ -44,6 +45,7 @@ struct cf_script {
     char where[160];   /* "file:line:" last seen by the hook, or "" */
     cf_allocator_t alloc;   /* the budget, current while the script runs */
     char *error;
+    cf__params_t *params;   /* the sliders and points it declares */
 };
 
 static cf_status_t
@@ -383,6 +385,7 @@ open_sandbox(lua_State *L)
     cf__lua_open_interp(L);
     cf__lua_open_conic(L);
     cf__lua_open_figure(L);
+    cf__lua_open_params(L);
     cf__lua_guard_names(L);
     return 0;
 }
@@ -410,6 +413,11 @@ cf_script_create(const cf_script_limits_t *limits, FILE *out,
     if (s == NULL)
         return fail(diag, CF_STATUS_NO_MEMORY, "out of memory%s", NULL);
     s->out = out != NULL ? out : stdout;
+    s->params = cf__params_create();
+    if (s->params == NULL) {
+        free(s);
+        return fail(diag, CF_STATUS_NO_MEMORY, "out of memory%s", NULL);
+    }
     s->max_memory = limits && limits->max_memory ? limits->max_memory
                                                  : CF_SCRIPT_DEFAULT_MEMORY;
     s->reserve = s->max_memory / 16 < RESERVE ? s->max_memory / 16 : RESERVE;
@@ -421,6 +429,7 @@ cf_script_create(const cf_script_limits_t *limits, FILE *out,
         cf_status_t st = s->limit_hit ? too_small(s, diag)
                                       : fail(diag, CF_STATUS_NO_MEMORY,
                                              "out of memory%s", NULL);
+        cf__params_destroy(s->params);
         free(s);
         return st;
     }
@@ -441,6 +450,7 @@ cf_script_create(const cf_script_limits_t *limits, FILE *out,
         return st;
     }
     lua_sethook(s->L, count_hook, LUA_MASKCOUNT, HOOK_EVERY);
+    cf__lua_set_params(s->L, s->params);
     *script = s;
     return CF_STATUS_OK;
 }
@@ -451,6 +461,7 @@ cf_script_destroy(cf_script_t *s)
     if (s == NULL)
         return;
     lua_close(s->L);
+    cf__params_destroy(s->params);
     free(s->error);
     free(s);
 }
@@ -686,4 +697,10 @@ const char *
 cf_script_figure_where(const cf_script_t *s, size_t i)
 {
     return s != NULL ? cf__lua_figure_string(s->L, i, 3) : "";
+}
+
+cf__params_t *
+cf_script_params(const cf_script_t *s)
+{
+    return s != NULL ? s->params : NULL;
 }

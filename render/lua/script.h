@@ -67,6 +67,11 @@ const char *cf_script_figure_caption(const cf_script_t *script, size_t i);
 /* Where the script made figure i: "FILE:LINE:" of its figure{} call. */
 const char *cf_script_figure_where(const cf_script_t *script, size_t i);
 
+/* The sliders and draggable points of the script (render/lua/params.h):
+** give values before cf_script_run_*, read the declarations after. */
+struct cf__params;
+struct cf__params *cf_script_params(const cf_script_t *script);
+
 #ifdef __cplusplus
 }
 #endif

@@ -8,7 +8,8 @@
 
 #include "checks.h"
 #include "help.h"
-#include "language-text.h"   /* generated from docs/language.md */
+#include "language-text.h"
+#include "live.h"   /* generated from docs/language.md */
 
 static const char *const overview[] = {
     "usage: curvefig COMMAND [OPTIONS] SCRIPT.lua\n",
@@ -21,6 +22,9 @@ static const char *const overview[] = {
     "  run SCRIPT.lua      run the script for what it prints (computations)\n",
     "  list SCRIPT.lua     print the names of the figures the script defines\n",
     "                      (one per line; the script's own prints go to stderr)\n",
+    "  live SCRIPT.lua [--port N]\n",
+    "                      serve the script's figures with their sliders and\n",
+    "                      draggable points on 127.0.0.1 (docs/interactive.md)\n",
     "  gallery -o INDEX.html MANIFEST...\n",
     "                      write an HTML page showing the figures listed in\n",
     "                      render manifests (see --manifest), in that order\n",
@@ -28,8 +32,8 @@ static const char *const overview[] = {
     "  test SCRIPT... | DIR --references REF [--update]\n",
     "                      check every figure against its reference image\n",
     "  help [TOPIC]        this text; TOPIC: render, run, list, gallery,\n",
-    "                      compare, test, language (the figure language\n",
-    "                      reference)\n",
+    "                      compare, test, live, language (the figure\n",
+    "                      language reference)\n",
     "  --version           print the version\n",
     "\n",
     "Options of render:\n",
@@ -108,6 +112,10 @@ cf__tool_help(const char *topic)
     }
     if (cf__tool_checks_help(topic) == 0)
         return 0;
+    if (strcmp(topic, "live") == 0) {
+        cf__tool_live_help();
+        return 0;
+    }
     if (strcmp(topic, "language") == 0) {
         put_lines(language);
         return 0;
@@ -119,6 +127,6 @@ cf__tool_help(const char *topic)
         }
     }
     fprintf(stderr, "curvefig: no help on '%s'; topics: render, run, list, "
-            "gallery, compare, test, language\n", topic);
+            "gallery, compare, test, live, language\n", topic);
     return 2;
 }

@@ -5,6 +5,7 @@
 **                              [--only NAME[,NAME...]] [--tight] [--steps]
 **   curvefig run SCRIPT.lua
 **   curvefig list SCRIPT.lua
+**   curvefig live SCRIPT.lua [--port N] (live.h)
 **   curvefig gallery -o INDEX.html MANIFEST...
 **   curvefig compare A B ...; curvefig test SCRIPT... --references DIR ...
 **   (checks.h)
@@ -23,6 +24,7 @@
 #include "checks.h"
 #include "curvefig/figure.h"
 #include "help.h"
+#include "live.h"
 #include "script.h"
 #include "tool.h"
 
@@ -501,6 +503,8 @@ main(int argc, char **argv)
         return cf__tool_compare(argc - 1, argv + 1);
     if (argc > 1 && strcmp(argv[1], "test") == 0)
         return cf__tool_test(argc - 1, argv + 1);
+    if (argc > 1 && strcmp(argv[1], "live") == 0)
+        return cf__tool_live(argc - 1, argv + 1);
     if (parse_args(argc, argv, &o, &rc) == 0) {
         if (strcmp(o.command, "gallery") == 0)
             rc = cf__tool_gallery(o.outdir, o.gallery_title,

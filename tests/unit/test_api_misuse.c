@@ -645,7 +645,7 @@ test_figure(void **state)
     cf_bspline_t *s = NULL;
     unsigned char *data = NULL;
     size_t size = 0;
-    double win[4], sx, sy, box[4], pw, ph, w, asc, desc;
+    double win[4], sx, sy, box[4], box6[6], pw, ph, w, asc, desc;
     (void)state;
     assert_true(isfinite(cf_length_to_bp(1, (cf_unit_t)99)) ||
                 isnan(cf_length_to_bp(1, (cf_unit_t)99)));
@@ -714,6 +714,7 @@ test_figure(void **state)
     BAD(cf_figure_write_all(NULL, "/nonexistent/x", 1, NULL, NULL));
     BAD(cf_figure_render(NULL, CF_FORMAT_SVG, NULL, &data, &size, NULL));
     BAD(cf_figure_ink_box(NULL, NULL, box, &pw, &ph, NULL));
+    BAD(cf_figure_page_map(NULL, NULL, box6, NULL));
     BAD(cf_format_from_name(NULL, &fmt, NULL));
     BAD(cf_format_from_name("bmp", &fmt, NULL));
     assert_string_equal(cf_format_extension((cf_format_t)99), "");
@@ -782,6 +783,7 @@ test_figure(void **state)
     BAD(cf_figure_render(fig, CF_FORMAT_PNG, &wo, &data, &size, NULL));
     assert_null(data);
     BAD(cf_figure_ink_box(fig, NULL, NULL, &pw, &ph, NULL));
+    BAD(cf_figure_page_map(fig, NULL, NULL, NULL));
     BAD(cf_figure_dump(fig, NULL, NULL, &size, NULL));
     BAD(cf_figure_set_clip(NULL, true));
     BAD(cf_figure_bspline_knots(fig, NULL, NULL, NULL, NULL, NULL, NULL));

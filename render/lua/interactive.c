@@ -1,0 +1,427 @@
+/*
+** One run of an interactive figure as JSON (interactive.h): the script in
+** a fresh sandbox with the reader's values, its parameters, its figures
+** as SVG with the data -> SVG map and the places of the handles, its
+** error, and its values as Lua to paste back.
+*/
+#include <ctype.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "curvefig/figure.h"
+#include "interactive.h"
+#include "params.h"
+
+/* ---- a growing text ------------------------------------------------------ */
+
+typedef struct text {
+    char *s;
+    size_t len, cap;
+    int failed;
+} text_t;
+
+static void
+put_n(text_t *t, const char *s, size_t n)
+{
+    if (t->failed)
+        return;
+    if (t->len + n + 1 > t->cap) {
+        size_t cap = t->cap ? t->cap : 4096;
+        char *p;
+        while (cap < t->len + n + 1)
+            cap *= 2;
+        p = realloc(t->s, cap);
+        if (p == NULL) {
+            t->failed = 1;
+            return;
+        }
+        t->s = p;
+        t->cap = cap;
+    }
+    memcpy(t->s + t->len, s, n);
+    t->len += n;
+    t->s[t->len] = '\0';
+}
+
+static void
+put(text_t *t, const char *s)
+{
+    put_n(t, s, strlen(s));
+}
+
+static void
+putf(text_t *t, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+
+static void
+putf(text_t *t, const char *fmt, ...)
+{
+    char buf[256];
+    va_list ap;
+    int n;
+    va_start(ap, fmt);
+    n = vsnprintf(buf, sizeof buf, fmt, ap);
+    va_end(ap);
+    if (n > 0)
+        put_n(t, buf, (size_t)n < sizeof buf ? (size_t)n : sizeof buf - 1);
+}
+
+/* A number that reads back as the same double (JSON and Lua alike). */
+static void
+put_num(text_t *t, double v)
+{
+    char buf[40];
+    if (!isfinite(v))
+        v = 0;
+    snprintf(buf, sizeof buf, "%.15g", v);
+    if (strtod(buf, NULL) != v)
+        snprintf(buf, sizeof buf, "%.17g", v);
+    put(t, buf);
+}
+
+/* A JSON string of the n bytes at s. */
+static void
+put_str_n(text_t *t, const char *s, size_t n)
+{
+    put(t, "\"");
+    for (size_t i = 0; i < n; i++) {
+        unsigned char c = (unsigned char)s[i];
+        size_t run = i;
+        while (run < n && (unsigned char)s[run] >= 0x20 && s[run] != '"' &&
+               s[run] != '\\')
+            run++;
+        if (run > i) {
+            put_n(t, s + i, run - i);
+            i = run - 1;
+            continue;
+        }
+        if (c == '"' || c == '\\')
+            putf(t, "\\%c", c);
+        else if (c == '\n')
+            put(t, "\\n");
+        else if (c == '\t')
+            put(t, "\\t");
+        else
+            putf(t, "\\u%04x", c);
+    }
+    put(t, "\"");
+}
+
+static void
+put_str(text_t *t, const char *s)
+{
+    put_str_n(t, s, strlen(s));
+}
+
+static void
+put_xy_list(text_t *t, const double *xy, size_t count)
+{
+    put(t, "[");
+    for (size_t i = 0; i < count; i++) {
+        put(t, i ? ", [" : "[");
+        put_num(t, xy[2 * i]);
+        put(t, ", ");
+        put_num(t, xy[2 * i + 1]);
+        put(t, "]");
+    }
+    put(t, "]");
+}
+
+/* ---- the parts -------------------------------------------------------- */
+
+static void
+put_param(text_t *t, const cf__param_t *d)
+{
+    put(t, "{\"kind\": ");
+    put_str(t, d->kind == CF__PARAM_SLIDER ? "slider" : "points");
+    put(t, ", \"name\": ");
+    put_str(t, d->name);
+    if (d->kind == CF__PARAM_SLIDER) {
+        put(t, ", \"label\": ");
+        put_str(t, d->label[0] ? d->label : d->name);
+        put(t, ", \"min\": ");
+        put_num(t, d->min);
+        put(t, ", \"max\": ");
+        put_num(t, d->max);
+        put(t, ", \"step\": ");
+        put_num(t, d->step);
+        put(t, ", \"default\": ");
+        put_num(t, d->def);
+        put(t, ", \"value\": ");
+        put_num(t, d->value);
+    } else {
+        put(t, ", \"figure\": ");
+        put_str(t, d->figure);
+        put(t, ", \"value\": ");
+        put_xy_list(t, d->xy, d->count);
+        put(t, ", \"default\": ");
+        put_xy_list(t, d->def_xy, d->count);
+        put(t, ", \"constrain\": ");
+        if (d->constrain == CF__CONSTRAIN_GRID) {
+            put(t, "{\"grid\": ");
+            put_num(t, d->grid);
+            put(t, "}");
+        } else if (d->constrain == CF__CONSTRAIN_LINE) {
+            put(t, "{\"line\": ");
+            put_xy_list(t, d->line, 2);
+            put(t, "}");
+        } else {
+            put(t, "null");
+        }
+    }
+    put(t, "}");
+}
+
+static bool
+lua_name(const char *s)
+{
+    static const char *const reserved[] = {
+        "and", "break", "do", "else", "elseif", "end", "false", "for",
+        "function", "goto", "if", "in", "local", "nil", "not", "or",
+        "repeat", "return", "then", "true", "until", "while", NULL,
+    };
+    if (!(isalpha((unsigned char)s[0]) || s[0] == '_'))
+        return false;
+    for (const char *p = s; *p; p++)
+        if (!(isalnum((unsigned char)*p) || *p == '_'))
+            return false;
+    for (int i = 0; reserved[i] != NULL; i++)
+        if (strcmp(s, reserved[i]) == 0)
+            return false;
+    return true;
+}
+
+/* values = { t = 0.75, P = { {0, 0}, ... } } */
+static void
+lua_values(text_t *t, const cf__params_t *p)
+{
+    put(t, "values = {");
+    for (size_t i = 0; i < cf__params_count(p); i++) {
+        const cf__param_t *d = cf__params_at(p, i);
+        put(t, i ? ",\n  " : "\n  ");
+        if (lua_name(d->name)) {
+            put(t, d->name);
+        } else {
+            put(t, "[");
+            put_str(t, d->name);
+            put(t, "]");
+        }
+        put(t, " = ");
+        if (d->kind == CF__PARAM_SLIDER) {
+            put_num(t, d->value);
+            continue;
+        }
+        put(t, "{ ");
+        for (size_t k = 0; k < d->count; k++) {
+            put(t, k ? ", {" : "{");
+            put_num(t, d->xy[2 * k]);
+            put(t, ", ");
+            put_num(t, d->xy[2 * k + 1]);
+            put(t, "}");
+        }
+        put(t, " }");
+    }
+    put(t, cf__params_count(p) ? "\n}\n" : "}\n");
+}
+
+static void
+put_handles(text_t *t, const cf__params_t *p, const char *figure,
+            const double m[6])
+{
+    bool first = true;
+    put(t, "[");
+    for (size_t i = 0; i < cf__params_count(p); i++) {
+        const cf__param_t *d = cf__params_at(p, i);
+        if (d->kind != CF__PARAM_POINTS ||
+            (d->figure[0] != '\0' && strcmp(d->figure, figure) != 0))
+            continue;
+        for (size_t k = 0; k < d->count; k++) {
+            double x = d->xy[2 * k], y = d->xy[2 * k + 1];
+            put(t, first ? "\n  {\"param\": " : ",\n  {\"param\": ");
+            first = false;
+            put_str(t, d->name);
+            putf(t, ", \"index\": %zu, \"x\": ", k);
+            put_num(t, x);
+            put(t, ", \"y\": ");
+            put_num(t, y);
+            put(t, ", \"sx\": ");
+            put_num(t, m[0] * x + m[2] * y + m[4]);
+            put(t, ", \"sy\": ");
+            put_num(t, m[1] * x + m[3] * y + m[5]);
+            put(t, "}");
+        }
+    }
+    put(t, "]");
+}
+
+/* The line of "name:LINE: ..." (0 when the message has none). */
+static int
+error_line(const char *msg, const char *name)
+{
+    size_t n = strlen(name);
+    const char *p = msg;
+    if (strncmp(p, name, n) == 0 && p[n] == ':')
+        p += n + 1;
+    else if ((p = strchr(msg, ':')) != NULL)
+        p++;
+    else
+        return 0;
+    return isdigit((unsigned char)*p) ? atoi(p) : 0;
+}
+
+static void
+put_error(text_t *t, const char *msg, int line)
+{
+    put(t, "{\"message\": ");
+    put_str(t, msg);
+    putf(t, ", \"line\": %d}", line);
+}
+
+/* A figure's entry; a failed figure gives its message in *err. */
+static int
+put_figure(text_t *t, const cf_script_t *s, size_t i, char *err,
+           size_t errlen)
+{
+    cf_figure_t *fig = cf_script_figure(s, i);
+    const char *name = cf_script_figure_name(s, i);
+    unsigned char *svg = NULL;
+    size_t size = 0;
+    double m[6], w, h;
+    cf_diag_t diag;
+    cf_diag_clear(&diag);
+    if (cf_figure_render(fig, CF_FORMAT_SVG, NULL, &svg, &size, &diag) !=
+            CF_STATUS_OK ||
+        cf_figure_page_map(fig, NULL, m, &diag) != CF_STATUS_OK) {
+        snprintf(err, errlen, "%sfigure '%s': %s", cf_script_figure_where(s, i),
+                 name, diag.msg);
+        cf_free(svg);
+        return -1;
+    }
+    cf_figure_get_size(fig, &w, &h);
+    put(t, i ? ",\n {\"name\": " : "\n {\"name\": ");
+    put_str(t, name);
+    put(t, ", \"caption\": ");
+    put_str(t, cf_script_figure_caption(s, i));
+    put(t, ", \"width\": ");
+    put_num(t, w);
+    put(t, ", \"height\": ");
+    put_num(t, h);
+    put(t, ",\n  \"to_svg\": [");
+    for (int k = 0; k < 6; k++) {
+        put(t, k ? ", " : "");
+        put_num(t, m[k]);
+    }
+    put(t, "],\n  \"handles\": ");
+    put_handles(t, cf_script_params(s), name, m);
+    put(t, ",\n  \"svg\": ");
+    put_str_n(t, (const char *)svg, size);
+    put(t, "}");
+    cf_free(svg);
+    return 0;
+}
+
+/* A points{} list naming a figure the script did not define. */
+static int
+check_figures(const cf_script_t *s, char *err, size_t errlen)
+{
+    const cf__params_t *p = cf_script_params(s);
+    for (size_t i = 0; i < cf__params_count(p); i++) {
+        const cf__param_t *d = cf__params_at(p, i);
+        bool found = d->kind != CF__PARAM_POINTS || d->figure[0] == '\0';
+        for (size_t k = 0; !found && k < cf_script_figure_count(s); k++)
+            found = strcmp(cf_script_figure_name(s, k), d->figure) == 0;
+        if (!found) {
+            snprintf(err, errlen, "points '%s' (line %d): figure = '%s' "
+                     "names no figure of the script", d->name, d->line_no,
+                     d->figure);
+            return d->line_no;
+        }
+    }
+    return -1;
+}
+
+static cf_status_t
+finish(text_t *t, char **json, size_t *len)
+{
+    if (t->failed) {
+        free(t->s);
+        return CF_STATUS_NO_MEMORY;
+    }
+    *json = t->s;
+    *len = t->len;
+    return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_interactive_run(const char *code, const char *name, const char *values,
+                   size_t values_len, const cf_script_limits_t *limits,
+                   FILE *out, char **json, size_t *len)
+{
+    text_t t = { NULL, 0, 0, 0 };
+    cf_script_t *s = NULL;
+    cf_diag_t diag;
+    char err[1024] = "";
+    int line = 0;
+    cf_status_t st;
+    *json = NULL;
+    *len = 0;
+    cf_diag_clear(&diag);
+    if (cf_script_create(limits, out != NULL ? out : stderr, &s, &diag) !=
+        CF_STATUS_OK)
+        return CF_STATUS_NO_MEMORY;
+    if (values != NULL &&
+        cf__params_give_json(cf_script_params(s), values, values_len, err,
+                             sizeof err) != 0) {
+        cf_script_destroy(s);
+        put(&t, "{\"params\": [], \"figures\": [], \"error\": ");
+        put_error(&t, err, 0);
+        put(&t, ", \"lua\": \"\"}\n");
+        return finish(&t, json, len) == CF_STATUS_OK ? CF_STATUS_INVALID_ARG
+                                                     : CF_STATUS_NO_MEMORY;
+    }
+    st = cf_script_run_string(s, code, name);
+    if (st != CF_STATUS_OK) {
+        snprintf(err, sizeof err, "%s", cf_script_error(s));
+        line = error_line(err, name);
+    } else if ((line = check_figures(s, err, sizeof err)) < 0) {
+        line = 0;
+    }
+    put(&t, "{\"params\": [");
+    for (size_t i = 0; i < cf__params_count(cf_script_params(s)); i++) {
+        put(&t, i ? ",\n " : "\n ");
+        put_param(&t, cf__params_at(cf_script_params(s), i));
+    }
+    put(&t, "],\n\"figures\": [");
+    if (err[0] == '\0') {
+        size_t mark = t.len;
+        for (size_t i = 0; i < cf_script_figure_count(s); i++)
+            if (put_figure(&t, s, i, err, sizeof err) != 0) {
+                line = error_line(err, name);
+                t.len = mark;       /* no figure on an error */
+                if (t.s != NULL)
+                    t.s[mark] = '\0';
+                break;
+            }
+    }
+    put(&t, "],\n\"error\": ");
+    if (err[0] != '\0')
+        put_error(&t, err, line);
+    else
+        put(&t, "null");
+    put(&t, ",\n\"lua\": ");
+    {
+        text_t lua = { NULL, 0, 0, 0 };
+        lua_values(&lua, cf_script_params(s));
+        t.failed |= lua.failed;
+        put_str_n(&t, lua.s != NULL ? lua.s : "", lua.len);
+        free(lua.s);
+    }
+    put(&t, "}\n");
+    cf_script_destroy(s);
+    return finish(&t, json, len);
+}

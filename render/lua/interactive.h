@@ -1,0 +1,56 @@
+/*
+** One run of an interactive figure: a script run in a fresh sandbox with
+** the values a reader set, answered as one JSON text that a page (the
+** live server's, or the one -f html writes) draws from.  docs/
+** interactive.md describes the page; the JSON is
+**
+**   { "params":  [ { "kind": "slider", "name": "t", "label": "t",
+**                    "min": 0, "max": 1, "step": 0.01, "default": 0.75,
+**                    "value": 0.75 },
+**                  { "kind": "points", "name": "P", "figure": "",
+**                    "value": [[x, y], ...], "default": [[x, y], ...],
+**                    "constrain": null | { "grid": g }
+**                                 | { "line": [[x0, y0], [x1, y1]] } } ],
+**     "figures": [ { "name": "...", "caption": "...",
+**                    "width": W, "height": H,         (bp)
+**                    "svg": "<svg ...>...</svg>",
+**                    "to_svg": [a, b, c, d, e, f],    (data -> SVG units)
+**                    "handles": [ { "param": "P", "index": 0, "x": ..,
+**                                   "y": .., "sx": .., "sy": .. } ] } ],
+**     "error":   null | { "message": "...", "line": N },
+**     "lua":     "values = { t = 0.75, P = { {0, 0}, ... } }" }
+**
+** handles are the points of every points{} list dragged in that figure;
+** sx, sy their place in the figure's SVG.  On a script error the figures
+** are left out and params holds what was declared before the error.
+*/
+#ifndef CURVEFIG_RENDER_LUA_INTERACTIVE_H
+#define CURVEFIG_RENDER_LUA_INTERACTIVE_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#include "script.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Run code (the script's text; name, its file name, is used in messages)
+** with the values in the JSON text values[0..values_len-1] (NULL: every
+** default) under limits (NULL: the defaults of script.h); what the script
+** prints goes to out (NULL: stderr).  *json (NUL-terminated, *len bytes;
+** free()) is the JSON above.  CF_STATUS_OK when the script ran or failed
+** (its error is then in the JSON); CF_STATUS_INVALID_ARG when values is
+** not the JSON of values (*json then holds {"error": {"message": ...,
+** "line": 0}} and nothing ran); CF_STATUS_NO_MEMORY (*json NULL). */
+cf_status_t cf_interactive_run(const char *code, const char *name,
+                               const char *values, size_t values_len,
+                               const cf_script_limits_t *limits, FILE *out,
+                               char **json, size_t *len);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

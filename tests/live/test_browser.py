@@ -1,0 +1,293 @@
+#!/usr/bin/python3
+"""The live page in a real browser (headless Chromium through selenium).
+
+usage: test_browser.py CURVEFIG SOURCE_DIR [EXAMPLE...]
+
+For every shipped interactive example (figures/interactive/*.lua):
+`curvefig live` on a free port, the page loaded; then a slider is moved
+(PageUp on it, a real key press) and a control point dragged (a real
+pointer drag), and after each the drawing must show what the core
+computes for the values the page now holds: the page's own Lua text of
+the values is run by `curvefig run` with a line of the curve library
+(C(u) of the B-spline, b_0^4(t), the offset point, ...), the point mapped
+into the SVG by the figure's map, and a mark (a marker's outline) or a
+curve of the page's SVG must lie there -- and must not have lain there
+before the change.  The dragged handle must sit on its new value.  The
+browser's console must stay free of errors.  Skipped (77) without
+chromium, chromedriver or selenium.
+"""
+import json
+import os
+import re
+import subprocess
+import sys
+import time
+
+try:
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+    from selenium.webdriver.common.action_chains import ActionChains
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.common.keys import Keys
+except ImportError:
+    print('SKIP: no selenium for', sys.executable)
+    sys.exit(77)
+
+CHROMIUM = '/usr/bin/chromium'
+CHROMEDRIVER = '/usr/bin/chromedriver'
+
+# per example: the slider moved and the point the core computes for it
+# ('mark': a marker is drawn there; 'curve': a curve passes there); the
+# point dragged (param, index) and a point of the curve after the drag.
+SPLINE = 'bspline{ degree = %d, knots = %s, points = P }'
+U3 = '{ 0, 0, 0, 0, 0.25, 0.4, 0.7, 0.85, 1, 1, 1, 1 }'
+U2 = '{ 0, 0, 0, 0.17, 0.33, 0.5, 0.67, 0.83, 1, 1, 1 }'
+EXAMPLES = {
+    'rational-5.4.1': dict(
+        slider='w4', slider_kind='curve',
+        slider_point='bezier{ points = P, weights = { w0, w1, w2, w3, w4, '
+                     'w5, w6, w7 } }:eval(0.45)',
+        drag=('P', 5), drag_point='bezier(P):eval(0.6)'),
+    'decasteljau': dict(
+        slider='t', slider_kind='mark', slider_point='bezier(P):eval(t)',
+        drag=('P', 2), drag_point='bezier(P):eval(0.4)'),
+    'deboor': dict(
+        slider='u', slider_kind='mark',
+        slider_point=SPLINE % (3, U3) + ':eval(u)',
+        drag=('P', 3), drag_point=SPLINE % (3, U3) + ':eval(0.45)'),
+    'knot-insertion': dict(
+        slider='u', slider_kind='mark',
+        slider_point=SPLINE % (2, U2) + ':eval(u)',
+        drag=('P', 4), drag_point=SPLINE % (2, U2) + ':eval(0.5)'),
+    'offset': dict(
+        slider='d', slider_kind='curve',
+        slider_point='bezier(P):offset_point(0.85, d)',
+        drag=('P', 3), drag_point='bezier(P):eval(0.7)'),
+}
+
+# In the page: the least distance from (x, y) (SVG units) to a curve of
+# the figure's SVG, and whether a mark (a small outline) covers it.
+PROBE = r'''
+var svg = document.getElementById('cf-figure-' + arguments[0])
+  .querySelector('svg');
+var x = arguments[1], y = arguments[2], best = 1e9, mark = false;
+svg.querySelectorAll('path').forEach(function (p) {
+  if (p.closest('symbol') || p.closest('clipPath')) return;
+  var b = p.getBBox();
+  if (b.width < 20 && b.height < 20 && b.width + b.height > 0 &&
+      x >= b.x - 0.5 && x <= b.x + b.width + 0.5 &&
+      y >= b.y - 0.5 && y <= b.y + b.height + 0.5) mark = true;
+  var n = p.getTotalLength();
+  if (!(n > 0)) return;
+  for (var s = 0; s <= n; s += 0.1) {
+    var q = p.getPointAtLength(s);
+    best = Math.min(best, Math.hypot(q.x - x, q.y - y));
+  }
+});
+return [best, mark];
+'''
+
+failures = []
+
+
+def check(cond, what):
+    print(('ok   ' if cond else 'FAIL ') + what)
+    if not cond:
+        failures.append(what)
+
+
+def core_point(tool, lua_values, expr):
+    """The point expr of the curve library for the page's values."""
+    code = (lua_values + '\nfor k, v in pairs(values) do _ENV[k] = v end\n'
+            'local p = ' + expr + '\nprint(string.format("%.17g %.17g", '
+            'p[1], p[2]))\n')
+    path = '/tmp/cf-browser-%d.lua' % os.getpid()
+    with open(path, 'w') as f:
+        f.write(code)
+    out = subprocess.run([tool, 'run', path], capture_output=True,
+                         text=True)
+    os.unlink(path)
+    if out.returncode != 0:
+        raise RuntimeError(out.stderr)
+    return [float(v) for v in out.stdout.split()]
+
+
+def to_svg(m, p):
+    return (m[0] * p[0] + m[2] * p[1] + m[4],
+            m[1] * p[0] + m[3] * p[1] + m[5])
+
+
+def settle(drv, runs_before, timeout=20):
+    end = time.time() + timeout
+    while time.time() < end:
+        state = drv.execute_script(
+            'var r = document.getElementById("curvefig");'
+            'return [Number(r.dataset.runs || 0), r.dataset.busy];')
+        if state[0] > runs_before and state[1] == '0':
+            return state[0]
+        time.sleep(0.05)
+    raise RuntimeError('the page did not redraw within %d s' % timeout)
+
+
+def runs(drv):
+    return drv.execute_script(
+        'return Number(document.getElementById("curvefig").dataset.runs '
+        '|| 0);')
+
+
+def probe(drv, fig, pt):
+    return drv.execute_script(PROBE, fig, pt[0], pt[1])
+
+
+def figure_svg(drv, name):
+    return drv.execute_script(
+        'return document.getElementById("cf-figure-" + arguments[0])'
+        '.querySelector("svg").outerHTML;', name)
+
+
+def core_moved(tool, old_m, old_lua, m, lua, expr, name):
+    """The core's point moved visibly between the old and the new values
+    (so that finding it drawn says the drawing followed)."""
+    a = to_svg(old_m, core_point(tool, old_lua, expr))
+    b = to_svg(m, core_point(tool, lua, expr))
+    d = ((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2) ** 0.5
+    check(d > 2, '%s: ... the core\'s point moved %.1f units' % (name, d))
+
+
+def page_map(drv, name):
+    """The figure's map data -> SVG units, as the page holds it (the map
+    moves with the margins the labels need)."""
+    return json.loads(drv.find_element(By.ID, 'cf-figure-' + name)
+                      .get_attribute('data-to-svg'))
+
+
+def verify(drv, tool, name, kind, expr, what):
+    """The drawing shows the core's point for the page's values now."""
+    lua = drv.find_element(By.ID, 'cf-lua').text
+    m = page_map(drv, name)
+    pt = to_svg(m, core_point(tool, lua, expr))
+    dist, mark = probe(drv, name, pt)
+    if kind == 'mark':
+        check(mark, '%s: %s: a mark at the core\'s point (%.2f, %.2f)'
+              % (name, what, pt[0], pt[1]))
+    else:
+        check(dist < 0.2, '%s: %s: a curve through the core\'s point '
+              '(%.2f, %.2f), %.3f away' % (name, what, pt[0], pt[1], dist))
+    return pt, lua
+
+
+def test_example(drv, tool, script, name, spec):
+    p = subprocess.Popen([tool, 'live', script, '--port', '0'],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                         text=True)
+    try:
+        url = None
+        for _ in range(3):
+            mo = re.search(r'http://127\.0\.0\.1:\d+/[0-9a-f]+/',
+                           p.stdout.readline())
+            if mo:
+                url = mo.group(0)
+                break
+        if url is None:
+            err = p.stderr.read()
+            if 'no live view' in err:
+                print('SKIP: this build has no live view')
+                sys.exit(77)
+            raise RuntimeError('no URL: ' + err)
+        native = json.loads(subprocess.run(
+            [tool, 'live', script, '--once'], capture_output=True,
+            text=True).stdout)
+        drv.get(url)
+        n = settle(drv, 0)
+        check(drv.find_elements(By.CSS_SELECTOR,
+                                   '[id="cf-figure-%s"] svg' % name)
+              != [], '%s: the page shows the figure' % name)
+
+        # the slider
+        old_lua = drv.find_element(By.ID, 'cf-lua').text
+        old_svg = figure_svg(drv, name)
+        old_m = page_map(drv, name)
+        slider = drv.find_element(By.ID, 'cf-slider-' + spec['slider'])
+        before = slider.get_attribute('value')
+        slider.send_keys(Keys.PAGE_UP)
+        n = settle(drv, n)
+        after = drv.find_element(By.ID, 'cf-slider-' + spec['slider']) \
+            .get_attribute('value')
+        check(after != before, '%s: slider %s moved %s -> %s'
+              % (name, spec['slider'], before, after))
+        pt, lua = verify(drv, tool, name, spec['slider_kind'],
+                         spec['slider_point'], 'slider ' + spec['slider'])
+        check(lua != old_lua and figure_svg(drv, name) != old_svg,
+              '%s: the drawing and the Lua text changed' % name)
+        core_moved(tool, old_m, old_lua, page_map(drv, name), lua,
+                   spec['slider_point'], name)
+
+        # the drag: a real pointer drag of the handle
+        old_lua = drv.find_element(By.ID, 'cf-lua').text
+        old_svg = figure_svg(drv, name)
+        old_m = page_map(drv, name)
+        param, index = spec['drag']
+        handle = drv.find_element(By.ID, 'cf-handle-%s-%d' % (param, index))
+        ActionChains(drv).move_to_element(handle).click_and_hold() \
+            .move_by_offset(15, -12).move_by_offset(15, -12) \
+            .move_by_offset(15, -12).release().perform()
+        n = settle(drv, n)
+        time.sleep(0.3)
+        n = settle(drv, n - 1)
+        pt, lua = verify(drv, tool, name, 'curve', spec['drag_point'],
+                         'drag of %s[%d]' % (param, index))
+        vals = re.search(r'\b%s = \{(.*)\}' % param, lua).group(1)
+        pts = [[float(a), float(b)] for a, b in re.findall(
+            r'\{([-0-9.e+]+), ([-0-9.e+]+)\}', vals)]
+        want = to_svg(page_map(drv, name), pts[index])
+        handle = drv.find_element(By.ID, 'cf-handle-%s-%d' % (param, index))
+        got = (float(handle.get_attribute('cx')),
+               float(handle.get_attribute('cy')))
+        check(abs(got[0] - want[0]) < 0.01 and abs(got[1] - want[1]) < 0.01,
+              '%s: the handle sits on its new value' % name)
+        moved = pts[index] != native['params'][0]['default'][index]
+        check(moved, '%s: the drag moved %s[%d] to %s' % (name, param, index,
+                                                         pts[index]))
+        check(figure_svg(drv, name) != old_svg, '%s: the drawing changed'
+              % name)
+        core_moved(tool, old_m, old_lua, page_map(drv, name), lua,
+                   spec['drag_point'], name)
+        logs = [e for e in drv.get_log('browser')
+                if e['level'] in ('SEVERE', 'WARNING')]
+        check(logs == [], '%s: no console errors %s' % (name, logs))
+        drv.get('about:blank')     # ends the page's long poll
+    finally:
+        p.terminate()
+        p.wait(10)
+
+
+def main():
+    tool, src = os.path.abspath(sys.argv[1]), sys.argv[2]
+    for path in (CHROMIUM, CHROMEDRIVER):
+        if not os.access(path, os.X_OK):
+            print('SKIP: no', path)
+            sys.exit(77)
+    names = sys.argv[3:] or sorted(EXAMPLES)
+    opts = webdriver.ChromeOptions()
+    opts.binary_location = CHROMIUM
+    for a in ('--headless', '--no-sandbox', '--disable-gpu',
+              '--disable-dev-shm-usage', '--window-size=1400,1000',
+              '--no-first-run', '--disable-background-networking'):
+        opts.add_argument(a)
+    opts.set_capability('goog:loggingPrefs', {'browser': 'ALL'})
+    drv = webdriver.Chrome(service=Service(CHROMEDRIVER), options=opts)
+    try:
+        for name in names:
+            script = os.path.join(src, 'figures', 'interactive',
+                                  name + '.lua')
+            test_example(drv, tool, script, name, EXAMPLES[name])
+    finally:
+        drv.quit()
+    shipped = sorted(f[:-4] for f in os.listdir(
+        os.path.join(src, 'figures', 'interactive')) if f.endswith('.lua'))
+    check(sorted(EXAMPLES) == shipped, 'every shipped example is tested')
+    if failures:
+        sys.exit('%d failures' % len(failures))
+
+
+main()

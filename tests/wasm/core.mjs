@@ -1,9 +1,10 @@
 // The WebAssembly module (render/wasm) against the native core: the same
 // cases (Example 5.4.1's rational Bézier curve with unequal weights, the
 // cubic B-spline of Marková's sample, knot insertion in it) asked of both,
-// answers equal to the last bit; then Lua inside the module: results,
-// errors as WebAssembly exceptions caught by lua_pcall, the module usable
-// after each, and the sandbox's libraries only.
+// answers equal to the last bit; then scripts run inside the module:
+// Lua's errors (WebAssembly exceptions caught by lua_pcall) with their
+// lines, the module usable after each, the sandbox's libraries only, a
+// slider's value reaching the script.
 //   node core.mjs MODULE.wasm CORE-VALUES-EXECUTABLE LOADER.js
 import { execFileSync } from 'child_process';
 import { readFileSync } from 'fs';
@@ -111,40 +112,47 @@ for (const [text, run] of cases) {
 check(row === native.length, 'rows: ' + row + ' of ' + native.length);
 console.log(compared + ' numbers compared with the native core');
 
-// Lua in the module
-function lua(src) {
-  const p = w.cstring(src);
-  const st = e.cf_wasm_lua_run(p);
-  e.free(p);
-  return [st, w.string(e.cf_wasm_lua_result())];
+// Lua in the module, through the page's entry (cf_interactive_run)
+function run(src, values) {
+  const c = w.cstring(src), n = w.cstring('t.lua');
+  const v = w.cstring(values || '');
+  const st = e.cf_wasm_run(c, n, v);
+  [c, n, v].forEach((p) => e.free(p));
+  check(st === 0, 'cf_wasm_run status ' + st);
+  return JSON.parse(w.string(e.cf_wasm_json()));
 }
 const luaCases = [
-  ['return 1 + 2, "x", nil', 0, '3\tx\tnil'],
-  ['error("boom")', 1, 'script:1: boom'],
-  ['local t = {} for i = 1, 1e5 do t[i] = i * i end return #t, t[99999]',
-   0, '100000\t9999800001'],
-  ['return x.y', 1, "script:1: attempt to index a nil value (global 'x')"],
-  ['return (', 1, "script:1: unexpected symbol near <eof>"],
-  ['local function f(n) return f(n + 1) + 1 end return f(1)', 1, null],
-  ['return io == nil and os == nil and require == nil and debug == nil, '
-   + 'string.format("%.3f", math.pi), utf8.len("ωß")', 0, 'true\t3.142\t2'],
-  ['return pcall(error, {}), select("#", pcall(error))', 0, 'false\t2'],
+  ['error("boom")', 1, 'boom'],
+  ['local t = nil\nreturn t.y', 2, 'attempt to index a nil value'],
+  ['return (', 1, 'unexpected symbol near <eof>'],
+  ['local function f(n) return f(n + 1) + 1 end\nf(1)', 1, 'stack overflow'],
+  ['local x = 1\nlocal f = io.open', 2, "'io' is not available"],
+  ['assert(string.format("%.3f", math.pi) == "3.142")\n'
+   + 'assert(utf8.len("ωß") == 2 and table.concat({1, 2}) == "12")\n'
+   + 'error("libraries ok")', 3, 'libraries ok'],
 ];
-for (const [src, st, want] of luaCases) {
-  const [gst, got] = lua(src);
-  check(gst === st, 'lua status of ' + src + ': ' + gst + ' (' + got + ')');
-  if (want === null)
-    check(/stack overflow/.test(got), 'lua stack overflow: ' + got);
-  else
-    check(got.startsWith(want), 'lua ' + src + ': "' + got + '"');
+for (const [src, line, want] of luaCases) {
+  const r = run(src);
+  check(r.error !== null && r.error.message.includes(want),
+        'lua error of ' + JSON.stringify(src) + ': ' + JSON.stringify(r.error));
+  check(r.error !== null && r.error.line === line,
+        'lua error line of ' + JSON.stringify(src) + ': '
+        + JSON.stringify(r.error));
 }
-// many errors in a row leave the module working (no leak of the heap
-// past a bound: the exceptions unwind and lua_close frees the states)
+// a slider's value reaches the script; many errors in a row leave the
+// module working, its memory bounded (the exceptions unwind, lua_close
+// frees the states)
+const slider = 'local t = slider{ name = "t", min = 0, max = 1, default = 0.25 }\n'
+  + 'error("t=" .. t)';
+check(run(slider).error.message.includes('t=0.25'), 'slider default');
+check(run(slider, '{"t": 0.5}').error.message.includes('t=0.5'),
+      'slider value');
 const before = e.memory.buffer.byteLength;
-for (let i = 0; i < 2000; i++)
-  lua('local t = {} for i = 1, 100 do t[i] = {i} end error("e" .. #t)');
-check(lua('return 6 * 7')[1] === '42', 'lua after 2000 errors');
-check(e.memory.buffer.byteLength - before < (1 << 20),
+for (let i = 0; i < 1000; i++)
+  run('local t = {} for i = 1, 100 do t[i] = {i} end error("e" .. #t)');
+check(run(slider, '{"t": 0.75}').error.message.includes('t=0.75'),
+      'after 1000 errors');
+check(e.memory.buffer.byteLength - before < (4 << 20),
       'memory grew by ' + (e.memory.buffer.byteLength - before));
-console.log(luaCases.length + 2001 + ' Lua chunks run');
+console.log(luaCases.length + 1003 + ' Lua runs');
 process.exit(failures ? 1 : 0);

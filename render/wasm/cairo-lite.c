@@ -740,6 +740,11 @@ clip_box(cairo_t *cr, const double box[4], int out[4])
         return 0;
     if (cr->target->kind == RECORDING) {
         cairo_surface_t *s = cr->target;
+        /* whole units, rounded out, as cairo's extents */
+        b[0] = floor(b[0]);
+        b[1] = floor(b[1]);
+        b[2] = ceil(b[2]);
+        b[3] = ceil(b[3]);
         if (!s->has_ink)
             memcpy(s->ink, b, sizeof b);
         s->ink[0] = fmin(s->ink[0], b[0]);
@@ -943,6 +948,46 @@ stroke_subpath(void *ctx, const pt_t *p, int n, int closed)
     return bad || s->pl.failed;
 }
 
+/* A recording surface's ink of a stroke, as cairo's analysis surface
+** takes it (_cairo_path_fixed_approximate_stroke_extents): the path's
+** box grown by half the line width, or by sqrt(2) times the miter limit
+** times the width for miter joins on a path not only of horizontal and
+** vertical lines. */
+static int
+rect_subpath(void *ctx, const pt_t *p, int n, int closed)
+{
+    int *rectilinear = ctx, i;
+    (void)closed;
+    for (i = 0; i + 1 < n; i++)
+        if (p[i].x != p[i + 1].x && p[i].y != p[i + 1].y)
+            *rectilinear = 0;
+    return 0;
+}
+
+static void
+stroke_ink(cairo_t *cr, double hw)
+{
+    const gstate_t *g = gs(cr);
+    poly_t pl;
+    int rectilinear = 1, i;
+    double e = hw;
+    poly_init(&pl);
+    flatten(cr, fill_subpath, &pl);
+    for (i = 0; i < cr->n; i += cr->path[i].header.length)
+        if (cr->path[i].header.type == CAIRO_PATH_CURVE_TO)
+            rectilinear = 0;
+    flatten(cr, rect_subpath, &rectilinear);
+    if (g->join == CAIRO_LINE_JOIN_MITER && !rectilinear)
+        e = fmax(e, 2 * hw * sqrt(2.0) * 10);
+    if (!pl.failed && pl.box[2] >= pl.box[0]) {
+        double b[4] = { pl.box[0] - e, pl.box[1] - e, pl.box[2] + e,
+                        pl.box[3] + e };
+        int ib[4];
+        clip_box(cr, b, ib);
+    }
+    free(pl.e);
+}
+
 void
 cairo_stroke(cairo_t *cr)
 {
@@ -956,6 +1001,12 @@ cairo_stroke(cairo_t *cr)
     s.join = g->join;
     s.dash = g->dash;
     s.ndash = g->ndash;
+    if (cr->target->kind == RECORDING) {
+        if (s.hw > 0)
+            stroke_ink(cr, s.hw);
+        cairo_new_path(cr);
+        return;
+    }
     if (s.hw > 0 && flatten(cr, stroke_subpath, &s) != 0)
         s.pl.failed = 1;
     if (s.hw > 0)

@@ -186,8 +186,9 @@ parse_args(int argc, char **argv, options *o, int *rc)
             o->outdir = v;
         } else if (strcmp(a, "-f") == 0 || strcmp(a, "--formats") == 0) {
             if (parse_formats(v, &o->formats) != 0) {
-                *rc = usage_error("bad format list '%s' (use svg, pdf, png, html, "
-                                  "ps, eps, pgf or all, separated by commas)", v);
+                *rc = usage_error("bad format list '%s' (use svg, pdf, png, "
+                                  "ps, eps, pgf, html or all, separated by "
+                                  "commas)", v);
                 return -1;
             }
         } else if (strcmp(a, "--dpi") == 0) {

@@ -383,13 +383,22 @@ characters(collect_t *c)
             size_t n = cf__utf8_encode(c->chars[i], s);
             PangoLayoutIter *it;
             PangoLayoutRun *run;
+            int nruns;
             pango_layout_set_text(l, s, (int)n);
             if (pango_layout_get_unknown_glyphs_count(l) > 0)
                 continue;
+            /* one glyph in one run (the line's end is a NULL run) */
             it = pango_layout_get_iter(l);
-            run = pango_layout_iter_get_run_readonly(it);
-            if (run != NULL && run->glyphs->num_glyphs == 1
-                && !pango_layout_iter_next_run(it)) {
+            run = NULL;
+            nruns = 0;
+            do {
+                PangoLayoutRun *r = pango_layout_iter_get_run_readonly(it);
+                if (r != NULL) {
+                    run = r;
+                    nruns++;
+                }
+            } while (pango_layout_iter_next_run(it));
+            if (nruns == 1 && run->glyphs->num_glyphs == 1) {
                 const PangoGlyphInfo *g = &run->glyphs->glyphs[0];
                 int face = face_of(c, run->item->analysis.font);
                 put_glyph(c, run->item->analysis.font, face, g->glyph);

@@ -5,8 +5,10 @@
 // look as the native SVG of `curvefig render -f svg` does, compared by
 // `curvefig compare` (the pixel suite's comparator, 144 dpi) with no bad
 // pixel: the same layout, labels in the same places, the same glyphs.
-// Then twenty runs with a slider moving: the time of one run (median, the
-// page's redraw after an input), printed.
+// The same at a slider value the defaults never showed, against `curvefig
+// live --once VALUES`: its labels are composed in the page from the
+// characters' glyph data.  Then twenty runs with a slider moving: the time
+// of one run (median, the page's redraw after an input), printed.
 //   node page.mjs CURVEFIG SOURCE_DIR
 import { execFileSync, spawnSync } from 'child_process';
 import { mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync }
@@ -52,6 +54,25 @@ for (const file of examples) {
   if (cmp.status !== 0)
     failures++;
   const slider = reply.params.find((p) => p.kind === 'slider');
+  // a value the defaults never showed: its labels composed in the page
+  const moved = {};
+  moved[slider.name] = +(slider.min + 0.37 * (slider.max - slider.min))
+    .toFixed(2);
+  const there = await engine.run(moved);
+  const native = JSON.parse(execFileSync(tool, ['live', script, '--once',
+                                                 JSON.stringify(moved)]));
+  const nfig = native.figures.find((f) => f.name === name);
+  writeFileSync(join(dir, name + '-moved-wasm.svg'), there.figures[0].svg);
+  writeFileSync(join(dir, name + '-moved.svg'), nfig.svg);
+  const cmp2 = spawnSync(tool, ['compare', join(dir, name + '-moved-wasm.svg'),
+                                join(dir, name + '-moved.svg'),
+                                '--max-bad', '0']);
+  const verdict2 = (cmp2.stdout.toString() + cmp2.stderr.toString()).trim()
+    .split('\n').pop();
+  console.log((cmp2.status === 0 ? 'ok   ' : 'FAIL ') + name + ' at '
+              + JSON.stringify(moved) + ': ' + verdict2);
+  if (cmp2.status !== 0)
+    failures++;
   const times = [];
   for (let k = 0; k < 20; k++) {
     const v = {};

@@ -12,7 +12,9 @@
 **   dump  (render/backend-dump.c): one line of text per operation,
 **     deterministic, for tests;
 **   pgf   (render/backend-pgf.c): a pgfpicture for TeX, labels as TeX
-**     source.
+**     source;
+**   svg writer (render/backend-svgw.c): SVG without cairo, for the
+**     WebAssembly module of the course pages.
 */
 #ifndef CURVEFIG_RENDER_BACKEND_H
 #define CURVEFIG_RENDER_BACKEND_H
@@ -109,5 +111,47 @@ typedef struct cf__pgf {
 
 extern const cf__backend_t cf__pgf_backend;
 void cf__pgf_fini(cf__pgf_t *g);
+
+/* ---- the SVG writer ----------------------------------------------------- */
+
+/* Its functions; ctx is a cf__svgw_t with out (empty), outline and
+** outline_ctx set and the rest zero.  outline appends to d the SVG path
+** data of the glyphs (and fraction rules) of label t at its origin
+** (t->ox, t->oy), in page units; nonzero when it failed.  end_page fails
+** when out ran out of memory, a coordinate was not finite or groups
+** nested deeper than CF__SVGW_DEPTH. */
+#define CF__SVGW_DEPTH 64
+typedef struct cf__svgw {
+    struct cf__buf *out;
+    int (*outline)(void *outline_ctx, const cf__text_op_t *t,
+                   struct cf__buf *d);
+    void *outline_ctx;
+    struct {
+        bool group;              /* an element's group, else a clip scope */
+        cf__cap_t cap;           /* the last stroke's, as cairo's state */
+        cf__join_t join;
+    } stack[CF__SVGW_DEPTH];
+    int depth;
+    unsigned clips;
+    bool bad;
+} cf__svgw_t;
+
+extern const cf__backend_t cf__svgw_backend;
+
+/* A number of SVG path data or attributes: at most 3 decimals (1/1000
+** bp), no trailing zeros; -1 when not finite or beyond 1e9 (nothing
+** written), or out of memory. */
+int cf__svg_put_num(struct cf__buf *b, double v);
+
+/* The outline function of the SVG writer with pango and cairo (render/
+** glyph-outline.c): outline_ctx a cf__glyph_outliner_t, zero at first,
+** released with cf__glyph_outliner_fini. */
+typedef struct cf__glyph_outliner {
+    void *cr;                /* cairo_t * of a 1x1 surface, made at need */
+} cf__glyph_outliner_t;
+
+int cf__glyph_outline(void *outliner, const cf__text_op_t *t,
+                      struct cf__buf *d);
+void cf__glyph_outliner_fini(cf__glyph_outliner_t *g);
 
 #endif

@@ -134,6 +134,28 @@ job_free(job_t *job)
     cf__dl_free(&job->dl);
 }
 
+cf_status_t
+cf__figure_play(cf_figure_t *fig, unsigned step, const cf__backend_t *be,
+                void *ctx, cf_diag_t *diag)
+{
+    cf_write_options_t o;
+    job_t job;
+    cf_status_t st;
+    cf_write_options_init(&o);
+    st = make_job(fig, &o, false, &job, diag);
+    if (st == CF_STATUS_OK) {
+        be->begin_page(ctx, &job.page);
+        cf__dl_play_step(&job.dl, step <= cf_figure_steps(fig) ? step : 0,
+                         be, ctx);
+        if (be->end_page(ctx) != 0)
+            st = cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                             "the %s backend failed drawing the figure",
+                             be->name);
+    }
+    job_free(&job);
+    return st;
+}
+
 /* One format of a laid-out figure; with overlay steps, step o->step
 ** alone, or the whole sequence (render/overlay.c, docs/overlays.md). */
 static cf_status_t

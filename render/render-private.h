@@ -32,6 +32,13 @@ cf_status_t cf__svg_steps(const cf__dl_t *dl, const cf__page_t *page,
                           const char *caption, cf__buf_t *out,
                           cf_diag_t *diag);
 
+/* The figure laid out at its size and drawn through backend be on ctx
+** (set up by the caller), one page: overlay step `step` (1..steps), or
+** every operation (0): the SVG writer's way in (render/backend-svgw.c). */
+cf_status_t cf__figure_play(cf_figure_t *fig, unsigned step,
+                            const cf__backend_t *be, void *ctx,
+                            cf_diag_t *diag);
+
 /* The EPS of a PS page from cf__format_render (cairo 1.16.0 only): 0, or
 ** -1 when the PS is not as expected (render the EPS then), -2 out of
 ** memory. */

@@ -97,6 +97,17 @@ CF_API cf_status_t cf_figure_page_map(cf_figure_t *fig,
                                       const cf_write_options_t *options,
                                       double map[6], cf_diag_t *diag);
 
+/* The glyph data a web page needs to lay out and draw the labels of
+** figs[0..n-1] without pango (the page of `curvefig render -f html`,
+** docs/interactive.md): each label's texts as shaped now, and the
+** outlines and advances of printable ASCII, Greek, a few math symbols and
+** every character of those texts in each of their fonts, so that a text
+** changed by a slider is composed from them.  *text (NUL-terminated,
+** *size bytes) is released with cf_free. */
+CF_API cf_status_t cf_figures_glyph_data(cf_figure_t *const *figs, size_t n,
+                                         char **text, size_t *size,
+                                         cf_diag_t *diag);
+
 /* The ink box of everything drawn, in page bp (x0 y0 x1 y1, y down) at the
 ** physical size, and the page size the options give (tight or not). */
 CF_API cf_status_t cf_figure_ink_box(cf_figure_t *fig,

@@ -25,6 +25,7 @@
 #include "checks.h"
 #include "curvefig/figure.h"
 #include "help.h"
+#include "html.h"
 #include "live.h"
 #include "script.h"
 #include "tool.h"
@@ -80,6 +81,8 @@ parse_formats(const char *list, unsigned *out)
         name[n] = '\0';
         if (strcmp(name, "all") == 0)
             *out |= (1u << CF_FORMAT_LAST_) - 1;
+        else if (strcmp(name, "html") == 0)
+            *out |= CF__TOOL_HTML_BIT;
         else if (cf_format_from_name(name, &f, NULL) != CF_STATUS_OK)
             return -1;
         else
@@ -205,7 +208,8 @@ parse_args(int argc, char **argv, options *o, int *rc)
         } else if (strcmp(a, "-f") == 0 || strcmp(a, "--formats") == 0) {
             if (parse_formats(v, &o->formats) != 0) {
                 *rc = usage_error("bad format list '%s' (use svg, pdf, png, "
-                                  "ps, eps, pgf or all, separated by commas)", v);
+                                  "ps, eps, pgf, html or all, separated by "
+                                  "commas)", v);
                 return -1;
             }
         } else if (strcmp(a, "--dpi") == 0) {
@@ -466,7 +470,25 @@ render_figures(const cf_script_t *s, const options *o)
         }
         cf_diag_clear(&diag);
         set_background(fig, o->background);
-        st = cf_figure_write_all(fig, base, o->formats, &wo, &diag);
+        st = CF_STATUS_OK;
+        if (o->formats & ~CF__TOOL_HTML_BIT)
+            st = cf_figure_write_all(fig, base, o->formats & ~CF__TOOL_HTML_BIT,
+                                     &wo, &diag);
+        if (st == CF_STATUS_OK && (o->formats & CF__TOOL_HTML_BIT)) {
+            char *html = malloc(strlen(base) + 6);
+            if (html == NULL) {
+                free(base);
+                fprintf(stderr, "curvefig: out of memory\n");
+                return EXIT_SCRIPT;
+            }
+            sprintf(html, "%s.html", base);
+            if (cf__tool_write_html(s, i, o->script, html, diag.msg,
+                                    sizeof diag.msg) != 0)
+                st = CF_STATUS_INVALID_ARG;
+            else if (o->verbose)
+                printf("%s\n", html);
+            free(html);
+        }
         if (st != CF_STATUS_OK) {
             const char *where = cf_script_figure_where(s, i);
             if (where[0] != '\0')

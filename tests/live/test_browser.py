@@ -178,6 +178,68 @@ def verify(drv, tool, name, kind, expr, what):
     return pt, lua
 
 
+def exercise(drv, tool, name, spec, native):
+    """On the loaded page: the slider, then the drag, each checked against
+    the core; native is the JSON of a run at the defaults."""
+    n = settle(drv, 0)
+    check(drv.find_elements(By.CSS_SELECTOR,
+                               '[id="cf-figure-%s"] svg' % name)
+          != [], '%s: the page shows the figure' % name)
+
+    # the slider
+    old_lua = drv.find_element(By.ID, 'cf-lua').text
+    old_svg = figure_svg(drv, name)
+    old_m = page_map(drv, name)
+    slider = drv.find_element(By.ID, 'cf-slider-' + spec['slider'])
+    before = slider.get_attribute('value')
+    slider.send_keys(Keys.PAGE_UP)
+    n = settle(drv, n)
+    after = drv.find_element(By.ID, 'cf-slider-' + spec['slider']) \
+        .get_attribute('value')
+    check(after != before, '%s: slider %s moved %s -> %s'
+          % (name, spec['slider'], before, after))
+    pt, lua = verify(drv, tool, name, spec['slider_kind'],
+                     spec['slider_point'], 'slider ' + spec['slider'])
+    check(lua != old_lua and figure_svg(drv, name) != old_svg,
+          '%s: the drawing and the Lua text changed' % name)
+    core_moved(tool, old_m, old_lua, page_map(drv, name), lua,
+               spec['slider_point'], name)
+
+    # the drag: a real pointer drag of the handle
+    old_lua = drv.find_element(By.ID, 'cf-lua').text
+    old_svg = figure_svg(drv, name)
+    old_m = page_map(drv, name)
+    param, index = spec['drag']
+    handle = drv.find_element(By.ID, 'cf-handle-%s-%d' % (param, index))
+    ActionChains(drv).move_to_element(handle).click_and_hold() \
+        .move_by_offset(15, -12).move_by_offset(15, -12) \
+        .move_by_offset(15, -12).release().perform()
+    n = settle(drv, n)
+    time.sleep(0.3)
+    n = settle(drv, n - 1)
+    pt, lua = verify(drv, tool, name, 'curve', spec['drag_point'],
+                     'drag of %s[%d]' % (param, index))
+    vals = re.search(r'\b%s = \{(.*)\}' % param, lua).group(1)
+    pts = [[float(a), float(b)] for a, b in re.findall(
+        r'\{([-0-9.e+]+), ([-0-9.e+]+)\}', vals)]
+    want = to_svg(page_map(drv, name), pts[index])
+    handle = drv.find_element(By.ID, 'cf-handle-%s-%d' % (param, index))
+    got = (float(handle.get_attribute('cx')),
+           float(handle.get_attribute('cy')))
+    check(abs(got[0] - want[0]) < 0.01 and abs(got[1] - want[1]) < 0.01,
+          '%s: the handle sits on its new value' % name)
+    moved = pts[index] != native['params'][0]['default'][index]
+    check(moved, '%s: the drag moved %s[%d] to %s' % (name, param, index,
+                                                     pts[index]))
+    check(figure_svg(drv, name) != old_svg, '%s: the drawing changed'
+          % name)
+    core_moved(tool, old_m, old_lua, page_map(drv, name), lua,
+               spec['drag_point'], name)
+    logs = [e for e in drv.get_log('browser')
+            if e['level'] in ('SEVERE', 'WARNING')]
+    check(logs == [], '%s: no console errors %s' % (name, logs))
+
+
 def test_example(drv, tool, script, name, spec):
     p = subprocess.Popen([tool, 'live', script, '--port', '0'],
                          stdout=subprocess.PIPE, stderr=subprocess.PIPE,
@@ -200,63 +262,7 @@ def test_example(drv, tool, script, name, spec):
             [tool, 'live', script, '--once'], capture_output=True,
             text=True).stdout)
         drv.get(url)
-        n = settle(drv, 0)
-        check(drv.find_elements(By.CSS_SELECTOR,
-                                   '[id="cf-figure-%s"] svg' % name)
-              != [], '%s: the page shows the figure' % name)
-
-        # the slider
-        old_lua = drv.find_element(By.ID, 'cf-lua').text
-        old_svg = figure_svg(drv, name)
-        old_m = page_map(drv, name)
-        slider = drv.find_element(By.ID, 'cf-slider-' + spec['slider'])
-        before = slider.get_attribute('value')
-        slider.send_keys(Keys.PAGE_UP)
-        n = settle(drv, n)
-        after = drv.find_element(By.ID, 'cf-slider-' + spec['slider']) \
-            .get_attribute('value')
-        check(after != before, '%s: slider %s moved %s -> %s'
-              % (name, spec['slider'], before, after))
-        pt, lua = verify(drv, tool, name, spec['slider_kind'],
-                         spec['slider_point'], 'slider ' + spec['slider'])
-        check(lua != old_lua and figure_svg(drv, name) != old_svg,
-              '%s: the drawing and the Lua text changed' % name)
-        core_moved(tool, old_m, old_lua, page_map(drv, name), lua,
-                   spec['slider_point'], name)
-
-        # the drag: a real pointer drag of the handle
-        old_lua = drv.find_element(By.ID, 'cf-lua').text
-        old_svg = figure_svg(drv, name)
-        old_m = page_map(drv, name)
-        param, index = spec['drag']
-        handle = drv.find_element(By.ID, 'cf-handle-%s-%d' % (param, index))
-        ActionChains(drv).move_to_element(handle).click_and_hold() \
-            .move_by_offset(15, -12).move_by_offset(15, -12) \
-            .move_by_offset(15, -12).release().perform()
-        n = settle(drv, n)
-        time.sleep(0.3)
-        n = settle(drv, n - 1)
-        pt, lua = verify(drv, tool, name, 'curve', spec['drag_point'],
-                         'drag of %s[%d]' % (param, index))
-        vals = re.search(r'\b%s = \{(.*)\}' % param, lua).group(1)
-        pts = [[float(a), float(b)] for a, b in re.findall(
-            r'\{([-0-9.e+]+), ([-0-9.e+]+)\}', vals)]
-        want = to_svg(page_map(drv, name), pts[index])
-        handle = drv.find_element(By.ID, 'cf-handle-%s-%d' % (param, index))
-        got = (float(handle.get_attribute('cx')),
-               float(handle.get_attribute('cy')))
-        check(abs(got[0] - want[0]) < 0.01 and abs(got[1] - want[1]) < 0.01,
-              '%s: the handle sits on its new value' % name)
-        moved = pts[index] != native['params'][0]['default'][index]
-        check(moved, '%s: the drag moved %s[%d] to %s' % (name, param, index,
-                                                         pts[index]))
-        check(figure_svg(drv, name) != old_svg, '%s: the drawing changed'
-              % name)
-        core_moved(tool, old_m, old_lua, page_map(drv, name), lua,
-                   spec['drag_point'], name)
-        logs = [e for e in drv.get_log('browser')
-                if e['level'] in ('SEVERE', 'WARNING')]
-        check(logs == [], '%s: no console errors %s' % (name, logs))
+        exercise(drv, tool, name, spec, native)
         drv.get('about:blank')     # ends the page's long poll
     finally:
         p.terminate()
@@ -318,13 +324,8 @@ def test_saving(drv, tool, src):
         shutil.rmtree(tmp, ignore_errors=True)
 
 
-def main():
-    tool, src = os.path.abspath(sys.argv[1]), sys.argv[2]
-    for path in (CHROMIUM, CHROMEDRIVER):
-        if not os.access(path, os.X_OK):
-            print('SKIP: no', path)
-            sys.exit(77)
-    names = sys.argv[3:] or sorted(EXAMPLES)
+def make_driver():
+    """Headless Chromium, its console log kept."""
     opts = webdriver.ChromeOptions()
     opts.binary_location = CHROMIUM
     for a in ('--headless', '--no-sandbox', '--disable-gpu',
@@ -332,7 +333,17 @@ def main():
               '--no-first-run', '--disable-background-networking'):
         opts.add_argument(a)
     opts.set_capability('goog:loggingPrefs', {'browser': 'ALL'})
-    drv = webdriver.Chrome(service=Service(CHROMEDRIVER), options=opts)
+    return webdriver.Chrome(service=Service(CHROMEDRIVER), options=opts)
+
+
+def main():
+    tool, src = os.path.abspath(sys.argv[1]), sys.argv[2]
+    for path in (CHROMIUM, CHROMEDRIVER):
+        if not os.access(path, os.X_OK):
+            print('SKIP: no', path)
+            sys.exit(77)
+    names = sys.argv[3:] or sorted(EXAMPLES)
+    drv = make_driver()
     try:
         for name in names:
             script = os.path.join(src, 'figures', 'interactive',
@@ -349,4 +360,5 @@ def main():
         sys.exit('%d failures' % len(failures))
 
 
-main()
+if __name__ == '__main__':
+    main()

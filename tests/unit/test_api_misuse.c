@@ -715,6 +715,11 @@ test_figure(void **state)
     BAD(cf_figure_render(NULL, CF_FORMAT_SVG, NULL, &data, &size, NULL));
     BAD(cf_figure_ink_box(NULL, NULL, box, &pw, &ph, NULL));
     BAD(cf_figure_page_map(NULL, NULL, box6, NULL));
+    {
+        char *glyphs = NULL;
+        BAD(cf_figures_glyph_data(NULL, 1, &glyphs, &size, NULL));
+        assert_null(glyphs);
+    }
     BAD(cf_format_from_name(NULL, &fmt, NULL));
     BAD(cf_format_from_name("bmp", &fmt, NULL));
     assert_string_equal(cf_format_extension((cf_format_t)99), "");
@@ -786,6 +791,7 @@ test_figure(void **state)
     assert_null(data);
     BAD(cf_figure_ink_box(fig, NULL, NULL, &pw, &ph, NULL));
     BAD(cf_figure_page_map(fig, NULL, NULL, NULL));
+    BAD(cf_figures_glyph_data(&fig, 1, NULL, &size, NULL));
     BAD(cf_figure_dump(fig, NULL, NULL, &size, NULL));
     BAD(cf_figure_set_clip(NULL, true));
     BAD(cf_figure_set_page_mode(NULL, CF_PAGE_INK));

@@ -1,0 +1,175 @@
+/*
+** The course page of a figure (render/tool/html.h): one HTML file with
+** everything inline, and a Content-Security-Policy that lets it load
+** nothing at all (default-src 'none'; inline script and style, the
+** module compiled from the page's own bytes).  Values (the script's text,
+** the glyph data, the module's base64) are JavaScript string literals in
+** which "<" is written \u003c, so that no text of theirs ends the script
+** element.
+*/
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "curvefig/figure.h"
+#include "curvefig/output.h"
+#include "html.h"
+#include "tool.h"
+#ifdef CF_TOOL_HAVE_WASM
+#include "wasm-b64.h"
+#include "web-html.h"
+
+static void
+put_lines(FILE *f, const char *const *lines)
+{
+    for (; *lines != NULL; lines++)
+        fputs(*lines, f);
+}
+
+/* s as a JSON string (also a JavaScript one), "<" escaped. */
+static void
+put_string(FILE *f, const char *s, size_t n)
+{
+    size_t i;
+    fputc('"', f);
+    for (i = 0; i < n; i++) {
+        unsigned char c = (unsigned char)s[i];
+        if (c == '"' || c == '\\')
+            fprintf(f, "\\%c", c);
+        else if (c == '\n')
+            fputs("\\n", f);
+        else if (c < 0x20 || c == '<' || c == '>' || c == '&')
+            fprintf(f, "\\u%04x", c);
+        else
+            fputc(c, f);
+    }
+    fputc('"', f);
+}
+
+static void
+put_html_text(FILE *f, const char *s)
+{
+    for (; *s != '\0'; s++) {
+        if (*s == '<')
+            fputs("&lt;", f);
+        else if (*s == '&')
+            fputs("&amp;", f);
+        else
+            fputc(*s, f);
+    }
+}
+
+static char *
+read_all(const char *path, size_t *n)
+{
+    FILE *f = fopen(path, "rb");
+    char *buf = NULL;
+    size_t cap = 0;
+    *n = 0;
+    if (f == NULL)
+        return NULL;
+    for (;;) {
+        size_t got;
+        if (*n + 4096 + 1 > cap) {
+            char *t = realloc(buf, cap = 2 * cap + 8192);
+            if (t == NULL) {
+                free(buf);
+                fclose(f);
+                return NULL;
+            }
+            buf = t;
+        }
+        got = fread(buf + *n, 1, cap - *n - 1, f);
+        *n += got;
+        if (got == 0)
+            break;
+    }
+    fclose(f);
+    buf[*n] = '\0';
+    return buf;
+}
+
+int
+cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
+                    const char *path, char *err, size_t errsize)
+{
+    cf_figure_t *fig = cf_script_figure(s, i);
+    const char *name = cf_script_figure_name(s, i);
+    const char *caption = cf_script_figure_caption(s, i);
+    const char *base = strrchr(script_path, '/');
+    char *code, *glyphs = NULL;
+    size_t code_len, glyphs_len;
+    cf_diag_t d;
+    FILE *f;
+    code = read_all(script_path, &code_len);
+    if (code == NULL) {
+        snprintf(err, errsize, "cannot read %s: %s", script_path,
+                 strerror(errno));
+        return -1;
+    }
+    if (cf_figures_glyph_data(&fig, 1, &glyphs, &glyphs_len, &d)
+        != CF_STATUS_OK) {
+        snprintf(err, errsize, "the glyphs of its labels: %s", d.msg);
+        free(code);
+        return -1;
+    }
+    f = cf__tool_open_atomic(path);
+    if (f == NULL) {
+        snprintf(err, errsize, "cannot write %s: %s", path, strerror(errno));
+        free(code);
+        cf_free(glyphs);
+        return -1;
+    }
+    fputs("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
+          "<meta http-equiv=\"Content-Security-Policy\" content=\""
+          "default-src 'none'; script-src 'unsafe-inline' "
+          "'wasm-unsafe-eval'; style-src 'unsafe-inline'; img-src data:\">\n"
+          "<meta name=\"viewport\" content=\"width=device-width\">\n<title>",
+          f);
+    put_html_text(f, caption != NULL && caption[0] != '\0' ? caption : name);
+    fputs("</title>\n<link rel=\"icon\" href=\"data:,\">\n<style>\n", f);
+    put_lines(f, html_css);
+    fputs("</style>\n</head>\n<body>\n<div id=\"curvefig\"></div>\n"
+          "<script>\n", f);
+    put_lines(f, html_page_js);
+    put_lines(f, html_wasm_js);
+    put_lines(f, html_engine_js);
+    fputs("CurvefigPage(document.getElementById('curvefig'), "
+          "new CurvefigWasmEngine({\nfigure: ", f);
+    put_string(f, name, strlen(name));
+    fputs(",\nname: ", f);
+    base = base != NULL ? base + 1 : script_path;
+    put_string(f, base, strlen(base));
+    fputs(",\nscript: ", f);
+    put_string(f, code, code_len);
+    fputs(",\nglyphs: ", f);
+    put_string(f, glyphs, glyphs_len);
+    fputs(",\nwasm: \"", f);
+    put_lines(f, web_wasm_b64);
+    fputs("\"}));\n</script>\n</body></html>\n", f);
+    free(code);
+    cf_free(glyphs);
+    if (cf__tool_close_atomic(f, path) != 0) {
+        snprintf(err, errsize, "cannot write %s: %s", path, strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+#else
+int
+cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
+                    const char *path, char *err, size_t errsize)
+{
+    (void)s;
+    (void)i;
+    (void)script_path;
+    (void)path;
+    snprintf(err, errsize,
+             "-f html needs the WebAssembly module, which this curvefig "
+             "was built without: install emscripten and Lua 5.4's source "
+             "(as root: apt-get install emscripten && render/wasm/"
+             "lua-source.sh), then meson setup --reconfigure and rebuild");
+    return -1;
+}
+#endif

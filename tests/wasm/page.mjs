@@ -1,0 +1,97 @@
+// The course pages without a browser: every shipped interactive example
+// written with -f html, its engine (the page's own script, CurvefigPage
+// left out) run by node at the defaults; the figure's SVG, drawn by the
+// WebAssembly module with cairo-lite, pango-lite and the SVG writer, must
+// look as the native SVG of `curvefig render -f svg` does, compared by
+// `curvefig compare` (the pixel suite's comparator, 144 dpi) with no bad
+// pixel: the same layout, labels in the same places, the same glyphs.
+// The same at a slider value the defaults never showed, against `curvefig
+// live --once VALUES`: its labels are composed in the page from the
+// characters' glyph data.  Then twenty runs with a slider moving: the time
+// of one run (median, the page's redraw after an input), printed.
+//   node page.mjs CURVEFIG SOURCE_DIR
+import { execFileSync, spawnSync } from 'child_process';
+import { mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync }
+  from 'fs';
+import { tmpdir } from 'os';
+import { join } from 'path';
+
+const [tool, src] = process.argv.slice(2);
+const dir = mkdtempSync(join(tmpdir(), 'cf-page-'));
+let failures = 0;
+
+// the engine of a page: its script, the call of CurvefigPage at its end
+// made to hand over the engine instead
+function engineOf(html) {
+  const js = html.slice(html.indexOf('<script>') + 8,
+                        html.lastIndexOf('</script>'))
+    .replace(/CurvefigPage\(document\.getElementById\('curvefig'\), /,
+             'catchEngine(');
+  let engine = null;
+  new Function('catchEngine', js)((e) => { engine = e; });
+  return engine;
+}
+
+const examples = readdirSync(join(src, 'figures', 'interactive'))
+  .filter((f) => f.endsWith('.lua')).sort();
+for (const file of examples) {
+  const name = file.slice(0, -4), script = join(src, 'figures',
+                                                  'interactive', file);
+  execFileSync(tool, ['render', script, '-f', 'html,svg', '-o', dir]);
+  const engine = engineOf(readFileSync(join(dir, name + '.html'), 'utf8'));
+  const reply = await engine.run({});
+  if (reply.error !== null || reply.figures.length !== 1) {
+    console.error('FAIL ' + name + ': ' + JSON.stringify(reply.error));
+    failures++;
+    continue;
+  }
+  writeFileSync(join(dir, name + '-wasm.svg'), reply.figures[0].svg);
+  const cmp = spawnSync(tool, ['compare', join(dir, name + '-wasm.svg'),
+                               join(dir, name + '.svg'), '--max-bad', '0']);
+  const verdict = (cmp.stdout.toString() + cmp.stderr.toString()).trim()
+    .split('\n').pop();
+  console.log((cmp.status === 0 ? 'ok   ' : 'FAIL ') + name + ': ' + verdict);
+  if (cmp.status !== 0)
+    failures++;
+  const slider = reply.params.find((p) => p.kind === 'slider');
+  // a value the defaults never showed: its labels composed in the page
+  const moved = {};
+  moved[slider.name] = +(slider.min + 0.37 * (slider.max - slider.min))
+    .toFixed(2);
+  const there = await engine.run(moved);
+  const native = JSON.parse(execFileSync(tool, ['live', script, '--once',
+                                                 JSON.stringify(moved)]));
+  const nfig = native.figures.find((f) => f.name === name);
+  writeFileSync(join(dir, name + '-moved-wasm.svg'), there.figures[0].svg);
+  writeFileSync(join(dir, name + '-moved.svg'), nfig.svg);
+  const cmp2 = spawnSync(tool, ['compare', join(dir, name + '-moved-wasm.svg'),
+                                join(dir, name + '-moved.svg'),
+                                '--max-bad', '0']);
+  const verdict2 = (cmp2.stdout.toString() + cmp2.stderr.toString()).trim()
+    .split('\n').pop();
+  console.log((cmp2.status === 0 ? 'ok   ' : 'FAIL ') + name + ' at '
+              + JSON.stringify(moved) + ': ' + verdict2);
+  if (cmp2.status !== 0)
+    failures++;
+  const times = [];
+  for (let k = 0; k < 20; k++) {
+    const v = {};
+    v[slider.name] = slider.min + (slider.max - slider.min) * (k + 0.5) / 20;
+    const t0 = performance.now();
+    const r = await engine.run(v);
+    times.push(performance.now() - t0);
+    if (r.error !== null) {
+      console.error('FAIL ' + name + ' at ' + JSON.stringify(v) + ': '
+                    + JSON.stringify(r.error));
+      failures++;
+      break;
+    }
+  }
+  times.sort((a, b) => a - b);
+  console.log('     ' + name + ': a run in the page ' +
+              times[10].toFixed(0) + ' ms median, ' +
+              times[18].toFixed(0) + ' ms 95th percentile (' +
+              slider.name + ' over its range)');
+}
+rmSync(dir, { recursive: true });
+process.exit(failures ? 1 : 0);

@@ -39,6 +39,9 @@ f:polyline(P, { color = "#8c8c8c", width = 0.5 })
 f:curve(bezier(P), { color = "#1f5fbf", dash = "dashed", width = 1.2 })
 f:curve(bezier{ points = P, weights = w }, { color = "#c0392b", width = 1.4 })
 f:points(P, { color = "#3c3c3c", marker_color = "#3c3c3c" })
+-- places fixed, as in the Manipulate: automatic ones would depend on the
+-- rasterizer, which differs a little between the tool and the page
+local places = { "nw", "ne", "w", "e", "ne", "se", "n", "ne" }
 for i, p in ipairs(P) do
-  f:label({ p[1] + 1.2, p[2] + 0.2 }, tostring(i - 1), { color = "red" })
+  f:label(p, tostring(i - 1), { color = "red", place = places[i] })
 end

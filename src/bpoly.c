@@ -205,6 +205,141 @@ cf__bp_from_power(const double *p, int n, double h, double *out)
     }
 }
 
+/* ---- points and derivatives of curves ------------------------------------ */
+
+/* The small path: at most this many coordinates reduced together (x, y
+** and a weight), up to this degree, on stack tables of that size. */
+#define GROUP_MAX 3
+#define GROUP_MAX_DEGREE 24
+
+/*
+** Derivatives 0..kk (kk <= n) of hc coordinates of the points p[0..n]
+** (stride doubles apart) at t into res[j * rs + c]: de Casteljau down to
+** level n - kk, then the j-th derivative is n!/(n-j)! times de Casteljau
+** of the j-th forward differences of those kk + 1 points (differences
+** commute with de Casteljau's convex combinations).  b and tmp hold
+** (n + 1) * hc doubles.  Inlined with constant hc (and n) so that the
+** coordinates share vector registers and the loops unroll.
+*/
+CF__INLINE void
+derivs_group(const double *p, size_t stride, size_t hc, int n, double t,
+             int kk, double *b, double *tmp, double *res, size_t rs)
+{
+    double s = 1.0 - t, fac = 1.0;
+    if (n > kk) {
+        for (int i = 0; i < n; i++)
+            for (size_t c = 0; c < hc; c++)
+                b[(size_t)i * hc + c] = s * p[(size_t)i * stride + c] +
+                                        t * p[(size_t)(i + 1) * stride + c];
+        for (int r = n - 1; r > kk; r--)
+            for (int i = 0; i < r; i++)
+                for (size_t c = 0; c < hc; c++)
+                    b[(size_t)i * hc + c] = s * b[(size_t)i * hc + c] +
+                                            t * b[(size_t)(i + 1) * hc + c];
+    } else {
+        for (int i = 0; i <= n; i++)
+            for (size_t c = 0; c < hc; c++)
+                b[(size_t)i * hc + c] = p[(size_t)i * stride + c];
+    }
+    for (int j = 0; j <= kk; j++) {
+        int m = kk - j;
+        memcpy(tmp, b, (size_t)(m + 1) * hc * sizeof *tmp);
+        for (int r = m; r > 0; r--)
+            for (int i = 0; i < r; i++)
+                for (size_t c = 0; c < hc; c++)
+                    tmp[(size_t)i * hc + c] =
+                        s * tmp[(size_t)i * hc + c] +
+                        t * tmp[(size_t)(i + 1) * hc + c];
+        for (size_t c = 0; c < hc; c++)
+            res[(size_t)j * rs + c] = fac * tmp[c];
+        fac *= (double)(n - j);
+        for (int i = 0; i < m; i++)
+            for (size_t c = 0; c < hc; c++)
+                b[(size_t)i * hc + c] =
+                    b[(size_t)(i + 1) * hc + c] - b[(size_t)i * hc + c];
+    }
+}
+
+/*
+** The Cartesian derivatives x[m * xs], m = 0..k, of one coordinate
+** x = A / w from those of A = w x (a[j * as]) and of w (wd[j * ws]), both
+** known for j <= kk and zero above:
+**   x^(m) = (A^(m) - sum_{j=1..m} C(m,j) w^(j) x^(m-j)) / w.
+*/
+static void
+quotient(const double *a, size_t as, const double *wd, size_t ws, int k,
+         int kk, double *x, size_t xs)
+{
+    double binom[MAXN + 2];
+    binom[0] = 1.0;
+    for (int m = 0; m <= k; m++) {
+        double v = m <= kk ? a[(size_t)m * as] : 0.0;
+        int jmax = m < kk ? m : kk;
+        if (m > 0) {
+            binom[m] = 1.0;
+            for (int j = m - 1; j > 0; j--)
+                binom[j] += binom[j - 1];
+        }
+        for (int j = 1; j <= jmax; j++)
+            v -= binom[j] * wd[(size_t)j * ws] * x[(size_t)(m - j) * xs];
+        x[(size_t)m * xs] = v / wd[0];
+    }
+}
+
+/* The small path: hc = nc + (w != NULL) <= GROUP_MAX coordinates side by
+** side (the weight right after the coordinates), n <= GROUP_MAX_DEGREE. */
+static void
+curve_derivs_small(const double *p, bool rational, size_t stride, size_t nc,
+                   int n, double t, int k, double *out)
+{
+    double b[GROUP_MAX * (GROUP_MAX_DEGREE + 1)];
+    double tmp[GROUP_MAX * (GROUP_MAX_DEGREE + 1)];
+    double res[GROUP_MAX * (GROUP_MAX_DEGREE + 1)];
+    size_t hc = nc + (rational ? 1 : 0);
+    int kk = k < n ? k : n;
+    if (hc == 2 && stride == 2 && n == 3)
+        derivs_group(p, 2, 2, 3, t, kk, b, tmp, res, 2);
+    else if (hc == 2 && stride == 2)
+        derivs_group(p, 2, 2, n, t, kk, b, tmp, res, 2);
+    else if (hc == 3 && stride == 3)
+        derivs_group(p, 3, 3, n, t, kk, b, tmp, res, 3);
+    else
+        derivs_group(p, stride, hc, n, t, kk, b, tmp, res, hc);
+    if (rational) {
+        for (size_t c = 0; c < nc; c++)
+            quotient(res + c, hc, res + nc, hc, k, kk, out + c, nc);
+        return;
+    }
+    for (int j = 0; j <= k; j++)
+        for (size_t c = 0; c < nc; c++)
+            out[(size_t)j * nc + c] = j <= kk ? res[(size_t)j * hc + c] : 0.0;
+}
+
+void
+cf__bp_curve_derivs(const double *p, const double *w, size_t stride,
+                    size_t nc, int n, double t, int k, double *out)
+{
+    double b[MAXN + 1], tmp[MAXN + 1], a[MAXN + 1], wd[MAXN + 1];
+    int kk = k < n ? k : n;
+    if (nc + (w != NULL) <= GROUP_MAX && n <= GROUP_MAX_DEGREE &&
+        (w == NULL || w == p + nc)) {
+        curve_derivs_small(p, w != NULL, stride, nc, n, t, k, out);
+        return;
+    }
+    if (w != NULL)
+        derivs_group(w, stride, 1, n, t, kk, b, tmp, wd, 1);
+    for (size_t c = 0; c < nc; c++) {
+        if (w != NULL) {
+            derivs_group(p + c, stride, 1, n, t, kk, b, tmp, a, 1);
+            quotient(a, 1, wd, 1, k, kk, out + c, nc);
+            continue;
+        }
+        derivs_group(p + c, stride, 1, n, t, kk, b, tmp, out + c, nc);
+        for (int j = kk + 1; j <= k; j++)
+            out[(size_t)j * nc + c] = 0.0;
+    }
+}
+
 /* ---- root isolation ------------------------------------------------------ */
 
 #define ROOT_MAX_DEPTH 56

@@ -49,9 +49,6 @@ int cf__osrc_deriv(const cf__osrc_t *s, double t, double *p, double *dp);
 int cf__bezier_unit_tangent(const cf_bezier_t *c, double t, int side,
                             double scale, double *p, double *u);
 
-/* Point (and derivative, dp may be NULL) of a planar cubic pts[8]. */
-void cf__cubic_pd(const double *pts, double s, double *p, double *dp);
-
 /* A parametrised curve on [0, 1]: point and derivative at u. */
 typedef void (*cf__pd_fn)(const void *ctx, double u, double *p, double *dp);
 /* Distance from q to the curve fn, given its samples smp[0..k] at u = i/k:

@@ -4,6 +4,8 @@
 **   offset-source.c exact offset sources and the error measurement
 **   offset-fit.c    Levien and Tiller-Hanson fits, cusp pieces
 **   offset-trim.c   self-intersections of the raw chain and trimming
+**                   (with offset-trim-map.c and offset-refit.c:
+**                   offset-trim-private.h)
 **   offset-chain.c  the chain driver: splits, greedy covers, joins
 **   offset.c        public entry points and the independent measure
 */

@@ -31,13 +31,6 @@ struct cf_bezier {
 ** memory or when the sizes overflow.  No other checks. */
 cf_bezier_t *cf__bezier_new(size_t dim, int degree, bool rational);
 
-/* A curve whose stored points are copied from hpts ((degree + 1) * hdim
-** doubles, homogeneous when rational).  No checks of the values: for
-** callers that produce valid points themselves.  Reports NO_MEMORY only. */
-cf_status_t cf__bezier_from_hpoints(size_t dim, int degree, bool rational,
-                                    const double *hpts, cf_bezier_t **out,
-                                    cf_diag_t *diag);
-
 /* The status of a curve parameter *t by the domain rule on [0, 1]
 ** (domain-private.h; *t clamped to an end it misses by rounding). */
 static inline cf_status_t
@@ -76,10 +69,6 @@ cf__bezier_coord_derivs(const cf_bezier_t *c, size_t coord, double t, int k,
                         c->rational ? c->pts + c->dim : NULL, c->hdim, 1,
                         c->degree, t, k, res);
 }
-
-/* Largest |coordinate| of the Cartesian control points (the curve's size,
-** used for relative tolerances). */
-double cf__bezier_size(const cf_bezier_t *c);
 
 /* Batch evaluation of points (no checks; t already validated): a fast
 ** Horner-Bernstein scheme for polynomial curves of low degree, de Casteljau

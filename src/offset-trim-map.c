@@ -68,8 +68,8 @@ cf__trim_piece_source(const cf__trim_t *tr, size_t i, cf__osrc_t *src,
 }
 
 /* The point of an offset source at t (the limit from the left at t = 1). */
-void
-cf__trim_osrc_point(const cf__osrc_t *s, double t, double *p)
+static void
+osrc_point(const cf__osrc_t *s, double t, double *p)
 {
     (void)cf__osrc_point_dir(s, t, t >= 1.0 ? -1 : 1, p, NULL);
 }
@@ -88,7 +88,7 @@ cf__trim_project(const cf__trim_t *tr, size_t i, const cf__osrc_t *src,
     int jb = 0;
     for (int j = 0; j <= N; j++) {
         double dd;
-        cf__trim_osrc_point(src, la + (lb - la) * j / N, p);
+        osrc_point(src, la + (lb - la) * j / N, p);
         dd = hypot(p[0] - q[0], p[1] - q[1]);
         if (dd < best) {
             best = dd;
@@ -100,8 +100,8 @@ cf__trim_project(const cf__trim_t *tr, size_t i, const cf__osrc_t *src,
     for (int it = 0; it < 60; it++) {
         double x1 = hi - gr * (hi - lo), x2 = lo + gr * (hi - lo), p1[2],
                p2[2];
-        cf__trim_osrc_point(src, x1, p1);
-        cf__trim_osrc_point(src, x2, p2);
+        osrc_point(src, x1, p1);
+        osrc_point(src, x2, p2);
         if (hypot(p1[0] - q[0], p1[1] - q[1]) <
             hypot(p2[0] - q[0], p2[1] - q[1]))
             hi = x2;
@@ -112,11 +112,11 @@ cf__trim_project(const cf__trim_t *tr, size_t i, const cf__osrc_t *src,
 }
 
 /* Inside on the source at its parameter t (by |d| - CF__TRIM_KEEP tol). */
-bool
-cf__trim_src_inside(const cf__trim_t *tr, const cf__osrc_t *src, double t)
+static bool
+src_inside(const cf__trim_t *tr, const cf__osrc_t *src, double t)
 {
     double p[2];
-    cf__trim_osrc_point(src, t, p);
+    osrc_point(src, t, p);
     return cf__trim_base_dist(tr, p) < fabs(tr->d) - CF__TRIM_KEEP * tr->tol;
 }
 
@@ -125,7 +125,7 @@ bool
 cf__trim_exact_inside(const cf__trim_t *tr, const cf__osrc_t *src, size_t k,
                       double T)
 {
-    return cf__trim_src_inside(tr, src, cf__trim_to_local(tr, k, T));
+    return src_inside(tr, src, cf__trim_to_local(tr, k, T));
 }
 
 /* Bisection between t_in (inside) and t_out (kept) on the source: the
@@ -136,7 +136,7 @@ cf__trim_bisect_keep(const cf__trim_t *tr, const cf__osrc_t *src,
 {
     for (int it = 0; it < 60; it++) {
         double mid = 0.5 * (t_in + t_out);
-        if (cf__trim_src_inside(tr, src, mid))
+        if (src_inside(tr, src, mid))
             t_in = mid;
         else
             t_out = mid;
@@ -151,8 +151,8 @@ double
 cf__trim_src_keep(const cf__trim_t *tr, const cf__osrc_t *src, double u_cut,
                   double u_kept)
 {
-    if (!cf__trim_src_inside(tr, src, u_cut) ||
-        cf__trim_src_inside(tr, src, u_kept))
+    if (!src_inside(tr, src, u_cut) ||
+        src_inside(tr, src, u_kept))
         return u_cut;
     return cf__trim_bisect_keep(tr, src, u_cut, u_kept);
 }

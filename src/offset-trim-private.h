@@ -137,17 +137,12 @@ void cf__trim_chain_point(const cf__trim_t *tr, double g, double *p);
 ** its travel direction); -1 for a join arc (an empty range). */
 int cf__trim_piece_source(const cf__trim_t *tr, size_t i, cf__osrc_t *src,
                           size_t *k);
-/* The point of an offset source at t (the limit from the left at t = 1). */
-void cf__trim_osrc_point(const cf__osrc_t *s, double t, double *p);
 /* The source parameter T of the point of the exact offset of raw piece i
 ** (src, on base piece k) nearest q. */
 double cf__trim_project(const cf__trim_t *tr, size_t i, const cf__osrc_t *src,
                         size_t k, const double *q);
-/* Inside the swept disk on the source at its parameter t (by
-** |d| - CF__TRIM_KEEP tol); the same at source parameter T of base piece
-** k's exact offset. */
-bool cf__trim_src_inside(const cf__trim_t *tr, const cf__osrc_t *src,
-                         double t);
+/* Inside the swept disk at source parameter T of base piece k's exact
+** offset (closer to the base than |d| - CF__TRIM_KEEP tol). */
 bool cf__trim_exact_inside(const cf__trim_t *tr, const cf__osrc_t *src,
                            size_t k, double T);
 /* Bisection between t_in (inside) and t_out (kept) on the source: the

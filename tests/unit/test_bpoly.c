@@ -1,13 +1,14 @@
 /*
 ** The one kernel of Bernstein coefficient arrays (src/bpoly.c), with the
-** cases of each of its former call sites: the subdivision of curves and of
+** cases of each of its callers: the subdivision of curves and of
 ** root intervals, the elevation of curves and of the cusp polynomial, the
 ** products of the rational derivative, the bounding box and the cusp
 ** polynomial, the power basis of the Levien moments (degree 6, scaled) and
 ** of the public conversion (any degree, also n >= 64), and the roots of
 ** extremes, closest points and cusps with one idea of zero; and the one
 ** evaluator of curve points and derivatives.
-** References are independent: power-basis values in long double.
+** References are independent: the Bernstein basis (and its derivatives by
+** Leibniz's rule) summed in long double.
 */
 #include <float.h>
 #include <math.h>
@@ -229,8 +230,8 @@ test_deriv(void **state)
 }
 
 /* Power -> Bernstein: the Levien moments (degree 6 on [0, h]) and the
-** public conversion (h = 1) for every degree up to 100 (the old copy read
-** past a 64-entry buffer from n = 64 on). */
+** public conversion (h = 1) for every degree up to 100 (also n >= 64,
+** beyond any fixed table of 64 entries). */
 static void
 test_from_power(void **state)
 {
@@ -478,7 +479,7 @@ check_curve(tu_rng *r, size_t nc, size_t stride, int n, int k,
 
 /*
 ** The one evaluator of curve points and derivatives, with the cases of
-** every former evaluator: the offset sources (planar, polynomial and
+** each caller: the offset sources (planar, polynomial and
 ** rational, first and second derivatives, up to the eighth for the
 ** tangent at a stationary point), the planar cubic segments of the
 ** offset chains and trims (degree 3, stride 2, points only and with the

@@ -208,24 +208,18 @@ cf__bp_from_power(const double *p, int n, double h, double *out)
 /* ---- points and derivatives of curves ------------------------------------ */
 
 /* The small path: at most this many coordinates reduced together (x, y
-** and a weight), up to this degree, on stack tables of that size. */
+** and a weight), up to this degree and derivative order, on small stack
+** tables. */
 #define GROUP_MAX 3
 #define GROUP_MAX_DEGREE 24
 
-/*
-** Derivatives 0..kk (kk <= n) of hc coordinates of the points p[0..n]
-** (stride doubles apart) at t into res[j * rs + c]: de Casteljau down to
-** level n - kk, then the j-th derivative is n!/(n-j)! times de Casteljau
-** of the j-th forward differences of those kk + 1 points (differences
-** commute with de Casteljau's convex combinations).  b and tmp hold
-** (n + 1) * hc doubles.  Inlined with constant hc (and n) so that the
-** coordinates share vector registers and the loops unroll.
-*/
+/* The kk + 1 points b (hc doubles each) of de Casteljau level n - kk at t
+** of the points p[0..n] (stride doubles apart); kk <= n. */
 CF__INLINE void
-derivs_group(const double *p, size_t stride, size_t hc, int n, double t,
-             int kk, double *b, double *tmp, double *res, size_t rs)
+reduce(const double *p, size_t stride, size_t hc, int n, double t, int kk,
+       double *b)
 {
-    double s = 1.0 - t, fac = 1.0;
+    double s = 1.0 - t;
     if (n > kk) {
         for (int i = 0; i < n; i++)
             for (size_t c = 0; c < hc; c++)
@@ -237,13 +231,32 @@ derivs_group(const double *p, size_t stride, size_t hc, int n, double t,
                     b[(size_t)i * hc + c] = s * b[(size_t)i * hc + c] +
                                             t * b[(size_t)(i + 1) * hc + c];
     } else {
-        for (int i = 0; i <= n; i++)
+        /* n == kk */
+        for (int i = 0; i <= kk; i++)
             for (size_t c = 0; c < hc; c++)
                 b[(size_t)i * hc + c] = p[(size_t)i * stride + c];
     }
+}
+
+/*
+** Derivatives 0..kk (kk <= n) of hc coordinates of the points p[0..n]
+** (stride doubles apart) at t into res[j * rs + c]: de Casteljau down to
+** level n - kk, then the j-th derivative is n!/(n-j)! times de Casteljau
+** of the j-th forward differences of those kk + 1 points (differences
+** commute with de Casteljau's convex combinations).  b and tmp hold
+** (n + 1) * hc doubles.  Inlined with constant hc (and kk, n) so that the
+** coordinates share vector registers and the loops unroll.
+*/
+CF__INLINE void
+derivs_group(const double *p, size_t stride, size_t hc, int n, double t,
+             int kk, double *b, double *tmp, double *res, size_t rs)
+{
+    double s = 1.0 - t, fac = 1.0;
+    reduce(p, stride, hc, n, t, kk, b);
     for (int j = 0; j <= kk; j++) {
         int m = kk - j;
-        memcpy(tmp, b, (size_t)(m + 1) * hc * sizeof *tmp);
+        for (size_t i = 0; i < (size_t)(m + 1) * hc; i++)
+            tmp[i] = b[i];
         for (int r = m; r > 0; r--)
             for (int i = 0; i < r; i++)
                 for (size_t c = 0; c < hc; c++)
@@ -264,13 +277,13 @@ derivs_group(const double *p, size_t stride, size_t hc, int n, double t,
 ** The Cartesian derivatives x[m * xs], m = 0..k, of one coordinate
 ** x = A / w from those of A = w x (a[j * as]) and of w (wd[j * ws]), both
 ** known for j <= kk and zero above:
-**   x^(m) = (A^(m) - sum_{j=1..m} C(m,j) w^(j) x^(m-j)) / w.
+**   x^(m) = (A^(m) - sum_{j=1..m} C(m,j) w^(j) x^(m-j)) / w,
+** with binom[0..k] for the rows of Pascal's triangle.
 */
-static void
+CF__INLINE void
 quotient(const double *a, size_t as, const double *wd, size_t ws, int k,
-         int kk, double *x, size_t xs)
+         int kk, double *x, size_t xs, double *binom)
 {
-    double binom[MAXN + 2];
     binom[0] = 1.0;
     for (int m = 0; m <= k; m++) {
         double v = m <= kk ? a[(size_t)m * as] : 0.0;
@@ -286,28 +299,71 @@ quotient(const double *a, size_t as, const double *wd, size_t ws, int k,
     }
 }
 
-/* The small path: hc = nc + (w != NULL) <= GROUP_MAX coordinates side by
-** side (the weight right after the coordinates), n <= GROUP_MAX_DEGREE. */
-static void
+/*
+** derivs_group for kk <= 2 with the last kk + 1 points q0..q2 in
+** registers: the same operations in the same order (de Casteljau of the
+** differences written out), without the tables of the general loop.
+*/
+CF__INLINE void
+derivs_low(const double *p, size_t stride, size_t hc, int n, double t,
+           int kk, double *b, double *res)
+{
+    double s = 1.0 - t, f1 = 1.0 * (double)n, f2 = f1 * (double)(n - 1);
+    reduce(p, stride, hc, n, t, kk, b);
+    for (size_t c = 0; c < hc; c++) {
+        double q0 = b[c];
+        if (kk == 0) {
+            res[c] = 1.0 * q0;
+        } else if (kk == 1) {
+            double q1 = b[hc + c];
+            res[c] = 1.0 * (s * q0 + t * q1);
+            res[hc + c] = f1 * (q1 - q0);
+        } else {
+            double q1 = b[hc + c], q2 = b[2 * hc + c];
+            double d0 = q1 - q0, d1 = q2 - q1;
+            res[c] = 1.0 * (s * (s * q0 + t * q1) + t * (s * q1 + t * q2));
+            res[hc + c] = f1 * (s * d0 + t * d1);
+            res[2 * hc + c] = f2 * (d1 - d0);
+        }
+    }
+}
+
+/* derivs_group with constant hc = stride and kk in 0..2 (the orders the
+** offsets and fits ask for) on registers, any kk on the tables. */
+#define GROUP_CASES(HC, N)                                                  \
+    do {                                                                    \
+        switch (kk) {                                                       \
+        case 0: derivs_low(p, HC, HC, N, t, 0, b, res); break;              \
+        case 1: derivs_low(p, HC, HC, N, t, 1, b, res); break;              \
+        case 2: derivs_low(p, HC, HC, N, t, 2, b, res); break;              \
+        default: derivs_group(p, HC, HC, N, t, kk, b, tmp, res, HC); break; \
+        }                                                                   \
+    } while (0)
+
+/* The small path: hc = nc + rational <= GROUP_MAX coordinates side by
+** side (the weight right after the coordinates), n and k at most
+** GROUP_MAX_DEGREE. */
+CF__INLINE void
 curve_derivs_small(const double *p, bool rational, size_t stride, size_t nc,
                    int n, double t, int k, double *out)
 {
     double b[GROUP_MAX * (GROUP_MAX_DEGREE + 1)];
     double tmp[GROUP_MAX * (GROUP_MAX_DEGREE + 1)];
     double res[GROUP_MAX * (GROUP_MAX_DEGREE + 1)];
+    double binom[GROUP_MAX_DEGREE + 2];
     size_t hc = nc + (rational ? 1 : 0);
     int kk = k < n ? k : n;
     if (hc == 2 && stride == 2 && n == 3)
-        derivs_group(p, 2, 2, 3, t, kk, b, tmp, res, 2);
+        GROUP_CASES(2, 3);
     else if (hc == 2 && stride == 2)
-        derivs_group(p, 2, 2, n, t, kk, b, tmp, res, 2);
+        GROUP_CASES(2, n);
     else if (hc == 3 && stride == 3)
-        derivs_group(p, 3, 3, n, t, kk, b, tmp, res, 3);
+        GROUP_CASES(3, n);
     else
         derivs_group(p, stride, hc, n, t, kk, b, tmp, res, hc);
     if (rational) {
         for (size_t c = 0; c < nc; c++)
-            quotient(res + c, hc, res + nc, hc, k, kk, out + c, nc);
+            quotient(res + c, hc, res + nc, hc, k, kk, out + c, nc, binom);
         return;
     }
     for (int j = 0; j <= k; j++)
@@ -315,29 +371,40 @@ curve_derivs_small(const double *p, bool rational, size_t stride, size_t nc,
             out[(size_t)j * nc + c] = j <= kk ? res[(size_t)j * hc + c] : 0.0;
 }
 
-void
-cf__bp_curve_derivs(const double *p, const double *w, size_t stride,
-                    size_t nc, int n, double t, int k, double *out)
+/* Any size: one coordinate at a time, on tables of the maximum degree. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void
+curve_derivs_any(const double *p, const double *w, size_t stride, size_t nc,
+                 int n, double t, int k, double *out)
 {
     double b[MAXN + 1], tmp[MAXN + 1], a[MAXN + 1], wd[MAXN + 1];
+    double binom[MAXN + 2];
     int kk = k < n ? k : n;
-    if (nc + (w != NULL) <= GROUP_MAX && n <= GROUP_MAX_DEGREE &&
-        (w == NULL || w == p + nc)) {
-        curve_derivs_small(p, w != NULL, stride, nc, n, t, k, out);
-        return;
-    }
     if (w != NULL)
         derivs_group(w, stride, 1, n, t, kk, b, tmp, wd, 1);
     for (size_t c = 0; c < nc; c++) {
         if (w != NULL) {
             derivs_group(p + c, stride, 1, n, t, kk, b, tmp, a, 1);
-            quotient(a, 1, wd, 1, k, kk, out + c, nc);
+            quotient(a, 1, wd, 1, k, kk, out + c, nc, binom);
             continue;
         }
         derivs_group(p + c, stride, 1, n, t, kk, b, tmp, out + c, nc);
         for (int j = kk + 1; j <= k; j++)
             out[(size_t)j * nc + c] = 0.0;
     }
+}
+
+void
+cf__bp_curve_derivs(const double *p, const double *w, size_t stride,
+                    size_t nc, int n, double t, int k, double *out)
+{
+    if (nc + (w != NULL) <= GROUP_MAX && n <= GROUP_MAX_DEGREE &&
+        k <= GROUP_MAX_DEGREE && (w == NULL || w == p + nc))
+        curve_derivs_small(p, w != NULL, stride, nc, n, t, k, out);
+    else
+        curve_derivs_any(p, w, stride, nc, n, t, k, out);
 }
 
 /* ---- root isolation ------------------------------------------------------ */

@@ -518,31 +518,46 @@ test_curve_derivs(void **state)
     }
 }
 
-/* The small path (coordinates side by side) and the one-coordinate path
-** do the same operations: the same bits. */
+/* The small path (coordinates side by side, the orders up to 2 on
+** registers) and the one-coordinate path do the same operations: the
+** same bits, for rational (x, y, w), polynomial (x, y) and 3-coordinate
+** points, orders 0..3. */
 static void
 test_curve_derivs_paths(void **state)
 {
     tu_rng r;
-    double p[25 * 3], both[3 * 3], one[3], w1[3];
+    double p[25 * 3], both[4 * 3], one[4];
     (void)state;
     tu_rng_seed(&r, 12);
     for (int n = 1; n <= 24; n++) {
         for (int i = 0; i < 3 * (n + 1); i++)
             p[i] = tu_rng_range(&r, 0.5, 2.0);
-        for (int j = 0; j <= 8; j++) {
-            double t = j / 8.0;
-            cf__bp_curve_derivs(p, p + 2, 3, 2, n, t, 2, both);
-            for (size_t c = 0; c < 2; c++) {
-                cf__bp_curve_derivs(p + c, p + 2, 3, 1, n, t, 2, one);
-                for (int m = 0; m <= 2; m++)
-                    assert_memory_equal(&one[m], &both[2 * m + c],
+        for (int k = 0; k <= 3; k++) {
+            for (int j = 0; j <= 8; j++) {
+                double t = j / 8.0;
+                /* rational planar: stride 3, the weight after x and y */
+                cf__bp_curve_derivs(p, p + 2, 3, 2, n, t, k, both);
+                for (size_t c = 0; c < 2; c++) {
+                    cf__bp_curve_derivs(p + c, p + 2, 3, 1, n, t, k, one);
+                    for (int m = 0; m <= k; m++)
+                        assert_memory_equal(&one[m], &both[2 * m + c],
+                                            sizeof one[m]);
+                }
+                /* polynomial planar, stride 2 (the cubic segments) */
+                cf__bp_curve_derivs(p, NULL, 2, 2, n, t, k, both);
+                for (size_t c = 0; c < 2; c++) {
+                    cf__bp_curve_derivs(p + c, NULL, 2, 1, n, t, k, one);
+                    for (int m = 0; m <= k; m++)
+                        assert_memory_equal(&one[m], &both[2 * m + c],
+                                            sizeof one[m]);
+                }
+                /* three polynomial coordinates, stride 3 */
+                cf__bp_curve_derivs(p, NULL, 3, 3, n, t, k, both);
+                cf__bp_curve_derivs(p + 2, NULL, 3, 1, n, t, k, one);
+                for (int m = 0; m <= k; m++)
+                    assert_memory_equal(&one[m], &both[3 * m + 2],
                                         sizeof one[m]);
             }
-            cf__bp_curve_derivs(p, NULL, 3, 3, n, t, 2, both);
-            cf__bp_curve_derivs(p + 2, NULL, 3, 1, n, t, 2, w1);
-            for (int m = 0; m <= 2; m++)
-                assert_memory_equal(&w1[m], &both[3 * m + 2], sizeof w1[m]);
         }
     }
 }

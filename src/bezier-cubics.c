@@ -95,15 +95,11 @@ fit_piece(fit *f, double a, double b, double *seg)
         seg[2 * dim + k] = seg[3 * dim + k] - h / 3.0 * d1[k];
     }
     for (int i = 1; i < SAMPLES; i++) {
-        double u = (double)i / SAMPLES, s = 1.0 - u, e2 = 0.0;
-        double b0 = s * s * s, b1 = 3 * s * s * u, b2 = 3 * s * u * u,
-               b3 = u * u * u;
+        double u = (double)i / SAMPLES, e2 = 0.0, *hu = f->work + 7 * dim;
         cf__bezier_eval_point(f->c, a + u * h, q);
-        for (size_t k = 0; k < dim; k++) {
-            double hk = b0 * seg[k] + b1 * seg[dim + k] +
-                        b2 * seg[2 * dim + k] + b3 * seg[3 * dim + k];
-            e2 += (hk - q[k]) * (hk - q[k]);
-        }
+        cf__bp_curve_derivs(seg, NULL, dim, dim, 3, u, 0, hu);
+        for (size_t k = 0; k < dim; k++)
+            e2 += (hu[k] - q[k]) * (hu[k] - q[k]);
         err = fmax(err, sqrt(e2));
     }
     return err;

@@ -371,7 +371,8 @@ curve_derivs_small(const double *p, bool rational, size_t stride, size_t nc,
             out[(size_t)j * nc + c] = j <= kk ? res[(size_t)j * hc + c] : 0.0;
 }
 
-/* Any size: one coordinate at a time, on tables of the maximum degree. */
+/* Any degree and order: one coordinate at a time, on tables of the
+** maximum degree. */
 #if defined(__GNUC__)
 __attribute__((noinline))
 #endif
@@ -396,15 +397,44 @@ curve_derivs_any(const double *p, const double *w, size_t stride, size_t nc,
     }
 }
 
+/* One coordinate at a time on small tables (n and k at most
+** GROUP_MAX_DEGREE): any number of coordinates, the weight anywhere. */
+CF__INLINE void
+curve_derivs_coords(const double *p, const double *w, size_t stride,
+                    size_t nc, int n, double t, int k, double *out)
+{
+    double b[GROUP_MAX_DEGREE + 1], tmp[GROUP_MAX_DEGREE + 1];
+    double a[GROUP_MAX_DEGREE + 1], wd[GROUP_MAX_DEGREE + 1];
+    double binom[GROUP_MAX_DEGREE + 2];
+    int kk = k < n ? k : n;
+    if (w != NULL)
+        derivs_group(w, stride, 1, n, t, kk, b, tmp, wd, 1);
+    for (size_t c = 0; c < nc; c++) {
+        if (kk <= 2 && n == 3)
+            derivs_low(p + c, stride, 1, 3, t, kk, b, a);
+        else if (kk <= 2)
+            derivs_low(p + c, stride, 1, n, t, kk, b, a);
+        else
+            derivs_group(p + c, stride, 1, n, t, kk, b, tmp, a, 1);
+        if (w != NULL) {
+            quotient(a, 1, wd, 1, k, kk, out + c, nc, binom);
+            continue;
+        }
+        for (int j = 0; j <= k; j++)
+            out[(size_t)j * nc + c] = j <= kk ? a[j] : 0.0;
+    }
+}
+
 void
 cf__bp_curve_derivs(const double *p, const double *w, size_t stride,
                     size_t nc, int n, double t, int k, double *out)
 {
-    if (nc + (w != NULL) <= GROUP_MAX && n <= GROUP_MAX_DEGREE &&
-        k <= GROUP_MAX_DEGREE && (w == NULL || w == p + nc))
+    if (n > GROUP_MAX_DEGREE || k > GROUP_MAX_DEGREE)
+        curve_derivs_any(p, w, stride, nc, n, t, k, out);
+    else if (nc + (w != NULL) <= GROUP_MAX && (w == NULL || w == p + nc))
         curve_derivs_small(p, w != NULL, stride, nc, n, t, k, out);
     else
-        curve_derivs_any(p, w, stride, nc, n, t, k, out);
+        curve_derivs_coords(p, w, stride, nc, n, t, k, out);
 }
 
 /* ---- root isolation ------------------------------------------------------ */

@@ -42,18 +42,18 @@ typedef struct fit {
     double *pts, *t;      /* growing result arrays */
     size_t count, cap;
     double max_error;
-    double *work;         /* 5 * dim doubles */
+    double *work;         /* d0, d1, q, seg (4 dim), scratch (2 dim) */
 } fit;
 
+/* The point p[dim] and derivative d[dim] of c at t, through
+** scratch[2 * dim]. */
 static void
-point_and_deriv(const cf_bezier_t *c, double t, double *p, double *d)
+point_and_deriv(const cf_bezier_t *c, double t, double *p, double *d,
+                double *scratch)
 {
-    double res[2];
-    for (size_t k = 0; k < c->dim; k++) {
-        cf__bezier_coord_derivs(c, k, t, 1, res);
-        p[k] = res[0];
-        d[k] = res[1];
-    }
+    cf__bezier_derivs(c, t, 1, scratch);
+    memcpy(p, scratch, c->dim * sizeof *p);
+    memcpy(d, scratch + c->dim, c->dim * sizeof *d);
 }
 
 static cf_status_t
@@ -88,22 +88,18 @@ fit_piece(fit *f, double a, double b, double *seg)
     double *d0 = f->work, *d1 = f->work + dim, *q = f->work + 2 * dim;
     double h = b - a, err = 0.0;
 
-    point_and_deriv(f->c, a, seg, d0);
-    point_and_deriv(f->c, b, seg + 3 * dim, d1);
+    point_and_deriv(f->c, a, seg, d0, f->work + 7 * dim);
+    point_and_deriv(f->c, b, seg + 3 * dim, d1, f->work + 7 * dim);
     for (size_t k = 0; k < dim; k++) {
         seg[dim + k] = seg[k] + h / 3.0 * d0[k];
         seg[2 * dim + k] = seg[3 * dim + k] - h / 3.0 * d1[k];
     }
     for (int i = 1; i < SAMPLES; i++) {
-        double u = (double)i / SAMPLES, s = 1.0 - u, e2 = 0.0;
-        double b0 = s * s * s, b1 = 3 * s * s * u, b2 = 3 * s * u * u,
-               b3 = u * u * u;
+        double u = (double)i / SAMPLES, e2 = 0.0, *hu = f->work + 7 * dim;
         cf__bezier_eval_point(f->c, a + u * h, q);
-        for (size_t k = 0; k < dim; k++) {
-            double hk = b0 * seg[k] + b1 * seg[dim + k] +
-                        b2 * seg[2 * dim + k] + b3 * seg[3 * dim + k];
-            e2 += (hk - q[k]) * (hk - q[k]);
-        }
+        cf__bp_curve_derivs(seg, NULL, dim, dim, 3, u, 0, hu);
+        for (size_t k = 0; k < dim; k++)
+            e2 += (hu[k] - q[k]) * (hu[k] - q[k]);
         err = fmax(err, sqrt(e2));
     }
     return err;
@@ -207,7 +203,7 @@ cf_bezier_to_cubics(const cf_bezier_t *c, double tol, cf_cubics_t **out,
     f.c = c;
     f.tol = tol;
     f.dim = c->dim;
-    f.work = cf__alloc_array(7 * c->dim, sizeof *f.work);
+    f.work = cf__alloc_array(9 * c->dim, sizeof *f.work);
     if (f.work == NULL) {
         cf__free(r);
         return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
@@ -284,7 +280,7 @@ cf_bezier_to_cubics_bounded(const cf_bezier_t *c, double tol,
                          "(at most %d)", pieces, tol, MAX_SEGMENTS);
     count = (size_t)fmax(pieces, 1.0);
     r = cf__calloc(1, sizeof *r);
-    d0 = cf__alloc_array(2 * dim, sizeof *d0);
+    d0 = cf__alloc_array(4 * dim, sizeof *d0);
     if (r != NULL) {
         r->pts = cf__alloc_array(count, 4 * dim * sizeof *r->pts);
         r->t = cf__alloc_array(count + 1, sizeof *r->t);
@@ -299,7 +295,7 @@ cf_bezier_to_cubics_bounded(const cf_bezier_t *c, double tol,
     r->dim = dim;
     r->count = count;
     r->t[0] = 0.0;
-    point_and_deriv(c, 0.0, r->pts, d0);
+    point_and_deriv(c, 0.0, r->pts, d0, d0 + 2 * dim);
     for (size_t i = 0; i < count; i++) {
         double *seg = r->pts + 4 * dim * i;
         double b = i + 1 == count ? 1.0 : (double)(i + 1) / (double)count;
@@ -309,7 +305,7 @@ cf_bezier_to_cubics_bounded(const cf_bezier_t *c, double tol,
             memcpy(seg, seg - dim, dim * sizeof *seg);
             memcpy(d0, d1, dim * sizeof *d0);
         }
-        point_and_deriv(c, b, seg + 3 * dim, d1);
+        point_and_deriv(c, b, seg + 3 * dim, d1, d0 + 2 * dim);
         for (size_t k = 0; k < dim; k++) {
             seg[dim + k] = seg[k] + h / 3.0 * d0[k];
             seg[2 * dim + k] = seg[3 * dim + k] - h / 3.0 * d1[k];

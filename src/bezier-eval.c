@@ -1,7 +1,8 @@
 /*
-** Evaluation of Bézier curves: points and derivatives by de Casteljau (one
-** parameter), the de Casteljau triangle, and the fast batch path behind
-** cf_bezier_eval_many and cf_bezier_eval_deriv_many.
+** Evaluation of Bézier curves: points and derivatives at one parameter
+** (the evaluator of bpoly.c, through bezier-private.h), the de Casteljau
+** triangle, and the fast batch path behind cf_bezier_eval_many and
+** cf_bezier_eval_deriv_many.
 **
 ** For a polynomial curve of degree n <= FAST_MAX each coordinate is
 ** evaluated by Horner's rule in the Bernstein form, with a_i = C(n,i) P_i
@@ -28,25 +29,6 @@
 
 /* ---- evaluation ---------------------------------------------------------- */
 
-void
-cf__bezier_eval_point(const cf_bezier_t *c, double t, double *out)
-{
-    double v[MAXN + 1], w = 1.0;
-    int n = c->degree;
-    if (c->rational) {
-        for (int i = 0; i <= n; i++)
-            v[i] = c->pts[(size_t)i * c->hdim + c->dim];
-        w = cf__bp_decasteljau(v, n, t);
-    }
-    for (size_t k = 0; k < c->dim; k++) {
-        for (int i = 0; i <= n; i++)
-            v[i] = c->pts[(size_t)i * c->hdim + k];
-        out[k] = cf__bp_decasteljau(v, n, t);
-        if (c->rational)
-            out[k] /= w;
-    }
-}
-
 cf_status_t
 cf_bezier_eval(const cf_bezier_t *c, double t, double *out)
 {
@@ -60,67 +42,9 @@ cf_bezier_eval(const cf_bezier_t *c, double t, double *out)
     return CF_STATUS_OK;
 }
 
-/*
-** Derivatives 0..kk of a polynomial of degree n with Bernstein coefficients
-** v[0..n] (destroyed) at t: de Casteljau down to level n - kk, then the j-th
-** derivative is n!/(n-j)! times de Casteljau of the j-th forward
-** differences of those kk + 1 points (differences commute with de
-** Casteljau's convex combinations).
-*/
-static void
-poly_derivs(double *v, int n, double t, int kk, double *res)
-{
-    double tmp[MAXN + 1], s = 1.0 - t, fac = 1.0;
-    for (int r = n; r > kk; r--)
-        for (int i = 0; i < r; i++)
-            v[i] = s * v[i] + t * v[i + 1];
-    for (int j = 0; j <= kk; j++) {
-        int m = kk - j;
-        memcpy(tmp, v, ((size_t)m + 1) * sizeof tmp[0]);
-        res[j] = fac * cf__bp_decasteljau(tmp, m, t);
-        fac *= (double)(n - j);
-        for (int i = 0; i < m; i++)
-            v[i] = v[i + 1] - v[i];
-    }
-}
-
-void
-cf__bezier_coord_derivs(const cf_bezier_t *c, size_t coord, double t, int k,
-                        double *res)
-{
-    double v[MAXN + 1], wd[MAXN + 1], binom[MAXN + 2];
-    int n = c->degree, kk = k < n ? k : n;
-
-    for (int i = 0; i <= n; i++)
-        v[i] = c->pts[(size_t)i * c->hdim + coord];
-    poly_derivs(v, n, t, kk, res);
-    for (int j = kk + 1; j <= k; j++)
-        res[j] = 0.0;
-    if (!c->rational)
-        return;
-    for (int i = 0; i <= n; i++)
-        v[i] = c->pts[(size_t)i * c->hdim + c->dim];
-    poly_derivs(v, n, t, kk, wd);
-    /* A = w x  =>  x^(m) = (A^(m) - sum_{j=1..m} C(m,j) w^(j) x^(m-j)) / w */
-    binom[0] = 1.0;
-    for (int m = 0; m <= k; m++) {
-        double a = res[m];
-        int jmax = m < kk ? m : kk;
-        if (m > 0) {
-            binom[m] = 1.0;
-            for (int j = m - 1; j > 0; j--)
-                binom[j] += binom[j - 1];
-        }
-        for (int j = 1; j <= jmax; j++)
-            a -= binom[j] * wd[j] * res[m - j];
-        res[m] = a / wd[0];
-    }
-}
-
 cf_status_t
 cf_bezier_eval_derivs(const cf_bezier_t *c, double t, int k, double *out)
 {
-    double res[MAXN + 1];
     cf_status_t st;
     if (c == NULL || out == NULL || k < 0)
         return CF_STATUS_INVALID_ARG;
@@ -129,11 +53,7 @@ cf_bezier_eval_derivs(const cf_bezier_t *c, double t, int k, double *out)
     st = cf__bezier_check_param(&t);
     if (st != CF_STATUS_OK)
         return st;
-    for (size_t d = 0; d < c->dim; d++) {
-        cf__bezier_coord_derivs(c, d, t, k, res);
-        for (int j = 0; j <= k; j++)
-            out[(size_t)j * c->dim + d] = res[j];
-    }
+    cf__bezier_derivs(c, t, k, out);
     return CF_STATUS_OK;
 }
 

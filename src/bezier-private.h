@@ -31,13 +31,6 @@ struct cf_bezier {
 ** memory or when the sizes overflow.  No other checks. */
 cf_bezier_t *cf__bezier_new(size_t dim, int degree, bool rational);
 
-/* A curve whose stored points are copied from hpts ((degree + 1) * hdim
-** doubles, homogeneous when rational).  No checks of the values: for
-** callers that produce valid points themselves.  Reports NO_MEMORY only. */
-cf_status_t cf__bezier_from_hpoints(size_t dim, int degree, bool rational,
-                                    const double *hpts, cf_bezier_t **out,
-                                    cf_diag_t *diag);
-
 /* The status of a curve parameter *t by the domain rule on [0, 1]
 ** (domain-private.h; *t clamped to an end it misses by rounding). */
 static inline cf_status_t
@@ -49,17 +42,33 @@ cf__bezier_check_param(double *t)
 /* A list of count NULL items (t0/t1 allocated when with_params). */
 cf_bezier_list_t *cf__bezier_list_new(size_t count, bool with_params);
 
-/* The Cartesian point at t into out[dim] by de Casteljau; no checks. */
-void cf__bezier_eval_point(const cf_bezier_t *c, double t, double *out);
+/* Derivatives 0..k (k <= CF_BEZIER_MAX_DEGREE) of c at t into
+** out[j * dim + d], exact (quotient rule for rational); no checks.  The
+** evaluator of bpoly.c on the stored points. */
+static inline void
+cf__bezier_derivs(const cf_bezier_t *c, double t, int k, double *out)
+{
+    cf__bp_curve_derivs(c->pts, c->rational ? c->pts + c->dim : NULL,
+                        c->hdim, c->dim, c->degree, t, k, out);
+}
+
+/* The Cartesian point at t into out[dim]; no checks. */
+static inline void
+cf__bezier_eval_point(const cf_bezier_t *c, double t, double *out)
+{
+    cf__bezier_derivs(c, t, 0, out);
+}
 
 /* Derivatives 0..k (k <= CF_BEZIER_MAX_DEGREE) of Cartesian coordinate
 ** `coord` at t into res[k + 1], exact (quotient rule for rational). */
-void cf__bezier_coord_derivs(const cf_bezier_t *c, size_t coord, double t,
-                             int k, double *res);
-
-/* Largest |coordinate| of the Cartesian control points (the curve's size,
-** used for relative tolerances). */
-double cf__bezier_size(const cf_bezier_t *c);
+static inline void
+cf__bezier_coord_derivs(const cf_bezier_t *c, size_t coord, double t, int k,
+                        double *res)
+{
+    cf__bp_curve_derivs(c->pts + coord,
+                        c->rational ? c->pts + c->dim : NULL, c->hdim, 1,
+                        c->degree, t, k, res);
+}
 
 /* Batch evaluation of points (no checks; t already validated): a fast
 ** Horner-Bernstein scheme for polynomial curves of low degree, de Casteljau

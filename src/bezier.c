@@ -41,10 +41,12 @@ cf__bezier_new(size_t dim, int degree, bool rational)
     return c;
 }
 
-cf_status_t
-cf__bezier_from_hpoints(size_t dim, int degree, bool rational,
-                        const double *hpts, cf_bezier_t **out,
-                        cf_diag_t *diag)
+/* A curve whose stored points are copied from hpts ((degree + 1) * hdim
+** doubles, homogeneous when rational), no checks of the values.  Reports
+** NO_MEMORY only. */
+static cf_status_t
+from_hpoints(size_t dim, int degree, bool rational, const double *hpts,
+             cf_bezier_t **out, cf_diag_t *diag)
 {
     cf_bezier_t *c = cf__bezier_new(dim, degree, rational);
     if (c == NULL)
@@ -149,7 +151,7 @@ cf_bezier_create_homogeneous(size_t dim, int degree, const double *hpoints,
                              "weight %zu is %g; weights must be finite "
                              "and positive", i, w);
     }
-    return cf__bezier_from_hpoints(dim, degree, true, hpoints, out, diag);
+    return from_hpoints(dim, degree, true, hpoints, out, diag);
 }
 
 cf_status_t
@@ -163,8 +165,7 @@ cf_bezier_copy(const cf_bezier_t *c, cf_bezier_t **out, cf_diag_t *diag)
                          "the curve or the output pointer is NULL");
     }
     *out = NULL;
-    return cf__bezier_from_hpoints(c->dim, c->degree, c->rational, c->pts,
-                                   out, diag);
+    return from_hpoints(c->dim, c->degree, c->rational, c->pts, out, diag);
 }
 
 void
@@ -221,8 +222,10 @@ cf_bezier_get_weights(const cf_bezier_t *c, double *out)
         out[i] = c->rational ? c->pts[(size_t)i * c->hdim + c->dim] : 1.0;
 }
 
-double
-cf__bezier_size(const cf_bezier_t *c)
+/* Largest |coordinate| of the Cartesian control points (the curve's size,
+** for relative tolerances). */
+static double
+curve_size(const cf_bezier_t *c)
 {
     double m = 0.0;
     for (int i = 0; i <= c->degree; i++) {
@@ -253,7 +256,7 @@ deriv_norm2(const cf_bezier_t *c, double t, int j)
 static int
 first_nonzero_deriv(const cf_bezier_t *c, double t)
 {
-    double size = cf__bezier_size(c), scale = 1.0;
+    double size = curve_size(c), scale = 1.0;
     int n = c->degree, jmax = c->rational ? 2 * n : n;
     if (jmax > MAXN)
         jmax = MAXN;

@@ -56,6 +56,17 @@ void cf__bp_deriv(const double *a, int m, double *out);
 ** out may not alias p). */
 void cf__bp_from_power(const double *p, int n, double h, double *out);
 
+/* Points and derivatives 0..k (0 <= k <= CF_BEZIER_MAX_DEGREE) at t of the
+** curve of degree n whose coordinate c of control point i is
+** p[i * stride + c] (c < nc), into out[j * nc + c] (the j-th derivative of
+** coordinate c; zero for j > n).  w == NULL: a polynomial curve.
+** Otherwise w[i * stride] is the weight of point i, p holds the weighted
+** coordinates w x, and out the Cartesian derivatives (quotient rule).  The
+** one evaluator of curve points and derivatives: de Casteljau down to level
+** n - k, forward differences for the derivatives (see bpoly.c). */
+void cf__bp_curve_derivs(const double *p, const double *w, size_t stride,
+                         size_t nc, int n, double t, int k, double *out);
+
 /* The real roots in [0, 1] of a[0..n], ascending, isolated by subdivision
 ** with Descartes' rule of signs and polished by bisection.  One idea of
 ** zero: a value of size <= 64 n DBL_EPSILON max|a_i| is zero (so the ends

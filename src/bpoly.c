@@ -205,6 +205,238 @@ cf__bp_from_power(const double *p, int n, double h, double *out)
     }
 }
 
+/* ---- points and derivatives of curves ------------------------------------ */
+
+/* The small path: at most this many coordinates reduced together (x, y
+** and a weight), up to this degree and derivative order, on small stack
+** tables. */
+#define GROUP_MAX 3
+#define GROUP_MAX_DEGREE 24
+
+/* The kk + 1 points b (hc doubles each) of de Casteljau level n - kk at t
+** of the points p[0..n] (stride doubles apart); kk <= n. */
+CF__INLINE void
+reduce(const double *p, size_t stride, size_t hc, int n, double t, int kk,
+       double *b)
+{
+    double s = 1.0 - t;
+    if (n > kk) {
+        for (int i = 0; i < n; i++)
+            for (size_t c = 0; c < hc; c++)
+                b[(size_t)i * hc + c] = s * p[(size_t)i * stride + c] +
+                                        t * p[(size_t)(i + 1) * stride + c];
+        for (int r = n - 1; r > kk; r--)
+            for (int i = 0; i < r; i++)
+                for (size_t c = 0; c < hc; c++)
+                    b[(size_t)i * hc + c] = s * b[(size_t)i * hc + c] +
+                                            t * b[(size_t)(i + 1) * hc + c];
+    } else {
+        /* n == kk */
+        for (int i = 0; i <= kk; i++)
+            for (size_t c = 0; c < hc; c++)
+                b[(size_t)i * hc + c] = p[(size_t)i * stride + c];
+    }
+}
+
+/*
+** Derivatives 0..kk (kk <= n) of hc coordinates of the points p[0..n]
+** (stride doubles apart) at t into res[j * rs + c]: de Casteljau down to
+** level n - kk, then the j-th derivative is n!/(n-j)! times de Casteljau
+** of the j-th forward differences of those kk + 1 points (differences
+** commute with de Casteljau's convex combinations).  b and tmp hold
+** (n + 1) * hc doubles.  Inlined with constant hc (and kk, n) so that the
+** coordinates share vector registers and the loops unroll.
+*/
+CF__INLINE void
+derivs_group(const double *p, size_t stride, size_t hc, int n, double t,
+             int kk, double *b, double *tmp, double *res, size_t rs)
+{
+    double s = 1.0 - t, fac = 1.0;
+    reduce(p, stride, hc, n, t, kk, b);
+    for (int j = 0; j <= kk; j++) {
+        int m = kk - j;
+        for (size_t i = 0; i < (size_t)(m + 1) * hc; i++)
+            tmp[i] = b[i];
+        for (int r = m; r > 0; r--)
+            for (int i = 0; i < r; i++)
+                for (size_t c = 0; c < hc; c++)
+                    tmp[(size_t)i * hc + c] =
+                        s * tmp[(size_t)i * hc + c] +
+                        t * tmp[(size_t)(i + 1) * hc + c];
+        for (size_t c = 0; c < hc; c++)
+            res[(size_t)j * rs + c] = fac * tmp[c];
+        fac *= (double)(n - j);
+        for (int i = 0; i < m; i++)
+            for (size_t c = 0; c < hc; c++)
+                b[(size_t)i * hc + c] =
+                    b[(size_t)(i + 1) * hc + c] - b[(size_t)i * hc + c];
+    }
+}
+
+/*
+** The Cartesian derivatives x[m * xs], m = 0..k, of one coordinate
+** x = A / w from those of A = w x (a[j * as]) and of w (wd[j * ws]), both
+** known for j <= kk and zero above:
+**   x^(m) = (A^(m) - sum_{j=1..m} C(m,j) w^(j) x^(m-j)) / w,
+** with binom[0..k] for the rows of Pascal's triangle.
+*/
+CF__INLINE void
+quotient(const double *a, size_t as, const double *wd, size_t ws, int k,
+         int kk, double *x, size_t xs, double *binom)
+{
+    binom[0] = 1.0;
+    for (int m = 0; m <= k; m++) {
+        double v = m <= kk ? a[(size_t)m * as] : 0.0;
+        int jmax = m < kk ? m : kk;
+        if (m > 0) {
+            binom[m] = 1.0;
+            for (int j = m - 1; j > 0; j--)
+                binom[j] += binom[j - 1];
+        }
+        for (int j = 1; j <= jmax; j++)
+            v -= binom[j] * wd[(size_t)j * ws] * x[(size_t)(m - j) * xs];
+        x[(size_t)m * xs] = v / wd[0];
+    }
+}
+
+/*
+** derivs_group for kk <= 2 with the last kk + 1 points q0..q2 in
+** registers: the same operations in the same order (de Casteljau of the
+** differences written out), without the tables of the general loop.
+*/
+CF__INLINE void
+derivs_low(const double *p, size_t stride, size_t hc, int n, double t,
+           int kk, double *b, double *res)
+{
+    double s = 1.0 - t, f1 = 1.0 * (double)n, f2 = f1 * (double)(n - 1);
+    reduce(p, stride, hc, n, t, kk, b);
+    for (size_t c = 0; c < hc; c++) {
+        double q0 = b[c];
+        if (kk == 0) {
+            res[c] = 1.0 * q0;
+        } else if (kk == 1) {
+            double q1 = b[hc + c];
+            res[c] = 1.0 * (s * q0 + t * q1);
+            res[hc + c] = f1 * (q1 - q0);
+        } else {
+            double q1 = b[hc + c], q2 = b[2 * hc + c];
+            double d0 = q1 - q0, d1 = q2 - q1;
+            res[c] = 1.0 * (s * (s * q0 + t * q1) + t * (s * q1 + t * q2));
+            res[hc + c] = f1 * (s * d0 + t * d1);
+            res[2 * hc + c] = f2 * (d1 - d0);
+        }
+    }
+}
+
+/* derivs_group with constant hc = stride and kk in 0..2 (the orders the
+** offsets and fits ask for) on registers, any kk on the tables. */
+#define GROUP_CASES(HC, N)                                                  \
+    do {                                                                    \
+        switch (kk) {                                                       \
+        case 0: derivs_low(p, HC, HC, N, t, 0, b, res); break;              \
+        case 1: derivs_low(p, HC, HC, N, t, 1, b, res); break;              \
+        case 2: derivs_low(p, HC, HC, N, t, 2, b, res); break;              \
+        default: derivs_group(p, HC, HC, N, t, kk, b, tmp, res, HC); break; \
+        }                                                                   \
+    } while (0)
+
+/* The small path: hc = nc + rational <= GROUP_MAX coordinates side by
+** side (the weight right after the coordinates), n and k at most
+** GROUP_MAX_DEGREE. */
+CF__INLINE void
+curve_derivs_small(const double *p, bool rational, size_t stride, size_t nc,
+                   int n, double t, int k, double *out)
+{
+    double b[GROUP_MAX * (GROUP_MAX_DEGREE + 1)];
+    double tmp[GROUP_MAX * (GROUP_MAX_DEGREE + 1)];
+    double res[GROUP_MAX * (GROUP_MAX_DEGREE + 1)];
+    double binom[GROUP_MAX_DEGREE + 2];
+    size_t hc = nc + (rational ? 1 : 0);
+    int kk = k < n ? k : n;
+    if (hc == 2 && stride == 2 && n == 3)
+        GROUP_CASES(2, 3);
+    else if (hc == 2 && stride == 2)
+        GROUP_CASES(2, n);
+    else if (hc == 3 && stride == 3)
+        GROUP_CASES(3, n);
+    else
+        derivs_group(p, stride, hc, n, t, kk, b, tmp, res, hc);
+    if (rational) {
+        for (size_t c = 0; c < nc; c++)
+            quotient(res + c, hc, res + nc, hc, k, kk, out + c, nc, binom);
+        return;
+    }
+    for (int j = 0; j <= k; j++)
+        for (size_t c = 0; c < nc; c++)
+            out[(size_t)j * nc + c] = j <= kk ? res[(size_t)j * hc + c] : 0.0;
+}
+
+/* Any degree and order: one coordinate at a time, on tables of the
+** maximum degree. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static void
+curve_derivs_any(const double *p, const double *w, size_t stride, size_t nc,
+                 int n, double t, int k, double *out)
+{
+    double b[MAXN + 1], tmp[MAXN + 1], a[MAXN + 1], wd[MAXN + 1];
+    double binom[MAXN + 2];
+    int kk = k < n ? k : n;
+    if (w != NULL)
+        derivs_group(w, stride, 1, n, t, kk, b, tmp, wd, 1);
+    for (size_t c = 0; c < nc; c++) {
+        if (w != NULL) {
+            derivs_group(p + c, stride, 1, n, t, kk, b, tmp, a, 1);
+            quotient(a, 1, wd, 1, k, kk, out + c, nc, binom);
+            continue;
+        }
+        derivs_group(p + c, stride, 1, n, t, kk, b, tmp, out + c, nc);
+        for (int j = kk + 1; j <= k; j++)
+            out[(size_t)j * nc + c] = 0.0;
+    }
+}
+
+/* One coordinate at a time on small tables (n and k at most
+** GROUP_MAX_DEGREE): any number of coordinates, the weight anywhere. */
+CF__INLINE void
+curve_derivs_coords(const double *p, const double *w, size_t stride,
+                    size_t nc, int n, double t, int k, double *out)
+{
+    double b[GROUP_MAX_DEGREE + 1], tmp[GROUP_MAX_DEGREE + 1];
+    double a[GROUP_MAX_DEGREE + 1], wd[GROUP_MAX_DEGREE + 1];
+    double binom[GROUP_MAX_DEGREE + 2];
+    int kk = k < n ? k : n;
+    if (w != NULL)
+        derivs_group(w, stride, 1, n, t, kk, b, tmp, wd, 1);
+    for (size_t c = 0; c < nc; c++) {
+        if (kk <= 2 && n == 3)
+            derivs_low(p + c, stride, 1, 3, t, kk, b, a);
+        else if (kk <= 2)
+            derivs_low(p + c, stride, 1, n, t, kk, b, a);
+        else
+            derivs_group(p + c, stride, 1, n, t, kk, b, tmp, a, 1);
+        if (w != NULL) {
+            quotient(a, 1, wd, 1, k, kk, out + c, nc, binom);
+            continue;
+        }
+        for (int j = 0; j <= k; j++)
+            out[(size_t)j * nc + c] = j <= kk ? a[j] : 0.0;
+    }
+}
+
+void
+cf__bp_curve_derivs(const double *p, const double *w, size_t stride,
+                    size_t nc, int n, double t, int k, double *out)
+{
+    if (n > GROUP_MAX_DEGREE || k > GROUP_MAX_DEGREE)
+        curve_derivs_any(p, w, stride, nc, n, t, k, out);
+    else if (nc + (w != NULL) <= GROUP_MAX && (w == NULL || w == p + nc))
+        curve_derivs_small(p, w != NULL, stride, nc, n, t, k, out);
+    else
+        curve_derivs_coords(p, w, stride, nc, n, t, k, out);
+}
+
 /* ---- root isolation ------------------------------------------------------ */
 
 #define ROOT_MAX_DEPTH 56

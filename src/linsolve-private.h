@@ -20,21 +20,14 @@
 #include "curvefig/core.h"
 
 /*
-** Tridiagonal system (Thomas algorithm, no pivoting; stable for diagonally
-** dominant or symmetric positive definite matrices, which is what the
-** spline systems are):
+** Cyclic tridiagonal system (periodic splines):
 **     sub[i] x[i-1] + mid[i] x[i] + sup[i] x[i+1] = rhs[i],  i = 0 .. n-1
-** sub[0] and sup[n-1] are ignored.  rhs (in/out) receives the solution.
-** Allocates n doubles of scratch.  n >= 1.
-*/
-cf_status_t cf__solve_tridiagonal(size_t n, const double *sub,
-                                  const double *mid, const double *sup,
-                                  double *rhs, size_t nrhs, cf_diag_t *diag);
-
-/*
-** Cyclic tridiagonal system (periodic splines): as above, but row 0 also
-** has sub[0] in column n-1 and row n-1 has sup[n-1] in column 0.  Solved
-** by the Sherman-Morrison formula around two Thomas solves.  n >= 3.
+** where row 0 has sub[0] in column n-1 and row n-1 has sup[n-1] in column
+** 0.  rhs (in/out) receives the solution.  Solved by the Sherman-Morrison
+** formula around two solves of the tridiagonal part by the Thomas
+** algorithm (no pivoting; stable for diagonally dominant or symmetric
+** positive definite matrices, which is what the spline systems are).
+** n >= 3.
 */
 cf_status_t cf__solve_cyclic_tridiagonal(size_t n, const double *sub,
                                          const double *mid,

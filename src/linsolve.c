@@ -1,6 +1,6 @@
 /*
-** Linear solvers for interpolation: Thomas (tridiagonal), Sherman-Morrison
-** (cyclic tridiagonal), banded LU with partial pivoting and Givens
+** Linear solvers for interpolation: Sherman-Morrison (cyclic tridiagonal,
+** around Thomas eliminations), banded LU with partial pivoting and Givens
 ** least squares.  See linsolve-private.h for the contracts.
 */
 #include <assert.h>
@@ -44,26 +44,6 @@ thomas(size_t n, const double *sub, const double *mid, const double *sup,
             rhs[i * nrhs + k] -= c[i] * rhs[(i + 1) * nrhs + k];
     }
     return CF_STATUS_OK;
-}
-
-cf_status_t
-cf__solve_tridiagonal(size_t n, const double *sub, const double *mid,
-                      const double *sup, double *rhs, size_t nrhs,
-                      cf_diag_t *diag)
-{
-    double *c;
-    cf_status_t st;
-    if (n == 0 || nrhs == 0)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "tridiagonal system of size %zu with %zu "
-                         "right-hand sides", n, nrhs);
-    c = cf__alloc_array(n, sizeof *c);
-    if (c == NULL)
-        return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
-                         "no memory for a tridiagonal system of size %zu", n);
-    st = thomas(n, sub, mid, sup, rhs, nrhs, c, diag);
-    cf__free(c);
-    return st;
 }
 
 /*

@@ -20,7 +20,7 @@
 ** offset on the other side) and the zeros of c' (where both terms vanish):
 ** each root is polished by Newton's method on f(t) = d (c' x c'') - |c'|^3
 ** evaluated on the curve and kept only if d (c' x c'') > 0 and c' != 0.
-** Roots are isolated in Bernstein form (offset-poly.c) so that two close
+** Roots are isolated in Bernstein form (bpoly.c) so that two close
 ** cusps, where P touches or barely crosses zero twice, are not missed.
 */
 #include <math.h>

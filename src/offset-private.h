@@ -4,6 +4,8 @@
 **   offset-source.c exact offset sources and the error measurement
 **   offset-fit.c    Levien and Tiller-Hanson fits, cusp pieces
 **   offset-trim.c   self-intersections of the raw chain and trimming
+**                   (with offset-trim-map.c and offset-refit.c:
+**                   offset-trim-private.h)
 **   offset-chain.c  the chain driver: splits, greedy covers, joins
 **   offset.c        public entry points and the independent measure
 */
@@ -48,9 +50,6 @@ int cf__osrc_deriv(const cf__osrc_t *s, double t, double *p, double *dp);
 ** be NULL).  Returns 0, or -1 if every derivative vanishes. */
 int cf__bezier_unit_tangent(const cf_bezier_t *c, double t, int side,
                             double scale, double *p, double *u);
-
-/* Point (and derivative, dp may be NULL) of a planar cubic pts[8]. */
-void cf__cubic_pd(const double *pts, double s, double *p, double *dp);
 
 /* A parametrised curve on [0, 1]: point and derivative at u. */
 typedef void (*cf__pd_fn)(const void *ctx, double u, double *p, double *dp);

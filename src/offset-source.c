@@ -11,95 +11,6 @@
 #include "bezier-private.h"
 #include "offset-private.h"
 
-/* ---- fast point and derivative of a planar curve -------------------------- */
-
-#define FAST_MAX_DEGREE 24
-
-/* The points b[0..n-levels] (hd doubles each) of de Casteljau level
-** `levels` at t from the control points p[0..n]. */
-static inline void
-casteljau_levels(double *b, const double *p, int n, int levels, size_t hd,
-                 double t)
-{
-    double u = 1.0 - t;
-    if (levels == 0) {
-        memcpy(b, p, (size_t)(n + 1) * hd * sizeof(double));
-        return;
-    }
-    for (size_t i = 0; i < (size_t)n * hd; i++)
-        b[i] = u * p[i] + t * p[i + hd];
-    for (int r = 2; r <= levels; r++)
-        for (size_t i = 0; i < (size_t)(n - r + 1) * hd; i++)
-            b[i] = u * b[i] + t * b[i + hd];
-}
-
-/* Point, first and (k == 2) second derivative of the planar curve c at t,
-** into v[0..2k+1] like cf_bezier_eval_derivs, by de Casteljau on all stored
-** coordinates at once, stopped k levels early (the last k + 1 points give
-** the derivatives; quotient rule when rational).  Returns -1 (nothing
-** written) for curves it does not handle: dim != 2, degree < k or above
-** FAST_MAX_DEGREE. */
-static int
-fast_derivs(const cf_bezier_t *c, double t, int k, double *v)
-{
-    double b[3 * (FAST_MAX_DEGREE + 1)], u = 1.0 - t;
-    double h[3] = { 0 }, d1[3] = { 0 }, d2[3] = { 0 };
-    int n = c->degree;
-    size_t hd = c->hdim;
-    if (c->dim != 2 || n < k || n > FAST_MAX_DEGREE)
-        return -1;
-    /* a literal hd lets the compiler unroll the levels */
-    if (hd == 2)
-        casteljau_levels(b, c->pts, n, n - k, 2, t);
-    else
-        casteljau_levels(b, c->pts, n, n - k, 3, t);
-    for (size_t j = 0; j < hd; j++) {
-        if (k == 1) {
-            h[j] = u * b[j] + t * b[hd + j];
-            d1[j] = n * (b[hd + j] - b[j]);
-            d2[j] = 0.0;
-        } else {
-            double q0 = b[j], q1 = b[hd + j], q2 = b[2 * hd + j];
-            h[j] = u * (u * q0 + t * q1) + t * (u * q1 + t * q2);
-            d1[j] = n * (u * (q1 - q0) + t * (q2 - q1));
-            d2[j] = n * (n - 1) * (q2 - 2.0 * q1 + q0);
-        }
-    }
-    if (!c->rational) {
-        for (int j = 0; j < 2; j++) {
-            v[j] = h[j];
-            v[2 + j] = d1[j];
-            if (k == 2)
-                v[4 + j] = d2[j];
-        }
-    } else {
-        double w = h[2];
-        for (int j = 0; j < 2; j++) {
-            v[j] = h[j] / w;
-            v[2 + j] = (d1[j] - v[j] * d1[2]) / w;
-            if (k == 2)
-                v[4 + j] = (d2[j] - 2.0 * v[2 + j] * d1[2] - v[j] * d2[2]) / w;
-        }
-    }
-    return 0;
-}
-
-/* Point and first derivative (dp may be NULL) of the planar curve c. */
-static int
-fast_pd(const cf_bezier_t *c, double t, double *p, double *dp)
-{
-    double v[4];
-    if (fast_derivs(c, t, 1, v) != 0)
-        return -1;
-    p[0] = v[0];
-    p[1] = v[1];
-    if (dp != NULL) {
-        dp[0] = v[2];
-        dp[1] = v[3];
-    }
-    return 0;
-}
-
 /* ---- unit tangent with higher derivatives -------------------------------- */
 
 int
@@ -109,8 +20,7 @@ cf__bezier_unit_tangent(const cf_bezier_t *c, double t, int side,
     double v[2 * 9];
     int n = c->degree, kmax = n < 8 ? n : 8;
     double len;
-    if (fast_derivs(c, t, 1, v) != 0)
-        cf_bezier_eval_derivs(c, t, 1, v);
+    cf__bezier_derivs(c, t, 1, v);
     if (p != NULL) {
         p[0] = v[0];
         p[1] = v[1];
@@ -126,7 +36,7 @@ cf__bezier_unit_tangent(const cf_bezier_t *c, double t, int side,
     ** and (-1)^(m-1) times it from the left. */
     if (kmax < 2)
         return -1;
-    cf_bezier_eval_derivs(c, t, kmax, v);
+    cf__bezier_derivs(c, t, kmax, v);
     for (int m = 2; m <= kmax; m++) {
         double x = v[2 * m], y = v[2 * m + 1];
         len = hypot(x, y);
@@ -189,8 +99,7 @@ cf__osrc_point_dir(const cf__osrc_t *s, double t, int side, double *p,
         double base[2], tan[2];
         if (s->d == 0.0 && u == NULL) {
             /* the curve itself: no tangent needed */
-            if (fast_pd(s->c, t, p, NULL) != 0)
-                cf__bezier_eval_point(s->c, t, p);
+            cf__bezier_eval_point(s->c, t, p);
             return 0;
         }
         if (cf__bezier_unit_tangent(s->c, t, side, s->scale, base, tan) != 0) {
@@ -224,17 +133,14 @@ cf__osrc_deriv(const cf__osrc_t *s, double t, double *p, double *dp)
         /* o' = c' (1 - d (c' x c'') / |c'|^3) */
         double v[6], sp, f;
         if (s->d == 0.0) {
-            if (fast_pd(s->c, t, p, dp) == 0)
-                return 0;
-            cf_bezier_eval_derivs(s->c, t, 1, v);
+            cf__bezier_derivs(s->c, t, 1, v);
             p[0] = v[0];
             p[1] = v[1];
             dp[0] = v[2];
             dp[1] = v[3];
             return 0;
         }
-        if (fast_derivs(s->c, t, 2, v) != 0)
-            cf_bezier_eval_derivs(s->c, t, 2, v);
+        cf__bezier_derivs(s->c, t, 2, v);
         sp = sqrt(v[2] * v[2] + v[3] * v[3]);
         if (!(sp > 1e-14 * s->scale)) {
             cf__osrc_point_dir(s, t, 1, p, NULL);
@@ -247,28 +153,6 @@ cf__osrc_deriv(const cf__osrc_t *s, double t, double *p, double *dp)
         dp[0] = v[2] * f;
         dp[1] = v[3] * f;
         return 0;
-    }
-}
-
-/* ---- the cubic ------------------------------------------------------------ */
-
-/* Point and derivative (dp may be NULL) of the cubic pts[8] at s, from its
-** Bernstein coefficients per coordinate. */
-void
-cf__cubic_pd(const double *pts, double s, double *p, double *dp)
-{
-    /* the four cubic Bernstein polynomials and those of degree 2 */
-    double u = 1.0 - s;
-    double b0 = u * u * u, b1 = 3.0 * u * u * s, b2 = 3.0 * u * s * s,
-           b3 = s * s * s;
-    p[0] = b0 * pts[0] + b1 * pts[2] + b2 * pts[4] + b3 * pts[6];
-    p[1] = b0 * pts[1] + b1 * pts[3] + b2 * pts[5] + b3 * pts[7];
-    if (dp != NULL) {
-        double c0 = 3.0 * u * u, c1 = 6.0 * u * s, c2 = 3.0 * s * s;
-        dp[0] = c0 * (pts[2] - pts[0]) + c1 * (pts[4] - pts[2]) +
-                c2 * (pts[6] - pts[4]);
-        dp[1] = c0 * (pts[3] - pts[1]) + c1 * (pts[5] - pts[3]) +
-                c2 * (pts[7] - pts[5]);
     }
 }
 

@@ -236,8 +236,7 @@ check_text(char *text, const char *where, int *checked)
 }
 
 /* The checker itself: it accepts the rule and refuses each way of
-** breaking it (the old order of the batch derivative evaluators among
-** them). */
+** breaking it (the derivative order before the parameters among them). */
 static void
 test_checker(void **state)
 {

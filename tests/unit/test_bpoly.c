@@ -1,12 +1,14 @@
 /*
 ** The one kernel of Bernstein coefficient arrays (src/bpoly.c), with the
-** cases of each of its former call sites: the subdivision of curves and of
+** cases of each of its callers: the subdivision of curves and of
 ** root intervals, the elevation of curves and of the cusp polynomial, the
 ** products of the rational derivative, the bounding box and the cusp
 ** polynomial, the power basis of the Levien moments (degree 6, scaled) and
 ** of the public conversion (any degree, also n >= 64), and the roots of
-** extremes, closest points and cusps with one idea of zero.
-** References are independent: power-basis values in long double.
+** extremes, closest points and cusps with one idea of zero; and the one
+** evaluator of curve points and derivatives.
+** References are independent: the Bernstein basis (and its derivatives by
+** Leibniz's rule) summed in long double.
 */
 #include <float.h>
 #include <math.h>
@@ -228,8 +230,8 @@ test_deriv(void **state)
 }
 
 /* Power -> Bernstein: the Levien moments (degree 6 on [0, h]) and the
-** public conversion (h = 1) for every degree up to 100 (the old copy read
-** past a 64-entry buffer from n = 64 on). */
+** public conversion (h = 1) for every degree up to 100 (also n >= 64,
+** beyond any fixed table of 64 entries). */
 static void
 test_from_power(void **state)
 {
@@ -368,6 +370,198 @@ test_roots(void **state)
     }
 }
 
+/* The j-th derivative at t of sum_k a[k * stride] B_k^n, each basis
+** function differentiated by Leibniz's rule on t^k (1-t)^(n-k), summed in
+** long double: independent of de Casteljau and of control-point
+** differences. */
+static long double
+ref_deriv(const double *a, size_t stride, int n, double t, int j)
+{
+    long double sum = 0.0L, c = 1.0L, tl = t, sl = 1.0L - (long double)t;
+    for (int k = 0; k <= n; k++) {
+        long double d = 0.0L, cji = 1.0L;
+        for (int i = 0; i <= j; i++) {
+            int e1 = k - i, e2 = n - k - (j - i);
+            if (e1 >= 0 && e2 >= 0) {
+                long double f1 = 1.0L, f2 = 1.0L;
+                for (int q = 0; q < i; q++)
+                    f1 *= (long double)(k - q);
+                for (int q = 0; q < j - i; q++)
+                    f2 *= -(long double)(n - k - q);
+                d += cji * f1 * f2 * powl(tl, e1) * powl(sl, e2);
+            }
+            cji = cji * (long double)(j - i) / (long double)(i + 1);
+        }
+        sum += c * d * a[(size_t)k * stride];
+        c = c * (long double)(n - k) / (long double)(k + 1);
+    }
+    return sum;
+}
+
+/* n!/(n-j)! max|a|: the size of the j-th derivative, for tolerances. */
+static double
+deriv_scale(int n, int j, double amax)
+{
+    double f = 1.0;
+    for (int q = 0; q < j; q++)
+        f *= (double)(n > q ? n - q : 1) * 2.0;
+    return f * amax;
+}
+
+/*
+** One case: nc coordinates, degree n, derivatives 0..k, polynomial or
+** rational (weights at w_off doubles after the first coordinate, stride
+** doubles per point).  Polynomial: every derivative against ref_deriv.
+** Rational: the Cartesian derivatives x^(m) returned must satisfy
+** Leibniz's rule A^(m) = sum_i C(m,i) w^(i) x^(m-i) with A = w x and w
+** differentiated by ref_deriv.  Above the degree a polynomial's
+** derivatives are exactly zero.
+*/
+static void
+check_curve(tu_rng *r, size_t nc, size_t stride, int n, int k,
+            bool rational, size_t w_off)
+{
+    enum { PMAX = 48 * 8 };
+    double p[PMAX], out[8 * 12], amax = 0.0;
+    double t[] = { 0.0, 1e-9, 0.3, 0.5, 0.7734, 1.0 - 1e-9, 1.0 };
+    const double *w = rational ? p + w_off : NULL;
+    assert_true((size_t)(n + 1) * stride <= PMAX);
+    assert_true((size_t)(k + 1) * nc <= sizeof out / sizeof out[0]);
+    for (size_t i = 0; i < (size_t)(n + 1) * stride; i++)
+        p[i] = tu_rng_range(r, -2.0, 2.0);
+    if (rational)
+        for (int i = 0; i <= n; i++) {
+            double wi = tu_rng_range(r, 0.5, 2.0);
+            p[(size_t)i * stride + w_off] = wi;
+            for (size_t c = 0; c < nc; c++)
+                p[(size_t)i * stride + c] *= wi;
+        }
+    for (int i = 0; i <= n; i++)
+        for (size_t c = 0; c < nc; c++)
+            amax = fmax(amax, fabs(p[(size_t)i * stride + c]));
+    for (size_t it = 0; it < sizeof t / sizeof t[0]; it++) {
+        cf__bp_curve_derivs(p, w, stride, nc, n, t[it], k, out);
+        for (size_t c = 0; c < nc; c++) {
+            for (int m = 0; m <= k; m++) {
+                double got = out[(size_t)m * nc + c];
+                double sc = deriv_scale(n, m, amax);
+                if (!rational) {
+                    if (m > n) {
+                        assert_true(got == 0.0);
+                        continue;
+                    }
+                    tu_assert_close(got,
+                                    (double)ref_deriv(p + c, stride, n,
+                                                      t[it], m),
+                                    1e-13, sc);
+                } else {
+                    /* tolerance: relative to the terms of the sum */
+                    long double lhs = 0.0L, size = 0.0L, cmi = 1.0L;
+                    for (int i = 0; i <= m; i++) {
+                        long double term =
+                            cmi * ref_deriv(w, stride, n, t[it], i) *
+                            out[(size_t)(m - i) * nc + c];
+                        lhs += term;
+                        size += fabsl(term);
+                        cmi = cmi * (long double)(m - i) /
+                              (long double)(i + 1);
+                    }
+                    tu_assert_close((double)lhs,
+                                    (double)ref_deriv(p + c, stride, n,
+                                                      t[it], m),
+                                    1e-12 * (m + 1),
+                                    fmax((double)size, sc));
+                }
+            }
+        }
+    }
+}
+
+/*
+** The one evaluator of curve points and derivatives, with the cases of
+** each caller: the offset sources (planar, polynomial and
+** rational, first and second derivatives, up to the eighth for the
+** tangent at a stationary point), the planar cubic segments of the
+** offset chains and trims (degree 3, stride 2, points only and with the
+** derivative), the Hermite fits of cf_bezier_to_cubics in any dimension,
+** and the one-coordinate evaluation behind tangents, curvature, boxes and
+** arc length (a coordinate read at the stored stride, its weight not next
+** to it; degrees beyond the small path; orders above the degree).
+*/
+static void
+test_curve_derivs(void **state)
+{
+    tu_rng r;
+    (void)state;
+    tu_rng_seed(&r, 11);
+    for (int n = 1; n <= 24; n++) {
+        check_curve(&r, 2, 2, n, 2, false, 0);
+        check_curve(&r, 2, 3, n, 2, true, 2);
+        check_curve(&r, 2, 2, n, n < 8 ? n : 8, false, 0);
+        check_curve(&r, 2, 3, n, n < 8 ? n : 8, true, 2);
+    }
+    for (int k = 0; k <= 1; k++)
+        check_curve(&r, 2, 2, 3, k, false, 0);
+    for (size_t dim = 1; dim <= 7; dim += 2) {
+        for (int n = 4; n <= 12; n += 4) {
+            check_curve(&r, dim, dim, n, 1, false, 0);
+            check_curve(&r, dim, dim + 1, n, 1, true, dim);
+            check_curve(&r, dim, dim, n, 0, false, 0);
+            check_curve(&r, dim, dim + 1, n, 0, true, dim);
+        }
+    }
+    for (int n = 1; n <= 40; n += 3) {
+        int k = n + 2 < 10 ? n + 2 : 10;
+        /* coordinate 1 of a rational curve in R^3: weight 2 doubles on */
+        check_curve(&r, 1, 4, n, k, true, 2);
+        check_curve(&r, 1, 3, n, k, false, 0);
+    }
+}
+
+/* The small path (coordinates side by side, the orders up to 2 on
+** registers) and the one-coordinate path do the same operations: the
+** same bits, for rational (x, y, w), polynomial (x, y) and 3-coordinate
+** points, orders 0..3. */
+static void
+test_curve_derivs_paths(void **state)
+{
+    tu_rng r;
+    double p[25 * 3], both[4 * 3], one[4];
+    (void)state;
+    tu_rng_seed(&r, 12);
+    for (int n = 1; n <= 24; n++) {
+        for (int i = 0; i < 3 * (n + 1); i++)
+            p[i] = tu_rng_range(&r, 0.5, 2.0);
+        for (int k = 0; k <= 3; k++) {
+            for (int j = 0; j <= 8; j++) {
+                double t = j / 8.0;
+                /* rational planar: stride 3, the weight after x and y */
+                cf__bp_curve_derivs(p, p + 2, 3, 2, n, t, k, both);
+                for (size_t c = 0; c < 2; c++) {
+                    cf__bp_curve_derivs(p + c, p + 2, 3, 1, n, t, k, one);
+                    for (int m = 0; m <= k; m++)
+                        assert_memory_equal(&one[m], &both[2 * m + c],
+                                            sizeof one[m]);
+                }
+                /* polynomial planar, stride 2 (the cubic segments) */
+                cf__bp_curve_derivs(p, NULL, 2, 2, n, t, k, both);
+                for (size_t c = 0; c < 2; c++) {
+                    cf__bp_curve_derivs(p + c, NULL, 2, 1, n, t, k, one);
+                    for (int m = 0; m <= k; m++)
+                        assert_memory_equal(&one[m], &both[2 * m + c],
+                                            sizeof one[m]);
+                }
+                /* three polynomial coordinates, stride 3 */
+                cf__bp_curve_derivs(p, NULL, 3, 3, n, t, k, both);
+                cf__bp_curve_derivs(p + 2, NULL, 3, 1, n, t, k, one);
+                for (int m = 0; m <= k; m++)
+                    assert_memory_equal(&one[m], &both[3 * m + 2],
+                                        sizeof one[m]);
+            }
+        }
+    }
+}
+
 int
 main(void)
 {
@@ -379,6 +573,8 @@ main(void)
         cmocka_unit_test(test_deriv),
         cmocka_unit_test(test_from_power),
         cmocka_unit_test(test_roots),
+        cmocka_unit_test(test_curve_derivs),
+        cmocka_unit_test(test_curve_derivs_paths),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -158,79 +158,6 @@ dense_lsq(size_t m, size_t n, double *A, double *B, size_t nrhs, double *x,
 }
 
 static void
-test_tridiagonal_by_hand(void **state)
-{
-    /* [2 1 0; 1 2 1; 0 1 2] x = (1, 0, 1): by symmetry x0 = x2, then
-    ** 2 x0 + x1 = 1 and 2 x0 + 2 x1 = 0 give x = (1, -1, 1).  A second
-    ** column (3, 4, 3) = A (1, 1, 1) checks several right-hand sides. */
-    const double sub[] = { 99, 1, 1 }, mid[] = { 2, 2, 2 },
-                 sup[] = { 1, 1, 99 };
-    double rhs[] = { 1, 3, 0, 4, 1, 3 };
-    const double want[] = { 1, 1, -1, 1, 1, 1 };
-    (void)state;
-    assert_int_equal(cf__solve_tridiagonal(3, sub, mid, sup, rhs, 2, NULL),
-                     CF_STATUS_OK);
-    /* the eliminations involve halves and thirds: within a few ulps */
-    for (int i = 0; i < 6; i++)
-        tu_assert_close(rhs[i], want[i], 8 * DBL_EPSILON, 1.0);
-}
-
-static void
-test_tridiagonal_random_against_dense(void **state)
-{
-    tu_rng r;
-    (void)state;
-    tu_rng_seed(&r, 81);
-    for (int trial = 0; trial < 50; trial++) {
-        size_t n = 1 + (size_t)(tu_rng_u01(&r) * 30);
-        double sub[NMAX], mid[NMAX], sup[NMAX], A[NMAX * NMAX] = { 0 };
-        double rhs[NMAX * 2], b[NMAX * 2], x[NMAX * 2];
-        for (size_t i = 0; i < n; i++) {
-            sub[i] = tu_rng_range(&r, -1, 1);
-            sup[i] = tu_rng_range(&r, -1, 1);
-            /* diagonally dominant, as the spline systems are */
-            mid[i] = (tu_rng_u01(&r) < 0.5 ? -1 : 1) *
-                     (2.0 + tu_rng_u01(&r));
-            if (i > 0)
-                A[i * n + i - 1] = sub[i];
-            A[i * n + i] = mid[i];
-            if (i + 1 < n)
-                A[i * n + i + 1] = sup[i];
-            b[2 * i] = rhs[2 * i] = tu_rng_range(&r, -5, 5);
-            b[2 * i + 1] = rhs[2 * i + 1] = tu_rng_range(&r, -5, 5);
-        }
-        assert_int_equal(cf__solve_tridiagonal(n, sub, mid, sup, rhs, 2,
-                                               NULL), CF_STATUS_OK);
-        dense_solve(n, A, b, 2, x);
-        /* condition number of a dominant tridiagonal matrix is < 4 here
-        ** (|mid| >= 2 > |sub| + |sup|): a few dozen ulps */
-        assert_true(tu_max_diff(rhs, x, 2 * n) <=
-                    64 * DBL_EPSILON * max_abs(x, 2 * n));
-    }
-}
-
-static void
-test_tridiagonal_singular(void **state)
-{
-    /* [1 1; 1 1] is singular: the second pivot is 1 - 1 * 1 = 0. */
-    const double sub[] = { 0, 1 }, mid[] = { 1, 1 }, sup[] = { 1, 0 };
-    double rhs[] = { 1, 2 };
-    cf_diag_t d;
-    (void)state;
-    cf_diag_clear(&d);
-    assert_int_equal(cf__solve_tridiagonal(2, sub, mid, sup, rhs, 1, &d),
-                     CF_STATUS_DEGENERATE);
-    assert_string_equal(d.msg,
-                        "tridiagonal system is singular at row 1 (pivot 0)");
-    assert_int_equal(d.index, 1);
-    cf_diag_clear(&d);
-    assert_int_equal(cf__solve_tridiagonal(0, sub, mid, sup, rhs, 1, &d),
-                     CF_STATUS_INVALID_ARG);
-    assert_string_equal(d.msg,
-                        "tridiagonal system of size 0 with 1 right-hand sides");
-}
-
-static void
 test_cyclic_by_hand(void **state)
 {
     /* [4 1 1; 1 4 1; 1 1 4] x = (6, 6, 6) has x = (1, 1, 1) (each row sums
@@ -595,10 +522,9 @@ test_out_of_memory(void **state)
     for (long k = 1;; k++) {
         double rhs[] = { 6, 6, 6 };
         cf__band_t b;
-        cf_status_t s1, s2, s3, s4;
+        cf_status_t s2, s3, s4;
         cf_diag_t d;
         tu_fail_alloc_after(k);
-        s1 = cf__solve_tridiagonal(3, sub, mid, sup, rhs, 1, NULL);
         s2 = cf__solve_cyclic_tridiagonal(3, sub, mid, sup, rhs, 1, NULL);
         cf_diag_clear(&d);
         s3 = cf__band_init(&b, 3, 1, 1, &d);
@@ -614,11 +540,10 @@ test_out_of_memory(void **state)
         }
         tu_fail_alloc_reset();
         assert_int_equal(tu_alloc_live(), 0);
-        assert_true(s1 == CF_STATUS_OK || s1 == CF_STATUS_NO_MEMORY);
         assert_true(s2 == CF_STATUS_OK || s2 == CF_STATUS_NO_MEMORY);
         assert_true(s3 == CF_STATUS_OK || s3 == CF_STATUS_NO_MEMORY);
         assert_true(s4 == CF_STATUS_OK || s4 == CF_STATUS_NO_MEMORY);
-        if (s1 == CF_STATUS_OK && s2 == CF_STATUS_OK && s3 == CF_STATUS_OK &&
+        if (s2 == CF_STATUS_OK && s3 == CF_STATUS_OK &&
             s4 == CF_STATUS_OK)
             break;
         assert_true(k < 100);
@@ -629,9 +554,6 @@ int
 main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_tridiagonal_by_hand),
-        cmocka_unit_test(test_tridiagonal_random_against_dense),
-        cmocka_unit_test(test_tridiagonal_singular),
         cmocka_unit_test(test_cyclic_by_hand),
         cmocka_unit_test(test_cyclic_random_against_dense),
         cmocka_unit_test(test_cyclic_errors),

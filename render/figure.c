@@ -335,10 +335,10 @@ cf_figure_set_projection(cf_figure_t *fig, size_t dim, const double *m)
 {
     double *copy;
     CF__FIG_CHECK(fig);
-    if (dim < 2 || dim > 64 || m == NULL)
+    if (dim < 2 || dim > CF_FIGURE_MAX_DIM || m == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                           "projection: dimension %zu must be 2..64 and the "
-                           "matrix not NULL", dim);
+                           "projection: dimension %zu must be 2..%d and the "
+                           "matrix not NULL", dim, CF_FIGURE_MAX_DIM);
     if (cf_check_finite_points(m, 2, dim, dim, "projection row",
                                &fig->err) != CF_STATUS_OK)
         return fig->err.status;

@@ -161,7 +161,11 @@ CF_API cf_status_t cf_figure_set_clip(cf_figure_t *fig, bool clip);
 ** by cubic segments. */
 CF_API cf_status_t cf_figure_set_tolerance(cf_figure_t *fig, double tol_bp);
 
-/* Projection for points in R^dim, dim >= 2: matrix m is 2 x dim,
+/* The largest dimension a projection takes. */
+#define CF_FIGURE_MAX_DIM 64
+
+/* Projection for points in R^dim, 2 <= dim <= CF_FIGURE_MAX_DIM: matrix m
+** is 2 x dim,
 ** row-major (page x = m[0..dim-1] . p, y = m[dim..2dim-1] . p).  Used by
 ** cf_figure_project and for curves of dim >= 3.  Default for any dim:
 ** (x, y) = first two coordinates. */

@@ -169,7 +169,7 @@ l_basis(lua_State *L)
     cf_diag_t diag;
     cf_diag_clear(&diag);
     if (!lua_isnoneornil(L, 5)) {
-        int k = cf__lua_check_int(L, 5, "basis", "k", 0, 64);
+        int k = cf__lua_check_int(L, 5, "basis", "k", 0, CF__LUA_MAX_DERIV);
         double *d = cf__lua_buffer(L, (size_t)k + 1);
         if (done(L, "basis", cf_basis_one_ders(i, p, u, m, x, k, d, &diag),
                  &diag, 1) != 1)

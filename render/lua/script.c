@@ -29,7 +29,7 @@
 ** (s = s .. "x" copies all of s) is otherwise free, and a loop growing a
 ** string one byte at a time copies n^2/2 bytes in n iterations within a
 ** small memory budget -- 10 s for 2 million instructions, minutes under
-** the default limit (finding of the fuzzer).  A figure script allocates a
+** the default limit.  A figure script allocates a
 ** few MiB in all: well under 1 % of its budget. */
 #define ALLOC_BYTES 16
 

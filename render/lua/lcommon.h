@@ -113,6 +113,9 @@ void cf__lua_open_knots(lua_State *L);
 void cf__lua_open_offset(lua_State *L);
 void cf__lua_open_interp(lua_State *L);
 void cf__lua_open_conic(lua_State *L);
+/* All of the figure language's functions, every opener in order, before
+** the name guards (script.c). */
+void cf__lua_open_language(lua_State *L);
 
 /* The allocator's user data of every state the script module makes
 ** (script.c) begins with this: the bindings tell the memory limit from

@@ -352,6 +352,21 @@ library_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
     return budget_alloc(ud, ptr, osize, nsize);
 }
 
+void
+cf__lua_open_language(lua_State *L)
+{
+    cf__lua_open_bezier(L);
+    cf__lua_open_bspline(L);
+    cf__lua_open_knots(L);
+    cf__lua_open_bernstein(L);
+    cf__lua_open_offset(L);
+    cf__lua_open_interp(L);
+    cf__lua_open_conic(L);
+    cf__lua_open_figure(L);
+    cf__lua_open_params(L);
+    cf__lua_open_theme(L);
+}
+
 static int
 open_sandbox(lua_State *L)
 {
@@ -378,16 +393,7 @@ open_sandbox(lua_State *L)
     lua_setglobal(L, "setmetatable");
     lua_pushcfunction(L, safe_print);
     lua_setglobal(L, "print");
-    cf__lua_open_bezier(L);
-    cf__lua_open_bspline(L);
-    cf__lua_open_knots(L);
-    cf__lua_open_bernstein(L);
-    cf__lua_open_offset(L);
-    cf__lua_open_interp(L);
-    cf__lua_open_conic(L);
-    cf__lua_open_figure(L);
-    cf__lua_open_params(L);
-    cf__lua_open_theme(L);
+    cf__lua_open_language(L);
     cf__lua_guard_names(L);
     return 0;
 }

@@ -53,9 +53,9 @@ f:decasteljau(c, t, { colors = { "grey", blue, orange, "black" },
                                 marker_color = "black" } })
 local place = {
   [0] = { "s", "nw", "ne", "auto" },
-  [1] = { "w", "n", "e" },
+  [1] = { "w", "n", "sw" },
   [2] = { "auto", "ne" },
-  [3] = { "se" },
+  [3] = { "auto" },
 }
 for r = 0, n do
   for i = 0, n - r do
@@ -63,9 +63,10 @@ for r = 0, n do
     if r == 0 then text = string.format("b_%d", i)
     elseif r == n then text = "x(0.4) = b_0^3"
     else text = string.format("b_%d^%d", i, r) end
-    -- b_2^1 lies on the leg b_2 b_3 with b_2's drop line just right of
-    -- it: its label right of that line
-    local off = r == n and 5.5 or (r == 1 and i == 2 and 10.5 or nil)
-    f:label(L[r + 1][i + 1], text, { place = place[r][i + 1], offset = off })
+    -- b_2^1 sits in the narrow gap between the leg b_2 b_3 and the
+    -- dotted line below b_2: south-west of its point, a little farther
+    f:label(L[r + 1][i + 1], text, { place = place[r][i + 1],
+                                     offset = (r == n or (r == 1 and i == 2))
+                                              and 6 or nil })
   end
 end

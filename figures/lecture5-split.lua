@@ -46,20 +46,14 @@ local place = {
   [0] = { "e", "nw", "ne", "w" },
   [1] = { "w", "n", "e" },
   [2] = { "nw", "ne" },
+  [3] = { "s" },
 }
-for k = 0, n - 1 do
+for k = 0, n do
   for i = 0, n - k do
     f:label(L[k + 1][i + 1], text[k][i + 1],
             { place = place[k][i + 1],
-              offset = (k == 2 and i == 1) and 32 or nil })
+              offset = k == n and 24 or (k == 2 and i == 1) and 36 or nil })
   end
 end
--- r(t*): too long for the crowded place at its point; inside the arch
--- with a leader (pin) to the point
-local r0 = L[n + 1][1]
-local at = { r0[1] - 0.3, r0[2] - 1.1 }
-f:arrow_to({ at[1] + 0.1, at[2] + 0.16 }, r0, { color = "grey", width = 0.5,
-                                                arrow_size = 4 })
-f:label(at, text[n][1], { place = "center" })
 f:label(ra:eval(0.35), "r^a", { place = "se", color = ca })
 f:label(rb:eval(0.6), "r^b", { place = "sw", color = cb })

@@ -54,7 +54,7 @@ for i = 0, n do
     if v > best then best, bu = v, u end
   end
   local at, place = { bu, best }, "n"
-  if i == 0 then at, place = { 0.015, basis(U, 0, p, 0.015) }, "e"
+  if i == 0 then at, place = { 0.06, basis(U, 0, p, 0.06) }, "ne"
   elseif i == n then at, place = { 0.94, basis(U, n, p, 0.94) }, "auto" end
   f:label(at, string.format("N_%d^2", i), { place = place, color = i + 1 })
 end

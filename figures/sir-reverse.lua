@@ -49,13 +49,12 @@ local f = figure{
   caption = "Reversed control points P̃_i = P_{n−i} give the reversed "
     .. "parametrisation c̃(t) = c(1 − t): the same curve run the other "
     .. "way (left c(t), right c̃(t); c(1/4) = c̃(3/4))",
-  width = "13cm", height = "5.9cm",
+  width = "13cm", height = "4.8cm",
 }
 f:polygon(c)
-f:legend{ place = "s" }   -- below, between the two drawings
-f:curve(c, { legend = "c(t)" })
+f:curve(c)
 f:polygon(r)
-f:curve(r, { color = "darkred", legend = "\\tilde{c}(t) = c(1 − t)" })
+f:curve(r, { color = "darkred" })
 local lp = { "w", "nw", "ne", "ne" }
 for i = 1, 4 do
   f:label(P[i], string.format("P_%d", i - 1), { place = lp[i] })
@@ -72,6 +71,8 @@ f:points(a, { marker = "dot", color = "darkblue", marker_color = "darkblue" })
 f:points(b, { marker = "dot", color = "darkred", marker_color = "darkred" })
 f:label(a, "c(1/4)", { place = "e" })
 f:label(b, "\\tilde{c}(3/4)")
+f:label(c:eval(0.5), "c(t)", { place = "s", offset = 34 })
+f:label(r:eval(0.5), "\\tilde{c}(t) = c(1 − t)", { place = "s", offset = 34 })
 
 -- sir-affine -----------------------------------------------------------
 local th = math.rad(-40)

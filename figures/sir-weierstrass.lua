@@ -9,7 +9,7 @@
 -- t = 1/2, where the convergence is slowest, and an asymmetric wave).
 -- f is drawn thick and black; f_2 dashed, f_5 dash-dotted, f_10 dotted,
 -- f_50 solid thin, each in its own colour and labelled; the samples
--- f(i/10) used by f_10 are marked on f and named in a legend.
+-- f(i/10) used by f_10 are marked on f.
 
 local function f(t) return 0.25 + math.abs(t - 0.5) + math.sin(2 * math.pi * t) / 4 end
 
@@ -37,8 +37,7 @@ fig:func(f, 0, 1, { color = "black", width = 2 })
 local samples = {}
 for i = 0, 10 do samples[#samples + 1] = { i / 10, f(i / 10) } end
 fig:points(samples, { marker = "dot", marker_size = 3, color = "black",
-                      marker_color = "black",
-                      legend = "f(i/10), i = 0, …, 10" })
+                      marker_color = "black" })
 
 -- labels: f at its crest; f_2 above its graph at t = 0.8; f_5 and f_10
 -- centred in the gaps of the trough at t = 0.62 (each just above its own

@@ -114,7 +114,6 @@ cf_figure_destroy(cf_figure_t *fig)
     cf_free(fig->caption);
     cf_free(fig->proj);
     cf_free(fig->warnings);
-    cf__place_memo_free(fig);
     cf_free(fig);
 }
 

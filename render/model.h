@@ -20,7 +20,6 @@
 #define CURVEFIG_RENDER_MODEL_H
 
 #include <stdbool.h>
-#include <stdint.h>
 
 #include "curvefig/figure.h"
 #include "curvefig/geometry.h"
@@ -175,7 +174,6 @@ struct cf_figure {
     size_t count, cap;
     char *warnings;          /* of the last layout, a line each; NULL: none */
     size_t warnings_len;
-    struct cf__place_memo *place_memo;   /* render/place-memo.c */
     /* legend (render/legend.c) */
     cf__legend_entry_t *legend;
     size_t nlegend;
@@ -332,22 +330,5 @@ cf_status_t cf__legend_fits(cf_figure_t *fig, const cf__layout_t *lay,
 /* Choose the places of the labels placed CF_PLACE_AUTO for a layout, and
 ** note in the figure's warnings every label that lies on ink. */
 cf_status_t cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay);
-
-/* ---- place-memo.c: the places of the last layouts ---------------------- */
-
-/* A 64-bit hash: of a layout and its figure's page (a new key), then
-** bytes, numbers and display lists added to it. */
-uint64_t cf__hash_layout(const cf_figure_t *fig, const cf__layout_t *lay);
-void cf__hash_bytes(uint64_t *h, const void *p, size_t n);
-void cf__hash_double(uint64_t *h, double v);
-void cf__hash_dl(uint64_t *h, const cf__dl_t *dl);
-/* chosen[i]: element i's automatic place, NULL for other elements.  Find
-** restores the places and warnings remembered under key (true), store
-** remembers the current ones. */
-bool cf__place_memo_find(cf_figure_t *fig, uint64_t key,
-                         cf__auto_place_t **chosen);
-void cf__place_memo_store(cf_figure_t *fig, uint64_t key,
-                          cf__auto_place_t *const *chosen);
-void cf__place_memo_free(cf_figure_t *fig);
 
 #endif

@@ -3,13 +3,9 @@
 ** label may sit) is drawn into a coarse raster of the page's ink by the
 ** cairo backend.  Each label placed by hand is then tested against it,
 ** glyph by glyph, and added to it; each label placed CF_PLACE_AUTO (the
-** default) takes the cheapest of the eight places around its anchor, at
-** its offset and up to 4 bp farther (adjacent to the point, as TikZ
-** places it), never one nearer another labelled point than its own while
-** any other is left, and is added to the raster in turn, so that later
-** labels avoid it.  The places of a layout are remembered
-** (render/place-memo.c): writing a figure in several formats, or laying
-** it out again the same, places its labels once.  A label that still lies on ink, placed by hand or
+** default) takes the cheapest of the eight places around its anchor at
+** growing distances, and is added to the raster in turn, so that later
+** labels avoid it.  A label that still lies on ink, placed by hand or
 ** automatically, is kept and reported in the figure's warnings
 ** (cf_figure_warnings): which label, at which place, on what.
 */
@@ -28,20 +24,11 @@
 #define AUTO_MAX_PIXELS 4e6   /* larger pages get a coarser raster */
 #define AUTO_GAP 1.0          /* bp around a label that should stay clear */
 #define AUTO_NEAR 3.0         /* bp: ink this close costs a quarter */
-#define AUTO_FAR 0.6          /* cost (bp^2) of each bp farther out */
-#define AUTO_AMBIGUOUS 1e4    /* cost of a place nearer another labelled
-                                 point than the label's own */
-#define AUTO_CLEARER 0.75     /* bp a label keeps nearer its own point */
+#define AUTO_FAR 0.15         /* cost (bp^2) of each bp farther out */
 #define HIT_ALPHA 127         /* a pixel inked more than half */
 
 /* The distances tried, in bp beyond the style's offset. */
-static const double further[] = { 0.0, 1.0, 2.0, 3.0, 4.0 };
-
-/* The anchors (page points) of the labels in the window. */
-typedef struct anchors {
-    double *xy;
-    size_t n;
-} anchors_t;
+static const double further[] = { 0.0, 2.5, 5.5, 9.0, 14.0, 20.0 };
 
 typedef struct raster {
     cairo_surface_t *img, *one;   /* the page's ink; one element's */
@@ -130,38 +117,10 @@ is_label(cf_figure_t *fig, size_t i, double *x, double *y, cf__text_t **t,
     return e->kind->auto_label(e, x, y, t, chosen);
 }
 
-/* bp from page point (x, y) to page box b (x0 y0 x1 y1). */
-static double
-box_distance(const double b[4], double x, double y)
-{
-    double dx = fmax(0, fmax(b[0] - x, x - b[2]));
-    double dy = fmax(0, fmax(b[1] - y, y - b[3]));
-    return hypot(dx, dy);
-}
-
-/* Whether a label with page box b, anchored at (px, py), lies nearer
-** another labelled point than its own (or not clearly farther from it). */
-static bool
-ambiguous(const anchors_t *an, const double b[4], double px, double py)
-{
-    double own = box_distance(b, px, py);
-    size_t k;
-    for (k = 0; k < an->n; k++) {
-        double x = an->xy[2 * k], y = an->xy[2 * k + 1];
-        if (hypot(x - px, y - py) < 0.5)
-            continue;   /* the same point */
-        if (box_distance(b, x, y) < own + AUTO_CLEARER)
-            return true;
-    }
-    return false;
-}
-
-/* The cheapest place and distance of a label at page point (px, py): as
-** near the point as the ink lets it, never nearer another labelled
-** point unless every place is. */
+/* The cheapest place and distance of a label at page point (px, py). */
 static void
-cheapest(const raster_t *r, const anchors_t *an, const cf_label_t *lab,
-         const cf_style_t *s, double px, double py, cf__auto_place_t *chosen)
+cheapest(const raster_t *r, const cf_label_t *lab, const cf_style_t *s,
+         double px, double py, cf__auto_place_t *chosen)
 {
     static const cf_place_t order[] = {
         CF_PLACE_NE, CF_PLACE_NW, CF_PLACE_SE, CF_PLACE_SW,
@@ -174,15 +133,9 @@ cheapest(const raster_t *r, const anchors_t *an, const cf_label_t *lab,
     chosen->offset = s->offset;
     for (d = 0; d < sizeof further / sizeof further[0]; d++)
         for (k = 0; k < sizeof order / sizeof order[0]; k++) {
-            double ox, oy, c, b[4], off = s->offset + further[d];
+            double ox, oy, c, off = s->offset + further[d];
             cf__label_origin(lab, order[k], off, px, py, &ox, &oy);
-            b[0] = ox + ink[0];
-            b[1] = oy + ink[1];
-            b[2] = ox + ink[2];
-            b[3] = oy + ink[3];
             c = place_cost(r, ink, ox, oy) + AUTO_FAR * further[d];
-            if (ambiguous(an, b, px, py))
-                c += AUTO_AMBIGUOUS;
             /* a later candidate must be clearly better (0.05 bp^2) */
             if (c < best - 0.05) {
                 best = c;
@@ -289,43 +242,6 @@ static const char *const place_names[] = {
     "center", "n", "ne", "e", "se", "s", "sw", "w", "nw", "auto"
 };
 
-/* A page box (x0 y0 x1 y1) holding everything a label's operations draw,
-** from the boxes of its texts (widened by their halos and a bp for the
-** rounding of the glyphs' outlines): false when it draws anything but
-** text, or nothing. */
-static bool
-ops_box(const cf__dl_t *dl, double box[4])
-{
-    size_t k;
-    bool any = false;
-    for (k = 0; k < dl->count; k++) {
-        const cf__op_t *op = &dl->ops[k];
-        const cf__text_op_t *t = &op->u.text;
-        double m, b[4];
-        if (op->kind == CF__OP_GROUP || op->kind == CF__OP_END)
-            continue;
-        if (op->kind != CF__OP_TEXT)
-            return false;
-        if (!(t->ink[2] > t->ink[0] && t->ink[3] > t->ink[1]))
-            continue;
-        m = 1.0 + (t->halo > 0 ? t->halo : 0);
-        b[0] = t->ox + t->ink[0] - m;
-        b[1] = t->oy + t->ink[1] - m;
-        b[2] = t->ox + t->ink[2] + m;
-        b[3] = t->oy + t->ink[3] + m;
-        if (!any) {
-            memcpy(box, b, sizeof b);
-            any = true;
-        } else {
-            box[0] = fmin(box[0], b[0]);
-            box[1] = fmin(box[1], b[1]);
-            box[2] = fmax(box[2], b[2]);
-            box[3] = fmax(box[3], b[3]);
-        }
-    }
-    return any;
-}
-
 /* Test label i (not yet in the raster) against the ink; a warning when
 ** it lies on some.  Then add it to the raster. */
 static cf_status_t
@@ -342,8 +258,7 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
     st = element_ops(fig, i, lay, r);
     if (st != CF_STATUS_OK)
         return st;
-    if (!ops_box(&r->dl, ink)
-        && cf__cairo_ink(&r->dl, 0, r->dl.count, ink) != 0)
+    if (cf__cairo_ink(&r->dl, 0, r->dl.count, ink) != 0)
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
                            "cairo failed measuring a label");
     if (!(ink[2] > ink[0] && ink[3] > ink[1]))
@@ -383,14 +298,7 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
                  automatic ? "placed automatically " : "place ",
                  place_names[place]);
     }
-    /* the label's pixels, drawn once, into the page's ink */
-    cairo_surface_flush(r->one);
-    cairo_save(r->cr);
-    cairo_identity_matrix(r->cr);
-    cairo_set_source_surface(r->cr, r->one, 0, 0);
-    cairo_rectangle(r->cr, px[0], px[1], px[2] - px[0], px[3] - px[1]);
-    cairo_fill(r->cr);
-    cairo_restore(r->cr);
+    cf__dl_play(&r->dl, 0, r->dl.count, &cf__cairo_backend, r->cr);
     return CF_STATUS_OK;
 }
 
@@ -427,67 +335,33 @@ raster_close(raster_t *r)
     cairo_surface_destroy(r->one);
 }
 
-/* The key of the places for layout lay: the layout, the ink (into ink:
-** every element but the labels and the shadings) and each label's own
-** operations, an automatic one drawn at a fixed place.  chosen[i] is set
-** for every label (NULL elsewhere). */
-static cf_status_t
-place_key(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *ink,
-          cf__auto_place_t **chosen, uint64_t *key)
-{
-    cf__dl_t one;
-    cf_style_t s;
-    cf__text_t *t;
-    double x, y;
-    size_t i;
-    cf_status_t st = CF_STATUS_OK;
-    *key = cf__hash_layout(fig, lay);
-    cf__dl_init(&one);
-    for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
-        chosen[i] = NULL;
-        if (is_label(fig, i, &x, &y, &t, &chosen[i], &s)) {
-            cf__auto_place_t keep = *chosen[i];
-            cf__hash_bytes(key, &s.place, sizeof s.place);
-            cf__hash_double(key, s.offset);
-            chosen[i]->place = CF_PLACE_NE;
-            chosen[i]->offset = 0;
-            cf__dl_reset(&one);
-            st = cf__element_draw(fig, i, lay, &one);
-            cf__hash_dl(key, &one);
-            *chosen[i] = keep;
-        } else if (!(fig->els[i]->kind->flags & CF__KIND_SHADING)) {
-            st = cf__element_draw(fig, i, lay, ink);
-        }
-    }
-    if (st == CF_STATUS_OK && (ink->failed || one.failed))
-        st = cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory placing labels");
-    cf__dl_free(&one);
-    cf__hash_dl(key, ink);
-    return st;
-}
-
-/* The places, for a layout not met before: the ink drawn, then the
-** labels placed by hand checked, then the automatic ones placed. */
-static cf_status_t
-place_all(cf_figure_t *fig, const cf__layout_t *lay, const cf__dl_t *ink)
+cf_status_t
+cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay)
 {
     raster_t r;
-    anchors_t an;
     cf_style_t s;
     cf__text_t *t;
     cf__auto_place_t *chosen;
     double x, y;
     size_t i;
+    bool any = false;
     cf_status_t st;
 
     cf_free(fig->warnings);
     fig->warnings = NULL;
     fig->warnings_len = 0;
+    for (i = 0; i < fig->count && !any; i++)
+        any = is_label(fig, i, &x, &y, &t, &chosen, &s);
+    if (!any)
+        return CF_STATUS_OK;
     st = raster_open(fig, &r);
     /* fills and hulls left out: labels may sit on a shading */
-    if (st == CF_STATUS_OK)
-        cf__dl_play(ink, 0, ink->count, &cf__cairo_backend, r.cr);
+    for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
+        if ((fig->els[i]->kind->flags & CF__KIND_SHADING)
+            || is_label(fig, i, &x, &y, &t, &chosen, &s))
+            continue;
+        st = raster_element(fig, i, lay, &r, r.cr);
+    }
     /* the labels placed by hand first: the automatic ones avoid them */
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
         if (!is_label(fig, i, &x, &y, &t, &chosen, &s)
@@ -495,17 +369,6 @@ place_all(cf_figure_t *fig, const cf__layout_t *lay, const cf__dl_t *ink)
             continue;
         st = check_label(fig, lay, &r, i, t, s.place, false);
     }
-    an.n = 0;
-    an.xy = cf_alloc_array(2 * fig->count + 2, sizeof *an.xy);
-    if (an.xy == NULL && st == CF_STATUS_OK)
-        st = cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory placing labels");
-    for (i = 0; i < fig->count && st == CF_STATUS_OK; i++)
-        if (is_label(fig, i, &x, &y, &t, &chosen, &s)
-            && cf__in_window(lay, x, y)) {
-            cf__map(lay, x, y, &an.xy[2 * an.n], &an.xy[2 * an.n + 1]);
-            an.n++;
-        }
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
         double px, py;
         if (!is_label(fig, i, &x, &y, &t, &chosen, &s)
@@ -516,48 +379,10 @@ place_all(cf_figure_t *fig, const cf__layout_t *lay, const cf__dl_t *ink)
             continue;
         cf__map(lay, x, y, &px, &py);
         cairo_surface_flush(r.img);
-        cheapest(&r, &an, t->lab, &s, px, py, chosen);
+        cheapest(&r, t->lab, &s, px, py, chosen);
         st = check_label(fig, lay, &r, i, t, chosen->place, true);
     }
-    cf_free(an.xy);
     raster_close(&r);
-    return st;
-}
-
-cf_status_t
-cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay)
-{
-    cf__auto_place_t **chosen, *c;
-    cf__dl_t ink;
-    uint64_t key;
-    cf_style_t s;
-    cf__text_t *t;
-    double x, y;
-    size_t i;
-    bool any = false;
-    cf_status_t st;
-
-    for (i = 0; i < fig->count && !any; i++)
-        any = is_label(fig, i, &x, &y, &t, &c, &s);
-    if (!any) {
-        cf_free(fig->warnings);
-        fig->warnings = NULL;
-        fig->warnings_len = 0;
-        return CF_STATUS_OK;
-    }
-    chosen = cf_calloc(fig->count, sizeof *chosen);
-    if (chosen == NULL)
-        return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                           "out of memory placing labels");
-    cf__dl_init(&ink);
-    st = place_key(fig, lay, &ink, chosen, &key);
-    if (st == CF_STATUS_OK && !cf__place_memo_find(fig, key, chosen)) {
-        st = place_all(fig, lay, &ink);
-        if (st == CF_STATUS_OK)
-            cf__place_memo_store(fig, key, chosen);
-    }
-    cf__dl_free(&ink);
-    cf_free(chosen);
     return st;
 }
 

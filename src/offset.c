@@ -4,6 +4,7 @@
 ** offset-chain.c, the fits are in offset-fit.c, cusps in offset-cusp.c,
 ** trimming in offset-trim.c.
 */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -93,6 +94,38 @@ check_options(const cf_offset_options_t *opt, double d, cf_diag_t *diag)
     return CF_STATUS_OK;
 }
 
+/* The offset's coordinates are about as large as the control points plus
+** |d|; doubles resolve them to DBL_EPSILON of that, and the measured error of
+** a fit carries rounding noise of a few hundred of those units (the fit and
+** its error estimate each take some hundred operations).  A tolerance below
+** OFFSET_RESOLUTION units could never be met: the greedy cover would shrink
+** its pieces to the minimum width and never end.  It is refused instead. */
+#define OFFSET_RESOLUTION 4096.0
+
+static cf_status_t
+check_resolution(const cf_bezier_t *const *pieces, size_t n, double d,
+                 double tol, cf_diag_t *diag)
+{
+    double scale = fabs(d), floor_tol;
+    for (size_t i = 0; i < n; i++) {
+        const cf_bezier_t *c = pieces[i];
+        for (int k = 0; k <= c->degree; k++) {
+            const double *q = c->pts + (size_t)k * c->hdim;
+            double w = c->rational ? q[c->dim] : 1.0;
+            for (size_t j = 0; j < c->dim; j++)
+                scale = fmax(scale, fabs(q[j] / w));
+        }
+    }
+    floor_tol = OFFSET_RESOLUTION * DBL_EPSILON * scale;
+    if (!(tol >= floor_tol))
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "offset tolerance %g is below what doubles resolve "
+                         "for coordinates of size %g (distance %g): it "
+                         "must be at least %.3g",
+                         tol, scale, d, floor_tol);
+    return CF_STATUS_OK;
+}
+
 static cf_status_t
 offset_pieces(const cf_bezier_t *const *pieces, size_t n, const double *t0,
               const double *t1, double d, const cf_offset_options_t *opt_in,
@@ -134,6 +167,9 @@ offset_pieces(const cf_bezier_t *const *pieces, size_t n, const double *t0,
                              "piece %zu is a single point; its "
                              "normal is undefined", i);
     }
+    st = check_resolution(pieces, n, d, opt.tolerance, diag);
+    if (st != CF_STATUS_OK)
+        return st;
     if (cf__driver_init(&dr, opt.tolerance, opt.method, d) != CF_STATUS_OK)
         return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
                          "out of memory (offset chain)");

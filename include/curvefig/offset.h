@@ -38,7 +38,9 @@
 ** gives the largest over everything returned, the raw pieces and (when
 ** trimming) the trimmed ones; if a piece cannot reach the tolerance above
 ** a minimum parameter width (1e-9 of its interval) it is kept and
-** report.converged is false.
+** report.converged is false.  A tolerance below what doubles resolve,
+** 4096 DBL_EPSILON times the largest of |d| and the control points'
+** coordinates (about 9e-13 of that size), is refused (INVALID_ARG).
 **
 ** Joins.  Where c' = 0 inside a curve (a cusp of the base curve, e.g.
 ** (0,0) (128,128) (128,0) (0,128)) and between Bézier pieces of a spline

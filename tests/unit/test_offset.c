@@ -1,5 +1,6 @@
 /* Offset curves: exact offsets, cusps, the cubic approximation and its
 ** error, trimming, degenerate input and bad arguments. */
+#include <float.h>
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -1226,6 +1227,24 @@ test_bad_arguments(void **state)
     assert_non_null(strstr(diag.msg, "tolerance"));
     opt.tolerance = NAN;
     assert_int_equal(cf_bezier_offset(c, 1, &opt, &raw, NULL, NULL, NULL),
+                     CF_STATUS_INVALID_ARG);
+    /* a tolerance doubles cannot resolve at the offset's size (4096 ulps
+    ** of it): refused at once, where the cover would never end; just
+    ** above that floor the offset is computed */
+    cf_offset_options_init(&opt);
+    cf_diag_clear(&diag);
+    assert_int_equal(cf_bezier_offset(c, 1e14, &opt, &raw, NULL, NULL,
+                                      &diag),
+                     CF_STATUS_INVALID_ARG);
+    assert_non_null(strstr(diag.msg, "below what doubles resolve"));
+    assert_null(raw);
+    opt.tolerance = 1.01 * 4096 * DBL_EPSILON * 1e9;
+    assert_int_equal(cf_bezier_offset(c, 1e9, &opt, &raw, NULL, NULL, NULL),
+                     CF_STATUS_OK);
+    cf_cubics_destroy(raw);
+    raw = NULL;
+    opt.tolerance = 0.99 * 4096 * DBL_EPSILON * 1e9;
+    assert_int_equal(cf_bezier_offset(c, 1e9, &opt, &raw, NULL, NULL, NULL),
                      CF_STATUS_INVALID_ARG);
     cf_offset_options_init(&opt);
     opt.method = (cf_offset_method_t)7;

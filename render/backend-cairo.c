@@ -176,9 +176,35 @@ end_page(void *ctx)
     return cairo_status(ctx) != CAIRO_STATUS_SUCCESS;
 }
 
+/* far outside any page (bp), inside cairo's fixed-point range */
+#define KNOCKOUT_FAR 1e5
+
+/* Each box clips its inside away: a rectangle far around the page and
+** the box the other way round, so that the box winds 0; successive clips
+** intersect, so overlapping boxes are fine. */
+static void
+knockout(void *ctx, const double (*b)[4], size_t n)
+{
+    cairo_t *cr = ctx;
+    cairo_save(cr);
+    for (size_t i = 0; i < n; i++) {
+        double x0 = b[i][0], y0 = b[i][1], x1 = x0 + b[i][2],
+               y1 = y0 + b[i][3];
+        cairo_new_path(cr);
+        cairo_rectangle(cr, -KNOCKOUT_FAR, -KNOCKOUT_FAR, 2 * KNOCKOUT_FAR,
+                        2 * KNOCKOUT_FAR);
+        cairo_move_to(cr, x0, y0);
+        cairo_line_to(cr, x0, y1);
+        cairo_line_to(cr, x1, y1);
+        cairo_line_to(cr, x1, y0);
+        cairo_close_path(cr);
+        cairo_clip(cr);
+    }
+}
+
 const cf__backend_t cf__cairo_backend = {
     "cairo", begin_page, begin_group, restore, clip, restore, draw_path,
-    draw_marker, draw_text, end_page
+    draw_marker, draw_text, end_page, knockout
 };
 
 /* device units per bp when measuring ink */

@@ -6,6 +6,7 @@
 **   page W H background R G B A
 **   group INDEX KIND [overlay SPEC] ... end
 **   clip X Y W H | clip none ... unclip
+**   knockout N X Y W H ... (N boxes) ... unclip
 **   path fill R G B A OPACITY | stroke R G B A OPACITY WIDTH CAP JOIN
 **        dash N D1 .. : M x y L x y C x1 y1 x2 y2 x3 y3 R x y w h
 **        A cx cy r a0 a1 Z
@@ -190,7 +191,17 @@ end_page(void *ctx)
     return ((cf__dump_t *)ctx)->failed ? -1 : 0;
 }
 
+static void
+knockout(void *ctx, const double (*b)[4], size_t n)
+{
+    put(ctx, "knockout %zu", n);
+    for (size_t i = 0; i < n; i++)
+        put(ctx, " %.12g %.12g %.12g %.12g", b[i][0], b[i][1], b[i][2],
+            b[i][3]);
+    put(ctx, "\n");
+}
+
 const cf__backend_t cf__dump_backend = {
     "dump", begin_page, begin_group, end_group, clip, unclip, draw_path,
-    draw_marker, draw_text, end_page
+    draw_marker, draw_text, end_page, knockout
 };

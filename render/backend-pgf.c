@@ -471,8 +471,10 @@ outline_text(cf__pgf_t *g, const cf__text_op_t *t)
     cairo_path_t *path;
     int i, pass;
     if (g->glyphs == NULL) {
-        cairo_surface_t *s = cairo_image_surface_create(CAIRO_FORMAT_A8, 1,
-                                                        1);
+        /* unbounded: pango leaves out the glyphs outside a bounded
+        ** surface's extents */
+        cairo_surface_t *s = cairo_recording_surface_create(
+            CAIRO_CONTENT_ALPHA, NULL);
         g->glyphs = cairo_create(s);
         cairo_surface_destroy(s);
     }
@@ -550,9 +552,24 @@ end_page(void *ctx)
     return g->out->failed || g->range_error ? -1 : 0;
 }
 
+/* Each box clips its inside away (the even-odd rule with a rectangle
+** around the page); clips within one scope intersect. */
+static void
+knockout(void *ctx, const double (*b)[4], size_t n)
+{
+    cf__pgf_t *g = ctx;
+    double m = g->width + g->height;
+    put(g, "\\begin{pgfscope}\\pgfseteorule\n");
+    for (size_t i = 0; i < n; i++) {
+        put_rect(g, -m, -m, g->width + 2 * m, g->height + 2 * m);
+        put_rect(g, b[i][0], b[i][1], b[i][2], b[i][3]);
+        put(g, "\\pgfusepath{clip}\n");
+    }
+}
+
 const cf__backend_t cf__pgf_backend = {
     "pgf", begin_page, begin_group, end_group, clip, unclip, draw_path,
-    draw_marker, draw_text, end_page
+    draw_marker, draw_text, end_page, knockout
 };
 
 void

@@ -383,7 +383,43 @@ end_page(void *ctx)
     return w->out->failed || w->bad ? -1 : 0;
 }
 
+/* Each box clips its inside away (even-odd with a rectangle far around
+** the page); each clip path is clipped by the one before, so they
+** intersect, and one scope holds them all. */
+static void
+knockout(void *ctx, const double (*b)[4], size_t n)
+{
+    cf__svgw_t *w = ctx;
+    char id[48];
+    for (size_t i = 0; i < n; i++) {
+        put(w, "<clipPath id=\"");
+        snprintf(id, sizeof id, "c%u", ++w->clips);
+        put(w, id);
+        if (i > 0) {
+            snprintf(id, sizeof id, "c%u", w->clips - 1);
+            put(w, "\" clip-path=\"url(#");
+            put(w, id);
+            put(w, ")");
+        }
+        put(w, "\"><path clip-rule=\"evenodd\" d=\"M-100000 -100000H100000"
+               "V100000H-100000Z M");
+        put_xy(w, b[i][0], b[i][1]);
+        put(w, "h");
+        put_num(w, b[i][2]);
+        put(w, "v");
+        put_num(w, b[i][3]);
+        put(w, "h");
+        put_num(w, -b[i][2]);
+        put(w, "Z\"/></clipPath>\n");
+    }
+    snprintf(id, sizeof id, "c%u", w->clips);
+    put(w, "<g clip-path=\"url(#");
+    put(w, id);
+    put(w, ")\">\n");
+    push(w, false);
+}
+
 const cf__backend_t cf__svgw_backend = {
     "svg", begin_page, begin_group, end_group, clip, unclip, draw_path,
-    draw_marker, draw_text, end_page
+    draw_marker, draw_text, end_page, knockout
 };

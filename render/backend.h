@@ -50,15 +50,24 @@ typedef struct cf__backend {
     void (*draw_text)(void *ctx, const cf__text_op_t *text);
     /* Finish the page; nonzero when the device failed. */
     int (*end_page)(void *ctx);
+    /* Clip to the page minus n boxes (x y w h each), until the next
+    ** unclip: the knockouts of the labels with a halo on a transparent
+    ** page (render/dlist.h).  NULL: the backend draws no knockouts. */
+    void (*knockout)(void *ctx, const double (*boxes)[4], size_t n);
 } cf__backend_t;
 
 /* Hand ops [from, to) of dl to a backend (no begin_page / end_page). */
 void cf__dl_play(const cf__dl_t *dl, size_t from, size_t to,
                  const cf__backend_t *be, void *ctx);
-/* The ops of dl shown on overlay step k: a group whose overlay leaves k
-** out is skipped whole (k 0: every op). */
-void cf__dl_play_step(const cf__dl_t *dl, unsigned k,
-                      const cf__backend_t *be, void *ctx);
+/* The ops of dl shown on overlay step k of page: a group whose overlay
+** leaves k out is skipped whole (k 0: every op).  On a transparent page
+** (page->background.a 0) a label halo of the background colour paints
+** nothing: it is a knockout.  When there are knockouts and the backend
+** draws them, the other ops are drawn first inside be->knockout of their
+** boxes, then those labels (with their groups and clips, so overlays and
+** clipping still hold). */
+void cf__dl_play_step(const cf__dl_t *dl, const cf__page_t *page,
+                      unsigned k, const cf__backend_t *be, void *ctx);
 /* A whole page: begin_page, every op, end_page (its result). */
 int cf__dl_play_page(const cf__dl_t *dl, const cf__page_t *page,
                      const cf__backend_t *be, void *ctx);

@@ -92,6 +92,9 @@ typedef struct cf__text_op {
     double opacity;
     double halo;             /* > 0: a border of halo_color first */
     cf_color_t halo_color;
+    bool halo_background;    /* halo_color is the page's background: on a
+                                transparent page the halo is a knockout
+                                (render/backend.h) */
 } cf__text_op_t;
 
 typedef enum cf__op_kind {

@@ -431,7 +431,7 @@ play_steps(const cf__dl_t *dl, const cf__page_t *pg, cairo_t *cr)
         if (k > pg->first_step)
             cairo_show_page(cr);
         cf__cairo_backend.begin_page(cr, pg);
-        cf__dl_play_step(dl, k, &cf__cairo_backend, cr);
+        cf__dl_play_step(dl, pg, k, &cf__cairo_backend, cr);
         cf__cairo_backend.end_page(cr);
     }
 }

@@ -343,7 +343,7 @@ text_op(void *ctx, const cf__text_op_t *t)
 
 static const cf__backend_t collector = {
     "glyph data", nop_page, nop_group, nop, nop_clip, nop, nop_path,
-    nop_marker, text_op, nop_end
+    nop_marker, text_op, nop_end, NULL
 };
 
 /* C lines: the character set in each description. */

@@ -145,8 +145,8 @@ cf__figure_play(cf_figure_t *fig, unsigned step, const cf__backend_t *be,
     st = make_job(fig, &o, false, &job, diag);
     if (st == CF_STATUS_OK) {
         be->begin_page(ctx, &job.page);
-        cf__dl_play_step(&job.dl, step <= cf_figure_steps(fig) ? step : 0,
-                         be, ctx);
+        cf__dl_play_step(&job.dl, &job.page,
+                         step <= cf_figure_steps(fig) ? step : 0, be, ctx);
         if (be->end_page(ctx) != 0)
             st = cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
                              "the %s backend failed drawing the figure",

@@ -125,12 +125,15 @@ cf__text_draw(cf_figure_t *fig, cf__text_t *t, const cf_style_t *s,
     op.color = s->color;
     op.opacity = s->opacity;
     if (s->halo > 0) {
-        /* the background colour, or white on a transparent page */
+        /* the background colour (white for a theme without one); on a
+        ** transparent page a knockout: the ink under the label is left
+        ** out, so the slide behind shows through, whatever its colour */
         cf_color_t bg = fig->theme.background;
         if (bg.a <= 0)
             bg.r = bg.g = bg.b = bg.a = 1;
         op.halo = s->halo;
         op.halo_color = bg;
+        op.halo_background = true;
     }
     cf__dl_text(dl, &op);
     return CF_STATUS_OK;

@@ -60,14 +60,14 @@ static const cf__lua_key_t line_style[] = {
 /* the style of text */
 static const cf__lua_key_t text_style[] = {
     KEY("color"), KEY("opacity"), KEY("font_size"), NAMES("place", places),
-    NAMES("anchor", places), KEY("offset"), END,
+    NAMES("anchor", places), KEY("offset"), KEY("halo"), END,
 };
 /* every style key: refused, with a hint, where no style is taken */
 static const cf__lua_key_t any_style[] = {
     KEY("color"), KEY("fill"), KEY("width"), KEY("dash"), KEY("opacity"),
     KEY("marker"), KEY("marker_size"), KEY("marker_color"),
-    KEY("arrow_size"), KEY("font_size"), KEY("place"), KEY("anchor"),
-    KEY("offset"), KEY("legend"), END,
+    KEY("arrow_size"), KEY("font_size"), KEY("halo"), KEY("place"),
+    KEY("anchor"), KEY("offset"), KEY("legend"), END,
 };
 /* the labels of the points a method draws (labels.c of the binding) */
 static const cf__lua_key_t point_labels[] = {

@@ -175,6 +175,7 @@ static const struct style_field {
     { "offset", CF_STYLE_OFFSET, offsetof(cf_style_t, offset), false },
     { "arrow_size", CF_STYLE_ARROW_SIZE, offsetof(cf_style_t, arrow_size),
       false },
+    { "halo", CF_STYLE_HALO, offsetof(cf_style_t, halo), false },
 };
 
 /* An enumerated field (marker, place) through its parser. */

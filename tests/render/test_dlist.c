@@ -327,6 +327,79 @@ test_pgf_backend(void **state)
     cf_figure_destroy(fig);
 }
 
+/* Labels TeX cannot set (Cyrillic) are written as curvefig's glyph
+** outlines: all of them, wherever the label lies on the page.  The box of
+** the outline points of each label equals the ink box pango gives the
+** label (the text op's), to a small fraction of a bp (the outlines' Bézier
+** control points lie on or just outside the glyphs' ink). */
+static void
+test_pgf_outlines_whole(void **state)
+{
+    static const double at[][2] = { { 0.5, 0.5 }, { 7, 1 }, { 4, 5.5 } };
+    cf_figure_t *fig = NULL;
+    cf_style_t st;
+    cf__dl_t dl;
+    cf__page_t page;
+    cf__buf_t out;
+    cf__pgf_t g;
+    const char *p;
+    size_t i, k = 0;
+    (void)state;
+    assert_int_equal(cf_figure_create(8, 6, CF_UNIT_CM, &fig, NULL), 0);
+    assert_int_equal(cf_figure_set_window(fig, 0, 8, 0, 6), 0);
+    cf_style_init(&st);
+    st.set = CF_STYLE_PLACE;
+    st.place = CF_PLACE_CENTER;
+    for (i = 0; i < 3; i++)
+        assert_int_equal(cf_figure_add_label(fig, at[i][0], at[i][1],
+                                             "Кривая Безье", &st), 0);
+    build(fig, &dl, &page);
+    memset(&out, 0, sizeof out);
+    memset(&g, 0, sizeof g);
+    g.out = &out;
+    assert_int_equal(cf__dl_play_page(&dl, &page, &cf__pgf_backend, &g), 0);
+    cf__pgf_fini(&g);
+    assert_int_equal(cf__buf_append(&out, "", 1), 0);
+    p = (const char *)out.data;
+    for (i = 0; i < dl.count; i++) {
+        const cf__text_op_t *t = &dl.ops[i].u.text;
+        double b[4] = { INFINITY, INFINITY, -INFINITY, -INFINITY }, x, y;
+        const char *end;
+        if (dl.ops[i].kind != CF__OP_TEXT)
+            continue;
+        /* this label's outlines: from its scope to the next fill */
+        p = strstr(p, "\\pgfpathmoveto");
+        assert_non_null(p);
+        end = strstr(p, "\\pgfusepath{fill}");
+        assert_non_null(end);
+        for (; p != NULL && p < end; p = strstr(p + 1, "{\\pgfqpoint{")) {
+            if (sscanf(p, "%*[^{]{\\pgfqpoint{%lfbp}{%lfbp}}", &x, &y) != 2
+                && sscanf(p, "{\\pgfqpoint{%lfbp}{%lfbp}}", &x, &y) != 2)
+                continue;
+            y = page.height - y;
+            b[0] = fmin(b[0], x);
+            b[1] = fmin(b[1], y);
+            b[2] = fmax(b[2], x);
+            b[3] = fmax(b[3], y);
+        }
+        /* across: the first and last glyphs' ink; up and down: at
+        ** least the ink, at most 3 bp more (control points of the
+        ** outlines off the glyphs) */
+        assert_true(fabs(b[0] - (t->ox + t->ink[0])) < 0.5);
+        assert_true(fabs(b[2] - (t->ox + t->ink[2])) < 0.5);
+        assert_true(b[1] <= t->oy + t->ink[1] + 0.3
+                    && b[1] >= t->oy + t->ink[1] - 3);
+        assert_true(b[3] >= t->oy + t->ink[3] - 0.3
+                    && b[3] <= t->oy + t->ink[3] + 3);
+        p = end;
+        k++;
+    }
+    assert_int_equal(k, 3);
+    cf__buf_free(&out);
+    cf__dl_free(&dl);
+    cf_figure_destroy(fig);
+}
+
 /* Nothing in a dump depends on the run: two figures built alike dump
 ** alike, and a changed element changes the dump. */
 static void
@@ -455,6 +528,7 @@ main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_dump_content),
+        cmocka_unit_test(test_pgf_outlines_whole),
         cmocka_unit_test(test_backend_independence),
         cmocka_unit_test(test_dump_deterministic),
         cmocka_unit_test(test_pgf_backend),

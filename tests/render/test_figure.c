@@ -1146,9 +1146,11 @@ test_label_halo(void **state)
     s.set = CF_STYLE_HALO;
     s.halo = 1.5;
     assert_int_equal(cf_figure_add_label(fig, 0, 0, "C(t)", &s), 0);
+    assert_int_equal(cf_figure_set_background(fig, CF_BACKGROUND_ALWAYS), 0);
     svg = render_svg(fig);
-    /* the glyph outlines stroked 3 bp wide in the (white) background
-    ** colour, under the glyphs */
+    /* on a painted page, the glyph outlines stroked 3 bp wide in the
+    ** (white) background colour, under the glyphs (a transparent page's
+    ** knockout: test_knockout.c) */
     p = strstr(svg, "</defs>");
     assert_non_null(p);
     p = strstr(p, "stroke-width:3;");

@@ -148,7 +148,7 @@ static const struct {
     { "enspace", 0.5 }, { "quad", 1.0 }, { "qquad", 2.0 },
 };
 
-/* Accents over a single character (spacing forms, placed by hand). */
+/* Accents over a character or a group (spacing forms, placed by hand). */
 static const struct {
     const char *name;
     unsigned cp;
@@ -303,7 +303,8 @@ cf_label_each_command(void (*visit)(const char *kind, const char *name,
         char u[8];
         size_t n = cf__utf8_encode(accents[i].cp, u);
         u[n] = '\0';
-        snprintf(buf, sizeof buf, "an accent %s over one character", u);
+        snprintf(buf, sizeof buf, "an accent %s over a character or a {group}",
+                 u);
         visit("accent", accents[i].name, buf, ctx);
     }
     for (i = 0; i < sizeof structures / sizeof structures[0]; i++)

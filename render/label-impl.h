@@ -70,6 +70,19 @@ typedef struct font {
 enum { CLS_NONE, CLS_ORD, CLS_OP, CLS_BIN, CLS_REL, CLS_OPEN, CLS_CLOSE,
        CLS_PUNCT, CLS_INNER, CLS_SPACE };
 
+/* ---- label-math.c ------------------------------------------------------- */
+
+/* The class and form of a character typed in math (*cp may become the
+** minus sign, the asterisk operator or the prime); *italic for letters. */
+int cf__label_math_char(unsigned *cp, bool *italic, const font_t *f);
+/* Space in em (18 mu) between atoms of classes a and b at script level
+** level (0 text style): TeX's table of rule 20. */
+double cf__label_atom_space(int a, int b, int level);
+
+/* Whether s[pos] = '{' opens a group of exactly one character ({P},
+** { P }): an accent's argument of one character rather than a group. */
+bool cf__label_single_char_group(const char *s, size_t len, size_t pos);
+
 /* ---- label-runs.c ------------------------------------------------------- */
 
 /* Append UTF-8 bytes at (x, y) in font f; merges with the previous run

@@ -313,6 +313,58 @@ place_accent(parser_t *p, const font_t *f, double x, double y, piece_t *pc,
     pc->end = p->lab->count;
 }
 
+/* The accent acc_cp as its own run at (x, y) in font f (the arrow of
+** \vec: the math font's at half size), upright; false when out of
+** memory. */
+static bool
+put_accent(parser_t *p, const font_t *f, double x, double y, unsigned acc_cp)
+{
+    font_t g = *f;
+    char buf[8];
+    size_t n = cf__utf8_encode(acc_cp, buf);
+    g.italic = false;
+    if (acc_cp == 0x2192) {
+        /* the math font's arrow at half size: TeX's \vec, 0.5 em wide */
+        g.size = f->size * SCRIPT2_RATIO;
+        g.math = true;
+    }
+    p->lab->merge_ok = false;
+    if (isnan(cf__label_put_text(p->lab, &g, x, y, buf, n))) {
+        pnomem(p);
+        return false;
+    }
+    return true;
+}
+
+/* \hat{PQ} (a group of more than one character): the group, then the
+** accent centred over the group's width, its ink bottom a small gap above
+** the group's top or the x-height (TeX puts a non-wide accent so over
+** a group, without skew). */
+static bool
+parse_group_accent(parser_t *p, const font_t *f, double x, double y,
+                   piece_t *pc, unsigned acc_cp)
+{
+    size_t first;
+    run_t *acc;
+    p->lab->merge_ok = false;
+    if (!parse_atom(p, f, x, y, pc))
+        return false;
+    first = pc->first;
+    piece_ink(p->lab, pc, y);
+    if (!put_accent(p, f, x, y, acc_cp))
+        return false;
+    acc = &p->lab->runs[p->lab->count - 1];
+    acc->x = 0.5 * (pc->x0 + pc->x1) - 0.5 * (acc->ink[0] + acc->ink[2]);
+    acc->y = y + fmax(pc->top, 0.431 * f->size) + 0.06 * f->size
+           + acc->ink[3];
+    pc->first = first;
+    pc->end = p->lab->count;
+    pc->cls = CLS_ORD;
+    pc->group = true;
+    piece_ink(p->lab, pc, y);
+    return true;
+}
+
 /* \hat{P} or \hat P (accent code point acc): the character, then the
 ** accent as its own run centred over the character's ink, raised by the
 ** character's height above the x-height (TeX's rule, with the italic skew
@@ -323,29 +375,36 @@ parse_accent(parser_t *p, const font_t *f, double x, double y, piece_t *pc,
 {
     bool braced, math = !f->text;
     unsigned base;
-    size_t m, n;
-    char buf[8];
+    size_t m;
     font_t g = *f;
     double top, skew, base_end;
 
     while (p->pos < p->len && p->s[p->pos] == ' ')
         p->pos++;
     braced = p->pos < p->len && p->s[p->pos] == '{';
+    if (braced && !cf__label_single_char_group(p->s, p->len, p->pos)) {
+        size_t q = p->pos + 1;
+        while (q < p->len && p->s[q] == ' ')
+            q++;
+        if (q < p->len && p->s[q] != '}')
+            return parse_group_accent(p, f, x, y, pc, acc_cp);
+        perr(p, at, "an accent needs a character or a {group}");
+        return false;
+    }
     if (braced)
-        p->pos++;
+        while (++p->pos < p->len && p->s[p->pos] == ' ')
+            ;
     if (p->pos >= p->len
         || (m = cf__utf8_decode(p->s, p->len, p->pos, &base)) == 0
         || base == '{' || base == '}' || base == '\\') {
-        perr(p, at, "an accent needs one character");
+        perr(p, at, "an accent needs a character or a {group}");
         return false;
     }
     p->pos += m;
     if (braced) {
-        if (p->pos >= p->len || p->s[p->pos] != '}') {
-            perr(p, at, "an accent takes one character");
-            return false;
-        }
-        p->pos++;
+        while (p->pos < p->len && p->s[p->pos] == ' ')
+            p->pos++;
+        p->pos++;   /* the '}' (cf__label_single_char_group) */
     }
     g.italic = math
         && ((base >= 'a' && base <= 'z') || (base >= 'A' && base <= 'Z')
@@ -357,18 +416,8 @@ parse_accent(parser_t *p, const font_t *f, double x, double y, piece_t *pc,
     base_end = p->lab->runs[pc->first].x + p->lab->runs[pc->first].width;
     top = pc->top;
     skew = g.italic ? 0.12 * f->size * fmax(0, top) / f->size : 0;
-    g.italic = false;
-    p->lab->merge_ok = false;
-    n = cf__utf8_encode(acc_cp, buf);
-    if (acc_cp == 0x2192) {
-        /* the math font's arrow at half size: TeX's \vec, 0.5 em wide */
-        g.size = f->size * SCRIPT2_RATIO;
-        g.math = true;
-    }
-    if (isnan(cf__label_put_text(p->lab, &g, x, y, buf, n))) {
-        pnomem(p);
+    if (!put_accent(p, f, x, y, acc_cp))
         return false;
-    }
     place_accent(p, f, x, y, pc, base_end, top, skew);
     return true;
 }
@@ -498,52 +547,6 @@ parse_group(parser_t *p, const font_t *f, double x, double y, piece_t *pc,
     return true;
 }
 
-/* The class and form of a character typed in math: letters italic, '-'
-** the minus sign, operators, relations, delimiters, punctuation. */
-static int
-math_char(unsigned *cp, bool *italic, const font_t *f)
-{
-    *italic = false;
-    if ((*cp >= 'a' && *cp <= 'z') || (*cp >= 'A' && *cp <= 'Z')
-        || (*cp >= 0x3b1 && *cp <= 0x3c9)) {   /* lowercase Greek */
-        *italic = !f->bold || f->boldsymbol;
-        return CLS_ORD;
-    }
-    switch (*cp) {
-    case '-':
-        *cp = 0x2212;
-        return CLS_BIN;
-    case '*':
-        *cp = 0x2217;
-        return CLS_BIN;
-    case '+':
-        return CLS_BIN;
-    case '=':
-    case '<':
-    case '>':
-        return CLS_REL;
-    case '(':
-    case '[':
-        return CLS_OPEN;
-    case ')':
-    case ']':
-        return CLS_CLOSE;
-    case ':':
-        return CLS_REL;
-    case '!':
-    case '?':
-        return CLS_CLOSE;
-    case ',':
-    case ';':
-        return CLS_PUNCT;
-    case '\'':
-        *cp = 0x2032;
-        return CLS_ORD;
-    default:
-        return CLS_ORD;
-    }
-}
-
 /* One atom at (x, y): a character, a command or a {group}. */
 static bool
 parse_atom(parser_t *p, const font_t *f, double x, double y, piece_t *pc)
@@ -566,39 +569,8 @@ parse_atom(parser_t *p, const font_t *f, double x, double y, piece_t *pc)
     p->pos = at + n;
     if (f->text)
         return emit_char(p, f, cp, f->italic, CLS_ORD, x, y, pc);
-    cls = math_char(&cp, &italic, f);
+    cls = cf__label_math_char(&cp, &italic, f);
     return emit_char(p, f, cp, italic, cls, x, y, pc);
-}
-
-/* TeX's spaces between atoms (The TeXbook, chapter 18, the table of
-** rule 20): 1 thin (3 mu), 2 medium (4 mu), 3 thick (5 mu); negative:
-** only in text style, not in scripts.  Rows: the left atom's class;
-** columns: the right one's, in the order ORD OP BIN REL OPEN CLOSE PUNCT
-** INNER. */
-static const signed char space_table[8][8] = {
-    /* ORD   */ { 0, 1, -2, -3, 0, 0, 0, -1 },
-    /* OP    */ { 1, 1, 0, -3, 0, 0, 0, -1 },
-    /* BIN   */ { -2, -2, 0, 0, -2, 0, 0, -2 },
-    /* REL   */ { -3, -3, 0, 0, -3, 0, 0, -3 },
-    /* OPEN  */ { 0, 0, 0, 0, 0, 0, 0, 0 },
-    /* CLOSE */ { 0, 1, -2, -3, 0, 0, 0, -1 },
-    /* PUNCT */ { -1, -1, 0, -1, -1, -1, -1, -1 },
-    /* INNER */ { -1, 1, -2, -3, -1, 0, -1, -1 },
-};
-
-/* Space in em (18 mu) between atoms of classes a and b at script level
-** level (0 text style). */
-static double
-atom_space(int a, int b, int level)
-{
-    static const double mu[4] = { 0, 3, 4, 5 };
-    int v;
-    if (a < CLS_ORD || a > CLS_INNER || b < CLS_ORD || b > CLS_INNER)
-        return 0;
-    v = space_table[a - CLS_ORD][b - CLS_ORD];
-    if (v < 0 && level > 0)
-        return 0;
-    return mu[v < 0 ? -v : v] / 18;
 }
 
 /* Attach scripts after the nucleus nuc (base size f->size). */
@@ -750,7 +722,9 @@ parse_list(parser_t *p, const font_t *f, double x, double y, int stop,
                 prev_space = 0;
                 prev = CLS_ORD;
             }
-            sp = f->text ? 0 : atom_space(prev, pc.cls, f->level) * f->size;
+            sp = f->text ? 0
+                         : cf__label_atom_space(prev, pc.cls, f->level)
+                               * f->size;
             if (pc.cls == CLS_SPACE)
                 sp = 0;
             if (sp != 0) {

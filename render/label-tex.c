@@ -264,18 +264,28 @@ atom(tex_t *t, bool math)
     }
 }
 
-/* The argument of an accent: one character, maybe braced. */
+/* The argument of an accent: one character, maybe braced, or a {group}. */
 static void
 accent_arg(tex_t *t)
 {
     bool braced;
     skip_spaces(t);
     braced = t->pos < t->len && t->s[t->pos] == '{';
+    if (braced && !cf__label_single_char_group(t->s, t->len, t->pos)) {
+        enclosed(t, true, "{", "}", '}');
+        return;
+    }
     put(t, "{");
-    t->pos += braced ? 1 : 0;
-    character(t, true);
-    if (braced && t->pos < t->len)
+    if (braced) {
         t->pos++;
+        skip_spaces(t);
+    }
+    character(t, true);
+    if (braced) {
+        skip_spaces(t);
+        if (t->pos < t->len)
+            t->pos++;
+    }
     put(t, "}");
 }
 

@@ -42,7 +42,8 @@ extern "C" {
 **         \boldsymbol{...} bold italic letters; \mathcal{A} capitals;
 **         \overline{...} a rule over the group.
 **   \frac{num}{den} (script size, centred, rule on the math axis);
-**   \hat \bar \tilde \vec \dot \ddot over one character.
+**   \hat \bar \tilde \vec \dot \ddot over one character, or centred over
+**         a {group} of several (\vec{PQ}), as TeX sets them over a box.
 **   Any UTF-8 text (Czech, Russian, Slovene, Chinese): letters outside
 **   ASCII are set upright; the family list supplies Cyrillic and CJK.
 ** Errors (unbalanced braces, unknown command, dangling _ or ^, invalid

@@ -358,6 +358,23 @@ test_nested_scripts_and_greek(void **state)
         }
     }
 
+    /* over a group of several characters: centred over the group's
+    ** width (TeX's non-wide accent over a box), above its top */
+    {
+        const cf_label_box_t *p0, *q0, *acc;
+        double x0, x1;
+        lab = layout("\\vec{PQ}");
+        p0 = box_of(lab, "PQ");
+        acc = box_of(lab, "\xe2\x86\x92");   /* U+2192 the arrow */
+        q0 = p0;
+        x0 = p0->x;
+        x1 = q0->x + q0->width;
+        tu_assert_close(acc->x + 0.5 * acc->width, 0.5 * (x0 + x1),
+                        0.1 * SIZE, 0);
+        assert_true(acc->y > p0->y + 0.4 * SIZE);
+        cf_label_destroy(lab);
+    }
+
     lab = layout("\\omega_i\\Omega\\alpha");
     assert_true(box_of(lab, "\xf0\x9d\x9c\x94")->italic);  /* ω italic */
     assert_false(box_of(lab, "\xce\xa9")->italic);     /* Ω upright */
@@ -470,6 +487,7 @@ test_syntax_errors(void **state)
         { "P}", 1 },          { "\\foo", 0 },   { "x_1_2", 3 },
         { "a $b", 2 },        { "\xff", 0 },    { "_1", 0 },
         { "\\hat{}", 0 },     { "\\", 0 },      { "x^^", 1 },
+        { "\\hat{ }", 0 },
         { "\\frac{1}", 0 },   { "\\frac 12", 0 },
     };
     size_t k;
@@ -558,6 +576,7 @@ test_label_tex(void **state)
         { "α ≤ −x′", "$\\alpha  \\leq  -x'$" },
         { "x^2'", "$x^{2}{}'$" },
         { "\\frac{1}{2} \\hat P", "$\\frac{1}{2} \\hat{P}$" },
+        { "\\vec{PQ} + \\bar{ x }", "$\\vec{PQ} + \\bar{x}$" },
         { "\\omicron\\deg", "$o{}^{\\circ}$" },
         { "\\operatorname{deg} č", "$\\mathrm{deg} \\text{č}$" },
         { "a # b", "$a \\# b$" },

@@ -16,6 +16,7 @@
 #include "curvefig/bspline.h"
 #include "curvefig/figure.h"
 #include "testutil.h"
+#include "pngtest.h"
 
 /* cairo rounds path coordinates to 1/256 pt; a point on a cubic is a
 ** convex combination of its control points, so rounding moves it by at
@@ -843,23 +844,6 @@ test_window_fit(void **state)
     cf_figure_destroy(fig);
 }
 
-/* PNG bytes -> image surface. */
-typedef struct png_reader {
-    const unsigned char *data;
-    size_t size, off;
-} png_reader_t;
-
-static cairo_status_t
-png_read(void *closure, unsigned char *data, unsigned int length)
-{
-    png_reader_t *r = closure;
-    if (r->off + length > r->size)
-        return CAIRO_STATUS_READ_ERROR;
-    memcpy(data, r->data + r->off, length);
-    r->off += length;
-    return CAIRO_STATUS_SUCCESS;
-}
-
 /* Lengths of the runs of dark pixels (grey level < 128) down the
 ** middle column of the figure rendered at dpi; returns the run count. */
 static size_t
@@ -867,7 +851,7 @@ dark_runs_mid_column(cf_figure_t *fig, double dpi, int *runs, size_t cap)
 {
     cf_write_options_t o;
     unsigned char *data;
-    png_reader_t r;
+    size_t size;
     cairo_surface_t *img;
     const unsigned char *px;
     int w, h, stride, y, len = 0;
@@ -875,10 +859,8 @@ dark_runs_mid_column(cf_figure_t *fig, double dpi, int *runs, size_t cap)
     cf_write_options_init(&o);
     o.dpi = dpi;
     assert_int_equal(cf_figure_render(fig, CF_FORMAT_PNG, &o, &data,
-                                      &r.size, NULL), CF_STATUS_OK);
-    r.data = data;
-    r.off = 0;
-    img = cairo_image_surface_create_from_png_stream(png_read, &r);
+                                      &size, NULL), CF_STATUS_OK);
+    img = tu_png_decode(data, size);
     assert_int_equal(cairo_surface_status(img), CAIRO_STATUS_SUCCESS);
     w = cairo_image_surface_get_width(img);
     h = cairo_image_surface_get_height(img);

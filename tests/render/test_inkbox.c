@@ -18,6 +18,7 @@
 #include <cairo.h>
 
 #include "model.h"
+#include "pngtest.h"
 #include "script.h"
 #include "testutil.h"
 
@@ -25,31 +26,13 @@
 #define MARGIN 1.0      /* bp: the default margin of page = "ink" */
 #define SLACK 0.05      /* bp: the layout's fit (0.01) and rounding */
 
-typedef struct reader {
-    const unsigned char *data;
-    size_t size, pos;
-} reader_t;
-
-static cairo_status_t
-read_mem(void *closure, unsigned char *out, unsigned int n)
-{
-    reader_t *r = closure;
-    if (r->pos + n > r->size)
-        return CAIRO_STATUS_READ_ERROR;
-    memcpy(out, r->data + r->pos, n);
-    r->pos += n;
-    return CAIRO_STATUS_SUCCESS;
-}
-
 /* The box of the pixels with ink (alpha > 0: white halos of labels are
 ** ink too) of a transparent PNG in memory (x0 y0 x1 y1, pixels), and
 ** its size. */
 static void
 ink_pixels(const unsigned char *png, size_t size, int box[4], int *w, int *h)
 {
-    reader_t r = { png, size, 0 };
-    cairo_surface_t *img = cairo_image_surface_create_from_png_stream(
-        read_mem, &r);
+    cairo_surface_t *img = tu_png_decode(png, size);
     const unsigned char *px;
     int x, y, stride;
     assert_int_equal(cairo_surface_status(img), CAIRO_STATUS_SUCCESS);

@@ -19,6 +19,7 @@
 
 #include "curvefig/figure.h"
 #include "curvefig/output.h"
+#include "pngtest.h"
 #include "script.h"
 
 #define DPI 144.0
@@ -37,22 +38,6 @@ typedef struct image {
     int w, h, stride;
     const unsigned char *px;
 } image_t;
-
-typedef struct reader {
-    const unsigned char *data;
-    size_t size, pos;
-} reader_t;
-
-static cairo_status_t
-read_mem(void *closure, unsigned char *out, unsigned int n)
-{
-    reader_t *r = closure;
-    if (r->pos + n > r->size)
-        return CAIRO_STATUS_READ_ERROR;
-    memcpy(out, r->data + r->pos, n);
-    r->pos += n;
-    return CAIRO_STATUS_SUCCESS;
-}
 
 /* The figure of FIGURE with the line and/or the label (its extra style
 ** keys `extra`), rendered in format with the background mode and step. */
@@ -88,9 +73,8 @@ png(bool line, bool label, const char *extra, cf_background_t bg,
     size_t size = 0;
     unsigned char *data = render(line, label, extra, CF_FORMAT_PNG, bg, step,
                                  &size);
-    reader_t r = { data, size, 0 };
     image_t im;
-    im.s = cairo_image_surface_create_from_png_stream(read_mem, &r);
+    im.s = tu_png_decode(data, size);
     assert_int_equal(cairo_surface_status(im.s), CAIRO_STATUS_SUCCESS);
     cf_free(data);
     cairo_surface_flush(im.s);

@@ -17,6 +17,7 @@
 #include <cmocka.h>
 
 #include "curvefig/figure.h"
+#include "pngtest.h"
 
 /* ---- the dump, line by line --------------------------------------------- */
 
@@ -104,22 +105,6 @@ first_seg(const char *line)
 }
 
 /* ---- PNG pixels -------------------------------------------------------- */
-
-typedef struct png_src {
-    const unsigned char *p;
-    size_t n, at;
-} png_src_t;
-
-static cairo_status_t
-read_png(void *closure, unsigned char *data, unsigned int len)
-{
-    png_src_t *s = closure;
-    if (s->at + len > s->n)
-        return CAIRO_STATUS_READ_ERROR;
-    memcpy(data, s->p + s->at, len);
-    s->at += len;
-    return CAIRO_STATUS_SUCCESS;
-}
 
 /* Nothing drawn at pixel (x, y): transparent or opaque white. */
 static bool
@@ -371,17 +356,13 @@ test_legend_auto_avoids_ink(void **state)
     {
         cf_write_options_t o;
         cairo_surface_t *img;
-        png_src_t src;
         double k;
         int x, y, blank = 0;
         cf_write_options_init(&o);
         k = o.dpi / 72.0;
         assert_int_equal(cf_figure_render(fig, CF_FORMAT_PNG, &o, &png,
                                           &png_size, NULL), 0);
-        src.p = png;
-        src.n = png_size;
-        src.at = 0;
-        img = cairo_image_surface_create_from_png_stream(read_png, &src);
+        img = tu_png_decode(png, png_size);
         assert_int_equal(cairo_surface_status(img), CAIRO_STATUS_SUCCESS);
         for (y = (int)ceil(box[1] * k); y < (int)floor(box[3] * k); y++)
             for (x = (int)ceil(box[0] * k); x < (int)floor(box[2] * k); x++) {

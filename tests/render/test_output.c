@@ -21,6 +21,7 @@
 #include "curvefig/figure.h"
 #include "png-private.h"
 #include "testutil.h"
+#include "pngtest.h"
 
 /* A figure with every kind of element and labels in four scripts. */
 static cf_figure_t *
@@ -228,31 +229,12 @@ test_svg_parses_with_librsvg(void **state)
     cf_figure_destroy(fig);
 }
 
-/* Read a PNG blob into an image surface. */
-typedef struct reader {
-    const blob_t *b;
-    size_t off;
-} reader_t;
-
-static cairo_status_t
-read_blob(void *closure, unsigned char *data, unsigned int length)
-{
-    reader_t *r = closure;
-    if (r->off + length > r->b->size)
-        return CAIRO_STATUS_READ_ERROR;
-    memcpy(data, r->b->data + r->off, length);
-    r->off += length;
-    return CAIRO_STATUS_SUCCESS;
-}
-
 /* Pixel box of everything not fully transparent: x0 y0 x1 y1 (pixels,
 ** x1/y1 exclusive). */
 static void
 pixel_box(const blob_t *png, int box[4], int *w, int *h)
 {
-    reader_t r = { png, 0 };
-    cairo_surface_t *img = cairo_image_surface_create_from_png_stream(
-        read_blob, &r);
+    cairo_surface_t *img = tu_png_decode(png->data, png->size);
     const unsigned char *px;
     int x, y, stride;
     assert_int_equal(cairo_surface_status(img), CAIRO_STATUS_SUCCESS);
@@ -675,22 +657,6 @@ test_write_errors(void **state)
 
 /* ---- the PNG writer (render/png.c) ------------------------------------ */
 
-typedef struct membuf {
-    const unsigned char *data;
-    size_t size, pos;
-} membuf_t;
-
-static cairo_status_t
-mem_read(void *closure, unsigned char *data, unsigned int length)
-{
-    membuf_t *m = closure;
-    if (m->size - m->pos < length)
-        return CAIRO_STATUS_READ_ERROR;
-    memcpy(data, m->data + m->pos, length);
-    m->pos += length;
-    return CAIRO_STATUS_SUCCESS;
-}
-
 static cairo_status_t
 mem_write(void *closure, const unsigned char *data, unsigned int length)
 {
@@ -703,9 +669,7 @@ mem_write(void *closure, const unsigned char *data, unsigned int length)
 static cairo_surface_t *
 png_decode(const cf__buf_t *b)
 {
-    membuf_t m = { b->data, b->size, 0 };
-    cairo_surface_t *s = cairo_image_surface_create_from_png_stream(mem_read,
-                                                                    &m);
+    cairo_surface_t *s = tu_png_decode(b->data, b->size);
     assert_int_equal(cairo_surface_status(s), CAIRO_STATUS_SUCCESS);
     return s;
 }

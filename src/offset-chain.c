@@ -221,6 +221,12 @@ join_arc(cf__driver_t *dr, const double *centre, const double *from,
     return st;
 }
 
+/* |sin| of the angle between the unit tangents 1e-6 before and after a
+** reversal below which the curve runs straight back: a curve that turns
+** through its cusp turns them by about 1e-6 of its curvature scale, far
+** above the rounding of straight data (1e-16). */
+#define STRAIGHT_BACK 1e-12
+
 /* Signed turning angle from direction u to direction v. */
 static double
 turn(const double *u, const double *v)
@@ -229,7 +235,12 @@ turn(const double *u, const double *v)
 }
 
 /* The join at a zero of c' inside the piece: the tangent reverses (turn of
-** +-pi); its sense from the tangents just before and after. */
+** +-pi); its sense from the tangents just before and after, with the
+** curve.  Where the curve runs straight back over itself (the tangents
+** before and after are parallel: no sense to turn with), the arc goes
+** round the tip, through c(t) + |d| times the incoming tangent, on either
+** side: both sides are then outside, and the swept disk's boundary caps
+** the tip. */
 static cf_status_t
 base_cusp_join(cf__driver_t *dr, const cf__osrc_t *s, double t)
 {
@@ -244,7 +255,10 @@ base_cusp_join(cf__driver_t *dr, const cf__osrc_t *s, double t)
         cf__bezier_unit_tangent(c, fmax(0.0, t - h), -1, s->scale, NULL, a);
         cf__bezier_unit_tangent(c, fmin(1.0, t + h), 1, s->scale, NULL, b);
         cr = a[0] * b[1] - a[1] * b[0];
-        phi = cr < 0 ? -CF__PI : CF__PI;
+        if (fabs(cr) < STRAIGHT_BACK)
+            phi = s->d > 0 ? -CF__PI : CF__PI;
+        else
+            phi = cr < 0 ? -CF__PI : CF__PI;
     }
     from[0] = p[0] - s->d * ul[1];
     from[1] = p[1] + s->d * ul[0];

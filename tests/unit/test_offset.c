@@ -828,6 +828,57 @@ test_tricky_cubics(void **state)
     }
 }
 
+/* A curve that runs straight back over itself (tricky[11]: x = 0, y from
+** 0 down to its turn at t = sqrt(2) - 1 and up to 10): on either side the
+** raw offset's join goes round the tip, reaching |d| beyond it, and so
+** does the trimmed offset (the swept disk's boundary caps the tip). */
+static void
+test_straight_reversal_caps_tip(void **state)
+{
+    const double ds[4] = { 1, -1, 10, -10 };
+    double t = sqrt(2.0) - 1.0, tip = -30 * t * (1 - t) + 10 * t * t * t;
+    cf_bezier_t *c = cubic(tricky[11]);
+    (void)state;
+    for (int k = 0; k < 4; k++) {
+        cf_offset_options_t opt;
+        cf_cubics_t *raw = NULL;
+        cf_cubics_list_t *tr = NULL;
+        double lo = INFINITY, lo_trim = INFINITY, tol = 1e-3;
+        cf_offset_options_init(&opt);
+        opt.tolerance = tol;
+        opt.trim = true;
+        assert_int_equal(cf_bezier_offset(c, ds[k], &opt, &raw, &tr, NULL,
+                                          NULL), CF_STATUS_OK);
+        /* the lowest point of each chain: endpoints and the cubics'
+        ** samples (the arc's lowest point lies inside a piece) */
+        for (size_t i = 0; i < raw->count; i++)
+            for (int j = 0; j <= 64; j++) {
+                double u = j / 64.0, v = 1 - u, *q = raw->pts + 8 * i;
+                double y = v * v * v * q[1] + 3 * v * v * u * q[3]
+                         + 3 * v * u * u * q[5] + u * u * u * q[7];
+                lo = fmin(lo, y);
+            }
+        for (size_t m = 0; m < tr->count; m++)
+            for (size_t i = 0; i < tr->chains[m]->count; i++)
+                for (int j = 0; j <= 64; j++) {
+                    double u = j / 64.0, v = 1 - u;
+                    double *q = tr->chains[m]->pts + 8 * i;
+                    double y = v * v * v * q[1] + 3 * v * v * u * q[3]
+                             + 3 * v * u * u * q[5] + u * u * u * q[7];
+                    lo_trim = fmin(lo_trim, y);
+                }
+        /* the cap's lowest point, to the tolerance plus the sampling of
+        ** a quarter arc of radius |d| by 64 steps (1 - cos(pi/128)) */
+        assert_true(fabs(lo - (tip - fabs(ds[k])))
+                    <= tol + fabs(ds[k]) * 3.1e-4);
+        assert_true(fabs(lo_trim - (tip - fabs(ds[k])))
+                    <= tol + fabs(ds[k]) * 3.1e-4);
+        cf_cubics_destroy(raw);
+        cf_cubics_list_destroy(tr);
+    }
+    cf_bezier_destroy(c);
+}
+
 /* Skia's "overstroke" cubic: at d = +-250 the offset has one cusp. */
 static const double overstroke[8] = { 0, 0, 25, 75, 75, -50, 100, 0 };
 
@@ -1361,6 +1412,7 @@ main(void)
         cmocka_unit_test(test_tiller_hanson_baseline),
         cmocka_unit_test(test_degenerate_input),
         cmocka_unit_test(test_tricky_cubics),
+        cmocka_unit_test(test_straight_reversal_caps_tip),
         cmocka_unit_test(test_overstroke_counts_and_errors),
         cmocka_unit_test(test_cusp_side_pieces),
         cmocka_unit_test(test_pieces_and_joins),

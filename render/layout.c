@@ -190,6 +190,7 @@ cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
     memset(&b, 0, sizeof b);
     lay->px = lay->py = 0;
     cf__room_reset(fig);
+    cf__place_forget(fig);
     for (i = 0; i < fig->count; i++)
         fig->els[i]->kind->bounds(fig->els[i], &b);
     lay->clip = fig->window_set;

@@ -184,6 +184,10 @@ struct cf_figure {
     size_t count, cap;
     char *warnings;          /* of the last layout, a line each; NULL: none */
     size_t warnings_len;
+    /* the layout (less its page position) the labels were last placed for
+    ** within one cf__figure_layout and its builds (render/place.c) */
+    bool placed;
+    cf__layout_t placed_for;
     /* legend (render/legend.c) */
     cf__legend_entry_t *legend;
     size_t nlegend;
@@ -335,5 +339,7 @@ cf_status_t cf__room_find(cf_figure_t *fig, const cf__layout_t *lay,
 /* Choose the places of the labels placed CF_PLACE_AUTO for a layout, and
 ** note in the figure's warnings every label that lies on ink. */
 cf_status_t cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay);
+/* Forget the places chosen: the figure is laid out afresh. */
+void cf__place_forget(cf_figure_t *fig);
 
 #endif

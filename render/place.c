@@ -379,9 +379,32 @@ raster_close(raster_t *r)
     cairo_surface_destroy(r->one);
 }
 
-cf_status_t
-cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay)
+/* Whether layouts a and b map the data alike, page position aside. */
+static bool
+same_map(const cf__layout_t *a, const cf__layout_t *b)
 {
+    return a->xmin == b->xmin && a->xmax == b->xmax && a->ymin == b->ymin
+        && a->ymax == b->ymax && a->sx == b->sx && a->sy == b->sy
+        && a->ox == b->ox && a->oy == b->oy && a->tol == b->tol
+        && a->clip == b->clip;
+}
+
+void
+cf__place_forget(cf_figure_t *fig)
+{
+    fig->placed = false;
+}
+
+/* The places of layout lay, chosen on the page at its own position (the
+** layout moved by its page position to the origin): a page cropped to
+** its ink moves the layout without moving a label against its point, so
+** the places chosen once serve every build of the layout that only
+** moves it (the figure unchanged since cf__figure_layout). */
+cf_status_t
+cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
+{
+    cf__layout_t moved = *at;
+    const cf__layout_t *lay = &moved;
     raster_t r;
     anchors_t an;
     cf_style_t s;
@@ -392,6 +415,12 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay)
     bool any = false;
     cf_status_t st;
 
+    moved.ox -= at->px;
+    moved.oy -= at->py;
+    moved.px = moved.py = 0;
+    if (fig->placed && same_map(&fig->placed_for, lay))
+        return CF_STATUS_OK;   /* the places and warnings of that layout */
+    fig->placed = false;
     cf_free(fig->warnings);
     fig->warnings = NULL;
     fig->warnings_len = 0;
@@ -440,6 +469,10 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay)
     }
     cf_free(an.xy);
     raster_close(&r);
+    if (st == CF_STATUS_OK) {
+        fig->placed = true;
+        fig->placed_for = moved;
+    }
     return st;
 }
 

@@ -708,6 +708,53 @@ test_legend_bad_input(void **state)
     cf_figure_destroy(fig);
 }
 
+/* The anchor and baseline origin of the first text line of a dump. */
+static void
+text_origin(const lines_t *l, double *ay, double *oy)
+{
+    const char *t = strstr(l->line[find(l, 0, "text \"W\"")], " anchor ");
+    double ax, ox, off, size;
+    int place;
+    assert_non_null(t);
+    assert_int_equal(sscanf(t, " anchor %lf %lf place %d offset %lf size %lf "
+                            "origin %lf %lf", &ax, ay, &place, &off, &size,
+                            &ox, oy), 7);
+}
+
+/* Label places are chosen once for a layout and its builds, never kept
+** across a change: a label placed above its line goes below it once a
+** second line is drawn where it was. */
+static void
+test_places_follow_changes(void **state)
+{
+    static const double line[] = { 0, 0, 4, 0 }, over[] = { 1.5, 0.25,
+                                                            2.5, 0.25 };
+    cf_figure_t *fig = NULL;
+    cf_style_t wide;
+    lines_t l;
+    double ay, oy;
+    (void)state;
+    assert_int_equal(cf_figure_create(40, 30, CF_UNIT_MM, &fig, NULL), 0);
+    /* a fixed page and window: the map stays the same after the change */
+    assert_int_equal(cf_figure_set_page_mode(fig, CF_PAGE_FIXED), 0);
+    assert_int_equal(cf_figure_set_window(fig, 0, 4, -1, 1), 0);
+    assert_int_equal(cf_figure_add_polyline(fig, line, 2, false, NULL), 0);
+    assert_int_equal(cf_figure_add_label(fig, 2, 0, "W", NULL), 0);
+    dump_lines(fig, &l);
+    text_origin(&l, &ay, &oy);
+    assert_true(oy < ay);   /* above the line (page y grows downwards) */
+    lines_free(&l);
+    cf_style_init(&wide);
+    wide.set = CF_STYLE_WIDTH;
+    wide.width = 8;
+    assert_int_equal(cf_figure_add_polyline(fig, over, 2, false, &wide), 0);
+    dump_lines(fig, &l);
+    text_origin(&l, &ay, &oy);
+    assert_true(oy > ay);   /* below it now */
+    lines_free(&l);
+    cf_figure_destroy(fig);
+}
+
 int
 main(void)
 {
@@ -721,6 +768,7 @@ main(void)
         cmocka_unit_test(test_inset_is_affine_image),
         cmocka_unit_test(test_inset_auto_finds_room),
         cmocka_unit_test(test_inset_bad_input),
+        cmocka_unit_test(test_places_follow_changes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -55,7 +55,7 @@ local place = {
   [0] = { "s", "nw", "ne", "auto" },
   [1] = { "w", "n", "sw" },
   [2] = { "auto", "ne" },
-  [3] = { "auto" },
+  [3] = { "se" },
 }
 for r = 0, n do
   for i = 0, n - r do
@@ -66,7 +66,8 @@ for r = 0, n do
     -- b_2^1 sits in the narrow gap between the leg b_2 b_3 and the
     -- dotted line below b_2: south-west of its point, a little farther
     f:label(L[r + 1][i + 1], text, { place = place[r][i + 1],
-                                     offset = (r == n or (r == 1 and i == 2))
-                                              and 6 or nil })
+                                     offset = (r == n and 2.5)
+                                              or ((r == 1 and i == 2) and 6)
+                                              or nil })
   end
 end

@@ -15,7 +15,8 @@
 --   (d) ω_1 = 8, ω_6 = 8, the others 1.
 -- The weight settings (b)-(d) are chosen (the example leaves them to the
 -- sliders); each shows the rational curve pulled towards the points of
--- larger weight (ringed) while it keeps its end points p_0, p_7.
+-- larger weight (ringed) while it keeps its end points p_0, p_7.  A
+-- legend (in Russian, as the lecture) names the two curves.
 
 local P = { {-10, 0}, {-3, 7}, {1.1, -7.2}, {4.3, -8.5}, {-16, 12},
             {-2.1, 1.7}, {-8.2, 1.4}, {12.2, 5.4} }
@@ -57,8 +58,11 @@ for k, s in ipairs(settings) do
     end
   end
   f:polygon(plain)
-  f:curve(rat, { color = red, width = 2 })
-  f:curve(plain, { color = blue, dash = "dashed", width = 1.4 })
+  -- one legend for the four panels (the entries of the first)
+  f:curve(rat, { color = red, width = 2,
+                 legend = k == 1 and "\\text{рациональная кривая Безье}" or nil })
+  f:curve(plain, { color = blue, dash = "dashed", width = 1.4,
+                   legend = k == 1 and "\\text{обычная кривая Безье}" or nil })
   -- the control points again, over the curves (p_6 lies under them)
   f:points(Q, { color = "#3c3c3c", marker_color = "#3c3c3c" })
   for i, q in ipairs(Q) do

@@ -45,15 +45,22 @@ local text = {
 local place = {
   [0] = { "e", "nw", "ne", "w" },
   [1] = { "w", "n", "e" },
-  [2] = { "nw", "ne" },
-  [3] = { "s" },
+  [2] = { "nw" },
 }
-for k = 0, n do
-  for i = 0, n - k do
-    f:label(L[k + 1][i + 1], text[k][i + 1],
-            { place = place[k][i + 1],
-              offset = k == n and 24 or (k == 2 and i == 1) and 36 or nil })
+for k = 0, n - 1 do
+  for i = 0, n - k - (k == 2 and 1 or 0) do
+    f:label(L[k + 1][i + 1], text[k][i + 1], { place = place[k][i + 1] })
   end
 end
+-- p_1^{(2)} and r(t*): their long names do not fit at their crowded points
+-- (legs, arcs and bands all round); each stands in the nearest free room
+-- with a leader (pin) to its point
+local function pinned(p, d, from, name)
+  f:arrow_to({ p[1] + from[1], p[2] + from[2] }, p,
+             { color = "grey", width = 0.5, arrow_size = 4 })
+  f:label({ p[1] + d[1], p[2] + d[2] }, name, { place = "center" })
+end
+pinned(L[3][2], { 0.78, 0.5 }, { 0.5, 0.3 }, text[2][2])
+pinned(L[4][1], { 0, -0.55 }, { 0, -0.4 }, text[3][1])
 f:label(ra:eval(0.35), "r^a", { place = "se", color = ca })
 f:label(rb:eval(0.6), "r^b", { place = "sw", color = cb })

@@ -4,7 +4,7 @@
 -- кривой не смещаются при изменении весов").
 -- A family of rational cubic Bézier curves on the same points p_0 ... p_3
 -- in which only ω_2 changes: ω_2 = 0.2, 0.5, 1, 2, 5, 20 (the others 1),
--- each curve labelled; ω_2 = 1 is the ordinary Bézier curve (dark).
+-- each curve named in the legend; ω_2 = 1 is the ordinary Bézier curve (dark).
 -- The points r(1/2) of all the curves lie on one line through p_2
 -- (dotted): raising ω_2 moves them towards p_2, lowering it away; the end
 -- points p_0, p_3 stay.
@@ -27,29 +27,12 @@ local mids = {}
 for k, w in ipairs(ws) do
   local r = bezier{ points = P, weights = { 1, 1, w, 1 } }
   mids[k] = r:eval(0.5)
-  f:curve(r, { color = colours[k], width = w == 1 and 2 or 1.3 })
+  f:curve(r, { color = colours[k], width = w == 1 and 2 or 1.3,
+               legend = string.format("ω_2 = %g", w) })
 end
 -- the line through p_2 that carries all the points r(1/2)
 f:line(P[3], mids[1], { color = "grey", dash = "dotted", width = 0.8 })
 f:points(mids, { marker = "dot", marker_size = 4, color = "black", marker_color = "black" })
--- the labels: a column right of the curves, each with a thin leader to
--- the point where its curve crosses the vertical x = 5.3
-local function crossing(r, x)
-  local lo, hi = 0.5, 1      -- x(t) increases on the right half here
-  for _ = 1, 60 do
-    local mid = (lo + hi) / 2
-    if r:eval(mid)[1] < x then lo = mid else hi = mid end
-  end
-  return r:eval((lo + hi) / 2)
-end
-for k, w in ipairs(ws) do
-  local r = bezier{ points = P, weights = { 1, 1, w, 1 } }
-  local q = crossing(r, 5.3)
-  local at = { 7.1, 0.9 + 0.5 * (k - 1) }
-  f:line(q, { at[1] - 0.1, at[2] }, { color = colours[k], width = 0.4 })
-  f:label(at, string.format("ω_2 = %g", w), { place = "e", color = colours[k],
-                                              font_size = 9, offset = 0 })
-end
 local pp = { "sw", "nw", "ne", "se" }
 for i = 1, 4 do
   f:label(P[i], string.format("p_%d", i - 1), { place = pp[i] })

@@ -8,8 +8,9 @@
 -- their neighbours u_3 = 0.17 and u_7 = 0.83.  The shape changes in a way
 -- that is hard to foresee ("změna pozice uzlu není ani předvídatelná, ani
 -- vyhovující"): the curve is pulled towards P_2 and P_5.  The knot points
--- of both curves are marked in their colours; a small legend names the
--- two knot vectors.  Same window and size as markova-2.1 ... 2.15.
+-- of both curves are marked in their colours; the legend (placed where
+-- nothing is drawn, or beside the drawing) names the two knot vectors.
+-- Same window and size as markova-2.1 ... 2.15.
 
 local P = { {3,1}, {3.75,2}, {5,3}, {4,4}, {3,3}, {2,4}, {1,3}, {2.25,2} }
 local U = { 0, 0, 0, 0.17, 0.33, 0.5, 0.67, 0.83, 1, 1, 1 }
@@ -28,23 +29,15 @@ local f = figure{
     .. "u_4 = 0.2, u_6 = 0.8 (dashed) (Obrázek 2.16)",
   width = "6.5cm", height = "5.4cm", window = { 0.45, 5.55, 0.55, 4.45 },
 }
+local dark = "#14306e"
 f:polygon(P)
-f:curve(s)
-f:curve(t, { color = orange, dash = "dashed" })
-f:knots(s)
+f:curve(s, { legend = "u_4 = 0.33, u_6 = 0.67" })
+f:curve(t, { color = orange, dash = "dashed",
+             legend = "u_4 = 0.2, u_6 = 0.8" })
+f:knots(s, { color = dark, marker_color = dark })
 f:knots(t, { color = orange, marker_color = orange })
 f:points(P, { color = "#3c3c3c", marker_color = "#3c3c3c" })
 local place = { "s", "se", "e", "n", "s", "n", "w", "sw" }
 for i, q in ipairs(P) do
   f:label(q, string.format("P_%d", i - 1), { place = place[i] })
-end
--- legend, bottom right (the only free corner of the common window)
-local legend = {
-  { 1.1, "0.33, 0.67", { color = "#14306e", width = 1.5 } },
-  { 0.8, "0.2, 0.8", { color = orange, width = 1.5, dash = "dashed" } },
-}
-f:label({ 3.65, 1.4 }, "$u_4$, $u_6$:", { place = "e", font_size = 8, offset = 0 })
-for _, e in ipairs(legend) do
-  f:line({ 3.7, e[1] }, { 4.05, e[1] }, e[3])
-  f:label({ 4.05, e[1] }, e[2], { place = "e", font_size = 8, offset = 3 })
 end

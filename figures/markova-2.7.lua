@@ -22,7 +22,7 @@ local cases = {
   { name = "markova-2.7", p = 2, u = 0.6, first = 3, span = 5,
     s = bspline{ degree = 2, points = P,
                  knots = { 0, 0, 0, 0.17, 0.33, 0.5, 0.67, 0.83, 1, 1, 1 } },
-    cplace = "n", coff = 10 },
+    cplace = "n", coff = 7 },
   { name = "markova-2.8", p = 3, u = 0.3, first = 1, span = 4,
     s = bspline{ degree = 3, points = P, kind = "clamped" },
     cplace = "sw" },

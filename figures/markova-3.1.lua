@@ -17,7 +17,7 @@
 --                a hollow marker, the new points Q_4, Q_5 in blue and the
 --                knot points of the new knot vector, the new knot point
 --                C(0.6) as a green dot labelled t = 0.6.
--- Both figures share one window and size so they compare side by side.
+-- Both figures share one window and size.
 -- The thesis gives no further data; the colours are this project's.
 
 local P = { {3,1}, {3.75,2}, {5,3}, {4,4}, {3,3}, {2,4}, {1,3}, {2.25,2} }
@@ -75,7 +75,8 @@ local g = figure{
   name = "markova-3.2",
   caption = "Knot insertion t = 0.6: the corner at P_4 of the old " ..
             "polygon (dashed) is cut off and replaced by the new points " ..
-            "Q_4, Q_5; the curve is unchanged (Obr. 3.2: Nový uzel t = 0.6)",
+            "Q_4, Q_5 (blue, over the thinner curve); the curve is " ..
+            "unchanged (Obr. 3.2: Nový uzel t = 0.6)",
   width = W, height = H, window = window,
 }
 -- the old polygon's cut corner P_3 P_4 P_5, dashed, P_4 hollow
@@ -88,7 +89,11 @@ g:polygon(n, { })
 for i = 0, 7 do
   if i ~= 4 then g:label(P[i + 1], Plabels(i), { place = place[i + 1] }) end
 end
-g:curve(n)
+-- the curve thinner than in 3.1, and the replacing polyline
+-- P_3 Q_4 Q_5 P_5 in blue over it: the new leg Q_4 Q_5 touches the curve
+-- at C(0.6) and would lie under a thick stroke
+g:curve(n, { width = 1.1 })
+g:polyline({ P[4], Q[5], Q[6], P[6] }, { color = "blue", width = 1.2 })
 g:knots(n)
 -- the new points Q_4, Q_5 (new control points 4 and 5 of n)
 g:points({ n:eval(t) }, { marker = "dot", color = "darkgreen",

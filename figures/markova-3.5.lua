@@ -31,9 +31,10 @@
 --   markova-3.7: the new curve after inserting u = 0.5 three times: the
 --                same curve with the polygon P_0 P_1 P_2 P_{3,1} P_{4,2}
 --                P_{5,3} P_{5,2} P_{5,1} P_5 P_6 P_7, which passes
---                through C(u) = P_{5,3}; the cut corners of the old
---                polygon (P_3, P_4) dashed, the new points blue, C(u) a
---                red star.
+--                through C(u) = P_{5,3}: the new points blue, C(u) a
+--                red star, the new legs blue over a thinner curve, and
+--                P_{4,2} C(u) P_{5,2} (where the legs touch the curve)
+--                magnified in a zoom inset.
 -- markova-3.5 and 3.7 share one window and size; 3.6 is the close-up.
 
 local P = { {3,1}, {3.75,2}, {5,3}, {4,4}, {3,3}, {2,4}, {1,3}, {2.25,2} }
@@ -78,11 +79,12 @@ f:curve(s)
 f:curve(s, { range = { U[6], U[7] }, color = "darkgreen", width = 2.2 })
 f:knots(s)
 -- the ends of the span, named as in the text
-f:label(s:eval(U[6]), "C(u_5)", { color = "darkgreen", font_size = 8.5 })
+f:label(s:eval(U[6]), "C(u_5)", { color = "darkgreen",
+                                  font_size = 8.5 })
 f:label(s:eval(U[7]), "C(u_6)", { color = "darkgreen", font_size = 8.5 })
 f:points({ L[4][1] }, { marker = "star", color = "red", marker_color = "red",
                         marker_size = 9 })
-f:label(L[4][1], "C(0.5)", { place = "se", color = "red", offset = 6 })
+f:label(L[4][1], "C(0.5)", { place = "s", color = "red", offset = 5.5 })
 
 -- markova-3.6 ----------------------------------------------------------------
 local g = figure{
@@ -159,22 +161,22 @@ local h = figure{
   name = "markova-3.7",
   caption = "The new curve: u = 0.5 inserted three times; the same " ..
             "curve, its new polygon passes through C(u) = P_{5,3} " ..
+            "; right, magnified, the new legs P_{4,2} C(u) P_{5,2} " ..
             "(Obr. 3.7: Nová křivka)" .. SAMPLE,
   width = W, height = H, window = window,
 }
-h:polyline({ P[3], P[4], P[5], P[6] }, { color = "grey", dash = "dashed",
-                                         width = 0.8 })
-h:points({ P[4], P[5] }, { marker = "circle", color = "grey",
-                           marker_color = "grey" })
 h:polygon(n, { })
 label_P(h, { [3] = true, [4] = true })
-h:label(P[4], "P_3", { place = "n", color = "grey" })
-h:label(P[5], "P_4", { place = "s", color = "grey" })
-h:curve(n)
-h:knots(n)
+-- the curve thinner than in 3.5 and the new legs P_{3,1} ... P_{5,1}
+-- in blue over it: near C(u) they touch the curve
 local Q = n:points()
-local new = { { 3, "P_{3,1}", "ne" }, { 4, "P_{4,2}", "auto" },
-              { 6, "P_{5,2}", "n" },
+h:curve(n, { width = 1.1 })
+h:polyline({ Q[4], Q[5], Q[6], Q[7], Q[8] }, { color = "blue", width = 1.1 })
+h:knots(n)
+-- P_{5,2} above left and P_{4,2} above their points, C(u) below: outside
+-- the inset's region
+local new = { { 3, "P_{3,1}", "ne" }, { 4, "P_{4,2}", "n" },
+              { 6, "P_{5,2}", "nw" },
               { 7, "P_{5,1}", "sw" } }
 for _, e in ipairs(new) do
   h:points({ Q[e[1] + 1] }, { marker = "dot", color = "blue",
@@ -183,5 +185,7 @@ for _, e in ipairs(new) do
 end
 h:points({ Q[6] }, { marker = "star", color = "red", marker_color = "red",
                      marker_size = 9 })
-h:label({ Q[6][1] + 0.1, Q[6][2] - 0.27 }, "P_{5,3} = C(u)",
+h:label({ Q[6][1] + 0.1, Q[6][2] - 0.3 }, "P_{5,3} = C(u)",
         { place = "center", color = "red" })
+-- P_{4,2}, C(u), P_{5,2} magnified
+h:inset{ region = { 3.15, 3.455, 3.95, 3.69 }, scale = 2.4 }

@@ -166,7 +166,7 @@ local function part(name, caption, c, range_other, color, plabels, newlabels)
   h:knots(c, { color = color })
   for _, e in ipairs(newlabels) do
     h:label(e[1], e[2], { place = e[3], color = color,
-                          offset = e[1] == C and 9 or nil })
+                          offset = e[1] == C and 7 or nil })
   end
   h:points({ C }, star)
   return h

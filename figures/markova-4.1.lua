@@ -8,8 +8,8 @@
 --                arrows at full length (c'(0) = T_0, c'(1) = T_1);
 --                "směr a velikost tečných vektorů [určují] míru jejího
 --                vyklenutí": the cubics with the same points and
---                tangent directions but T_0, T_1 halved and doubled are
---                drawn thin and dashed.
+--                tangent directions but T_0, T_1 halved (dashed) and
+--                doubled (dotted) are drawn thin and named in a legend.
 --                P_0 = (0,0), P_1 = (6,0), T_0 = (2,6), T_1 = (4,-5).
 --   markova-4.2  4.3.1 "Bézierovy kubiky": a Bézier cubic with its
 --                polygon P_0..P_3 = (0,0) (1.5,3) (4.5,3.5) (6,0.5); it
@@ -23,7 +23,8 @@
 --                (P_1 + 4 P_2 + P_3)/6): it does not pass through the end
 --                points of its polygon ("obecně neprochází krajními body
 --                svého řídicího polygonu"); the Bézier cubic of the same
---                points light and dashed for comparison.
+--                points light and dashed for comparison, both named in a
+--                legend (in Czech, as the thesis).
 --   markova-4.4  4.3.3 "Spline křivky": the natural cubic spline (C^2,
 --                zero second derivative at both ends) through the seven
 --                points (0,0) (1,2) (3,2.5) (4,0.5) (6,0) (7,2) (8.5,1.5),
@@ -48,7 +49,8 @@
 --                points, knots {0,0,0,1/4,1/4,1/2,1/2,3/4,3/4,1,1,1}),
 --                with the exact circle's points checked below; the
 --                non-rational B-spline of the same points and knots
---                (all weights 1), which is not a circle, dashed.
+--                (all weights 1), which is not a circle, dashed; a legend
+--                (in Czech) names both.
 
 local figs = {}
 local function fig(id, caption, w, h)
@@ -73,18 +75,24 @@ do
   local P0, P1, T0, T1 = { 0, 0 }, { 6, 0 }, { 2, 6 }, { 4, -5 }
   local f = fig("markova-4.1",
     "A Ferguson cubic: the end points P_0, P_1 and the tangent vectors " ..
-    "T_0, T_1; thin dashed: the same with the tangent vectors halved " ..
-    "and doubled (4.2.1 Fergusonovy kubiky)", "8cm", "6cm")
-  for _, k in ipairs{ 0.5, 2 } do
-    f:curve(ferguson(P0, P1, { k * T0[1], k * T0[2] },
-                     { k * T1[1], k * T1[2] }),
-            { color = light, width = 0.8, dash = "dashed" })
-  end
+    "T_0, T_1; dashed and dotted, named in the legend: the same with the " ..
+    "tangent vectors halved and doubled (4.2.1 Fergusonovy kubiky)",
+    "8cm", "6cm")
+  local variants = {
+    { 0.5, { color = "#4a7fc1", width = 0.9, dash = "dashed",
+             legend = "½T_0, ½T_1" } },
+    { 2, { color = "#e08214", width = 0.9, dash = "dotted",
+           legend = "2T_0, 2T_1" } } }
   local c = ferguson(P0, P1, T0, T1)
   -- the Hermite conditions, checked
   local d0, d1 = c:derivs(0, 1), c:derivs(1, 1)
   assert(math.abs(d0[2][1] - T0[1]) < 1e-12 and math.abs(d1[2][2] - T1[2]) < 1e-12)
-  f:curve(c)
+  f:curve(c, { legend = "T_0, T_1" })
+  for _, v in ipairs(variants) do
+    local k = v[1]
+    f:curve(ferguson(P0, P1, { k * T0[1], k * T0[2] },
+                     { k * T1[1], k * T1[2] }), v[2])
+  end
   f:arrow(P0, T0, { color = "darkred", width = 1.0 })
   f:arrow(P1, T1, { color = "darkred", width = 1.0 })
   f:points({ P0, P1 }, { marker = "dot" })
@@ -115,20 +123,23 @@ do
   local f = fig("markova-4.3",
     "A Coons cubic on the polygon P_0 ... P_3: it starts at " ..
     "(P_0 + 4P_1 + P_2)/6 and ends at (P_1 + 4P_2 + P_3)/6, not at the " ..
-    "end points; dashed: the Bézier cubic of the same points (4.3.2 " ..
-    "Coonsovy kubiky)")
+    "end points; dashed: the Bézier cubic of the same points, both named " ..
+    "in the legend (4.3.2 Coonsovy kubiky)")
   local c = coons_cubic(B)
   local s0 = { (B[1][1] + 4 * B[2][1] + B[3][1]) / 6,
                (B[1][2] + 4 * B[2][2] + B[3][2]) / 6 }
   local e0 = c:eval(0)
   assert(math.abs(e0[1] - s0[1]) < 1e-12 and math.abs(e0[2] - s0[2]) < 1e-12)
-  f:curve(bezier(B), { color = light, width = 0.9, dash = "dashed" })
+  f:curve(bezier(B), { color = light, width = 0.9, dash = "dashed",
+                       legend = "Bézierova kubika $B(t)$" })
   f:polygon(B, { })
   labels(f, B, { "sw", "nw", "ne", "se" })
-  f:curve(c)
+  f:curve(c, { legend = "Coonsova kubika $Q(t)$" })
   f:points({ c:eval(0), c:eval(1) }, { marker = "dot", color = "darkred",
                                         marker_color = "darkred" })
-  f:label(c:eval(0), "Q(0)", { color = "darkred" })
+  -- Q(0) lies between the leg P_0 P_1, the dashed curve and the Coons
+  -- cubic: its label in the narrow gap below the point
+  f:label(c:eval(0), "Q(0)", { place = "s", offset = 2, color = "darkred" })
   f:label(c:eval(1), "Q(1)", { place = "s", color = "darkred" })
 end
 
@@ -191,8 +202,8 @@ do
     "A NURBS: the exact circle of radius 2 with p = 2, nine control " ..
     "points P_0 = P_8, ..., P_7 and weights w_i = 1 and \u{221A}2/2 " ..
     "(written at the points); " ..
-    "dashed: the same points and knots with all weights 1, not a circle " ..
-    "(4.3.5 NURBS)", "7cm", "7cm")
+    "dashed: the same points and knots with all weights 1, not a circle; " ..
+    "both named in the legend (4.3.5 NURBS)", "7cm", "7cm")
   local c = nurbs_circle({ 0, 0 }, 2)
   for i = 0, 40 do
     local p = c:eval(i / 40)
@@ -200,16 +211,20 @@ do
   end
   local pts, w = c:points(), c:weights()
   local flat = bspline{ degree = 2, knots = c:knots(), points = pts }
-  f:curve(flat, { color = light, width = 0.9, dash = "dashed" })
+  f:curve(flat, { color = light, width = 0.9, dash = "dashed",
+                  legend = "všechny váhy $w_i = 1$" })
   f:polygon(pts, { })
-  f:curve(c)
+  f:curve(c, { legend = "NURBS, kružnice $C(u)$" })
   for i, p in ipairs(pts) do
     if i < #pts then
       local text = string.format("w_%d = %s", i - 1,
                                  w[i] == 1 and "1" or "\u{221A}2/2")
       if i == 1 then text = "w_0 = w_8 = 1" end
       local place = ({ "e", "ne", "n", "nw", "w", "sw", "s", "se" })[i]
-      f:label(p, text, { place = place, font_size = 8 })
+      -- the corners' labels nearer along the diagonal (their boxes'
+      -- corners, not their glyphs, would be at the offset)
+      f:label(p, text, { place = place, font_size = 8,
+                         offset = #place == 2 and 1 or nil })
     end
   end
 end

@@ -18,9 +18,12 @@
 -- Drawn in each figure: the curve (thick, dark) with its control
 -- polygon; a few inward normals of length d (thin grey arrows at
 -- t = 0.1, 0.3, ..., 0.9); the raw offset c(t) + d n(t) (orange, thin,
--- dashed) with its cusps marked (red crosses); and in a second style the
--- trimmed offset (green, thick): the raw offset with the pieces closer
--- than d to the curve (cusps, loop, swallow-tail) removed.
+-- dashed, drawn last so that it is seen everywhere) with its cusps marked
+-- (red crosses); and beneath it in a second style the trimmed offset
+-- (light green, wide): the raw offset with the pieces closer than d to
+-- the curve (cusps, loop, swallow-tail) removed.  A legend (in Slovene,
+-- as the report) names them; orazem-offset-2 magnifies its swallow-tail
+-- (both cusps and the self-intersection) in a zoom inset.
 -- All five orazem-offset figures share one window and size (the window
 -- holds the widest of them, outward d = 3).
 
@@ -32,30 +35,37 @@ for i = 0, 100 do
 end
 
 local window = { -3.3, 9.2, -2.3, 11.1 }
+local raw_colour, trimmed_colour = "#c8500a", "#92d192"
 local W, H = "9cm", "9.65cm"
 local place = { "w", "s", "se", "e", "e" }   -- P_4 right: the inward offset passes left of it
 
-local function offset_figure(name, d, caption)
+local function offset_figure(name, d, caption, places)
+  places = places or place
   local f = figure{ name = name, caption = caption, width = W, height = H,
                     window = window }
   f:polygon(c, { })
   for i = 0, 4 do
-    f:label(P[i + 1], string.format("P_%d", i), { place = place[i + 1] })
+    f:label(P[i + 1], string.format("P_%d", i), { place = places[i + 1] })
   end
   for t = 0.1, 0.95, 0.2 do
     f:arrow_to(c:eval(t), c:offset_point(t, d),
                { color = "grey", width = 0.5, arrow_size = 4 })
   end
   f:curve(c)
-  f:curve((c:offset(d)), { color = "orange", width = 0.9, dash = "dashed" })
+  -- the trimmed offset wide and light under the raw one, thin and dashed,
+  -- so that both are seen where they coincide
+  local trimmed = c:offset(d, { trim = true })
+  f:curve(trimmed, { color = trimmed_colour, width = 2.6,
+                     legend = "\\text{obrezan odmik}" })
+  f:curve((c:offset(d)), { color = raw_colour, width = 0.9, dash = "dashed",
+                           legend = "\\text{odmik} $c(t) + d\\, n(t)$" })
   local cusps = c:offset_cusps(d)
-  for _, t in ipairs(cusps) do
+  for k, t in ipairs(cusps) do
     f:points({ c:offset_point(t, d) }, { marker = "cross", color = "red",
                                           marker_color = "red",
-                                          marker_size = 6 })
+                                          marker_size = 6,
+                                          legend = k == 1 and "\\text{osti}" or nil })
   end
-  local trimmed = c:offset(d, { trim = true })
-  f:curve(trimmed, { color = "darkgreen", width = 1.8 })
   f:label({ window[1] + 0.2, window[4] - 0.2 },
           string.format("d = %g", math.abs(d)), { place = "se" })
   return f, cusps
@@ -64,14 +74,25 @@ end
 local _, k1 = offset_figure("orazem-offset-1", 0.5,
   "Offset with the normal turned inward, d = 0.5: smaller than the " ..
   "smallest radius of curvature, the offset is regular (raw offset " ..
-  "orange dashed, trimmed offset green) (Figure 1: Normala obrnjena " ..
-  "navznoter, d = 0.5)")
+  "orange dashed over the trimmed offset, light green) (Figure 1: " ..
+  "Normala obrnjena navznoter, d = 0.5)")
 assert(#k1 == 0)
-local _, k2 = offset_figure("orazem-offset-2", 1.5,
+local f2, k2 = offset_figure("orazem-offset-2", 1.5,
   "Offset with the normal turned inward, d = 1.5: two cusps and a loop " ..
-  "in the raw offset (orange dashed, cusps red), the trimmed offset " ..
-  "green (Figure 2: Normala obrnjena navznoter, d = 1.5)")
+  "(a swallow-tail, magnified in the inset) in the raw offset (orange " ..
+  "dashed, cusps red), the trimmed offset light green beneath it " ..
+  "(Figure 2: Normala obrnjena navznoter, d = 1.5)",
+  -- P_3 below right and P_4 above left: the inset's connector lines pass
+  -- right of them
+  { "w", "s", "se", "se", "nw" })
 assert(#k2 == 2)
+-- the swallow-tail magnified: both cusps and the self-intersection
+-- (about (2.03, 3.02)) inside the region
+for _, t in ipairs(k2) do
+  local q = c:offset_point(t, 1.5)
+  assert(q[1] > 1.35 and q[1] < 2.65 and q[2] > 2.1 and q[2] < 3.25)
+end
+f2:inset{ region = { 1.35, 2.1, 2.65, 3.25 }, scale = 3 }
 local _, k3 = offset_figure("orazem-offset-3", 3,
   "Offset with the normal turned inward, d = 3: two cusps and no loop " ..
   "in the raw offset (orange dashed, cusps red); only the " ..

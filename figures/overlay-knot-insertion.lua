@@ -64,7 +64,7 @@ for step, c in ipairs(curves) do
                               labels = { string.format("t = %g", t) },
                               label_place = { tplace[step - 1] },
                               label_style = { color = "darkgreen",
-                                              offset = 9 },
+                                              offset = 8 },
                               visible = only })
   end
 end

@@ -53,15 +53,14 @@ local place = {
   [0] = { "sw", "nw", "ne", "se" },
   [1] = { "w", "n", "e" },
   [2] = { "nw", "n" },
-  [3] = { "s" },
+  [3] = { "se" },
 }
 for i = 0, n do
   for j = 0, n - i do
     local text = string.format("P_{%d,%d}", i, j)
     if i == n then text = text .. " = c(0.4)" end
     local at = L[i + 1][j + 1]
-    if i == n then at = { at[1] + 0.35, at[2] } end  -- clear of the blue arc
     f:label(at, text,
-            { place = place[i][j + 1], offset = i == n and 16 or nil })
+            { place = place[i][j + 1], offset = i == n and 3 or nil })
   end
 end

@@ -52,17 +52,17 @@ local f = figure{
   width = "13cm", height = "4.8cm",
 }
 f:polygon(c)
-f:curve(c)
+f:curve(c, { legend = "c(t)" })
 f:polygon(r)
-f:curve(r, { color = "darkred" })
+f:curve(r, { color = "darkred", legend = "\\tilde{c}(t) = c(1 − t)" })
 local lp = { "w", "nw", "ne", "ne" }
 for i = 1, 4 do
   f:label(P[i], string.format("P_%d", i - 1), { place = lp[i] })
   f:label(Q[i], string.format("\\tilde{P}_%d", i - 1), { place = lp[5 - i] })
 end
 f:label(P[1], "t = 0", { place = "se" })
-f:label(P[4], "t = 1", { place = "s", offset = 9 })
-f:label(Q[1], "t = 0", { place = "s", offset = 9 })
+f:label(P[4], "t = 1", { place = "s", offset = 5 })
+f:label(Q[1], "t = 0", { place = "s", offset = 5 })
 f:label(Q[4], "t = 1", { place = "se" })
 direction(f, c, { 0.12, 0.5, 0.88 }, -1, "darkblue")
 direction(f, r, { 0.12, 0.5, 0.88 }, 1, "darkred")
@@ -71,8 +71,6 @@ f:points(a, { marker = "dot", color = "darkblue", marker_color = "darkblue" })
 f:points(b, { marker = "dot", color = "darkred", marker_color = "darkred" })
 f:label(a, "c(1/4)", { place = "e" })
 f:label(b, "\\tilde{c}(3/4)")
-f:label(c:eval(0.5), "c(t)", { place = "s", offset = 34 })
-f:label(r:eval(0.5), "\\tilde{c}(t) = c(1 − t)", { place = "s", offset = 34 })
 
 -- sir-affine -----------------------------------------------------------
 local th = math.rad(-40)
@@ -104,9 +102,11 @@ g:curve(c)
 g:polygon(g_img)
 g:curve(g_img, { color = "darkred" })
 local lq = { "sw", "nw", "n", "sw" }
+local lr = { "auto", "auto", "ne", "auto" }   -- P̃_2: clear of the image curve
 for i = 1, 4 do
   g:label(P[i], string.format("P_%d", i - 1), { place = lq[i] })
-  g:label(R[i], string.format("\\tilde{P}_%d", i - 1))
+  g:label(R[i], string.format("\\tilde{P}_%d", i - 1),
+          { place = lr[i] })
 end
 g:points(m, { marker = "dot", color = "darkblue", marker_color = "darkblue" })
 g:points(mi, { marker = "dot", color = "darkred", marker_color = "darkred" })

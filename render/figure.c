@@ -104,6 +104,7 @@ cf_figure_destroy(cf_figure_t *fig)
         cf__text_fini(&fig->legend[i].text);
     cf_free(fig->legend);
     cf_free(fig->insets);
+    cf_free(fig->inset_band);
     for (i = 0; fig->panels != NULL && i < (size_t)(fig->rows * fig->cols);
          i++)
         cf_figure_destroy(fig->panels[i]);

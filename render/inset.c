@@ -9,7 +9,7 @@
 
 #include "model.h"
 
-#define INSET_EDGE 4.0    /* bp from the page edge */
+#define INSET_EDGE 4.0    /* bp inside the edge of the drawing's ink */
 #define INSET_FRAME 0.5   /* bp: frame and connector width */
 
 void
@@ -25,6 +25,7 @@ cf_status_t
 cf_figure_add_inset(cf_figure_t *fig, const cf_inset_t *in)
 {
     cf_inset_t *n;
+    cf__room_band_t *band;
     const double *r;
     CF__FIG_CHECK(fig);
     if (in == NULL)
@@ -61,6 +62,11 @@ cf_figure_add_inset(cf_figure_t *fig, const cf_inset_t *in)
     if (n == NULL)
         return cf__fig_nomem(fig, "an inset");
     fig->insets = n;
+    band = cf_realloc_array(fig->inset_band, fig->ninsets + 1, sizeof *band);
+    if (band == NULL)
+        return cf__fig_nomem(fig, "an inset");
+    fig->inset_band = band;
+    band[fig->ninsets] = CF__ROOM_UNDECIDED;
     n[fig->ninsets++] = *in;
     return CF_STATUS_OK;
 }
@@ -144,35 +150,9 @@ magnification(const cf_figure_t *fig, const cf__layout_t *lay,
     return (in->size > 0 ? in->size : fig->width / 3) / (rb[2] - rb[0]);
 }
 
-cf_status_t
-cf__insets_fit(cf_figure_t *fig, const cf__layout_t *lay,
-               const cf__dl_t *dl, double *w, double *h, bool *covered)
-{
-    size_t k;
-    *w = *h = 0;
-    *covered = false;
-    for (k = 0; k < fig->ninsets; k++) {
-        const cf_inset_t *in = &fig->insets[k];
-        double rb[4], at[2], mag, bw, bh;
-        size_t n = 0;
-        if (in->has_rect || in->place != CF_PLACE_AUTO)
-            continue;
-        mag = magnification(fig, lay, in, rb);
-        bw = mag * (rb[2] - rb[0]);
-        bh = mag * (rb[3] - rb[1]);
-        if (cf__room_find(fig, lay, dl, bw, bh, CF_PLACE_AUTO, INSET_EDGE,
-                          at, &n) != CF_STATUS_OK)
-            return fig->err.status;
-        *w = fmax(*w, bw);
-        *h = fmax(*h, bh);
-        *covered = *covered || n > 0;
-    }
-    return CF_STATUS_OK;
-}
-
 static cf_status_t
 draw_inset(cf_figure_t *fig, const cf__layout_t *lay, size_t k,
-           cf__dl_t *dl)
+           size_t from, cf__dl_t *dl)
 {
     const cf_inset_t *in = &fig->insets[k];
     const double *r = in->region;
@@ -196,8 +176,9 @@ draw_inset(cf_figure_t *fig, const cf__layout_t *lay, size_t k,
         at[0] = lay->px + in->rect[0];
         at[1] = lay->py + in->rect[1];
     } else {
-        if (cf__room_find(fig, lay, dl, bw, bh, in->place, INSET_EDGE, at,
-                          NULL) != CF_STATUS_OK)
+        if (cf__room_find(fig, lay, dl, from, bw, bh, in->place,
+                          INSET_EDGE, &fig->inset_band[k], at)
+            != CF_STATUS_OK)
             return fig->err.status;
     }
     ib[0] = at[0];
@@ -238,11 +219,12 @@ draw_inset(cf_figure_t *fig, const cf__layout_t *lay, size_t k,
 }
 
 cf_status_t
-cf__insets_draw(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
+cf__insets_draw(cf_figure_t *fig, const cf__layout_t *lay, size_t from,
+                cf__dl_t *dl)
 {
     size_t k;
     for (k = 0; k < fig->ninsets; k++)
-        if (draw_inset(fig, lay, k, dl) != CF_STATUS_OK)
+        if (draw_inset(fig, lay, k, from, dl) != CF_STATUS_OK)
             return fig->err.status;
     return CF_STATUS_OK;
 }

@@ -1,8 +1,9 @@
 /*
 ** Layout: the data window (explicit, or fitted to what is drawn), the
 ** data -> page map, room for what sticks out of the data box (labels,
-** markers, arrow heads, line widths: the ink of a first pass), and the
-** display list of a layout.
+** markers, arrow heads, line widths, and the legend and insets placed
+** beside the drawing: the ink of a first pass), and the display list of
+** a layout.
 */
 #include <math.h>
 #include <string.h>
@@ -46,7 +47,9 @@ build_elements(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
     return CF_STATUS_OK;
 }
 
-/* The ink box of the figure drawn with layout lay. */
+/* The ink box of the figure drawn with layout lay: its elements, and the
+** insets and the legend placed beside them (its panels are not measured:
+** they have their own layouts in their cells). */
 static cf_status_t
 ink_of(cf_figure_t *fig, const cf__layout_t *lay, double ink[4])
 {
@@ -54,6 +57,10 @@ ink_of(cf_figure_t *fig, const cf__layout_t *lay, double ink[4])
     cf_status_t st;
     cf__dl_init(&dl);
     st = build_elements(fig, lay, &dl);
+    if (st == CF_STATUS_OK)
+        st = cf__insets_draw(fig, lay, 0, &dl);
+    if (st == CF_STATUS_OK)
+        st = cf__legend_draw(fig, lay, 0, &dl);
     if (st == CF_STATUS_OK)
         cf__cairo_ink(&dl, 0, dl.count, ink);
     cf__dl_free(&dl);
@@ -120,77 +127,12 @@ cf__figure_build(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
         return fig->err.status;
     from = dl->count;
     if (build_elements(fig, lay, dl) != CF_STATUS_OK
-        || cf__insets_draw(fig, lay, dl) != CF_STATUS_OK
+        || cf__insets_draw(fig, lay, from, dl) != CF_STATUS_OK
         || cf__legend_draw(fig, lay, from, dl) != CF_STATUS_OK)
         return fig->err.status;
     if (dl->failed)
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
                            "out of memory for the display list");
-    return CF_STATUS_OK;
-}
-
-/* bp between the drawing and a band for insets or the legend */
-#define BAND_GAP 6.0
-
-/* Take a band of w (at the right) or h (at the bottom) bp out of the
-** available box avail, whichever keeps the larger scale, and lay out
-** again; nothing when neither leaves a fifth of the box. */
-static void
-take_band(cf_figure_t *fig, const double win[4], bool keep, double avail[4],
-          double w, double h, cf__layout_t *lay)
-{
-    cf__layout_t right = *lay, below = *lay;
-    double ra[4], ba[4];
-    bool r_ok, b_ok;
-    memcpy(ra, avail, sizeof ra);
-    memcpy(ba, avail, sizeof ba);
-    ra[2] -= w + BAND_GAP;
-    ba[3] -= h + BAND_GAP;
-    r_ok = ra[2] - ra[0] > 0.2 * (avail[2] - avail[0]);
-    b_ok = ba[3] - ba[1] > 0.2 * (avail[3] - avail[1]);
-    if (!r_ok && !b_ok)
-        return;
-    compute_map(fig, win, keep, ra, &right);
-    compute_map(fig, win, keep, ba, &below);
-    if (!b_ok || (r_ok && fmin(right.sx, right.sy)
-                              >= fmin(below.sx, below.sy))) {
-        *lay = right;
-        memcpy(avail, ra, sizeof ra);
-    } else {
-        *lay = below;
-        memcpy(avail, ba, sizeof ba);
-    }
-}
-
-/* Insets and then an automatic legend that find no corner or side free
-** of ink (the elements', then the insets' too) get a band of their own
-** at the right or at the bottom of the drawing. */
-static cf_status_t
-make_bands(cf_figure_t *fig, const double win[4], bool keep,
-           double avail[4], cf__layout_t *lay)
-{
-    int pass;
-    if (fig->ninsets == 0 && fig->nlegend == 0)
-        return CF_STATUS_OK;
-    for (pass = 0; pass < 2; pass++) {
-        cf__dl_t dl;
-        double w = 0, h = 0;
-        bool covered = false;
-        cf_status_t st;
-        cf__dl_init(&dl);
-        st = build_elements(fig, lay, &dl);
-        if (st == CF_STATUS_OK && pass == 0)
-            st = cf__insets_fit(fig, lay, &dl, &w, &h, &covered);
-        if (st == CF_STATUS_OK && pass == 1)
-            st = cf__insets_draw(fig, lay, &dl);
-        if (st == CF_STATUS_OK && pass == 1)
-            st = cf__legend_fits(fig, lay, &dl, &w, &h, &covered);
-        cf__dl_free(&dl);
-        if (st != CF_STATUS_OK)
-            return st;
-        if (covered)
-            take_band(fig, win, keep, avail, w, h, lay);
-    }
     return CF_STATUS_OK;
 }
 
@@ -247,6 +189,8 @@ cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
 
     memset(&b, 0, sizeof b);
     lay->px = lay->py = 0;
+    cf__room_reset(fig);
+    cf__place_forget(fig);
     for (i = 0; i < fig->count; i++)
         fig->els[i]->kind->bounds(fig->els[i], &b);
     lay->clip = fig->window_set;
@@ -309,7 +253,7 @@ cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
             && fabs(prev[3] - avail[3]) < REFINE_TOL)
             break;
     }
-    return make_bands(fig, win, keep, avail, lay);
+    return CF_STATUS_OK;
 }
 
 cf_status_t

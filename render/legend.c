@@ -1,11 +1,14 @@
 /*
 ** Legends: an entry per element that asked for one, a sample of the
 ** element's line, fill and marker as its group drew them, beside the
-** entry's label; the box goes where there is room (render/room.c) or at
-** a named corner or side, framed on the background or bare.
+** entry's label; the box goes where the drawing leaves room, or beside
+** it (render/room.c), or at a named corner or side of the drawing, framed
+** on the background or bare.
 */
+#include <math.h>
 #include <string.h>
 
+#include "backend.h"
 #include "label-private.h"
 #include "model.h"
 
@@ -13,7 +16,7 @@
 #define LEG_SAMPLE 18.0   /* bp: the length of a line sample */
 #define LEG_GAP 4.0       /* bp between sample and text */
 #define LEG_ROW 2.0       /* bp between rows */
-#define LEG_EDGE 4.0      /* bp from the page edge */
+#define LEG_EDGE 4.0      /* bp inside the edge of the drawing's ink */
 #define LEG_FRAME 0.4     /* bp: the frame's width */
 
 cf_status_t
@@ -128,11 +131,34 @@ draw_sample(const sample_t *s, double x, double y, double h, cf__dl_t *dl)
 
 /* ---- the box ------------------------------------------------------------ */
 
+/* The height of sample s's marker as drawn (a star reaches past its
+** size), 0 without one. */
+static double
+marker_height(const sample_t *s)
+{
+    cf__dl_t dl;
+    cf__marker_op_t m;
+    double ink[4], hgt = 0;
+    if (!s->has_marker)
+        return 0;
+    m = s->marker;
+    m.x = m.y = 0;
+    m.has_dir = false;
+    cf__dl_init(&dl);
+    cf__dl_marker(&dl, &m);
+    if (!dl.failed && cf__cairo_ink(&dl, 0, dl.count, ink) == 0
+        && ink[3] > ink[1])
+        hgt = 2 * fmax(-ink[1], ink[3]);
+    cf__dl_free(&dl);
+    return hgt;
+}
+
 /* Row heights and the box size of the legend in style ls: the label's
-** height, at least 0.8 of the font size and the element's marker. */
+** height, at least 0.8 of the font size and the element's marker (as its
+** sample draws it). */
 static cf_status_t
-measure(cf_figure_t *fig, const cf_style_t *ls, double *rows, double *w,
-        double *h)
+measure(cf_figure_t *fig, const cf_style_t *ls, const sample_t *samples,
+        double *rows, double *w, double *h)
 {
     double tw = 0;
     size_t i;
@@ -151,33 +177,12 @@ measure(cf_figure_t *fig, const cf_style_t *ls, double *rows, double *w,
         cf__style_resolve(&fig->theme, el->role, &el->style, &es);
         if (es.marker != CF_MARKER_NONE && es.marker_size > rh)
             rh = es.marker_size;
+        rh = fmax(rh, marker_height(&samples[i]));
         if (rows != NULL)
             rows[i] = rh;
         *h += rh + (i > 0 ? LEG_ROW : 0);
     }
     *w = 2 * LEG_PAD + LEG_SAMPLE + LEG_GAP + tw;
-    return CF_STATUS_OK;
-}
-
-cf_status_t
-cf__legend_fits(cf_figure_t *fig, const cf__layout_t *lay,
-                const cf__dl_t *dl, double *w, double *h, bool *covered)
-{
-    cf_style_t ls;
-    double at[2];
-    size_t n = 0;
-    *covered = false;
-    *w = *h = 0;
-    if (fig->nlegend == 0)
-        return CF_STATUS_OK;
-    cf__style_resolve(&fig->theme, CF_ROLE_LABEL, NULL, &ls);
-    if (measure(fig, &ls, NULL, w, h) != CF_STATUS_OK)
-        return fig->err.status;
-    if (fig->legend_place == 0
-        && cf__room_find(fig, lay, dl, *w, *h, CF_PLACE_AUTO, LEG_EDGE, at,
-                         &n) != CF_STATUS_OK)
-        return fig->err.status;
-    *covered = n > 0;
     return CF_STATUS_OK;
 }
 
@@ -224,11 +229,11 @@ cf__legend_draw(cf_figure_t *fig, const cf__layout_t *lay, size_t from,
     }
     for (i = 0; i < fig->nlegend; i++)
         find_sample(dl, from, fig->legend[i].el, &samples[i]);
-    if (measure(fig, &ls, rows, &w, &h) != CF_STATUS_OK)
+    if (measure(fig, &ls, samples, rows, &w, &h) != CF_STATUS_OK)
         goto done;
     place = fig->legend_place == 0 ? CF_PLACE_AUTO : fig->legend_place;
-    if (cf__room_find(fig, lay, dl, w, h, place, LEG_EDGE, at, NULL)
-        != CF_STATUS_OK)
+    if (cf__room_find(fig, lay, dl, from, w, h, place, LEG_EDGE,
+                      &fig->legend_band, at) != CF_STATUS_OK)
         goto done;
     cf__dl_group(dl, "legend", fig->count);
     if (!fig->legend_noframe)

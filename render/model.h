@@ -149,6 +149,16 @@ struct cf__element {
                                      overlay specification), NULL: all */
 };
 
+/* Where a box goes beside the drawing (render/room.c): undecided (a new
+** layout), inside the drawing's ink box, or in a band at its right or
+** below it. */
+typedef enum cf__room_band {
+    CF__ROOM_UNDECIDED,
+    CF__ROOM_INSIDE,
+    CF__ROOM_RIGHT,
+    CF__ROOM_BELOW
+} cf__room_band_t;
+
 /* A legend entry: element el and its text. */
 typedef struct cf__legend_entry {
     size_t el;
@@ -174,14 +184,20 @@ struct cf_figure {
     size_t count, cap;
     char *warnings;          /* of the last layout, a line each; NULL: none */
     size_t warnings_len;
+    /* the layout (less its page position) the labels were last placed for
+    ** within one cf__figure_layout and its builds (render/place.c) */
+    bool placed;
+    cf__layout_t placed_for;
     /* legend (render/legend.c) */
     cf__legend_entry_t *legend;
     size_t nlegend;
     cf_place_t legend_place;      /* CENTER (never set): automatic */
     bool legend_noframe;
+    cf__room_band_t legend_band;  /* of this layout */
     /* insets (render/inset.c) */
     cf_inset_t *insets;
     size_t ninsets;
+    cf__room_band_t *inset_band;  /* each one's, of this layout */
     /* panels (render/panel.c): rows x cols figures, or a panel's parent */
     cf_figure_t **panels;
     int rows, cols;
@@ -294,15 +310,12 @@ cf_status_t cf__figure_check_page(const cf_figure_t *fig, const cf__dl_t *dl,
 ** groups drawn at ops [from, dl->count). */
 cf_status_t cf__legend_draw(cf_figure_t *fig, const cf__layout_t *lay,
                             size_t from, cf__dl_t *dl);
-/* The largest size of the insets placed automatically, and whether one
-** of them finds no place free of the ink of dl (the elements drawn with
-** lay). */
-cf_status_t cf__insets_fit(cf_figure_t *fig, const cf__layout_t *lay,
-                           const cf__dl_t *dl, double *w, double *h,
-                           bool *covered);
-/* Every inset: the elements drawn again in its box, frames, connectors. */
+/* Every inset: the elements drawn again in its box, frames, connectors;
+** placed beside the drawing at ops [from, dl->count). */
 cf_status_t cf__insets_draw(cf_figure_t *fig, const cf__layout_t *lay,
-                            cf__dl_t *dl);
+                            size_t from, cf__dl_t *dl);
+/* A new layout: the legend and the insets placed afresh. */
+void cf__room_reset(cf_figure_t *fig);
 /* Cell k of a figure split into panels: x y w h, page bp. */
 void cf__panel_cell(const cf_figure_t *fig, int k, double cell[4]);
 /* Make the panels' layouts agree on the shared axes (lays[rows * cols]). */
@@ -310,25 +323,23 @@ void cf__panels_share(const cf_figure_t *fig, cf__layout_t *lays);
 /* The title of panel k (laid out at the label font size) into dl. */
 cf_status_t cf__panel_title_draw(cf_figure_t *fig, int k,
                                  const cf__layout_t *lay, cf__dl_t *dl);
-/* Where a w x h box goes on the page of a figure laid out with lay, of
-** the ink in ops [0, dl->count): at place (AUTO: the first of ne nw se sw
-** n s e w covering no ink, else the least), gap bp inside the page edge;
-** its top left into at[2], the raster pixels of ink it covers into
-** *covered (may be NULL). */
+/* Where a w x h box goes beside the drawing whose ink is ops [from,
+** dl->count) (laid out with lay; the raster holds all of dl): at place
+** of the drawing's ink box, gap bp inside its edge (AUTO: the first of ne
+** nw se sw n s e w covering no ink; with none, *band is set to a band at
+** the right or below the ink box, and kept there while *band says so);
+** its top left into at[2]. */
 cf_status_t cf__room_find(cf_figure_t *fig, const cf__layout_t *lay,
-                          const cf__dl_t *dl, double w, double h,
-                          cf_place_t place, double gap, double at[2],
-                          size_t *covered);
-/* The size of the legend, and whether an automatic one finds no place
-** free of the ink of dl (the elements drawn with lay). */
-cf_status_t cf__legend_fits(cf_figure_t *fig, const cf__layout_t *lay,
-                            const cf__dl_t *dl, double *w, double *h,
-                            bool *covered);
+                          const cf__dl_t *dl, size_t from, double w,
+                          double h, cf_place_t place, double gap,
+                          cf__room_band_t *band, double at[2]);
 
 /* ---- place.c ------------------------------------------------------------ */
 
 /* Choose the places of the labels placed CF_PLACE_AUTO for a layout, and
 ** note in the figure's warnings every label that lies on ink. */
 cf_status_t cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay);
+/* Forget the places chosen: the figure is laid out afresh. */
+void cf__place_forget(cf_figure_t *fig);
 
 #endif

@@ -3,9 +3,10 @@
 ** label may sit) is drawn into a coarse raster of the page's ink by the
 ** cairo backend.  Each label placed by hand is then tested against it,
 ** glyph by glyph, and added to it; each label placed CF_PLACE_AUTO (the
-** default) takes the cheapest of the eight places around its anchor at
-** growing distances, and is added to the raster in turn, so that later
-** labels avoid it.  A label that still lies on ink, placed by hand or
+** default) takes the cheapest of the eight places around its anchor, at
+** its offset and up to 4 bp farther (adjacent to the point), never one
+** nearer another labelled point than its own while any other is left,
+** and is added to the raster in turn, so that later labels avoid it.  A label that still lies on ink, placed by hand or
 ** automatically, is kept and reported in the figure's warnings
 ** (cf_figure_warnings): which label, at which place, on what.
 */
@@ -24,11 +25,20 @@
 #define AUTO_MAX_PIXELS 4e6   /* larger pages get a coarser raster */
 #define AUTO_GAP 1.0          /* bp around a label that should stay clear */
 #define AUTO_NEAR 3.0         /* bp: ink this close costs a quarter */
-#define AUTO_FAR 0.15         /* cost (bp^2) of each bp farther out */
+#define AUTO_FAR 0.6          /* cost (bp^2) of each bp farther out */
+#define AUTO_AMBIGUOUS 1e4    /* cost of a place nearer another labelled
+                                 point than the label's own */
+#define AUTO_CLEARER 0.75     /* bp a label keeps nearer its own point */
 #define HIT_ALPHA 127         /* a pixel inked more than half */
 
 /* The distances tried, in bp beyond the style's offset. */
-static const double further[] = { 0.0, 2.5, 5.5, 9.0, 14.0, 20.0 };
+static const double further[] = { 0.0, 1.0, 2.0, 3.0, 4.0 };
+
+/* The anchors (page points) of the labels in the window. */
+typedef struct anchors {
+    double *xy;
+    size_t n;
+} anchors_t;
 
 typedef struct raster {
     cairo_surface_t *img, *one;   /* the page's ink; one element's */
@@ -117,10 +127,38 @@ is_label(cf_figure_t *fig, size_t i, double *x, double *y, cf__text_t **t,
     return e->kind->auto_label(e, x, y, t, chosen);
 }
 
-/* The cheapest place and distance of a label at page point (px, py). */
+/* bp from page point (x, y) to page box b (x0 y0 x1 y1). */
+static double
+box_distance(const double b[4], double x, double y)
+{
+    double dx = fmax(0, fmax(b[0] - x, x - b[2]));
+    double dy = fmax(0, fmax(b[1] - y, y - b[3]));
+    return hypot(dx, dy);
+}
+
+/* Whether a label with page box b, anchored at (px, py), lies nearer
+** another labelled point than its own (or not clearly farther from it). */
+static bool
+ambiguous(const anchors_t *an, const double b[4], double px, double py)
+{
+    double own = box_distance(b, px, py);
+    size_t k;
+    for (k = 0; k < an->n; k++) {
+        double x = an->xy[2 * k], y = an->xy[2 * k + 1];
+        if (hypot(x - px, y - py) < 0.5)
+            continue;   /* the same point */
+        if (box_distance(b, x, y) < own + AUTO_CLEARER)
+            return true;
+    }
+    return false;
+}
+
+/* The cheapest place and distance of a label at page point (px, py): as
+** near the point as the ink lets it, never nearer another labelled point
+** unless every place is. */
 static void
-cheapest(const raster_t *r, const cf_label_t *lab, const cf_style_t *s,
-         double px, double py, cf__auto_place_t *chosen)
+cheapest(const raster_t *r, const anchors_t *an, const cf_label_t *lab,
+         const cf_style_t *s, double px, double py, cf__auto_place_t *chosen)
 {
     static const cf_place_t order[] = {
         CF_PLACE_NE, CF_PLACE_NW, CF_PLACE_SE, CF_PLACE_SW,
@@ -133,9 +171,15 @@ cheapest(const raster_t *r, const cf_label_t *lab, const cf_style_t *s,
     chosen->offset = s->offset;
     for (d = 0; d < sizeof further / sizeof further[0]; d++)
         for (k = 0; k < sizeof order / sizeof order[0]; k++) {
-            double ox, oy, c, off = s->offset + further[d];
+            double ox, oy, c, b[4], off = s->offset + further[d];
             cf__label_origin(lab, order[k], off, px, py, &ox, &oy);
+            b[0] = ox + ink[0];
+            b[1] = oy + ink[1];
+            b[2] = ox + ink[2];
+            b[3] = oy + ink[3];
             c = place_cost(r, ink, ox, oy) + AUTO_FAR * further[d];
+            if (ambiguous(an, b, px, py))
+                c += AUTO_AMBIGUOUS;
             /* a later candidate must be clearly better (0.05 bp^2) */
             if (c < best - 0.05) {
                 best = c;
@@ -335,10 +379,34 @@ raster_close(raster_t *r)
     cairo_surface_destroy(r->one);
 }
 
-cf_status_t
-cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay)
+/* Whether layouts a and b map the data alike, page position aside. */
+static bool
+same_map(const cf__layout_t *a, const cf__layout_t *b)
 {
+    return a->xmin == b->xmin && a->xmax == b->xmax && a->ymin == b->ymin
+        && a->ymax == b->ymax && a->sx == b->sx && a->sy == b->sy
+        && a->ox == b->ox && a->oy == b->oy && a->tol == b->tol
+        && a->clip == b->clip;
+}
+
+void
+cf__place_forget(cf_figure_t *fig)
+{
+    fig->placed = false;
+}
+
+/* The places of layout lay, chosen on the page at its own position (the
+** layout moved by its page position to the origin): a page cropped to
+** its ink moves the layout without moving a label against its point, so
+** the places chosen once serve every build of the layout that only
+** moves it (the figure unchanged since cf__figure_layout). */
+cf_status_t
+cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
+{
+    cf__layout_t moved = *at;
+    const cf__layout_t *lay = &moved;
     raster_t r;
+    anchors_t an;
     cf_style_t s;
     cf__text_t *t;
     cf__auto_place_t *chosen;
@@ -347,6 +415,12 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay)
     bool any = false;
     cf_status_t st;
 
+    moved.ox -= at->px;
+    moved.oy -= at->py;
+    moved.px = moved.py = 0;
+    if (fig->placed && same_map(&fig->placed_for, lay))
+        return CF_STATUS_OK;   /* the places and warnings of that layout */
+    fig->placed = false;
     cf_free(fig->warnings);
     fig->warnings = NULL;
     fig->warnings_len = 0;
@@ -369,6 +443,17 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay)
             continue;
         st = check_label(fig, lay, &r, i, t, s.place, false);
     }
+    an.n = 0;
+    an.xy = cf_alloc_array(2 * fig->count + 2, sizeof *an.xy);
+    if (an.xy == NULL && st == CF_STATUS_OK)
+        st = cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                         "out of memory placing labels");
+    for (i = 0; i < fig->count && st == CF_STATUS_OK; i++)
+        if (is_label(fig, i, &x, &y, &t, &chosen, &s)
+            && cf__in_window(lay, x, y)) {
+            cf__map(lay, x, y, &an.xy[2 * an.n], &an.xy[2 * an.n + 1]);
+            an.n++;
+        }
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
         double px, py;
         if (!is_label(fig, i, &x, &y, &t, &chosen, &s)
@@ -379,10 +464,15 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay)
             continue;
         cf__map(lay, x, y, &px, &py);
         cairo_surface_flush(r.img);
-        cheapest(&r, t->lab, &s, px, py, chosen);
+        cheapest(&r, &an, t->lab, &s, px, py, chosen);
         st = check_label(fig, lay, &r, i, t, chosen->place, true);
     }
+    cf_free(an.xy);
     raster_close(&r);
+    if (st == CF_STATUS_OK) {
+        fig->placed = true;
+        fig->placed_for = moved;
+    }
     return st;
 }
 

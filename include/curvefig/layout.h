@@ -35,11 +35,12 @@ CF_API cf_status_t cf_figure_add_legend_at(cf_figure_t *fig, size_t element,
                                            const char *text);
 
 /* Where the legend goes: CF_PLACE_AUTO (the default) tries the corners
-** and sides of the page, in the order ne nw se sw n s e w, and takes the
-** first whose box covers no ink (with none clear, the drawing is made
-** smaller to leave a band for it at the right or the bottom, whichever
-** keeps the larger scale); another place puts it at that corner or
-** side.  CF_PLACE_CENTER is INVALID_ARG.  frame: a thin frame on a
+** and sides of the drawing's ink box, in the order ne nw se sw n s e w,
+** and takes the first whose box covers no ink (with none clear, the
+** drawing is made smaller to leave room for it beside the drawing, at
+** the right or below, whichever keeps the larger scale); another place
+** puts it at that corner or side of the drawing's ink.  The legend is
+** part of the ink a page of CF_PAGE_INK is fitted around.  CF_PLACE_CENTER is INVALID_ARG.  frame: a thin frame on a
 ** background-filled box (default true). */
 CF_API cf_status_t cf_figure_set_legend_place(cf_figure_t *fig,
                                               cf_place_t place, bool frame);
@@ -53,10 +54,11 @@ CF_API cf_status_t cf_figure_set_legend_place(cf_figure_t *fig,
 typedef struct cf_inset {
     double region[4];   /* x0 y0 x1 y1, data units, x0 < x1, y0 < y1,
                            inside the figure's window */
-    cf_place_t place;   /* CF_PLACE_AUTO: a corner or side with no ink
-                           (with none free, the drawing makes room: a
-                           band at the right or the bottom); else that
-                           corner or side of the page */
+    cf_place_t place;   /* CF_PLACE_AUTO: a corner or side of the
+                           drawing's ink with no ink (with none free, the
+                           drawing makes room beside it, at the right or
+                           below); else that corner or side of the
+                           drawing's ink */
     bool has_rect;      /* rect given: it overrides place and size */
     double rect[4];     /* x y w h, page bp from the top left */
     double scale;       /* magnification over the main drawing (> 0), or 0:

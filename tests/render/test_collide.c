@@ -5,13 +5,15 @@
 ** A figure's display list is drawn three ways at RES pixels per bp, each
 ** into an alpha-only raster: everything (the page: its border rows and
 ** columns must stay empty, also in a figure that lets the page clip);
-** everything but the text, with the fills of shadings left out (a label
-** may sit on a shading, not on its outline);
+** everything but the text, with the fills of shadings and of the legend's
+** box left out (a label may sit on a shading, not on its outline);
 ** and each text operation alone (its glyph mask).  A pixel counts as ink
 ** when its alpha exceeds one half: two anti-aliased edges that only touch
 ** never both pass that, two shapes that overlap by a third of a bp do.
 ** A label collides when one of its glyph pixels is ink of the rest, or of
-** an earlier label. */
+** an earlier label.  And each label of a point lies with its nearest
+** glyph pixel within NEAR of its point, nearer it than any other
+** labelled point (a reader takes a label for the nearest point's). */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -32,10 +34,18 @@
 #define RES 3.0      /* raster pixels per bp (216 dpi) */
 #define HALF 127     /* alpha of a pixel inked more than half */
 
+#define NEAR 10.0    /* bp: a label's nearest glyph pixel at most this far
+                        from its anchor (automatic placement keeps the
+                        label's box within 8 bp: the offset, 4, and at
+                        most 4 more; a glyph's rounded corner adds a
+                        little, the box's corner on a diagonal more) */
+
 typedef struct mask {
     int x0, y0, w, h;    /* the box of the glyphs, in raster pixels */
     unsigned char *a;    /* w * h alphas */
     const char *src;
+    bool element;        /* a label element's (anchored at a point) */
+    double ax, ay;       /* its anchor, bp */
 } mask_t;
 
 static void
@@ -136,6 +146,115 @@ mask_on_mask(const mask_t *a, const mask_t *b)
     return n;
 }
 
+/* bp from page point (x, y) to the nearest glyph pixel of m (its
+** centre); HUGE_VAL when it has none. */
+static double
+mask_distance(const mask_t *m, double x, double y)
+{
+    double best = HUGE_VAL;
+    int i, j;
+    for (j = 0; j < m->h; j++)
+        for (i = 0; i < m->w; i++)
+            if (m->a[(size_t)j * (size_t)m->w + (size_t)i] > HALF) {
+                double dx = (m->x0 + i + 0.5) / RES - x;
+                double dy = (m->y0 + j + 0.5) / RES - y;
+                double d = sqrt(dx * dx + dy * dy);
+                if (d < best)
+                    best = d;
+            }
+    return best;
+}
+
+/* Each label element lies with its glyphs within NEAR of its own anchor; every label element lies nearer its own anchor
+** than any other label's (a reader takes a label for the nearest
+** labelled point's).  The faults, printed; their number. */
+static int
+check_anchors(const mask_t *masks, size_t nt, const char *name)
+{
+    size_t i, k;
+    int bad = 0;
+    for (i = 0; i < nt; i++) {
+        const mask_t *m = &masks[i];
+        double own;
+        if (!m->element)
+            continue;
+        own = mask_distance(m, m->ax, m->ay);
+        if (own == HUGE_VAL)
+            continue;
+        if (getenv("CF_COLLIDE_DISTANCES") != NULL)
+            print_message("%s: label \"%s\" %.2f bp from its point\n", name,
+                          m->src, own);
+        if (own > NEAR) {
+            print_message("%s: label \"%s\" lies %.1f bp from its point "
+                          "(at most %.0f)\n", name, m->src, own, NEAR);
+            bad++;
+        }
+        for (k = 0; k < nt; k++) {
+            const mask_t *o = &masks[k];
+            double other;
+            if (k == i || !o->element
+                || hypot(o->ax - m->ax, o->ay - m->ay) < 0.5)
+                continue;
+            other = mask_distance(m, o->ax, o->ay);
+            if (other < own) {
+                print_message("%s: label \"%s\" lies nearer the point of "
+                              "\"%s\" (%.1f bp) than its own (%.1f bp)\n",
+                              name, m->src, o->src, other, own);
+                bad++;
+            }
+        }
+    }
+    return bad;
+}
+
+/* The element (and the figure or panel holding it) whose group
+** operation i draws in, for every operation; NULL outside the groups of
+** elements (legends, insets, panel titles). */
+typedef struct owned {
+    cf_figure_t *owner;
+    cf__element_t *el;
+} owned_t;
+
+static owned_t *
+elements_of(cf_figure_t *fig, const cf__dl_t *dl)
+{
+    owned_t *o = calloc(dl->count + 1, sizeof *o);
+    cf_figure_t *owner = fig;
+    cf__element_t *stack[64] = { NULL };
+    int depth = 0, panel = -1;   /* the depth of the open panel's group */
+    size_t i;
+    assert_non_null(o);
+    for (i = 0; i < dl->count; i++) {
+        const cf__op_t *op = &dl->ops[i];
+        if (op->kind == CF__OP_GROUP) {
+            const char *g = op->u.group.name;
+            size_t at = op->u.group.index;
+            cf__element_t *e = NULL;
+            if (strcmp(g, "panel") == 0 && fig->panels != NULL
+                && at < (size_t)(fig->rows * fig->cols)) {
+                owner = fig->panels[at];
+                panel = depth;
+            } else if (at < owner->count
+                       && strcmp(g, owner->els[at]->kind->name) == 0) {
+                e = owner->els[at];
+            }
+            assert_true(depth < 64);
+            stack[depth++] = e;
+        } else if (op->kind == CF__OP_END && depth > 0) {
+            o[i].owner = owner;
+            o[i].el = stack[depth - 1];
+            if (--depth == panel) {
+                owner = fig;
+                panel = -1;
+            }
+            continue;
+        }
+        o[i].owner = owner;
+        o[i].el = depth > 0 ? stack[depth - 1] : NULL;
+    }
+    return o;
+}
+
 /* The collisions of one figure, printed; their number. */
 static int
 check_figure(cf_figure_t *fig, const char *name)
@@ -149,6 +268,7 @@ check_figure(cf_figure_t *fig, const char *name)
     int w, h, bad = 0;
     size_t i, k, nt = 0;
     mask_t *masks;
+    owned_t *els;
     long n;
 
     cf__dl_init(&dl);
@@ -168,11 +288,15 @@ check_figure(cf_figure_t *fig, const char *name)
     }
     cairo_surface_destroy(page);
 
-    /* the shadings' fills are left out: a label may sit on a shading */
+    /* the shadings' fills are left out: a label may sit on a shading, and
+    ** the legend's entries on its box */
+    els = elements_of(fig, &dl);
     for (i = 0; i < dl.count; i++) {
         cf__op_t *op = &dl.ops[i];
         if (op->kind == CF__OP_GROUP
-            && (fig->els[op->u.group.index]->kind->flags & CF__KIND_SHADING))
+            && ((els[i].el != NULL
+                 && (els[i].el->kind->flags & CF__KIND_SHADING))
+                || strcmp(op->u.group.name, "legend") == 0))
             for (k = i + 1; k < dl.count && dl.ops[k].kind != CF__OP_END; k++)
                 if (dl.ops[k].kind == CF__OP_PATH)
                     dl.ops[k].u.path.paint.fill = false;
@@ -190,6 +314,10 @@ check_figure(cf_figure_t *fig, const char *name)
             continue;
         m = &masks[nt++];
         text_mask(&dl, i, w, h, m);
+        m->element = els[i].el != NULL
+                     && strcmp(els[i].el->kind->name, "label") == 0;
+        m->ax = dl.ops[i].u.text.px;
+        m->ay = dl.ops[i].u.text.py;
         n = mask_on_raster(m, ink);
         if (n > 0) {
             print_message("%s: label \"%s\" lies on ink (%ld pixels)\n",
@@ -206,6 +334,8 @@ check_figure(cf_figure_t *fig, const char *name)
             }
         }
     }
+    bad += check_anchors(masks, nt, name);
+    free(els);
     for (k = 0; k < nt; k++)
         free(masks[k].a);
     free(masks);
@@ -245,7 +375,9 @@ test_no_label_on_ink(void **state)
 }
 
 /* The test sees what it must: a label put on a stroke, two labels on one
-** another, ink on the page's edge; and passes a clean figure. */
+** another, ink on the page's edge, a label far from its point, a label
+** nearer another labelled point than its own; and passes a clean
+** figure. */
 static void
 test_detects(void **state)
 {
@@ -257,7 +389,7 @@ test_detects(void **state)
     cf_style_init(&at);
     at.place = CF_PLACE_CENTER;
     at.set |= CF_STYLE_PLACE;
-    for (k = 0; k < 4; k++) {
+    for (k = 0; k < 6; k++) {
         assert_int_equal(cf_figure_create(40, 30, CF_UNIT_MM, &fig, NULL), 0);
         assert_int_equal(cf_figure_add_polyline(fig, line, 2, false, NULL),
                          0);
@@ -276,7 +408,22 @@ test_detects(void **state)
         }
         if (k == 3)   /* clean: automatic, above the stroke */
             assert_int_equal(cf_figure_add_label(fig, 2, 0, "W", NULL), 0);
-        if (k < 3)
+        if (k == 4) { /* far from its point: 30 bp above it */
+            cf_style_t far = at;
+            far.place = CF_PLACE_N;
+            far.offset = 30;
+            far.set |= CF_STYLE_OFFSET;
+            assert_int_equal(cf_figure_add_label(fig, 2, 0, "W", &far), 0);
+        }
+        if (k == 5) { /* A's label right of B's point, nearer B */
+            cf_style_t e = at;
+            e.place = CF_PLACE_E;
+            e.offset = 6;
+            e.set |= CF_STYLE_OFFSET;
+            assert_int_equal(cf_figure_add_label(fig, 1, 0.5, "A", &e), 0);
+            assert_int_equal(cf_figure_add_label(fig, 1.4, 0.5, "B", &e), 0);
+        }
+        if (k != 3)
             assert_true(check_figure(fig, "negative") > 0);
         else
             assert_int_equal(check_figure(fig, "clean"), 0);

@@ -37,7 +37,8 @@ fig:func(f, 0, 1, { color = "black", width = 2 })
 local samples = {}
 for i = 0, 10 do samples[#samples + 1] = { i / 10, f(i / 10) } end
 fig:points(samples, { marker = "dot", marker_size = 3, color = "black",
-                      marker_color = "black" })
+                      marker_color = "black",
+                      legend = "f(i/10)\\text{: koeficienty } f_{10}" })
 
 -- labels: f at its crest; f_2 above its graph at t = 0.8; f_5 and f_10
 -- centred in the gaps of the trough at t = 0.62 (each just above its own

@@ -39,11 +39,13 @@
 
 local P = { {3,1}, {3.75,2}, {5,3}, {4,4}, {3,3}, {2,4}, {1,3}, {2.25,2} }
 -- Not the thesis's sample curve (vzorová křivka, degree 2): every caption
--- says which curve is drawn.
+-- says which curve is drawn, and so does the figure (a legend entry of the
+-- curve: its degree and knots).
 local SAMPLE = "; the curve here: p = 3, U = {0, 0, 0, 0, 0.25, 0.4, " ..
   "0.7, 0.85, 1, 1, 1, 1} on the sample points, not the thesis's sample " ..
   "curve of degree 2"
 local U = { 0, 0, 0, 0, 0.25, 0.4, 0.7, 0.85, 1, 1, 1, 1 }
+local CURVE = "p = 3,\\; U = \\{0, 0, 0, 0, 0.25, 0.4, 0.7, 0.85, 1, 1, 1, 1\\}"
 local s = bspline{ degree = 3, knots = U, points = P }
 local u = 0.5
 local L, k, mult = s:deboor(u)
@@ -75,7 +77,7 @@ local f = figure{
 f:polygon(s, { })
 f:polyline({ P[3], P[4], P[5], P[6] }, { color = "black", width = 0.9 })
 label_P(f)
-f:curve(s)
+f:curve(s, { legend = CURVE })
 f:curve(s, { range = { U[6], U[7] }, color = "darkgreen", width = 2.2 })
 f:knots(s)
 -- the ends of the span, named as in the text
@@ -132,7 +134,7 @@ for i = 3, 6 do
   g:label(P[i], string.format("P_%d", i - 1), { place = place[i] })
 end
 g:curve(s, { range = { inner_range(s, zoom, 0.001) }, color = "#9fb0d0",
-             width = 1.2 })
+             width = 1.2, legend = CURVE })
 g:deboor(s, u, { colors = level_color, width = 0.9,
                  point = { marker = "star", color = "red",
                            marker_color = "red", marker_size = 9 } })
@@ -170,7 +172,7 @@ label_P(h, { [3] = true, [4] = true })
 -- the curve thinner than in 3.5 and the new legs P_{3,1} ... P_{5,1}
 -- in blue over it: near C(u) they touch the curve
 local Q = n:points()
-h:curve(n, { width = 1.1 })
+h:curve(n, { width = 1.1, legend = CURVE })
 h:polyline({ Q[4], Q[5], Q[6], Q[7], Q[8] }, { color = "blue", width = 1.1 })
 h:knots(n)
 -- P_{5,2} above left and P_{4,2} above their points, C(u) below: outside

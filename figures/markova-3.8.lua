@@ -28,11 +28,13 @@
 
 local P = { {3,1}, {3.75,2}, {5,3}, {4,4}, {3,3}, {2,4}, {1,3}, {2.25,2} }
 -- Not the thesis's sample curve (vzorová křivka, degree 2): every caption
--- says which curve is drawn.
+-- says which curve is drawn, and so does the figure (a legend entry of the
+-- curve: its degree and knots).
 local SAMPLE = "; the curve here: p = 3, U = {0, 0, 0, 0, 0.25, 0.4, " ..
   "0.7, 0.85, 1, 1, 1, 1} on the sample points, not the thesis's sample " ..
   "curve of degree 2"
 local U = { 0, 0, 0, 0, 0.25, 0.4, 0.7, 0.85, 1, 1, 1, 1 }
+local CURVE = "p = 3,\\; U = \\{0, 0, 0, 0, 0.25, 0.4, 0.7, 0.85, 1, 1, 1, 1\\}"
 local s = bspline{ degree = 3, knots = U, points = P }
 local u = 0.5
 local L, k, mult = s:deboor(u)
@@ -84,7 +86,7 @@ local f = figure{
             "[u, 1] (Obr. 3.8: u = 0.5)" .. SAMPLE,
   width = W, height = H, window = window,
 }
-f:polygon(s, { })
+f:polygon(s, { legend = CURVE })
 label_P(f, { 0, 1, 2, 3, 4, 5, 6, 7 })
 f:curve(s, { range = { 0, u }, color = col1 })
 f:curve(s, { range = { u, 1 }, color = col2 })
@@ -134,7 +136,7 @@ do
   local a, b = u, u
   while inside(s:eval(a - 0.001), zoom) do a = a - 0.001 end
   while inside(s:eval(b + 0.001), zoom) do b = b + 0.001 end
-  g:curve(s, { range = { a, b }, color = light, width = 1.2 })
+  g:curve(s, { range = { a, b }, color = light, width = 1.2, legend = CURVE })
 end
 g:deboor(s, u, { colors = { "black", "grey", "grey", "red" }, width = 0.7 })
 g:polyline(chain1, { color = col1, width = 2.0 })
@@ -159,7 +161,7 @@ local function part(name, caption, c, range_other, color, plabels, newlabels)
   local h = figure{ name = name, caption = caption .. SAMPLE,
                     width = W, height = H, window = window }
   h:curve(s, { range = range_other, color = light, width = 1.0,
-               dash = "dashed" })
+               dash = "dashed", legend = CURVE })
   h:polygon(c, { color = color, marker_color = color, width = 0.8 })
   label_P(h, plabels)
   h:curve(c, { color = color })

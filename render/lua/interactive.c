@@ -294,9 +294,8 @@ put_figure(text_t *t, const cf_script_t *s, size_t i, char *err,
     double m[6], w, h;
     cf_diag_t diag;
     cf_diag_clear(&diag);
-    if (cf_figure_render(fig, CF_FORMAT_SVG, NULL, &svg, &size, &diag) !=
-            CF_STATUS_OK ||
-        cf_figure_page_map(fig, NULL, m, &diag) != CF_STATUS_OK) {
+    if (cf_figure_render_mapped(fig, CF_FORMAT_SVG, NULL, &svg, &size, m,
+                                &diag) != CF_STATUS_OK) {
         snprintf(err, errlen, "%sfigure '%s': %s", cf_script_figure_where(s, i),
                  name, diag.msg);
         cf_free(svg);

@@ -251,6 +251,7 @@ cf_figure_render(cf_figure_t *fig, cf_format_t format,
                  const cf_write_options_t *options, unsigned char **data,
                  size_t *size, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     return cf_figure_render_mapped(fig, format, options, data, size, NULL,
                                    diag);
 }

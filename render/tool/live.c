@@ -126,7 +126,7 @@ cf__tool_live_help(void)
         "it is refused (403), so no other page or user can drive the server.\n"
         "Moving a slider or dragging a point runs the script again in a\n"
         "fresh sandbox (the limits of render) and redraws; a script error\n"
-        "is shown in the page; saving the script redraws the page.  The\n"
+        "is shown in the page; saving the script reloads the page.  The\n"
         "page shows the current values as Lua, to paste into the script.\n"
         "\n"
         "Options:\n"

@@ -91,7 +91,8 @@ piece_cubics(cf_figure_t *fig, piece_t *pc, double tol)
     if (pc->cache != NULL && pc->cache_tol <= tol)
         return CF_STATUS_OK;
     /* polynomial curves of degree >= 4: Hermite pieces within the
-    ** a-priori bound, no fitting (rational ones: the Levien fit) */
+    ** a-priori bound, no fitting; rational ones: Hermite pieces halved on
+    ** their measured error */
     st = cf_bezier_to_cubics_bounded(pc->bez, tol, &c, &fig->err);
     if (st != CF_STATUS_OK)
         return cf__fig_fail(fig, st, "curve to cubics");

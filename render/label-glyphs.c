@@ -5,7 +5,10 @@
 ** gives its font description (D), its shaping (S) and the outlines of its
 ** glyphs (G, through cairo_glyph_path on the font's scaled font, per bp of
 ** size); then each description shapes the character set one character
-** at a time (C).
+** at a time (C), and every ordered pair of the characters of the texts
+** and of numbers (digits, point, signs, space, =) two at a time: where the
+** pair's advance differs from its characters' (kerning) a K line gives
+** the difference.
 */
 #include <math.h>
 #include <stdarg.h>
@@ -346,7 +349,86 @@ static const cf__backend_t collector = {
     nop_marker, text_op, nop_end, NULL
 };
 
-/* C lines: the character set in each description. */
+/* The one glyph and its advance (pango units) of the text s[0..n-1]
+** alone in layout l, or 0 when it is not one known glyph in one run; two
+** glyphs (ids and advances into id[], adv[]) with two = true. */
+static bool
+shaped_glyphs(PangoLayout *l, const char *s, size_t n, bool two,
+              PangoGlyph *id, int *adv, PangoFont **font)
+{
+    PangoLayoutIter *it;
+    PangoLayoutRun *run = NULL;
+    int nruns = 0, want = two ? 2 : 1, i;
+    bool ok;
+    pango_layout_set_text(l, s, (int)n);
+    if (pango_layout_get_unknown_glyphs_count(l) > 0)
+        return false;
+    /* one run (the line's end is a NULL run) */
+    it = pango_layout_get_iter(l);
+    do {
+        PangoLayoutRun *r = pango_layout_iter_get_run_readonly(it);
+        if (r != NULL) {
+            run = r;
+            nruns++;
+        }
+    } while (pango_layout_iter_next_run(it));
+    ok = nruns == 1 && run->glyphs->num_glyphs == want;
+    for (i = 0; ok && i < want; i++) {
+        const PangoGlyphInfo *g = &run->glyphs->glyphs[i];
+        id[i] = g->glyph;
+        adv[i] = g->geometry.width;
+        /* a pair placed by its advances only */
+        ok = !two || (g->geometry.x_offset == 0 && g->geometry.y_offset == 0);
+    }
+    if (ok && font != NULL)
+        *font = run->item->analysis.font;
+    pango_layout_iter_free(it);
+    return ok;
+}
+
+/* The characters paired for kerning: those of the texts (the first
+** ntext of c->chars) and those of the numbers a slider may write. */
+static bool
+paired(const collect_t *c, size_t ntext, size_t i)
+{
+    static const char numeric[] = "0123456789.,+-= ";
+    unsigned cp = c->chars[i];
+    return i < ntext || cp == 0x2212
+           || (cp < 0x80 && cp != 0 && strchr(numeric, (int)cp) != NULL);
+}
+
+/* K lines of description d: the pairs of paired characters whose advance
+** together differs from their advances alone (id[], adv[]: each
+** character's glyph and advance alone, adv < 0 when it has none). */
+static void
+kerning(collect_t *c, PangoLayout *l, int d, size_t ntext,
+        const PangoGlyph *id, const int *adv)
+{
+    size_t i, j;
+    for (i = 0; i < c->nchars && !c->failed; i++) {
+        if (adv[i] < 0 || !paired(c, ntext, i))
+            continue;
+        for (j = 0; j < c->nchars; j++) {
+            char s[16];
+            size_t n;
+            PangoGlyph g[2];
+            int a[2];
+            if (adv[j] < 0 || !paired(c, ntext, j))
+                continue;
+            n = cf__utf8_encode(c->chars[i], s);
+            n += cf__utf8_encode(c->chars[j], s + n);
+            /* the same two glyphs (not a ligature), moved apart or
+            ** together */
+            if (shaped_glyphs(l, s, n, true, g, a, NULL) && g[0] == id[i]
+                && g[1] == id[j] && a[1] == adv[j] && a[0] != adv[i])
+                putf(c, c->out, "K %d %u %u %.7g\n", d, c->chars[i],
+                     c->chars[j],
+                     (double)(a[0] - adv[i]) / PANGO_SCALE / REF_SIZE);
+        }
+    }
+}
+
+/* C lines: the character set in each description; K lines: its pairs. */
 static void
 characters(collect_t *c)
 {
@@ -354,8 +436,10 @@ characters(collect_t *c)
         0x2265, 0x2260, 0x221e, 0x2026, 0x2192, 0x2208, 0xb1, 0x3d1, 0x3d5,
         0x3d6, 0x3f5 };
     unsigned cp;
-    size_t i;
+    size_t i, ntext = c->nchars;
     int d;
+    PangoGlyph *id;
+    int *adv;
     for (cp = 0x20; cp < 0x7f; cp++)
         add_unique(&c->chars, &c->nchars, &c->capchars, cp);
     for (cp = 0x391; cp <= 0x3c9; cp++)
@@ -365,6 +449,10 @@ characters(collect_t *c)
         add_unique(&c->chars, &c->nchars, &c->capchars, extra[i]);
     if (c->ctx == NULL)
         return;
+    id = cf_alloc_array(c->nchars, sizeof *id);
+    adv = cf_alloc_array(c->nchars, sizeof *adv);
+    if (id == NULL || adv == NULL)
+        c->failed = true;
     for (d = 0; d < c->ndesc && !c->failed; d++) {
         PangoLayout *l = pango_layout_new(c->ctx);
         PangoFontDescription *fd = pango_font_description_new();
@@ -381,35 +469,22 @@ characters(collect_t *c)
         for (i = 0; i < c->nchars; i++) {
             char s[8];
             size_t n = cf__utf8_encode(c->chars[i], s);
-            PangoLayoutIter *it;
-            PangoLayoutRun *run;
-            int nruns;
-            pango_layout_set_text(l, s, (int)n);
-            if (pango_layout_get_unknown_glyphs_count(l) > 0)
-                continue;
-            /* one glyph in one run (the line's end is a NULL run) */
-            it = pango_layout_get_iter(l);
-            run = NULL;
-            nruns = 0;
-            do {
-                PangoLayoutRun *r = pango_layout_iter_get_run_readonly(it);
-                if (r != NULL) {
-                    run = r;
-                    nruns++;
-                }
-            } while (pango_layout_iter_next_run(it));
-            if (nruns == 1 && run->glyphs->num_glyphs == 1) {
-                const PangoGlyphInfo *g = &run->glyphs->glyphs[0];
-                int face = face_of(c, run->item->analysis.font);
-                put_glyph(c, run->item->analysis.font, face, g->glyph);
+            PangoFont *font;
+            adv[i] = -1;
+            if (shaped_glyphs(l, s, n, false, &id[i], &adv[i], &font)) {
+                int face = face_of(c, font);
+                put_glyph(c, font, face, id[i]);
                 putf(c, c->out, "C %d %u %d %u %.7g\n", d, c->chars[i], face,
-                     g->glyph,
-                     (double)g->geometry.width / PANGO_SCALE / REF_SIZE);
+                     id[i], (double)adv[i] / PANGO_SCALE / REF_SIZE);
+            } else {
+                adv[i] = -1;
             }
-            pango_layout_iter_free(it);
         }
+        kerning(c, l, d, ntext, id, adv);
         g_object_unref(l);
     }
+    cf_free(id);
+    cf_free(adv);
 }
 
 cf_status_t

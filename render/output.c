@@ -210,11 +210,24 @@ check_fig_format(cf_figure_t *fig, cf_format_t format, cf_diag_t *diag)
     return CF_STATUS_OK;
 }
 
-/* Check the arguments, lay out and render one format into buf. */
+/* The map data -> page bp of layout l (cf_figure_page_map's). */
+static void
+layout_map(const cf__layout_t *l, double map[6])
+{
+    map[0] = l->sx;
+    map[1] = 0;
+    map[2] = 0;
+    map[3] = -l->sy;
+    map[4] = l->ox - l->sx * l->xmin;
+    map[5] = l->oy + l->sy * l->ymin;
+}
+
+/* Check the arguments, lay out and render one format into buf; the page
+** map of that layout into map (when not NULL). */
 static cf_status_t
 render_checked(cf_figure_t *fig, cf_format_t format,
                const cf_write_options_t *options, cf__buf_t *buf,
-               cf_diag_t *diag)
+               double *map, cf_diag_t *diag)
 {
     cf_write_options_t o;
     job_t job;
@@ -227,6 +240,8 @@ render_checked(cf_figure_t *fig, cf_format_t format,
     st = make_job(fig, &o, false, &job, diag);
     if (st == CF_STATUS_OK)
         st = render_job(fig, format, &o, &job, buf, diag);
+    if (st == CF_STATUS_OK && map != NULL)
+        layout_map(&job.lay, map);
     job_free(&job);
     return st;
 }
@@ -237,6 +252,17 @@ cf_figure_render(cf_figure_t *fig, cf_format_t format,
                  size_t *size, cf_diag_t *diag)
 {
     cf_diag_clear(diag);
+    return cf_figure_render_mapped(fig, format, options, data, size, NULL,
+                                   diag);
+}
+
+cf_status_t
+cf_figure_render_mapped(cf_figure_t *fig, cf_format_t format,
+                        const cf_write_options_t *options,
+                        unsigned char **data, size_t *size, double map[6],
+                        cf_diag_t *diag)
+{
+    cf_diag_clear(diag);
     cf__buf_t buf;
     cf_status_t st;
     if (data == NULL || size == NULL)
@@ -244,7 +270,7 @@ cf_figure_render(cf_figure_t *fig, cf_format_t format,
                            "render: output pointers are NULL");
     *data = NULL;
     *size = 0;
-    st = render_checked(fig, format, options, &buf, diag);
+    st = render_checked(fig, format, options, &buf, map, diag);
     if (st != CF_STATUS_OK)
         return st;
     *data = buf.data;
@@ -303,15 +329,8 @@ cf_figure_page_map(cf_figure_t *fig, const cf_write_options_t *options,
         if (cf__figure_layout(fig, &job.lay) != CF_STATUS_OK)
             st = cf_figure_status(fig, diag);
     }
-    if (st == CF_STATUS_OK) {
-        const cf__layout_t *l = &job.lay;
-        map[0] = l->sx;
-        map[1] = 0;
-        map[2] = 0;
-        map[3] = -l->sy;
-        map[4] = l->ox - l->sx * l->xmin;
-        map[5] = l->oy + l->sy * l->ymin;
-    }
+    if (st == CF_STATUS_OK)
+        layout_map(&job.lay, map);
     job_free(&job);
     return st;
 }
@@ -423,7 +442,7 @@ cf_figure_write(cf_figure_t *fig, const char *path, cf_format_t format,
     if (path == NULL)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
                            "path is NULL");
-    st = render_checked(fig, format, options, &buf, diag);
+    st = render_checked(fig, format, options, &buf, NULL, diag);
     if (st != CF_STATUS_OK)
         return st;
     st = write_atomic(path, buf.data, buf.size, diag);

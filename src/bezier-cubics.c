@@ -24,6 +24,9 @@
 ** points; so N = ceil((max|c^(4)| / (384 tol))^(1/4)) uniform pieces are
 ** within tol, parameter for parameter, hence also in Hausdorff distance.
 ** More pieces than the Levien fit, a thousand times less work: for drawing.
+** Rational curves, which have no such cheap bound, are drawn from the
+** measured Hermite halving above (in the plane too): about four times the
+** pieces of the Levien fit for some fifteen times less work.
 */
 #include <math.h>
 #include <string.h>
@@ -139,14 +142,14 @@ check_args(const cf_bezier_t *c, double tol, cf_cubics_t **out,
     return CF_STATUS_OK;
 }
 
+static cf_status_t hermite_halving(const cf_bezier_t *c, double tol,
+                                   cf_cubics_t **out, cf_diag_t *diag);
+
 cf_status_t
 cf_bezier_to_cubics(const cf_bezier_t *c, double tol, cf_cubics_t **out,
                     cf_diag_t *diag)
 {
     cf_diag_clear(diag);
-    cf_cubics_t *r;
-    fit f;
-    double *seg;
     cf_status_t st;
 
     st = check_args(c, tol, out, diag);
@@ -194,6 +197,19 @@ cf_bezier_to_cubics(const cf_bezier_t *c, double tol, cf_cubics_t **out,
         *out = fit2;
         return CF_STATUS_OK;
     }
+    return hermite_halving(c, tol, out, diag);
+}
+
+/* The Hermite pieces of c halved until their distance measured at the
+** SAMPLES - 1 interior parameters is <= tol. */
+static cf_status_t
+hermite_halving(const cf_bezier_t *c, double tol, cf_cubics_t **out,
+                cf_diag_t *diag)
+{
+    cf_cubics_t *r;
+    fit f;
+    double *seg;
+    cf_status_t st;
     r = cf__calloc(1, sizeof *r);
     if (r == NULL)
         return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
@@ -264,8 +280,10 @@ cf_bezier_to_cubics_bounded(const cf_bezier_t *c, double tol,
     cf_status_t st = check_args(c, tol, out, diag);
     if (st != CF_STATUS_OK)
         return st;
-    if (c->rational || c->degree <= 3)
+    if (!c->rational && c->degree <= 3)
         return cf_bezier_to_cubics(c, tol, out, diag);
+    if (c->rational)
+        return hermite_halving(c, tol, out, diag);
     dim = c->dim;
     m4 = fourth_derivative_bound(c);
     if (!isfinite(m4))

@@ -30,9 +30,6 @@ local f = figure{
     .. "eight points",
   width = "15cm", height = "8.5cm",
   window = { -30, 15, -10, 15 },
-  -- the curves fitted to 0.03 bp instead of 0.01: the degree-7 rational
-  -- curve with weights up to 100 is the slowest part of a redraw
-  tolerance = 0.03,
 }
 f:plot{ x = { -30, 15 }, y = { -10, 15 }, xticks = 5, yticks = 5 }
 f:polyline(P, { color = "#8c8c8c", width = 0.5 })

@@ -77,6 +77,15 @@ CF_API cf_status_t cf_figure_render(cf_figure_t *fig, cf_format_t format,
                                     unsigned char **data, size_t *size,
                                     cf_diag_t *diag);
 
+/* cf_figure_render, and into map the page map of the very layout drawn
+** (the map cf_figure_page_map gives for these options), without laying
+** the figure out a second time (map NULL: cf_figure_render). */
+CF_API cf_status_t cf_figure_render_mapped(cf_figure_t *fig,
+                                           cf_format_t format,
+                                           const cf_write_options_t *options,
+                                           unsigned char **data, size_t *size,
+                                           double map[6], cf_diag_t *diag);
+
 /* The display list of the figure as text, one drawing operation a line
 ** (page, groups per element, clips, paths with their paint, markers, text
 ** with its source and placement), laid out as cf_figure_render would lay

@@ -294,9 +294,8 @@ put_figure(text_t *t, const cf_script_t *s, size_t i, char *err,
     double m[6], w, h;
     cf_diag_t diag;
     cf_diag_clear(&diag);
-    if (cf_figure_render(fig, CF_FORMAT_SVG, NULL, &svg, &size, &diag) !=
-            CF_STATUS_OK ||
-        cf_figure_page_map(fig, NULL, m, &diag) != CF_STATUS_OK) {
+    if (cf_figure_render_mapped(fig, CF_FORMAT_SVG, NULL, &svg, &size, m,
+                                &diag) != CF_STATUS_OK) {
         snprintf(err, errlen, "%sfigure '%s': %s", cf_script_figure_where(s, i),
                  name, diag.msg);
         cf_free(svg);
@@ -362,6 +361,17 @@ cf_interactive_run(const char *code, const char *name, const char *values,
                    size_t values_len, const cf_script_limits_t *limits,
                    FILE *out, char **json, size_t *len)
 {
+    return cf_interactive_run_error(code, name, values, values_len, limits,
+                                    out, json, len, NULL, 0);
+}
+
+cf_status_t
+cf_interactive_run_error(const char *code, const char *name,
+                         const char *values, size_t values_len,
+                         const cf_script_limits_t *limits, FILE *out,
+                         char **json, size_t *len, char *error,
+                         size_t error_len)
+{
     text_t t = { NULL, 0, 0, 0 };
     cf_script_t *s = NULL;
     cf_diag_t diag;
@@ -370,6 +380,8 @@ cf_interactive_run(const char *code, const char *name, const char *values,
     cf_status_t st;
     *json = NULL;
     *len = 0;
+    if (error != NULL && error_len > 0)
+        error[0] = '\0';
     cf_diag_clear(&diag);
     if (cf_script_create(limits, out != NULL ? out : stderr, &s, &diag) !=
         CF_STATUS_OK)
@@ -378,6 +390,8 @@ cf_interactive_run(const char *code, const char *name, const char *values,
         cf__params_give_json(cf_script_params(s), values, values_len, err,
                              sizeof err) != 0) {
         cf_script_destroy(s);
+        if (error != NULL && error_len > 0)
+            snprintf(error, error_len, "%s", err);
         put(&t, "{\"params\": [], \"figures\": [], \"error\": ");
         put_error(&t, err, 0);
         put(&t, ", \"lua\": \"\"}\n");
@@ -409,6 +423,8 @@ cf_interactive_run(const char *code, const char *name, const char *values,
             }
     }
     put(&t, "],\n\"error\": ");
+    if (error != NULL && error_len > 0)
+        snprintf(error, error_len, "%s", err);
     if (err[0] != '\0')
         put_error(&t, err, line);
     else

@@ -49,6 +49,15 @@ cf_status_t cf_interactive_run(const char *code, const char *name,
                                const cf_script_limits_t *limits, FILE *out,
                                char **json, size_t *len);
 
+/* cf_interactive_run, and the error of the run (the JSON's message: the
+** script's file:line first for an error in the script; "" when it ran)
+** into error[0..error_len-1] (NULL: not asked for). */
+cf_status_t cf_interactive_run_error(const char *code, const char *name,
+                                     const char *values, size_t values_len,
+                                     const cf_script_limits_t *limits,
+                                     FILE *out, char **json, size_t *len,
+                                     char *error, size_t error_len);
+
 #ifdef __cplusplus
 }
 #endif

@@ -169,7 +169,7 @@ do_run(struct MHD_Connection *c, server_t *sv, const request_t *rq)
     pthread_mutex_lock(&sv->run_lock);
     json = cf__live_run(sv->script, sv->limits, rq->body != NULL ? rq->body
                                                                  : "{}",
-                        rq->body != NULL ? rq->len : 2, &bad);
+                        rq->body != NULL ? rq->len : 2, &bad, NULL, 0);
     pthread_mutex_unlock(&sv->run_lock);
     if (json == NULL)
         return reply_text(c, MHD_HTTP_INTERNAL_SERVER_ERROR, "out of memory\n");

@@ -70,7 +70,8 @@ read_file(const char *path, size_t max)
 ** the values were good. */
 char *
 cf__live_run(const char *script, const cf_script_limits_t *limits,
-             const char *values, size_t len, bool *bad_values)
+             const char *values, size_t len, bool *bad_values, char *error,
+             size_t error_len)
 {
     char *code = read_file(script, (size_t)64 << 20), *json = NULL;
     size_t jlen;
@@ -93,8 +94,8 @@ cf__live_run(const char *script, const cf_script_limits_t *limits,
         }
         strcpy(code + n, "\", 0)");
     }
-    st = cf_interactive_run(code, script, values, len, limits, stderr, &json,
-                            &jlen);
+    st = cf_interactive_run_error(code, script, values, len, limits, stderr,
+                                  &json, &jlen, error, error_len);
     free(code);
     *bad_values = st == CF_STATUS_INVALID_ARG;
     return json;
@@ -125,13 +126,15 @@ cf__tool_live_help(void)
         "it is refused (403), so no other page or user can drive the server.\n"
         "Moving a slider or dragging a point runs the script again in a\n"
         "fresh sandbox (the limits of render) and redraws; a script error\n"
-        "is shown in the page; saving the script redraws the page.  The\n"
+        "is shown in the page; saving the script reloads the page.  The\n"
         "page shows the current values as Lua, to paste into the script.\n"
         "\n"
         "Options:\n"
         "  --port N            the port (default 0: a free port)\n"
         "  --once [VALUES]     print the JSON of one run and exit (VALUES:\n"
-        "                      {\"t\": 0.5, \"P\": [[0, 0], [1, 2]]}; default {})\n",
+        "                      {\"t\": 0.5, \"P\": [[0, 0], [1, 2]]}; default {});\n"
+        "                      exits 1 with the message (file:line) on a\n"
+        "                      script error, 2 on bad values\n",
         stdout);
 }
 
@@ -188,13 +191,18 @@ cf__tool_live(int argc, char **argv)
     cf__tool_fonts_init();
     if (want_once) {
         bool bad;
+        char error[1024];
         const char *v = once != NULL ? once : "{}";
-        char *json = cf__live_run(script, &limits, v, strlen(v), &bad);
+        char *json = cf__live_run(script, &limits, v, strlen(v), &bad, error,
+                                  sizeof error);
         if (json == NULL)
             return fprintf(stderr, "curvefig: out of memory\n"), EXIT_SCRIPT;
         fputs(json, stdout);
         free(json);
-        return bad ? EXIT_USAGE : 0;
+        /* the JSON carries the error too; the status and stderr say it */
+        if (error[0] != '\0')
+            fprintf(stderr, "curvefig: %s\n", error);
+        return bad ? EXIT_USAGE : error[0] != '\0' ? EXIT_SCRIPT : 0;
     }
     return cf__live_serve(script, &limits, (unsigned)port);
 }

@@ -17,9 +17,11 @@ void cf__tool_live_help(void);
 
 /* One run of the script file with the values' JSON text: the JSON of
 ** render/lua/interactive.h (malloc'd; NULL when memory ran out);
-** *bad_values when the values were not valid. */
+** *bad_values when the values were not valid; the run's error message
+** into error[0..error_len-1] ("" when it ran; error NULL: not asked). */
 char *cf__live_run(const char *script, const cf_script_limits_t *limits,
-                   const char *values, size_t len, bool *bad_values);
+                   const char *values, size_t len, bool *bad_values,
+                   char *error, size_t error_len);
 /* A text that changes whenever the script file is saved. */
 void cf__live_version(const char *script, char out[64]);
 

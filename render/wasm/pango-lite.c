@@ -9,6 +9,8 @@
 **   G face glyph x0 y0 x1 y1 M x y L x y C ... Z  a glyph's ink box and
 **                                                 outline per bp of size
 **   C d codepoint face glyph advance              a character alone
+**   K d first second kern                         a pair's advance less
+**                                                 its characters' (per bp)
 **   S d size baseline lx ly lw lh ix iy iw ih unknown n
 **     (face glyph x y) * n  bytes text            a text as pango shaped
 **                                                 it (pango units)
@@ -16,8 +18,8 @@
 ** A layout whose description, size and text were shaped at export is
 ** that shaping; another is composed from its characters (C) in the
 ** description of that family, style and weight (or, failing that, of that
-** style and weight), without kerning; characters without data are
-** unknown glyphs, drawn as nothing.
+** style and weight), two characters with a K line moved by its kern;
+** characters without data are unknown glyphs, drawn as nothing.
 */
 #include <math.h>
 #include <stdlib.h>
@@ -42,6 +44,8 @@ typedef struct glyph {
 
 typedef struct chr { int d; unsigned cp; int glyph; double advance; } chr_t;
 
+typedef struct kern { int d; unsigned first, second; double kern; } kern_t;
+
 typedef struct placed { int glyph; int x, y; } placed_t;
 
 typedef struct shaped {
@@ -60,6 +64,8 @@ static struct {
     int ng;
     chr_t *c;
     int nc;
+    kern_t *k;
+    int nk;
     shaped_t *s;
     int ns;
 } tab;
@@ -101,6 +107,7 @@ free_tables(void)
     free(tab.d);
     free(tab.g);
     free(tab.c);
+    free(tab.k);
     free(tab.s);
     memset(&tab, 0, sizeof tab);
 }
@@ -291,6 +298,17 @@ parse_line(const char *p)
             return -1;
         c = (chr_t){ (int)v[0], (unsigned)v[1], k, a };
         tab.c[tab.nc++] = c;
+        return 0;
+    }
+    case 'K': {
+        kern_t k;
+        if ((p = inum(p + 1, &v[0])) == NULL || (p = inum(p, &v[1])) == NULL
+            || (p = inum(p, &v[2])) == NULL || (p = num(p, &a)) == NULL
+            || v[0] < 0 || v[0] >= tab.nd || v[1] < 0 || v[2] < 0
+            || grow((void **)&tab.k, tab.nk, sizeof *tab.k) != 0)
+            return -1;
+        k = (kern_t){ (int)v[0], (unsigned)v[1], (unsigned)v[2], a };
+        tab.k[tab.nk++] = k;
         return 0;
     }
     case 'S':
@@ -514,12 +532,26 @@ utf8(const char *s, size_t len, size_t i, unsigned *cp)
     return n;
 }
 
+/* The kern (per bp) between characters first and second in
+** description d: 0 without a K line. */
+static double
+kern_of(int d, unsigned first, unsigned second)
+{
+    int i;
+    for (i = 0; i < tab.nk; i++)
+        if (tab.k[i].d == d && tab.k[i].first == first
+            && tab.k[i].second == second)
+            return tab.k[i].kern;
+    return 0;
+}
+
 static void
 shape(PangoLayout *l)
 {
     int d = pick_desc(&l->fd), size = (int)lround(l->fd.size), i;
     double sz = l->fd.size / PANGO_SCALE, x = 0;
     size_t k;
+    unsigned prev = 0;    /* the last character placed (0: none) */
     int any = 0;
     double ink[4] = { 0, 0, 0, 0 };
     if (l->valid)
@@ -554,8 +586,13 @@ shape(PangoLayout *l)
                 c = &tab.c[i];
         if (c == NULL) {
             l->shape.unknown++;
+            prev = 0;
             continue;
         }
+        /* the pair with the character before */
+        if (prev != 0)
+            x += kern_of(d, prev, cp) * sz;
+        prev = cp;
         {
             const glyph_t *g = &tab.g[c->glyph];
             placed_t *p = &l->shape.g[l->shape.n++];

@@ -1,9 +1,31 @@
 // The engine of the live server's page (render/tool/live-server.c): a run
 // is a POST of the values to ./run; watch() long-polls ./wait and calls
-// back when the script file was saved.
+// back when the script file was saved; reload(values) reloads the page
+// (the same address, so the same token) and keeps the values for it in
+// sessionStorage, where saved() takes them back once.
 function CurvefigLiveEngine() {
   'use strict';
   var base = location.pathname.replace(/[^/]*$/, '');
+  var key = 'curvefig-values:' + base;
+  this.saved = function () {
+    var text = null, v = null;
+    try {
+      text = sessionStorage.getItem(key);
+      sessionStorage.removeItem(key);
+      v = text === null ? null : JSON.parse(text);
+    } catch (e) {
+      v = null;   // storage refused, or not JSON: the defaults
+    }
+    return v !== null && typeof v === 'object' && !Array.isArray(v) ? v : {};
+  };
+  this.reload = function (values) {
+    try {
+      sessionStorage.setItem(key, JSON.stringify(values));
+    } catch (e) {
+      // no storage: the reloaded page starts from the defaults
+    }
+    location.reload();
+  };
   this.run = function (values) {
     return fetch(base + 'run', {
       method: 'POST',

@@ -5,7 +5,13 @@
 // returns a Promise of the JSON of one run (render/lua/interactive.h),
 // values = { t: 0.75, P: [[x, y], ...] }.  The live server's engine POSTs
 // to the server (live.js); the page of -f html computes in WebAssembly.
-// An engine may have watch(callback): the page runs again when it calls.
+// An engine may have watch(callback), called when the script was saved:
+// the page runs the script again; when that run succeeds and the engine
+// has reload(values), the page is reloaded through it (new or removed
+// sliders come with the new page), else the reply is shown in place (a
+// script that fails keeps the drawing, faded, under its error).  An
+// engine's saved() gives the values to start from (those of the page
+// before the reload), else the defaults.
 //
 // The DOM, the same for every engine (the browser tests rely on it):
 //   #cf-controls           one .cf-slider per slider:
@@ -21,7 +27,8 @@
 function CurvefigPage(root, engine) {
   'use strict';
   var svgNS = 'http://www.w3.org/2000/svg';
-  var values = {};          // what the next run sends
+  var values = engine.saved ? engine.saved() : {};  // what the next run sends
+  var reloadOnGood = false; // the script was saved: reload once it runs
   var params = [];          // the declarations of the last good reply
   var signature = null;     // of the declarations, to rebuild on a change
   var inFlight = false, pending = false, runs = 0;
@@ -279,7 +286,14 @@ function CurvefigPage(root, engine) {
     pending = false;
     root.dataset.busy = '1';
     var sent = JSON.parse(JSON.stringify(values));
+    var reload = reloadOnGood;
+    reloadOnGood = false;
     engine.run(sent).then(function (reply) {
+      if (reload && reply.error === null && engine.reload) {
+        pending = false;
+        engine.reload(values);
+        return;
+      }
       show(reply);
     }, function (err) {
       error.textContent = 'no answer: ' + err;
@@ -299,6 +313,11 @@ function CurvefigPage(root, engine) {
     signature = null;
     request();
   });
-  if (engine.watch) engine.watch(function () { request(); });
+  if (engine.watch) {
+    engine.watch(function () {
+      reloadOnGood = true;
+      request();
+    });
+  }
   request();
 }

@@ -279,8 +279,11 @@ def wait_for(drv, js, timeout=30):
 
 
 def test_saving(drv, tool, src):
-    """Saving the script redraws the page: a mistake shows its message
-    and line in the page, the fix brings the figure back."""
+    """Saving the script: a mistake shows its message and line in the
+    page over the faded drawing (no reload: the drawing stays); the save
+    that fixes it, and adds a slider, reloads the page at the same
+    address (the token still works) with the values set before kept and
+    the new slider shown."""
     tmp = tempfile.mkdtemp(prefix='cf-browser-')
     script = os.path.join(tmp, 'decasteljau.lua')
     shutil.copy(os.path.join(src, 'figures', 'interactive',
@@ -294,8 +297,14 @@ def test_saving(drv, tool, src):
         url = re.search(r'http://\S+/', p.stdout.readline() +
                         p.stdout.readline()).group(0)
         drv.get(url)
-        settle(drv, 0)
+        n = settle(drv, 0)
         time.sleep(0.3)     # the long poll has its version
+        # a value set in the page, which the reload must keep
+        drv.find_element(By.ID, 'cf-slider-t').send_keys(Keys.PAGE_UP)
+        settle(drv, n)
+        moved = drv.find_element(By.ID, 'cf-slider-t').get_attribute('value')
+        check(moved not in ('0.75', None), 'saving: t moved to %s' % moved)
+        drv.execute_script('window.cfBeforeSave = true;')
         line = good.split('\n').index('local c = bezier(P)') + 2
         with open(script, 'w') as f:
             f.write(good.replace('local c = bezier(P)',
@@ -308,12 +317,41 @@ def test_saving(drv, tool, src):
         check(wait_for(drv, 'return document.getElementById("cf-figures")'
                        '.classList.contains("cf-stale");'),
               '... the figure stays, faded')
+        check(drv.execute_script('return window.cfBeforeSave === true;'),
+              '... in the same page (no reload for a failing script)')
+        fixed = good.replace('default = 0.75', 'default = 0.5').replace(
+            'local c = bezier(P)',
+            'local k = slider{ name = "k", label = "k", min = 0, max = 2, '
+            'default = 1.5 }\nlocal c = bezier(P)')
         with open(script, 'w') as f:
-            f.write(good.replace('default = 0.75', 'default = 0.5'))
-        back = wait_for(drv, 'var e = document.getElementById("cf-error");'
-                        'return e.hidden && !document.getElementById('
-                        '"cf-figures").classList.contains("cf-stale");')
-        check(back, 'saving the fixed script brings the figure back')
+            f.write(fixed)
+        reloaded = wait_for(drv, 'return window.cfBeforeSave === undefined '
+                            '&& document.getElementById("cf-slider-k") '
+                            '!== null;')
+        check(reloaded, 'saving the fixed script with a new slider reloads '
+              'the page, which shows the slider')
+        n = settle(drv, 0)
+        check(drv.current_url == url, '... at the same address %s (%s)'
+              % (url, drv.current_url))
+        back = drv.execute_script(
+            'var e = document.getElementById("cf-error");'
+            'return e.hidden && document.querySelector('
+            '"#cf-figures svg") !== null && !document.getElementById('
+            '"cf-figures").classList.contains("cf-stale");')
+        check(back, '... the token still works: the figure is back')
+        kept = drv.find_element(By.ID, 'cf-slider-t').get_attribute('value')
+        check(kept == moved, '... t kept its value %s (not the new default '
+              '0.5): %s' % (moved, kept))
+        check(drv.find_element(By.ID, 'cf-slider-k').get_attribute('value')
+              == '1.5', '... the new slider k at its default 1.5')
+        lua = drv.find_element(By.ID, 'cf-lua').text
+        check('k = 1.5' in lua and 't = %s' % moved in lua,
+              '... the Lua text has both values: %r' % lua)
+        # the reloaded page runs on: a slider of the new page still draws
+        drv.find_element(By.ID, 'cf-slider-k').send_keys(Keys.PAGE_DOWN)
+        settle(drv, n)
+        check('k = 1.5' not in drv.find_element(By.ID, 'cf-lua').text,
+              '... and the new slider runs the script')
         logs = [e for e in drv.get_log('browser')
                 if e['level'] in ('SEVERE', 'WARNING')]
         check(logs == [], 'saving: no console errors %s' % logs)

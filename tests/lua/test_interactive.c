@@ -270,6 +270,31 @@ test_script_error_in_json(void **state)
     assert_non_null(strstr(json, "\"name\": \"t\""));
     assert_non_null(strstr(json, "\"figures\": []"));
     free(json);
+    /* the message also outside the JSON; "" for a good run, the values'
+    ** error for bad values */
+    {
+        char msg[200] = "x";
+        assert_int_equal(cf_interactive_run_error(code, "inter.lua",
+                                                  "{\"t\": 0.5}", 10, NULL,
+                                                  sink, &json, &len, msg,
+                                                  sizeof msg),
+                         CF_STATUS_OK);
+        assert_string_equal(msg, "inter.lua:3: broken at 0.5");
+        free(json);
+        assert_int_equal(cf_interactive_run_error(
+                             "figure{ name = 'a' }:points{ {0, 0}, {1, 1} }\n",
+                             "inter.lua", NULL, 0,
+                             NULL, sink, &json, &len, msg, sizeof msg),
+                         CF_STATUS_OK);
+        assert_string_equal(msg, "");
+        free(json);
+        assert_int_equal(cf_interactive_run_error(code, "inter.lua", "{", 1,
+                                                  NULL, sink, &json, &len,
+                                                  msg, sizeof msg),
+                         CF_STATUS_INVALID_ARG);
+        assert_non_null(strstr(msg, "values"));
+        free(json);
+    }
     /* a points list dragged in a figure the script does not make */
     code = "points{ name = 'P', default = { {0, 0} }, figure = 'nope' }\n"
            "figure{ name = 'a' }\n";

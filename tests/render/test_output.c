@@ -149,6 +149,45 @@ test_byte_identical(void **state)
     cf_figure_destroy(b);
 }
 
+/* cf_figure_render_mapped: the bytes of cf_figure_render and the map of
+** cf_figure_page_map, from one layout, on the page as given and cropped
+** to the ink (where the map moves by the crop). */
+static void
+test_render_mapped(void **state)
+{
+    cf_figure_t *fig = build_figure(false);
+    cf_write_options_t o;
+    int tight;
+    (void)state;
+    cf_write_options_init(&o);
+    for (tight = 0; tight < 2; tight++) {
+        double map[6], want[6];
+        unsigned char *data = NULL;
+        size_t size = 0;
+        blob_t ref;
+        o.tight = tight;
+        ref = render(fig, CF_FORMAT_SVG, &o);
+        assert_int_equal(cf_figure_page_map(fig, &o, want, NULL), 0);
+        assert_int_equal(cf_figure_render_mapped(fig, CF_FORMAT_SVG, &o,
+                                                 &data, &size, map, NULL),
+                         0);
+        assert_int_equal(size, ref.size);
+        assert_memory_equal(data, ref.data, size);
+        assert_memory_equal(map, want, sizeof map);
+        /* a real map: the data box of 90 x 70 mm, y up */
+        assert_true(map[0] > 1 && map[3] < -1 && map[1] == 0 && map[2] == 0);
+        cf_free(data);
+        cf_free(ref.data);
+        /* no map asked for: cf_figure_render */
+        assert_int_equal(cf_figure_render_mapped(fig, CF_FORMAT_SVG, &o,
+                                                 &data, &size, NULL, NULL),
+                         0);
+        assert_true(size > 100);
+        cf_free(data);
+    }
+    cf_figure_destroy(fig);
+}
+
 static void
 test_no_clock_in_files(void **state)
 {
@@ -1252,6 +1291,7 @@ main(int argc, char **argv)
     tool_path = argc > 1 ? argv[1] : NULL;
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_byte_identical),
+        cmocka_unit_test(test_render_mapped),
         cmocka_unit_test(test_no_clock_in_files),
         cmocka_unit_test(test_svg_parses_with_librsvg),
         cmocka_unit_test(test_page_is_ink_box),

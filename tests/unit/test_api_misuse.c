@@ -715,6 +715,8 @@ test_figure(void **state)
     BAD(cf_figure_render(NULL, CF_FORMAT_SVG, NULL, &data, &size, NULL));
     BAD(cf_figure_ink_box(NULL, NULL, box, &pw, &ph, NULL));
     BAD(cf_figure_page_map(NULL, NULL, box6, NULL));
+    BAD(cf_figure_render_mapped(NULL, CF_FORMAT_SVG, NULL, &data, &size,
+                                box6, NULL));
     {
         char *glyphs = NULL;
         BAD(cf_figures_glyph_data(NULL, 1, &glyphs, &size, NULL));
@@ -791,6 +793,8 @@ test_figure(void **state)
     assert_null(data);
     BAD(cf_figure_ink_box(fig, NULL, NULL, &pw, &ph, NULL));
     BAD(cf_figure_page_map(fig, NULL, NULL, NULL));
+    BAD(cf_figure_render_mapped(fig, CF_FORMAT_SVG, NULL, &data, NULL, box6,
+                                NULL));
     BAD(cf_figures_glyph_data(&fig, 1, NULL, &size, NULL));
     BAD(cf_figure_dump(fig, NULL, NULL, &size, NULL));
     BAD(cf_figure_set_clip(NULL, true));

@@ -805,10 +805,9 @@ test_to_cubics_bounded(void **state)
         cf_cubics_destroy(cu);
         cf_bezier_destroy(c);
     }
-    /* degree <= 3 and rational curves: exactly cf_bezier_to_cubics */
-    for (int it = 0; it < 4; it++) {
-        bool rat = it >= 2;
-        c = random_curve(&r, 2, rat ? 2 + it : 3, rat, 5.0);
+    /* polynomial curves of degree <= 3: exactly cf_bezier_to_cubics */
+    for (int n = 0; n <= 3; n++) {
+        c = random_curve(&r, 2, n, false, 5.0);
         assert_int_equal(cf_bezier_to_cubics_bounded(c, 1e-3, &cu, NULL),
                          CF_STATUS_OK);
         assert_int_equal(cf_bezier_to_cubics(c, 1e-3, &ref, NULL),
@@ -818,6 +817,55 @@ test_to_cubics_bounded(void **state)
                             8 * cu->count * sizeof *cu->pts);
         cf_cubics_destroy(cu);
         cf_cubics_destroy(ref);
+        cf_bezier_destroy(c);
+    }
+    /* rational curves, degrees 2..9 in the plane and in R^3, weights 0.2..5
+    ** and Example 5.4.1's (seed 001: eight points, one weight of 100):
+    ** Hermite pieces halved on their measured parametric error, so the
+    ** chain is C1 (the curve's own derivative at every join) and within
+    ** tol at 257 parameters of every piece (independent of the 47 the
+    ** fit measures; 5 % more allowed because both sample) and two-sided */
+    for (int it = 0; it < 18; it++) {
+        static const double P[] = { -10.0, 0.0, -3.0, 7.0, 1.1, -7.2, 4.3,
+                                    -8.5, -16.0, 12.0, -2.1, 1.7, -8.2, 1.4,
+                                    12.2, 5.4 };
+        double w[8] = { 1, 1, 1, 1, 1, 1, 1, 1 }, d0[6], d1[6];
+        int n = 2 + it % 8;
+        size_t dim = 2 + (size_t)(it / 8) % 2;
+        double tol = it % 3 == 0 ? 1e-2 : it % 3 == 1 ? 1e-4 : 1e-6;
+        if (it >= 16) {
+            w[it == 16 ? 3 : 6] = 100.0;
+            assert_int_equal(cf_bezier_create(2, 7, P, w, &c, NULL),
+                             CF_STATUS_OK);
+            dim = 2;
+            n = 7;
+        } else {
+            c = random_curve(&r, dim, n, true, 10.0);
+        }
+        assert_int_equal(cf_bezier_to_cubics_bounded(c, tol, &cu, NULL),
+                         CF_STATUS_OK);
+        assert_true(cu->max_error <= tol && cu->max_error > 0.0);
+        for (size_t i = 0; i < cu->count; i++) {
+            const double *sg = cu->pts + 4 * dim * i;
+            double h = cu->t[i + 1] - cu->t[i];
+            for (int j = 0; j <= 256; j++)
+                assert_true(parametric_error(c, cu, i, j / 256.0)
+                            <= 1.05 * tol);
+            cf_bezier_eval_derivs(c, cu->t[i], 1, d0);
+            cf_bezier_eval_derivs(c, cu->t[i + 1], 1, d1);
+            for (size_t k = 0; k < dim; k++) {
+                double sc = 1e-12 * curve_size(c) * 1e3;
+                tu_assert_close(sg[k], d0[k], 0, sc);
+                tu_assert_close(sg[3 * dim + k], d1[k], 0, sc);
+                tu_assert_close(3 * (sg[dim + k] - sg[k]) / h, d0[dim + k],
+                                1e-9, sc);
+                tu_assert_close(3 * (sg[3 * dim + k] - sg[2 * dim + k]) / h,
+                                d1[dim + k], 1e-9, sc);
+            }
+        }
+        if (cu->count <= 60)
+            check_cubics(c, cu, 1.05 * tol);
+        cf_cubics_destroy(cu);
         cf_bezier_destroy(c);
     }
     /* errors: NULL, a bad tolerance, a fourth derivative that overflows;

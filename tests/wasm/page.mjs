@@ -8,7 +8,11 @@
 // The same at a slider value the defaults never showed, against `curvefig
 // live --once VALUES`: its labels are composed in the page from the
 // characters' glyph data.  Then twenty runs with a slider moving: the time
-// of one run (median, the page's redraw after an input), printed.
+// of one run (median, the page's redraw after an input), printed.  Last,
+// tests/wasm/kerning.lua, whose text has kerned pairs (AV, To, ...): its
+// glyph data must carry their kerns (K lines), and its page composed at
+// another value must match the native SVG with no bad pixel (without the
+// kerns, a label 11 pt wide is off by a pixel or more at 144 dpi).
 //   node page.mjs CURVEFIG SOURCE_DIR
 import { execFileSync, spawnSync } from 'child_process';
 import { mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync }
@@ -92,6 +96,34 @@ for (const file of examples) {
               times[10].toFixed(0) + ' ms median, ' +
               times[18].toFixed(0) + ' ms 95th percentile (' +
               slider.name + ' over its range)');
+}
+{
+  const script = join(src, 'tests', 'wasm', 'kerning.lua');
+  execFileSync(tool, ['render', script, '-f', 'html,svg', '-o', dir]);
+  const html = readFileSync(join(dir, 'kerning.html'), 'utf8');
+  // A V in the text's description: moved together (a negative kern)
+  const av = /\\nK (\d+) 65 86 (-[0-9.e-]+)/.exec(html);
+  console.log((av ? 'ok   ' : 'FAIL ') + 'kerning: the glyph data kern A V'
+              + (av ? ' by ' + av[2] + ' per bp' : ''));
+  if (!av)
+    failures++;
+  const engine = engineOf(html);
+  for (const v of [{}, { t: 0.37 }, { t: 0.91 }]) {
+    const r = await engine.run(v);
+    const native = JSON.parse(execFileSync(tool, ['live', script, '--once',
+                                                   JSON.stringify(v)]));
+    writeFileSync(join(dir, 'kerning-wasm.svg'), r.figures[0].svg);
+    writeFileSync(join(dir, 'kerning-native.svg'), native.figures[0].svg);
+    const c = spawnSync(tool, ['compare', join(dir, 'kerning-wasm.svg'),
+                               join(dir, 'kerning-native.svg'),
+                               '--max-bad', '0']);
+    const verdict = (c.stdout.toString() + c.stderr.toString()).trim()
+      .split('\n').pop();
+    console.log((c.status === 0 ? 'ok   ' : 'FAIL ') + 'kerning at '
+                + JSON.stringify(v) + ': ' + verdict);
+    if (c.status !== 0)
+      failures++;
+  }
 }
 rmSync(dir, { recursive: true });
 process.exit(failures ? 1 : 0);

@@ -253,7 +253,8 @@ warn(cf_figure_t *fig, const char *fmt, ...)
 ** its index, or fig->count when none is found alone. */
 static size_t
 what_is_under(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
-              size_t lab, bool automatic, cairo_surface_t *mask)
+              size_t lab, bool automatic, cairo_surface_t *mask,
+              const int *px)
 {
     size_t j, worst = fig->count;
     long most = 0;
@@ -273,7 +274,8 @@ what_is_under(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
         clear(r->cr1);
         if (raster_element(fig, j, lay, r, r->cr1) != CF_STATUS_OK)
             return fig->count;
-        n = common_pixels(r->one, mask, NULL);
+        /* the mask is empty outside the label's box px */
+        n = common_pixels(r->one, mask, px);
         if (n > most) {
             most = n;
             worst = j;
@@ -331,7 +333,7 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
         cairo_set_source_surface(mcr, r->one, 0, 0);
         cairo_paint(mcr);
         cairo_destroy(mcr);
-        j = what_is_under(fig, lay, r, i, automatic, mask);
+        j = what_is_under(fig, lay, r, i, automatic, mask, px);
         cairo_surface_destroy(mask);
         if (j < fig->count)
             warn(fig, "label \"%s\" (%s%s) lies on %s %zu", t->src,

@@ -25,6 +25,8 @@ map_t(const cf__driver_t *dr, double t)
 static cf_status_t
 emit(cf__driver_t *dr, const cf__fit_t *f, double a, double b)
 {
+    if (dr->rep.segments >= CF__OFFSET_MAX_PIECES)
+        return CF_STATUS_NO_CONVERGENCE;
     dr->rep.segments++;
     dr->rep.max_error = fmax(dr->rep.max_error, f->err);
     if (!(f->err <= dr->tol))
@@ -66,6 +68,8 @@ typedef struct plist {
 static cf_status_t
 plist_add(plist *l, const cf__fit_t *f, double a, double b)
 {
+    if (l->n >= CF__OFFSET_MAX_COVER)
+        return CF_STATUS_NO_CONVERGENCE;
     if (l->n == l->cap) {
         size_t cap = l->cap ? 2 * l->cap : 8;
         piece *np = cf__realloc_array(l->p, cap, sizeof *np);

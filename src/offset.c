@@ -101,6 +101,7 @@ check_options(const cf_offset_options_t *opt, double d, cf_diag_t *diag)
 ** OFFSET_RESOLUTION units could never be met: the greedy cover would shrink
 ** its pieces to the minimum width and never end.  It is refused instead. */
 #define OFFSET_RESOLUTION 4096.0
+#define OFFSET_SCALE_MAX 1e100
 
 static cf_status_t
 check_resolution(const cf_bezier_t *const *pieces, size_t n, double d,
@@ -116,6 +117,13 @@ check_resolution(const cf_bezier_t *const *pieces, size_t n, double d,
                 scale = fmax(scale, fabs(q[j] / w));
         }
     }
+    /* the fits take squares and cubes of lengths of the offset's size
+    ** (distances, areas, moments): beyond OFFSET_SCALE_MAX they overflow */
+    if (!(scale <= OFFSET_SCALE_MAX))
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "offset coordinates of size %g (distance %g) are "
+                         "too large (at most %g: the fits' cubes of them "
+                         "overflow)", scale, d, OFFSET_SCALE_MAX);
     floor_tol = OFFSET_RESOLUTION * DBL_EPSILON * scale;
     if (!(tol >= floor_tol))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
@@ -254,6 +262,13 @@ fail:
     }
     if (st == CF_STATUS_NO_MEMORY)
         return cf__error(diag, st, -1, "out of memory (offset)");
+    if (st == CF_STATUS_NO_CONVERGENCE)
+        return cf__error(diag, st, -1,
+                         "the offset at distance %g does not converge: "
+                         "more than %d pieces of one interval or %d in "
+                         "all would be needed for tolerance %g", d,
+                         CF__OFFSET_MAX_COVER, CF__OFFSET_MAX_PIECES,
+                         opt.tolerance);
     return cf__error(diag, st, -1, "offset failed: %s",
                      cf_status_to_string(st));
 }

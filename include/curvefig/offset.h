@@ -40,7 +40,10 @@
 ** a minimum parameter width (1e-9 of its interval) it is kept and
 ** report.converged is false.  A tolerance below what doubles resolve,
 ** 4096 DBL_EPSILON times the largest of |d| and the control points'
-** coordinates (about 9e-13 of that size), is refused (INVALID_ARG).
+** coordinates (about 9e-13 of that size), is refused (INVALID_ARG), and
+** so are coordinates or distances beyond 1e100 (the fits' cubes of them
+** overflow).  A cover that would take more than 20,000 pieces of one
+** cusp-free interval, or 2,000,000 in all, ends with NO_CONVERGENCE.
 **
 ** Joins.  Where c' = 0 inside a curve (a cusp of the base curve, e.g.
 ** (0,0) (128,128) (128,0) (0,128)) and between Bézier pieces of a spline

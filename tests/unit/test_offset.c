@@ -1297,6 +1297,13 @@ test_bad_arguments(void **state)
     opt.tolerance = 0.99 * 4096 * DBL_EPSILON * 1e9;
     assert_int_equal(cf_bezier_offset(c, 1e9, &opt, &raw, NULL, NULL, NULL),
                      CF_STATUS_INVALID_ARG);
+    /* a distance whose cubes overflow, with a tolerance it could meet */
+    opt.tolerance = 1e200;
+    cf_diag_clear(&diag);
+    assert_int_equal(cf_bezier_offset(c, 1e200, &opt, &raw, NULL, NULL,
+                                      &diag),
+                     CF_STATUS_INVALID_ARG);
+    assert_non_null(strstr(diag.msg, "too large"));
     cf_offset_options_init(&opt);
     opt.method = (cf_offset_method_t)7;
     assert_int_equal(cf_bezier_offset(c, 1, &opt, &raw, NULL, NULL, NULL),

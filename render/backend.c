@@ -20,8 +20,8 @@ typedef struct play {
     int depth;
 } play_t;
 
-/* A label whose halo is the page's background, on a transparent page and
-** on every page it is drawn on: its halo knocks out the ink under it.
+/* A label with a halo (in the page's background colour) on a transparent
+** page, on every page it is drawn on: its halo knocks out the ink under it.
 ** On one page of every step (step 0: PGF) a label that an
 ** overlay shows on some steps only is no knockout: the ink would be
 ** missing on the others. */
@@ -29,7 +29,7 @@ static bool
 is_knockout(const play_t *pl, const cf__op_t *op)
 {
     return op->kind == CF__OP_TEXT && pl->transparent
-        && op->u.text.halo > 0 && op->u.text.halo_background
+        && op->u.text.halo > 0
         && !(pl->step == 0 && pl->overlay_bits != 0);
 }
 
@@ -56,9 +56,9 @@ draw_text(const play_t *pl, const cf__op_t *op, const cf__backend_t *be,
     bool ko = is_knockout(pl, op);
     if (pass != PASS_ALL && (pass == PASS_KNOCKOUTS) != ko)
         return;
-    /* a background halo on a transparent page paints nothing: it is a
-    ** knockout, or (no knockouts drawn) left out */
-    if (pl->transparent && t.halo_background)
+    /* a halo on a transparent page paints nothing: it is a knockout, or
+    ** (no knockouts drawn) left out */
+    if (pl->transparent)
         t.halo = 0;
     be->draw_text(ctx, &t);
 }

@@ -90,11 +90,10 @@ typedef struct cf__text_op {
     double ink[4];           /* ink box relative to the origin */
     cf_color_t color;
     double opacity;
-    double halo;             /* > 0: a border of halo_color first */
+    double halo;             /* > 0: a border of halo_color (the page's
+                                background) first; on a transparent page
+                                a knockout (render/backend.h) */
     cf_color_t halo_color;
-    bool halo_background;    /* halo_color is the page's background: on a
-                                transparent page the halo is a knockout
-                                (render/backend.h) */
 } cf__text_op_t;
 
 typedef enum cf__op_kind {

@@ -133,7 +133,6 @@ cf__text_draw(cf_figure_t *fig, cf__text_t *t, const cf_style_t *s,
             bg.r = bg.g = bg.b = bg.a = 1;
         op.halo = s->halo;
         op.halo_color = bg;
-        op.halo_background = true;
     }
     cf__dl_text(dl, &op);
     return CF_STATUS_OK;

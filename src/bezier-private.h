@@ -81,4 +81,8 @@ cf_status_t cf__bezier_eval_many_fast(const cf_bezier_t *c, const double *t,
 bool cf__bezier_deriv_many_fast(const cf_bezier_t *c, const double *t,
                                 size_t n, int k, double *out);
 
+/* Largest |coordinate| of the Cartesian control points (the curve's size,
+** for relative tolerances). */
+double cf__bezier_size(const cf_bezier_t *c);
+
 #endif

@@ -222,10 +222,8 @@ cf_bezier_get_weights(const cf_bezier_t *c, double *out)
         out[i] = c->rational ? c->pts[(size_t)i * c->hdim + c->dim] : 1.0;
 }
 
-/* Largest |coordinate| of the Cartesian control points (the curve's size,
-** for relative tolerances). */
-static double
-curve_size(const cf_bezier_t *c)
+double
+cf__bezier_size(const cf_bezier_t *c)
 {
     double m = 0.0;
     for (int i = 0; i <= c->degree; i++) {
@@ -256,7 +254,7 @@ deriv_norm2(const cf_bezier_t *c, double t, int j)
 static int
 first_nonzero_deriv(const cf_bezier_t *c, double t)
 {
-    double size = curve_size(c), scale = 1.0;
+    double size = cf__bezier_size(c), scale = 1.0;
     int n = c->degree, jmax = c->rational ? 2 * n : n;
     if (jmax > MAXN)
         jmax = MAXN;

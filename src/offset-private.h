@@ -95,9 +95,6 @@ double cf__deriv_scale(const cf_bezier_t *c);
 
 /* ---- the chain driver (offset-chain.c) ------------------------------- */
 
-/* The cover of pieces by fitted cubics: splits at offset cusps and zeros
-** of c', greedy longest pieces (Levien) or bisection (Tiller-Hanson), round
-** joins; the report accumulates. */
 /* The most pieces the greedy cover of one cusp-free interval takes, and
 ** one offset chain in all: far beyond what a reachable tolerance needs (a
 ** cubic at 1e-9 of its size takes some tens), so that a fit that cannot
@@ -106,6 +103,9 @@ double cf__deriv_scale(const cf_bezier_t *c);
 #define CF__OFFSET_MAX_COVER 20000
 #define CF__OFFSET_MAX_PIECES 2000000
 
+/* The cover of pieces by fitted cubics: splits at offset cusps and zeros
+** of c', greedy longest pieces (Levien) or bisection (Tiller-Hanson), round
+** joins; the report accumulates. */
 typedef struct cf__driver {
     cf__chain_t chain;
     double tol;

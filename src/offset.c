@@ -108,15 +108,8 @@ check_resolution(const cf_bezier_t *const *pieces, size_t n, double d,
                  double tol, cf_diag_t *diag)
 {
     double scale = fabs(d), floor_tol;
-    for (size_t i = 0; i < n; i++) {
-        const cf_bezier_t *c = pieces[i];
-        for (int k = 0; k <= c->degree; k++) {
-            const double *q = c->pts + (size_t)k * c->hdim;
-            double w = c->rational ? q[c->dim] : 1.0;
-            for (size_t j = 0; j < c->dim; j++)
-                scale = fmax(scale, fabs(q[j] / w));
-        }
-    }
+    for (size_t i = 0; i < n; i++)
+        scale = fmax(scale, cf__bezier_size(pieces[i]));
     /* the fits take squares and cubes of lengths of the offset's size
     ** (distances, areas, moments): beyond OFFSET_SCALE_MAX they overflow */
     if (!(scale <= OFFSET_SCALE_MAX))

@@ -101,7 +101,7 @@ shift_runs(cf_label_t *lab, size_t first, size_t end, double dy)
 ** (operators, relations, arrows) from the math font too.  False after an
 ** error. */
 static bool
-math_form(parser_t *p, font_t *g, unsigned *cp, piece_t *pc)
+math_form(parser_t *p, font_t *g, unsigned *cp)
 {
     unsigned m = 0;
     if (g->cal) {
@@ -125,7 +125,6 @@ math_form(parser_t *p, font_t *g, unsigned *cp, piece_t *pc)
         g->italic = !g->cal;
         g->bold = false;
     }
-    (void)pc;
     return true;
 }
 
@@ -139,7 +138,7 @@ emit_char(parser_t *p, const font_t *f, unsigned cp, bool italic, int cls,
     font_t g = *f;
     double nx;
     g.italic = italic;
-    if (!f->text && !math_form(p, &g, &cp, pc))
+    if (!f->text && !math_form(p, &g, &cp))
         return false;
     n = cf__utf8_encode(cp, buf);
     piece_init(pc, p->lab, x);
@@ -336,6 +335,18 @@ put_accent(parser_t *p, const font_t *f, double x, double y, unsigned acc_cp)
     return true;
 }
 
+/* The group of pc (from run first) with what was put over it: one
+** ordinary atom. */
+static void
+over_group(cf_label_t *lab, piece_t *pc, size_t first, double y)
+{
+    pc->first = first;
+    pc->end = lab->count;
+    pc->cls = CLS_ORD;
+    pc->group = true;
+    piece_ink(lab, pc, y);
+}
+
 /* \hat{PQ} (a group of more than one character): the group, then the
 ** accent centred over the group's width, its ink bottom a small gap above
 ** the group's top or the x-height (TeX puts a non-wide accent so over
@@ -357,11 +368,7 @@ parse_group_accent(parser_t *p, const font_t *f, double x, double y,
     acc->x = 0.5 * (pc->x0 + pc->x1) - 0.5 * (acc->ink[0] + acc->ink[2]);
     acc->y = y + fmax(pc->top, 0.431 * f->size) + 0.06 * f->size
            + acc->ink[3];
-    pc->first = first;
-    pc->end = p->lab->count;
-    pc->cls = CLS_ORD;
-    pc->group = true;
-    piece_ink(p->lab, pc, y);
+    over_group(p->lab, pc, first, y);
     return true;
 }
 
@@ -466,11 +473,7 @@ parse_overline(parser_t *p, const font_t *f, double x, double y,
     if (!add_rule(p, f, pc->x0, y + fmax(pc->top, 0.431 * f->size) + 3 * th,
                   pc->x1 - pc->x0, th))
         return false;
-    pc->first = first;
-    pc->end = p->lab->count;
-    pc->cls = CLS_ORD;
-    pc->group = true;
-    piece_ink(p->lab, pc, y);
+    over_group(p->lab, pc, first, y);
     return true;
 }
 

@@ -30,6 +30,7 @@
 #include "model.h"
 #include "script.h"
 #include "testutil.h"
+#include "shipped.h"
 
 #define RES 3.0      /* raster pixels per bp (216 dpi) */
 #define HALF 127     /* alpha of a pixel inked more than half */
@@ -344,30 +345,22 @@ check_figure(cf_figure_t *fig, const char *name)
     return bad;
 }
 
+static int
+check_shipped(void *ctx, const char *script, const char *name,
+              cf_figure_t *fig)
+{
+    (void)ctx;
+    (void)script;
+    return check_figure(fig, name);
+}
+
 static void
 test_no_label_on_ink(void **state)
 {
-    char *names[256];
-    size_t n, i, figures = 0, failed = 0;
+    size_t failed, figures;
     (void)state;
-    n = tu_figure_scripts(CF_SOURCE_ROOT "/figures", names, 256);
-    for (i = 0; i < n; i++) {
-        char path[1024];
-        cf_script_t *sc = NULL;
-        size_t f;
-        snprintf(path, sizeof path, "%s/figures/%s", CF_SOURCE_ROOT,
-                 names[i]);
-        assert_int_equal(cf_script_create(NULL, NULL, &sc, NULL), 0);
-        if (cf_script_run_file(sc, path) != CF_STATUS_OK)
-            fail_msg("%s: %s", path, cf_script_error(sc));
-        for (f = 0; f < cf_script_figure_count(sc); f++) {
-            figures++;
-            failed += check_figure(cf_script_figure(sc, f),
-                                   cf_script_figure_name(sc, f)) > 0;
-        }
-        cf_script_destroy(sc);
-        free(names[i]);
-    }
+    figures = tu_each_shipped_figure(CF_SOURCE_ROOT, check_shipped, NULL,
+                                     &failed);
     print_message("%zu figures, %zu with a label on ink, on another label "
                   "or ink on the page's edge\n", figures, failed);
     assert_true(figures >= 60);

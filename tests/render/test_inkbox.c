@@ -19,6 +19,7 @@
 
 #include "model.h"
 #include "pngtest.h"
+#include "shipped.h"
 #include "script.h"
 #include "testutil.h"
 
@@ -33,27 +34,10 @@ static void
 ink_pixels(const unsigned char *png, size_t size, int box[4], int *w, int *h)
 {
     cairo_surface_t *img = tu_png_decode(png, size);
-    const unsigned char *px;
-    int x, y, stride;
     assert_int_equal(cairo_surface_status(img), CAIRO_STATUS_SUCCESS);
     *w = cairo_image_surface_get_width(img);
     *h = cairo_image_surface_get_height(img);
-    px = cairo_image_surface_get_data(img);
-    stride = cairo_image_surface_get_stride(img);
-    box[0] = *w;
-    box[1] = *h;
-    box[2] = box[3] = 0;
-    for (y = 0; y < *h; y++)
-        for (x = 0; x < *w; x++) {
-            uint32_t p = *(const uint32_t *)(const void *)(px + y * stride
-                                                            + 4 * x);
-            if ((p >> 24) == 0)
-                continue;
-            box[0] = x < box[0] ? x : box[0];
-            box[1] = y < box[1] ? y : box[1];
-            box[2] = x + 1 > box[2] ? x + 1 : box[2];
-            box[3] = y + 1 > box[3] ? y + 1 : box[3];
-        }
+    tu_alpha_box(img, box);
     cairo_surface_destroy(img);
 }
 
@@ -99,30 +83,22 @@ check_figure(cf_figure_t *fig, const char *name)
     return bad;
 }
 
+static int
+check_shipped(void *ctx, const char *script, const char *name,
+              cf_figure_t *fig)
+{
+    (void)ctx;
+    (void)script;
+    return check_figure(fig, name);
+}
+
 static void
 test_shipped_figures_fit(void **state)
 {
-    char *names[256];
-    size_t n, i, figures = 0, failed = 0;
+    size_t failed, figures;
     (void)state;
-    n = tu_figure_scripts(CF_SOURCE_ROOT "/figures", names, 256);
-    for (i = 0; i < n; i++) {
-        char path[1024];
-        cf_script_t *sc = NULL;
-        size_t f;
-        snprintf(path, sizeof path, "%s/figures/%s", CF_SOURCE_ROOT,
-                 names[i]);
-        assert_int_equal(cf_script_create(NULL, NULL, &sc, NULL), 0);
-        if (cf_script_run_file(sc, path) != CF_STATUS_OK)
-            fail_msg("%s: %s", path, cf_script_error(sc));
-        for (f = 0; f < cf_script_figure_count(sc); f++) {
-            figures++;
-            failed += check_figure(cf_script_figure(sc, f),
-                                   cf_script_figure_name(sc, f)) > 0;
-        }
-        cf_script_destroy(sc);
-        free(names[i]);
-    }
+    figures = tu_each_shipped_figure(CF_SOURCE_ROOT, check_shipped, NULL,
+                                     &failed);
     print_message("%zu figures, %zu not fitted to their ink\n", figures,
                   failed);
     assert_true(figures >= 60);

@@ -97,23 +97,6 @@ alpha(const image_t *im, int x, int y)
     return at(im, x, y) >> 24;
 }
 
-/* The box of the pixels with alpha > 0 (x0 y0 x1 y1, x1 y1 past it). */
-static void
-ink_box(const image_t *im, int b[4])
-{
-    b[0] = im->w;
-    b[1] = im->h;
-    b[2] = b[3] = 0;
-    for (int y = 0; y < im->h; y++)
-        for (int x = 0; x < im->w; x++)
-            if (alpha(im, x, y) > 0) {
-                b[0] = x < b[0] ? x : b[0];
-                b[1] = y < b[1] ? y : b[1];
-                b[2] = x + 1 > b[2] ? x + 1 : b[2];
-                b[3] = y + 1 > b[3] ? y + 1 : b[3];
-            }
-}
-
 /* The transparent page: the line is cut exactly around the label's box
 ** grown by the halo (two pixels of anti-aliasing either way), drawn
 ** everywhere else as without the label; the label is drawn whole and
@@ -129,7 +112,7 @@ test_transparent_knocks_out(void **state)
     (void)state;
     assert_int_equal(both.w, line.w);
     assert_int_equal(both.h, lab.h);
-    ink_box(&lab, g);
+    tu_alpha_box(lab.s, g);
     assert_true(g[2] > g[0] && g[3] > g[1]);
     for (y = 0; y < both.h; y++)
         for (x = 0; x < both.w; x++) {

@@ -274,28 +274,10 @@ static void
 pixel_box(const blob_t *png, int box[4], int *w, int *h)
 {
     cairo_surface_t *img = tu_png_decode(png->data, png->size);
-    const unsigned char *px;
-    int x, y, stride;
     assert_int_equal(cairo_surface_status(img), CAIRO_STATUS_SUCCESS);
     *w = cairo_image_surface_get_width(img);
     *h = cairo_image_surface_get_height(img);
-    px = cairo_image_surface_get_data(img);
-    stride = cairo_image_surface_get_stride(img);
-    box[0] = *w;
-    box[1] = *h;
-    box[2] = box[3] = 0;
-    for (y = 0; y < *h; y++)
-        for (x = 0; x < *w; x++)
-            if (px[y * stride + 4 * x + 3] != 0) {
-                if (x < box[0])
-                    box[0] = x;
-                if (y < box[1])
-                    box[1] = y;
-                if (x + 1 > box[2])
-                    box[2] = x + 1;
-                if (y + 1 > box[3])
-                    box[3] = y + 1;
-            }
+    tu_alpha_box(img, box);
     cairo_surface_destroy(img);
 }
 

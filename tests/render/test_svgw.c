@@ -29,6 +29,7 @@
 #include "render-private.h"
 #include "script.h"
 #include "testutil.h"
+#include "shipped.h"
 
 /* An SVG document rasterised at dpi on white (the page's size, its last
 ** partial pixel rounded up); NULL when librsvg refuses it. */
@@ -181,29 +182,21 @@ compare_figure(const char *script, const char *name, cf_figure_t *fig,
     cf__buf_free(&mine);
 }
 
+static int
+compare_shipped(void *ctx, const char *script, const char *name,
+                cf_figure_t *fig)
+{
+    compare_figure(script, name, fig, ctx);
+    return 0;
+}
+
 static void
 test_every_figure_as_cairo_draws_it(void **state)
 {
-    char *names[256];
-    size_t n, i, j;
     tally_t t;
     (void)state;
     memset(&t, 0, sizeof t);
-    n = tu_figure_scripts(CF_SOURCE_ROOT "/figures", names, 256);
-    for (i = 0; i < n; i++) {
-        char path[1024];
-        cf_script_t *sc = NULL;
-        snprintf(path, sizeof path, "%s/figures/%s", CF_SOURCE_ROOT,
-                 names[i]);
-        assert_int_equal(cf_script_create(NULL, NULL, &sc, NULL), 0);
-        if (cf_script_run_file(sc, path) != CF_STATUS_OK)
-            fail_msg("%s: %s", path, cf_script_error(sc));
-        for (j = 0; j < cf_script_figure_count(sc); j++)
-            compare_figure(names[i], cf_script_figure_name(sc, j),
-                           cf_script_figure(sc, j), &t);
-        cf_script_destroy(sc);
-        free(names[i]);
-    }
+    tu_each_shipped_figure(CF_SOURCE_ROOT, compare_shipped, &t, NULL);
     print_message("%zu figures (%zu with labels, %ld pixels) alike: %ld "
                   "pixels apart by anti-aliasing only, most in %s\n",
                   t.figures, t.with_text, t.pixels, t.aa,

@@ -1,0 +1,180 @@
+/*
+** The errors of a degree reduction: a certified bound, the measured
+** maximum and the L2 distance of a curve P of degree n and its reduction Q
+** of degree m <= n (homogeneous control points, reduce-private.h).
+**
+** The bound.  Polynomial curves: Q elevated to degree n has control points
+** Q'_i, and P(t) - Q(t) = sum_i (P_i - Q'_i) B_i^n(t) is a convex
+** combination, so |P(t) - Q(t)| <= max_i |P_i - Q'_i|.  Rational curves
+** (homogeneous A/w and B/v): A/w - B/v = (A v - B w) / (w v); the
+** numerator N (degree n + m) is bounded by max_i |N_i| and the denominator
+** w v from below by its smallest Bernstein coefficient (positive when all
+** weights are), so max_i |N_i| / min_i (w v)_i bounds the distance.  A
+** rounding allowance of 8 (n + m + 1) eps times the size of the numbers
+** that entered is added, so that the bound is never below the exact
+** maximum by rounding.
+*/
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "bpoly-private.h"
+#include "core-private.h"
+#include "reduce-private.h"
+
+static double
+norm(const double *x, size_t dim)
+{
+    double s = 0.0;
+    for (size_t c = 0; c < dim; c++)
+        s += x[c] * x[c];
+    return sqrt(s);
+}
+
+cf_status_t
+cf__reduce_bound(const double *P, int n, const double *Q, int m, size_t dim,
+                 bool rational, double *bound)
+{
+    size_t h = dim + rational, np = (size_t)(n + 1), nm = (size_t)(n + m + 1);
+    double *buf, worst = 0.0, size = 0.0;
+    buf = cf__alloc_array(rational ? nm * (dim + 1) : np * h, sizeof *buf);
+    if (buf == NULL)
+        return CF_STATUS_NO_MEMORY;
+    if (!rational) {
+        memcpy(buf, Q, (size_t)(m + 1) * h * sizeof *buf);
+        cf__bp_elevate(buf, h, m, n - m);
+        for (size_t i = 0; i < np; i++) {
+            double s = 0.0, mag = 0.0;
+            for (size_t c = 0; c < dim; c++) {
+                double e = P[i * h + c] - buf[i * h + c];
+                s += e * e;
+                mag = fmax(mag, fabs(P[i * h + c]) + fabs(buf[i * h + c]));
+            }
+            worst = fmax(worst, sqrt(s));
+            size = fmax(size, mag);
+        }
+    } else {
+        /* N = A v - B w into buf[i * (dim + 1) + c], D = w v last */
+        double dmin = INFINITY;
+        size_t s = dim + 1;
+        for (size_t c = 0; c < dim; c++) {
+            cf__bp_mul(P + c, n, h, Q + dim, m, h, buf + c, s, 1.0, false);
+            cf__bp_mul(Q + c, m, h, P + dim, n, h, buf + c, s, -1.0, true);
+        }
+        cf__bp_mul(P + dim, n, h, Q + dim, m, h, buf + dim, s, 1.0, false);
+        for (size_t i = 0; i < np * h; i++)
+            size = fmax(size, fabs(P[i]));
+        for (size_t i = 0; i < (size_t)(m + 1) * h; i++)
+            size = fmax(size, fabs(Q[i]));
+        size *= size;
+        for (size_t i = 0; i < nm; i++) {
+            worst = fmax(worst, norm(buf + i * s, dim));
+            dmin = fmin(dmin, buf[i * s + dim]);
+        }
+        worst /= dmin;
+        size /= dmin;
+    }
+    cf__free(buf);
+    *bound = worst + 8.0 * (double)(n + m + 1) * DBL_EPSILON * size;
+    return CF_STATUS_OK;
+}
+
+static double
+dist_at(const double *P, int n, const double *Q, int m, size_t dim,
+        bool rational, double t)
+{
+    double a[64], b[64];
+    size_t h = dim + rational, done = 0;
+    double s = 0.0;
+    /* in blocks of 64 coordinates (the dimension is not bounded) */
+    while (done < dim) {
+        size_t nc = dim - done < 64 ? dim - done : 64;
+        cf__bp_curve_derivs(P + done, rational ? P + dim : NULL, h, nc, n, t,
+                            0, a);
+        cf__bp_curve_derivs(Q + done, rational ? Q + dim : NULL, h, nc, m, t,
+                            0, b);
+        for (size_t c = 0; c < nc; c++)
+            s += (a[c] - b[c]) * (a[c] - b[c]);
+        done += nc;
+    }
+    return sqrt(s);
+}
+
+double
+cf__reduce_measure(const double *P, int n, const double *Q, int m, size_t dim,
+                   bool rational)
+{
+    const double g = 0.5 * (sqrt(5.0) - 1.0);
+    int S = 64 * (n + 1);
+    double best = 0.0, prev2 = -1.0, prev = dist_at(P, n, Q, m, dim,
+                                                      rational, 0.0);
+    best = prev;
+    for (int s = 1; s <= S + 1; s++) {
+        double cur = s <= S ? dist_at(P, n, Q, m, dim, rational,
+                                      (double)s / S)
+                            : -1.0;
+        if (s >= 2 && prev >= prev2 && prev >= cur) {
+            /* a local maximum at (s - 1) / S: golden section on the
+            ** bracket around it */
+            double lo = (double)(s - 2) / S, hi = fmin(1.0, (double)s / S);
+            double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+            double f1 = dist_at(P, n, Q, m, dim, rational, x1);
+            double f2 = dist_at(P, n, Q, m, dim, rational, x2);
+            for (int it = 0; it < 48; it++) {
+                if (f1 > f2) {
+                    hi = x2;
+                    x2 = x1;
+                    f2 = f1;
+                    x1 = hi - g * (hi - lo);
+                    f1 = dist_at(P, n, Q, m, dim, rational, x1);
+                } else {
+                    lo = x1;
+                    x1 = x2;
+                    f1 = f2;
+                    x2 = lo + g * (hi - lo);
+                    f2 = dist_at(P, n, Q, m, dim, rational, x2);
+                }
+            }
+            best = fmax(best, fmax(f1, f2));
+        }
+        best = fmax(best, prev);
+        prev2 = prev;
+        prev = cur;
+    }
+    return best;
+}
+
+/* In long double: the error's coefficients are differences of nearly
+** equal numbers when the reduction is good, and their rounding would be a
+** large part of a small L2 distance. */
+cf_status_t
+cf__reduce_l2_distance(const double *P, int n, const double *Q, int m,
+                       size_t h, double *out)
+{
+    size_t np = (size_t)(n + 1);
+    long double *e = cf__alloc_array(np * h, sizeof *e), s = 0.0L;
+    if (e == NULL)
+        return CF_STATUS_NO_MEMORY;
+    /* e = P - Q elevated: Q'_i = sum_j C(m,j) C(n-m,i-j) / C(n,i) Q_j */
+    for (int i = 0; i <= n; i++)
+        for (size_t c = 0; c < h; c++) {
+            long double q = 0.0L;
+            int lo = i - (n - m) > 0 ? i - (n - m) : 0, hi = i < m ? i : m;
+            for (int jj = lo; jj <= hi; jj++)
+                q += (long double)cf__binomial(m, jj) *
+                     (long double)cf__binomial(n - m, i - jj) /
+                     (long double)cf__binomial(n, i) *
+                     (long double)Q[(size_t)jj * h + c];
+            e[(size_t)i * h + c] = (long double)P[(size_t)i * h + c] - q;
+        }
+    for (int p = 0; p <= n; p++)
+        for (int q = 0; q <= n; q++) {
+            long double g = cf__reduce_gram(n, p, n, q), d = 0.0L;
+            for (size_t c = 0; c < h; c++)
+                d += e[(size_t)p * h + c] * e[(size_t)q * h + c];
+            s += g * d;
+        }
+    cf__free(e);
+    *out = (double)sqrtl(s > 0.0L ? s : 0.0L);
+    return CF_STATUS_OK;
+}

@@ -69,9 +69,11 @@ errors(const orig *o, const cf_bspline_t *F, double *bound,
     for (size_t i = 0; i < cnt && i < o->count && st == CF_STATUS_OK; i++) {
         const double *P = o->hp + i * (size_t)(o->p + 1) * o->h;
         const double *Q = hp + i * (size_t)(q + 1) * o->h;
-        double b = 0.0, d = 0.0;
-        st = cf__reduce_bound(P, o->p, Q, q, o->dim, o->rational, &b);
+        double b = 0.0, pb = 0.0, d = 0.0;
+        st = cf__reduce_bound(P, o->p, Q, q, o->dim, o->rational, &b, &pb);
         *bound = fmax(*bound, b);
+        if (rep != NULL)
+            rep->polygon_bound = fmax(rep->polygon_bound, pb);
         if (st != CF_STATUS_OK || rep == NULL)
             continue;
         meas = fmax(meas, cf__reduce_measure(P, o->p, Q, q, o->dim,
@@ -111,7 +113,7 @@ pieces(const orig *o, int q, const int *k, cf_reduce_method_t method,
                                           out + i * hq, NULL, diag);
         if (st == CF_STATUS_OK)
             st = cf__reduce_bound(j.P, o->p, out + i * hq, q, o->dim,
-                                  o->rational, &b);
+                                  o->rational, &b, NULL);
         if (st != CF_STATUS_OK)
             return st == CF_STATUS_NO_MEMORY ? cf__bspline_no_memory(diag)
                                              : st;

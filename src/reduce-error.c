@@ -13,6 +13,11 @@
 ** rounding allowance of 8 (n + m + 1) eps times the size of the numbers
 ** that entered is added, so that the bound is never below the exact
 ** maximum by rounding.
+**
+** That is the polygon bound (reported as such).  The same holds on every
+** piece of the difference curve split by de Casteljau, so the bound
+** reported as certified is the largest over 2^BOUND_LEVELS halves, which
+** is much closer to the true maximum.
 */
 #include <float.h>
 #include <math.h>
@@ -21,6 +26,11 @@
 #include "bpoly-private.h"
 #include "core-private.h"
 #include "reduce-private.h"
+
+/* The bound is refined by halving the difference curve this many times
+** (32 pieces): on each piece the control points bound the curve too, and
+** they converge to it quadratically in the piece's length. */
+#define BOUND_LEVELS 5
 
 static double
 norm(const double *x, size_t dim)
@@ -31,51 +41,81 @@ norm(const double *x, size_t dim)
     return sqrt(s);
 }
 
+/* max |N_i| / min D_i over the points of one piece (s doubles a point,
+** N the first dim, D the last when rational, else 1) */
+static double
+piece_bound(const double *E, int d, size_t dim, size_t s, bool rational)
+{
+    double num = 0.0, den = INFINITY;
+    for (int i = 0; i <= d; i++) {
+        num = fmax(num, norm(E + (size_t)i * s, dim));
+        den = fmin(den, rational ? E[(size_t)i * s + dim] : 1.0);
+    }
+    return num / den;
+}
+
 cf_status_t
 cf__reduce_bound(const double *P, int n, const double *Q, int m, size_t dim,
-                 bool rational, double *bound)
+                 bool rational, double *bound, double *polygon)
 {
-    size_t h = dim + rational, np = (size_t)(n + 1), nm = (size_t)(n + m + 1);
-    double *buf, worst = 0.0, size = 0.0;
-    buf = cf__alloc_array(rational ? nm * (dim + 1) : np * h, sizeof *buf);
-    if (buf == NULL)
+    size_t h = dim + rational, s = dim + rational;
+    int d = rational ? n + m : n;
+    size_t pt = (size_t)(d + 1) * s, pieces = (size_t)1 << BOUND_LEVELS;
+    double *E, *work, size = 0.0, allowance, best, first;
+    /* E: room for every piece of the last level, then one piece of work */
+    E = cf__alloc_array((pieces + 1) * pt, sizeof *E);
+    if (E == NULL)
         return CF_STATUS_NO_MEMORY;
+    work = E + pieces * pt;
+    for (size_t i = 0; i < (size_t)(n + 1) * h; i++)
+        size = fmax(size, fabs(P[i]));
+    for (size_t i = 0; i < (size_t)(m + 1) * h; i++)
+        size = fmax(size, fabs(Q[i]));
     if (!rational) {
-        memcpy(buf, Q, (size_t)(m + 1) * h * sizeof *buf);
-        cf__bp_elevate(buf, h, m, n - m);
-        for (size_t i = 0; i < np; i++) {
-            double s = 0.0, mag = 0.0;
-            for (size_t c = 0; c < dim; c++) {
-                double e = P[i * h + c] - buf[i * h + c];
-                s += e * e;
-                mag = fmax(mag, fabs(P[i * h + c]) + fabs(buf[i * h + c]));
-            }
-            worst = fmax(worst, sqrt(s));
-            size = fmax(size, mag);
-        }
+        /* E = P - Q elevated to degree n */
+        memcpy(E, Q, (size_t)(m + 1) * h * sizeof *E);
+        cf__bp_elevate(E, h, m, n - m);
+        for (size_t i = 0; i < (size_t)(n + 1) * h; i++)
+            E[i] = P[i] - E[i];
+        size *= 2.0;
     } else {
-        /* N = A v - B w into buf[i * (dim + 1) + c], D = w v last */
+        /* N = A v - B w, D = w v (degree n + m) */
         double dmin = INFINITY;
-        size_t s = dim + 1;
         for (size_t c = 0; c < dim; c++) {
-            cf__bp_mul(P + c, n, h, Q + dim, m, h, buf + c, s, 1.0, false);
-            cf__bp_mul(Q + c, m, h, P + dim, n, h, buf + c, s, -1.0, true);
+            cf__bp_mul(P + c, n, h, Q + dim, m, h, E + c, s, 1.0, false);
+            cf__bp_mul(Q + c, m, h, P + dim, n, h, E + c, s, -1.0, true);
         }
-        cf__bp_mul(P + dim, n, h, Q + dim, m, h, buf + dim, s, 1.0, false);
-        for (size_t i = 0; i < np * h; i++)
-            size = fmax(size, fabs(P[i]));
-        for (size_t i = 0; i < (size_t)(m + 1) * h; i++)
-            size = fmax(size, fabs(Q[i]));
-        size *= size;
-        for (size_t i = 0; i < nm; i++) {
-            worst = fmax(worst, norm(buf + i * s, dim));
-            dmin = fmin(dmin, buf[i * s + dim]);
-        }
-        worst /= dmin;
-        size /= dmin;
+        cf__bp_mul(P + dim, n, h, Q + dim, m, h, E + dim, s, 1.0, false);
+        for (int i = 0; i <= d; i++)
+            dmin = fmin(dmin, E[(size_t)i * s + dim]);
+        size = 2.0 * size * size / dmin;
     }
-    cf__free(buf);
-    *bound = worst + 8.0 * (double)(n + m + 1) * DBL_EPSILON * size;
+    allowance = 8.0 * (double)(n + m + 1) * DBL_EPSILON * size;
+    best = first = piece_bound(E, d, dim, s, rational);
+    /* halve every piece, level by level (piece i of a level at E + i pt,
+    ** spread out from the back so that no piece is overwritten before it
+    ** is split); the bound of a level is the largest of its pieces' */
+    for (int lev = 1; lev <= BOUND_LEVELS; lev++) {
+        size_t have = (size_t)1 << (lev - 1);
+        double b = 0.0;
+        for (size_t i = have; i-- > 0;) {
+            memcpy(work, E + i * pt, pt * sizeof *E);
+            cf__bp_split(work, s, d, 0.5, E + 2 * i * pt,
+                         E + (2 * i + 1) * pt);
+        }
+        for (size_t i = 0; i < 2 * have; i++)
+            b = fmax(b, piece_bound(E + i * pt, d, dim, s, rational));
+        best = fmin(best, b);
+    }
+    cf__free(E);
+    /* the halving rounds relative to the difference itself: d levels of
+    ** convex combinations a halving, eps each */
+    best += allowance + 2.0 * BOUND_LEVELS * (double)(d + 1) * DBL_EPSILON *
+                            first;
+    first += allowance;
+    if (polygon != NULL)
+        *polygon = first;
+    *bound = fmin(best, first);
     return CF_STATUS_OK;
 }
 

@@ -70,10 +70,13 @@ cf_status_t cf__reduce_check_degree(const char *what, int degree, int by,
                                     int least, cf_reduce_method_t method,
                                     cf_diag_t *diag);
 
-/* Certified bound of max |P(t) - Q(t)| (Cartesian, rational quotient when
-** rational; the weights must be positive) into *bound.  NO_MEMORY only. */
+/* Certified bounds of max |P(t) - Q(t)| (Cartesian, rational quotient
+** when rational; the weights must be positive): *polygon (may be NULL)
+** from the control points of the difference, *bound refined by halving
+** it (reduce-error.c).  NO_MEMORY only. */
 cf_status_t cf__reduce_bound(const double *P, int n, const double *Q, int m,
-                             size_t dim, bool rational, double *bound);
+                             size_t dim, bool rational, double *bound,
+                             double *polygon);
 
 /* max |P(t) - Q(t)| measured at 64 (n + 1) + 1 parameters, each local
 ** maximum refined by golden-section search. */

@@ -8,9 +8,10 @@
 **   s:reduce{ by = 1, tolerance = 1e-3, method = "l2" | "uniform" }
 **       -> B-spline of degree p - by, report
 **
-** report = { max_error, bound, l2_error } (and for a B-spline continuity,
-** knots_removed): the measured maximum distance, the certified bound, the
-** L2 distance (see docs/library.md, "Degree reduction").
+** report = { max_error, bound, polygon_bound, l2_error } (and for a
+** B-spline continuity, knots_removed): the measured maximum distance, the
+** certified bounds (refined, and of the control polygons), the L2 distance
+** (see docs/library.md, "Degree reduction").
 */
 #include "curvefig/reduce.h"
 #include "lbezier.h"
@@ -57,11 +58,13 @@ read_options(lua_State *L, int idx, cf__lua_keys_t k,
 static void
 push_report(lua_State *L, const cf_reduce_report_t *r, bool spline)
 {
-    lua_createtable(L, 0, 5);
+    lua_createtable(L, 0, 6);
     lua_pushnumber(L, r->max_error);
     lua_setfield(L, -2, "max_error");
     lua_pushnumber(L, r->bound);
     lua_setfield(L, -2, "bound");
+    lua_pushnumber(L, r->polygon_bound);
+    lua_setfield(L, -2, "polygon_bound");
     lua_pushnumber(L, r->l2_error);
     lua_setfield(L, -2, "l2_error");
     if (!spline)

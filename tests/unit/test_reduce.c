@@ -90,6 +90,7 @@ test_elevated_back(void **state)
                 /* the bound's rounding allowance, 8 (n + m + 1) eps times
                 ** the size (below 16 here): under 1e-12 */
                 assert_true(rep.bound <= 1e-12);
+                assert_true(rep.polygon_bound <= 1e-12);
                 assert_true(rep.max_error <= 1e-14);
                 cf_bezier_destroy(red);
             }
@@ -271,6 +272,7 @@ test_bound_and_uniform(void **state)
                 dense = dense_dist(c, red, 20000);
                 assert_true(rep.bound >= dense);
                 assert_true(rep.bound >= rep.max_error);
+                assert_true(rep.polygon_bound >= rep.bound);
                 /* the refined maximum is at least every dense sample's,
                 ** and not above it by more than the samples' spacing
                 ** allows (0.1 % of the error) */
@@ -329,7 +331,11 @@ test_known_values(void **state)
     q = cf_bezier_hpoints(red);
     assert_true(q[0] == 0.0 && q[1] == 1.0);
     tu_assert_close(rep.max_error, 0.25, 1e-12, 0.0);
-    tu_assert_close(rep.bound, 0.5, 1e-12, 0.0);  /* |P_1 - 1/2| */
+    /* the polygon bound |P_1 - 1/2|; on the 32 pieces of the difference
+    ** t^2 - t, the two that end at 1/2 have the points (e(a), -1/4, -1/4)
+    ** and their mirror: exactly the maximum 1/4 */
+    tu_assert_close(rep.polygon_bound, 0.5, 1e-12, 0.0);
+    tu_assert_close(rep.bound, 0.25, 1e-12, 0.0);
     cf_bezier_destroy(red);
     cf_bezier_destroy(c);
 }
@@ -470,6 +476,7 @@ test_bspline(void **state)
         assert_int_equal(cf_bspline_degree(red), p - by);
         assert_true(rep.bound <= o.tolerance);
         assert_true(rep.bound >= spline_dist(s, red, 5000));
+        assert_true(rep.polygon_bound >= rep.bound);
         assert_true(rep.max_error >= spline_dist(s, red, 5000) *
                                          (1.0 - 1e-12));
         assert_true(rep.continuity >= 0);

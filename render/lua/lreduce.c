@@ -45,8 +45,8 @@ read_options(lua_State *L, int idx, cf__lua_keys_t k,
         cf__lua_field(L, idx, "tolerance") != LUA_TNIL) {
         opt->tolerance = cf__lua_check_finite(L, -1, "reduce", "tolerance");
         if (!(opt->tolerance > 0.0))
-            luaL_error(L, "reduce: tolerance must be > 0, got %g",
-                       opt->tolerance);
+            cf__lua_error(L, "reduce: tolerance is %g; it must be > 0",
+                          opt->tolerance);
     }
     if (cf__lua_field(L, idx, "method") != LUA_TNIL &&
         cf__lua_opt_text(L, -1, "reduce", "method", NULL) != NULL)

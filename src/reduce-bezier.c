@@ -47,7 +47,8 @@ cf__reduce_solve(const cf__reduce_job_t *j, size_t dim, bool rational,
     if (rep == NULL)
         return CF_STATUS_OK;
     rep->max_error = cf__reduce_measure(j->P, j->n, Q, j->m, dim, rational);
-    st = cf__reduce_bound(j->P, j->n, Q, j->m, dim, rational, &rep->bound,
+    st = cf__reduce_bound(j->P, j->n, Q, j->m, dim, rational, 0.0,
+                          &rep->bound,
                           &rep->polygon_bound);
     if (st == CF_STATUS_OK)
         st = cf__reduce_l2_distance(j->P, j->n, Q, j->m, h, &rep->l2_error);

@@ -22,7 +22,8 @@
 ** The certified error of a candidate is measured piece by piece against
 ** the original: the candidate is refined to the original's breaks, and
 ** each of its Bézier pieces is bounded against the original's piece
-** (reduce-error.c).
+** (reduce-error.c); after a removal, only the pieces the removal can
+** reach (q + 2 on either side).
 */
 #include <math.h>
 #include <string.h>
@@ -40,37 +41,45 @@ typedef struct orig {
 } orig;
 
 /* The errors of F (degree q, domain of the original) against the
-** original's pieces: the certified bound, and when rep is not NULL the
-** measured maximum and the L2 distance in the B-spline's parameter. */
+** original's pieces lo .. hi - 1: the certified bound, and when rep is not
+** NULL the measured maximum and the L2 distance in the B-spline's
+** parameter.  A piece whose polygon bound is <= enough is not refined
+** (used without a report, to check a tolerance). */
 static cf_status_t
-errors(const orig *o, const cf_bspline_t *F, double *bound,
-       cf_reduce_report_t *rep, cf_diag_t *diag)
+errors(const orig *o, const cf_bspline_t *F, size_t lo, size_t hi,
+       double enough, double *bound, cf_reduce_report_t *rep,
+       cf_diag_t *diag)
 {
     int q = F->p;
     size_t nx = 0, cnt = 0;
     double *x, *hp = NULL, l2 = 0.0, meas = 0.0;
-    cf_bspline_t *R = NULL;
+    cf_bspline_t *R = NULL, *S = NULL;
     cf_status_t st;
-    x = cf__alloc_array(o->count * (size_t)(q + 1) + 1, sizeof *x);
+    x = cf__alloc_array((hi - lo) * (size_t)(q + 1) + 1, sizeof *x);
     if (x == NULL)
         return cf__bspline_no_memory(diag);
-    for (size_t i = 1; i < o->count; i++)
-        for (int r = cf__knots_mult(F->U, F->nknots, o->breaks[i]); r < q;
+    /* F on [breaks[lo], breaks[hi]], every break inside of multiplicity q */
+    st = cf_bspline_segment(F, o->breaks[lo], o->breaks[hi], &S, diag);
+    for (size_t i = lo + 1; i < hi && st == CF_STATUS_OK; i++)
+        for (int r = cf__knots_mult(S->U, S->nknots, o->breaks[i]); r < q;
              r++)
             x[nx++] = o->breaks[i];
-    st = cf_bspline_refine(F, x, nx, &R, diag);
+    if (st == CF_STATUS_OK)
+        st = cf_bspline_refine(S, x, nx, &R, diag);
     if (st == CF_STATUS_OK)
         st = cf_bspline_bezier_points(R, &hp, NULL, &cnt, diag);
     cf_bspline_destroy(R);
+    cf_bspline_destroy(S);
     cf__free(x);
     if (st != CF_STATUS_OK)
         return st;
     *bound = 0.0;
-    for (size_t i = 0; i < cnt && i < o->count && st == CF_STATUS_OK; i++) {
-        const double *P = o->hp + i * (size_t)(o->p + 1) * o->h;
+    for (size_t i = 0; i < cnt && i < hi - lo && st == CF_STATUS_OK; i++) {
+        const double *P = o->hp + (lo + i) * (size_t)(o->p + 1) * o->h;
         const double *Q = hp + i * (size_t)(q + 1) * o->h;
         double b = 0.0, pb = 0.0, d = 0.0;
-        st = cf__reduce_bound(P, o->p, Q, q, o->dim, o->rational, &b, &pb);
+        st = cf__reduce_bound(P, o->p, Q, q, o->dim, o->rational,
+                              rep == NULL ? enough : 0.0, &b, &pb);
         *bound = fmax(*bound, b);
         if (rep != NULL)
             rep->polygon_bound = fmax(rep->polygon_bound, pb);
@@ -79,15 +88,15 @@ errors(const orig *o, const cf_bspline_t *F, double *bound,
         meas = fmax(meas, cf__reduce_measure(P, o->p, Q, q, o->dim,
                                              o->rational));
         st = cf__reduce_l2_distance(P, o->p, Q, q, o->h, &d);
-        l2 += (o->breaks[i + 1] - o->breaks[i]) * d * d;
+        l2 += (o->breaks[lo + i + 1] - o->breaks[lo + i]) * d * d;
     }
     cf_free(hp);
     if (st != CF_STATUS_OK)
         return cf__bspline_no_memory(diag);
-    if (cnt != o->count)
+    if (cnt != hi - lo)
         return cf__error(diag, CF_STATUS_DEGENERATE, -1,
                          "the reduced curve has %zu pieces, the original %zu",
-                         cnt, o->count);
+                         cnt, hi - lo);
     if (rep != NULL) {
         rep->max_error = meas;
         rep->l2_error = sqrt(l2);
@@ -113,7 +122,7 @@ pieces(const orig *o, int q, const int *k, cf_reduce_method_t method,
                                           out + i * hq, NULL, diag);
         if (st == CF_STATUS_OK)
             st = cf__reduce_bound(j.P, o->p, out + i * hq, q, o->dim,
-                                  o->rational, &b, NULL);
+                                  o->rational, 0.0, &b, NULL);
         if (st != CF_STATUS_OK)
             return st == CF_STATUS_NO_MEMORY ? cf__bspline_no_memory(diag)
                                              : st;
@@ -150,8 +159,12 @@ assemble(const orig *o, int q, const double *Q, const int *target,
             int got = 0;
             double b = INFINITY;
             st = cf_bspline_remove_knot(F, u, 1, tol, &G, &got, diag);
+            /* the removal moved the points whose supports reach u: at
+            ** most q + 1 pieces on either side of it */
             if (st == CF_STATUS_OK && got == 1)
-                st = errors(o, G, &b, NULL, diag);
+                st = errors(o, G, s > (size_t)q + 2 ? s - (size_t)q - 2 : 0,
+                            s + (size_t)q + 2 < n ? s + (size_t)q + 2 : n,
+                            tol, &b, NULL, diag);
             if (st != CF_STATUS_OK || got != 1 || !(b <= tol)) {
                 cf_bspline_destroy(G);
                 break;
@@ -254,7 +267,7 @@ cf_bspline_reduce(const cf_bspline_t *c, const cf_reduce_options_t *opt,
     st = assemble(&g, q, Q, target, o.tolerance, &F, &removed, diag);
     if (st == CF_STATUS_OK && report != NULL) {
         memset(report, 0, sizeof *report);
-        st = errors(&g, F, &report->bound, report, diag);
+        st = errors(&g, F, 0, g.count, 0.0, &report->bound, report, diag);
         report->knots_removed = removed;
         report->continuity = q;
         for (size_t s = 1; s < g.count; s++) {

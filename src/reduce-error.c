@@ -56,7 +56,7 @@ piece_bound(const double *E, int d, size_t dim, size_t s, bool rational)
 
 cf_status_t
 cf__reduce_bound(const double *P, int n, const double *Q, int m, size_t dim,
-                 bool rational, double *bound, double *polygon)
+                 bool rational, double enough, double *bound, double *polygon)
 {
     size_t h = dim + rational, s = dim + rational;
     int d = rational ? n + m : n;
@@ -95,7 +95,8 @@ cf__reduce_bound(const double *P, int n, const double *Q, int m, size_t dim,
     /* halve every piece, level by level (piece i of a level at E + i pt,
     ** spread out from the back so that no piece is overwritten before it
     ** is split); the bound of a level is the largest of its pieces' */
-    for (int lev = 1; lev <= BOUND_LEVELS; lev++) {
+    for (int lev = 1; lev <= BOUND_LEVELS && first + allowance > enough;
+         lev++) {
         size_t have = (size_t)1 << (lev - 1);
         double b = 0.0;
         for (size_t i = have; i-- > 0;) {
@@ -140,47 +141,73 @@ dist_at(const double *P, int n, const double *Q, int m, size_t dim,
     return sqrt(s);
 }
 
+/* golden-section search for the maximum of the distance on [lo, hi] */
+static double
+refine(const double *P, int n, const double *Q, int m, size_t dim,
+       bool rational, double lo, double hi)
+{
+    const double g = 0.5 * (sqrt(5.0) - 1.0);
+    double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+    double f1 = dist_at(P, n, Q, m, dim, rational, x1);
+    double f2 = dist_at(P, n, Q, m, dim, rational, x2);
+    for (int it = 0; it < 48; it++) {
+        if (f1 > f2) {
+            hi = x2;
+            x2 = x1;
+            f2 = f1;
+            x1 = hi - g * (hi - lo);
+            f1 = dist_at(P, n, Q, m, dim, rational, x1);
+        } else {
+            lo = x1;
+            x1 = x2;
+            f1 = f2;
+            x2 = lo + g * (hi - lo);
+            f2 = dist_at(P, n, Q, m, dim, rational, x2);
+        }
+    }
+    return fmax(f1, f2);
+}
+
+/* The samples' local maxima within 10 % of the largest sample are refined
+** (at most REFINE_MAX of them, the largest first): the samples are so
+** dense that a local maximum's sample is within a fraction of a percent of
+** it, so no other can be the largest; an error of rounding size has
+** maxima everywhere and would otherwise be refined everywhere. */
+#define REFINE_MAX 8
+
 double
 cf__reduce_measure(const double *P, int n, const double *Q, int m, size_t dim,
                    bool rational)
 {
-    const double g = 0.5 * (sqrt(5.0) - 1.0);
-    int S = 64 * (n + 1);
-    double best = 0.0, prev2 = -1.0, prev = dist_at(P, n, Q, m, dim,
-                                                      rational, 0.0);
-    best = prev;
+    int S = 64 * (n + 1), top[REFINE_MAX], ntop = 0;
+    double best = 0.0, vals[3], topv[REFINE_MAX];
+    vals[0] = -1.0;
+    vals[1] = dist_at(P, n, Q, m, dim, rational, 0.0);
+    best = vals[1];
     for (int s = 1; s <= S + 1; s++) {
-        double cur = s <= S ? dist_at(P, n, Q, m, dim, rational,
-                                      (double)s / S)
-                            : -1.0;
-        if (s >= 2 && prev >= prev2 && prev >= cur) {
-            /* a local maximum at (s - 1) / S: golden section on the
-            ** bracket around it */
-            double lo = (double)(s - 2) / S, hi = fmin(1.0, (double)s / S);
-            double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
-            double f1 = dist_at(P, n, Q, m, dim, rational, x1);
-            double f2 = dist_at(P, n, Q, m, dim, rational, x2);
-            for (int it = 0; it < 48; it++) {
-                if (f1 > f2) {
-                    hi = x2;
-                    x2 = x1;
-                    f2 = f1;
-                    x1 = hi - g * (hi - lo);
-                    f1 = dist_at(P, n, Q, m, dim, rational, x1);
-                } else {
-                    lo = x1;
-                    x1 = x2;
-                    f1 = f2;
-                    x2 = lo + g * (hi - lo);
-                    f2 = dist_at(P, n, Q, m, dim, rational, x2);
+        vals[2] = s <= S ? dist_at(P, n, Q, m, dim, rational, (double)s / S)
+                         : -1.0;
+        best = fmax(best, vals[2]);
+        if (vals[1] >= vals[0] && vals[1] >= vals[2]) {
+            /* a local maximum at (s - 1) / S: keep the REFINE_MAX largest */
+            int at = ntop < REFINE_MAX ? ntop++ : REFINE_MAX - 1;
+            if (at < REFINE_MAX - 1 || vals[1] > topv[at]) {
+                while (at > 0 && topv[at - 1] < vals[1]) {
+                    topv[at] = topv[at - 1];
+                    top[at] = top[at - 1];
+                    at--;
                 }
+                topv[at] = vals[1];
+                top[at] = s - 1;
             }
-            best = fmax(best, fmax(f1, f2));
         }
-        best = fmax(best, prev);
-        prev2 = prev;
-        prev = cur;
+        vals[0] = vals[1];
+        vals[1] = vals[2];
     }
+    for (int i = 0; i < ntop && topv[i] >= 0.9 * best; i++)
+        best = fmax(best, refine(P, n, Q, m, dim, rational,
+                                 fmax(0.0, (double)(top[i] - 1) / S),
+                                 fmin(1.0, (double)(top[i] + 1) / S)));
     return best;
 }
 

@@ -73,10 +73,11 @@ cf_status_t cf__reduce_check_degree(const char *what, int degree, int by,
 /* Certified bounds of max |P(t) - Q(t)| (Cartesian, rational quotient
 ** when rational; the weights must be positive): *polygon (may be NULL)
 ** from the control points of the difference, *bound refined by halving
-** it (reduce-error.c).  NO_MEMORY only. */
+** it (reduce-error.c), unless the polygon bound is already <= enough
+** (then *bound is the polygon bound).  NO_MEMORY only. */
 cf_status_t cf__reduce_bound(const double *P, int n, const double *Q, int m,
-                             size_t dim, bool rational, double *bound,
-                             double *polygon);
+                             size_t dim, bool rational, double enough,
+                             double *bound, double *polygon);
 
 /* max |P(t) - Q(t)| measured at 64 (n + 1) + 1 parameters, each local
 ** maximum refined by golden-section search. */

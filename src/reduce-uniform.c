@@ -16,8 +16,9 @@
 **
 ** The first step, equal weights on Chebyshev nodes, is Gauss-Chebyshev
 ** quadrature of the least-squares problem with the Chebyshev weight
-** 1 / sqrt(t (1 - t)) (exact for S > n): for k0 = k1 = -1 it is Eck's
-** Chebyshev-economised reduction, already close to the best.  The
+** 1 / sqrt(t (1 - t)) (exact for S > n): for k0 = k1 = -1 it is the
+** truncated Chebyshev series (Chebyshev economisation, what Eck's method
+** does under end constraints), already close to the best.  The
 ** reweighting then moves the solution to the minimax one on the grid, and
 ** each step gives a lower bound of the grid's minimax error,
 ** sqrt(sum_s omega_s e_s^2), so the iteration stops when the best maximum
@@ -141,7 +142,8 @@ cf__reduce_uniform(const cf__reduce_job_t *j, double *Q)
             d2 += Y[s * h + c] * Y[s * h + c];
         best = fmax(best, sqrt(d2));
     }
-    for (int step = 0; step < LAWSON_STEPS; step++) {
+    /* an error of rounding size: the L2 solution is the answer */
+    for (int step = 0; step < LAWSON_STEPS && best > floor; step++) {
         double E = 0.0, lower = 0.0, sum = 0.0;
         for (size_t s = 0; s < S; s++) {
             double r = sqrt(om[s]);

@@ -61,6 +61,11 @@ cf_status_t
 cf__reduce_check_degree(const char *what, int degree, int by, int least,
                         cf_reduce_method_t method, cf_diag_t *diag)
 {
+    if (degree - 1 < least)
+        return cf__error(diag, CF_STATUS_BAD_DEGREE, -1,
+                         "a %s of degree %d cannot be reduced (the least "
+                         "degree of a reduced curve is %d)", what, degree,
+                         least);
     if (by < 1 || degree - by < least)
         return cf__error(diag, CF_STATUS_BAD_DEGREE, -1,
                          "cannot reduce a %s of degree %d by %d degrees "
@@ -82,7 +87,7 @@ static cf_status_t
 check_options(const cf_reduce_options_t *o, int n, cf_diag_t *diag)
 {
     int m = n - o->by;
-    cf_status_t st = cf__reduce_check_degree("curve", n, o->by, 0, o->method,
+    cf_status_t st = cf__reduce_check_degree("curve", n, o->by, 1, o->method,
                                              diag);
     if (st != CF_STATUS_OK)
         return st;

@@ -45,7 +45,8 @@ typedef enum cf_reduce_method {
 } cf_reduce_method_t;
 
 typedef struct cf_reduce_options {
-    int by;            /* degrees to drop, 1 <= by <= degree (default 1) */
+    int by;            /* degrees to drop, 1 <= by < degree (default 1):
+                          the reduced curve has degree >= 1 */
     int continuity;    /* k >= -1: C^k at both ends (default 0: the end
                           points are kept); 2 (k + 1) <= degree - by + 1 */
     cf_reduce_method_t method;   /* default CF_REDUCE_L2 */
@@ -77,7 +78,7 @@ CF_API void cf_reduce_options_init(cf_reduce_options_t *opt);
 
 /*
 ** Reduce c by opt->by degrees (opt NULL: the defaults).  report (may be
-** NULL) receives the errors.  BAD_DEGREE when by is not in 1 .. degree,
+** NULL) receives the errors.  BAD_DEGREE when by is not in 1 .. degree - 1,
 ** INVALID_ARG when the continuity is below -1 or more than the reduced
 ** degree can hold at both ends (2 (k + 1) > m + 1; the message names the
 ** largest k), DEGENERATE when a reduced weight is not positive.

@@ -190,8 +190,10 @@ cf__reduce_measure(const double *P, int n, const double *Q, int m, size_t dim,
         best = fmax(best, vals[2]);
         if (vals[1] >= vals[0] && vals[1] >= vals[2]) {
             /* a local maximum at (s - 1) / S: keep the REFINE_MAX largest */
-            int at = ntop < REFINE_MAX ? ntop++ : REFINE_MAX - 1;
-            if (at < REFINE_MAX - 1 || vals[1] > topv[at]) {
+            int at = ntop < REFINE_MAX                  ? ntop++
+                     : vals[1] > topv[REFINE_MAX - 1] ? REFINE_MAX - 1
+                                                      : -1;
+            if (at >= 0) {
                 while (at > 0 && topv[at - 1] < vals[1]) {
                     topv[at] = topv[at - 1];
                     top[at] = top[at - 1];

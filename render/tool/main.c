@@ -22,11 +22,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "checks.h"
 #include "curvefig/figure.h"
 #include "help.h"
+#include "helpers.h"
 #include "html.h"
-#include "live.h"
 #include "script.h"
 #include "tool.h"
 
@@ -592,12 +591,11 @@ main(int argc, char **argv)
 {
     options o;
     int rc = 0;
-    if (argc > 1 && strcmp(argv[1], "compare") == 0)
-        return cf__tool_compare(argc - 1, argv + 1);
-    if (argc > 1 && strcmp(argv[1], "test") == 0)
-        return cf__tool_test(argc - 1, argv + 1);
+    if (argc > 1 && (strcmp(argv[1], "compare") == 0 ||
+                     strcmp(argv[1], "test") == 0))
+        return cf__tool_run_helper(CF__TOOL_CHECK_HELPER, argc, argv);
     if (argc > 1 && strcmp(argv[1], "live") == 0)
-        return cf__tool_live(argc - 1, argv + 1);
+        return cf__tool_run_helper(CF__TOOL_LIVE_HELPER, argc, argv);
     if (parse_args(argc, argv, &o, &rc) == 0) {
         if (strcmp(o.command, "gallery") == 0)
             rc = cf__tool_gallery(o.outdir, o.gallery_title,

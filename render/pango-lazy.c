@@ -27,14 +27,26 @@
 
 #include <pango/pangocairo.h>
 
+#include "pango-lazy.h"
+
 #define PANGO_LIBRARY "libpangocairo-1.0.so.0"
 
+/* pango and fontconfig are one per process: so is this state */
 static void *pango_handle;
 static pthread_once_t pango_once = PTHREAD_ONCE_INIT;
+static void (*before_open)(void);
+
+void
+cf__pango_before_open(void (*fn)(void))
+{
+    before_open = fn;
+}
 
 static void
 open_pango(void)
 {
+    if (before_open != NULL)
+        before_open();
     pango_handle = dlopen(PANGO_LIBRARY, RTLD_LAZY | RTLD_LOCAL);
 }
 

@@ -26,6 +26,7 @@
 #include "help.h"
 #include "helpers.h"
 #include "html.h"
+#include "pango-lazy.h"
 #include "script.h"
 #include "tool.h"
 
@@ -530,6 +531,12 @@ render_figures(const cf_script_t *s, const options *o)
     return rc;
 }
 
+static void
+fonts_init(void)
+{
+    (void)cf__tool_fonts_init();
+}
+
 static int
 run_script(const options *o)
 {
@@ -544,7 +551,8 @@ run_script(const options *o)
         return EXIT_USAGE;
     }
     start_watchdog(o->script, o->timeout);
-    cf__tool_fonts_init();
+    /* the fonts are configured when the first label opens pango */
+    cf__pango_before_open(fonts_init);
     cf_diag_clear(&diag);
     /* list keeps stdout for the names: the script's prints go to stderr */
     st = cf_script_create(&o->limits,

@@ -269,8 +269,8 @@ cf__math_bb(unsigned cp)
     return capital(cp, "CHNPQRZ", held, 0x1d538);
 }
 
-/* Commands that take an argument (render/label-parse.c and
-** render/label-build.c), for the list. */
+/* Commands that take an argument (render/labels/label-parse.c and
+** render/labels/label-build.c), for the list. */
 static const struct {
     const char *name;
     const char *what;

@@ -152,7 +152,7 @@ typedef struct piece {
                                  its advance (bp, >= 0) */
 } piece_t;
 
-/* The parser's state (render/label-parse.c). */
+/* The parser's state (render/labels/label-parse.c). */
 typedef struct parser {
     const char *s;
     size_t pos, len;
@@ -164,7 +164,7 @@ typedef struct parser {
     int depth;
     /* one atom (character, command or group); a list of atoms up to
     ** stop: '}', '$', ']' (an optional argument), 'R' (a \\right) or 0
-    ** (render/label-build.c calls back through these) */
+    ** (render/labels/label-build.c calls back through these) */
     bool (*atom)(struct parser *p, const font_t *f, double x, double y,
                  piece_t *pc);
     bool (*list)(struct parser *p, const font_t *f, double x, double y,

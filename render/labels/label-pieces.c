@@ -1,6 +1,6 @@
 /*
-** The pieces the label parser (render/label-parse.c) and its
-** constructions (render/label-build.c) lay out with: errors, the extents
+** The pieces the label parser (render/labels/label-parse.c) and its
+** constructions (render/labels/label-build.c) lay out with: errors, the extents
 ** of a piece, moves, rules, script fonts.
 */
 #include <math.h>

@@ -3,6 +3,7 @@
 ** an unknown key, method, command, format or option (include/curvefig/
 ** core.h).
 */
+#include <stdbool.h>
 #include <string.h>
 
 #include "core-private.h"
@@ -41,10 +42,28 @@ name_distance(const char *a, const char *b)
     return rows[n % 3][m];
 }
 
+/* Whether name is a word of s: s contains it between '_', '-' or its ends
+** (degree_elevate holds degree and elevate, output-dir holds output). */
+static bool
+word_of(const char *s, const char *name)
+{
+    size_t n = strlen(name);
+    const char *p = s;
+    if (n < 3)
+        return false;
+    while ((p = strstr(p, name)) != NULL) {
+        if ((p == s || p[-1] == '_' || p[-1] == '-')
+            && (p[n] == '\0' || p[n] == '_' || p[n] == '-'))
+            return true;
+        p++;
+    }
+    return false;
+}
+
 const char *
 cf_nearest_name(const char *s, const char *const *names, size_t n)
 {
-    const char *best = NULL;
+    const char *best = NULL, *word = NULL;
     int bestd = MAX_NAME + 1;
     size_t len = strlen(s);
     int limit = len / 3 > 1 ? (int)(len / 3) : 1;
@@ -54,6 +73,9 @@ cf_nearest_name(const char *s, const char *const *names, size_t n)
             bestd = d;
             best = names[i];
         }
+        if (word_of(s, names[i])
+            && (word == NULL || strlen(names[i]) > strlen(word)))
+            word = names[i];   /* the longest: elevate, not degree */
     }
-    return bestd <= limit ? best : NULL;
+    return bestd <= limit ? best : word;
 }

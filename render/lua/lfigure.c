@@ -62,9 +62,19 @@ check_name(lua_State *L, const char *name)
     for (lua_Integer i = 1; i <= (lua_Integer)lua_rawlen(L, -1); i++) {
         lua_rawgeti(L, -1, i);
         lua_getiuservalue(L, -1, 1);
-        if (strcmp(lua_tostring(L, -1), name) == 0)
-            luaL_error(L, "figure: a figure named \"%s\" is already defined",
-                       name);
+        if (strcmp(lua_tostring(L, -1), name) == 0) {
+            /* where the first one was made: "FILE:LINE:" */
+            size_t wlen;
+            const char *where;
+            lua_getiuservalue(L, -2, 3);
+            where = lua_tolstring(L, -1, &wlen);
+            while (wlen > 0 && (where[wlen - 1] == ' '
+                                || where[wlen - 1] == ':'))
+                wlen--;
+            cf__lua_error(L, "figure: a figure named \"%s\" is already "
+                          "defined (at %.*s); the names name the files, so "
+                          "they must differ", name, (int)wlen, where);
+        }
         lua_pop(L, 2);
     }
     lua_pop(L, 1);

@@ -108,9 +108,7 @@ check_values(lua_State *L, const char *where, const cf__lua_key_t *k,
     } else if (lua_type(L, idx) == LUA_TNUMBER) {
         luaL_error(L, "%s: %s is a name, e.g. \"%s\", not a number", where,
                    k->name, k->values[0]);
-    } else if (lua_istable(L, idx) && k->also == NULL) {
-        /* a list of names (one place per point); with `also`, a table is
-        ** something else (a dash pattern, an inset's box of lengths) */
+    } else if (lua_istable(L, idx)) {
         lua_Integer n = (lua_Integer)lua_rawlen(L, idx);
         for (lua_Integer i = 1; i <= n; i++) {
             if (lua_rawgeti(L, idx, i) == LUA_TSTRING)

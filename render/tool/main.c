@@ -67,6 +67,41 @@ usage_error(const char *fmt, const char *arg)
     return EXIT_USAGE;
 }
 
+/* The nearest format to the unknown one in list (NULL: none near). */
+static const char *
+nearest_format(const char *list)
+{
+    static const char *const formats[] = { "svg", "pdf", "png", "ps", "eps",
+                                           "pgf", "html", "all" };
+    char name[64];
+    const char *p = list;
+    while (*p != '\0') {
+        size_t n = strcspn(p, ",");
+        cf_format_t f;
+        if (n > 0 && n < sizeof name) {
+            memcpy(name, p, n);
+            name[n] = '\0';
+            if (strcmp(name, "all") != 0 && strcmp(name, "html") != 0
+                && cf_format_from_name(name, &f, NULL) != CF_STATUS_OK)
+                return cf_nearest_name(name, formats,
+                                       sizeof formats / sizeof formats[0]);
+        }
+        p += n;
+        if (*p == ',')
+            p++;
+    }
+    return NULL;
+}
+
+/* The options of render, run and list, for the nearest one. */
+static const char *const known_options[] = {
+    "--output", "--formats", "--dpi", "--only", "--manifest", "--title",
+    "--max-memory", "--max-instructions", "--timeout", "--font",
+    "--font-size", "--theme", "--background", "--width", "--height",
+    "--seed", "--help", "--verbose", "--long", "--tight", "--steps",
+    "--no-labels",
+};
+
 static int
 parse_formats(const char *list, unsigned *out)
 {
@@ -226,9 +261,14 @@ parse_args(int argc, char **argv, options *o, int *rc)
             o->outdir = v;
         } else if (strcmp(a, "-f") == 0 || strcmp(a, "--formats") == 0) {
             if (parse_formats(v, &o->formats) != 0) {
-                *rc = usage_error("bad format list '%s' (use svg, pdf, png, "
-                                  "ps, eps, pgf, html or all, separated by "
-                                  "commas)", v);
+                const char *near = nearest_format(v);
+                char msg[512];
+                snprintf(msg, sizeof msg, "bad format list '%s' (%s%s%suse "
+                         "svg, pdf, png, ps, eps, pgf, html or all, "
+                         "separated by commas)", v,
+                         near != NULL ? "did you mean " : "",
+                         near != NULL ? near : "", near != NULL ? "? " : "");
+                *rc = usage_error("%s", msg);
                 return -1;
             }
         } else if (strcmp(a, "--dpi") == 0) {
@@ -315,7 +355,17 @@ parse_args(int argc, char **argv, options *o, int *rc)
                 o->files[o->nfiles++] = argv[i];
             break;
         } else if (a[0] == '-' && a[1] != '\0') {
-            *rc = usage_error("unknown option '%s'", a);
+            const char *near = cf_nearest_name(a, known_options,
+                                               sizeof known_options
+                                                   / sizeof known_options[0]);
+            char msg[512];
+            snprintf(msg, sizeof msg, "unknown option '%s'%s%s%s", a,
+                     near != NULL ? " (did you mean " : "",
+                     near != NULL ? near : "",
+                     near == NULL ? ""
+                     : strcmp(near, "--output") == 0 ? ", -o?)"
+                     : strcmp(near, "--formats") == 0 ? ", -f?)" : "?)");
+            *rc = usage_error("%s", msg);
             return -1;
         } else {
             o->files[o->nfiles] = argv[i];

@@ -3,7 +3,8 @@
 ** math.random is seeded (--seed, default 0), so that a script drawing
 ** random numbers renders byte for byte the same twice; --width and
 ** --height give every figure its page in any unit; a length without a
-** unit is refused, on the command line and in figure{}.
+** unit is refused, on the command line and in figure{}; a misspelt
+** format or option names the nearest one.
 */
 #include <math.h>
 #include <setjmp.h>
@@ -140,12 +141,30 @@ test_page_from_the_command_line(void **state)
     free(err);
 }
 
+/* A misspelt format or option: the message names the nearest one. */
+static void
+test_near_names(void **state)
+{
+    char *err;
+    (void)state;
+    assert_int_equal(render("q", "-f pdff"), 2);
+    err = slurp("err.txt");
+    assert_non_null(strstr(err, "bad format list 'pdff' (did you mean pdf?"));
+    free(err);
+    assert_int_equal(render("q", "--output-dir x"), 2);
+    err = slurp("err.txt");
+    assert_non_null(strstr(err, "unknown option '--output-dir' (did you mean "
+                                "--output, -o?)"));
+    free(err);
+}
+
 int
 main(int argc, char **argv)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_random_is_seeded),
         cmocka_unit_test(test_page_from_the_command_line),
+        cmocka_unit_test(test_near_names),
     };
     char path[128];
     FILE *f;

@@ -474,7 +474,7 @@ test_basis_errors(void **state)
           "N_2^2 needs knots u_2..u_5, 5 given" },
         { up, 5, 0, -1, CF_STATUS_BAD_DEGREE, "degree -1" },
         { flat, 4, 0, 2, CF_STATUS_BAD_KNOTS, "span no interval" },
-        { nan_knots, 5, 0, 2, CF_STATUS_NOT_FINITE, "knot 2" },
+        { nan_knots, 5, 0, 2, CF_STATUS_NOT_FINITE, "knot u_2 is NaN" },
     };
     (void)state;
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {

@@ -195,4 +195,4 @@ h:label({ Q[6][1] - 0.29, Q[6][2] - 0.36 }, "P_{5,3} = C(u)",
 -- in the empty middle of the heart, just below the region: short
 -- connectors, clear of the labels and of the curve
 h:inset{ region = { 3.15, 3.455, 3.95, 3.69 },
-         at = { "106bp", "100bp", "124bp", "37bp" } }
+         at = { "131bp", "100bp", "110bp", "33bp" } }

@@ -45,6 +45,6 @@ f:points(P, { color = "#3c3c3c", marker_color = "#3c3c3c" })
 local labels = {
   { P[1], "P_0 = P_{10}", "e" }, { P[2], "P_1 = P_{11}", "ne" },
   { P[3], "P_2 = P_3", "s" }, { P[5], "P_4", "n" }, { P[6], "P_5", "w" },
-  { P[7], "P_6", "w" }, { P[8], "P_7 = P_8", "s" }, { P[10], "P_9", "se" },
+  { P[7], "P_6", "sw" }, { P[8], "P_7 = P_8", "s" }, { P[10], "P_9", "se" },
 }
 for _, l in ipairs(labels) do f:label(l[1], l[2], { place = l[3] }) end

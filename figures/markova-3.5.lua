@@ -177,17 +177,22 @@ h:polyline({ Q[4], Q[5], Q[6], Q[7], Q[8] }, { color = "blue", width = 1.1 })
 h:knots(n)
 -- P_{5,2} above left and P_{4,2} above their points, C(u) below: outside
 -- the inset's region
+-- (P_{5,2}'s label outside the region's frame, left of it)
 local new = { { 3, "P_{3,1}", "ne" }, { 4, "P_{4,2}", "n" },
-              { 6, "P_{5,2}", "nw" },
+              { 6, "P_{5,2}", "w", { 3.13, Q[7][2] + 0.05 } },
               { 7, "P_{5,1}", "sw" } }
 for _, e in ipairs(new) do
   h:points({ Q[e[1] + 1] }, { marker = "dot", color = "blue",
                               marker_color = "blue", marker_size = 4.5 })
-  h:label(Q[e[1] + 1], e[2], { place = e[3], color = "blue" })
+  h:label(e[4] or Q[e[1] + 1], e[2], { place = e[3], color = "blue" })
 end
 h:points({ Q[6] }, { marker = "star", color = "red", marker_color = "red",
                      marker_size = 9 })
-h:label({ Q[6][1] + 0.1, Q[6][2] - 0.3 }, "P_{5,3} = C(u)",
+-- C(u) below its star, between the two connectors
+h:label({ Q[6][1] - 0.29, Q[6][2] - 0.36 }, "P_{5,3} = C(u)",
         { place = "center", color = "red" })
 -- P_{4,2}, C(u), P_{5,2} magnified
-h:inset{ region = { 3.15, 3.455, 3.95, 3.69 }, scale = 2.4 }
+-- in the empty middle of the heart, just below the region: short
+-- connectors, clear of the labels and of the curve
+h:inset{ region = { 3.15, 3.455, 3.95, 3.69 },
+         at = { "131bp", "100bp", "110bp", "33bp" } }

@@ -218,7 +218,7 @@ do
   for i, p in ipairs(pts) do
     if i < #pts then
       local text = string.format("w_%d = %s", i - 1,
-                                 w[i] == 1 and "1" or "\u{221A}2/2")
+                                 w[i] == 1 and "1" or "\\sqrt{2}/2")
       if i == 1 then text = "w_0 = w_8 = 1" end
       local place = ({ "e", "ne", "n", "nw", "w", "sw", "s", "se" })[i]
       -- the corners' labels nearer along the diagonal (their boxes'

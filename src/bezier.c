@@ -148,7 +148,7 @@ cf_bezier_create_homogeneous(size_t dim, int degree, const double *hpoints,
         double w = hpoints[i * (dim + 1) + dim];
         if (!(w > 0.0))
             return cf__error(diag, CF_STATUS_BAD_WEIGHT, (long)i,
-                             "weight %zu is %g; weights must be finite "
+                             "weight w_%zu is %g; weights must be finite "
                              "and positive", i, w);
     }
     return from_hpoints(dim, degree, true, hpoints, out, diag);

@@ -282,7 +282,7 @@ cf_bspline_create_homogeneous(size_t dim, int degree, const double *knots,
         double w = hpoints[i * (dim + 1) + dim];
         if (!(w > 0.0))
             return cf__error(diag, CF_STATUS_BAD_WEIGHT, (long)i,
-                             "weight %zu is %g; weights must be finite and "
+                             "weight w_%zu is %g; weights must be finite and "
                              "positive", i, w);
     }
     c = cf__bspline_alloc(dim, true, degree, count);

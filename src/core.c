@@ -1,7 +1,9 @@
 /*
 ** Status strings, error details, the allocator hook and shared checks.
 */
+#include <ctype.h>
 #include <math.h>
+#include <stdarg.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -44,6 +46,27 @@ cf_diag_clear(cf_diag_t *diag)
     diag->msg[0] = '\0';
 }
 
+/* printf's "nan" and "-nan" (a NaN's sign means nothing) as "NaN", in
+** place. */
+static void
+spell_nan(char *msg)
+{
+    char *p = msg, *q = msg;
+    while (*p != '\0') {
+        size_t skip = p[0] == '-' ? 1 : 0;
+        if (strncmp(p + skip, "nan", 3) == 0
+            && (p == msg || !isalnum((unsigned char)p[-1]))
+            && !isalnum((unsigned char)p[skip + 3])) {
+            memcpy(q, "NaN", 3);
+            q += 3;
+            p += skip + 3;
+        } else {
+            *q++ = *p++;
+        }
+    }
+    *q = '\0';
+}
+
 cf_status_t
 cf_diag_set(cf_diag_t *diag, cf_status_t status, long index,
             const char *fmt, ...)
@@ -55,6 +78,7 @@ cf_diag_set(cf_diag_t *diag, cf_status_t status, long index,
         va_start(ap, fmt);
         vsnprintf(diag->msg, sizeof diag->msg, fmt, ap);
         va_end(ap);
+        spell_nan(diag->msg);
     }
     return status;
 }
@@ -240,9 +264,10 @@ cf__check_finite_points(const double *pts, size_t count, size_t dim,
             double v = pts[i * stride + k];
             if (!isfinite(v))
                 return cf__error(diag, CF_STATUS_NOT_FINITE, (long)i,
-                                 "%s %zu has coordinate %zu = %g; "
-                                 "coordinates must be finite",
-                                 what, i, k + 1, v);
+                                 "%s %s%zu has coordinate %zu = %g; "
+                                 "coordinates must be finite", what,
+                                 strcmp(what, "point") == 0 ? "P_" : "", i,
+                                 k + 1, v);
         }
     }
     return CF_STATUS_OK;
@@ -254,7 +279,7 @@ cf__check_weights(const double *w, size_t count, cf_diag_t *diag)
     for (size_t i = 0; i < count; i++) {
         if (!isfinite(w[i]) || !(w[i] > 0.0))
             return cf__error(diag, CF_STATUS_BAD_WEIGHT, (long)i,
-                             "weight %zu is %g; weights must be finite "
+                             "weight w_%zu is %g; weights must be finite "
                              "and positive", i, w[i]);
     }
     return CF_STATUS_OK;

@@ -34,18 +34,20 @@ cf__check_knot_order(const double *U, size_t n, const char *what,
                      cf_diag_t *diag)
 {
     char b1[64], b2[64];
+    /* a curve's knots by their index u_i, another list's by position */
+    const char *u = strcmp(what, "knot") == 0 ? "u_" : "";
     for (size_t i = 0; i < n; i++) {
         if (!isfinite(U[i]))
             return cf__error(diag, CF_STATUS_NOT_FINITE, (long)i,
-                             "%s %zu is %g; knots must be finite", what, i,
-                             U[i]);
+                             "%s %s%zu is %g; knots must be finite", what, u,
+                             i, U[i]);
     }
     for (size_t i = 1; i < n; i++) {
         if (U[i] < U[i - 1]) {
             format_pair(U[i], U[i - 1], b1, b2, sizeof b1);
             return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)i,
-                             "%s %zu (%s) is smaller than %s %zu (%s)", what,
-                             i, b1, what, i - 1, b2);
+                             "%s %s%zu (%s) is smaller than %s %s%zu (%s)",
+                             what, u, i, b1, what, u, i - 1, b2);
         }
     }
     return CF_STATUS_OK;
@@ -97,7 +99,7 @@ cf_knots_validate(int degree, size_t npoints, const double *knots,
         if (j - i + 1 > (size_t)degree + 1) {
             snprintf(b1, sizeof b1, "%g", knots[i]);
             return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)i,
-                             "knot %zu (%s) has multiplicity %zu; degree %d "
+                             "knot u_%zu (%s) has multiplicity %zu; degree %d "
                              "allows at most %d", i, b1, j - i + 1, degree,
                              degree + 1);
         }

@@ -25,8 +25,13 @@ top:plot{ x = { 0, 1 }, y = { 0, 1.6 }, yticks = { 0, 0.5, 1, 1.5 },
           xlabel = "u" }
 top:polygon(P, { legend = "$(u_i^*, c_i)$" })
 top:func(s, 0, 1, { legend = "$s(u)$" })
-bottom:plot{ x = { 0, 1 }, y = { 0, 1.1 }, knots = { 0, 0.25, 0.5, 0.75, 1 },
-             knot_labels = "u_{%d}", yticks = { 0, 1 }, xlabel = "u" }
+-- the knots by their indices in U: u_0 ... u_3 = 0, u_4 = 0.25, ...
+bottom:plot{ x = { 0, 1 }, y = { 0, 1.1 }, knots = U,
+             knot_labels = function(i, m)
+               if i > 0 and U[i] == U[i + 1] then return false end
+               return m > 1 and string.format("u_{%d..%d}", i, i + m - 1)
+                            or string.format("u_{%d}", i)
+             end, yticks = { 0, 1 }, xlabel = "u" }
 for i = 0, n do
   bottom:basis({ table.unpack(U, i + 1, i + p + 2) }, 0, p,
                { color = i + 1 })

@@ -31,14 +31,18 @@ local f = figure{
   width = "15cm", height = "8.5cm",
   window = { -30, 15, -10, 15 },
 }
-f:plot{ x = { -30, 15 }, y = { -10, 15 }, xticks = 5, yticks = 5 }
+-- no tick label at the origin: either axis would strike its "0"
+f:plot{ x = { -30, 15 }, y = { -10, 15 },
+        xticks = { -30, -25, -20, -15, -10, -5, 5, 10, 15 },
+        yticks = { -10, -5, 5, 10, 15 } }
 f:polyline(P, { color = "#8c8c8c", width = 0.5 })
 f:curve(bezier(P), { color = "#1f5fbf", dash = "dashed", width = 1.2 })
 f:curve(bezier{ points = P, weights = w }, { color = "#c0392b", width = 1.4 })
 f:points(P, { color = "#3c3c3c", marker_color = "#3c3c3c" })
 -- places fixed, as in the Manipulate: automatic ones would depend on the
 -- rasterizer, which differs a little between the tool and the page
-local places = { "nw", "ne", "w", "e", "ne", "se", "n", "ne" }
+-- (5 below its point and 6 above left: clear of the legs P_1 P_2, P_0 P_1)
+local places = { "nw", "ne", "w", "e", "ne", "s", "nw", "ne" }
 for i, p in ipairs(P) do
   f:label(p, tostring(i - 1), { color = "red", place = places[i] })
 end

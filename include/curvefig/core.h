@@ -98,6 +98,13 @@ typedef struct cf_diag {
 /* Reset a diag to "no error". */
 CF_API void cf_diag_clear(cf_diag_t *diag);
 
+/* The name of names[0..n-1] nearest to s (Damerau-Levenshtein distance),
+** if near enough to suggest in a message's "did you mean" (at most one
+** edit per three letters, at least one); else a name that is a word of s
+** (degree_elevate: elevate); else NULL. */
+CF_API const char *cf_nearest_name(const char *s, const char *const *names,
+                                   size_t n);
+
 /*
 ** Allocator hook, shaped like lua_Alloc: realloc(ud, ptr, old_size,
 ** new_size); new_size == 0 frees and returns NULL.

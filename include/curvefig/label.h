@@ -41,13 +41,21 @@ extern "C" {
 **   \mathrm{...} \text{...} upright; \mathbf{...} bold; \mathit{...};
 **         \boldsymbol{...} bold italic letters; \mathcal{A} capitals;
 **         \overline{...} a rule over the group.
-**   \frac{num}{den} (script size, centred, rule on the math axis);
+**   \frac{num}{den} (script size, centred, rule on the math axis;
+**         \frac14: one-token arguments, as in TeX); \binom{n}{k};
+**   \sqrt{x}, \sqrt[n]{x}: the radical sign sized to the radicand (TeX's
+**         rule 11: Latin Modern Math's sign scaled to the height the
+**         radicand, the gap and the rule need), a rule over it;
+**   \left( ... \right) with ( ) [ ] | / . \{ \} \langle \rangle \|:
+**         delimiters sized to what they enclose (rule 19);
+**   \mathbb{R}: double-struck capitals and digits;
 **   \hat \bar \tilde \vec \dot \ddot over one character, or centred over
 **         a {group} of several (\vec{PQ}), as TeX sets them over a box.
 **   Any UTF-8 text (Czech, Russian, Slovene, Chinese): letters outside
 **   ASCII are set upright; the family list supplies Cyrillic and CJK.
 ** Errors (unbalanced braces, unknown command, dangling _ or ^, invalid
-** UTF-8) are INVALID_ARG with the byte position in diag->index.
+** UTF-8) are INVALID_ARG with the byte position in diag->index; an
+** unknown command's message names the nearest known one.
 */
 
 /* One run of glyphs of a laid-out label. */

@@ -136,7 +136,8 @@ begin_page(void *ctx, const cf__page_t *pg)
     }
     put(g, "\\begin{pgfpicture}\n"
            "\\providecommand\\text[1]{\\mbox{#1}}\n"
-           "\\providecommand\\boldsymbol[1]{\\mbox{\\boldmath$#1$}}\n");
+           "\\providecommand\\boldsymbol[1]{\\mbox{\\boldmath$#1$}}\n"
+           "\\providecommand\\binom[2]{{#1\\choose#2}}\n");
     if (pg->background.a > 0) {
         put(g, "\\begin{pgfscope}");
         set_fill(g, &pg->background, 1);

@@ -238,31 +238,50 @@ cf__math_italic(unsigned cp, bool bold)
     return 0;
 }
 
+/* A capital of an alphabet of mathematics: from first on, but for the
+** letters Unicode had before (letters, their code points held). */
+static unsigned
+capital(unsigned cp, const char *letters, const unsigned *held,
+        unsigned first)
+{
+    const char *at;
+    if (cp < 'A' || cp > 'Z')
+        return 0;
+    at = strchr(letters, (int)cp);
+    return at != NULL ? held[at - letters] : first + (cp - 'A');
+}
+
 unsigned
 cf__math_cal(unsigned cp)
 {
-    static const struct {
-        char letter;
-        unsigned cp;
-    } holes[] = {
-        { 'B', 0x212c }, { 'E', 0x2130 }, { 'F', 0x2131 }, { 'H', 0x210b },
-        { 'I', 0x2110 }, { 'L', 0x2112 }, { 'M', 0x2133 }, { 'R', 0x211b },
-    };
-    size_t i;
-    if (cp < 'A' || cp > 'Z')
-        return 0;
-    for (i = 0; i < sizeof holes / sizeof holes[0]; i++)
-        if (holes[i].letter == (char)cp)
-            return holes[i].cp;
-    return 0x1d49c + (cp - 'A');
+    static const unsigned held[] = { 0x212c, 0x2130, 0x2131, 0x210b,
+                                     0x2110, 0x2112, 0x2133, 0x211b };
+    return capital(cp, "BEFHILMR", held, 0x1d49c);
 }
 
-/* Commands that take an argument (render/label-parse.c), for the list. */
+unsigned
+cf__math_bb(unsigned cp)
+{
+    static const unsigned held[] = { 0x2102, 0x210d, 0x2115, 0x2119,
+                                     0x211a, 0x211d, 0x2124 };
+    if (cp >= '0' && cp <= '9')
+        return 0x1d7d8 + (cp - '0');
+    return capital(cp, "CHNPQRZ", held, 0x1d538);
+}
+
+/* Commands that take an argument (render/labels/label-parse.c and
+** render/labels/label-build.c), for the list. */
 static const struct {
     const char *name;
     const char *what;
 } structures[] = {
-    { "frac", "\\frac{num}{den}: a fraction" },
+    { "frac", "\\frac{num}{den}: a fraction (\\frac14: one-token "
+              "arguments)" },
+    { "binom", "\\binom{n}{k}: a binomial coefficient" },
+    { "sqrt", "\\sqrt{x}, \\sqrt[n]{x}: a radical sized to x" },
+    { "left", "\\left( ... \\right): delimiters sized to what they "
+              "enclose" },
+    { "mathbb", "\\mathbb{R}: double-struck capitals and digits" },
     { "mathrm", "\\mathrm{...}: upright" },
     { "text", "\\text{...}: text (upright, spaces kept)" },
     { "operatorname", "\\operatorname{...}: an operator name" },
@@ -319,4 +338,24 @@ cf__label_structure(const char *name)
         if (strcmp(name, structures[i].name) == 0)
             return true;
     return false;
+}
+
+const char *
+cf__label_nearest_command(const char *name)
+{
+    const char *names[sizeof commands / sizeof commands[0]
+                      + sizeof spaces / sizeof spaces[0]
+                      + sizeof accents / sizeof accents[0]
+                      + sizeof structures / sizeof structures[0] + 1];
+    size_t i, n = 0;
+    for (i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        names[n++] = commands[i].name;
+    for (i = 0; i < sizeof spaces / sizeof spaces[0]; i++)
+        names[n++] = spaces[i].name;
+    for (i = 0; i < sizeof accents / sizeof accents[0]; i++)
+        names[n++] = accents[i].name;
+    for (i = 0; i < sizeof structures / sizeof structures[0]; i++)
+        names[n++] = structures[i].name;
+    names[n++] = "right";
+    return cf_nearest_name(name, names, n);
 }

@@ -60,6 +60,7 @@ typedef struct font {
     bool math;            /* glyphs of the math font (CF__MATH_FAMILY) */
     bool boldsymbol;      /* \boldsymbol: letters bold italic */
     bool cal;             /* \mathcal: capitals calligraphic */
+    bool bb;              /* \mathbb: capitals and digits double-struck */
     bool text;            /* text mode: upright, no scripts */
 } font_t;
 
@@ -95,6 +96,11 @@ double cf__label_put_text(cf_label_t *lab, const font_t *f, double x,
 double cf__label_italic_correction(cf_label_t *lab, const font_t *f,
                                    const char *s, size_t n);
 
+/* The advance width and ink box (y down) of s[0..n) alone in font f,
+** without adding a run (false: no layout). */
+bool cf__label_measure(cf_label_t *lab, const font_t *f, const char *s,
+                       size_t n, double *width, double ink[4]);
+
 /* ---- label-chars.c ------------------------------------------------------ */
 
 /* Decode one UTF-8 character at s[pos]; returns its length (0 when
@@ -118,6 +124,11 @@ bool cf__label_accent(const char *name, unsigned *cp);
 unsigned cf__math_italic(unsigned cp, bool bold);
 /* The calligraphic form of a capital letter (\mathcal); 0 otherwise. */
 unsigned cf__math_cal(unsigned cp);
+/* The double-struck form of a capital letter or a digit (\mathbb); 0
+** otherwise. */
+unsigned cf__math_bb(unsigned cp);
+/* The known command nearest to name (fewest edits), for a message. */
+const char *cf__label_nearest_command(const char *name);
 /* Whether name is a command with an argument (\frac, \mathbf, ...). */
 bool cf__label_structure(const char *name);
 
@@ -127,5 +138,71 @@ bool cf__label_structure(const char *name);
 ** set). */
 cf_status_t cf__label_parse(cf_label_t *lab, const char *text,
                             cf_diag_t *diag);
+
+/* Extents of a laid-out piece (runs [first, end) of the label). */
+typedef struct piece {
+    size_t first, end;
+    double x0, x1;            /* pen start and end */
+    double top, bottom;       /* ink extent above/below the baseline
+                                 (top positive up, bottom positive down) */
+    int cls;                  /* spacing class of the atom */
+    bool group;               /* nucleus was a group or command result */
+    double ic;                /* italic correction of a slanted single
+                                 character: how far its ink reaches past
+                                 its advance (bp, >= 0) */
+} piece_t;
+
+/* The parser's state (render/labels/label-parse.c). */
+typedef struct parser {
+    const char *s;
+    size_t pos, len;
+    cf_label_t *lab;
+    cf_diag_t *diag;
+    cf_status_t st;
+    bool has_dollar;
+    bool in_math;
+    int depth;
+    /* one atom (character, command or group); a list of atoms up to
+    ** stop: '}', '$', ']' (an optional argument), 'R' (a \\right) or 0
+    ** (render/labels/label-build.c calls back through these) */
+    bool (*atom)(struct parser *p, const font_t *f, double x, double y,
+                 piece_t *pc);
+    bool (*list)(struct parser *p, const font_t *f, double x, double y,
+                 int stop, piece_t *out);
+} parser_t;
+
+/* ---- label-pieces.c ----------------------------------------------------- */
+
+/* The parser's pieces, for it and the constructions of label-build.c.
+** cf__lp_error records "label ...: what at byte at" (the first error
+** wins) and returns the status; cf__lp_nomem the same for memory. */
+cf_status_t cf__lp_error(parser_t *p, size_t at, const char *what);
+cf_status_t cf__lp_nomem(parser_t *p);
+void cf__lp_piece_init(piece_t *pc, cf_label_t *lab, double x);
+/* Recompute pc's top and bottom from its runs (baseline y). */
+void cf__lp_piece_ink(cf_label_t *lab, piece_t *pc, double y);
+/* The font of a script (or a fraction's parts) of f: next level, size
+** base times the level's ratio. */
+void cf__lp_script_font(const font_t *f, font_t *out, cf_label_kind_t kind,
+                        double base);
+void cf__lp_move(cf_label_t *lab, size_t first, size_t end, double dx,
+                 double dy);
+/* A rule of thickness th and width w, its bottom at (x, y). */
+bool cf__lp_rule(parser_t *p, const font_t *f, double x, double y, double w,
+                 double th);
+/* pc becomes one ordinary atom of the runs from first on. */
+void cf__lp_over_group(cf_label_t *lab, piece_t *pc, size_t first, double y);
+
+/* ---- label-build.c ------------------------------------------------------ */
+
+/* The constructions after their command at byte at (p->pos after the
+** name): \frac (and \frac14), \binom, \sqrt and \sqrt[n], and
+** \left ... \right. */
+bool cf__label_frac(parser_t *p, const font_t *f, double x, double y,
+                    piece_t *pc, size_t at, bool rule);
+bool cf__label_sqrt(parser_t *p, const font_t *f, double x, double y,
+                    piece_t *pc, size_t at);
+bool cf__label_left_right(parser_t *p, const font_t *f, double x, double y,
+                          piece_t *pc, size_t at);
 
 #endif

@@ -12,80 +12,10 @@
 
 #include "label-impl.h"
 
-typedef struct parser {
-    const char *s;
-    size_t pos, len;
-    cf_label_t *lab;
-    cf_diag_t *diag;
-    cf_status_t st;
-    bool has_dollar;
-    bool in_math;
-    int depth;
-} parser_t;
-
-/* Extents of a laid-out piece (runs [first, end) of the label). */
-typedef struct piece {
-    size_t first, end;
-    double x0, x1;            /* pen start and end */
-    double top, bottom;       /* ink extent above/below the baseline
-                                 (top positive up, bottom positive down) */
-    int cls;                  /* spacing class of the atom */
-    bool group;               /* nucleus was a group or command result */
-    double ic;                /* italic correction of a slanted single
-                                 character: how far its ink reaches past
-                                 its advance (bp, >= 0) */
-} piece_t;
-
-static cf_status_t
-perr(parser_t *p, size_t at, const char *what)
-{
-    if (p->st == CF_STATUS_OK)
-        p->st = cf_diag_set(p->diag, CF_STATUS_INVALID_ARG, (long)at,
-                            "label \"%s\": %s at byte %zu", p->s, what, at);
-    return p->st;
-}
-
-static cf_status_t
-pnomem(parser_t *p)
-{
-    if (p->st == CF_STATUS_OK)
-        p->st = cf_diag_set(p->diag, CF_STATUS_NO_MEMORY, -1,
-                            "label \"%s\": out of memory", p->s);
-    return p->st;
-}
-
+static bool parse_atom(parser_t *p, const font_t *f, double x, double y,
+                       piece_t *pc);
 static bool parse_list(parser_t *p, const font_t *f, double x, double y,
                        int stop, piece_t *out);
-
-static void
-piece_init(piece_t *pc, cf_label_t *lab, double x)
-{
-    pc->first = pc->end = lab->count;
-    pc->x0 = pc->x1 = x;
-    pc->top = -INFINITY;
-    pc->bottom = -INFINITY;
-    pc->cls = CLS_NONE;
-    pc->group = false;
-    pc->ic = 0;
-}
-
-/* Recompute top/bottom of a piece from its runs. */
-static void
-piece_ink(cf_label_t *lab, piece_t *pc, double y)
-{
-    size_t i;
-    pc->top = -INFINITY;
-    pc->bottom = -INFINITY;
-    for (i = pc->first; i < pc->end; i++) {
-        run_t *r = &lab->runs[i];
-        if (r->ink[3] <= r->ink[1])
-            continue;
-        pc->top = fmax(pc->top, (r->y - y) - r->ink[1]);
-        pc->bottom = fmax(pc->bottom, r->ink[3] - (r->y - y));
-    }
-    if (pc->top == -INFINITY)
-        pc->top = pc->bottom = 0;
-}
 
 static void
 shift_runs(cf_label_t *lab, size_t first, size_t end, double dy)
@@ -107,7 +37,14 @@ math_form(parser_t *p, font_t *g, unsigned *cp)
     if (g->cal) {
         m = cf__math_cal(*cp);
         if (m == 0) {
-            perr(p, p->pos, "\\mathcal takes capital letters A-Z");
+            cf__lp_error(p, p->pos, "\\mathcal takes capital letters A-Z");
+            return false;
+        }
+    } else if (g->bb) {
+        m = cf__math_bb(*cp);
+        if (m == 0) {
+            cf__lp_error(p, p->pos,
+                         "\\mathbb takes capital letters A-Z and digits");
             return false;
         }
     } else if (g->italic && p->lab->tex_math) {
@@ -122,7 +59,7 @@ math_form(parser_t *p, font_t *g, unsigned *cp)
         /* the glyph is italic itself: the run stays marked italic */
         *cp = m;
         g->math = true;
-        g->italic = !g->cal;
+        g->italic = !g->cal && !g->bb;
         g->bold = false;
     }
     return true;
@@ -141,13 +78,13 @@ emit_char(parser_t *p, const font_t *f, unsigned cp, bool italic, int cls,
     if (!f->text && !math_form(p, &g, &cp))
         return false;
     n = cf__utf8_encode(cp, buf);
-    piece_init(pc, p->lab, x);
+    cf__lp_piece_init(pc, p->lab, x);
     /* only ordinary atoms continue a run: operators get spaces */
     p->lab->merge_ok = p->lab->merge_ok && cls == CLS_ORD;
     nx = cf__label_put_text(p->lab, &g, x, y, buf, n);
     p->lab->merge_ok = cls == CLS_ORD;
     if (isnan(nx)) {
-        pnomem(p);
+        cf__lp_nomem(p);
         return false;
     }
     pc->end = p->lab->count;
@@ -168,18 +105,6 @@ emit_char(parser_t *p, const font_t *f, unsigned cp, bool italic, int cls,
         pc->bottom = bottom > top ? bottom - (r->y - y) : 0;
     }
     return true;
-}
-
-static void
-script_font(const font_t *f, font_t *out, cf_label_kind_t kind, double base)
-{
-    *out = *f;
-    out->level = f->level + 1;
-    out->kind = kind;
-    out->size = base * (out->level == 1 ? SCRIPT_RATIO : SCRIPT2_RATIO);
-    if (out->level > 2)
-        out->size = base * SCRIPT2_RATIO;
-    out->text = false;
 }
 
 /* Read a command name after '\' (letters, or one other character). */
@@ -206,95 +131,6 @@ command_name(const parser_t *p, size_t at, char *name, size_t cap)
     }
     name[n] = '\0';
     return n;
-}
-
-static bool parse_atom(parser_t *p, const font_t *f, double x, double y,
-                       piece_t *pc);
-
-/* Move runs [first, end) by (dx, dy). */
-static void
-move_runs(cf_label_t *lab, size_t first, size_t end, double dx, double dy)
-{
-    size_t i;
-    for (i = first; i < end; i++) {
-        lab->runs[i].x += dx;
-        lab->runs[i].y += dy;
-    }
-}
-
-/* A rule of thickness th and width w, its bottom at (x, y), as a run
-** without text; false when out of memory. */
-static bool
-add_rule(parser_t *p, const font_t *f, double x, double y, double w,
-         double th)
-{
-    run_t *r;
-    if (isnan(cf__label_put_text(p->lab, f, x, y, "", 0))) {
-        pnomem(p);
-        return false;
-    }
-    r = &p->lab->runs[p->lab->count - 1];
-    r->rule_h = th;
-    r->width = w;
-    r->ascent = th;
-    r->descent = 0;
-    r->ink[0] = 0;
-    r->ink[1] = -th;
-    r->ink[2] = w;
-    r->ink[3] = 0;
-    p->lab->merge_ok = false;
-    return true;
-}
-
-/* \frac{num}{den}: both at the next script level, centred over each
-** other around a rule on the math axis (TeX rule 15, text style: num2 =
-** 0.394 em, denom2 = 0.345 em, axis 0.25 em, rule 0.04 em, clearance one
-** rule thickness, null delimiter space 0.12 em each side). */
-static bool
-parse_frac(parser_t *p, const font_t *f, double x, double y, piece_t *pc,
-           size_t at)
-{
-    piece_t num, den;
-    font_t g;
-    double s = f->size, base, wn, wd, w, pad = 0.12 * s, th = 0.04 * s;
-    double axis = 0.25 * s, up = 0.394 * s, down = 0.345 * s;
-    int k;
-
-    base = f->level == 0 ? s : s / (f->level == 1 ? SCRIPT_RATIO
-                                                  : SCRIPT2_RATIO);
-    script_font(f, &g, f->kind, base);
-    for (k = 0; k < 2; k++) {
-        piece_t *pp = k == 0 ? &num : &den;
-        while (p->pos < p->len && p->s[p->pos] == ' ')
-            p->pos++;
-        if (p->pos >= p->len || p->s[p->pos] != '{') {
-            perr(p, at, "\\frac needs {numerator}{denominator}");
-            return false;
-        }
-        p->lab->merge_ok = false;
-        if (!parse_atom(p, &g, x + pad, y, pp))
-            return false;
-        piece_ink(p->lab, pp, y);
-    }
-    wn = num.x1 - num.x0;
-    wd = den.x1 - den.x0;
-    w = fmax(wn, wd);
-    if ((up - num.bottom) - (axis + th / 2) < th)
-        up = axis + th / 2 + th + num.bottom;
-    if ((axis - th / 2) - (den.top - down) < th)
-        down = den.top + th - (axis - th / 2);
-    move_runs(p->lab, num.first, num.end, (w - wn) / 2, up);
-    move_runs(p->lab, den.first, den.end, (w - wd) / 2, -down);
-    if (!add_rule(p, f, x + pad, y + axis - th / 2, w, th))
-        return false;
-    pc->first = num.first;
-    pc->end = p->lab->count;
-    pc->x0 = x;
-    pc->x1 = x + w + 2 * pad;
-    pc->cls = CLS_ORD;
-    pc->group = true;
-    piece_ink(p->lab, pc, y);
-    return true;
 }
 
 /* Put the accent's run (the last one) over the character of pc: centred
@@ -329,22 +165,10 @@ put_accent(parser_t *p, const font_t *f, double x, double y, unsigned acc_cp)
     }
     p->lab->merge_ok = false;
     if (isnan(cf__label_put_text(p->lab, &g, x, y, buf, n))) {
-        pnomem(p);
+        cf__lp_nomem(p);
         return false;
     }
     return true;
-}
-
-/* The group of pc (from run first) with what was put over it: one
-** ordinary atom. */
-static void
-over_group(cf_label_t *lab, piece_t *pc, size_t first, double y)
-{
-    pc->first = first;
-    pc->end = lab->count;
-    pc->cls = CLS_ORD;
-    pc->group = true;
-    piece_ink(lab, pc, y);
 }
 
 /* \hat{PQ} (a group of more than one character): the group, then the
@@ -361,14 +185,14 @@ parse_group_accent(parser_t *p, const font_t *f, double x, double y,
     if (!parse_atom(p, f, x, y, pc))
         return false;
     first = pc->first;
-    piece_ink(p->lab, pc, y);
+    cf__lp_piece_ink(p->lab, pc, y);
     if (!put_accent(p, f, x, y, acc_cp))
         return false;
     acc = &p->lab->runs[p->lab->count - 1];
     acc->x = 0.5 * (pc->x0 + pc->x1) - 0.5 * (acc->ink[0] + acc->ink[2]);
     acc->y = y + fmax(pc->top, 0.431 * f->size) + 0.06 * f->size
            + acc->ink[3];
-    over_group(p->lab, pc, first, y);
+    cf__lp_over_group(p->lab, pc, first, y);
     return true;
 }
 
@@ -395,7 +219,7 @@ parse_accent(parser_t *p, const font_t *f, double x, double y, piece_t *pc,
             q++;
         if (q < p->len && p->s[q] != '}')
             return parse_group_accent(p, f, x, y, pc, acc_cp);
-        perr(p, at, "an accent needs a character or a {group}");
+        cf__lp_error(p, at, "an accent needs a character or a {group}");
         return false;
     }
     if (braced)
@@ -404,7 +228,7 @@ parse_accent(parser_t *p, const font_t *f, double x, double y, piece_t *pc,
     if (p->pos >= p->len
         || (m = cf__utf8_decode(p->s, p->len, p->pos, &base)) == 0
         || base == '{' || base == '}' || base == '\\') {
-        perr(p, at, "an accent needs a character or a {group}");
+        cf__lp_error(p, at, "an accent needs a character or a {group}");
         return false;
     }
     p->pos += m;
@@ -440,12 +264,13 @@ parse_font_command(parser_t *p, const font_t *f, const char *name,
     g.boldsymbol = strcmp(name, "boldsymbol") == 0;
     g.bold = strcmp(name, "mathbf") == 0 || g.boldsymbol;
     g.cal = strcmp(name, "mathcal") == 0;
+    g.bb = strcmp(name, "mathbb") == 0;
     g.text = strcmp(name, "text") == 0 || strcmp(name, "mathrm") == 0
         || strcmp(name, "operatorname") == 0;
     while (p->pos < p->len && p->s[p->pos] == ' ')
         p->pos++;
     if (p->pos >= p->len || p->s[p->pos] != '{') {
-        perr(p, at, "a font command needs a {group}");
+        cf__lp_error(p, at, "a font command needs a {group}");
         return false;
     }
     return parse_atom(p, &g, x, y, pc);
@@ -462,26 +287,33 @@ parse_overline(parser_t *p, const font_t *f, double x, double y,
     while (p->pos < p->len && p->s[p->pos] == ' ')
         p->pos++;
     if (p->pos >= p->len || p->s[p->pos] != '{') {
-        perr(p, at, "\\overline needs a {group}");
+        cf__lp_error(p, at, "\\overline needs a {group}");
         return false;
     }
     p->lab->merge_ok = false;
     if (!parse_atom(p, f, x, y, pc))
         return false;
     first = pc->first;
-    piece_ink(p->lab, pc, y);
-    if (!add_rule(p, f, pc->x0, y + fmax(pc->top, 0.431 * f->size) + 3 * th,
+    cf__lp_piece_ink(p->lab, pc, y);
+    if (!cf__lp_rule(p, f, pc->x0, y + fmax(pc->top, 0.431 * f->size) + 3 * th,
                   pc->x1 - pc->x0, th))
         return false;
-    over_group(p->lab, pc, first, y);
+    cf__lp_over_group(p->lab, pc, first, y);
     return true;
 }
 
 static bool
 is_font_command(const char *name)
 {
-    return cf__label_structure(name) && strcmp(name, "frac") != 0
-        && strcmp(name, "overline") != 0;
+    static const char *const fonts[] = {
+        "mathrm", "text", "operatorname", "mathit", "mathbf", "boldsymbol",
+        "mathcal", "mathbb",
+    };
+    size_t i;
+    for (i = 0; i < sizeof fonts / sizeof fonts[0]; i++)
+        if (strcmp(name, fonts[i]) == 0)
+            return true;
+    return false;
 }
 
 /* A command after '\\' at byte at: a space, a symbol, an accent, a
@@ -490,7 +322,8 @@ static bool
 parse_command(parser_t *p, const font_t *f, double x, double y,
               piece_t *pc, size_t at)
 {
-    char name[24], msg[64];
+    char name[24], msg[128];
+    const char *near;
     size_t n = command_name(p, at + 1, name, sizeof name);
     bool math = !f->text, italic;
     unsigned cp;
@@ -498,12 +331,12 @@ parse_command(parser_t *p, const font_t *f, double x, double y,
     int cls;
 
     if (n == 0) {
-        perr(p, at, "'\\' without a command name");
+        cf__lp_error(p, at, "'\\' without a command name");
         return false;
     }
     p->pos = at + 1 + n;
     if (cf__label_space(name, &em)) {
-        piece_init(pc, p->lab, x);
+        cf__lp_piece_init(pc, p->lab, x);
         pc->x1 = x + em * f->size;
         pc->cls = CLS_SPACE;
         pc->top = pc->bottom = 0;
@@ -515,14 +348,28 @@ parse_command(parser_t *p, const font_t *f, double x, double y,
                          math ? cls : CLS_ORD, x, y, pc);
     if (cf__label_accent(name, &cp))
         return parse_accent(p, f, x, y, pc, at, cp);
-    if (strcmp(name, "frac") == 0)
-        return parse_frac(p, f, x, y, pc, at);
+    if (strcmp(name, "frac") == 0 || strcmp(name, "binom") == 0)
+        return cf__label_frac(p, f, x, y, pc, at, name[0] == 'f');
+    if (strcmp(name, "sqrt") == 0)
+        return cf__label_sqrt(p, f, x, y, pc, at);
+    if (strcmp(name, "left") == 0)
+        return cf__label_left_right(p, f, x, y, pc, at);
+    if (strcmp(name, "right") == 0) {
+        cf__lp_error(p, at, "\\right without \\left");
+        return false;
+    }
     if (strcmp(name, "overline") == 0)
         return parse_overline(p, f, x, y, pc, at);
     if (is_font_command(name))
         return parse_font_command(p, f, name, x, y, pc, at);
-    snprintf(msg, sizeof msg, "unknown command \\%s", name);
-    perr(p, at, msg);
+    near = cf__label_nearest_command(name);
+    if (near != NULL)
+        snprintf(msg, sizeof msg, "unknown command \\%s (did you mean "
+                 "\\%s? `curvefig help labels` lists them)", name, near);
+    else
+        snprintf(msg, sizeof msg, "unknown command \\%s (`curvefig help "
+                 "labels` lists the commands)", name);
+    cf__lp_error(p, at, msg);
     return false;
 }
 
@@ -534,14 +381,14 @@ parse_group(parser_t *p, const font_t *f, double x, double y, piece_t *pc,
     font_t g = *f;
     p->pos++;
     if (++p->depth > MAX_DEPTH) {
-        perr(p, at, "groups nested too deeply");
+        cf__lp_error(p, at, "groups nested too deeply");
         return false;
     }
     if (!parse_list(p, &g, x, y, '}', pc))
         return false;
     p->depth--;
     if (p->pos >= p->len || p->s[p->pos] != '}') {
-        perr(p, at, "unbalanced '{'");
+        cf__lp_error(p, at, "unbalanced '{'");
         return false;
     }
     p->pos++;
@@ -566,7 +413,7 @@ parse_atom(parser_t *p, const font_t *f, double x, double y, piece_t *pc)
         return parse_command(p, f, x, y, pc, at);
     n = cf__utf8_decode(p->s, p->len, at, &cp);
     if (n == 0) {
-        perr(p, at, "invalid UTF-8");
+        cf__lp_error(p, at, "invalid UTF-8");
         return false;
     }
     p->pos = at + n;
@@ -591,18 +438,18 @@ parse_scripts(parser_t *p, const font_t *f, double y, piece_t *nuc)
         piece_t *pc = c == '_' ? &sub : &sup;
         at = p->pos;
         if ((c == '_' && has_sub) || (c == '^' && has_sup)) {
-            perr(p, at, c == '_' ? "double subscript"
+            cf__lp_error(p, at, c == '_' ? "double subscript"
                                  : "double superscript");
             return false;
         }
         p->pos++;
         if (p->pos >= p->len || p->s[p->pos] == '}' || p->s[p->pos] == '_'
             || p->s[p->pos] == '^' || p->s[p->pos] == '$') {
-            perr(p, at, c == '_' ? "'_' without a subscript"
+            cf__lp_error(p, at, c == '_' ? "'_' without a subscript"
                                  : "'^' without a superscript");
             return false;
         }
-        script_font(f, &g, c == '_' ? CF_LABEL_SUB : CF_LABEL_SUP,
+        cf__lp_script_font(f, &g, c == '_' ? CF_LABEL_SUB : CF_LABEL_SUP,
                     f->level == 0 ? s : s / (f->level == 1 ? SCRIPT_RATIO
                                                            : SCRIPT2_RATIO));
         /* TeX rule 17: the superscript after the nucleus' italic
@@ -611,7 +458,7 @@ parse_scripts(parser_t *p, const font_t *f, double y, piece_t *nuc)
             return false;
         /* scripts of scripts: x^{a_b} is handled inside the group; a
         ** script atom itself may not take scripts here */
-        piece_ink(p->lab, pc, y);
+        cf__lp_piece_ink(p->lab, pc, y);
         if (c == '_')
             has_sub = true;
         else
@@ -658,18 +505,26 @@ parse_list(parser_t *p, const font_t *f, double x, double y, int stop,
     int prev = CLS_NONE;
     size_t prev_first = p->lab->count;
     double prev_space = 0;    /* the space put before the last operator */
-    piece_init(out, p->lab, x);
+    cf__lp_piece_init(out, p->lab, x);
     while (p->pos < p->len) {
         char c = p->s[p->pos];
         piece_t pc;
         if (c == '}') {
             if (stop == '}')
                 break;
-            perr(p, p->pos, "unbalanced '}'");
+            cf__lp_error(p, p->pos, "unbalanced '}'");
             return false;
         }
+        if ((stop == ']' && c == ']')
+            || (stop == 'R' && c == '\\' && p->pos + 6 <= p->len
+                && memcmp(p->s + p->pos + 1, "right", 5) == 0
+                && !(p->pos + 6 < p->len
+                     && ((p->s[p->pos + 6] >= 'a' && p->s[p->pos + 6] <= 'z')
+                         || (p->s[p->pos + 6] >= 'A'
+                             && p->s[p->pos + 6] <= 'Z')))))
+            break;
         if (c == '$' && p->has_dollar) {
-            if (stop == '$' || stop == '}')
+            if (stop != 0)
                 break;
             /* switch modes */
             {
@@ -681,7 +536,7 @@ parse_list(parser_t *p, const font_t *f, double x, double y, int stop,
                 if (!parse_list(p, &g, x, y, '$', &pc))
                     return false;
                 if (p->pos >= p->len || p->s[p->pos] != '$') {
-                    perr(p, at, "unbalanced '$'");
+                    cf__lp_error(p, at, "unbalanced '$'");
                     return false;
                 }
                 p->pos++;
@@ -691,7 +546,7 @@ parse_list(parser_t *p, const font_t *f, double x, double y, int stop,
             }
         }
         if (!f->text && (c == '_' || c == '^')) {
-            perr(p, p->pos, c == '_' ? "'_' without a base"
+            cf__lp_error(p, p->pos, c == '_' ? "'_' without a base"
                                      : "'^' without a base");
             return false;
         }
@@ -718,9 +573,9 @@ parse_list(parser_t *p, const font_t *f, double x, double y, int stop,
                                     || pc.cls == CLS_PUNCT)) {
                 /* the previous operator was unary after all: take its
                 ** spaces back */
-                move_runs(p->lab, prev_first, first_run, -prev_space, 0);
+                cf__lp_move(p->lab, prev_first, first_run, -prev_space, 0);
                 x -= prev_space;
-                move_runs(p->lab, first_run, p->lab->count, -prev_space, 0);
+                cf__lp_move(p->lab, first_run, p->lab->count, -prev_space, 0);
                 pc.x1 -= prev_space;
                 prev_space = 0;
                 prev = CLS_ORD;
@@ -733,7 +588,7 @@ parse_list(parser_t *p, const font_t *f, double x, double y, int stop,
             if (sp != 0) {
                 /* classes that get a space never share a run: the merge
                 ** only joins ordinary atoms */
-                move_runs(p->lab, first_run, p->lab->count, sp, 0);
+                cf__lp_move(p->lab, first_run, p->lab->count, sp, 0);
                 pc.x1 += sp;
             }
             if (!f->text && p->pos < p->len
@@ -752,12 +607,12 @@ parse_list(parser_t *p, const font_t *f, double x, double y, int stop,
     }
     /* rule 6 at the end of the list: a trailing operator is ordinary */
     if (prev == CLS_BIN && prev_space != 0) {
-        move_runs(p->lab, prev_first, p->lab->count, -prev_space, 0);
+        cf__lp_move(p->lab, prev_first, p->lab->count, -prev_space, 0);
         x -= prev_space;
     }
     out->end = p->lab->count;
     out->x1 = x;
-    piece_ink(p->lab, out, y);
+    cf__lp_piece_ink(p->lab, out, y);
     return true;
 }
 
@@ -773,6 +628,8 @@ cf__label_parse(cf_label_t *lab, const char *text, cf_diag_t *diag)
     p.len = strlen(text);
     p.lab = lab;
     p.diag = diag;
+    p.atom = parse_atom;
+    p.list = parse_list;
     p.has_dollar = cf__label_has_dollar(text);
     memset(&f, 0, sizeof f);
     f.size = lab->size;

@@ -150,19 +150,18 @@ cf__label_put_text(cf_label_t *lab, const font_t *f, double x, double y,
     return r->x + r->width;
 }
 
-/* TeX's italic correction of one slanted character in font f: how far
-** its ink reaches right of its advance width (0 when it does not).  TeX
-** reads it from the font's metrics (cmmi10: N 0.109 em, P 0.139 em, V
-** 0.222 em); an OpenType text italic has no such table, so it is measured
-** on the glyph outline of the character alone. */
-double
-cf__label_italic_correction(cf_label_t *lab, const font_t *f, const char *s,
-                            size_t n)
+/* The advance width and ink box (relative to the baseline origin, y
+** down) of s[0..n) alone in font f, without adding a run; false when
+** pango could not lay it out. */
+bool
+cf__label_measure(cf_label_t *lab, const font_t *f, const char *s, size_t n,
+                  double *width, double ink[4])
 {
     run_t r;
-    char text[8];
-    double ic;
+    char text[16];
 
+    if (n >= sizeof text)
+        return false;
     memset(&r, 0, sizeof r);
     memcpy(text, s, n);
     text[n] = '\0';
@@ -174,8 +173,24 @@ cf__label_italic_correction(cf_label_t *lab, const font_t *f, const char *s,
     r.math = f->math;
     run_measure(lab, &r);
     if (r.layout == NULL)
-        return 0;
-    ic = r.ink[2] > r.ink[0] ? fmax(0, r.ink[2] - r.width) : 0;
+        return false;
+    *width = r.width;
+    memcpy(ink, r.ink, sizeof r.ink);
     g_object_unref(r.layout);
-    return ic;
+    return true;
+}
+
+/* TeX's italic correction of one slanted character in font f: how far
+** its ink reaches right of its advance width (0 when it does not).  TeX
+** reads it from the font's metrics (cmmi10: N 0.109 em, P 0.139 em, V
+** 0.222 em); an OpenType text italic has no such table, so it is measured
+** on the glyph outline of the character alone. */
+double
+cf__label_italic_correction(cf_label_t *lab, const font_t *f, const char *s,
+                            size_t n)
+{
+    double w, ink[4];
+    if (!cf__label_measure(lab, f, s, n, &w, ink))
+        return 0;
+    return ink[2] > ink[0] ? fmax(0, ink[2] - w) : 0;
 }

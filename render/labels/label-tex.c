@@ -249,6 +249,41 @@ enclosed(tex_t *t, bool math, const char *open, const char *close, int stop)
         t->pos++;
 }
 
+/* The delimiter after \\left or \\right, as it is (\\lvert and \\rvert:
+** amsmath's, so '|'). */
+static void
+delimiter(tex_t *t)
+{
+    skip_spaces(t);
+    if (t->pos >= t->len)
+        return;
+    if (t->s[t->pos] != '\\') {
+        char one[2] = { t->s[t->pos++], 0 };
+        put(t, one);
+        return;
+    }
+    if (t->pos + 1 < t->len
+        && !(t->s[t->pos + 1] >= 'a' && t->s[t->pos + 1] <= 'z')) {
+        char two[3] = { '\\', t->s[t->pos + 1], 0 };
+        t->pos += 2;
+        put(t, two);
+        return;
+    }
+    {
+        size_t from = ++t->pos;
+        while (t->pos < t->len && t->s[t->pos] >= 'a' && t->s[t->pos] <= 'z')
+            t->pos++;
+        if (t->pos - from == 5 && (memcmp(t->s + from, "lvert", 5) == 0
+                                   || memcmp(t->s + from, "rvert", 5) == 0)) {
+            put(t, "|");
+            return;
+        }
+        put(t, "\\");
+        cf__buf_append(t->out, t->s + from, t->pos - from);
+        put(t, " ");
+    }
+}
+
 /* One atom: a {group}, a command or a character. */
 static void
 atom(tex_t *t, bool math)
@@ -289,9 +324,26 @@ accent_arg(tex_t *t)
     put(t, "}");
 }
 
+/* The number of arguments of a command TeX takes as it is in
+** mathematics (0: another). */
+static int
+math_arguments(const char *name)
+{
+    static const char *const one[] = { "sqrt", "boldsymbol", "mathcal",
+                                       "overline" };
+    size_t i;
+    if (strcmp(name, "frac") == 0 || strcmp(name, "binom") == 0)
+        return 2;
+    for (i = 0; i < sizeof one / sizeof one[0]; i++)
+        if (strcmp(name, one[i]) == 0)
+            return 1;
+    return 0;
+}
+
 static void
 command(tex_t *t, bool math)
 {
+    int nargs;
     char name[24];
     size_t n = 0;
     unsigned cp;
@@ -317,20 +369,30 @@ command(tex_t *t, bool math)
         put(t, name);
         accent_arg(t);
         put(t, math ? "" : "}");
-    } else if (strcmp(name, "frac") == 0) {
-        put(t, math ? "\\frac" : "\\ensuremath{\\frac");
-        skip_spaces(t);
-        atom(t, true);
-        skip_spaces(t);
-        atom(t, true);
+    } else if (strcmp(name, "left") == 0) {
+        put(t, math ? "\\left" : "\\ensuremath{\\left");
+        delimiter(t);
+        list(t, true, 'R');
+        if (t->pos + 6 <= t->len) {
+            t->pos += 6;
+            put(t, "\\right");
+            delimiter(t);
+        }
         put(t, math ? "" : "}");
-    } else if (strcmp(name, "boldsymbol") == 0 || strcmp(name, "mathcal") == 0
-               || strcmp(name, "overline") == 0) {
-        /* \boldsymbol: amsmath's, or the picture's \boldmath fallback */
+    } else if (strcmp(name, "mathbb") == 0) {
+        t->unsettable = true;   /* amssymb's: not in every document */
+    } else if ((nargs = math_arguments(name)) > 0) {
+        /* \boldsymbol and \binom: amsmath's, or the picture's fallbacks */
         put(t, math ? "\\" : "\\ensuremath{\\");
         put(t, name);
         skip_spaces(t);
-        atom(t, true);
+        if (strcmp(name, "sqrt") == 0 && t->pos < t->len
+            && t->s[t->pos] == '[')
+            enclosed(t, true, "[", "]", ']');
+        for (; nargs > 0; nargs--) {
+            skip_spaces(t);
+            atom(t, true);
+        }
         put(t, math ? "" : "}");
     } else if (strcmp(name, "text") == 0) {
         put(t, math ? "\\text" : "\\mbox");
@@ -365,7 +427,10 @@ list(tex_t *t, bool math, int stop)
 {
     while (t->pos < t->len && !t->unsettable && !t->out->failed) {
         char c = t->s[t->pos];
-        if (c == '}' && stop == '}')
+        if ((c == '}' && stop == '}') || (c == ']' && stop == ']'))
+            return;
+        if (stop == 'R' && c == '\\' && t->pos + 6 <= t->len
+            && memcmp(t->s + t->pos + 1, "right", 5) == 0)
             return;
         if (c == '$' && t->has_dollar) {
             if (math)

@@ -64,6 +64,10 @@ static size_t
 check_len(lua_State *L, int idx, const char *fn, const char *what, int names)
 {
     lua_Integer n;
+    if (lua_isnil(L, idx)
+        && (names == ONE_POINT || strstr(what, "point") != NULL))
+        luaL_error(L, "%s: %s is nil; Lua lists start at 1: P[1] is P_0, "
+                   "P[0] is nil", fn, what);
     if (!lua_istable(L, idx))
         luaL_error(L, "%s: %s must be a table, got %s", fn, what,
                    luaL_typename(L, idx));
@@ -76,6 +80,36 @@ check_len(lua_State *L, int idx, const char *fn, const char *what, int names)
     return (size_t)n;
 }
 
+/* Entry i (counted from 1, as Lua's) of a list of what, for a message:
+** control points, knots and weights by their mathematical index
+** ("point P_0", "knot u_3", "weight w_1", as the language's conventions
+** count them), other entries as Lua counts them. */
+static const char *
+entry_name(char *buf, size_t cap, const char *what, size_t i)
+{
+    static const char *const math[][2] = {
+        { "point", "P" }, { "knot", "u" }, { "weight", "w" },
+    };
+    for (size_t k = 0; k < sizeof math / sizeof math[0]; k++)
+        if (strcmp(what, math[k][0]) == 0) {
+            snprintf(buf, cap, "%s %s_%zu", what, math[k][1], i - 1);
+            return buf;
+        }
+    snprintf(buf, cap, "%s %zu", what, i);
+    return buf;
+}
+
+/* A number for a message: printf's "nan" and "-nan" as "NaN". */
+static const char *
+num_text(char *buf, size_t cap, double v)
+{
+    if (isnan(v))
+        snprintf(buf, cap, "NaN");
+    else
+        snprintf(buf, cap, "%g", v);
+    return buf;
+}
+
 /* Coordinate k of the point at tbl: point i (counted from 1) of a list,
 ** or the one point when i is 0. */
 static double
@@ -84,9 +118,9 @@ coord(lua_State *L, int tbl, lua_Integer k, const char *fn, const char *what,
 {
     int isnum;
     double v;
-    char point[80];
+    char point[80], num[32];
     if (i > 0)
-        snprintf(point, sizeof point, "%s %zu", what, i);
+        entry_name(point, sizeof point, what, i);
     else
         snprintf(point, sizeof point, "%s", what);
     lua_geti(L, tbl, k);
@@ -95,8 +129,9 @@ coord(lua_State *L, int tbl, lua_Integer k, const char *fn, const char *what,
         cf__lua_error(L, "%s: %s coordinate %d is %s, not a number", fn,
                       point, (int)k, luaL_typename(L, -1));
     if (!isfinite(v))
-        cf__lua_error(L, "%s: %s coordinate %d is %g; coordinates must be "
-                      "finite", fn, point, (int)k, v);
+        cf__lua_error(L, "%s: %s coordinate %d is %s; coordinates must be "
+                      "finite", fn, point, (int)k,
+                      num_text(num, sizeof num, v));
     lua_pop(L, 1);
     return v;
 }
@@ -114,21 +149,29 @@ check_points(lua_State *L, int idx, const char *fn, const char *what,
                       what, n == 1 ? "" : "s", min);
     for (size_t i = 0; i < n; i++) {
         size_t di;
+        char name[80];
         lua_geti(L, idx, (lua_Integer)i + 1);
+        entry_name(name, sizeof name, what, i + 1);
+        if (lua_isnil(L, -1))
+            cf__lua_error(L, "%s: %s (entry %zu) is nil; Lua lists start at "
+                          "1: P[1] is P_0, P[0] is nil", fn, name, i + 1);
         if (!lua_istable(L, -1))
-            cf__lua_error(L, "%s: %s %zu must be a table {x, y, ...}, "
-                          "got %s", fn, what, i + 1, luaL_typename(L, -1));
+            cf__lua_error(L, "%s: %s must be a table {x, y, ...}, got %s",
+                          fn, name, luaL_typename(L, -1));
         di = (size_t)luaL_len(L, -1);
         refuse_names(L, lua_gettop(L), (lua_Integer)di, fn, what, true);
         lua_pop(L, 1);
         if (di < 1)
-            cf__lua_error(L, "%s: %s %zu has no coordinates", fn, what,
-                          i + 1);
+            cf__lua_error(L, "%s: %s has no coordinates", fn, name);
         if (i == 0)
             d = di;
         else if (di != d)
-            cf__lua_error(L, "%s: %s %zu has %zu coordinates, %s 1 has %zu",
-                          fn, what, i + 1, di, what, d);
+        {
+            char first[80];
+            cf__lua_error(L, "%s: %s has %zu coordinates, %s has %zu", fn,
+                          name, di, entry_name(first, sizeof first, what, 1),
+                          d);
+        }
     }
     if (n > 0 && d > CF__LUA_MAX_DIM)
         cf__lua_error(L, "%s: points with %zu coordinates; at most %d", fn, d,
@@ -192,14 +235,17 @@ cf__lua_check_numbers(lua_State *L, int idx, const char *fn, const char *what,
     buf = cf__lua_buffer(L, n);
     for (size_t i = 0; i < n; i++) {
         int isnum;
+        char name[80], num[32];
         lua_geti(L, idx, (lua_Integer)i + 1);
         buf[i] = (double)lua_tonumberx(L, -1, &isnum);
         if (!isnum)
-            cf__lua_error(L, "%s: %s %zu is %s, not a number", fn, what,
-                          i + 1, luaL_typename(L, -1));
+            cf__lua_error(L, "%s: %s is %s, not a number", fn,
+                          entry_name(name, sizeof name, what, i + 1),
+                          luaL_typename(L, -1));
         if (!isfinite(buf[i]))
-            cf__lua_error(L, "%s: %s %zu is %g; it must be finite", fn, what,
-                          i + 1, buf[i]);
+            cf__lua_error(L, "%s: %s is %s; it must be finite", fn,
+                          entry_name(name, sizeof name, what, i + 1),
+                          num_text(num, sizeof num, buf[i]));
         lua_pop(L, 1);
     }
     *count = n;
@@ -214,8 +260,11 @@ cf__lua_check_finite(lua_State *L, int idx, const char *fn, const char *what)
     if (!isnum)
         luaL_error(L, "%s: %s must be a number, got %s", fn, what,
                    luaL_typename(L, idx));
-    if (!isfinite(v))
-        cf__lua_error(L, "%s: %s is %g; it must be finite", fn, what, v);
+    if (!isfinite(v)) {
+        char num[32];
+        cf__lua_error(L, "%s: %s is %s; it must be finite", fn, what,
+                      num_text(num, sizeof num, v));
+    }
     return v;
 }
 

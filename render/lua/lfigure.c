@@ -62,9 +62,19 @@ check_name(lua_State *L, const char *name)
     for (lua_Integer i = 1; i <= (lua_Integer)lua_rawlen(L, -1); i++) {
         lua_rawgeti(L, -1, i);
         lua_getiuservalue(L, -1, 1);
-        if (strcmp(lua_tostring(L, -1), name) == 0)
-            luaL_error(L, "figure: a figure named \"%s\" is already defined",
-                       name);
+        if (strcmp(lua_tostring(L, -1), name) == 0) {
+            /* where the first one was made: "FILE:LINE:" */
+            size_t wlen;
+            const char *where;
+            lua_getiuservalue(L, -2, 3);
+            where = lua_tolstring(L, -1, &wlen);
+            while (wlen > 0 && (where[wlen - 1] == ' '
+                                || where[wlen - 1] == ':'))
+                wlen--;
+            cf__lua_error(L, "figure: a figure named \"%s\" is already "
+                          "defined (at %.*s); the names name the files, so "
+                          "they must differ", name, (int)wlen, where);
+        }
         lua_pop(L, 2);
     }
     lua_pop(L, 1);
@@ -191,8 +201,7 @@ read_frame(lua_State *L, cf_figure_t *fig, double w, double h)
                                  fixed ? 14.0 : 1.0);
     if (margin >= 0 && (2 * margin >= w || 2 * margin >= h))
         cf__lua_error(L, "figure: the page of %g x %g bp leaves no room "
-                      "inside the margin of %g bp (a bare number is in bp; "
-                      "give a unit: width = \"8cm\")", w, h, margin);
+                      "inside the margin of %g bp", w, h, margin);
     aspect = cf__lua_opt_bool(L, 1, "aspect", "figure", true);
     check(L, "figure", cf_figure_set_fit(fig, margin, aspect), NULL);
     check(L, "figure", cf_figure_set_clip(fig, cf__lua_opt_bool(L, 1, "clip",
@@ -239,16 +248,39 @@ opt_text(lua_State *L, int idx, const char *what, const char *def)
     return lua_tostring(L, idx);
 }
 
-/* width and height (pushed) in bp */
+#define TOOL_WIDTH "curvefig.tool_width"
+#define TOOL_HEIGHT "curvefig.tool_height"
+
+void
+cf__lua_set_tool_page(lua_State *L, double width_bp, double height_bp)
+{
+    lua_pushnumber(L, width_bp);
+    lua_setfield(L, LUA_REGISTRYINDEX, TOOL_WIDTH);
+    lua_pushnumber(L, height_bp);
+    lua_setfield(L, LUA_REGISTRYINDEX, TOOL_HEIGHT);
+}
+
+/* width and height (pushed) in bp: the script's, or the tool's */
 static void
 read_page(lua_State *L, double *w, double *h)
 {
+    double tw, th;
     cf__lua_field(L, 1, "width");
     *w = cf__lua_read_length(L, -1, "figure", "width",
                              cf_length_to_bp(8, CF_UNIT_CM));
     cf__lua_field(L, 1, "height");
     *h = cf__lua_read_length(L, -1, "figure", "height",
                              cf_length_to_bp(6, CF_UNIT_CM));
+    lua_getfield(L, LUA_REGISTRYINDEX, TOOL_WIDTH);
+    tw = lua_tonumber(L, -1);
+    lua_getfield(L, LUA_REGISTRYINDEX, TOOL_HEIGHT);
+    th = lua_tonumber(L, -1);
+    lua_pop(L, 2);
+    if ((tw > 0 || th > 0) && *w > 0 && *h > 0) {
+        double sw = *w, sh = *h;
+        *w = tw > 0 ? tw : sw * th / sh;
+        *h = th > 0 ? th : sh * tw / sw;
+    }
 }
 
 /* Append the figure value at idx to the list the tool renders. */

@@ -11,6 +11,11 @@
 
 void cf__lua_open_figure(lua_State *L);
 
+/* The page of every figure made from now on (the tool's --width and
+** --height), in bp; 0: the script's.  One of them alone keeps the
+** proportions of the page the script asks for. */
+void cf__lua_set_tool_page(lua_State *L, double width_bp, double height_bp);
+
 /* The figures defined so far, in order; which = 1 name, 2 caption. */
 size_t cf__lua_figure_count(lua_State *L);
 cf_figure_t *cf__lua_figure_at(lua_State *L, size_t i);

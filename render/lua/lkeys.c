@@ -97,7 +97,8 @@ static const cf__lua_key_t legend_keys[] = {
 };
 static const cf__lua_key_t inset_keys[] = {
     KEY("region"),
-    { "at", box_places, CF__KEYS_NONE, "{x, y, w, h} in page units" },
+    /* a place or a box of lengths ({"1cm", ...}): read_at checks it */
+    KEY("at"),
     KEY("scale"), KEY("size"), END,
 };
 static const cf__lua_key_t panels_keys[] = {

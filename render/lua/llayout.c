@@ -118,11 +118,20 @@ read_at(lua_State *L, int idx, cf_inset_t *in)
             lua_pop(L, 1);
         }
         in->has_rect = true;
-    } else if (t != LUA_TNIL
-               && cf_place_from_name(cf__lua_opt_text(L, -1, "inset", "at",
-                                                      NULL),
-                                     &in->place, &diag) != CF_STATUS_OK) {
-        cf__lua_error(L, "inset: at: %s", diag.msg);
+    } else if (t != LUA_TNIL) {
+        static const char *const places[] = {
+            "auto", "n", "ne", "e", "se", "s", "sw", "w", "nw", "above",
+            "below", "left", "right",
+        };
+        const char *v = cf__lua_opt_text(L, -1, "inset", "at", NULL), *near;
+        if (cf_place_from_name(v, &in->place, &diag) != CF_STATUS_OK) {
+            near = cf_nearest_name(v, places,
+                                   sizeof places / sizeof places[0]);
+            if (near != NULL)
+                cf__lua_error(L, "inset: at \"%s\" is unknown (did you mean "
+                              "\"%s\"?)", v, near);
+            cf__lua_error(L, "inset: at: %s", diag.msg);
+        }
     }
     lua_pop(L, 1);
 }

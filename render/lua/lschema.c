@@ -7,55 +7,7 @@
 #include "lcommon.h"
 #include "lschema.h"
 
-#define MAX_NAME 100  /* longer names are compared as "far" */
 #define MAX_NAMES 256 /* candidates gathered for one suggestion */
-
-int
-cf__lua_distance(const char *a, const char *b)
-{
-    /* three rows of the optimal-string-alignment table */
-    int rows[3][MAX_NAME + 1];
-    size_t n = strlen(a), m = strlen(b);
-    if (n > MAX_NAME || m > MAX_NAME)
-        return MAX_NAME;
-    for (size_t j = 0; j <= m; j++)
-        rows[0][j] = (int)j;
-    for (size_t i = 1; i <= n; i++) {
-        int *cur = rows[i % 3], *prev = rows[(i - 1) % 3];
-        int *prev2 = rows[(i + 1) % 3];
-        cur[0] = (int)i;
-        for (size_t j = 1; j <= m; j++) {
-            int cost = a[i - 1] != b[j - 1];
-            int v = prev[j] + 1;
-            if (cur[j - 1] + 1 < v)
-                v = cur[j - 1] + 1;
-            if (prev[j - 1] + cost < v)
-                v = prev[j - 1] + cost;
-            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] &&
-                a[i - 2] == b[j - 1] && prev2[j - 2] + 1 < v)
-                v = prev2[j - 2] + 1;
-            cur[j] = v;
-        }
-    }
-    return rows[n % 3][m];
-}
-
-const char *
-cf__lua_nearest(const char *s, const char *const *names, size_t n)
-{
-    const char *best = NULL;
-    int bestd = MAX_NAME + 1;
-    size_t len = strlen(s);
-    int limit = len / 3 > 1 ? (int)(len / 3) : 1;
-    for (size_t i = 0; i < n; i++) {
-        int d = cf__lua_distance(s, names[i]);
-        if (d < bestd) {
-            bestd = d;
-            best = names[i];
-        }
-    }
-    return bestd <= limit ? best : NULL;
-}
 
 /* ---- the table check ---------------------------------------------------- */
 
@@ -106,7 +58,7 @@ unknown_key(lua_State *L, const cf__lua_schema_t *s, const char *where,
     if (s->elsewhere != NULL && find_key(&s->elsewhere, 1, key) != NULL)
         luaL_error(L, "%s: '%s' is not %s %s: %s", where, key,
                    s->noun[0] == 'o' ? "an" : "a", s->noun, s->hint);
-    near = cf__lua_nearest(key, names, n);
+    near = cf_nearest_name(key, names, n);
     if (near != NULL)
         luaL_error(L, "%s: unknown %s '%s' (did you mean '%s'?)", where,
                    s->noun, key, near);
@@ -129,7 +81,7 @@ check_name(lua_State *L, const char *where, const cf__lua_key_t *k, int idx)
     for (; values[n] != NULL; n++)
         if (strcmp(values[n], v) == 0)
             return;
-    near = cf__lua_nearest(v, values, n);
+    near = cf_nearest_name(v, values, n);
     if (near != NULL)
         luaL_error(L, "%s: %s \"%s\" is unknown (did you mean \"%s\"?)",
                    where, key, v, near);
@@ -275,7 +227,7 @@ missing(lua_State *L)
                 names[n++] = local;
         }
     }
-    near = cf__lua_nearest(key, names, n);
+    near = cf_nearest_name(key, names, n);
     if (near != NULL)
         return luaL_error(L, "%s '%s' (did you mean '%s'?)", lead, key, near);
     return luaL_error(L, "%s '%s'", lead, key);

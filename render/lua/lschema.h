@@ -17,7 +17,7 @@
 ** (the script's file and line are put in front of every message), and the
 ** same for every nested table.  The missing-name handlers installed by
 ** cf__lua_guard_names (methods of the classes, functions of the
-** libraries, the sandbox's globals) use the same nearest-name search:
+** libraries, the sandbox's globals) use the same nearest-name search (cf_nearest_name):
 ** "figure has no method 'decastlejau' (did you mean 'decasteljau'?)".
 */
 #ifndef CURVEFIG_RENDER_LUA_LSCHEMA_H
@@ -35,13 +35,6 @@
 ** check); raises the error described above. */
 void cf__lua_check_table(lua_State *L, int idx, cf__lua_keys_t k);
 
-/* Damerau-Levenshtein distance (adjacent transpositions count one),
-** capped at 100. */
-int cf__lua_distance(const char *a, const char *b);
-/* The name of names[0..n-1] nearest to s, if near enough to suggest (at
-** most one edit per three letters, at least one), else NULL. */
-const char *cf__lua_nearest(const char *s, const char *const *names,
-                            size_t n);
 
 /* Install the missing-name handlers: on the method tables of the classes,
 ** on the library tables (math, string, table, utf8, knots, conic) and on

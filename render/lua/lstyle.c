@@ -288,6 +288,10 @@ cf__lua_read_sub_style(lua_State *L, int idx, const char *key,
     return present;
 }
 
+/* The units of a length, for the messages. */
+#define LENGTH_UNITS "cm, mm, in; bp or pt: the PostScript point, 1/72 in; " \
+                     "texpt: TeX's point, 1/72.27 in"
+
 double
 cf__lua_read_length(lua_State *L, int idx, const char *fn, const char *what,
                     double def_bp)
@@ -298,16 +302,22 @@ cf__lua_read_length(lua_State *L, int idx, const char *fn, const char *what,
     cf_unit_t unit;
     if (lua_isnoneornil(L, idx))
         return def_bp;
-    if (lua_type(L, idx) == LUA_TNUMBER)
-        return cf__lua_check_finite(L, idx, fn, what);
+    if (lua_type(L, idx) == LUA_TNUMBER) {
+        /* 8 meant as cm would silently be 8 bp: only 0 needs no unit */
+        v = cf__lua_check_finite(L, idx, fn, what);
+        if (v != 0)
+            return luaL_error(L, "%s: %s = %s: give a unit, e.g. \"%scm\" "
+                              "(%s)", fn, what, lua_tostring(L, idx),
+                              lua_tostring(L, idx), LENGTH_UNITS);
+        return 0;
+    }
     s = luaL_checkstring(L, idx);
     v = strtod(s, &end);
     while (*end == ' ')
         end++;
-    if (end == s || cf_unit_from_name(*end ? end : "bp", &unit, NULL))
-        return luaL_error(L, "%s: %s \"%s\": give a number and a unit (bp, "
-                          "pt, texpt, mm, cm, in), e.g. \"8cm\"", fn, what,
-                          s);
+    if (end == s || *end == '\0' || cf_unit_from_name(end, &unit, NULL))
+        return luaL_error(L, "%s: %s \"%s\": give a number and a unit, "
+                          "e.g. \"8cm\" (%s)", fn, what, s, LENGTH_UNITS);
     return cf_length_to_bp(v, unit);
 }
 

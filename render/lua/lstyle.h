@@ -54,8 +54,9 @@ void cf__lua_read_style(lua_State *L, int idx, const char *fn,
 bool cf__lua_read_sub_style(lua_State *L, int idx, const char *key,
                             const char *fn, const cf_figure_t *fig,
                             cf_style_t *s);
-/* A length: "8cm", "3 in", ... (bp, pt, texpt, mm, cm, in); def_bp when
-** nil. */
+/* A length: "8cm", "3 in", ... (bp, pt, texpt, mm, cm, in), or 0; def_bp
+** when nil.  A bare number other than 0 is refused ("width = 8: give a
+** unit, e.g. "8cm""). */
 double cf__lua_read_length(lua_State *L, int idx, const char *fn,
                            const char *what, double def_bp);
 

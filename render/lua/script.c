@@ -368,6 +368,34 @@ cf__lua_open_language(lua_State *L)
     cf__lua_open_theme(L);
 }
 
+#define SEED_KEY "curvefig.seed"
+
+/* math.randomseed: without an argument, the run's seed (registry) rather
+** than the clock's; with one, Lua's (upvalue 1). */
+static int
+seeded_randomseed(lua_State *L)
+{
+    if (lua_gettop(L) == 0)
+        lua_getfield(L, LUA_REGISTRYINDEX, SEED_KEY);
+    lua_pushvalue(L, lua_upvalueindex(1));
+    lua_insert(L, 1);
+    lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
+    return lua_gettop(L);
+}
+
+/* Seed math.random with seed (and keep it for math.randomseed()). */
+static void
+seed_random(lua_State *L, lua_Integer seed)
+{
+    lua_pushinteger(L, seed);
+    lua_setfield(L, LUA_REGISTRYINDEX, SEED_KEY);
+    lua_getglobal(L, LUA_MATHLIBNAME);
+    lua_getfield(L, -1, "randomseed");
+    lua_pushinteger(L, seed);
+    lua_call(L, 1, 0);
+    lua_pop(L, 1);
+}
+
 static int
 open_sandbox(lua_State *L)
 {
@@ -382,6 +410,12 @@ open_sandbox(lua_State *L)
         luaL_requiref(L, libs[i].name, libs[i].func, 1);
         lua_pop(L, 1);
     }
+    lua_getglobal(L, LUA_MATHLIBNAME);
+    lua_getfield(L, -1, "randomseed");
+    lua_pushcclosure(L, seeded_randomseed, 1);
+    lua_setfield(L, -2, "randomseed");
+    lua_pop(L, 1);
+    seed_random(L, CF_SCRIPT_DEFAULT_SEED);
     remove_field(L, NULL, "dofile");
     remove_field(L, NULL, "loadfile");
     remove_field(L, NULL, "require");
@@ -673,6 +707,20 @@ cf_script_set_fonts(cf_script_t *s, const char *family, double size_bp)
 {
     if (s != NULL)
         cf__lua_set_tool_fonts(s->L, family, size_bp);
+}
+
+void
+cf_script_set_page(cf_script_t *s, double width_bp, double height_bp)
+{
+    if (s != NULL)
+        cf__lua_set_tool_page(s->L, width_bp, height_bp);
+}
+
+void
+cf_script_set_seed(cf_script_t *s, long long seed)
+{
+    if (s != NULL)
+        seed_random(s->L, (lua_Integer)seed);
 }
 
 const char *

@@ -57,6 +57,19 @@ void cf_script_set_labels(cf_script_t *script, bool enabled);
 void cf_script_set_fonts(cf_script_t *script, const char *family,
                          double size_bp);
 
+/* The page of every figure the script makes (the tool's --width and
+** --height), in bp, over its figure{} width and height; 0: the script's
+** (one alone keeps the proportions the script asks for). */
+void cf_script_set_page(cf_script_t *script, double width_bp,
+                        double height_bp);
+
+/* The seed of math.random (the tool's --seed): every script starts from
+** CF_SCRIPT_DEFAULT_SEED, so that a script that draws random numbers
+** renders the same twice; math.randomseed() without an argument takes
+** this seed too, not the clock. */
+#define CF_SCRIPT_DEFAULT_SEED 0
+void cf_script_set_seed(cf_script_t *script, long long seed);
+
 /* Load and run the file at path.  CF_STATUS_SCRIPT (or NO_MEMORY, IO) on
 ** failure; the full message (file, line, what went wrong, the Lua frames
 ** that led there) is then cf_script_error(). */

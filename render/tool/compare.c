@@ -10,6 +10,7 @@
 ** 2 an error (a file missing or not an image, sizes that differ, usage).
 */
 #include <errno.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -50,6 +51,7 @@ typedef struct compare_args {
     const char *file[2];
     const char *diff;
     double dpi;
+    bool dpi_given;       /* --dpi; else a PNG operand's own resolution */
     double max_bad;       /* pixels, or a share when max_bad_share */
     int max_bad_share;
     cf__imgcmp_options opt;
@@ -117,6 +119,7 @@ parse(int argc, char **argv, compare_args *a)
         } else if (strcmp(o, "--dpi") == 0) {
             if (cf__tool_option_number(o, v, 1, 2400, &a->dpi) != 0)
                 return ERROR;
+            a->dpi_given = true;
         } else if (strcmp(o, "--threshold") == 0) {
             if (cf__tool_option_number(o, v, 0, 1, &a->opt.threshold) != 0)
                 return ERROR;
@@ -134,6 +137,15 @@ parse(int argc, char **argv, compare_args *a)
     }
     if (nfiles != 2)
         return usage("give two images, A and B", "");
+    /* an SVG against a PNG: the SVG at the resolution the PNG records
+    ** (curvefig writes it), so that a figure's own SVG and PNG compare */
+    for (int k = 0; k < 2 && !a->dpi_given; k++) {
+        double dpi = cf__tool_png_dpi(a->file[k]);
+        if (dpi >= 1 && dpi <= 2400) {
+            a->dpi = dpi;
+            break;
+        }
+    }
     return 0;
 }
 

@@ -13,6 +13,10 @@
 **   picture;
 **   its PNG against REF/nolabels/NAME.png (strict) and REF/NAME.png (the
 **   text allowance): the picture has not changed.
+** A figure with overlay steps is checked step by step too: its files
+** NAME-K.svg and NAME-K.png (step K alone, as `render --steps` writes
+** them) against REF/NAME-K.png and REF/nolabels/NAME-K.png, and a failure
+** says which step differs.
 ** Failures get their expected, actual and diff images in OUT/failures and
 ** a section of OUT/report.html.  With DIR operands only, a reference no
 ** figure produces any more is a failure too (the figure was removed).
@@ -44,6 +48,7 @@
 typedef struct produced {
     char *name;
     const char *script;
+    unsigned steps;            /* overlay steps (1: none) */
 } produced;
 
 typedef struct test_run {
@@ -144,6 +149,27 @@ owner_of(const test_run *t, const char *name)
     return NULL;
 }
 
+/* Whether a reference image named name belongs to a figure of the run:
+** the figure's own, or one of its steps (NAME-K). */
+static bool
+has_figure(const test_run *t, const char *name)
+{
+    for (size_t i = 0; i < t->nfigs; i++) {
+        size_t n = strlen(t->figs[i].name);
+        char *end;
+        unsigned long k;
+        if (strcmp(t->figs[i].name, name) == 0)
+            return true;
+        if (t->figs[i].steps < 2 || strncmp(t->figs[i].name, name, n) != 0
+            || name[n] != '-' || name[n + 1] < '1' || name[n + 1] > '9')
+            continue;
+        k = strtoul(name + n + 1, &end, 10);
+        if (*end == '\0' && k <= t->figs[i].steps)
+            return true;
+    }
+    return false;
+}
+
 /* Run script with or without labels and write its figures as SVG and PNG
 ** into dir, as `curvefig render -f svg,png` does.  Returns the number of
 ** figures, or -1 (the message printed).  With labels the names are
@@ -168,6 +194,7 @@ render_layer(test_run *t, const char *script, bool labels, const char *dir)
     }
     cf_write_options_init(&wo);
     wo.dpi = t->dpi;
+    wo.step_files = true;   /* NAME-K.svg, .png: each overlay step */
     for (size_t i = 0; i < cf_script_figure_count(s); i++) {
         const char *name = cf_script_figure_name(s, i);
         const char *other = owner_of(t, name);
@@ -204,6 +231,8 @@ render_layer(test_run *t, const char *script, bool labels, const char *dir)
                 goto oom;
             }
             t->figs[t->nfigs].name = copy;
+            t->figs[t->nfigs].steps = cf_figure_steps(cf_script_figure(s,
+                                                                     i));
             t->figs[t->nfigs++].script = script;
         }
     }
@@ -334,22 +363,31 @@ check_pair(test_run *t, const char *script, const char *name,
     return res.match;
 }
 
-/* The comparisons of one layer of one figure; returns its update state
-** (unchanged when not updating, failed when an error stopped it). */
+/* The comparisons of one layer of one picture: the figure name, or its
+** step (files and references NAME-STEP.*; step 0: the figure's own);
+** returns its update state (unchanged when not updating, failed when an
+** error stopped it). */
 static int
-check_layer(test_run *t, const char *script, const char *name, bool labels,
-            char *verdict, size_t vsize)
+check_layer(test_run *t, const char *script, const char *fig_name,
+            unsigned step, bool labels, char *verdict, size_t vsize)
 {
+    char name[300], note[40] = "";
     const char *dir = labels ? t->outdir : t->out_nolabels;
-    char *png_path = dupf("%s/%s.png", dir, name);
-    char *svg_path = dupf("%s/%s.svg", dir, name);
-    char *ref_path = dupf("%s/%s.png", labels ? t->refdir : t->ref_nolabels,
-                          name);
+    char *png_path, *svg_path, *ref_path;
     cairo_surface_t *png = NULL, *svg = NULL, *ref = NULL;
     char err[1024], what[1200];
     int state = t->update ? CF__TOOL_REF_FAILED : CF__TOOL_REF_UNCHANGED;
     const char *layer = labels ? "" : ", without labels";
     verdict[0] = '\0';
+    if (step > 0)
+        snprintf(note, sizeof note, "step %u: ", step);
+    if (step > 0)
+        snprintf(name, sizeof name, "%s-%u", fig_name, step);
+    else
+        snprintf(name, sizeof name, "%s", fig_name);
+    png_path = dupf("%s/%s.png", dir, name);
+    svg_path = dupf("%s/%s.svg", dir, name);
+    ref_path = dupf("%s/%s.png", labels ? t->refdir : t->ref_nolabels, name);
     if (png_path == NULL || svg_path == NULL || ref_path == NULL) {
         fprintf(stderr, "curvefig: test: out of memory\n");
         t->errors++;
@@ -361,8 +399,8 @@ check_layer(test_run *t, const char *script, const char *name, bool labels,
         t->errors++;
         goto out;
     }
-    snprintf(what, sizeof what, "its SVG (rasterised by librsvg) against "
-             "its PNG (cairo)%s", layer);
+    snprintf(what, sizeof what, "%sits SVG (rasterised by librsvg) "
+             "against its PNG (cairo)%s", note, layer);
     svg = cf__tool_image_read(svg_path, t->dpi, err, sizeof err);
     if (svg == NULL)
         record_failure(t, script, name, labels ? "svg" : "svg-nolabels",
@@ -378,8 +416,8 @@ check_layer(test_run *t, const char *script, const char *name, bool labels,
             t->errors++;
         goto out;
     }
-    snprintf(what, sizeof what, "its PNG against the reference %s%s",
-             ref_path, layer);
+    snprintf(what, sizeof what, "%sits PNG against the reference %s%s",
+             note, ref_path, layer);
     ref = cf__tool_image_read(ref_path, t->dpi, err, sizeof err);
     if (ref == NULL) {
         struct stat sb;
@@ -409,36 +447,71 @@ out:
     return state;
 }
 
+/* The update state of two: a failure, then a new or changed one. */
+static int
+worse(int a, int b)
+{
+    static const int rank[] = { [CF__TOOL_REF_UNCHANGED] = 0,
+                                [CF__TOOL_REF_CHANGED] = 1,
+                                [CF__TOOL_REF_ADDED] = 2,
+                                [CF__TOOL_REF_FAILED] = 3 };
+    return rank[b] > rank[a] ? b : a;
+}
+
+/* Check figure f: its files, then each of its overlay steps (NAME-K). */
 static void
-check_figure(test_run *t, const char *script, const char *name)
+check_figure(test_run *t, const produced *f)
 {
     size_t before = t->nfails;
-    char v_labels[512], v_plain[512];
-    int a = check_layer(t, script, name, true, v_labels, sizeof v_labels);
-    int b = check_layer(t, script, name, false, v_plain, sizeof v_plain);
+    char v_labels[512], v_plain[512], v_step[512];
+    int a = check_layer(t, f->script, f->name, 0, true, v_labels,
+                        sizeof v_labels);
+    int b = check_layer(t, f->script, f->name, 0, false, v_plain,
+                        sizeof v_plain);
+    int steps_state = CF__TOOL_REF_UNCHANGED;
+    char steps_note[512] = "";
+    for (unsigned k = 1; f->steps > 1 && k <= f->steps; k++) {
+        int sa = check_layer(t, f->script, f->name, k, true, v_step,
+                             sizeof v_step);
+        int sb = check_layer(t, f->script, f->name, k, false, v_step,
+                             sizeof v_step);
+        int st = worse(sa, sb);
+        if (st == CF__TOOL_REF_CHANGED || st == CF__TOOL_REF_ADDED) {
+            size_t n = strlen(steps_note);
+            snprintf(steps_note + n, sizeof steps_note - n, "%s%u%s",
+                     n > 0 ? ", " : "", k,
+                     st == CF__TOOL_REF_ADDED ? " (new)" : "");
+        }
+        steps_state = worse(steps_state, st);
+    }
     if (t->nfails > before)
         t->failed_figures++;
     if (!t->update) {
         if (t->nfails == before)
-            printf("ok   %s\n", name);
+            printf(f->steps > 1 ? "ok   %s (%u steps)\n" : "ok   %s\n",
+                   f->name, f->steps);
         return;
     }
-    if (a == CF__TOOL_REF_FAILED || b == CF__TOOL_REF_FAILED)
+    if (a == CF__TOOL_REF_FAILED || b == CF__TOOL_REF_FAILED
+        || steps_state == CF__TOOL_REF_FAILED)
         return;
     if (a == CF__TOOL_REF_ADDED) {
         t->added++;
-        printf("new:       %s\n", name);
-    } else if (a == CF__TOOL_REF_CHANGED || b != CF__TOOL_REF_UNCHANGED) {
+        printf("new:       %s\n", f->name);
+    } else if (a == CF__TOOL_REF_CHANGED || b != CF__TOOL_REF_UNCHANGED
+               || steps_state != CF__TOOL_REF_UNCHANGED) {
         t->changed++;
-        printf("changed:   %s\n", name);
+        printf("changed:   %s\n", f->name);
         if (a == CF__TOOL_REF_CHANGED)
             printf("           with labels: %s\n", v_labels);
         if (b != CF__TOOL_REF_UNCHANGED)
             printf("           without labels: %s\n",
                    b == CF__TOOL_REF_ADDED ? "new" : v_plain);
+        if (steps_note[0] != '\0')
+            printf("           steps: %s\n", steps_note);
     } else {
         t->unchanged++;
-        printf("unchanged: %s\n", name);
+        printf("unchanged: %s\n", f->name);
     }
 }
 
@@ -484,7 +557,7 @@ stale_references(test_run *t)
         size_t n;
         char **names = cf__tool_list_dir(dir, ".png", &n);
         for (size_t i = 0; i < n; i++)
-            if (owner_of(t, names[i]) == NULL)
+            if (!has_figure(t, names[i]))
                 stale_reference(t, dir, names[i], layer == 1);
         if (names != NULL)
             cf__tool_free_list(names, n);
@@ -566,7 +639,7 @@ run_scripts(test_run *t)
         if (n == 0)
             printf("note: %s defines no figure\n", script);
         for (size_t i = first; i < t->nfigs; i++)
-            check_figure(t, script, t->figs[i].name);
+            check_figure(t, &t->figs[i]);
     }
 }
 

@@ -160,6 +160,41 @@ read_svg(const char *path, double dpi, char *err, size_t errsize)
 }
 #endif
 
+double
+cf__tool_png_dpi(const char *path)
+{
+    static const unsigned char sig[8] = { 0x89, 'P', 'N', 'G', '\r', '\n',
+                                          0x1a, '\n' };
+    unsigned char head[8], chunk[8], body[9];
+    double dpi = 0;
+    FILE *f = fopen(path, "rb");
+    if (f == NULL)
+        return 0;
+    if (fread(head, 1, 8, f) != 8 || memcmp(head, sig, 8) != 0) {
+        fclose(f);
+        return 0;
+    }
+    /* the chunks before the image data: length, type, body, CRC */
+    while (fread(chunk, 1, 8, f) == 8 && memcmp(chunk + 4, "IDAT", 4) != 0) {
+        unsigned long n = (unsigned long)chunk[0] << 24 | chunk[1] << 16
+                        | chunk[2] << 8 | chunk[3];
+        if (memcmp(chunk + 4, "pHYs", 4) == 0 && n == 9) {
+            if (fread(body, 1, 9, f) == 9 && body[8] == 1) {
+                unsigned long ppm = (unsigned long)body[0] << 24
+                                  | body[1] << 16 | body[2] << 8 | body[3];
+                dpi = (double)ppm * 0.0254;
+                if (fabs(dpi - floor(dpi + 0.5)) < 0.05)
+                    dpi = floor(dpi + 0.5);
+            }
+            break;
+        }
+        if (n > 0x7fffffffUL || fseek(f, (long)n + 4, SEEK_CUR) != 0)
+            break;
+    }
+    fclose(f);
+    return dpi;
+}
+
 cairo_surface_t *
 cf__tool_image_read(const char *path, double dpi, char *err, size_t errsize)
 {

@@ -18,6 +18,10 @@
 ** saying so.  On failure NULL, and err holds "PATH: what went wrong". */
 cairo_surface_t *cf__tool_image_read(const char *path, double dpi,
                                      char *err, size_t errsize);
+/* The resolution a PNG file records (its pHYs chunk, in pixels per
+** metre) in dots per inch, rounded to a whole number when within 0.05 of
+** one; 0 when path is not a PNG or records none. */
+double cf__tool_png_dpi(const char *path);
 /* What cf__tool_image_read took the file for: "PNG", "SVG" or "?". */
 const char *cf__tool_image_kind(const char *path);
 

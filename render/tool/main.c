@@ -46,6 +46,8 @@ typedef struct options {
     bool tight;
     const char *font;         /* --font, --theme: NULL the scripts' */
     double font_size;         /* bp; 0 the scripts' */
+    double width, height;     /* --width, --height: bp; 0 the scripts' */
+    long long seed;           /* --seed: math.random's */
     const char *background;   /* --background: NULL the scripts' */
     bool steps;
     bool no_labels;
@@ -64,6 +66,41 @@ usage_error(const char *fmt, const char *arg)
     fprintf(stderr, "\nTry 'curvefig --help'.\n");
     return EXIT_USAGE;
 }
+
+/* The nearest format to the unknown one in list (NULL: none near). */
+static const char *
+nearest_format(const char *list)
+{
+    static const char *const formats[] = { "svg", "pdf", "png", "ps", "eps",
+                                           "pgf", "html", "all" };
+    char name[64];
+    const char *p = list;
+    while (*p != '\0') {
+        size_t n = strcspn(p, ",");
+        cf_format_t f;
+        if (n > 0 && n < sizeof name) {
+            memcpy(name, p, n);
+            name[n] = '\0';
+            if (strcmp(name, "all") != 0 && strcmp(name, "html") != 0
+                && cf_format_from_name(name, &f, NULL) != CF_STATUS_OK)
+                return cf_nearest_name(name, formats,
+                                       sizeof formats / sizeof formats[0]);
+        }
+        p += n;
+        if (*p == ',')
+            p++;
+    }
+    return NULL;
+}
+
+/* The options of render, run and list, for the nearest one. */
+static const char *const known_options[] = {
+    "--output", "--formats", "--dpi", "--only", "--manifest", "--title",
+    "--max-memory", "--max-instructions", "--timeout", "--font",
+    "--font-size", "--theme", "--background", "--width", "--height",
+    "--seed", "--help", "--verbose", "--long", "--tight", "--steps",
+    "--no-labels",
+};
 
 static int
 parse_formats(const char *list, unsigned *out)
@@ -123,13 +160,29 @@ parse_size(const char *s, double *out)
     return *out > 0 && *out <= 1000 ? 0 : -1;
 }
 
+/* A page length: a number and a unit (cm, mm, in, bp, pt, texpt); bp in
+** *out. */
+static int
+parse_length(const char *s, double *out)
+{
+    char *end;
+    double v = strtod(s, &end);
+    cf_unit_t u;
+    if (end == s || !isfinite(v) || *end == '\0'
+        || cf_unit_from_name(end, &u, NULL) != CF_STATUS_OK)
+        return -1;
+    *out = cf_length_to_bp(v, u);
+    return *out > 0 && *out <= 14400 ? 0 : -1;
+}
+
 static bool
 takes_value(const char *opt)
 {
     static const char *const with_value[] = {
         "-o", "--output", "-f", "--formats", "--dpi", "--only", "--manifest",
         "--title", "--max-memory", "--max-instructions", "--timeout",
-        "--font", "--font-size", "--theme", "--background", NULL,
+        "--font", "--font-size", "--theme", "--background", "--width",
+        "--height", "--seed", NULL,
     };
     for (int i = 0; with_value[i] != NULL; i++)
         if (strcmp(opt, with_value[i]) == 0)
@@ -147,6 +200,7 @@ parse_args(int argc, char **argv, options *o, int *rc)
     o->formats = CF_FORMAT_BIT(CF_FORMAT_SVG) | CF_FORMAT_BIT(CF_FORMAT_PDF) |
                  CF_FORMAT_BIT(CF_FORMAT_PNG);
     o->dpi = 150;
+    o->seed = CF_SCRIPT_DEFAULT_SEED;
     o->timeout = 120;
     if (argc < 2) {
         *rc = usage_error("%sno command given", "");
@@ -207,9 +261,14 @@ parse_args(int argc, char **argv, options *o, int *rc)
             o->outdir = v;
         } else if (strcmp(a, "-f") == 0 || strcmp(a, "--formats") == 0) {
             if (parse_formats(v, &o->formats) != 0) {
-                *rc = usage_error("bad format list '%s' (use svg, pdf, png, "
-                                  "ps, eps, pgf, html or all, separated by "
-                                  "commas)", v);
+                const char *near = nearest_format(v);
+                char msg[512];
+                snprintf(msg, sizeof msg, "bad format list '%s' (%s%s%suse "
+                         "svg, pdf, png, ps, eps, pgf, html or all, "
+                         "separated by commas)", v,
+                         near != NULL ? "did you mean " : "",
+                         near != NULL ? near : "", near != NULL ? "? " : "");
+                *rc = usage_error("%s", msg);
                 return -1;
             }
         } else if (strcmp(a, "--dpi") == 0) {
@@ -225,6 +284,23 @@ parse_args(int argc, char **argv, options *o, int *rc)
                 *rc = usage_error("--font-size '%s': give a size in TeX "
                                   "points (11) or with a unit (11texpt, 11bp, 4mm)",
                                   v);
+                return -1;
+            }
+        } else if (strcmp(a, "--width") == 0 || strcmp(a, "--height") == 0) {
+            if (parse_length(v, a[2] == 'w' ? &o->width : &o->height) != 0) {
+                fprintf(stderr, "curvefig: %s '%s': give a length and a "
+                        "unit up to 200in, e.g. 12cm (cm, mm, in; bp or pt: "
+                        "the PostScript point, 1/72 in; texpt: TeX's point, "
+                        "1/72.27 in)\nTry 'curvefig --help'.\n", a, v);
+                *rc = EXIT_USAGE;
+                return -1;
+            }
+        } else if (strcmp(a, "--seed") == 0) {
+            char *end;
+            errno = 0;
+            o->seed = strtoll(v, &end, 10);
+            if (errno != 0 || end == v || *end != '\0') {
+                *rc = usage_error("--seed '%s': give a whole number", v);
                 return -1;
             }
         } else if (strcmp(a, "--theme") == 0) {
@@ -279,7 +355,17 @@ parse_args(int argc, char **argv, options *o, int *rc)
                 o->files[o->nfiles++] = argv[i];
             break;
         } else if (a[0] == '-' && a[1] != '\0') {
-            *rc = usage_error("unknown option '%s'", a);
+            const char *near = cf_nearest_name(a, known_options,
+                                               sizeof known_options
+                                                   / sizeof known_options[0]);
+            char msg[512];
+            snprintf(msg, sizeof msg, "unknown option '%s'%s%s%s", a,
+                     near != NULL ? " (did you mean " : "",
+                     near != NULL ? near : "",
+                     near == NULL ? ""
+                     : strcmp(near, "--output") == 0 ? ", -o?)"
+                     : strcmp(near, "--formats") == 0 ? ", -f?)" : "?)");
+            *rc = usage_error("%s", msg);
             return -1;
         } else {
             o->files[o->nfiles] = argv[i];
@@ -564,6 +650,8 @@ run_script(const options *o)
     }
     cf_script_set_labels(s, !o->no_labels);
     cf_script_set_fonts(s, o->font, o->font_size);
+    cf_script_set_page(s, o->width, o->height);
+    cf_script_set_seed(s, o->seed);
     st = cf_script_run_file(s, o->script);
     fflush(stdout);
     if (st == CF_STATUS_IO) {

@@ -27,7 +27,7 @@ g:polygon(s, { labels = "P_%d", label_start = 0, label_place = { "s", "se", "e" 
  :curve(s)
  :knots(s, { labels = "u_%d", color = "red", marker = "tick" })
  :deboor(s, 0.5, { colors = { "grey", "blue", "green" }, labels = "P_{%d,%d}" })
-local h = figure{ name = "api-plot", width = 200, height = 120 }
+local h = figure{ name = "api-plot", width = "200bp", height = "120bp" }
 h:plot{ x = { 0, 1 }, y = { 0, 1.2 }, xticks = { 0, 0.5, 1 },
         xtick_labels = { "0", "1/2", "1" }, yticks = 0.5, xlabel = "u",
         ylabel = "N", knots = s:knots(), knot_labels = true, grid = true }

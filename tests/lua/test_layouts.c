@@ -90,7 +90,7 @@ test_panels(void **state)
             "b:plot{ x = { 0, 2 }, y = { 0, 1 } }\n"
             "b:bernstein(2, 1)\n"
             "b:inset{ region = { 0.5, 0.2, 1, 0.5 },\n"
-            "         at = { 10, 10, 40, 30 } }\n"
+            "         at = { '10bp', '10bp', '40bp', '30bp' } }\n"
             "a, b = nil, nil\n"
             "collectgarbage()\n");
     assert_int_equal(cf_script_figure_count(s), 1);

@@ -88,6 +88,22 @@ def main():
         check("the SVG is said to be rasterised at 144 dpi",
               "SVG rasterised at 144 dpi" in r.stdout, r.stdout)
 
+        # the tool's own output at its default resolution (150 dpi, in the
+        # PNG's pHYs): the SVG is rasterised at the PNG's resolution
+        script = os.path.join(tmp, "base.lua")
+        own = os.path.join(tmp, "own")
+        r = run(tool, "render", script, "-o", own, "-f", "svg,png")
+        for a, b in ((".svg", ".png"), (".png", ".svg")):
+            r = run(tool, "compare", os.path.join(own, "base" + a),
+                    os.path.join(own, "base" + b))
+            check("render -f svg,png, then compare base%s base%s: exit 0"
+                  % (a, b), r.returncode == 0, r.stdout + r.stderr)
+            check("the SVG at the PNG's 150 dpi",
+                  "SVG rasterised at 150 dpi" in r.stdout, r.stdout)
+        r = run(tool, "compare", big + ".svg", big + ".png")
+        check("--dpi 150 files: exit 0", r.returncode == 0,
+              r.stdout + r.stderr)
+
         # a control point moved by 0.1 unit (about 1.6 pt, 3 pixels)
         diff = os.path.join(tmp, "diff.png")
         r = run(tool, "compare", moved + ".png", base + ".png",

@@ -469,12 +469,12 @@ test_basis_errors(void **state)
         const char *msg;
     } cases[] = {
         { up, 5, 0, 2, CF_STATUS_BAD_KNOTS,
-          "knot 3 (2.00) is smaller than knot 2 (3.00)" },
+          "knot u_3 (2.00) is smaller than knot u_2 (3.00)" },
         { up, 5, 2, 2, CF_STATUS_INVALID_ARG,
           "N_2^2 needs knots u_2..u_5, 5 given" },
         { up, 5, 0, -1, CF_STATUS_BAD_DEGREE, "degree -1" },
         { flat, 4, 0, 2, CF_STATUS_BAD_KNOTS, "span no interval" },
-        { nan_knots, 5, 0, 2, CF_STATUS_NOT_FINITE, "knot 2" },
+        { nan_knots, 5, 0, 2, CF_STATUS_NOT_FINITE, "knot u_2 is NaN" },
     };
     (void)state;
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {

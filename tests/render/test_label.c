@@ -488,7 +488,10 @@ test_syntax_errors(void **state)
         { "a $b", 2 },        { "\xff", 0 },    { "_1", 0 },
         { "\\hat{}", 0 },     { "\\", 0 },      { "x^^", 1 },
         { "\\hat{ }", 0 },
-        { "\\frac{1}", 0 },   { "\\frac 12", 0 },
+        { "\\frac{1}", 0 },   { "\\frac 1", 0 },
+        { "\\sqrt", 0 },      { "\\sqrt[3{x}", 5 }, { "\\left( x", 0 },
+        { "x \\right)", 2 },  { "\\left< x \\right>", 0 },
+        { "\\mathbb{x}", 9 },
     };
     size_t k;
     (void)state;
@@ -585,10 +588,14 @@ test_label_tex(void **state)
         { "$x$ \\alpha \\mathbf{b} \\\\", "$x$ \\ensuremath{\\alpha} "
                                            "\\textbf{b} \\textbackslash{}" },
         { "√2 ⇒ ΑΒ", "$\\surd 2 \\Rightarrow  \\mathrm{A}\\mathrm{B}$" },
+        { "\\sqrt{2}/2 \\sqrt[3] x", "$\\sqrt{2}/2 \\sqrt[3]x$" },
+        { "\\binom{n}{k} \\frac14", "$\\binom{n}{k} \\frac14$" },
+        { "\\left( a \\right\\}", "$\\left( a \\right\\}$" },
+        { "$s$ \\sqrt{t}", "$s$ \\ensuremath{\\sqrt{t}}" },
         { "", "" },
     };
     static const char *const refused[] = {
-        "Кривая", "$кривая$ b_0", "贝塞尔", "x ∈ ℝ",
+        "Кривая", "$кривая$ b_0", "贝塞尔", "x ∈ ℝ", "\\mathbb{R}",
     };
     size_t i;
     (void)state;
@@ -608,6 +615,180 @@ test_label_tex(void **state)
         assert_int_equal(cf__label_tex(refused[i], &b), 1);
         cf__buf_free(&b);
     }
+}
+
+/* The ink of lab drawn at 8 px per bp, its origin at (20, 60) bp, in an
+** A8 image of 800 x 800 px (the caller destroys it). */
+static cairo_surface_t *
+draw_big(const cf_label_t *lab)
+{
+    static const cf_color_t black = { 0, 0, 0, 1 };
+    cairo_surface_t *img = cairo_image_surface_create(CAIRO_FORMAT_A8, 800,
+                                                      800);
+    cairo_t *cr = cairo_create(img);
+    cairo_scale(cr, 8, 8);
+    cf__label_draw(lab, cr, 20, 60, &black, 1);
+    cairo_destroy(cr);
+    cairo_surface_flush(img);
+    return img;
+}
+
+static int
+ink_at(cairo_surface_t *img, int x, int y)
+{
+    const unsigned char *d = cairo_image_surface_get_data(img);
+    return d[y * cairo_image_surface_get_stride(img) + x] > 128;
+}
+
+/* Measured on the pixels of \sqrt{radicand}: the top row of ink is the
+** bar, which spans every column of the radicand's ink (found as the
+** columns right of the sign, which is the run before it is placed, left
+** of x_sign_end); the bar lies above the radicand with white rows
+** between; returns the sign's height in px (the ink rows of the columns
+** left of the radicand). */
+static int
+sqrt_pixels(const char *text, int *bar_len)
+{
+    cf_label_t *lab = layout(text);
+    cairo_surface_t *img = draw_big(lab);
+    int x, y, top = -1, bottom = -1, rad_x0 = -1, rad_x1 = -1, bar_y;
+    int sign_top = 800, sign_bottom = -1, sign_x1 = -1, gap_rows = 0, run_x0;
+    /* the bar: the first row with ink; its run of ink */
+    for (y = 0; y < 800 && top < 0; y++)
+        for (x = 0; x < 800; x++)
+            if (ink_at(img, x, y)) {
+                top = y;
+                break;
+            }
+    assert_true(top >= 0);
+    bar_y = top + 1;
+    for (x = 799; x >= 0 && rad_x1 < 0; x--)
+        if (ink_at(img, x, bar_y))
+            rad_x1 = x;
+    for (x = rad_x1; x >= 0 && ink_at(img, x, bar_y); x--)
+        ;
+    run_x0 = x;
+    /* the sign: the columns up to the end of its run's advance */
+    for (x = 0; x < (int)cf_label_box_count(lab); x++)
+        if (strcmp(cf_label_run_text(lab, (size_t)x), "\xe2\x88\x9a") == 0)
+            sign_x1 = (int)((20 + cf_label_get_box(lab, (size_t)x)->x
+                             + cf_label_get_box(lab, (size_t)x)->width) * 8);
+    assert_true(sign_x1 > 0);
+    *bar_len = rad_x1 - sign_x1;
+    /* one run of ink from the sign's top stroke to the bar's end */
+    assert_true(run_x0 < sign_x1);
+    for (x = 0; x < sign_x1; x++)
+        for (y = 0; y < 800; y++)
+            if (ink_at(img, x, y)) {
+                sign_top = y < sign_top ? y : sign_top;
+                sign_bottom = y > sign_bottom ? y : sign_bottom;
+            }
+    /* the radicand: the runs after the sign's advance; white rows
+    ** between the bar (from its last row) and its ink, in the column of
+    ** its middle */
+    {
+        double x0 = INFINITY, x1 = -INFINITY;
+        int mid, last = -1;
+        for (x = 0; x < (int)cf_label_box_count(lab); x++) {
+            const cf_label_box_t *b = cf_label_get_box(lab, (size_t)x);
+            if ((20 + b->x) * 8 >= sign_x1 - 0.5
+                && cf_label_run_text(lab, (size_t)x)[0] != '\0') {
+                x0 = fmin(x0, b->x);
+                x1 = fmax(x1, b->x + b->width);
+            }
+        }
+        assert_true(x1 > x0);
+        mid = (int)((20 + 0.5 * (x0 + x1)) * 8);
+        while (bar_y < 799 && ink_at(img, rad_x1 - 1, bar_y + 1))
+            bar_y++;
+        for (y = bar_y + 1; y < 800 && !ink_at(img, mid, y); y++)
+            gap_rows++;
+        assert_true(gap_rows >= 2 && y < 800);
+        /* the radicand's ink lies under the bar: its last column is not
+        ** right of the bar's */
+        rad_x0 = (int)((20 + x0) * 8);
+        for (x = rad_x0; x < 800; x++)
+            for (y = bar_y + 1; y < 800; y++)
+                if (ink_at(img, x, y)) {
+                    last = x;
+                    bottom = y > bottom ? y : bottom;
+                }
+        assert_true(last <= rad_x1);
+    }
+    /* the sign reaches the radicand's ink bottom or below, like TeX's (a
+    ** pixel of antialiasing) */
+    assert_true(sign_bottom + 1 >= bottom);
+    assert_true(sign_top <= top + 2);        /* joins the bar */
+    cairo_surface_destroy(img);
+    cf_label_destroy(lab);
+    return sign_bottom - sign_top;
+}
+
+/* \sqrt as TeX sets it, measured on the pixels: a bar over the radicand
+** joined to a radical sign that grows with the radicand. */
+static void
+test_sqrt(void **state)
+{
+    int bar_x, bar_y2, bar_frac, h_x, h_x2, h_frac;
+    cf_label_t *lab;
+    size_t i;
+    (void)state;
+    h_x = sqrt_pixels("\\sqrt{x}", &bar_x);
+    h_x2 = sqrt_pixels("\\sqrt{x^2+y^2}", &bar_y2);
+    h_frac = sqrt_pixels("\\sqrt{\\frac{1}{2}}", &bar_frac);
+    /* the bar as long as the radicand is wide */
+    assert_true(bar_y2 > 3 * bar_x);
+    /* a taller radicand, a taller sign: a fraction needs 1.39 em (its
+    ** 1.3 em, the gap and the rule) where x fits the base sign's 1 em;
+    ** 8 px per bp of a 10 bp label */
+    assert_true(h_frac >= 1.3 * h_x);
+    assert_true(h_x2 >= h_x);
+    /* \sqrt[3]{x}: the degree two levels down, left of the sign and above
+    ** its middle */
+    lab = layout("\\sqrt[3]{x}");
+    {
+        const cf_label_box_t *three = box_of(lab, "3"), *x = box_of(lab, "x");
+        tu_assert_close(three->size, 0.5 * SIZE, 1e-12, 0);
+        assert_true(three->x < x->x);
+        assert_true(three->y > 0.2 * SIZE);
+    }
+    cf_label_destroy(lab);
+    /* \frac14 is \frac{1}{4}; \binom and \left( \right) stack and size */
+    lab = layout("\\frac14");
+    assert_int_equal(cf_label_box_count(lab), 3);
+    assert_true(box_of(lab, "1")->y > 0 && box_of(lab, "4")->y < 0);
+    cf_label_destroy(lab);
+    lab = layout("\\left( \\frac{a}{b} \\right)");
+    {
+        double w, a, d;
+        cf_label_get_extents(lab, &w, &a, &d);
+        for (i = 0; i < cf_label_box_count(lab); i++)
+            if (strcmp(cf_label_run_text(lab, i), "(") == 0)
+                /* rule 19 asks 1.802 times a/b's 0.595 em from the
+                ** axis: 1.07 em, past the base '(' (0.98 em) */
+                assert_true(cf_label_get_box(lab, i)->size > 1.05 * SIZE);
+    }
+    cf_label_destroy(lab);
+    lab = layout("\\mathbb{R}^2 \\in \\binom{n}{k}");
+    assert_string_equal(cf_label_run_text(lab, 0), "\xe2\x84\x9d");
+    cf_label_destroy(lab);
+}
+
+/* An unknown command names the nearest known one and the list. */
+static void
+test_unknown_command_suggests(void **state)
+{
+    cf_label_t *lab = NULL;
+    cf_diag_t d;
+    (void)state;
+    cf_diag_clear(&d);
+    assert_int_not_equal(cf_label_create("\\sqrtt{2}", NULL, SIZE, &lab, &d),
+                         CF_STATUS_OK);
+    assert_non_null(strstr(d.msg, "did you mean \\sqrt?"));
+    assert_non_null(strstr(d.msg, "curvefig help labels"));
+    assert_int_not_equal(cf_label_create("\\left( x", NULL, SIZE, &lab, &d),
+                         CF_STATUS_OK);
+    assert_non_null(strstr(d.msg, "\\right"));
 }
 
 /* Letters of mathematics are TeX's math italic: the code points of Latin
@@ -736,7 +917,9 @@ visit_parse(const char *kind, const char *name, const char *what, void *ctx)
     size_t *n = ctx;
     (void)what;
     if (strcmp(kind, "structure") == 0)
-        snprintf(text, sizeof text, strcmp(name, "frac") == 0
+        snprintf(text, sizeof text, strcmp(name, "left") == 0
+                 ? "\\%s(A\\right)"
+                 : strcmp(name, "frac") == 0 || strcmp(name, "binom") == 0
                  ? "\\%s{A}{B}" : "\\%s{A}", name);
     else if (strcmp(kind, "accent") == 0)
         snprintf(text, sizeof text, "\\%s{x}", name);
@@ -769,6 +952,8 @@ main(void)
         cmocka_unit_test(test_nested_scripts_and_greek),
         cmocka_unit_test(test_text_and_math_modes),
         cmocka_unit_test(test_fraction),
+        cmocka_unit_test(test_sqrt),
+        cmocka_unit_test(test_unknown_command_suggests),
         cmocka_unit_test(test_world_scripts_have_glyphs),
         cmocka_unit_test(test_syntax_errors),
         cmocka_unit_test(test_tex_points),

@@ -114,7 +114,7 @@ test_core(void **state)
     IS(CF_STATUS_NOT_FINITE, cf_check_finite_points(
            (const double[]){ 0, 1, 2, NAN }, 2, 2, 2, "vertex", &diag));
     assert_int_equal(diag.index, 1);
-    assert_string_equal(diag.msg, "vertex 1 has coordinate 2 = nan; "
+    assert_string_equal(diag.msg, "vertex 1 has coordinate 2 = NaN; "
                                   "coordinates must be finite");
 }
 
@@ -980,6 +980,22 @@ test_every_function_listed(void **state)
     assert_true(total > 100);
 }
 
+/* The nearest name of a message's "did you mean": one edit per three
+** letters, else a word of the name; nothing for nonsense or no names. */
+static void
+test_nearest_name(void **state)
+{
+    static const char *const names[] = { "degree", "elevate", "eval",
+                                         "split" };
+    (void)state;
+    assert_string_equal(cf_nearest_name("elevat", names, 4), "elevate");
+    assert_string_equal(cf_nearest_name("degree_elevate", names, 4),
+                        "elevate");
+    assert_string_equal(cf_nearest_name("evla", names, 4), "eval");
+    assert_null(cf_nearest_name("zzzzzz", names, 4));
+    assert_null(cf_nearest_name("eval", names, 0));
+}
+
 int
 main(void)
 {
@@ -994,6 +1010,7 @@ main(void)
         cmocka_unit_test(test_figure),
 #endif
         cmocka_unit_test(test_out_null_on_failure),
+        cmocka_unit_test(test_nearest_name),
         cmocka_unit_test(test_every_function_listed),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

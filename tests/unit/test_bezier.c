@@ -1045,12 +1045,12 @@ test_errors_construction(void **state)
     assert_int_equal(cf_bezier_create(2, 4, bad, NULL, &c, &d),
                      CF_STATUS_NOT_FINITE);
     assert_int_equal(d.index, 3);
-    assert_non_null(strstr(d.msg, "point 3"));
+    assert_non_null(strstr(d.msg, "point P_3"));
     cf_diag_clear(&d);
     assert_int_equal(cf_bezier_create(2, 4, seed_pts, w, &c, &d),
                      CF_STATUS_BAD_WEIGHT);
     assert_int_equal(d.index, 3);
-    assert_string_equal(d.msg, "weight 3 is -0.5; weights must be finite "
+    assert_string_equal(d.msg, "weight w_3 is -0.5; weights must be finite "
                                "and positive");
     {
         const double w0[] = { 1, 0, 1, 1, 1 };
@@ -1072,7 +1072,7 @@ test_errors_construction(void **state)
         assert_int_equal(cf_bezier_create_homogeneous(2, 1, h, &c, &d),
                          CF_STATUS_BAD_WEIGHT);
         assert_int_equal(d.index, 1);
-        assert_non_null(strstr(d.msg, "weight 1 is -2"));
+        assert_non_null(strstr(d.msg, "weight w_1 is -2"));
         assert_int_equal(cf_bezier_create_homogeneous(0, 1, h, &c, NULL),
                          CF_STATUS_INVALID_ARG);
         assert_int_equal(cf_bezier_create_homogeneous(2, 1, NULL, &c, NULL),

@@ -1395,7 +1395,7 @@ test_create_errors(void **state)
                                        &d), CF_STATUS_BAD_WEIGHT);
     assert_null(c);
     assert_string_equal(d.msg,
-                        "weight 3 is -0.5; weights must be finite and positive");
+                        "weight w_3 is -0.5; weights must be finite and positive");
     cf_diag_clear(&d);
     assert_int_equal(cf_bspline_create(2, 2, SAMPLE_U, 10, SAMPLE_P, 8, NULL,
                                        &c, &d), CF_STATUS_BAD_KNOTS);
@@ -1407,7 +1407,7 @@ test_create_errors(void **state)
     cf_diag_clear(&d);
     assert_int_equal(cf_bspline_create(2, 2, U, 11, SAMPLE_P, 8, NULL, &c,
                                        &d), CF_STATUS_BAD_KNOTS);
-    assert_string_equal(d.msg, "knot 4 (0.30) is smaller than knot 3 (0.50)");
+    assert_string_equal(d.msg, "knot u_4 (0.30) is smaller than knot u_3 (0.50)");
     memcpy(P, SAMPLE_P, sizeof P);
     P[9] = NAN;
     cf_diag_clear(&d);
@@ -1433,7 +1433,7 @@ test_create_errors(void **state)
         assert_int_equal(cf_bspline_create_homogeneous(2, 2, K, 6, H, 3, &c,
                                                        &d),
                          CF_STATUS_BAD_WEIGHT);
-        assert_string_equal(d.msg, "weight 2 is 0; weights must be finite "
+        assert_string_equal(d.msg, "weight w_2 is 0; weights must be finite "
                             "and positive");
         H[8] = 2;
         assert_int_equal(cf_bspline_create_homogeneous(2, 2, K, 6, H, 3, &c,

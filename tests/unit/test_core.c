@@ -46,6 +46,14 @@ test_diag_keeps_first_error(void **state)
                      CF_STATUS_BAD_KNOTS);
     assert_string_equal(d.msg, "knot 4 (0.30) is smaller than knot 3 (0.50)");
     assert_int_equal(d.index, 4);
+    /* printf's "-nan" and "nan" read "NaN"; a word holding "nan" stays */
+    cf_diag_clear(&d);
+    cf__error(&d, CF_STATUS_NOT_FINITE, 0, "x is %g, y is %g (nanometre)",
+              -(double)NAN, (double)NAN);
+    assert_string_equal(d.msg, "x is NaN, y is NaN (nanometre)");
+    cf_diag_clear(&d);
+    cf__error(&d, CF_STATUS_BAD_KNOTS, 4, "knot %d (%.2f) is smaller than "
+              "knot %d (%.2f)", 4, 0.3, 3, 0.5);
     /* a second error does not overwrite the first */
     cf__error(&d, CF_STATUS_DOMAIN, 7, "other");
     assert_int_equal(d.status, CF_STATUS_BAD_KNOTS);
@@ -67,11 +75,11 @@ test_checks_name_the_culprit(void **state)
     assert_int_equal(cf__check_finite_points(pts, 3, 2, 2, "point", &d),
                      CF_STATUS_NOT_FINITE);
     assert_int_equal(d.index, 2);
-    assert_non_null(strstr(d.msg, "point 2"));
+    assert_non_null(strstr(d.msg, "point P_2"));
     cf_diag_clear(&d);
     assert_int_equal(cf__check_weights(w, 3, &d), CF_STATUS_BAD_WEIGHT);
     assert_string_equal(d.msg,
-                        "weight 2 is -0.5; weights must be finite and positive");
+                        "weight w_2 is -0.5; weights must be finite and positive");
     assert_int_equal(cf__check_weights(w, 2, NULL), CF_STATUS_OK);
 }
 

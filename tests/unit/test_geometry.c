@@ -162,7 +162,7 @@ test_hull_errors(void **state)
     assert_int_equal(cf_convex_hull_2d(pts, 3, 2, idx, &n, &d),
                      CF_STATUS_NOT_FINITE);
     assert_int_equal(d.index, 1);
-    assert_non_null(strstr(d.msg, "point 1"));
+    assert_non_null(strstr(d.msg, "point P_1"));
     assert_int_equal(cf_bezier_hull(NULL, idx, &n, NULL),
                      CF_STATUS_INVALID_ARG);
     assert_int_equal(cf_bezier_create(3, 1, p3, NULL, &c, NULL),

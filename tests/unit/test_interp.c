@@ -219,7 +219,7 @@ test_parameters_errors(void **state)
     expect_error(cf_interp_parameters(2, Q, 2, CF_PARAM_CHORD, 0, false, u,
                                       &d),
                  CF_STATUS_NOT_FINITE, &d,
-                 "point 1 has coordinate 2 = nan; coordinates must be "
+                 "point P_1 has coordinate 2 = NaN; coordinates must be "
                  "finite");
     cf_diag_clear(&d);
     expect_error(cf_interp_parameters(2, P, 1, CF_PARAM_CHORD, 0, false, u,
@@ -942,7 +942,7 @@ test_lsq_errors(void **state)
     cf_diag_clear(&d);
     expect_error(cf_approximate_lsq(2, P, 5, 4, NULL, true, &c, NULL, &d),
                  CF_STATUS_NOT_FINITE, &d,
-                 "point 2 has coordinate 2 = nan; coordinates must be "
+                 "point P_2 has coordinate 2 = NaN; coordinates must be "
                  "finite");
     assert_null(c);
 }
@@ -1118,7 +1118,7 @@ test_chapter4_errors(void **state)
     cf_diag_clear(&d);
     expect_error(cf_ferguson_cubic(2, P, P + 6, P, P, &c, &d),
                  CF_STATUS_NOT_FINITE, &d,
-                 "P1 has coordinate 1 = nan; coordinates must be finite");
+                 "P1 has coordinate 1 = NaN; coordinates must be finite");
     cf_diag_clear(&d);
     expect_error(cf_ferguson_cubic(0, P, P, P, P, &c, &d),
                  CF_STATUS_INVALID_ARG, &d,
@@ -1134,7 +1134,7 @@ test_chapter4_errors(void **state)
     cf_diag_clear(&d);
     expect_error(cf_ferguson_chain(2, P, P + 2, 3, &l, &d),
                  CF_STATUS_NOT_FINITE, &d,
-                 "tangent 2 has coordinate 1 = nan; coordinates must be "
+                 "tangent 2 has coordinate 1 = NaN; coordinates must be "
                  "finite");
     cf_diag_clear(&d);
     expect_error(cf_ferguson_chain(2, NULL, P, 3, &l, &d),
@@ -1142,7 +1142,7 @@ test_chapter4_errors(void **state)
                  "needs dim >= 1, points and tangents");
     cf_diag_clear(&d);
     expect_error(cf_coons_cubic(2, P + 2, &c, &d), CF_STATUS_NOT_FINITE, &d,
-                 "point 2 has coordinate 1 = nan; coordinates must be "
+                 "point P_2 has coordinate 1 = NaN; coordinates must be "
                  "finite");
     cf_diag_clear(&d);
     expect_error(cf_coons_cubic(2, NULL, &c, &d), CF_STATUS_INVALID_ARG, &d,
@@ -1245,7 +1245,7 @@ test_interpolate_errors(void **state)
                  "need distinct consecutive points");
     expect_error(try_interp(2, N, 3, CF_INTERP_CLAMPED, 3, t, t, false, &d),
                  CF_STATUS_NOT_FINITE, &d,
-                 "point 2 has coordinate 2 = nan; coordinates must be "
+                 "point P_2 has coordinate 2 = NaN; coordinates must be "
                  "finite");
     expect_error(try_interp(2, P, 5, CF_INTERP_NATURAL, 5, NULL, NULL, false,
                             &d),

@@ -286,7 +286,7 @@ test_validate_messages(void **state)
     U[3] = 0.5;
     cf_diag_clear(&d);
     assert_msg(cf_knots_validate(2, 8, U, 11, &d), CF_STATUS_BAD_KNOTS, &d,
-               "knot 4 (0.30) is smaller than knot 3 (0.50)");
+               "knot u_4 (0.30) is smaller than knot u_3 (0.50)");
     assert_int_equal(d.index, 4);
 
     /* values that agree to two decimals get more digits */
@@ -295,19 +295,19 @@ test_validate_messages(void **state)
     U[5] = 0.5;
     cf_diag_clear(&d);
     assert_msg(cf_knots_validate(2, 8, U, 11, &d), CF_STATUS_BAD_KNOTS, &d,
-               "knot 5 (0.500) is smaller than knot 4 (0.501)");
+               "knot u_5 (0.500) is smaller than knot u_4 (0.501)");
 
     memcpy(U, good, sizeof U);
     U[5] = NAN;
     cf_diag_clear(&d);
     assert_msg(cf_knots_validate(2, 8, U, 11, &d), CF_STATUS_NOT_FINITE, &d,
-               "knot 5 is nan; knots must be finite");
+               "knot u_5 is NaN; knots must be finite");
 
     memcpy(U, good, sizeof U);
     U[3] = U[4] = U[5] = U[6] = 0.5;
     cf_diag_clear(&d);
     assert_msg(cf_knots_validate(2, 8, U, 11, &d), CF_STATUS_BAD_KNOTS, &d,
-               "knot 3 (0.5) has multiplicity 4; degree 2 allows at most 3");
+               "knot u_3 (0.5) has multiplicity 4; degree 2 allows at most 3");
 
     {
         double e[] = { 0, 0, 0, 0, 1, 1, 1, 1 };
@@ -320,7 +320,7 @@ test_validate_messages(void **state)
                    "degree 3 needs at least 4 points, 3 given");
         cf_diag_clear(&d);
         assert_msg(cf_knots_validate(1, 4, z, 6, &d), CF_STATUS_BAD_KNOTS,
-                   &d, "knot 1 (0.5) has multiplicity 4; degree 1 allows at "
+                   &d, "knot u_1 (0.5) has multiplicity 4; degree 1 allows at "
                    "most 2");
     }
     {
@@ -440,7 +440,7 @@ test_basis_errors(void **state)
     cf_diag_clear(&d);
     assert_int_equal(cf_basis_one(0, 3, B, 5, 1.0, &v, &d),
                      CF_STATUS_BAD_KNOTS);
-    assert_string_equal(d.msg, "knot 2 (1.00) is smaller than knot 1 (3.00)");
+    assert_string_equal(d.msg, "knot u_2 (1.00) is smaller than knot u_1 (3.00)");
     assert_int_equal(cf_basis_one(0, 3, U, 5, NAN, &v, NULL),
                      CF_STATUS_NOT_FINITE);
     assert_int_equal(cf_basis_one(0, 3, U, 5, 1.0, NULL, NULL),
@@ -558,7 +558,7 @@ test_basis_one_spline(void **state)
         assert_int_equal(cf_basis_one_spline(0, 2, bad, 4, &s, &d),
                          CF_STATUS_BAD_KNOTS);
         assert_null(s);
-        assert_string_equal(d.msg, "knot 2 (0.50) is smaller than knot 1 "
+        assert_string_equal(d.msg, "knot u_2 (0.50) is smaller than knot u_1 "
                                    "(1.00)");
         cf_diag_clear(&d);
         assert_int_equal(cf_basis_one_spline(1, 3, U1, 5, &s, &d),

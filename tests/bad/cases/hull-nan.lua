@@ -1,3 +1,3 @@
--- expect: 1 "convex_hull: point 2 coordinate 1 is "
+-- expect: 1 "convex_hull: point P_1 coordinate 1 is NaN; coordinates must be finite"
 -- convex hull of a NaN point
 local h = convex_hull{ {0, 0}, {0/0, 1}, {1, 0} }

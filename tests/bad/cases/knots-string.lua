@@ -1,3 +1,3 @@
--- expect: 1 "bspline: knot 4 is string, not a number"
+-- expect: 1 "bspline: knot u_3 is string, not a number"
 -- a knot that is not a number
 local s = bspline{ degree = 2, knots = {0,0,0,'a',0.6,1,1,1}, points = {{0,0},{1,2},{2,0},{3,2},{4,0}} }

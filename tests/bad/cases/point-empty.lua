@@ -1,3 +1,3 @@
--- expect: 1 "bezier: point 1 has no coordinates"
+-- expect: 1 "bezier: point P_0 has no coordinates"
 -- a point with no coordinates
 local c = bezier{ {}, {} }

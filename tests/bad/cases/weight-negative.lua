@@ -1,3 +1,3 @@
--- expect: 1 "bezier: weight 1 is -0.5; weights must be finite and positive"
+-- expect: 1 "bezier: weight w_1 is -0.5; weights must be finite and positive"
 -- a negative weight
 local c = bezier{ points = {{0,0},{1,1},{2,0}}, weights = {1, -0.5, 1} }

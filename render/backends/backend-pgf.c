@@ -20,8 +20,8 @@
 #include <cairo.h>
 
 #include "backend.h"
+#include "buffer.h"
 #include "label-private.h"
-#include "render-private.h"
 
 #define PI 3.14159265358979323846
 #define PGF_MAX_BP CF__PGF_MAX_BP

@@ -15,7 +15,7 @@
 #include <string.h>
 
 #include "backend.h"
-#include "render-private.h"
+#include "buffer.h"
 
 #define PI 3.14159265358979323846
 

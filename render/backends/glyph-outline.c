@@ -9,8 +9,8 @@
 #include <cairo.h>
 
 #include "backend.h"
+#include "buffer.h"
 #include "label-private.h"
-#include "render-private.h"
 
 static int
 put_point(cf__buf_t *d, const char *op, const cairo_path_data_t *p)

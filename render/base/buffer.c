@@ -1,9 +1,10 @@
 /*
-** Growable byte buffers of the output side (render/render-private.h).
+** Growable byte buffers (render/base/buffer.h).
 */
 #include <string.h>
 
-#include "render-private.h"
+#include "buffer.h"
+#include "curvefig/core.h"
 
 int
 cf__buf_append(cf__buf_t *b, const void *data, size_t n)

@@ -10,7 +10,7 @@
 
 #include "backend.h"
 #include "label-private.h"
-#include "model.h"
+#include "layout-private.h"
 
 #define LEG_PAD 3.0       /* bp inside the frame */
 #define LEG_SAMPLE 18.0   /* bp: the length of a line sample */

@@ -21,7 +21,7 @@
 #include "curvefig/output.h"
 #include "label-glyphs.h"
 #include "label-impl.h"
-#include "render-private.h"
+#include "output-private.h"
 
 #define MAX_DESCS 64
 #define MAX_FACES 64

@@ -16,8 +16,8 @@
 
 #include <cairo.h>
 
-#include "model.h"
-#include "render-private.h"
+#include "layout-private.h"
+#include "output-private.h"
 
 void
 cf_write_options_init(cf_write_options_t *options)

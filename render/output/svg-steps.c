@@ -12,7 +12,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "render-private.h"
+#include "output-private.h"
 
 /* Seconds each step stays on the screen. */
 #define STEP_SECONDS 1.5

@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "backend.h"
-#include "render-private.h"
+#include "output-private.h"
 
 static const char *const names[] = { "SVG", "PDF", "PS", "EPS", "PNG" };
 

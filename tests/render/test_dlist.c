@@ -17,8 +17,8 @@
 #include "backend.h"
 #include "curvefig/bspline.h"
 #include "curvefig/figure.h"
-#include "model.h"
-#include "render-private.h"
+#include "layout-private.h"
+#include "output-private.h"
 
 static int
 square(void *closure, double x, double *y)

@@ -11,9 +11,9 @@
 #include <cmocka.h>
 #include <pango/pangocairo.h>
 
+#include "buffer.h"
 #include "curvefig/figure.h"
 #include "label-private.h"
-#include "render-private.h"
 #include "testutil.h"
 
 #define SIZE 10.0

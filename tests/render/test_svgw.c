@@ -26,10 +26,10 @@
 #include "backend.h"
 #include "curvefig/output.h"
 #include "imgcmp.h"
-#include "render-private.h"
+#include "output-private.h"
 #include "script.h"
-#include "testutil.h"
 #include "shipped.h"
+#include "testutil.h"
 
 /* An SVG document rasterised at dpi on white (the page's size, its last
 ** partial pixel rounded up); NULL when librsvg refuses it. */

@@ -1,21 +1,14 @@
 /*
-** Internals of the output side of the renderer: byte buffers and the
-** output formats (render/formats.c), for render/output.c and png.c.
+** Internals of the output layer (render/output/): the output formats
+** (formats.c), the animated SVG of overlay steps (svg-steps.c) and the
+** figure played through a backend (output.c), for output.c, the course
+** page's glyph data (label-glyphs.c) and the browser module.
 */
-#ifndef CURVEFIG_RENDER_PRIVATE_H
-#define CURVEFIG_RENDER_PRIVATE_H
+#ifndef CURVEFIG_RENDER_OUTPUT_PRIVATE_H
+#define CURVEFIG_RENDER_OUTPUT_PRIVATE_H
 
 #include "backend.h"
-
-/* A growable byte buffer. */
-typedef struct cf__buf {
-    unsigned char *data;
-    size_t size, cap;
-    int failed;   /* an allocation failed */
-} cf__buf_t;
-
-int cf__buf_append(cf__buf_t *b, const void *data, size_t n);
-void cf__buf_free(cf__buf_t *b);
+#include "buffer.h"
 
 /* One page of a display list in one format into out (empty on entry):
 ** the cairo backend on the format's surface (PNG at dpi), then the

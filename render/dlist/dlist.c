@@ -1,5 +1,5 @@
 /*
-** The display list (render/dlist.h): growable arrays of operations, path
+** The display list (render/dlist/dlist.h): growable arrays of operations, path
 ** segments and their numbers.  An allocation failure sets dl->failed and
 ** makes later appends do nothing; the writer checks it once at the end.
 */

@@ -1,7 +1,7 @@
 /*
 ** The figure object: its page, title, theme, window, fit and projection
 ** setters, and the list of elements in drawing order (each a record of
-** its kind, render/el-*.c, render/axes.c, render/plots.c).
+** its kind, render/el-*.c, render/figure/axes.c, render/figure/plots.c).
 */
 #include <math.h>
 #include <string.h>

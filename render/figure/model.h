@@ -141,7 +141,7 @@ struct cf__element {
                                      overlay specification), NULL: all */
 };
 
-/* Where a box goes beside the drawing (render/room.c): undecided (a new
+/* Where a box goes beside the drawing (render/layout/room.c): undecided (a new
 ** layout), inside the drawing's ink box, or in a band at its right or
 ** below it. */
 typedef enum cf__room_band {
@@ -177,20 +177,21 @@ struct cf_figure {
     char *warnings;          /* of the last layout, a line each; NULL: none */
     size_t warnings_len;
     /* the layout (less its page position) the labels were last placed for
-    ** within one cf__figure_layout and its builds (render/place.c) */
+    ** within one cf__figure_layout and its builds (render/layout/place.c) */
     bool placed;
     cf__layout_t placed_for;
-    /* legend (render/legend.c) */
+    /* legend (render/layout/legend.c) */
     cf__legend_entry_t *legend;
     size_t nlegend;
     cf_place_t legend_place;      /* CENTER (never set): automatic */
     bool legend_noframe;
     cf__room_band_t legend_band;  /* of this layout */
-    /* insets (render/inset.c) */
+    /* insets (render/layout/inset.c) */
     cf_inset_t *insets;
     size_t ninsets;
     cf__room_band_t *inset_band;  /* each one's, of this layout */
-    /* panels (render/panel.c): rows x cols figures, or a panel's parent */
+    /* panels (render/layout/panel.c): rows x cols figures, or a panel's
+    ** parent */
     cf_figure_t **panels;
     int rows, cols;
     unsigned panel_flags;

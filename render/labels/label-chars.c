@@ -257,7 +257,8 @@ cf__math_cal(unsigned cp)
     return 0x1d49c + (cp - 'A');
 }
 
-/* Commands that take an argument (render/label-parse.c), for the list. */
+/* Commands that take an argument (render/labels/label-parse.c), for the
+** list. */
 static const struct {
     const char *name;
     const char *what;

@@ -1,6 +1,6 @@
 /*
 ** Runs of a label: the glyphs of one font, size and baseline, laid out
-** and measured with pango (render/label-impl.h).
+** and measured with pango (render/labels/label-impl.h).
 */
 #include <math.h>
 #include <stdio.h>

@@ -2,8 +2,8 @@
 ** Legends: an entry per element that asked for one, a sample of the
 ** element's line, fill and marker as its group drew them, beside the
 ** entry's label; the box goes where the drawing leaves room, or beside
-** it (render/room.c), or at a named corner or side of the drawing, framed
-** on the background or bare.
+** it (render/layout/room.c), or at a named corner or side of the drawing,
+** framed on the background or bare.
 */
 #include <math.h>
 #include <string.h>

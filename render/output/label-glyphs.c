@@ -1,14 +1,13 @@
 /*
-** The glyph data of a course page (render/label-glyphs.h): the labels of
-** the figures are collected by playing their display lists through a
-** backend that keeps only the text operations; each run's pango layout
-** gives its font description (D), its shaping (S) and the outlines of its
-** glyphs (G, through cairo_glyph_path on the font's scaled font, per bp of
-** size); then each description shapes the character set one character
-** at a time (C), and every ordered pair of the characters of the texts
-** and of numbers (digits, point, signs, space, =) two at a time: where the
-** pair's advance differs from its characters' (kerning) a K line gives
-** the difference.
+** The glyph data of a course page (render/output/label-glyphs.h): the labels
+** of the figures are collected by playing their display lists through a
+** backend that keeps only the text operations; each run's pango layout gives
+** its font description (D), its shaping (S) and the outlines of its glyphs (G,
+** through cairo_glyph_path on the font's scaled font, per bp of size); then
+** each description shapes the character set one character at a time (C), and
+** every ordered pair of the characters of the texts and of numbers (digits,
+** point, signs, space, =) two at a time: where the pair's advance differs from
+** its characters' (kerning) a K line gives the difference.
 */
 #include <math.h>
 #include <stdarg.h>

@@ -18,8 +18,8 @@ cf_status_t cf__format_render(cf_format_t format, const cf__dl_t *dl,
                               const char *title, const char *caption,
                               cf__buf_t *out, cf_diag_t *diag);
 
-/* The animated SVG of overlay steps 1..steps (render/svg-steps.c): every
-** step's SVG a frame, shown in turn. */
+/* The animated SVG of overlay steps 1..steps (render/output/svg-steps.c):
+** every step's SVG a frame, shown in turn. */
 cf_status_t cf__svg_steps(const cf__dl_t *dl, const cf__page_t *page,
                           unsigned steps, const char *title,
                           const char *caption, cf__buf_t *out,
@@ -27,7 +27,8 @@ cf_status_t cf__svg_steps(const cf__dl_t *dl, const cf__page_t *page,
 
 /* The figure laid out at its size and drawn through backend be on ctx
 ** (set up by the caller), one page: overlay step `step` (1..steps), or
-** every operation (0): the SVG writer's way in (render/backend-svgw.c). */
+** every operation (0): the SVG writer's way in
+** (render/backends/backend-svgw.c). */
 cf_status_t cf__figure_play(cf_figure_t *fig, unsigned step,
                             const cf__backend_t *be, void *ctx,
                             cf_diag_t *diag);

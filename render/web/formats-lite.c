@@ -1,6 +1,6 @@
 /*
 ** The output formats in the WebAssembly module: SVG through the SVG
-** writer (render/backend-svgw.c) with the glyph outlines of render/
+** writer (render/backends/backend-svgw.c) with the glyph outlines of render/
 ** glyph-outline.c (here from pango-lite's glyph data); the other formats,
 ** and the animated SVG of overlay steps, are the native tool's, and a
 ** page asking for them gets an error saying so.

@@ -562,7 +562,7 @@ test_out_of_memory(void **state)
     fail_msg("label layout never succeeded");
 }
 
-/* Labels as TeX source for the PGF output (render/label-tex.c): every
+/* Labels as TeX source for the PGF output (render/labels/label-tex.c): every
 ** part of the syntax, written as TeX would be typed by hand; scripts
 ** pdflatex cannot set are refused. */
 static void

@@ -1,4 +1,4 @@
-/* The SVG writer (render/backend-svgw.c), which the course pages use
+/* The SVG writer (render/backends/backend-svgw.c), which the course pages use
 ** where there is no cairo, against cairo's SVG: every shipped figure
 ** written both ways, both rasterised by librsvg at the pixel suite's
 ** 144 dpi and compared by its comparator (render/tool/imgcmp.h) with the

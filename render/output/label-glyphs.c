@@ -18,6 +18,7 @@
 
 #include "backend.h"
 #include "curvefig/output.h"
+#include "grow.h"
 #include "label-glyphs.h"
 #include "label-impl.h"
 #include "output-private.h"
@@ -75,18 +76,15 @@ dup_str(const char *s)
 static bool
 add_unique(unsigned **a, size_t *n, size_t *cap, unsigned v)
 {
+    unsigned *t;
     size_t i;
     for (i = 0; i < *n; i++)
         if ((*a)[i] == v)
             return false;
-    if (*n == *cap) {
-        size_t nc = *cap ? 2 * *cap : 256;
-        unsigned *t = cf_realloc_array(*a, nc, sizeof *t);
-        if (t == NULL)
-            return false;
-        *a = t;
-        *cap = nc;
-    }
+    t = cf__grow_array(*a, cap, *n + 1, sizeof *t, 256);
+    if (t == NULL)
+        return false;
+    *a = t;
     (*a)[(*n)++] = v;
     return true;
 }

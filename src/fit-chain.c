@@ -3,8 +3,8 @@
 ** split at its offset cusps and at the zeros of c', each part covered by
 ** the longest fitted cubics within tolerance (Levien, greedy from either
 ** end) or by bisection (Tiller-Hanson), with round joins where the tangent
-** turns.  The fits themselves are in offset-fit.c, the cusps in
-** offset-cusp.c.
+** turns.  The fits themselves are in fit-piece.c, the cusps in
+** fit-cusp.c.
 */
 #include <math.h>
 #include <stdlib.h>
@@ -12,7 +12,7 @@
 
 #include "core-private.h"
 #include "bezier-private.h"
-#include "offset-private.h"
+#include "fit-private.h"
 
 
 
@@ -68,16 +68,13 @@ typedef struct plist {
 static cf_status_t
 plist_add(plist *l, const cf__fit_t *f, double a, double b)
 {
+    piece *np;
     if (l->n >= CF__OFFSET_MAX_COVER)
         return CF_STATUS_NO_CONVERGENCE;
-    if (l->n == l->cap) {
-        size_t cap = l->cap ? 2 * l->cap : 8;
-        piece *np = cf__realloc_array(l->p, cap, sizeof *np);
-        if (np == NULL)
-            return CF_STATUS_NO_MEMORY;
-        l->p = np;
-        l->cap = cap;
-    }
+    np = cf__grow(l->p, &l->cap, l->n + 1, sizeof *np, 8);
+    if (np == NULL)
+        return CF_STATUS_NO_MEMORY;
+    l->p = np;
     l->p[l->n].f = *f;
     l->p[l->n].a = a;
     l->p[l->n].b = b;

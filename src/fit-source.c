@@ -2,14 +2,14 @@
 ** The exact curves that offset pieces approximate ("sources": the offset of
 ** a Bézier curve, or a circular join arc), their points and derivatives,
 ** and the measured two-sided Hausdorff error of a cubic against a source.
-** The fitting strategies are in offset-fit.c.
+** The fitting strategies are in fit-piece.c.
 */
 #include <math.h>
 #include <string.h>
 
 #include "core-private.h"
 #include "bezier-private.h"
-#include "offset-private.h"
+#include "fit-private.h"
 
 /* ---- unit tangent with higher derivatives -------------------------------- */
 

@@ -29,7 +29,7 @@
 
 #include "core-private.h"
 #include "bezier-private.h"
-#include "offset-private.h"
+#include "fit-private.h"
 
 double
 cf__deriv_scale(const cf_bezier_t *c)

@@ -2,14 +2,14 @@
 ** The fitting strategies of one offset piece: Levien's area and moment fit
 ** with its candidates, Tiller-Hanson, and the search of both arms of a
 ** piece that ends at an offset cusp; every candidate judged by its
-** measured error (offset-source.c).
+** measured error (fit-source.c).
 */
 #include <math.h>
 #include <string.h>
 
 #include "core-private.h"
 #include "bezier-private.h"
-#include "offset-private.h"
+#include "fit-private.h"
 
 /* ---- Levien's fit --------------------------------------------------------- */
 

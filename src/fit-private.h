@@ -1,16 +1,19 @@
 /*
-** Internals shared by the offset files (prefix cf__):
-**   offset-cusp.c   cusp polynomial, cusps and zeros of c'
-**   offset-source.c exact offset sources and the error measurement
-**   offset-fit.c    Levien and Tiller-Hanson fits, cusp pieces
-**   offset-trim.c   self-intersections of the raw chain and trimming
-**                   (with offset-trim-map.c and offset-refit.c:
-**                   offset-trim-private.h)
-**   offset-chain.c  the chain driver: splits, greedy covers, joins
-**   offset.c        public entry points and the independent measure
+** Internals of the cubic fitting (prefix cf__) that both the drawing of
+** curves (bezier-cubics.c: cf__fit_plain) and the offsets (offset.c) use:
+**   fit-cusp.c      cusp polynomial, cusps and zeros of c'
+**   fit-source.c    the exact curves a piece approximates (an offset of a
+**                   Bézier curve, the curve itself at d = 0, a join arc)
+**                   and the error measurement
+**   fit-piece.c     Levien and Tiller-Hanson fits of one piece, cusp pieces
+**   fit-chain.c     the chain driver: splits, greedy covers, joins
+** The offsets alone: offset.c (public entry points and the independent
+** measure), offset-trim.c with offset-trim-map.c and offset-refit.c
+** (self-intersections of the raw chain and trimming:
+** offset-trim-private.h).
 */
-#ifndef CURVEFIG_OFFSET_PRIVATE_H
-#define CURVEFIG_OFFSET_PRIVATE_H
+#ifndef CURVEFIG_FIT_PRIVATE_H
+#define CURVEFIG_FIT_PRIVATE_H
 
 #include <stdbool.h>
 #include <stddef.h>
@@ -93,7 +96,7 @@ cf_status_t cf__base_cusps_alloc(const cf_bezier_t *c, double **ts,
 /* A size of c' for relative tests: degree * max |P_i - P_0|. */
 double cf__deriv_scale(const cf_bezier_t *c);
 
-/* ---- the chain driver (offset-chain.c) ------------------------------- */
+/* ---- the chain driver (fit-chain.c) ---------------------------------- */
 
 /* The most pieces the greedy cover of one cusp-free interval takes, and
 ** one offset chain in all: far beyond what a reachable tolerance needs (a
@@ -130,14 +133,5 @@ cf_status_t cf__driver_join(cf__driver_t *dr, const cf_bezier_t *prev,
 ** piece could not reach tol.  NO_MEMORY, NO_CONVERGENCE (empty chain). */
 cf_status_t cf__fit_plain(const cf_bezier_t *c, double tol,
                           cf_cubics_t **out, bool *converged);
-
-/* Trim the raw chain of the pieces `base[0..n-1]` (source parameters
-** [t0[k], t1[k]], or [k, k + 1] when NULL) at d: split at the
-** self-intersections and keep the parts at distance >= |d| - tol, a cut
-** piece fitted again; each chain's max_error is its measured error. */
-cf_status_t cf__offset_trim(const cf_bezier_t *const *base, size_t nbase,
-                            const double *t0, const double *t1, double d,
-                            double tol, const cf_cubics_t *raw,
-                            cf_cubics_list_t **out, size_t *nisect);
 
 #endif

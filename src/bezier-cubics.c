@@ -3,8 +3,8 @@
 ** path output: SVG `C`, PDF `c`, cairo_curve_to).
 **
 ** Degree <= 3 polynomial curves are converted exactly (degree raised to 3).
-** Planar curves otherwise go through the offset machinery at d = 0
-** (cf__fit_plain, offset-chain.c / offset-fit.c): split at the zeros of c', each
+** Planar curves otherwise go through the cubic fitting at d = 0
+** (cf__fit_plain, fit-chain.c / fit-piece.c): split at the zeros of c', each
 ** piece covered by the longest cubics matching end points, end tangents,
 ** signed area and x-moment (Levien), accepted by their measured two-sided
 ** Hausdorff distance.
@@ -32,7 +32,7 @@
 #include <string.h>
 
 #include "bezier-private.h"
-#include "offset-private.h"
+#include "fit-private.h"
 
 #define SAMPLES 48        /* samples per piece for the error measure */
 #define MAX_DEPTH 40      /* halvings of [0, 1] */
@@ -63,8 +63,9 @@ static cf_status_t
 push(fit *f, const double *seg, double a, double b)
 {
     if (f->count == f->cap) {
-        size_t cap = f->cap ? 2 * f->cap : 16;
-        double *p = cf__realloc_array(f->pts, cap, 4 * f->dim * sizeof *p);
+        size_t cap = f->cap;
+        double *p = cf__grow(f->pts, &cap, f->count + 1,
+                             4 * f->dim * sizeof *p, 16);
         double *t;
         if (p == NULL)
             return CF_STATUS_NO_MEMORY;

@@ -60,6 +60,14 @@ void *cf__calloc(size_t n, size_t size);
 void *cf__alloc_array(size_t n, size_t size);
 void *cf__realloc_array(void *ptr, size_t n, size_t size);
 void cf__free(void *ptr);
+/* The one grow-by-doubling of the core's arrays: room for `need` elements
+** of `size` bytes in arr, whose capacity is *cap elements.  arr itself
+** when it has room; else the capacity doubles (from `first`) until it
+** holds need, arr is reallocated and *cap set.  NULL when out of memory or
+** the bytes would overflow size_t (arr and *cap untouched, arr still
+** valid). */
+void *cf__grow(void *arr, size_t *cap, size_t need, size_t size,
+               size_t first);
 
 /* Checks that report with a message.  `what` names the array ("point"),
 ** values are dim-interleaved with the given stride. */

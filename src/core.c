@@ -211,6 +211,21 @@ cf__realloc_array(void *ptr, size_t n, size_t size)
     return nh + 1;
 }
 
+void *
+cf__grow(void *arr, size_t *cap, size_t need, size_t size, size_t first)
+{
+    size_t n = *cap > 0 ? *cap : (first > 0 ? first : 1);
+    void *p;
+    if (need <= *cap && arr != NULL)
+        return arr;
+    while (n < need)
+        n = n > SIZE_MAX / 2 ? need : 2 * n;
+    p = cf__realloc_array(arr, n, size);
+    if (p != NULL)
+        *cap = n;
+    return p;
+}
+
 void
 cf__free(void *ptr)
 {

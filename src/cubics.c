@@ -46,8 +46,9 @@ cf__chain_push(cf__chain_t *ch, const double *pts, double t0, double t1)
 {
     cf_cubics_t *cu = ch->cubics;
     if (cu->count + 1 > ch->cap) {
-        size_t cap = ch->cap ? 2 * ch->cap : 8;
-        double *np = cf__realloc_array(cu->pts, 8 * cap, sizeof(double));
+        size_t cap = ch->cap;
+        double *np = cf__grow(cu->pts, &cap, cu->count + 1,
+                              8 * sizeof(double), 8);
         double *nt;
         if (np == NULL)
             return CF_STATUS_NO_MEMORY;

@@ -14,7 +14,7 @@
 #include <stdbool.h>
 #include <stddef.h>
 
-#include "offset-private.h"
+#include "fit-private.h"
 
 #define CF__TRIM_POLY_N 64      /* polyline samples per raw cubic */
 #define CF__TRIM_BASE_N 256     /* samples of each base piece */
@@ -165,5 +165,14 @@ double cf__trim_src_keep(const cf__trim_t *tr, const cf__osrc_t *src,
 cf_status_t cf__trim_append_part(cf__trim_t *tr, cf__chain_t *ch, double g0,
                                  double g1, const cf__trim_cut_t *c0,
                                  const cf__trim_cut_t *c1);
+
+/* Trim the raw chain of the pieces `base[0..n-1]` (source parameters
+** [t0[k], t1[k]], or [k, k + 1] when NULL) at d: split at the
+** self-intersections and keep the parts at distance >= |d| - tol, a cut
+** piece fitted again; each chain's max_error is its measured error. */
+cf_status_t cf__offset_trim(const cf_bezier_t *const *base, size_t nbase,
+                            const double *t0, const double *t1, double d,
+                            double tol, const cf_cubics_t *raw,
+                            cf_cubics_list_t **out, size_t *nisect);
 
 #endif

@@ -21,14 +21,11 @@
 static cf_status_t
 add_split(cf__trim_t *tr, double g, const double *p, double T)
 {
-    if (tr->nsplit == tr->capsplit) {
-        size_t cap = tr->capsplit ? 2 * tr->capsplit : 16;
-        cf__trim_split_t *n = cf__realloc_array(tr->splits, cap, sizeof *n);
-        if (n == NULL)
-            return CF_STATUS_NO_MEMORY;
-        tr->splits = n;
-        tr->capsplit = cap;
-    }
+    cf__trim_split_t *n = cf__grow(tr->splits, &tr->capsplit,
+                                   tr->nsplit + 1, sizeof *n, 16);
+    if (n == NULL)
+        return CF_STATUS_NO_MEMORY;
+    tr->splits = n;
     tr->splits[tr->nsplit].g = g;
     tr->splits[tr->nsplit].exact = p != NULL;
     tr->splits[tr->nsplit].T = T;
@@ -312,16 +309,13 @@ exact_cut(const cf__trim_t *tr, double g_cut, double g_out, double *g,
 static cf_status_t
 list_add(cf_cubics_list_t *list, size_t *cap, cf_cubics_t *ch)
 {
-    if (list->count == *cap) {
-        size_t nc = *cap ? 2 * *cap : 4;
-        cf_cubics_t **n = cf__realloc_array(list->chains, nc, sizeof *n);
-        if (n == NULL) {
-            cf_cubics_destroy(ch);
-            return CF_STATUS_NO_MEMORY;
-        }
-        list->chains = n;
-        *cap = nc;
+    cf_cubics_t **n = cf__grow(list->chains, cap, list->count + 1,
+                               sizeof *n, 4);
+    if (n == NULL) {
+        cf_cubics_destroy(ch);
+        return CF_STATUS_NO_MEMORY;
     }
+    list->chains = n;
     list->chains[list->count++] = ch;
     return CF_STATUS_OK;
 }

@@ -1,7 +1,7 @@
 /*
 ** Offset curves: exact points, the public entry points of the approximating
 ** chain and the independent error measure.  The chain is driven in
-** offset-chain.c, the fits are in offset-fit.c, cusps in offset-cusp.c,
+** fit-chain.c, the fits are in fit-piece.c, cusps in fit-cusp.c,
 ** trimming in offset-trim.c.
 */
 #include <float.h>
@@ -11,7 +11,7 @@
 
 #include "core-private.h"
 #include "bezier-private.h"
-#include "offset-private.h"
+#include "offset-trim-private.h"
 
 void
 cf_offset_options_init(cf_offset_options_t *opt)

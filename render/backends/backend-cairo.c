@@ -1,9 +1,9 @@
 /*
 ** The cairo backend: a display list drawn onto a cairo context, whatever
-** its surface (SVG, PDF, PS, PNG in render/output.c; the recording surface
-** of the ink box; the raster of automatic label placement).  Every stroke
-** sets width, cap, join and dash, so an operation draws the same whatever
-** came before it.
+** its surface (SVG, PDF, PS, PNG in render/output/output.c; the recording
+** surface of the ink box; the raster of automatic label placement).
+** Every stroke sets width, cap, join and dash, so an operation draws the
+** same whatever came before it.
 */
 #include <cairo.h>
 

@@ -20,6 +20,7 @@
 #include <string.h>
 
 #include "backend.h"
+#include "grow.h"
 
 static void
 put(cf__dump_t *d, const char *fmt, ...)
@@ -43,17 +44,13 @@ put(cf__dump_t *d, const char *fmt, ...)
             return;
         }
         {
-            size_t cap = d->cap ? 2 * d->cap : 4096;
-            char *t;
-            while (cap < d->len + (size_t)n + 1)
-                cap *= 2;
-            t = cf_realloc_array(d->text, cap, 1);
+            char *t = cf__grow_array(d->text, &d->cap,
+                                     d->len + (size_t)n + 1, 1, 4096);
             if (t == NULL) {
                 d->failed = true;
                 return;
             }
             d->text = t;
-            d->cap = cap;
         }
     }
 }

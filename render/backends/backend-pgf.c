@@ -7,7 +7,7 @@
 ** its width, caps, joins, dash, colours and opacity, as the cairo
 ** backend sets them per operation; elements and clips are pgfscopes,
 ** an element with a beamer overlay specification also \visible<...>.
-** Labels are TeX source (render/label-tex.c) put with \pgftext at the
+** Labels are TeX source (render/labels/label-tex.c) put with \pgftext at the
 ** anchor on the side of the label's place, so that TeX sets them in the
 ** document's font and size; a label pdflatex cannot set (Cyrillic, CJK)
 ** is drawn as the outlines of curvefig's own glyphs.  The box is the
@@ -20,8 +20,8 @@
 #include <cairo.h>
 
 #include "backend.h"
+#include "buffer.h"
 #include "label-private.h"
-#include "render-private.h"
 
 #define PI 3.14159265358979323846
 #define PGF_MAX_BP CF__PGF_MAX_BP

@@ -2,11 +2,11 @@
 ** The SVG writer: a display list as an SVG document without cairo, for
 ** the WebAssembly module of the course pages (docs/interactive.md), where
 ** there is no cairo.  It draws what the cairo backend draws (the same
-** paths, paints, markers of render/marker.c, clips and groups), as SVG
+** paths, paints, markers of render/dlist/marker.c, clips and groups), as SVG
 ** elements: paths with their own fill, stroke, caps, joins, dashes and
 ** opacities; each clip a <clipPath>; a label as the outlines of its
 ** glyphs, which the caller's outline function gives (natively from pango,
-** render/glyph-outline.c; in the page from the glyph data embedded at
+** render/backends/glyph-outline.c; in the page from the glyph data embedded at
 ** export time), a halo stroked under them.  Caps and joins carry over
 ** from a stroke to a later marker of the same group as in cairo's state.
 */
@@ -15,7 +15,7 @@
 #include <string.h>
 
 #include "backend.h"
-#include "render-private.h"
+#include "buffer.h"
 
 #define PI 3.14159265358979323846
 

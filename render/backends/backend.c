@@ -1,6 +1,6 @@
 /*
-** The seam (render/backend.h): a display list handed to a backend, one
-** operation after the other, and the knockouts of label halos on a
+** The seam (render/backends/backend.h): a display list handed to a backend,
+** one operation after the other, and the knockouts of label halos on a
 ** transparent page.
 */
 #include "curvefig/core.h"

@@ -1,19 +1,20 @@
 /*
 ** The seam between the layout and the output devices: a backend is a
 ** struct of functions that receive a page and the operations of a display
-** list (render/dlist.h) in order, as matplotlib's RendererBase receives
+** list (render/dlist/dlist.h) in order, as matplotlib's RendererBase receives
 ** draw_path, draw_markers and draw_text.  A new backend (PGF/TikZ, a
 ** browser canvas) is one more of these; the model and the layout do not
 ** change.
 **
 ** Backends:
-**   cairo (render/backend-cairo.c): SVG, PDF, PS, EPS and PNG surfaces, and
+**   cairo (render/backends/backend-cairo.c): SVG, PDF, PS, EPS and PNG
+**   surfaces, and
 **     the recording and raster surfaces the layout measures ink with;
-**   dump  (render/backend-dump.c): one line of text per operation,
+**   dump  (render/backends/backend-dump.c): one line of text per operation,
 **     deterministic, for tests;
-**   pgf   (render/backend-pgf.c): a pgfpicture for TeX, labels as TeX
+**   pgf   (render/backends/backend-pgf.c): a pgfpicture for TeX, labels as TeX
 **     source;
-**   svg writer (render/backend-svgw.c): SVG without cairo, for the
+**   svg writer (render/backends/backend-svgw.c): SVG without cairo, for the
 **     WebAssembly module of the course pages.
 */
 #ifndef CURVEFIG_RENDER_BACKEND_H
@@ -52,7 +53,7 @@ typedef struct cf__backend {
     int (*end_page)(void *ctx);
     /* Clip to the page minus n boxes (x y w h each), until the next
     ** unclip: the knockouts of the labels with a halo on a transparent
-    ** page (render/dlist.h).  NULL: the backend draws no knockouts. */
+    ** page (render/dlist/dlist.h).  NULL: the backend draws no knockouts. */
     void (*knockout)(void *ctx, const double (*boxes)[4], size_t n);
 } cf__backend_t;
 

@@ -1,7 +1,7 @@
 /*
 ** The outlines of a label's glyphs as SVG path data, from pango through
 ** cairo (cf__label_path, cairo_copy_path): the outline function of the
-** SVG writer natively (render/backend.h), and the source of the glyph
+** SVG writer natively (render/backends/backend.h), and the source of the glyph
 ** data a course page embeds.
 */
 #include <string.h>
@@ -9,8 +9,8 @@
 #include <cairo.h>
 
 #include "backend.h"
+#include "buffer.h"
 #include "label-private.h"
-#include "render-private.h"
 
 static int
 put_point(cf__buf_t *d, const char *op, const cairo_path_data_t *p)

@@ -1,27 +1,30 @@
 /*
-** Growable byte buffers of the output side (render/render-private.h).
+** Growable byte buffers (render/base/buffer.h).
 */
+#include <stdint.h>
 #include <string.h>
 
-#include "render-private.h"
+#include "buffer.h"
+#include "curvefig/core.h"
+#include "grow.h"
 
 int
 cf__buf_append(cf__buf_t *b, const void *data, size_t n)
 {
     if (b->failed)
         return -1;
+    if (n > SIZE_MAX - b->size) {
+        b->failed = 1;
+        return -1;
+    }
     if (b->size + n > b->cap) {
-        size_t cap = b->cap ? b->cap : 4096;
-        unsigned char *d;
-        while (cap < b->size + n)
-            cap *= 2;
-        d = cf_realloc_array(b->data, cap, 1);
+        unsigned char *d = cf__grow_array(b->data, &b->cap, b->size + n, 1,
+                                          4096);
         if (d == NULL) {
             b->failed = 1;
             return -1;
         }
         b->data = d;
-        b->cap = cap;
     }
     if (n > 0)
         memcpy(b->data + b->size, data, n);

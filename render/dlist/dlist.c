@@ -1,31 +1,27 @@
 /*
-** The display list (render/dlist.h): growable arrays of operations, path
+** The display list (render/dlist/dlist.h): growable arrays of operations, path
 ** segments and their numbers.  An allocation failure sets dl->failed and
 ** makes later appends do nothing; the writer checks it once at the end.
 */
 #include <string.h>
 
 #include "dlist.h"
+#include "grow.h"
 
 static bool
 grow(cf__dl_t *dl, void **arr, size_t *cap, size_t need, size_t elsize)
 {
-    size_t n;
     void *p;
     if (dl->failed)
         return false;
     if (need <= *cap)
         return true;
-    n = *cap ? *cap : 64;
-    while (n < need)
-        n *= 2;
-    p = cf_realloc_array(*arr, n, elsize);
+    p = cf__grow_array(*arr, cap, need, elsize, 64);
     if (p == NULL) {
         dl->failed = true;
         return false;
     }
     *arr = p;
-    *cap = n;
     return true;
 }
 

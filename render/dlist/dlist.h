@@ -1,8 +1,8 @@
 /*
 ** The display list: what a laid-out figure draws, as device-independent
 ** operations in page units (bp, y down, origin at the top left of the
-** page).  The layout writes it (render/layout.c and the element kinds);
-** backends read it (render/backend.h).  Nothing here knows cairo.
+** page).  The layout writes it (render/layout/layout.c and the element kinds);
+** backends read it (render/backends/backend.h).  Nothing here knows cairo.
 **
 ** Operations, in drawing order:
 **   GROUP / END      one element of the figure (its kind name and index);
@@ -92,7 +92,7 @@ typedef struct cf__text_op {
     double opacity;
     double halo;             /* > 0: a border of halo_color (the page's
                                 background) first; on a transparent page
-                                a knockout (render/backend.h) */
+                                a knockout (render/backends/backend.h) */
     cf_color_t halo_color;
 } cf__text_op_t;
 
@@ -160,7 +160,7 @@ void cf__dl_path_paint(cf__dl_t *dl, const cf__paint_t *paint);
 
 void cf__dl_marker(cf__dl_t *dl, const cf__marker_op_t *m);
 
-/* The outline of a marker symbol (render/marker.c), the same for every
+/* The outline of a marker symbol (render/dlist/marker.c), the same for every
 ** backend: its path and how it is painted — filled in the marker colour,
 ** filled with `fill` then stroked in the marker colour, or only stroked
 ** (butt caps); strokes of width line_width, no dash. */

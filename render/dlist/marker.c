@@ -1,5 +1,5 @@
 /*
-** Marker symbols as outlines (render/dlist.h): dots and circles as arcs,
+** Marker symbols as outlines (render/dlist/dlist.h): dots and circles as arcs,
 ** squares as rectangles, diamonds, triangles and stars as polygons,
 ** crosses, pluses and ticks as stroked bars.  Every backend draws these,
 ** so a marker looks the same in every format.

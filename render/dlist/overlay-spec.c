@@ -1,5 +1,5 @@
 /*
-** Overlay specifications (render/overlay-spec.h): parsing, checking and
+** Overlay specifications (render/dlist/overlay-spec.h): parsing, checking and
 ** asking whether a step is shown.
 */
 #include <stdarg.h>

@@ -3,8 +3,8 @@
 ** element is shown.  A specification is a comma-separated list of
 ** ranges, each "N" (step N), "N-M" (N to M), "N-" (N to the last) or
 ** "-M" (1 to M), with steps counted from 1; "2", "1-3", "2-", "2,4-".
-** The layer below the display list's players (render/backend.c) and the
-** figure (render/overlay.c).
+** The layer below the display list's players (render/backends/backend.c) and
+** the figure (render/figure/overlay.c).
 */
 #ifndef CURVEFIG_RENDER_OVERLAY_SPEC_H
 #define CURVEFIG_RENDER_OVERLAY_SPEC_H

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "curvefig/bspline.h"
+#include "grow.h"
 #include "model.h"
 
 /* One piece of a curve: a planar Bézier converted at layout time, or a
@@ -23,7 +24,7 @@ typedef struct piece {
 typedef struct curve_el {
     cf__element_t base;
     piece_t *pieces;
-    size_t npieces;
+    size_t npieces, cap;
 } curve_el_t;
 
 static void
@@ -160,16 +161,14 @@ cf__curve_add(cf_figure_t *fig, cf__element_t *el, cf_bezier_t *bez,
               const double *cubic)
 {
     curve_el_t *e = (curve_el_t *)el;
-    if (e->npieces % 16 == 0) {
-        piece_t *np = cf_realloc_array(e->pieces, e->npieces + 16,
-                                       sizeof *np);
-        if (np == NULL) {
-            cf_bezier_destroy(bez);
-            return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                               "out of memory for curve pieces");
-        }
-        e->pieces = np;
+    piece_t *np = cf__grow_array(e->pieces, &e->cap, e->npieces + 1,
+                                 sizeof *np, 16);
+    if (np == NULL) {
+        cf_bezier_destroy(bez);
+        return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                           "out of memory for curve pieces");
     }
+    e->pieces = np;
     memset(&e->pieces[e->npieces], 0, sizeof e->pieces[0]);
     e->pieces[e->npieces].bez = bez;
     if (cubic != NULL)

@@ -1,6 +1,6 @@
 /*
 ** Labels and arrows: the two kinds anchored at one data point.  A label
-** placed CF_PLACE_AUTO takes the place render/place.c chose for the
+** placed CF_PLACE_AUTO takes the place render/layout/place.c chose for the
 ** current layout.
 */
 #include <math.h>

@@ -1,11 +1,12 @@
 /*
 ** The figure object: its page, title, theme, window, fit and projection
 ** setters, and the list of elements in drawing order (each a record of
-** its kind, render/el-*.c, render/axes.c, render/plots.c).
+** its kind, render/el-*.c, render/figure/axes.c, render/figure/plots.c).
 */
 #include <math.h>
 #include <string.h>
 
+#include "grow.h"
 #include "model.h"
 
 /* ---- errors ------------------------------------------------------------- */
@@ -406,17 +407,14 @@ cf__element_new(cf_figure_t *fig, const cf__kind_t *k, size_t size,
                 cf_role_t role, const cf_style_t *style)
 {
     cf__element_t *e;
-    if (fig->count == fig->cap) {
-        size_t cap = fig->cap ? 2 * fig->cap : 16;
-        cf__element_t **ne = cf_realloc_array(fig->els, cap, sizeof *ne);
-        if (ne == NULL) {
-            cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                        "out of memory for figure element %zu", fig->count);
-            return NULL;
-        }
-        fig->els = ne;
-        fig->cap = cap;
+    cf__element_t **ne = cf__grow_array(fig->els, &fig->cap,
+                                        fig->count + 1, sizeof *ne, 16);
+    if (ne == NULL) {
+        cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                    "out of memory for figure element %zu", fig->count);
+        return NULL;
     }
+    fig->els = ne;
     e = cf_calloc(1, size);
     if (e == NULL) {
         cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,

@@ -3,18 +3,10 @@
 ** element record every kind starts with, and the class (a table of
 ** functions) that gives each kind its bounds and its drawing.
 **
-** Layers, each calling only the ones below it (tests/render/cycles.py
-** checks the object files):
-**   output.c                  the public render and write functions
-**   layout.c place.c          window, map to the page, label places, ink
-**   plots.c axes.c el-*.c     element kinds: record, bounds, display list
-**   text.c figure.c overlay.c labels of elements; the figure, its setters,
-**                             its overlay steps
-**   svg-steps.c               the animated SVG of overlay steps
-**   formats.c backend-*.c     output formats and their fix-ups; devices
-**   backend.c png.c           a display list to a backend; PNG encoding
-**   overlay-spec.c            beamer's overlay specifications
-**   label*.c dlist.c style.c  labels; the display list; styles
+** The figure layer (render/figure/): figure.c, text.c, style.c and the
+** element kinds declare their shared functions here; the layout's are in
+** render/layout/layout-private.h.  The layers: docs/library.md,
+** "How the renderer is built".
 */
 #ifndef CURVEFIG_RENDER_MODEL_H
 #define CURVEFIG_RENDER_MODEL_H
@@ -149,7 +141,7 @@ struct cf__element {
                                      overlay specification), NULL: all */
 };
 
-/* Where a box goes beside the drawing (render/room.c): undecided (a new
+/* Where a box goes beside the drawing (render/layout/room.c): undecided (a new
 ** layout), inside the drawing's ink box, or in a band at its right or
 ** below it. */
 typedef enum cf__room_band {
@@ -185,20 +177,21 @@ struct cf_figure {
     char *warnings;          /* of the last layout, a line each; NULL: none */
     size_t warnings_len;
     /* the layout (less its page position) the labels were last placed for
-    ** within one cf__figure_layout and its builds (render/place.c) */
+    ** within one cf__figure_layout and its builds (render/layout/place.c) */
     bool placed;
     cf__layout_t placed_for;
-    /* legend (render/legend.c) */
+    /* legend (render/layout/legend.c) */
     cf__legend_entry_t *legend;
     size_t nlegend;
     cf_place_t legend_place;      /* CENTER (never set): automatic */
     bool legend_noframe;
     cf__room_band_t legend_band;  /* of this layout */
-    /* insets (render/inset.c) */
+    /* insets (render/layout/inset.c) */
     cf_inset_t *insets;
     size_t ninsets;
     cf__room_band_t *inset_band;  /* each one's, of this layout */
-    /* panels (render/panel.c): rows x cols figures, or a panel's parent */
+    /* panels (render/layout/panel.c): rows x cols figures, or a panel's
+    ** parent */
     cf_figure_t **panels;
     int rows, cols;
     unsigned panel_flags;
@@ -286,60 +279,5 @@ void cf__style_resolve(const cf_theme_t *theme, cf_role_t role,
                        const cf_style_t *over, cf_style_t *out);
 /* Check the fields an element sets (finite, in range); names `what`. */
 cf_status_t cf__style_check(const cf_style_t *style, cf_diag_t *diag);
-
-/* ---- layout.c ----------------------------------------------------------- */
-
-/* Compute the layout for the figure's page (errors go into fig). */
-cf_status_t cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay);
-/* The display list of every element for a layout (automatic label places
-** chosen first). */
-cf_status_t cf__figure_build(cf_figure_t *fig, const cf__layout_t *lay,
-                             cf__dl_t *dl);
-
-/* Whether a display list on a page of w x h bp shows the figure: an error
-** (in diag) when it draws nothing at all, and on a fixed page (not cropped
-** to the ink) one naming the element whose ink sticks out farthest and by
-** how much, unless the figure clips. */
-cf_status_t cf__figure_check_page(const cf_figure_t *fig, const cf__dl_t *dl,
-                                  double w, double h, bool fixed,
-                                  cf_diag_t *diag);
-
-/* ---- legend.c inset.c panel.c room.c ----------------------------------- */
-
-/* The legend of the figure's entries, from the samples of the element
-** groups drawn at ops [from, dl->count). */
-cf_status_t cf__legend_draw(cf_figure_t *fig, const cf__layout_t *lay,
-                            size_t from, cf__dl_t *dl);
-/* Every inset: the elements drawn again in its box, frames, connectors;
-** placed beside the drawing at ops [from, dl->count). */
-cf_status_t cf__insets_draw(cf_figure_t *fig, const cf__layout_t *lay,
-                            size_t from, cf__dl_t *dl);
-/* A new layout: the legend and the insets placed afresh. */
-void cf__room_reset(cf_figure_t *fig);
-/* Cell k of a figure split into panels: x y w h, page bp. */
-void cf__panel_cell(const cf_figure_t *fig, int k, double cell[4]);
-/* Make the panels' layouts agree on the shared axes (lays[rows * cols]). */
-void cf__panels_share(const cf_figure_t *fig, cf__layout_t *lays);
-/* The title of panel k (laid out at the label font size) into dl. */
-cf_status_t cf__panel_title_draw(cf_figure_t *fig, int k,
-                                 const cf__layout_t *lay, cf__dl_t *dl);
-/* Where a w x h box goes beside the drawing whose ink is ops [from,
-** dl->count) (laid out with lay; the raster holds all of dl): at place
-** of the drawing's ink box, gap bp inside its edge (AUTO: the first of ne
-** nw se sw n s e w covering no ink; with none, *band is set to a band at
-** the right or below the ink box, and kept there while *band says so);
-** its top left into at[2]. */
-cf_status_t cf__room_find(cf_figure_t *fig, const cf__layout_t *lay,
-                          const cf__dl_t *dl, size_t from, double w,
-                          double h, cf_place_t place, double gap,
-                          cf__room_band_t *band, double at[2]);
-
-/* ---- place.c ------------------------------------------------------------ */
-
-/* Choose the places of the labels placed CF_PLACE_AUTO for a layout, and
-** note in the figure's warnings every label that lies on ink. */
-cf_status_t cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay);
-/* Forget the places chosen: the figure is laid out afresh. */
-void cf__place_forget(cf_figure_t *fig);
 
 #endif

@@ -2,7 +2,7 @@
 ** Function plots: graphs of piecewise polynomials (Bézier pieces in R^1
 ** over breakpoints), B-spline basis functions, and sampled functions
 ** fitted with cubic Hermite segments.  Each is a curve element of role
-** CF_ROLE_GRAPH (render/el-curve.c).
+** CF_ROLE_GRAPH (render/figure/el-curve.c).
 */
 #include <math.h>
 #include <string.h>

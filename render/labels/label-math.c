@@ -1,6 +1,6 @@
 /*
 ** TeX's classes of math characters and the spaces between atoms, for the
-** label parser (render/label-parse.c), and what an accent takes.
+** label parser (render/labels/label-parse.c), and what an accent takes.
 */
 #include "label-impl.h"
 

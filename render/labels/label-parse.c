@@ -1,10 +1,11 @@
 /*
 ** The label parser (syntax in include/curvefig/label.h).  It lays out as
-** it reads.  Each character becomes part of a run (render/label-runs.c);
-** sub- and superscripts are laid out at the pen position and then shifted
-** vertically, with shifts taken from TeX's font parameters (cmsy10:
-** sup1 = 0.413 em, sub1 = 0.150 em, sub2 = 0.247 em, x-height 0.431 em,
-** rule thickness 0.04 em), so B_i^n stacks both scripts at the same x.
+** it reads.  Each character becomes part of a run
+** (render/labels/label-runs.c); sub- and superscripts are laid out at the
+** pen position and then shifted vertically, with shifts taken from TeX's
+** font parameters (cmsy10: sup1 = 0.413 em, sub1 = 0.150 em, sub2 = 0.247
+** em, x-height 0.431 em, rule thickness 0.04 em), so B_i^n stacks both
+** scripts at the same x.
 */
 #include <math.h>
 #include <stdio.h>

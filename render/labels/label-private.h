@@ -1,5 +1,5 @@
 /*
-** Internals of labels (render/label.c) for the layout and the cairo
+** Internals of labels (render/labels/label.c) for the layout and the cairo
 ** backend.
 */
 #ifndef CURVEFIG_RENDER_LABEL_PRIVATE_H
@@ -34,7 +34,7 @@ void cf__label_draw_halo(const cf_label_t *label, cairo_t *cr, double x,
                          double y, const cf_color_t *halo_color,
                          double halo);
 
-/* The label source src as TeX (render/label-tex.c) appended to out: 0,
+/* The label source src as TeX (render/labels/label-tex.c) appended to out: 0,
 ** 1 when pdflatex could not set it (Cyrillic, CJK, other scripts), -1
 ** out of memory. */
 struct cf__buf;

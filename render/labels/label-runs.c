@@ -1,11 +1,12 @@
 /*
 ** Runs of a label: the glyphs of one font, size and baseline, laid out
-** and measured with pango (render/label-impl.h).
+** and measured with pango (render/labels/label-impl.h).
 */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
+#include "grow.h"
 #include "label-impl.h"
 
 
@@ -115,14 +116,11 @@ cf__label_put_text(cf_label_t *lab, const font_t *f, double x, double y,
         r->text_len += n;
         t[r->text_len] = '\0';
     } else {
-        if (lab->count == lab->cap) {
-            size_t cap = lab->cap ? 2 * lab->cap : 8;
-            run_t *nr = cf_realloc_array(lab->runs, cap, sizeof *nr);
-            if (nr == NULL)
-                return NAN;
-            lab->runs = nr;
-            lab->cap = cap;
-        }
+        run_t *nr = cf__grow_array(lab->runs, &lab->cap, lab->count + 1,
+                                   sizeof *nr, 8);
+        if (nr == NULL)
+            return NAN;
+        lab->runs = nr;
         t = cf_malloc(n + 1);
         if (t == NULL)
             return NAN;

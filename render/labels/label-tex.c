@@ -11,8 +11,8 @@
 */
 #include <string.h>
 
+#include "buffer.h"
 #include "label-impl.h"
-#include "render-private.h"
 
 typedef struct tex {
     const char *s;

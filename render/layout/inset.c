@@ -7,7 +7,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "model.h"
+#include "layout-private.h"
 
 #define INSET_EDGE 4.0    /* bp inside the edge of the drawing's ink */
 #define INSET_FRAME 0.5   /* bp: frame and connector width */

@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "backend.h"
-#include "model.h"
+#include "layout-private.h"
 
 static void
 compute_map(const cf_figure_t *fig, const double win[4], bool keep,

@@ -2,15 +2,15 @@
 ** Legends: an entry per element that asked for one, a sample of the
 ** element's line, fill and marker as its group drew them, beside the
 ** entry's label; the box goes where the drawing leaves room, or beside
-** it (render/room.c), or at a named corner or side of the drawing, framed
-** on the background or bare.
+** it (render/layout/room.c), or at a named corner or side of the drawing,
+** framed on the background or bare.
 */
 #include <math.h>
 #include <string.h>
 
 #include "backend.h"
 #include "label-private.h"
-#include "model.h"
+#include "layout-private.h"
 
 #define LEG_PAD 3.0       /* bp inside the frame */
 #define LEG_SAMPLE 18.0   /* bp: the length of a line sample */

@@ -8,7 +8,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "model.h"
+#include "layout-private.h"
 
 #define PANEL_TITLE_BAND 1.5   /* title band: this many font sizes high */
 

@@ -19,7 +19,7 @@
 
 #include "backend.h"
 #include "label-private.h"
-#include "model.h"
+#include "layout-private.h"
 
 #define AUTO_RES 2.0          /* raster pixels per bp */
 #define AUTO_MAX_PIXELS 4e6   /* larger pages get a coarser raster */

@@ -18,7 +18,7 @@
 #include <cairo.h>
 
 #include "backend.h"
-#include "model.h"
+#include "layout-private.h"
 
 #define ROOM_RES 2.0          /* raster pixels per bp */
 #define ROOM_MAX_PIXELS 4e6   /* larger drawings get a coarser raster */

@@ -14,8 +14,8 @@
 #include <cairo-svg.h>
 
 #include "backend.h"
+#include "output-private.h"
 #include "png-private.h"
-#include "render-private.h"
 
 static const char *const format_names[CF_FORMAT_LAST_] = {
     "svg", "pdf", "ps", "eps", "png", "pgf"

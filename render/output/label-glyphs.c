@@ -1,14 +1,13 @@
 /*
-** The glyph data of a course page (render/label-glyphs.h): the labels of
-** the figures are collected by playing their display lists through a
-** backend that keeps only the text operations; each run's pango layout
-** gives its font description (D), its shaping (S) and the outlines of its
-** glyphs (G, through cairo_glyph_path on the font's scaled font, per bp of
-** size); then each description shapes the character set one character
-** at a time (C), and every ordered pair of the characters of the texts
-** and of numbers (digits, point, signs, space, =) two at a time: where the
-** pair's advance differs from its characters' (kerning) a K line gives
-** the difference.
+** The glyph data of a course page (render/output/label-glyphs.h): the labels
+** of the figures are collected by playing their display lists through a
+** backend that keeps only the text operations; each run's pango layout gives
+** its font description (D), its shaping (S) and the outlines of its glyphs (G,
+** through cairo_glyph_path on the font's scaled font, per bp of size); then
+** each description shapes the character set one character at a time (C), and
+** every ordered pair of the characters of the texts and of numbers (digits,
+** point, signs, space, =) two at a time: where the pair's advance differs from
+** its characters' (kerning) a K line gives the difference.
 */
 #include <math.h>
 #include <stdarg.h>
@@ -19,9 +18,10 @@
 
 #include "backend.h"
 #include "curvefig/output.h"
+#include "grow.h"
 #include "label-glyphs.h"
 #include "label-impl.h"
-#include "render-private.h"
+#include "output-private.h"
 
 #define MAX_DESCS 64
 #define MAX_FACES 64
@@ -76,18 +76,15 @@ dup_str(const char *s)
 static bool
 add_unique(unsigned **a, size_t *n, size_t *cap, unsigned v)
 {
+    unsigned *t;
     size_t i;
     for (i = 0; i < *n; i++)
         if ((*a)[i] == v)
             return false;
-    if (*n == *cap) {
-        size_t nc = *cap ? 2 * *cap : 256;
-        unsigned *t = cf_realloc_array(*a, nc, sizeof *t);
-        if (t == NULL)
-            return false;
-        *a = t;
-        *cap = nc;
-    }
+    t = cf__grow_array(*a, cap, *n + 1, sizeof *t, 256);
+    if (t == NULL)
+        return false;
+    *a = t;
     (*a)[(*n)++] = v;
     return true;
 }

@@ -1,7 +1,7 @@
 /*
-** Output: a figure laid out (render/layout.c) into a display list, drawn
-** by the cairo backend in each format (render/formats.c) into memory,
-** then written to a temporary file in the target directory and renamed
+** Output: a figure laid out (render/layout/layout.c) into a display list,
+** drawn by the cairo backend in each format (render/output/formats.c) into
+** memory, then written to a temporary file in the target directory and renamed
 ** over the target.
 */
 #include <errno.h>
@@ -16,8 +16,8 @@
 
 #include <cairo.h>
 
-#include "model.h"
-#include "render-private.h"
+#include "layout-private.h"
+#include "output-private.h"
 
 void
 cf_write_options_init(cf_write_options_t *options)
@@ -157,7 +157,7 @@ cf__figure_play(cf_figure_t *fig, unsigned step, const cf__backend_t *be,
 }
 
 /* One format of a laid-out figure; with overlay steps, step o->step
-** alone, or the whole sequence (render/overlay.c, docs/overlays.md). */
+** alone, or the whole sequence (render/figure/overlay.c, docs/overlays.md). */
 static cf_status_t
 render_job(cf_figure_t *fig, cf_format_t format, const cf_write_options_t *o,
            const job_t *job, cf__buf_t *out, cf_diag_t *diag)

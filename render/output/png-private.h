@@ -5,9 +5,12 @@
 #ifndef CURVEFIG_RENDER_PNG_PRIVATE_H
 #define CURVEFIG_RENDER_PNG_PRIVATE_H
 
+#include <stdbool.h>
+
 #include <cairo.h>
 
-#include "render-private.h"
+#include "buffer.h"
+#include "curvefig/core.h"
 
 /* Append the PNG encoding of an image surface (CAIRO_FORMAT_ARGB32 or
 ** RGB24) to out.  The pixels are the ones cairo_surface_write_to_png

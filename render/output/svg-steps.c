@@ -1,6 +1,6 @@
 /*
 ** The animated SVG of a figure with overlay steps: cairo's SVG of every
-** step (render/formats.c), one group each, shown in turn by a SMIL
+** step (render/output/formats.c), one group each, shown in turn by a SMIL
 ** <animate> of its visibility, looping.  cairo's SVG surface has no
 ** animation and no grouping per element that survives its output, so
 ** each step is drawn whole by cairo and its document taken in as a
@@ -12,7 +12,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "render-private.h"
+#include "output-private.h"
 
 /* Seconds each step stays on the screen. */
 #define STEP_SECONDS 1.5

@@ -168,7 +168,7 @@ cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
     snprintf(err, errsize,
              "-f html needs the WebAssembly module, which this curvefig "
              "was built without: install emscripten and Lua 5.4's source "
-             "(as root: apt-get install emscripten && render/wasm/"
+             "(as root: apt-get install emscripten && render/web/"
              "lua-source.sh), then meson setup --reconfigure and rebuild");
     return -1;
 }

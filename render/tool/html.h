@@ -2,7 +2,7 @@
 ** `curvefig render SCRIPT.lua -f html`: one self-contained HTML file a
 ** figure (render/tool/html.c), in which the sliders and the draggable
 ** points work with no server and no network: the page (render/web), the
-** WebAssembly module of render/wasm, the script and the glyph data of its
+** WebAssembly module of render/web, the script and the glyph data of its
 ** labels, inline.  docs/interactive.md, "Course pages".
 */
 #ifndef CURVEFIG_TOOL_HTML_H

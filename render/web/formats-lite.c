@@ -1,6 +1,6 @@
 /*
 ** The output formats in the WebAssembly module: SVG through the SVG
-** writer (render/backend-svgw.c) with the glyph outlines of render/
+** writer (render/backends/backend-svgw.c) with the glyph outlines of render/
 ** glyph-outline.c (here from pango-lite's glyph data); the other formats,
 ** and the animated SVG of overlay steps, are the native tool's, and a
 ** page asking for them gets an error saying so.
@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "backend.h"
-#include "render-private.h"
+#include "output-private.h"
 
 static const char *const names[] = { "SVG", "PDF", "PS", "EPS", "PNG" };
 

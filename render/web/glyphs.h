@@ -1,6 +1,6 @@
 /*
-** The glyph data of a course page in the WebAssembly module (render/wasm/
-** pango-lite.c documents the format; render/label-glyphs.c writes it).
+** The glyph data of a course page in the WebAssembly module (render/web/
+** pango-lite.c documents the format; render/output/label-glyphs.c writes it).
 */
 #ifndef CURVEFIG_WASM_GLYPHS_H
 #define CURVEFIG_WASM_GLYPHS_H

@@ -1,6 +1,6 @@
 /*
 ** The pango subset of render/wasm/shim/pango/pangocairo.h, from glyph
-** data (the text render/label-glyphs.c writes at export time, loaded by
+** data (the text render/output/label-glyphs.c writes at export time, loaded by
 ** cf__glyphs_load):
 **
 **   curvefig-glyphs 1

@@ -1,15 +1,23 @@
 #!/usr/bin/env python3
 """The object files of a library call downward only.
 
-Usage: layers.py NM ARCHIVE
+Usage: layers.py NM ARCHIVE [--folders DIR LAYER,LAYER,...]
 
 Runs NM over the object files of ARCHIVE (a library's objects) and
 builds the graph "A calls B" (a symbol undefined in A is defined in B).
 Fails, naming the objects and the symbols, when two objects call each other
 directly or around a circle; prints the layers (each object with the objects
 it calls) when there is none.
+
+With --folders, DIR holds one folder per layer, the LAYERs named from the
+bottom up (the renderer: render/ with base, labels, dlist, ...; see
+docs/library.md, "How the renderer is built").  Then it also fails when
+an object of one folder calls an object of a folder above it (objects are
+named FOLDER_FILE.c.o, as meson names them), and when a source or header of
+a folder includes a header of a folder above it.
 """
 import os
+import re
 import subprocess
 import sys
 
@@ -80,13 +88,80 @@ def cycles(graph):
     return out
 
 
+def folder_of(obj, layers):
+    head = obj.split('_', 1)[0]
+    return head if head in layers else None
+
+
+def upward_calls(graph, layers):
+    """Calls from an object of one layer folder to one of a higher one."""
+    rank = {name: i for i, name in enumerate(layers)}
+    out = []
+    for a in sorted(graph):
+        fa = folder_of(a, layers)
+        for b, syms in sorted(graph[a].items()):
+            fb = folder_of(b, layers)
+            if fa is not None and fb is not None and rank[fb] > rank[fa]:
+                out.append('%s (%s) calls %s (%s, above it): %s'
+                           % (a, fa, b, fb, ', '.join(syms)))
+    return out
+
+
+INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+
+
+def upward_includes(top, layers):
+    """Includes of a header of a higher layer folder (by the header's file
+    name: the folders are include directories, their names unique)."""
+    rank = {name: i for i, name in enumerate(layers)}
+    home, files = {}, []
+    for d in layers:
+        folder = os.path.join(top, d)
+        if not os.path.isdir(folder):
+            raise SystemExit('layers.py: no folder %s' % folder)
+        for f in sorted(os.listdir(folder)):
+            if f.endswith(('.c', '.h')):
+                files.append((d, os.path.join(folder, f)))
+                if f.endswith('.h'):
+                    if f in home:
+                        raise SystemExit('layers.py: %s in %s and %s'
+                                         % (f, home[f], d))
+                    home[f] = d
+    out = []
+    for d, path in files:
+        with open(path, encoding='utf-8') as f:
+            text = f.read()
+        for m in INCLUDE.finditer(text):
+            h = os.path.basename(m.group(1))
+            hd = home.get(h)
+            if hd is not None and rank[hd] > rank[d]:
+                line = text.count('\n', 0, m.start()) + 1
+                out.append('%s:%d (%s) includes %s (%s, above it)'
+                           % (os.path.relpath(path, top), line, d, h, hd))
+    return out
+
+
 def main():
-    nm, archive = sys.argv[1], sys.argv[2]
+    args = sys.argv[1:]
+    layers, top = None, None
+    if '--folders' in args:
+        i = args.index('--folders')
+        top, layers = args[i + 1], args[i + 2].split(',')
+        del args[i:i + 3]
+    nm, archive = args[0], args[1]
     defined, undefined = symbols(nm, archive)
     if len(defined) < 2:
         print('no object files found in', archive)
         return 1
     graph = call_graph(defined, undefined)
+    if layers is not None:
+        unknown = sorted(o for o in graph if folder_of(o, layers) is None)
+        upward = upward_calls(graph, layers) + upward_includes(top, layers)
+        for line in ['object %s is in no layer folder' % o
+                     for o in unknown] + upward:
+            print(line)
+        if unknown or upward:
+            return 1
     bad = cycles(graph)
     for comp in bad:
         print('call cycle among', ', '.join(comp))

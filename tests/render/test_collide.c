@@ -27,10 +27,10 @@
 #include <cairo.h>
 
 #include "backend.h"
-#include "model.h"
+#include "layout-private.h"
 #include "script.h"
-#include "testutil.h"
 #include "shipped.h"
+#include "testutil.h"
 
 #define RES 3.0      /* raster pixels per bp (216 dpi) */
 #define HALF 127     /* alpha of a pixel inked more than half */

@@ -17,8 +17,9 @@
 #include "backend.h"
 #include "curvefig/bspline.h"
 #include "curvefig/figure.h"
-#include "model.h"
-#include "render-private.h"
+#include "grow.h"
+#include "layout-private.h"
+#include "output-private.h"
 
 static int
 square(void *closure, double x, double *y)
@@ -523,10 +524,38 @@ test_label_on_ink(void **state)
     }
 }
 
+/* The renderer's grow-by-doubling (render/base/grow.c), which the display
+** list, the byte buffer and the element list use: the capacity doubles
+** from `first` to hold what is needed, an array with room comes back as
+** it is, and a count whose bytes overflow size_t gives NULL with the array
+** and its capacity kept. */
+static void
+test_grow_array(void **state)
+{
+    size_t cap = 0, i;
+    double *a = NULL;
+    (void)state;
+    a = cf__grow_array(a, &cap, 5, sizeof *a, 4);
+    assert_non_null(a);
+    assert_int_equal(cap, 8);               /* 4 doubled once */
+    for (i = 0; i < 5; i++)
+        a[i] = 0.5 * (double)i;
+    assert_ptr_equal(cf__grow_array(a, &cap, 8, sizeof *a, 4), a);
+    a = cf__grow_array(a, &cap, 33, sizeof *a, 4);
+    assert_non_null(a);
+    assert_int_equal(cap, 64);
+    assert_null(cf__grow_array(a, &cap, SIZE_MAX / 4, sizeof *a, 4));
+    assert_int_equal(cap, 64);
+    for (i = 0; i < 5; i++)
+        assert_true(a[i] == 0.5 * (double)i);
+    cf_free(a);
+}
+
 int
 main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_grow_array),
         cmocka_unit_test(test_dump_content),
         cmocka_unit_test(test_pgf_outlines_whole),
         cmocka_unit_test(test_backend_independence),

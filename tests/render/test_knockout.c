@@ -1,10 +1,10 @@
-/* Label halos (render/backend.h): on a painted page a halo is a border in
-** the background colour; on a transparent page it is a knockout, the ink
-** under the label's box grown by the halo left out so that the slide's
-** own colour shows, and nothing white is painted.  Measured on the pixels
-** of PNGs of one fixed page drawn three ways (a thick line with the
-** label, the line alone, the label alone), and on the SVG and PGF text;
-** with overlay steps, a label knocks out only on the steps it is shown. */
+/* Label halos (render/backends/backend.h): on a painted page a halo is a
+** border in the background colour; on a transparent page it is a knockout, the
+** ink under the label's box grown by the halo left out so that the slide's own
+** colour shows, and nothing white is painted.  Measured on the pixels of PNGs
+** of one fixed page drawn three ways (a thick line with the label, the line
+** alone, the label alone), and on the SVG and PGF text; with overlay steps, a
+** label knocks out only on the steps it is shown. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>

@@ -11,9 +11,9 @@
 #include <cmocka.h>
 #include <pango/pangocairo.h>
 
+#include "buffer.h"
 #include "curvefig/figure.h"
 #include "label-private.h"
-#include "render-private.h"
 #include "testutil.h"
 
 #define SIZE 10.0
@@ -565,7 +565,7 @@ test_out_of_memory(void **state)
     fail_msg("label layout never succeeded");
 }
 
-/* Labels as TeX source for the PGF output (render/label-tex.c): every
+/* Labels as TeX source for the PGF output (render/labels/label-tex.c): every
 ** part of the syntax, written as TeX would be typed by hand; scripts
 ** pdflatex cannot set are refused. */
 static void

@@ -676,7 +676,8 @@ test_write_errors(void **state)
     cf_figure_destroy(fig);
 }
 
-/* ---- the PNG writer (render/png.c) ------------------------------------ */
+/* ---- the PNG writer (render/output/png.c)
+** ------------------------------------ */
 
 static cairo_status_t
 mem_write(void *closure, const unsigned char *data, unsigned int length)

@@ -1,4 +1,4 @@
-/* The SVG writer (render/backend-svgw.c), which the course pages use
+/* The SVG writer (render/backends/backend-svgw.c), which the course pages use
 ** where there is no cairo, against cairo's SVG: every shipped figure
 ** written both ways, both rasterised by librsvg at the pixel suite's
 ** 144 dpi and compared by its comparator (render/tool/imgcmp.h) with the
@@ -26,10 +26,10 @@
 #include "backend.h"
 #include "curvefig/output.h"
 #include "imgcmp.h"
-#include "render-private.h"
+#include "output-private.h"
 #include "script.h"
-#include "testutil.h"
 #include "shipped.h"
+#include "testutil.h"
 
 /* An SVG document rasterised at dpi on white (the page's size, its last
 ** partial pixel rounded up); NULL when librsvg refuses it. */

@@ -129,6 +129,44 @@ test_allocator_hook(void **state)
     assert_non_null(a.realloc);
 }
 
+/* The grow-by-doubling of the core's arrays: the capacity starts at
+** `first` and doubles until it holds what is needed; an array with room
+** is returned as it is; an element count whose bytes overflow size_t, or
+** a failed allocation, gives NULL and leaves the array and its capacity
+** as they were (their contents kept). */
+static void
+test_grow(void **state)
+{
+    size_t cap = 0, i;
+    int *a = NULL, *b;
+    (void)state;
+    tu_fail_alloc_after(4);   /* the three growths succeed, the 4th fails */
+    a = cf__grow(a, &cap, 1, sizeof *a, 8);
+    assert_non_null(a);
+    assert_int_equal(cap, 8);
+    for (i = 0; i < 8; i++)
+        a[i] = (int)i;
+    assert_ptr_equal(cf__grow(a, &cap, 8, sizeof *a, 8), a);
+    assert_int_equal(cap, 8);
+    a = cf__grow(a, &cap, 9, sizeof *a, 8);
+    assert_non_null(a);
+    assert_int_equal(cap, 16);
+    a = cf__grow(a, &cap, 100, sizeof *a, 8);
+    assert_non_null(a);
+    assert_int_equal(cap, 128);             /* 16 doubled 3 times */
+    assert_null(cf__grow(a, &cap, SIZE_MAX / 2, sizeof *a, 8));
+    assert_null(cf__grow(a, &cap, SIZE_MAX, 1, 8));
+    assert_int_equal(cap, 128);
+    b = cf__grow(a, &cap, 129, sizeof *a, 8);
+    assert_null(b);
+    assert_int_equal(cap, 128);
+    for (i = 0; i < 8; i++)
+        assert_int_equal(a[i], (int)i);
+    cf__free(a);
+    assert_int_equal(tu_alloc_live(), 0);
+    tu_fail_alloc_reset();
+}
+
 /* Two counting allocators: blocks remember the one that made them. */
 typedef struct counter {
     long live, calls;
@@ -245,6 +283,7 @@ main(void)
         cmocka_unit_test(test_checks_name_the_culprit),
         cmocka_unit_test(test_binomial),
         cmocka_unit_test(test_allocator_hook),
+        cmocka_unit_test(test_grow),
         cmocka_unit_test(test_allocator_per_block),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -1,0 +1,20 @@
+/*
+** A growable byte buffer (render/base/buffer.c): the lowest layer of the
+** renderer, used by labels (as TeX source), backends and output.
+*/
+#ifndef CURVEFIG_RENDER_BUFFER_H
+#define CURVEFIG_RENDER_BUFFER_H
+
+#include <stddef.h>
+
+/* A growable byte buffer. */
+typedef struct cf__buf {
+    unsigned char *data;
+    size_t size, cap;
+    int failed;   /* an allocation failed */
+} cf__buf_t;
+
+int cf__buf_append(cf__buf_t *b, const void *data, size_t n);
+void cf__buf_free(cf__buf_t *b);
+
+#endif

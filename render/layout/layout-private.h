@@ -1,0 +1,66 @@
+/*
+** The layout layer (render/layout/): a figure's window and map to the
+** page, its display list, label places, legends, insets, panels and the
+** room beside the drawing, for the output layer above it.
+*/
+#ifndef CURVEFIG_RENDER_LAYOUT_PRIVATE_H
+#define CURVEFIG_RENDER_LAYOUT_PRIVATE_H
+
+#include "model.h"
+
+/* ---- layout.c ----------------------------------------------------------- */
+
+/* Compute the layout for the figure's page (errors go into fig). */
+cf_status_t cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay);
+/* The display list of every element for a layout (automatic label places
+** chosen first). */
+cf_status_t cf__figure_build(cf_figure_t *fig, const cf__layout_t *lay,
+                             cf__dl_t *dl);
+
+/* Whether a display list on a page of w x h bp shows the figure: an error
+** (in diag) when it draws nothing at all, and on a fixed page (not cropped
+** to the ink) one naming the element whose ink sticks out farthest and by
+** how much, unless the figure clips. */
+cf_status_t cf__figure_check_page(const cf_figure_t *fig, const cf__dl_t *dl,
+                                  double w, double h, bool fixed,
+                                  cf_diag_t *diag);
+
+/* ---- legend.c inset.c panel.c room.c ----------------------------------- */
+
+/* The legend of the figure's entries, from the samples of the element
+** groups drawn at ops [from, dl->count). */
+cf_status_t cf__legend_draw(cf_figure_t *fig, const cf__layout_t *lay,
+                            size_t from, cf__dl_t *dl);
+/* Every inset: the elements drawn again in its box, frames, connectors;
+** placed beside the drawing at ops [from, dl->count). */
+cf_status_t cf__insets_draw(cf_figure_t *fig, const cf__layout_t *lay,
+                            size_t from, cf__dl_t *dl);
+/* A new layout: the legend and the insets placed afresh. */
+void cf__room_reset(cf_figure_t *fig);
+/* Cell k of a figure split into panels: x y w h, page bp. */
+void cf__panel_cell(const cf_figure_t *fig, int k, double cell[4]);
+/* Make the panels' layouts agree on the shared axes (lays[rows * cols]). */
+void cf__panels_share(const cf_figure_t *fig, cf__layout_t *lays);
+/* The title of panel k (laid out at the label font size) into dl. */
+cf_status_t cf__panel_title_draw(cf_figure_t *fig, int k,
+                                 const cf__layout_t *lay, cf__dl_t *dl);
+/* Where a w x h box goes beside the drawing whose ink is ops [from,
+** dl->count) (laid out with lay; the raster holds all of dl): at place
+** of the drawing's ink box, gap bp inside its edge (AUTO: the first of ne
+** nw se sw n s e w covering no ink; with none, *band is set to a band at
+** the right or below the ink box, and kept there while *band says so);
+** its top left into at[2]. */
+cf_status_t cf__room_find(cf_figure_t *fig, const cf__layout_t *lay,
+                          const cf__dl_t *dl, size_t from, double w,
+                          double h, cf_place_t place, double gap,
+                          cf__room_band_t *band, double at[2]);
+
+/* ---- place.c ------------------------------------------------------------ */
+
+/* Choose the places of the labels placed CF_PLACE_AUTO for a layout, and
+** note in the figure's warnings every label that lies on ink. */
+cf_status_t cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay);
+/* Forget the places chosen: the figure is laid out afresh. */
+void cf__place_forget(cf_figure_t *fig);
+
+#endif

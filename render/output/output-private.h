@@ -1,0 +1,41 @@
+/*
+** Internals of the output layer (render/output/): the output formats
+** (formats.c), the animated SVG of overlay steps (svg-steps.c) and the
+** figure played through a backend (output.c), for output.c, the course
+** page's glyph data (label-glyphs.c) and the browser module.
+*/
+#ifndef CURVEFIG_RENDER_OUTPUT_PRIVATE_H
+#define CURVEFIG_RENDER_OUTPUT_PRIVATE_H
+
+#include "backend.h"
+#include "buffer.h"
+
+/* One page of a display list in one format into out (empty on entry):
+** the cairo backend on the format's surface (PNG at dpi), then the
+** format's deterministic fix-ups.  title and caption may be NULL. */
+cf_status_t cf__format_render(cf_format_t format, const cf__dl_t *dl,
+                              const cf__page_t *page, double dpi,
+                              const char *title, const char *caption,
+                              cf__buf_t *out, cf_diag_t *diag);
+
+/* The animated SVG of overlay steps 1..steps (render/output/svg-steps.c):
+** every step's SVG a frame, shown in turn. */
+cf_status_t cf__svg_steps(const cf__dl_t *dl, const cf__page_t *page,
+                          unsigned steps, const char *title,
+                          const char *caption, cf__buf_t *out,
+                          cf_diag_t *diag);
+
+/* The figure laid out at its size and drawn through backend be on ctx
+** (set up by the caller), one page: overlay step `step` (1..steps), or
+** every operation (0): the SVG writer's way in
+** (render/backends/backend-svgw.c). */
+cf_status_t cf__figure_play(cf_figure_t *fig, unsigned step,
+                            const cf__backend_t *be, void *ctx,
+                            cf_diag_t *diag);
+
+/* The EPS of a PS page from cf__format_render (cairo 1.16.0 only): 0, or
+** -1 when the PS is not as expected (render the EPS then), -2 out of
+** memory. */
+int cf__eps_from_ps(const cf__buf_t *ps, cf__buf_t *eps);
+
+#endif

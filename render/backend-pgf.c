@@ -20,7 +20,7 @@
 #include <cairo.h>
 
 #include "backend.h"
-#include "label-private.h"
+#include "label-cairo.h"
 #include "render-private.h"
 
 #define PI 3.14159265358979323846

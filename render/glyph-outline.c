@@ -9,7 +9,7 @@
 #include <cairo.h>
 
 #include "backend.h"
-#include "label-private.h"
+#include "label-cairo.h"
 #include "render-private.h"
 
 static int

@@ -14,7 +14,7 @@
 
 #include <pango/pangocairo.h>
 
-#include "label-private.h"
+#include "label-cairo.h"
 
 #define SCRIPT_RATIO 0.7       /* 10 pt -> 7 pt */
 #define SCRIPT2_RATIO 0.5      /* 10 pt -> 5 pt */

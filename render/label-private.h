@@ -9,6 +9,7 @@
 
 #include "curvefig/label.h"
 #include "curvefig/style.h"
+#include "dlist.h"
 
 #define CF__DEFAULT_FAMILY "Latin Modern Roman,CMU Serif,Noto Serif CJK SC"
 #define CF__SANS_FAMILY "Latin Modern Sans,CMU Sans Serif,Noto Sans CJK SC"
@@ -16,6 +17,10 @@
 /* Ink box of the label relative to its origin (bp, y DOWN like cairo):
 ** x0 y0 x1 y1. */
 void cf__label_ink(const cf_label_t *label, double box[4]);
+/* The outlines of the glyphs and fraction rules, baseline origin at
+** (0, 0) (bp, y down like cairo): a path to fill by the nonzero rule,
+** valid while the label is. */
+void cf__label_outline(const cf_label_t *label, cf__path_t *out);
 /* True when the label was laid out with this family list and size. */
 bool cf__label_matches(const cf_label_t *label, const char *family,
                        double size_bp);

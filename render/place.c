@@ -334,6 +334,7 @@ static cf_status_t
 raster_open(cf_figure_t *fig, raster_t *r)
 {
     int w, h;
+    memset(r, 0, sizeof *r);
     r->res = AUTO_RES;
     if (fig->width * fig->height * r->res * r->res > AUTO_MAX_PIXELS)
         r->res = sqrt(AUTO_MAX_PIXELS / (fig->width * fig->height));

@@ -65,6 +65,7 @@ void
 cf__poly_free(cf__poly_t *pl)
 {
     cf_free(pl->e);
+    cf_free(pl->scratch);
     cf__poly_init(pl);
 }
 
@@ -652,11 +653,14 @@ cmp_edge(const void *a, const void *b)
 typedef struct cross { double x; int dir; } cross_t;
 
 /* Coverage w of the pixels between a and b (device x) added to row
-** (whose first cell is pixel i0, of i1 - i0 cells). */
+** (whose first cell is pixel i0, of i1 - i0 cells): the partly covered
+** ones in row, the whole ones as a run (w added at the first, taken
+** away after the last, summed across when the row is painted). */
 static void
-add_span(float *row, int i0, int i1, double a, double b, double w)
+add_span(float *row, float *run, int i0, int i1, double a, double b,
+         double w)
 {
-    int i, ia, ib;
+    int ia, ib;
     if (a < i0)
         a = i0;
     if (b > i1)
@@ -670,8 +674,11 @@ add_span(float *row, int i0, int i1, double a, double b, double w)
         return;
     }
     row[ia - i0] += (float)((ia + 1 - a) * w);
-    for (i = ia + 1; i < ib; i++)
-        row[i - i0] += (float)w;
+    if (ia + 1 < ib) {
+        run[ia + 1 - i0] += (float)w;
+        if (ib < i1)
+            run[ib - i0] -= (float)w;
+    }
     if (ib < i1)
         row[ib - i0] += (float)((b - ib) * w);
 }
@@ -681,10 +688,11 @@ cf__poly_paint(cf__poly_t *pl, unsigned char *px, int stride,
                const int clip[4], double alpha, bool evenodd)
 {
     int i0, i1, j0, j1, y, k, w;
+    float across;
     size_t next = 0, nact = 0, i;
     size_t *act;
     cross_t *cx;
-    float *row;
+    float *row, *run;
     if (pl->failed)
         return -1;
     if (pl->n == 0 || !(alpha > 0))
@@ -697,17 +705,24 @@ cf__poly_paint(cf__poly_t *pl, unsigned char *px, int stride,
     if (i1 <= i0 || j1 <= j0)
         return 0;
     w = i1 - i0;
-    act = cf_alloc_array(pl->n, sizeof *act);
-    cx = cf_alloc_array(pl->n, sizeof *cx);
-    row = cf_alloc_array((size_t)w, sizeof *row);
-    if (act == NULL || cx == NULL || row == NULL) {
-        cf_free(act);
-        cf_free(cx);
-        cf_free(row);
-        return -1;
+    {
+        /* the active edges, the crossings and a row, kept in pl */
+        size_t need = pl->n * (sizeof *act + sizeof *cx)
+                       + 2 * (size_t)w * sizeof *row;
+        if (need > pl->scratch_size) {
+            void *p = cf_realloc_array(pl->scratch, need, 1);
+            if (p == NULL)
+                return -1;
+            pl->scratch = p;
+            pl->scratch_size = need;
+        }
+        cx = pl->scratch;
+        act = (size_t *)(cx + pl->n);
+        row = (float *)(act + pl->n);
+        run = row + w;
     }
     qsort(pl->e, pl->n, sizeof *pl->e, cmp_edge);
-    memset(row, 0, (size_t)w * sizeof *row);
+    memset(row, 0, 2 * (size_t)w * sizeof *row);
     for (y = j0; y < j1; y++) {
         unsigned char *d = px + (size_t)y * (size_t)stride;
         int lo = w, hi = 0;
@@ -744,28 +759,29 @@ cf__poly_paint(cf__poly_t *pl, unsigned char *px, int stride,
                 is = evenodd ? (wind & 1) != 0 : wind != 0;
                 if (!was && is) {
                     start = cx[j].x;
-                } else if (was && !is) {
-                    int a = (int)fmax(i0, floor(start)) - i0;
-                    int b = (int)fmin(i1, ceil(cx[j].x)) - i0;
-                    add_span(row, i0, i1, start, cx[j].x, 1.0 / SUB);
+                } else if (was && !is && cx[j].x > i0 && start < i1) {
+                    int a = start > i0 ? (int)start - i0 : 0;
+                    int b = cx[j].x < i1 ? (int)cx[j].x + 1 - i0 : w;
+                    add_span(row, run, i0, i1, start, cx[j].x, 1.0 / SUB);
                     lo = a < lo ? a : lo;
-                    hi = b > hi ? b : hi;
+                    hi = (b < w ? b : w) > hi ? (b < w ? b : w) : hi;
                 }
             }
         }
-        for (i = (size_t)(lo > 0 ? lo : 0); (int)i < hi; i++) {
-            double c = alpha * fmin(1, row[i]);
-            double v = d[(size_t)i0 + i] / 255.0;
-            row[i] = 0;
-            if (!(c > 0))
-                continue;
-            d[(size_t)i0 + i] = (unsigned char)lround(255 * (c + v * (1 - c)));
+        for (i = (size_t)lo, across = 0; (int)i < hi; i++) {
+            float c;
+            across += run[i];
+            c = row[i] + across;
+            c = c < 1 ? c : 1;
+            row[i] = run[i] = 0;
+            if (c > 0) {
+                /* v + a c (1 - v) in bytes, rounded */
+                double v = d[(size_t)i0 + i], ac = alpha * c;
+                d[(size_t)i0 + i] = (unsigned char)(v + ac * (255 - v) + 0.5);
+            }
         }
         if (next == pl->n && nact == 0)
             break;
     }
-    cf_free(act);
-    cf_free(cx);
-    cf_free(row);
     return 0;
 }

@@ -25,6 +25,8 @@ typedef struct cf__poly {
     size_t n, cap;
     double box[4];
     bool failed;
+    void *scratch;            /* cf__poly_paint's, kept for the next */
+    size_t scratch_size;
 } cf__poly_t;
 
 /* Where a path goes: device = page * scale + (dx, dy); curves and arcs

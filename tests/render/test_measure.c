@@ -1,4 +1,4 @@
-/* The measuring seam (render/measure.h) against independent answers.
+/* The measuring seam (render/backends/measure.h) against independent answers.
 **
 ** Shapes of known area: the coverage a raster sums (bp^2: the sum of its
 ** pixels / 255 / res^2) is the area of a rectangle, a disc, two discs

@@ -1,6 +1,6 @@
 /*
-** The measuring seam (render/measure.h) over the display list, drawn by
-** the rasterizer of render/raster.c: a backend whose paths, markers and
+** The measuring seam (render/backends/measure.h) over the display list, drawn by
+** the rasterizer of render/backends/raster.c: a backend whose paths, markers and
 ** labels (their outlines, cf__label_outline) become polygons, painted
 ** into a coverage raster or reduced to their box.  Clips are rectangles,
 ** kept on a stack of the groups and clip scopes.

@@ -1,5 +1,5 @@
 /*
-** The rasterizer of the measuring seam (render/measure.c): paths of a
+** The rasterizer of the measuring seam (render/backends/measure.c): paths of a
 ** display list turned into polygons — curves and arcs flattened to a
 ** tolerance, strokes as the union of a quadrilateral a segment with their
 ** joins and caps, all wound alike — and polygons turned into coverage

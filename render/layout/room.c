@@ -4,7 +4,7 @@
 ** the ink of the drawing they belong to, never to the page: the page of
 ** a figure cropped to its ink (page = "ink") is only known once they are
 ** part of that ink.  What is drawn so far is painted into a coarse
-** raster of the drawing's ink box (render/measure.h); each candidate
+** raster of the drawing's ink box (render/backends/measure.h); each candidate
 ** place (a corner or side inside that box) counts the raster pixels it
 ** covers.  With none clear, the box goes into a band outside the ink box,
 ** at the right or below, whichever leaves the drawing the larger scale

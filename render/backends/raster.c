@@ -1,5 +1,5 @@
 /*
-** The rasterizer of the measuring seam (render/raster.h).  Paths are
+** The rasterizer of the measuring seam (render/backends/raster.h).  Paths are
 ** flattened (cubics into ceil(sqrt(0.75 |second difference| / tol))
 ** chords, arcs into chords of sagitta at most tol), fills become the
 ** polygon of their subpaths, strokes the union of one quadrilateral a

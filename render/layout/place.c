@@ -1,7 +1,7 @@
 /*
 ** Label places.  Everything but the labels (and the shadings, on which a
 ** label may sit) is drawn into a coarse raster of the page's ink
-** (render/measure.h).  Each label placed by hand is then tested against it,
+** (render/backends/measure.h).  Each label placed by hand is then tested against it,
 ** glyph by glyph, and added to it; each label placed CF_PLACE_AUTO (the
 ** default) takes the cheapest of the eight places around its anchor, at
 ** its offset and up to 4 bp farther (adjacent to the point), never one

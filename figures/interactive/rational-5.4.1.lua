@@ -6,8 +6,9 @@
 -- weights start at 1, so the two curves coincide until a weight moves
 -- ("Первоначально все веса сделаны одинаковыми, поэтому после запуска
 -- программы обе кривые совпадают").  The window is the example's
--- PlotRange {{-30, 15}, {-10, 15}}; the point numbers stand at p_i +
--- (1.2, 0.2) in red, as its Text[ToString[# - 1], pts[[#]] + {1.2, 0.2}].
+-- PlotRange {{-30, 15}, {-10, 15}}; the point numbers in red, beside
+-- their points (its Text[ToString[# - 1], pts[[#]] + {1.2, 0.2}] puts
+-- them at one offset; here they take the clearest side).
 --
 --   curvefig live figures/interactive/rational-5.4.1.lua
 
@@ -39,10 +40,8 @@ f:polyline(P, { color = "#8c8c8c", width = 0.5 })
 f:curve(bezier(P), { color = "#1f5fbf", dash = "dashed", width = 1.2 })
 f:curve(bezier{ points = P, weights = w }, { color = "#c0392b", width = 1.4 })
 f:points(P, { color = "#3c3c3c", marker_color = "#3c3c3c" })
--- places fixed, as in the Manipulate: automatic ones would depend on the
--- rasterizer, which differs a little between the tool and the page
--- (5 below its point and 6 above left: clear of the legs P_1 P_2, P_0 P_1)
-local places = { "nw", "ne", "w", "e", "ne", "s", "nw", "ne" }
+-- the numbers placed automatically, clear of the curves as the points
+-- move (the page chooses the same places as the tool)
 for i, p in ipairs(P) do
-  f:label(p, tostring(i - 1), { color = "red", place = places[i] })
+  f:label(p, tostring(i - 1), { color = "red" })
 end

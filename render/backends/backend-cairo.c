@@ -8,7 +8,7 @@
 #include <cairo.h>
 
 #include "backend.h"
-#include "label-private.h"
+#include "label-cairo.h"
 
 static void
 set_source(cairo_t *cr, const cf_color_t *c, double opacity)

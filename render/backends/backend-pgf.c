@@ -21,7 +21,7 @@
 
 #include "backend.h"
 #include "buffer.h"
-#include "label-private.h"
+#include "label-cairo.h"
 
 #define PI 3.14159265358979323846
 #define PGF_MAX_BP CF__PGF_MAX_BP

@@ -10,7 +10,7 @@
 
 #include "backend.h"
 #include "buffer.h"
-#include "label-private.h"
+#include "label-cairo.h"
 
 static int
 put_point(cf__buf_t *d, const char *op, const cairo_path_data_t *p)

@@ -14,7 +14,7 @@
 
 #include <pango/pangocairo.h>
 
-#include "label-private.h"
+#include "label-cairo.h"
 
 #define SCRIPT_RATIO 0.7       /* 10 pt -> 7 pt */
 #define SCRIPT2_RATIO 0.5      /* 10 pt -> 5 pt */
@@ -50,6 +50,9 @@ struct cf_label {
     bool tex_math;            /* a TeX family: letters of mathematics in
                                  the math font's italic alphabet */
     cf_label_box_t *boxes;    /* public view of the runs */
+    unsigned char *osegs;     /* the outline (cf__label_outline) */
+    double *ocoords;
+    size_t onsegs;
 };
 
 typedef struct font {

@@ -1,16 +1,15 @@
 /*
-** Internals of labels (render/labels/label.c) for the layout and the cairo
-** backend.
+** Internals of labels (render/labels/label.c) for the layout; drawing them
+** with cairo is render/labels/label-cairo.h.
 */
 #ifndef CURVEFIG_RENDER_LABEL_PRIVATE_H
 #define CURVEFIG_RENDER_LABEL_PRIVATE_H
 
 #include <stdbool.h>
 
-#include <cairo.h>
-
 #include "curvefig/label.h"
 #include "curvefig/style.h"
+#include "dlist.h"
 
 #define CF__DEFAULT_FAMILY "Latin Modern Roman,CMU Serif,Noto Serif CJK SC"
 #define CF__SANS_FAMILY "Latin Modern Sans,CMU Sans Serif,Noto Sans CJK SC"
@@ -18,22 +17,13 @@
 /* Ink box of the label relative to its origin (bp, y DOWN like cairo):
 ** x0 y0 x1 y1. */
 void cf__label_ink(const cf_label_t *label, double box[4]);
+/* The outlines of the glyphs and fraction rules, baseline origin at
+** (0, 0) (bp, y down like cairo): a path to fill by the nonzero rule,
+** valid while the label is. */
+void cf__label_outline(const cf_label_t *label, cf__path_t *out);
 /* True when the label was laid out with this family list and size. */
 bool cf__label_matches(const cf_label_t *label, const char *family,
                        double size_bp);
-/* Draw with the baseline origin at (x, y) (page units, y down). */
-void cf__label_draw(const cf_label_t *label, cairo_t *cr, double x,
-                    double y, const cf_color_t *color, double opacity);
-/* The outlines of the glyphs (and fraction rules) appended to cr's path,
-** baseline origin at (x, y). */
-void cf__label_path(const cf_label_t *label, cairo_t *cr, double x,
-                    double y);
-/* The same glyphs stroked with width 2 * halo in colour halo_color (a
-** border that keeps the label legible over lines); drawn first. */
-void cf__label_draw_halo(const cf_label_t *label, cairo_t *cr, double x,
-                         double y, const cf_color_t *halo_color,
-                         double halo);
-
 /* The label source src as TeX (render/labels/label-tex.c) appended to out: 0,
 ** 1 when pdflatex could not set it (Cyrillic, CJK, other scripts), -1
 ** out of memory. */

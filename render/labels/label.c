@@ -21,6 +21,8 @@ cf_label_destroy(cf_label_t *label)
     }
     cf_free(label->runs);
     cf_free(label->boxes);
+    cf_free(label->osegs);
+    cf_free(label->ocoords);
     cf_free(label->family);
     if (label->ctx != NULL)
         g_object_unref(label->ctx);
@@ -49,6 +51,56 @@ make_context(void)
     pango_cairo_context_set_resolution(ctx, 72.0);
     pango_context_set_round_glyph_positions(ctx, FALSE);
     return ctx;
+}
+
+/* The outline of lab (cf__label_outline) from pango's glyph paths;
+** -1 out of memory. */
+static int
+make_outline(cf_label_t *lab)
+{
+    cairo_surface_t *s = cairo_recording_surface_create(CAIRO_CONTENT_ALPHA,
+                                                        NULL);
+    cairo_t *cr = cairo_create(s);
+    cairo_path_t *path;
+    size_t nsegs = 0, ncoords = 0;
+    int i, bad;
+    cairo_surface_destroy(s);
+    cf__label_path(lab, cr, 0, 0);
+    path = cairo_copy_path(cr);
+    cairo_destroy(cr);
+    bad = path->status != CAIRO_STATUS_SUCCESS;
+    for (i = 0; !bad && i < path->num_data; i += path->data[i].header.length) {
+        nsegs++;
+        ncoords += 2 * (size_t)(path->data[i].header.length - 1);
+    }
+    if (!bad) {
+        lab->osegs = cf_alloc_array(nsegs + 1, 1);
+        lab->ocoords = cf_alloc_array(ncoords + 1, sizeof *lab->ocoords);
+        bad = lab->osegs == NULL || lab->ocoords == NULL;
+    }
+    for (i = 0, ncoords = 0; !bad && i < path->num_data;
+         i += path->data[i].header.length) {
+        const cairo_path_data_t *d = &path->data[i];
+        int k;
+        static const unsigned char seg[] = {
+            CF__SEG_MOVE, CF__SEG_LINE, CF__SEG_CURVE, CF__SEG_CLOSE
+        };
+        lab->osegs[lab->onsegs++] = seg[d->header.type];
+        for (k = 1; k < d->header.length; k++) {
+            lab->ocoords[ncoords++] = d[k].point.x;
+            lab->ocoords[ncoords++] = d[k].point.y;
+        }
+    }
+    cairo_path_destroy(path);
+    return bad ? -1 : 0;
+}
+
+void
+cf__label_outline(const cf_label_t *label, cf__path_t *out)
+{
+    out->segs = label->osegs;
+    out->coords = label->ocoords;
+    out->nsegs = label->onsegs;
 }
 
 cf_status_t
@@ -101,7 +153,7 @@ cf_label_create(const char *text, const char *family, double size_bp,
     }
     lab->boxes = cf_alloc_array(lab->count ? lab->count : 1,
                                 sizeof *lab->boxes);
-    if (lab->boxes == NULL) {
+    if (lab->boxes == NULL || make_outline(lab) != 0) {
         cf_label_destroy(lab);
         return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
                            "out of memory for a label");

@@ -8,8 +8,8 @@
 #include <math.h>
 #include <string.h>
 
-#include "backend.h"
 #include "layout-private.h"
+#include "measure.h"
 
 static void
 compute_map(const cf_figure_t *fig, const double win[4], bool keep,
@@ -62,7 +62,7 @@ ink_of(cf_figure_t *fig, const cf__layout_t *lay, double ink[4])
     if (st == CF_STATUS_OK)
         st = cf__legend_draw(fig, lay, 0, &dl);
     if (st == CF_STATUS_OK)
-        cf__cairo_ink(&dl, 0, dl.count, ink);
+        cf__dl_ink(&dl, 0, dl.count, ink);
     cf__dl_free(&dl);
     return st;
 }
@@ -326,7 +326,7 @@ page_overflow(const cf__dl_t *dl, double w, double h, cf_diag_t *diag)
         while (e < dl->count && dl->ops[e].kind != CF__OP_END)
             e++;
         i = e + 1;
-        if (cf__cairo_ink(dl, g, e + 1, ink) != 0)
+        if (cf__dl_ink(dl, g, e + 1, ink) != 0)
             continue;
         if (!(ink[2] > ink[0] && ink[3] > ink[1]))
             continue;
@@ -373,9 +373,9 @@ cf__figure_check_page(const cf_figure_t *fig, const cf__dl_t *dl, double w,
                            "with anything to show on the page)", fig->count);
     if (fig->clip_page || !fixed)
         return CF_STATUS_OK;
-    if (cf__cairo_ink(dl, 0, dl->count, ink) != 0)
+    if (cf__dl_ink(dl, 0, dl->count, ink) != 0)
         return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
-                           "cairo failed measuring the ink");
+                           "out of memory measuring the ink");
     if (!(overflow(ink, w, h, &side) > PAGE_SLACK))
         return CF_STATUS_OK;
     return page_overflow(dl, w, h, diag);

@@ -8,7 +8,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "backend.h"
+#include "measure.h"
 #include "label-private.h"
 #include "layout-private.h"
 
@@ -146,7 +146,7 @@ marker_height(const sample_t *s)
     m.has_dir = false;
     cf__dl_init(&dl);
     cf__dl_marker(&dl, &m);
-    if (!dl.failed && cf__cairo_ink(&dl, 0, dl.count, ink) == 0
+    if (!dl.failed && cf__dl_ink(&dl, 0, dl.count, ink) == 0
         && ink[3] > ink[1])
         hgt = 2 * fmax(-ink[1], ink[3]);
     cf__dl_free(&dl);

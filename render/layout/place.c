@@ -1,7 +1,7 @@
 /*
 ** Label places.  Everything but the labels (and the shadings, on which a
-** label may sit) is drawn into a coarse raster of the page's ink by the
-** cairo backend.  Each label placed by hand is then tested against it,
+** label may sit) is drawn into a coarse raster of the page's ink
+** (render/backends/measure.h).  Each label placed by hand is then tested against it,
 ** glyph by glyph, and added to it; each label placed CF_PLACE_AUTO (the
 ** default) takes the cheapest of the eight places around its anchor, at
 ** its offset and up to 4 bp farther (adjacent to the point), never one
@@ -15,11 +15,9 @@
 #include <stdio.h>
 #include <string.h>
 
-#include <cairo.h>
-
-#include "backend.h"
 #include "label-private.h"
 #include "layout-private.h"
+#include "measure.h"
 
 #define AUTO_RES 2.0          /* raster pixels per bp */
 #define AUTO_MAX_PIXELS 4e6   /* larger pages get a coarser raster */
@@ -41,21 +39,18 @@ typedef struct anchors {
 } anchors_t;
 
 typedef struct raster {
-    cairo_surface_t *img, *one;   /* the page's ink; one element's */
-    cairo_t *cr, *cr1;
+    cf__raster_t img, one;   /* the page's ink; one element's */
     double res;
     cf__dl_t dl;
 } raster_t;
 
-/* Ink in the page box x0 y0 x1 y1 (bp) of an A8 raster at res pixels per
+/* Ink in the page box x0 y0 x1 y1 (bp) of a raster at res pixels per
 ** bp, in bp^2 of full ink; pixels off the page count as full ink. */
 static double
-raster_ink(cairo_surface_t *img, double res, const double b[4])
+raster_ink(const cf__raster_t *img, double res, const double b[4])
 {
-    const unsigned char *px = cairo_image_surface_get_data(img);
-    int w = cairo_image_surface_get_width(img);
-    int h = cairo_image_surface_get_height(img);
-    int stride = cairo_image_surface_get_stride(img);
+    const unsigned char *px = img->px;
+    int w = img->w, h = img->h, stride = img->stride;
     double i0 = floor(b[0] * res), i1 = ceil(b[2] * res);
     double j0 = floor(b[1] * res), j1 = ceil(b[3] * res);
     double sum = 0, inside = 0;
@@ -85,8 +80,8 @@ place_cost(const raster_t *r, const double ink[4], double ox, double oy)
     near[1] = oy + ink[1] - AUTO_NEAR;
     near[2] = ox + ink[2] + AUTO_NEAR;
     near[3] = oy + ink[3] + AUTO_NEAR;
-    a = raster_ink(r->img, r->res, hard);
-    b = raster_ink(r->img, r->res, near);
+    a = raster_ink(&r->img, r->res, hard);
+    b = raster_ink(&r->img, r->res, near);
     return a + 0.25 * fmax(0, b - a);
 }
 
@@ -103,14 +98,24 @@ element_ops(cf_figure_t *fig, size_t i, const cf__layout_t *lay, raster_t *r)
     return st;
 }
 
-/* Draw element i into cr. */
+/* Paint the ops of r->dl into raster to. */
+static cf_status_t
+paint(cf_figure_t *fig, raster_t *r, cf__raster_t *to)
+{
+    if (cf__raster_paint(to, &r->dl, 0, r->dl.count) != 0)
+        return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                           "out of memory placing labels");
+    return CF_STATUS_OK;
+}
+
+/* Draw element i into raster to. */
 static cf_status_t
 raster_element(cf_figure_t *fig, size_t i, const cf__layout_t *lay,
-               raster_t *r, cairo_t *cr)
+               raster_t *r, cf__raster_t *to)
 {
     cf_status_t st = element_ops(fig, i, lay, r);
     if (st == CF_STATUS_OK)
-        cf__dl_play(&r->dl, 0, r->dl.count, &cf__cairo_backend, cr);
+        st = paint(fig, r, to);
     return st;
 }
 
@@ -192,18 +197,12 @@ cheapest(const raster_t *r, const anchors_t *an, const cf_label_t *lab,
 /* Pixels inked more than half both in one and in img, within the pixel
 ** box px (x0 y0 x1 y1; NULL: everywhere). */
 static long
-common_pixels(cairo_surface_t *one, cairo_surface_t *img, const int *px)
+common_pixels(const cf__raster_t *one, const unsigned char *b,
+              const int *px)
 {
-    const unsigned char *a, *b;
-    int w, h, stride, i, j, i0 = 0, j0 = 0;
+    const unsigned char *a = one->px;
+    int w = one->w, h = one->h, stride = one->stride, i, j, i0 = 0, j0 = 0;
     long n = 0;
-    cairo_surface_flush(one);
-    cairo_surface_flush(img);
-    a = cairo_image_surface_get_data(one);
-    b = cairo_image_surface_get_data(img);
-    w = cairo_image_surface_get_width(one);
-    h = cairo_image_surface_get_height(one);
-    stride = cairo_image_surface_get_stride(one);
     if (px != NULL) {
         i0 = px[0] > 0 ? px[0] : 0;
         j0 = px[1] > 0 ? px[1] : 0;
@@ -216,15 +215,6 @@ common_pixels(cairo_surface_t *one, cairo_surface_t *img, const int *px)
             n += a[at] > HIT_ALPHA && b[at] > HIT_ALPHA;
         }
     return n;
-}
-
-static void
-clear(cairo_t *cr)
-{
-    cairo_save(cr);
-    cairo_set_operator(cr, CAIRO_OPERATOR_CLEAR);
-    cairo_paint(cr);
-    cairo_restore(cr);
 }
 
 /* Append a line to the figure's warnings. */
@@ -253,7 +243,7 @@ warn(cf_figure_t *fig, const char *fmt, ...)
 ** its index, or fig->count when none is found alone. */
 static size_t
 what_is_under(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
-              size_t lab, bool automatic, cairo_surface_t *mask,
+              size_t lab, bool automatic, const unsigned char *mask,
               const int *px)
 {
     size_t j, worst = fig->count;
@@ -271,11 +261,11 @@ what_is_under(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
             && ((s.place == CF_PLACE_AUTO) ? !automatic || j > lab
                                            : !automatic && j > lab))
             continue;
-        clear(r->cr1);
-        if (raster_element(fig, j, lay, r, r->cr1) != CF_STATUS_OK)
+        cf__raster_clear(&r->one, NULL);
+        if (raster_element(fig, j, lay, r, &r->one) != CF_STATUS_OK)
             return fig->count;
         /* the mask is empty outside the label's box px */
-        n = common_pixels(r->one, mask, px);
+        n = common_pixels(&r->one, mask, px);
         if (n > most) {
             most = n;
             worst = j;
@@ -294,8 +284,7 @@ static cf_status_t
 check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
             size_t i, const cf__text_t *t, cf_place_t place, bool automatic)
 {
-    cairo_surface_t *mask;
-    cairo_t *mcr;
+    unsigned char *mask;
     cf_status_t st;
     double ink[4];
     int px[4];
@@ -304,37 +293,31 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
     st = element_ops(fig, i, lay, r);
     if (st != CF_STATUS_OK)
         return st;
-    if (cf__cairo_ink(&r->dl, 0, r->dl.count, ink) != 0)
+    if (cf__dl_ink(&r->dl, 0, r->dl.count, ink) != 0)
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                           "cairo failed measuring a label");
+                           "out of memory measuring a label");
     if (!(ink[2] > ink[0] && ink[3] > ink[1]))
         return CF_STATUS_OK;   /* nothing drawn */
     px[0] = (int)floor(ink[0] * r->res) - 1;
     px[1] = (int)floor(ink[1] * r->res) - 1;
     px[2] = (int)ceil(ink[2] * r->res) + 1;
     px[3] = (int)ceil(ink[3] * r->res) + 1;
-    cairo_save(r->cr1);
-    cairo_identity_matrix(r->cr1);
-    cairo_rectangle(r->cr1, px[0], px[1], px[2] - px[0], px[3] - px[1]);
-    cairo_set_operator(r->cr1, CAIRO_OPERATOR_CLEAR);
-    cairo_fill(r->cr1);
-    cairo_restore(r->cr1);
-    cf__dl_play(&r->dl, 0, r->dl.count, &cf__cairo_backend, r->cr1);
-    n = common_pixels(r->one, r->img, px);
+    cf__raster_clear(&r->one, px);
+    st = paint(fig, r, &r->one);
+    if (st != CF_STATUS_OK)
+        return st;
+    n = common_pixels(&r->one, r->img.px, px);
     if (n > 1) {
-        size_t j;
-        /* keep the label's mask: naming what is under it reuses r->one */
-        mask = cairo_image_surface_create(
-            CAIRO_FORMAT_A8, cairo_image_surface_get_width(r->one),
-            cairo_image_surface_get_height(r->one));
-        mcr = cairo_create(mask);
-        cairo_rectangle(mcr, px[0], px[1], px[2] - px[0], px[3] - px[1]);
-        cairo_clip(mcr);
-        cairo_set_source_surface(mcr, r->one, 0, 0);
-        cairo_paint(mcr);
-        cairo_destroy(mcr);
+        size_t j, k = (size_t)r->one.h * (size_t)r->one.stride;
+        /* keep the label's mask: naming what is under it reuses r->one
+        ** (only the label's box px is compared) */
+        mask = cf_malloc(k);
+        if (mask == NULL)
+            return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                               "out of memory placing labels");
+        memcpy(mask, r->one.px, k);
         j = what_is_under(fig, lay, r, i, automatic, mask, px);
-        cairo_surface_destroy(mask);
+        cf_free(mask);
         if (j < fig->count)
             warn(fig, "label \"%s\" (%s%s) lies on %s %zu", t->src,
                  automatic ? "placed automatically " : "place ",
@@ -344,30 +327,24 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
                  automatic ? "placed automatically " : "place ",
                  place_names[place]);
     }
-    cf__dl_play(&r->dl, 0, r->dl.count, &cf__cairo_backend, r->cr);
-    return CF_STATUS_OK;
+    return paint(fig, r, &r->img);
 }
 
 static cf_status_t
 raster_open(cf_figure_t *fig, raster_t *r)
 {
     int w, h;
+    memset(r, 0, sizeof *r);
     r->res = AUTO_RES;
     if (fig->width * fig->height * r->res * r->res > AUTO_MAX_PIXELS)
         r->res = sqrt(AUTO_MAX_PIXELS / (fig->width * fig->height));
     w = (int)ceil(fig->width * r->res);
     h = (int)ceil(fig->height * r->res);
-    r->img = cairo_image_surface_create(CAIRO_FORMAT_A8, w, h);
-    r->one = cairo_image_surface_create(CAIRO_FORMAT_A8, w, h);
-    r->cr = cairo_create(r->img);
-    r->cr1 = cairo_create(r->one);
     cf__dl_init(&r->dl);
-    if (cairo_status(r->cr) != CAIRO_STATUS_SUCCESS
-        || cairo_status(r->cr1) != CAIRO_STATUS_SUCCESS)
+    if (cf__raster_open(&r->img, w, h, r->res, 0, 0) != 0
+        || cf__raster_open(&r->one, w, h, r->res, 0, 0) != 0)
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
                            "out of memory placing labels");
-    cairo_scale(r->cr, r->res, r->res);
-    cairo_scale(r->cr1, r->res, r->res);
     return CF_STATUS_OK;
 }
 
@@ -375,10 +352,8 @@ static void
 raster_close(raster_t *r)
 {
     cf__dl_free(&r->dl);
-    cairo_destroy(r->cr);
-    cairo_destroy(r->cr1);
-    cairo_surface_destroy(r->img);
-    cairo_surface_destroy(r->one);
+    cf__raster_close(&r->img);
+    cf__raster_close(&r->one);
 }
 
 /* Whether layouts a and b map the data alike, page position aside. */
@@ -436,7 +411,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
         if ((fig->els[i]->kind->flags & CF__KIND_SHADING)
             || is_label(fig, i, &x, &y, &t, &chosen, &s))
             continue;
-        st = raster_element(fig, i, lay, &r, r.cr);
+        st = raster_element(fig, i, lay, &r, &r.img);
     }
     /* the labels placed by hand first: the automatic ones avoid them */
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
@@ -465,7 +440,6 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
         if (st != CF_STATUS_OK || t->lab == NULL)
             continue;
         cf__map(lay, x, y, &px, &py);
-        cairo_surface_flush(r.img);
         cheapest(&r, &an, t->lab, &s, px, py, chosen);
         st = check_label(fig, lay, &r, i, t, chosen->place, true);
     }

@@ -3,8 +3,8 @@
 ** covering ink.  Boxes (a legend, a zoom inset) are placed relative to
 ** the ink of the drawing they belong to, never to the page: the page of
 ** a figure cropped to its ink (page = "ink") is only known once they are
-** part of that ink.  What is drawn so far is painted into a coarse A8
-** raster of the drawing's ink box (by the cairo backend); each candidate
+** part of that ink.  What is drawn so far is painted into a coarse
+** raster of the drawing's ink box (render/backends/measure.h); each candidate
 ** place (a corner or side inside that box) counts the raster pixels it
 ** covers.  With none clear, the box goes into a band outside the ink box,
 ** at the right or below, whichever leaves the drawing the larger scale
@@ -15,10 +15,8 @@
 #include <math.h>
 #include <stdint.h>
 
-#include <cairo.h>
-
-#include "backend.h"
 #include "layout-private.h"
+#include "measure.h"
 
 #define ROOM_RES 2.0          /* raster pixels per bp */
 #define ROOM_MAX_PIXELS 4e6   /* larger drawings get a coarser raster */
@@ -26,20 +24,18 @@
 #define ROOM_FAINT 8          /* pixel values up to this are not ink */
 #define ROOM_BAND_GAP 6.0     /* bp between the drawing's ink and a band */
 
-/* The pixels of the raster (whose pixel (0, 0) is page point o) under
-** page box b (x0 y0 x1 y1, bp) that carry ink. */
+/* The pixels of raster img under page box b (x0 y0 x1 y1, bp) that
+** carry ink. */
 static size_t
-inked_pixels(cairo_surface_t *img, double res, const double o[2],
-             const double b[4])
+inked_pixels(const cf__raster_t *img, const double b[4])
 {
-    const unsigned char *px = cairo_image_surface_get_data(img);
-    int w = cairo_image_surface_get_width(img);
-    int h = cairo_image_surface_get_height(img);
-    int stride = cairo_image_surface_get_stride(img);
-    int i0 = (int)fmax(0, floor((b[0] - o[0]) * res));
-    int i1 = (int)fmin(w, ceil((b[2] - o[0]) * res));
-    int j0 = (int)fmax(0, floor((b[1] - o[1]) * res));
-    int j1 = (int)fmin(h, ceil((b[3] - o[1]) * res));
+    const unsigned char *px = img->px;
+    int w = img->w, h = img->h, stride = img->stride;
+    double res = img->res;
+    int i0 = (int)fmax(0, floor((b[0] - img->ox) * res));
+    int i1 = (int)fmin(w, ceil((b[2] - img->ox) * res));
+    int j0 = (int)fmax(0, floor((b[1] - img->oy) * res));
+    int j1 = (int)fmin(h, ceil((b[3] - img->oy) * res));
     size_t n = 0;
     int i, j;
     for (j = j0; j < j1; j++)
@@ -104,7 +100,7 @@ static int
 drawing_ink(const cf_figure_t *fig, const cf__layout_t *lay,
             const cf__dl_t *dl, size_t from, double a[4])
 {
-    if (cf__cairo_ink(dl, from, dl->count, a) != 0)
+    if (cf__dl_ink(dl, from, dl->count, a) != 0)
         return -1;
     if (!(a[2] > a[0] && a[3] > a[1])) {
         a[0] = lay->px;
@@ -127,10 +123,7 @@ least_covered(cf_figure_t *fig, const cf__dl_t *dl, const double a[4],
         CF_PLACE_N, CF_PLACE_S, CF_PLACE_E, CF_PLACE_W
     };
     double aw = a[2] - a[0], ah = a[3] - a[1], res = ROOM_RES;
-    double o[2] = { a[0] - ROOM_CLEAR, a[1] - ROOM_CLEAR };
-    cairo_surface_t *img;
-    cairo_t *cr;
-    cf__dl_t moved;
+    cf__raster_t img;
     size_t k, best = SIZE_MAX;
     *st = CF_STATUS_OK;
     if (w + 2 * gap > aw || h + 2 * gap > ah)
@@ -139,32 +132,14 @@ least_covered(cf_figure_t *fig, const cf__dl_t *dl, const double a[4],
     ah += 2 * ROOM_CLEAR;
     if (aw * ah * res * res > ROOM_MAX_PIXELS)
         res = sqrt(ROOM_MAX_PIXELS / (aw * ah));
-    img = cairo_image_surface_create(CAIRO_FORMAT_A8, (int)ceil(aw * res),
-                                     (int)ceil(ah * res));
-    cr = cairo_create(img);
-    if (cairo_status(cr) != CAIRO_STATUS_SUCCESS) {
-        cairo_destroy(cr);
-        cairo_surface_destroy(img);
+    if (cf__raster_open(&img, (int)ceil(aw * res), (int)ceil(ah * res), res,
+                        a[0] - ROOM_CLEAR, a[1] - ROOM_CLEAR) != 0
+        || cf__raster_paint(&img, dl, 0, dl->count) != 0) {
+        cf__raster_close(&img);
         *st = cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
                           "out of memory finding room beside the drawing");
         return SIZE_MAX;
     }
-    /* the drawing moved to the raster's origin (cairo's stand-in in the
-    ** WebAssembly module only scales) */
-    cf__dl_init(&moved);
-    cf__dl_append_moved(&moved, dl, -o[0], -o[1]);
-    if (moved.failed) {
-        cf__dl_free(&moved);
-        cairo_destroy(cr);
-        cairo_surface_destroy(img);
-        *st = cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                          "out of memory finding room beside the drawing");
-        return SIZE_MAX;
-    }
-    cairo_scale(cr, res, res);
-    cf__dl_play(&moved, 0, moved.count, &cf__cairo_backend, cr);
-    cf__dl_free(&moved);
-    cairo_surface_flush(img);
     for (k = 0; k < sizeof order / sizeof order[0] && best != 0; k++) {
         double c[2], b[4];
         size_t n;
@@ -173,15 +148,14 @@ least_covered(cf_figure_t *fig, const cf__dl_t *dl, const double a[4],
         b[1] = c[1] - ROOM_CLEAR;
         b[2] = c[0] + w + ROOM_CLEAR;
         b[3] = c[1] + h + ROOM_CLEAR;
-        n = inked_pixels(img, res, o, b);
+        n = inked_pixels(&img, b);
         if (n < best) {
             best = n;
             at[0] = c[0];
             at[1] = c[1];
         }
     }
-    cairo_destroy(cr);
-    cairo_surface_destroy(img);
+    cf__raster_close(&img);
     return best;
 }
 
@@ -195,7 +169,7 @@ cf__room_find(cf_figure_t *fig, const cf__layout_t *lay, const cf__dl_t *dl,
     size_t n;
     if (drawing_ink(fig, lay, dl, from, a) != 0)
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                           "cairo failed measuring the drawing's ink");
+                           "out of memory measuring the drawing's ink");
     if (place != CF_PLACE_AUTO) {
         box_at(a, w, h, place, gap, at);
         return CF_STATUS_OK;

@@ -17,6 +17,7 @@
 #include <cairo.h>
 
 #include "layout-private.h"
+#include "measure.h"
 #include "output-private.h"
 
 void
@@ -95,9 +96,9 @@ make_job(cf_figure_t *fig, const cf_write_options_t *o, bool need_ink,
         double *ink = job->ink, w, h;
         if (cf__figure_build(fig, &job->lay, &job->dl) != CF_STATUS_OK)
             return cf_figure_status(fig, diag);
-        if (cf__cairo_ink(&job->dl, 0, job->dl.count, ink) != 0)
+        if (cf__dl_ink(&job->dl, 0, job->dl.count, ink) != 0)
             return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
-                               "cairo failed measuring the ink");
+                               "out of memory measuring the ink");
         w = ink[2] - ink[0];
         h = ink[3] - ink[1];
         if (!tight)

@@ -1,0 +1,42 @@
+/*
+** The measuring seam: every question the layout asks about ink — the ink
+** box of some operations of a display list, and a coarse coverage raster
+** of the page's ink for label places, collisions and the room of legends
+** and insets — is answered here, from the display list alone.  Nothing
+** that calls these functions knows how the answer is drawn
+** (docs/library.md, "Measuring ink").
+*/
+#ifndef CURVEFIG_RENDER_MEASURE_H
+#define CURVEFIG_RENDER_MEASURE_H
+
+#include "dlist.h"
+
+/* A coverage raster: w x h pixels of one byte (0 no ink, 255 covered
+** wholly), row j at px + j * stride; pixel (i, j) is the page box of
+** side 1 / res bp whose top left is (ox + i / res, oy + j / res). */
+typedef struct cf__raster {
+    unsigned char *px;
+    int w, h, stride;
+    double res, ox, oy;
+    void *impl;               /* the drawing's own state */
+} cf__raster_t;
+
+/* A raster of the page box (ox, oy) .. (ox + w / res, oy + h / res),
+** empty; 0, or -1 out of memory (r then closed). */
+int cf__raster_open(cf__raster_t *r, int w, int h, double res, double ox,
+                    double oy);
+void cf__raster_close(cf__raster_t *r);
+/* The pixels of the pixel box b (i0 j0 i1 j1, cut to the raster; NULL:
+** all) made empty. */
+void cf__raster_clear(cf__raster_t *r, const int *b);
+/* Ops [from, to) of dl painted over the raster: a paint of coverage c
+** times its colour's alpha and opacity a over a pixel's v gives
+** v + a c (1 - v); 0, or -1 out of memory. */
+int cf__raster_paint(cf__raster_t *r, const cf__dl_t *dl, size_t from,
+                     size_t to);
+
+/* The ink box (page bp: x0 y0 x1 y1, empty: x1 <= x0) of ops [from, to)
+** of dl; 0, or -1 out of memory. */
+int cf__dl_ink(const cf__dl_t *dl, size_t from, size_t to, double ink[4]);
+
+#endif

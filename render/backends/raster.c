@@ -1,0 +1,787 @@
+/*
+** The rasterizer of the measuring seam (render/backends/raster.h).  Paths are
+** flattened (cubics into ceil(sqrt(0.75 |second difference| / tol))
+** chords, arcs into chords of sagitta at most tol), fills become the
+** polygon of their subpaths, strokes the union of one quadrilateral a
+** segment, a wedge or a miter a join, and a half disc a round cap, every
+** piece wound positively so that the nonzero rule unites them (cairo's
+** miter limit 10, beyond it a bevel).  Coverage is sampled on 4
+** sub-scanlines a pixel, each crossing the pixels it covers in exact
+** horizontal fractions.
+*/
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "raster.h"
+
+#define PI 3.14159265358979323846
+#define SUB 4                 /* sub-scanlines a pixel */
+#define MITER_LIMIT 10.0
+#define MAX_CHORDS 256        /* chords of one cubic or arc at most */
+
+typedef struct pt { double x, y; } pt_t;
+
+typedef struct pts { pt_t *p; size_t n, cap; bool failed; } pts_t;
+
+static void
+pts_add(pts_t *a, double x, double y)
+{
+    if (a->n == a->cap) {
+        size_t cap = a->cap ? 2 * a->cap : 64;
+        pt_t *p = cf_realloc_array(a->p, cap, sizeof *p);
+        if (p == NULL) {
+            a->failed = true;
+            return;
+        }
+        a->p = p;
+        a->cap = cap;
+    }
+    a->p[a->n].x = x;
+    a->p[a->n].y = y;
+    a->n++;
+}
+
+/* ---- polygons ----------------------------------------------------------- */
+
+void
+cf__poly_init(cf__poly_t *pl)
+{
+    memset(pl, 0, sizeof *pl);
+    pl->box[0] = 1;
+    pl->box[2] = 0;
+}
+
+void
+cf__poly_reset(cf__poly_t *pl)
+{
+    pl->n = 0;
+    pl->box[0] = 1;
+    pl->box[2] = 0;
+    pl->failed = false;
+}
+
+void
+cf__poly_free(cf__poly_t *pl)
+{
+    cf_free(pl->e);
+    cf_free(pl->scratch);
+    cf__poly_init(pl);
+}
+
+static void
+grow_box(double box[4], double x, double y)
+{
+    if (box[2] < box[0]) {
+        box[0] = box[2] = x;
+        box[1] = box[3] = y;
+        return;
+    }
+    box[0] = fmin(box[0], x);
+    box[1] = fmin(box[1], y);
+    box[2] = fmax(box[2], x);
+    box[3] = fmax(box[3], y);
+}
+
+static void
+edge(cf__poly_t *pl, pt_t a, pt_t b)
+{
+    cf__edge_t *e;
+    if (!(isfinite(a.x) && isfinite(a.y) && isfinite(b.x) && isfinite(b.y))) {
+        pl->failed = true;
+        return;
+    }
+    grow_box(pl->box, a.x, a.y);
+    grow_box(pl->box, b.x, b.y);
+    if (a.y == b.y)
+        return;
+    if (pl->n == pl->cap) {
+        size_t cap = pl->cap ? 2 * pl->cap : 256;
+        cf__edge_t *p = cf_realloc_array(pl->e, cap, sizeof *p);
+        if (p == NULL) {
+            pl->failed = true;
+            return;
+        }
+        pl->e = p;
+        pl->cap = cap;
+    }
+    e = &pl->e[pl->n++];
+    e->dir = b.y > a.y ? 1 : -1;
+    if (b.y < a.y) {
+        pt_t t = a;
+        a = b;
+        b = t;
+    }
+    e->x0 = a.x;
+    e->y0 = a.y;
+    e->x1 = b.x;
+    e->y1 = b.y;
+    e->dxdy = (b.x - a.x) / (b.y - a.y);
+}
+
+/* A closed polygon of n points; wound positively when orient (the
+** pieces of a stroke then unite under the nonzero rule). */
+static void
+polygon(cf__poly_t *pl, const pt_t *p, size_t n, bool orient)
+{
+    double area = 0;
+    size_t i;
+    if (n < 2)
+        return;
+    for (i = 0; i < n; i++) {
+        const pt_t *a = &p[i], *b = &p[(i + 1) % n];
+        area += a->x * b->y - b->x * a->y;
+    }
+    if (!orient || area >= 0) {
+        for (i = 0; i < n; i++)
+            edge(pl, p[i], p[(i + 1) % n]);
+    } else {
+        for (i = n; i > 0; i--)
+            edge(pl, p[i % n], p[i - 1]);
+    }
+}
+
+/* ---- flattening --------------------------------------------------------- */
+
+typedef void (*subpath_fn)(void *ctx, const pt_t *p, size_t n, bool closed);
+
+static size_t
+arc_chords(double r, double sweep, double tol)
+{
+    double step = r > tol ? 2 * acos(1 - tol / r) : PI / 2;
+    double n = ceil(fabs(sweep) / fmin(step, PI / 2));
+    return n < 1 ? 1 : n > MAX_CHORDS ? MAX_CHORDS : (size_t)n;
+}
+
+static void
+flatten_curve(pts_t *a, pt_t p0, const double *v, const cf__xform_t *m)
+{
+    double x1 = v[0] * m->scale + m->dx, y1 = v[1] * m->scale + m->dy;
+    double x2 = v[2] * m->scale + m->dx, y2 = v[3] * m->scale + m->dy;
+    double x3 = v[4] * m->scale + m->dx, y3 = v[5] * m->scale + m->dy;
+    double ddx = fmax(fabs(p0.x - 2 * x1 + x2), fabs(x1 - 2 * x2 + x3));
+    double ddy = fmax(fabs(p0.y - 2 * y1 + y2), fabs(y1 - 2 * y2 + y3));
+    double c = ceil(sqrt(0.75 * hypot(ddx, ddy) / m->tol));
+    size_t k, n = !(c >= 1) ? 1 : c > MAX_CHORDS ? MAX_CHORDS : (size_t)c;
+    for (k = 1; k <= n; k++) {
+        double t = (double)k / (double)n, s = 1 - t;
+        double b0 = s * s * s, b1 = 3 * s * s * t, b2 = 3 * s * t * t,
+               b3 = t * t * t;
+        pts_add(a, b0 * p0.x + b1 * x1 + b2 * x2 + b3 * x3,
+                b0 * p0.y + b1 * y1 + b2 * y2 + b3 * y3);
+    }
+}
+
+/* The angles of an arc as cairo_arc takes them: a1 raised by whole turns
+** to at least a0; false when they are not finite or too far apart. */
+static bool
+arc_range(const double *v, double *a0, double *a1)
+{
+    *a0 = v[3];
+    *a1 = v[4];
+    if (!(isfinite(*a0) && isfinite(*a1) && fabs(*a0) < 1e6
+          && fabs(*a1) < 1e6))
+        return false;
+    if (*a1 < *a0)
+        *a1 += 2 * PI * ceil((*a0 - *a1) / (2 * PI));
+    return *a1 - *a0 < 1e3;
+}
+
+/* cairo_arc's: a line to its start (a move without a current point),
+** counter-clockwise on the y-down page from a0 to a1. */
+static void
+flatten_arc(pts_t *a, const double *v, const cf__xform_t *m)
+{
+    double cx = v[0] * m->scale + m->dx, cy = v[1] * m->scale + m->dy;
+    double r = fabs(v[2]) * m->scale, a0, a1;
+    size_t k, n;
+    if (!arc_range(v, &a0, &a1)) {
+        a->failed = true;
+        return;
+    }
+    n = arc_chords(r, a1 - a0, m->tol);
+    for (k = 0; k <= n; k++) {
+        double t = a0 + (a1 - a0) * (double)k / (double)n;
+        pts_add(a, cx + r * cos(t), cy + r * sin(t));
+    }
+}
+
+/* Each subpath of p that draws flattened into device points, handed to
+** f (a lone move draws nothing). */
+static void
+walk(const cf__path_t *p, const cf__xform_t *m, subpath_fn f, void *ctx,
+     pts_t *a)
+{
+    const double *v = p->coords;
+    bool drawn = false;
+    size_t i;
+    a->n = 0;
+    for (i = 0; i < p->nsegs && !a->failed; i++) {
+        double x = 0, y = 0;
+        if (p->segs[i] != CF__SEG_CLOSE) {
+            x = v[0] * m->scale + m->dx;
+            y = v[1] * m->scale + m->dy;
+        }
+        switch ((cf__seg_t)p->segs[i]) {
+        case CF__SEG_MOVE:
+            if (drawn)
+                f(ctx, a->p, a->n, false);
+            a->n = 0;
+            drawn = false;
+            pts_add(a, x, y);
+            v += 2;
+            break;
+        case CF__SEG_LINE:
+            drawn = drawn || a->n > 0;
+            pts_add(a, x, y);
+            v += 2;
+            break;
+        case CF__SEG_CURVE:
+            if (a->n == 0)
+                pts_add(a, x, y);
+            if (!a->failed)
+                flatten_curve(a, a->p[a->n - 1], v, m);
+            drawn = true;
+            v += 6;
+            break;
+        case CF__SEG_RECT: {
+            double w = v[2] * m->scale, h = v[3] * m->scale;
+            if (drawn)
+                f(ctx, a->p, a->n, false);
+            a->n = 0;
+            pts_add(a, x, y);
+            pts_add(a, x + w, y);
+            pts_add(a, x + w, y + h);
+            pts_add(a, x, y + h);
+            if (!a->failed)
+                f(ctx, a->p, a->n, true);
+            /* cairo_rectangle leaves the current point at its corner */
+            a->n = 1;
+            drawn = false;
+            v += 4;
+            break;
+        }
+        case CF__SEG_ARC:
+            drawn = true;
+            flatten_arc(a, v, m);
+            v += 5;
+            break;
+        case CF__SEG_CLOSE:
+            if (a->n > 0)
+                f(ctx, a->p, a->n, true);
+            /* what follows starts at the subpath's first point */
+            a->n = a->n > 0 ? 1 : 0;
+            drawn = false;
+            break;
+        }
+    }
+    if (drawn && !a->failed)
+        f(ctx, a->p, a->n, false);
+}
+
+static void
+fill_subpath(void *ctx, const pt_t *p, size_t n, bool closed)
+{
+    (void)closed;
+    polygon(ctx, p, n, false);
+}
+
+void
+cf__poly_fill(cf__poly_t *pl, const cf__path_t *p, const cf__xform_t *m)
+{
+    pts_t a = { NULL, 0, 0, false };
+    walk(p, m, fill_subpath, pl, &a);
+    if (a.failed)
+        pl->failed = true;
+    cf_free(a.p);
+}
+
+/* ---- strokes ------------------------------------------------------------ */
+
+typedef struct stroker {
+    cf__poly_t *pl;
+    double hw, tol;
+    cf__cap_t cap;
+    cf__join_t join;
+    const double *dash;   /* device units */
+    size_t ndash;
+    pts_t piece;          /* one dash */
+    bool failed;
+} stroker_t;
+
+/* The wedge of a round join or cap: centre v, radius hw, from angle t0
+** through sweep. */
+static void
+wedge(stroker_t *s, pt_t v, double t0, double sweep)
+{
+    pt_t q[MAX_CHORDS + 2];
+    size_t k, n = arc_chords(s->hw, sweep, s->tol);
+    q[0] = v;
+    for (k = 0; k <= n; k++) {
+        double t = t0 + sweep * (double)k / (double)n;
+        q[k + 1].x = v.x + s->hw * cos(t);
+        q[k + 1].y = v.y + s->hw * sin(t);
+    }
+    polygon(s->pl, q, n + 2, true);
+}
+
+static void
+join(stroker_t *s, pt_t a, pt_t v, pt_t b)
+{
+    double ux = v.x - a.x, uy = v.y - a.y, wx = b.x - v.x, wy = b.y - v.y;
+    double lu = hypot(ux, uy), lw = hypot(wx, wy), cross, side, cosang;
+    pt_t q[4];
+    if (!(lu > 0 && lw > 0))
+        return;
+    ux /= lu, uy /= lu, wx /= lw, wy /= lw;
+    cross = ux * wy - uy * wx;
+    cosang = ux * wx + uy * wy;
+    if (fabs(cross) < 1e-12 && cosang > 0)
+        return;   /* straight on */
+    side = cross > 0 ? -1 : 1;          /* the outer side's normal sign */
+    q[0] = v;
+    q[1].x = v.x - side * uy * s->hw;
+    q[1].y = v.y + side * ux * s->hw;
+    q[3].x = v.x - side * wy * s->hw;
+    q[3].y = v.y + side * wx * s->hw;
+    if (s->join == CF__JOIN_ROUND) {
+        double t0 = atan2(q[1].y - v.y, q[1].x - v.x);
+        double t1 = atan2(q[3].y - v.y, q[3].x - v.x), sw = t1 - t0;
+        while (sw > PI)
+            sw -= 2 * PI;
+        while (sw < -PI)
+            sw += 2 * PI;
+        wedge(s, v, t0, sw);
+        return;
+    }
+    {
+        /* the miter's length over the half width: 1 / sin(angle / 2) */
+        double ml = 1 / sqrt(fmax(1e-300, 0.5 * (1 + cosang)));
+        double mx = (q[1].x + q[3].x) / 2 - v.x,
+               my = (q[1].y + q[3].y) / 2 - v.y, lm = hypot(mx, my);
+        if (ml <= MITER_LIMIT && lm > 0) {
+            q[2].x = v.x + mx / lm * ml * s->hw;
+            q[2].y = v.y + my / lm * ml * s->hw;
+            polygon(s->pl, q, 4, true);
+            return;
+        }
+    }
+    q[2] = q[3];
+    polygon(s->pl, q, 3, true);
+}
+
+/* The round cap at end point p of a line leaving in direction (dx, dy). */
+static void
+cap(stroker_t *s, pt_t p, double dx, double dy)
+{
+    if (s->cap == CF__CAP_ROUND)
+        wedge(s, p, atan2(dy, dx) + PI / 2, PI);
+}
+
+/* One dash (or the whole line): segments, joins, caps; closed: its last
+** point is its first, joined round to its second. */
+static void
+stroke_piece(stroker_t *s, const pt_t *p, size_t n, bool closed)
+{
+    size_t i, first = n, last = 0;
+    for (i = 0; i + 1 < n; i++) {
+        double dx = p[i + 1].x - p[i].x, dy = p[i + 1].y - p[i].y;
+        double l = hypot(dx, dy), nx, ny;
+        pt_t q[4];
+        if (!(l > 0))
+            continue;
+        if (first == n)
+            first = i;
+        last = i;
+        nx = -dy / l * s->hw;
+        ny = dx / l * s->hw;
+        q[0].x = p[i].x + nx, q[0].y = p[i].y + ny;
+        q[1].x = p[i + 1].x + nx, q[1].y = p[i + 1].y + ny;
+        q[2].x = p[i + 1].x - nx, q[2].y = p[i + 1].y - ny;
+        q[3].x = p[i].x - nx, q[3].y = p[i].y - ny;
+        polygon(s->pl, q, 4, true);
+    }
+    if (first == n) {
+        /* a dot: cairo draws round caps of a degenerate line */
+        if (s->cap == CF__CAP_ROUND && n >= 1)
+            wedge(s, p[0], 0, 2 * PI);
+        return;
+    }
+    for (i = 1; i + 1 < n; i++)
+        join(s, p[i - 1], p[i], p[i + 1]);
+    if (closed && n >= 3) {
+        join(s, p[n - 2], p[0], p[1]);
+    } else {
+        cap(s, p[first], p[first].x - p[first + 1].x,
+            p[first].y - p[first + 1].y);
+        cap(s, p[last + 1], p[last + 1].x - p[last].x,
+            p[last + 1].y - p[last].y);
+    }
+}
+
+static void
+stroke_subpath(void *ctx, const pt_t *p, size_t n, bool closed)
+{
+    stroker_t *s = ctx;
+    pts_t *a = &s->piece;
+    size_t i, k = 0;
+    bool on = true;
+    double left;
+    if (s->ndash == 0) {
+        if (!closed || (p[n - 1].x == p[0].x && p[n - 1].y == p[0].y)) {
+            stroke_piece(s, p, n, closed);
+            return;
+        }
+        /* the closing segment back to the first point */
+        a->n = 0;
+        for (i = 0; i < n; i++)
+            pts_add(a, p[i].x, p[i].y);
+        pts_add(a, p[0].x, p[0].y);
+        if (a->failed)
+            s->failed = true;
+        else
+            stroke_piece(s, a->p, a->n, true);
+        return;
+    }
+    /* dashes along the line, the closing segment included */
+    left = s->dash[0];
+    a->n = 0;
+    pts_add(a, p[0].x, p[0].y);
+    for (i = 0; i < n - (closed ? 0 : 1) && !a->failed; i++) {
+        pt_t u = p[i], v = p[(i + 1) % n];
+        double l = hypot(v.x - u.x, v.y - u.y), pos = 0;
+        while (!a->failed && l - pos > left) {
+            double t = (pos + left) / l;
+            pt_t mid = { u.x + t * (v.x - u.x), u.y + t * (v.y - u.y) };
+            if (on) {
+                pts_add(a, mid.x, mid.y);
+                stroke_piece(s, a->p, a->n, false);
+            }
+            a->n = 0;
+            pts_add(a, mid.x, mid.y);
+            pos += left;
+            on = !on;
+            k = (k + 1) % s->ndash;
+            left = s->dash[k];
+        }
+        left -= l - pos;
+        if (on)
+            pts_add(a, v.x, v.y);
+    }
+    if (on && !a->failed && a->n > 0)
+        stroke_piece(s, a->p, a->n, false);
+    if (a->failed)
+        s->failed = true;
+}
+
+void
+cf__poly_stroke(cf__poly_t *pl, const cf__path_t *p, const cf__xform_t *m,
+                const cf__pen_t *pen)
+{
+    double dash[CF_STYLE_DASH_MAX], total = 0;
+    pts_t a = { NULL, 0, 0, false };
+    stroker_t s;
+    size_t i;
+    memset(&s, 0, sizeof s);
+    s.pl = pl;
+    s.hw = 0.5 * pen->width * m->scale;
+    s.tol = m->tol;
+    s.cap = pen->cap;
+    s.join = pen->join;
+    if (!(s.hw > 0))
+        return;
+    for (i = 0; i < pen->ndash && i < CF_STYLE_DASH_MAX; i++) {
+        dash[i] = pen->dash[i] * m->scale;
+        total += dash[i];
+    }
+    /* a pattern of no length (or a bad one) draws the line solid */
+    if (i > 0 && total > 0 && isfinite(total)) {
+        s.dash = dash;
+        s.ndash = i;
+    }
+    walk(p, m, stroke_subpath, &s, &a);
+    if (a.failed || s.failed)
+        pl->failed = true;
+    cf_free(a.p);
+    cf_free(s.piece.p);
+}
+
+/* ---- exact boxes -------------------------------------------------------- */
+
+/* The extremes of one coordinate of a cubic p0..p3 grown into lo, hi. */
+static void
+cubic_range(double p0, double p1, double p2, double p3, double *lo,
+            double *hi)
+{
+    /* B'(t)/3 = a t^2 + b t + c */
+    double a = -p0 + 3 * p1 - 3 * p2 + p3, b = 2 * (p0 - 2 * p1 + p2);
+    double c = p1 - p0, t[2];
+    int k, n = 0;
+    *lo = fmin(*lo, fmin(p0, p3));
+    *hi = fmax(*hi, fmax(p0, p3));
+    if (fabs(a) < 1e-12 * (fabs(b) + fabs(c))) {
+        if (b != 0)
+            t[n++] = -c / b;
+    } else {
+        double d = b * b - 4 * a * c;
+        if (d >= 0) {
+            double q = -0.5 * (b + copysign(sqrt(d), b));
+            t[n++] = q / a;
+            if (q != 0)
+                t[n++] = c / q;
+        }
+    }
+    for (k = 0; k < n; k++)
+        if (t[k] > 0 && t[k] < 1) {
+            double s = 1 - t[k];
+            double v = s * s * s * p0 + 3 * s * s * t[k] * p1
+                     + 3 * s * t[k] * t[k] * p2 + t[k] * t[k] * t[k] * p3;
+            *lo = fmin(*lo, v);
+            *hi = fmax(*hi, v);
+        }
+}
+
+static void
+arc_box(const double *v, const cf__xform_t *m, double box[4])
+{
+    double cx = v[0] * m->scale + m->dx, cy = v[1] * m->scale + m->dy;
+    double r = fabs(v[2]) * m->scale, a0, a1, q;
+    int k;
+    if (!arc_range(v, &a0, &a1))
+        return;
+    grow_box(box, cx + r * cos(a0), cy + r * sin(a0));
+    grow_box(box, cx + r * cos(a1), cy + r * sin(a1));
+    /* the points on the axes the arc passes (quarter turns) */
+    for (q = ceil(a0 / (PI / 2)), k = 0; q * (PI / 2) <= a1 && k < 5;
+         q++, k++) {
+        int quarter = (int)fmod(fmod(q, 4) + 4, 4);
+        grow_box(box, cx + (quarter == 0 ? r : quarter == 2 ? -r : 0),
+                 cy + (quarter == 1 ? r : quarter == 3 ? -r : 0));
+    }
+}
+
+void
+cf__path_box(const cf__path_t *p, const cf__xform_t *m, double box[4])
+{
+    const double *v = p->coords;
+    double cx = 0, cy = 0, sx = 0, sy = 0;
+    bool cur = false, moved = false;   /* moved: a move not yet drawn from */
+    size_t i;
+    for (i = 0; i < p->nsegs; i++) {
+        double x = 0, y = 0;
+        cf__seg_t seg = (cf__seg_t)p->segs[i];
+        if (seg != CF__SEG_CLOSE) {
+            x = v[0] * m->scale + m->dx;
+            y = v[1] * m->scale + m->dy;
+        }
+        if (moved && (seg == CF__SEG_LINE || seg == CF__SEG_CURVE
+                      || seg == CF__SEG_ARC))
+            grow_box(box, cx, cy);
+        moved = seg == CF__SEG_MOVE;
+        switch (seg) {
+        case CF__SEG_MOVE:
+        case CF__SEG_LINE:
+            if (seg == CF__SEG_LINE)
+                grow_box(box, x, y);
+            if (seg == CF__SEG_MOVE || !cur) {
+                sx = x;
+                sy = y;
+            }
+            cx = x;
+            cy = y;
+            v += 2;
+            break;
+        case CF__SEG_CURVE: {
+            double x2 = v[2] * m->scale + m->dx, y2 = v[3] * m->scale + m->dy;
+            double x3 = v[4] * m->scale + m->dx, y3 = v[5] * m->scale + m->dy;
+            double lo[2], hi[2];
+            if (!cur) {
+                cx = sx = x;
+                cy = sy = y;
+                grow_box(box, x, y);
+            }
+            lo[0] = hi[0] = cx;
+            lo[1] = hi[1] = cy;
+            cubic_range(cx, x, x2, x3, &lo[0], &hi[0]);
+            cubic_range(cy, y, y2, y3, &lo[1], &hi[1]);
+            grow_box(box, lo[0], lo[1]);
+            grow_box(box, hi[0], hi[1]);
+            cx = x3;
+            cy = y3;
+            v += 6;
+            break;
+        }
+        case CF__SEG_RECT:
+            grow_box(box, x, y);
+            grow_box(box, x + v[2] * m->scale, y + v[3] * m->scale);
+            cx = sx = x;
+            cy = sy = y;
+            v += 4;
+            break;
+        case CF__SEG_ARC: {
+            double a0, a1, r = fabs(v[2]) * m->scale;
+            arc_box(v, m, box);
+            if (arc_range(v, &a0, &a1)) {
+                if (!cur) {
+                    sx = x + r * cos(a0);
+                    sy = y + r * sin(a0);
+                }
+                cx = x + r * cos(a1);
+                cy = y + r * sin(a1);
+            }
+            v += 5;
+            break;
+        }
+        case CF__SEG_CLOSE:
+            cx = sx;
+            cy = sy;
+            break;
+        }
+        cur = true;
+    }
+}
+
+/* ---- coverage ----------------------------------------------------------- */
+
+static int
+cmp_edge(const void *a, const void *b)
+{
+    double d = ((const cf__edge_t *)a)->y0 - ((const cf__edge_t *)b)->y0;
+    return d < 0 ? -1 : d > 0;
+}
+
+typedef struct cross { double x; int dir; } cross_t;
+
+/* Coverage w of the pixels between a and b (device x) added to row
+** (whose first cell is pixel i0, of i1 - i0 cells): the partly covered
+** ones in row, the whole ones as a run (w added at the first, taken
+** away after the last, summed across when the row is painted). */
+static void
+add_span(float *row, float *run, int i0, int i1, double a, double b,
+         double w)
+{
+    int ia, ib;
+    if (a < i0)
+        a = i0;
+    if (b > i1)
+        b = i1;
+    if (!(b > a))
+        return;
+    ia = (int)floor(a);
+    ib = (int)floor(b);
+    if (ia == ib) {
+        row[ia - i0] += (float)((b - a) * w);
+        return;
+    }
+    row[ia - i0] += (float)((ia + 1 - a) * w);
+    if (ia + 1 < ib) {
+        run[ia + 1 - i0] += (float)w;
+        if (ib < i1)
+            run[ib - i0] -= (float)w;
+    }
+    if (ib < i1)
+        row[ib - i0] += (float)((b - ib) * w);
+}
+
+int
+cf__poly_paint(cf__poly_t *pl, unsigned char *px, int stride,
+               const int clip[4], double alpha, bool evenodd)
+{
+    int i0, i1, j0, j1, y, k, w;
+    float across;
+    size_t next = 0, nact = 0, i;
+    size_t *act;
+    cross_t *cx;
+    float *row, *run;
+    if (pl->failed)
+        return -1;
+    if (pl->n == 0 || !(alpha > 0))
+        return 0;
+    /* the polygon's pixels within the clip */
+    i0 = (int)fmax(clip[0], floor(fmax(pl->box[0], -1e9)));
+    i1 = (int)fmin(clip[2], ceil(fmin(pl->box[2], 1e9)));
+    j0 = (int)fmax(clip[1], floor(fmax(pl->box[1], -1e9)));
+    j1 = (int)fmin(clip[3], ceil(fmin(pl->box[3], 1e9)));
+    if (i1 <= i0 || j1 <= j0)
+        return 0;
+    w = i1 - i0;
+    {
+        /* the active edges, the crossings and a row, kept in pl */
+        size_t need = pl->n * (sizeof *act + sizeof *cx)
+                       + 2 * (size_t)w * sizeof *row;
+        if (need > pl->scratch_size) {
+            void *p = cf_realloc_array(pl->scratch, need, 1);
+            if (p == NULL)
+                return -1;
+            pl->scratch = p;
+            pl->scratch_size = need;
+        }
+        cx = pl->scratch;
+        act = (size_t *)(cx + pl->n);
+        row = (float *)(act + pl->n);
+        run = row + w;
+    }
+    qsort(pl->e, pl->n, sizeof *pl->e, cmp_edge);
+    memset(row, 0, 2 * (size_t)w * sizeof *row);
+    for (y = j0; y < j1; y++) {
+        unsigned char *d = px + (size_t)y * (size_t)stride;
+        int lo = w, hi = 0;
+        for (k = 0; k < SUB; k++) {
+            double sy = y + (k + 0.5) / SUB;
+            size_t nc = 0, j;
+            int wind = 0;
+            double start = 0;
+            while (next < pl->n && pl->e[next].y0 <= sy)
+                act[nact++] = next++;
+            for (i = 0; i < nact;) {
+                const cf__edge_t *e = &pl->e[act[i]];
+                if (e->y1 <= sy) {
+                    act[i] = act[--nact];
+                    continue;
+                }
+                {
+                    /* insertion into the crossings sorted by x */
+                    double x = e->x0 + (sy - e->y0) * e->dxdy;
+                    size_t at = nc;
+                    while (at > 0 && cx[at - 1].x > x) {
+                        cx[at] = cx[at - 1];
+                        at--;
+                    }
+                    cx[at].x = x;
+                    cx[at].dir = e->dir;
+                    nc++;
+                }
+                i++;
+            }
+            for (j = 0; j < nc; j++) {
+                bool was = evenodd ? (wind & 1) != 0 : wind != 0, is;
+                wind += cx[j].dir;
+                is = evenodd ? (wind & 1) != 0 : wind != 0;
+                if (!was && is) {
+                    start = cx[j].x;
+                } else if (was && !is && cx[j].x > i0 && start < i1) {
+                    int a = start > i0 ? (int)start - i0 : 0;
+                    int b = cx[j].x < i1 ? (int)cx[j].x + 1 - i0 : w;
+                    add_span(row, run, i0, i1, start, cx[j].x, 1.0 / SUB);
+                    lo = a < lo ? a : lo;
+                    hi = (b < w ? b : w) > hi ? (b < w ? b : w) : hi;
+                }
+            }
+        }
+        for (i = (size_t)lo, across = 0; (int)i < hi; i++) {
+            float c;
+            across += run[i];
+            c = row[i] + across;
+            c = c < 1 ? c : 1;
+            row[i] = run[i] = 0;
+            if (c > 0) {
+                /* v + a c (1 - v) in bytes, rounded */
+                double v = d[(size_t)i0 + i], ac = alpha * c;
+                d[(size_t)i0 + i] = (unsigned char)(v + ac * (255 - v) + 0.5);
+            }
+        }
+        if (next == pl->n && nact == 0)
+            break;
+    }
+    return 0;
+}

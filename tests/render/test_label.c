@@ -13,7 +13,7 @@
 
 #include "buffer.h"
 #include "curvefig/figure.h"
-#include "label-private.h"
+#include "label-cairo.h"
 #include "testutil.h"
 
 #define SIZE 10.0

@@ -32,7 +32,7 @@
 
 #include "backend.h"
 #include "measure.h"
-#include "model.h"
+#include "layout-private.h"
 #include "shipped.h"
 
 #define PI 3.14159265358979323846

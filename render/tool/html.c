@@ -47,49 +47,6 @@ put_string(FILE *f, const char *s, size_t n)
     fputc('"', f);
 }
 
-static void
-put_html_text(FILE *f, const char *s)
-{
-    for (; *s != '\0'; s++) {
-        if (*s == '<')
-            fputs("&lt;", f);
-        else if (*s == '&')
-            fputs("&amp;", f);
-        else
-            fputc(*s, f);
-    }
-}
-
-static char *
-read_all(const char *path, size_t *n)
-{
-    FILE *f = fopen(path, "rb");
-    char *buf = NULL;
-    size_t cap = 0;
-    *n = 0;
-    if (f == NULL)
-        return NULL;
-    for (;;) {
-        size_t got;
-        if (*n + 4096 + 1 > cap) {
-            char *t = realloc(buf, cap = 2 * cap + 8192);
-            if (t == NULL) {
-                free(buf);
-                fclose(f);
-                return NULL;
-            }
-            buf = t;
-        }
-        got = fread(buf + *n, 1, cap - *n - 1, f);
-        *n += got;
-        if (got == 0)
-            break;
-    }
-    fclose(f);
-    buf[*n] = '\0';
-    return buf;
-}
-
 int
 cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
                     const char *path, char *err, size_t errsize)
@@ -100,12 +57,14 @@ cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
     const char *base = strrchr(script_path, '/');
     char *code, *glyphs = NULL;
     size_t code_len, glyphs_len;
+    const char *why;
     cf_diag_t d;
+    cf__tool_out out;
     FILE *f;
-    code = read_all(script_path, &code_len);
+    code = cf__tool_read_file(script_path, (size_t)64 << 20, &code_len,
+                              &why);
     if (code == NULL) {
-        snprintf(err, errsize, "cannot read %s: %s", script_path,
-                 strerror(errno));
+        snprintf(err, errsize, "cannot read %s: %s", script_path, why);
         return -1;
     }
     if (cf_figures_glyph_data(&fig, 1, &glyphs, &glyphs_len, &d)
@@ -114,20 +73,22 @@ cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
         free(code);
         return -1;
     }
-    f = cf__tool_open_atomic(path);
-    if (f == NULL) {
+    if (cf__tool_open_atomic(&out, path) != 0) {
         snprintf(err, errsize, "cannot write %s: %s", path, strerror(errno));
         free(code);
         cf_free(glyphs);
         return -1;
     }
+    f = out.f;
     fputs("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
           "<meta http-equiv=\"Content-Security-Policy\" content=\""
           "default-src 'none'; script-src 'unsafe-inline' "
           "'wasm-unsafe-eval'; style-src 'unsafe-inline'; img-src data:\">\n"
           "<meta name=\"viewport\" content=\"width=device-width\">\n<title>",
           f);
-    put_html_text(f, caption != NULL && caption[0] != '\0' ? caption : name);
+    if (caption == NULL || caption[0] == '\0')
+        caption = name;
+    cf__tool_put_html(f, caption, strlen(caption));
     fputs("</title>\n<link rel=\"icon\" href=\"data:,\">\n<style>\n", f);
     put_lines(f, html_css);
     fputs("</style>\n</head>\n<body>\n<div id=\"curvefig\"></div>\n"
@@ -150,7 +111,7 @@ cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
     fputs("\"}));\n</script>\n</body></html>\n", f);
     free(code);
     cf_free(glyphs);
-    if (cf__tool_close_atomic(f, path) != 0) {
+    if (cf__tool_close_atomic(&out) != 0) {
         snprintf(err, errsize, "cannot write %s: %s", path, strerror(errno));
         return -1;
     }

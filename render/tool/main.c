@@ -444,7 +444,7 @@ static int
 render_figures(const cf_script_t *s, const options *o)
 {
     cf_write_options_t wo;
-    FILE *man = NULL;
+    cf__tool_out man;
     int rc = 0;
     cf_write_options_init(&wo);
     wo.dpi = o->dpi;
@@ -509,8 +509,7 @@ render_figures(const cf_script_t *s, const options *o)
         free(base);
     }
     if (rc == 0 && o->manifest != NULL) {
-        man = cf__tool_open_atomic(o->manifest);
-        if (man == NULL) {
+        if (cf__tool_open_atomic(&man, o->manifest) != 0) {
             fprintf(stderr, "curvefig: cannot write %s: %s\n", o->manifest,
                     strerror(errno));
             return EXIT_SCRIPT;
@@ -518,11 +517,11 @@ render_figures(const cf_script_t *s, const options *o)
         for (size_t i = 0; i < cf_script_figure_count(s); i++) {
             if (!selected(o->only, cf_script_figure_name(s, i)))
                 continue;
-            cf__tool_manifest_line(man, cf_script_figure_name(s, i),
+            cf__tool_manifest_line(man.f, cf_script_figure_name(s, i),
                                    cf_script_figure_caption(s, i),
                                    o->formats, o->script);
         }
-        if (cf__tool_close_atomic(man, o->manifest) != 0) {
+        if (cf__tool_close_atomic(&man) != 0) {
             fprintf(stderr, "curvefig: cannot write %s: %s\n", o->manifest,
                     strerror(errno));
             return EXIT_SCRIPT;

@@ -512,6 +512,87 @@ test_gallery_captions(void **state)
     assert_true(strstr(page, "<pre>") == NULL);
 }
 
+/* Every file the tool writes goes through one writer that neither
+** follows nor truncates a file planted beside the target: symbolic links
+** at the old predictable temporary names (PATH.tmp~) and at the target
+** itself leave the file they point to untouched; the new files are
+** regular, their mode honours the umask, and no temporary file is left. */
+static void
+test_writes_follow_no_link(void **state)
+{
+    result *r = *state;
+    char victim[600], path[600], page[65536];
+    const char *render[] = { "render", src("multi.lua"), "-f", "svg,png",
+                             "--manifest", "m.txt", NULL };
+    const char *gallery[] = { "gallery", "-o", "index.html", "m.txt",
+                              NULL };
+    const char *planted[] = { "m.txt.tmp~", "index.html.tmp~",
+                              "multi-1.svg.tmp~", "multi-2.png" };
+    struct stat sb;
+    mode_t old;
+    FILE *f;
+    snprintf(r->dir, sizeof r->dir, "/tmp/curvefig-test-XXXXXX");
+    assert_non_null(mkdtemp(r->dir));
+    snprintf(victim, sizeof victim, "%s/victim", r->dir);
+    f = fopen(victim, "w");
+    assert_non_null(f);
+    fputs("precious\n", f);
+    fclose(f);
+    for (size_t i = 0; i < sizeof planted / sizeof planted[0]; i++) {
+        snprintf(path, sizeof path, "%s/%s", r->dir, planted[i]);
+        assert_int_equal(symlink(victim, path), 0);
+    }
+    old = umask(027);
+    run_tool(r, render);
+    assert_int_equal(r->status, 0);
+    run_tool(r, gallery);
+    umask(old);
+    assert_int_equal(r->status, 0);
+    slurp(victim, page, sizeof page);
+    assert_string_equal(page, "precious\n");
+    for (size_t i = 0; i < 4; i++) {
+        const char *made[] = { "m.txt", "index.html", "multi-1.svg",
+                               "multi-2.png" };
+        snprintf(path, sizeof path, "%s/%s", r->dir, made[i]);
+        assert_int_equal(lstat(path, &sb), 0);
+        if (!S_ISREG(sb.st_mode) || (sb.st_mode & 0777) != 0640)
+            fail_msg("%s: mode %o, want a regular file of mode 640 (umask "
+                     "027)", made[i], (unsigned)sb.st_mode);
+    }
+    {
+        DIR *d = opendir(r->dir);
+        struct dirent *e;
+        assert_non_null(d);
+        while ((e = readdir(d)) != NULL)
+            if (strncmp(e->d_name, ".cf-tmp-", 8) == 0)
+                fail_msg("a temporary file was left: %s", e->d_name);
+        closedir(d);
+    }
+}
+
+/* The gallery's title is text, not markup. */
+static void
+test_gallery_title_escaped(void **state)
+{
+    result *r = *state;
+    char html[600], page[65536];
+    const char *render[] = { "render", src("multi.lua"), "-f", "svg",
+                             "--manifest", "m.txt", NULL };
+    const char *gallery[] = { "gallery", "-o", "index.html", "--title",
+                              "<script>alert('x')</script> & \"q\"", "m.txt",
+                              NULL };
+    run_tool(r, render);
+    assert_int_equal(r->status, 0);
+    run_tool(r, gallery);
+    assert_int_equal(r->status, 0);
+    snprintf(html, sizeof html, "%s/index.html", r->dir);
+    slurp(html, page, sizeof page);
+    assert_contains(page, "<title>&lt;script&gt;alert(&#39;x&#39;)&lt;/"
+                          "script&gt; &amp; &quot;q&quot;</title>");
+    assert_contains(page, "<h1>&lt;script&gt;alert(&#39;x&#39;)");
+    assert_true(strstr(page, "<script") == NULL);
+}
+
 static void
 test_every_figure_method(void **state)
 {
@@ -792,6 +873,8 @@ main(int argc, char **argv)
         T(test_list_and_only),
         T(test_gallery),
         T(test_gallery_captions),
+        T(test_writes_follow_no_link),
+        T(test_gallery_title_escaped),
         T(test_every_figure_method),
         T(test_label_place_function),
         T(test_hostile_os),

@@ -3,7 +3,8 @@
 ** everything inline, and a Content-Security-Policy that lets it load
 ** nothing at all (default-src 'none'; inline script and style, the
 ** module compiled from the page's own bytes).  Values (the script's text,
-** the glyph data, the module's base64) are JavaScript string literals in
+** the glyph data, the module's base64, the source of the Web Worker that
+** runs the module: render/web/worker.js) are JavaScript string literals in
 ** which "<" is written \u003c, so that no text of theirs ends the script
 ** element.
 */
@@ -27,13 +28,12 @@ put_lines(FILE *f, const char *const *lines)
         fputs(*lines, f);
 }
 
-/* s as a JSON string (also a JavaScript one), "<" escaped. */
+/* s as the inside of a JSON string (also a JavaScript one), "<" escaped
+** so that no text of it ends the script element. */
 static void
-put_string(FILE *f, const char *s, size_t n)
+put_escaped(FILE *f, const char *s, size_t n)
 {
-    size_t i;
-    fputc('"', f);
-    for (i = 0; i < n; i++) {
+    for (size_t i = 0; i < n; i++) {
         unsigned char c = (unsigned char)s[i];
         if (c == '"' || c == '\\')
             fprintf(f, "\\%c", c);
@@ -44,12 +44,32 @@ put_string(FILE *f, const char *s, size_t n)
         else
             fputc(c, f);
     }
+}
+
+static void
+put_string(FILE *f, const char *s, size_t n)
+{
+    fputc('"', f);
+    put_escaped(f, s, n);
+    fputc('"', f);
+}
+
+/* The lines of embedded files as one JSON string. */
+static void
+put_lines_string(FILE *f, const char *const *a, const char *const *b)
+{
+    fputc('"', f);
+    for (; *a != NULL; a++)
+        put_escaped(f, *a, strlen(*a));
+    for (; *b != NULL; b++)
+        put_escaped(f, *b, strlen(*b));
     fputc('"', f);
 }
 
 int
 cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
-                    const char *path, char *err, size_t errsize)
+                    const cf__tool_limits *limits, const char *path,
+                    char *err, size_t errsize)
 {
     cf_figure_t *fig = cf_script_figure(s, i);
     const char *name = cf_script_figure_name(s, i);
@@ -83,7 +103,8 @@ cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
     fputs("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
           "<meta http-equiv=\"Content-Security-Policy\" content=\""
           "default-src 'none'; script-src 'unsafe-inline' "
-          "'wasm-unsafe-eval'; style-src 'unsafe-inline'; img-src data:\">\n"
+          "'wasm-unsafe-eval'; style-src 'unsafe-inline'; img-src data:; "
+          "worker-src blob:\">\n"
           "<meta name=\"viewport\" content=\"width=device-width\">\n<title>",
           f);
     if (caption == NULL || caption[0] == '\0')
@@ -94,7 +115,6 @@ cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
     fputs("</style>\n</head>\n<body>\n<div id=\"curvefig\"></div>\n"
           "<script>\n", f);
     put_lines(f, html_page_js);
-    put_lines(f, html_wasm_js);
     put_lines(f, html_engine_js);
     fputs("CurvefigPage(document.getElementById('curvefig'), "
           "new CurvefigWasmEngine({\nfigure: ", f);
@@ -106,6 +126,12 @@ cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
     put_string(f, code, code_len);
     fputs(",\nglyphs: ", f);
     put_string(f, glyphs, glyphs_len);
+    fprintf(f, ",\ntimeout: %g,\nmemory: %g,\ninstructions: %.17g",
+            limits->timeout,
+            (double)(limits->script.max_memory >> 20),
+            (double)limits->script.max_instructions);
+    fputs(",\nworker: ", f);
+    put_lines_string(f, html_wasm_js, html_worker_js);
     fputs(",\nwasm: \"", f);
     put_lines(f, web_wasm_b64);
     fputs("\"}));\n</script>\n</body></html>\n", f);
@@ -120,11 +146,13 @@ cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
 #else
 int
 cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
-                    const char *path, char *err, size_t errsize)
+                    const cf__tool_limits *limits, const char *path,
+                    char *err, size_t errsize)
 {
     (void)s;
     (void)i;
     (void)script_path;
+    (void)limits;
     (void)path;
     snprintf(err, errsize,
              "-f html needs the WebAssembly module, which this curvefig "

@@ -25,6 +25,7 @@
 #include <sys/stat.h>
 #include <sys/types.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <cmocka.h>
@@ -727,6 +728,41 @@ test_timeout(void **state)
     assert_int_equal(count_files(r->dir), 0);
 }
 
+/* `live --once` under the limits of render: a run that spins (the
+** handler of xpcall loops, which escapes the instruction hook on the
+** parent commit) ends with the time-limit error, in the JSON and on
+** stderr, within the limit and a margin. */
+static void
+test_live_once_timeout(void **state)
+{
+    result *r = *state;
+    char path[600];
+    const char *args[] = { "live", "xp.lua", "--once", "--timeout", "2",
+                           "--max-instructions", "1e15", NULL };
+    struct timespec t0, t1;
+    double took;
+    FILE *f;
+    snprintf(r->dir, sizeof r->dir, "/tmp/curvefig-test-XXXXXX");
+    assert_non_null(mkdtemp(r->dir));
+    snprintf(path, sizeof path, "%s/xp.lua", r->dir);
+    f = fopen(path, "w");
+    assert_non_null(f);
+    fputs("xpcall(error, function() while true do end end)\n", f);
+    fclose(f);
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    run_tool(r, args);
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    took = (double)(t1.tv_sec - t0.tv_sec)
+           + (double)(t1.tv_nsec - t0.tv_nsec) * 1e-9;
+    assert_int_equal(r->status, 1);
+    assert_contains(r->err, "xp.lua: the script exceeded the time limit of "
+                            "2 s (--timeout)");
+    assert_contains(r->out, "\"error\": {\"message\": \"xp.lua: the script "
+                            "exceeded the time limit of 2 s");
+    if (took > 6)
+        fail_msg("live --once took %.1f s with --timeout 2", took);
+}
+
 static void
 test_hostile_metatable(void **state)
 {
@@ -886,6 +922,7 @@ main(int argc, char **argv)
         T(test_hostile_huge_string),
         T(test_hostile_pattern),
         T(test_timeout),
+        T(test_live_once_timeout),
         T(test_hostile_metatable),
         T(test_bytecode_script_refused),
         T(test_syntax_error_position),

@@ -10,6 +10,7 @@
 ** The child writes to a pipe: one byte (the values were bad), the length
 ** of the error (4 bytes) and the error, then the JSON until the end.
 */
+#define _GNU_SOURCE   /* close_range, where the C library has it */
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
@@ -78,9 +79,14 @@ child(int fd, pid_t parent, const char *script, const cf__tool_limits *l,
     if (dup2(fd, 3) != 3)
         _exit(1);
     fd = 3;
-    max = sysconf(_SC_OPEN_MAX);
-    for (long k = 4; k < (max > 0 && max < 65536 ? max : 65536); k++)
-        close((int)k);
+#if defined(__GLIBC__) && (__GLIBC__ > 2 || __GLIBC_MINOR__ >= 34)
+    if (close_range(4, ~0u, 0) != 0)
+#endif
+    {
+        max = sysconf(_SC_OPEN_MAX);
+        for (long k = 4; k < (max > 0 && max < 65536 ? max : 65536); k++)
+            close((int)k);
+    }
     error[0] = '\0';
     json = cf__live_run(script, &l->script, values, len, &bad, error,
                         sizeof error);

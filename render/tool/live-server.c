@@ -239,6 +239,7 @@ static void *
 runner(void *arg)
 {
     server_t *sv = arg;
+    cf__live_warm();
     pthread_mutex_lock(&sv->lock);
     for (;;) {
         request_t *rq;

@@ -59,6 +59,21 @@ cf__live_error_json(const char *script, const char *msg, char *error,
     return json;
 }
 
+void
+cf__live_warm(void)
+{
+    static const char code[] =
+        "local f = figure{ name = \"warm\", width = \"3cm\", "
+        "height = \"2cm\", window = { 0, 1, 0, 1 } }\n"
+        "f:curve(bezier{ { 0, 0 }, { 0.5, 1 }, { 1, 0 } })\n"
+        "f:label({ 0.5, 0.5 }, \"P_0 b_0^4(t) = 0.75, \\\\alpha\", "
+        "{ place = \"auto\" })\n";
+    char *json = NULL;
+    size_t len;
+    cf_interactive_run(code, "warm-up", "{}", 2, NULL, stderr, &json, &len);
+    free(json);
+}
+
 /* One run of the script with these values: the JSON (free()) and whether
 ** the values were good.  The script is read afresh: a file that is no
 ** longer a regular file (a directory, a FIFO put in its place) is an

@@ -34,6 +34,11 @@ char *cf__live_error_json(const char *script, const char *msg, char *error,
 char *cf__live_run_child(const char *script, const cf__tool_limits *limits,
                          const char *values, size_t len, int stop_fd,
                          bool *bad_values, char *error, size_t error_len);
+/* Run a small figure of our own (a curve, a label in the default fonts)
+** in this thread, so that the processes it forks for runs start with the
+** fonts loaded and the caches of pango, fontconfig and cairo warm (pango's
+** font map is one per thread). */
+void cf__live_warm(void);
 /* Seconds of a monotonic clock. */
 double cf__live_clock(void);
 /* A text that changes whenever the script file is saved. */

@@ -48,11 +48,20 @@ cf__live_error_json(const char *script, const char *msg, char *error,
     size_t n, jlen;
     if (code == NULL)
         return NULL;
-    n = (size_t)sprintf(code, "error(\"");
-    for (const unsigned char *p = (const unsigned char *)msg; *p; p++)
-        n += (size_t)sprintf(code + n, *p == '"' || *p == '\\' || *p < 32
-                                            ? "\\%03u" : "%c", *p);
-    strcpy(code + n, "\", 0)");
+    memcpy(code, "error(\"", 7);
+    n = 7;
+    for (const unsigned char *p = (const unsigned char *)msg; *p; p++) {
+        if (*p == '"' || *p == '\\' || *p < 32) {
+            /* Lua's decimal escape */
+            code[n++] = '\\';
+            code[n++] = (char)('0' + *p / 100);
+            code[n++] = (char)('0' + *p / 10 % 10);
+            code[n++] = (char)('0' + *p % 10);
+        } else {
+            code[n++] = (char)*p;
+        }
+    }
+    memcpy(code + n, "\", 0)", 6);
     cf_interactive_run_error(code, script, "{}", 2, NULL, stderr, &json,
                              &jlen, error, error_len);
     free(code);

@@ -418,6 +418,7 @@ random_name(char out[13])
 cf_status_t
 cf_write_file(const char *path, const void *data, size_t n, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     const char *slash;
     size_t dlen;
     char *tmp;
@@ -425,7 +426,6 @@ cf_write_file(const char *path, const void *data, size_t n, cf_diag_t *diag)
     size_t off = 0;
     cf_status_t st = CF_STATUS_OK;
 
-    cf_diag_clear(diag);
     if (path == NULL || (data == NULL && n > 0))
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
                            "write: path or data is NULL");

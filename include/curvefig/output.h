@@ -71,6 +71,15 @@ CF_API cf_status_t cf_figure_write_all(cf_figure_t *fig, const char *basename,
                                        const cf_write_options_t *options,
                                        cf_diag_t *diag);
 
+/* Write size bytes of data to path as every file of curvefig is written:
+** to a new file of a random name in path's directory (created exclusively,
+** never through a symbolic link; mode 0666 less the umask), renamed over
+** path once complete.  A reader sees the old file or the new one; a
+** symbolic link at path is replaced, not followed; on failure path is left
+** as it was and the temporary file removed. */
+CF_API cf_status_t cf_write_file(const char *path, const void *data,
+                                 size_t size, cf_diag_t *diag);
+
 /* Render to memory: *data (release with cf_free) and *size. */
 CF_API cf_status_t cf_figure_render(cf_figure_t *fig, cf_format_t format,
                                     const cf_write_options_t *options,

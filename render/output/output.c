@@ -6,9 +6,11 @@
 */
 #include <errno.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -373,31 +375,79 @@ cf_figure_dump(cf_figure_t *fig, const cf_write_options_t *options,
 
 /* ---- files -------------------------------------------------------------- */
 
-/* Write data to a temporary file beside path and rename it over path:
-** a reader sees the old file or the new one, never a part.  No fsync:
-** figures are build products (as the object files ninja writes), and a
-** sync costs 4 to 20 ms of waiting per file, more than rendering it. */
-static cf_status_t
-write_atomic(const char *path, const unsigned char *data, size_t n,
-             cf_diag_t *diag)
+/* A name for a temporary file that nobody can guess: 12 characters from
+** /dev/urandom (from the clock, the process and the address of a local
+** where there is none; the exclusive open below stays safe either way). */
+static void
+random_name(char out[13])
 {
-    const char *slash = strrchr(path, '/');
-    size_t dlen = slash != NULL ? (size_t)(slash - path) + 1 : 0;
+    static const char digits[] =
+        "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-";
+    unsigned char b[12];
+    int fd = open("/dev/urandom", O_RDONLY | O_CLOEXEC);
+    ssize_t n = fd >= 0 ? read(fd, b, sizeof b) : -1;
+    if (fd >= 0)
+        close(fd);
+    if (n != (ssize_t)sizeof b) {
+        struct timespec ts;
+        unsigned long long x;
+        clock_gettime(CLOCK_REALTIME, &ts);
+        x = (unsigned long long)ts.tv_nsec * 0x9e3779b97f4a7c15ull
+            ^ (unsigned long long)ts.tv_sec ^ (unsigned long long)getpid()
+            << 32 ^ (unsigned long long)(uintptr_t)&ts;
+        for (size_t i = 0; i < sizeof b; i++) {
+            x ^= x >> 29;
+            x *= 0xbf58476d1ce4e5b9ull;
+            b[i] = (unsigned char)(x >> 56);
+        }
+    }
+    for (size_t i = 0; i < sizeof b; i++)
+        out[i] = digits[b[i] & 63];
+    out[12] = '\0';
+}
+
+/* The one writer of every file that curvefig makes (the figures here, and
+** the tool's pages, manifests, galleries, images and reports): the data
+** goes to a new file of a random name in the target's directory, opened
+** with O_CREAT | O_EXCL | O_NOFOLLOW (so that no file or symbolic link
+** planted there, under any name, is followed or truncated; mode 0666
+** less the umask), and that file is renamed over the target: a reader
+** sees the old file or the new one, never a part, and a symbolic link at
+** the target is replaced, not followed.  No fsync: figures are build
+** products (as the object files ninja writes), and a sync costs 4 to
+** 20 ms of waiting per file, more than rendering it. */
+cf_status_t
+cf_write_file(const char *path, const void *data, size_t n, cf_diag_t *diag)
+{
+    cf_diag_clear(diag);
+    const char *slash;
+    size_t dlen;
     char *tmp;
-    int fd;
+    int fd = -1;
     size_t off = 0;
     cf_status_t st = CF_STATUS_OK;
 
+    if (path == NULL || (data == NULL && n > 0))
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "write: path or data is NULL");
     if (path[0] == '\0' || path[strlen(path) - 1] == '/')
         return cf_diag_set(diag, CF_STATUS_IO, -1,
                            "\"%s\" is not a file name", path);
-    tmp = cf_malloc(dlen + 16);
+    slash = strrchr(path, '/');
+    dlen = slash != NULL ? (size_t)(slash - path) + 1 : 0;
+    tmp = cf_malloc(dlen + 24);
     if (tmp == NULL)
         return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
                            "out of memory for a file name");
     memcpy(tmp, path, dlen);
-    memcpy(tmp + dlen, ".cf-tmp-XXXXXX", 15);
-    fd = mkstemp(tmp);
+    memcpy(tmp + dlen, ".cf-tmp-", 8);
+    for (int tries = 0; fd < 0 && tries < 100; tries++) {
+        random_name(tmp + dlen + 8);
+        fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC,
+                  0666);
+        if (fd < 0 && errno != EEXIST)
+            break;
+    }
     if (fd < 0) {
         st = cf_diag_set(diag, CF_STATUS_IO, -1,
                          "cannot create a temporary file for \"%s\": %s",
@@ -406,26 +456,22 @@ write_atomic(const char *path, const unsigned char *data, size_t n,
         return st;
     }
     while (off < n) {
-        ssize_t w = write(fd, data + off, n - off);
+        ssize_t w = write(fd, (const unsigned char *)data + off, n - off);
         if (w < 0 && errno == EINTR)
             continue;
         if (w <= 0) {
             st = cf_diag_set(diag, CF_STATUS_IO, -1,
-                             "cannot write \"%s\": %s", tmp,
+                             "cannot write \"%s\": %s", path,
                              w < 0 ? strerror(errno) : "no progress");
             break;
         }
         off += (size_t)w;
     }
-    if (st == CF_STATUS_OK && fchmod(fd, 0644) != 0)
-        st = cf_diag_set(diag, CF_STATUS_IO, -1, "cannot chmod \"%s\": %s",
-                         tmp, strerror(errno));
     if (close(fd) != 0 && st == CF_STATUS_OK)
-        st = cf_diag_set(diag, CF_STATUS_IO, -1, "cannot close \"%s\": %s",
-                         tmp, strerror(errno));
+        st = cf_diag_set(diag, CF_STATUS_IO, -1, "cannot write \"%s\": %s",
+                         path, strerror(errno));
     if (st == CF_STATUS_OK && rename(tmp, path) != 0)
-        st = cf_diag_set(diag, CF_STATUS_IO, -1,
-                         "cannot rename the temporary file to \"%s\": %s",
+        st = cf_diag_set(diag, CF_STATUS_IO, -1, "cannot write \"%s\": %s",
                          path, strerror(errno));
     if (st != CF_STATUS_OK)
         unlink(tmp);
@@ -446,7 +492,7 @@ cf_figure_write(cf_figure_t *fig, const char *path, cf_format_t format,
     st = render_checked(fig, format, options, &buf, NULL, diag);
     if (st != CF_STATUS_OK)
         return st;
-    st = write_atomic(path, buf.data, buf.size, diag);
+    st = cf_write_file(path, buf.data, buf.size, diag);
     cf__buf_free(&buf);
     return st;
 }
@@ -476,7 +522,7 @@ write_steps(cf_figure_t *fig, const char *basename, unsigned formats,
                      cf_format_extension((cf_format_t)f));
             st = render_job(fig, (cf_format_t)f, &one, job, &buf, diag);
             if (st == CF_STATUS_OK)
-                st = write_atomic(path, buf.data, buf.size, diag);
+                st = cf_write_file(path, buf.data, buf.size, diag);
             cf__buf_free(&buf);
         }
     }
@@ -542,7 +588,7 @@ cf_figure_write_all(cf_figure_t *fig, const char *basename, unsigned formats,
         if (r == -1)
             st = render_job(fig, (cf_format_t)f, &o, &job, &buf, diag);
         if (st == CF_STATUS_OK)
-            st = write_atomic(path, buf.data, buf.size, diag);
+            st = cf_write_file(path, buf.data, buf.size, diag);
         if (f == CF_FORMAT_PS && derive_eps && st == CF_STATUS_OK) {
             ps = buf;
             memset(&buf, 0, sizeof buf);

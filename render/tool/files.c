@@ -1,16 +1,20 @@
 /*
-** Output files of the tool: directories, atomic writes, render manifests
+** Output files of the tool: directories, atomic writes (every file
+** through the renderer's one writer, cf_write_file), render manifests
 ** and the HTML gallery that `ninja figures` builds from them; directory
 ** listings.
 */
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/types.h>
+#include <unistd.h>
 
 #include "curvefig/figure.h"
+#include "curvefig/output.h"
 #include "tool.h"
 
 int
@@ -62,56 +66,111 @@ cf__tool_join(const char *dir, const char *name)
     return s;
 }
 
-static char *
-temp_name(const char *path)
+int
+cf__tool_open_atomic(cf__tool_out *o, const char *path)
 {
-    size_t n = strlen(path);
-    char *t = malloc(n + 8);
-    if (t != NULL)
-        snprintf(t, n + 8, "%s.tmp~", path);
-    return t;
-}
-
-FILE *
-cf__tool_open_atomic(const char *path)
-{
-    char *t = temp_name(path);
-    FILE *f;
-    if (t == NULL)
-        return NULL;
-    f = fopen(t, "wb");
-    free(t);
-    return f;
+    memset(o, 0, sizeof *o);
+    o->path = path;
+    o->f = open_memstream(&o->data, &o->size);
+    return o->f != NULL ? 0 : -1;
 }
 
 int
-cf__tool_close_atomic(FILE *f, const char *path)
+cf__tool_close_atomic(cf__tool_out *o)
 {
-    char *t = temp_name(path);
-    int bad = ferror(f);
-    if (fclose(f) != 0)
-        bad = 1;
-    if (t == NULL)
-        return -1;
-    if (bad || rename(t, path) != 0) {
-        int e = errno;
-        remove(t);
-        free(t);
-        errno = e;
-        return -1;
+    cf_diag_t diag;
+    int bad = ferror(o->f), rc = 0;
+    if (fclose(o->f) != 0 || bad) {
+        errno = EIO;
+        rc = -1;
+    } else {
+        errno = 0;
+        if (cf_write_file(o->path, o->data, o->size, &diag)
+            != CF_STATUS_OK) {
+            rc = -1;
+            if (errno == 0)
+                errno = EIO;
+        }
     }
-    free(t);
-    return 0;
+    free(o->data);
+    memset(o, 0, sizeof *o);
+    return rc;
 }
 
 void
-cf__tool_discard_atomic(FILE *f, const char *path)
+cf__tool_discard_atomic(cf__tool_out *o)
 {
-    char *t = temp_name(path);
-    fclose(f);
-    if (t != NULL)
-        remove(t);
-    free(t);
+    fclose(o->f);
+    free(o->data);
+    memset(o, 0, sizeof *o);
+}
+
+char *
+cf__tool_read_file(const char *path, size_t max, size_t *len,
+                   const char **why)
+{
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    struct stat sb;
+    char *buf = NULL;
+    size_t n = 0, cap;
+    *len = 0;
+    *why = NULL;
+    if (fd < 0) {
+        *why = strerror(errno);
+        return NULL;
+    }
+    /* a FIFO would block the reader for ever, a directory reads as
+    ** nothing: neither is a script */
+    if (fstat(fd, &sb) != 0) {
+        *why = strerror(errno);
+        close(fd);
+        return NULL;
+    }
+    if (!S_ISREG(sb.st_mode)) {
+        *why = S_ISDIR(sb.st_mode) ? "it is a directory, not a file"
+                                   : "it is not a regular file (a FIFO, "
+                                     "a socket or a device)";
+        close(fd);
+        return NULL;
+    }
+    if ((unsigned long long)sb.st_size > max) {
+        *why = "the file is too large";
+        close(fd);
+        return NULL;
+    }
+    cap = (size_t)sb.st_size + 4097;
+    for (;;) {
+        ssize_t got;
+        if (n + 1 >= cap) {
+            char *p = n >= max ? NULL : realloc(buf, cap * 2);
+            if (p == NULL) {
+                *why = n >= max ? "the file is too large" : "out of memory";
+                break;
+            }
+            buf = p;
+            cap *= 2;
+        } else if (buf == NULL && (buf = malloc(cap)) == NULL) {
+            *why = "out of memory";
+            break;
+        }
+        got = read(fd, buf + n, cap - n - 1);
+        if (got < 0 && errno == EINTR)
+            continue;
+        if (got < 0) {
+            *why = strerror(errno);
+            break;
+        }
+        if (got == 0) {
+            close(fd);
+            buf[n] = '\0';
+            *len = n;
+            return buf;
+        }
+        n += (size_t)got;
+    }
+    close(fd);
+    free(buf);
+    return NULL;
 }
 
 /* Captions keep to one line in the manifest. */
@@ -153,6 +212,7 @@ cf__tool_put_html(FILE *f, const char *s, size_t n)
         case '<': fputs("&lt;", f); break;
         case '>': fputs("&gt;", f); break;
         case '"': fputs("&quot;", f); break;
+        case '\'': fputs("&#39;", f); break;
         default: fputc(s[i], f); break;
         }
     }

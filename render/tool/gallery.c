@@ -36,7 +36,8 @@ static const char gallery_head[] =
     "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
     "<meta name=\"viewport\" "
     "content=\"width=device-width, initial-scale=1\">\n"
-    "<title>%s</title>\n<style>\n"
+    "<title>";
+static const char gallery_style[] = "</title>\n<style>\n"
     "body{font-family:serif;margin:2em auto;max-width:90em;padding:0 1em}\n"
     "nav li{margin:.3em 0}nav a{text-decoration:none}\n"
     "h2{margin:1.5em 0 .5em;border-bottom:1px solid #ccc}\n"
@@ -46,7 +47,7 @@ static const char gallery_head[] =
     ".figs{display:grid;grid-template-columns:repeat(auto-fill,"
     "minmax(18em,1fr));gap:1em;align-content:start}\n"
     "figure{margin:0;padding:.5em;border:1px solid #ddd;border-radius:4px}\n"
-    "figure img{width:100%%;height:14em;object-fit:contain}\n"
+    "figure img{width:100%;height:14em;object-fit:contain}\n"
     "figcaption{font-size:.9em}\nfigcaption b{font-family:monospace}\n"
     ".src h3{font:bold .9em monospace;margin:0 0 .3em}\n"
     ".src pre{font-size:.75em;max-height:40em;overflow:auto;margin:0;"
@@ -55,7 +56,7 @@ static const char gallery_head[] =
     "font-size:.75em;line-height:1.05}\n"
     ".ss sup,.ss sub{font-size:1em;vertical-align:baseline}\n"
     "@media (max-width:60em){.script{grid-template-columns:1fr}}\n"
-    "</style>\n</head>\n<body>\n<h1>%s</h1>\n";
+    "</style>\n</head>\n<body>\n<h1>";
 
 static const char *
 group_title(const char *prefix, size_t n)
@@ -197,7 +198,11 @@ put_figure(FILE *out, const entry_t *e)
         upper[k] = '\0';
         fputs(" <a href=\"", out);
         cf__tool_put_html(out, name, strlen(name));
-        fprintf(out, ".%s\">%s</a>", f, upper);
+        fputc('.', out);
+        cf__tool_put_html(out, f, strlen(f));
+        fputs("\">", out);
+        cf__tool_put_html(out, upper, strlen(upper));
+        fputs("</a>", out);
     }
     if (e->script[0] != '\0') {
         fputs(" · <a href=\"#src-", out);
@@ -388,6 +393,7 @@ int
 cf__tool_gallery(const char *out_path, const char *title,
                  const char *const *manifests, int count)
 {
+    cf__tool_out o;
     FILE *out;
     entry_t *es;
     size_t n;
@@ -398,20 +404,24 @@ cf__tool_gallery(const char *out_path, const char *title,
     es = read_manifests(manifests, count, &n);
     if (es == NULL)
         return 2;
-    out = cf__tool_open_atomic(out_path);
-    if (out == NULL) {
+    if (cf__tool_open_atomic(&o, out_path) != 0) {
         fprintf(stderr, "curvefig: cannot write %s: %s\n", out_path,
                 strerror(errno));
         free_entries(es, n);
         return 1;
     }
-    fprintf(out, gallery_head, title, title);
+    out = o.f;
+    fputs(gallery_head, out);
+    cf__tool_put_html(out, title, strlen(title));
+    fputs(gallery_style, out);
+    cf__tool_put_html(out, title, strlen(title));
+    fputs("</h1>\n", out);
     put_index(out, es, n);
     fputs("<main>\n", out);
     put_body(out, es, n);
     fputs("</main>\n</body>\n</html>\n", out);
     free_entries(es, n);
-    if (cf__tool_close_atomic(out, out_path) != 0) {
+    if (cf__tool_close_atomic(&o) != 0) {
         fprintf(stderr, "curvefig: cannot write %s: %s\n", out_path,
                 strerror(errno));
         return 1;

@@ -3,7 +3,8 @@
 ** everything inline, and a Content-Security-Policy that lets it load
 ** nothing at all (default-src 'none'; inline script and style, the
 ** module compiled from the page's own bytes).  Values (the script's text,
-** the glyph data, the module's base64) are JavaScript string literals in
+** the glyph data, the module's base64, the source of the Web Worker that
+** runs the module: render/web/worker.js) are JavaScript string literals in
 ** which "<" is written \u003c, so that no text of theirs ends the script
 ** element.
 */
@@ -27,13 +28,12 @@ put_lines(FILE *f, const char *const *lines)
         fputs(*lines, f);
 }
 
-/* s as a JSON string (also a JavaScript one), "<" escaped. */
+/* s as the inside of a JSON string (also a JavaScript one), "<" escaped
+** so that no text of it ends the script element. */
 static void
-put_string(FILE *f, const char *s, size_t n)
+put_escaped(FILE *f, const char *s, size_t n)
 {
-    size_t i;
-    fputc('"', f);
-    for (i = 0; i < n; i++) {
+    for (size_t i = 0; i < n; i++) {
         unsigned char c = (unsigned char)s[i];
         if (c == '"' || c == '\\')
             fprintf(f, "\\%c", c);
@@ -44,55 +44,32 @@ put_string(FILE *f, const char *s, size_t n)
         else
             fputc(c, f);
     }
-    fputc('"', f);
 }
 
 static void
-put_html_text(FILE *f, const char *s)
+put_string(FILE *f, const char *s, size_t n)
 {
-    for (; *s != '\0'; s++) {
-        if (*s == '<')
-            fputs("&lt;", f);
-        else if (*s == '&')
-            fputs("&amp;", f);
-        else
-            fputc(*s, f);
-    }
+    fputc('"', f);
+    put_escaped(f, s, n);
+    fputc('"', f);
 }
 
-static char *
-read_all(const char *path, size_t *n)
+/* The lines of embedded files as one JSON string. */
+static void
+put_lines_string(FILE *f, const char *const *a, const char *const *b)
 {
-    FILE *f = fopen(path, "rb");
-    char *buf = NULL;
-    size_t cap = 0;
-    *n = 0;
-    if (f == NULL)
-        return NULL;
-    for (;;) {
-        size_t got;
-        if (*n + 4096 + 1 > cap) {
-            char *t = realloc(buf, cap = 2 * cap + 8192);
-            if (t == NULL) {
-                free(buf);
-                fclose(f);
-                return NULL;
-            }
-            buf = t;
-        }
-        got = fread(buf + *n, 1, cap - *n - 1, f);
-        *n += got;
-        if (got == 0)
-            break;
-    }
-    fclose(f);
-    buf[*n] = '\0';
-    return buf;
+    fputc('"', f);
+    for (; *a != NULL; a++)
+        put_escaped(f, *a, strlen(*a));
+    for (; *b != NULL; b++)
+        put_escaped(f, *b, strlen(*b));
+    fputc('"', f);
 }
 
 int
 cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
-                    const char *path, char *err, size_t errsize)
+                    const cf__tool_limits *limits, const char *path,
+                    char *err, size_t errsize)
 {
     cf_figure_t *fig = cf_script_figure(s, i);
     const char *name = cf_script_figure_name(s, i);
@@ -100,12 +77,14 @@ cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
     const char *base = strrchr(script_path, '/');
     char *code, *glyphs = NULL;
     size_t code_len, glyphs_len;
+    const char *why;
     cf_diag_t d;
+    cf__tool_out out;
     FILE *f;
-    code = read_all(script_path, &code_len);
+    code = cf__tool_read_file(script_path, (size_t)64 << 20, &code_len,
+                              &why);
     if (code == NULL) {
-        snprintf(err, errsize, "cannot read %s: %s", script_path,
-                 strerror(errno));
+        snprintf(err, errsize, "cannot read %s: %s", script_path, why);
         return -1;
     }
     if (cf_figures_glyph_data(&fig, 1, &glyphs, &glyphs_len, &d)
@@ -114,26 +93,28 @@ cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
         free(code);
         return -1;
     }
-    f = cf__tool_open_atomic(path);
-    if (f == NULL) {
+    if (cf__tool_open_atomic(&out, path) != 0) {
         snprintf(err, errsize, "cannot write %s: %s", path, strerror(errno));
         free(code);
         cf_free(glyphs);
         return -1;
     }
+    f = out.f;
     fputs("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
           "<meta http-equiv=\"Content-Security-Policy\" content=\""
           "default-src 'none'; script-src 'unsafe-inline' "
-          "'wasm-unsafe-eval'; style-src 'unsafe-inline'; img-src data:\">\n"
+          "'wasm-unsafe-eval'; style-src 'unsafe-inline'; img-src data:; "
+          "worker-src blob:\">\n"
           "<meta name=\"viewport\" content=\"width=device-width\">\n<title>",
           f);
-    put_html_text(f, caption != NULL && caption[0] != '\0' ? caption : name);
+    if (caption == NULL || caption[0] == '\0')
+        caption = name;
+    cf__tool_put_html(f, caption, strlen(caption));
     fputs("</title>\n<link rel=\"icon\" href=\"data:,\">\n<style>\n", f);
     put_lines(f, html_css);
     fputs("</style>\n</head>\n<body>\n<div id=\"curvefig\"></div>\n"
           "<script>\n", f);
     put_lines(f, html_page_js);
-    put_lines(f, html_wasm_js);
     put_lines(f, html_engine_js);
     fputs("CurvefigPage(document.getElementById('curvefig'), "
           "new CurvefigWasmEngine({\nfigure: ", f);
@@ -145,12 +126,18 @@ cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
     put_string(f, code, code_len);
     fputs(",\nglyphs: ", f);
     put_string(f, glyphs, glyphs_len);
+    fprintf(f, ",\ntimeout: %g,\nmemory: %g,\ninstructions: %.17g",
+            limits->timeout,
+            (double)(limits->script.max_memory >> 20),
+            (double)limits->script.max_instructions);
+    fputs(",\nworker: ", f);
+    put_lines_string(f, html_wasm_js, html_worker_js);
     fputs(",\nwasm: \"", f);
     put_lines(f, web_wasm_b64);
     fputs("\"}));\n</script>\n</body></html>\n", f);
     free(code);
     cf_free(glyphs);
-    if (cf__tool_close_atomic(f, path) != 0) {
+    if (cf__tool_close_atomic(&out) != 0) {
         snprintf(err, errsize, "cannot write %s: %s", path, strerror(errno));
         return -1;
     }
@@ -159,11 +146,13 @@ cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
 #else
 int
 cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
-                    const char *path, char *err, size_t errsize)
+                    const cf__tool_limits *limits, const char *path,
+                    char *err, size_t errsize)
 {
     (void)s;
     (void)i;
     (void)script_path;
+    (void)limits;
     (void)path;
     snprintf(err, errsize,
              "-f html needs the WebAssembly module, which this curvefig "

@@ -10,15 +10,19 @@
 
 #include <stddef.h>
 
+#include "runlimits.h"
 #include "script.h"
 
 /* The `-f` name and its bit beside the cf_format_t bits. */
 #define CF__TOOL_HTML_BIT (1u << 30)
 
 /* Write figure i of s (run from the file script_path, with its defaults)
-** to path; 0, or -1 with the reason in err. */
+** to path; the page runs the script under limits (a run past
+** limits->timeout is stopped in the page).  0, or -1 with the reason in
+** err. */
 int cf__tool_write_html(const cf_script_t *s, size_t i,
-                        const char *script_path, const char *path, char *err,
-                        size_t errsize);
+                        const char *script_path,
+                        const cf__tool_limits *limits, const char *path,
+                        char *err, size_t errsize);
 
 #endif

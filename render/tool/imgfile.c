@@ -325,14 +325,14 @@ write_stream(void *closure, const unsigned char *data, unsigned int length)
 int
 cf__tool_image_write_png(cairo_surface_t *s, const char *path)
 {
-    FILE *f = cf__tool_open_atomic(path);
-    if (f == NULL)
+    cf__tool_out out;
+    if (cf__tool_open_atomic(&out, path) != 0)
         return -1;
-    if (cairo_surface_write_to_png_stream(s, write_stream, f) !=
+    if (cairo_surface_write_to_png_stream(s, write_stream, out.f) !=
         CAIRO_STATUS_SUCCESS) {
-        cf__tool_discard_atomic(f, path);
+        cf__tool_discard_atomic(&out);
         errno = EIO;
         return -1;
     }
-    return cf__tool_close_atomic(f, path);
+    return cf__tool_close_atomic(&out);
 }

@@ -7,7 +7,7 @@
 #include "live.h"
 
 int
-cf__live_serve(const char *script, const cf_script_limits_t *limits,
+cf__live_serve(const char *script, const cf__tool_limits *limits,
                unsigned port)
 {
     (void)limits;

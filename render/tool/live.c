@@ -1,7 +1,7 @@
 /*
-** `curvefig live SCRIPT.lua [--port N]`: the live view of an interactive
-** figure, a web server on 127.0.0.1 (libmicrohttpd) with a random token in
-** its URL:
+** `curvefig live SCRIPT.lua [--port N] [LIMITS]`: the live view of an
+** interactive figure, a web server on 127.0.0.1 (libmicrohttpd) with a
+** random token in its URL:
 **
 **   GET  /TOKEN/              the page (render/web: page.js, live.js, page.css)
 **   POST /TOKEN/run           body: the values as JSON; reply: the JSON of
@@ -10,10 +10,12 @@
 **                             differs from V, or V after 20 s (long poll)
 **
 ** Any other path is 403 without the token and 404 with it.  Every run
-** reads the script again and runs it in a fresh sandbox with the limits of
-** render; one run at a time.  `curvefig live SCRIPT.lua --once [VALUES]`
-** prints the JSON of one run (VALUES: the values' JSON, default {}), in
-** every build.
+** reads the script again and runs it in a fresh sandbox, in a child
+** process (live-child.c), with the limits of render (--max-memory,
+** --max-instructions, --timeout): a run past the time limit is killed and
+** its error shown in the page; one run at a time.  `curvefig live
+** SCRIPT.lua --once [VALUES]` prints the JSON of one run (VALUES: the
+** values' JSON, default {}), in every build, under the same limits.
 */
 #include <errno.h>
 #include <fcntl.h>
@@ -29,70 +31,78 @@
 
 #include "interactive.h"
 #include "live.h"
+#include "runlimits.h"
 #include "tool.h"
 
 #define EXIT_SCRIPT 1
 #define EXIT_USAGE 2
 
-/* Read path whole (NUL-terminated, malloc'd), NULL on failure (errno). */
-static char *
-read_file(const char *path, size_t max)
+/* The JSON of a run that failed with msg before or outside the script
+** (an unreadable script, the time limit): the same JSON as a script's
+** error, made by running error(msg) in a sandbox of its own. */
+char *
+cf__live_error_json(const char *script, const char *msg, char *error,
+                    size_t error_len)
 {
-    FILE *f = fopen(path, "rb");
-    char *buf = NULL;
-    size_t len = 0, cap = 0;
-    if (f == NULL)
+    char *code = malloc(strlen(msg) * 4 + 32), *json = NULL;
+    size_t n, jlen;
+    if (code == NULL)
         return NULL;
-    for (;;) {
-        size_t n;
-        if (len + 4096 + 1 > cap) {
-            char *p;
-            cap = cap ? 2 * cap : 16384;
-            if (cap > max + 4097 || (p = realloc(buf, cap)) == NULL) {
-                free(buf);
-                fclose(f);
-                errno = EFBIG;
-                return NULL;
-            }
-            buf = p;
+    memcpy(code, "error(\"", 7);
+    n = 7;
+    for (const unsigned char *p = (const unsigned char *)msg; *p; p++) {
+        if (*p == '"' || *p == '\\' || *p < 32) {
+            /* Lua's decimal escape */
+            code[n++] = '\\';
+            code[n++] = (char)('0' + *p / 100);
+            code[n++] = (char)('0' + *p / 10 % 10);
+            code[n++] = (char)('0' + *p % 10);
+        } else {
+            code[n++] = (char)*p;
         }
-        n = fread(buf + len, 1, 4096, f);
-        len += n;
-        if (n < 4096)
-            break;
     }
-    fclose(f);
-    buf[len] = '\0';
-    return buf;
+    memcpy(code + n, "\", 0)", 6);
+    cf_interactive_run_error(code, script, "{}", 2, NULL, stderr, &json,
+                             &jlen, error, error_len);
+    free(code);
+    return json;
+}
+
+void
+cf__live_warm(void)
+{
+    static const char code[] =
+        "local f = figure{ name = \"warm\", width = \"3cm\", "
+        "height = \"2cm\", window = { 0, 1, 0, 1 } }\n"
+        "f:curve(bezier{ { 0, 0 }, { 0.5, 1 }, { 1, 0 } })\n"
+        "f:label({ 0.5, 0.5 }, \"P_0 b_0^4(t) = 0.75, \\\\alpha\", "
+        "{ place = \"auto\" })\n";
+    char *json = NULL;
+    size_t len;
+    cf_interactive_run(code, "warm-up", "{}", 2, NULL, stderr, &json, &len);
+    free(json);
 }
 
 /* One run of the script with these values: the JSON (free()) and whether
-** the values were good. */
+** the values were good.  The script is read afresh: a file that is no
+** longer a regular file (a directory, a FIFO put in its place) is an
+** error in the page, not an empty run or a reader blocked for ever. */
 char *
 cf__live_run(const char *script, const cf_script_limits_t *limits,
              const char *values, size_t len, bool *bad_values, char *error,
              size_t error_len)
 {
-    char *code = read_file(script, (size_t)64 << 20), *json = NULL;
-    size_t jlen;
+    size_t clen, jlen;
+    const char *why;
+    char *code = cf__tool_read_file(script, (size_t)64 << 20, &clen, &why);
+    char *json = NULL;
     cf_status_t st;
     *bad_values = false;
     if (code == NULL) {
-        /* the same JSON, with the error in it */
         char msg[600];
-        size_t n;
         snprintf(msg, sizeof msg, "cannot read the script %s: %s", script,
-                 strerror(errno));
-        code = malloc(strlen(msg) * 2 + 64);
-        if (code == NULL)
-            return NULL;
-        n = (size_t)sprintf(code, "error(\"");
-        for (const char *p = msg; *p; p++) {
-            if (*p == '"' || *p == '\\')
-                code[n++] = '\\';
-            code[n++] = *p;
-        }
-        strcpy(code + n, "\", 0)");
+                 why);
+        return cf__live_error_json(script, msg, error, error_len);
     }
     st = cf_interactive_run_error(code, script, values, len, limits, stderr,
                                   &json, &jlen, error, error_len);
@@ -117,24 +127,33 @@ void
 cf__tool_live_help(void)
 {
     fputs(
-        "usage: curvefig live SCRIPT.lua [--port N]\n"
-        "       curvefig live SCRIPT.lua --once [VALUES]\n"
+        "usage: curvefig live SCRIPT.lua [--port N] [LIMITS]\n"
+        "       curvefig live SCRIPT.lua --once [VALUES] [LIMITS]\n"
         "\n"
         "Serve the figures of an interactive script (slider{...} and\n"
         "points{...}, docs/interactive.md) on 127.0.0.1 and print the\n"
         "address to open, which carries a random token: a request without\n"
         "it is refused (403), so no other page or user can drive the server.\n"
         "Moving a slider or dragging a point runs the script again in a\n"
-        "fresh sandbox (the limits of render) and redraws; a script error\n"
-        "is shown in the page; saving the script reloads the page.  The\n"
-        "page shows the current values as Lua, to paste into the script.\n"
+        "fresh sandbox, in a process of its own under the limits of render,\n"
+        "and redraws; a script error is shown in the page, as is a run\n"
+        "that exceeds a limit (it is stopped; the server runs on); saving\n"
+        "the script reloads the page.  The page shows the current values\n"
+        "as Lua, to paste into the script.  docs/interactive.md, \"Security\",\n"
+        "says what the token protects and what a script can do.\n"
         "\n"
         "Options:\n"
         "  --port N            the port (default 0: a free port)\n"
         "  --once [VALUES]     print the JSON of one run and exit (VALUES:\n"
         "                      {\"t\": 0.5, \"P\": [[0, 0], [1, 2]]}; default {});\n"
         "                      exits 1 with the message (file:line) on a\n"
-        "                      script error, 2 on bad values\n",
+        "                      script error or a limit, 2 on bad values\n"
+        "Limits of every run (as for render):\n"
+        "  --max-memory MIB    memory a run may use (default 256)\n"
+        "  --max-instructions N  Lua instructions a run may execute\n"
+        "                      (default 5e8)\n"
+        "  --timeout S         wall-clock seconds of a run (default 120);\n"
+        "                      the run's process is then killed\n",
         stdout);
 }
 
@@ -153,8 +172,9 @@ cf__tool_live(int argc, char **argv)
     const char *script = NULL, *once = NULL;
     bool want_once = false;
     long port = 0;
-    cf_script_limits_t limits = { 0, 0 };
-    struct stat sb;
+    cf__tool_limits limits = { { 0, 0 }, CF__TOOL_TIMEOUT };
+    char msg[200];
+    int lim;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
@@ -170,6 +190,11 @@ cf__tool_live(int argc, char **argv)
                 port > 65535)
                 return usage("--port '%s': give a port from 0 to 65535 (0: "
                              "any free port)", argv[i]);
+        } else if (i + 1 < argc && (lim = cf__tool_limit_option(
+                       a, argv[i + 1], &limits, msg, sizeof msg)) != 0) {
+            if (lim < 0)
+                return usage("%s", msg);
+            i++;
         } else if (strcmp(a, "--once") == 0) {
             want_once = true;
             if (i + 1 < argc && argv[i + 1][0] == '{')
@@ -184,17 +209,23 @@ cf__tool_live(int argc, char **argv)
     }
     if (script == NULL)
         return usage("%sno script given", "");
-    if (stat(script, &sb) != 0 || !S_ISREG(sb.st_mode))
-        return fprintf(stderr, "curvefig: cannot read the script %s: %s\n",
-                       script, errno ? strerror(errno) : "not a regular file"),
-               EXIT_USAGE;
+    {
+        /* the script readable now (runs read it again each time) */
+        size_t len;
+        const char *why;
+        char *code = cf__tool_read_file(script, (size_t)64 << 20, &len, &why);
+        if (code == NULL)
+            return fprintf(stderr, "curvefig: cannot read the script %s: "
+                           "%s\n", script, why), EXIT_USAGE;
+        free(code);
+    }
     cf__tool_fonts_init();
     if (want_once) {
         bool bad;
         char error[1024];
         const char *v = once != NULL ? once : "{}";
-        char *json = cf__live_run(script, &limits, v, strlen(v), &bad, error,
-                                  sizeof error);
+        char *json = cf__live_run_child(script, &limits, v, strlen(v), -1,
+                                        &bad, error, sizeof error);
         if (json == NULL)
             return fprintf(stderr, "curvefig: out of memory\n"), EXIT_SCRIPT;
         fputs(json, stdout);

@@ -8,9 +8,10 @@
 #include <stdbool.h>
 #include <stddef.h>
 
+#include "runlimits.h"
 #include "script.h"
 
-/* `curvefig live SCRIPT.lua [--port N] [--once [VALUES]]`; argv[0] is
+/* `curvefig live SCRIPT.lua [--port N] [--once [VALUES]] [LIMITS]`; argv[0] is
 ** "live".  Returns the exit status. */
 int cf__tool_live(int argc, char **argv);
 void cf__tool_live_help(void);
@@ -22,12 +23,30 @@ void cf__tool_live_help(void);
 char *cf__live_run(const char *script, const cf_script_limits_t *limits,
                    const char *values, size_t len, bool *bad_values,
                    char *error, size_t error_len);
+/* The same JSON for a run that failed with msg outside the script (an
+** unreadable script, a limit); msg also into error (NULL: not asked). */
+char *cf__live_error_json(const char *script, const char *msg, char *error,
+                          size_t error_len);
+/* cf__live_run in a child process (live-child.c) under limits: killed
+** after limits->timeout seconds (the JSON then says so), or as soon as
+** stop_fd (-1: none) becomes readable; a run that crashes is an error in
+** the JSON too.  NULL only when memory ran out. */
+char *cf__live_run_child(const char *script, const cf__tool_limits *limits,
+                         const char *values, size_t len, int stop_fd,
+                         bool *bad_values, char *error, size_t error_len);
+/* Run a small figure of our own (a curve, a label in the default fonts)
+** in this thread, so that the processes it forks for runs start with the
+** fonts loaded and the caches of pango, fontconfig and cairo warm (pango's
+** font map is one per thread). */
+void cf__live_warm(void);
+/* Seconds of a monotonic clock. */
+double cf__live_clock(void);
 /* A text that changes whenever the script file is saved. */
 void cf__live_version(const char *script, char out[64]);
 
 /* Serve the live view of script on 127.0.0.1:port (0: a free port) until
 ** SIGINT or SIGTERM; prints the URL.  Returns the exit status. */
-int cf__live_serve(const char *script, const cf_script_limits_t *limits,
+int cf__live_serve(const char *script, const cf__tool_limits *limits,
                    unsigned port);
 
 #endif

@@ -18,15 +18,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <signal.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include "curvefig/figure.h"
 #include "help.h"
 #include "helpers.h"
 #include "html.h"
 #include "pango-lazy.h"
+#include "runlimits.h"
 #include "script.h"
 #include "tool.h"
 
@@ -42,7 +41,6 @@ typedef struct options {
     const char *gallery_title;
     unsigned formats;
     double dpi;
-    double timeout;
     bool tight;
     const char *font;         /* --font, --theme: NULL the scripts' */
     double font_size;         /* bp; 0 the scripts' */
@@ -53,7 +51,7 @@ typedef struct options {
     bool no_labels;
     bool verbose;
     bool long_list;
-    cf_script_limits_t limits;
+    cf__tool_limits limits;
     int nfiles;
     char **files;
 } options;
@@ -131,19 +129,6 @@ parse_formats(const char *list, unsigned *out)
     return *out != 0 ? 0 : -1;
 }
 
-static int
-parse_number(const char *s, double lo, double hi, double *out)
-{
-    char *end;
-    double v;
-    errno = 0;
-    v = strtod(s, &end);
-    if (errno != 0 || end == s || *end != '\0' || !(v >= lo && v <= hi))
-        return -1;
-    *out = v;
-    return 0;
-}
-
 /* A font size: a number in TeX points, or a number and a unit (texpt,
 ** bp, mm, cm, in); bp in *out. */
 static int
@@ -201,7 +186,7 @@ parse_args(int argc, char **argv, options *o, int *rc)
                  CF_FORMAT_BIT(CF_FORMAT_PNG);
     o->dpi = 150;
     o->seed = CF_SCRIPT_DEFAULT_SEED;
-    o->timeout = 120;
+    o->limits.timeout = CF__TOOL_TIMEOUT;
     if (argc < 2) {
         *rc = usage_error("%sno command given", "");
         return -1;
@@ -235,7 +220,8 @@ parse_args(int argc, char **argv, options *o, int *rc)
         const char *a = argv[i];
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
         bool takes = true;
-        double num;
+        char msg[200];
+        int lim;
         if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
             *rc = cf__tool_help(o->command);
             return -1;
@@ -272,7 +258,7 @@ parse_args(int argc, char **argv, options *o, int *rc)
                 return -1;
             }
         } else if (strcmp(a, "--dpi") == 0) {
-            if (parse_number(v, 1, 2400, &o->dpi) != 0) {
+            if (cf__tool_number(v, 1, 2400, &o->dpi) != 0) {
                 *rc = usage_error("--dpi '%s': give a number from 1 to 2400",
                                   v);
                 return -1;
@@ -330,24 +316,10 @@ parse_args(int argc, char **argv, options *o, int *rc)
             o->manifest = v;
         } else if (strcmp(a, "--title") == 0) {
             o->gallery_title = v;
-        } else if (strcmp(a, "--max-memory") == 0) {
-            if (parse_number(v, 1, 65536, &num) != 0) {
-                *rc = usage_error("--max-memory '%s': give MiB from 1 to "
-                                  "65536", v);
-                return -1;
-            }
-            o->limits.max_memory = (size_t)num << 20;
-        } else if (strcmp(a, "--max-instructions") == 0) {
-            if (parse_number(v, 1e4, 1e15, &num) != 0) {
-                *rc = usage_error("--max-instructions '%s': give a number "
-                                  "from 10000 to 1e15", v);
-                return -1;
-            }
-            o->limits.max_instructions = (unsigned long long)num;
-        } else if (strcmp(a, "--timeout") == 0) {
-            if (parse_number(v, 1, 86400, &o->timeout) != 0) {
-                *rc = usage_error("--timeout '%s': give seconds from 1 to "
-                                  "86400", v);
+        } else if ((lim = cf__tool_limit_option(a, v, &o->limits, msg,
+                                                sizeof msg)) != 0) {
+            if (lim < 0) {
+                *rc = usage_error("%s", msg);
                 return -1;
             }
         } else if (strcmp(a, "--") == 0) {
@@ -390,39 +362,6 @@ parse_args(int argc, char **argv, options *o, int *rc)
     }
     o->script = o->files[0];
     return 0;
-}
-
-/* ---- the watchdog ------------------------------------------------------- */
-
-/* The instruction limit cannot see time spent inside one C function (a
-** pathological string pattern, say): a wall-clock alarm ends the process.
-** Only async-signal-safe calls here. */
-static char alarm_msg[600];
-static size_t alarm_len;
-
-static void
-on_alarm(int sig)
-{
-    (void)sig;
-    if (write(STDERR_FILENO, alarm_msg, alarm_len) < 0)
-        _exit(1);
-    _exit(1);
-}
-
-static void
-start_watchdog(const char *script, double seconds)
-{
-    struct sigaction sa;
-    int n = snprintf(alarm_msg, sizeof alarm_msg, "curvefig: %s: the script "
-                     "exceeded the time limit of %g s (--timeout)\n",
-                     script, seconds);
-    alarm_len = n < 0 ? 0 : (size_t)n < sizeof alarm_msg
-                                ? (size_t)n : sizeof alarm_msg - 1;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_alarm;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGALRM, &sa, NULL);
-    alarm((unsigned)seconds);
 }
 
 /* ---- render, run, list -------------------------------------------------- */
@@ -530,7 +469,7 @@ static int
 render_figures(const cf_script_t *s, const options *o)
 {
     cf_write_options_t wo;
-    FILE *man = NULL;
+    cf__tool_out man;
     int rc = 0;
     cf_write_options_init(&wo);
     wo.dpi = o->dpi;
@@ -568,8 +507,8 @@ render_figures(const cf_script_t *s, const options *o)
                 return EXIT_SCRIPT;
             }
             sprintf(html, "%s.html", base);
-            if (cf__tool_write_html(s, i, o->script, html, diag.msg,
-                                    sizeof diag.msg) != 0)
+            if (cf__tool_write_html(s, i, o->script, &o->limits, html,
+                                    diag.msg, sizeof diag.msg) != 0)
                 st = CF_STATUS_INVALID_ARG;
             else if (o->verbose)
                 printf("%s\n", html);
@@ -595,8 +534,7 @@ render_figures(const cf_script_t *s, const options *o)
         free(base);
     }
     if (rc == 0 && o->manifest != NULL) {
-        man = cf__tool_open_atomic(o->manifest);
-        if (man == NULL) {
+        if (cf__tool_open_atomic(&man, o->manifest) != 0) {
             fprintf(stderr, "curvefig: cannot write %s: %s\n", o->manifest,
                     strerror(errno));
             return EXIT_SCRIPT;
@@ -604,11 +542,11 @@ render_figures(const cf_script_t *s, const options *o)
         for (size_t i = 0; i < cf_script_figure_count(s); i++) {
             if (!selected(o->only, cf_script_figure_name(s, i)))
                 continue;
-            cf__tool_manifest_line(man, cf_script_figure_name(s, i),
+            cf__tool_manifest_line(man.f, cf_script_figure_name(s, i),
                                    cf_script_figure_caption(s, i),
                                    o->formats, o->script);
         }
-        if (cf__tool_close_atomic(man, o->manifest) != 0) {
+        if (cf__tool_close_atomic(&man) != 0) {
             fprintf(stderr, "curvefig: cannot write %s: %s\n", o->manifest,
                     strerror(errno));
             return EXIT_SCRIPT;
@@ -636,12 +574,12 @@ run_script(const options *o)
                 o->script, errno ? strerror(errno) : "not a regular file");
         return EXIT_USAGE;
     }
-    start_watchdog(o->script, o->timeout);
+    cf__tool_watchdog(o->script, o->limits.timeout);
     /* the fonts are configured when the first label opens pango */
     cf__pango_before_open(fonts_init);
     cf_diag_clear(&diag);
     /* list keeps stdout for the names: the script's prints go to stderr */
-    st = cf_script_create(&o->limits,
+    st = cf_script_create(&o->limits.script,
                           strcmp(o->command, "list") == 0 ? stderr : stdout,
                           &s, &diag);
     if (st != CF_STATUS_OK) {

@@ -16,25 +16,25 @@ copy_atomic(const char *from, const char *to)
 {
     char buf[65536];
     size_t n;
-    FILE *in = fopen(from, "rb"), *out;
+    FILE *in = fopen(from, "rb");
+    cf__tool_out out;
     if (in == NULL)
         return -1;
-    out = cf__tool_open_atomic(to);
-    if (out == NULL) {
+    if (cf__tool_open_atomic(&out, to) != 0) {
         fclose(in);
         return -1;
     }
     while ((n = fread(buf, 1, sizeof buf, in)) > 0)
-        if (fwrite(buf, 1, n, out) != n)
+        if (fwrite(buf, 1, n, out.f) != n)
             break;
     if (ferror(in) || n > 0) {
         fclose(in);
-        cf__tool_discard_atomic(out, to);
+        cf__tool_discard_atomic(&out);
         errno = EIO;
         return -1;
     }
     fclose(in);
-    return cf__tool_close_atomic(out, to);
+    return cf__tool_close_atomic(&out);
 }
 
 /* What the old reference at ref_path is to the new image png. */

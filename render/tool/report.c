@@ -64,9 +64,11 @@ int
 cf__tool_report_write(const char *path, const char *summary,
                       const cf__tool_failure *fails, size_t count)
 {
-    FILE *f = cf__tool_open_atomic(path);
-    if (f == NULL)
+    cf__tool_out out;
+    FILE *f;
+    if (cf__tool_open_atomic(&out, path) != 0)
         return -1;
+    f = out.f;
     fputs(report_head, f);
     fprintf(f, "<p class=\"%s\">", count > 0 ? "fail" : "ok");
     text(f, summary);
@@ -92,5 +94,5 @@ cf__tool_report_write(const char *path, const char *summary,
         fputs("</div>\n</section>\n", f);
     }
     fputs("</body>\n</html>\n", f);
-    return cf__tool_close_atomic(f, path);
+    return cf__tool_close_atomic(&out);
 }

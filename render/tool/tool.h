@@ -4,18 +4,36 @@
 #ifndef CURVEFIG_TOOL_H
 #define CURVEFIG_TOOL_H
 
+#include <stddef.h>
 #include <stdio.h>
 
 /* mkdir -p; 0 on success (errno set otherwise). */
 int cf__tool_mkdir_p(const char *dir);
 /* dir + "/" + name, malloc'd (NULL when out of memory). */
 char *cf__tool_join(const char *dir, const char *name);
-/* Write to path through a temporary file renamed on close, so that a
-** failure never leaves a half-written file.  NULL on failure (errno). */
-FILE *cf__tool_open_atomic(const char *path);
-int cf__tool_close_atomic(FILE *f, const char *path);
-/* Close and remove the temporary file (the target is left as it was). */
-void cf__tool_discard_atomic(FILE *f, const char *path);
+/* A file written whole at its close through the one writer of every
+** curvefig file (cf_write_file: a new file of a random name, created
+** exclusively, renamed over path), so that a failure never leaves a
+** half-written file and no planted symbolic link is followed.  Write to
+** o->f; open and close return -1 on failure (errno). */
+typedef struct cf__tool_out {
+    FILE *f;
+    const char *path;
+    char *data;        /* the bytes so far (open_memstream) */
+    size_t size;
+} cf__tool_out;
+int cf__tool_open_atomic(cf__tool_out *o, const char *path);
+int cf__tool_close_atomic(cf__tool_out *o);
+/* Drop what was written (the target is left as it was). */
+void cf__tool_discard_atomic(cf__tool_out *o);
+
+/* The whole regular file at path (at most max bytes), NUL-terminated
+** (free()), *len its length; NULL and *why (what went wrong) when it is
+** missing, unreadable, too large, a directory, or a FIFO, socket or
+** device (opened without blocking, so that a FIFO cannot hang the
+** reader; every read checked). */
+char *cf__tool_read_file(const char *path, size_t max, size_t *len,
+                         const char **why);
 
 /* The names in dir that end in suffix (and do not start with '.'), the
 ** suffix cut off, in strcmp order; *count of them.  NULL (*count 0, errno
@@ -27,7 +45,9 @@ void cf__tool_free_list(char **list, size_t count);
 ** (the path of the script that made the figure). */
 void cf__tool_manifest_line(FILE *f, const char *name, const char *caption,
                             unsigned formats, const char *script);
-/* Write the first n bytes of s (up to a NUL) with & < > " escaped. */
+/* Write the first n bytes of s (up to a NUL) with & < > " ' escaped: the
+** one escaping of every text the tool writes into HTML (titles, captions,
+** names, paths, messages), in element content and quoted attributes. */
 void cf__tool_put_html(FILE *f, const char *s, size_t n);
 /* Write the HTML gallery `out` from manifests in the given order
 ** (gallery.c); returns the exit status. */

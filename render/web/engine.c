@@ -28,18 +28,26 @@ cf_wasm_glyphs(const char *data, size_t len)
 }
 
 /* Run the script code (its file name: name) with the values (JSON, NUL-
-** terminated; NULL or "": the defaults); the JSON answer is
-** cf_wasm_json() (cf_wasm_json_len() bytes) until the next run.  0, or
-** 1 when memory ran out (no answer). */
+** terminated; NULL or "": the defaults) under the sandbox's limits
+** (memory in MiB and instructions; 0, or left out by the caller: the
+** defaults of script.h); the JSON answer is cf_wasm_json()
+** (cf_wasm_json_len() bytes) until the next run.  0, or 1 when memory ran
+** out (no answer). */
 EXPORT(cf_wasm_run) int
-cf_wasm_run(const char *code, const char *name, const char *values)
+cf_wasm_run(const char *code, const char *name, const char *values,
+            double memory_mib, double instructions)
 {
     size_t n = values != NULL ? strlen(values) : 0;
+    cf_script_limits_t limits = { 0, 0 };
+    if (memory_mib >= 1 && memory_mib <= 4096)
+        limits.max_memory = (size_t)memory_mib << 20;
+    if (instructions >= 1e4 && instructions <= 1e15)
+        limits.max_instructions = (unsigned long long)instructions;
     free(json);
     json = NULL;
     json_len = 0;
-    if (cf_interactive_run(code, name, n > 0 ? values : NULL, n, NULL, stdout,
-                           &json, &json_len) == CF_STATUS_NO_MEMORY
+    if (cf_interactive_run(code, name, n > 0 ? values : NULL, n, &limits,
+                           stdout, &json, &json_len) == CF_STATUS_NO_MEMORY
         || json == NULL)
         return 1;
     return 0;

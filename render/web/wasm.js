@@ -6,7 +6,8 @@
  * files and descriptors answer ENOSYS.  Lua's errors are WebAssembly
  * exceptions, caught inside the module, so no invoke_* trampolines.
  *
- * curvefigWasm(bytes) -> Promise of an object with
+ * curvefigWasm(bytes) -> Promise of an object with (bytes: the module's
+ * bytes, or a compiled WebAssembly.Module)
  *   exports        the module's functions (cf_bezier_eval, ...)
  *   memory()       the current memory as bytes (it may grow)
  *   f64()          the same as doubles
@@ -64,7 +65,7 @@
     return WebAssembly.instantiate(bytes, {
       wasi_snapshot_preview1: wasi, env: env,
     }).then((r) => {
-      inst = r.instance;
+      inst = r.instance || r;   // from bytes {module, instance}; else one
       const e = inst.exports;
       if (e._initialize)
         e._initialize();

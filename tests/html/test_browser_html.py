@@ -12,6 +12,10 @@ computed in the page by the WebAssembly module, shows the point the
 native core computes for the page's values; the console stays free of
 errors.  And the page loads nothing: its Content-Security-Policy is
 default-src 'none', and the browser's resource timing lists no request.
+A page whose slider drives an endless loop, written with --timeout 3:
+the page stops the run (its Web Worker) and shows the time-limit error
+within the limit, the tab answering all the while, and draws again when
+the slider moves back.
 Skipped (77) without chromium, chromedriver or selenium.
 """
 import json
@@ -50,6 +54,19 @@ def test_page(drv, tool, script, name, spec, outdir):
     drv.get('about:blank')
 
 
+def test_spinning_page(drv, tool, src, outdir):
+    script = os.path.join(outdir, 'decasteljau.lua')
+    lb.spin_script(src, script)
+    out = subprocess.run([tool, 'render', script, '-f', 'html', '-o', outdir,
+                          '--timeout', '3', '--max-instructions', '1e15'],
+                         capture_output=True, text=True)
+    lb.check(out.returncode == 0, 'spin: -f html --timeout 3 %s'
+             % out.stderr)
+    drv.get('file://' + os.path.join(outdir, 'decasteljau.html'))
+    lb.exercise_spin(drv, 'html', 3)
+    drv.get('about:blank')
+
+
 def main():
     tool, src = os.path.abspath(sys.argv[1]), sys.argv[2]
     for path in (lb.CHROMIUM, lb.CHROMEDRIVER):
@@ -64,6 +81,8 @@ def main():
                 script = os.path.join(src, 'figures', 'interactive',
                                       name + '.lua')
                 test_page(drv, tool, script, name, lb.EXAMPLES[name], outdir)
+            if not sys.argv[3:]:
+                test_spinning_page(drv, tool, src, outdir)
     finally:
         drv.quit()
     if lb.failures:

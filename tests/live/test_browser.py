@@ -13,7 +13,11 @@ the values is run by `curvefig run` with a line of the curve library
 into the SVG by the figure's map, and a mark (a marker's outline) or a
 curve of the page's SVG must lie there -- and must not have lain there
 before the change.  The dragged handle must sit on its new value.  The
-browser's console must stay free of errors.  Skipped (77) without
+browser's console must stay free of errors.  A hostile script (a slider
+that drives `xpcall(error, function() while true do end end)`, the
+instruction limit out of reach) must stop with the time-limit error in
+the page within the limit, the tab answering all the while, and the page
+must draw again when the slider moves back.  Skipped (77) without
 chromium, chromedriver or selenium.
 """
 import json
@@ -362,6 +366,108 @@ def test_saving(drv, tool, src):
         shutil.rmtree(tmp, ignore_errors=True)
 
 
+# A slider that, past its middle, makes the script spin in a way that the
+# parent commit's instruction hook could not stop.
+SPIN = ('local spin = slider{ name = "spin", label = "spin", min = 0, '
+        'max = 1, default = 0 }\n'
+        'if spin > 0.5 then xpcall(error, function() while true do end '
+        'end) end\n')
+
+
+def spin_script(src, path):
+    """decasteljau.lua with the spinning slider, written to path."""
+    with open(os.path.join(src, 'figures', 'interactive',
+                           'decasteljau.lua')) as f:
+        good = f.read()
+    with open(path, 'w') as f:
+        f.write(good.replace('local c = bezier(P)',
+                             SPIN + 'local c = bezier(P)'))
+
+
+def responsive(drv):
+    """How long the tab takes to run a line of script (it must not be
+    blocked by a run)."""
+    t = time.time()
+    try:
+        drv.execute_script('return document.title;')
+    except Exception as e:     # a script timeout: the tab is blocked
+        print('     (the tab did not answer: %s)' % str(e).split('\n')[0])
+        return 1e9
+    return time.time() - t
+
+
+def exercise_spin(drv, what, limit):
+    """On a loaded page of spin_script: the slider to its end starts the
+    endless run; the page shows the time-limit error within limit + 3 s,
+    answering all the while; the slider back redraws."""
+    drv.set_script_timeout(5)
+    n = settle(drv, 0)
+    slider = drv.find_element(By.ID, 'cf-slider-spin')
+    t = time.time()
+    slider.send_keys(Keys.END)
+    worst = 0
+    shown = False
+    while time.time() - t < limit + 3:
+        worst = max(worst, responsive(drv))
+        try:
+            shown = drv.execute_script(
+                'var e = document.getElementById("cf-error");'
+                'return !e.hidden && e.textContent.indexOf("exceeded the '
+                'time limit of %g s") >= 0;' % limit)
+        except Exception:
+            shown = False
+        if shown:
+            break
+        time.sleep(0.2)
+    took = time.time() - t
+    check(shown and took >= limit - 0.5, '%s: the spinning run stops with '
+          'the time-limit error after %.1f s (limit %g s)'
+          % (what, took, limit))
+    check(worst < 1, '%s: the tab answers while the run spins (slowest '
+          '%.2f s)' % (what, worst))
+    if not shown:
+        return
+    n = settle(drv, n)
+    slider = drv.find_element(By.ID, 'cf-slider-spin')
+    slider.send_keys(Keys.HOME)
+    n = settle(drv, n)
+    back = drv.execute_script(
+        'var e = document.getElementById("cf-error");'
+        'return e.hidden && !document.getElementById("cf-figures")'
+        '.classList.contains("cf-stale") && document.querySelector('
+        '"#cf-figures svg") !== null;')
+    check(back, '%s: the slider back: the figure is drawn again' % what)
+    logs = [e for e in drv.get_log('browser')
+            if e['level'] in ('SEVERE', 'WARNING')]
+    check(logs == [], '%s: no console errors %s' % (what, logs))
+
+
+def test_spinning(drv, tool, src):
+    """The live page with a script that spins: the server kills the run at
+    --timeout; the page shows it and draws on."""
+    tmp = tempfile.mkdtemp(prefix='cf-browser-')
+    script = os.path.join(tmp, 'decasteljau.lua')
+    spin_script(src, script)
+    p = subprocess.Popen([tool, 'live', script, '--port', '0', '--timeout',
+                          '3', '--max-instructions', '1e15'],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                         text=True)
+    try:
+        mo = re.search(r'http://\S+/', p.stdout.readline() +
+                       p.stdout.readline())
+        check(mo is not None, 'live --timeout 3 starts: %s'
+              % ('' if mo else p.stderr.read()))
+        if mo is None:
+            return
+        drv.get(mo.group(0))
+        exercise_spin(drv, 'live', 3)
+        drv.get('about:blank')
+    finally:
+        p.terminate()
+        p.wait(10)
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
 def make_driver():
     """Headless Chromium, its console log kept."""
     opts = webdriver.ChromeOptions()
@@ -389,6 +495,7 @@ def main():
             test_example(drv, tool, script, name, EXAMPLES[name])
         if not sys.argv[3:]:
             test_saving(drv, tool, src)
+            test_spinning(drv, tool, src)
     finally:
         drv.quit()
     shipped = sorted(f[:-4] for f in os.listdir(

@@ -10,7 +10,18 @@ bad values are 400 with the JSON error, an oversized body is 413, other
 methods 405; a script error comes back in the JSON and the server runs on;
 saving the script ends the long poll of /wait with a new version;
 concurrent runs all answer; garbage on the socket does not stop it; the
-socket listens on 127.0.0.1 only.
+socket listens on 127.0.0.1 only.  The page carries a Content-Security-
+Policy, and a Host header other than this server's is refused (403).
+
+Hostile neighbours and scripts (issue #35): 100 idle connections that
+never finish their headers neither delay a real request (answered within
+a second) nor stay open past the header timeout; a run that spins (a
+slider drives `xpcall(error, function() while true do end end)`) is
+killed at --timeout with its error in the JSON while the server answers
+everything else, and the next run works; SIGTERM stops the server within
+two seconds while a run spins, and the run's process is gone; the script
+replaced by a directory or a FIFO is an error in the JSON, not an empty
+run or a server blocked for ever.
 """
 import json
 import os
@@ -47,8 +58,19 @@ def request(url, data=None, method=None, timeout=30):
         return e.code, e.headers.get('Content-Type'), e.read()
 
 
-def start(tool, script):
-    p = subprocess.Popen([tool, 'live', script, '--port', '0'],
+def answer(url, data=None, timeout=30):
+    """request(), with no answer at all (a timeout, a closed connection)
+    as status None and the body of an empty JSON object."""
+    try:
+        return request(url, data=data, timeout=timeout)
+    except OSError as e:
+        print('     (no answer: %s)' % e)
+        return None, None, b'{}'
+
+
+def start(tool, script, *options):
+    p = subprocess.Popen([tool, 'live', script, '--port', '0'] +
+                         list(options),
                          stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                          text=True)
     for _ in range(3):
@@ -66,6 +88,186 @@ def start(tool, script):
     sys.exit('FAIL: curvefig live printed no URL: ' + p.stderr.read())
 
 
+def raw_status(port, text):
+    """The status of a request sent as it is (headers of our choosing)."""
+    s = socket.create_connection(('127.0.0.1', port), timeout=10)
+    try:
+        s.sendall(text.encode())
+        head = s.recv(200).decode('latin-1')
+    finally:
+        s.close()
+    m = re.match(r'HTTP/1\.[01] (\d+)', head)
+    return int(m.group(1)) if m else None
+
+
+def test_idle_connections(url, port):
+    """Connections that never finish their headers cost the server
+    nothing: a real request is answered at once, and they are closed."""
+    socks = []
+    try:
+        for _ in range(100):
+            s = socket.create_connection(('127.0.0.1', port), timeout=10)
+            s.sendall(b'GET /')
+            socks.append(s)
+        t = time.time()
+        st, _, body = answer(url, timeout=10)
+        took = time.time() - t
+        check(st == 200 and b'CurvefigPage' in body and took < 1,
+              '100 idle connections: the page answered in %.2f s' % took)
+        t = time.time()
+        st, _, body = answer(url + 'run', data=b'{}', timeout=10)
+        took = time.time() - t
+        check(st == 200 and json.loads(body).get('error', 1) is None and took < 3,
+              '... and a run in %.2f s' % took)
+        socks[0].settimeout(15)
+        t = time.time()
+        try:
+            closed = socks[0].recv(100) == b''
+        except OSError:
+            closed = True
+        check(closed and time.time() - t < 10, '... an idle connection is '
+              'closed after %.1f s' % (time.time() - t))
+    finally:
+        for s in socks:
+            s.close()
+
+
+SPIN = ('local spin = slider{ name = "spin", label = "spin", min = 0, '
+        'max = 1, default = 0 }\n'
+        'if spin > 0.5 then xpcall(error, function() while true do end '
+        'end) end\n')
+
+
+def test_spinning_run(tool, tmp, good):
+    """A run that never ends is killed at --timeout; meanwhile the server
+    answers; the next run works; SIGTERM stops all promptly."""
+    script = os.path.join(tmp, 'spin.lua')
+    with open(script, 'w') as f:
+        f.write(good.replace('local c = bezier(P)',
+                             SPIN + 'local c = bezier(P)'))
+    # the instruction limit out of reach: only the clock can stop it
+    p, url, port, token = start(tool, script, '--timeout', '2',
+                                '--max-instructions', '1e15')
+    try:
+        done = {}
+
+        def spin():
+            t = time.time()
+            done['reply'] = answer(url + 'run', data=b'{"spin": 1}',
+                                   timeout=30)
+            done['took'] = time.time() - t
+        w = threading.Thread(target=spin)
+        w.start()
+        time.sleep(0.5)
+        t = time.time()
+        st, _, _ = answer(url, timeout=10)
+        st2, _, _ = answer(url + 'wait', timeout=10)
+        took = time.time() - t
+        check(st == 200 and st2 == 200 and took < 1, 'while a run spins the '
+              'page and /wait answer (%.2f s)' % took)
+        w.join(30)
+        st, _, body = done.get('reply', (None, None, b'{}'))
+        j = json.loads(body)
+        msg = (j.get('error') or {}).get('message', '')
+        check(st == 200 and 'exceeded the time limit of 2 s' in msg and
+              j['figures'] == [] and done.get('took', 99) < 4,
+              'the spinning run is stopped at --timeout 2 in %.1f s: %r'
+              % (done.get('took', -1), msg))
+        st, _, body = answer(url + 'run', data=b'{"spin": 0}')
+        check(st == 200 and json.loads(body).get('error', 1) is None,
+              'the next run works')
+    finally:
+        p.terminate()
+        p.wait(10)
+    # SIGTERM while a run spins (a time limit far away)
+    p, url, port, token = start(tool, script, '--timeout', '100',
+                                '--max-instructions', '1e15')
+    try:
+        def spin_on():
+            try:
+                request(url + 'run', data=b'{"spin": 1}', timeout=30)
+            except OSError:
+                pass    # the server stopped: no answer
+        w = threading.Thread(target=spin_on)
+        w.start()
+        time.sleep(1)
+        kids = subprocess.run(['pgrep', '-P', str(p.pid)],
+                              capture_output=True, text=True).stdout.split()
+        check(len(kids) == 1, 'the run is a child process (%s)' % kids)
+        t = time.time()
+        p.terminate()
+        # the server stops listening and kills the run at once (its own
+        # exit may take longer under a sanitizer's leak check)
+        gone = None
+        while time.time() - t < 5 and gone is None:
+            try:
+                socket.create_connection(('127.0.0.1', port), timeout=1) \
+                    .close()
+                time.sleep(0.05)
+            except OSError:
+                gone = time.time() - t
+        check(gone is not None and gone < 2, 'SIGTERM: the server stops '
+              'listening in %.2f s while a run spins' % (gone or -1))
+        check(all(not os.path.exists('/proc/' + k) or
+                  open('/proc/%s/stat' % k).read().split(')')[1].split()[0]
+                  == 'Z' for k in kids),
+              '... and the run\'s process is gone (%.2f s)'
+              % (time.time() - t))
+        try:
+            p.wait(30)
+        except subprocess.TimeoutExpired:
+            pass
+        check(p.returncode == 0, '... and the server exits cleanly in %.1f s'
+              % (time.time() - t))
+        w.join(10)
+    finally:
+        if p.poll() is None:
+            p.kill()
+            p.wait()
+
+
+def test_replaced_script(tool, tmp, good):
+    """The script replaced while served, by a directory or a FIFO: an error
+    in the page, promptly; the server runs on."""
+    script = os.path.join(tmp, 'swap.lua')
+    with open(script, 'w') as f:
+        f.write(good)
+    p, url, port, token = start(tool, script)
+    try:
+        for kind in ('directory', 'FIFO'):
+            os.unlink(script)
+            if kind == 'directory':
+                os.mkdir(script)
+            else:
+                os.mkfifo(script)
+            t = time.time()
+            st, _, body = answer(url + 'run', data=b'{}', timeout=10)
+            took = time.time() - t
+            msg = (json.loads(body).get('error') or {}).get('message', '')
+            check(st == 200 and 'cannot read the script' in msg and
+                  ('directory' in msg if kind == 'directory' else
+                   'not a regular file' in msg) and took < 2,
+                  'the script replaced by a %s: %r in %.2f s'
+                  % (kind, msg, took))
+            if kind == 'directory':
+                os.rmdir(script)
+            else:
+                os.unlink(script)
+            with open(script, 'w') as f:
+                f.write(good)
+        st, _, body = answer(url + 'run', data=b'{}')
+        check(st == 200 and json.loads(body).get('error', 1) is None,
+              'the script back: the run works')
+    finally:
+        p.terminate()
+        try:
+            p.wait(5)
+        except subprocess.TimeoutExpired:
+            p.kill()
+            p.wait()
+    check(p.returncode == 0, 'SIGTERM stops it after a FIFO')
+
+
 def main():
     tool, src = sys.argv[1], sys.argv[2]
     tmp = tempfile.mkdtemp(prefix='cf-live-')
@@ -80,6 +282,20 @@ def main():
         st, ct, body = request(url)
         check(st == 200 and b'CurvefigPage' in body and
               ct.startswith('text/html'), 'GET /TOKEN/ is the page')
+        with urllib.request.urlopen(url, timeout=30) as r:
+            csp = r.headers.get('Content-Security-Policy') or ''
+        check("default-src 'none'" in csp and "connect-src 'self'" in csp
+              and "frame-ancestors 'none'" in csp,
+              'the page has a Content-Security-Policy: %r' % csp)
+        for host, want in [('127.0.0.1:%d' % port, 200),
+                           ('localhost:%d' % port, 200),
+                           ('[::1]:%d' % port, 200),
+                           ('evil.example:%d' % port, 403),
+                           ('127.0.0.1:%d' % (port + 1), 403),
+                           ('127.0.0.1', 403), ('', 403)]:
+            st = raw_status(port, 'GET /%s/ HTTP/1.1\r\nHost: %s\r\n'
+                            'Connection: close\r\n\r\n' % (token, host))
+            check(st == want, 'Host %r: %d (got %s)' % (host, want, st))
         for path in ['/', '/run', '/' + token[:-1] + ('1' if token[-1] == '0' else '0') + '/',
                      '/' + 'f' * len(token) + '/',
                      '/' + token + 'x/', '/' + token[:8] + '/']:
@@ -183,14 +399,19 @@ def main():
                 int(r[1].split(':')[1], 16) == port]
         check(mine == ['0100007F:%04X' % port], 'it listens on 127.0.0.1 '
               'only (%s)' % mine)
+        test_idle_connections(url, port)
     finally:
         p.terminate()
         try:
             p.wait(10)
         except subprocess.TimeoutExpired:
             p.kill()
-        shutil.rmtree(tmp, ignore_errors=True)
     check(p.returncode == 0, 'SIGTERM stops the server cleanly')
+    try:
+        test_spinning_run(tool, tmp, good)
+        test_replaced_script(tool, tmp, good)
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
     if failures:
         sys.exit('%d failures' % len(failures))
 

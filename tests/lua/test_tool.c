@@ -25,6 +25,7 @@
 #include <sys/stat.h>
 #include <sys/types.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <cmocka.h>
@@ -522,6 +523,87 @@ test_gallery_captions(void **state)
     assert_true(strstr(page, "<pre>") == NULL);
 }
 
+/* Every file the tool writes goes through one writer that neither
+** follows nor truncates a file planted beside the target: symbolic links
+** at the old predictable temporary names (PATH.tmp~) and at the target
+** itself leave the file they point to untouched; the new files are
+** regular, their mode honours the umask, and no temporary file is left. */
+static void
+test_writes_follow_no_link(void **state)
+{
+    result *r = *state;
+    char victim[600], path[600], page[65536];
+    const char *render[] = { "render", src("multi.lua"), "-f", "svg,png",
+                             "--manifest", "m.txt", NULL };
+    const char *gallery[] = { "gallery", "-o", "index.html", "m.txt",
+                              NULL };
+    const char *planted[] = { "m.txt.tmp~", "index.html.tmp~",
+                              "multi-1.svg.tmp~", "multi-2.png" };
+    struct stat sb;
+    mode_t old;
+    FILE *f;
+    snprintf(r->dir, sizeof r->dir, "/tmp/curvefig-test-XXXXXX");
+    assert_non_null(mkdtemp(r->dir));
+    snprintf(victim, sizeof victim, "%s/victim", r->dir);
+    f = fopen(victim, "w");
+    assert_non_null(f);
+    fputs("precious\n", f);
+    fclose(f);
+    for (size_t i = 0; i < sizeof planted / sizeof planted[0]; i++) {
+        snprintf(path, sizeof path, "%s/%s", r->dir, planted[i]);
+        assert_int_equal(symlink(victim, path), 0);
+    }
+    old = umask(027);
+    run_tool(r, render);
+    assert_int_equal(r->status, 0);
+    run_tool(r, gallery);
+    umask(old);
+    assert_int_equal(r->status, 0);
+    slurp(victim, page, sizeof page);
+    assert_string_equal(page, "precious\n");
+    for (size_t i = 0; i < 4; i++) {
+        const char *made[] = { "m.txt", "index.html", "multi-1.svg",
+                               "multi-2.png" };
+        snprintf(path, sizeof path, "%s/%s", r->dir, made[i]);
+        assert_int_equal(lstat(path, &sb), 0);
+        if (!S_ISREG(sb.st_mode) || (sb.st_mode & 0777) != 0640)
+            fail_msg("%s: mode %o, want a regular file of mode 640 (umask "
+                     "027)", made[i], (unsigned)sb.st_mode);
+    }
+    {
+        DIR *d = opendir(r->dir);
+        struct dirent *e;
+        assert_non_null(d);
+        while ((e = readdir(d)) != NULL)
+            if (strncmp(e->d_name, ".cf-tmp-", 8) == 0)
+                fail_msg("a temporary file was left: %s", e->d_name);
+        closedir(d);
+    }
+}
+
+/* The gallery's title is text, not markup. */
+static void
+test_gallery_title_escaped(void **state)
+{
+    result *r = *state;
+    char html[600], page[65536];
+    const char *render[] = { "render", src("multi.lua"), "-f", "svg",
+                             "--manifest", "m.txt", NULL };
+    const char *gallery[] = { "gallery", "-o", "index.html", "--title",
+                              "<script>alert('x')</script> & \"q\"", "m.txt",
+                              NULL };
+    run_tool(r, render);
+    assert_int_equal(r->status, 0);
+    run_tool(r, gallery);
+    assert_int_equal(r->status, 0);
+    snprintf(html, sizeof html, "%s/index.html", r->dir);
+    slurp(html, page, sizeof page);
+    assert_contains(page, "<title>&lt;script&gt;alert(&#39;x&#39;)&lt;/"
+                          "script&gt; &amp; &quot;q&quot;</title>");
+    assert_contains(page, "<h1>&lt;script&gt;alert(&#39;x&#39;)");
+    assert_true(strstr(page, "<script") == NULL);
+}
+
 static void
 test_every_figure_method(void **state)
 {
@@ -654,6 +736,41 @@ test_timeout(void **state)
                             "limit of 1 s (--timeout)");
     assert_string_equal(r->out, "");
     assert_int_equal(count_files(r->dir), 0);
+}
+
+/* `live --once` under the limits of render: a run that spins (the
+** handler of xpcall loops, which escapes the instruction hook on the
+** parent commit) ends with the time-limit error, in the JSON and on
+** stderr, within the limit and a margin. */
+static void
+test_live_once_timeout(void **state)
+{
+    result *r = *state;
+    char path[600];
+    const char *args[] = { "live", "xp.lua", "--once", "--timeout", "2",
+                           "--max-instructions", "1e15", NULL };
+    struct timespec t0, t1;
+    double took;
+    FILE *f;
+    snprintf(r->dir, sizeof r->dir, "/tmp/curvefig-test-XXXXXX");
+    assert_non_null(mkdtemp(r->dir));
+    snprintf(path, sizeof path, "%s/xp.lua", r->dir);
+    f = fopen(path, "w");
+    assert_non_null(f);
+    fputs("xpcall(error, function() while true do end end)\n", f);
+    fclose(f);
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    run_tool(r, args);
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    took = (double)(t1.tv_sec - t0.tv_sec)
+           + (double)(t1.tv_nsec - t0.tv_nsec) * 1e-9;
+    assert_int_equal(r->status, 1);
+    assert_contains(r->err, "xp.lua: the script exceeded the time limit of "
+                            "2 s (--timeout)");
+    assert_contains(r->out, "\"error\": {\"message\": \"xp.lua: the script "
+                            "exceeded the time limit of 2 s");
+    if (took > 6)
+        fail_msg("live --once took %.1f s with --timeout 2", took);
 }
 
 static void
@@ -803,6 +920,8 @@ main(int argc, char **argv)
         T(test_list_and_only),
         T(test_gallery),
         T(test_gallery_captions),
+        T(test_writes_follow_no_link),
+        T(test_gallery_title_escaped),
         T(test_every_figure_method),
         T(test_label_place_function),
         T(test_hostile_os),
@@ -814,6 +933,7 @@ main(int argc, char **argv)
         T(test_hostile_huge_string),
         T(test_hostile_pattern),
         T(test_timeout),
+        T(test_live_once_timeout),
         T(test_hostile_metatable),
         T(test_bytecode_script_refused),
         T(test_syntax_error_position),

@@ -786,6 +786,11 @@ test_figure(void **state)
                         NULL));
     BAD(cf_figure_write(fig, "x.svg", (cf_format_t)99, NULL, NULL));
     BAD(cf_figure_write_all(fig, NULL, 1, NULL, NULL));
+    BAD(cf_write_file(NULL, "x", 1, NULL));
+    BAD(cf_write_file("x.txt", NULL, 1, NULL));
+    BAD(cf_write_file("", "x", 1, NULL));
+    BAD(cf_write_file("dir/", "x", 1, NULL));
+    BAD(cf_write_file("/nonexistent-dir/x.txt", "x", 1, NULL));
     BAD(cf_figure_render(fig, CF_FORMAT_SVG, NULL, NULL, &size, NULL));
     BAD(cf_figure_render(fig, (cf_format_t)99, NULL, &data, &size, NULL));
     wo.dpi = 0;

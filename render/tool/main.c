@@ -220,7 +220,7 @@ parse_args(int argc, char **argv, options *o, int *rc)
         const char *a = argv[i];
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
         bool takes = true;
-        char msg[200];
+        char limmsg[200];
         int lim;
         if (strcmp(a, "-h") == 0 || strcmp(a, "--help") == 0) {
             *rc = cf__tool_help(o->command);
@@ -316,10 +316,10 @@ parse_args(int argc, char **argv, options *o, int *rc)
             o->manifest = v;
         } else if (strcmp(a, "--title") == 0) {
             o->gallery_title = v;
-        } else if ((lim = cf__tool_limit_option(a, v, &o->limits, msg,
-                                                sizeof msg)) != 0) {
+        } else if ((lim = cf__tool_limit_option(a, v, &o->limits, limmsg,
+                                                sizeof limmsg)) != 0) {
             if (lim < 0) {
-                *rc = usage_error("%s", msg);
+                *rc = usage_error("%s", limmsg);
                 return -1;
             }
         } else if (strcmp(a, "--") == 0) {

@@ -17,5 +17,6 @@
 #include "curvefig/bspline.h"
 #include "curvefig/interp.h"
 #include "curvefig/surface.h"
+#include "curvefig/surface-make.h"
 
 #endif

@@ -303,8 +303,8 @@ cf_status_t
 cf_bspline_surface_eval_derivs(const cf_bspline_surface_t *s, double u,
                                double v, int k, double *out)
 {
-    size_t su, sv, K, h, pu, qv;
-    double *work, *Nu, *Nv, *R, *A;
+    size_t su, sv, K, h, pu, qv, need;
+    double small[512], *work, *Nu, *Nv, *R, *A;
     cf_status_t st = params(s, out, &u, &v, &su, &sv);
     if (st != CF_STATUS_OK)
         return st;
@@ -314,8 +314,11 @@ cf_bspline_surface_eval_derivs(const cf_bspline_surface_t *s, double u,
     h = s->hdim;
     pu = (size_t)s->p + 1;
     qv = (size_t)s->q + 1;
-    work = cf__alloc_array(K * pu + K * qv + qv * h + K * K * h,
-                           sizeof *work);
+    need = K * pu + K * qv + qv * h + K * K * h;
+    /* low orders of small surfaces on the stack, the rest allocated */
+    work = need <= sizeof small / sizeof *small
+               ? small
+               : cf__alloc_array(need, sizeof *work);
     if (work == NULL)
         return CF_STATUS_NO_MEMORY;
     Nu = work;
@@ -330,7 +333,8 @@ cf_bspline_surface_eval_derivs(const cf_bspline_surface_t *s, double u,
                                    (size_t)s->q) * h,
                            s->nv * h, h, Nu, pu, Nv, qv, K, R, A);
     cf__surf_rational_derivs(A, s->dim, h, k, out);
-    cf__free(work);
+    if (work != small)
+        cf__free(work);
     return CF_STATUS_OK;
 }
 

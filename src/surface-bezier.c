@@ -213,13 +213,8 @@ cf_bezier_surface_eval(const cf_bezier_surface_t *s, double u, double v,
     nv = (size_t)s->n + 1;
     (void)cf_bernstein_all(s->m, u, Bu);
     (void)cf_bernstein_all(s->n, v, Bv);
-    cf__surf_tensor_point(s->pts, nv * s->hdim, s->hdim, Bu,
+    cf__surf_tensor_point(s->pts, nv * s->hdim, s->hdim, s->dim, Bu,
                           (size_t)s->m + 1, Bv, nv, out);
-    if (s->rational) {
-        double wgt = out[s->dim];
-        for (size_t c = 0; c < s->dim; c++)
-            out[c] /= wgt;
-    }
     return CF_STATUS_OK;
 }
 

@@ -291,11 +291,8 @@ cf_bspline_surface_eval(const cf_bspline_surface_t *s, double u, double v,
     cf__basis_deriv(s->q, s->V, s->nV, NULL, sv, v, 0, Nv);
     cf__surf_tensor_point(s->P + ((su - (size_t)s->p) * s->nv + sv -
                                   (size_t)s->q) * h,
-                          s->nv * h, h, Nu, (size_t)s->p + 1, Nv,
+                          s->nv * h, h, s->dim, Nu, (size_t)s->p + 1, Nv,
                           (size_t)s->q + 1, out);
-    if (s->rational)
-        for (size_t c = 0; c < s->dim; c++)
-            out[c] /= out[s->dim];
     return CF_STATUS_OK;
 }
 

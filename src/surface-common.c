@@ -145,24 +145,31 @@ cf__surf_rational_derivs(const double *A, size_t dim, size_t hdim, int k,
 }
 
 void
-cf__surf_tensor_point(const double *P, size_t stride, size_t h,
+cf__surf_tensor_point(const double *P, size_t stride, size_t h, size_t dim,
                       const double *Nu, size_t pu, const double *Nv,
                       size_t qv, double *out)
 {
-    double acc[64];
+    double acc[64], w = 1.0;
+    if (h > dim) {
+        w = 0.0;
+        for (size_t i = 0; i < pu; i++)
+            for (size_t j = 0; j < qv; j++)
+                w += Nu[i] * Nv[j] * P[i * stride + j * h + dim];
+    }
     /* coordinates in blocks of 64 (no allocation for any dimension) */
-    for (size_t c0 = 0; c0 < h; c0 += 64) {
-        size_t w = h - c0 < 64 ? h - c0 : 64;
+    for (size_t c0 = 0; c0 < dim; c0 += 64) {
+        size_t n = dim - c0 < 64 ? dim - c0 : 64;
         memset(acc, 0, sizeof acc);
         for (size_t i = 0; i < pu; i++) {
             const double *row = P + i * stride + c0;
             for (size_t j = 0; j < qv; j++) {
                 double b = Nu[i] * Nv[j];
-                for (size_t c = 0; c < w; c++)
+                for (size_t c = 0; c < n; c++)
                     acc[c] += b * row[j * h + c];
             }
         }
-        memcpy(out + c0, acc, w * sizeof *out);
+        for (size_t c = 0; c < n; c++)
+            out[c0 + c] = acc[c] / w;
     }
 }
 

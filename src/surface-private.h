@@ -71,12 +71,13 @@ cf_status_t cf__surf_param(double a, double b, double *x, cf_dir_t dir,
 void cf__surf_rational_derivs(const double *A, size_t dim, size_t hdim,
                               int k, double *out);
 
-/* The homogeneous point sum_i sum_j Nu[i] Nv[j] P[i][j] of the active
-** sub-grid P (pu rows of qv points, h doubles each, rows `stride` doubles
-** apart) into out[h]; no allocation. */
+/* The point sum_i sum_j Nu[i] Nv[j] P[i][j] of the active sub-grid P
+** (pu rows of qv points, h doubles each, rows `stride` doubles apart),
+** Cartesian (divided by the weight sum when h > dim) into out[dim]; no
+** allocation. */
 void cf__surf_tensor_point(const double *P, size_t stride, size_t h,
-                           const double *Nu, size_t pu, const double *Nv,
-                           size_t qv, double *out);
+                           size_t dim, const double *Nu, size_t pu,
+                           const double *Nv, size_t qv, double *out);
 /* The homogeneous derivatives A_{ab} (a + b < K, layout (a K + b) h) of
 ** that sub-grid from the basis derivative tables Nu[a pu + i],
 ** Nv[b qv + j]; R is scratch of qv h doubles. */

@@ -50,6 +50,15 @@ typedef enum cf__lua_keys {
     CF__KEYS_PARAM_POINTS,  /* points{...}, a draggable point list */
     CF__KEYS_CONSTRAIN,     /* nested: constrain = { ... } of points{} */
     CF__KEYS_THEME,
+    CF__KEYS_BEZIER_SURFACE,
+    CF__KEYS_BSPLINE_SURFACE,
+    CF__KEYS_REVOLVE,
+    CF__KEYS_NURBS_SPHERE,
+    CF__KEYS_NURBS_TORUS,
+    CF__KEYS_NURBS_CYLINDER,
+    CF__KEYS_NURBS_CONE,
+    CF__KEYS_RULED,
+    CF__KEYS_INTERP_SURFACE,
     CF__KEYS_COUNT_
 } cf__lua_keys_t;
 

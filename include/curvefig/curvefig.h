@@ -18,5 +18,6 @@
 #include "curvefig/interp.h"
 #include "curvefig/surface.h"
 #include "curvefig/surface-make.h"
+#include "curvefig/surface-triangle.h"
 
 #endif

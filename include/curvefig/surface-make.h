@@ -42,6 +42,25 @@ CF_API cf_status_t cf_surface_ruled(const cf_bspline_t *c1,
                                     cf_diag_t *diag);
 
 /*
+** The bilinearly blended Coons patch of four polynomial boundary curves
+** (INVALID_ARG for rational ones, whose patch is no NURBS surface), each
+** taken on [0, 1] (knots mapped affinely): c0 = S(u, 0), c1 = S(u, 1),
+** d0 = S(0, v), d1 = S(1, v);
+**   S = (1 - v) c0(u) + v c1(u) + (1 - u) d0(v) + u d1(v)
+**       - the bilinear interpolant of the four corners,
+** exactly, as a B-spline surface (the two ruled surfaces and the bilinear
+** one brought to common degrees and knots, then combined point by point).
+** The corners must meet: c0(0) = d0(0), c0(1) = d1(0), c1(0) = d0(1),
+** c1(1) = d1(1) within 1e-9 of their size (DEGENERATE naming them).
+*/
+CF_API cf_status_t cf_surface_coons(const cf_bspline_t *c0,
+                                    const cf_bspline_t *c1,
+                                    const cf_bspline_t *d0,
+                                    const cf_bspline_t *d1,
+                                    cf_bspline_surface_t **out,
+                                    cf_diag_t *diag);
+
+/*
 ** Surface of revolution (The NURBS Book §8.5, exact): the curve C (NURBS
 ** or polynomial, dim 3) turned about the axis through O[3] with direction
 ** A[3] (not zero) from angle a0 to a1 (radians, 0 < a1 - a0 <= 2 pi,

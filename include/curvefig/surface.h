@@ -37,8 +37,8 @@
 ** CF_STATUS_NOT_FINITE.  Constructions (split, insert_knot, segment) take
 ** their parameters exactly.
 **
-** Triangular patches and the constructions (Coons, ruled, revolution,
-** sphere, ..., interpolation) are in curvefig/surface-make.h.
+** The constructions (extrusion, ruled, Coons, revolution, sphere, ...,
+** interpolation) are in curvefig/surface-make.h.
 */
 #ifndef CURVEFIG_SURFACE_H
 #define CURVEFIG_SURFACE_H

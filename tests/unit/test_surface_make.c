@@ -254,6 +254,78 @@ test_extrude_ruled(void **state)
     }
 }
 
+/* The Coons patch of the four boundaries of a surface: the boundaries
+** again, and inside (1 - v) c0 + v c1 + (1 - u) d0 + u d1 - bilinear
+** corners, in long double from the curves. */
+static void
+test_coons(void **state)
+{
+    tu_rng r;
+    (void)state;
+    tu_rng_seed(&r, 54);
+    for (int t = 0; t < 12; t++) {
+        cf_bspline_t *c[4] = { NULL, NULL, NULL, NULL };
+        cf_bspline_surface_t *s = NULL, *src = NULL;
+        double P[5 * 4 * 3], U[9], V[8];
+        int p = 1 + t % 3, q = 1 + (t / 3) % 3;
+        cf_diag_t d;
+        for (int i = 0; i < 5 * 4 * 3; i++)
+            P[i] = tu_rng_range(&r, -2.0, 2.0);
+        assert_int_equal(cf_knots_clamped_uniform(p, 5, 0.0, 1.0, U, NULL),
+                         0);
+        assert_int_equal(cf_knots_clamped_uniform(q, 4, 0.0, 1.0, V, NULL),
+                         0);
+        assert_int_equal(cf_bspline_surface_create(3, p, q, U, 5 + (size_t)p
+                                                   + 1, V, 4 + (size_t)q + 1,
+                                                   P, 5, 4, NULL, &src, NULL),
+                         0);
+        assert_int_equal(cf_bspline_surface_iso(src, CF_DIR_V, 0.0, &c[0],
+                                                NULL), 0);
+        assert_int_equal(cf_bspline_surface_iso(src, CF_DIR_V, 1.0, &c[1],
+                                                NULL), 0);
+        assert_int_equal(cf_bspline_surface_iso(src, CF_DIR_U, 0.0, &c[2],
+                                                NULL), 0);
+        assert_int_equal(cf_bspline_surface_iso(src, CF_DIR_U, 1.0, &c[3],
+                                                NULL), 0);
+        assert_int_equal(cf_surface_coons(c[0], c[1], c[2], c[3], &s, &d), 0);
+        for (int i = 0; i <= 8; i++)
+            for (int j = 0; j <= 8; j++) {
+                double u = i / 8.0, v = j / 8.0, x[3], a[3], b[3], e[3],
+                       f[3], k[4][3];
+                assert_int_equal(cf_bspline_surface_eval(s, u, v, x), 0);
+                assert_int_equal(cf_bspline_eval(c[0], u, a), 0);
+                assert_int_equal(cf_bspline_eval(c[1], u, b), 0);
+                assert_int_equal(cf_bspline_eval(c[2], v, e), 0);
+                assert_int_equal(cf_bspline_eval(c[3], v, f), 0);
+                assert_int_equal(cf_bspline_eval(c[0], 0.0, k[0]), 0);
+                assert_int_equal(cf_bspline_eval(c[0], 1.0, k[1]), 0);
+                assert_int_equal(cf_bspline_eval(c[1], 0.0, k[2]), 0);
+                assert_int_equal(cf_bspline_eval(c[1], 1.0, k[3]), 0);
+                for (int m = 0; m < 3; m++) {
+                    ld want = (1 - (ld)v) * a[m] + (ld)v * b[m] +
+                              (1 - (ld)u) * e[m] + (ld)u * f[m] -
+                              ((1 - (ld)u) * (1 - (ld)v) * k[0][m] +
+                               (ld)u * (1 - (ld)v) * k[1][m] +
+                               (1 - (ld)u) * (ld)v * k[2][m] +
+                               (ld)u * (ld)v * k[3][m]);
+                    tu_assert_close(x[m], (double)want, 1e-13, 2.0);
+                }
+            }
+        cf_bspline_surface_destroy(s);
+        /* corners that do not meet are named */
+        cf_bspline_destroy(c[3]);
+        c[3] = NULL;
+        assert_int_equal(cf_bspline_surface_iso(src, CF_DIR_U, 0.5, &c[3],
+                                                NULL), 0);
+        assert_int_equal(cf_surface_coons(c[0], c[1], c[2], c[3], &s, &d),
+                         CF_STATUS_DEGENERATE);
+        assert_non_null(strstr(d.msg, "c0(1)"));
+        for (int i = 0; i < 4; i++)
+            cf_bspline_destroy(c[i]);
+        cf_bspline_surface_destroy(src);
+    }
+}
+
 /* Interpolation passes through its points; least squares with as many
 ** control points as data (global method) is the interpolant. */
 static void
@@ -318,6 +390,7 @@ main(void)
         cmocka_unit_test(test_quadrics),
         cmocka_unit_test(test_revolve),
         cmocka_unit_test(test_extrude_ruled),
+        cmocka_unit_test(test_coons),
         cmocka_unit_test(test_interpolate),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -295,6 +295,8 @@ static const cf__lua_schema_t schemas[CF__KEYS_COUNT_] = {
                                   "nurbs_cone(%s)"),
     [CF__KEYS_RULED] = MAKER("ruled", no_keys, NULL, true,
                              "ruled(%s)"),
+    [CF__KEYS_COONS_PATCH] = MAKER("coons_patch", no_keys, NULL, true,
+                                   "coons_patch(%s)"),
     [CF__KEYS_NURBS_TORUS] = MAKER("nurbs_torus", torus_keys, NULL, false,
                                    "nurbs_torus(%s)"),
     [CF__KEYS_INTERP_SURFACE] = MAKER("interpolate_surface",

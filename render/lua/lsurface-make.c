@@ -6,6 +6,7 @@
 **                    to = 2 * math.pi })
 **   extrude(curve, {dx, dy, dz})
 **   ruled{ c1, c2 }
+**   coons_patch{ c0, c1, d0, d1 }   S(u, 0), S(u, 1), S(0, v), S(1, v)
 **   nurbs_sphere{ center = {...}, r = 1 }
 **   nurbs_cylinder{ center = {...}, r = 1, h = 1 }
 **   nurbs_cone{ center = {...}, r = 1, h = 1 }
@@ -117,23 +118,45 @@ l_extrude(lua_State *L)
                         &diag, 1);
 }
 
+/* The n curves of the list argument 1 (pushed when converted). */
+static void
+curve_list(lua_State *L, const char *fn, cf__lua_keys_t keys,
+           const char *form, int n, cf_bspline_t **c)
+{
+    luaL_checktype(L, 1, LUA_TTABLE);
+    cf__lua_check_table(L, 1, keys);
+    if ((int)lua_rawlen(L, 1) != n)
+        cf__lua_error(L, "%s: give %d curves, %s; got %d", fn, n, form,
+                      (int)lua_rawlen(L, 1));
+    for (int i = 0; i < n; i++) {
+        lua_geti(L, 1, i + 1);
+        c[i] = curve_at(L, lua_gettop(L), fn);
+    }
+}
+
 static int
 l_ruled(lua_State *L)
 {
-    cf_bspline_t *a, *b;
+    cf_bspline_t *c[2];
     cf_bspline_surface_t **out;
     cf_diag_t diag;
-    luaL_checktype(L, 1, LUA_TTABLE);
-    cf__lua_check_table(L, 1, CF__KEYS_RULED);
-    if (lua_rawlen(L, 1) != 2)
-        return cf__lua_error(L, "ruled: give two curves, ruled{ c1, c2 }; "
-                             "got %d", (int)lua_rawlen(L, 1));
-    lua_geti(L, 1, 1);
-    a = curve_at(L, lua_gettop(L), "ruled");
-    lua_geti(L, 1, 2);
-    b = curve_at(L, lua_gettop(L), "ruled");
+    curve_list(L, "ruled", CF__KEYS_RULED, "ruled{ c1, c2 }", 2, c);
     out = cf__lua_new_bspline_surface(L);
-    return cf__lua_done(L, "ruled", cf_surface_ruled(a, b, out, &diag),
+    return cf__lua_done(L, "ruled", cf_surface_ruled(c[0], c[1], out, &diag),
+                        &diag, 1);
+}
+
+static int
+l_coons_patch(lua_State *L)
+{
+    cf_bspline_t *c[4];
+    cf_bspline_surface_t **out;
+    cf_diag_t diag;
+    curve_list(L, "coons_patch", CF__KEYS_COONS_PATCH,
+               "coons_patch{ c0, c1, d0, d1 }", 4, c);
+    out = cf__lua_new_bspline_surface(L);
+    return cf__lua_done(L, "coons_patch",
+                        cf_surface_coons(c[0], c[1], c[2], c[3], out, &diag),
                         &diag, 1);
 }
 
@@ -256,6 +279,7 @@ cf__lua_open_surface_make(lua_State *L)
         { "revolve", l_revolve },
         { "extrude", l_extrude },
         { "ruled", l_ruled },
+        { "coons_patch", l_coons_patch },
         { "nurbs_sphere", l_sphere },
         { "nurbs_cylinder", l_cylinder },
         { "nurbs_cone", l_cone },

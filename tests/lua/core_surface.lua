@@ -134,6 +134,11 @@ close_pt(ru:eval(0.3, 0), c1:eval(0.3), "ruled v = 0")
 close_pt(ru:eval(0.3, 1), c2:eval(0.3), "ruled v = 1")
 close_pt(extrude(c1, { 0, 0, 2 }):eval(0.3, 0.5),
          { c1:eval(0.3)[1], c1:eval(0.3)[2], 1 }, "extrude")
+-- the Coons patch of the four boundaries of the bicubic bs: the boundaries
+local cp = coons_patch{ bs:iso("v", 0), bs:iso("v", 1), bs:iso("u", 0),
+                        bs:iso("u", 1) }
+close_pt(cp:eval(0.3, 0), bs:eval(0.3, 0), "coons c0")
+close_pt(cp:eval(1, 0.6), bs:eval(1, 0.6), "coons d1")
 local I = interpolate_surface{ points = G, method = "global", degree = 3 }
 assert(tostring(I):find("^bspline surface of degrees %(3, 3%)"))
 

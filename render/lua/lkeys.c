@@ -143,6 +143,9 @@ static const cf__lua_key_t quadric_keys[] = {
     KEY("center"), KEY("r"), KEY("h"), END,
 };
 static const cf__lua_key_t no_keys[] = { END };
+static const cf__lua_key_t triangle_keys[] = {
+    KEY("degree"), KEY("points"), KEY("weights"), END,
+};
 static const cf__lua_key_t torus_keys[] = {
     KEY("center"), KEY("R"), KEY("r"), END,
 };
@@ -295,6 +298,8 @@ static const cf__lua_schema_t schemas[CF__KEYS_COUNT_] = {
                                   "nurbs_cone(%s)"),
     [CF__KEYS_RULED] = MAKER("ruled", no_keys, NULL, true,
                              "ruled(%s)"),
+    [CF__KEYS_BEZIER_TRIANGLE] = MAKER("bezier_triangle", triangle_keys,
+                                       NULL, false, "bezier_triangle(%s)"),
     [CF__KEYS_COONS_PATCH] = MAKER("coons_patch", no_keys, NULL, true,
                                    "coons_patch(%s)"),
     [CF__KEYS_NURBS_TORUS] = MAKER("nurbs_torus", torus_keys, NULL, false,

@@ -59,6 +59,7 @@ typedef enum cf__lua_keys {
     CF__KEYS_NURBS_CONE,
     CF__KEYS_RULED,
     CF__KEYS_COONS_PATCH,
+    CF__KEYS_BEZIER_TRIANGLE,
     CF__KEYS_INTERP_SURFACE,
     CF__KEYS_COUNT_
 } cf__lua_keys_t;

@@ -42,5 +42,6 @@ double *cf__lua_check_grid(lua_State *L, int idx, const char *fn,
 
 void cf__lua_open_surface(lua_State *L);
 void cf__lua_open_surface_make(lua_State *L);
+void cf__lua_open_surface_triangle(lua_State *L);
 
 #endif

@@ -365,6 +365,7 @@ cf__lua_open_language(lua_State *L)
     cf__lua_open_conic(L);
     cf__lua_open_surface(L);
     cf__lua_open_surface_make(L);
+    cf__lua_open_surface_triangle(L);
     cf__lua_open_figure(L);
     cf__lua_open_params(L);
     cf__lua_open_theme(L);

@@ -142,6 +142,27 @@ close_pt(cp:eval(1, 0.6), bs:eval(1, 0.6), "coons d1")
 local I = interpolate_surface{ points = G, method = "global", degree = 3 }
 assert(tostring(I):find("^bspline surface of degrees %(3, 3%)"))
 
+-- a triangular patch of degree 2: T = sum 2 / (i! j! k!) u^i v^j w^k b_ijk
+local tb = { { 0, 0, 0 }, { 1, 0, 1 }, { 1, 1, 0 }, { 2, 0, 0 }, { 1, 2, 1 },
+             { 0, 2, 0 } }   -- b200, b110, b101, b020, b011, b002
+local tri = bezier_triangle{ degree = 2, points = tb }
+local u, v = 0.2, 0.5
+local w = 1 - u - v
+local coef = { u * u, 2 * u * v, 2 * u * w, v * v, 2 * v * w, w * w }
+local want = { 0, 0, 0 }
+for i = 1, 6 do
+  for k = 1, 3 do want[k] = want[k] + coef[i] * tb[i][k] end
+end
+close_pt(tri:eval(u, v), want, "triangle eval")
+local lv = tri:decasteljau(u, v)
+assert(#lv == 3 and #lv[1] == 6 and #lv[3] == 1)
+close_pt(lv[3][1], want, "triangle decasteljau")
+close_pt(tri:elevate():eval(u, v), want, "triangle elevate")
+close_pt(tri:boundary(1):eval(0.25), tri:eval(0.75, 0.25), "triangle edge")
+local t1, t2, t3 = tri:subdivide(0.3, 0.3)
+close_pt(t1:eval(1, 0), tri:eval(0.3, 0.3), "triangle subdivide")
+assert(tostring(tri) == "bezier triangle of degree 2 in R^3")
+
 -- errors in the user's terms
 local function fails(f, fragment)
   local ok, msg = pcall(f)

@@ -19,5 +19,6 @@
 #include "curvefig/surface.h"
 #include "curvefig/surface-make.h"
 #include "curvefig/surface-triangle.h"
+#include "curvefig/reduce.h"
 
 #endif

@@ -105,12 +105,12 @@ cf_bezier_reduce(const cf_bezier_t *c, const cf_reduce_options_t *opt,
                  cf_bezier_t **out, cf_reduce_report_t *report,
                  cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_reduce_options_t o;
     cf__reduce_job_t j;
     cf_bezier_t *r;
     cf_status_t st;
 
-    cf_diag_clear(diag);
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "the output pointer is NULL");

@@ -202,6 +202,7 @@ cf_bspline_reduce(const cf_bspline_t *c, const cf_reduce_options_t *opt,
                   cf_bspline_t **out, cf_reduce_report_t *report,
                   cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_reduce_options_t o;
     orig g = { 0 };
     cf_status_t st;
@@ -210,7 +211,6 @@ cf_bspline_reduce(const cf_bspline_t *c, const cf_reduce_options_t *opt,
     size_t which, removed = 0;
     cf_bspline_t *F = NULL;
 
-    cf_diag_clear(diag);
     st = cf__bspline_check_in(c, out, diag);
     if (st != CF_STATUS_OK)
         return st;

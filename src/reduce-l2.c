@@ -137,47 +137,35 @@ cf__reduce_phi(int m, int k0, int k1, double *phi)
     return CF_STATUS_OK;
 }
 
-cf_status_t
-cf__reduce_l2(const cf__reduce_job_t *j, double *Q)
+/* f = P - A elevated to degree n (A: m + 1 points):
+** A'_i = sum_l C(m,l) C(n-m,i-l) / C(n,i) A_l */
+static void
+residual(const cf__reduce_job_t *j, const long double *A, long double *f)
 {
-    int n = j->n, m = j->m, d = m - j->k0 - j->k1 - 2;
-    size_t h = j->h, np = (size_t)(n + 1), mp = (size_t)(m + 1);
-    long double *f, *phi, *G, *acc;
-
-    memset(Q, 0, mp * h * sizeof *Q);
-    cf__reduce_ends(j, Q);
-    if (d < 0)
-        return CF_STATUS_OK;
-    f = cf__alloc_array(np * h + (size_t)(d + 1) * mp + np * mp + mp * h,
-                        sizeof *f);
-    if (f == NULL)
-        return CF_STATUS_NO_MEMORY;
-    phi = f + np * h;
-    G = phi + (size_t)(d + 1) * mp;
-    acc = G + np * mp;
-    /* f = P - g, g (the end points) elevated to degree n:
-    ** g'_i = sum_l C(m,l) C(n-m,i-l) / C(n,i) g_l */
+    int n = j->n, m = j->m;
+    size_t h = j->h;
     for (int i = 0; i <= n; i++)
         for (size_t c = 0; c < h; c++) {
             long double q = 0.0L;
             for (int l = 0; l <= m; l++)
                 if (i - l >= 0 && i - l <= n - m)
                     q += lbinom(m, l) * lbinom(n - m, i - l) /
-                         lbinom(n, i) * (long double)Q[(size_t)l * h + c];
+                         lbinom(n, i) * A[(size_t)l * h + c];
             f[(size_t)i * h + c] = (long double)j->P[(size_t)i * h + c] - q;
         }
-    for (int p = 0; p <= n; p++)
-        for (int q = 0; q <= m; q++)
-            G[(size_t)p * mp + (size_t)q] = cf__reduce_gram(n, p, m, q);
-    for (size_t i = 0; i < mp * h; i++)
-        acc[i] = (long double)Q[i];
-    phi_long(m, j->k0, j->k1, phi);
+}
+
+/* acc += sum_j <f, phi_j> / <phi_j, phi_j> phi_j; G[p * (m + 1) + q] =
+** int B_p^n B_q^m, nn[j] = <phi_j, phi_j> */
+static void
+project(const cf__reduce_job_t *j, int d, const long double *f,
+        const long double *phi, const long double *G, const long double *nn,
+        long double *acc)
+{
+    int n = j->n, m = j->m;
+    size_t h = j->h, mp = (size_t)(m + 1);
     for (int jj = 0; jj <= d; jj++) {
         const long double *ph = phi + (size_t)jj * mp;
-        long double nn = 0.0L;
-        for (int p = 0; p <= m; p++)
-            for (int q = 0; q <= m; q++)
-                nn += ph[p] * ph[q] * cf__reduce_gram(m, p, m, q);
         for (size_t c = 0; c < h; c++) {
             long double s = 0.0L;
             for (int p = 0; p <= n; p++) {
@@ -186,10 +174,56 @@ cf__reduce_l2(const cf__reduce_job_t *j, double *Q)
                     row += G[(size_t)p * mp + (size_t)q] * ph[q];
                 s += f[(size_t)p * h + c] * row;
             }
-            s /= nn;
+            s /= nn[jj];
             for (int q = 0; q <= m; q++)
                 acc[(size_t)q * h + c] += s * ph[q];
         }
+    }
+}
+
+/* The projection is done twice: once of P - g, then of what is left of
+** P after the first result, added to it (one step of iterative
+** refinement).  The second step makes the result as accurate as its
+** residual, so that an elevated curve comes back to 1e-14 also where long
+** double is no wider than double (valgrind, other platforms): the first
+** step's error is a multiple of the rounding of the alternating sums,
+** the second's a multiple of that times the first's error. */
+cf_status_t
+cf__reduce_l2(const cf__reduce_job_t *j, double *Q)
+{
+    int n = j->n, m = j->m, d = m - j->k0 - j->k1 - 2;
+    size_t h = j->h, np = (size_t)(n + 1), mp = (size_t)(m + 1);
+    long double *f, *phi, *G, *acc, *nn;
+
+    memset(Q, 0, mp * h * sizeof *Q);
+    cf__reduce_ends(j, Q);
+    if (d < 0)
+        return CF_STATUS_OK;
+    f = cf__alloc_array(np * h + (size_t)(d + 1) * mp + np * mp + mp * h +
+                            (size_t)(d + 1),
+                        sizeof *f);
+    if (f == NULL)
+        return CF_STATUS_NO_MEMORY;
+    phi = f + np * h;
+    G = phi + (size_t)(d + 1) * mp;
+    acc = G + np * mp;
+    nn = acc + mp * h;
+    for (int p = 0; p <= n; p++)
+        for (int q = 0; q <= m; q++)
+            G[(size_t)p * mp + (size_t)q] = cf__reduce_gram(n, p, m, q);
+    phi_long(m, j->k0, j->k1, phi);
+    for (int jj = 0; jj <= d; jj++) {
+        const long double *ph = phi + (size_t)jj * mp;
+        nn[jj] = 0.0L;
+        for (int p = 0; p <= m; p++)
+            for (int q = 0; q <= m; q++)
+                nn[jj] += ph[p] * ph[q] * cf__reduce_gram(m, p, m, q);
+    }
+    for (size_t i = 0; i < mp * h; i++)
+        acc[i] = (long double)Q[i];
+    for (int step = 0; step < 2; step++) {
+        residual(j, acc, f);
+        project(j, d, f, phi, G, nn, acc);
     }
     for (size_t i = 0; i < mp * h; i++)
         Q[i] = (double)acc[i];

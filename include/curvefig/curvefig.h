@@ -16,6 +16,9 @@
 #include "curvefig/knots.h"
 #include "curvefig/bspline.h"
 #include "curvefig/interp.h"
+#include "curvefig/surface.h"
+#include "curvefig/surface-make.h"
+#include "curvefig/surface-triangle.h"
 #include "curvefig/reduce.h"
 
 #endif

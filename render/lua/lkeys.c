@@ -131,6 +131,30 @@ static const cf__lua_key_t interpolate_keys[] = {
 static const cf__lua_key_t approximate_keys[] = {
     KEY("count"), KEY("fix_ends"), END,
 };
+static const cf__lua_key_t bezier_surface_keys[] = {
+    KEY("points"), KEY("weights"), END,
+};
+static const cf__lua_key_t bspline_surface_keys[] = {
+    KEY("degree"), KEY("knots"), KEY("points"), KEY("weights"), END,
+};
+static const cf__lua_key_t revolve_keys[] = {
+    KEY("axis"), KEY("center"), KEY("from"), KEY("to"), END,
+};
+/* nurbs_sphere, nurbs_cylinder, nurbs_cone, nurbs_torus */
+static const cf__lua_key_t quadric_keys[] = {
+    KEY("center"), KEY("r"), KEY("h"), END,
+};
+static const cf__lua_key_t no_keys[] = { END };
+static const cf__lua_key_t triangle_keys[] = {
+    KEY("degree"), KEY("points"), KEY("weights"), END,
+};
+static const cf__lua_key_t torus_keys[] = {
+    KEY("center"), KEY("R"), KEY("r"), END,
+};
+static const cf__lua_key_t interp_surface_keys[] = {
+    KEY("points"), NAMES("method", interp_methods), NAMES("param", params),
+    KEY("degree"), KEY("exponent"), KEY("count"), KEY("fix_ends"), END,
+};
 static const cf__lua_key_t offset_keys[] = {
     KEY("tolerance"), KEY("trim"), NAMES("method", offset_methods), END,
 };
@@ -270,6 +294,31 @@ static const cf__lua_schema_t schemas[CF__KEYS_COUNT_] = {
                                   "constrain = %s }"),
     [CF__KEYS_THEME] = { "theme", "option", { theme_keys, NULL, NULL, NULL },
                          false, NULL, NULL, "theme(%s)" },
+    [CF__KEYS_BEZIER_SURFACE] = MAKER("bezier_surface", bezier_surface_keys,
+                                      NULL, false, "bezier_surface(%s)"),
+    [CF__KEYS_BSPLINE_SURFACE] = MAKER("bspline_surface",
+                                       bspline_surface_keys, NULL, false,
+                                       "bspline_surface(%s)"),
+    [CF__KEYS_REVOLVE] = METHOD("revolve", revolve_keys, NULL, NULL,
+                                "revolve(bspline{ degree = 1, points = "
+                                "{ {1, 0, 0}, {1, 0, 1} } }, %s)"),
+    [CF__KEYS_NURBS_SPHERE] = MAKER("nurbs_sphere", quadric_keys, NULL,
+                                    false, "nurbs_sphere(%s)"),
+    [CF__KEYS_NURBS_CYLINDER] = MAKER("nurbs_cylinder", quadric_keys, NULL,
+                                      false, "nurbs_cylinder(%s)"),
+    [CF__KEYS_NURBS_CONE] = MAKER("nurbs_cone", quadric_keys, NULL, false,
+                                  "nurbs_cone(%s)"),
+    [CF__KEYS_RULED] = MAKER("ruled", no_keys, NULL, true,
+                             "ruled(%s)"),
+    [CF__KEYS_BEZIER_TRIANGLE] = MAKER("bezier_triangle", triangle_keys,
+                                       NULL, false, "bezier_triangle(%s)"),
+    [CF__KEYS_COONS_PATCH] = MAKER("coons_patch", no_keys, NULL, true,
+                                   "coons_patch(%s)"),
+    [CF__KEYS_NURBS_TORUS] = MAKER("nurbs_torus", torus_keys, NULL, false,
+                                   "nurbs_torus(%s)"),
+    [CF__KEYS_INTERP_SURFACE] = MAKER("interpolate_surface",
+                                      interp_surface_keys, NULL, false,
+                                      "interpolate_surface(%s)"),
 };
 
 const char cf__lua_schema_prelude[] =

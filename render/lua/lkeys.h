@@ -50,6 +50,17 @@ typedef enum cf__lua_keys {
     CF__KEYS_PARAM_POINTS,  /* points{...}, a draggable point list */
     CF__KEYS_CONSTRAIN,     /* nested: constrain = { ... } of points{} */
     CF__KEYS_THEME,
+    CF__KEYS_BEZIER_SURFACE,
+    CF__KEYS_BSPLINE_SURFACE,
+    CF__KEYS_REVOLVE,
+    CF__KEYS_NURBS_SPHERE,
+    CF__KEYS_NURBS_TORUS,
+    CF__KEYS_NURBS_CYLINDER,
+    CF__KEYS_NURBS_CONE,
+    CF__KEYS_RULED,
+    CF__KEYS_COONS_PATCH,
+    CF__KEYS_BEZIER_TRIANGLE,
+    CF__KEYS_INTERP_SURFACE,
     CF__KEYS_REDUCE,          /* c:reduce{...} of a Bézier curve */
     CF__KEYS_REDUCE_BSPLINE,  /* s:reduce{...} of a B-spline */
     CF__KEYS_COUNT_

@@ -11,6 +11,7 @@
 
 #include "lbspline.h"
 #include "lcommon.h"
+#include "lsurface.h"
 #include "lfigure.h"
 #include "lparams.h"
 #include "ltheme.h"
@@ -363,6 +364,9 @@ cf__lua_open_language(lua_State *L)
     cf__lua_open_reduce(L);
     cf__lua_open_interp(L);
     cf__lua_open_conic(L);
+    cf__lua_open_surface(L);
+    cf__lua_open_surface_make(L);
+    cf__lua_open_surface_triangle(L);
     cf__lua_open_figure(L);
     cf__lua_open_params(L);
     cf__lua_open_theme(L);

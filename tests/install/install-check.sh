@@ -16,7 +16,7 @@ libdir=$(dirname "$pcdir")
 export PKG_CONFIG_PATH="$pcdir" PKG_CONFIG_SYSROOT_DIR="$root"
 export LD_LIBRARY_PATH="$libdir"
 cc=${CC:-cc}
-for e in nurbs-circle knot-insertion interpolation offset; do
+for e in nurbs-circle knot-insertion interpolation offset surface; do
     # shellcheck disable=SC2046
     $cc -std=c11 -Wall -Wextra -pedantic -Werror -o "$root/$e" "$src/examples/$e.c" \
         $(pkg-config --cflags --libs curvefig-core)

@@ -357,8 +357,12 @@ test_small_budgets(void **state)
     assert_int_equal(cf_script_create(&lim, f, &s, &diag), CF_STATUS_OK);
     assert_int_equal(cf_script_run_string(s, code, "b.lua"),
                      CF_STATUS_SCRIPT);
-    assert_non_null(strstr(cf_script_error(s), "b.lua:3: script exceeded the "
-                                               "memory limit of 512 KiB"));
+    /* in the loop (line 2 or 3: where the allocation that passes the
+    ** budget falls depends on the sandbox's own size) */
+    assert_true(strstr(cf_script_error(s), "b.lua:2: script exceeded the "
+                                           "memory limit of 512 KiB") ||
+                strstr(cf_script_error(s), "b.lua:3: script exceeded the "
+                                           "memory limit of 512 KiB"));
     cf_script_destroy(s);
     /* nothing printed: the count never passed the budget */
     rewind(f);

@@ -189,6 +189,16 @@ test_core_bezier_script(void **state)
 }
 
 static void
+test_core_surface_script(void **state)
+{
+    result *r = *state;
+    const char *args[] = { "run", src("core_surface.lua"), NULL };
+    run_tool(r, args);
+    assert_int_equal(r->status, 0);
+    assert_string_equal(r->out, "core_surface: ok\n");
+}
+
+static void
 test_core_bspline_script(void **state)
 {
     result *r = *state;
@@ -912,6 +922,7 @@ main(int argc, char **argv)
 {
     const struct CMUnitTest tests[] = {
         T(test_core_bezier_script),
+        T(test_core_surface_script),
         T(test_core_bspline_script),
         T(test_core_more_script),
         T(test_core_reduce_script),

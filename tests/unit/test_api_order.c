@@ -76,6 +76,16 @@ classify(const char *decl, enum role prev, int *is_array)
     *is_array = 0;
     if (strstr(decl, "cf_diag_t") != NULL)
         return DIAG;
+    /* a surface's (u, v), and its grid of parameters uv with counts nu, nv */
+    if (strcmp(decl, "double v") == 0 && prev == PARAM)
+        return PARAM;
+    if (strcmp(decl, "const double *uv") == 0) {
+        *is_array = 1;
+        return PARAM;
+    }
+    if ((prev == PARAM || prev == COUNT) &&
+        (strcmp(decl, "size_t nu") == 0 || strcmp(decl, "size_t nv") == 0))
+        return COUNT;
     if (strcmp(name, "t") == 0 || strcmp(name, "u") == 0) {
         if (strcmp(decl, "double t") == 0 || strcmp(decl, "double u") == 0)
             return PARAM;
@@ -281,7 +291,8 @@ test_public_headers(void **state)
 {
     static const char *const headers[] = {
         "core.h", "knots.h", "bernstein.h", "bezier.h", "bspline.h",
-        "geometry.h", "conic.h", "interp.h", "offset.h",
+        "geometry.h", "conic.h", "interp.h", "offset.h", "surface.h", "surface-make.h",
+        "surface-triangle.h",
 #ifdef CF_TEST_RENDER
         "figure.h", "style.h", "label.h", "output.h",
 #endif

@@ -233,10 +233,7 @@ opt_text(lua_State *L, int idx, const char *what, const char *def)
 {
     if (lua_isnil(L, idx))
         return def;
-    if (!lua_isstring(L, idx))
-        luaL_error(L, "figure: %s must be a string, got %s", what,
-                   luaL_typename(L, idx));
-    return lua_tostring(L, idx);
+    return cf__lua_check_text(L, idx, "figure", what);
 }
 
 /* width and height (pushed) in bp */
@@ -273,7 +270,7 @@ l_figure(lua_State *L)
     if (cf__lua_field(L, 1, "name") != LUA_TSTRING)
         return luaL_error(L, "figure: name = \"...\" is required (it names "
                           "the files)");
-    check_name(L, lua_tostring(L, 2));
+    check_name(L, cf__lua_check_text(L, 2, "figure", "name"));
     cf__lua_field(L, 1, "caption");
     cf__lua_field(L, 1, "title");
     read_page(L, &w, &h);

@@ -17,6 +17,9 @@
 #include "ltheme.h"
 
 #define FIGURES_KEY "curvefig.figures"
+/* The set of their names: a new name is looked up once, not compared
+** with every figure before it (100,000 figure{} calls took 55 s). */
+#define NAMES_KEY "curvefig.figure-names"
 
 #define check(L, fn, call, diag) cf__lua_fig_check((L), (fn), fig, (call), \
                                                    (diag))
@@ -58,16 +61,11 @@ check_name(lua_State *L, const char *name)
                        "'_' and '.' are allowed (it becomes a file name)",
                        name);
     }
-    lua_getfield(L, LUA_REGISTRYINDEX, FIGURES_KEY);
-    for (lua_Integer i = 1; i <= (lua_Integer)lua_rawlen(L, -1); i++) {
-        lua_rawgeti(L, -1, i);
-        lua_getiuservalue(L, -1, 1);
-        if (strcmp(lua_tostring(L, -1), name) == 0)
-            luaL_error(L, "figure: a figure named \"%s\" is already defined",
-                       name);
-        lua_pop(L, 2);
-    }
-    lua_pop(L, 1);
+    lua_getfield(L, LUA_REGISTRYINDEX, NAMES_KEY);
+    if (lua_getfield(L, -1, name) != LUA_TNIL)
+        luaL_error(L, "figure: a figure named \"%s\" is already defined",
+                   name);
+    lua_pop(L, 2);
 }
 
 /* The projection of view = {azimuth, elevation} (degrees) into m[6]. */
@@ -255,7 +253,11 @@ keep_figure(lua_State *L, int idx)
     lua_getfield(L, LUA_REGISTRYINDEX, FIGURES_KEY);
     lua_pushvalue(L, idx);
     lua_rawseti(L, -2, (lua_Integer)lua_rawlen(L, -2) + 1);
-    lua_pop(L, 1);
+    lua_getfield(L, LUA_REGISTRYINDEX, NAMES_KEY);
+    lua_getiuservalue(L, idx, 1);
+    lua_pushboolean(L, 1);
+    lua_rawset(L, -3);
+    lua_pop(L, 2);
 }
 
 /* figure{ name = "markova-2.17", caption = "...", width = "8cm", ... } */
@@ -358,6 +360,8 @@ cf__lua_open_figure(lua_State *L)
     lua_pop(L, 1);
     lua_newtable(L);
     lua_setfield(L, LUA_REGISTRYINDEX, FIGURES_KEY);
+    lua_newtable(L);
+    lua_setfield(L, LUA_REGISTRYINDEX, NAMES_KEY);
 }
 
 /* ---- access for the tool ------------------------------------------------ */

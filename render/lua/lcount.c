@@ -117,17 +117,19 @@ count_guard(lua_State *L)
 {
     int kind = (int)lua_tointeger(L, 1), ok, ok2;
     lua_Integer a = lua_tointegerx(L, 3, &ok), b = lua_tointegerx(L, 4, &ok2);
-    if (kind == 0 && ok && a > 0) {
+    if (kind == 0 && ok && a > 0 && lua_isstring(L, 2)) {
         size_t l = 0, lsep = 0;
+        lua_Unsigned n = (lua_Unsigned)a, piece;
         lua_tolstring(L, 2, &l);
-        lua_tolstring(L, 4, &lsep);
+        if (lua_isstring(L, 4))
+            lua_tolstring(L, 4, &lsep);
+        piece = (lua_Unsigned)(l + lsep);
         /* a result over 2 GiB Lua refuses before its loop */
-        lua_Unsigned n = (lua_Unsigned)a, piece = (lua_Unsigned)(l + lsep);
         if (piece == 0 || piece <= (lua_Unsigned)INT_MAX / n)
             cf__script_charge(L, n);
-    }
-    else if (kind == 1 && ok && ok2 && b >= a)
+    } else if (kind == 1 && ok && ok2 && b >= a) {
         cf__script_charge(L, (lua_Unsigned)b - (lua_Unsigned)a + 1u);
+    }
     return 0;
 }
 

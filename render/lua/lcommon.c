@@ -312,14 +312,14 @@ cf__lua_check_text(lua_State *L, int idx, const char *fn, const char *what)
         unsigned char c = (unsigned char)text[i];
         n = cf__utf8_sequence(text + i, len - i);
         if (n == 0)
-            cf__lua_error(L, "%s: %s is not valid UTF-8 at byte %zu "
-                          "(byte 0x%02X)", fn, what, i + 1, c);
+            cf__lua_error(L, "%s: %s has invalid UTF-8 at byte %zu (0x%02X)",
+                          fn, what, i, c);
         if (c == 0)
-            cf__lua_error(L, "%s: %s has a NUL byte at byte %zu", fn,
-                          what, i + 1);
+            cf__lua_error(L, "%s: %s has a NUL byte at byte %zu", fn, what,
+                          i);
         if (c < 0x20 && c != '\t' && c != '\n')
             cf__lua_error(L, "%s: %s has the control character U+%04X at "
-                          "byte %zu", fn, what, c, i + 1);
+                          "byte %zu", fn, what, c, i);
     }
     return text;
 }

@@ -8,6 +8,7 @@
 #define CURVEFIG_RENDER_LUA_LCOMMON_H
 
 #include <stdbool.h>
+#include <stdio.h>
 
 #include <lauxlib.h>
 #include <lua.h>
@@ -76,8 +77,9 @@ const char *cf__lua_opt_text(lua_State *L, int idx, const char *fn,
 /* A text that reaches an output (a caption, a title, a name, a label, a
 ** legend entry, a slider's label ...): a string or a number, valid UTF-8
 ** without NUL or control characters other than tab and newline; refused
-** otherwise with the key and the byte ("figure: caption has the control
-** character U+0001 at byte 4").  cf__lua_opt_text checks the same. */
+** otherwise with the key and the byte, counted from 0 as in labels
+** ("figure: caption has the control character U+0001 at byte 3").
+** cf__lua_opt_text checks the same. */
 const char *cf__lua_check_text(lua_State *L, int idx, const char *fn,
                                const char *what);
 /* The length of the UTF-8 sequence at text (n bytes left), 0 when it is
@@ -143,6 +145,13 @@ bool cf__lua_grow(void **ptr, size_t *cap, size_t need, size_t elem,
 ** another failure by it, without calling up into the script module. */
 typedef struct cf__lua_budget {
     bool memory_exceeded; /* the script's memory limit was reached */
+    /* the instructions run (work done in C charged too) and the limit */
+    unsigned long long instructions, max_instructions;
+    size_t printed;       /* bytes print has written */
+    FILE *out;            /* where print writes */
+    /* raises the limit's error when a limit is exceeded (script.c);
+    ** returns 0 otherwise */
+    int (*check)(lua_State *L);
 } cf__lua_budget_t;
 
 /* True when the state's memory limit was reached (a NO_MEMORY status is

@@ -10,13 +10,52 @@
 #include <lualib.h>
 
 #include "lcount.h"
+#include "lcommon.h"
 #include "lpattern.h"
+#include "ltrace.h"
 #include "script.h"
 
 /* Iterations between two charges of the table loops */
 #define CHARGE_EVERY 4096
 
 enum { FIND, MATCH, GMATCH, GSUB };
+
+static cf__lua_budget_t *
+budget_of(lua_State *L)
+{
+    void *ud;
+    lua_getallocf(L, &ud);
+    return ud;
+}
+
+int
+cf__lua_charge(lua_State *L, unsigned long long steps)
+{
+    cf__lua_budget_t *b = budget_of(L);
+    b->instructions = steps > ULLONG_MAX - b->instructions
+                          ? ULLONG_MAX : b->instructions + steps;
+    return b->check(L);
+}
+
+/* A caught error costs Lua a walk over the whole call stack (it shrinks
+** the stack after unwinding), which no instruction pays for: a script
+** that catches errors in a loop 100,000 calls deep does quadratic work.
+** Charge two instructions per level (a level of that walk takes about as
+** long as two instructions). */
+void
+cf__lua_charge_unwind(lua_State *L)
+{
+    cf__lua_charge(L, 2 * ((unsigned long long)cf__lua_deepest_level(L) + 1));
+}
+
+/* Instructions left before the limit. */
+static unsigned long long
+budget_left(lua_State *L)
+{
+    cf__lua_budget_t *b = budget_of(L);
+    return b->instructions < b->max_instructions
+               ? b->max_instructions - b->instructions : 0;
+}
 
 static int
 has_specials(const char *p, size_t lp)
@@ -56,7 +95,7 @@ plain_find(lua_State *L, const char *str, size_t ls, const char *pat,
             return 0;
         init = start_of(i, ls);
     }
-    cf__script_charge(L, (ls - (init < ls ? init : ls) + lp) / 16);
+    cf__lua_charge(L, (ls - (init < ls ? init : ls) + lp) / 16);
     lua_pushboolean(L, 1);
     if (init > ls) {
         lua_pushnil(L);
@@ -99,13 +138,13 @@ pattern_guard(lua_State *L)
             return 0;       /* Lua refuses it, or there is no search */
         init = start_of(i, ls);
     }
-    room = cf__script_left(L);
+    room = budget_left(L);
     left = room > LLONG_MAX ? LLONG_MAX : (long long)room;
     st = cf__pattern_cost(str, ls, pat, lp, init, kind >= GMATCH, left,
                           &steps);
     if (st == CF__PATTERN_OVER)
-        return cf__script_charge(L, ULLONG_MAX);
-    cf__script_charge(L, (unsigned long long)steps);
+        return cf__lua_charge(L, ULLONG_MAX);
+    cf__lua_charge(L, (unsigned long long)steps);
     return 0;
 }
 
@@ -126,9 +165,9 @@ count_guard(lua_State *L)
         piece = (lua_Unsigned)(l + lsep);
         /* a result over 2 GiB Lua refuses before its loop */
         if (piece == 0 || piece <= (lua_Unsigned)INT_MAX / n)
-            cf__script_charge(L, n);
+            cf__lua_charge(L, n);
     } else if (kind == 1 && ok && ok2 && b >= a) {
-        cf__script_charge(L, (lua_Unsigned)b - (lua_Unsigned)a + 1u);
+        cf__lua_charge(L, (lua_Unsigned)b - (lua_Unsigned)a + 1u);
     }
     return 0;
 }
@@ -141,7 +180,7 @@ shift(lua_State *L, lua_Integer dst, lua_Integer count, int step)
 {
     for (lua_Integer k = 0; k < count; k++, dst += step) {
         if (k % CHARGE_EVERY == 0)
-            cf__script_charge(L, CHARGE_EVERY);
+            cf__lua_charge(L, CHARGE_EVERY);
         lua_geti(L, 1, dst + step);
         lua_seti(L, 1, dst);
     }
@@ -201,7 +240,13 @@ counted_remove(lua_State *L)
 static void
 print_part(lua_State *L, FILE *out, const char *str, size_t len)
 {
-    size_t room = cf__script_print_room(L, len);
+    cf__lua_budget_t *b = budget_of(L);
+    size_t room = b->printed < CF_SCRIPT_MAX_PRINT
+                      ? CF_SCRIPT_MAX_PRINT - b->printed : 0;
+    cf__lua_charge(L, len / 16);
+    if (room > len)
+        room = len;
+    b->printed += room;
     fwrite(str, 1, room, out);
     if (room < len) {
         fputc('\n', out);
@@ -214,7 +259,7 @@ print_part(lua_State *L, FILE *out, const char *str, size_t len)
 static int
 counted_print(lua_State *L)
 {
-    FILE *out = cf__script_out(L);
+    FILE *out = budget_of(L)->out;
     int n = lua_gettop(L);
     for (int i = 1; i <= n; i++) {
         size_t len;

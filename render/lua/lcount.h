@@ -23,20 +23,11 @@
 ** libraries and as print (script.c's sandbox opener). */
 void cf__lua_open_counted(lua_State *L);
 
-/* ---- script.c: the budget of the script whose state L is -------------- */
-
-/* Add steps to the instructions the script has run; past its limit raise
-** the limit's error (the hook then raises it again at every instruction).
-** Returns 0 when within it. */
-int cf__script_charge(lua_State *L, unsigned long long steps);
-/* Instructions left before the limit. */
-unsigned long long cf__script_left(lua_State *L);
+/* Charge steps to the instructions of the script whose state L is (its
+** budget, lcommon.h); past its limit raise the limit's error.  Returns 0
+** when within it. */
+int cf__lua_charge(lua_State *L, unsigned long long steps);
 /* Charge what a caught error cost Lua: a walk over the call stack. */
-void cf__script_charge_unwind(lua_State *L);
-/* print is about to write bytes: charge them and return how many of them
-** fit in the script's output limit (CF_SCRIPT_MAX_PRINT). */
-size_t cf__script_print_room(lua_State *L, size_t bytes);
-/* Where print writes. */
-FILE *cf__script_out(lua_State *L);
+void cf__lua_charge_unwind(lua_State *L);
 
 #endif

@@ -38,11 +38,8 @@ enum { LIMIT_NONE, LIMIT_MEMORY, LIMIT_INSTRUCTIONS };
 struct cf_script {
     cf__lua_budget_t budget; /* first: the bindings read it (lcommon.h) */
     lua_State *L;
-    FILE *out;
     size_t used, max_memory, reserve;
-    unsigned long long instructions, max_instructions;
     int limit_hit;
-    size_t printed;    /* bytes print has written */
     int running;       /* a script is running (the stack can be read) */
     char where[160];   /* "file:line:" last seen by the hook, or "" */
     cf_allocator_t alloc;   /* the budget, current while the script runs */
@@ -111,10 +108,10 @@ budget_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
         return NULL;
     s->used = (old <= s->used ? s->used - old : 0) + nsize;
     if (nsize > old) {
-        s->instructions += (nsize - old) / ALLOC_BYTES;
+        s->budget.instructions += (nsize - old) / ALLOC_BYTES;
         /* over the limit: the hook raises it at the next instruction, not
         ** up to HOOK_EVERY instructions (and as many allocations) later */
-        if (s->instructions > s->max_instructions &&
+        if (s->budget.instructions > s->budget.max_instructions &&
             s->limit_hit == LIMIT_NONE && s->running) {
             s->limit_hit = LIMIT_INSTRUCTIONS;
             note_position(s);
@@ -150,7 +147,7 @@ limit_error(lua_State *L, cf_script_t *s)
     else
         lua_pushfstring(L, "%sscript exceeded the instruction limit of %I "
                         "instructions", s->where,
-                        (lua_Integer)s->max_instructions);
+                        (lua_Integer)s->budget.max_instructions);
     return lua_error(L);
 }
 
@@ -165,8 +162,9 @@ count_hook(lua_State *L, lua_Debug *ar)
         ar->currentline > 0)
         snprintf(s->where, sizeof s->where, "%s:%d: ", ar->short_src,
                  ar->currentline);
-    s->instructions += HOOK_EVERY;
-    if (s->instructions > s->max_instructions && s->limit_hit == LIMIT_NONE)
+    s->budget.instructions += HOOK_EVERY;
+    if (s->budget.instructions > s->budget.max_instructions &&
+        s->limit_hit == LIMIT_NONE)
         s->limit_hit = LIMIT_INSTRUCTIONS;
     if (s->limit_hit != LIMIT_NONE) {
         /* armed for good: every later instruction raises it again */
@@ -198,7 +196,7 @@ safe_call(lua_State *L)
     if (s->limit_hit != LIMIT_NONE)
         return limit_error(L, s);
     if (!lua_toboolean(L, 1))
-        cf__script_charge_unwind(L);
+        cf__lua_charge_unwind(L);
     return lua_gettop(L);
 }
 
@@ -236,58 +234,21 @@ safe_xpcall(lua_State *L)
 
 /* ---- charging work done in C -------------------------------------------- */
 
-int
-cf__script_charge(lua_State *L, unsigned long long steps)
+/* The budget's check (lcommon.h): past the instruction limit, or once any
+** limit is hit, raise the limit's error with the hook armed at every
+** instruction. */
+static int
+check_limits(lua_State *L)
 {
     cf_script_t *s = script_of(L);
-    s->instructions = steps > ULLONG_MAX - s->instructions
-                          ? ULLONG_MAX : s->instructions + steps;
-    if (s->instructions > s->max_instructions && s->limit_hit == LIMIT_NONE)
+    if (s->budget.instructions > s->budget.max_instructions &&
+        s->limit_hit == LIMIT_NONE)
         s->limit_hit = LIMIT_INSTRUCTIONS;
     if (s->limit_hit == LIMIT_NONE)
         return 0;
     note_position(s);
     lua_sethook(L, count_hook, LUA_MASKCOUNT, 1);
     return limit_error(L, s);
-}
-
-unsigned long long
-cf__script_left(lua_State *L)
-{
-    cf_script_t *s = script_of(L);
-    return s->instructions < s->max_instructions
-               ? s->max_instructions - s->instructions : 0;
-}
-
-/* A caught error costs Lua a walk over the whole call stack (it shrinks
-** the stack after unwinding), which no instruction pays for: a script
-** that catches errors in a loop 100,000 calls deep does quadratic work.
-** Charge two instructions per level (a level of that walk takes about as
-** long as two instructions). */
-void
-cf__script_charge_unwind(lua_State *L)
-{
-    cf__script_charge(L, 2 * ((unsigned long long)cf__lua_deepest_level(L) +
-                              1));
-}
-
-size_t
-cf__script_print_room(lua_State *L, size_t bytes)
-{
-    cf_script_t *s = script_of(L);
-    size_t room = s->printed < CF_SCRIPT_MAX_PRINT
-                      ? CF_SCRIPT_MAX_PRINT - s->printed : 0;
-    cf__script_charge(L, bytes / ALLOC_BYTES);
-    if (bytes > room)
-        bytes = room;
-    s->printed += bytes;
-    return bytes;
-}
-
-FILE *
-cf__script_out(lua_State *L)
-{
-    return script_of(L)->out;
 }
 
 /* load of text chunks only. */
@@ -431,7 +392,7 @@ cf_script_create(const cf_script_limits_t *limits, FILE *out,
     s = calloc(1, sizeof *s);
     if (s == NULL)
         return fail(diag, CF_STATUS_NO_MEMORY, "out of memory%s", NULL);
-    s->out = out != NULL ? out : stdout;
+    s->budget.out = out != NULL ? out : stdout;
     s->params = cf__params_create();
     if (s->params == NULL) {
         free(s);
@@ -440,9 +401,10 @@ cf_script_create(const cf_script_limits_t *limits, FILE *out,
     s->max_memory = limits && limits->max_memory ? limits->max_memory
                                                  : CF_SCRIPT_DEFAULT_MEMORY;
     s->reserve = s->max_memory / 16 < RESERVE ? s->max_memory / 16 : RESERVE;
-    s->max_instructions = limits && limits->max_instructions
-                              ? limits->max_instructions
-                              : CF_SCRIPT_DEFAULT_INSTRUCTIONS;
+    s->budget.check = check_limits;
+    s->budget.max_instructions = limits && limits->max_instructions
+                                     ? limits->max_instructions
+                                     : CF_SCRIPT_DEFAULT_INSTRUCTIONS;
     s->L = lua_newstate(budget_alloc, s);
     if (s->L == NULL) {
         cf_status_t st = s->limit_hit ? too_small(s, diag)

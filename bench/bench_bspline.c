@@ -180,11 +180,13 @@ w5ins_run(void *st, double sum[2])
     cf_bspline_t *q = NULL;
     const double *P;
     double sx = 0.0, sy = 0.0;
+    size_t n;
     if (cf_bspline_refine(s->curve, s->x, W5_KNOTS, &q, NULL)
         != CF_STATUS_OK)
         return 1;
     P = cf_bspline_hpoints(q);
-    for (size_t i = 0; i < cf_bspline_count(q); i++) {
+    n = cf_bspline_count(q);   /* once: a call per point is not the work */
+    for (size_t i = 0; i < n; i++) {
         sx += P[2 * i];
         sy += P[2 * i + 1];
     }

@@ -155,6 +155,50 @@ refine_loop(const double *U, const double *P, double *V, double *Q,
     }
 }
 
+/* The new knots X: finite, inside the domain, sorted, and no knot's
+** final multiplicity above p + 1.  One pass over X and the knot vector
+** together; the messages (which knot, why) come from the detailed checks
+** only when the pass finds something wrong. */
+static cf_status_t
+refine_check(const cf_bspline_t *c, const double *X, size_t nx,
+             cf_diag_t *diag)
+{
+    const double *U = c->U;
+    size_t nk = c->nknots, at = 0, p1 = (size_t)c->p + 1;
+    double prev = c->a;
+    bool ok = true;
+    cf_status_t st;
+    /* a NaN fails every comparison; an infinity leaves the domain */
+    for (size_t j = 0; j < nx; j++) {
+        ok &= X[j] >= prev;
+        prev = X[j];
+    }
+    if (ok && prev <= c->b) {
+        for (size_t j = 0; j < nx;) {
+            size_t e = j + 1, s = 0;
+            while (e < nx && X[e] == X[j])
+                e++;
+            while (at < nk && U[at] < X[j])
+                at++;
+            while (at + s < nk && U[at + s] == X[j])
+                s++;
+            if (s + (e - j) > p1)
+                return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)j,
+                                 "knot %g would get multiplicity "
+                                 "%zu; degree %d allows at most %d", X[j],
+                                 s + (e - j), c->p, c->p + 1);
+            j = e;
+        }
+        return CF_STATUS_OK;
+    }
+    for (size_t j = 0; j < nx; j++) {
+        st = cf__bspline_check_param(c, X[j], diag);
+        if (st != CF_STATUS_OK)
+            return st;
+    }
+    return cf__check_knot_order(X, nx, "new knot", diag);
+}
+
 cf_status_t
 cf_bspline_refine(const cf_bspline_t *c, const double *X, size_t nx,
                   cf_bspline_t **out, cf_diag_t *diag)
@@ -171,34 +215,9 @@ cf_bspline_refine(const cf_bspline_t *c, const double *X, size_t nx,
     if (X == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "knots are NULL");
-    for (size_t j = 0; j < nx; j++) {
-        st = cf__bspline_check_param(c, X[j], diag);
-        if (st != CF_STATUS_OK)
-            return st;
-    }
-    st = cf__check_knot_order(X, nx, "new knot", diag);
+    st = refine_check(c, X, nx, diag);
     if (st != CF_STATUS_OK)
         return st;
-    /* final multiplicities: walk the sorted new knots and the knot vector
-    ** together */
-    {
-        size_t at = 0;
-        for (size_t j = 0; j < nx;) {
-            size_t e = j, s = 0;
-            while (e + 1 < nx && X[e + 1] == X[j])
-                e++;
-            while (at < c->nknots && c->U[at] < X[j])
-                at++;
-            while (at + s < c->nknots && c->U[at + s] == X[j])
-                s++;
-            if (s + (e - j + 1) > (size_t)c->p + 1)
-                return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)j,
-                                 "knot %g would get multiplicity "
-                                 "%zu; degree %d allows at most %d", X[j],
-                                 s + (e - j + 1), c->p, c->p + 1);
-            j = e + 1;
-        }
-    }
     if (nx > ((size_t)1 << 30))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "too many knots");

@@ -154,23 +154,17 @@ count_spans(const cf_bspline_t *c)
     return s;
 }
 
-/* A5.6 on a clamped curve: Q receives nseg * (p + 1) * hd doubles,
-** breaks (may be NULL) nseg + 1 parameters. */
-static void
-decompose(const cf_bspline_t *c, double *Q, double *breaks)
+/* The heart of A5.6 (p >= 1): one pass over the knots, each piece's
+** points written in place, the next piece's first points saved as they
+** are made (inlined with constant p and hd for the common cases). */
+CF__INLINE void
+decompose_loop(const double *U, const double *P, size_t m, size_t p,
+               size_t hd, double *Q, double *breaks)
 {
-    size_t p = (size_t)c->p, hd = c->hdim, m = c->nknots - 1;
     size_t seg = (p + 1) * hd, a = p, b = p + 1, nb = 0;
-    const double *U = c->U, *P = c->P;
     double alphas[CF_BSPLINE_MAX_DEGREE + 1];
-    if (p == 0) {
-        /* every point is a constant piece on its span */
-        memcpy(Q, P, c->count * hd * sizeof *Q);
-        if (breaks != NULL)
-            memcpy(breaks, U, c->nknots * sizeof *U);
-        return;
-    }
-    memcpy(Q, P, seg * sizeof *Q);
+    for (size_t k = 0; k < seg; k++)
+        Q[k] = P[k];
     if (breaks != NULL)
         breaks[0] = U[p];
     while (b < m) {
@@ -190,7 +184,8 @@ decompose(const cf_bspline_t *c, double *Q, double *breaks)
                     cf__bspline_lerp(cur + k * hd, cur + (k - 1) * hd,
                                      cur + k * hd, alphas[k - s], hd);
                 if (b < m)
-                    cf__bspline_copy_pt(cur + seg + save * hd, cur + p * hd, hd);
+                    cf__bspline_copy_pt(cur + seg + save * hd,
+                                        cur + p * hd, hd);
             }
         }
         nb++;
@@ -199,10 +194,34 @@ decompose(const cf_bspline_t *c, double *Q, double *breaks)
         if (b < m) {
             size_t from = mult < p ? p - mult : 0;
             for (size_t ii = from; ii <= p; ii++)
-                cf__bspline_copy_pt(Q + nb * seg + ii * hd, P + (b - p + ii) * hd, hd);
+                cf__bspline_copy_pt(Q + nb * seg + ii * hd,
+                                    P + (b - p + ii) * hd, hd);
             a = b;
             b++;
         }
+    }
+}
+
+/* A5.6 on a clamped curve: Q receives nseg * (p + 1) * hd doubles,
+** breaks (may be NULL) nseg + 1 parameters. */
+static void
+decompose(const cf_bspline_t *c, double *Q, double *breaks)
+{
+    size_t p = (size_t)c->p, hd = c->hdim, m = c->nknots - 1;
+    const double *U = c->U, *P = c->P;
+    if (p == 0) {
+        /* every point is a constant piece on its span */
+        memcpy(Q, P, c->count * hd * sizeof *Q);
+        if (breaks != NULL)
+            memcpy(breaks, U, c->nknots * sizeof *U);
+    } else if (p == 3 && hd == 2) {
+        decompose_loop(U, P, m, 3, 2, Q, breaks);
+    } else if (p == 3 && hd == 3) {
+        decompose_loop(U, P, m, 3, 3, Q, breaks);
+    } else if (p == 2 && hd == 2) {
+        decompose_loop(U, P, m, 2, 2, Q, breaks);
+    } else {
+        decompose_loop(U, P, m, p, hd, Q, breaks);
     }
 }
 

@@ -153,15 +153,7 @@ CF_API cf_status_t cf_bezier_transform(const cf_bezier_t *c, const double *A,
 CF_API cf_status_t cf_bezier_elevate(const cf_bezier_t *c, int r,
                                      cf_bezier_t **out, cf_diag_t *diag);
 
-/* Degree reduction by one (n >= 1) that keeps both end points; *max_error
-** (may be NULL) receives the maximum distance |c(t) - r(t)| between the two
-** curves, measured at 64 (n + 1) + 1 evenly spaced parameters.  The control
-** points invert elevation from both ends and blend linearly (weight
-** i / (n - 1) on the backward solution).  Degree 1 gives the midpoint (the
-** ends cannot both be kept).  Rational curves are reduced homogeneously;
-** CF_STATUS_DEGENERATE (naming the index) if a weight comes out <= 0. */
-CF_API cf_status_t cf_bezier_reduce(const cf_bezier_t *c, cf_bezier_t **out,
-                                    double *max_error, cf_diag_t *diag);
+/* Degree reduction: cf_bezier_reduce in curvefig/reduce.h. */
 
 /* ---- geometry ----------------------------------------------------------- */
 

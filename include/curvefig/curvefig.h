@@ -16,5 +16,6 @@
 #include "curvefig/knots.h"
 #include "curvefig/bspline.h"
 #include "curvefig/interp.h"
+#include "curvefig/reduce.h"
 
 #endif

@@ -328,23 +328,6 @@ m_elevate(lua_State *L)
     return 1;
 }
 
-/* c:reduce() -> curve of degree n - 1, max error */
-static int
-m_reduce(lua_State *L)
-{
-    cf_bezier_t *c = cf__lua_check_bezier(L, 1);
-    cf_bezier_t **out = cf__lua_new_bezier(L);
-    cf_diag_t diag;
-    double err = 0.0;
-    cf_status_t st;
-    cf_diag_clear(&diag);
-    st = cf_bezier_reduce(c, out, &err, &diag);
-    if (st != CF_STATUS_OK)
-        return cf__lua_fail(L, "reduce", st, &diag);
-    lua_pushnumber(L, err);
-    return 2;
-}
-
 /* c:decasteljau(t) -> { {level 0 points}, {level 1}, ..., {c(t)} } */
 static int
 m_decasteljau(lua_State *L)
@@ -565,7 +548,6 @@ static const luaL_Reg methods[] = {
     { "reverse", m_reverse },
     { "transform", m_transform },
     { "elevate", m_elevate },
-    { "reduce", m_reduce },
     { "decasteljau", m_decasteljau },
     { "degree", m_degree },
     { "dim", m_dim },

@@ -124,6 +124,7 @@ void cf__lua_open_bezier(lua_State *L);
 void cf__lua_open_bernstein(lua_State *L);
 void cf__lua_open_knots(lua_State *L);
 void cf__lua_open_offset(lua_State *L);
+void cf__lua_open_reduce(lua_State *L);
 void cf__lua_open_interp(lua_State *L);
 void cf__lua_open_conic(lua_State *L);
 /* All of the figure language's functions, every opener in order, before

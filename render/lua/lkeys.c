@@ -40,6 +40,7 @@ static const char *const params[] = {
 static const char *const offset_methods[] = {
     "levien", "tiller-hanson", NULL,
 };
+static const char *const reduce_methods[] = { "l2", "uniform", NULL };
 
 /* ---- key lists ---------------------------------------------------------- */
 
@@ -132,6 +133,12 @@ static const cf__lua_key_t approximate_keys[] = {
 static const cf__lua_key_t offset_keys[] = {
     KEY("tolerance"), KEY("trim"), NAMES("method", offset_methods), END,
 };
+static const cf__lua_key_t reduce_keys[] = {
+    KEY("by"), KEY("continuity"), NAMES("method", reduce_methods), END,
+};
+static const cf__lua_key_t reduce_bspline_keys[] = {
+    KEY("by"), KEY("tolerance"), NAMES("method", reduce_methods), END,
+};
 static const cf__lua_key_t range_keys[] = { KEY("range"), END };
 static const cf__lua_key_t closed_keys[] = { KEY("closed"), END };
 static const cf__lua_key_t scale_keys[] = { KEY("scale"), END };
@@ -199,6 +206,10 @@ static const cf__lua_schema_t schemas[CF__KEYS_COUNT_] = {
                                    "coons_chain(%s)"),
     [CF__KEYS_OFFSET] = METHOD("offset", offset_keys, NULL, NULL,
                                "c:offset(0.1, %s)"),
+    [CF__KEYS_REDUCE] = METHOD("reduce", reduce_keys, NULL, NULL,
+                               "c:reduce(%s)"),
+    [CF__KEYS_REDUCE_BSPLINE] = METHOD("reduce", reduce_bspline_keys, NULL,
+                                       NULL, "s:reduce(%s)"),
     [CF__KEYS_CURVE] = DRAW("curve", line_style, range_keys, NULL,
                               "f:curve(c, %s)"),
     [CF__KEYS_POLYGON] = DRAW("polygon", line_style, point_labels, NULL,

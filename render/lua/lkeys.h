@@ -50,6 +50,8 @@ typedef enum cf__lua_keys {
     CF__KEYS_PARAM_POINTS,  /* points{...}, a draggable point list */
     CF__KEYS_CONSTRAIN,     /* nested: constrain = { ... } of points{} */
     CF__KEYS_THEME,
+    CF__KEYS_REDUCE,          /* c:reduce{...} of a Bézier curve */
+    CF__KEYS_REDUCE_BSPLINE,  /* s:reduce{...} of a B-spline */
     CF__KEYS_COUNT_
 } cf__lua_keys_t;
 

@@ -334,6 +334,7 @@ cf__lua_open_language(lua_State *L)
     cf__lua_open_knots(L);
     cf__lua_open_bernstein(L);
     cf__lua_open_offset(L);
+    cf__lua_open_reduce(L);
     cf__lua_open_interp(L);
     cf__lua_open_conic(L);
     cf__lua_open_figure(L);

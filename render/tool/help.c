@@ -9,8 +9,8 @@
 #include "checks.h"
 #include "curvefig/label.h"
 #include "help.h"
+#include "helpers.h"
 #include "language-text.h"   /* generated from docs/language.md */
-#include "live.h"
 
 static const char *const overview[] = {
     "usage: curvefig COMMAND [OPTIONS] SCRIPT.lua\n",
@@ -143,8 +143,11 @@ cf__tool_help(const char *topic)
     if (cf__tool_checks_help(topic) == 0)
         return 0;
     if (strcmp(topic, "live") == 0) {
-        cf__tool_live_help();
-        return 0;
+        /* the help is the live program's own */
+        static char prog[] = "curvefig", live[] = "live", help[] = "--help";
+        char *argv[] = { prog, live, help, NULL };
+        fflush(stdout);
+        return cf__tool_run_helper(CF__TOOL_LIVE_HELPER, 3, argv);
     }
     if (strcmp(topic, "language") == 0) {
         put_lines(language);

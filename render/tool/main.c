@@ -22,11 +22,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "checks.h"
 #include "curvefig/figure.h"
 #include "help.h"
+#include "helpers.h"
 #include "html.h"
-#include "live.h"
+#include "pango-lazy.h"
 #include "script.h"
 #include "tool.h"
 
@@ -531,6 +531,12 @@ render_figures(const cf_script_t *s, const options *o)
     return rc;
 }
 
+static void
+fonts_init(void)
+{
+    (void)cf__tool_fonts_init();
+}
+
 static int
 run_script(const options *o)
 {
@@ -545,7 +551,8 @@ run_script(const options *o)
         return EXIT_USAGE;
     }
     start_watchdog(o->script, o->timeout);
-    cf__tool_fonts_init();
+    /* the fonts are configured when the first label opens pango */
+    cf__pango_before_open(fonts_init);
     cf_diag_clear(&diag);
     /* list keeps stdout for the names: the script's prints go to stderr */
     st = cf_script_create(&o->limits,
@@ -592,12 +599,11 @@ main(int argc, char **argv)
 {
     options o;
     int rc = 0;
-    if (argc > 1 && strcmp(argv[1], "compare") == 0)
-        return cf__tool_compare(argc - 1, argv + 1);
-    if (argc > 1 && strcmp(argv[1], "test") == 0)
-        return cf__tool_test(argc - 1, argv + 1);
+    if (argc > 1 && (strcmp(argv[1], "compare") == 0 ||
+                     strcmp(argv[1], "test") == 0))
+        return cf__tool_run_helper(CF__TOOL_CHECK_HELPER, argc, argv);
     if (argc > 1 && strcmp(argv[1], "live") == 0)
-        return cf__tool_live(argc - 1, argv + 1);
+        return cf__tool_run_helper(CF__TOOL_LIVE_HELPER, argc, argv);
     if (parse_args(argc, argv, &o, &rc) == 0) {
         if (strcmp(o.command, "gallery") == 0)
             rc = cf__tool_gallery(o.outdir, o.gallery_title,

@@ -1,5 +1,5 @@
 /*
- * The loader of curvefig's WebAssembly module (render/wasm): no
+ * The loader of curvefig's WebAssembly module (render/web): no
  * emscripten glue.  The module is standalone (WASI); what it imports is
  * provided here: the clock (Lua seeds its hashes with it), writes to
  * stdout/stderr (to the console), exit (an exception), and nothing else:

@@ -29,7 +29,7 @@ def main(root):
     wanted -= EXEMPT
     found, bad = set(), []
     for c in sorted(glob.glob(os.path.join(root, 'src', '*.c')) +
-                    glob.glob(os.path.join(root, 'render', '*.c'))):
+                    glob.glob(os.path.join(root, 'render', '*', '*.c'))):
         with open(c, encoding='utf-8') as f:
             text = f.read()
         for name in wanted:

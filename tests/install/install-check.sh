@@ -46,6 +46,21 @@ if [ -f "$libdir/libcurvefig-core.a" ]; then
     "$root/static" >/dev/null
     echo "ok: knot-insertion linked statically"
 fi
+# The installed tool: a render loads neither librsvg nor libmicrohttpd
+# (nor what they bring) nor pango; `compare` and `live` run its helpers
+# from the libexec directory, found from where the tool is.
+tool=$(find "$root" -path '*/bin/curvefig' -type f | head -n 1)
+if [ -n "$tool" ]; then
+    if ldd "$tool" | grep -Eq 'rsvg|microhttpd|gnutls|icu|stdc\+\+|pango'; then
+        echo "install-check: curvefig links $(ldd "$tool" | grep -Eo 'lib(rsvg|microhttpd|gnutls|icu|stdc|pango)[^ ]*' | head -n 1)" >&2
+        exit 1
+    fi
+    printf 'local f = figure{ name = "m", width = "2cm", height = "1cm" }\nf:line({0, 0}, {1, 1})\n' > "$root/m.lua"
+    "$tool" render "$root/m.lua" -o "$root" -f png >/dev/null
+    "$tool" compare "$root/m.png" "$root/m.png" >/dev/null
+    "$tool" help live | grep -q 'curvefig live SCRIPT.lua'
+    echo "ok: the installed curvefig renders without the checking and live libraries and runs its helpers"
+fi
 # The headers in every C standard from C89 on.
 printf '#include <curvefig/curvefig.h>\n#include <curvefig/figure.h>\nint main(void) { return cf_version() == CF_VERSION ? 0 : 1; }\n' > "$root/v.c"
 for std in c89 c99 c11 c17; do

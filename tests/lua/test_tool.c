@@ -207,6 +207,16 @@ test_core_more_script(void **state)
     assert_string_equal(r->out, "core_more: ok\n");
 }
 
+static void
+test_core_reduce_script(void **state)
+{
+    result *r = *state;
+    const char *args[] = { "run", src("core_reduce.lua"), NULL };
+    run_tool(r, args);
+    assert_int_equal(r->status, 0);
+    assert_string_equal(r->out, "core_reduce: ok\n");
+}
+
 /* ---- the core names against the C API ----------------------------------- */
 
 /* Parse "key v1 v2 ..." lines of the script's output into values. */
@@ -787,6 +797,7 @@ main(int argc, char **argv)
         T(test_core_bezier_script),
         T(test_core_bspline_script),
         T(test_core_more_script),
+        T(test_core_reduce_script),
         T(test_core_names_match_c_api),
         T(test_several_figures_each_written),
         T(test_list_and_only),

@@ -99,7 +99,7 @@ op_bezier_ops(cf_diag_t *diag)
     if (st == CF_STATUS_OK)
         st = cf_bezier_derivative(r, 1, &d, diag);
     if (st == CF_STATUS_OK)
-        st = cf_bezier_reduce(bez, &red, NULL, diag);
+        st = cf_bezier_reduce(bez, NULL, &red, NULL, diag);
     if (st != CF_STATUS_OK)
         assert_true(red == NULL);
     cf_bezier_destroy(l);

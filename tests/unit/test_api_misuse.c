@@ -305,8 +305,8 @@ test_bezier(void **state)
     BAD(cf_bezier_elevate(c, -1, &o, NULL));
     BAD(cf_bezier_elevate(NULL, 1, &o, NULL));
     BAD(cf_bezier_elevate(c, CF_BEZIER_MAX_DEGREE, &o, NULL));
-    BAD(cf_bezier_reduce(NULL, &o, NULL, NULL));
-    BAD(cf_bezier_reduce(c, NULL, NULL, NULL));
+    BAD(cf_bezier_reduce(NULL, NULL, &o, NULL, NULL));
+    BAD(cf_bezier_reduce(c, NULL, NULL, NULL, NULL));
     assert_null(o);
     /* geometry */
     BAD(cf_bezier_bbox(NULL, lo, hi));

@@ -280,90 +280,6 @@ test_flatten(void **state)
     }
 }
 
-static double
-param_dist(const cf_bezier_t *a, const cf_bezier_t *b, int samples)
-{
-    double m = 0.0;
-    for (int j = 0; j <= samples; j++) {
-        double p[3], q[3], d2 = 0.0;
-        cf_bezier_eval(a, (double)j / samples, p);
-        cf_bezier_eval(b, (double)j / samples, q);
-        for (size_t k = 0; k < cf_bezier_dim(a); k++)
-            d2 += (p[k] - q[k]) * (p[k] - q[k]);
-        m = fmax(m, sqrt(d2));
-    }
-    return m;
-}
-
-static void
-test_reduce(void **state)
-{
-    int rat_failed = 0;
-    tu_rng r;
-    (void)state;
-    tu_rng_seed(&r, 35);
-    for (int it = 0; it < 60; it++) {
-        int n = 1 + it % 8;
-        bool rat = it % 2 == 1;
-        size_t dim = 1 + (size_t)it % 3;
-        cf_bezier_t *c = random_curve(&r, dim, n, rat), *e, *red;
-        double err, p[3], q[3];
-        /* reducing an elevated curve gives the curve back */
-        assert_int_equal(cf_bezier_elevate(c, 1, &e, NULL), CF_STATUS_OK);
-        assert_int_equal(cf_bezier_reduce(e, &red, &err, NULL), CF_STATUS_OK);
-        assert_int_equal(cf_bezier_degree(red), n);
-        assert_true(err <= 1e-13);
-        assert_true(param_dist(c, red, 500) <= 1e-13);
-        cf_bezier_destroy(red);
-        cf_bezier_destroy(e);
-        if (n >= 2) {
-            /* a genuine reduction keeps both ends; its reported error is
-            ** the measured distance (an independent denser measure agrees
-            ** within 1 %) */
-            double dense;
-            cf_diag_t d;
-            cf_status_t st;
-            cf_diag_clear(&d);
-            st = cf_bezier_reduce(c, &red, &err, &d);
-            if (rat && st == CF_STATUS_DEGENERATE) {
-                /* the homogeneous reduction may give a weight <= 0 */
-                assert_non_null(strstr(d.msg, "weight"));
-                assert_null(red);
-                cf_bezier_destroy(c);
-                rat_failed++;
-                continue;
-            }
-            assert_int_equal(st, CF_STATUS_OK);
-            for (int end = 0; end <= 1; end++) {
-                cf_bezier_eval(c, end, p);
-                cf_bezier_eval(red, end, q);
-                for (size_t k = 0; k < dim; k++)
-                    assert_true(fabs(p[k] - q[k]) <= 1e-14);
-            }
-            dense = param_dist(c, red, 20000);
-            assert_true(err <= dense + 1e-15);
-            assert_true(dense <= 1.01 * err + 1e-15);
-            cf_bezier_destroy(red);
-        }
-        cf_bezier_destroy(c);
-    }
-    /* most rational reductions succeed */
-    assert_true(rat_failed <= 15);
-    /* degree 1: the midpoint */
-    {
-        const double s[] = { 0, 0, 2, 4 };
-        cf_bezier_t *c, *red;
-        double err, m[2];
-        cf_bezier_create(2, 1, s, NULL, &c, NULL);
-        assert_int_equal(cf_bezier_reduce(c, &red, &err, NULL), CF_STATUS_OK);
-        cf_bezier_eval(red, 0.3, m);
-        assert_true(m[0] == 1 && m[1] == 2);
-        tu_assert_close(err, sqrt(5.0), 1e-15, 1.0);
-        cf_bezier_destroy(red);
-        cf_bezier_destroy(c);
-    }
-}
-
 static int
 count_only(void *closure, const double *p, double t)
 {
@@ -376,11 +292,10 @@ count_only(void *closure, const double *p, double t)
 static void
 test_errors_and_oom(void **state)
 {
-    cf_bezier_t *c, *red = (cf_bezier_t *)&red;
+    cf_bezier_t *c;
     double lo[2], hi[2], v, p[2] = { 0.5, NAN };
     const double pt[] = { 1, 2 };
     int cnt = 0;
-    cf_diag_t d;
     tu_rng r;
     (void)state;
     tu_rng_seed(&r, 36);
@@ -405,37 +320,26 @@ test_errors_and_oom(void **state)
                      CF_STATUS_INVALID_ARG);
     assert_int_equal(cf_bezier_flatten(c, 1e-3, NULL, &cnt),
                      CF_STATUS_INVALID_ARG);
-    assert_int_equal(cf_bezier_reduce(NULL, &red, &v, NULL),
-                     CF_STATUS_INVALID_ARG);
-    assert_null(red);
-    assert_int_equal(cf_bezier_reduce(c, NULL, &v, NULL),
-                     CF_STATUS_INVALID_ARG);
     /* out of memory: each allocation failing in turn, nothing leaks */
     for (long k = 1;; k++) {
-        cf_status_t s1, s2, s3, s4;
+        cf_status_t s1, s2, s3;
         tu_fail_alloc_after(k);
         s1 = cf_bezier_bbox(c, lo, hi);
         tu_fail_alloc_after(k);
         s2 = cf_bezier_closest(c, p, &v, NULL);
         tu_fail_alloc_after(k);
         s3 = cf_bezier_flatten(c, 1e-3, count_only, &cnt);
-        tu_fail_alloc_after(k);
-        s4 = cf_bezier_reduce(c, &red, &v, NULL);
-        if (s4 == CF_STATUS_OK)
-            cf_bezier_destroy(red);
         assert_int_equal(tu_alloc_live(), 0);
         tu_fail_alloc_reset();
         assert_true(s1 == CF_STATUS_OK || s1 == CF_STATUS_NO_MEMORY);
         assert_true(s2 == CF_STATUS_OK || s2 == CF_STATUS_NO_MEMORY);
         assert_true(s3 == CF_STATUS_OK || s3 == CF_STATUS_NO_MEMORY);
-        assert_true(s4 == CF_STATUS_OK || s4 == CF_STATUS_NO_MEMORY);
-        if (s1 == CF_STATUS_OK && s2 == CF_STATUS_OK && s3 == CF_STATUS_OK &&
-            s4 == CF_STATUS_OK)
+        if (s1 == CF_STATUS_OK && s2 == CF_STATUS_OK && s3 == CF_STATUS_OK)
             break;
         assert_true(k < 20);
     }
     cf_bezier_destroy(c);
-    /* degree 0: a point; reduce refuses */
+    /* degree 0: a point */
     cf_bezier_create(2, 0, pt, NULL, &c, NULL);
     assert_int_equal(cf_bezier_bbox(c, lo, hi), CF_STATUS_OK);
     assert_true(lo[0] == 1 && hi[0] == 1 && lo[1] == 2 && hi[1] == 2);
@@ -444,10 +348,6 @@ test_errors_and_oom(void **state)
     assert_int_equal(cf_bezier_closest(c, (double[]){ 4, 6 }, &v, &v),
                      CF_STATUS_OK);
     assert_true(v == 5.0);
-    cf_diag_clear(&d);
-    assert_int_equal(cf_bezier_reduce(c, &red, NULL, &d),
-                     CF_STATUS_BAD_DEGREE);
-    assert_non_null(strstr(d.msg, "degree 0"));
     cnt = 0;
     assert_int_equal(cf_bezier_flatten(c, 1e-3, count_only, &cnt),
                      CF_STATUS_OK);
@@ -463,7 +363,6 @@ main(void)
         cmocka_unit_test(test_length),
         cmocka_unit_test(test_closest),
         cmocka_unit_test(test_flatten),
-        cmocka_unit_test(test_reduce),
         cmocka_unit_test(test_errors_and_oom),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

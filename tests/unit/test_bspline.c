@@ -1525,6 +1525,19 @@ test_create_errors(void **state)
         X[1] = 7.0;
         assert_int_equal(cf_bspline_refine(c, X, 2, &l, NULL),
                          CF_STATUS_DOMAIN);
+        /* a NaN or an infinity among sorted-looking knots: the value's
+        ** own status, not an order or domain complaint */
+        X[0] = 0.2;
+        X[1] = NAN;
+        assert_int_equal(cf_bspline_refine(c, X, 2, &l, NULL),
+                         CF_STATUS_NOT_FINITE);
+        X[1] = INFINITY;
+        assert_int_equal(cf_bspline_refine(c, X, 2, &l, NULL),
+                         CF_STATUS_NOT_FINITE);
+        X[0] = -0.1;
+        X[1] = 0.5;
+        assert_int_equal(cf_bspline_refine(c, X, 2, &l, NULL),
+                         CF_STATUS_DOMAIN);
         assert_int_equal(cf_bspline_elevate(c, -1, &l, NULL),
                          CF_STATUS_BAD_DEGREE);
         assert_int_equal(cf_bspline_elevate(c, 40, &l, NULL),

@@ -1,4 +1,4 @@
-// The WebAssembly module (render/wasm) against the native core: the same
+// The WebAssembly module (render/web) against the native core: the same
 // cases (Example 5.4.1's rational Bézier curve with unequal weights, the
 // cubic B-spline of Marková's sample, knot insertion in it) asked of both,
 // answers equal to the last bit; then scripts run inside the module:

@@ -1,5 +1,5 @@
 #!/bin/sh
-# Lua 5.4's source for the WebAssembly build (render/wasm): Debian's
+# Lua 5.4's source for the WebAssembly build (render/web): Debian's
 # source package lua5.4, unpacked with its patches into DIR
 # (default: third_party/lua5.4 under the top of the checkout).  Enables
 # deb-src lines for apt when none are there.  Run as root on Debian 12.

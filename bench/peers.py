@@ -1,0 +1,98 @@
+#!/usr/bin/env python3
+"""The two figures of the peer comparison, timed side by side in one run.
+
+    peers.py TOOL SOURCE_DIR [--pairs N]
+
+For orazem-decasteljau and markova-2.17: curvefig's PDF (`TOOL render
+figures/NAME.lua -f pdf --only NAME`), the same figure as MetaPost
+(bench/peers/NAME.mp, `mpost`, EPS with its labels set by TeX, the
+labels' .mpx removed before each run as after an edit) and as TikZ
+(bench/peers/NAME.tex, `pdflatex`, PDF), copied to a scratch directory.  Each round runs the three in
+turn (the order rotates), N rounds (default 7) after one warm-up round;
+the CPU time (user + system) of each process and its children.  One JSON
+line per figure: the medians and how many times faster curvefig is
+(targets of issue #28: >= 10x MetaPost, >= 60x TikZ).  A peer that is not
+installed is left out; exit status 77 (skipped) when neither is.
+"""
+import json
+import os
+import shutil
+import statistics
+import sys
+import tempfile
+
+FIGURES = ("orazem-decasteljau", "markova-2.17")
+
+
+def cpu_of(argv, cwd):
+    """Run argv in cwd (output discarded); CPU seconds of it and children."""
+    pid = os.fork()
+    if pid == 0:
+        try:
+            os.chdir(cwd)
+            fd = os.open(os.devnull, os.O_RDWR)
+            for k in (0, 1, 2):
+                os.dup2(fd, k)
+            os.execvp(argv[0], argv)
+        finally:
+            os._exit(127)
+    _, status, ru = os.wait4(pid, 0)
+    if status != 0:
+        raise RuntimeError("failed (status %d): %s" % (status, " ".join(argv)))
+    return ru.ru_utime + ru.ru_stime
+
+
+def main(argv):
+    if len(argv) < 3:
+        sys.stderr.write(__doc__)
+        return 2
+    tool, src = os.path.abspath(argv[1]), os.path.abspath(argv[2])
+    pairs = int(argv[argv.index("--pairs") + 1]) if "--pairs" in argv else 7
+    peers = {}
+    if shutil.which("mpost") and shutil.which("tex"):
+        # the .mpx of the labels removed first: a figure just edited
+        peers["metapost_eps"] = lambda name: [
+            "sh", "-c", "rm -f %s.mpx && exec mpost -interaction=batchmode "
+            "%s.mp" % (name, name)]
+    if shutil.which("pdflatex"):
+        peers["tikz_pdf"] = lambda name: [
+            "pdflatex", "-interaction=batchmode", "-halt-on-error",
+            name + ".tex"]
+    if not peers:
+        print("peers: neither mpost nor pdflatex is installed: skipped")
+        return 77
+    with tempfile.TemporaryDirectory() as tmp:
+        for name in FIGURES:
+            for ext in (".mp", ".tex"):
+                shutil.copy(os.path.join(src, "bench", "peers", name + ext),
+                            tmp)
+            cmds = {"curvefig_pdf": [tool, "render",
+                                     os.path.join(src, "figures",
+                                                  name + ".lua"),
+                                     "-o", tmp, "-f", "pdf", "--only", name]}
+            for k, make in peers.items():
+                cmds[k] = make(name)
+            times = {k: [] for k in cmds}
+            keys = list(cmds)
+            for r in range(pairs + 1):
+                order = keys[r % len(keys):] + keys[:r % len(keys)]
+                for k in order:
+                    t = cpu_of(cmds[k], tmp)
+                    if r > 0:
+                        times[k].append(t)
+            med = {k: statistics.median(v) for k, v in times.items()}
+            out = {"figure": name, "rounds": pairs}
+            out.update({k + "_cpu_s": round(v, 4) for k, v in med.items()})
+            for k in peers:
+                out["times_faster_than_" + k] = round(
+                    med[k] / med["curvefig_pdf"], 1)
+            print(json.dumps(out), flush=True)
+    return 0
+
+
+if __name__ == "__main__":
+    try:
+        sys.exit(main(sys.argv))
+    except RuntimeError as e:
+        sys.stderr.write("peers: %s\n" % e)
+        sys.exit(1)

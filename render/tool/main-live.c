@@ -1,0 +1,17 @@
+/*
+** curvefig-live: `curvefig live` (live.h), run by the curvefig command
+** (helpers.c) with its arguments.
+*/
+#include <stdio.h>
+#include <string.h>
+
+#include "live.h"
+
+int
+main(int argc, char **argv)
+{
+    if (argc > 1 && strcmp(argv[1], "live") == 0)
+        return cf__tool_live(argc - 1, argv + 1);
+    fprintf(stderr, "curvefig-live: run it as 'curvefig live'\n");
+    return 2;
+}

@@ -287,7 +287,10 @@ CF_API cf_status_t cf_figure_add_arrow(cf_figure_t *fig, double x, double y,
 
 /* A label (syntax below) placed at style.place of (x, y), style.offset bp
 ** away.  Role CF_ROLE_LABEL.  Text is parsed when added (syntax errors are
-** reported here, with the byte position). */
+** reported here, with the byte position).  A figure places at most
+** CF_FIGURE_MAX_LABELS labels (each among all the others: the work grows
+** faster than their square); more make its rendering fail, saying so. */
+#define CF_FIGURE_MAX_LABELS 250
 CF_API cf_status_t cf_figure_add_label(cf_figure_t *fig, double x, double y,
                                        const char *text,
                                        const cf_style_t *style);

@@ -54,9 +54,13 @@ extern "C" {
 **   Any UTF-8 text (Czech, Russian, Slovene, Chinese): letters outside
 **   ASCII are set upright; the family list supplies Cyrillic and CJK.
 ** Errors (unbalanced braces, unknown command, dangling _ or ^, invalid
-** UTF-8) are INVALID_ARG with the byte position in diag->index; an
-** unknown command's message names the nearest known one.
+** UTF-8) are INVALID_ARG with the byte position in diag->index; the
+** message quotes the text around that byte, and an unknown command's
+** message names the nearest known one.  A label has at most
+** CF_LABEL_MAX_BYTES bytes (each character of a run is laid out with the
+** run so far: the work grows with the square of a run's length).
 */
+#define CF_LABEL_MAX_BYTES 1000
 
 /* One run of glyphs of a laid-out label. */
 typedef enum cf_label_kind {

@@ -16,6 +16,11 @@
 extern "C" {
 #endif
 
+/* The most pixels of a PNG page (4 bytes each in memory: 256 MiB), and
+** at most 32000 on a side; a larger page fails with a message to lower
+** the dpi. */
+#define CF_PNG_MAX_PIXELS (64.0 * 1024 * 1024)
+
 typedef struct cf_figure cf_figure_t;
 
 typedef enum cf_format {

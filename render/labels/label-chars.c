@@ -44,6 +44,40 @@ cf__utf8_decode(const char *s, size_t len, size_t pos, unsigned *cp)
     return n;
 }
 
+void
+cf__label_excerpt(const char *s, size_t len, size_t at, char *out,
+                  size_t cap)
+{
+    size_t from = at > 24 ? at - 24 : 0, to = len - at > 24 ? at + 24 : len;
+    size_t k = 0, i;
+    if (cap < 16) {
+        out[0] = '\0';
+        return;
+    }
+    while (from > 0 && from < at && ((unsigned char)s[from] & 0xc0) == 0x80)
+        from++;
+    while (to < len && to > at && ((unsigned char)s[to] & 0xc0) == 0x80)
+        to--;
+    if (from > 0)
+        k += (size_t)snprintf(out, cap, "...");
+    for (i = from; i < to && k + 8 < cap;) {
+        unsigned cp = 0;
+        size_t n = cf__utf8_decode(s, len, i, &cp);
+        if (n == 0 || cp < 0x20 || cp == 0x7f) {
+            k += (size_t)snprintf(out + k, cap - k, "\\x%02X",
+                                  (unsigned char)s[i]);
+            i++;
+        } else {
+            memcpy(out + k, s + i, n);
+            k += n;
+            i += n;
+        }
+    }
+    if (i < len && k + 4 <= cap)
+        k += (size_t)snprintf(out + k, cap - k, "...");
+    out[k < cap ? k : cap - 1] = '\0';
+}
+
 size_t
 cf__utf8_encode(unsigned c, char *out)
 {

@@ -109,6 +109,12 @@ bool cf__label_measure(cf_label_t *lab, const font_t *f, const char *s,
 /* Decode one UTF-8 character at s[pos]; returns its length (0 when
 ** invalid) and the code point. */
 size_t cf__utf8_decode(const char *s, size_t len, size_t pos, unsigned *cp);
+/* The label text s (len bytes) around byte at, for a message: at most 24
+** bytes on either side, cut between characters, "..." where cut; a byte
+** that is not printable UTF-8 written \xHH.  out gets cap bytes at most
+** (72 hold any excerpt). */
+void cf__label_excerpt(const char *s, size_t len, size_t at, char *out,
+                       size_t cap);
 /* Encode c into out (4 bytes of room); returns the length. */
 size_t cf__utf8_encode(unsigned c, char *out);
 /* The symbol a command names: code point, class, italic in math. */

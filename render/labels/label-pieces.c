@@ -12,18 +12,24 @@
 cf_status_t
 cf__lp_error(parser_t *p, size_t at, const char *what)
 {
-    if (p->st == CF_STATUS_OK)
+    char ex[80];
+    if (p->st == CF_STATUS_OK) {
+        cf__label_excerpt(p->s, p->len, at, ex, sizeof ex);
         p->st = cf_diag_set(p->diag, CF_STATUS_INVALID_ARG, (long)at,
-                            "label \"%s\": %s at byte %zu", p->s, what, at);
+                            "label \"%s\": %s at byte %zu", ex, what, at);
+    }
     return p->st;
 }
 
 cf_status_t
 cf__lp_nomem(parser_t *p)
 {
-    if (p->st == CF_STATUS_OK)
+    char ex[80];
+    if (p->st == CF_STATUS_OK) {
+        cf__label_excerpt(p->s, p->len, 0, ex, sizeof ex);
         p->st = cf_diag_set(p->diag, CF_STATUS_NO_MEMORY, -1,
-                            "label \"%s\": out of memory", p->s);
+                            "label \"%s\": out of memory", ex);
+    }
     return p->st;
 }
 

@@ -120,6 +120,14 @@ cf_label_create(const char *text, const char *family, double size_bp,
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
                            "label \"%s\": font size %g must lie in (0, 1000] "
                            "bp", text, size_bp);
+    if (strlen(text) > CF_LABEL_MAX_BYTES) {
+        char ex[80];
+        cf__label_excerpt(text, strlen(text), 0, ex, sizeof ex);
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "label \"%s\": %zu bytes, more than the %d a "
+                           "label may have", ex, strlen(text),
+                           CF_LABEL_MAX_BYTES);
+    }
     if (family == NULL)
         family = CF__DEFAULT_FAMILY;
     if (family[0] == '\0' || strlen(family) >= CF_FONT_FAMILY_MAX)

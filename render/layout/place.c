@@ -388,8 +388,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
     cf__text_t *t;
     cf__auto_place_t *chosen;
     double x, y;
-    size_t i;
-    bool any = false;
+    size_t i, n;
     cf_status_t st;
 
     moved.ox -= at->px;
@@ -401,10 +400,15 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
     cf_free(fig->warnings);
     fig->warnings = NULL;
     fig->warnings_len = 0;
-    for (i = 0; i < fig->count && !any; i++)
-        any = is_label(fig, i, &x, &y, &t, &chosen, &s);
-    if (!any)
+    for (i = 0, n = 0; i < fig->count; i++)
+        n += is_label(fig, i, &x, &y, &t, &chosen, &s);
+    if (n == 0)
         return CF_STATUS_OK;
+    if (n > CF_FIGURE_MAX_LABELS)
+        return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
+                           "the figure has %zu labels, more than the %d "
+                           "placed in one figure (each is placed among "
+                           "all the others)", n, CF_FIGURE_MAX_LABELS);
     st = raster_open(fig, &r);
     /* fills and hulls left out: labels may sit on a shading */
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {

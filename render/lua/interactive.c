@@ -12,6 +12,7 @@
 
 #include "curvefig/figure.h"
 #include "interactive.h"
+#include "lcommon.h"
 #include "params.h"
 
 /* ---- a growing text ------------------------------------------------------ */
@@ -84,20 +85,22 @@ put_num(text_t *t, double v)
     put(t, buf);
 }
 
-/* A JSON string of the n bytes at s. */
+/* A JSON string of the n bytes at s; a byte that is not part of valid
+** UTF-8 (an error message may quote any) becomes U+FFFD. */
 static void
 put_str_n(text_t *t, const char *s, size_t n)
 {
     put(t, "\"");
-    for (size_t i = 0; i < n; i++) {
+    for (size_t i = 0; i < n;) {
         unsigned char c = (unsigned char)s[i];
-        size_t run = i;
+        size_t run = i, k;
         while (run < n && (unsigned char)s[run] >= 0x20 && s[run] != '"' &&
-               s[run] != '\\')
-            run++;
+               s[run] != '\\' &&
+               (k = cf__utf8_sequence(s + run, n - run)) > 0)
+            run += k;
         if (run > i) {
             put_n(t, s + i, run - i);
-            i = run - 1;
+            i = run;
             continue;
         }
         if (c == '"' || c == '\\')
@@ -106,8 +109,11 @@ put_str_n(text_t *t, const char *s, size_t n)
             put(t, "\\n");
         else if (c == '\t')
             put(t, "\\t");
-        else
+        else if (c < 0x20)
             putf(t, "\\u%04x", c);
+        else
+            put(t, "\\ufffd");
+        i++;
     }
     put(t, "\"");
 }

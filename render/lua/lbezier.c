@@ -445,11 +445,15 @@ typedef struct flat_ctx {
     int failed;
 } flat_ctx;
 
+/* Points of one flattening: beyond this the tolerance is certainly too
+** small for the curve (a million points, 16 MiB in the plane). */
+#define MAX_FLAT_POINTS ((size_t)1 << 20)
+
 static void
 free_flat(void *p)
 {
     flat_ctx *f = p;
-    free(f->v);
+    cf_free(f->v);
     free(f);
 }
 
@@ -457,18 +461,14 @@ static int
 flat_point(void *closure, const double *p, double t)
 {
     flat_ctx *f = closure;
+    void *v = f->v;
     (void)t;
-    if (f->n == f->cap) {
-        size_t cap = f->cap ? 2 * f->cap : 64;
-        double *v = realloc(f->v, cap * f->dim * sizeof *v);
-        if (v == NULL || cap > ((size_t)1 << 24)) {
-            free(v == f->v ? NULL : v);
-            f->failed = 1;
-            return 1;
-        }
-        f->v = v;
-        f->cap = cap;
+    if (!cf__lua_grow(&v, &f->cap, f->n + 1, f->dim * sizeof *p,
+                      MAX_FLAT_POINTS)) {
+        f->failed = f->n + 1 > MAX_FLAT_POINTS ? 1 : 2;
+        return 1;
     }
+    f->v = v;
     memcpy(f->v + f->n * f->dim, p, f->dim * sizeof *p);
     f->n++;
     return 0;
@@ -493,9 +493,12 @@ m_flatten(lua_State *L)
     *slot = f;
     f->dim = cf_bezier_dim(c);
     st = cf_bezier_flatten(c, tol, flat_point, f);
+    if (f->failed == 1)
+        return cf__lua_error(L, "flatten: more than %zu points at tolerance "
+                             "%g (the tolerance is too small for the "
+                             "curve)", MAX_FLAT_POINTS, tol);
     if (f->failed)
-        return luaL_error(L, "flatten: too many points (tolerance too "
-                          "small?)");
+        return cf__lua_fail(L, "flatten", CF_STATUS_NO_MEMORY, NULL);
     if (st != CF_STATUS_OK)
         return cf__lua_fail(L, "flatten", st, NULL);
     cf__lua_push_points(L, f->v, f->n, f->dim);

@@ -35,6 +35,27 @@ cf__lua_buffer(lua_State *L, size_t n)
     return lua_newuserdatauv(L, (n ? n : 1) * sizeof(double), 0);
 }
 
+bool
+cf__lua_grow(void **ptr, size_t *cap, size_t need, size_t elem, size_t max)
+{
+    size_t n = *cap ? *cap : 64;
+    void *p;
+    if (need <= *cap)
+        return true;
+    if (need > max || elem == 0)
+        return false;
+    while (n < need)
+        n = n > max / 2 ? max : 2 * n;
+    if (n > max)
+        n = max;
+    p = cf_realloc_array(*ptr, n, elem);
+    if (p == NULL)
+        return false;
+    *ptr = p;
+    *cap = n;
+    return true;
+}
+
 /* A list takes no names: an entry of the table at idx whose key is not
 ** one of 1..n is refused (one = true: the table is one point). */
 static void
@@ -296,16 +317,69 @@ cf__lua_opt_int(lua_State *L, int idx, const char *fn, const char *what,
     return cf__lua_check_int(L, idx, fn, what, lo, hi);
 }
 
+size_t
+cf__utf8_sequence(const char *text, size_t n)
+{
+    const unsigned char *u = (const unsigned char *)text;
+    unsigned char lo = 0x80, hi = 0xbf;
+    size_t len;
+    if (n == 0)
+        return 0;
+    if (u[0] < 0x80)
+        return 1;
+    if (u[0] >= 0xc2 && u[0] <= 0xdf) {
+        len = 2;
+    } else if (u[0] >= 0xe0 && u[0] <= 0xef) {
+        len = 3;
+        lo = u[0] == 0xe0 ? 0xa0 : lo;   /* no overlong form */
+        hi = u[0] == 0xed ? 0x9f : hi;   /* no surrogate */
+    } else if (u[0] >= 0xf0 && u[0] <= 0xf4) {
+        len = 4;
+        lo = u[0] == 0xf0 ? 0x90 : lo;
+        hi = u[0] == 0xf4 ? 0x8f : hi;   /* nothing past U+10FFFF */
+    } else {
+        return 0;
+    }
+    if (n < len || u[1] < lo || u[1] > hi)
+        return 0;
+    for (size_t k = 2; k < len; k++)
+        if (u[k] < 0x80 || u[k] > 0xbf)
+            return 0;
+    return len;
+}
+
+const char *
+cf__lua_check_text(lua_State *L, int idx, const char *fn, const char *what)
+{
+    size_t len, n;
+    const char *text;
+    if (!lua_isstring(L, idx))
+        luaL_error(L, "%s: %s must be a string, got %s", fn, what,
+                   luaL_typename(L, idx));
+    text = lua_tolstring(L, idx, &len);
+    for (size_t i = 0; i < len; i += n) {
+        unsigned char c = (unsigned char)text[i];
+        n = cf__utf8_sequence(text + i, len - i);
+        if (n == 0)
+            cf__lua_error(L, "%s: %s has invalid UTF-8 at byte %zu (0x%02X)",
+                          fn, what, i, c);
+        if (c == 0)
+            cf__lua_error(L, "%s: %s has a NUL byte at byte %zu", fn, what,
+                          i);
+        if (c < 0x20 && c != '\t' && c != '\n')
+            cf__lua_error(L, "%s: %s has the control character U+%04X at "
+                          "byte %zu", fn, what, c, i);
+    }
+    return text;
+}
+
 const char *
 cf__lua_opt_text(lua_State *L, int idx, const char *fn, const char *what,
                  const char *def)
 {
     if (lua_isnoneornil(L, idx) && def != NULL)
         return def;
-    if (!lua_isstring(L, idx))
-        luaL_error(L, "%s: %s must be a string, got %s", fn, what,
-                   luaL_typename(L, idx));
-    return lua_tostring(L, idx);
+    return cf__lua_check_text(L, idx, fn, what);
 }
 
 bool

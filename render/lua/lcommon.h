@@ -8,6 +8,7 @@
 #define CURVEFIG_RENDER_LUA_LCOMMON_H
 
 #include <stdbool.h>
+#include <stdio.h>
 
 #include <lauxlib.h>
 #include <lua.h>
@@ -73,6 +74,18 @@ int cf__lua_opt_int(lua_State *L, int idx, const char *fn, const char *what,
 ** NULL: required).  "bspline: kind must be a string, got table". */
 const char *cf__lua_opt_text(lua_State *L, int idx, const char *fn,
                              const char *what, const char *def);
+/* A text that reaches an output (a caption, a title, a name, a label, a
+** legend entry, a slider's label ...): a string or a number, valid UTF-8
+** without NUL or control characters other than tab and newline; refused
+** otherwise with the key and the byte, counted from 0 as in labels
+** ("figure: caption has the control character U+0001 at byte 3").
+** cf__lua_opt_text checks the same. */
+const char *cf__lua_check_text(lua_State *L, int idx, const char *fn,
+                               const char *what);
+/* The length of the UTF-8 sequence at text (n bytes left), 0 when it is
+** not valid UTF-8 (overlong forms, surrogates, past U+10FFFF). */
+size_t cf__utf8_sequence(const char *text, size_t n);
+
 /* true or false (nil or none: def); another value is refused, not read as
 ** Lua's truth ("closed = 'no'" is no longer true). */
 bool cf__lua_opt_bool_arg(lua_State *L, int idx, const char *fn,
@@ -118,11 +131,28 @@ void cf__lua_open_conic(lua_State *L);
 ** the name guards (script.c). */
 void cf__lua_open_language(lua_State *L);
 
+/* The one grow helper of the binding's growing C buffers: makes room for
+** need elements of elem bytes in *ptr (capacity *cap elements), doubling
+** from 64, never past max elements.  The memory comes from the library's
+** current allocator -- the script's budget while a script runs -- and is
+** freed with cf_free.  On failure (need > max, overflow, memory) returns
+** false and leaves *ptr and *cap as they were: the caller still owns the
+** old block, and frees it once. */
+bool cf__lua_grow(void **ptr, size_t *cap, size_t need, size_t elem,
+                  size_t max);
+
 /* The allocator's user data of every state the script module makes
 ** (script.c) begins with this: the bindings tell the memory limit from
 ** another failure by it, without calling up into the script module. */
 typedef struct cf__lua_budget {
     bool memory_exceeded; /* the script's memory limit was reached */
+    /* the instructions run (work done in C charged too) and the limit */
+    unsigned long long instructions, max_instructions;
+    size_t printed;       /* bytes print has written */
+    FILE *out;            /* where print writes */
+    /* raises the limit's error when a limit is exceeded (script.c);
+    ** returns 0 otherwise */
+    int (*check)(lua_State *L);
 } cf__lua_budget_t;
 
 /* True when the state's memory limit was reached (a NO_MEMORY status is

@@ -194,7 +194,7 @@ m_label(lua_State *L)
     cf_diag_t diag;
     lua_settop(L, 4);
     p = cf__lua_check_points2d(L, fig, 2, "label", &n);
-    text = luaL_checkstring(L, 3);
+    text = cf__lua_check_text(L, 3, "label", "the text");
     cf__lua_check_table(L, 4, CF__KEYS_LABEL);
     cf__lua_read_style(L, 4, "label", fig, &st);
     if (cf__lua_labels_on(L)) {

@@ -62,9 +62,11 @@ cf__lua_item_label(lua_State *L, int idx, size_t k, const lua_Integer *args,
     if (t == LUA_TSTRING) {
         if (nargs == 0) {
             lua_pushvalue(L, idx);
-            return lua_tostring(L, -1);
+            return cf__lua_check_text(L, -1, fn, "labels");
         }
-        return format_label(L, lua_tostring(L, idx), args, nargs);
+        format_label(L, cf__lua_check_text(L, idx, fn, "labels"), args,
+                     nargs);
+        return cf__lua_check_text(L, -1, fn, "labels");
     }
     if (t == LUA_TTABLE) {
         lua_geti(L, idx, (lua_Integer)k + 1);
@@ -80,7 +82,7 @@ cf__lua_item_label(lua_State *L, int idx, size_t k, const lua_Integer *args,
                    "strings or a function", fn);
     }
     if (lua_type(L, -1) == LUA_TSTRING || lua_type(L, -1) == LUA_TNUMBER)
-        return lua_tostring(L, -1);
+        return cf__lua_check_text(L, -1, fn, "labels");
     if (!lua_isnil(L, -1) && !lua_isboolean(L, -1))
         luaL_error(L, "%s: labels entry %d is a %s, not a string", fn,
                    (int)k + 1, luaL_typename(L, -1));

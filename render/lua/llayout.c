@@ -31,8 +31,10 @@ with_legend(lua_State *L)
         if (lua_type(L, i) == LUA_TTABLE) {
             lua_pushliteral(L, "legend");
             legend = lua_rawget(L, i);
-            if (legend == LUA_TSTRING)
+            if (legend == LUA_TSTRING) {
+                cf__lua_check_text(L, -1, fn, "legend");
                 ref = luaL_ref(L, LUA_REGISTRYINDEX);
+            }
             else if (legend == LUA_TNIL)
                 lua_pop(L, 1);
         }

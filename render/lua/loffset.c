@@ -22,6 +22,12 @@
 #include "lcommon.h"
 #include "lschema.h"
 
+/* The highest degree offset by c:offset: the work of an offset grows
+** steeply with the degree (a degree-32 curve takes seconds, degree 1024
+** minutes) and no instruction counts it.  Course figures offset cubics
+** and curves of a few degrees more. */
+#define MAX_OFFSET_DEGREE 24
+
 static void
 read_options(lua_State *L, int idx, cf_offset_options_t *opt)
 {
@@ -138,6 +144,15 @@ m_offset(lua_State *L)
     cf_diag_t diag;
     cf_status_t st;
     read_options(L, 3, &opt);
+    {
+        int deg = bz != NULL ? cf_bezier_degree(bz)
+                             : cf_bspline_degree(cf__lua_check_bspline(L, 1));
+        if (deg > MAX_OFFSET_DEGREE)
+            return cf__lua_error(L, "offset: the curve has degree %d; "
+                                 "offsets are made of curves of degree at "
+                                 "most %d (its work grows steeply with the "
+                                 "degree)", deg, MAX_OFFSET_DEGREE);
+    }
     raw_slot = cf__lua_holder(L, free_cubics);           /* 4 */
     trim_slot = cf__lua_holder(L, free_cubics_list);     /* 5 */
     cf_diag_clear(&diag);

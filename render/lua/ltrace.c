@@ -15,8 +15,8 @@
 /* The deepest valid stack level.  lua_getstack(L, n) walks n frames, so
 ** probing every level of a deep recursion (a stack overflow is ~200 000
 ** frames) would take quadratic time: double, then bisect, O(n log n). */
-static int
-deepest_level(lua_State *L)
+int
+cf__lua_deepest_level(lua_State *L)
 {
     lua_Debug ar;
     int ok = 1, bad = 2;
@@ -113,6 +113,27 @@ place_message(lua_State *L, const char *msg)
     return msg;
 }
 
+/* The message at idx with each NUL written \0 (a C string would end
+** there); pushed when it had one. */
+static const char *
+whole_message(lua_State *L, int idx)
+{
+    size_t len;
+    const char *msg = lua_tolstring(L, idx, &len);
+    luaL_Buffer b;
+    if (msg == NULL || strlen(msg) == len)
+        return msg;
+    luaL_buffinit(L, &b);
+    for (size_t i = 0; i < len; i++) {
+        if (msg[i] == '\0')
+            luaL_addstring(&b, "\\0");
+        else
+            luaL_addchar(&b, msg[i]);
+    }
+    luaL_pushresult(&b);
+    return lua_tostring(L, -1);
+}
+
 /* Message handler: the message, then the script's frames below it. */
 int
 cf__lua_traceback(lua_State *L)
@@ -120,7 +141,7 @@ cf__lua_traceback(lua_State *L)
     luaL_Buffer b;
     trace t;
     int deepest;
-    t.msg = lua_tostring(L, 1);
+    t.msg = whole_message(L, 1);
     if (t.msg == NULL) {
         if (luaL_callmeta(L, 1, "__tostring") &&
             lua_type(L, -1) == LUA_TSTRING)
@@ -136,7 +157,7 @@ cf__lua_traceback(lua_State *L)
     t.repeats = 0;
     luaL_buffinit(L, &b);
     luaL_addstring(&b, t.msg);
-    deepest = deepest_level(L);
+    deepest = cf__lua_deepest_level(L);
     if (deepest <= 2 * (TRACE_HEAD + TRACE_TAIL)) {
         trace_levels(L, &t, 1, deepest, INT_MAX);
     } else {

@@ -14,4 +14,7 @@
 /* lua_pcall's message handler: replaces the message with the full one. */
 int cf__lua_traceback(lua_State *L);
 
+/* The deepest valid stack level, in O(n log n) calls of lua_getstack. */
+int cf__lua_deepest_level(lua_State *L);
+
 #endif

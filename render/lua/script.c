@@ -16,7 +16,7 @@
 #include "lparams.h"
 #include "ltheme.h"
 #include "lschema.h"
-#include "lpattern.h"
+#include "lcount.h"
 #include "ltrace.h"
 #include "script.h"
 
@@ -39,9 +39,7 @@ enum { LIMIT_NONE, LIMIT_MEMORY, LIMIT_INSTRUCTIONS };
 struct cf_script {
     cf__lua_budget_t budget; /* first: the bindings read it (lcommon.h) */
     lua_State *L;
-    FILE *out;
     size_t used, max_memory, reserve;
-    unsigned long long instructions, max_instructions;
     int limit_hit;
     int running;       /* a script is running (the stack can be read) */
     char where[160];   /* "file:line:" last seen by the hook, or "" */
@@ -83,6 +81,8 @@ note_position(cf_script_t *s)
     }
 }
 
+static void count_hook(lua_State *L, lua_Debug *ar);
+
 static void *
 budget_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
 {
@@ -108,10 +108,17 @@ budget_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
     if (p == NULL)
         return NULL;
     s->used = (old <= s->used ? s->used - old : 0) + nsize;
-    /* charged here, raised by the count hook at most HOOK_EVERY
-    ** instructions later */
-    if (nsize > old)
-        s->instructions += (nsize - old) / ALLOC_BYTES;
+    if (nsize > old) {
+        s->budget.instructions += (nsize - old) / ALLOC_BYTES;
+        /* over the limit: the hook raises it at the next instruction, not
+        ** up to HOOK_EVERY instructions (and as many allocations) later */
+        if (s->budget.instructions > s->budget.max_instructions &&
+            s->limit_hit == LIMIT_NONE && s->running) {
+            s->limit_hit = LIMIT_INSTRUCTIONS;
+            note_position(s);
+            lua_sethook(s->L, count_hook, LUA_MASKCOUNT, 1);
+        }
+    }
     return p;
 }
 
@@ -141,7 +148,7 @@ limit_error(lua_State *L, cf_script_t *s)
     else
         lua_pushfstring(L, "%sscript exceeded the instruction limit of %I "
                         "instructions", s->where,
-                        (lua_Integer)s->max_instructions);
+                        (lua_Integer)s->budget.max_instructions);
     return lua_error(L);
 }
 
@@ -156,11 +163,15 @@ count_hook(lua_State *L, lua_Debug *ar)
         ar->currentline > 0)
         snprintf(s->where, sizeof s->where, "%s:%d: ", ar->short_src,
                  ar->currentline);
-    s->instructions += HOOK_EVERY;
-    if (s->instructions > s->max_instructions && s->limit_hit == LIMIT_NONE)
+    s->budget.instructions += HOOK_EVERY;
+    if (s->budget.instructions > s->budget.max_instructions &&
+        s->limit_hit == LIMIT_NONE)
         s->limit_hit = LIMIT_INSTRUCTIONS;
-    if (s->limit_hit != LIMIT_NONE)
+    if (s->limit_hit != LIMIT_NONE) {
+        /* armed for good: every later instruction raises it again */
+        lua_sethook(L, count_hook, LUA_MASKCOUNT, 1);
         limit_error(L, s);
+    }
 }
 
 static cf_script_t *
@@ -185,7 +196,60 @@ safe_call(lua_State *L)
     lua_call(L, n, LUA_MULTRET);
     if (s->limit_hit != LIMIT_NONE)
         return limit_error(L, s);
+    if (!lua_toboolean(L, 1))
+        cf__lua_charge_unwind(L);
     return lua_gettop(L);
+}
+
+/* The script's message handler, wrapped: once a limit is hit the error
+** passes through unchanged and the handler is not run.  Lua runs a
+** handler for an error raised inside the count hook with the hooks off,
+** where a loop in it would never be stopped. */
+static int
+run_handler(lua_State *L)
+{
+    cf_script_t *s = script_of(L);
+    if (s->limit_hit != LIMIT_NONE) {
+        lua_settop(L, 1);
+        return 1;
+    }
+    lua_pushvalue(L, lua_upvalueindex(1));
+    lua_insert(L, 1);
+    lua_call(L, lua_gettop(L) - 1, LUA_MULTRET);
+    if (s->limit_hit != LIMIT_NONE)
+        return limit_error(L, s);
+    return lua_gettop(L);
+}
+
+/* xpcall(f, msgh, ...) with msgh wrapped by run_handler. */
+static int
+safe_xpcall(lua_State *L)
+{
+    if (lua_type(L, 2) == LUA_TFUNCTION) {
+        lua_pushvalue(L, 2);
+        lua_pushcclosure(L, run_handler, 1);
+        lua_replace(L, 2);
+    }
+    return safe_call(L);
+}
+
+/* ---- charging work done in C -------------------------------------------- */
+
+/* The budget's check (lcommon.h): past the instruction limit, or once any
+** limit is hit, raise the limit's error with the hook armed at every
+** instruction. */
+static int
+check_limits(lua_State *L)
+{
+    cf_script_t *s = script_of(L);
+    if (s->budget.instructions > s->budget.max_instructions &&
+        s->limit_hit == LIMIT_NONE)
+        s->limit_hit = LIMIT_INSTRUCTIONS;
+    if (s->limit_hit == LIMIT_NONE)
+        return 0;
+    note_position(s);
+    lua_sethook(L, count_hook, LUA_MASKCOUNT, 1);
+    return limit_error(L, s);
 }
 
 /* load of text chunks only. */
@@ -231,96 +295,6 @@ safe_setmetatable(lua_State *L)
     lua_settop(L, 2);
     lua_setmetatable(L, 1);
     return 1;
-}
-
-/* The guard of the pattern functions: guard(kind, s, p, init, plain) with
-** kind 0 find, 1 match, 2 gmatch, 3 gsub.  Counts the steps the search
-** will take against what is left of the instruction budget (the search
-** runs inside one C call, where the hook cannot stop it) and charges
-** them; arguments Lua would refuse are left for Lua to refuse. */
-static int
-pattern_guard(lua_State *L)
-{
-    cf_script_t *s = script_of(L);
-    int kind = (int)lua_tointeger(L, 1);
-    size_t ls, lp, init = 0;
-    const char *str, *pat;
-    long long steps, left;
-    int st;
-    if (!lua_isstring(L, 2) || !lua_isstring(L, 3))
-        return 0;
-    str = lua_tolstring(L, 2, &ls);
-    pat = lua_tolstring(L, 3, &lp);
-    if (kind != 3 && lua_isinteger(L, 4)) {
-        lua_Integer i = lua_tointeger(L, 4);
-        if (i > (lua_Integer)ls)
-            return 0;       /* no search at all */
-        if (i > 0)
-            init = (size_t)i - 1;
-        else if (i < 0 && (size_t)-(i + 1) < ls)
-            init = ls - (size_t)-(i + 1) - 1;
-    }
-    if (kind == 0 && lua_toboolean(L, 5))
-        return 0;           /* a plain search is linear */
-    if (kind == 0) {
-        size_t i = 0;
-        while (i < lp && strchr("^$*+?.([%-", pat[i]) == NULL)
-            i++;
-        if (i == lp)
-            return 0;       /* so is one without special characters */
-    }
-    left = s->instructions < s->max_instructions
-               ? (long long)(s->max_instructions - s->instructions) : 0;
-    st = cf__pattern_cost(str, ls, pat, lp, init, kind >= 2, left, &steps);
-    s->instructions += (unsigned long long)steps;
-    if (st == CF__PATTERN_OVER) {
-        if (s->limit_hit == LIMIT_NONE)
-            s->limit_hit = LIMIT_INSTRUCTIONS;
-        note_position(s);
-        return limit_error(L, s);
-    }
-    return 0;
-}
-
-/* The pattern functions behind the guard; Lua closures that end in a tail
-** call, so Lua's own messages still name the script's line. */
-static const char pattern_wrappers[] =
-    "local guard, find, match, gmatch, gsub = ...\n"
-    "string.find = function(...) guard(0, ...) return find(...) end\n"
-    "string.match = function(...) guard(1, ...) return match(...) end\n"
-    "string.gmatch = function(...) guard(2, ...) return gmatch(...) end\n"
-    "string.gsub = function(...) guard(3, ...) return gsub(...) end\n";
-
-static void
-guard_patterns(lua_State *L)
-{
-    static const char *const names[] = { "find", "match", "gmatch", "gsub" };
-    if (luaL_loadbufferx(L, pattern_wrappers, sizeof pattern_wrappers - 1,
-                         "=(sandbox)", "t") != LUA_OK)
-        lua_error(L);
-    lua_pushcfunction(L, pattern_guard);
-    lua_getglobal(L, LUA_STRLIBNAME);
-    for (int i = 0; i < 4; i++)
-        lua_getfield(L, -1 - i, names[i]);
-    lua_remove(L, -5);
-    lua_call(L, 5, 0);
-}
-
-static int
-safe_print(lua_State *L)
-{
-    cf_script_t *s = script_of(L);
-    int n = lua_gettop(L);
-    for (int i = 1; i <= n; i++) {
-        size_t len;
-        const char *str = luaL_tolstring(L, i, &len);
-        if (i > 1)
-            fputc('\t', s->out);
-        fwrite(str, 1, len, s->out);
-        lua_pop(L, 1);
-    }
-    fputc('\n', s->out);
-    return 0;
 }
 
 static void
@@ -424,14 +398,12 @@ open_sandbox(lua_State *L)
     remove_field(L, NULL, "loadfile");
     remove_field(L, NULL, "require");
     remove_field(L, LUA_STRLIBNAME, "dump");
-    guard_patterns(L);
+    cf__lua_open_counted(L);
     wrap_global(L, "pcall", safe_call);
-    wrap_global(L, "xpcall", safe_call);
+    wrap_global(L, "xpcall", safe_xpcall);
     wrap_global(L, "load", safe_load);
     lua_pushcfunction(L, safe_setmetatable);
     lua_setglobal(L, "setmetatable");
-    lua_pushcfunction(L, safe_print);
-    lua_setglobal(L, "print");
     cf__lua_open_language(L);
     cf__lua_guard_names(L);
     return 0;
@@ -459,7 +431,7 @@ cf_script_create(const cf_script_limits_t *limits, FILE *out,
     s = calloc(1, sizeof *s);
     if (s == NULL)
         return fail(diag, CF_STATUS_NO_MEMORY, "out of memory%s", NULL);
-    s->out = out != NULL ? out : stdout;
+    s->budget.out = out != NULL ? out : stdout;
     s->params = cf__params_create();
     if (s->params == NULL) {
         free(s);
@@ -468,9 +440,10 @@ cf_script_create(const cf_script_limits_t *limits, FILE *out,
     s->max_memory = limits && limits->max_memory ? limits->max_memory
                                                  : CF_SCRIPT_DEFAULT_MEMORY;
     s->reserve = s->max_memory / 16 < RESERVE ? s->max_memory / 16 : RESERVE;
-    s->max_instructions = limits && limits->max_instructions
-                              ? limits->max_instructions
-                              : CF_SCRIPT_DEFAULT_INSTRUCTIONS;
+    s->budget.check = check_limits;
+    s->budget.max_instructions = limits && limits->max_instructions
+                                     ? limits->max_instructions
+                                     : CF_SCRIPT_DEFAULT_INSTRUCTIONS;
     s->L = lua_newstate(budget_alloc, s);
     if (s->L == NULL) {
         cf_status_t st = s->limit_hit ? too_small(s, diag)
@@ -515,14 +488,33 @@ cf_script_destroy(cf_script_t *s)
 
 /* ---- running ------------------------------------------------------------ */
 
+/* The message of a run, its n bytes kept whole: a NUL in it (error("a\0b"))
+** is written \0 rather than ending the message there. */
+static void
+set_error_n(cf_script_t *s, const char *msg, size_t n)
+{
+    size_t nul = 0, k = 0;
+    for (size_t i = 0; i < n; i++)
+        nul += msg[i] == '\0';
+    free(s->error);
+    s->error = malloc(n + nul + 1);
+    if (s->error == NULL)
+        return;
+    for (size_t i = 0; i < n; i++) {
+        if (msg[i] == '\0') {
+            s->error[k++] = '\\';
+            s->error[k++] = '0';
+        } else {
+            s->error[k++] = msg[i];
+        }
+    }
+    s->error[k] = '\0';
+}
+
 static void
 set_error(cf_script_t *s, const char *msg)
 {
-    size_t n = strlen(msg);
-    free(s->error);
-    s->error = malloc(n + 1);
-    if (s->error != NULL)
-        memcpy(s->error, msg, n + 1);
+    set_error_n(s, msg, strlen(msg));
 }
 
 static cf_status_t
@@ -542,8 +534,12 @@ finish(cf_script_t *s, int rc, const char *name)
                      "of %s", name, size);
         set_error(s, buf);
     } else {
-        const char *msg = lua_tostring(L, -1);
-        set_error(s, msg != NULL ? msg : "unknown error");
+        size_t len;
+        const char *msg = lua_tolstring(L, -1, &len);
+        if (msg != NULL)
+            set_error_n(s, msg, len);
+        else
+            set_error(s, "unknown error");
     }
     lua_settop(L, 0);
     return CF_STATUS_SCRIPT;

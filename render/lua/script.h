@@ -35,6 +35,9 @@ typedef struct cf_script_limits {
 
 #define CF_SCRIPT_DEFAULT_MEMORY ((size_t)256 << 20)
 #define CF_SCRIPT_DEFAULT_INSTRUCTIONS 500000000ull
+/* What print may write in one script run, in bytes (then print fails with
+** "print: the script's output reached its limit of 16 MiB"). */
+#define CF_SCRIPT_MAX_PRINT ((size_t)16 << 20)
 
 /* A fresh sandbox; `out` receives what the script prints (NULL: stdout).
 ** limits may be NULL (defaults).  The script's memory budget is the curve

@@ -405,6 +405,14 @@ make_surface(cf_format_t format, const cf__page_t *pg, double dpi,
                         "32000 a side); lower the dpi", wpx, hpx);
             return NULL;
         }
+        /* the image's memory: 4 bytes a pixel, 256 MiB at most */
+        if (wpx * hpx > CF_PNG_MAX_PIXELS) {
+            cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                        "PNG of %.0f x %.0f pixels is too large (at most "
+                        "%.0f million pixels, 256 MiB); lower the dpi",
+                        wpx, hpx, CF_PNG_MAX_PIXELS / 1e6);
+            return NULL;
+        }
         surf = cairo_image_surface_create(CAIRO_FORMAT_ARGB32,
                                           (int)fmax(1, wpx),
                                           (int)fmax(1, hpx));

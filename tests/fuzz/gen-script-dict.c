@@ -215,6 +215,14 @@ main(int argc, char **argv)
         "0", "-1", "1", "2", "3", "(0)", "(0, 0)", "0, 0", "(0, 1)", "-0.0",
         "0/0", "1/0", "-1/0", "1e300", "-1e300", "1e-320", "math.huge",
         "2^31", "{}", "{ {0, 0} }", "{0, 0}", "{0, 0, 0}",
+        /* extreme tolerances and sizes: c:flatten(1e-300) freed a buffer
+        ** twice; huge counts reach the C loops of the libraries */
+        "1e-300", "(1e-300)", "1e-12", "1e-9", "1e12", "1e13", "1e15",
+        "2^53", "2^63", "math.maxinteger", "math.mininteger", "1 << 40",
+        "1000000", "(1e300)", "(-1e-300)", "xpcall(", "error(", "print(",
+        "table.move(", "table.insert(", "table.remove(", "table.concat(",
+        "string.find(", ", 1, true)", "__len", "__index", "__close",
+        "<close>", "\\0", "\\255", "\\1", "utf8.char(",
     };
     lua_State *L;
     size_t nm, ng, nk;

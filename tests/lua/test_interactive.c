@@ -306,6 +306,26 @@ test_script_error_in_json(void **state)
     free(json);
 }
 
+/* A message with bytes that are not UTF-8 and a NUL: the JSON carries
+** neither raw (a browser's JSON.parse would take the invalid bytes, and a
+** NUL cut the message); here it is all ASCII, the NUL written \0 and each
+** stray byte U+FFFD. */
+static void
+test_error_bytes_in_json(void **state)
+{
+    const char *code = "error('bad \\255\\254 and \\0 here')\n";
+    char *json = NULL;
+    size_t len = 0;
+    (void)state;
+    assert_int_equal(cf_interactive_run(code, "inter.lua", NULL, 0, NULL,
+                                        sink, &json, &len),
+                     CF_STATUS_OK);
+    for (size_t i = 0; i < len; i++)
+        assert_true((unsigned char)json[i] < 0x80);
+    assert_non_null(strstr(json, "bad \\ufffd\\ufffd and \\\\0 here"));
+    free(json);
+}
+
 /* The "lua" text, unescaped from its JSON string, run in a script of its
 ** own: it must give the values the run used. */
 static void
@@ -358,6 +378,7 @@ main(void)
         cmocka_unit_test(test_bad_values_json),
         cmocka_unit_test(test_handles_where_drawn),
         cmocka_unit_test(test_script_error_in_json),
+        cmocka_unit_test(test_error_bytes_in_json),
         cmocka_unit_test(test_lua_text_reads_back),
     };
     int rc;

@@ -16,6 +16,7 @@
 #include <cmocka.h>
 
 #include "curvefig/figure.h"
+#include "lcommon.h"
 #include "script.h"
 #include "testutil.h"
 
@@ -210,6 +211,56 @@ test_limits(void **state)
     assert_non_null(strstr(cf_script_error(s), "m.lua:5: "));
     assert_non_null(strstr(cf_script_error(s), "memory limit of 8 MiB"));
     cf_script_destroy(s);
+}
+
+/* The binding's one grow helper (c:flatten's buffer was freed twice when
+** its size cap was tested after realloc): it doubles from 64 up to max,
+** keeps the contents, and on any failure (past max, or the allocator
+** refusing) leaves the block and the capacity as they were, for the
+** caller to free once.  The failing allocator counts the live blocks. */
+static void
+test_grow(void **state)
+{
+    void *p = NULL;
+    double *v;
+    size_t cap = 0;
+    (void)state;
+    tu_fail_alloc_after(1000);
+    assert_true(cf__lua_grow(&p, &cap, 10, sizeof(double), 100));
+    assert_int_equal(cap, 64);
+    v = p;
+    for (int i = 0; i < 64; i++)
+        v[i] = i + 0.5;
+    assert_true(cf__lua_grow(&p, &cap, 65, sizeof(double), 100));
+    assert_int_equal(cap, 100);
+    v = p;
+    for (int i = 0; i < 64; i++)
+        assert_true(v[i] == i + 0.5);
+    assert_false(cf__lua_grow(&p, &cap, 101, sizeof(double), 100));
+    assert_ptr_equal(p, v);
+    assert_int_equal(cap, 100);
+    assert_true(cf__lua_grow(&p, &cap, 100, sizeof(double), 100));
+    assert_ptr_equal(p, v);
+    /* n * size overflows: refused, nothing allocated */
+    assert_false(cf__lua_grow(&p, &cap, 200, SIZE_MAX / 4, SIZE_MAX));
+    assert_ptr_equal(p, v);
+    assert_int_equal(tu_alloc_live(), 1);
+    cf_free(p);
+    assert_int_equal(tu_alloc_live(), 0);
+    /* the allocator refuses the growth: the old block stays whole */
+    p = NULL;
+    cap = 0;
+    tu_fail_alloc_after(2);
+    assert_true(cf__lua_grow(&p, &cap, 64, sizeof(double), 1000));
+    v = p;
+    v[63] = 7;
+    assert_false(cf__lua_grow(&p, &cap, 65, sizeof(double), 1000));
+    assert_ptr_equal(p, v);
+    assert_int_equal(cap, 64);
+    assert_true(v[63] == 7);
+    cf_free(p);
+    assert_int_equal(tu_alloc_live(), 0);
+    tu_fail_alloc_reset();
 }
 
 /* Lua runs finalisers with the hooks off: setmetatable refuses a __gc
@@ -578,6 +629,7 @@ main(void)
         cmocka_unit_test(test_parser_nesting),
         cmocka_unit_test(test_figure_messages),
         cmocka_unit_test(test_limits),
+        cmocka_unit_test(test_grow),
         cmocka_unit_test(test_deep_recursion),
         cmocka_unit_test(test_no_finalisers),
         cmocka_unit_test(test_small_budgets),

@@ -167,7 +167,7 @@ check_dir(lua_State *L, int idx, const char *fn)
     if (strcmp(s, "v") == 0)
         return CF_DIR_V;
     {
-        const char *near = cf__lua_nearest(s, names, 2);
+        const char *near = cf_nearest_name(s, names, 2);
         cf__lua_error(L, "%s: direction \"%s\" is neither \"u\" nor \"v\"%s%s"
                       "%s", fn, s, near ? " (did you mean \"" : "",
                       near ? near : "", near ? "\"?)" : "");

@@ -59,8 +59,13 @@ check_knots(const char *name, int deg, size_t n, const double *K, size_t nK,
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "knots %s is NULL",
                          name);
     st = cf_knots_validate(deg, n, K, nK, &d);
-    if (st != CF_STATUS_OK)
+    if (st != CF_STATUS_OK) {
+        /* the curve check names knots u_i: those of V are v_j */
+        if (name[0] == 'V')
+            for (char *c = d.msg; (c = strstr(c, " u_")) != NULL; c += 3)
+                c[1] = 'v';
         return cf__error(diag, st, d.index, "knots %s: %s", name, d.msg);
+    }
     return CF_STATUS_OK;
 }
 

@@ -1,5 +1,6 @@
 /* Helpers shared by the surface modules: grids, parameters, the quotient
 ** rule, normals and curvatures (surface-private.h). */
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -215,38 +216,75 @@ dot(const double *a, const double *b)
 /* Layout of order-2 derivatives: (a 3 + b) 3. */
 #define D_(a, b) (D + ((a) * 3 + (b)) * 3)
 
-cf_status_t
-cf__surf_normal(const double *D, double *out)
+/* A tangent shorter than this times the other one, or two tangents whose
+** angle has a sine below it, is rounding noise: at a pole of a sphere S_v
+** is zero but for rounding, and the normal of such noise is arbitrary. */
+#define SURF_TINY (64.0 * DBL_EPSILON)
+
+static double
+norm3(const double *a)
 {
-    double n[3], len;
-    cross(D_(1, 0), D_(0, 1), n);
-    len = sqrt(dot(n, n));
-    if (!(len > 0.0) || !isfinite(len))
+    return sqrt(dot(a, a));
+}
+
+/* The unit normal, and the larger tangent length in *scale. */
+static cf_status_t
+unit_normal(const double *D, double *out, double *scale)
+{
+    double su[3], sv[3], n[3], a = norm3(D_(1, 0)), b = norm3(D_(0, 1)), len;
+    if (!(a > 0.0) || !(b > 0.0) || !isfinite(a) || !isfinite(b)
+        || b <= SURF_TINY * a || a <= SURF_TINY * b)
+        return CF_STATUS_DEGENERATE;
+    for (int c = 0; c < 3; c++) {
+        su[c] = D_(1, 0)[c] / a;
+        sv[c] = D_(0, 1)[c] / b;
+    }
+    cross(su, sv, n);
+    len = norm3(n);
+    if (!(len > SURF_TINY))
         return CF_STATUS_DEGENERATE;
     for (int c = 0; c < 3; c++)
         out[c] = n[c] / len;
+    *scale = a > b ? a : b;
     return CF_STATUS_OK;
 }
 
 cf_status_t
+cf__surf_normal(const double *D, double *out)
+{
+    double scale;
+    return unit_normal(D, out, &scale);
+}
+
+/* The fundamental forms of the surface scaled by 1/s (s the larger tangent
+** length, so that neither underflows nor overflows): K = K'/s^2, H = H'/s. */
+cf_status_t
 cf__surf_curvature(const double *D, double *gauss, double *mean)
 {
-    double n[3], E, F, G, L, M, N, g;
-    cf_status_t st = cf__surf_normal(D, n);
+    double n[3], s, E, F, G, L, M, N, g;
+    double Su[3], Sv[3], Suu[3], Suv[3], Svv[3];
+    cf_status_t st = unit_normal(D, n, &s);
     if (st != CF_STATUS_OK)
         return st;
-    E = dot(D_(1, 0), D_(1, 0));
-    F = dot(D_(1, 0), D_(0, 1));
-    G = dot(D_(0, 1), D_(0, 1));
-    L = dot(D_(2, 0), n);
-    M = dot(D_(1, 1), n);
-    N = dot(D_(0, 2), n);
+    for (int c = 0; c < 3; c++) {
+        Su[c] = D_(1, 0)[c] / s;
+        Sv[c] = D_(0, 1)[c] / s;
+        Suu[c] = D_(2, 0)[c] / s;
+        Suv[c] = D_(1, 1)[c] / s;
+        Svv[c] = D_(0, 2)[c] / s;
+    }
+    E = dot(Su, Su);
+    F = dot(Su, Sv);
+    G = dot(Sv, Sv);
+    L = dot(Suu, n);
+    M = dot(Suv, n);
+    N = dot(Svv, n);
     g = E * G - F * F;
     if (!(g > 0.0))
         return CF_STATUS_DEGENERATE;
     if (gauss != NULL)
-        *gauss = (L * N - M * M) / g;
+        *gauss = (L * N - M * M) / g / (s * s);
     if (mean != NULL)
-        *mean = (E * N - 2.0 * F * M + G * L) / (2.0 * g);
+        *mean = (E * N - 2.0 * F * M + G * L) / (2.0 * g) / s;
     return CF_STATUS_OK;
 }

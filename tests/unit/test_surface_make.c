@@ -115,6 +115,30 @@ test_quadrics(void **state)
                 tu_assert_close(fabs(n[k]), fabs(x[k] - q.c[k]) / q.r, 1e-12,
                                 1.0);
         }
+    /* at the poles (v = 0, 1) S_v vanishes but for rounding: no normal and
+    ** no curvature, never the numbers of that noise */
+    for (int i = 0; i <= 12; i++)
+        for (int j = 0; j <= 12; j += 12) {
+            double K, H, n[3];
+            assert_int_equal(cf_bspline_surface_curvature(s, i / 12.0,
+                                                          j / 12.0, &K, &H),
+                             CF_STATUS_DEGENERATE);
+            assert_int_equal(cf_bspline_surface_normal(s, i / 12.0, j / 12.0,
+                                                       n),
+                             CF_STATUS_DEGENERATE);
+        }
+    cf_bspline_surface_destroy(s);
+    /* a small sphere about the origin (about q.c it would round to its
+    ** centre): the forms are scaled, so nothing underflows */
+    assert_int_equal(cf_nurbs_sphere((const double[3]){ 0.0, 0.0, 0.0 },
+                                     1e-100, &s, NULL), 0);
+    {
+        double K, H;
+        assert_int_equal(cf_bspline_surface_curvature(s, 0.3, 0.4, &K, &H),
+                         0);
+        tu_assert_close(K, 1e200, 1e-12, 0.0);
+        tu_assert_close(fabs(H), 1e100, 1e-12, 0.0);
+    }
     cf_bspline_surface_destroy(s);
     q.worst = 0.0;
     q.r = 1.25;

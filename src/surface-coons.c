@@ -79,7 +79,7 @@ corner(const cf_bspline_t *a, const char *an, double ta,
     }
     if (gap > 1e-9 * size)
         return cf__error(diag, CF_STATUS_DEGENERATE, -1,
-                         "coons patch: the corners do not meet: %s(%g) = "
+                         "the corners do not meet: %s(%g) = "
                          "(%g, %g, ...) but %s(%g) = (%g, %g, ...)", an, ta,
                          x[0], dim > 1 ? x[1] : 0.0, bn, tb, y[0],
                          dim > 1 ? y[1] : 0.0);
@@ -108,7 +108,7 @@ cf_surface_coons(const cf_bspline_t *c0, const cf_bspline_t *c1,
                              "boundary curve %d is NULL", i);
         if (cf_bspline_is_rational(cs[i]))
             return cf__error(diag, CF_STATUS_INVALID_ARG, i,
-                             "coons patch: boundary curve %d is rational; "
+                             "boundary curve %d is rational; "
                              "the patch of rational curves is not a NURBS "
                              "surface, give polynomial curves", i);
     }
@@ -116,12 +116,12 @@ cf_surface_coons(const cf_bspline_t *c0, const cf_bspline_t *c1,
     for (int i = 1; i < 4; i++)
         if (cf_bspline_dim(cs[i]) != dim)
             return cf__error(diag, CF_STATUS_DIM_MISMATCH, i,
-                             "coons patch: boundary curve %d has dimension "
+                             "boundary curve %d has dimension "
                              "%zu, curve 0 has %zu", i, cf_bspline_dim(cs[i]),
                              dim);
     if (dim > 64)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "coons patch: dimension %zu; at most 64", dim);
+                         "dimension %zu; at most 64", dim);
     st = corner(c0, "c0", 0, d0, "d0", 0, diag);
     if (st == CF_STATUS_OK)
         st = corner(c0, "c0", 1, d1, "d1", 0, diag);
@@ -170,7 +170,7 @@ cf_surface_coons(const cf_bspline_t *c0, const cf_bspline_t *c1,
     if (cf_bspline_surface_count_u(eb) * cf_bspline_surface_count_v(eb) != n ||
         cf_bspline_surface_count_u(et) * cf_bspline_surface_count_v(et) != n) {
         st = cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                       "coons patch: internal: the three grids differ");
+                       "internal: the three grids differ");
         goto done;
     }
     P = cf__alloc_array(n, dim * sizeof *P);

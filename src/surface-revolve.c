@@ -26,7 +26,7 @@ cf_surface_revolve(const cf_bspline_t *curve, const double *O,
                          "curve, axis point or axis direction is NULL");
     if (cf_bspline_dim(curve) != 3)
         return cf__error(diag, CF_STATUS_DIM_MISMATCH, -1,
-                         "revolve: the curve has dimension %zu; it must be "
+                         "the curve has dimension %zu; it must be "
                          "3", cf_bspline_dim(curve));
     st = cf__check_finite_points(O, 1, 3, 3, "axis point", diag);
     if (st == CF_STATUS_OK)
@@ -36,7 +36,7 @@ cf_surface_revolve(const cf_bspline_t *curve, const double *O,
     len = sqrt(A[0] * A[0] + A[1] * A[1] + A[2] * A[2]);
     if (!(len > 0.0))
         return cf__error(diag, CF_STATUS_DEGENERATE, -1,
-                         "revolve: the axis direction is zero");
+                         "the axis direction is zero");
     for (int k = 0; k < 3; k++)
         a[k] = A[k] / len;
     st = cf_nurbs_arc(2, o2, x2, y2, 1.0, a0, a1, &arc, diag);
@@ -153,7 +153,7 @@ cf_nurbs_torus(const double *centre, double R, double r,
     st = check(centre, r, R, out, diag);
     if (st == CF_STATUS_OK && !(R > r))
         st = cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                       "torus: the radius %g of the centre circle must be "
+                       "the radius %g of the centre circle must be "
                        "larger than the tube's %g", R, r);
     if (st != CF_STATUS_OK)
         return st;

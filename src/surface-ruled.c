@@ -140,7 +140,7 @@ cf_surface_ruled(const cf_bspline_t *c1, const cf_bspline_t *c2,
     dim = cf_bspline_dim(c1);
     if (cf_bspline_dim(c2) != dim)
         return cf__error(diag, CF_STATUS_DIM_MISMATCH, -1,
-                         "ruled: the curves have dimensions %zu and %zu",
+                         "the curves have dimensions %zu and %zu",
                          dim, cf_bspline_dim(c2));
     p = cf_bspline_degree(c1) > cf_bspline_degree(c2) ? cf_bspline_degree(c1)
                                                       : cf_bspline_degree(c2);
@@ -162,7 +162,7 @@ cf_surface_ruled(const cf_bspline_t *c1, const cf_bspline_t *c2,
     n = cf_bspline_count(ra);
     if (cf_bspline_count(rb) != n) {
         st = cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                       "ruled: internal: %zu and %zu points after merging "
+                       "internal: %zu and %zu points after merging "
                        "the knots", n, cf_bspline_count(rb));
         goto done;
     }

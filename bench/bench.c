@@ -15,6 +15,7 @@
 #include <time.h>
 
 #include "bench.h"
+#include "bench-time.h"
 
 /* Tables of the module files, in the order of docs/benchmarks.md (add the
 ** declaration and the entry when a module gets its workloads). */
@@ -26,21 +27,6 @@ static const bench_table_fn tables[] = {
     bench_bspline_table,
     NULL,
 };
-
-static double
-now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int
-cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 static int
 selected(const char *only, const char *id)

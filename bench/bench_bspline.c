@@ -7,6 +7,7 @@
 
 #include "bench.h"
 #include "curvefig/bspline.h"
+#include "bench-time.h"
 
 const bench_workload *bench_bspline_table(void);
 
@@ -137,13 +138,6 @@ static int
 w4_run(void *st, double sum[2])
 {
     return w3_run_k(st, 1, sum);
-}
-
-static int
-cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
 }
 
 static void *

@@ -32,13 +32,7 @@
 #include <time.h>
 #include <unistd.h>
 
-static double
-now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
+#include "bench-time.h"
 
 static double
 tv_s(struct timeval tv)
@@ -120,13 +114,6 @@ scripts_in(const char *dir, int *count)
         qsort(v, (size_t)n, sizeof *v, cmp_str);
     *count = n;
     return v;
-}
-
-static int
-cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
 }
 
 /* Run argv n times; the wall and the CPU (user + system) time of each run,

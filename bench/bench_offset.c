@@ -23,6 +23,7 @@
 #include <time.h>
 
 #include "curvefig/curvefig.h"
+#include "bench-time.h"
 
 typedef struct bcase {
     const char *name;
@@ -43,21 +44,6 @@ static const bcase cases[] = {
     { "overstroke-250", { 0, 0, 25, 75, 75, -50, 100, 0 }, -250,
       { 7, 9, 14 } },
 };
-
-static double
-now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int
-cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 int
 main(int argc, char **argv)

@@ -24,27 +24,13 @@
 
 #include "bench.h"
 #include "curvefig/reduce.h"
+#include "bench-time.h"
 
 /* in SISL's private header only */
 void s1343(SISLCurve *pc, double eeps[], int ilend, int irend, double aepsco,
            int itmax, SISLCurve **rc, int *jstat);
 
 enum { RUNS = 5, SAMPLES = 20000 };
-
-static double
-now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int
-cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 /* max |a(u) - b(u)| at SAMPLES + 1 even parameters, both through s1221 */
 static double

@@ -13,23 +13,9 @@
 #include <sisl.h>
 
 #include "bench.h"
+#include "bench-time.h"
 
 enum { NPTS = 1000, NS = 10000000, NR = 1000000, NINS = 1000, RUNS = 5 };
-
-static double
-now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int
-cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 /* The W3 spline as a SISL curve (order 4, copied coefficients). */
 static SISLCurve *

@@ -23,23 +23,9 @@
 
 #include "bench.h"
 #include "curvefig/surface.h"
+#include "bench-time.h"
 
 enum { NC = 40, NG = 1000, RUNS = 5 };
-
-static double
-now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-static int
-cmp_double(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
 
 static double
 median(double *t)

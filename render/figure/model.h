@@ -180,6 +180,10 @@ struct cf_figure {
     ** within one cf__figure_layout and its builds (render/layout/place.c) */
     bool placed;
     cf__layout_t placed_for;
+    /* the memory of its rasters, kept for the next placement (a layout
+    ** places the labels once per refit) */
+    unsigned char *place_px;
+    size_t place_px_size;
     /* legend (render/layout/legend.c) */
     cf__legend_entry_t *legend;
     size_t nlegend;

@@ -40,6 +40,7 @@ typedef struct anchors {
 
 typedef struct raster {
     cf__raster_t img, one;   /* the page's ink; one element's */
+    unsigned char *mask;     /* a label's pixels, laid out as one's */
     double res;
     cf__dl_t dl;
 } raster_t;
@@ -98,24 +99,28 @@ element_ops(cf_figure_t *fig, size_t i, const cf__layout_t *lay, raster_t *r)
     return st;
 }
 
-/* Paint the ops of r->dl into raster to. */
+/* Paint the ops of r->dl into raster to, within its pixel box px (NULL:
+** everywhere). */
 static cf_status_t
-paint(cf_figure_t *fig, raster_t *r, cf__raster_t *to)
+paint(cf_figure_t *fig, raster_t *r, cf__raster_t *to, const int *px)
 {
-    if (cf__raster_paint(to, &r->dl, 0, r->dl.count) != 0)
+    const int all[4] = { 0, 0, to->w, to->h };
+    if (cf__raster_paint_in(to, &r->dl, 0, r->dl.count,
+                            px != NULL ? px : all) != 0)
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
                            "out of memory placing labels");
     return CF_STATUS_OK;
 }
 
-/* Draw element i into raster to. */
+/* Draw element i into raster to, within its pixel box px (NULL:
+** everywhere). */
 static cf_status_t
 raster_element(cf_figure_t *fig, size_t i, const cf__layout_t *lay,
-               raster_t *r, cf__raster_t *to)
+               raster_t *r, cf__raster_t *to, const int *px)
 {
     cf_status_t st = element_ops(fig, i, lay, r);
     if (st == CF_STATUS_OK)
-        st = paint(fig, r, to);
+        st = paint(fig, r, to, px);
     return st;
 }
 
@@ -261,8 +266,9 @@ what_is_under(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
             && ((s.place == CF_PLACE_AUTO) ? !automatic || j > lab
                                            : !automatic && j > lab))
             continue;
-        cf__raster_clear(&r->one, NULL);
-        if (raster_element(fig, j, lay, r, &r->one) != CF_STATUS_OK)
+        /* only the label's box px is compared */
+        cf__raster_clear(&r->one, px);
+        if (raster_element(fig, j, lay, r, &r->one, px) != CF_STATUS_OK)
             return fig->count;
         /* the mask is empty outside the label's box px */
         n = common_pixels(&r->one, mask, px);
@@ -284,7 +290,6 @@ static cf_status_t
 check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
             size_t i, const cf__text_t *t, cf_place_t place, bool automatic)
 {
-    unsigned char *mask;
     cf_status_t st;
     double ink[4];
     int px[4];
@@ -303,21 +308,22 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
     px[2] = (int)ceil(ink[2] * r->res) + 1;
     px[3] = (int)ceil(ink[3] * r->res) + 1;
     cf__raster_clear(&r->one, px);
-    st = paint(fig, r, &r->one);
+    st = paint(fig, r, &r->one, px);
     if (st != CF_STATUS_OK)
         return st;
     n = common_pixels(&r->one, r->img.px, px);
     if (n > 1) {
-        size_t j, k = (size_t)r->one.h * (size_t)r->one.stride;
+        size_t j;
+        int row, i0 = px[0] > 0 ? px[0] : 0;
+        int i1 = px[2] < r->one.w ? px[2] : r->one.w;
         /* keep the label's mask: naming what is under it reuses r->one
         ** (only the label's box px is compared) */
-        mask = cf_malloc(k);
-        if (mask == NULL)
-            return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                               "out of memory placing labels");
-        memcpy(mask, r->one.px, k);
-        j = what_is_under(fig, lay, r, i, automatic, mask, px);
-        cf_free(mask);
+        for (row = px[1] > 0 ? px[1] : 0; row < px[3] && row < r->one.h
+             && i1 > i0; row++) {
+            size_t at = (size_t)row * (size_t)r->one.stride + (size_t)i0;
+            memcpy(r->mask + at, r->one.px + at, (size_t)(i1 - i0));
+        }
+        j = what_is_under(fig, lay, r, i, automatic, r->mask, px);
         if (j < fig->count)
             warn(fig, "label \"%s\" (%s%s) lies on %s %zu", t->src,
                  automatic ? "placed automatically " : "place ",
@@ -327,24 +333,42 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
                  automatic ? "placed automatically " : "place ",
                  place_names[place]);
     }
-    return paint(fig, r, &r->img);
+    return paint(fig, r, &r->img, NULL);
 }
 
+/* The three rasters of the page, w x h each, in the figure's memory kept
+** from the last placement (a layout places the labels once per refit of
+** its ink box; fresh pages of memory for each would cost more than the
+** painting). */
 static cf_status_t
 raster_open(cf_figure_t *fig, raster_t *r)
 {
+    size_t n;
     int w, h;
     memset(r, 0, sizeof *r);
     r->res = AUTO_RES;
     if (fig->width * fig->height * r->res * r->res > AUTO_MAX_PIXELS)
         r->res = sqrt(AUTO_MAX_PIXELS / (fig->width * fig->height));
-    w = (int)ceil(fig->width * r->res);
-    h = (int)ceil(fig->height * r->res);
+    w = (int)fmax(1, ceil(fig->width * r->res));
+    h = (int)fmax(1, ceil(fig->height * r->res));
     cf__dl_init(&r->dl);
-    if (cf__raster_open(&r->img, w, h, r->res, 0, 0) != 0
-        || cf__raster_open(&r->one, w, h, r->res, 0, 0) != 0)
-        return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                           "out of memory placing labels");
+    n = (size_t)w * (size_t)h;
+    if (fig->place_px_size < 3 * n) {
+        unsigned char *px = cf_realloc_array(fig->place_px, n, 3);
+        if (px == NULL)
+            return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                               "out of memory placing labels");
+        fig->place_px = px;
+        fig->place_px_size = 3 * n;
+    }
+    memset(fig->place_px, 0, 3 * n);
+    r->img.px = fig->place_px;
+    r->one.px = fig->place_px + n;
+    r->mask = fig->place_px + 2 * n;
+    r->img.w = r->one.w = w;
+    r->img.h = r->one.h = h;
+    r->img.stride = r->one.stride = w;
+    r->img.res = r->one.res = r->res;
     return CF_STATUS_OK;
 }
 
@@ -352,8 +376,6 @@ static void
 raster_close(raster_t *r)
 {
     cf__dl_free(&r->dl);
-    cf__raster_close(&r->img);
-    cf__raster_close(&r->one);
 }
 
 /* Whether layouts a and b map the data alike, page position aside. */
@@ -415,7 +437,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
         if ((fig->els[i]->kind->flags & CF__KIND_SHADING)
             || is_label(fig, i, &x, &y, &t, &chosen, &s))
             continue;
-        st = raster_element(fig, i, lay, &r, &r.img);
+        st = raster_element(fig, i, lay, &r, &r.img, NULL);
     }
     /* the labels placed by hand first: the automatic ones avoid them */
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {

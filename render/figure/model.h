@@ -178,7 +178,7 @@ struct cf_figure {
     size_t warnings_len;
     /* the layout (less its page position) the labels were last placed for
     ** within one cf__figure_layout and its builds (render/layout/place.c) */
-    bool placed;
+    bool placed, placed_draft;
     cf__layout_t placed_for;
     /* the memory of its rasters, kept for the next placement (a layout
     ** places the labels once per refit) */

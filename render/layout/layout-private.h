@@ -58,8 +58,12 @@ cf_status_t cf__room_find(cf_figure_t *fig, const cf__layout_t *lay,
 /* ---- place.c ------------------------------------------------------------ */
 
 /* Choose the places of the labels placed CF_PLACE_AUTO for a layout, and
-** note in the figure's warnings every label that lies on ink. */
-cf_status_t cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay);
+** note in the figure's warnings every label that lies on ink; a draft
+** (a refit of the ink box, never the layout drawn) chooses the same
+** places without looking for labels on ink, and is never reused for a
+** layout drawn. */
+cf_status_t cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay,
+                             bool draft);
 /* Forget the places chosen: the figure is laid out afresh. */
 void cf__place_forget(cf_figure_t *fig);
 

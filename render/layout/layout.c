@@ -34,12 +34,14 @@ compute_map(const cf_figure_t *fig, const double win[4], bool keep,
 }
 
 
-/* The elements (their automatic label places chosen first). */
+/* The elements (their automatic label places chosen first; a draft's
+** for a refit of the ink box). */
 static cf_status_t
-build_elements(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
+build_elements(cf_figure_t *fig, const cf__layout_t *lay, bool draft,
+               cf__dl_t *dl)
 {
     size_t i;
-    if (cf__place_labels(fig, lay) != CF_STATUS_OK)
+    if (cf__place_labels(fig, lay, draft) != CF_STATUS_OK)
         return fig->err.status;
     for (i = 0; i < fig->count; i++)
         if (cf__element_draw(fig, i, lay, dl) != CF_STATUS_OK)
@@ -49,14 +51,15 @@ build_elements(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
 
 /* The ink box of the figure drawn with layout lay: its elements, and the
 ** insets and the legend placed beside them (its panels are not measured:
-** they have their own layouts in their cells). */
+** they have their own layouts in their cells); draft: one of the refits
+** of a page cropped to its ink. */
 static cf_status_t
-ink_of(cf_figure_t *fig, const cf__layout_t *lay, double ink[4])
+ink_of(cf_figure_t *fig, const cf__layout_t *lay, bool draft, double ink[4])
 {
     cf__dl_t dl;
     cf_status_t st;
     cf__dl_init(&dl);
-    st = build_elements(fig, lay, &dl);
+    st = build_elements(fig, lay, draft, &dl);
     if (st == CF_STATUS_OK)
         st = cf__insets_draw(fig, lay, 0, &dl);
     if (st == CF_STATUS_OK)
@@ -126,7 +129,7 @@ cf__figure_build(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
     if (fig->panels != NULL && build_panels(fig, lay, dl) != CF_STATUS_OK)
         return fig->err.status;
     from = dl->count;
-    if (build_elements(fig, lay, dl) != CF_STATUS_OK
+    if (build_elements(fig, lay, false, dl) != CF_STATUS_OK
         || cf__insets_draw(fig, lay, from, dl) != CF_STATUS_OK
         || cf__legend_draw(fig, lay, from, dl) != CF_STATUS_OK)
         return fig->err.status;
@@ -243,7 +246,7 @@ cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
     for (pass = 0; pass < (refine ? 8 : 1); pass++) {
         double prev[4];
         memcpy(prev, avail, sizeof prev);
-        if (ink_of(fig, lay, ink) != CF_STATUS_OK)
+        if (ink_of(fig, lay, refine, ink) != CF_STATUS_OK)
             return fig->err.status;
         make_room(fig, win, ink, lay, avail);
         compute_map(fig, win, keep, avail, lay);

@@ -32,6 +32,12 @@
 /* The distances tried, in bp beyond the style's offset. */
 static const double further[] = { 0.0, 1.0, 2.0, 3.0, 4.0 };
 
+/* The places tried, in order of preference. */
+static const cf_place_t order[] = {
+    CF_PLACE_NE, CF_PLACE_NW, CF_PLACE_SE, CF_PLACE_SW,
+    CF_PLACE_N, CF_PLACE_S, CF_PLACE_E, CF_PLACE_W
+};
+
 /* The anchors (page points) of the labels in the window. */
 typedef struct anchors {
     double *xy;
@@ -41,6 +47,7 @@ typedef struct anchors {
 typedef struct raster {
     cf__raster_t img, one;   /* the page's ink; one element's */
     unsigned char *mask;     /* a label's pixels, laid out as one's */
+    bool draft;              /* no search for labels on ink */
     double res;
     cf__dl_t dl;
 } raster_t;
@@ -170,10 +177,6 @@ static void
 cheapest(const raster_t *r, const anchors_t *an, const cf_label_t *lab,
          const cf_style_t *s, double px, double py, cf__auto_place_t *chosen)
 {
-    static const cf_place_t order[] = {
-        CF_PLACE_NE, CF_PLACE_NW, CF_PLACE_SE, CF_PLACE_SW,
-        CF_PLACE_N, CF_PLACE_S, CF_PLACE_E, CF_PLACE_W
-    };
     double ink[4], best = INFINITY;
     size_t k, d;
     cf__label_ink(lab, ink);
@@ -296,8 +299,8 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
     long n;
     /* only the label's box is cleared, drawn and compared */
     st = element_ops(fig, i, lay, r);
-    if (st != CF_STATUS_OK)
-        return st;
+    if (st != CF_STATUS_OK || r->draft)
+        return st != CF_STATUS_OK ? st : paint(fig, r, &r->img, NULL);
     if (cf__dl_ink(&r->dl, 0, r->dl.count, ink) != 0)
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
                            "out of memory measuring a label");
@@ -324,6 +327,10 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
             memcpy(r->mask + at, r->one.px + at, (size_t)(i1 - i0));
         }
         j = what_is_under(fig, lay, r, i, automatic, r->mask, px);
+        /* what_is_under drew the other elements into r->dl */
+        st = element_ops(fig, i, lay, r);
+        if (st != CF_STATUS_OK)
+            return st;
         if (j < fig->count)
             warn(fig, "label \"%s\" (%s%s) lies on %s %zu", t->src,
                  automatic ? "placed automatically " : "place ",
@@ -394,13 +401,54 @@ cf__place_forget(cf_figure_t *fig)
     fig->placed = false;
 }
 
+/* The pixel box of raster r that the places of the automatic labels in
+** the window read (every candidate's box out to AUTO_NEAR, a pixel more
+** each way) into px; false when there is none (no automatic label). */
+static bool
+candidates_box(cf_figure_t *fig, const cf__layout_t *lay, const raster_t *r,
+               int px[4])
+{
+    double b[4] = { INFINITY, INFINITY, -INFINITY, -INFINITY };
+    size_t i, d, k;
+    for (i = 0; i < fig->count; i++) {
+        double x, y, ax, ay, ink[4];
+        cf__text_t *t;
+        cf__auto_place_t *chosen;
+        cf_style_t s;
+        if (!is_label(fig, i, &x, &y, &t, &chosen, &s)
+            || s.place != CF_PLACE_AUTO || !cf__in_window(lay, x, y)
+            || cf__text_ensure(fig, t, s.font_size) != CF_STATUS_OK
+            || t->lab == NULL)
+            continue;
+        cf__map(lay, x, y, &ax, &ay);
+        cf__label_ink(t->lab, ink);
+        for (d = 0; d < sizeof further / sizeof further[0]; d++)
+            for (k = 0; k < sizeof order / sizeof order[0]; k++) {
+                double ox, oy;
+                cf__label_origin(t->lab, order[k], s.offset + further[d],
+                                 ax, ay, &ox, &oy);
+                b[0] = fmin(b[0], ox + ink[0] - AUTO_NEAR);
+                b[1] = fmin(b[1], oy + ink[1] - AUTO_NEAR);
+                b[2] = fmax(b[2], ox + ink[2] + AUTO_NEAR);
+                b[3] = fmax(b[3], oy + ink[3] + AUTO_NEAR);
+            }
+    }
+    if (!(b[2] >= b[0] && b[3] >= b[1]))
+        return false;
+    px[0] = (int)fmax(-1, fmin(r->img.w, floor(b[0] * r->res) - 1));
+    px[1] = (int)fmax(-1, fmin(r->img.h, floor(b[1] * r->res) - 1));
+    px[2] = (int)fmax(-1, fmin(r->img.w, ceil(b[2] * r->res) + 1));
+    px[3] = (int)fmax(-1, fmin(r->img.h, ceil(b[3] * r->res) + 1));
+    return true;
+}
+
 /* The places of layout lay, chosen on the page at its own position (the
 ** layout moved by its page position to the origin): a page cropped to
 ** its ink moves the layout without moving a label against its point, so
 ** the places chosen once serve every build of the layout that only
 ** moves it (the figure unchanged since cf__figure_layout). */
 cf_status_t
-cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
+cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
 {
     cf__layout_t moved = *at;
     const cf__layout_t *lay = &moved;
@@ -411,12 +459,14 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
     cf__auto_place_t *chosen;
     double x, y;
     size_t i, n;
+    int box[4];
     cf_status_t st;
 
     moved.ox -= at->px;
     moved.oy -= at->py;
     moved.px = moved.py = 0;
-    if (fig->placed && same_map(&fig->placed_for, lay))
+    if (fig->placed && (draft || !fig->placed_draft)
+        && same_map(&fig->placed_for, lay))
         return CF_STATUS_OK;   /* the places and warnings of that layout */
     fig->placed = false;
     cf_free(fig->warnings);
@@ -432,12 +482,22 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
                            "placed in one figure (each is placed among "
                            "all the others)", n, CF_FIGURE_MAX_LABELS);
     st = raster_open(fig, &r);
+    r.draft = draft;
+    /* a draft reads the raster only where the automatic labels may go:
+    ** the rest is not drawn (cf__raster_paint_in: the same pixels) */
+    if (st == CF_STATUS_OK && draft && !candidates_box(fig, lay, &r, box)) {
+        raster_close(&r);
+        fig->placed = true;
+        fig->placed_draft = true;
+        fig->placed_for = moved;
+        return CF_STATUS_OK;
+    }
     /* fills and hulls left out: labels may sit on a shading */
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
         if ((fig->els[i]->kind->flags & CF__KIND_SHADING)
             || is_label(fig, i, &x, &y, &t, &chosen, &s))
             continue;
-        st = raster_element(fig, i, lay, &r, &r.img, NULL);
+        st = raster_element(fig, i, lay, &r, &r.img, draft ? box : NULL);
     }
     /* the labels placed by hand first: the automatic ones avoid them */
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
@@ -473,6 +533,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
     raster_close(&r);
     if (st == CF_STATUS_OK) {
         fig->placed = true;
+        fig->placed_draft = draft;
         fig->placed_for = moved;
     }
     return st;

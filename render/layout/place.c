@@ -401,12 +401,12 @@ cf__place_forget(cf_figure_t *fig)
     fig->placed = false;
 }
 
-/* The pixel box of raster r that the places of the automatic labels in
-** the window read (every candidate's box out to AUTO_NEAR, a pixel more
-** each way) into px; false when there is none (no automatic label). */
+/* The pixel box of raster r that the placement reads (every candidate
+** box of the automatic labels in the window out to AUTO_NEAR, and unless
+** a draft the box of each label placed by hand, as check_label takes it,
+** a pixel more each way) into px; false when there is none. */
 static bool
-candidates_box(cf_figure_t *fig, const cf__layout_t *lay, const raster_t *r,
-               int px[4])
+read_box(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r, int px[4])
 {
     double b[4] = { INFINITY, INFINITY, -INFINITY, -INFINITY };
     size_t i, d, k;
@@ -416,8 +416,20 @@ candidates_box(cf_figure_t *fig, const cf__layout_t *lay, const raster_t *r,
         cf__auto_place_t *chosen;
         cf_style_t s;
         if (!is_label(fig, i, &x, &y, &t, &chosen, &s)
-            || s.place != CF_PLACE_AUTO || !cf__in_window(lay, x, y)
-            || cf__text_ensure(fig, t, s.font_size) != CF_STATUS_OK
+            || !cf__in_window(lay, x, y))
+            continue;
+        if (s.place != CF_PLACE_AUTO) {
+            if (r->draft || element_ops(fig, i, lay, r) != CF_STATUS_OK
+                || cf__dl_ink(&r->dl, 0, r->dl.count, ink) != 0
+                || !(ink[2] > ink[0] && ink[3] > ink[1]))
+                continue;
+            b[0] = fmin(b[0], ink[0] - 1 / r->res);
+            b[1] = fmin(b[1], ink[1] - 1 / r->res);
+            b[2] = fmax(b[2], ink[2] + 1 / r->res);
+            b[3] = fmax(b[3], ink[3] + 1 / r->res);
+            continue;
+        }
+        if (cf__text_ensure(fig, t, s.font_size) != CF_STATUS_OK
             || t->lab == NULL)
             continue;
         cf__map(lay, x, y, &ax, &ay);
@@ -483,12 +495,15 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
                            "all the others)", n, CF_FIGURE_MAX_LABELS);
     st = raster_open(fig, &r);
     r.draft = draft;
-    /* a draft reads the raster only where the automatic labels may go:
-    ** the rest is not drawn (cf__raster_paint_in: the same pixels) */
-    if (st == CF_STATUS_OK && draft && !candidates_box(fig, lay, &r, box)) {
+    /* the raster is read only where the automatic labels may go and the
+    ** labels placed by hand are: the rest is not drawn
+    ** (cf__raster_paint_in: the same pixels) */
+    if (st == CF_STATUS_OK && !read_box(fig, lay, &r, box)) {
         raster_close(&r);
+        if (fig->err.status != CF_STATUS_OK)
+            return fig->err.status;
         fig->placed = true;
-        fig->placed_draft = true;
+        fig->placed_draft = draft;
         fig->placed_for = moved;
         return CF_STATUS_OK;
     }
@@ -497,7 +512,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
         if ((fig->els[i]->kind->flags & CF__KIND_SHADING)
             || is_label(fig, i, &x, &y, &t, &chosen, &s))
             continue;
-        st = raster_element(fig, i, lay, &r, &r.img, draft ? box : NULL);
+        st = raster_element(fig, i, lay, &r, &r.img, box);
     }
     /* the labels placed by hand first: the automatic ones avoid them */
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {

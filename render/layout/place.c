@@ -8,7 +8,11 @@
 ** nearer another labelled point than its own while any other is left,
 ** and is added to the raster in turn, so that later labels avoid it.  A label that still lies on ink, placed by hand or
 ** automatically, is kept and reported in the figure's warnings
-** (cf_figure_warnings): which label, at which place, on what.
+** (cf_figure_warnings): which label, at which place, on what.  The
+** raster is drawn only where it is read (the candidate places and the
+** labels placed by hand), in the figure's memory kept from the last
+** placement; the refits of a page cropped to its ink place the labels as
+** a draft (the same places, no warnings).
 */
 #include <math.h>
 #include <stdarg.h>

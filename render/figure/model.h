@@ -143,12 +143,14 @@ struct cf__element {
 
 /* Where a box goes beside the drawing (render/layout/room.c): undecided (a new
 ** layout), inside the drawing's ink box, or in a band at its right or
-** below it. */
+** below it (or, for an inset, at its left or above it). */
 typedef enum cf__room_band {
     CF__ROOM_UNDECIDED,
     CF__ROOM_INSIDE,
     CF__ROOM_RIGHT,
-    CF__ROOM_BELOW
+    CF__ROOM_BELOW,
+    CF__ROOM_LEFT,
+    CF__ROOM_ABOVE
 } cf__room_band_t;
 
 /* A legend entry: element el and its text. */

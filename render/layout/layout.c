@@ -58,7 +58,7 @@ ink_of(cf_figure_t *fig, const cf__layout_t *lay, double ink[4])
     cf__dl_init(&dl);
     st = build_elements(fig, lay, &dl);
     if (st == CF_STATUS_OK)
-        st = cf__insets_draw(fig, lay, 0, &dl);
+        st = cf__insets_draw(fig, lay, &dl);
     if (st == CF_STATUS_OK)
         st = cf__legend_draw(fig, lay, 0, &dl);
     if (st == CF_STATUS_OK)
@@ -127,7 +127,7 @@ cf__figure_build(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
         return fig->err.status;
     from = dl->count;
     if (build_elements(fig, lay, dl) != CF_STATUS_OK
-        || cf__insets_draw(fig, lay, from, dl) != CF_STATUS_OK
+        || cf__insets_draw(fig, lay, dl) != CF_STATUS_OK
         || cf__legend_draw(fig, lay, from, dl) != CF_STATUS_OK)
         return fig->err.status;
     if (dl->failed)

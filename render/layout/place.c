@@ -6,8 +6,11 @@
 ** default) takes the cheapest of the eight places around its anchor, at
 ** its offset and up to 4 bp farther (adjacent to the point), never one
 ** nearer another labelled point than its own while any other is left,
-** and is added to the raster in turn, so that later labels avoid it.  A label that still lies on ink, placed by hand or
-** automatically, is kept and reported in the figure's warnings
+** and is added to the raster in turn, so that later labels avoid it.
+** The insets' frames, connectors and boxes are ink too (placed before
+** the labels: render/layout/inset-place.c).  A label that still lies on
+** ink, placed by hand or automatically, is kept and reported in the
+** figure's warnings
 ** (cf_figure_warnings): which label, at which place, on what.
 */
 #include <math.h>
@@ -323,9 +326,10 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
                  automatic ? "placed automatically " : "place ",
                  place_names[place], fig->els[j]->kind->name, j + 1);
         else
-            warn(fig, "label \"%s\" (%s%s) lies on ink", t->src,
+            warn(fig, "label \"%s\" (%s%s) lies on %s", t->src,
                  automatic ? "placed automatically " : "place ",
-                 place_names[place]);
+                 place_names[place], fig->ninsets > 0
+                 ? "ink (an inset's frame or connector?)" : "ink");
     }
     return paint(fig, r, &r->img);
 }
@@ -416,6 +420,13 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
             || is_label(fig, i, &x, &y, &t, &chosen, &s))
             continue;
         st = raster_element(fig, i, lay, &r, &r.img);
+    }
+    /* the insets' frames, connectors and boxes */
+    if (st == CF_STATUS_OK && fig->ninsets > 0) {
+        cf__dl_reset(&r.dl);
+        st = cf__insets_ink(fig, lay, &r.dl);
+        if (st == CF_STATUS_OK)
+            st = paint(fig, &r, &r.img);
     }
     /* the labels placed by hand first: the automatic ones avoid them */
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {

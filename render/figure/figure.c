@@ -116,6 +116,7 @@ cf_figure_destroy(cf_figure_t *fig)
     cf_free(fig->caption);
     cf_free(fig->proj);
     cf_free(fig->warnings);
+    cf_free(fig->all_warnings);
     cf_free(fig);
 }
 

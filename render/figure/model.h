@@ -178,6 +178,10 @@ struct cf_figure {
     size_t count, cap;
     char *warnings;          /* of the last layout, a line each; NULL: none */
     size_t warnings_len;
+    char *all_warnings;      /* a figure split into panels: its own and
+                                its panels' of the last build, each line
+                                of a panel naming it (render/layout/
+                                layout.c); NULL: none */
     /* the layout (less its page position) the labels were last placed for
     ** within one cf__figure_layout and its builds (render/layout/place.c) */
     bool placed;

@@ -431,7 +431,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
     /* the labels placed by hand first: the automatic ones avoid them */
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
         if (!is_label(fig, i, &x, &y, &t, &chosen, &s)
-            || s.place == CF_PLACE_AUTO || !cf__in_window(lay, x, y))
+            || s.place == CF_PLACE_AUTO)
             continue;
         st = check_label(fig, lay, &r, i, t, s.place, false);
     }
@@ -441,15 +441,14 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
         st = cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
                          "out of memory placing labels");
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++)
-        if (is_label(fig, i, &x, &y, &t, &chosen, &s)
-            && cf__in_window(lay, x, y)) {
+        if (is_label(fig, i, &x, &y, &t, &chosen, &s)) {
             cf__map(lay, x, y, &an.xy[2 * an.n], &an.xy[2 * an.n + 1]);
             an.n++;
         }
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
         double px, py;
         if (!is_label(fig, i, &x, &y, &t, &chosen, &s)
-            || s.place != CF_PLACE_AUTO || !cf__in_window(lay, x, y))
+            || s.place != CF_PLACE_AUTO)
             continue;
         st = cf__text_ensure(fig, t, s.font_size);
         if (st != CF_STATUS_OK || t->lab == NULL)
@@ -470,5 +469,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
 const char *
 cf_figure_warnings(const cf_figure_t *fig)
 {
+    if (fig != NULL && fig->panels != NULL)
+        return fig->all_warnings != NULL ? fig->all_warnings : "";
     return fig != NULL && fig->warnings != NULL ? fig->warnings : "";
 }

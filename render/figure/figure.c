@@ -106,6 +106,7 @@ cf_figure_destroy(cf_figure_t *fig)
     cf_free(fig->legend);
     cf_free(fig->insets);
     cf_free(fig->inset_band);
+    cf_free(fig->inset_cache);
     for (i = 0; fig->panels != NULL && i < (size_t)(fig->rows * fig->cols);
          i++)
         cf_figure_destroy(fig->panels[i]);

@@ -196,6 +196,8 @@ struct cf_figure {
     cf_inset_t *insets;
     size_t ninsets;
     cf__room_band_t *inset_band;  /* each one's, of this layout */
+    void *inset_cache;            /* their places for the last map they
+                                     were found for (inset-place.c) */
     /* panels (render/layout/panel.c): rows x cols figures, or a panel's
     ** parent */
     cf_figure_t **panels;

@@ -541,20 +541,71 @@ cf__inset_outline(cf_figure_t *fig, const cf__inset_geom_t *g, unsigned what,
     return dl->failed ? cf__fig_nomem(fig, "an inset") : CF_STATUS_OK;
 }
 
+/* The places found for the last map (fig->inset_cache): a layout that
+** only moves the figure on the page (a page cropped to its ink) reuses
+** them. */
+typedef struct ip_cache {
+    cf__layout_t lay;           /* moved to the page's origin */
+    size_t n;
+    cf__inset_geom_t g[];       /* at the origin */
+} ip_cache_t;
+
+/* g[0..n) moved by (dx, dy). */
+static void
+move_places(cf__inset_geom_t *g, size_t n, double dx, double dy)
+{
+    size_t k;
+    int c;
+    for (k = 0; k < n; k++)
+        for (c = 0; c < 4; c++) {
+            g[k].rb[c] += c % 2 == 0 ? dx : dy;
+            g[k].ib[c] += c % 2 == 0 ? dx : dy;
+        }
+}
+
+static cf_status_t
+place_all(cf_figure_t *fig, const cf__layout_t *at, cf__inset_geom_t *g);
+
 cf_status_t
 cf__insets_place(cf_figure_t *fig, const cf__layout_t *at,
                  cf__inset_geom_t *g)
+{
+    cf__layout_t lay = *at;
+    ip_cache_t *c = fig->inset_cache;
+    cf_status_t st;
+    lay.ox -= at->px;
+    lay.oy -= at->py;
+    lay.px = lay.py = 0;
+    if (c != NULL && c->n == fig->ninsets
+        && cf__layout_same_map(&c->lay, &lay)) {
+        memcpy(g, c->g, c->n * sizeof *g);
+        move_places(g, c->n, at->px, at->py);
+        return CF_STATUS_OK;
+    }
+    st = place_all(fig, &lay, g);
+    if (st != CF_STATUS_OK)
+        return st;
+    cf_free(fig->inset_cache);
+    fig->inset_cache = c = cf_malloc(sizeof *c + fig->ninsets * sizeof *g);
+    if (c != NULL) {   /* without it, the places are found again */
+        c->lay = lay;
+        c->n = fig->ninsets;
+        memcpy(c->g, g, c->n * sizeof *g);
+    }
+    move_places(g, fig->ninsets, at->px, at->py);
+    return CF_STATUS_OK;
+}
+
+/* Every inset's place for layout lay, at the page's origin, into g. */
+static cf_status_t
+place_all(cf_figure_t *fig, const cf__layout_t *at, cf__inset_geom_t *g)
 {
     cf__layout_t lay = *at;
     ip_search_t s;
     double e = 1e-9 * fmax(at->xmax - at->xmin, at->ymax - at->ymin);
     double room = 0;
     size_t k;
-    int c;
     cf_status_t st;
-    lay.ox -= at->px;
-    lay.oy -= at->py;
-    lay.px = lay.py = 0;
     for (k = 0; k < fig->ninsets; k++) {
         const double *r = fig->insets[k].region;
         if (r[0] < lay.xmin - e || r[2] > lay.xmax + e
@@ -565,8 +616,11 @@ cf__insets_place(cf_figure_t *fig, const cf__layout_t *at,
                                k + 1, r[0], r[1], r[2], r[3], lay.xmin,
                                lay.xmax, lay.ymin, lay.ymax);
         g[k].mag = magnification(fig, &lay, &fig->insets[k], g[k].rb);
-        room = fmax(room, g[k].mag * fmax(g[k].rb[2] - g[k].rb[0],
-                                          g[k].rb[3] - g[k].rb[1]));
+        /* room in the raster beside the drawing for the insets placed
+        ** there, which the later ones avoid */
+        if (fig->ninsets > 1)
+            room = fmax(room, g[k].mag * fmax(g[k].rb[2] - g[k].rb[0],
+                                              g[k].rb[3] - g[k].rb[1]));
     }
     st = open_search(fig, &lay, room, &s);
     for (k = 0; k < fig->ninsets && st == CF_STATUS_OK; k++) {
@@ -578,10 +632,6 @@ cf__insets_place(cf_figure_t *fig, const cf__layout_t *at,
             && (cf__raster_paint(&s.img, &s.dl, 0, s.dl.count) != 0
                 || sum_ink(&s) != 0))
             st = cf__fig_nomem(fig, "placing an inset");
-        for (c = 0; c < 4; c++) {
-            g[k].rb[c] += c % 2 == 0 ? at->px : at->py;
-            g[k].ib[c] += c % 2 == 0 ? at->px : at->py;
-        }
     }
     close_search(&s);
     return st;

@@ -10,6 +10,16 @@
 
 /* ---- layout.c ----------------------------------------------------------- */
 
+/* Whether layouts a and b map the data alike, page position aside. */
+static inline bool
+cf__layout_same_map(const cf__layout_t *a, const cf__layout_t *b)
+{
+    return a->xmin == b->xmin && a->xmax == b->xmax && a->ymin == b->ymin
+        && a->ymax == b->ymax && a->sx == b->sx && a->sy == b->sy
+        && a->ox == b->ox && a->oy == b->oy && a->tol == b->tol
+        && a->clip == b->clip;
+}
+
 /* Compute the layout for the figure's page (errors go into fig). */
 cf_status_t cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay);
 /* The display list of every element for a layout (automatic label places

@@ -360,16 +360,6 @@ raster_close(raster_t *r)
     cf__raster_close(&r->one);
 }
 
-/* Whether layouts a and b map the data alike, page position aside. */
-static bool
-same_map(const cf__layout_t *a, const cf__layout_t *b)
-{
-    return a->xmin == b->xmin && a->xmax == b->xmax && a->ymin == b->ymin
-        && a->ymax == b->ymax && a->sx == b->sx && a->sy == b->sy
-        && a->ox == b->ox && a->oy == b->oy && a->tol == b->tol
-        && a->clip == b->clip;
-}
-
 void
 cf__place_forget(cf_figure_t *fig)
 {
@@ -398,7 +388,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
     moved.ox -= at->px;
     moved.oy -= at->py;
     moved.px = moved.py = 0;
-    if (fig->placed && same_map(&fig->placed_for, lay))
+    if (fig->placed && cf__layout_same_map(&fig->placed_for, lay))
         return CF_STATUS_OK;   /* the places and warnings of that layout */
     fig->placed = false;
     cf_free(fig->warnings);

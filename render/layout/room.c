@@ -194,4 +194,6 @@ cf__room_reset(cf_figure_t *fig)
     fig->legend_band = CF__ROOM_UNDECIDED;
     for (k = 0; k < fig->ninsets; k++)
         fig->inset_band[k] = CF__ROOM_UNDECIDED;
+    cf_free(fig->inset_cache);
+    fig->inset_cache = NULL;
 }

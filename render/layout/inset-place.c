@@ -340,6 +340,9 @@ search(const cf_figure_t *fig, const ip_search_t *s, const double rb[4],
             if (better(&c, best))
                 *best = c;
         }
+        /* a place off the corners and sides must save IP_GRID_GAIN */
+        if (best->cost >= 0 && best->key < IP_GRID_GAIN)
+            return;
         for (y = y0; y <= y1; y += IP_GRID)
             for (x = x0; x <= x1; x += IP_GRID) {
                 c.at[0] = x;

@@ -6,13 +6,15 @@
 ** default) takes the cheapest of the eight places around its anchor, at
 ** its offset and up to 4 bp farther (adjacent to the point), never one
 ** nearer another labelled point than its own while any other is left,
-** and is added to the raster in turn, so that later labels avoid it.  A label that still lies on ink, placed by hand or
-** automatically, is kept and reported in the figure's warnings
-** (cf_figure_warnings): which label, at which place, on what.  The
-** raster is drawn only where it is read (the candidate places and the
-** labels placed by hand), in the figure's memory kept from the last
-** placement; the refits of a page cropped to its ink place the labels as
-** a draft (the same places, no warnings).
+** and is added to the raster in turn, so that later labels avoid it.
+** The insets' frames, connectors and boxes are ink too (placed before
+** the labels: render/layout/inset-place.c).  A label that still lies on
+** ink, placed by hand or automatically, is kept and reported in the
+** figure's warnings (cf_figure_warnings): which label, at which place,
+** on what.  The raster is drawn only where it is read (the candidate
+** places and the labels placed by hand), in the figure's memory kept
+** from the last placement; the refits of a page cropped to its ink place
+** the labels as a draft (the same places, no warnings).
 */
 #include <math.h>
 #include <stdarg.h>
@@ -340,9 +342,10 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
                  automatic ? "placed automatically " : "place ",
                  place_names[place], fig->els[j]->kind->name, j + 1);
         else
-            warn(fig, "label \"%s\" (%s%s) lies on ink", t->src,
+            warn(fig, "label \"%s\" (%s%s) lies on %s", t->src,
                  automatic ? "placed automatically " : "place ",
-                 place_names[place]);
+                 place_names[place], fig->ninsets > 0
+                 ? "ink (an inset's frame or connector?)" : "ink");
     }
     return paint(fig, r, &r->img, NULL);
 }
@@ -387,16 +390,6 @@ static void
 raster_close(raster_t *r)
 {
     cf__dl_free(&r->dl);
-}
-
-/* Whether layouts a and b map the data alike, page position aside. */
-static bool
-same_map(const cf__layout_t *a, const cf__layout_t *b)
-{
-    return a->xmin == b->xmin && a->xmax == b->xmax && a->ymin == b->ymin
-        && a->ymax == b->ymax && a->sx == b->sx && a->sy == b->sy
-        && a->ox == b->ox && a->oy == b->oy && a->tol == b->tol
-        && a->clip == b->clip;
 }
 
 void
@@ -482,7 +475,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
     moved.oy -= at->py;
     moved.px = moved.py = 0;
     if (fig->placed && (draft || !fig->placed_draft)
-        && same_map(&fig->placed_for, lay))
+        && cf__layout_same_map(&fig->placed_for, lay))
         return CF_STATUS_OK;   /* the places and warnings of that layout */
     fig->placed = false;
     cf_free(fig->warnings);
@@ -518,10 +511,17 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
             continue;
         st = raster_element(fig, i, lay, &r, &r.img, box);
     }
+    /* the insets' frames, connectors and boxes */
+    if (st == CF_STATUS_OK && fig->ninsets > 0) {
+        cf__dl_reset(&r.dl);
+        st = cf__insets_ink(fig, lay, &r.dl);
+        if (st == CF_STATUS_OK)
+            st = paint(fig, &r, &r.img, box);
+    }
     /* the labels placed by hand first: the automatic ones avoid them */
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
         if (!is_label(fig, i, &x, &y, &t, &chosen, &s)
-            || s.place == CF_PLACE_AUTO || !cf__in_window(lay, x, y))
+            || s.place == CF_PLACE_AUTO)
             continue;
         st = check_label(fig, lay, &r, i, t, s.place, false);
     }
@@ -531,15 +531,14 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
         st = cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
                          "out of memory placing labels");
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++)
-        if (is_label(fig, i, &x, &y, &t, &chosen, &s)
-            && cf__in_window(lay, x, y)) {
+        if (is_label(fig, i, &x, &y, &t, &chosen, &s)) {
             cf__map(lay, x, y, &an.xy[2 * an.n], &an.xy[2 * an.n + 1]);
             an.n++;
         }
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
         double px, py;
         if (!is_label(fig, i, &x, &y, &t, &chosen, &s)
-            || s.place != CF_PLACE_AUTO || !cf__in_window(lay, x, y))
+            || s.place != CF_PLACE_AUTO)
             continue;
         st = cf__text_ensure(fig, t, s.font_size);
         if (st != CF_STATUS_OK || t->lab == NULL)
@@ -561,5 +560,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
 const char *
 cf_figure_warnings(const cf_figure_t *fig)
 {
+    if (fig != NULL && fig->panels != NULL)
+        return fig->all_warnings != NULL ? fig->all_warnings : "";
     return fig != NULL && fig->warnings != NULL ? fig->warnings : "";
 }

@@ -233,7 +233,7 @@ sc_params(PyObject *self, void *unused)
                                  q->min, "max", q->max, "step", q->step,
                                  "default", q->def, "value", q->value);
         else
-            item = Py_BuildValue("{sssssNsN}", "kind", "points", "name",
+            item = Py_BuildValue("{s:s,s:s,s:s,s:N,s:N}", "kind", "points", "name",
                                  q->name, "figure", q->figure, "default",
                                  cfpy_matrix(q->def_xy, (npy_intp)q->count, 2),
                                  "value",

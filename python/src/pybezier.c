@@ -329,7 +329,6 @@ static PyObject *
 bz_split(PyObject *self, PyObject *tobj)
 {
     cf_bezier_t *l = NULL, *r = NULL;
-    PyObject *pl, *pr;
     cf_diag_t d;
     cf_status_t st;
     double t;
@@ -338,14 +337,7 @@ bz_split(PyObject *self, PyObject *tobj)
     st = cf_bezier_split(SELF(self), t, &l, &r, &d);
     if (st != CF_STATUS_OK)
         return cfpy_fail("split", st, &d);
-    pl = cfpy_wrap_bezier(l);
-    pr = cfpy_wrap_bezier(r);
-    if (pl == NULL || pr == NULL) {
-        Py_XDECREF(pl);
-        Py_XDECREF(pr);
-        return NULL;
-    }
-    return Py_BuildValue("(NN)", pl, pr);
+    return cfpy_pair(cfpy_wrap_bezier(l), cfpy_wrap_bezier(r));
 }
 
 static PyObject *
@@ -407,18 +399,14 @@ bz_bbox(PyObject *self, PyObject *unused)
     (void)unused;
     lo = cfpy_new(1, &n);
     hi = cfpy_new(1, &n);
-    if (lo == NULL || hi == NULL)
-        goto fail;
-    st = cf_bezier_bbox(SELF(self), PyArray_DATA(lo), PyArray_DATA(hi));
-    if (st != CF_STATUS_OK) {
-        cfpy_fail("bbox", st, NULL);
-        goto fail;
+    if (lo != NULL && hi != NULL) {
+        st = cf_bezier_bbox(SELF(self), PyArray_DATA(lo), PyArray_DATA(hi));
+        if (st != CF_STATUS_OK) {
+            cfpy_fail("bbox", st, NULL);
+            Py_CLEAR(lo);
+        }
     }
-    return Py_BuildValue("(NN)", lo, hi);
-fail:
-    Py_XDECREF(lo);
-    Py_XDECREF(hi);
-    return NULL;
+    return cfpy_pair((PyObject *)lo, (PyObject *)hi);
 }
 
 static PyObject *

@@ -323,7 +323,6 @@ static PyObject *
 bs_split(PyObject *self, PyObject *uobj)
 {
     cf_bspline_t *l = NULL, *r = NULL;
-    PyObject *pl, *pr;
     cf_diag_t d;
     cf_status_t st;
     double u;
@@ -332,14 +331,7 @@ bs_split(PyObject *self, PyObject *uobj)
     st = cf_bspline_split(SELF(self), u, &l, &r, &d);
     if (st != CF_STATUS_OK)
         return cfpy_fail("split", st, &d);
-    pl = cfpy_wrap_bspline(l);
-    pr = cfpy_wrap_bspline(r);
-    if (pl == NULL || pr == NULL) {
-        Py_XDECREF(pl);
-        Py_XDECREF(pr);
-        return NULL;
-    }
-    return Py_BuildValue("(NN)", pl, pr);
+    return cfpy_pair(cfpy_wrap_bspline(l), cfpy_wrap_bspline(r));
 }
 
 static PyObject *

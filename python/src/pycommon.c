@@ -296,3 +296,14 @@ cfpy_eval_params(PyObject *tobj, const char *fn, const void *obj,
     Py_DECREF(t);
     return (PyObject *)out;
 }
+
+PyObject *
+cfpy_pair(PyObject *a, PyObject *b)
+{
+    if (a == NULL || b == NULL) {
+        Py_XDECREF(a);
+        Py_XDECREF(b);
+        return NULL;
+    }
+    return Py_BuildValue("(NN)", a, b);
+}

@@ -77,6 +77,10 @@ PyObject *cfpy_eval_params(PyObject *tobj, const char *fn, const void *obj,
                            const npy_intp *extra, int nextra, double a,
                            double b);
 
+/* The tuple (a, b), taking both references; NULL (both released) when
+** either is NULL. */
+PyObject *cfpy_pair(PyObject *a, PyObject *b);
+
 /* Map a direction "u" / "v" (surfaces). */
 int cfpy_dir(PyObject *obj, const char *fn, int *dir);
 

@@ -402,7 +402,7 @@ static PyObject *
 sf_split(PyObject *self, PyObject *args)
 {
     const kind_t *k = KIND(self);
-    PyObject *dirobj, *a, *b;
+    PyObject *dirobj;
     void *lo = NULL, *hi = NULL;
     double x;
     int dir;
@@ -421,14 +421,7 @@ sf_split(PyObject *self, PyObject *args)
                                      (cf_bezier_surface_t **)&hi, &d);
     if (st != CF_STATUS_OK)
         return cfpy_fail("split", st, &d);
-    a = wrap(k, lo);
-    b = wrap(k, hi);
-    if (a == NULL || b == NULL) {
-        Py_XDECREF(a);
-        Py_XDECREF(b);
-        return NULL;
-    }
-    return Py_BuildValue("(NN)", a, b);
+    return cfpy_pair(wrap(k, lo), wrap(k, hi));
 }
 
 static PyObject *

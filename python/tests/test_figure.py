@@ -134,3 +134,50 @@ def test_lua_literals():
     assert literal(s).startswith("bspline{ degree = 2, knots = {0.0, 0.0, "
                                  "0.0, 1.0, 1.0, 1.0}")
     assert "weights = {1.0, 2.0, 1.0}" in literal(s)
+
+
+def test_interactive_page_in_a_browser(tmp_path):
+    """The notebook's _repr_html_ (the course page in a sandboxed iframe)
+    draws the figure in a real browser, its WebAssembly module running in
+    the frame, and moving the slider draws it again."""
+    if not curvefig.have_html():
+        pytest.skip("the module was built without the WebAssembly module")
+    webdriver = pytest.importorskip("selenium.webdriver")
+    from selenium.webdriver.chrome.service import Service
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.common.keys import Keys
+    if not (os.path.exists("/usr/bin/chromium") and
+            os.path.exists("/usr/bin/chromedriver")):
+        pytest.skip("no chromium and chromedriver")
+    g = curvefig.render_script(DECASTELJAU)[0]
+    page = tmp_path / "notebook.html"
+    page.write_text("<!DOCTYPE html><html><body><div class='output'>%s"
+                    "</div></body></html>" % g._repr_html_())
+    opts = webdriver.ChromeOptions()
+    opts.binary_location = "/usr/bin/chromium"
+    for a in ("--headless", "--no-sandbox", "--disable-gpu",
+              "--disable-dev-shm-usage"):
+        opts.add_argument(a)
+    drv = webdriver.Chrome(service=Service("/usr/bin/chromedriver"),
+                           options=opts)
+    try:
+        drv.set_page_load_timeout(60)
+        drv.get("file://%s" % page)
+        drv.switch_to.frame(drv.find_element(By.TAG_NAME, "iframe"))
+        from selenium.webdriver.support.ui import WebDriverWait
+
+        def figure_svg(d):
+            e = d.find_elements(By.CSS_SELECTOR,
+                                '[id="cf-figure-decasteljau"] svg')
+            return e[0].get_attribute("outerHTML") if e else False
+
+        first = WebDriverWait(drv, 60).until(figure_svg)
+        slider = drv.find_element(By.CSS_SELECTOR, "input[type=range]")
+        slider.send_keys(Keys.HOME)
+        WebDriverWait(drv, 60).until(
+            lambda d: figure_svg(d) and figure_svg(d) != first)
+        errors = [e for e in drv.get_log("browser")
+                  if e.get("level") == "SEVERE"]
+        assert not errors, errors
+    finally:
+        drv.quit()

@@ -161,6 +161,20 @@ bzs_new(PyTypeObject *type, PyObject *args, PyObject *kw)
     return (PyObject *)o;
 }
 
+/* The two items of a sequence (a tuple or a list) by PyArg_ParseTuple's
+** format fmt; 0 (no exception set) when seq is not a pair of them. */
+static int
+pair_of(PyObject *seq, const char *fmt, void *a, void *b)
+{
+    PyObject *t = PySequence_Check(seq) && !PyUnicode_Check(seq)
+                      ? PySequence_Tuple(seq) : NULL;
+    int ok = t != NULL && PyArg_ParseTuple(t, fmt, a, b);
+    Py_XDECREF(t);
+    if (!ok)
+        PyErr_Clear();
+    return ok;
+}
+
 static PyObject *
 bss_new(PyTypeObject *type, PyObject *args, PyObject *kw)
 {
@@ -177,8 +191,7 @@ bss_new(PyTypeObject *type, PyObject *args, PyObject *kw)
         return NULL;
     if (PyLong_Check(D)) {
         deg[0] = deg[1] = (int)PyLong_AsLong(D);
-    } else if (!PyArg_ParseTuple(D, "ii", &deg[0], &deg[1])) {
-        PyErr_Clear();
+    } else if (!pair_of(D, "ii", &deg[0], &deg[1])) {
         return cfpy_error("BSplineSurface", "degree must be p or (p, q)");
     }
     if (PyErr_Occurred())
@@ -201,8 +214,7 @@ bss_new(PyTypeObject *type, PyObject *args, PyObject *kw)
                                           PyArray_DATA(V), &d);
     } else {
         PyObject *Uo, *Vo;
-        if (!PyArg_ParseTuple(K, "OO", &Uo, &Vo)) {
-            PyErr_Clear();
+        if (!pair_of(K, "OO", &Uo, &Vo)) {
             cfpy_error("BSplineSurface", "knots must be (U, V) or None");
             goto fail;
         }

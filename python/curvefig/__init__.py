@@ -14,12 +14,13 @@ docs/python.md is the manual.
 
 from ._core import (Bezier, BSpline, BezierSurface, BSplineSurface,
                     interpolate, approximate, parameters, nurbs_circle, coons,
-                    version, have_html)
+                    ferguson, ferguson_chain, coons_cubic, version,
+                    have_html)
 from .lua import Lua
 from .figure import Figure, ScriptFigure, render_script
 
 __all__ = ["Bezier", "BSpline", "BezierSurface", "BSplineSurface",
            "interpolate", "approximate", "parameters", "nurbs_circle",
-           "coons", "Figure", "ScriptFigure", "render_script", "Lua",
+           "coons", "ferguson", "ferguson_chain", "coons_cubic", "Figure", "ScriptFigure", "render_script", "Lua",
            "version", "have_html"]
 __version__ = version

@@ -317,6 +317,99 @@ py_coons(PyObject *mod, PyObject *args, PyObject *kw)
                               : cfpy_fail("coons", st, &d);
 }
 
+/* ferguson(P0, P1, T0, T1) -> the Hermite cubic as a Bézier curve */
+static PyObject *
+py_ferguson(PyObject *mod, PyObject *args)
+{
+    PyObject *o[4];
+    PyArrayObject *a;
+    double *v = NULL;
+    size_t dim = 0;
+    cf_bezier_t *out = NULL;
+    cf_diag_t d;
+    cf_status_t st;
+    (void)mod;
+    if (!PyArg_ParseTuple(args, "OOOO:ferguson", &o[0], &o[1], &o[2], &o[3]))
+        return NULL;
+    a = cfpy_array(o[0], "ferguson", "P0", 1, 1);
+    if (a == NULL)
+        return NULL;
+    dim = (size_t)PyArray_DIM(a, 0);
+    Py_DECREF(a);
+    v = PyMem_Malloc(4 * (dim ? dim : 1) * sizeof(double));
+    if (v == NULL)
+        return PyErr_NoMemory();
+    for (int i = 0; i < 4; i++) {
+        static const char *const names[] = { "P0", "P1", "T0", "T1" };
+        if (cfpy_point(o[i], "ferguson", names[i], dim, v + i * dim) != 0) {
+            PyMem_Free(v);
+            return NULL;
+        }
+    }
+    st = cf_ferguson_cubic(dim, v, v + dim, v + 2 * dim, v + 3 * dim, &out,
+                           &d);
+    PyMem_Free(v);
+    return st == CF_STATUS_OK ? cfpy_wrap_bezier(out)
+                              : cfpy_fail("ferguson", st, &d);
+}
+
+/* ferguson_chain(points, tangents) -> list of Hermite cubics */
+static PyObject *
+py_ferguson_chain(PyObject *mod, PyObject *args)
+{
+    PyObject *P, *T;
+    PyArrayObject *p, *t = NULL;
+    cf_bezier_list_t *list = NULL;
+    cf_diag_t d;
+    cf_status_t st;
+    (void)mod;
+    if (!PyArg_ParseTuple(args, "OO:ferguson_chain", &P, &T))
+        return NULL;
+    p = cfpy_points(P, "ferguson_chain", "points", 2);
+    if (p != NULL)
+        t = cfpy_points(T, "ferguson_chain", "tangents", 2);
+    if (t == NULL) {
+        Py_XDECREF(p);
+        return NULL;
+    }
+    if (PyArray_DIM(t, 0) != PyArray_DIM(p, 0) ||
+        PyArray_DIM(t, 1) != PyArray_DIM(p, 1)) {
+        Py_DECREF(p);
+        Py_DECREF(t);
+        return cfpy_error("ferguson_chain", "the tangents must have the "
+                          "points' shape");
+    }
+    st = cf_ferguson_chain((size_t)PyArray_DIM(p, 1), PyArray_DATA(p),
+                           PyArray_DATA(t), (size_t)PyArray_DIM(p, 0), &list,
+                           &d);
+    Py_DECREF(p);
+    Py_DECREF(t);
+    return st == CF_STATUS_OK ? cfpy_bezier_list(list)
+                              : cfpy_fail("ferguson_chain", st, &d);
+}
+
+/* coons_cubic(P) -> the uniform cubic B-spline segment of four points */
+static PyObject *
+py_coons_cubic(PyObject *mod, PyObject *P)
+{
+    PyArrayObject *p = cfpy_points(P, "coons_cubic", "points", 4);
+    cf_bezier_t *out = NULL;
+    cf_diag_t d;
+    cf_status_t st;
+    (void)mod;
+    if (p == NULL)
+        return NULL;
+    if (PyArray_DIM(p, 0) != 4) {
+        Py_DECREF(p);
+        return cfpy_error("coons_cubic", "it takes 4 points, got %zd",
+                          (Py_ssize_t)PyArray_DIM(p, 0));
+    }
+    st = cf_coons_cubic((size_t)PyArray_DIM(p, 1), PyArray_DATA(p), &out, &d);
+    Py_DECREF(p);
+    return st == CF_STATUS_OK ? cfpy_wrap_bezier(out)
+                              : cfpy_fail("coons_cubic", st, &d);
+}
+
 PyMethodDef cfpy_interp_functions[] = {
     { "interpolate", (PyCFunction)(void (*)(void))py_interpolate,
       METH_VARARGS | METH_KEYWORDS,
@@ -336,5 +429,11 @@ PyMethodDef cfpy_interp_functions[] = {
     { "coons", (PyCFunction)(void (*)(void))py_coons,
       METH_VARARGS | METH_KEYWORDS,
       "coons(points, ends='plain'): the uniform cubic (Coons) B-spline" },
+    { "ferguson", py_ferguson, METH_VARARGS,
+      "ferguson(P0, P1, T0, T1): the Hermite cubic as a Bézier curve" },
+    { "ferguson_chain", py_ferguson_chain, METH_VARARGS,
+      "ferguson_chain(points, tangents): a C1 chain of Hermite cubics" },
+    { "coons_cubic", py_coons_cubic, METH_O,
+      "coons_cubic(P): the uniform cubic B-spline segment of 4 points" },
     { NULL, NULL, 0, NULL }
 };

@@ -217,3 +217,19 @@ def test_threads_share_a_curve(spline):
     with ThreadPoolExecutor(4) as ex:
         for got in ex.map(lambda _: spline.eval(u), range(8)):
             assert np.array_equal(got, want)
+
+
+def test_hermite_and_coons_segments():
+    """Ferguson's cubic has the control points P0, P0 + T0/3, P1 - T1/3,
+    P1; the Coons segment B0 = (P0 + 4 P1 + P2)/6, ...: exact in binary
+    for these numbers."""
+    P0, P1, T0, T1 = [0, 0], [3, 0], [3, 6], [6, -3]
+    f = curvefig.ferguson(P0, P1, T0, T1)
+    assert f.points.tolist() == [[0, 0], [1, 2], [1, 1], [3, 0]]
+    chain = curvefig.ferguson_chain([[0, 0], [3, 0], [6, 3]],
+                                    [[3, 6], [6, -3], [3, 3]])
+    assert chain[0].points.tolist() == f.points.tolist()
+    assert np.array_equal(chain[1].eval(0.0), [3, 0])
+    P = [[0, 0], [6, 6], [12, 0], [18, 6]]
+    c = curvefig.coons_cubic(P)
+    assert c.points.tolist() == [[6, 4], [8, 4], [10, 2], [12, 2]]

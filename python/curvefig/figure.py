@@ -141,9 +141,14 @@ class _Rendered:
             return None
         import html as _html
         page = self.html()
+        # the frame as high as the figure (its SVG's height in pt, 4/3 px
+        # each) and the page's controls below it
+        m = re.search(rb'<svg[^>]*height="([0-9.]+)pt"', self.render("svg"))
+        height = int(float(m.group(1)) * 4 / 3) + 160 if m else 640
         return ('<iframe class="curvefig" sandbox="allow-scripts" '
-                'style="width: 100%%; height: 640px; border: none" '
-                'srcdoc="%s"></iframe>' % _html.escape(page, quote=True))
+                'style="width: 100%%; height: %dpx; border: none" '
+                'srcdoc="%s"></iframe>' % (height,
+                                           _html.escape(page, quote=True)))
 
     def widgets(self):
         """The figure with an ipywidgets slider per slider{} of its script,

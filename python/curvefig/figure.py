@@ -54,6 +54,8 @@ class _Rendered:
         raise err
 
     def _run(self, params=None):
+        if params is None:
+            params = getattr(self, "_default_params", None)
         code, index_name = self._source()
         key = (code, json.dumps(params, sort_keys=True) if params else None)
         cache = getattr(self, "_cache", None)

@@ -91,6 +91,8 @@ def test_render_script_with_sliders():
     assert a != b and b"t = 0.50" not in a
     text = curvefig.render_script(open(DECASTELJAU).read())
     assert text[0].render("svg") == a
+    given = curvefig.render_script(DECASTELJAU, params={"t": 0.5})[0]
+    assert given.render("svg") == b
 
 
 def test_interactive_page():

@@ -160,8 +160,15 @@ def test_interactive_page_in_a_browser(tmp_path):
     for a in ("--headless", "--no-sandbox", "--disable-gpu",
               "--disable-dev-shm-usage"):
         opts.add_argument(a)
-    drv = webdriver.Chrome(service=Service("/usr/bin/chromedriver"),
-                           options=opts)
+    # the browser without the sanitizers' runtimes the interpreter may
+    # have preloaded (python/tests/meson.build)
+    preload = os.environ.pop("LD_PRELOAD", None)
+    try:
+        drv = webdriver.Chrome(service=Service("/usr/bin/chromedriver"),
+                               options=opts)
+    finally:
+        if preload is not None:
+            os.environ["LD_PRELOAD"] = preload
     try:
         drv.set_page_load_timeout(60)
         drv.get("file://%s" % page)

@@ -14,13 +14,16 @@ docs/python.md is the manual.
 
 from ._core import (Bezier, BSpline, BezierSurface, BSplineSurface,
                     interpolate, approximate, parameters, nurbs_circle, coons,
-                    ferguson, ferguson_chain, coons_cubic, version,
-                    have_html)
+                    ferguson, ferguson_chain, coons_cubic, revolve, extrude,
+                    ruled, coons_patch, nurbs_sphere, nurbs_cylinder,
+                    nurbs_cone, nurbs_torus, version, have_html)
 from .lua import Lua
 from .figure import Figure, ScriptFigure, render_script
 
 __all__ = ["Bezier", "BSpline", "BezierSurface", "BSplineSurface",
            "interpolate", "approximate", "parameters", "nurbs_circle",
-           "coons", "ferguson", "ferguson_chain", "coons_cubic", "Figure", "ScriptFigure", "render_script", "Lua",
+           "coons", "ferguson", "ferguson_chain", "coons_cubic", "revolve", "extrude", "ruled", "coons_patch",
+           "nurbs_sphere", "nurbs_cylinder", "nurbs_cone", "nurbs_torus",
+           "Figure", "ScriptFigure", "render_script", "Lua",
            "version", "have_html"]
 __version__ = version

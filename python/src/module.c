@@ -64,6 +64,7 @@ PyInit__core(void)
         }
     }
     if (add_functions(m, cfpy_interp_functions) != 0 ||
+        add_functions(m, cfpy_make_functions) != 0 ||
         PyModule_AddStringConstant(m, "version", cf_version_string()) != 0) {
         Py_DECREF(m);
         return NULL;

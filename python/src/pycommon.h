@@ -103,6 +103,7 @@ typedef struct {
 /* Wrap a curve (taken over; destroyed on failure).  NULL on failure. */
 PyObject *cfpy_wrap_bezier(cf_bezier_t *c);
 PyObject *cfpy_wrap_bspline(cf_bspline_t *c);
+PyObject *cfpy_wrap_bspline_surface(cf_bspline_surface_t *s);
 /* A Python list of Bézier curves, taken out of the list (destroyed). */
 PyObject *cfpy_bezier_list(cf_bezier_list_t *list);
 /* A list of cubic Bézier curves, one per segment of cu (not destroyed). */
@@ -113,5 +114,6 @@ PyObject *cfpy_offset(const cf_bezier_t *bz, const cf_bspline_t *bs,
 
 /* Module-level functions of each file, NULL-terminated tables. */
 extern PyMethodDef cfpy_interp_functions[];
+extern PyMethodDef cfpy_make_functions[];
 
 #endif

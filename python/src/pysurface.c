@@ -82,6 +82,12 @@ wrap(const kind_t *k, void *s)
     return (PyObject *)o;
 }
 
+PyObject *
+cfpy_wrap_bspline_surface(cf_bspline_surface_t *s)
+{
+    return wrap(&bspline_kind, s);
+}
+
 static PyObject *
 new_surface(const kind_t *k, const char *fn, cf_status_t st, void **s,
             const cf_diag_t *d)

@@ -233,3 +233,31 @@ def test_hermite_and_coons_segments():
     P = [[0, 0], [6, 6], [12, 0], [18, 6]]
     c = curvefig.coons_cubic(P)
     assert c.points.tolist() == [[6, 4], [8, 4], [10, 2], [12, 2]]
+
+
+def test_surfaces_made_from_curves():
+    u = np.linspace(0, 1, 41)
+    S = curvefig.nurbs_sphere([1, 2, 3], 2.0)
+    P = S.eval(u[:, None], u[None, :])
+    r = np.linalg.norm(P - [1, 2, 3], axis=-1)
+    assert np.max(np.abs(r - 2.0)) < 1e-14 * 2
+    c = curvefig.Bezier([[1, 0, 0], [2, 0, 1], [1, 0, 2]])
+    R = curvefig.revolve(c)          # about the z axis
+    Q = R.eval(u[:, None], u[None, :])
+    C = c.eval(u)
+    # each point keeps its height and its distance from the axis
+    assert np.max(np.abs(Q[..., 2] - C[None, :, 2])) < 1e-14
+    assert np.max(np.abs(np.hypot(Q[..., 0], Q[..., 1]) - C[None, :, 0])) \
+        < 1e-14
+    E = curvefig.extrude(c, [0, 3, 0])
+    assert rel_err(E.eval(u, 1.0), C + [0, 3, 0]) < 1e-15
+    line = curvefig.Bezier([[0, 0, 0], [1, 0, 0]])
+    top = curvefig.Bezier([[0, 1, 0], [1, 1, 0]])
+    left = curvefig.Bezier([[0, 0, 0], [0, 1, 0]])
+    right = curvefig.Bezier([[1, 0, 0], [1, 1, 0]])
+    patch = curvefig.coons_patch(line, top, left, right)
+    assert rel_err(patch.eval(0.25, 0.75), [0.25, 0.75, 0]) < 1e-15
+    ruled = curvefig.ruled(line, top)
+    assert rel_err(ruled.eval(0.5, 0.5), [0.5, 0.5, 0]) < 1e-15
+    with pytest.raises(TypeError, match="Bezier or a BSpline"):
+        curvefig.revolve([[0, 0, 0]])

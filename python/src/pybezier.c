@@ -532,6 +532,12 @@ bz_to_cubics(PyObject *self, PyObject *args)
 }
 
 static PyObject *
+bz_reduce_degree(PyObject *self, PyObject *args, PyObject *kw)
+{
+    return cfpy_reduce(SELF(self), NULL, args, kw);
+}
+
+static PyObject *
 bz_offset(PyObject *self, PyObject *args, PyObject *kw)
 {
     return cfpy_offset(SELF(self), NULL, args, kw);
@@ -649,6 +655,10 @@ static PyMethodDef bz_methods[] = {
       METH_VARARGS | METH_KEYWORDS,
       "offset(d, tolerance=1e-3, trim=False, method='levien'): list of cubic "
       "Bézier curves, report (and the trimmed chains when trim)" },
+    { "reduce", (PyCFunction)(void (*)(void))bz_reduce_degree,
+      METH_VARARGS | METH_KEYWORDS,
+      "reduce(by=1, continuity=0, method='l2', tolerance=1e-3): degree "
+      "reduction; the curve and a report (max_error, bound, ...)" },
     { "__reduce__", bz_reduce, METH_NOARGS, NULL },
     { NULL, NULL, 0, NULL }
 };

@@ -386,6 +386,12 @@ bs_to_beziers(PyObject *self, PyObject *unused)
 }
 
 static PyObject *
+bs_reduce_degree(PyObject *self, PyObject *args, PyObject *kw)
+{
+    return cfpy_reduce(NULL, SELF(self), args, kw);
+}
+
+static PyObject *
 bs_offset(PyObject *self, PyObject *args, PyObject *kw)
 {
     return cfpy_offset(NULL, SELF(self), args, kw);
@@ -530,6 +536,10 @@ static PyMethodDef bs_methods[] = {
     { "offset", (PyCFunction)(void (*)(void))bs_offset,
       METH_VARARGS | METH_KEYWORDS,
       "offset(d, tolerance=1e-3, trim=False, method='levien')" },
+    { "reduce", (PyCFunction)(void (*)(void))bs_reduce_degree,
+      METH_VARARGS | METH_KEYWORDS,
+      "reduce(by=1, continuity=0, method='l2', tolerance=1e-3): degree "
+      "reduction; the curve and a report (max_error, bound, ...)" },
     { "__reduce__", bs_reduce, METH_NOARGS, NULL },
     { NULL, NULL, 0, NULL }
 };

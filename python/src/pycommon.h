@@ -112,6 +112,10 @@ PyObject *cfpy_cubics(const cf_cubics_t *cu);
 PyObject *cfpy_offset(const cf_bezier_t *bz, const cf_bspline_t *bs,
                       PyObject *args, PyObject *kw);
 
+/* Degree reduction of either kind of curve, as the language's c:reduce. */
+PyObject *cfpy_reduce(const cf_bezier_t *bz, const cf_bspline_t *bs,
+                      PyObject *args, PyObject *kw);
+
 /* Module-level functions of each file, NULL-terminated tables. */
 extern PyMethodDef cfpy_interp_functions[];
 extern PyMethodDef cfpy_make_functions[];

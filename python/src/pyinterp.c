@@ -74,6 +74,54 @@ cfpy_offset(const cf_bezier_t *bz, const cf_bspline_t *bs, PyObject *args,
     return Py_BuildValue("(NN)", curves, report);
 }
 
+PyObject *
+cfpy_reduce(const cf_bezier_t *bz, const cf_bspline_t *bs, PyObject *args,
+            PyObject *kw)
+{
+    static char *names[] = { "by", "continuity", "method", "tolerance",
+                             NULL };
+    cf_reduce_options_t opt;
+    cf_reduce_report_t rep;
+    const char *method = "l2";
+    PyObject *curve;
+    void *out = NULL;
+    cf_diag_t d;
+    cf_status_t st;
+    cf_reduce_options_init(&opt);
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "|iisd:reduce", names,
+                                     &opt.by, &opt.continuity, &method,
+                                     &opt.tolerance))
+        return NULL;
+    if (strcmp(method, "l2") == 0)
+        opt.method = CF_REDUCE_L2;
+    else if (strcmp(method, "uniform") == 0)
+        opt.method = CF_REDUCE_UNIFORM;
+    else
+        return cfpy_error("reduce", "method must be \"l2\" or \"uniform\", "
+                          "got \"%s\"", method);
+    Py_BEGIN_ALLOW_THREADS
+    if (bz != NULL)
+        st = cf_bezier_reduce(bz, &opt, (cf_bezier_t **)&out, &rep, &d);
+    else
+        st = cf_bspline_reduce(bs, &opt, (cf_bspline_t **)&out, &rep, &d);
+    Py_END_ALLOW_THREADS
+    if (st != CF_STATUS_OK)
+        return cfpy_fail("reduce", st, &d);
+    curve = bz != NULL ? cfpy_wrap_bezier(out) : cfpy_wrap_bspline(out);
+    if (curve == NULL)
+        return NULL;
+    if (bz != NULL)
+        return Py_BuildValue("(N{sdsdsdsd})", curve, "max_error",
+                             rep.max_error, "bound", rep.bound,
+                             "polygon_bound", rep.polygon_bound, "l2_error",
+                             rep.l2_error);
+    return Py_BuildValue("(N{sdsdsdsdsisn})", curve, "max_error",
+                         rep.max_error, "bound", rep.bound, "polygon_bound",
+                         rep.polygon_bound, "l2_error", rep.l2_error,
+                         "continuity", rep.continuity, "knots_removed",
+                         (Py_ssize_t)rep.knots_removed);
+}
+
 /* The options of interpolate/approximate; arrays kept alive in keep[]. */
 static int
 interp_options(const char *fn, PyObject *method, PyObject *param,

@@ -261,3 +261,18 @@ def test_surfaces_made_from_curves():
     assert rel_err(ruled.eval(0.5, 0.5), [0.5, 0.5, 0]) < 1e-15
     with pytest.raises(TypeError, match="Bezier or a BSpline"):
         curvefig.revolve([[0, 0, 0]])
+
+
+def test_degree_reduction(quartic, spline):
+    """Reducing an elevated curve gives the curve back; the report's
+    certified bound is never below the measured error."""
+    back, rep = quartic.elevate(2).reduce(by=2)
+    assert back.degree == 4 and rel_err(back.eval(T), quartic.eval(T)) < 1e-12
+    r, rep = quartic.reduce()
+    got = np.max(np.linalg.norm(r.eval(T) - quartic.eval(T), axis=1))
+    assert r.degree == 3 and got <= rep["max_error"] * (1 + 1e-9)
+    assert rep["max_error"] <= rep["bound"] <= rep["polygon_bound"]
+    s, rep = spline.elevate(1).reduce(tolerance=1e-9)
+    assert s.degree == 3 and rel_err(s.eval(T), spline.eval(T)) < 1e-12
+    with pytest.raises(ValueError, match="method"):
+        quartic.reduce(method="best")

@@ -3,9 +3,13 @@ targets): 10^6 parameters on a cubic Bézier curve and a cubic B-spline,
 medians of RUNS runs in ns per point,
 
   - curvefig from Python within 1.5 times the C benchmark per point
-    (bench/eval_points.c: the same curves through the batch evaluators);
+    (bench/eval_points.c: the same curves through the batch evaluators,
+    into one output buffer reused: so Python with eval(u, out=buffer);
+    eval(u), which has numpy allocate 16 MB each time and the kernel map
+    its pages in, is shown beside it);
   - at least 5 times faster than scipy's BSpline.__call__ on the same
-    B-spline (and BPoly.__call__ on the same Bézier curve, shown only).
+    B-spline (and BPoly.__call__ on the same Bézier curve, shown only),
+    both allocating their result.
 
     python_eval.py EVAL_POINTS_PROGRAM [RUNS]
 
@@ -48,8 +52,11 @@ def main():
     bs = curvefig.BSpline(3, None, P)
     rows = {"bezier": {"c": c_side["bezier_ns"]},
             "bspline": {"c": c_side["bspline_ns"]}}
-    rows["bezier"]["python"] = median_ns(lambda: bz.eval(u), runs)
-    rows["bspline"]["python"] = median_ns(lambda: bs.eval(u), runs)
+    buf = np.empty((N, 2))
+    rows["bezier"]["python"] = median_ns(lambda: bz.eval(u, out=buf), runs)
+    rows["bspline"]["python"] = median_ns(lambda: bs.eval(u, out=buf), runs)
+    rows["bezier"]["python_new"] = median_ns(lambda: bz.eval(u), runs)
+    rows["bspline"]["python_new"] = median_ns(lambda: bs.eval(u), runs)
     try:
         from scipy.interpolate import BPoly, BSpline
         sb = BSpline(bs.knots, bs.points, 3)
@@ -62,15 +69,16 @@ def main():
               "python3-scipy)")
     ok = True
     print("10^6 parameters, median of %d runs, ns per point" % runs)
-    print("%-8s %10s %10s %10s %14s %14s" % ("curve", "C", "Python",
-                                             "scipy", "Python / C",
-                                             "scipy / Python"))
+    print("%-8s %8s %8s %10s %8s %11s %15s" % (
+        "curve", "C", "Python", "Python new", "scipy", "Python / C",
+        "scipy / Python"))
     for name, r in rows.items():
         ratio = r["python"] / r["c"]
         sc = r.get("scipy")
-        speedup = sc / r["python"] if sc else float("nan")
-        print("%-8s %10.2f %10.2f %10s %14.2f %14s" % (
-            name, r["c"], r["python"], "%.2f" % sc if sc else "-", ratio,
+        speedup = sc / r["python_new"] if sc else float("nan")
+        print("%-8s %8.2f %8.2f %10.2f %8s %11.2f %15s" % (
+            name, r["c"], r["python"], r["python_new"],
+            "%.2f" % sc if sc else "-", ratio,
             "%.1f" % speedup if sc else "-"))
         if ratio > 1.5:
             print("MISSED: %s from Python is %.2f times C (target <= 1.5)"

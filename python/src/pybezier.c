@@ -189,11 +189,15 @@ many_offset(const void *c, const double *t, size_t n, double *out,
 }
 
 static PyObject *
-bz_eval(PyObject *self, PyObject *t)
+bz_eval(PyObject *self, PyObject *args, PyObject *kw)
 {
+    static char *names[] = { "t", "out", NULL };
     npy_intp dim = (npy_intp)cf_bezier_dim(SELF(self));
-    return cfpy_eval_params(t, "eval", SELF(self), many_eval, NULL, &dim, 1,
-                            0.0, 1.0);
+    PyObject *t, *out = NULL;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|O:eval", names, &t, &out))
+        return NULL;
+    return cfpy_eval_params_into(t, out, "eval", SELF(self), many_eval,
+                                 NULL, &dim, 1, 0.0, 1.0);
 }
 
 static PyObject *
@@ -616,8 +620,10 @@ bz_reduce(PyObject *self, PyObject *unused)
 }
 
 static PyMethodDef bz_methods[] = {
-    { "eval", bz_eval, METH_O,
-      "eval(t): the point c(t), or an array of points for an array of t" },
+    { "eval", (PyCFunction)(void (*)(void))bz_eval,
+      METH_VARARGS | METH_KEYWORDS,
+      "eval(t, out=None): the point c(t), or an array of points for an "
+      "array of t (into out when given)" },
     { "derivs", bz_derivs, METH_VARARGS,
       "derivs(t, k=1): c(t), c'(t), ..., c^(k)(t) as rows (shape t.shape + "
       "(k+1, dim))" },

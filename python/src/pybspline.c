@@ -156,13 +156,17 @@ many_derivs(const void *c, const double *t, size_t n, double *out,
 }
 
 static PyObject *
-bs_eval(PyObject *self, PyObject *t)
+bs_eval(PyObject *self, PyObject *args, PyObject *kw)
 {
+    static char *names[] = { "u", "out", NULL };
     npy_intp dim = (npy_intp)cf_bspline_dim(SELF(self));
+    PyObject *t, *out = NULL;
     double a, b;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|O:eval", names, &t, &out))
+        return NULL;
     domain(self, &a, &b);
-    return cfpy_eval_params(t, "eval", SELF(self), many_eval, NULL, &dim, 1,
-                            a, b);
+    return cfpy_eval_params_into(t, out, "eval", SELF(self), many_eval,
+                                 NULL, &dim, 1, a, b);
 }
 
 static PyObject *
@@ -506,8 +510,10 @@ bs_reduce(PyObject *self, PyObject *unused)
 }
 
 static PyMethodDef bs_methods[] = {
-    { "eval", bs_eval, METH_O,
-      "eval(u): the point C(u), or an array of points for an array of u" },
+    { "eval", (PyCFunction)(void (*)(void))bs_eval,
+      METH_VARARGS | METH_KEYWORDS,
+      "eval(u, out=None): the point C(u), or an array of points for an "
+      "array of u (into out when given)" },
     { "derivs", bs_derivs, METH_VARARGS,
       "derivs(u, k=1): C(u), C'(u), ..., C^(k)(u) as rows" },
     { "deboor", bs_deboor, METH_O,

@@ -261,10 +261,42 @@ cfpy_eval_params(PyObject *tobj, const char *fn, const void *obj,
                  cfpy_many_t many, const void *arg, const npy_intp *extra,
                  int nextra, double a, double b)
 {
+    return cfpy_eval_params_into(tobj, NULL, fn, obj, many, arg, extra,
+                                 nextra, a, b);
+}
+
+/* out as the result array: float64, C-contiguous, writeable, of shape
+** shape[0..nd-1]; a new reference, or NULL with the error set. */
+static PyArrayObject *
+given_out(PyObject *outobj, const char *fn, int nd, const npy_intp *shape)
+{
+    PyArrayObject *o = (PyArrayObject *)outobj;
+    int ok = PyArray_Check(outobj) && PyArray_TYPE(o) == NPY_DOUBLE &&
+             PyArray_IS_C_CONTIGUOUS(o) && PyArray_ISWRITEABLE(o) &&
+             PyArray_ISALIGNED(o) && PyArray_NDIM(o) == nd;
+    for (int i = 0; ok && i < nd; i++)
+        ok = PyArray_DIM(o, i) == shape[i];
+    if (!ok) {
+        PyErr_Format(PyExc_ValueError, "%s: out must be a writeable "
+                     "C-contiguous float64 array of the result's shape "
+                     "(the parameters' shape, then the points' dimension)",
+                     fn);
+        return NULL;
+    }
+    Py_INCREF(outobj);
+    return o;
+}
+
+PyObject *
+cfpy_eval_params_into(PyObject *tobj, PyObject *outobj, const char *fn,
+                      const void *obj, cfpy_many_t many, const void *arg,
+                      const npy_intp *extra, int nextra, double a, double b)
+{
     npy_intp shape[NPY_MAXDIMS];
     PyArrayObject *t, *out;
     cf_status_t st;
     size_t n;
+    int nd;
     t = cfpy_array(tobj, fn, "the parameters", 0, 0);
     if (t == NULL)
         return NULL;
@@ -272,7 +304,9 @@ cfpy_eval_params(PyObject *tobj, const char *fn, const void *obj,
         Py_DECREF(t);
         return cfpy_error(fn, "the parameters have too many dimensions");
     }
-    out = cfpy_new(cfpy_shape_plus(t, extra, nextra, shape), shape);
+    nd = cfpy_shape_plus(t, extra, nextra, shape);
+    out = outobj != NULL && outobj != Py_None
+              ? given_out(outobj, fn, nd, shape) : cfpy_new(nd, shape);
     if (out == NULL) {
         Py_DECREF(t);
         return NULL;

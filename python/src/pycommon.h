@@ -76,6 +76,14 @@ PyObject *cfpy_eval_params(PyObject *tobj, const char *fn, const void *obj,
                            cfpy_many_t many, const void *arg,
                            const npy_intp *extra, int nextra, double a,
                            double b);
+/* The same into outobj when it is an array (NULL or None: a new one):
+** float64, C-contiguous, writeable, of the result's shape, and not
+** overlapping the parameters. */
+PyObject *cfpy_eval_params_into(PyObject *tobj, PyObject *outobj,
+                                const char *fn, const void *obj,
+                                cfpy_many_t many, const void *arg,
+                                const npy_intp *extra, int nextra, double a,
+                                double b);
 
 /* The tuple (a, b), taking both references; NULL (both released) when
 ** either is NULL. */

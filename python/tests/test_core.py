@@ -39,6 +39,22 @@ def test_bezier_eval_exact(quartic):
     assert rel_err(got, want) < 8 * np.finfo(float).eps
 
 
+def test_eval_into_out(quartic, spline):
+    out = np.empty((101, 2))
+    assert quartic.eval(T, out=out) is out
+    assert np.array_equal(out, quartic.eval(T))
+    assert spline.eval(T, out=out) is out
+    assert np.array_equal(out, spline.eval(T))
+    for bad in (np.empty((101, 3)), np.empty((2, 101)).T,
+                np.empty((101, 2), np.float32), [[0.0, 0.0]] * 101):
+        with pytest.raises(ValueError, match="out must be"):
+            quartic.eval(T, out=bad)
+    ro = np.empty((101, 2))
+    ro.flags.writeable = False
+    with pytest.raises(ValueError, match="writeable"):
+        spline.eval(T, out=ro)
+
+
 def test_eval_shapes(quartic, spline):
     assert quartic.eval(0.5).shape == (2,)
     assert quartic.eval(np.zeros((3, 4))).shape == (3, 4, 2)

@@ -18,6 +18,7 @@
 
 #include "backend.h"
 #include "curvefig/output.h"
+#include "font-pango.h"
 #include "grow.h"
 #include "label-glyphs.h"
 #include "label-impl.h"
@@ -227,7 +228,7 @@ static int
 desc_of(collect_t *c, const run_t *r)
 {
     const PangoFontDescription *fd =
-        pango_layout_get_font_description(r->layout);
+        pango_layout_get_font_description(r->shaped);
     const char *family = pango_font_description_get_family(fd);
     PangoRectangle logical;
     int i;
@@ -239,7 +240,7 @@ desc_of(collect_t *c, const run_t *r)
         c->failed = true;
         return 0;
     }
-    pango_layout_get_extents(r->layout, NULL, &logical);
+    pango_layout_get_extents(r->shaped, NULL, &logical);
     c->desc[c->ndesc] = dup_str(family);
     c->desc_italic[c->ndesc] = r->italic;
     c->desc_bold[c->ndesc] = r->bold;
@@ -257,7 +258,7 @@ run_data(collect_t *c, const run_t *r)
     char key[64];
     size_t k;
     int d, size, n;
-    if (r->layout == NULL || r->rule_h > 0)
+    if (r->shaped == NULL || r->rule_h > 0)
         return;
     d = desc_of(c, r);
     size = (int)lround(r->size * PANGO_SCALE);
@@ -283,13 +284,13 @@ run_data(collect_t *c, const run_t *r)
         || cf__buf_append(&c->shaped_keys, r->text, r->text_len) != 0
         || cf__buf_append(&c->shaped_keys, "\n", 1) != 0)
         c->failed = true;
-    n = each_glyph(c, r->layout, glyph_out);   /* G lines; the count */
-    pango_layout_get_extents(r->layout, &ink, &logical);
+    n = each_glyph(c, r->shaped, glyph_out);   /* G lines; the count */
+    pango_layout_get_extents(r->shaped, &ink, &logical);
     putf(c, &c->shapes, "S %d %d %d %d %d %d %d %d %d %d %d %d %d", d, size,
-         pango_layout_get_baseline(r->layout), logical.x, logical.y,
+         pango_layout_get_baseline(r->shaped), logical.x, logical.y,
          logical.width, logical.height, ink.x, ink.y, ink.width, ink.height,
-         pango_layout_get_unknown_glyphs_count(r->layout), n);
-    each_glyph(c, r->layout, glyph_placed);
+         pango_layout_get_unknown_glyphs_count(r->shaped), n);
+    each_glyph(c, r->shaped, glyph_placed);
     putf(c, &c->shapes, " %zu ", r->text_len);
     if (cf__buf_append(&c->shapes, r->text, r->text_len) != 0
         || cf__buf_append(&c->shapes, "\n", 1) != 0)
@@ -331,10 +332,11 @@ text_op(void *ctx, const cf__text_op_t *t)
 {
     collect_t *c = ctx;
     size_t i;
-    if (t->label == NULL)
+    /* labels in pango's fonts (the tool's) */
+    if (t->label == NULL || t->label->fonts != &cf__pango_fonts)
         return;
     if (c->ctx == NULL) {
-        c->ctx = t->label->ctx;
+        c->ctx = cf__pango_fonts_context(t->label->fonts_ctx);
         g_object_ref(c->ctx);
     }
     for (i = 0; i < t->label->count; i++)

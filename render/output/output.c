@@ -1,6 +1,6 @@
 /*
 ** Output: a figure laid out (render/layout/layout.c) into a display list,
-** drawn by the cairo backend in each format (render/output/formats.c) into
+** drawn in each format (render/output/formats.c: cairo's devices) into
 ** memory, then written to a temporary file in the target directory and renamed
 ** over the target.
 */
@@ -15,8 +15,6 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
-
-#include <cairo.h>
 
 #include "layout-private.h"
 #include "measure.h"
@@ -566,7 +564,6 @@ cf_figure_write_all(cf_figure_t *fig, const char *basename, unsigned formats,
     /* PS before EPS in format order; the EPS is derived from the PS */
     derive_eps = (formats & CF_FORMAT_BIT(CF_FORMAT_PS))
         && (formats & CF_FORMAT_BIT(CF_FORMAT_EPS))
-        && cairo_version() == CAIRO_VERSION_ENCODE(1, 16, 0)
         && (cf_figure_steps(fig) == 1 || o.step > 0);
     memset(&ps, 0, sizeof ps);
     for (f = 0; f < CF_FORMAT_LAST_ && st == CF_STATUS_OK; f++) {

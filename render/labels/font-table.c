@@ -424,20 +424,30 @@ kern_of(const cf__font_table_t *t, int d, unsigned first, unsigned second)
     return 0;
 }
 
-/* A text not shaped at export: its characters one after the other. */
+/* v bp in units, rounded as pango rounds (pango_units_from_double). */
+static int
+units(double v)
+{
+    return (int)floor(v * CF__FONT_SCALE + 0.5);
+}
+
+/* A text not shaped at export: its characters one after the other, in
+** whole units as pango places them: each glyph's advance (with the kern
+** of the pair it begins) and ink box rounded alone, the run's ink box
+** their union. */
 static int
 compose(const cf__font_table_t *t, int d, const cf__font_req_t *req,
         shaped_t *s)
 {
-    double sz = req->size, x = 0, ink[4] = { 0, 0, 0, 0 };
-    double asc = t->d[d].ascent * sz;
+    double sz = req->size, pending = 0;
+    int x = 0, ink[4] = { 0, 0, 0, 0 };
     unsigned prev = 0;    /* the last character placed (0: none) */
     bool any = false;
     size_t k, i;
     s->g = cf_calloc(req->len + 1, sizeof *s->g);
     if (s->g == NULL)
         return -1;
-    s->baseline = (int)lround(asc * CF__FONT_SCALE);
+    s->baseline = units(t->d[d].ascent * sz);
     for (k = 0; k < req->len;) {
         unsigned cp;
         const chr_t *c = NULL;
@@ -449,39 +459,41 @@ compose(const cf__font_table_t *t, int d, const cf__font_req_t *req,
                 c = &t->c[i];
         if (c == NULL) {
             s->unknown++;
-            prev = 0;
             continue;
         }
-        /* the pair with the character before */
+        /* the advance before, with the kern of this pair */
         if (prev != 0)
-            x += kern_of(t, d, prev, cp) * sz;
+            x += units((pending + kern_of(t, d, prev, cp)) * sz);
         prev = cp;
+        pending = c->advance;
         g = &t->g[c->glyph];
         p = &s->g[s->n++];
         p->glyph = c->glyph;
-        p->x = (int)lround(x * CF__FONT_SCALE);
+        p->x = x;
         p->y = s->baseline;
         if (g->ink[2] > g->ink[0] && g->ink[3] > g->ink[1]) {
-            double b[4] = { x + g->ink[0] * sz, asc + g->ink[1] * sz,
-                            x + g->ink[2] * sz, asc + g->ink[3] * sz };
+            int x0 = x + units(g->ink[0] * sz);
+            int y0 = s->baseline + units(g->ink[1] * sz);
+            int b[4] = { x0, y0, x0 + units((g->ink[2] - g->ink[0]) * sz),
+                         y0 + units((g->ink[3] - g->ink[1]) * sz) };
             if (!any)
                 memcpy(ink, b, sizeof b);
-            ink[0] = fmin(ink[0], b[0]);
-            ink[1] = fmin(ink[1], b[1]);
-            ink[2] = fmax(ink[2], b[2]);
-            ink[3] = fmax(ink[3], b[3]);
+            ink[0] = b[0] < ink[0] ? b[0] : ink[0];
+            ink[1] = b[1] < ink[1] ? b[1] : ink[1];
+            ink[2] = b[2] > ink[2] ? b[2] : ink[2];
+            ink[3] = b[3] > ink[3] ? b[3] : ink[3];
             any = true;
         }
-        x += c->advance * sz;
     }
-    s->logical[2] = (int)lround(x * CF__FONT_SCALE);
-    s->logical[3] = (int)lround((t->d[d].ascent + t->d[d].descent) * sz
-                                * CF__FONT_SCALE);
+    if (prev != 0)
+        x += units(pending * sz);
+    s->logical[2] = x;
+    s->logical[3] = s->baseline + units(t->d[d].descent * sz);
     if (any) {
-        s->ink[0] = (int)floor(ink[0] * CF__FONT_SCALE);
-        s->ink[1] = (int)floor(ink[1] * CF__FONT_SCALE);
-        s->ink[2] = (int)ceil(ink[2] * CF__FONT_SCALE) - s->ink[0];
-        s->ink[3] = (int)ceil(ink[3] * CF__FONT_SCALE) - s->ink[1];
+        s->ink[0] = ink[0];
+        s->ink[1] = ink[1];
+        s->ink[2] = ink[2] - ink[0];
+        s->ink[3] = ink[3] - ink[1];
     }
     return 0;
 }

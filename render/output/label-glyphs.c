@@ -140,7 +140,7 @@ put_glyph(collect_t *c, PangoFont *font, int f, PangoGlyph id)
     g.index = id;
     g.x = g.y = 0;
     cairo_scaled_font_glyph_extents(sf, &g, 1, &e);
-    putf(c, c->out, "G %d %u %.6g %.6g %.6g %.6g", f, id, e.x_bearing / s,
+    putf(c, c->out, "G %d %u %.9g %.9g %.9g %.9g", f, id, e.x_bearing / s,
          e.y_bearing / s, (e.x_bearing + e.width) / s,
          (e.y_bearing + e.height) / s);
     cairo_set_scaled_font(c->cr, sf);
@@ -230,10 +230,13 @@ desc_of(collect_t *c, const run_t *r)
     const PangoFontDescription *fd =
         pango_layout_get_font_description(r->shaped);
     const char *family = pango_font_description_get_family(fd);
+    /* the style of the font (a math run's letters are italic glyphs of an
+    ** upright font) */
+    int italic = pango_font_description_get_style(fd) != PANGO_STYLE_NORMAL;
     PangoRectangle logical;
     int i;
     for (i = 0; i < c->ndesc; i++)
-        if (strcmp(c->desc[i], family) == 0 && c->desc_italic[i] == r->italic
+        if (strcmp(c->desc[i], family) == 0 && c->desc_italic[i] == italic
             && c->desc_bold[i] == r->bold)
             return i;
     if (c->ndesc == MAX_DESCS) {
@@ -242,9 +245,9 @@ desc_of(collect_t *c, const run_t *r)
     }
     pango_layout_get_extents(r->shaped, NULL, &logical);
     c->desc[c->ndesc] = dup_str(family);
-    c->desc_italic[c->ndesc] = r->italic;
+    c->desc_italic[c->ndesc] = italic;
     c->desc_bold[c->ndesc] = r->bold;
-    putf(c, &c->heads, "D %d %d %d %.9g %.9g %s\n", c->ndesc, r->italic,
+    putf(c, &c->heads, "D %d %d %d %.9g %.9g %s\n", c->ndesc, italic,
          r->bold, r->baseline / r->size,
          ((double)logical.height / PANGO_SCALE - r->baseline) / r->size,
          family);

@@ -16,7 +16,7 @@
 
 #include <pango/pangocairo.h>
 
-#include "backend.h"
+#include "backend-text.h"
 #include "curvefig/output.h"
 #include "font-pango.h"
 #include "grow.h"
@@ -302,33 +302,6 @@ run_data(collect_t *c, const run_t *r)
 
 /* ---- the collecting backend --------------------------------------------- */
 
-static void nop_page(void *ctx, const cf__page_t *p) { (void)ctx; (void)p; }
-static void nop_group(void *ctx, const char *n, size_t i, const char *o)
-{
-    (void)ctx;
-    (void)n;
-    (void)i;
-    (void)o;
-}
-static void nop(void *ctx) { (void)ctx; }
-static void nop_clip(void *ctx, bool h, const double r[4])
-{
-    (void)ctx;
-    (void)h;
-    (void)r;
-}
-static void nop_path(void *ctx, const cf__path_t *p, const cf__paint_t *q)
-{
-    (void)ctx;
-    (void)p;
-    (void)q;
-}
-static void nop_marker(void *ctx, const cf__marker_op_t *m)
-{
-    (void)ctx;
-    (void)m;
-}
-static int nop_end(void *ctx) { (void)ctx; return 0; }
 
 static void
 text_op(void *ctx, const cf__text_op_t *t)
@@ -346,10 +319,6 @@ text_op(void *ctx, const cf__text_op_t *t)
         run_data(c, &t->label->runs[i]);
 }
 
-static const cf__backend_t collector = {
-    "glyph data", nop_page, nop_group, nop, nop_clip, nop, nop_path,
-    nop_marker, text_op, nop_end, NULL
-};
 
 /* The one glyph and its advance (pango units) of the text s[0..n-1]
 ** alone in layout l, or 0 when it is not one known glyph in one run; two
@@ -499,6 +468,7 @@ cf__glyph_data(cf_figure_t *const *figs, size_t n, cf__buf_t *out,
     size_t i;
     int k;
     cairo_surface_t *rec;
+    const cf__backend_t collector = cf__text_backend("glyph data", text_op);
     memset(&c, 0, sizeof c);
     memset(&body, 0, sizeof body);
     c.out = &body;

@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "backend-text.h"
 #include "output-private.h"
 
 typedef struct places {
@@ -62,47 +63,14 @@ text_op(void *ctx, const cf__text_op_t *t)
     put(p, "}", 1);
 }
 
-static void nop_page(void *ctx, const cf__page_t *pg)
-{
-    (void)ctx;
-    (void)pg;
-}
-static void nop_group(void *ctx, const char *n, size_t i, const char *o)
-{
-    (void)ctx;
-    (void)n;
-    (void)i;
-    (void)o;
-}
-static void nop(void *ctx) { (void)ctx; }
-static void nop_clip(void *ctx, bool h, const double r[4])
-{
-    (void)ctx;
-    (void)h;
-    (void)r;
-}
-static void nop_path(void *ctx, const cf__path_t *pa, const cf__paint_t *q)
-{
-    (void)ctx;
-    (void)pa;
-    (void)q;
-}
-static void nop_marker(void *ctx, const cf__marker_op_t *m)
-{
-    (void)ctx;
-    (void)m;
-}
-static int nop_end(void *ctx) { (void)ctx; return 0; }
 
-static const cf__backend_t places_backend = {
-    "label places", nop_page, nop_group, nop, nop_clip, nop, nop_path,
-    nop_marker, text_op, nop_end, NULL
-};
 
 int
 cf__label_places(const cf__dl_t *dl, const cf__page_t *page, cf__buf_t *out)
 {
     places_t p = { out, 0, false };
+    const cf__backend_t places_backend = cf__text_backend("label places",
+                                                          text_op);
     put(&p, "[", 1);
     cf__dl_play_page(dl, page, &places_backend, &p);
     put(&p, "]", 1);

@@ -30,11 +30,12 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 '..', 'live'))
 import test_browser as lb  # noqa: E402  (skips, 77, without selenium)
 
+# a second engine of the page's data, made once a page
+MAKE = 'window.cfPlaces = new CurvefigWasmEngine(%s);'
 RUN = '''
 var done = arguments[arguments.length - 1];
-var e = new CurvefigWasmEngine(%s);
-e.run(%s).then(function (r) { done(JSON.stringify(r)); },
-               function (x) { done('error: ' + x); });
+window.cfPlaces.run(%s).then(function (r) { done(JSON.stringify(r)); },
+                             function (x) { done('error: ' + x); });
 '''
 
 
@@ -105,6 +106,7 @@ def main():
                     html = f.read()
                 data = engine_data(html)
                 drv.get('file://' + page)
+                drv.execute_script(MAKE % data)
                 defaults = json.loads(subprocess.run(
                     [tool, 'live', script, '--once'], capture_output=True,
                     text=True, check=True).stdout)
@@ -124,8 +126,7 @@ def main():
                         capture_output=True, text=True, check=True).stdout)
                     nfig = next(f for f in native['figures']
                                 if f['name'] == name)
-                    reply = drv.execute_async_script(
-                        RUN % (data, json.dumps(v)))
+                    reply = drv.execute_async_script(RUN % json.dumps(v))
                     lb.check(not reply.startswith('error'),
                              '%s: the page ran at %s%s' % (
                                  name, json.dumps(v), reply[:200]

@@ -100,6 +100,23 @@ CF_API cf_status_t cf_figure_render_mapped(cf_figure_t *fig,
                                            unsigned char **data, size_t *size,
                                            double map[6], cf_diag_t *diag);
 
+/* cf_figure_render_mapped, and the places that very layout gave the
+** labels, as JSON into *places (NUL-terminated, *places_size bytes;
+** released with cf_free): [{"text": SOURCE, "place": P, "x": X, "y": Y,
+** "anchor_x": AX, "anchor_y": AY}, ...] in drawing order, the origin
+** (x, y) of each label (bp from the page's top left, y down), its place
+** (a cf_place_t) and the point it was placed around; numbers with 17
+** significant digits, the same doubles after any JSON reader.  The live
+** view and the course pages send them (docs/interactive.md), so a page's
+** labels can be compared with the tool's. */
+CF_API cf_status_t cf_figure_render_places(cf_figure_t *fig,
+                                           cf_format_t format,
+                                           const cf_write_options_t *options,
+                                           unsigned char **data, size_t *size,
+                                           double map[6], char **places,
+                                           size_t *places_size,
+                                           cf_diag_t *diag);
+
 /* The display list of the figure as text, one drawing operation a line
 ** (page, groups per element, clips, paths with their paint, markers, text
 ** with its source and placement), laid out as cf_figure_render would lay

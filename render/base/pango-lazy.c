@@ -120,6 +120,8 @@ FORWARD_VOID(pango_font_description_free, (PangoFontDescription *desc),
              (desc))
 FORWARD(const char *, pango_font_description_get_family,
         (const PangoFontDescription *desc), (desc))
+FORWARD(PangoStyle, pango_font_description_get_style,
+        (const PangoFontDescription *desc), (desc))
 FORWARD(PangoFontDescription *, pango_font_description_new, (void), ())
 FORWARD_VOID(pango_font_description_set_absolute_size,
              (PangoFontDescription *desc, double size), (desc, size))

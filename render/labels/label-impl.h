@@ -3,7 +3,9 @@
 ** the font state of the parser, and the character tables.
 **   label.c        the public functions, ink box and drawing
 **   label-parse.c  the parser, which lays out as it reads
-**   label-runs.c   runs of glyphs measured with pango
+**   label-runs.c   runs of glyphs shaped and measured by the label's
+**                  fonts (font.h: pango natively, the page's glyph table
+**                  in the browser module)
 **   label-chars.c  UTF-8 and the tables of commands, spaces and accents
 */
 #ifndef CURVEFIG_RENDER_LABEL_IMPL_H
@@ -12,9 +14,8 @@
 #include <stdbool.h>
 #include <stddef.h>
 
-#include <pango/pangocairo.h>
-
-#include "label-cairo.h"
+#include "font.h"
+#include "label-private.h"
 
 #define SCRIPT_RATIO 0.7       /* 10 pt -> 7 pt */
 #define SCRIPT2_RATIO 0.5      /* 10 pt -> 5 pt */
@@ -29,11 +30,13 @@ typedef struct run {
     cf_label_kind_t kind;
     bool italic, bold;
     bool math;                       /* set in the math font */
-    PangoLayout *layout;
+    void *shaped;                    /* the fonts' run (font.h); NULL:
+                                        not shaped */
     double width, ascent, descent;   /* logical */
     double ink[4];                   /* x0 y0 x1 y1 relative to origin,
                                         y down */
     double baseline;                 /* layout top to baseline */
+    int unknown;                     /* characters without a glyph */
     double rule_h;                   /* > 0: a fraction rule of this
                                         thickness, width `width`, its
                                         bottom at y (no text) */
@@ -45,14 +48,13 @@ struct cf_label {
     char *family;
     double size;
     size_t unknown;
-    PangoContext *ctx;
+    const cf__fonts_t *fonts;
+    void *fonts_ctx;
     bool merge_ok;            /* the last atom may be extended */
     bool tex_math;            /* a TeX family: letters of mathematics in
                                  the math font's italic alphabet */
     cf_label_box_t *boxes;    /* public view of the runs */
-    unsigned char *osegs;     /* the outline (cf__label_outline) */
-    double *ocoords;
-    size_t onsegs;
+    cf__pathb_t outline;      /* cf__label_outline */
 };
 
 typedef struct font {

@@ -1,6 +1,6 @@
 /*
 ** Internals of labels (render/labels/label.c) for the layout; drawing them
-** with cairo is render/labels/label-cairo.h.
+** with cairo is render/backends/label-cairo.h.
 */
 #ifndef CURVEFIG_RENDER_LABEL_PRIVATE_H
 #define CURVEFIG_RENDER_LABEL_PRIVATE_H

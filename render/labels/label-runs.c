@@ -1,6 +1,6 @@
 /*
 ** Runs of a label: the glyphs of one font, size and baseline, laid out
-** and measured with pango (render/labels/label-impl.h).
+** and measured by the label's fonts (render/labels/font.h).
 */
 #include <math.h>
 #include <stdio.h>
@@ -54,47 +54,45 @@ family_for_size(const char *family, double size_bp, bool italic, bool bold,
     snprintf(out, cap, "%s %d,%s", lm, pick, family);
 }
 
-static void
+/* Shape and measure r in lab's fonts; false when they failed (out of
+** memory). */
+static bool
 run_measure(cf_label_t *lab, run_t *r)
 {
-    PangoFontDescription *fd;
-    PangoRectangle ink, logical;
+    cf__font_req_t req;
+    cf__font_shape_t sh;
     char family[CF_FONT_FAMILY_MAX + 16];
+    const double u = CF__FONT_SCALE;
 
-    if (r->layout == NULL)
-        r->layout = pango_layout_new(lab->ctx);
-    fd = pango_font_description_new();
     if (r->math)
         snprintf(family, sizeof family, "%s,%s", CF__MATH_FAMILY,
                  lab->family);
     else
         family_for_size(lab->family, r->size, r->italic, r->bold, family,
                         sizeof family);
-    pango_font_description_set_family(fd, family);
-    pango_font_description_set_style(fd, r->italic && !r->math
-                                         ? PANGO_STYLE_ITALIC
-                                         : PANGO_STYLE_NORMAL);
-    pango_font_description_set_weight(fd, r->bold ? PANGO_WEIGHT_BOLD
-                                                  : PANGO_WEIGHT_NORMAL);
-    pango_font_description_set_absolute_size(fd, r->size * PANGO_SCALE);
-    pango_layout_set_font_description(r->layout, fd);
-    pango_font_description_free(fd);
-    pango_layout_set_text(r->layout, r->text, (int)r->text_len);
-    pango_layout_get_extents(r->layout, &ink, &logical);
-    r->baseline = (double)pango_layout_get_baseline(r->layout) / PANGO_SCALE;
-    r->width = (double)logical.width / PANGO_SCALE;
-    r->ascent = r->baseline - (double)logical.y / PANGO_SCALE;
-    r->descent = (double)(logical.y + logical.height) / PANGO_SCALE
-        - r->baseline;
-    r->ink[0] = (double)(ink.x - logical.x) / PANGO_SCALE;
-    r->ink[1] = (double)ink.y / PANGO_SCALE - r->baseline;
-    r->ink[2] = r->ink[0] + (double)ink.width / PANGO_SCALE;
-    r->ink[3] = r->ink[1] + (double)ink.height / PANGO_SCALE;
-    if (ink.width == 0 || ink.height == 0) {
+    req.family = family;
+    req.italic = r->italic && !r->math;
+    req.bold = r->bold;
+    req.size = r->size;
+    req.text = r->text;
+    req.len = r->text_len;
+    if (lab->fonts->shape(lab->fonts_ctx, &req, &r->shaped, &sh) != 0)
+        return false;
+    r->baseline = (double)sh.baseline / u;
+    r->width = (double)sh.logical[2] / u;
+    r->ascent = r->baseline - (double)sh.logical[1] / u;
+    r->descent = (double)(sh.logical[1] + sh.logical[3]) / u - r->baseline;
+    r->ink[0] = (double)(sh.ink[0] - sh.logical[0]) / u;
+    r->ink[1] = (double)sh.ink[1] / u - r->baseline;
+    r->ink[2] = r->ink[0] + (double)sh.ink[2] / u;
+    r->ink[3] = r->ink[1] + (double)sh.ink[3] / u;
+    r->unknown = sh.unknown;
+    if (sh.ink[2] == 0 || sh.ink[3] == 0) {
         /* spaces: no ink */
         r->ink[0] = r->ink[2] = 0;
         r->ink[1] = r->ink[3] = 0;
     }
+    return true;
 }
 
 double
@@ -144,13 +142,14 @@ cf__label_put_text(cf_label_t *lab, const font_t *f, double x, double y,
         r->width = 0;
         return r->x;
     }
-    run_measure(lab, r);
+    if (!run_measure(lab, r))
+        return NAN;
     return r->x + r->width;
 }
 
 /* The advance width and ink box (relative to the baseline origin, y
 ** down) of s[0..n) alone in font f, without adding a run; false when
-** pango could not lay it out. */
+** the fonts could not shape it. */
 bool
 cf__label_measure(cf_label_t *lab, const font_t *f, const char *s, size_t n,
                   double *width, double ink[4])
@@ -169,12 +168,13 @@ cf__label_measure(cf_label_t *lab, const font_t *f, const char *s, size_t n,
     r.italic = f->italic;
     r.bold = f->bold;
     r.math = f->math;
-    run_measure(lab, &r);
-    if (r.layout == NULL)
+    if (!run_measure(lab, &r)) {
+        lab->fonts->release(r.shaped);
         return false;
+    }
     *width = r.width;
     memcpy(ink, r.ink, sizeof r.ink);
-    g_object_unref(r.layout);
+    lab->fonts->release(r.shaped);
     return true;
 }
 

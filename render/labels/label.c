@@ -1,7 +1,7 @@
 /*
-** Labels: a small TeX-like syntax laid out with pango from font metrics
-** (include/curvefig/label.h): creation, the public view of the runs, the
-** ink box, and drawing onto cairo for the cairo backend.
+** Labels: a small TeX-like syntax laid out from font metrics (include/
+** curvefig/label.h) in the fonts of render/labels/font.h: creation, the
+** public view of the runs, the ink box and the outline.
 */
 #include <math.h>
 #include <string.h>
@@ -16,91 +16,51 @@ cf_label_destroy(cf_label_t *label)
         return;
     for (i = 0; i < label->count; i++) {
         cf_free(label->runs[i].text);
-        if (label->runs[i].layout != NULL)
-            g_object_unref(label->runs[i].layout);
+        if (label->fonts != NULL)
+            label->fonts->release(label->runs[i].shaped);
     }
     cf_free(label->runs);
     cf_free(label->boxes);
-    cf_free(label->osegs);
-    cf_free(label->ocoords);
+    cf__pathb_free(&label->outline);
     cf_free(label->family);
-    if (label->ctx != NULL)
-        g_object_unref(label->ctx);
+    if (label->fonts_ctx != NULL)
+        label->fonts->close(label->fonts_ctx);
     cf_free(label);
 }
 
-static PangoContext *
-make_context(void)
-{
-    PangoFontMap *fm = pango_cairo_font_map_get_default();
-    PangoContext *ctx;
-    cairo_font_options_t *fo;
-    if (fm == NULL)
-        return NULL;
-    ctx = pango_font_map_create_context(fm);
-    if (ctx == NULL)
-        return NULL;
-    /* Unhinted metrics and outlines: glyph positions are then the same in
-    ** every output format and at every resolution. */
-    fo = cairo_font_options_create();
-    cairo_font_options_set_hint_metrics(fo, CAIRO_HINT_METRICS_OFF);
-    cairo_font_options_set_hint_style(fo, CAIRO_HINT_STYLE_NONE);
-    cairo_font_options_set_antialias(fo, CAIRO_ANTIALIAS_GRAY);
-    pango_cairo_context_set_font_options(ctx, fo);
-    cairo_font_options_destroy(fo);
-    pango_cairo_context_set_resolution(ctx, 72.0);
-    pango_context_set_round_glyph_positions(ctx, FALSE);
-    return ctx;
-}
-
-/* The outline of lab (cf__label_outline) from pango's glyph paths;
-** -1 out of memory. */
+/* The outline of lab (cf__label_outline): its runs' glyphs from its
+** fonts, its fraction rules as rectangles; -1 out of memory. */
 static int
 make_outline(cf_label_t *lab)
 {
-    cairo_surface_t *s = cairo_recording_surface_create(CAIRO_CONTENT_ALPHA,
-                                                        NULL);
-    cairo_t *cr = cairo_create(s);
-    cairo_path_t *path;
-    size_t nsegs = 0, ncoords = 0;
-    int i, bad;
-    cairo_surface_destroy(s);
-    cf__label_path(lab, cr, 0, 0);
-    path = cairo_copy_path(cr);
-    cairo_destroy(cr);
-    bad = path->status != CAIRO_STATUS_SUCCESS;
-    for (i = 0; !bad && i < path->num_data; i += path->data[i].header.length) {
-        nsegs++;
-        ncoords += 2 * (size_t)(path->data[i].header.length - 1);
-    }
-    if (!bad) {
-        lab->osegs = cf_alloc_array(nsegs + 1, 1);
-        lab->ocoords = cf_alloc_array(ncoords + 1, sizeof *lab->ocoords);
-        bad = lab->osegs == NULL || lab->ocoords == NULL;
-    }
-    for (i = 0, ncoords = 0; !bad && i < path->num_data;
-         i += path->data[i].header.length) {
-        const cairo_path_data_t *d = &path->data[i];
-        int k;
-        static const unsigned char seg[] = {
-            CF__SEG_MOVE, CF__SEG_LINE, CF__SEG_CURVE, CF__SEG_CLOSE
-        };
-        lab->osegs[lab->onsegs++] = seg[d->header.type];
-        for (k = 1; k < d->header.length; k++) {
-            lab->ocoords[ncoords++] = d[k].point.x;
-            lab->ocoords[ncoords++] = d[k].point.y;
+    size_t i;
+    for (i = 0; i < lab->count; i++) {
+        const run_t *r = &lab->runs[i];
+        if (!(r->ink[3] > r->ink[1]))
+            continue;
+        if (r->rule_h > 0) {
+            double x = r->x, y = -r->y - r->rule_h, w = r->width,
+                   h = r->rule_h;
+            double p[4][2] = { { x, y }, { x + w, y }, { x + w, y + h },
+                               { x, y + h } };
+            cf__pathb_add(&lab->outline, CF__SEG_MOVE, p[0]);
+            cf__pathb_add(&lab->outline, CF__SEG_LINE, p[1]);
+            cf__pathb_add(&lab->outline, CF__SEG_LINE, p[2]);
+            cf__pathb_add(&lab->outline, CF__SEG_LINE, p[3]);
+            cf__pathb_add(&lab->outline, CF__SEG_CLOSE, NULL);
+            cf__pathb_add(&lab->outline, CF__SEG_MOVE, p[0]);
+            continue;
         }
+        lab->fonts->outline(lab->fonts_ctx, r->shaped, r->x,
+                            -r->y - r->baseline, &lab->outline);
     }
-    cairo_path_destroy(path);
-    return bad ? -1 : 0;
+    return lab->outline.failed ? -1 : 0;
 }
 
 void
 cf__label_outline(const cf_label_t *label, cf__path_t *out)
 {
-    out->segs = label->osegs;
-    out->coords = label->ocoords;
-    out->nsegs = label->onsegs;
+    cf__pathb_path(&label->outline, out);
 }
 
 cf_status_t
@@ -140,8 +100,9 @@ cf_label_create(const char *text, const char *family, double size_bp,
                            "out of memory for a label");
     len = strlen(family);
     lab->family = cf_malloc(len + 1);
-    lab->ctx = make_context();
-    if (lab->family == NULL || lab->ctx == NULL) {
+    lab->fonts = cf__fonts_default();
+    lab->fonts_ctx = lab->fonts->open(lab->fonts->self);
+    if (lab->family == NULL || lab->fonts_ctx == NULL) {
         cf_label_destroy(lab);
         return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
                            "out of memory for a label");
@@ -169,9 +130,8 @@ cf_label_create(const char *text, const char *family, double size_bp,
     for (i = 0; i < lab->count; i++) {
         const run_t *r = &lab->runs[i];
         cf_label_box_t *b = &lab->boxes[i];
-        if (r->layout != NULL)
-            lab->unknown += (size_t)pango_layout_get_unknown_glyphs_count(
-                r->layout);
+        if (r->shaped != NULL)
+            lab->unknown += (size_t)r->unknown;
         b->x = r->x;
         b->y = r->y;
         b->width = r->width;
@@ -273,67 +233,4 @@ cf__label_ink(const cf_label_t *label, double box[4])
             box[3] = fmax(box[3], y1);
         }
     }
-}
-
-void
-cf__label_draw(const cf_label_t *label, cairo_t *cr, double x, double y,
-               const cf_color_t *color, double opacity)
-{
-    size_t i;
-    if (label == NULL)
-        return;
-    cairo_save(cr);
-    cairo_set_source_rgba(cr, color->r, color->g, color->b,
-                          color->a * opacity);
-    for (i = 0; i < label->count; i++) {
-        const run_t *r = &label->runs[i];
-        if (!(r->ink[3] > r->ink[1]))
-            continue;   /* nothing to draw (spaces) */
-        if (r->rule_h > 0) {
-            cairo_rectangle(cr, x + r->x, y - r->y - r->rule_h, r->width,
-                            r->rule_h);
-            cairo_fill(cr);
-            continue;
-        }
-        cairo_move_to(cr, x + r->x, y - r->y - r->baseline);
-        pango_cairo_show_layout(cr, r->layout);
-    }
-    cairo_restore(cr);
-}
-
-void
-cf__label_path(const cf_label_t *label, cairo_t *cr, double x, double y)
-{
-    size_t i;
-    if (label == NULL)
-        return;
-    for (i = 0; i < label->count; i++) {
-        const run_t *r = &label->runs[i];
-        if (!(r->ink[3] > r->ink[1]))
-            continue;
-        if (r->rule_h > 0) {
-            cairo_rectangle(cr, x + r->x, y - r->y - r->rule_h, r->width,
-                            r->rule_h);
-            continue;
-        }
-        cairo_move_to(cr, x + r->x, y - r->y - r->baseline);
-        pango_cairo_layout_path(cr, r->layout);
-    }
-}
-
-void
-cf__label_draw_halo(const cf_label_t *label, cairo_t *cr, double x,
-                    double y, const cf_color_t *halo_color, double halo)
-{
-    if (label == NULL || !(halo > 0) || halo_color->a <= 0)
-        return;
-    cairo_save(cr);
-    cairo_new_path(cr);
-    cf__label_path(label, cr, x, y);
-    cairo_set_source_rgba(cr, halo_color->r, halo_color->g, halo_color->b,
-                          halo_color->a);
-    cairo_set_line_width(cr, 2 * halo);
-    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-    cairo_stroke(cr);
-    cairo_restore(cr);
 }

@@ -299,10 +299,13 @@ put_figure(text_t *t, const cf_script_t *s, size_t i, char *err,
     unsigned char *svg = NULL;
     size_t size = 0;
     double m[6], w, h;
+    char *places = NULL;
+    size_t places_size = 0;
     cf_diag_t diag;
     cf_diag_clear(&diag);
-    if (cf_figure_render_mapped(fig, CF_FORMAT_SVG, NULL, &svg, &size, m,
-                                &diag) != CF_STATUS_OK) {
+    if (cf_figure_render_places(fig, CF_FORMAT_SVG, NULL, &svg, &size, m,
+                                &places, &places_size, &diag)
+        != CF_STATUS_OK) {
         snprintf(err, errlen, "%sfigure '%s': %s", cf_script_figure_where(s, i),
                  name, diag.msg);
         cf_free(svg);
@@ -324,10 +327,13 @@ put_figure(text_t *t, const cf_script_t *s, size_t i, char *err,
     }
     put(t, "],\n  \"handles\": ");
     put_handles(t, cf_script_params(s), name, m);
+    put(t, ",\n  \"labels\": ");
+    put_n(t, places, places_size);
     put(t, ",\n  \"svg\": ");
     put_str_n(t, (const char *)svg, size);
     put(t, "}");
     cf_free(svg);
+    cf_free(places);
     return 0;
 }
 

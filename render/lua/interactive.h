@@ -16,12 +16,16 @@
 **                    "svg": "<svg ...>...</svg>",
 **                    "to_svg": [a, b, c, d, e, f],    (data -> SVG units)
 **                    "handles": [ { "param": "P", "index": 0, "x": ..,
-**                                   "y": .., "sx": .., "sy": .. } ] } ],
+**                                   "y": .., "sx": .., "sy": .. } ],
+**                    "labels": [ { "text": "P_0", "place": 1, "x": ..,
+**                                  "y": .., "anchor_x": ..,
+**                                  "anchor_y": .. } ] } ],
 **     "error":   null | { "message": "...", "line": N },
 **     "lua":     "values = { t = 0.75, P = { {0, 0}, ... } }" }
 **
 ** handles are the points of every points{} list dragged in that figure;
-** sx, sy their place in the figure's SVG.  On a script error the figures
+** sx, sy their place in the figure's SVG; labels the places the layout
+** chose (cf_figure_render_places).  On a script error the figures
 ** are left out and params holds what was declared before the error.
 */
 #ifndef CURVEFIG_RENDER_LUA_INTERACTIVE_H

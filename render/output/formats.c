@@ -237,6 +237,9 @@ cf__eps_from_ps(const cf__buf_t *ps, cf__buf_t *eps)
     int setpage_call = 0, trailer = 0, in_def = 0, line_no = 0;
     int in_header = 1, skip_level = 0;
 
+    /* the PS of other cairo versions is not checked against this */
+    if (cairo_version() != CAIRO_VERSION_ENCODE(1, 16, 0))
+        return -1;
     while (p < end) {
         const unsigned char *nl = memchr(p, '\n', (size_t)(end - p));
         size_t n;

@@ -16,8 +16,9 @@
 
 #include <pango/pangocairo.h>
 
-#include "backend.h"
+#include "backend-text.h"
 #include "curvefig/output.h"
+#include "font-pango.h"
 #include "grow.h"
 #include "label-glyphs.h"
 #include "label-impl.h"
@@ -139,7 +140,7 @@ put_glyph(collect_t *c, PangoFont *font, int f, PangoGlyph id)
     g.index = id;
     g.x = g.y = 0;
     cairo_scaled_font_glyph_extents(sf, &g, 1, &e);
-    putf(c, c->out, "G %d %u %.6g %.6g %.6g %.6g", f, id, e.x_bearing / s,
+    putf(c, c->out, "G %d %u %.9g %.9g %.9g %.9g", f, id, e.x_bearing / s,
          e.y_bearing / s, (e.x_bearing + e.width) / s,
          (e.y_bearing + e.height) / s);
     cairo_set_scaled_font(c->cr, sf);
@@ -227,23 +228,26 @@ static int
 desc_of(collect_t *c, const run_t *r)
 {
     const PangoFontDescription *fd =
-        pango_layout_get_font_description(r->layout);
+        pango_layout_get_font_description(r->shaped);
     const char *family = pango_font_description_get_family(fd);
+    /* the style of the font (a math run's letters are italic glyphs of an
+    ** upright font) */
+    int italic = pango_font_description_get_style(fd) != PANGO_STYLE_NORMAL;
     PangoRectangle logical;
     int i;
     for (i = 0; i < c->ndesc; i++)
-        if (strcmp(c->desc[i], family) == 0 && c->desc_italic[i] == r->italic
+        if (strcmp(c->desc[i], family) == 0 && c->desc_italic[i] == italic
             && c->desc_bold[i] == r->bold)
             return i;
     if (c->ndesc == MAX_DESCS) {
         c->failed = true;
         return 0;
     }
-    pango_layout_get_extents(r->layout, NULL, &logical);
+    pango_layout_get_extents(r->shaped, NULL, &logical);
     c->desc[c->ndesc] = dup_str(family);
-    c->desc_italic[c->ndesc] = r->italic;
+    c->desc_italic[c->ndesc] = italic;
     c->desc_bold[c->ndesc] = r->bold;
-    putf(c, &c->heads, "D %d %d %d %.9g %.9g %s\n", c->ndesc, r->italic,
+    putf(c, &c->heads, "D %d %d %d %.9g %.9g %s\n", c->ndesc, italic,
          r->bold, r->baseline / r->size,
          ((double)logical.height / PANGO_SCALE - r->baseline) / r->size,
          family);
@@ -257,7 +261,7 @@ run_data(collect_t *c, const run_t *r)
     char key[64];
     size_t k;
     int d, size, n;
-    if (r->layout == NULL || r->rule_h > 0)
+    if (r->shaped == NULL || r->rule_h > 0)
         return;
     d = desc_of(c, r);
     size = (int)lround(r->size * PANGO_SCALE);
@@ -283,13 +287,13 @@ run_data(collect_t *c, const run_t *r)
         || cf__buf_append(&c->shaped_keys, r->text, r->text_len) != 0
         || cf__buf_append(&c->shaped_keys, "\n", 1) != 0)
         c->failed = true;
-    n = each_glyph(c, r->layout, glyph_out);   /* G lines; the count */
-    pango_layout_get_extents(r->layout, &ink, &logical);
+    n = each_glyph(c, r->shaped, glyph_out);   /* G lines; the count */
+    pango_layout_get_extents(r->shaped, &ink, &logical);
     putf(c, &c->shapes, "S %d %d %d %d %d %d %d %d %d %d %d %d %d", d, size,
-         pango_layout_get_baseline(r->layout), logical.x, logical.y,
+         pango_layout_get_baseline(r->shaped), logical.x, logical.y,
          logical.width, logical.height, ink.x, ink.y, ink.width, ink.height,
-         pango_layout_get_unknown_glyphs_count(r->layout), n);
-    each_glyph(c, r->layout, glyph_placed);
+         pango_layout_get_unknown_glyphs_count(r->shaped), n);
+    each_glyph(c, r->shaped, glyph_placed);
     putf(c, &c->shapes, " %zu ", r->text_len);
     if (cf__buf_append(&c->shapes, r->text, r->text_len) != 0
         || cf__buf_append(&c->shapes, "\n", 1) != 0)
@@ -298,53 +302,23 @@ run_data(collect_t *c, const run_t *r)
 
 /* ---- the collecting backend --------------------------------------------- */
 
-static void nop_page(void *ctx, const cf__page_t *p) { (void)ctx; (void)p; }
-static void nop_group(void *ctx, const char *n, size_t i, const char *o)
-{
-    (void)ctx;
-    (void)n;
-    (void)i;
-    (void)o;
-}
-static void nop(void *ctx) { (void)ctx; }
-static void nop_clip(void *ctx, bool h, const double r[4])
-{
-    (void)ctx;
-    (void)h;
-    (void)r;
-}
-static void nop_path(void *ctx, const cf__path_t *p, const cf__paint_t *q)
-{
-    (void)ctx;
-    (void)p;
-    (void)q;
-}
-static void nop_marker(void *ctx, const cf__marker_op_t *m)
-{
-    (void)ctx;
-    (void)m;
-}
-static int nop_end(void *ctx) { (void)ctx; return 0; }
 
 static void
 text_op(void *ctx, const cf__text_op_t *t)
 {
     collect_t *c = ctx;
     size_t i;
-    if (t->label == NULL)
+    /* labels in pango's fonts (the tool's) */
+    if (t->label == NULL || t->label->fonts != &cf__pango_fonts)
         return;
     if (c->ctx == NULL) {
-        c->ctx = t->label->ctx;
+        c->ctx = cf__pango_fonts_context(t->label->fonts_ctx);
         g_object_ref(c->ctx);
     }
     for (i = 0; i < t->label->count; i++)
         run_data(c, &t->label->runs[i]);
 }
 
-static const cf__backend_t collector = {
-    "glyph data", nop_page, nop_group, nop, nop_clip, nop, nop_path,
-    nop_marker, text_op, nop_end, NULL
-};
 
 /* The one glyph and its advance (pango units) of the text s[0..n-1]
 ** alone in layout l, or 0 when it is not one known glyph in one run; two
@@ -494,6 +468,7 @@ cf__glyph_data(cf_figure_t *const *figs, size_t n, cf__buf_t *out,
     size_t i;
     int k;
     cairo_surface_t *rec;
+    const cf__backend_t collector = cf__text_backend("glyph data", text_op);
     memset(&c, 0, sizeof c);
     memset(&body, 0, sizeof body);
     c.out = &body;

@@ -1,7 +1,7 @@
 /*
 ** The glyph data of a course page (render/output/label-glyphs.c): what the
 ** WebAssembly module needs to lay out and draw labels without pango
-** (render/web/pango-lite.c reads it; its comment gives the format).
+** (render/labels/font-table.c reads it; its comment gives the format).
 */
 #ifndef CURVEFIG_RENDER_LABEL_GLYPHS_H
 #define CURVEFIG_RENDER_LABEL_GLYPHS_H

@@ -33,8 +33,16 @@ cf_status_t cf__figure_play(cf_figure_t *fig, unsigned step,
                             const cf__backend_t *be, void *ctx,
                             cf_diag_t *diag);
 
-/* The EPS of a PS page from cf__format_render (cairo 1.16.0 only): 0, or
-** -1 when the PS is not as expected (render the EPS then), -2 out of
+/* The places of the labels of dl's page as JSON (render/output/label-
+** places.c), appended to out: [{"text": SOURCE, "place": P, "x": X, "y":
+** Y, "anchor_x": AX, "anchor_y": AY}, ...], the origin (x, y) of each
+** label (bp from the page's top left, y down) and the anchor it was placed
+** around.  0, or -1 out of memory. */
+int cf__label_places(const cf__dl_t *dl, const cf__page_t *page,
+                     cf__buf_t *out);
+
+/* The EPS of a PS page from cf__format_render: 0, or -1 when the PS is
+** not as expected or not cairo 1.16.0's (render the EPS then), -2 out of
 ** memory. */
 int cf__eps_from_ps(const cf__buf_t *ps, cf__buf_t *eps);
 

@@ -1,6 +1,6 @@
 /*
 ** Output: a figure laid out (render/layout/layout.c) into a display list,
-** drawn by the cairo backend in each format (render/output/formats.c) into
+** drawn in each format (render/output/formats.c: cairo's devices) into
 ** memory, then written to a temporary file in the target directory and renamed
 ** over the target.
 */
@@ -15,8 +15,6 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
-
-#include <cairo.h>
 
 #include "layout-private.h"
 #include "measure.h"
@@ -230,7 +228,7 @@ layout_map(const cf__layout_t *l, double map[6])
 static cf_status_t
 render_checked(cf_figure_t *fig, cf_format_t format,
                const cf_write_options_t *options, cf__buf_t *buf,
-               double *map, cf_diag_t *diag)
+               double *map, cf__buf_t *places, cf_diag_t *diag)
 {
     cf_write_options_t o;
     job_t job;
@@ -245,6 +243,10 @@ render_checked(cf_figure_t *fig, cf_format_t format,
         st = render_job(fig, format, &o, &job, buf, diag);
     if (st == CF_STATUS_OK && map != NULL)
         layout_map(&job.lay, map);
+    if (st == CF_STATUS_OK && places != NULL
+        && cf__label_places(&job.dl, &job.page, places) != 0)
+        st = cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                         "out of memory listing the places of the labels");
     job_free(&job);
     return st;
 }
@@ -266,18 +268,48 @@ cf_figure_render_mapped(cf_figure_t *fig, cf_format_t format,
                         cf_diag_t *diag)
 {
     cf_diag_clear(diag);
-    cf__buf_t buf;
+    return cf_figure_render_places(fig, format, options, data, size, map,
+                                   NULL, NULL, diag);
+}
+
+cf_status_t
+cf_figure_render_places(cf_figure_t *fig, cf_format_t format,
+                        const cf_write_options_t *options,
+                        unsigned char **data, size_t *size, double map[6],
+                        char **places, size_t *places_size, cf_diag_t *diag)
+{
+    cf_diag_clear(diag);
+    cf__buf_t buf, pl;
     cf_status_t st;
-    if (data == NULL || size == NULL)
+    if (data == NULL || size == NULL || (places == NULL) != (places_size
+                                                             == NULL))
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
                            "render: output pointers are NULL");
     *data = NULL;
     *size = 0;
-    st = render_checked(fig, format, options, &buf, map, diag);
-    if (st != CF_STATUS_OK)
+    if (places != NULL) {
+        *places = NULL;
+        *places_size = 0;
+    }
+    memset(&pl, 0, sizeof pl);
+    st = render_checked(fig, format, options, &buf, map,
+                        places != NULL ? &pl : NULL, diag);
+    if (st != CF_STATUS_OK) {
+        cf__buf_free(&pl);
         return st;
+    }
+    if (places != NULL && cf__buf_append(&pl, "", 1) != 0) {
+        cf__buf_free(&buf);
+        cf__buf_free(&pl);
+        return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                           "out of memory listing the places of the labels");
+    }
     *data = buf.data;
     *size = buf.size;
+    if (places != NULL) {
+        *places = (char *)pl.data;
+        *places_size = pl.size - 1;
+    }
     return CF_STATUS_OK;
 }
 
@@ -489,7 +521,7 @@ cf_figure_write(cf_figure_t *fig, const char *path, cf_format_t format,
     if (path == NULL)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
                            "path is NULL");
-    st = render_checked(fig, format, options, &buf, NULL, diag);
+    st = render_checked(fig, format, options, &buf, NULL, NULL, diag);
     if (st != CF_STATUS_OK)
         return st;
     st = cf_write_file(path, buf.data, buf.size, diag);
@@ -566,7 +598,6 @@ cf_figure_write_all(cf_figure_t *fig, const char *basename, unsigned formats,
     /* PS before EPS in format order; the EPS is derived from the PS */
     derive_eps = (formats & CF_FORMAT_BIT(CF_FORMAT_PS))
         && (formats & CF_FORMAT_BIT(CF_FORMAT_EPS))
-        && cairo_version() == CAIRO_VERSION_ENCODE(1, 16, 0)
         && (cf_figure_steps(fig) == 1 || o.step > 0);
     memset(&ps, 0, sizeof ps);
     for (f = 0; f < CF_FORMAT_LAST_ && st == CF_STATUS_OK; f++) {

@@ -8,7 +8,9 @@
 **
 ** A helper is looked for next to the running program (the build tree),
 ** then in the libexec directory relative to it (an installation moved as
-** a whole), then at the libexec directory of the installation.
+** a whole), then at the libexec directory of the installation; so is the
+** WebAssembly module of the course pages (render/tool/html.c), in the
+** build tree in render/web beside render/tool.
 */
 #include <errno.h>
 #include <limits.h>
@@ -42,24 +44,33 @@ program_dir(char *dir, size_t cap)
 
 static bool
 try_path(char *out, size_t cap, const char *dir, const char *sub,
-         const char *name)
+         const char *name, int mode)
 {
     int n = snprintf(out, cap, "%s%s%s/%s", dir, sub[0] ? "/" : "", sub,
                      name);
-    return n > 0 && (size_t)n < cap && access(out, X_OK) == 0;
+    return n > 0 && (size_t)n < cap && access(out, mode) == 0;
+}
+
+bool
+cf__tool_find_file(const char *name, const char *build_sub, int mode,
+                   char *out, size_t cap, char *dir, size_t dircap)
+{
+    bool have_dir = program_dir(dir, dircap);
+    if (!have_dir)
+        snprintf(dir, dircap, "the program");
+    return (have_dir && try_path(out, cap, dir, build_sub, name, mode)) ||
+           (have_dir && try_path(out, cap, dir, CF_TOOL_LIBEXEC_FROM_BIN,
+                                 name, mode)) ||
+           try_path(out, cap, CF_TOOL_LIBEXEC_DIR, "", name, mode);
 }
 
 int
 cf__tool_run_helper(const char *name, int argc, char **argv)
 {
     char dir[PATH_MAX], path[PATH_MAX];
-    bool have_dir = program_dir(dir, sizeof dir);
-    bool found = (have_dir && try_path(path, sizeof path, dir, "", name)) ||
-                 (have_dir && try_path(path, sizeof path, dir,
-                                       CF_TOOL_LIBEXEC_FROM_BIN, name)) ||
-                 try_path(path, sizeof path, CF_TOOL_LIBEXEC_DIR, "", name);
     (void)argc;
-    if (found) {
+    if (cf__tool_find_file(name, "", X_OK, path, sizeof path, dir,
+                           sizeof dir)) {
         argv[0] = path;
         execv(path, argv);
         fprintf(stderr, "curvefig: %s: cannot run %s: %s\n", argv[1], path,
@@ -68,7 +79,6 @@ cf__tool_run_helper(const char *name, int argc, char **argv)
     }
     fprintf(stderr, "curvefig: %s: this installation of curvefig lacks its "
             "program %s (looked beside %s and in %s): install curvefig "
-            "again\n", argv[1], name, have_dir ? dir : "the program",
-            CF_TOOL_LIBEXEC_DIR);
+            "again\n", argv[1], name, dir, CF_TOOL_LIBEXEC_DIR);
     return 2;
 }

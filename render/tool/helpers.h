@@ -11,6 +11,15 @@
 #define CF__TOOL_CHECK_HELPER "curvefig-check"
 #define CF__TOOL_LIVE_HELPER "curvefig-live"
 
+/* The file name of the installation (a helper program, the WebAssembly
+** module) into out, where access(mode) allows it: in the directory of
+** the running program, or its subdirectory build_sub (the build tree's
+** place; "" for the program's own), then in the libexec directory
+** relative to it, then in the installation's.  false when none is there;
+** dir then names where it looked first (the program's directory). */
+bool cf__tool_find_file(const char *name, const char *build_sub, int mode,
+                        char *out, size_t cap, char *dir, size_t dircap);
+
 /* Replace this process by the helper program name with the same
 ** arguments (argv[1] the command); returns the exit status 2, with a
 ** message, only when the helper cannot be found or run. */

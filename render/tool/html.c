@@ -13,13 +13,22 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include <limits.h>
+#include <unistd.h>
+
 #include "curvefig/figure.h"
 #include "curvefig/output.h"
+#include "helpers.h"
 #include "html.h"
 #include "tool.h"
-#ifdef CF_TOOL_HAVE_WASM
-#include "wasm-b64.h"
 #include "web-html.h"
+
+#ifndef PATH_MAX
+#define PATH_MAX 4096
+#endif
+
+#define WASM_NAME "curvefig.wasm"
+#define WASM_MAX ((size_t)64 << 20)
 
 static void
 put_lines(FILE *f, const char *const *lines)
@@ -66,6 +75,57 @@ put_lines_string(FILE *f, const char *const *a, const char *const *b)
     fputc('"', f);
 }
 
+/* bytes[0..n-1] in base64. */
+static void
+put_base64(FILE *f, const unsigned char *b, size_t n)
+{
+    static const char digit[] =
+        "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    size_t i;
+    for (i = 0; i + 2 < n; i += 3) {
+        unsigned long v = (unsigned long)b[i] << 16 | (unsigned)b[i + 1] << 8
+                          | b[i + 2];
+        fputc(digit[v >> 18], f);
+        fputc(digit[v >> 12 & 63], f);
+        fputc(digit[v >> 6 & 63], f);
+        fputc(digit[v & 63], f);
+    }
+    if (i < n) {
+        unsigned long v = (unsigned long)b[i] << 16
+                          | (i + 1 < n ? (unsigned)b[i + 1] << 8 : 0u);
+        fputc(digit[v >> 18], f);
+        fputc(digit[v >> 12 & 63], f);
+        fputc(i + 1 < n ? digit[v >> 6 & 63] : '=', f);
+        fputc('=', f);
+    }
+}
+
+/* The WebAssembly module (render/web), built or installed beside the
+** tool; NULL with the reason in err when it is not there. */
+static unsigned char *
+read_module(size_t *n, char *err, size_t errsize)
+{
+    char path[PATH_MAX], dir[PATH_MAX];
+    const char *why;
+    unsigned char *b;
+    if (!cf__tool_find_file(WASM_NAME, "../web", R_OK, path, sizeof path,
+                            dir, sizeof dir)) {
+        snprintf(err, errsize,
+                 "-f html needs the WebAssembly module %s, which is not "
+                 "beside this curvefig (looked in %s, %s/../web and %s): "
+                 "build it (emscripten and Lua 5.4's source: as root, "
+                 "apt-get install emscripten && render/web/lua-source.sh; "
+                 "then meson setup --reconfigure and ninja) or install "
+                 "curvefig again", WASM_NAME, dir, dir, CF_TOOL_LIBEXEC_DIR);
+        return NULL;
+    }
+    b = (unsigned char *)cf__tool_read_file(path, WASM_MAX, n, &why);
+    if (b == NULL)
+        snprintf(err, errsize, "cannot read the WebAssembly module %s: %s",
+                 path, why);
+    return b;
+}
+
 int
 cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
                     const cf__tool_limits *limits, const char *path,
@@ -76,26 +136,33 @@ cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
     const char *caption = cf_script_figure_caption(s, i);
     const char *base = strrchr(script_path, '/');
     char *code, *glyphs = NULL;
-    size_t code_len, glyphs_len;
+    unsigned char *wasm;
+    size_t code_len, glyphs_len, wasm_len;
     const char *why;
     cf_diag_t d;
     cf__tool_out out;
     FILE *f;
+    wasm = read_module(&wasm_len, err, errsize);
+    if (wasm == NULL)
+        return -1;
     code = cf__tool_read_file(script_path, (size_t)64 << 20, &code_len,
                               &why);
     if (code == NULL) {
         snprintf(err, errsize, "cannot read %s: %s", script_path, why);
+        free(wasm);
         return -1;
     }
     if (cf_figures_glyph_data(&fig, 1, &glyphs, &glyphs_len, &d)
         != CF_STATUS_OK) {
         snprintf(err, errsize, "the glyphs of its labels: %s", d.msg);
         free(code);
+        free(wasm);
         return -1;
     }
     if (cf__tool_open_atomic(&out, path) != 0) {
         snprintf(err, errsize, "cannot write %s: %s", path, strerror(errno));
         free(code);
+        free(wasm);
         cf_free(glyphs);
         return -1;
     }
@@ -133,9 +200,10 @@ cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
     fputs(",\nworker: ", f);
     put_lines_string(f, html_wasm_js, html_worker_js);
     fputs(",\nwasm: \"", f);
-    put_lines(f, web_wasm_b64);
+    put_base64(f, wasm, wasm_len);
     fputs("\"}));\n</script>\n</body></html>\n", f);
     free(code);
+    free(wasm);
     cf_free(glyphs);
     if (cf__tool_close_atomic(&out) != 0) {
         snprintf(err, errsize, "cannot write %s: %s", path, strerror(errno));
@@ -143,22 +211,3 @@ cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
     }
     return 0;
 }
-#else
-int
-cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
-                    const cf__tool_limits *limits, const char *path,
-                    char *err, size_t errsize)
-{
-    (void)s;
-    (void)i;
-    (void)script_path;
-    (void)limits;
-    (void)path;
-    snprintf(err, errsize,
-             "-f html needs the WebAssembly module, which this curvefig "
-             "was built without: install emscripten and Lua 5.4's source "
-             "(as root: apt-get install emscripten && render/web/"
-             "lua-source.sh), then meson setup --reconfigure and rebuild");
-    return -1;
-}
-#endif

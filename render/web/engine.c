@@ -8,13 +8,27 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "glyphs.h"
+#include "font-table.h"
 #include "interactive.h"
 
 #define EXPORT(name) __attribute__((export_name(#name), used))
 
+/* The module is one page: its answer and its glyph table, which every
+** label is set in (render/labels/font-table.c). */
 static char *json;
 static size_t json_len;
+static cf__font_table_t *table;
+static cf__fonts_t fonts;
+
+const cf__fonts_t *
+cf__fonts_default(void)
+{
+    if (table == NULL) {
+        table = cf__font_table_create();
+        fonts = cf__font_table_fonts(table);
+    }
+    return &fonts;
+}
 
 /* Load the page's glyph data (data[0..len-1]); 0, or the number of the
 ** first line that is not glyph data (-1: out of memory). */
@@ -22,7 +36,9 @@ EXPORT(cf_wasm_glyphs) int
 cf_wasm_glyphs(const char *data, size_t len)
 {
     int line = 0;
-    if (cf__glyphs_load(data, len, &line) == 0)
+    if (cf__fonts_default()->self == NULL)
+        return -1;
+    if (cf__font_table_load(table, data, len, &line) == 0)
         return 0;
     return line > 0 ? line : -1;
 }

@@ -13,6 +13,7 @@
 
 #include "buffer.h"
 #include "curvefig/figure.h"
+#include "font-table.h"
 #include "label-cairo.h"
 #include "testutil.h"
 
@@ -941,6 +942,77 @@ test_every_listed_command_parses(void **state)
     assert_true(n > 100);
 }
 
+/* The glyph table of a course page (render/labels/font-table.c): a text
+** composed from its characters is placed as pango places glyphs, every
+** advance and ink box rounded to units of 1/1024 bp on its own (worked
+** out by hand below), a text shaped at export is those numbers, and a line
+** that is not glyph data is named by its number. */
+static void
+test_font_table(void **state)
+{
+    static const char data[] =
+        "curvefig-glyphs 1\n"
+        "D 0 0 0 0.8 0.2 Fam\n"
+        "G 0 5 0.1 -0.7 0.5 0 M 0.1 0 L 0.5 0 L 0.5 -0.7 Z\n"
+        "C 0 65 0 5 0.6\n"
+        "K 0 65 65 -0.05\n"
+        "S 0 10240 8000 0 0 100 200 1 2 3 4 0 1 0 5 7 8000 1 A\n";
+    cf__font_table_t *t = cf__font_table_create();
+    cf__fonts_t f;
+    cf__font_req_t req = { "Fam", false, false, 10, "AA", 2 };
+    cf__font_shape_t sh;
+    cf__pathb_t out;
+    void *run = NULL;
+    int bad = -1;
+    (void)state;
+    assert_non_null(t);
+    assert_int_equal(cf__font_table_load(t, data, strlen(data), &bad), 0);
+    f = cf__font_table_fonts(t);
+    assert_int_equal(f.shape(f.open(f.self), &req, &run, &sh), 0);
+    /* baseline 0.8 * 10 bp; the first A's advance 0.6 - 0.05 (the kern of
+    ** the pair), the second's 0.6: 5.5 + 6 bp */
+    assert_int_equal(sh.baseline, 8192);
+    assert_int_equal(sh.logical[2], 5632 + 6144);
+    assert_int_equal(sh.logical[3], 8192 + 2048);
+    /* ink: from the first A's 0.1 * 10 bp to the second's 5.5 + 5 bp,
+    ** from 7 bp above the baseline to it */
+    assert_int_equal(sh.ink[0], 1024);
+    assert_int_equal(sh.ink[2], 5632 + 5120 - 1024);
+    assert_int_equal(sh.ink[1], 8192 - 7168);
+    assert_int_equal(sh.ink[3], 7168);
+    assert_int_equal(sh.unknown, 0);
+    /* its outline: two glyphs of M L L Z, the second 5.5 bp on */
+    memset(&out, 0, sizeof out);
+    f.outline(f.self, run, 0, 0, &out);
+    assert_int_equal(out.nsegs, 8);
+    assert_true(out.segs[4] == CF__SEG_MOVE);
+    assert_true(fabs(out.coords[6] - (5.5 + 1)) < 1e-12);
+    assert_true(fabs(out.coords[7] - 8) < 1e-12);
+    cf__pathb_free(&out);
+    /* a character without data: unknown, no glyph */
+    req.text = "AB";
+    assert_int_equal(f.shape(f.self, &req, &run, &sh), 0);
+    assert_int_equal(sh.unknown, 1);
+    assert_int_equal(sh.logical[2], 6144);
+    /* "A" at 10 bp was shaped at export: its numbers as written */
+    req.text = "A";
+    req.len = 1;
+    assert_int_equal(f.shape(f.self, &req, &run, &sh), 0);
+    assert_int_equal(sh.baseline, 8000);
+    assert_int_equal(sh.logical[2], 100);
+    assert_int_equal(sh.ink[3], 4);
+    f.release(run);
+    /* line 3 is not glyph data */
+    {
+        static const char bad_data[] = "curvefig-glyphs 1\nD 0 0 0 1 0 F\n"
+                                       "X 1 2\n";
+        assert_int_equal(cf__font_table_load(t, bad_data, strlen(bad_data),
+                                             &bad), -1);
+    }
+    assert_int_equal(bad, 3);
+    cf__font_table_destroy(t);
+}
+
 int
 main(void)
 {
@@ -963,6 +1035,7 @@ main(void)
         cmocka_unit_test(test_relations_and_overline),
         cmocka_unit_test(test_every_listed_command_parses),
         cmocka_unit_test(test_out_of_memory),
+        cmocka_unit_test(test_font_table),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

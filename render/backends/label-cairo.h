@@ -1,7 +1,7 @@
 /*
-** Labels drawn with cairo (render/label.c), for the backends that draw
-** through cairo: the cairo backend, the PGF backend's outlines and the
-** glyph outlines of the SVG writer.
+** Labels drawn with cairo (render/backends/label-cairo.c), for the
+** backends that draw through cairo: the cairo backend, the PGF backend's
+** outlines and the glyph outlines of the SVG writer.
 */
 #ifndef CURVEFIG_RENDER_LABEL_CAIRO_H
 #define CURVEFIG_RENDER_LABEL_CAIRO_H

@@ -1,13 +1,15 @@
 /*
-** The output formats in the WebAssembly module: SVG through the SVG
-** writer (render/backends/backend-svgw.c) with the glyph outlines of render/
-** glyph-outline.c (here from pango-lite's glyph data); the other formats,
-** and the animated SVG of overlay steps, are the native tool's, and a
-** page asking for them gets an error saying so.
+** The output formats of the browser module (render/output/output-
+** private.h; natively render/output/formats.c and svg-steps.c, through
+** cairo): SVG by the SVG writer (render/backends/backend-svgw.c), labels as
+** their outlines (render/backends/outline-svg.c: the glyphs of the page's
+** glyph table).  The other formats, and the animated SVG of overlay steps,
+** are the native tool's: a page asking for them gets an error saying so.
 */
 #include <string.h>
 
 #include "backend.h"
+#include "outline-svg.h"
 #include "output-private.h"
 
 static const char *const names[] = { "SVG", "PDF", "PS", "EPS", "PNG" };
@@ -17,7 +19,6 @@ cf__format_render(cf_format_t format, const cf__dl_t *dl,
                   const cf__page_t *page, double dpi, const char *title,
                   const char *caption, cf__buf_t *out, cf_diag_t *diag)
 {
-    cf__glyph_outliner_t g;
     cf__svgw_t w;
     int r;
     (void)dpi;
@@ -28,13 +29,10 @@ cf__format_render(cf_format_t format, const cf__dl_t *dl,
                            "%s is written by the curvefig tool, not in a "
                            "web page (which draws SVG)",
                            (unsigned)format < 5 ? names[format] : "?");
-    memset(&g, 0, sizeof g);
     memset(&w, 0, sizeof w);
     w.out = out;
-    w.outline = cf__glyph_outline;
-    w.outline_ctx = &g;
+    w.outline = cf__label_outline_svg;
     r = cf__dl_play_page(dl, page, &cf__svgw_backend, &w);
-    cf__glyph_outliner_fini(&g);
     if (r != 0)
         return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
                            "out of memory writing SVG, or a coordinate "

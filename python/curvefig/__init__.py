@@ -16,9 +16,9 @@ from ._core import (Bezier, BSpline, BezierSurface, BSplineSurface,
                     interpolate, approximate, parameters, nurbs_circle, coons,
                     ferguson, ferguson_chain, coons_cubic, revolve, extrude,
                     ruled, coons_patch, nurbs_sphere, nurbs_cylinder,
-                    nurbs_cone, nurbs_torus, version, have_html)
+                    nurbs_cone, nurbs_torus, version)
 from .lua import Lua
-from .figure import Figure, ScriptFigure, render_script
+from .figure import Figure, ScriptFigure, render_script, have_html
 
 __all__ = ["Bezier", "BSpline", "BezierSurface", "BSplineSurface",
            "interpolate", "approximate", "parameters", "nurbs_circle",

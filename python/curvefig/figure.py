@@ -20,6 +20,19 @@ FORMATS = ("svg", "pdf", "ps", "eps", "png", "pgf")
 _WHERE = re.compile(r"^(?P<chunk>[^\n]*?):(?P<line>\d+):")
 
 
+def _module_path():
+    """The course page's WebAssembly module, installed beside the
+    package."""
+    return os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                        "curvefig.wasm")
+
+
+def have_html():
+    """True when the course page of -f html can be written: the module
+    was built with the WebAssembly module of the course pages."""
+    return _core.have_html() and os.path.isfile(_module_path())
+
+
 def _write_atomic(path, data):
     """data to path through a temporary file renamed over it: a failure
     leaves no half file."""
@@ -93,7 +106,7 @@ class _Rendered:
         """The course page of the figure (curvefig render -f html): one
         self-contained HTML file whose sliders and points work without a
         server.  Needs a module built with the WebAssembly module."""
-        if not _core.have_html():
+        if not have_html():
             raise RuntimeError(
                 "html: this curvefig was built without the WebAssembly "
                 "module of the course pages (emscripten and Lua's source: "
@@ -105,7 +118,7 @@ class _Rendered:
             page = os.path.join(d, name + ".html")
             with open(script, "w", encoding="utf-8") as f:
                 f.write(code)
-            s.html(i, script, page)
+            s.html(i, script, page, _module_path())
             with open(page, encoding="utf-8") as f:
                 return f.read()
 
@@ -139,7 +152,7 @@ class _Rendered:
         """The interactive page, for a figure with sliders or draggable
         points, in an iframe (its script and style kept apart from the
         notebook's); None otherwise, so that the SVG is shown."""
-        if not _core.have_html() or not self.params():
+        if not have_html() or not self.params():
             return None
         import html as _html
         page = self.html()

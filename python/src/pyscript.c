@@ -168,17 +168,18 @@ sc_html(PyObject *self, PyObject *args)
 {
     cfpy_Script *o = SELF(self);
     Py_ssize_t i;
-    const char *script_path, *out_path;
+    const char *script_path, *out_path, *module;
     cf__tool_limits limits = { { 0, 0 }, CF__TOOL_TIMEOUT };
     char err[512];
     int rc;
-    if (!PyArg_ParseTuple(args, "nss:html", &i, &script_path, &out_path))
+    if (!PyArg_ParseTuple(args, "nsss:html", &i, &script_path, &out_path,
+                          &module))
         return NULL;
     if (figure_index(o, i, "html") != 0 || enter(o) != 0)
         return NULL;
     Py_BEGIN_ALLOW_THREADS
     rc = cf__tool_write_html(o->s, (size_t)i, script_path, &limits, out_path,
-                             err, sizeof err);
+                             module, err, sizeof err);
     Py_END_ALLOW_THREADS
     o->busy = 0;
     if (rc != 0)
@@ -252,8 +253,9 @@ static PyMethodDef sc_methods[] = {
       "render(index, format, dpi=150, tight=False, padding=0, step=0): the "
       "bytes of figure index in format svg, pdf, ps, eps, png or pgf" },
     { "html", sc_html, METH_VARARGS,
-      "html(index, script_path, out_path): the course page of figure "
-      "index, running the script at script_path, written to out_path" },
+      "html(index, script_path, out_path, module): the course page of "
+      "figure index, running the script at script_path, written to "
+      "out_path, carrying the WebAssembly module read from module" },
     { NULL, NULL, 0, NULL }
 };
 

@@ -100,15 +100,23 @@ put_base64(FILE *f, const unsigned char *b, size_t n)
     }
 }
 
-/* The WebAssembly module (render/web), built or installed beside the
-** tool; NULL with the reason in err when it is not there. */
+/* The WebAssembly module (render/web): the file module, or (NULL) the one
+** built or installed beside the tool; NULL with the reason in err when it
+** is not there. */
 static unsigned char *
-read_module(size_t *n, char *err, size_t errsize)
+read_module(const char *module, size_t *n, char *err, size_t errsize)
 {
     char path[PATH_MAX], dir[PATH_MAX];
     const char *why;
     unsigned char *b;
-    if (!cf__tool_find_file(WASM_NAME, "../web", R_OK, path, sizeof path,
+    if (module != NULL) {
+        if (strlen(module) >= sizeof path) {
+            snprintf(err, errsize, "the WebAssembly module's path is too "
+                     "long");
+            return NULL;
+        }
+        strcpy(path, module);
+    } else if (!cf__tool_find_file(WASM_NAME, "../web", R_OK, path, sizeof path,
                             dir, sizeof dir)) {
         snprintf(err, errsize,
                  "-f html needs the WebAssembly module %s, which is not "
@@ -129,7 +137,7 @@ read_module(size_t *n, char *err, size_t errsize)
 int
 cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
                     const cf__tool_limits *limits, const char *path,
-                    char *err, size_t errsize)
+                    const char *module, char *err, size_t errsize)
 {
     cf_figure_t *fig = cf_script_figure(s, i);
     const char *name = cf_script_figure_name(s, i);
@@ -142,7 +150,7 @@ cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
     cf_diag_t d;
     cf__tool_out out;
     FILE *f;
-    wasm = read_module(&wasm_len, err, errsize);
+    wasm = read_module(module, &wasm_len, err, errsize);
     if (wasm == NULL)
         return -1;
     code = cf__tool_read_file(script_path, (size_t)64 << 20, &code_len,

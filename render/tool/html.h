@@ -18,11 +18,13 @@
 
 /* Write figure i of s (run from the file script_path, with its defaults)
 ** to path; the page runs the script under limits (a run past
-** limits->timeout is stopped in the page).  0, or -1 with the reason in
-** err. */
+** limits->timeout is stopped in the page).  The page carries the
+** WebAssembly module read from the file module, or (module NULL) from
+** beside the program, the build tree or the installation.  0, or -1 with
+** the reason in err. */
 int cf__tool_write_html(const cf_script_t *s, size_t i,
                         const char *script_path,
                         const cf__tool_limits *limits, const char *path,
-                        char *err, size_t errsize);
+                        const char *module, char *err, size_t errsize);
 
 #endif

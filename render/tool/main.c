@@ -511,7 +511,7 @@ render_figures(const cf_script_t *s, const options *o)
             }
             sprintf(html, "%s.html", base);
             if (cf__tool_write_html(s, i, o->script, &o->limits, html,
-                                    diag.msg, sizeof diag.msg) != 0)
+                                    NULL, diag.msg, sizeof diag.msg) != 0)
                 st = CF_STATUS_INVALID_ARG;
             else if (o->verbose)
                 printf("%s\n", html);

@@ -18,10 +18,15 @@
 #include "testutil.h"
 #include "pngtest.h"
 
-/* cairo rounds path coordinates to 1/256 pt; a point on a cubic is a
-** convex combination of its control points, so rounding moves it by at
-** most sqrt(2)/256 = 0.0056 pt. */
-#define ROUNDING 0.0056
+/* The SVG writer rounds path coordinates to 1/1000 bp (render/backends/
+** backend-svgw.c): each by at most COORD_ROUND (and the decimal reading
+** back by 1e-12); a point on a cubic is a convex combination of its
+** control points, so rounding moves it by at most sqrt(2) COORD_ROUND. */
+#define COORD_ROUND (0.0005 + 1e-12)
+#define ROUNDING (1.4143 * COORD_ROUND)
+/* a point mapped from data coordinates against a drawn one: the map's
+** origin (map_from) is a drawn point, so rounded too */
+#define MAPPED_ROUND (2 * COORD_ROUND)
 
 /* ---- SVG path parsing --------------------------------------------------- */
 
@@ -56,8 +61,18 @@ render_svg(cf_figure_t *fig)
     return s;
 }
 
-/* Parse the d attributes of every stroked path (style "fill:none") of the
-** drawing (after </defs>, which holds the glyphs). */
+/* The attribute `what` (with its leading space) inside the tag [p, end),
+** or NULL. */
+static const char *
+in_tag(const char *p, const char *end, const char *what)
+{
+    const char *a = strstr(p, what);
+    return a != NULL && a < end ? a : NULL;
+}
+
+/* Parse the d attributes of every stroked path of the drawing: a <path>
+** with a stroke and without a fill (the page's group leaves paths
+** unfilled; markers are filled), after </defs>, which holds the glyphs. */
 static void
 stroked_paths(const char *svg, paths_t *out)
 {
@@ -72,15 +87,12 @@ stroked_paths(const char *svg, paths_t *out)
         p += 6;
         if (end == NULL)
             break;
-        d = strstr(p, " d=\"");
+        d = strstr(p - 1, " d=\"");   /* "<path d=" */
         if (d == NULL || d > end)
             continue;
-        {
-            const char *st = strstr(p, "style=\"");
-            if (st == NULL || st > end || strstr(st, "fill:none") == NULL
-                || strstr(st, "fill:none") > end)
-                continue;
-        }
+        if (in_tag(p, end, " stroke=\"") == NULL
+            || in_tag(p, end, " fill=\"") != NULL)
+            continue;
         assert_null(strstr(p, "transform") != NULL
                             && strstr(p, "transform") < end
                         ? "transform" : NULL);
@@ -265,8 +277,8 @@ test_cubic_is_one_C(void **state)
     for (k = 1; k < 4; k++) {
         double px, py;
         to_page(&m, P[2 * k], P[2 * k + 1], &px, &py);
-        assert_true(fabs(px - ps->seg[0].p[2 * k]) <= 1.0 / 256);
-        assert_true(fabs(py - ps->seg[0].p[2 * k + 1]) <= 1.0 / 256);
+        assert_true(fabs(px - ps->seg[0].p[2 * k]) <= MAPPED_ROUND);
+        assert_true(fabs(py - ps->seg[0].p[2 * k + 1]) <= MAPPED_ROUND);
     }
     free(svg);
     free(ps);
@@ -297,7 +309,7 @@ check_fitted(const double *P, const double *w, int n, size_t max_segments)
     for (i = 0; i < N; i++)
         bernstein_eval(P, w, n, (double)i / (N - 1), exact + 2 * i);
     /* the path is within the default tolerance 0.01 pt of the curve
-    ** (plus cairo's rounding; the dense polyline of 20000 chords adds
+    ** (plus the writer's rounding; the dense polyline of 20000 chords adds
     ** < 1e-4 pt at these curvatures) */
     err = path_error(ps, &m, exact, N);
     assert_true(err <= 0.01 + ROUNDING + 1e-4);
@@ -305,7 +317,7 @@ check_fitted(const double *P, const double *w, int n, size_t max_segments)
     to_page(&m, exact[2 * N - 2], exact[2 * N - 1], &end[0], &end[1]);
     assert_true(hypot(end[0] - ps->seg[ps->nseg - 1].p[6],
                       end[1] - ps->seg[ps->nseg - 1].p[7])
-                <= 2.0 / 256);
+                <= 2 * COORD_ROUND);
     free(exact);
     free(svg);
     free(ps);
@@ -416,7 +428,7 @@ test_basis_graph(void **state)
 {
     /* N_1^2 and N_2^3 over uneven knots, drawn over the whole range
     ** [0, 15]: the path must follow Cox-de Boor's values (zero outside
-    ** the support) within the 1/256 pt rounding plus the sag of the
+    ** the support) within the 1/1000 bp rounding plus the sag of the
     ** 6001-point reference polyline (below 1e-4 pt here) */
     static const double U[] = { 0, 1, 3, 6, 10, 11, 15 };
     static const int cases[][2] = { { 1, 2 }, { 2, 3 }, { 0, 1 } };
@@ -518,11 +530,11 @@ test_graph_exact(void **state)
     ** (0, 2/3, 2/3, 0) at x = 0, 1/3, 2/3, 1 */
     m = map_from(fig, ps, 0, 0);
     to_page(&m, 1.0 / 3, 2.0 / 3, &px, &py);
-    assert_true(fabs(px - ps->seg[0].p[2]) <= 1.0 / 256
-                && fabs(py - ps->seg[0].p[3]) <= 1.0 / 256);
+    assert_true(fabs(px - ps->seg[0].p[2]) <= MAPPED_ROUND
+                && fabs(py - ps->seg[0].p[3]) <= MAPPED_ROUND);
     to_page(&m, 2.0 / 3, 2.0 / 3, &px, &py);
-    assert_true(fabs(px - ps->seg[0].p[4]) <= 1.0 / 256
-                && fabs(py - ps->seg[0].p[5]) <= 1.0 / 256);
+    assert_true(fabs(px - ps->seg[0].p[4]) <= MAPPED_ROUND
+                && fabs(py - ps->seg[0].p[5]) <= MAPPED_ROUND);
     free(svg);
     cf_figure_destroy(fig);
 
@@ -675,7 +687,7 @@ test_bspline_pieces(void **state)
         assert_int_equal(cf_bspline_eval(s, U[i + 3], q), 0);
         to_page(&m, q[0], q[1], &px, &py);
         assert_true(hypot(px - ps->seg[i].p[6], py - ps->seg[i].p[7])
-                    <= 2.0 / 256);
+                    <= 2 * COORD_ROUND);
     }
     free(svg);
     cf_figure_destroy(fig);
@@ -742,14 +754,19 @@ test_net_colours_and_projection(void **state)
     ** colour */
     p = strstr(svg, "</defs>");
     p = p != NULL ? p : svg;
-    while ((p = strstr(p, "fill:none")) != NULL) {
-        const char *st = strstr(p, "stroke:rgb(");
-        size_t n = strcspn(st, ")");
+    while ((p = strstr(p, "<path ")) != NULL) {
+        const char *end = strchr(p, '>'), *st;
+        size_t n;
+        assert_non_null(end);
+        st = in_tag(p, end, " stroke=\"");
+        p = end;
+        if (st == NULL || in_tag(st, end, " fill=\"") != NULL)
+            continue;
+        n = strcspn(st + 9, "\"");
         assert_true(n < 64 && ncol < 8);
-        memcpy(colours[ncol], st, n);
+        memcpy(colours[ncol], st + 9, n);
         colours[ncol][n] = '\0';
         ncol++;
-        p = st;
     }
     assert_int_equal(ncol, 4);
     for (i = 0; i < ncol; i++)
@@ -781,7 +798,7 @@ test_net_colours_and_projection(void **state)
             double px, py;
             to_page(&m, proj[2 * i], proj[2 * i + 1], &px, &py);
             assert_true(hypot(px - ps->seg[0].p[2 * i],
-                              py - ps->seg[0].p[2 * i + 1]) <= 2.0 / 256);
+                              py - ps->seg[0].p[2 * i + 1]) <= 2 * COORD_ROUND);
         }
         free(svg);
         free(ps);
@@ -1105,8 +1122,10 @@ test_hull(void **state)
     assert_int_equal(cf_figure_add_hull(fig, pts, 6, NULL), 0);
     svg = render_svg(fig);
     p = strstr(svg, "</defs>");
-    p = strstr(p != NULL ? p : svg, "fill-opacity:0.35");
+    p = strstr(p != NULL ? p : svg, " fill-opacity=\"0.35\"");
     assert_non_null(p);
+    while (p > svg && strncmp(p, "<path ", 6) != 0)
+        p--;   /* the hull's path: d comes first */
     d = strstr(p, " d=\"");
     for (d += 4; *d != '"'; d++)
         if (*d == 'L')
@@ -1135,9 +1154,8 @@ test_label_halo(void **state)
     ** knockout: test_knockout.c) */
     p = strstr(svg, "</defs>");
     assert_non_null(p);
-    p = strstr(p, "stroke-width:3;");
+    p = strstr(p, " stroke=\"#ffffff\" stroke-width=\"3\"");
     assert_non_null(p);
-    assert_non_null(strstr(p, "stroke:rgb(100%,100%,100%)"));
     assert_non_null(strstr(p, "<use"));   /* the glyphs come after it */
     free(svg);
     cf_figure_destroy(fig);

@@ -34,6 +34,7 @@
 #include "curvefig/bspline.h"
 #include "curvefig/interp.h"
 #include "curvefig/offset.h"
+#include "spawn.h"
 
 static char tool[4096];
 static char srcdir[4096];
@@ -64,7 +65,7 @@ run_tool(result *r, const char *const *args)
 {
     char *argv[64], outp[300], errp[300];
     int n = 0, status;
-    pid_t pid;
+    tu_spawn_t sp;
     if (r->dir[0] == '\0') {
         snprintf(r->dir, sizeof r->dir, "/tmp/curvefig-test-XXXXXX");
         assert_non_null(mkdtemp(r->dir));
@@ -75,20 +76,13 @@ run_tool(result *r, const char *const *args)
     for (; *args != NULL && n < 63; args++)
         argv[n++] = (char *)*args;
     argv[n] = NULL;
-    fflush(NULL);
-    pid = fork();
-    assert_true(pid >= 0);
-    if (pid == 0) {
-        int fo = open(outp, O_WRONLY | O_CREAT | O_TRUNC, 0600);
-        int fe = open(errp, O_WRONLY | O_CREAT | O_TRUNC, 0600);
-        if (fo < 0 || fe < 0 || chdir(r->dir) != 0)
-            _exit(126);
-        dup2(fo, STDOUT_FILENO);
-        dup2(fe, STDERR_FILENO);
-        execv(tool, argv);
-        _exit(127);
-    }
-    assert_true(waitpid(pid, &status, 0) == pid);
+    memset(&sp, 0, sizeof sp);
+    sp.argv = (const char *const *)argv;
+    sp.dir = r->dir;
+    sp.out = outp;
+    sp.err = errp;
+    status = tu_spawn(&sp);
+    assert_true(status >= 0);
     r->status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     slurp(outp, r->out, sizeof r->out);
     slurp(errp, r->err, sizeof r->err);

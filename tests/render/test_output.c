@@ -22,6 +22,7 @@
 #include "png-private.h"
 #include "testutil.h"
 #include "pngtest.h"
+#include "spawn.h"
 
 /* A figure with every kind of element and labels in four scripts. */
 static cf_figure_t *
@@ -1075,46 +1076,30 @@ static const char *tool_path;   /* argv[1]: the built curvefig, or NULL */
 static int
 run_tool(const char *const *args, bool system_fonts, char *out, size_t cap)
 {
+    static const char *const system_env[] = {
+        "FONTCONFIG_FILE=/etc/fonts/fonts.conf", "FONTCONFIG_PATH", NULL
+    };
+    static const char *const own_env[] = {
+        "FONTCONFIG_FILE", "FONTCONFIG_PATH", NULL
+    };
     const char *argv[16];
-    int fd[2], status;
-    size_t n = 0, len = 0;
-    pid_t pid;
+    char sink[1];
+    tu_spawn_t sp;
+    int status;
+    size_t n = 0;
     argv[n++] = tool_path;
     while (args[n - 1] != NULL && n < 15) {
         argv[n] = args[n - 1];
         n++;
     }
     argv[n] = NULL;
-    assert_int_equal(pipe(fd), 0);
-    pid = fork();
-    assert_true(pid >= 0);
-    if (pid == 0) {
-        dup2(fd[1], STDOUT_FILENO);
-        close(fd[0]);
-        close(fd[1]);
-        if (system_fonts)
-            setenv("FONTCONFIG_FILE", "/etc/fonts/fonts.conf", 1);
-        else
-            unsetenv("FONTCONFIG_FILE");
-        unsetenv("FONTCONFIG_PATH");
-        execv(tool_path, (char *const *)argv);
-        _exit(127);
-    }
-    close(fd[1]);
-    for (;;) {
-        char sink[512];
-        ssize_t k = out != NULL && len + 1 < cap
-                        ? read(fd[0], out + len, cap - 1 - len)
-                        : read(fd[0], sink, sizeof sink);
-        if (k <= 0)
-            break;
-        if (out != NULL && len + 1 < cap)
-            len += (size_t)k;
-    }
-    if (out != NULL)
-        out[len] = '\0';
-    close(fd[0]);
-    assert_true(waitpid(pid, &status, 0) == pid);
+    memset(&sp, 0, sizeof sp);
+    sp.argv = argv;
+    sp.env = system_fonts ? system_env : own_env;
+    sp.capture = out != NULL ? out : sink;
+    sp.capture_cap = out != NULL ? cap : sizeof sink;
+    status = tu_spawn(&sp);
+    assert_true(status >= 0);
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 

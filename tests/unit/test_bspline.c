@@ -1,4 +1,6 @@
-/* B-spline and NURBS curves (curvefig/bspline.h). */
+/* B-spline and NURBS curves (curvefig/bspline.h). This file has the first
+** sections; the others are in test_bspline_ops.c and test_bspline_nurbs.c,
+** the shared helpers in test_bspline.h. */
 #include "test_bspline.h"
 
 /* ---- the thesis's sample curve ------------------------------------------ */

@@ -11,7 +11,9 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+
 #include <cmocka.h>
+
 #include "curvefig/bspline.h"
 #include "../../src/bspline-private.h"
 #include "testutil.h"

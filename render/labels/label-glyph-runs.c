@@ -9,6 +9,7 @@
 ** (no rise, no shapes), so nothing else moves a glyph.  The SVG writer
 ** draws each glyph's outline once and uses it at these origins.
 */
+#include "label-glyph-runs.h"
 #include "label-impl.h"
 
 /* Whether every glyph of the layout is a glyph of its font (pango draws a

@@ -12,7 +12,7 @@
 #include <cairo.h>
 
 #include "grow.h"
-#include "label-cairo.h"
+#include "label-glyph-runs.h"
 #include "output-private.h"
 
 struct cf__svg_glyph {

@@ -29,7 +29,7 @@
 #include <librsvg/rsvg.h>
 
 #include "backend.h"
-#include "label-cairo.h"
+#include "label-glyph-runs.h"
 #include "curvefig/output.h"
 #include "imgcmp.h"
 #include "output-private.h"

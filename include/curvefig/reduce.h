@@ -1,5 +1,5 @@
 /*
-** Degree reduction of Bézier and B-spline curves (docs/library.md,
+** Degree reduction of Bézier and B-spline curves (docs/approximation.md,
 ** "Degree reduction").
 **
 ** A Bézier curve c of degree n is replaced by a curve r of degree

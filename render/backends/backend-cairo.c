@@ -128,38 +128,6 @@ draw_path(void *ctx, const cf__path_t *path, const cf__paint_t *paint)
     cairo_stroke(cr);
 }
 
-static void
-draw_marker(void *ctx, const cf__marker_op_t *m)
-{
-    cairo_t *cr = ctx;
-    cf__marker_shape_t sh;
-
-    if (!cf__marker_shape(m, &sh))
-        return;
-    cairo_save(cr);
-    cairo_set_dash(cr, NULL, 0, 0.0);
-    append_path(cr, &sh.path);
-    switch (sh.paint) {
-    case CF__MARKER_FILL:
-        set_source(cr, &m->color, m->opacity);
-        cairo_fill(cr);
-        break;
-    case CF__MARKER_FILL_STROKE:
-        set_source(cr, &m->fill, m->opacity);
-        cairo_fill_preserve(cr);
-        cairo_set_line_width(cr, sh.line_width);
-        set_source(cr, &m->color, m->opacity);
-        cairo_stroke(cr);
-        break;
-    case CF__MARKER_STROKE:
-        cairo_set_line_width(cr, sh.line_width);
-        cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
-        set_source(cr, &m->color, m->opacity);
-        cairo_stroke(cr);
-        break;
-    }
-    cairo_restore(cr);
-}
 
 static void
 draw_text(void *ctx, const cf__text_op_t *t)
@@ -204,7 +172,7 @@ knockout(void *ctx, const double (*b)[4], size_t n)
 
 const cf__backend_t cf__cairo_backend = {
     "cairo", begin_page, begin_group, restore, clip, restore, draw_path,
-    draw_marker, draw_text, end_page, knockout
+    NULL, draw_text, end_page, knockout
 };
 
 /* device units per bp when measuring ink */

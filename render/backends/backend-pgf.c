@@ -357,34 +357,6 @@ draw_path(void *ctx, const cf__path_t *path, const cf__paint_t *paint)
     put(g, "\\end{pgfscope}\n");
 }
 
-static void
-draw_marker(void *ctx, const cf__marker_op_t *m)
-{
-    cf__pgf_t *g = ctx;
-    cf__marker_shape_t sh;
-    cf__stroke_t line;
-    if (!cf__marker_shape(m, &sh))
-        return;
-    memset(&line, 0, sizeof line);
-    line.color = m->color;
-    line.opacity = m->opacity;
-    line.width = sh.line_width;
-    line.cap = CF__CAP_BUTT;
-    line.join = CF__JOIN_ROUND;
-    put(g, "\\begin{pgfscope}");
-    if (sh.paint == CF__MARKER_FILL)
-        set_fill(g, &m->color, m->opacity);
-    else if (sh.paint == CF__MARKER_FILL_STROKE)
-        set_fill(g, &m->fill, m->opacity);
-    if (sh.paint != CF__MARKER_FILL)
-        set_stroke(g, &line);
-    put(g, "\n");
-    append_path(g, &sh.path);
-    put(g, sh.paint == CF__MARKER_FILL ? "\\pgfusepath{fill}"
-           : sh.paint == CF__MARKER_FILL_STROKE ? "\\pgfusepath{fill,stroke}"
-                                                : "\\pgfusepath{stroke}");
-    put(g, "\\end{pgfscope}\n");
-}
 
 /* ---- labels ------------------------------------------------------------- */
 
@@ -570,7 +542,7 @@ knockout(void *ctx, const double (*b)[4], size_t n)
 
 const cf__backend_t cf__pgf_backend = {
     "pgf", begin_page, begin_group, end_group, clip, unclip, draw_path,
-    draw_marker, draw_text, end_page, knockout
+    NULL, draw_text, end_page, knockout
 };
 
 void

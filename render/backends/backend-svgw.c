@@ -1,14 +1,17 @@
 /*
-** The SVG writer: a display list as an SVG document without cairo, for
-** the WebAssembly module of the course pages (docs/interactive.md), where
-** there is no cairo.  It draws what the cairo backend draws (the same
-** paths, paints, markers of render/dlist/marker.c, clips and groups), as SVG
-** elements: paths with their own fill, stroke, caps, joins, dashes and
-** opacities; each clip a <clipPath>; a label as the outlines of its
-** glyphs, which the caller's outline function gives (natively from pango,
-** render/backends/glyph-outline.c; in the page from the glyph data embedded at
-** export time), a halo stroked under them.  Caps and joins carry over
-** from a stroke to a later marker of the same group as in cairo's state.
+** The SVG writer: a display list as an SVG document, the one writer of
+** SVG (files and the live view through render/output/formats.c, overlay
+** animations through render/output/svg-steps.c, the course pages in the
+** browser module).  Paths as <path> elements with their own fill, stroke,
+** caps, joins, dashes and opacities, inside one group that sets what
+** most of them share (no fill, round caps and joins, cairo's miter limit
+** 10); each element of the figure a <g class="KIND" data-index="N">;
+** each clip a <clipPath>; markers come as paths (render/dlist/marker.c).
+** A label natively: a <use> of each glyph's outline, each outline once
+** in <defs> (render/output/svg-glyphs.c); in the page, where there is no
+** pango: the outlines of its glyphs as one path (the outline function).
+** A halo: the same outlines stroked under them.  Numbers with at most 3
+** decimals (1/1000 bp); colours exact (#rrggbb or percentages).
 */
 #include <math.h>
 #include <stdio.h>
@@ -16,13 +19,14 @@
 
 #include "backend.h"
 #include "buffer.h"
+#include "grow.h"
 
 #define PI 3.14159265358979323846
 
 static void
 put(cf__svgw_t *w, const char *s)
 {
-    cf__buf_append(w->out, s, strlen(s));
+    cf__buf_append(w->dst, s, strlen(s));
 }
 
 int
@@ -45,7 +49,7 @@ cf__svg_put_num(struct cf__buf *b, double v)
 static void
 put_num(cf__svgw_t *w, double v)
 {
-    if (cf__svg_put_num(w->out, v) != 0)
+    if (cf__svg_put_num(w->dst, v) != 0)
         w->bad = true;
 }
 
@@ -57,14 +61,42 @@ put_xy(cf__svgw_t *w, double x, double y)
     put_num(w, y);
 }
 
+/* One channel as a percentage, at most 3 decimals, no trailing zeros. */
+static void
+put_percent(cf__svgw_t *w, double c)
+{
+    put_num(w, 100 * (c > 0 ? c < 1 ? c : 1 : 0));
+    put(w, "%");
+}
+
+/* A colour: #rrggbb when its channels are whole 8-bit values (what a
+** 0-255 or hexadecimal colour of a theme gives), else rgb() of
+** percentages, so that either way the viewer gets the exact colour. */
 static void
 put_color(cf__svgw_t *w, const char *attr, const cf_color_t *c,
           double alpha)
 {
-    char b[96];
-    snprintf(b, sizeof b, " %s=\"rgb(%.3f%%,%.3f%%,%.3f%%)\"", attr,
-             100 * c->r, 100 * c->g, 100 * c->b);
-    put(w, b);
+    const double ch[3] = { c->r, c->g, c->b };
+    char b[64];
+    bool bytes = true;
+    int i, v[3];
+    for (i = 0; i < 3; i++) {
+        double k = ch[i] * 255;
+        v[i] = k >= 0 && k <= 255 ? (int)lround(k) : -1;
+        bytes = bytes && v[i] >= 0 && fabs(k - v[i]) < 1e-6;
+    }
+    put(w, " ");
+    put(w, attr);
+    if (bytes) {
+        snprintf(b, sizeof b, "=\"#%02x%02x%02x\"", v[0], v[1], v[2]);
+        put(w, b);
+    } else {
+        put(w, "=\"rgb(");
+        for (i = 0; i < 3; i++) {
+            put_percent(w, ch[i]);
+            put(w, i < 2 ? "," : ")\"");
+        }
+    }
     if (alpha < 1) {
         snprintf(b, sizeof b, " %s-opacity=\"%.4g\"", attr,
                  alpha > 0 ? alpha : 0);
@@ -157,20 +189,21 @@ put_path(cf__svgw_t *w, const cf__path_t *p)
     }
 }
 
+/* A stroke's attributes; caps and joins where they differ from the
+** page's round ones (begin_page). */
 static void
-put_stroke(cf__svgw_t *w, const cf__stroke_t *s, cf__cap_t cap,
-           cf__join_t join, bool dashed)
+put_stroke(cf__svgw_t *w, const cf__stroke_t *s)
 {
     size_t i;
     put_color(w, "stroke", &s->color, s->color.a * s->opacity);
     put(w, " stroke-width=\"");
     put_num(w, s->width);
-    put(w, "\" stroke-miterlimit=\"10\"");
-    if (cap == CF__CAP_ROUND)
-        put(w, " stroke-linecap=\"round\"");
-    if (join == CF__JOIN_ROUND)
-        put(w, " stroke-linejoin=\"round\"");
-    if (dashed && s->dash_count > 0) {
+    put(w, "\"");
+    if (s->cap != CF__CAP_ROUND)
+        put(w, " stroke-linecap=\"butt\"");
+    if (s->join != CF__JOIN_ROUND)
+        put(w, " stroke-linejoin=\"miter\"");
+    if (s->dash_count > 0) {
         put(w, " stroke-dasharray=\"");
         for (i = 0; i < s->dash_count; i++) {
             if (i > 0)
@@ -183,40 +216,83 @@ put_stroke(cf__svgw_t *w, const cf__stroke_t *s, cf__cap_t cap,
 
 /* ---- the backend -------------------------------------------------------- */
 
+/* A scope: an element's group, or a clip (opened: it wrote a <g>). */
 static void
-push(cf__svgw_t *w, bool group)
+push(cf__svgw_t *w, bool group, bool opened)
 {
     if (w->depth >= CF__SVGW_DEPTH) {
         w->bad = true;
         return;
     }
     w->stack[w->depth].group = group;
-    w->stack[w->depth].cap = w->depth > 0 ? w->stack[w->depth - 1].cap
-                                          : CF__CAP_BUTT;
-    w->stack[w->depth].join = w->depth > 0 ? w->stack[w->depth - 1].join
-                                           : CF__JOIN_MITER;
+    w->stack[w->depth].opened = opened;
     w->depth++;
 }
 
 static void
+pop(cf__svgw_t *w)
+{
+    w->depth--;
+    if (w->stack[w->depth].opened)
+        put(w, "</g>\n");
+}
+
+static void
+put_escaped(cf__buf_t *b, const char *s)
+{
+    for (; *s != '\0'; s++) {
+        const char *r = *s == '<' ? "&lt;" : *s == '>' ? "&gt;"
+                      : *s == '&' ? "&amp;" : *s == '"' ? "&quot;" : NULL;
+        if (r != NULL)
+            cf__buf_append(b, r, strlen(r));
+        else
+            cf__buf_append(b, s, 1);
+    }
+}
+
+/* The document's head goes to out, the drawing to body; end_page puts
+** the glyph outlines the drawing used between them. */
+static void
 begin_page(void *ctx, const cf__page_t *pg)
 {
     cf__svgw_t *w = ctx;
+    cf__buf_t *out = w->out;
+    memset(&w->body, 0, sizeof w->body);
+    w->dst = out;
     put(w, "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-           "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"");
+           "<svg xmlns=\"http://www.w3.org/2000/svg\"");
+    if (w->uses != NULL)
+        put(w, " xmlns:xlink=\"http://www.w3.org/1999/xlink\"");
+    put(w, " width=\"");
     put_num(w, pg->width);
     put(w, "pt\" height=\"");
     put_num(w, pg->height);
     put(w, "pt\" viewBox=\"0 0 ");
     put_xy(w, pg->width, pg->height);
     put(w, "\">\n");
+    if (w->title != NULL || w->caption != NULL) {
+        put(w, "<title>");
+        put_escaped(out, w->title != NULL ? w->title : w->caption);
+        put(w, "</title>\n");
+    }
+    if (w->caption != NULL && w->caption[0] != '\0') {
+        put(w, "<desc>");
+        put_escaped(out, w->caption);
+        put(w, "</desc>\n");
+    }
+    w->dst = &w->body;
     w->depth = 0;
-    push(w, true);
+    push(w, true, false);
     if (pg->background.a > 0) {
         put(w, "<rect width=\"100%\" height=\"100%\"");
         put_color(w, "fill", &pg->background, pg->background.a);
         put(w, "/>\n");
     }
+    /* what most paths have: unfilled, round caps and joins; cairo's
+    ** miter limit (SVG's default is 4) */
+    put(w, "<g fill=\"none\" stroke-linecap=\"round\" "
+           "stroke-linejoin=\"round\" stroke-miterlimit=\"10\">\n");
+    push(w, false, true);
 }
 
 static void
@@ -231,7 +307,7 @@ begin_group(void *ctx, const char *name, size_t index, const char *overlay)
     put(w, "\" data-index=\"");
     put(w, b);
     put(w, "\">\n");
-    push(w, true);
+    push(w, true, true);
 }
 
 /* Close the scopes opened since the innermost group, then it. */
@@ -239,9 +315,9 @@ static void
 end_group(void *ctx)
 {
     cf__svgw_t *w = ctx;
-    while (w->depth > 1) {
-        bool g = w->stack[--w->depth].group;
-        put(w, "</g>\n");
+    while (w->depth > 2) {
+        bool g = w->stack[w->depth - 1].group;
+        pop(w);
         if (g)
             break;
     }
@@ -253,8 +329,7 @@ clip(void *ctx, bool has_rect, const double r[4])
     cf__svgw_t *w = ctx;
     char b[48];
     if (!has_rect) {
-        put(w, "<g>\n");
-        push(w, false);
+        push(w, false, false);
         return;
     }
     snprintf(b, sizeof b, "c%u", ++w->clips);
@@ -271,17 +346,15 @@ clip(void *ctx, bool has_rect, const double r[4])
     put(w, "\"/></clipPath>\n<g clip-path=\"url(#");
     put(w, b);
     put(w, ")\">\n");
-    push(w, false);
+    push(w, false, true);
 }
 
 static void
 unclip(void *ctx)
 {
     cf__svgw_t *w = ctx;
-    if (w->depth > 1 && !w->stack[w->depth - 1].group) {
-        w->depth--;
-        put(w, "</g>\n");
-    }
+    if (w->depth > 2 && !w->stack[w->depth - 1].group)
+        pop(w);
 }
 
 static void
@@ -294,52 +367,83 @@ draw_path(void *ctx, const cf__path_t *path, const cf__paint_t *paint)
     if (paint->fill)
         put_color(w, "fill", &paint->fill_color,
                   paint->fill_color.a * paint->fill_opacity);
+    if (paint->stroke)
+        put_stroke(w, &paint->line);
+    put(w, "/>\n");
+}
+
+/* ---- labels ------------------------------------------------------------- */
+
+/* Mark glyph id used; false when out of memory. */
+static bool
+use_glyph(cf__svgw_t *w, unsigned id)
+{
+    if (id >= w->nused) {
+        size_t cap = w->nused;
+        unsigned char *u = cf__grow_array(w->used, &cap, (size_t)id + 1, 1,
+                                          64);
+        if (u == NULL)
+            return false;
+        memset(u + w->nused, 0, cap - w->nused);
+        w->used = u;
+        w->nused = cap;
+    }
+    w->used[id] = 1;
+    return true;
+}
+
+/* The label's glyphs as <use>s of their outlines and its fraction rules
+** as a path, in a group that fills them in colour c, or strokes them
+** (halo not NULL). */
+static void
+put_uses(cf__svgw_t *w, const cf__buf_t *uses, const cf__buf_t *rules,
+         const cf_color_t *c, double alpha, const cf__stroke_t *halo)
+{
+    const cf__svgw_use_t *u = (const cf__svgw_use_t *)(void *)uses->data;
+    size_t i, n = uses->size / sizeof *u;
+    char id[32];
+    put(w, "<g");
+    if (halo != NULL)
+        put_stroke(w, halo);
     else
-        put(w, " fill=\"none\"");
-    if (paint->stroke) {
-        w->stack[w->depth - 1].cap = paint->line.cap;
-        w->stack[w->depth - 1].join = paint->line.join;
-        put_stroke(w, &paint->line, paint->line.cap, paint->line.join, true);
+        put_color(w, "fill", c, alpha);
+    put(w, ">\n");
+    for (i = 0; i < n; i++) {
+        if (!use_glyph(w, u[i].id))
+            w->bad = true;
+        snprintf(id, sizeof id, "<use xlink:href=\"#g%u\" x=\"", u[i].id);
+        put(w, id);
+        put_num(w, u[i].x);
+        put(w, "\" y=\"");
+        put_num(w, u[i].y);
+        put(w, "\"/>\n");
     }
-    put(w, "/>\n");
+    if (rules->size > 0) {
+        put(w, "<path d=\"");
+        cf__buf_append(w->dst, rules->data, rules->size);
+        put(w, "\"/>\n");
+    }
+    put(w, "</g>\n");
 }
 
+/* The stroke of a label's halo: its outlines stroked 2 halo wide (round
+** joins, which a closed outline has only). */
 static void
-draw_marker(void *ctx, const cf__marker_op_t *m)
+halo_stroke(const cf__text_op_t *t, cf__stroke_t *s)
 {
-    cf__svgw_t *w = ctx;
-    cf__marker_shape_t sh;
-    cf__stroke_t s;
-    if (!cf__marker_shape(m, &sh))
-        return;
-    put(w, "<path d=\"");
-    put_path(w, &sh.path);
-    put(w, "\"");
-    memset(&s, 0, sizeof s);
-    s.color = m->color;
-    s.opacity = m->opacity;
-    s.width = sh.line_width;
-    switch (sh.paint) {
-    case CF__MARKER_FILL:
-        put_color(w, "fill", &m->color, m->color.a * m->opacity);
-        break;
-    case CF__MARKER_FILL_STROKE:
-        put_color(w, "fill", &m->fill, m->fill.a * m->opacity);
-        put_stroke(w, &s, w->stack[w->depth - 1].cap,
-                   w->stack[w->depth - 1].join, false);
-        break;
-    case CF__MARKER_STROKE:
-        put(w, " fill=\"none\"");
-        put_stroke(w, &s, CF__CAP_BUTT, w->stack[w->depth - 1].join, false);
-        break;
-    }
-    put(w, "/>\n");
+    memset(s, 0, sizeof *s);
+    s->color = t->halo_color;
+    s->opacity = 1;
+    s->width = 2 * t->halo;
+    s->cap = CF__CAP_ROUND;
+    s->join = CF__JOIN_ROUND;
 }
 
+/* The label as one path of its outlines (the page's way, and natively a
+** label with a glyph missing from its font). */
 static void
-draw_text(void *ctx, const cf__text_op_t *t)
+put_outline(cf__svgw_t *w, const cf__text_op_t *t)
 {
-    cf__svgw_t *w = ctx;
     cf__buf_t d;
     memset(&d, 0, sizeof d);
     if (w->outline(w->outline_ctx, t, &d) != 0) {
@@ -347,39 +451,97 @@ draw_text(void *ctx, const cf__text_op_t *t)
         cf__buf_free(&d);
         return;
     }
-    if (d.size == 0)
-        return;
-    if (t->halo > 0 && t->halo_color.a > 0) {
+    if (d.size > 0 && t->halo > 0 && t->halo_color.a > 0) {
         cf__stroke_t s;
-        memset(&s, 0, sizeof s);
-        s.color = t->halo_color;
-        s.opacity = 1;
-        s.width = 2 * t->halo;
+        halo_stroke(t, &s);
         put(w, "<path d=\"");
-        cf__buf_append(w->out, d.data, d.size);
-        put(w, "\" fill=\"none\"");
-        put_stroke(w, &s, w->stack[w->depth - 1].cap, CF__JOIN_ROUND,
-                   false);
+        cf__buf_append(w->dst, d.data, d.size);
+        put(w, "\"");
+        put_stroke(w, &s);
         put(w, "/>\n");
     }
-    put(w, "<path d=\"");
-    cf__buf_append(w->out, d.data, d.size);
-    put(w, "\"");
-    put_color(w, "fill", &t->color, t->color.a * t->opacity);
-    put(w, "/>\n");
+    if (d.size > 0) {
+        put(w, "<path d=\"");
+        cf__buf_append(w->dst, d.data, d.size);
+        put(w, "\"");
+        put_color(w, "fill", &t->color, t->color.a * t->opacity);
+        put(w, "/>\n");
+    }
     cf__buf_free(&d);
+}
+
+/* A label: the halo (its outlines stroked with round joins, which a
+** closed outline has only), then the glyphs filled. */
+static void
+draw_text(void *ctx, const cf__text_op_t *t)
+{
+    cf__svgw_t *w = ctx;
+    cf__buf_t uses, rules;
+    int r;
+    if (w->uses == NULL) {
+        put_outline(w, t);
+        return;
+    }
+    memset(&uses, 0, sizeof uses);
+    memset(&rules, 0, sizeof rules);
+    r = w->uses(w->outline_ctx, t, &uses, &rules);
+    if (r == 1)
+        put_outline(w, t);
+    else if (r != 0 || uses.failed || rules.failed)
+        w->bad = true;
+    else if (uses.size > 0 || rules.size > 0) {
+        if (t->halo > 0 && t->halo_color.a > 0) {
+            cf__stroke_t s;
+            halo_stroke(t, &s);
+            put_uses(w, &uses, &rules, NULL, 0, &s);
+        }
+        put_uses(w, &uses, &rules, &t->color, t->color.a * t->opacity,
+                 NULL);
+    }
+    cf__buf_free(&uses);
+    cf__buf_free(&rules);
+}
+
+/* The outlines of the glyphs used, each once. */
+static void
+put_defs(cf__svgw_t *w)
+{
+    size_t id;
+    char b[64];
+    bool any = false;
+    for (id = 0; id < w->nused; id++) {
+        if (!w->used[id])
+            continue;
+        if (!any)
+            put(w, "<defs>\n");
+        any = true;
+        snprintf(b, sizeof b, "<symbol overflow=\"visible\" id=\"g%zu\">"
+                              "<path d=\"", id);
+        put(w, b);
+        if (w->glyph_path(w->outline_ctx, (unsigned)id, w->dst) != 0)
+            w->bad = true;
+        put(w, "\"/></symbol>\n");
+    }
+    if (any)
+        put(w, "</defs>\n");
 }
 
 static int
 end_page(void *ctx)
 {
     cf__svgw_t *w = ctx;
-    while (w->depth > 0) {
-        w->depth--;
-        if (w->depth > 0)
-            put(w, "</g>\n");
-    }
+    while (w->depth > 0)
+        pop(w);
     put(w, "</svg>\n");
+    w->dst = w->out;
+    put_defs(w);
+    cf__buf_append(w->out, w->body.data, w->body.size);
+    if (w->body.failed)
+        w->bad = true;
+    cf__buf_free(&w->body);
+    cf_free(w->used);
+    w->used = NULL;
+    w->nused = 0;
     return w->out->failed || w->bad ? -1 : 0;
 }
 
@@ -416,10 +578,10 @@ knockout(void *ctx, const double (*b)[4], size_t n)
     put(w, "<g clip-path=\"url(#");
     put(w, id);
     put(w, ")\">\n");
-    push(w, false);
+    push(w, false, true);
 }
 
 const cf__backend_t cf__svgw_backend = {
     "svg", begin_page, begin_group, end_group, clip, unclip, draw_path,
-    draw_marker, draw_text, end_page, knockout
+    NULL, draw_text, end_page, knockout
 };

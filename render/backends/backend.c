@@ -63,6 +63,19 @@ draw_text(const play_t *pl, const cf__op_t *op, const cf__backend_t *be,
     be->draw_text(ctx, &t);
 }
 
+/* A marker: whole to a backend that takes it so (the dump), else as the
+** path and paint of render/dlist/marker.c. */
+static void
+draw_marker(const cf__op_t *op, const cf__backend_t *be, void *ctx)
+{
+    cf__marker_shape_t sh;
+    cf__paint_t paint;
+    if (be->draw_marker != NULL)
+        be->draw_marker(ctx, &op->u.marker);
+    else if (cf__marker_paint(&op->u.marker, &sh, &paint))
+        be->draw_path(ctx, &sh.path, &paint);
+}
+
 static void
 play_pass(const cf__dl_t *dl, size_t from, size_t to,
           const cf__backend_t *be, void *ctx, pass_t pass, play_t *pl)
@@ -95,7 +108,7 @@ play_pass(const cf__dl_t *dl, size_t from, size_t to,
             break;
         case CF__OP_MARKER:
             if (pass != PASS_KNOCKOUTS)
-                be->draw_marker(ctx, &op->u.marker);
+                draw_marker(op, be, ctx);
             break;
         case CF__OP_TEXT:
             draw_text(pl, op, be, ctx, pass);

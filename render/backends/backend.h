@@ -7,19 +7,21 @@
 ** change.
 **
 ** Backends:
-**   cairo (render/backends/backend-cairo.c): SVG, PDF, PS, EPS and PNG
-**   surfaces, and
-**     the recording and raster surfaces the layout measures ink with;
+**   cairo (render/backends/backend-cairo.c): PDF, PS, EPS and PNG
+**     surfaces;
 **   dump  (render/backends/backend-dump.c): one line of text per operation,
 **     deterministic, for tests;
 **   pgf   (render/backends/backend-pgf.c): a pgfpicture for TeX, labels as TeX
 **     source;
-**   svg writer (render/backends/backend-svgw.c): SVG without cairo, for the
-**     WebAssembly module of the course pages.
+**   svg writer (render/backends/backend-svgw.c): every SVG (files, the
+**     live view, overlay animations, the course pages' module);
+**   measure (render/backends/measure.c): the layout's ink questions.
+** Drawing backends receive markers as paths (render/dlist/marker.c).
 */
 #ifndef CURVEFIG_RENDER_BACKEND_H
 #define CURVEFIG_RENDER_BACKEND_H
 
+#include "buffer.h"
 #include "dlist.h"
 
 /* The page a display list is drawn on. */
@@ -47,6 +49,10 @@ typedef struct cf__backend {
     void (*unclip)(void *ctx);
     void (*draw_path)(void *ctx, const cf__path_t *path,
                       const cf__paint_t *paint);
+    /* NULL in a backend that draws (cairo, PGF, the SVG writer, the
+    ** measuring one): a marker comes as a path (draw_path) with every
+    ** stroke property set (render/dlist/marker.c); a backend that
+    ** describes the display list (the dump) takes the marker whole. */
     void (*draw_marker)(void *ctx, const cf__marker_op_t *marker);
     void (*draw_text)(void *ctx, const cf__text_op_t *text);
     /* Finish the page; nonzero when the device failed. */
@@ -125,25 +131,45 @@ void cf__pgf_fini(cf__pgf_t *g);
 /* ---- the SVG writer ----------------------------------------------------- */
 
 /* Its functions; ctx is a cf__svgw_t with out (empty), outline and
-** outline_ctx set and the rest zero.  outline appends to d the SVG path
-** data of the glyphs (and fraction rules) of label t at its origin
-** (t->ox, t->oy), in page units; nonzero when it failed.  end_page fails
-** when out ran out of memory, a coordinate was not finite or groups
-** nested deeper than CF__SVGW_DEPTH. */
+** outline_ctx set and the rest zero (title, caption, uses and glyph_path
+** optional).  outline appends to d the SVG path data of the glyphs (and
+** fraction rules) of label t at its origin (t->ox, t->oy), in page units;
+** nonzero when it failed.  With uses (natively), a label is instead its
+** glyphs: uses appends a cf__svgw_use_t to `uses` for each glyph (its
+** outline's number, 1 and up, the same for the same glyph of the same
+** font, and its origin on the page) and the path data of the fraction
+** rules to `rules`; 1 when it cannot (a glyph missing from its font:
+** then outline), other nonzero when it failed.  glyph_path appends the
+** path data of outline `id` at the origin; the document holds each
+** outline used once, in <defs>.  end_page fails when out ran out of
+** memory, a coordinate was not finite or groups nested deeper than
+** CF__SVGW_DEPTH. */
 #define CF__SVGW_DEPTH 64
+typedef struct cf__svgw_use {
+    unsigned id;
+    double x, y;
+} cf__svgw_use_t;
+
 typedef struct cf__svgw {
     struct cf__buf *out;
     int (*outline)(void *outline_ctx, const cf__text_op_t *t,
                    struct cf__buf *d);
     void *outline_ctx;
+    const char *title, *caption;   /* <title> and <desc>, may be NULL */
+    int (*uses)(void *outline_ctx, const cf__text_op_t *t,
+                struct cf__buf *uses, struct cf__buf *rules);
+    int (*glyph_path)(void *outline_ctx, unsigned id, struct cf__buf *d);
+    /* the writer's own */
     struct {
         bool group;              /* an element's group, else a clip scope */
-        cf__cap_t cap;           /* the last stroke's, as cairo's state */
-        cf__join_t join;
+        bool opened;             /* it wrote a <g> */
     } stack[CF__SVGW_DEPTH];
     int depth;
     unsigned clips;
     bool bad;
+    struct cf__buf body, *dst;   /* the drawing, written after the <defs> */
+    unsigned char *used;         /* used[id]: outline id is used */
+    size_t nused;
 } cf__svgw_t;
 
 extern const cf__backend_t cf__svgw_backend;
@@ -163,5 +189,8 @@ typedef struct cf__glyph_outliner {
 int cf__glyph_outline(void *outliner, const cf__text_op_t *t,
                       struct cf__buf *d);
 void cf__glyph_outliner_fini(cf__glyph_outliner_t *g);
+/* A cairo path (a cairo_path_t *) as SVG path data appended to d: 0, or
+** -1 when the path holds an error or out of memory. */
+int cf__svg_path_data(const void *cairo_path, struct cf__buf *d);
 
 #endif

@@ -22,24 +22,12 @@ put_point(cf__buf_t *d, const char *op, const cairo_path_data_t *p)
 }
 
 int
-cf__glyph_outline(void *outliner, const cf__text_op_t *t, cf__buf_t *d)
+cf__svg_path_data(const void *cairo_path, cf__buf_t *d)
 {
-    cf__glyph_outliner_t *g = outliner;
-    cairo_path_t *path;
+    const cairo_path_t *path = cairo_path;
     int i, bad = 0;
-    if (g->cr == NULL) {
-        cairo_surface_t *s = cairo_recording_surface_create(
-            CAIRO_CONTENT_ALPHA, NULL);
-        g->cr = cairo_create(s);
-        cairo_surface_destroy(s);
-    }
-    cairo_new_path(g->cr);
-    cf__label_path(t->label, g->cr, t->ox, t->oy);
-    path = cairo_copy_path(g->cr);
-    if (path->status != CAIRO_STATUS_SUCCESS) {
-        cairo_path_destroy(path);
+    if (path->status != CAIRO_STATUS_SUCCESS)
         return -1;
-    }
     for (i = 0; i < path->num_data && !bad;
          i += path->data[i].header.length) {
         const cairo_path_data_t *p = &path->data[i];
@@ -59,8 +47,27 @@ cf__glyph_outline(void *outliner, const cf__text_op_t *t, cf__buf_t *d)
             break;
         }
     }
-    cairo_path_destroy(path);
     return bad ? -1 : 0;
+}
+
+int
+cf__glyph_outline(void *outliner, const cf__text_op_t *t, cf__buf_t *d)
+{
+    cf__glyph_outliner_t *g = outliner;
+    cairo_path_t *path;
+    int r;
+    if (g->cr == NULL) {
+        cairo_surface_t *s = cairo_recording_surface_create(
+            CAIRO_CONTENT_ALPHA, NULL);
+        g->cr = cairo_create(s);
+        cairo_surface_destroy(s);
+    }
+    cairo_new_path(g->cr);
+    cf__label_path(t->label, g->cr, t->ox, t->oy);
+    path = cairo_copy_path(g->cr);
+    r = cf__svg_path_data(path, d);
+    cairo_path_destroy(path);
+    return r;
 }
 
 void

@@ -188,28 +188,6 @@ draw_path(void *ctx, const cf__path_t *path, const cf__paint_t *paint)
     }
 }
 
-static void
-draw_marker(void *ctx, const cf__marker_op_t *mk)
-{
-    measure_t *g = ctx;
-    cf__marker_shape_t sh;
-    cf__pen_t pen = { 0, CF__CAP_BUTT, CF__JOIN_MITER, NULL, 0 };
-    if (!cf__marker_shape(mk, &sh))
-        return;
-    pen.width = sh.line_width;
-    switch (sh.paint) {
-    case CF__MARKER_FILL:
-        fill(g, &sh.path, &g->m, mk->color.a * mk->opacity);
-        break;
-    case CF__MARKER_FILL_STROKE:
-        fill(g, &sh.path, &g->m, mk->fill.a * mk->opacity);
-        stroke(g, &sh.path, &g->m, &pen, mk->color.a * mk->opacity);
-        break;
-    case CF__MARKER_STROKE:
-        stroke(g, &sh.path, &g->m, &pen, mk->color.a * mk->opacity);
-        break;
-    }
-}
 
 static void
 draw_text(void *ctx, const cf__text_op_t *t)
@@ -238,7 +216,7 @@ end_page(void *ctx)
 
 static const cf__backend_t measure_backend = {
     "measure", begin_page, begin_group, pop, clip, pop, draw_path,
-    draw_marker, draw_text, end_page, NULL
+    NULL, draw_text, end_page, NULL
 };
 
 static void

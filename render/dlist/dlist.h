@@ -162,8 +162,8 @@ void cf__dl_marker(cf__dl_t *dl, const cf__marker_op_t *m);
 
 /* The outline of a marker symbol (render/dlist/marker.c), the same for every
 ** backend: its path and how it is painted — filled in the marker colour,
-** filled with `fill` then stroked in the marker colour, or only stroked
-** (butt caps); strokes of width line_width, no dash. */
+** filled with `fill` then stroked in the marker colour, or only stroked;
+** strokes of width line_width. */
 typedef enum cf__marker_paint {
     CF__MARKER_FILL,
     CF__MARKER_FILL_STROKE,
@@ -181,6 +181,12 @@ typedef struct cf__marker_shape {
 
 /* false: nothing to draw (CF_MARKER_NONE or unknown). */
 bool cf__marker_shape(const cf__marker_op_t *m, cf__marker_shape_t *out);
+/* The marker as a drawing backend receives it: its shape (out) and the
+** paint of that path, every stroke property explicit (butt caps, miter
+** joins, no dash; the circle's path closed, so it has no caps), the fill
+** and stroke colours and opacity of the marker.  false: nothing to draw. */
+bool cf__marker_paint(const cf__marker_op_t *m, cf__marker_shape_t *out,
+                      cf__paint_t *paint);
 void cf__dl_text(cf__dl_t *dl, const cf__text_op_t *t);
 
 /* Append every operation of src to dst, moved by (dx, dy) on the page

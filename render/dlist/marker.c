@@ -1,10 +1,13 @@
 /*
 ** Marker symbols as outlines (render/dlist/dlist.h): dots and circles as arcs,
 ** squares as rectangles, diamonds, triangles and stars as polygons,
-** crosses, pluses and ticks as stroked bars.  Every backend draws these,
-** so a marker looks the same in every format.
+** crosses, pluses and ticks as stroked bars.  The seam (render/backends/
+** backend.c) hands a drawing backend each marker as this path with a
+** paint whose caps, joins and dash are set here, so a marker looks the
+** same in every format and owes nothing to what was drawn before it.
 */
 #include <math.h>
+#include <string.h>
 
 #include "dlist.h"
 
@@ -62,6 +65,8 @@ cf__marker_shape(const cf__marker_op_t *m, cf__marker_shape_t *s)
         v[3] = 0;
         v[4] = 2 * PI;
         put(s, CF__SEG_ARC, v, 5);
+        /* closed: a circle has no ends, so no caps */
+        put(s, CF__SEG_CLOSE, NULL, 0);
         if (m->marker == CF_MARKER_CIRCLE) {
             s->paint = CF__MARKER_FILL_STROKE;
             s->line_width = fmax(0.5, 0.3 * r);
@@ -114,4 +119,24 @@ cf__marker_shape(const cf__marker_op_t *m, cf__marker_shape_t *s)
     default:
         return false;
     }
+}
+
+bool
+cf__marker_paint(const cf__marker_op_t *m, cf__marker_shape_t *s,
+                 cf__paint_t *paint)
+{
+    if (!cf__marker_shape(m, s))
+        return false;
+    memset(paint, 0, sizeof *paint);
+    paint->fill = s->paint != CF__MARKER_STROKE;
+    paint->stroke = s->paint != CF__MARKER_FILL;
+    paint->fill_color = s->paint == CF__MARKER_FILL ? m->color : m->fill;
+    paint->fill_opacity = m->opacity;
+    paint->line.color = m->color;
+    paint->line.opacity = m->opacity;
+    paint->line.width = s->line_width;
+    paint->line.cap = CF__CAP_BUTT;
+    paint->line.join = CF__JOIN_MITER;
+    paint->line.dash_count = 0;
+    return true;
 }

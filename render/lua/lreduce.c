@@ -11,7 +11,7 @@
 ** report = { max_error, bound, polygon_bound, l2_error } (and for a
 ** B-spline continuity, knots_removed): the measured maximum distance, the
 ** certified bounds (refined, and of the control polygons), the L2 distance
-** (see docs/library.md, "Degree reduction").
+** (see docs/approximation.md, "Degree reduction").
 */
 #include "curvefig/reduce.h"
 #include "lbezier.h"

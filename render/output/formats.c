@@ -1,8 +1,8 @@
 /*
-** The output formats: SVG, PDF, PS, EPS and PNG pages drawn from a
-** display list by the cairo backend into memory, and made deterministic
-** there (no creation dates, no per-process ids; title and caption as
-** metadata); PGF pages by the PGF backend.
+** The output formats: PDF, PS, EPS and PNG pages drawn from a display
+** list by the cairo backend into memory, and made deterministic there (no
+** creation dates; title and caption as metadata); SVG pages by the SVG
+** writer, PGF pages by the PGF backend.
 */
 #include <math.h>
 #include <stdio.h>
@@ -11,7 +11,6 @@
 
 #include <cairo-pdf.h>
 #include <cairo-ps.h>
-#include <cairo-svg.h>
 
 #include "backend.h"
 #include "output-private.h"
@@ -64,109 +63,6 @@ static int
 buf_append_str(cf__buf_t *b, const char *s)
 {
     return cf__buf_append(b, s, strlen(s));
-}
-
-static int
-append_xml_escaped(cf__buf_t *b, const char *s)
-{
-    for (; *s != '\0'; s++) {
-        int r;
-        switch (*s) {
-        case '<':
-            r = buf_append_str(b, "&lt;");
-            break;
-        case '>':
-            r = buf_append_str(b, "&gt;");
-            break;
-        case '&':
-            r = buf_append_str(b, "&amp;");
-            break;
-        case '"':
-            r = buf_append_str(b, "&quot;");
-            break;
-        default:
-            r = cf__buf_append(b, s, 1);
-        }
-        if (r != 0)
-            return r;
-    }
-    return 0;
-}
-
-static const unsigned char *
-find_bytes(const unsigned char *h, size_t n, const char *needle)
-{
-    size_t m = strlen(needle), i;
-    if (m > n)
-        return NULL;
-    for (i = 0; i + m <= n; i++)
-        if (h[i] == (unsigned char)needle[0] && memcmp(h + i, needle, m) == 0)
-            return h + i;
-    return NULL;
-}
-
-/* SVG: <title>/<desc> after the opening <svg ...> tag, and the ids cairo
-** numbers per process ("surface123") renumbered in order of appearance. */
-static int
-svg_fix(const char *title, const char *cap, const cf__buf_t *in,
-        cf__buf_t *out)
-{
-    const unsigned char *p = in->data, *end = in->data + in->size, *svg, *gt;
-    long map_from[64];
-    size_t nmap = 0;
-
-    svg = find_bytes(p, in->size, "<svg");
-    gt = svg != NULL ? memchr(svg, '>', (size_t)(end - svg)) : NULL;
-    if (gt == NULL)
-        return -1;
-    if (cf__buf_append(out, p, (size_t)(gt + 1 - p)) != 0)
-        return -1;
-    if (title != NULL || cap != NULL) {
-        if (buf_append_str(out, "\n<title>") != 0
-            || append_xml_escaped(out, title != NULL ? title : cap) != 0
-            || buf_append_str(out, "</title>") != 0)
-            return -1;
-        if (cap != NULL
-            && (buf_append_str(out, "\n<desc>") != 0
-                || append_xml_escaped(out, cap) != 0
-                || buf_append_str(out, "</desc>") != 0))
-            return -1;
-    }
-    p = gt + 1;
-    while (p < end) {
-        const unsigned char *s = find_bytes(p, (size_t)(end - p), "surface");
-        const unsigned char *d;
-        long v = 0;
-        size_t k;
-        char num[32];
-        if (s == NULL) {
-            if (cf__buf_append(out, p, (size_t)(end - p)) != 0)
-                return -1;
-            break;
-        }
-        d = s + 7;
-        if (d >= end || *d < '0' || *d > '9') {
-            if (cf__buf_append(out, p, (size_t)(d - p)) != 0)
-                return -1;
-            p = d;
-            continue;
-        }
-        while (d < end && *d >= '0' && *d <= '9' && v < 100000000)
-            v = v * 10 + (*d++ - '0');
-        for (k = 0; k < nmap && map_from[k] != v; k++)
-            ;
-        if (k == nmap) {
-            if (nmap == sizeof map_from / sizeof map_from[0])
-                return -1;
-            map_from[nmap++] = v;
-        }
-        snprintf(num, sizeof num, "surface%zu", k + 1);
-        if (cf__buf_append(out, p, (size_t)(s - p)) != 0
-            || buf_append_str(out, num) != 0)
-            return -1;
-        p = d;
-    }
-    return out->failed ? -1 : 0;
 }
 
 /* PS/EPS: drop the %%CreationDate line. */
@@ -339,6 +235,34 @@ pdf_date(char *buf, size_t cap)
 
 /* ---- one page in one format -------------------------------------------- */
 
+/* SVG: the SVG writer (render/backends/backend-svgw.c) into out, labels
+** as uses of their glyphs' outlines (render/output/svg-glyphs.c); one
+** page, of overlay step pg->first_step (0: every operation). */
+static cf_status_t
+svg_render(const cf__dl_t *dl, const cf__page_t *pg, const char *title,
+           const char *caption, cf__buf_t *out, cf_diag_t *diag)
+{
+    cf__svg_glyphs_t sg;
+    cf__svgw_t w;
+    int r;
+    memset(&sg, 0, sizeof sg);
+    memset(&w, 0, sizeof w);
+    w.out = out;
+    w.title = title;
+    w.caption = caption;
+    cf__svg_glyphs_attach(&sg, &w);
+    cf__svgw_backend.begin_page(&w, pg);
+    cf__dl_play_step(dl, pg, pg->first_step, &cf__svgw_backend, &w);
+    r = cf__svgw_backend.end_page(&w);
+    cf__svg_glyphs_fini(&sg);
+    if (r == 0)
+        return CF_STATUS_OK;
+    cf__buf_free(out);
+    return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                       "out of memory writing svg, or a coordinate that "
+                       "is not finite");
+}
+
 /* PGF: the PGF backend into out, without cairo surfaces. */
 static cf_status_t
 pgf_render(const cf__dl_t *dl, const cf__page_t *page, const char *title,
@@ -369,12 +293,6 @@ make_surface(cf_format_t format, const cf__page_t *pg, double dpi,
 {
     cairo_surface_t *surf = NULL;
     switch (format) {
-    case CF_FORMAT_SVG:
-        surf = cairo_svg_surface_create_for_stream(stream_write, raw,
-                                                   pg->width, pg->height);
-        cairo_svg_surface_restrict_to_version(surf, CAIRO_SVG_VERSION_1_1);
-        cairo_svg_surface_set_document_unit(surf, CAIRO_SVG_UNIT_PT);
-        break;
     case CF_FORMAT_PDF: {
         char date[40];
         surf = cairo_pdf_surface_create_for_stream(stream_write, raw,
@@ -463,6 +381,8 @@ cf__format_render(cf_format_t format, const cf__dl_t *dl,
     memset(&raw, 0, sizeof raw);
     if (format == CF_FORMAT_PGF)
         return pgf_render(dl, page, title, out, diag);
+    if (format == CF_FORMAT_SVG)
+        return svg_render(dl, page, title, caption, out, diag);
     pg.raster = format == CF_FORMAT_PNG;
     surf = make_surface(format, &pg, dpi, title, caption, &raw, diag);
     if (surf == NULL)
@@ -498,13 +418,11 @@ cf__format_render(cf_format_t format, const cf__dl_t *dl,
                            format_names[format],
                            cairo_status_to_string(cst));
     }
-    if (format != CF_FORMAT_SVG && format != CF_FORMAT_PS
-        && format != CF_FORMAT_EPS) {
+    if (format != CF_FORMAT_PS && format != CF_FORMAT_EPS) {
         *out = raw;
         return CF_STATUS_OK;
     }
-    r = format == CF_FORMAT_SVG ? svg_fix(title, caption, &raw, out)
-                                : ps_fix(&raw, out);
+    r = ps_fix(&raw, out);
     cf__buf_free(&raw);
     if (r != 0) {
         cf__buf_free(out);

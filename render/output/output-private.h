@@ -41,8 +41,21 @@ cf_status_t cf__figure_play(cf_figure_t *fig, unsigned step,
 int cf__label_places(const cf__dl_t *dl, const cf__page_t *page,
                      cf__buf_t *out);
 
-/* The EPS of a PS page from cf__format_render: 0, or -1 when the PS is
-** not as expected or not cairo 1.16.0's (render the EPS then), -2 out of
+/* The glyphs of the native SVG files (render/output/svg-glyphs.c): a
+** label as uses of its glyphs' outlines, each outline once in <defs>.
+** Zero at first; attach sets the writer's label functions to it (one
+** table may serve several documents); fini releases it. */
+typedef struct cf__svg_glyphs {
+    cf__glyph_outliner_t outliner;   /* labels with a missing glyph */
+    struct cf__svg_glyph *g;
+    size_t n, cap;
+} cf__svg_glyphs_t;
+
+void cf__svg_glyphs_attach(cf__svg_glyphs_t *sg, cf__svgw_t *w);
+void cf__svg_glyphs_fini(cf__svg_glyphs_t *sg);
+
+/* The EPS of a PS page from cf__format_render (cairo 1.16.0 only): 0, or
+** -1 when the PS is not as expected (render the EPS then), -2 out of
 ** memory. */
 int cf__eps_from_ps(const cf__buf_t *ps, cf__buf_t *eps);
 

@@ -1,13 +1,10 @@
 /*
-** The animated SVG of a figure with overlay steps: cairo's SVG of every
-** step (render/output/formats.c), one group each, shown in turn by a SMIL
-** <animate> of its visibility, looping.  cairo's SVG surface has no
-** animation and no grouping per element that survives its output, so
-** each step is drawn whole by cairo and its document taken in as a
-** frame: the frames are exactly the step pictures the other formats give.
-** The ids of each frame (glyphs, clips, surfaces) get the prefix "sK-" so
-** that the frames do not clash.  A viewer that does not play SMIL shows
-** the last step.
+** The animated SVG of a figure with overlay steps: the SVG of every step
+** (the SVG writer, render/output/formats.c), one group each, shown in turn
+** by a SMIL <animate> of its visibility, looping: the frames are exactly
+** the step pictures the other formats give.  The ids of each frame
+** (glyphs, clips) get the prefix "sK-" so that the frames do not clash.
+** A viewer that does not play SMIL shows the last step.
 */
 #include <stdio.h>
 #include <string.h>
@@ -147,7 +144,7 @@ cf__svg_steps(const cf__dl_t *dl, const cf__page_t *page, unsigned steps,
             cf__buf_free(&doc);
             cf__buf_free(out);
             return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                               "svg: cairo's document of step %u has no "
+                               "svg: the document of step %u has no "
                                "<svg> element", k);
         }
         if (k == 1) {

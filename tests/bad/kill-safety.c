@@ -27,6 +27,8 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "spawn.h"
+
 #define FIGS 4
 #define FORMATS 3
 static const char *const ext[FORMATS] = { "svg", "pdf", "png" };
@@ -105,24 +107,17 @@ now(void)
 static int
 render(const char *tool, const char *script, const char *dir, double delay)
 {
+    const char *argv[] = { tool, "render", script, "-o", dir, "-f",
+                           "svg,pdf,png", "--timeout", "300", NULL };
+    tu_spawn_t sp;
     int status;
-    pid_t pid = fork();
-    if (pid < 0)
-        die("fork failed");
-    if (pid == 0) {
-        execl(tool, tool, "render", script, "-o", dir, "-f", "svg,pdf,png",
-              "--timeout", "300", (char *)NULL);
-        _exit(127);
-    }
-    if (delay >= 0) {
-        struct timespec ts;
-        ts.tv_sec = (time_t)delay;
-        ts.tv_nsec = (long)((delay - (double)ts.tv_sec) * 1e9);
-        nanosleep(&ts, NULL);
-        kill(pid, SIGKILL);
-    }
-    if (waitpid(pid, &status, 0) < 0)
-        die("waitpid failed");
+    memset(&sp, 0, sizeof sp);
+    sp.argv = argv;
+    sp.kill = delay >= 0;
+    sp.kill_after = delay;
+    status = tu_spawn(&sp);
+    if (status < 0)
+        die("cannot run the tool");
     return status;
 }
 

@@ -29,6 +29,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "spawn.h"
+
 #define MAX_ARGS 32
 #define LINE 1024
 
@@ -115,8 +117,8 @@ run_tool(const char *tool, const char *script, const char *outdir,
 {
     char argbuf[LINE];
     char *argv[MAX_ARGS];
-    int argc = 0, status;
-    pid_t pid;
+    int argc = 0;
+    tu_spawn_t sp;
 
     argv[argc++] = (char *)tool;
     argv[argc++] = (char *)c->command;
@@ -135,27 +137,12 @@ run_tool(const char *tool, const char *script, const char *outdir,
         argv[argc++] = tok;
     argv[argc] = NULL;
 
-    pid = fork();
-    if (pid < 0)
-        return -1;
-    if (pid == 0) {
-        int fd = open(errpath, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        int null = open("/dev/null", O_WRONLY);
-        if (fd < 0 || null < 0)
-            _exit(126);
-        dup2(fd, 2);
-        dup2(null, 1);
-        /* run in the output directory: `run` and `list` write nothing */
-        if (chdir(outdir) != 0)
-            _exit(126);
-        execv(tool, argv);
-        _exit(127);
-    }
-    if (waitpid(pid, &status, 0) < 0)
-        return -1;
-    if (WIFSIGNALED(status))
-        return 128 + WTERMSIG(status);
-    return WEXITSTATUS(status);
+    memset(&sp, 0, sizeof sp);
+    sp.argv = (const char *const *)argv;
+    sp.dir = outdir;   /* `run` and `list` write nothing */
+    sp.out = "/dev/null";
+    sp.err = errpath;
+    return tu_exit_code(tu_spawn(&sp));
 }
 
 /* Names of the entries of dir, space-separated, into buf ("" if none). */

@@ -123,7 +123,7 @@ test_page_from_the_command_line(void **state)
     svg_size("p0/r.svg", &w0, &h0);
     assert_true(fabs(w0 - 8 * 72 / 2.54) < 0.1);
     /* 0.9 \linewidth of an 11 pt article: 324 TeX points = 322.79 bp
-    ** (cairo's SVG rounds the page to 1/64 bp) */
+    ** (the SVG gives the page to 1/1000 bp) */
     assert_int_equal(render("p1", "--width 324texpt"), 0);
     svg_size("p1/r.svg", &w, &h);
     assert_true(fabs(w - 324 * 72 / 72.27) < 0.05);

@@ -6,159 +6,13 @@
 ** Each test runs TOOL in a fresh temporary directory (the working
 ** directory of the child), captures its exit status, stdout and stderr, and
 ** checks them: the core names of DESIGN.md against the C API's own results,
-** scripts with assertions, several figures per script, the sandbox against
-** hostile scripts (which must stop with a clear message and leave the
-** directory empty), messages with file and line, and every exit status.
+** scripts with assertions, several figures per script, galleries.  The
+** sandbox against hostile scripts (which must stop with a clear message
+** and leave the directory empty), messages with file and line and every
+** exit status are in test_tool_sandbox.c; the helpers both use in
+** test_tool.h.
 */
-#define _XOPEN_SOURCE 700
-#include <dirent.h>
-#include <errno.h>
-#include <fcntl.h>
-#include <math.h>
-#include <setjmp.h>
-#include <stdarg.h>
-#include <stddef.h>
-#include <stdint.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-#include <sys/stat.h>
-#include <sys/types.h>
-#include <sys/wait.h>
-#include <time.h>
-#include <unistd.h>
-
-#include <cmocka.h>
-
-#include "curvefig/bezier.h"
-#include "curvefig/bspline.h"
-#include "curvefig/interp.h"
-#include "curvefig/offset.h"
-
-static char tool[4096];
-static char srcdir[4096];
-
-typedef struct result {
-    int status;          /* exit status, or -1 */
-    char out[65536];     /* stdout */
-    char err[16384];     /* stderr */
-    char dir[256];       /* the working directory of the run */
-} result;
-
-static void
-slurp(const char *path, char *buf, size_t cap)
-{
-    FILE *f = fopen(path, "rb");
-    size_t n = 0;
-    if (f != NULL) {
-        n = fread(buf, 1, cap - 1, f);
-        fclose(f);
-    }
-    buf[n] = '\0';
-}
-
-/* Run TOOL with args (NULL-terminated, after the tool's name) in the
-** temporary directory r->dir, made when it is empty (see reset). */
-static void
-run_tool(result *r, const char *const *args)
-{
-    char *argv[64], outp[300], errp[300];
-    int n = 0, status;
-    pid_t pid;
-    if (r->dir[0] == '\0') {
-        snprintf(r->dir, sizeof r->dir, "/tmp/curvefig-test-XXXXXX");
-        assert_non_null(mkdtemp(r->dir));
-    }
-    snprintf(outp, sizeof outp, "/tmp/curvefig-out-%d", (int)getpid());
-    snprintf(errp, sizeof errp, "/tmp/curvefig-err-%d", (int)getpid());
-    argv[n++] = tool;
-    for (; *args != NULL && n < 63; args++)
-        argv[n++] = (char *)*args;
-    argv[n] = NULL;
-    fflush(NULL);
-    pid = fork();
-    assert_true(pid >= 0);
-    if (pid == 0) {
-        int fo = open(outp, O_WRONLY | O_CREAT | O_TRUNC, 0600);
-        int fe = open(errp, O_WRONLY | O_CREAT | O_TRUNC, 0600);
-        if (fo < 0 || fe < 0 || chdir(r->dir) != 0)
-            _exit(126);
-        dup2(fo, STDOUT_FILENO);
-        dup2(fe, STDERR_FILENO);
-        execv(tool, argv);
-        _exit(127);
-    }
-    assert_true(waitpid(pid, &status, 0) == pid);
-    r->status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    slurp(outp, r->out, sizeof r->out);
-    slurp(errp, r->err, sizeof r->err);
-    remove(outp);
-    remove(errp);
-}
-
-/* Number of entries in r->dir (recursively), for "touches nothing". */
-static int
-count_files(const char *dir)
-{
-    DIR *d = opendir(dir);
-    struct dirent *e;
-    int n = 0;
-    if (d == NULL)
-        return -1;
-    while ((e = readdir(d)) != NULL) {
-        char path[1024];
-        struct stat sb;
-        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
-            continue;
-        n++;
-        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
-        if (stat(path, &sb) == 0 && S_ISDIR(sb.st_mode))
-            n += count_files(path);
-    }
-    closedir(d);
-    return n;
-}
-
-static void
-remove_tree(const char *dir)
-{
-    DIR *d = opendir(dir);
-    struct dirent *e;
-    if (d == NULL)
-        return;
-    while ((e = readdir(d)) != NULL) {
-        char path[1024];
-        struct stat sb;
-        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
-            continue;
-        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
-        if (stat(path, &sb) == 0 && S_ISDIR(sb.st_mode))
-            remove_tree(path);
-        else
-            remove(path);
-    }
-    closedir(d);
-    rmdir(dir);
-}
-
-/* Remove the run's directory; the next run makes a new one. */
-static void
-reset(result *r)
-{
-    if (r->dir[0] != '\0')
-        remove_tree(r->dir);
-    r->dir[0] = '\0';
-}
-
-static const char *
-src(const char *name)
-{
-    static char buf[8][4200];
-    static int k;
-    k = (k + 1) % 8;
-    snprintf(buf[k], sizeof buf[k], "%s/%s", srcdir, name);
-    return buf[k];
-}
+#include "test_tool.h"
 
 static bool
 exists(const result *r, const char *name)
@@ -168,12 +22,6 @@ exists(const result *r, const char *name)
     snprintf(path, sizeof path, "%s/%s", r->dir, name);
     return stat(path, &sb) == 0 && sb.st_size > 0;
 }
-
-#define assert_contains(hay, needle)                                         \
-    do {                                                                     \
-        if (strstr((hay), (needle)) == NULL)                                 \
-            fail_msg("expected \"%s\" in:\n%s", (needle), (hay));            \
-    } while (0)
 
 /* ---- scripts with assertions -------------------------------------------- */
 
@@ -272,10 +120,13 @@ expect_values(const result *r, const char *key, const double *want, size_t n)
 }
 
 static const double orazem[] = { 0, 5, 1, -1, 3, 0, 4, 3, 6, 10 };
+
 static const double sample[] = { 3, 1, 3.75, 2, 5, 3, 4, 4,
                                   3, 3, 2, 4, 1, 3, 2.25, 2 };
+
 static const double sample_u[] = { 0, 0, 0, 0.17, 0.33, 0.5,
                                    0.67, 0.83, 1, 1, 1 };
+
 static const double sample_w[] = { 1, 2, 1, 0.5, 1, 3, 1, 1 };
 
 static const double interp_data[] = { 0, 0, 1, 2, 3, 1, 4, 4, 6, 3 };
@@ -655,268 +506,6 @@ test_label_place_function(void **state)
     assert_string_equal(ta, tb);
 }
 
-/* ---- the sandbox -------------------------------------------------------- */
-
-static void
-hostile(void **state, const char *script, const char *message)
-{
-    result *r = *state;
-    const char *args[] = { "render", src(script), "--max-memory", "32",
-                           "--max-instructions", "2e7", NULL };
-    run_tool(r, args);
-    assert_int_equal(r->status, 1);
-    assert_contains(r->err, message);
-    /* the script's file and line */
-    assert_contains(r->err, script);
-    assert_int_equal(count_files(r->dir), 0);
-}
-
-static void
-test_hostile_os(void **state)
-{
-    hostile(state, "hostile/os_execute.lua",
-            "os_execute.lua:2: 'os' is not available to figure scripts");
-}
-
-static void
-test_hostile_io(void **state)
-{
-    hostile(state, "hostile/io_open.lua",
-            "io_open.lua:2: 'io' is not available to figure scripts");
-}
-
-static void
-test_hostile_require(void **state)
-{
-    hostile(state, "hostile/require.lua",
-            "require.lua:2: 'require' is not available to figure scripts");
-}
-
-static void
-test_hostile_bytecode(void **state)
-{
-    hostile(state, "hostile/bytecode.lua",
-            "bytecode.lua:3: load: binary (bytecode) chunks are not allowed");
-}
-
-static void
-test_hostile_endless_loop(void **state)
-{
-    hostile(state, "hostile/endless.lua",
-            "endless.lua:4: script exceeded the instruction limit of "
-            "20000000 instructions");
-}
-
-static void
-test_hostile_huge_table(void **state)
-{
-    hostile(state, "hostile/huge_table.lua",
-            "huge_table.lua:5: script exceeded the memory limit of 32 MiB");
-}
-
-static void
-test_hostile_huge_string(void **state)
-{
-    hostile(state, "hostile/huge_string.lua",
-            "huge_string.lua:3: script exceeded the memory limit of 32 MiB");
-}
-
-/* A pattern search that would backtrack for hours inside one C call: its
-** steps are counted before it runs, against the instruction limit (finding
-** F9; before, only the tool's watchdog ended it). */
-static void
-test_hostile_pattern(void **state)
-{
-    hostile(state, "hostile/pattern.lua",
-            "pattern.lua:4: script exceeded the instruction limit of "
-            "20000000 instructions");
-}
-
-/* The tool's wall-clock watchdog: an endless loop under an instruction
-** limit too large to reach within the --timeout. */
-static void
-test_timeout(void **state)
-{
-    result *r = *state;
-    const char *args[] = { "run", src("hostile/endless.lua"), "--timeout",
-                           "1", "--max-instructions", "1e15", NULL };
-    run_tool(r, args);
-    assert_int_equal(r->status, 1);
-    assert_contains(r->err, "endless.lua: the script exceeded the time "
-                            "limit of 1 s (--timeout)");
-    assert_string_equal(r->out, "");
-    assert_int_equal(count_files(r->dir), 0);
-}
-
-/* `live --once` under the limits of render: a run that spins (the
-** handler of xpcall loops, which escapes the instruction hook on the
-** parent commit) ends with the time-limit error, in the JSON and on
-** stderr, within the limit and a margin. */
-static void
-test_live_once_timeout(void **state)
-{
-    result *r = *state;
-    char path[600];
-    const char *args[] = { "live", "xp.lua", "--once", "--timeout", "2",
-                           "--max-instructions", "1e15", NULL };
-    struct timespec t0, t1;
-    double took;
-    FILE *f;
-    snprintf(r->dir, sizeof r->dir, "/tmp/curvefig-test-XXXXXX");
-    assert_non_null(mkdtemp(r->dir));
-    snprintf(path, sizeof path, "%s/xp.lua", r->dir);
-    f = fopen(path, "w");
-    assert_non_null(f);
-    fputs("xpcall(error, function() while true do end end)\n", f);
-    fclose(f);
-    clock_gettime(CLOCK_MONOTONIC, &t0);
-    run_tool(r, args);
-    clock_gettime(CLOCK_MONOTONIC, &t1);
-    took = (double)(t1.tv_sec - t0.tv_sec)
-           + (double)(t1.tv_nsec - t0.tv_nsec) * 1e-9;
-    assert_int_equal(r->status, 1);
-    assert_contains(r->err, "xp.lua: the script exceeded the time limit of "
-                            "2 s (--timeout)");
-    assert_contains(r->out, "\"error\": {\"message\": \"xp.lua: the script "
-                            "exceeded the time limit of 2 s");
-    if (took > 6)
-        fail_msg("live --once took %.1f s with --timeout 2", took);
-}
-
-static void
-test_hostile_metatable(void **state)
-{
-    hostile(state, "hostile/metatable.lua", "metatable is locked");
-}
-
-/* A bytecode file given as the script itself. */
-static void
-test_bytecode_script_refused(void **state)
-{
-    result *r = *state;
-    char path[300];
-    FILE *f;
-    const char *args[] = { "run", path, NULL };
-    snprintf(path, sizeof path, "/tmp/curvefig-bc-%d.lua", (int)getpid());
-    f = fopen(path, "wb");
-    assert_non_null(f);
-    fputs("\033LuaT\0\031\223\r\n", f);
-    fclose(f);
-    run_tool(r, args);
-    remove(path);
-    assert_int_equal(r->status, 1);
-    assert_contains(r->err, "binary (bytecode) chunks are not allowed");
-}
-
-/* ---- errors with file and line ------------------------------------------ */
-
-static void
-test_syntax_error_position(void **state)
-{
-    result *r = *state;
-    const char *args[] = { "run", src("broken_syntax.lua"), NULL };
-    run_tool(r, args);
-    assert_int_equal(r->status, 1);
-    assert_contains(r->err, "broken_syntax.lua:4: unexpected symbol near '='");
-}
-
-static void
-test_runtime_error_position(void **state)
-{
-    result *r = *state;
-    const char *args[] = { "render", src("broken_runtime.lua"), NULL };
-    run_tool(r, args);
-    assert_int_equal(r->status, 1);
-    assert_contains(r->err, "broken_runtime.lua:5: bspline: 10 knots given, "
-                            "degree 2 with 8 points needs 11");
-    assert_contains(r->err, "from ");
-    assert_contains(r->err, "broken_runtime.lua:8");
-    assert_contains(r->err, "broken_runtime.lua:11");
-    assert_int_equal(count_files(r->dir), 0);
-}
-
-/* ---- exit statuses ------------------------------------------------------ */
-
-static void
-expect_status(void **state, int status, const char *message,
-              const char *const *args)
-{
-    result *r = *state;
-    run_tool(r, args);
-    if (r->status != status)
-        fail_msg("status %d, expected %d; stderr:\n%s", r->status, status,
-                 r->err);
-    if (message != NULL)
-        assert_contains(status == 0 ? r->out : r->err, message);
-    reset(r);
-}
-
-static void
-test_exit_statuses(void **state)
-{
-    const char *none[] = { NULL };
-    const char *help[] = { "--help", NULL };
-    const char *lang[] = { "help", "language", NULL };
-    const char *version[] = { "--version", NULL };
-    const char *unknown[] = { "paint", NULL };
-    const char *badopt[] = { "render", src("multi.lua"), "--colour", NULL };
-    const char *badfmt[] = { "render", src("multi.lua"), "-f", "svg,jpg",
-                             NULL };
-    const char *baddpi[] = { "render", src("multi.lua"), "--dpi", "0",
-                             NULL };
-    const char *noval[] = { "render", src("multi.lua"), "-o", NULL };
-    const char *noscript[] = { "run", NULL };
-    const char *twoscripts[] = { "run", src("multi.lua"), src("multi.lua"),
-                                 NULL };
-    const char *missing[] = { "run", "no-such-script.lua", NULL };
-    const char *badonly[] = { "render", src("multi.lua"), "--only", "nope",
-                              NULL };
-    const char *failing[] = { "run", src("broken_syntax.lua"), NULL };
-    const char *unwritable[] = { "render", src("multi.lua"), "-o",
-                                 "/proc/curvefig-cannot-write", NULL };
-    const char *ok[] = { "run", src("core_bezier.lua"), NULL };
-    expect_status(state, 2, "no command given", none);
-    expect_status(state, 0, "usage: curvefig", help);
-    expect_status(state, 0, "f:decasteljau(c, t", lang);
-    expect_status(state, 0, "curvefig ", version);
-    expect_status(state, 2, "unknown command 'paint'", unknown);
-    expect_status(state, 2, "unknown option '--colour'", badopt);
-    expect_status(state, 2, "bad format list 'svg,jpg'", badfmt);
-    expect_status(state, 2, "--dpi '0'", baddpi);
-    expect_status(state, 2, "option '-o' needs a value", noval);
-    expect_status(state, 2, "run: no script given", noscript);
-    expect_status(state, 2, "give exactly one script", twoscripts);
-    expect_status(state, 2, "cannot read the script no-such-script.lua",
-                  missing);
-    expect_status(state, 2, "defines no figure named 'nope'", badonly);
-    expect_status(state, 1, "broken_syntax.lua:4:", failing);
-    expect_status(state, 1, "cannot create the directory", unwritable);
-    expect_status(state, 0, "core_bezier: ok", ok);
-}
-
-/* ---- fixtures ----------------------------------------------------------- */
-
-static int
-setup(void **state)
-{
-    result *r = calloc(1, sizeof *r);
-    if (r == NULL)
-        return -1;
-    *state = r;
-    return 0;
-}
-
-static int
-teardown(void **state)
-{
-    result *r = *state;
-    reset(r);
-    free(r);
-    return 0;
-}
-
-#define T(f) cmocka_unit_test_setup_teardown(f, setup, teardown)
-
 int
 main(int argc, char **argv)
 {
@@ -935,34 +524,8 @@ main(int argc, char **argv)
         T(test_gallery_title_escaped),
         T(test_every_figure_method),
         T(test_label_place_function),
-        T(test_hostile_os),
-        T(test_hostile_io),
-        T(test_hostile_require),
-        T(test_hostile_bytecode),
-        T(test_hostile_endless_loop),
-        T(test_hostile_huge_table),
-        T(test_hostile_huge_string),
-        T(test_hostile_pattern),
-        T(test_timeout),
-        T(test_live_once_timeout),
-        T(test_hostile_metatable),
-        T(test_bytecode_script_refused),
-        T(test_syntax_error_position),
-        T(test_runtime_error_position),
-        T(test_exit_statuses),
     };
-    if (argc != 3) {
-        fprintf(stderr, "usage: test_tool TOOL SRCDIR\n");
+    if (tool_args(argc, argv) != 0)
         return 2;
-    }
-    /* the child changes directory: make the tool's path absolute */
-    if (realpath(argv[1], tool) == NULL) {
-        fprintf(stderr, "test_tool: %s: %s\n", argv[1], strerror(errno));
-        return 2;
-    }
-    if (realpath(argv[2], srcdir) == NULL) {
-        fprintf(stderr, "test_tool: %s: %s\n", argv[2], strerror(errno));
-        return 2;
-    }
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

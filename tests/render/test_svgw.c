@@ -1,16 +1,21 @@
-/* The SVG writer (render/backends/backend-svgw.c), which the course pages use
-** where there is no cairo, against cairo's SVG: every shipped figure
-** written both ways, both rasterised by librsvg at the pixel suite's
-** 144 dpi and compared by its comparator (render/tool/imgcmp.h) with the
-** pixel suite's threshold (0.1) and anti-aliasing allowance (one pixel),
-** and no bad pixel at all, labels included: cairo writes glyphs as
-** <symbol>s of its outlines, the writer as paths of pango's outlines
-** through cairo, the same curves rounded to 1/1000 bp, which moves an
-** edge by far less than the allowance (the pixel suite's own allowance
-** for labels, CF__IMGCMP_TEXT_FRACTION, is for cairo's hinted text
-** against librsvg, which does not arise here).
-** Then the writer's own properties: a well-formed document whose clips
-** and groups balance, and refusal of a non-finite coordinate. */
+/* The SVG writer (render/backends/backend-svgw.c), the one writer of SVG:
+** files and the live view (labels as <use>s of glyph outlines defined
+** once, render/output/svg-glyphs.c) and the course pages (labels as whole
+** outline paths, where there is no pango).
+**   - Every shipped figure written both ways, both rasterised by librsvg
+**     at the pixel suite's 144 dpi and compared by its comparator
+**     (render/tool/imgcmp.h) with its threshold (0.1) and anti-aliasing
+**     allowance (one pixel), and no bad pixel at all, labels included.
+**     (The pixel suite compares the files' SVG against cairo's PNG.)
+**   - Every label of every shipped figure: its glyphs placed at the
+**     origins render/labels/label-glyph-runs.c gives make exactly the
+**     outline pango's own renderer draws (cf__label_path), point for
+**     point to one step of cairo's path grid (1/256 bp), where a glyph
+**     misplaced by the baseline, a run's width or an offset would be off
+**     by far more.
+**   - A glyph used four times is defined once.
+**   - A well-formed document whose clips and groups balance, and refusal
+**     of a non-finite coordinate. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -24,6 +29,7 @@
 #include <librsvg/rsvg.h>
 
 #include "backend.h"
+#include "label-glyph-runs.h"
 #include "curvefig/output.h"
 #include "imgcmp.h"
 #include "output-private.h"
@@ -85,7 +91,8 @@ image_of(cairo_surface_t *s)
     return im;
 }
 
-/* The figure through the SVG writer into out (empty). */
+/* The figure through the SVG writer as a course page draws it (labels as
+** outline paths) into out (empty). */
 static cf_status_t
 write_svgw(cf_figure_t *fig, unsigned step, cf__buf_t *out, cf_diag_t *d)
 {
@@ -113,8 +120,8 @@ static void
 compare_figure(const char *script, const char *name, cf_figure_t *fig,
                tally_t *t)
 {
-    unsigned char *cairo_svg = NULL;
-    size_t cairo_size = 0;
+    unsigned char *file_svg = NULL;
+    size_t file_size = 0;
     cf__buf_t mine;
     cf_diag_t d;
     cairo_surface_t *a, *b;
@@ -128,17 +135,17 @@ compare_figure(const char *script, const char *name, cf_figure_t *fig,
     /* a figure with overlay steps: its last step, one page */
     cf_write_options_init(&wo);
     wo.step = cf_figure_steps(fig) > 1 ? cf_figure_steps(fig) : 0;
-    if (cf_figure_render(fig, CF_FORMAT_SVG, &wo, &cairo_svg, &cairo_size,
+    if (cf_figure_render(fig, CF_FORMAT_SVG, &wo, &file_svg, &file_size,
                          &d) != CF_STATUS_OK)
-        fail_msg("%s: %s: cairo: %s", script, name, d.msg);
+        fail_msg("%s: %s: file: %s", script, name, d.msg);
     if (write_svgw(fig, wo.step, &mine, &d) != CF_STATUS_OK)
-        fail_msg("%s: %s: SVG writer: %s", script, name, d.msg);
-    text = memmem(cairo_svg, cairo_size, "<symbol", 7) != NULL;
+        fail_msg("%s: %s: page: %s", script, name, d.msg);
+    text = memmem(file_svg, file_size, "<use", 4) != NULL;
     a = rasterise(mine.data, mine.size, CF__IMGCMP_DPI);
-    b = rasterise(cairo_svg, cairo_size, CF__IMGCMP_DPI);
+    b = rasterise(file_svg, file_size, CF__IMGCMP_DPI);
     if (a == NULL || b == NULL)
         fail_msg("%s: %s: librsvg refused %s", script, name,
-                 a == NULL ? "the writer's SVG" : "cairo's SVG");
+                 a == NULL ? "the page's SVG" : "the file's SVG");
     ia = image_of(a);
     ib = image_of(b);
     pixels = (long)ia.width * ia.height;
@@ -146,20 +153,20 @@ compare_figure(const char *script, const char *name, cf_figure_t *fig,
     o.aa_radius = CF__IMGCMP_AA_RADIUS;
     o.max_bad_pixels = 0;
     if (cf__imgcmp_compare(&ia, &ib, &o, &r, NULL) != 0)
-        fail_msg("%s: %s: sizes differ: %dx%d (writer), %dx%d (cairo)",
+        fail_msg("%s: %s: sizes differ: %dx%d (page), %dx%d (file)",
                  script, name, ia.width, ia.height, ib.width, ib.height);
     if (!r.match) {
         /* both documents beside the test, to look at */
         char file[256];
         FILE *f;
-        snprintf(file, sizeof file, "svgw-%s.svg", name);
+        snprintf(file, sizeof file, "page-%s.svg", name);
         if ((f = fopen(file, "wb")) != NULL) {
             fwrite(mine.data, 1, mine.size, f);
             fclose(f);
         }
-        snprintf(file, sizeof file, "cairo-%s.svg", name);
+        snprintf(file, sizeof file, "file-%s.svg", name);
         if ((f = fopen(file, "wb")) != NULL) {
-            fwrite(cairo_svg, 1, cairo_size, f);
+            fwrite(file_svg, 1, file_size, f);
             fclose(f);
         }
         fail_msg("%s: %s: %ld of %ld pixels differ (at most %ld), first at "
@@ -178,7 +185,7 @@ compare_figure(const char *script, const char *name, cf_figure_t *fig,
     }
     cairo_surface_destroy(a);
     cairo_surface_destroy(b);
-    cf_free(cairo_svg);
+    cf_free(file_svg);
     cf__buf_free(&mine);
 }
 
@@ -191,7 +198,7 @@ compare_shipped(void *ctx, const char *script, const char *name,
 }
 
 static void
-test_every_figure_as_cairo_draws_it(void **state)
+test_every_figure_alike_in_files_and_pages(void **state)
 {
     tally_t t;
     (void)state;
@@ -222,6 +229,194 @@ count(const char *s, const char *what)
     for (s = strstr(s, what); s != NULL; s = strstr(s + 1, what))
         n++;
     return n;
+}
+
+/* ---- glyphs where pango draws them ------------------------------------- */
+
+/* cairo keeps path points on a grid of 1/256 device units (bp here): a
+** point may land one step either side of its double */
+#define GRID (1.0 / 256 + 1e-12)
+
+typedef struct glyph_check {
+    cairo_t *ref, *mine;       /* recording surfaces' contexts */
+    size_t labels, glyphs, whole;
+    double worst;
+} glyph_check_t;
+
+static int
+glyph_at(void *ctx, cairo_scaled_font_t *font, unsigned long index,
+         double x, double y)
+{
+    glyph_check_t *g = ctx;
+    cairo_glyph_t gl;
+    gl.index = index;
+    gl.x = x;
+    gl.y = y;
+    cairo_set_scaled_font(g->mine, font);
+    cairo_glyph_path(g->mine, &gl, 1);
+    g->glyphs++;
+    return 0;
+}
+
+static int
+rule_at(void *ctx, const double r[4])
+{
+    glyph_check_t *g = ctx;
+    cairo_rectangle(g->mine, r[0], r[1], r[2], r[3]);
+    return 0;
+}
+
+/* The first element of path from i on that is not a move followed by
+** another move or by the end (no ink: pango's renderer ends a label
+** with a move back to its origin). */
+static int
+inked(const cairo_path_t *path, int i)
+{
+    while (i < path->num_data
+           && path->data[i].header.type == CAIRO_PATH_MOVE_TO) {
+        int n = i + path->data[i].header.length;
+        if (n < path->num_data
+            && path->data[n].header.type != CAIRO_PATH_MOVE_TO)
+            break;
+        i = n;
+    }
+    return i;
+}
+
+/* The label's outline both ways: the same segments, the same points. */
+static void
+check_text(void *ctx, const cf__text_op_t *t)
+{
+    static const cf__label_glyph_fns_t fns = { glyph_at, rule_at };
+    glyph_check_t *g = ctx;
+    cairo_path_t *a, *b;
+    int i, j, r;
+    cairo_new_path(g->ref);
+    cairo_new_path(g->mine);
+    cf__label_path(t->label, g->ref, t->ox, t->oy);
+    r = cf__label_glyphs(t->label, t->ox, t->oy, &fns, g);
+    assert_true(r == 0 || r == 1);
+    g->labels++;
+    if (r == 1) {   /* a glyph missing from its font: the path whole */
+        g->whole++;
+        return;
+    }
+    a = cairo_copy_path(g->ref);
+    b = cairo_copy_path(g->mine);
+    assert_int_equal(a->status, CAIRO_STATUS_SUCCESS);
+    assert_int_equal(b->status, CAIRO_STATUS_SUCCESS);
+    for (i = 0, j = 0;; i += a->data[i].header.length,
+                        j += b->data[j].header.length) {
+        const cairo_path_data_t *p, *q;
+        i = inked(a, i);
+        j = inked(b, j);
+        if (i >= a->num_data || j >= b->num_data)
+            break;
+        p = &a->data[i];
+        q = &b->data[j];
+        if (p->header.type != q->header.type)
+            fail_msg("label \"%s\": element %d of pango's path is not "
+                     "element %d of its glyphs'", t->source, i, j);
+        for (int k = 1; k < p->header.length; k++) {
+            double e = fmax(fabs(p[k].point.x - q[k].point.x),
+                            fabs(p[k].point.y - q[k].point.y));
+            g->worst = fmax(g->worst, e);
+            if (!(e <= GRID))
+                fail_msg("label \"%s\": a point %g bp from pango's",
+                         t->source, e);
+        }
+    }
+    if (i < a->num_data || j < b->num_data)
+        fail_msg("label \"%s\": the paths differ in length", t->source);
+    cairo_path_destroy(a);
+    cairo_path_destroy(b);
+}
+
+static void nop(void *ctx) { (void)ctx; }
+static void nop_page(void *ctx, const cf__page_t *p) { (void)ctx; (void)p; }
+static void
+nop_group(void *ctx, const char *n, size_t i, const char *o)
+{
+    (void)ctx;
+    (void)n;
+    (void)i;
+    (void)o;
+}
+static void
+nop_clip(void *ctx, bool has, const double r[4])
+{
+    (void)ctx;
+    (void)has;
+    (void)r;
+}
+static void
+nop_path(void *ctx, const cf__path_t *p, const cf__paint_t *paint)
+{
+    (void)ctx;
+    (void)p;
+    (void)paint;
+}
+static int nop_end(void *ctx) { (void)ctx; return 0; }
+
+static const cf__backend_t glyph_checker = {
+    "glyph-check", nop_page, nop_group, nop, nop_clip, nop, nop_path,
+    NULL, check_text, nop_end, NULL
+};
+
+static int
+check_shipped(void *ctx, const char *script, const char *name,
+              cf_figure_t *fig)
+{
+    cf_diag_t d;
+    (void)script;
+    if (cf__figure_play(fig, 0, &glyph_checker, ctx, &d) != CF_STATUS_OK)
+        fail_msg("%s: %s", name, d.msg);
+    return 0;
+}
+
+static void
+test_glyphs_where_pango_draws_them(void **state)
+{
+    glyph_check_t g;
+    cairo_surface_t *s = cairo_recording_surface_create(CAIRO_CONTENT_ALPHA,
+                                                        NULL);
+    (void)state;
+    memset(&g, 0, sizeof g);
+    g.ref = cairo_create(s);
+    g.mine = cairo_create(s);
+    tu_each_shipped_figure(CF_SOURCE_ROOT, check_shipped, &g, NULL);
+    print_message("%zu labels, %zu glyphs placed as pango draws them (worst "
+                  "%.2g bp); %zu labels drawn whole\n", g.labels, g.glyphs,
+                  g.worst, g.whole);
+    assert_true(g.labels >= 300 && g.glyphs >= g.labels);
+    cairo_destroy(g.ref);
+    cairo_destroy(g.mine);
+    cairo_surface_destroy(s);
+}
+
+/* Two labels "aa": one outline of a, used four times. */
+static void
+test_glyph_defined_once(void **state)
+{
+    cf_figure_t *fig;
+    unsigned char *svg;
+    size_t size;
+    char *text;
+    (void)state;
+    assert_int_equal(cf_figure_create(100, 60, CF_UNIT_BP, &fig, NULL), 0);
+    assert_int_equal(cf_figure_set_window(fig, 0, 1, 0, 1), 0);
+    assert_int_equal(cf_figure_add_label(fig, 0.2, 0.5, "aa", NULL), 0);
+    assert_int_equal(cf_figure_add_label(fig, 0.7, 0.5, "aa", NULL), 0);
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_SVG, NULL, &svg, &size,
+                                      NULL), 0);
+    text = malloc(size + 1);
+    memcpy(text, svg, size);
+    text[size] = '\0';
+    assert_int_equal(count(text, "<symbol"), 1);
+    assert_int_equal(count(text, "<use xlink:href=\"#g1\""), 4);
+    free(text);
+    cf_free(svg);
+    cf_figure_destroy(fig);
 }
 
 static void
@@ -288,7 +483,9 @@ main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_structure_and_bad_numbers),
-        cmocka_unit_test(test_every_figure_as_cairo_draws_it),
+        cmocka_unit_test(test_glyph_defined_once),
+        cmocka_unit_test(test_glyphs_where_pango_draws_them),
+        cmocka_unit_test(test_every_figure_alike_in_files_and_pages),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

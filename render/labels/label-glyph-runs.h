@@ -1,0 +1,28 @@
+/*
+** The glyphs of a label one by one (render/labels/label-glyph-runs.c),
+** natively only (pango's glyph runs and cairo's scaled fonts; the browser
+** module has neither): for the glyph uses of the SVG files
+** (render/output/svg-glyphs.c).
+*/
+#ifndef CURVEFIG_RENDER_LABEL_GLYPH_RUNS_H
+#define CURVEFIG_RENDER_LABEL_GLYPH_RUNS_H
+
+#include "label-cairo.h"
+
+/* The glyphs of the label one by one, baseline origin at (x, y), where
+** cf__label_path puts them (render/labels/label-glyph-runs.c): glyph
+** gets each glyph's scaled font, index and origin on the page, rule each
+** fraction rule (x y w h), in drawing order.  1, and no call, when a
+** glyph is missing from its font (pango draws a box for it, which has no
+** outline of the font: take the label's path whole); else the first
+** nonzero result of a call, or 0. */
+typedef struct cf__label_glyph_fns {
+    int (*glyph)(void *ctx, cairo_scaled_font_t *font, unsigned long index,
+                 double x, double y);
+    int (*rule)(void *ctx, const double rect[4]);
+} cf__label_glyph_fns_t;
+
+int cf__label_glyphs(const cf_label_t *label, double x, double y,
+                     const cf__label_glyph_fns_t *fns, void *ctx);
+
+#endif

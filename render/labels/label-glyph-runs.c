@@ -7,8 +7,11 @@
 ** the glyphs before it plus its own offset, all in pango units added to
 ** the run's origin in page units.  A label's runs carry no attributes
 ** (no rise, no shapes), so nothing else moves a glyph.  The SVG writer
-** draws each glyph's outline once and uses it at these origins.
+** draws each glyph's outline once and uses it at these origins.  Native
+** only: a run's shaping is pango's layout (render/labels/font-pango.c).
 */
+#include <pango/pangocairo.h>
+
 #include "label-glyph-runs.h"
 #include "label-impl.h"
 
@@ -81,7 +84,7 @@ cf__label_glyphs(const cf_label_t *label, double x, double y,
     for (i = 0; i < label->count; i++) {
         const run_t *run = &label->runs[i];
         if (run->ink[3] > run->ink[1] && !(run->rule_h > 0)
-            && !all_known(run->layout))
+            && (run->shaped == NULL || !all_known(run->shaped)))
             return 1;
     }
     for (i = 0; r == 0 && i < label->count; i++) {
@@ -97,7 +100,7 @@ cf__label_glyphs(const cf_label_t *label, double x, double y,
             r = fns->rule(ctx, rect);
             continue;
         }
-        r = layout_glyphs(run->layout, x + run->x,
+        r = layout_glyphs(run->shaped, x + run->x,
                           y - run->y - run->baseline, fns, ctx);
     }
     return r;

@@ -187,6 +187,8 @@ test_figure(void **state)
     BAD(cf_figure_page_map(fig, NULL, NULL, NULL));
     BAD(cf_figure_render_mapped(fig, CF_FORMAT_SVG, NULL, &data, NULL, box6,
                                 NULL));
+    BAD(cf_figure_render_places(fig, CF_FORMAT_SVG, NULL, &data, &size,
+                                box6, (char **)&data, NULL, NULL));
     BAD(cf_figures_glyph_data(&fig, 1, NULL, &size, NULL));
     BAD(cf_figure_dump(fig, NULL, NULL, &size, NULL));
     BAD(cf_figure_set_clip(NULL, true));

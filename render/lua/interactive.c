@@ -299,9 +299,21 @@ put_figure(text_t *t, const cf_script_t *s, size_t i, char *err,
     size_t size = 0;
     double m[6], w, h;
     cf_diag_t diag;
+    cf_script_scope_t scope;
+    cf_status_t st;
+    char over[200];
     cf_diag_clear(&diag);
-    if (cf_figure_render_mapped(fig, CF_FORMAT_SVG, NULL, &svg, &size, m,
-                                &diag) != CF_STATUS_OK) {
+    cf_script_budget_begin(s, &scope);
+    st = cf_figure_render_mapped(fig, CF_FORMAT_SVG, NULL, &svg, &size, m,
+                                 &diag);
+    if (cf_script_budget_end(s, &scope, over, sizeof over) &&
+        st != CF_STATUS_OK) {
+        snprintf(err, errlen, "%sfigure '%s': %s; %s",
+                 cf_script_figure_where(s, i), name, over, diag.msg);
+        cf_free(svg);
+        return -1;
+    }
+    if (st != CF_STATUS_OK) {
         snprintf(err, errlen, "%sfigure '%s': %s", cf_script_figure_where(s, i),
                  name, diag.msg);
         cf_free(svg);

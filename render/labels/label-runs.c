@@ -54,15 +54,20 @@ family_for_size(const char *family, double size_bp, bool italic, bool bold,
     snprintf(out, cap, "%s %d,%s", lm, pick, family);
 }
 
+/* What pango measures of one text in one run's font. */
+typedef struct metrics {
+    double width, ascent, descent, baseline;
+    double ink[4];             /* as run_t's; all 0 when there is no ink */
+} metrics_t;
+
 static void
-run_measure(cf_label_t *lab, run_t *r)
+shape(cf_label_t *lab, const run_t *r, PangoLayout *layout, const char *text,
+      size_t len, metrics_t *m)
 {
     PangoFontDescription *fd;
     PangoRectangle ink, logical;
     char family[CF_FONT_FAMILY_MAX + 16];
 
-    if (r->layout == NULL)
-        r->layout = pango_layout_new(lab->ctx);
     fd = pango_font_description_new();
     if (r->math)
         snprintf(family, sizeof family, "%s,%s", CF__MATH_FAMILY,
@@ -77,23 +82,105 @@ run_measure(cf_label_t *lab, run_t *r)
     pango_font_description_set_weight(fd, r->bold ? PANGO_WEIGHT_BOLD
                                                   : PANGO_WEIGHT_NORMAL);
     pango_font_description_set_absolute_size(fd, r->size * PANGO_SCALE);
-    pango_layout_set_font_description(r->layout, fd);
+    pango_layout_set_font_description(layout, fd);
     pango_font_description_free(fd);
-    pango_layout_set_text(r->layout, r->text, (int)r->text_len);
-    pango_layout_get_extents(r->layout, &ink, &logical);
-    r->baseline = (double)pango_layout_get_baseline(r->layout) / PANGO_SCALE;
-    r->width = (double)logical.width / PANGO_SCALE;
-    r->ascent = r->baseline - (double)logical.y / PANGO_SCALE;
-    r->descent = (double)(logical.y + logical.height) / PANGO_SCALE
-        - r->baseline;
-    r->ink[0] = (double)(ink.x - logical.x) / PANGO_SCALE;
-    r->ink[1] = (double)ink.y / PANGO_SCALE - r->baseline;
-    r->ink[2] = r->ink[0] + (double)ink.width / PANGO_SCALE;
-    r->ink[3] = r->ink[1] + (double)ink.height / PANGO_SCALE;
+    pango_layout_set_text(layout, text, (int)len);
+    lab->shaped += len;
+    pango_layout_get_extents(layout, &ink, &logical);
+    m->baseline = (double)pango_layout_get_baseline(layout) / PANGO_SCALE;
+    m->width = (double)logical.width / PANGO_SCALE;
+    m->ascent = m->baseline - (double)logical.y / PANGO_SCALE;
+    m->descent = (double)(logical.y + logical.height) / PANGO_SCALE
+        - m->baseline;
+    m->ink[0] = (double)(ink.x - logical.x) / PANGO_SCALE;
+    m->ink[1] = (double)ink.y / PANGO_SCALE - m->baseline;
+    m->ink[2] = m->ink[0] + (double)ink.width / PANGO_SCALE;
+    m->ink[3] = m->ink[1] + (double)ink.height / PANGO_SCALE;
     if (ink.width == 0 || ink.height == 0) {
         /* spaces: no ink */
-        r->ink[0] = r->ink[2] = 0;
-        r->ink[1] = r->ink[3] = 0;
+        m->ink[0] = m->ink[2] = 0;
+        m->ink[1] = m->ink[3] = 0;
+    }
+}
+
+/* Measure the whole run with its own layout (which then holds its text). */
+static void
+run_measure(cf_label_t *lab, run_t *r)
+{
+    metrics_t m;
+    if (r->layout == NULL)
+        r->layout = pango_layout_new(lab->ctx);
+    shape(lab, r, r->layout, r->text, r->text_len, &m);
+    r->width = m.width;
+    r->ascent = m.ascent;
+    r->descent = m.descent;
+    r->baseline = m.baseline;
+    memcpy(r->ink, m.ink, sizeof m.ink);
+    r->tail = 0;
+    r->tail_w = m.width;
+    r->stale = false;
+}
+
+/* A run grows a character at a time (a word, a formula's letters); laying
+** the whole run out again at each character made a label of n characters
+** cost n^2 (a 1000-byte label 1.5 to 8 s).  Shaping is local -- kerning
+** pairs and ligatures join neighbours -- so only the run's tail is shaped
+** again: the text from byte r->tail on (TAIL to 2 TAIL bytes, moved
+** forward by TAIL at a time), whose width alone before the new bytes is
+** r->tail_w.  The glyphs of the tail sit where they sit in the whole run
+** measured from its end, so the run widens by what the tail widened and
+** the tail's ink joins the run's ink at the run's old width less the
+** tail's.  The whole run is shaped once more at the end of the label
+** (cf__label_runs_finish), for its layout and its exact extents. */
+#define TAIL 16
+
+static void
+grow_measure(cf_label_t *lab, run_t *r, size_t old_len)
+{
+    metrics_t m;
+    size_t t = r->tail;
+    double before = r->tail_w, off;
+    if (lab->scratch == NULL)
+        lab->scratch = pango_layout_new(lab->ctx);
+    if (old_len - t > 2 * TAIL) {
+        t = old_len - TAIL;
+        while (t < old_len && ((unsigned char)r->text[t] & 0xC0) == 0x80)
+            t++;
+        shape(lab, r, lab->scratch, r->text + t, old_len - t, &m);
+        before = m.width;
+    }
+    shape(lab, r, lab->scratch, r->text + t, r->text_len - t, &m);
+    off = r->width - before;
+    r->width = off + m.width;
+    if (m.ink[2] > m.ink[0] && m.ink[3] > m.ink[1]) {
+        m.ink[0] += off;
+        m.ink[2] += off;
+        if (r->ink[2] > r->ink[0] && r->ink[3] > r->ink[1]) {
+            r->ink[0] = fmin(r->ink[0], m.ink[0]);
+            r->ink[1] = fmin(r->ink[1], m.ink[1]);
+            r->ink[2] = fmax(r->ink[2], m.ink[2]);
+            r->ink[3] = fmax(r->ink[3], m.ink[3]);
+        } else {
+            memcpy(r->ink, m.ink, sizeof m.ink);
+        }
+    }
+    r->ascent = fmax(r->ascent, m.ascent);
+    r->descent = fmax(r->descent, m.descent);
+    r->baseline = fmax(r->baseline, m.baseline);
+    r->tail = t;
+    r->tail_w = m.width;
+    r->stale = true;
+}
+
+void
+cf__label_runs_finish(cf_label_t *lab)
+{
+    for (size_t i = 0; i < lab->count; i++)
+        if (lab->runs[i].stale)
+            run_measure(lab, &lab->runs[i]);
+    if (lab->scratch != NULL) {
+        g_object_unref(lab->scratch);
+        lab->scratch = NULL;
     }
 }
 
@@ -103,6 +190,7 @@ cf__label_put_text(cf_label_t *lab, const font_t *f, double x, double y,
 {
     run_t *r = lab->count > 0 ? &lab->runs[lab->count - 1] : NULL;
     char *t;
+    size_t old_len;
 
     if (r != NULL && lab->merge_ok && r->rule_h == 0 && r->size == f->size
         && r->italic == f->italic && r->math == f->math
@@ -113,8 +201,13 @@ cf__label_put_text(cf_label_t *lab, const font_t *f, double x, double y,
             return NAN;
         memcpy(t + r->text_len, s, n);
         r->text = t;
+        old_len = r->text_len;
         r->text_len += n;
         t[r->text_len] = '\0';
+        if (n > 0 && old_len > 0) {
+            grow_measure(lab, r, old_len);
+            return r->x + r->width;
+        }
     } else {
         run_t *nr = cf__grow_array(lab->runs, &lab->cap, lab->count + 1,
                                    sizeof *nr, 8);
@@ -191,4 +284,10 @@ cf__label_italic_correction(cf_label_t *lab, const font_t *f, const char *s,
     if (!cf__label_measure(lab, f, s, n, &w, ink))
         return 0;
     return ink[2] > ink[0] ? fmax(0, ink[2] - w) : 0;
+}
+
+size_t
+cf__label_shaped_bytes(const cf_label_t *lab)
+{
+    return lab->shaped;
 }

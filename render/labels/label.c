@@ -20,6 +20,8 @@ cf_label_destroy(cf_label_t *label)
             g_object_unref(label->runs[i].layout);
     }
     cf_free(label->runs);
+    if (label->scratch != NULL)
+        g_object_unref(label->scratch);
     cf_free(label->boxes);
     cf_free(label->osegs);
     cf_free(label->ocoords);
@@ -158,6 +160,7 @@ cf_label_create(const char *text, const char *family, double size_bp,
             cf_label_destroy(lab);
             return st;
         }
+        cf__label_runs_finish(lab);
     }
     lab->boxes = cf_alloc_array(lab->count ? lab->count : 1,
                                 sizeof *lab->boxes);

@@ -73,20 +73,24 @@ asked(int req)
     return poll(&p, 1, 0) > 0;
 }
 
-/* A spare made ready for a run while the server waits, in steps that stop
-** as soon as the values come (a drag sends them right after the last
-** answer: the run must not wait for this): the heap first -- the run's
-** blocks of up to 64 MiB come from it, not from fresh mappings, and what
-** it frees stays there; 24 MiB of it written a MiB at a time, so that the
-** run reuses pages already in place instead of faulting each in (a forked
-** run's rasters and buffers were most of its page faults) -- then a small
-** figure of our own, which touches the rest of what a run touches (Lua,
-** pango's and cairo's caches) and copies those pages before the run. */
+/* A spare made ready for a run while the server waits, a MiB at a time,
+** stopping as soon as the values come (a drag sends them right after the
+** last answer: the run must not wait for this): the run's blocks of up to
+** 64 MiB come from the heap, not from fresh mappings, and what it frees
+** stays there; 24 MiB of it (at most the run's memory limit) are written
+** once now, so that the run reuses pages already in place instead of
+** faulting each in (a forked run's rasters and buffers were most of its
+** page faults).  Nothing that cannot be cut short: a small figure drawn
+** here to warm pango's and cairo's pages made a run that came during it
+** wait for it (10 s under ASan on a loaded machine). */
 static void
-get_ready(int req)
+get_ready(int req, size_t max_memory)
 {
     size_t mib = (size_t)1 << 20, n = 24;
     char *p;
+    /* never more than the run may use (0: the default, 256 MiB) */
+    if (max_memory != 0 && max_memory / mib < n)
+        n = max_memory / mib;
     mallopt(M_MMAP_THRESHOLD, 64 << 20);
     mallopt(M_TRIM_THRESHOLD, 128 << 20);
     p = malloc(n * mib);
@@ -95,16 +99,13 @@ get_ready(int req)
     for (size_t k = 0; k < n && !asked(req); k++)
         memset(p + k * mib, 0, mib);
     free(p);
-    if (!asked(req))
-        cf__live_warm();
 }
 
 /* The child: set up as a run's process, then wait on req for the values
 ** (their length, 4 bytes, then the bytes; the end of req without them: the
 ** server needs no more runs, exit), run, write the answer into fd and
 ** _exit (no atexit handler of the parent's runs here).  A spare child
-** (forked ahead of need) touches the memory a run touches first, so that
-** copying the parent's pages on write happens before the run, not in it. */
+** (forked ahead of need) readies its heap while it waits (get_ready). */
 _Noreturn static void
 child(int fd, int req, pid_t parent, const char *script,
       const cf__tool_limits *l, bool spare)
@@ -145,7 +146,7 @@ child(int fd, int req, pid_t parent, const char *script,
             close((int)k);
     }
     if (spare)
-        get_ready(req);
+        get_ready(req, l->script.max_memory);
     if (read_all(req, &vlen, 4) != 0 || vlen > CF__LIVE_MAX_VALUES)
         _exit(5);
     values = malloc((size_t)vlen + 1);

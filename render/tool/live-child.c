@@ -13,7 +13,6 @@
 #define _GNU_SOURCE   /* close_range, where the C library has it */
 #include <errno.h>
 #include <fcntl.h>
-#include <malloc.h>
 #include <math.h>
 #include <poll.h>
 #include <signal.h>
@@ -65,50 +64,14 @@ read_all(int fd, void *data, size_t n)
     return 0;
 }
 
-/* Whether the values wait on req already. */
-static bool
-asked(int req)
-{
-    struct pollfd p = { req, POLLIN, 0 };
-    return poll(&p, 1, 0) > 0;
-}
-
-/* A spare made ready for a run while the server waits, a MiB at a time,
-** stopping as soon as the values come (a drag sends them right after the
-** last answer: the run must not wait for this): the run's blocks of up to
-** 64 MiB come from the heap, not from fresh mappings, and what it frees
-** stays there; 24 MiB of it (at most the run's memory limit) are written
-** once now, so that the run reuses pages already in place instead of
-** faulting each in (a forked run's rasters and buffers were most of its
-** page faults).  Nothing that cannot be cut short: a small figure drawn
-** here to warm pango's and cairo's pages made a run that came during it
-** wait for it (10 s under ASan on a loaded machine). */
-static void
-get_ready(int req, size_t max_memory)
-{
-    size_t mib = (size_t)1 << 20, n = 24;
-    char *p;
-    /* never more than the run may use (0: the default, 256 MiB) */
-    if (max_memory != 0 && max_memory / mib < n)
-        n = max_memory / mib;
-    mallopt(M_MMAP_THRESHOLD, 64 << 20);
-    mallopt(M_TRIM_THRESHOLD, 128 << 20);
-    p = malloc(n * mib);
-    if (p == NULL)
-        return;
-    for (size_t k = 0; k < n && !asked(req); k++)
-        memset(p + k * mib, 0, mib);
-    free(p);
-}
-
 /* The child: set up as a run's process, then wait on req for the values
 ** (their length, 4 bytes, then the bytes; the end of req without them: the
 ** server needs no more runs, exit), run, write the answer into fd and
 ** _exit (no atexit handler of the parent's runs here).  A spare child
-** (forked ahead of need) readies its heap while it waits (get_ready). */
+** (forked ahead of need) is this, forked before the values exist. */
 _Noreturn static void
 child(int fd, int req, pid_t parent, const char *script,
-      const cf__tool_limits *l, bool spare)
+      const cf__tool_limits *l)
 {
     sigset_t none;
     char error[1024];
@@ -145,8 +108,6 @@ child(int fd, int req, pid_t parent, const char *script,
         for (long k = 5; k < (max > 0 && max < 65536 ? max : 65536); k++)
             close((int)k);
     }
-    if (spare)
-        get_ready(req, l->script.max_memory);
     if (read_all(req, &vlen, 4) != 0 || vlen > CF__LIVE_MAX_VALUES)
         _exit(5);
     values = malloc((size_t)vlen + 1);
@@ -226,8 +187,7 @@ read_reply(int fd, int stop_fd, double deadline, char **buf, size_t *len)
 /* Fork a run's process into sp (waiting for its values); 0, or -1 with
 ** errno. */
 static int
-spawn(cf__live_spare *sp, const char *script, const cf__tool_limits *l,
-      bool spare)
+spawn(cf__live_spare *sp, const char *script, const cf__tool_limits *l)
 {
     int reply[2], req[2];
     pid_t pid, parent = getpid();
@@ -254,7 +214,7 @@ spawn(cf__live_spare *sp, const char *script, const cf__tool_limits *l,
     if (pid == 0) {
         close(reply[0]);
         close(req[1]);
-        child(reply[1], req[0], parent, script, l, spare);
+        child(reply[1], req[0], parent, script, l);
     }
     close(reply[1]);
     close(req[0]);
@@ -275,7 +235,7 @@ void
 cf__live_spare_fork(cf__live_spare *sp, const char *script,
                     const cf__tool_limits *limits)
 {
-    if (sp->pid <= 0 && spawn(sp, script, limits, true) != 0)
+    if (sp->pid <= 0 && spawn(sp, script, limits) != 0)
         cf__live_spare_init(sp);
 }
 
@@ -321,7 +281,7 @@ cf__live_run_child(const char *script, const cf__tool_limits *limits,
             close(spare->req);
             close(spare->reply);
         }
-        if (spawn(&run, script, limits, false) != 0) {
+        if (spawn(&run, script, limits) != 0) {
             snprintf(msg, sizeof msg, "cannot start a run of %s: %s",
                      script, strerror(errno));
             if (spare != NULL)

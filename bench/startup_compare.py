@@ -89,7 +89,13 @@ def main(argv):
         source = opts.get("--source",
                           os.path.dirname(os.path.dirname(os.path.abspath(
                               __file__))))
-        old_tool, _ = build_commit(opts["--commit"], source)
+        try:
+            old_tool, _ = build_commit(opts["--commit"], source)
+        except (OSError, subprocess.CalledProcessError) as e:
+            # not a git checkout of the project, or the commit does not build
+            sys.stderr.write("startup_compare: cannot build commit %s "
+                             "(%s): skipped\n" % (opts["--commit"], e))
+            return 77
         new_tool, figures = args
     elif len(args) == 3:
         new_tool, old_tool, figures = args

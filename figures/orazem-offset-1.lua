@@ -82,8 +82,9 @@ local f2, k2 = offset_figure("orazem-offset-2", 1.5,
   "(a swallow-tail, magnified in the inset) in the raw offset (orange " ..
   "dashed, cusps red), the trimmed offset light green beneath it " ..
   "(Figure 2: Normala obrnjena navznoter, d = 1.5)",
-  -- P_3 below right and P_4 above left: the inset's connector lines pass
-  -- right of them
+  -- P_3 below right and P_4 above left, clear of the curve and the
+  -- offsets; the inset (placed automatically) goes where its connectors
+  -- cross the least: above left, clear of every point and label
   { "w", "s", "se", "se", "nw" })
 assert(#k2 == 2)
 -- the swallow-tail magnified: both cusps and the self-intersection

@@ -19,8 +19,9 @@ local P = points{
 }
 local w = {}
 for i = 0, 7 do
-  w[i + 1] = slider{ name = "w" .. i, label = "ω" .. i, min = 1, max = 100,
-                     default = 1, step = 0.1 }
+  -- a log slider: 1 to 2 takes as much of it as 50 to 100
+  w[i + 1] = slider{ name = "w" .. i, label = "\\omega_" .. i, min = 1,
+                     max = 100, default = 1, step = 0.1, scale = "log" }
 end
 
 local f = figure{

@@ -54,11 +54,17 @@ CF_API cf_status_t cf_figure_set_legend_place(cf_figure_t *fig,
 typedef struct cf_inset {
     double region[4];   /* x0 y0 x1 y1, data units, x0 < x1, y0 < y1,
                            inside the figure's window */
-    cf_place_t place;   /* CF_PLACE_AUTO: a corner or side of the
-                           drawing's ink with no ink (with none free, the
-                           drawing makes room beside it, at the right or
-                           below); else that corner or side of the
-                           drawing's ink */
+    cf_place_t place;   /* CF_PLACE_AUTO: where the box covers no ink
+                           and its connectors cross the least: a corner
+                           or side of the drawing's ink box, or beside
+                           the drawing (at its right, left, above or
+                           below it: the drawing is made smaller to leave
+                           room on a fixed page) when that crosses less;
+                           else that corner or side of the drawing's
+                           ink */
+    bool beside;        /* place is a side (N, S, E, W): the inset goes
+                           beside the drawing's ink, outside it (above,
+                           below, right, left), not inside its edge */
     bool has_rect;      /* rect given: it overrides place and size */
     double rect[4];     /* x y w h, page bp from the top left */
     double scale;       /* magnification over the main drawing (> 0), or 0:

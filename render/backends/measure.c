@@ -309,9 +309,22 @@ int
 cf__raster_paint(cf__raster_t *r, const cf__dl_t *dl, size_t from,
                  size_t to)
 {
+    const int all[4] = { 0, 0, r->w, r->h };
+    return cf__raster_paint_in(r, dl, from, to, all);
+}
+
+int
+cf__raster_paint_in(cf__raster_t *r, const cf__dl_t *dl, size_t from,
+                    size_t to, const int b[4])
+{
     measure_t g;
     measure_init(&g, r, r->res, -r->ox * r->res, -r->oy * r->res,
                  RASTER_TOL);
+    /* whole pixels: put_poly's rounding leaves them as they are */
+    g.clip[0][0] = b[0];
+    g.clip[0][1] = b[1];
+    g.clip[0][2] = b[2];
+    g.clip[0][3] = b[3];
     cf__dl_play(dl, from, to, &measure_backend, &g);
     cf__poly_free(&g.pl);
     return g.failed ? -1 : 0;

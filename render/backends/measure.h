@@ -34,6 +34,10 @@ void cf__raster_clear(cf__raster_t *r, const int *b);
 ** v + a c (1 - v); 0, or -1 out of memory. */
 int cf__raster_paint(cf__raster_t *r, const cf__dl_t *dl, size_t from,
                      size_t to);
+/* The same within the pixel box b (i0 j0 i1 j1) only: its pixels come out
+** as cf__raster_paint's, the others are left as they are. */
+int cf__raster_paint_in(cf__raster_t *r, const cf__dl_t *dl, size_t from,
+                        size_t to, const int b[4]);
 
 /* The ink box (page bp: x0 y0 x1 y1, empty: x1 <= x0) of ops [from, to)
 ** of dl; 0, or -1 out of memory. */

@@ -5,18 +5,15 @@
 ** polygon of their subpaths, strokes the union of one quadrilateral a
 ** segment, a wedge or a miter a join, and a half disc a round cap, every
 ** piece wound positively so that the nonzero rule unites them (cairo's
-** miter limit 10, beyond it a bevel).  Coverage is sampled on 4
-** sub-scanlines a pixel, each crossing the pixels it covers in exact
-** horizontal fractions.
+** miter limit 10, beyond it a bevel).  Their coverage is
+** render/backends/coverage.c's.
 */
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "raster.h"
 
 #define PI 3.14159265358979323846
-#define SUB 4                 /* sub-scanlines a pixel */
 #define MITER_LIMIT 10.0
 #define MAX_CHORDS 256        /* chords of one cubic or arc at most */
 
@@ -639,149 +636,4 @@ cf__path_box(const cf__path_t *p, const cf__xform_t *m, double box[4])
         }
         cur = true;
     }
-}
-
-/* ---- coverage ----------------------------------------------------------- */
-
-static int
-cmp_edge(const void *a, const void *b)
-{
-    double d = ((const cf__edge_t *)a)->y0 - ((const cf__edge_t *)b)->y0;
-    return d < 0 ? -1 : d > 0;
-}
-
-typedef struct cross { double x; int dir; } cross_t;
-
-/* Coverage w of the pixels between a and b (device x) added to row
-** (whose first cell is pixel i0, of i1 - i0 cells): the partly covered
-** ones in row, the whole ones as a run (w added at the first, taken
-** away after the last, summed across when the row is painted). */
-static void
-add_span(float *row, float *run, int i0, int i1, double a, double b,
-         double w)
-{
-    int ia, ib;
-    if (a < i0)
-        a = i0;
-    if (b > i1)
-        b = i1;
-    if (!(b > a))
-        return;
-    ia = (int)floor(a);
-    ib = (int)floor(b);
-    if (ia == ib) {
-        row[ia - i0] += (float)((b - a) * w);
-        return;
-    }
-    row[ia - i0] += (float)((ia + 1 - a) * w);
-    if (ia + 1 < ib) {
-        run[ia + 1 - i0] += (float)w;
-        if (ib < i1)
-            run[ib - i0] -= (float)w;
-    }
-    if (ib < i1)
-        row[ib - i0] += (float)((b - ib) * w);
-}
-
-int
-cf__poly_paint(cf__poly_t *pl, unsigned char *px, int stride,
-               const int clip[4], double alpha, bool evenodd)
-{
-    int i0, i1, j0, j1, y, k, w;
-    float across;
-    size_t next = 0, nact = 0, i;
-    size_t *act;
-    cross_t *cx;
-    float *row, *run;
-    if (pl->failed)
-        return -1;
-    if (pl->n == 0 || !(alpha > 0))
-        return 0;
-    /* the polygon's pixels within the clip */
-    i0 = (int)fmax(clip[0], floor(fmax(pl->box[0], -1e9)));
-    i1 = (int)fmin(clip[2], ceil(fmin(pl->box[2], 1e9)));
-    j0 = (int)fmax(clip[1], floor(fmax(pl->box[1], -1e9)));
-    j1 = (int)fmin(clip[3], ceil(fmin(pl->box[3], 1e9)));
-    if (i1 <= i0 || j1 <= j0)
-        return 0;
-    w = i1 - i0;
-    {
-        /* the active edges, the crossings and a row, kept in pl */
-        size_t need = pl->n * (sizeof *act + sizeof *cx)
-                       + 2 * (size_t)w * sizeof *row;
-        if (need > pl->scratch_size) {
-            void *p = cf_realloc_array(pl->scratch, need, 1);
-            if (p == NULL)
-                return -1;
-            pl->scratch = p;
-            pl->scratch_size = need;
-        }
-        cx = pl->scratch;
-        act = (size_t *)(cx + pl->n);
-        row = (float *)(act + pl->n);
-        run = row + w;
-    }
-    qsort(pl->e, pl->n, sizeof *pl->e, cmp_edge);
-    memset(row, 0, 2 * (size_t)w * sizeof *row);
-    for (y = j0; y < j1; y++) {
-        unsigned char *d = px + (size_t)y * (size_t)stride;
-        int lo = w, hi = 0;
-        for (k = 0; k < SUB; k++) {
-            double sy = y + (k + 0.5) / SUB;
-            size_t nc = 0, j;
-            int wind = 0;
-            double start = 0;
-            while (next < pl->n && pl->e[next].y0 <= sy)
-                act[nact++] = next++;
-            for (i = 0; i < nact;) {
-                const cf__edge_t *e = &pl->e[act[i]];
-                if (e->y1 <= sy) {
-                    act[i] = act[--nact];
-                    continue;
-                }
-                {
-                    /* insertion into the crossings sorted by x */
-                    double x = e->x0 + (sy - e->y0) * e->dxdy;
-                    size_t at = nc;
-                    while (at > 0 && cx[at - 1].x > x) {
-                        cx[at] = cx[at - 1];
-                        at--;
-                    }
-                    cx[at].x = x;
-                    cx[at].dir = e->dir;
-                    nc++;
-                }
-                i++;
-            }
-            for (j = 0; j < nc; j++) {
-                bool was = evenodd ? (wind & 1) != 0 : wind != 0, is;
-                wind += cx[j].dir;
-                is = evenodd ? (wind & 1) != 0 : wind != 0;
-                if (!was && is) {
-                    start = cx[j].x;
-                } else if (was && !is && cx[j].x > i0 && start < i1) {
-                    int a = start > i0 ? (int)start - i0 : 0;
-                    int b = cx[j].x < i1 ? (int)cx[j].x + 1 - i0 : w;
-                    add_span(row, run, i0, i1, start, cx[j].x, 1.0 / SUB);
-                    lo = a < lo ? a : lo;
-                    hi = (b < w ? b : w) > hi ? (b < w ? b : w) : hi;
-                }
-            }
-        }
-        for (i = (size_t)lo, across = 0; (int)i < hi; i++) {
-            float c;
-            across += run[i];
-            c = row[i] + across;
-            c = c < 1 ? c : 1;
-            row[i] = run[i] = 0;
-            if (c > 0) {
-                /* v + a c (1 - v) in bytes, rounded */
-                double v = d[(size_t)i0 + i], ac = alpha * c;
-                d[(size_t)i0 + i] = (unsigned char)(v + ac * (255 - v) + 0.5);
-            }
-        }
-        if (next == pl->n && nact == 0)
-            break;
-    }
-    return 0;
 }

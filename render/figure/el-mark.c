@@ -42,8 +42,6 @@ label_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
 {
     label_el_t *e = (label_el_t *)el;
     double px, py;
-    if (!cf__in_window(l, e->x, e->y))
-        return CF_STATUS_OK;
     cf__map(l, e->x, e->y, &px, &py);
     if (s->place == CF_PLACE_AUTO)
         return cf__text_draw(fig, &e->text, s, px, py, e->chosen.place,

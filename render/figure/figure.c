@@ -106,6 +106,7 @@ cf_figure_destroy(cf_figure_t *fig)
     cf_free(fig->legend);
     cf_free(fig->insets);
     cf_free(fig->inset_band);
+    cf_free(fig->inset_cache);
     for (i = 0; fig->panels != NULL && i < (size_t)(fig->rows * fig->cols);
          i++)
         cf_figure_destroy(fig->panels[i]);
@@ -116,6 +117,8 @@ cf_figure_destroy(cf_figure_t *fig)
     cf_free(fig->caption);
     cf_free(fig->proj);
     cf_free(fig->warnings);
+    cf_free(fig->place_px);
+    cf_free(fig->all_warnings);
     cf_free(fig);
 }
 

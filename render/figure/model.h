@@ -143,12 +143,14 @@ struct cf__element {
 
 /* Where a box goes beside the drawing (render/layout/room.c): undecided (a new
 ** layout), inside the drawing's ink box, or in a band at its right or
-** below it. */
+** below it (or, for an inset, at its left or above it). */
 typedef enum cf__room_band {
     CF__ROOM_UNDECIDED,
     CF__ROOM_INSIDE,
     CF__ROOM_RIGHT,
-    CF__ROOM_BELOW
+    CF__ROOM_BELOW,
+    CF__ROOM_LEFT,
+    CF__ROOM_ABOVE
 } cf__room_band_t;
 
 /* A legend entry: element el and its text. */
@@ -176,10 +178,18 @@ struct cf_figure {
     size_t count, cap;
     char *warnings;          /* of the last layout, a line each; NULL: none */
     size_t warnings_len;
+    char *all_warnings;      /* a figure split into panels: its own and
+                                its panels' of the last build, each line
+                                of a panel naming it (render/layout/
+                                layout.c); NULL: none */
     /* the layout (less its page position) the labels were last placed for
     ** within one cf__figure_layout and its builds (render/layout/place.c) */
-    bool placed;
+    bool placed, placed_draft;
     cf__layout_t placed_for;
+    /* the memory of its rasters, kept for the next placement (a layout
+    ** places the labels once per refit) */
+    unsigned char *place_px;
+    size_t place_px_size;
     /* legend (render/layout/legend.c) */
     cf__legend_entry_t *legend;
     size_t nlegend;
@@ -190,6 +200,8 @@ struct cf_figure {
     cf_inset_t *insets;
     size_t ninsets;
     cf__room_band_t *inset_band;  /* each one's, of this layout */
+    void *inset_cache;            /* their places for the last map they
+                                     were found for (inset-place.c) */
     /* panels (render/layout/panel.c): rows x cols figures, or a panel's
     ** parent */
     cf_figure_t **panels;

@@ -9,8 +9,6 @@
 
 #include "layout-private.h"
 
-#define INSET_EDGE 4.0    /* bp inside the edge of the drawing's ink */
-#define INSET_FRAME 0.5   /* bp: frame and connector width */
 
 void
 cf_inset_init(cf_inset_t *inset)
@@ -44,6 +42,12 @@ cf_figure_add_inset(cf_figure_t *fig, const cf_inset_t *in)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
                            "inset %zu: place %d: give a corner or side (ne, "
                            "nw, se, sw, n, s, e, w) or auto",
+                           fig->ninsets + 1, (int)in->place);
+    if (in->beside && in->place != CF_PLACE_N && in->place != CF_PLACE_S
+        && in->place != CF_PLACE_E && in->place != CF_PLACE_W)
+        return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
+                           "inset %zu: beside the drawing is a side (above, "
+                           "below, left, right: n, s, w, e), not place %d",
                            fig->ninsets + 1, (int)in->place);
     if (!(isfinite(in->scale) && in->scale >= 0 && isfinite(in->size)
           && in->size >= 0))
@@ -98,102 +102,17 @@ frame(double x, double y, double w, double h, const cf__paint_t *p,
     cf__dl_path_paint(dl, p);
 }
 
-/* The two connectors: from the region's corners to the inset's nearest
-** ones (the pair of corners on the side facing the inset). */
-static void
-connectors(const double rb[4], const double ib[4], const cf__paint_t *p,
-           cf__dl_t *dl)
-{
-    /* boxes as x0 y0 x1 y1; corners 0 tl, 1 tr, 2 br, 3 bl */
-    double rc[4][2] = { { rb[0], rb[1] }, { rb[2], rb[1] },
-                        { rb[2], rb[3] }, { rb[0], rb[3] } };
-    double ic[4][2] = { { ib[0], ib[1] }, { ib[2], ib[1] },
-                        { ib[2], ib[3] }, { ib[0], ib[3] } };
-    int a, b;
-    bool left = ib[2] <= rb[0], right = ib[0] >= rb[2];
-    bool above = ib[3] <= rb[1], below = ib[1] >= rb[3];
-    if (right && !above && !below) {
-        a = 1; b = 2;
-    } else if (left && !above && !below) {
-        a = 0; b = 3;
-    } else if (above && !left && !right) {
-        a = 0; b = 1;
-    } else if (below && !left && !right) {
-        a = 3; b = 2;
-    } else if ((right && above) || (left && below)) {
-        a = 0; b = 2;
-    } else {
-        a = 1; b = 3;
-    }
-    cf__dl_path_begin(dl);
-    cf__dl_move(dl, rc[a][0], rc[a][1]);
-    cf__dl_line(dl, ic[a][0], ic[a][1]);
-    cf__dl_move(dl, rc[b][0], rc[b][1]);
-    cf__dl_line(dl, ic[b][0], ic[b][1]);
-    cf__dl_path_paint(dl, p);
-}
-
-/* The magnification of inset in for layout lay; the region's page box
-** into rb (x0 y0 x1 y1). */
-static double
-magnification(const cf_figure_t *fig, const cf__layout_t *lay,
-              const cf_inset_t *in, double rb[4])
-{
-    const double *r = in->region;
-    cf__map(lay, r[0], r[3], &rb[0], &rb[1]);
-    cf__map(lay, r[2], r[1], &rb[2], &rb[3]);
-    if (in->has_rect)
-        return fmin(in->rect[2] / (rb[2] - rb[0]),
-                    in->rect[3] / (rb[3] - rb[1]));
-    if (in->scale > 0)
-        return in->scale;
-    return (in->size > 0 ? in->size : fig->width / 3) / (rb[2] - rb[0]);
-}
-
 static cf_status_t
 draw_inset(cf_figure_t *fig, const cf__layout_t *lay, size_t k,
-           size_t from, cf__dl_t *dl)
+           const cf__inset_geom_t *g, cf__dl_t *dl)
 {
     const cf_inset_t *in = &fig->insets[k];
-    const double *r = in->region;
-    double e = 1e-9 * fmax(lay->xmax - lay->xmin, lay->ymax - lay->ymin);
-    double rb[4], ib[4], bw, bh, mag, at[2];
+    double bw = g->ib[2] - g->ib[0], bh = g->ib[3] - g->ib[1];
     cf__layout_t il;
-    cf__paint_t line, bg;
-    cf_style_t axes;
+    cf__paint_t bg;
     size_t i;
-    if (r[0] < lay->xmin - e || r[2] > lay->xmax + e || r[1] < lay->ymin - e
-        || r[3] > lay->ymax + e)
-        return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, (long)k,
-                           "inset %zu: region {%g, %g, %g, %g} is not inside "
-                           "the window [%g, %g] x [%g, %g]", k + 1, r[0],
-                           r[1], r[2], r[3], lay->xmin, lay->xmax,
-                           lay->ymin, lay->ymax);
-    mag = magnification(fig, lay, in, rb);
-    bw = mag * (rb[2] - rb[0]);
-    bh = mag * (rb[3] - rb[1]);
-    if (in->has_rect) {
-        at[0] = lay->px + in->rect[0];
-        at[1] = lay->py + in->rect[1];
-    } else {
-        if (cf__room_find(fig, lay, dl, from, bw, bh, in->place,
-                          INSET_EDGE, &fig->inset_band[k], at)
-            != CF_STATUS_OK)
-            return fig->err.status;
-    }
-    ib[0] = at[0];
-    ib[1] = at[1];
-    ib[2] = at[0] + bw;
-    ib[3] = at[1] + bh;
-    inset_map(lay, r, mag, at[0], at[1], &il);
-    cf__style_resolve(&fig->theme, CF_ROLE_AXES, NULL, &axes);
-    memset(&line, 0, sizeof line);
-    line.stroke = true;
-    cf__stroke_from_style(&axes, &line.line);
-    line.line.width = INSET_FRAME;
-    line.line.dash_count = 0;
-    bg = line;
-    bg.stroke = false;
+    inset_map(lay, in->region, g->mag, g->ib[0], g->ib[1], &il);
+    memset(&bg, 0, sizeof bg);
     bg.fill = true;
     bg.fill_color = fig->theme.background;
     if (bg.fill_color.a <= 0)
@@ -201,11 +120,11 @@ draw_inset(cf_figure_t *fig, const cf__layout_t *lay, size_t k,
             bg.fill_color.a = 1;
     bg.fill_opacity = 1;
     cf__dl_group(dl, "inset", k);
-    frame(rb[0], rb[1], rb[2] - rb[0], rb[3] - rb[1], &line, dl);
-    connectors(rb, ib, &line, dl);
-    frame(ib[0], ib[1], bw, bh, &bg, dl);
+    if (cf__inset_outline(fig, g, CF__INSET_LINES, dl) != CF_STATUS_OK)
+        return fig->err.status;
+    frame(g->ib[0], g->ib[1], bw, bh, &bg, dl);
     {
-        double rect[4] = { ib[0], ib[1], bw, bh };
+        double rect[4] = { g->ib[0], g->ib[1], bw, bh };
         cf__dl_clip(dl, rect);
     }
     for (i = 0; i < fig->count; i++)
@@ -213,18 +132,27 @@ draw_inset(cf_figure_t *fig, const cf__layout_t *lay, size_t k,
             && cf__element_draw(fig, i, &il, dl) != CF_STATUS_OK)
             break;
     cf__dl_unclip(dl);
-    frame(ib[0], ib[1], bw, bh, &line, dl);
+    /* the inset's frame over what it shows */
+    if (cf__inset_outline(fig, g, CF__INSET_FRAME, dl) != CF_STATUS_OK)
+        return fig->err.status;
     cf__dl_end(dl);
     return fig->err.status;
 }
 
 cf_status_t
-cf__insets_draw(cf_figure_t *fig, const cf__layout_t *lay, size_t from,
-                cf__dl_t *dl)
+cf__insets_draw(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
 {
+    cf__inset_geom_t *g;
     size_t k;
-    for (k = 0; k < fig->ninsets; k++)
-        if (draw_inset(fig, lay, k, from, dl) != CF_STATUS_OK)
-            return fig->err.status;
-    return CF_STATUS_OK;
+    if (fig->ninsets == 0)
+        return CF_STATUS_OK;
+    g = cf_alloc_array(fig->ninsets, sizeof *g);
+    if (g == NULL)
+        return cf__fig_nomem(fig, "the insets");
+    if (cf__insets_place(fig, lay, g) == CF_STATUS_OK)
+        for (k = 0; k < fig->ninsets; k++)
+            if (draw_inset(fig, lay, k, &g[k], dl) != CF_STATUS_OK)
+                break;
+    cf_free(g);
+    return fig->err.status;
 }

@@ -10,6 +10,16 @@
 
 /* ---- layout.c ----------------------------------------------------------- */
 
+/* Whether layouts a and b map the data alike, page position aside. */
+static inline bool
+cf__layout_same_map(const cf__layout_t *a, const cf__layout_t *b)
+{
+    return a->xmin == b->xmin && a->xmax == b->xmax && a->ymin == b->ymin
+        && a->ymax == b->ymax && a->sx == b->sx && a->sy == b->sy
+        && a->ox == b->ox && a->oy == b->oy && a->tol == b->tol
+        && a->clip == b->clip;
+}
+
 /* Compute the layout for the figure's page (errors go into fig). */
 cf_status_t cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay);
 /* The display list of every element for a layout (automatic label places
@@ -31,10 +41,43 @@ cf_status_t cf__figure_check_page(const cf_figure_t *fig, const cf__dl_t *dl,
 ** groups drawn at ops [from, dl->count). */
 cf_status_t cf__legend_draw(cf_figure_t *fig, const cf__layout_t *lay,
                             size_t from, cf__dl_t *dl);
-/* Every inset: the elements drawn again in its box, frames, connectors;
-** placed beside the drawing at ops [from, dl->count). */
+/* Every inset: the elements drawn again in its box, frames, connectors
+** (render/layout/inset.c), where render/layout/inset-place.c puts it. */
 cf_status_t cf__insets_draw(cf_figure_t *fig, const cf__layout_t *lay,
-                            size_t from, cf__dl_t *dl);
+                            cf__dl_t *dl);
+
+/* ---- inset-place.c ------------------------------------------------------ */
+
+/* Where an inset goes for a layout: the region's and the inset's page
+** boxes (x0 y0 x1 y1), the magnification, and the two corners (0 top
+** left, 1 top right, 2 bottom right, 3 bottom left) its connectors join
+** (each a corner of the region's frame to the same of the inset's). */
+typedef struct cf__inset_geom {
+    double rb[4], ib[4], mag;
+    int pair[2];
+} cf__inset_geom_t;
+
+/* Every inset's place for layout lay into g[fig->ninsets] (an inset
+** placed automatically avoids the drawing less the labels placed
+** automatically, and the insets before it; how:
+** render/layout/inset-place.c).  A region outside the window is an
+** error. */
+cf_status_t cf__insets_place(cf_figure_t *fig, const cf__layout_t *lay,
+                             cf__inset_geom_t *g);
+/* What cf__inset_outline draws. */
+enum {
+    CF__INSET_LINES = 1u << 0,   /* the region's frame, the connectors */
+    CF__INSET_FRAME = 1u << 1,   /* the inset's frame */
+    CF__INSET_BOX = 1u << 2,     /* the inset's box, filled */
+    CF__INSET_INK = CF__INSET_LINES | CF__INSET_BOX
+};
+/* Inset g's lines (what: CF__INSET_*) in the axes' colour into dl. */
+cf_status_t cf__inset_outline(cf_figure_t *fig, const cf__inset_geom_t *g,
+                              unsigned what, cf__dl_t *dl);
+/* Every inset's ink for layout lay, as the labels must avoid it (frames,
+** connectors, the box filled) into dl. */
+cf_status_t cf__insets_ink(cf_figure_t *fig, const cf__layout_t *lay,
+                           cf__dl_t *dl);
 /* A new layout: the legend and the insets placed afresh. */
 void cf__room_reset(cf_figure_t *fig);
 /* Cell k of a figure split into panels: x y w h, page bp. */
@@ -54,12 +97,20 @@ cf_status_t cf__room_find(cf_figure_t *fig, const cf__layout_t *lay,
                           const cf__dl_t *dl, size_t from, double w,
                           double h, cf_place_t place, double gap,
                           cf__room_band_t *band, double at[2]);
+/* The top left of a w x h box at place (a corner or side) of box a
+** (x0 y0 x1 y1), gap inside its edge. */
+void cf__room_box_at(const double a[4], double w, double h,
+                     cf_place_t place, double gap, double at[2]);
 
 /* ---- place.c ------------------------------------------------------------ */
 
 /* Choose the places of the labels placed CF_PLACE_AUTO for a layout, and
-** note in the figure's warnings every label that lies on ink. */
-cf_status_t cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay);
+** note in the figure's warnings every label that lies on ink; a draft
+** (a refit of the ink box, never the layout drawn) chooses the same
+** places without looking for labels on ink, and is never reused for a
+** layout drawn. */
+cf_status_t cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay,
+                             bool draft);
 /* Forget the places chosen: the figure is laid out afresh. */
 void cf__place_forget(cf_figure_t *fig);
 

@@ -6,6 +6,7 @@
 ** a layout.
 */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "layout-private.h"
@@ -34,12 +35,14 @@ compute_map(const cf_figure_t *fig, const double win[4], bool keep,
 }
 
 
-/* The elements (their automatic label places chosen first). */
+/* The elements (their automatic label places chosen first; a draft's
+** for a refit of the ink box). */
 static cf_status_t
-build_elements(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
+build_elements(cf_figure_t *fig, const cf__layout_t *lay, bool draft,
+               cf__dl_t *dl)
 {
     size_t i;
-    if (cf__place_labels(fig, lay) != CF_STATUS_OK)
+    if (cf__place_labels(fig, lay, draft) != CF_STATUS_OK)
         return fig->err.status;
     for (i = 0; i < fig->count; i++)
         if (cf__element_draw(fig, i, lay, dl) != CF_STATUS_OK)
@@ -49,16 +52,17 @@ build_elements(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
 
 /* The ink box of the figure drawn with layout lay: its elements, and the
 ** insets and the legend placed beside them (its panels are not measured:
-** they have their own layouts in their cells). */
+** they have their own layouts in their cells); draft: one of the refits
+** of a page cropped to its ink. */
 static cf_status_t
-ink_of(cf_figure_t *fig, const cf__layout_t *lay, double ink[4])
+ink_of(cf_figure_t *fig, const cf__layout_t *lay, bool draft, double ink[4])
 {
     cf__dl_t dl;
     cf_status_t st;
     cf__dl_init(&dl);
-    st = build_elements(fig, lay, &dl);
+    st = build_elements(fig, lay, draft, &dl);
     if (st == CF_STATUS_OK)
-        st = cf__insets_draw(fig, lay, 0, &dl);
+        st = cf__insets_draw(fig, lay, &dl);
     if (st == CF_STATUS_OK)
         st = cf__legend_draw(fig, lay, 0, &dl);
     if (st == CF_STATUS_OK)
@@ -119,6 +123,46 @@ build_panels(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
     return fig->err.status;
 }
 
+/* The warnings of a figure split into panels: its own, then each
+** panel's lines, "panel (a): " in front. */
+static cf_status_t
+gather_warnings(cf_figure_t *fig)
+{
+    int k, n = fig->rows * fig->cols;
+    size_t size = fig->warnings_len + 1;
+    char *all, *at;
+    for (k = 0; k < n; k++) {
+        const char *w = cf_figure_warnings(fig->panels[k]);
+        size += strlen(w) + 12;   /* "panel (a): " and a newline */
+        for (; *w != '\0'; w++)
+            size += (*w == '\n') * 12;
+    }
+    all = cf_malloc(size);
+    if (all == NULL)
+        return cf__fig_nomem(fig, "the panels' warnings");
+    at = all;
+    if (fig->warnings != NULL) {
+        memcpy(at, fig->warnings, fig->warnings_len);
+        at += fig->warnings_len;
+    }
+    for (k = 0; k < n; k++) {
+        const char *w = cf_figure_warnings(fig->panels[k]);
+        while (*w != '\0') {
+            const char *nl = strchr(w, '\n');
+            size_t len = nl != NULL ? (size_t)(nl - w) : strlen(w);
+            at += sprintf(at, "panel (%c): ", 'a' + k);
+            memcpy(at, w, len);
+            at += len;
+            *at++ = '\n';
+            w += len + (nl != NULL);
+        }
+    }
+    *at = '\0';
+    cf_free(fig->all_warnings);
+    fig->all_warnings = all;
+    return CF_STATUS_OK;
+}
+
 cf_status_t
 cf__figure_build(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
 {
@@ -126,9 +170,11 @@ cf__figure_build(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
     if (fig->panels != NULL && build_panels(fig, lay, dl) != CF_STATUS_OK)
         return fig->err.status;
     from = dl->count;
-    if (build_elements(fig, lay, dl) != CF_STATUS_OK
-        || cf__insets_draw(fig, lay, from, dl) != CF_STATUS_OK
+    if (build_elements(fig, lay, false, dl) != CF_STATUS_OK
+        || cf__insets_draw(fig, lay, dl) != CF_STATUS_OK
         || cf__legend_draw(fig, lay, from, dl) != CF_STATUS_OK)
+        return fig->err.status;
+    if (fig->panels != NULL && gather_warnings(fig) != CF_STATUS_OK)
         return fig->err.status;
     if (dl->failed)
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
@@ -176,6 +222,53 @@ make_room(const cf_figure_t *fig, const double win[4], const double ink[4],
     avail[2] = fig->width - m - or_;
     avail[1] = m + ot;
     avail[3] = fig->height - m - ob;
+}
+
+/* bp a label outside the window may stick out of the page: rounding */
+#define LABEL_SLACK 0.05
+
+/* A label outside an explicit window is drawn where it is (the drawing
+** makes room for it, as for any ink beyond the data box); one that then
+** lies off the figure's page is an error naming it and its place. */
+static cf_status_t
+labels_off_page(cf_figure_t *fig, const cf__layout_t *lay)
+{
+    cf__dl_t dl;
+    size_t i;
+    cf__dl_init(&dl);
+    for (i = 0; i < fig->count; i++) {
+        cf__element_t *e = fig->els[i];
+        cf__auto_place_t *chosen;
+        cf__text_t *t;
+        double x, y, ink[4];
+        if (e->kind->auto_label == NULL
+            || !e->kind->auto_label(e, &x, &y, &t, &chosen)
+            || cf__in_window(lay, x, y))
+            continue;
+        cf__dl_reset(&dl);
+        if (cf__element_draw(fig, i, lay, &dl) != CF_STATUS_OK)
+            break;
+        if (dl.failed || cf__dl_ink(&dl, 0, dl.count, ink) != 0) {
+            cf__fig_nomem(fig, "measuring a label");
+            break;
+        }
+        if (ink[2] > ink[0]
+            && (ink[0] < lay->px - LABEL_SLACK
+                || ink[1] < lay->py - LABEL_SLACK
+                || ink[2] > lay->px + fig->width + LABEL_SLACK
+                || ink[3] > lay->py + fig->height + LABEL_SLACK)) {
+            cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, (long)i,
+                        "label %zu \"%s\" at (%g, %g) is outside the window "
+                        "[%g, %g] x [%g, %g], too far to fit the %.1f x %.1f "
+                        "mm page beside it: widen the window or move the "
+                        "label", i + 1, t->src != NULL ? t->src : "", x, y,
+                        lay->xmin, lay->xmax, lay->ymin, lay->ymax,
+                        fig->width * 25.4 / 72, fig->height * 25.4 / 72);
+            break;
+        }
+    }
+    cf__dl_free(&dl);
+    return fig->err.status;
 }
 
 cf_status_t
@@ -243,7 +336,7 @@ cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
     for (pass = 0; pass < (refine ? 8 : 1); pass++) {
         double prev[4];
         memcpy(prev, avail, sizeof prev);
-        if (ink_of(fig, lay, ink) != CF_STATUS_OK)
+        if (ink_of(fig, lay, refine, ink) != CF_STATUS_OK)
             return fig->err.status;
         make_room(fig, win, ink, lay, avail);
         compute_map(fig, win, keep, avail, lay);
@@ -253,7 +346,7 @@ cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
             && fabs(prev[3] - avail[3]) < REFINE_TOL)
             break;
     }
-    return CF_STATUS_OK;
+    return fig->window_set ? labels_off_page(fig, lay) : CF_STATUS_OK;
 }
 
 cf_status_t

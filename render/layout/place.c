@@ -6,9 +6,15 @@
 ** default) takes the cheapest of the eight places around its anchor, at
 ** its offset and up to 4 bp farther (adjacent to the point), never one
 ** nearer another labelled point than its own while any other is left,
-** and is added to the raster in turn, so that later labels avoid it.  A label that still lies on ink, placed by hand or
-** automatically, is kept and reported in the figure's warnings
-** (cf_figure_warnings): which label, at which place, on what.
+** and is added to the raster in turn, so that later labels avoid it.
+** The insets' frames, connectors and boxes are ink too (placed before
+** the labels: render/layout/inset-place.c).  A label that still lies on
+** ink, placed by hand or automatically, is kept and reported in the
+** figure's warnings (cf_figure_warnings): which label, at which place,
+** on what.  The raster is drawn only where it is read (the candidate
+** places and the labels placed by hand), in the figure's memory kept
+** from the last placement; the refits of a page cropped to its ink place
+** the labels as a draft (the same places, no warnings).
 */
 #include <math.h>
 #include <stdarg.h>
@@ -32,6 +38,12 @@
 /* The distances tried, in bp beyond the style's offset. */
 static const double further[] = { 0.0, 1.0, 2.0, 3.0, 4.0 };
 
+/* The places tried, in order of preference. */
+static const cf_place_t order[] = {
+    CF_PLACE_NE, CF_PLACE_NW, CF_PLACE_SE, CF_PLACE_SW,
+    CF_PLACE_N, CF_PLACE_S, CF_PLACE_E, CF_PLACE_W
+};
+
 /* The anchors (page points) of the labels in the window. */
 typedef struct anchors {
     double *xy;
@@ -40,6 +52,8 @@ typedef struct anchors {
 
 typedef struct raster {
     cf__raster_t img, one;   /* the page's ink; one element's */
+    unsigned char *mask;     /* a label's pixels, laid out as one's */
+    bool draft;              /* no search for labels on ink */
     double res;
     cf__dl_t dl;
 } raster_t;
@@ -98,24 +112,28 @@ element_ops(cf_figure_t *fig, size_t i, const cf__layout_t *lay, raster_t *r)
     return st;
 }
 
-/* Paint the ops of r->dl into raster to. */
+/* Paint the ops of r->dl into raster to, within its pixel box px (NULL:
+** everywhere). */
 static cf_status_t
-paint(cf_figure_t *fig, raster_t *r, cf__raster_t *to)
+paint(cf_figure_t *fig, raster_t *r, cf__raster_t *to, const int *px)
 {
-    if (cf__raster_paint(to, &r->dl, 0, r->dl.count) != 0)
+    const int all[4] = { 0, 0, to->w, to->h };
+    if (cf__raster_paint_in(to, &r->dl, 0, r->dl.count,
+                            px != NULL ? px : all) != 0)
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
                            "out of memory placing labels");
     return CF_STATUS_OK;
 }
 
-/* Draw element i into raster to. */
+/* Draw element i into raster to, within its pixel box px (NULL:
+** everywhere). */
 static cf_status_t
 raster_element(cf_figure_t *fig, size_t i, const cf__layout_t *lay,
-               raster_t *r, cf__raster_t *to)
+               raster_t *r, cf__raster_t *to, const int *px)
 {
     cf_status_t st = element_ops(fig, i, lay, r);
     if (st == CF_STATUS_OK)
-        st = paint(fig, r, to);
+        st = paint(fig, r, to, px);
     return st;
 }
 
@@ -165,10 +183,6 @@ static void
 cheapest(const raster_t *r, const anchors_t *an, const cf_label_t *lab,
          const cf_style_t *s, double px, double py, cf__auto_place_t *chosen)
 {
-    static const cf_place_t order[] = {
-        CF_PLACE_NE, CF_PLACE_NW, CF_PLACE_SE, CF_PLACE_SW,
-        CF_PLACE_N, CF_PLACE_S, CF_PLACE_E, CF_PLACE_W
-    };
     double ink[4], best = INFINITY;
     size_t k, d;
     cf__label_ink(lab, ink);
@@ -261,8 +275,9 @@ what_is_under(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
             && ((s.place == CF_PLACE_AUTO) ? !automatic || j > lab
                                            : !automatic && j > lab))
             continue;
-        cf__raster_clear(&r->one, NULL);
-        if (raster_element(fig, j, lay, r, &r->one) != CF_STATUS_OK)
+        /* only the label's box px is compared */
+        cf__raster_clear(&r->one, px);
+        if (raster_element(fig, j, lay, r, &r->one, px) != CF_STATUS_OK)
             return fig->count;
         /* the mask is empty outside the label's box px */
         n = common_pixels(&r->one, mask, px);
@@ -284,15 +299,14 @@ static cf_status_t
 check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
             size_t i, const cf__text_t *t, cf_place_t place, bool automatic)
 {
-    unsigned char *mask;
     cf_status_t st;
     double ink[4];
     int px[4];
     long n;
     /* only the label's box is cleared, drawn and compared */
     st = element_ops(fig, i, lay, r);
-    if (st != CF_STATUS_OK)
-        return st;
+    if (st != CF_STATUS_OK || r->draft)
+        return st != CF_STATUS_OK ? st : paint(fig, r, &r->img, NULL);
     if (cf__dl_ink(&r->dl, 0, r->dl.count, ink) != 0)
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
                            "out of memory measuring a label");
@@ -303,48 +317,72 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
     px[2] = (int)ceil(ink[2] * r->res) + 1;
     px[3] = (int)ceil(ink[3] * r->res) + 1;
     cf__raster_clear(&r->one, px);
-    st = paint(fig, r, &r->one);
+    st = paint(fig, r, &r->one, px);
     if (st != CF_STATUS_OK)
         return st;
     n = common_pixels(&r->one, r->img.px, px);
     if (n > 1) {
-        size_t j, k = (size_t)r->one.h * (size_t)r->one.stride;
+        size_t j;
+        int row, i0 = px[0] > 0 ? px[0] : 0;
+        int i1 = px[2] < r->one.w ? px[2] : r->one.w;
         /* keep the label's mask: naming what is under it reuses r->one
         ** (only the label's box px is compared) */
-        mask = cf_malloc(k);
-        if (mask == NULL)
-            return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                               "out of memory placing labels");
-        memcpy(mask, r->one.px, k);
-        j = what_is_under(fig, lay, r, i, automatic, mask, px);
-        cf_free(mask);
+        for (row = px[1] > 0 ? px[1] : 0; row < px[3] && row < r->one.h
+             && i1 > i0; row++) {
+            size_t at = (size_t)row * (size_t)r->one.stride + (size_t)i0;
+            memcpy(r->mask + at, r->one.px + at, (size_t)(i1 - i0));
+        }
+        j = what_is_under(fig, lay, r, i, automatic, r->mask, px);
+        /* what_is_under drew the other elements into r->dl */
+        st = element_ops(fig, i, lay, r);
+        if (st != CF_STATUS_OK)
+            return st;
         if (j < fig->count)
             warn(fig, "label \"%s\" (%s%s) lies on %s %zu", t->src,
                  automatic ? "placed automatically " : "place ",
                  place_names[place], fig->els[j]->kind->name, j + 1);
         else
-            warn(fig, "label \"%s\" (%s%s) lies on ink", t->src,
+            warn(fig, "label \"%s\" (%s%s) lies on %s", t->src,
                  automatic ? "placed automatically " : "place ",
-                 place_names[place]);
+                 place_names[place], fig->ninsets > 0
+                 ? "ink (an inset's frame or connector?)" : "ink");
     }
-    return paint(fig, r, &r->img);
+    return paint(fig, r, &r->img, NULL);
 }
 
+/* The three rasters of the page, w x h each, in the figure's memory kept
+** from the last placement (a layout places the labels once per refit of
+** its ink box; fresh pages of memory for each would cost more than the
+** painting). */
 static cf_status_t
 raster_open(cf_figure_t *fig, raster_t *r)
 {
+    size_t n;
     int w, h;
     memset(r, 0, sizeof *r);
     r->res = AUTO_RES;
     if (fig->width * fig->height * r->res * r->res > AUTO_MAX_PIXELS)
         r->res = sqrt(AUTO_MAX_PIXELS / (fig->width * fig->height));
-    w = (int)ceil(fig->width * r->res);
-    h = (int)ceil(fig->height * r->res);
+    w = (int)fmax(1, ceil(fig->width * r->res));
+    h = (int)fmax(1, ceil(fig->height * r->res));
     cf__dl_init(&r->dl);
-    if (cf__raster_open(&r->img, w, h, r->res, 0, 0) != 0
-        || cf__raster_open(&r->one, w, h, r->res, 0, 0) != 0)
-        return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                           "out of memory placing labels");
+    n = (size_t)w * (size_t)h;
+    if (fig->place_px_size < 3 * n) {
+        unsigned char *px = cf_realloc_array(fig->place_px, n, 3);
+        if (px == NULL)
+            return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                               "out of memory placing labels");
+        fig->place_px = px;
+        fig->place_px_size = 3 * n;
+    }
+    memset(fig->place_px, 0, 3 * n);
+    r->img.px = fig->place_px;
+    r->one.px = fig->place_px + n;
+    r->mask = fig->place_px + 2 * n;
+    r->img.w = r->one.w = w;
+    r->img.h = r->one.h = h;
+    r->img.stride = r->one.stride = w;
+    r->img.res = r->one.res = r->res;
     return CF_STATUS_OK;
 }
 
@@ -352,18 +390,6 @@ static void
 raster_close(raster_t *r)
 {
     cf__dl_free(&r->dl);
-    cf__raster_close(&r->img);
-    cf__raster_close(&r->one);
-}
-
-/* Whether layouts a and b map the data alike, page position aside. */
-static bool
-same_map(const cf__layout_t *a, const cf__layout_t *b)
-{
-    return a->xmin == b->xmin && a->xmax == b->xmax && a->ymin == b->ymin
-        && a->ymax == b->ymax && a->sx == b->sx && a->sy == b->sy
-        && a->ox == b->ox && a->oy == b->oy && a->tol == b->tol
-        && a->clip == b->clip;
 }
 
 void
@@ -372,13 +398,66 @@ cf__place_forget(cf_figure_t *fig)
     fig->placed = false;
 }
 
+/* The pixel box of raster r that the placement reads (every candidate
+** box of the automatic labels in the window out to AUTO_NEAR, and unless
+** a draft the box of each label placed by hand, as check_label takes it,
+** a pixel more each way) into px; false when there is none. */
+static bool
+read_box(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r, int px[4])
+{
+    double b[4] = { INFINITY, INFINITY, -INFINITY, -INFINITY };
+    size_t i, d, k;
+    for (i = 0; i < fig->count; i++) {
+        double x, y, ax, ay, ink[4];
+        cf__text_t *t;
+        cf__auto_place_t *chosen;
+        cf_style_t s;
+        if (!is_label(fig, i, &x, &y, &t, &chosen, &s)
+            || !cf__in_window(lay, x, y))
+            continue;
+        if (s.place != CF_PLACE_AUTO) {
+            if (r->draft || element_ops(fig, i, lay, r) != CF_STATUS_OK
+                || cf__dl_ink(&r->dl, 0, r->dl.count, ink) != 0
+                || !(ink[2] > ink[0] && ink[3] > ink[1]))
+                continue;
+            b[0] = fmin(b[0], ink[0] - 1 / r->res);
+            b[1] = fmin(b[1], ink[1] - 1 / r->res);
+            b[2] = fmax(b[2], ink[2] + 1 / r->res);
+            b[3] = fmax(b[3], ink[3] + 1 / r->res);
+            continue;
+        }
+        if (cf__text_ensure(fig, t, s.font_size) != CF_STATUS_OK
+            || t->lab == NULL)
+            continue;
+        cf__map(lay, x, y, &ax, &ay);
+        cf__label_ink(t->lab, ink);
+        for (d = 0; d < sizeof further / sizeof further[0]; d++)
+            for (k = 0; k < sizeof order / sizeof order[0]; k++) {
+                double ox, oy;
+                cf__label_origin(t->lab, order[k], s.offset + further[d],
+                                 ax, ay, &ox, &oy);
+                b[0] = fmin(b[0], ox + ink[0] - AUTO_NEAR);
+                b[1] = fmin(b[1], oy + ink[1] - AUTO_NEAR);
+                b[2] = fmax(b[2], ox + ink[2] + AUTO_NEAR);
+                b[3] = fmax(b[3], oy + ink[3] + AUTO_NEAR);
+            }
+    }
+    if (!(b[2] >= b[0] && b[3] >= b[1]))
+        return false;
+    px[0] = (int)fmax(-1, fmin(r->img.w, floor(b[0] * r->res) - 1));
+    px[1] = (int)fmax(-1, fmin(r->img.h, floor(b[1] * r->res) - 1));
+    px[2] = (int)fmax(-1, fmin(r->img.w, ceil(b[2] * r->res) + 1));
+    px[3] = (int)fmax(-1, fmin(r->img.h, ceil(b[3] * r->res) + 1));
+    return true;
+}
+
 /* The places of layout lay, chosen on the page at its own position (the
 ** layout moved by its page position to the origin): a page cropped to
 ** its ink moves the layout without moving a label against its point, so
 ** the places chosen once serve every build of the layout that only
 ** moves it (the figure unchanged since cf__figure_layout). */
 cf_status_t
-cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
+cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
 {
     cf__layout_t moved = *at;
     const cf__layout_t *lay = &moved;
@@ -389,12 +468,14 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
     cf__auto_place_t *chosen;
     double x, y;
     size_t i, n;
+    int box[4];
     cf_status_t st;
 
     moved.ox -= at->px;
     moved.oy -= at->py;
     moved.px = moved.py = 0;
-    if (fig->placed && same_map(&fig->placed_for, lay))
+    if (fig->placed && (draft || !fig->placed_draft)
+        && cf__layout_same_map(&fig->placed_for, lay))
         return CF_STATUS_OK;   /* the places and warnings of that layout */
     fig->placed = false;
     cf_free(fig->warnings);
@@ -410,17 +491,37 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
                            "placed in one figure (each is placed among "
                            "all the others)", n, CF_FIGURE_MAX_LABELS);
     st = raster_open(fig, &r);
+    r.draft = draft;
+    /* the raster is read only where the automatic labels may go and the
+    ** labels placed by hand are: the rest is not drawn
+    ** (cf__raster_paint_in: the same pixels) */
+    if (st == CF_STATUS_OK && !read_box(fig, lay, &r, box)) {
+        raster_close(&r);
+        if (fig->err.status != CF_STATUS_OK)
+            return fig->err.status;
+        fig->placed = true;
+        fig->placed_draft = draft;
+        fig->placed_for = moved;
+        return CF_STATUS_OK;
+    }
     /* fills and hulls left out: labels may sit on a shading */
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
         if ((fig->els[i]->kind->flags & CF__KIND_SHADING)
             || is_label(fig, i, &x, &y, &t, &chosen, &s))
             continue;
-        st = raster_element(fig, i, lay, &r, &r.img);
+        st = raster_element(fig, i, lay, &r, &r.img, box);
+    }
+    /* the insets' frames, connectors and boxes */
+    if (st == CF_STATUS_OK && fig->ninsets > 0) {
+        cf__dl_reset(&r.dl);
+        st = cf__insets_ink(fig, lay, &r.dl);
+        if (st == CF_STATUS_OK)
+            st = paint(fig, &r, &r.img, box);
     }
     /* the labels placed by hand first: the automatic ones avoid them */
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
         if (!is_label(fig, i, &x, &y, &t, &chosen, &s)
-            || s.place == CF_PLACE_AUTO || !cf__in_window(lay, x, y))
+            || s.place == CF_PLACE_AUTO)
             continue;
         st = check_label(fig, lay, &r, i, t, s.place, false);
     }
@@ -430,15 +531,14 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
         st = cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
                          "out of memory placing labels");
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++)
-        if (is_label(fig, i, &x, &y, &t, &chosen, &s)
-            && cf__in_window(lay, x, y)) {
+        if (is_label(fig, i, &x, &y, &t, &chosen, &s)) {
             cf__map(lay, x, y, &an.xy[2 * an.n], &an.xy[2 * an.n + 1]);
             an.n++;
         }
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
         double px, py;
         if (!is_label(fig, i, &x, &y, &t, &chosen, &s)
-            || s.place != CF_PLACE_AUTO || !cf__in_window(lay, x, y))
+            || s.place != CF_PLACE_AUTO)
             continue;
         st = cf__text_ensure(fig, t, s.font_size);
         if (st != CF_STATUS_OK || t->lab == NULL)
@@ -451,6 +551,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
     raster_close(&r);
     if (st == CF_STATUS_OK) {
         fig->placed = true;
+        fig->placed_draft = draft;
         fig->placed_for = moved;
     }
     return st;
@@ -459,5 +560,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at)
 const char *
 cf_figure_warnings(const cf_figure_t *fig)
 {
+    if (fig != NULL && fig->panels != NULL)
+        return fig->all_warnings != NULL ? fig->all_warnings : "";
     return fig != NULL && fig->warnings != NULL ? fig->warnings : "";
 }

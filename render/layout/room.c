@@ -44,10 +44,9 @@ inked_pixels(const cf__raster_t *img, const double b[4])
     return n;
 }
 
-/* The top left of a w x h box at place of box a, gap inside. */
-static void
-box_at(const double a[4], double w, double h, cf_place_t place, double gap,
-       double at[2])
+void
+cf__room_box_at(const double a[4], double w, double h, cf_place_t place,
+                double gap, double at[2])
 {
     double l = a[0] + gap, r = a[2] - gap - w;
     double t = a[1] + gap, b = a[3] - gap - h;
@@ -143,7 +142,7 @@ least_covered(cf_figure_t *fig, const cf__dl_t *dl, const double a[4],
     for (k = 0; k < sizeof order / sizeof order[0] && best != 0; k++) {
         double c[2], b[4];
         size_t n;
-        box_at(a, w, h, order[k], gap, c);
+        cf__room_box_at(a, w, h, order[k], gap, c);
         b[0] = c[0] - ROOM_CLEAR;
         b[1] = c[1] - ROOM_CLEAR;
         b[2] = c[0] + w + ROOM_CLEAR;
@@ -171,7 +170,7 @@ cf__room_find(cf_figure_t *fig, const cf__layout_t *lay, const cf__dl_t *dl,
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
                            "out of memory measuring the drawing's ink");
     if (place != CF_PLACE_AUTO) {
-        box_at(a, w, h, place, gap, at);
+        cf__room_box_at(a, w, h, place, gap, at);
         return CF_STATUS_OK;
     }
     if (*band == CF__ROOM_INSIDE || *band == CF__ROOM_UNDECIDED) {
@@ -195,4 +194,6 @@ cf__room_reset(cf_figure_t *fig)
     fig->legend_band = CF__ROOM_UNDECIDED;
     for (k = 0; k < fig->ninsets; k++)
         fig->inset_band[k] = CF__ROOM_UNDECIDED;
+    cf_free(fig->inset_cache);
+    fig->inset_cache = NULL;
 }

@@ -156,6 +156,7 @@ put_param(text_t *t, const cf__param_t *d)
         put_num(t, d->max);
         put(t, ", \"step\": ");
         put_num(t, d->step);
+        put(t, d->log ? ", \"scale\": \"log\"" : ", \"scale\": \"linear\"");
         put(t, ", \"default\": ");
         put_num(t, d->def);
         put(t, ", \"value\": ");

@@ -183,7 +183,7 @@ static const cf__lua_key_t plot_keys[] = {
 /* the parameters of interactive figures (lparams.c) */
 static const cf__lua_key_t slider_keys[] = {
     KEY("name"), KEY("label"), KEY("min"), KEY("max"), KEY("default"),
-    KEY("step"), END,
+    KEY("step"), KEY("scale"), END,
 };
 static const cf__lua_key_t param_points_keys[] = {
     KEY("name"), KEY("default"), TABLE("constrain", CF__KEYS_CONSTRAIN),

@@ -126,6 +126,8 @@ read_at(lua_State *L, int idx, cf_inset_t *in)
             "below", "left", "right",
         };
         const char *v = cf__lua_opt_text(L, -1, "inset", "at", NULL), *near;
+        in->beside = strcmp(v, "above") == 0 || strcmp(v, "below") == 0
+                     || strcmp(v, "left") == 0 || strcmp(v, "right") == 0;
         if (cf_place_from_name(v, &in->place, &diag) != CF_STATUS_OK) {
             near = cf_nearest_name(v, places,
                                    sizeof places / sizeof places[0]);

@@ -2,7 +2,7 @@
 ** Lua binding of the parameters of interactive figures (params.h):
 **
 **   slider{ name = "t", min = 0, max = 1, default = 0.5, step = 0.01,
-**           label = "t" }                     -> the slider's value
+**           label = "t", scale = "linear" | "log" } -> the slider's value
 **   points{ name = "P", default = { {0, 0}, {1, 2}, ... },
 **           constrain = { grid = 0.25 } | { line = { {x0, y0}, {x1, y1} } },
 **           figure = "name" }                 -> a list of {x, y}
@@ -93,6 +93,16 @@ l_slider(lua_State *L)
     if (cf__lua_field(L, 1, "step") != LUA_TNIL && !(d.step > 0))
         cf__lua_error(L, "slider '%s': step %g must be positive", d.name,
                       d.step);
+    lua_pop(L, 1);
+    cf__lua_field(L, 1, "scale");
+    {
+        const char *sc = cf__lua_opt_text(L, -1, "slider", "scale", "linear");
+        if (strcmp(sc, "log") == 0)
+            d.log = true;
+        else if (strcmp(sc, "linear") != 0)
+            cf__lua_error(L, "slider '%s': scale \"%s\" is unknown (use "
+                          "\"linear\" or \"log\")", d.name, sc);
+    }
     lua_pop(L, 1);
     d.line_no = caller_line(L);
     if (cf__params_slider(store(L), &d, &value, err, sizeof err) != 0)

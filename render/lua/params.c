@@ -271,6 +271,27 @@ check_name(const cf__params_t *p, const char *kind, const char *name,
     return 0;
 }
 
+/* The decimals x is written with (up to 12): 2 for 0.25. */
+static int
+decimals(double x)
+{
+    double p = 1;
+    int k;
+    for (k = 0; k < 12; k++, p *= 10)
+        if (fabs(round(x * p) - x * p) <= 1e-6 * fmax(1, fabs(x * p)))
+            return k;
+    return 12;
+}
+
+/* v rounded to k decimals: the double nearest that decimal. */
+static double
+to_decimals(double v, int k)
+{
+    double p = pow(10, k);
+    double r = round(v * p) / p;
+    return isfinite(r) && k < 12 ? r : v;
+}
+
 static double
 snap(const cf__param_t *d, double v)
 {
@@ -279,9 +300,12 @@ snap(const cf__param_t *d, double v)
     if (v > d->max)
         v = d->max;
     if (d->step > 0) {
+        int k = decimals(d->step), m = decimals(d->min);
         v = d->min + round((v - d->min) / d->step) * d->step;
         if (v > d->max)
             v -= d->step;
+        /* 0 + 3 * 0.1 is 0.30000000000000004: the step's decimals */
+        v = to_decimals(v, k > m ? k : m);
     }
     return v;
 }
@@ -308,6 +332,9 @@ cf__params_slider(cf__params_t *p, const cf__param_t *decl, double *value,
     if (decl->step > decl->max - decl->min)
         return fail(err, errlen, "slider", nm, "step %g exceeds the range "
                     "max - min = %g", decl->step, decl->max - decl->min);
+    if (decl->log && !(decl->min > 0))
+        return fail(err, errlen, "slider", nm, "scale = \"log\" needs min "
+                    "> 0 (min is %g)", decl->min, 0);
     d = &p->items[p->count++];
     *d = *decl;
     d->kind = CF__PARAM_SLIDER;
@@ -323,8 +350,9 @@ void
 cf__params_constrain(const cf__param_t *d, double *x, double *y)
 {
     if (d->constrain == CF__CONSTRAIN_GRID) {
-        *x = round(*x / d->grid) * d->grid;
-        *y = round(*y / d->grid) * d->grid;
+        int k = decimals(d->grid);
+        *x = to_decimals(round(*x / d->grid) * d->grid, k);
+        *y = to_decimals(round(*y / d->grid) * d->grid, k);
     } else if (d->constrain == CF__CONSTRAIN_LINE) {
         double dx = d->line[2] - d->line[0], dy = d->line[3] - d->line[1];
         double t = ((*x - d->line[0]) * dx + (*y - d->line[1]) * dy) /

@@ -39,6 +39,8 @@ typedef struct cf__param {
     char label[CF__PARAMS_NAME];    /* shown beside a slider ("" = name) */
     /* a slider */
     double min, max, step;          /* step 0: continuous */
+    bool log;                       /* a logarithmic slider (min > 0): the
+                                       page moves it by ratios */
     double def, value;
     /* a point list: count points, x y interleaved */
     size_t count;
@@ -71,12 +73,14 @@ int cf__params_give_json(cf__params_t *p, const char *json, size_t len,
 
 /* ---- the script --------------------------------------------------------- */
 
-/* Declare a slider: decl's name, label, min, max, step and def are read
-** (value, points and constraint are not).  0 and *value the value it takes
-** (the host's, clamped to [min, max] and snapped to the step, or the
+/* Declare a slider: decl's name, label, min, max, step, log and def are
+** read (value, points and constraint are not).  0 and *value the value it
+** takes (the host's, clamped to [min, max] and snapped to the step, then
+** rounded to the step's decimals so that 3 steps of 0.1 are 0.3, or the
 ** default); -1 with a message in err: min not below max, the default
 ** outside [min, max], a step that is not positive or exceeds the range, a
-** name already declared, an empty name, too many parameters. */
+** log slider whose min is not positive, a name already declared, an
+** empty name, too many parameters. */
 int cf__params_slider(cf__params_t *p, const cf__param_t *decl,
                       double *value, char *err, size_t errlen);
 /* Declare a point list: decl's name, count, def_xy, constrain, grid,

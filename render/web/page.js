@@ -18,8 +18,22 @@
 //     input#cf-slider-NAME (type range, data-param NAME), output#cf-value-NAME
 //   #cf-figures            div.cf-figure#cf-figure-NAME per figure, holding
 //                          its <svg>, in which circle.cf-handle#cf-handle-P-I
-//                          (data-param, data-index) are the draggable points;
+//                          (data-param, data-index) are the draggable points
+//                          (an invisible disc that takes the pointer) and
+//                          circle.cf-ring their visible rings, smaller than
+//                          a label's distance from its point;
 //                          its data-to-svg: the map data -> SVG units (JSON)
+// A slider's label is typeset from the label syntax (P_0, w_{1}, \omega,
+// $...$): italic letters, upright digits, sub- and superscripts, Greek.
+// Values are rounded: a slider's to its step's decimals (the engine does
+// the same), a dragged point's to the figure's resolution (a tenth of a
+// bp, in data units' decimals), a grid's to the grid's decimals.  A
+// dragged handle stays inside the figure's view.  While a slider or a
+// handle is moved, every figure keeps the map (and view) it had when the
+// move began, so that the drawing stands still under the pointer
+// (an automatic legend finding another place would shift it); released,
+// the figures show their own layout again.  scale = "log" sliders move
+// by ratios (the range input holds log10 of the value).
 //   pre#cf-error           the script's error (hidden when there is none)
 //   pre#cf-lua             the values as Lua, button#cf-copy, button#cf-reset
 //   root.dataset.runs      the number of replies shown so far;
@@ -62,8 +76,32 @@ function CurvefigPage(root, engine) {
   main.appendChild(figures);
   root.appendChild(main);
 
-  function fmt(v) {
-    return String(Math.round(v * 1e6) / 1e6);
+  // The decimals x is written with (up to 12): 2 for 0.25.
+  function decimals(x) {
+    for (var k = 0, p = 1; k < 12; k++, p *= 10)
+      if (Math.abs(Math.round(x * p) - x * p) <= 1e-6 * Math.max(1,
+                                                      Math.abs(x * p)))
+        return k;
+    return 12;
+  }
+
+  function round(v, k) {
+    var p = Math.pow(10, k);
+    return Math.round(v * p) / p;
+  }
+
+  // The decimals a slider's values are shown with: its step's (and its
+  // min's); a continuous slider's, a thousandth of its range (of the
+  // value, for a log slider).
+  function sliderDecimals(p, v) {
+    if (p.step > 0) return Math.max(decimals(p.step), decimals(p.min));
+    var unit = p.scale === 'log' ? Math.abs(v) * Math.LN10 *
+      (Math.log10(p.max) - Math.log10(p.min)) / 1000 : (p.max - p.min) / 1000;
+    return Math.max(0, Math.min(12, Math.ceil(-Math.log10(unit))));
+  }
+
+  function fmt(p, v) {
+    return String(round(v, sliderDecimals(p, v)));
   }
 
   function snap(p, v) {
@@ -72,13 +110,31 @@ function CurvefigPage(root, engine) {
       v = p.min + Math.round((v - p.min) / p.step) * p.step;
       if (v > p.max) v -= p.step;
     }
-    return v;
+    return round(v, sliderDecimals(p, v));
+  }
+
+  // The range input's position of a value, and back.
+  function toPos(p, v) {
+    return p.scale === 'log' ? Math.log10(v) : v;
+  }
+  function fromPos(p, x) {
+    return p.scale === 'log' ? Math.pow(10, x) : x;
+  }
+
+  // A point's coordinates rounded to a tenth of a bp of figure fig.
+  function roundPoint(fig, d) {
+    var m = fig.to_svg;
+    var kx = Math.max(0, Math.ceil(Math.log10(10 * Math.hypot(m[0], m[1]))));
+    var ky = Math.max(0, Math.ceil(Math.log10(10 * Math.hypot(m[2], m[3]))));
+    return [round(d[0], Math.min(12, kx)), round(d[1], Math.min(12, ky))];
   }
 
   function constrain(p, x, y) {
     var c = p.constrain;
     if (c && c.grid) {
-      return [Math.round(x / c.grid) * c.grid, Math.round(y / c.grid) * c.grid];
+      var k = decimals(c.grid);
+      return [round(Math.round(x / c.grid) * c.grid, k),
+              round(Math.round(y / c.grid) * c.grid, k)];
     }
     if (c && c.line) {
       var a = c.line[0], b = c.line[1], dx = b[0] - a[0], dy = b[1] - a[1];
@@ -86,6 +142,73 @@ function CurvefigPage(root, engine) {
       return [a[0] + t * dx, a[1] + t * dy];
     }
     return [x, y];
+  }
+
+  // ---- slider labels: the label syntax typeset -------------------------
+
+  var symbols = {
+    alpha: 'α', beta: 'β', gamma: 'γ', delta: 'δ', epsilon: 'ϵ',
+    varepsilon: 'ε', zeta: 'ζ', eta: 'η', theta: 'θ', vartheta: 'ϑ',
+    iota: 'ι', kappa: 'κ', lambda: 'λ', mu: 'μ', nu: 'ν', xi: 'ξ', pi: 'π',
+    rho: 'ρ', sigma: 'σ', tau: 'τ', upsilon: 'υ', phi: 'ϕ', varphi: 'φ',
+    chi: 'χ', psi: 'ψ', omega: 'ω', Gamma: 'Γ', Delta: 'Δ', Theta: 'Θ',
+    Lambda: 'Λ', Xi: 'Ξ', Pi: 'Π', Sigma: 'Σ', Upsilon: 'Υ', Phi: 'Φ',
+    Psi: 'Ψ', Omega: 'Ω', cdot: '⋅', ldots: '…', infty: '∞', le: '≤',
+    ge: '≥', in: '∈', pm: '±', times: '×', ',': ' ', ';': ' ', quad: ' '
+  };
+
+  // Label text src typeset into a span.cf-math: letters (and lower-case
+  // Greek) in italics, digits and the rest upright, _ and ^ as sub- and
+  // superscripts of a {group} or one symbol, \text{...} upright, $ left
+  // out.
+  function typeset(src) {
+    var i = 0;
+    function atom(out, upright) {
+      var c = src[i];
+      if (c === '{') {
+        i++;
+        seq(out, upright, '}');
+        i++;
+        return;
+      }
+      if (c === '\\') {
+        var m = /^\\([A-Za-z]+|.)/.exec(src.slice(i));
+        var name = m ? m[1] : '';
+        i += m ? m[0].length : 1;
+        if (name === 'text' || name === 'mathrm') {
+          while (src[i] === ' ') i++;
+          atom(out, true);
+          return;
+        }
+        var sym = symbols[name] !== undefined ? symbols[name] : name;
+        var lower = /^[a-z]/.test(name) && /[α-ω]/.test(sym);
+        out.appendChild(lower && !upright ? el('i', {}, sym)
+                                          : document.createTextNode(sym));
+        return;
+      }
+      i++;
+      if (c === '$') return;
+      if (/[A-Za-zα-ω]/.test(c) && !upright) out.appendChild(el('i', {}, c));
+      else out.appendChild(document.createTextNode(c));
+    }
+    function seq(out, upright, end) {
+      while (i < src.length && src[i] !== end) {
+        var c = src[i];
+        if ((c === '_' || c === '^') && i + 1 < src.length) {
+          i++;
+          var s = el(c === '_' ? 'sub' : 'sup');
+          atom(s, upright);
+          out.appendChild(s);
+        } else if (c === ' ' && !upright) {
+          i++;
+        } else {
+          atom(out, upright);
+        }
+      }
+    }
+    var span = el('span', { class: 'cf-math' });
+    seq(span, false, undefined);
+    return span;
   }
 
   function paramNamed(name) {
@@ -101,20 +224,23 @@ function CurvefigPage(root, engine) {
     list.forEach(function (p) {
       if (p.kind === 'slider') {
         var row = el('div', { class: 'cf-slider' });
-        var lab = el('label', { for: 'cf-slider-' + p.name }, p.label);
-        var range = (p.max - p.min);
+        var lab = el('label', { for: 'cf-slider-' + p.name });
+        lab.appendChild(typeset(p.label));
+        var lo = toPos(p, p.min), hi = toPos(p, p.max);
         var input = el('input', {
           type: 'range', id: 'cf-slider-' + p.name, 'data-param': p.name,
-          min: p.min, max: p.max,
-          step: p.step > 0 ? p.step : range / 1000,
+          'data-scale': p.scale || 'linear', min: lo, max: hi,
+          step: p.step > 0 && p.scale !== 'log' ? p.step : (hi - lo) / 1000,
         });
-        input.value = p.value;
-        var out = el('output', { id: 'cf-value-' + p.name }, fmt(p.value));
+        input.value = toPos(p, p.value);
+        var out = el('output', { id: 'cf-value-' + p.name }, fmt(p, p.value));
         input.addEventListener('input', function () {
-          values[p.name] = snap(p, Number(input.value));
-          out.textContent = fmt(values[p.name]);
+          values[p.name] = snap(p, fromPos(p, Number(input.value)));
+          out.textContent = fmt(p, values[p.name]);
+          hold();
           request();
         });
+        input.addEventListener('change', release);
         row.appendChild(lab);
         row.appendChild(input);
         row.appendChild(out);
@@ -151,34 +277,112 @@ function CurvefigPage(root, engine) {
     return [m[0] * x + m[2] * y + m[4], m[1] * x + m[3] * y + m[5]];
   }
 
+  // ---- holding the layout still while something moves ------------------
+
+  var held = null;   // figure name -> { m, vb, w, h } while a move goes on
+
+  // A move began: every figure keeps the map and view it shows now.
+  function hold() {
+    if (held || !lastFigures) return;
+    held = {};
+    figures.querySelectorAll('.cf-figure').forEach(function (box, k) {
+      var svg = box.querySelector('svg'), f = lastFigures[k];
+      if (!svg || !f) return;
+      held[f.name] = { m: f.to_svg, vb: svg.getAttribute('viewBox'),
+                       w: svg.getAttribute('width'),
+                       h: svg.getAttribute('height') };
+    });
+  }
+
+  // The move ended: the figures take their own layout again.
+  function release() {
+    if (!held) return;
+    held = null;
+    if (!inFlight && !drag && lastFigures) showFigures(lastFigures);
+  }
+
+  // The affine map a o b^-1 (maps as [a b c d e f]: x' = a x + c y + e).
+  function compose(a, b) {
+    var det = b[0] * b[3] - b[1] * b[2];
+    var i = [b[3] / det, -b[1] / det, -b[2] / det, b[0] / det,
+             (b[2] * b[5] - b[3] * b[4]) / det,
+             (b[1] * b[4] - b[0] * b[5]) / det];
+    return [a[0] * i[0] + a[2] * i[1], a[1] * i[0] + a[3] * i[1],
+            a[0] * i[2] + a[2] * i[3], a[1] * i[2] + a[3] * i[3],
+            a[0] * i[4] + a[2] * i[5] + a[4],
+            a[1] * i[4] + a[3] * i[5] + a[5]];
+  }
+
+  // Figure fig's drawing in svg moved onto the held map and view h: its
+  // content in a group mapping its own map's SVG units onto h's.
+  function align(svg, fig, h) {
+    var g = document.createElementNS(svgNS, 'g');
+    var t = compose(h.m, fig.to_svg);
+    g.setAttribute('transform', 'matrix(' + t.join(' ') + ')');
+    Array.prototype.slice.call(svg.childNodes).forEach(function (n) {
+      if (n.nodeName !== 'defs' && n.nodeName !== 'title' &&
+          n.nodeName !== 'desc')
+        g.appendChild(n);
+    });
+    svg.appendChild(g);
+    if (h.vb) svg.setAttribute('viewBox', h.vb);
+    if (h.w) svg.setAttribute('width', h.w);
+    if (h.h) svg.setAttribute('height', h.h);
+    return Object.assign({}, fig, { to_svg: h.m });
+  }
+
+  // ---- drawing the figures ---------------------------------------------
+
+  var HANDLE_R = 7;    // the disc that takes the pointer, SVG units (bp)
+  var RING_R = 3.2;    // the ring shown: inside a label's 4 bp offset
+
   function showFigures(list) {
     figures.textContent = '';
     list.forEach(function (fig, k) {
-      var box = el('div', { class: 'cf-figure', id: 'cf-figure-' + fig.name,
-                            'data-to-svg': JSON.stringify(fig.to_svg) });
+      var box = el('div', { class: 'cf-figure', id: 'cf-figure-' + fig.name });
       box.innerHTML = uniqueIds(fig.svg, k);
       var svg = box.querySelector('svg');
+      if (svg && held && held[fig.name]) fig = align(svg, fig, held[fig.name]);
+      box.setAttribute('data-to-svg', JSON.stringify(fig.to_svg));
       if (svg && fig.caption) svg.setAttribute('aria-label', fig.caption);
       fig.handles.forEach(function (h) {
+        var at = toSvg(fig, h.x, h.y);
+        var ring = document.createElementNS(svgNS, 'circle');
+        ring.setAttribute('class', 'cf-ring');
+        ring.setAttribute('cx', at[0]);
+        ring.setAttribute('cy', at[1]);
+        ring.setAttribute('r', RING_R);
         var c = document.createElementNS(svgNS, 'circle');
         c.setAttribute('class', 'cf-handle');
         c.setAttribute('id', 'cf-handle-' + h.param + '-' + h.index);
         c.setAttribute('data-param', h.param);
         c.setAttribute('data-index', h.index);
-        c.setAttribute('cx', h.sx);
-        c.setAttribute('cy', h.sy);
-        c.setAttribute('r', 6);
+        c.setAttribute('cx', at[0]);
+        c.setAttribute('cy', at[1]);
+        c.setAttribute('r', HANDLE_R);
+        c.ring = ring;
         c.addEventListener('pointerdown', function (ev) {
           ev.preventDefault();
           c.setPointerCapture(ev.pointerId);
+          hold();
           drag = { param: h.param, index: h.index, fig: fig, svg: svg,
                    circle: c };
           c.classList.add('cf-dragging');
         });
         svg.appendChild(c);
+        svg.appendChild(ring);
       });
       figures.appendChild(box);
     });
+  }
+
+  function place(circle, x, y) {
+    circle.setAttribute('cx', x);
+    circle.setAttribute('cy', y);
+    if (circle.ring) {
+      circle.ring.setAttribute('cx', x);
+      circle.ring.setAttribute('cy', y);
+    }
   }
 
   function pointerMove(ev) {
@@ -187,12 +391,19 @@ function CurvefigPage(root, engine) {
     pt.x = ev.clientX;
     pt.y = ev.clientY;
     var u = pt.matrixTransform(svg.getScreenCTM().inverse());
+    // inside the view, the ring whole
+    var vb = svg.viewBox && svg.viewBox.baseVal;
+    if (vb && vb.width > 0 && vb.height > 0) {
+      var r = Math.min(RING_R + 1, vb.width / 2, vb.height / 2);
+      u = { x: Math.min(vb.x + vb.width - r, Math.max(vb.x + r, u.x)),
+            y: Math.min(vb.y + vb.height - r, Math.max(vb.y + r, u.y)) };
+    }
     var p = paramNamed(drag.param);
-    var d = constrain(p, toData(drag.fig, u.x, u.y)[0],
-                      toData(drag.fig, u.x, u.y)[1]);
+    var d = toData(drag.fig, u.x, u.y);
+    d = constrain(p, d[0], d[1]);
+    if (!(p.constrain && p.constrain.grid)) d = roundPoint(drag.fig, d);
     var s = toSvg(drag.fig, d[0], d[1]);
-    drag.circle.setAttribute('cx', s[0]);
-    drag.circle.setAttribute('cy', s[1]);
+    place(drag.circle, s[0], s[1]);
     values[drag.param][drag.index] = d;
     request();
   }
@@ -203,6 +414,7 @@ function CurvefigPage(root, engine) {
     if (!drag) return;
     drag.circle.classList.remove('cf-dragging');
     drag = null;
+    held = null;
     if (!inFlight && lastFigures) showFigures(lastFigures);
   }
   window.addEventListener('pointermove', pointerMove);
@@ -261,12 +473,11 @@ function CurvefigPage(root, engine) {
     var svg = box.querySelector('svg');
     var fresh = svg.querySelector('[id="cf-handle-' + drag.param + '-' +
                                   drag.index + '"]');
-    if (fresh) {
-      fresh.setAttribute('cx', keep.getAttribute('cx'));
-      fresh.setAttribute('cy', keep.getAttribute('cy'));
-    }
+    if (fresh) place(fresh, keep.getAttribute('cx'), keep.getAttribute('cy'));
     list.forEach(function (f) {
-      if (f.name === drag.fig.name) drag.fig = f;
+      if (f.name === drag.fig.name)
+        drag.fig = held && held[f.name] ?
+          Object.assign({}, f, { to_svg: held[f.name].m }) : f;
     });
     drag.svg = svg;
     // the old circle, detached, lost the capture: the moves reach the

@@ -1,7 +1,7 @@
 /*
 ** Interactive figures in-process: slider{} and points{} take their
 ** defaults with no values and the host's values clamped, snapped and
-** constrained otherwise; bad declarations fail naming file, line and key;
+** constrained otherwise, rounded to the decimals of the step or grid; bad declarations fail naming file, line and key;
 ** the values' JSON is read strictly; cf_interactive_run's handles lie
 ** where the figure's own drawing puts the points (the display list, read
 ** apart from the map); its Lua text reads back as the same values.
@@ -92,6 +92,37 @@ test_given_values(void **state)
     free(out);
 }
 
+/* Snapped values are the decimals the step and the grid are written
+** with: three steps of 0.1 are 0.3 (not 0.30000000000000004), seven of
+** 0.1 on a grid 0.7; a log slider is declared so in the JSON. */
+static void
+test_values_rounded(void **state)
+{
+    const char *code =
+        "local t = slider{ name = 't', min = 0, max = 1, step = 0.1 }\n"
+        "local w = slider{ name = 'w', min = 1, max = 100, step = 0.01,\n"
+        "                  scale = 'log' }\n"
+        "local G = points{ name = 'G', default = { {0, 0} },\n"
+        "                  constrain = { grid = 0.1 } }\n"
+        "print(t == 0.3, G[1][1] == 0.7, G[1][2] == 0.3, w == 3.16)\n";
+    const char *values = "{\"t\": 0.31, \"w\": 3.1622776601683795, "
+                         "\"G\": [[0.69, 0.33]]}";
+    char *out = printed(code, values), *json = NULL;
+    size_t len = 0;
+    (void)state;
+    assert_string_equal(out, "true\ttrue\ttrue\ttrue\n");
+    free(out);
+    assert_int_equal(cf_interactive_run(code, "inter.lua", values,
+                                        strlen(values), NULL, sink, &json,
+                                        &len),
+                     CF_STATUS_OK);
+    assert_non_null(strstr(json, "\"name\": \"w\", \"label\": \"w\", "
+                                 "\"min\": 1, \"max\": 100, \"step\": 0.01, "
+                                 "\"scale\": \"log\""));
+    assert_non_null(strstr(json, "t = 0.3,"));
+    free(json);
+}
+
 /* code must fail with every fragment of want (NULL-ended) */
 static void
 fails_with(const char *code, const char *const *want)
@@ -157,6 +188,21 @@ test_declaration_errors(void **state)
     (void)state;
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++)
         fails_with(cases[i].code, cases[i].want);
+}
+
+/* A log slider needs min > 0; a scale is linear or log. */
+static void
+test_scale_errors(void **state)
+{
+    static const char *const zero[] = {
+        "inter.lua:1:", "slider 'w'", "scale = \"log\" needs min > 0", NULL
+    };
+    static const char *const name[] = {
+        "inter.lua:1:", "scale \"lg\" is unknown", NULL
+    };
+    (void)state;
+    fails_with("slider{ name = 'w', min = 0, max = 1, scale = 'log' }", zero);
+    fails_with("slider{ name = 'w', min = 1, max = 2, scale = 'lg' }", name);
 }
 
 static void
@@ -380,6 +426,8 @@ main(void)
         cmocka_unit_test(test_script_error_in_json),
         cmocka_unit_test(test_error_bytes_in_json),
         cmocka_unit_test(test_lua_text_reads_back),
+        cmocka_unit_test(test_values_rounded),
+        cmocka_unit_test(test_scale_errors),
     };
     int rc;
     sink = fopen("/dev/null", "w");

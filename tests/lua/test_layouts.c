@@ -1,7 +1,8 @@
 /*
 ** Layouts in the figure language: legend = "..." on the drawing methods,
 ** f:legend, f:inset and f:panels, whose panels are figure values taking
-** every method, read back from the figure's display-list dump.
+** every method, read back from the figure's display-list dump; a label
+** outside the window; the panels' warnings.
 */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -124,6 +125,112 @@ test_panel_keeps_parent(void **state)
     cf_script_destroy(s);
 }
 
+/* The error of laying out figure i of a script. */
+static void
+dump_fails(cf_script_t *s, size_t i, const char *what)
+{
+    char *text = NULL;
+    size_t size;
+    cf_diag_t d;
+    cf_diag_clear(&d);
+    if (cf_figure_dump(cf_script_figure(s, i), NULL, &text, &size, &d)
+        == CF_STATUS_OK) {
+        cf_free(text);
+        fail_msg("figure %zu laid out, expected \"%s\"", i, what);
+    }
+    if (strstr(d.msg, what) == NULL)
+        fail_msg("\"%s\" not in \"%s\"", what, d.msg);
+}
+
+/* A label outside the window: drawn beside the window when the page
+** holds it, refused by its text and place when too far. */
+static void
+test_label_outside_window(void **state)
+{
+    cf_script_t *s;
+    char *t;
+    (void)state;
+    s = run("for k, x in ipairs({ 11, 100 }) do\n"
+            "  local f = figure{ name = 'w' .. k, width = '6cm',\n"
+            "                    height = '4cm', window = { 0, 10, 0, 10 } }\n"
+            "  f:polyline({ {0, 0}, {10, 10} })\n"
+            "  f:label({ x, 5 }, 'Q_1', { place = 'e' })\n"
+            "end\n");
+    t = dump(s, 0);
+    assert_non_null(strstr(t, "text \"Q_1\""));
+    cf_free(t);
+    dump_fails(s, 1, "label 2 \"Q_1\" at (100, 5) is outside the window "
+                     "[0, 10] x [0, 10]");
+    cf_script_destroy(s);
+}
+
+/* A panel's warnings are its figure's, each naming the panel. */
+static void
+test_panel_warnings(void **state)
+{
+    cf_script_t *s;
+    char *t;
+    (void)state;
+    s = run("local f = figure{ name = 'pw', height = '9cm' }\n"
+            "local a, b = f:panels{ rows = 2, cols = 1 }\n"
+            "a:curve(bezier{ {0, 0}, {1, 2}, {2, 0} })\n"
+            "a:label({ 1, 1 }, 'ON', { place = 'center' })\n"
+            "b:plot{ x = { 0, 2 }, y = { 0, 1 } }\n"
+            "b:bernstein(2, 1)\n"
+            "b:label({ 2.03, 0 }, 'X', { place = 'center' })\n");
+    t = dump(s, 0);
+    cf_free(t);
+    assert_non_null(strstr(cf_figure_warnings(cf_script_figure(s, 0)),
+                           "panel (a): label \"ON\" (place center) lies on "
+                           "curve 1\n"));
+    assert_non_null(strstr(cf_figure_warnings(cf_script_figure(s, 0)),
+                           "panel (b): label \"X\" (place center) lies on "
+                           "axes 1\n"));
+    cf_script_destroy(s);
+}
+
+/* at = "above": the inset's box above the drawing's top point; "n":
+** inside the drawing, level with it. */
+static void
+test_inset_above(void **state)
+{
+    static const char *const at[] = { "above", "n" };
+    int k;
+    (void)state;
+    for (k = 0; k < 2; k++) {
+        char src[512], *t = NULL;
+        const char *p;
+        double mx, my, size, b[4];
+        size_t n;
+        cf_script_t *s;
+        snprintf(src, sizeof src,
+                 "local f = figure{ name = 'a' }\n"
+                 "f:curve(bezier{ {0, 0}, {1, 2}, {2, 0} })\n"
+                 "f:points({ {1, 1} })\n"
+                 "f:inset{ region = { 0.2, 0.2, 0.6, 0.5 }, at = '%s' }\n",
+                 at[k]);
+        s = run(src);
+        assert_int_equal(cf_figure_dump(cf_script_figure(s, 0), NULL, &t, &n,
+                                        NULL), 0);
+        p = strstr(t, "marker ");
+        assert_non_null(p);
+        assert_int_equal(sscanf(strchr(p + 7, ' '), "%lf %lf size %lf", &mx,
+                                &my, &size), 3);
+        p = strstr(strstr(t, "group 0 inset"), "path fill");
+        assert_non_null(p);
+        assert_int_equal(sscanf(strstr(p, " : R ") + 5, "%lf %lf %lf %lf",
+                                &b[0], &b[1], &b[2], &b[3]), 4);
+        if (k == 0 && !(b[1] + b[3] < my - 0.5 * size))
+            fail_msg("at = 'above': box bottom %g, the point's top %g",
+                     b[1] + b[3], my - 0.5 * size);
+        if (k == 1 && !(b[1] + b[3] > my))
+            fail_msg("at = 'n': box bottom %g above the point %g", b[1] + b[3],
+                     my);
+        cf_free(t);
+        cf_script_destroy(s);
+    }
+}
+
 int
 main(void)
 {
@@ -131,6 +238,9 @@ main(void)
         cmocka_unit_test(test_legend_entries),
         cmocka_unit_test(test_panels),
         cmocka_unit_test(test_panel_keeps_parent),
+        cmocka_unit_test(test_label_outside_window),
+        cmocka_unit_test(test_panel_warnings),
+        cmocka_unit_test(test_inset_above),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -559,10 +559,11 @@ test_inset_is_affine_image(void **state)
     dump_lines(fig, &l);
     main_path = find(&l, find(&l, 0, "group 0 curve"), "path");
     g = find(&l, 0, "group 0 inset");
-    /* region frame, connectors, inset background, clip, the curve */
+    /* region frame and connectors, inset background, clip, the curve */
     assert_int_equal(first_seg(l.line[g + 1]), 'R');
     assert_int_equal(path_numbers(l.line[g + 1], r, 4), 4);
-    assert_int_equal(path_numbers(l.line[g + 3], f, 4), 4);
+    assert_int_equal(path_numbers(l.line[find(&l, g + 1, "path fill")], f,
+                                  4), 4);
     inset_path = find(&l, find(&l, g, "group 0 curve"), "path");
     kx = f[2] / r[2];
     ky = f[3] / r[3];
@@ -610,7 +611,8 @@ test_inset_auto_finds_room(void **state)
     assert_int_equal(cf_figure_add_inset(fig, &in), 0);
     dump_lines(fig, &l);
     g = find(&l, 0, "group 0 inset");
-    assert_int_equal(path_numbers(l.line[g + 3], f, 4), 4);
+    assert_int_equal(path_numbers(l.line[find(&l, g + 1, "path fill")], f,
+                                  4), 4);
     f[2] += f[0];
     f[3] += f[1];
     assert_true(assert_no_ink_in(&l, g, f) > 300);

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Latency of `curvefig live`: from an input event to the new drawing.
 
-usage: live_latency.py CURVEFIG SOURCE_DIR [RUNS]
+usage: live_latency.py CURVEFIG SOURCE_DIR [RUNS [PAUSE_MS]]
 
 For every shipped interactive example (figures/interactive/*.lua), on a
 server of its own on 127.0.0.1:
@@ -13,7 +13,10 @@ server of its own on 127.0.0.1:
            the page from dispatching the slider's input event to the new
            SVG in the document (performance.now() around it).
 RUNS requests each (default 60), alternating slider values and point
-moves, after 5 warm-up requests.  Prints one JSON line per example and
+moves, after 5 warm-up requests, each sent as soon as the last reply came
+(a drag: the page sends the latest values when a run returns) or, with
+PAUSE_MS, that long after it (moves with pauses between them: the server
+uses the pause to fork and ready the next run's process).  Prints one JSON line per example and
 measurement: median and 95th percentile in ms; the target is a median
 under 50 ms.
 """
@@ -85,12 +88,13 @@ def report(name, what, ms):
     return med < TARGET_MS
 
 
-def http_latency(url, params, runs):
+def http_latency(url, params, runs, pause):
     for k in range(5):
         post(url, inputs(params, k))
     ms = []
     for k in range(runs):
         v = inputs(params, k)
+        time.sleep(pause)
         t0 = time.perf_counter()
         reply = post(url, v)
         ms.append((time.perf_counter() - t0) * 1000)
@@ -157,6 +161,7 @@ def browser_latency(drv, url, params, runs):
 def main():
     tool, src = sys.argv[1], sys.argv[2]
     runs = int(sys.argv[3]) if len(sys.argv) > 3 else 60
+    pause = float(sys.argv[4]) / 1000 if len(sys.argv) > 4 else 0.0
     d = os.path.join(src, 'figures', 'interactive')
     names = sorted(f[:-4] for f in os.listdir(d) if f.endswith('.lua'))
     drv = browser_driver()
@@ -170,7 +175,9 @@ def main():
             p, url = start(tool, os.path.join(d, name + '.lua'))
             try:
                 params = post(url, {})['params']
-                report(name, 'http', http_latency(url, params, runs))
+                report(name, 'http' if pause == 0 else
+                       'http, %g ms apart' % (pause * 1000),
+                       http_latency(url, params, runs, pause))
                 if drv is not None:
                     report(name, 'browser', browser_latency(drv, url, params,
                                                             runs))

@@ -40,6 +40,12 @@ typedef struct run {
     double rule_h;                   /* > 0: a fraction rule of this
                                         thickness, width `width`, its
                                         bottom at y (no text) */
+    /* a run extended character by character (label-runs.c): its text
+    ** from byte `tail` on measured alone is `tail_w` wide; `stale`: the
+    ** layout does not hold the whole text yet (cf__label_runs_finish) */
+    size_t tail;
+    double tail_w;
+    bool stale;
 } run_t;
 
 struct cf_label {
@@ -53,6 +59,9 @@ struct cf_label {
     bool merge_ok;            /* the last atom may be extended */
     bool tex_math;            /* a TeX family: letters of mathematics in
                                  the math font's italic alphabet */
+    void *scratch;            /* the fonts' run that measures the tails
+                                 of growing runs (font.h) */
+    size_t shaped;            /* bytes handed to the fonts to shape */
     cf_label_box_t *boxes;    /* public view of the runs */
     cf__pathb_t outline;      /* cf__label_outline */
 };
@@ -96,6 +105,10 @@ bool cf__label_single_char_group(const char *s, size_t len, size_t pos);
 ** memory. */
 double cf__label_put_text(cf_label_t *lab, const font_t *f, double x,
                           double y, const char *s, size_t n);
+/* Shape once more the runs put_text extended, each whole (their runs of
+** the fonts then hold their text), once the label is parsed; false when
+** the fonts failed (out of memory). */
+bool cf__label_runs_finish(cf_label_t *lab);
 /* TeX's italic correction of one slanted character in font f: how far
 ** its ink reaches right of its advance width (0 when it does not). */
 double cf__label_italic_correction(cf_label_t *lab, const font_t *f,

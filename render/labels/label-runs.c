@@ -54,10 +54,18 @@ family_for_size(const char *family, double size_bp, bool italic, bool bold,
     snprintf(out, cap, "%s %d,%s", lm, pick, family);
 }
 
-/* Shape and measure r in lab's fonts; false when they failed (out of
-** memory). */
+/* What the fonts measure of one text in one run's font. */
+typedef struct metrics {
+    double width, ascent, descent, baseline;
+    double ink[4];             /* as run_t's; all 0 when there is no ink */
+    int unknown;               /* characters without a glyph */
+} metrics_t;
+
+/* Shape text[0..len) in r's font into the fonts' run *handle and measure
+** it; false when the fonts failed (out of memory). */
 static bool
-run_measure(cf_label_t *lab, run_t *r)
+shape(cf_label_t *lab, const run_t *r, void **handle, const char *text,
+      size_t len, metrics_t *m)
 {
     cf__font_req_t req;
     cf__font_shape_t sh;
@@ -74,25 +82,118 @@ run_measure(cf_label_t *lab, run_t *r)
     req.italic = r->italic && !r->math;
     req.bold = r->bold;
     req.size = r->size;
-    req.text = r->text;
-    req.len = r->text_len;
-    if (lab->fonts->shape(lab->fonts_ctx, &req, &r->shaped, &sh) != 0)
+    req.text = text;
+    req.len = len;
+    if (lab->fonts->shape(lab->fonts_ctx, &req, handle, &sh) != 0)
         return false;
-    r->baseline = (double)sh.baseline / u;
-    r->width = (double)sh.logical[2] / u;
-    r->ascent = r->baseline - (double)sh.logical[1] / u;
-    r->descent = (double)(sh.logical[1] + sh.logical[3]) / u - r->baseline;
-    r->ink[0] = (double)(sh.ink[0] - sh.logical[0]) / u;
-    r->ink[1] = (double)sh.ink[1] / u - r->baseline;
-    r->ink[2] = r->ink[0] + (double)sh.ink[2] / u;
-    r->ink[3] = r->ink[1] + (double)sh.ink[3] / u;
-    r->unknown = sh.unknown;
+    lab->shaped += len;
+    m->baseline = (double)sh.baseline / u;
+    m->width = (double)sh.logical[2] / u;
+    m->ascent = m->baseline - (double)sh.logical[1] / u;
+    m->descent = (double)(sh.logical[1] + sh.logical[3]) / u - m->baseline;
+    m->ink[0] = (double)(sh.ink[0] - sh.logical[0]) / u;
+    m->ink[1] = (double)sh.ink[1] / u - m->baseline;
+    m->ink[2] = m->ink[0] + (double)sh.ink[2] / u;
+    m->ink[3] = m->ink[1] + (double)sh.ink[3] / u;
+    m->unknown = sh.unknown;
     if (sh.ink[2] == 0 || sh.ink[3] == 0) {
         /* spaces: no ink */
-        r->ink[0] = r->ink[2] = 0;
-        r->ink[1] = r->ink[3] = 0;
+        m->ink[0] = m->ink[2] = 0;
+        m->ink[1] = m->ink[3] = 0;
     }
     return true;
+}
+
+/* Shape and measure the whole run r in its own run of the fonts (which
+** then holds its text); false when the fonts failed (out of memory). */
+static bool
+run_measure(cf_label_t *lab, run_t *r)
+{
+    metrics_t m;
+    if (!shape(lab, r, &r->shaped, r->text, r->text_len, &m))
+        return false;
+    r->width = m.width;
+    r->ascent = m.ascent;
+    r->descent = m.descent;
+    r->baseline = m.baseline;
+    memcpy(r->ink, m.ink, sizeof m.ink);
+    r->unknown = m.unknown;
+    r->tail = 0;
+    r->tail_w = m.width;
+    r->stale = false;
+    return true;
+}
+
+/* A run grows a character at a time (a word, a formula's letters); laying
+** the whole run out again at each character made a label of n characters
+** cost n^2 (a 1000-byte label 1.5 to 8 s).  Shaping is local -- kerning
+** pairs and ligatures join neighbours -- so only the run's tail is shaped
+** again: the text from byte r->tail on (TAIL to 2 TAIL bytes, moved
+** forward by TAIL at a time), whose width alone before the new bytes is
+** r->tail_w.  The glyphs of the tail sit where they sit in the whole run
+** measured from its end, so the run widens by what the tail widened and
+** the tail's ink joins the run's ink at the run's old width less the
+** tail's.  The whole run is shaped once more at the end of the label
+** (cf__label_runs_finish), for its glyphs and its exact extents. */
+#define TAIL 16
+
+static bool
+grow_measure(cf_label_t *lab, run_t *r, size_t old_len)
+{
+    metrics_t m;
+    size_t t = r->tail;
+    double before = r->tail_w, off;
+    if (old_len - t > 2 * TAIL) {
+        t = old_len - TAIL;
+        while (t < old_len && ((unsigned char)r->text[t] & 0xC0) == 0x80)
+            t++;
+        if (!shape(lab, r, &lab->scratch, r->text + t, old_len - t, &m))
+            return false;
+        before = m.width;
+    }
+    if (!shape(lab, r, &lab->scratch, r->text + t, r->text_len - t, &m))
+        return false;
+    off = r->width - before;
+    r->width = off + m.width;
+    if (m.ink[2] > m.ink[0] && m.ink[3] > m.ink[1]) {
+        m.ink[0] += off;
+        m.ink[2] += off;
+        if (r->ink[2] > r->ink[0] && r->ink[3] > r->ink[1]) {
+            r->ink[0] = fmin(r->ink[0], m.ink[0]);
+            r->ink[1] = fmin(r->ink[1], m.ink[1]);
+            r->ink[2] = fmax(r->ink[2], m.ink[2]);
+            r->ink[3] = fmax(r->ink[3], m.ink[3]);
+        } else {
+            memcpy(r->ink, m.ink, sizeof m.ink);
+        }
+    }
+    r->ascent = fmax(r->ascent, m.ascent);
+    r->descent = fmax(r->descent, m.descent);
+    r->baseline = fmax(r->baseline, m.baseline);
+    r->tail = t;
+    r->tail_w = m.width;
+    r->stale = true;
+    return true;
+}
+
+bool
+cf__label_runs_finish(cf_label_t *lab)
+{
+    bool ok = true;
+    for (size_t i = 0; i < lab->count; i++)
+        if (lab->runs[i].stale && !run_measure(lab, &lab->runs[i]))
+            ok = false;
+    if (lab->scratch != NULL) {
+        lab->fonts->release(lab->scratch);
+        lab->scratch = NULL;
+    }
+    return ok;
+}
+
+size_t
+cf__label_shaped_bytes(const cf_label_t *lab)
+{
+    return lab->shaped;
 }
 
 double
@@ -101,6 +202,7 @@ cf__label_put_text(cf_label_t *lab, const font_t *f, double x, double y,
 {
     run_t *r = lab->count > 0 ? &lab->runs[lab->count - 1] : NULL;
     char *t;
+    size_t old_len;
 
     if (r != NULL && lab->merge_ok && r->rule_h == 0 && r->size == f->size
         && r->italic == f->italic && r->math == f->math
@@ -111,8 +213,14 @@ cf__label_put_text(cf_label_t *lab, const font_t *f, double x, double y,
             return NAN;
         memcpy(t + r->text_len, s, n);
         r->text = t;
+        old_len = r->text_len;
         r->text_len += n;
         t[r->text_len] = '\0';
+        if (n > 0 && old_len > 0) {
+            if (!grow_measure(lab, r, old_len))
+                return NAN;
+            return r->x + r->width;
+        }
     } else {
         run_t *nr = cf__grow_array(lab->runs, &lab->cap, lab->count + 1,
                                    sizeof *nr, 8);

@@ -20,6 +20,8 @@ cf_label_destroy(cf_label_t *label)
             label->fonts->release(label->runs[i].shaped);
     }
     cf_free(label->runs);
+    if (label->scratch != NULL && label->fonts != NULL)
+        label->fonts->release(label->scratch);
     cf_free(label->boxes);
     cf__pathb_free(&label->outline);
     cf_free(label->family);
@@ -118,6 +120,11 @@ cf_label_create(const char *text, const char *family, double size_bp,
         if (st != CF_STATUS_OK) {
             cf_label_destroy(lab);
             return st;
+        }
+        if (!cf__label_runs_finish(lab)) {
+            cf_label_destroy(lab);
+            return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                               "out of memory for a label");
         }
     }
     lab->boxes = cf_alloc_array(lab->count ? lab->count : 1,

@@ -302,10 +302,22 @@ put_figure(text_t *t, const cf_script_t *s, size_t i, char *err,
     char *places = NULL;
     size_t places_size = 0;
     cf_diag_t diag;
+    cf_script_scope_t scope;
+    cf_status_t st;
+    char over[200];
     cf_diag_clear(&diag);
-    if (cf_figure_render_places(fig, CF_FORMAT_SVG, NULL, &svg, &size, m,
-                                &places, &places_size, &diag)
-        != CF_STATUS_OK) {
+    cf_script_budget_begin(s, &scope);
+    st = cf_figure_render_places(fig, CF_FORMAT_SVG, NULL, &svg, &size, m,
+                                 &places, &places_size, &diag);
+    if (cf_script_budget_end(s, &scope, over, sizeof over) &&
+        st != CF_STATUS_OK) {
+        snprintf(err, errlen, "%sfigure '%s': %s; %s",
+                 cf_script_figure_where(s, i), name, over, diag.msg);
+        cf_free(svg);
+        cf_free(places);
+        return -1;
+    }
+    if (st != CF_STATUS_OK) {
         snprintf(err, errlen, "%sfigure '%s': %s", cf_script_figure_where(s, i),
                  name, diag.msg);
         cf_free(svg);

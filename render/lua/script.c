@@ -41,6 +41,7 @@ struct cf_script {
     lua_State *L;
     size_t used, max_memory, reserve;
     int limit_hit;
+    unsigned long refused;  /* allocations the budget refused */
     int running;       /* a script is running (the stack can be read) */
     char where[160];   /* "file:line:" last seen by the hook, or "" */
     cf_allocator_t alloc;   /* the budget, current while the script runs */
@@ -97,6 +98,7 @@ budget_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
         return NULL;
     }
     if (nsize > old && (nsize - old > cap || s->used > cap - (nsize - old))) {
+        s->refused++;
         if (s->limit_hit == LIMIT_NONE) {
             s->limit_hit = LIMIT_MEMORY;
             s->budget.memory_exceeded = true;
@@ -767,4 +769,28 @@ cf__params_t *
 cf_script_params(const cf_script_t *s)
 {
     return s != NULL ? s->params : NULL;
+}
+
+/* ---- rendering inside the budget ---------------------------------------- */
+
+void
+cf_script_budget_begin(const cf_script_t *s, cf_script_scope_t *scope)
+{
+    scope->refused = s->refused;
+    cf_use_allocator(&s->alloc, &scope->prev);
+}
+
+bool
+cf_script_budget_end(const cf_script_t *s, cf_script_scope_t *scope,
+                     char *msg, size_t size)
+{
+    char limit[40];
+    cf_use_allocator(&scope->prev, NULL);
+    if (s->refused == scope->refused)
+        return false;
+    if (msg != NULL && size > 0)
+        snprintf(msg, size, "rendering exceeded the memory limit of %s (the "
+                 "script and the rendering of its figures share it: "
+                 "--max-memory)", format_size(limit, s->max_memory));
+    return true;
 }

@@ -82,6 +82,24 @@ cf_status_t cf_script_run_string(cf_script_t *script, const char *code,
                                  const char *name);
 const char *cf_script_error(const cf_script_t *script);
 
+/* Rendering inside the script's memory budget: between
+** cf_script_budget_begin and cf_script_budget_end the calling thread
+** allocates from the script's budget (cf_use_allocator), so what the
+** renderer allocates for the script's figures -- display list, layout,
+** label runs, rasters and image surfaces, output buffers -- counts against
+** the same max_memory as the script's own memory (which stays allocated).
+** A rendering that fails for want of memory then fails with
+** CF_STATUS_NO_MEMORY; cf_script_budget_end restores the allocator and
+** says whether the budget refused an allocation in between (then msg
+** holds "rendering exceeded the memory limit of N MiB ..."). */
+typedef struct cf_script_scope {
+    cf_allocator_t prev;
+    unsigned long refused;
+} cf_script_scope_t;
+void cf_script_budget_begin(const cf_script_t *script, cf_script_scope_t *scope);
+bool cf_script_budget_end(const cf_script_t *script, cf_script_scope_t *scope,
+                          char *msg, size_t size);
+
 /* The figures the script defined, in the order of definition. */
 size_t cf_script_figure_count(const cf_script_t *script);
 struct cf_figure *cf_script_figure(const cf_script_t *script, size_t i);

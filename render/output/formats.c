@@ -289,7 +289,7 @@ pgf_render(const cf__dl_t *dl, const cf__page_t *page, const char *title,
 static cairo_surface_t *
 make_surface(cf_format_t format, const cf__page_t *pg, double dpi,
              const char *title, const char *caption, cf__buf_t *raw,
-             cf_diag_t *diag)
+             unsigned char **pixels, cf_diag_t *diag)
 {
     cairo_surface_t *surf = NULL;
     switch (format) {
@@ -334,9 +334,23 @@ make_surface(cf_format_t format, const cf__page_t *pg, double dpi,
                         wpx, hpx, CF_PNG_MAX_PIXELS / 1e6);
             return NULL;
         }
-        surf = cairo_image_surface_create(CAIRO_FORMAT_ARGB32,
-                                          (int)fmax(1, wpx),
-                                          (int)fmax(1, hpx));
+        /* the pixels from the current allocator: under the tool, the
+        ** script's memory budget (they are most of a large PNG's memory) */
+        {
+            int w = (int)fmax(1, wpx), h = (int)fmax(1, hpx);
+            int stride = cairo_format_stride_for_width(CAIRO_FORMAT_ARGB32,
+                                                       w);
+            *pixels = cf_calloc((size_t)h, (size_t)stride);
+            if (*pixels == NULL) {
+                cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                            "out of memory for the PNG's %d x %d pixels "
+                            "(%.0f MiB)", w, h,
+                            (double)h * stride / 1048576.0);
+                return NULL;
+            }
+            surf = cairo_image_surface_create_for_data(
+                *pixels, CAIRO_FORMAT_ARGB32, w, h, stride);
+        }
         break;
     }
     default:
@@ -345,6 +359,39 @@ make_surface(cf_format_t format, const cf__page_t *pg, double dpi,
         return NULL;
     }
     return surf;
+}
+
+/* cairo allocates with malloc, outside the current allocator (the
+** script's budget under the tool), and what it holds while it draws grows
+** with the path it strokes or fills: its path, stroker, polygon and, for
+** rasters, its edges.  That memory is bounded through its input: a block
+** of CAIRO_SEG_BYTES per segment of the longest path of the list is taken
+** from the current allocator while cairo draws and released after; it is
+** never written, so it is never resident, but a budget without room for
+** cairo's work fails before cairo does that work.  CAIRO_SEG_BYTES: the
+** peak resident size of a 10^5-segment B-spline drawn to PNG less that
+** of the same list written as PGF (no cairo), per segment, rounded up:
+** about 280 bytes a segment for PNG measured with cairo 1.16; a vector
+** surface neither flattens nor rasterises, but holds the page's content
+** stream before compressing it (about 100 bytes a segment for PDF). */
+#define CAIRO_SEG_BYTES 384
+#define CAIRO_SEG_BYTES_VECTOR 160
+
+static size_t
+longest_path(const cf__dl_t *dl)
+{
+    size_t longest = 0;
+    for (size_t i = 0; i < dl->count; i++)
+        if (dl->ops[i].kind == CF__OP_PATH &&
+            dl->ops[i].u.path.nsegs > longest)
+            longest = dl->ops[i].u.path.nsegs;
+    return longest;
+}
+
+static size_t
+seg_bytes(cf_format_t format)
+{
+    return format == CF_FORMAT_PNG ? CAIRO_SEG_BYTES : CAIRO_SEG_BYTES_VECTOR;
 }
 
 /* The page, or one page per overlay step (cairo_show_page between). */
@@ -376,6 +423,8 @@ cf__format_render(cf_format_t format, const cf__dl_t *dl,
     cairo_t *cr;
     cairo_status_t cst;
     cf_status_t st;
+    unsigned char *pixels = NULL;
+    void *room;
     int r;
 
     memset(&raw, 0, sizeof raw);
@@ -384,20 +433,32 @@ cf__format_render(cf_format_t format, const cf__dl_t *dl,
     if (format == CF_FORMAT_SVG)
         return svg_render(dl, page, title, caption, out, diag);
     pg.raster = format == CF_FORMAT_PNG;
-    surf = make_surface(format, &pg, dpi, title, caption, &raw, diag);
-    if (surf == NULL)
+    room = cf_alloc_array(longest_path(dl) + 1, seg_bytes(format));
+    if (room == NULL)
+        return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1, "out of memory "
+                           "for cairo's work on a path of %zu segments "
+                           "(%zu bytes each)", longest_path(dl),
+                           seg_bytes(format));
+    surf = make_surface(format, &pg, dpi, title, caption, &raw, &pixels,
+                        diag);
+    if (surf == NULL) {
+        cf_free(room);
+        cf_free(pixels);
         return diag != NULL && diag->status != CF_STATUS_OK
             ? diag->status : CF_STATUS_INVALID_ARG;
+    }
     cr = cairo_create(surf);
     if (format == CF_FORMAT_PNG)
         cairo_scale(cr, dpi / 72.0, dpi / 72.0);
     play_steps(dl, &pg, cr);
     cst = cairo_status(cr);
     cairo_destroy(cr);
+    cf_free(room);
     if (format == CF_FORMAT_PNG && cst == CAIRO_STATUS_SUCCESS) {
         st = cf__png_encode(surf, dpi, &raw, diag);
         if (st != CF_STATUS_OK) {
             cairo_surface_destroy(surf);
+            cf_free(pixels);
             cf__buf_free(&raw);
             return st;
         }
@@ -406,6 +467,7 @@ cf__format_render(cf_format_t format, const cf__dl_t *dl,
     if (cst == CAIRO_STATUS_SUCCESS)
         cst = cairo_surface_status(surf);
     cairo_surface_destroy(surf);
+    cf_free(pixels);
     if (cst != CAIRO_STATUS_SUCCESS || raw.failed) {
         cf__buf_free(&raw);
         if (cst == CAIRO_STATUS_NO_MEMORY || cst == CAIRO_STATUS_WRITE_ERROR

@@ -48,17 +48,36 @@ write_all(int fd, const void *data, size_t n)
     return 0;
 }
 
-/* The child: the run, its answer into fd, then _exit (no atexit handler
-** of the parent's runs here). */
+static int
+read_all(int fd, void *data, size_t n)
+{
+    char *p = data;
+    while (n > 0) {
+        ssize_t r = read(fd, p, n);
+        if (r < 0 && errno == EINTR)
+            continue;
+        if (r <= 0)
+            return -1;
+        p += r;
+        n -= (size_t)r;
+    }
+    return 0;
+}
+
+/* The child: set up as a run's process, then wait on req for the values
+** (their length, 4 bytes, then the bytes; the end of req without them: the
+** server needs no more runs, exit), run, write the answer into fd and
+** _exit (no atexit handler of the parent's runs here).  A spare child
+** (forked ahead of need) is this, forked before the values exist. */
 _Noreturn static void
-child(int fd, pid_t parent, const char *script, const cf__tool_limits *l,
-      const char *values, size_t len)
+child(int fd, int req, pid_t parent, const char *script,
+      const cf__tool_limits *l)
 {
     sigset_t none;
     char error[1024];
     bool bad = false;
-    char *json;
-    uint32_t elen;
+    char *json, *values;
+    uint32_t elen, vlen;
     unsigned char flag;
     long max;
     /* the signals the server waits for are its own: here the defaults */
@@ -73,22 +92,33 @@ child(int fd, pid_t parent, const char *script, const cf__tool_limits *l,
 #endif
     if (getppid() != parent)
         _exit(1);
-    /* a second wall, should the parent be stopped: SIGALRM ends it */
-    alarm((unsigned)ceil(l->timeout) + 2);
-    /* the server's sockets stay the server's */
-    if (dup2(fd, 3) != 3)
+    /* the server's sockets stay the server's: the pipes at 3 and 4 (moved
+    ** out of the way first: either may be 3 or 4 now), the rest closed */
+    fd = fcntl(fd, F_DUPFD, 10);
+    req = fcntl(req, F_DUPFD, 10);
+    if (fd < 0 || req < 0 || dup2(fd, 3) != 3 || dup2(req, 4) != 4)
         _exit(1);
     fd = 3;
+    req = 4;
 #if defined(__GLIBC__) && (__GLIBC__ > 2 || __GLIBC_MINOR__ >= 34)
-    if (close_range(4, ~0u, 0) != 0)
+    if (close_range(5, ~0u, 0) != 0)
 #endif
     {
         max = sysconf(_SC_OPEN_MAX);
-        for (long k = 4; k < (max > 0 && max < 65536 ? max : 65536); k++)
+        for (long k = 5; k < (max > 0 && max < 65536 ? max : 65536); k++)
             close((int)k);
     }
+    if (read_all(req, &vlen, 4) != 0 || vlen > CF__LIVE_MAX_VALUES)
+        _exit(5);
+    values = malloc((size_t)vlen + 1);
+    if (values == NULL || read_all(req, values, vlen) != 0)
+        _exit(5);
+    values[vlen] = '\0';
+    close(req);
+    /* a second wall, should the parent be stopped: SIGALRM ends it */
+    alarm((unsigned)ceil(l->timeout) + 2);
     error[0] = '\0';
-    json = cf__live_run(script, &l->script, values, len, &bad, error,
+    json = cf__live_run(script, &l->script, values, vlen, &bad, error,
                         sizeof error);
     if (json == NULL)
         _exit(3);
@@ -154,41 +184,125 @@ read_reply(int fd, int stop_fd, double deadline, char **buf, size_t *len)
     }
 }
 
-char *
-cf__live_run_child(const char *script, const cf__tool_limits *limits,
-                   const char *values, size_t len, int stop_fd,
-                   bool *bad_values, char *error, size_t error_len)
+/* Fork a run's process into sp (waiting for its values); 0, or -1 with
+** errno. */
+static int
+spawn(cf__live_spare *sp, const char *script, const cf__tool_limits *l)
 {
-    int fds[2], status = 0, got;
+    int reply[2], req[2];
     pid_t pid, parent = getpid();
-    char *reply = NULL, msg[1024];
-    size_t n = 0;
-    *bad_values = false;
-    if (error_len > 0)
-        error[0] = '\0';
-    if (pipe(fds) != 0)
-        return NULL;
-    fcntl(fds[0], F_SETFD, FD_CLOEXEC);
+    if (pipe(reply) != 0)
+        return -1;
+    if (pipe(req) != 0) {
+        close(reply[0]);
+        close(reply[1]);
+        return -1;
+    }
+    fcntl(reply[0], F_SETFD, FD_CLOEXEC);
+    fcntl(req[1], F_SETFD, FD_CLOEXEC);
     fflush(NULL);
     pid = fork();
     if (pid < 0) {
-        close(fds[0]);
-        close(fds[1]);
-        snprintf(msg, sizeof msg, "cannot start a run of %s: %s", script,
-                 strerror(errno));
-        return cf__live_error_json(script, msg, error, error_len);
+        int e = errno;
+        close(reply[0]);
+        close(reply[1]);
+        close(req[0]);
+        close(req[1]);
+        errno = e;
+        return -1;
     }
     if (pid == 0) {
-        close(fds[0]);
-        child(fds[1], parent, script, limits, values, len);
+        close(reply[0]);
+        close(req[1]);
+        child(reply[1], req[0], parent, script, l);
     }
-    close(fds[1]);
-    got = read_reply(fds[0], stop_fd,
-                     cf__live_clock() + limits->timeout, &reply, &n);
-    close(fds[0]);
+    close(reply[1]);
+    close(req[0]);
+    sp->pid = pid;
+    sp->reply = reply[0];
+    sp->req = req[1];
+    return 0;
+}
+
+void
+cf__live_spare_init(cf__live_spare *sp)
+{
+    sp->pid = -1;
+    sp->reply = sp->req = -1;
+}
+
+void
+cf__live_spare_fork(cf__live_spare *sp, const char *script,
+                    const cf__tool_limits *limits)
+{
+    if (sp->pid <= 0 && spawn(sp, script, limits) != 0)
+        cf__live_spare_init(sp);
+}
+
+void
+cf__live_spare_drop(cf__live_spare *sp)
+{
+    int status;
+    if (sp->pid <= 0)
+        return;
+    kill(sp->pid, SIGKILL);
+    while (waitpid(sp->pid, &status, 0) < 0 && errno == EINTR)
+        ;
+    close(sp->req);
+    close(sp->reply);
+    cf__live_spare_init(sp);
+}
+
+char *
+cf__live_run_child(const char *script, const cf__tool_limits *limits,
+                   const char *values, size_t len, int stop_fd,
+                   cf__live_spare *spare, bool *bad_values, char *error,
+                   size_t error_len)
+{
+    int status = 0, got = -1;
+    char *reply = NULL, msg[1024];
+    size_t n = 0;
+    uint32_t vlen = (uint32_t)len;
+    cf__live_spare run;
+    void (*old_pipe)(int);
+    *bad_values = false;
+    if (error_len > 0)
+        error[0] = '\0';
+    if (len > CF__LIVE_MAX_VALUES)
+        return cf__live_error_json(script, "the values are larger than "
+                                   "1 MiB", error, error_len);
+    /* the spare when there is one (and it still lives), else a fresh
+    ** process */
+    if (spare != NULL && spare->pid > 0
+        && waitpid(spare->pid, &status, WNOHANG) == 0) {
+        run = *spare;
+    } else {
+        if (spare != NULL && spare->pid > 0) {
+            close(spare->req);
+            close(spare->reply);
+        }
+        if (spawn(&run, script, limits) != 0) {
+            snprintf(msg, sizeof msg, "cannot start a run of %s: %s",
+                     script, strerror(errno));
+            if (spare != NULL)
+                cf__live_spare_init(spare);
+            return cf__live_error_json(script, msg, error, error_len);
+        }
+    }
+    if (spare != NULL)
+        cf__live_spare_init(spare);
+    /* a run that died before reading its values: EPIPE, not SIGPIPE */
+    old_pipe = signal(SIGPIPE, SIG_IGN);
+    if (write_all(run.req, &vlen, 4) == 0 && write_all(run.req, values, len)
+        == 0)
+        got = read_reply(run.reply, stop_fd,
+                         cf__live_clock() + limits->timeout, &reply, &n);
+    signal(SIGPIPE, old_pipe);
+    close(run.req);
+    close(run.reply);
     if (got != 0)
-        kill(pid, SIGKILL);
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+        kill(run.pid, SIGKILL);
+    while (waitpid(run.pid, &status, 0) < 0 && errno == EINTR)
         ;
     if (got == 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0 && n >= 5) {
         uint32_t elen;

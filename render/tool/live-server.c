@@ -29,7 +29,7 @@
 #include "web-text.h"   /* generated from render/web */
 
 #define TOKEN_BYTES 16            /* 128 bits */
-#define MAX_BODY ((size_t)1 << 20) /* values of a run */
+#define MAX_BODY CF__LIVE_MAX_VALUES /* values of a run */
 #define WAIT_SECONDS 20
 #define MAX_CONNECTIONS 512       /* within the default 1024 descriptors */
 #define MAX_PER_IP 256
@@ -239,7 +239,12 @@ static void *
 runner(void *arg)
 {
     server_t *sv = arg;
+    cf__live_spare spare;
     cf__live_warm();
+    /* the next run's process, forked while the server waits: a run then
+    ** costs the run, not the fork and the copying of pages after it */
+    cf__live_spare_init(&spare);
+    cf__live_spare_fork(&spare, sv->script, sv->limits);
     pthread_mutex_lock(&sv->lock);
     for (;;) {
         request_t *rq;
@@ -262,12 +267,19 @@ runner(void *arg)
         json = cf__live_run_child(sv->script, sv->limits,
                                   rq->body != NULL ? rq->body : "{}",
                                   rq->body != NULL ? rq->len : 2,
-                                  sv->stop_pipe[0], &bad, NULL, 0);
+                                  sv->stop_pipe[0], &spare, &bad, NULL,
+                                  0);
+        /* the next one before the answer: once the connection resumes,
+        ** the server's polling thread allocates at once, and a fork in
+        ** the middle of that leaves a lock held in the child (under ASan,
+        ** whose allocator has no fork handler, the spare hung) */
+        cf__live_spare_fork(&spare, sv->script, sv->limits);
         pthread_mutex_lock(&sv->lock);
         finish(rq, bad ? MHD_HTTP_BAD_REQUEST : MHD_HTTP_OK,
                "application/json", json);
     }
     pthread_mutex_unlock(&sv->lock);
+    cf__live_spare_drop(&spare);
     return NULL;
 }
 

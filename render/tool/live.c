@@ -225,6 +225,7 @@ cf__tool_live(int argc, char **argv)
         char error[1024];
         const char *v = once != NULL ? once : "{}";
         char *json = cf__live_run_child(script, &limits, v, strlen(v), -1,
+                                        NULL,
                                         &bad, error, sizeof error);
         if (json == NULL)
             return fprintf(stderr, "curvefig: out of memory\n"), EXIT_SCRIPT;

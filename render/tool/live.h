@@ -7,6 +7,7 @@
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <sys/types.h>
 
 #include "runlimits.h"
 #include "script.h"
@@ -27,13 +28,35 @@ char *cf__live_run(const char *script, const cf_script_limits_t *limits,
 ** unreadable script, a limit); msg also into error (NULL: not asked). */
 char *cf__live_error_json(const char *script, const char *msg, char *error,
                           size_t error_len);
-/* cf__live_run in a child process (live-child.c) under limits: killed
-** after limits->timeout seconds (the JSON then says so), or as soon as
-** stop_fd (-1: none) becomes readable; a run that crashes is an error in
-** the JSON too.  NULL only when memory ran out. */
+/* The values a run may be given, in bytes (the server answers 413 above). */
+#define CF__LIVE_MAX_VALUES ((size_t)1 << 20)
+
+/* A run's process forked ahead of need (live-child.c): forked from a
+** thread where the Lua language, the fonts and the caches are ready, it
+** touches what a run touches and waits for its values; it takes one run
+** and exits.  pid -1: none. */
+typedef struct cf__live_spare {
+    pid_t pid;
+    int req, reply;   /* the values go in, the answer comes out */
+} cf__live_spare;
+void cf__live_spare_init(cf__live_spare *sp);
+/* Fork the spare when there is none (a failed fork leaves none: the next
+** run forks its own). */
+void cf__live_spare_fork(cf__live_spare *sp, const char *script,
+                         const cf__tool_limits *limits);
+/* Kill the spare and reap it. */
+void cf__live_spare_drop(cf__live_spare *sp);
+
+/* cf__live_run in a child process (live-child.c) under limits: the spare
+** (which then is used up: fork the next one) or, when spare is NULL or
+** has none, a process forked now; killed after limits->timeout seconds
+** from the moment it is given the values (the JSON then says so), or as
+** soon as stop_fd (-1: none) becomes readable; a run that crashes is an
+** error in the JSON too.  NULL only when memory ran out. */
 char *cf__live_run_child(const char *script, const cf__tool_limits *limits,
                          const char *values, size_t len, int stop_fd,
-                         bool *bad_values, char *error, size_t error_len);
+                         cf__live_spare *spare, bool *bad_values,
+                         char *error, size_t error_len);
 /* Run a small figure of our own (a curve, a label in the default fonts)
 ** in this thread, so that the processes it forks for runs start with the
 ** fonts loaded and the caches of pango, fontconfig and cairo warm (pango's

@@ -489,6 +489,8 @@ render_figures(const cf_script_t *s, const options *o)
         char *base;
         cf_diag_t diag;
         cf_status_t st;
+        cf_script_scope_t scope;
+        char over[200];
         if (!selected(o->only, name))
             continue;
         base = cf__tool_join(o->outdir, name);
@@ -499,12 +501,14 @@ render_figures(const cf_script_t *s, const options *o)
         cf_diag_clear(&diag);
         set_background(fig, o->background);
         st = CF_STATUS_OK;
+        cf_script_budget_begin(s, &scope);
         if (o->formats & ~CF__TOOL_HTML_BIT)
             st = cf_figure_write_all(fig, base, o->formats & ~CF__TOOL_HTML_BIT,
                                      &wo, &diag);
         if (st == CF_STATUS_OK && (o->formats & CF__TOOL_HTML_BIT)) {
             char *html = malloc(strlen(base) + 6);
             if (html == NULL) {
+                cf_script_budget_end(s, &scope, NULL, 0);
                 free(base);
                 fprintf(stderr, "curvefig: out of memory\n");
                 return EXIT_SCRIPT;
@@ -516,6 +520,17 @@ render_figures(const cf_script_t *s, const options *o)
             else if (o->verbose)
                 printf("%s\n", html);
             free(html);
+        }
+        if (cf_script_budget_end(s, &scope, over, sizeof over) &&
+            st != CF_STATUS_OK) {
+            char both[sizeof over + sizeof diag.msg + 2];
+            size_t n;
+            snprintf(both, sizeof both, "%s; %s", over,
+                     diag.msg[0] ? diag.msg : cf_status_to_string(st));
+            n = strlen(both) < sizeof diag.msg ? strlen(both)
+                                               : sizeof diag.msg - 1;
+            memcpy(diag.msg, both, n);
+            diag.msg[n] = '\0';
         }
         if (st != CF_STATUS_OK) {
             const char *where = cf_script_figure_where(s, i);

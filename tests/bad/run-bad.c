@@ -6,6 +6,13 @@
 **   line 2   -- what the case is about (free text)
 **   optional -- args: OPTIONS            more options for the tool
 **   optional -- command: run|list        instead of render
+**   optional -- max-rss: MIB             the tool's peak resident size
+**                                        (getrusage of the child) must
+**                                        stay below MIB: a memory limit
+**                                        that holds, not only a message
+**                                        (not checked under ASan, whose
+**                                        shadow memory and quarantine
+**                                        are resident too)
 **
 ** A case passes when the tool exits with RC, its stderr contains FRAGMENT,
 ** a failed script (RC 1) is named with file and line ("NAME.lua:N"), and
@@ -18,13 +25,16 @@
 ** usage: run-bad TOOL CASES_DIR KNOWN_FAILURES SCRATCH_DIR [--all] [NAME...]
 */
 #define _XOPEN_SOURCE 700   /* realpath */
+#define _DEFAULT_SOURCE     /* wait4 */
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/time.h>
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -39,7 +49,19 @@ typedef struct bad_case {
     char fragment[LINE];
     char args[LINE];
     char command[32];
+    long max_rss;        /* MiB, 0: not checked */
 } bad_case;
+
+#if defined(__SANITIZE_ADDRESS__)
+#define RSS_CHECKED 0
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define RSS_CHECKED 0
+#endif
+#endif
+#ifndef RSS_CHECKED
+#define RSS_CHECKED 1
+#endif
 
 static int
 read_all(const char *path, char *buf, size_t cap)
@@ -66,7 +88,7 @@ parse_header(const char *path, bad_case *c)
     strcpy(c->command, "render");
     if (f == NULL)
         return "cannot open the case";
-    while (fgets(line, sizeof line, f) != NULL && lineno < 4) {
+    while (fgets(line, sizeof line, f) != NULL && lineno < 5) {
         char *q;
         line[strcspn(line, "\n")] = '\0';
         lineno++;
@@ -83,6 +105,8 @@ parse_header(const char *path, bad_case *c)
             err = NULL;
         } else if ((q = strstr(line, "-- args: ")) == line) {
             snprintf(c->args, sizeof c->args, "%s", line + 9);
+        } else if ((q = strstr(line, "-- max-rss: ")) == line) {
+            c->max_rss = strtol(line + 12, NULL, 10);
         } else if ((q = strstr(line, "-- command: ")) == line) {
             size_t len = strlen(line + 12);
             if (len >= sizeof c->command)
@@ -110,10 +134,10 @@ is_known(const char *known, const char *name)
 }
 
 /* Run the tool; returns its exit status (or 128 + signal); stderr into
-** errpath. */
+** errpath, its peak resident size in KiB into *rss_kib. */
 static int
 run_tool(const char *tool, const char *script, const char *outdir,
-         const bad_case *c, const char *errpath)
+         const bad_case *c, const char *errpath, long *rss_kib)
 {
     char argbuf[LINE];
     char *argv[MAX_ARGS];
@@ -142,6 +166,7 @@ run_tool(const char *tool, const char *script, const char *outdir,
     sp.dir = outdir;   /* `run` and `list` write nothing */
     sp.out = "/dev/null";
     sp.err = errpath;
+    sp.rss_kib = rss_kib;
     return tu_exit_code(tu_spawn(&sp));
 }
 
@@ -274,7 +299,8 @@ main(int argc, char **argv)
                 why = "cannot make the output directory";
         }
         if (why == NULL) {
-            rc = run_tool(tool, script, outdir, &c, errpath);
+            long rss = 0;
+            rc = run_tool(tool, script, outdir, &c, errpath, &rss);
             read_all(errpath, err, sizeof err);
             list_dir(outdir, left, sizeof left);
             if (rc != c.rc) {
@@ -288,6 +314,12 @@ main(int argc, char **argv)
                 why = "the message does not name the script's file and line";
             } else if (left[0] != '\0') {
                 why = "files were left in the output directory";
+            } else if (RSS_CHECKED && c.max_rss > 0 &&
+                       rss > c.max_rss * 1024) {
+                static char msg[256];
+                snprintf(msg, sizeof msg, "peak resident size %ld KiB, "
+                         "above the case's %ld MiB", rss, c.max_rss);
+                why = msg;
             }
         }
         if (why == NULL) {

@@ -21,7 +21,9 @@ killed at --timeout with its error in the JSON while the server answers
 everything else, and the next run works; SIGTERM stops the server within
 two seconds while a run spins, and the run's process is gone; the script
 replaced by a directory or a FIFO is an error in the JSON, not an empty
-run or a server blocked for ever.
+run or a server blocked for ever.  A run's process is forked ahead of need
+(before the first request and after each answer), runs the script as it
+is when the run starts, and goes with the server on SIGTERM.
 """
 import json
 import os
@@ -226,6 +228,70 @@ def test_spinning_run(tool, tmp, good):
             p.wait()
 
 
+def children(pid):
+    return subprocess.run(['pgrep', '-P', str(pid)], capture_output=True,
+                          text=True).stdout.split()
+
+
+def wait_children(pid, want, seconds=5):
+    t = time.time()
+    kids = children(pid)
+    while len(kids) != want and time.time() - t < seconds:
+        time.sleep(0.05)
+        kids = children(pid)
+    return kids
+
+
+def alive(pid):
+    try:
+        with open('/proc/%s/stat' % pid) as f:
+            return f.read().split(')')[1].split()[0] != 'Z'
+    except OSError:
+        return False
+
+
+def test_spare_runner(tool, tmp, good):
+    """The run's process is forked ahead of need: one waits before the
+    first request, takes one run (reading the script as it is then, not as
+    it was when it was forked) and exits; the next one is forked after the
+    answer; SIGTERM takes the waiting one with the server."""
+    script = os.path.join(tmp, 'spare.lua')
+    with open(script, 'w') as f:
+        f.write(good)
+    p, url, port, token = start(tool, script)
+    try:
+        kids = wait_children(p.pid, 1)
+        check(len(kids) == 1, 'a run\'s process waits before the first '
+              'request (%s)' % kids)
+        # saved after that process was forked: the run reads it anew
+        with open(script, 'w') as f:
+            f.write(good.replace('name = "decasteljau"', 'name = "saved"'))
+        st, _, body = answer(url + 'run', data=b'{}')
+        names = [g['name'] for g in json.loads(body).get('figures', [])]
+        check(st == 200 and names == ['saved'], 'the waiting process runs '
+              'the script as saved since it was forked (%s)' % names)
+        later = wait_children(p.pid, 1)
+        check(len(later) == 1 and kids and later[0] != kids[0] and
+              not alive(kids[0]), 'it took one run and exited; the next '
+              'one waits (%s, then %s)' % (kids, later))
+        st, _, body = answer(url + 'run', data=b'{"t": 0.5}')
+        check(st == 200 and json.loads(body).get('error', 1) is None,
+              'the next run works')
+        kids = wait_children(p.pid, 1)
+        t = time.time()
+        p.terminate()
+        p.wait(30)
+        while kids and alive(kids[0]) and time.time() - t < 2:
+            time.sleep(0.05)
+        check(p.returncode == 0 and kids and not alive(kids[0]),
+              'SIGTERM: the server exits and its waiting process is gone '
+              '(%.2f s)' % (time.time() - t))
+    finally:
+        if p.poll() is None:
+            p.kill()
+            p.wait()
+
+
 def test_replaced_script(tool, tmp, good):
     """The script replaced while served, by a directory or a FIFO: an error
     in the page, promptly; the server runs on."""
@@ -410,6 +476,7 @@ def main():
     try:
         test_spinning_run(tool, tmp, good)
         test_replaced_script(tool, tmp, good)
+        test_spare_runner(tool, tmp, good)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
     if failures:

@@ -1,5 +1,6 @@
 /* Running a program from a test (tests/support/spawn.h). */
 #define _POSIX_C_SOURCE 200809L
+#define _DEFAULT_SOURCE     /* wait4 */
 #include "spawn.h"
 
 #include <fcntl.h>
@@ -7,6 +8,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
+#include <sys/time.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -91,8 +94,13 @@ tu_spawn(const tu_spawn_t *s)
         nanosleep(&ts, NULL);
         kill(pid, SIGKILL);
     }
-    if (waitpid(pid, &status, 0) != pid)
-        return -1;
+    {
+        struct rusage ru;
+        if (wait4(pid, &status, 0, &ru) != pid)
+            return -1;
+        if (s->rss_kib != NULL)
+            *s->rss_kib = ru.ru_maxrss;
+    }
     return status;
 }
 

@@ -22,6 +22,8 @@ typedef struct tu_spawn {
                                   "NAME" to unset; may be NULL */
     bool kill;                 /* SIGKILL after kill_after seconds */
     double kill_after;
+    long *rss_kib;             /* not NULL: the child's peak resident size
+                                  (KiB, getrusage's ru_maxrss) */
 } tu_spawn_t;
 
 /* Run the program and wait for it: its wait status (as waitpid gives

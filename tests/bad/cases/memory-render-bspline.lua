@@ -1,0 +1,8 @@
+-- expect: 1 "figure 'big': rendering exceeded the memory limit of 64 MiB"
+-- a 10^5-point B-spline: its display list alone outgrows the script's budget, which rendering shares
+-- args: --max-memory 64
+-- max-rss: 80
+local pts = {}
+for i = 1, 100000 do pts[i] = { i / 1000, math.sin(i / 100) } end
+local f = figure{ name = "big" }
+f:curve(bspline{ degree = 3, points = pts })

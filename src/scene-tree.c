@@ -197,7 +197,7 @@ cf__scene_leaves(cf_scene_t *sc, size_t ip)
                     ms.diam <= sc->tol / 8 ||
                     (!ms.fold && ms.dev <= 0.15 * ms.diam &&
                      ms.wratio <= 1.2) ||
-                    (ms.fold && ms.img <= sc->tol);
+                    (ms.fold && (ms.img <= sc->tol || ms.dev <= sc->tol / 4));
         if (leaf) {
             if (st == CF_STATUS_OK)
                 st = push_leaf(sc, ip, &pc, &ms);

@@ -19,7 +19,7 @@
 #include "testutil.h"
 
 /* Samples of each line checked against the reference. */
-#define SAMPLES 600
+#define SAMPLES 300
 
 typedef struct world {
     cf_view_t view;
@@ -216,7 +216,7 @@ test_sphere(void **state)
     world_init(&w, &v, 1e-3);
     assert_int_equal(cf_nurbs_sphere(c, 1.0, &s, NULL), 0);
     size_t id = add_bspline(&w, s);
-    check_isos(&w, s, id, 5, 4);
+    check_isos(&w, s, id, 3, 3);
     /* a line through the sphere, not on it */
     double p0[3] = {-2, 0.3, 0.2}, p1[3] = {2, -0.2, 0.1};
     cf_bspline_t *l = segment(p0, p1);
@@ -239,7 +239,7 @@ test_torus(void **state)
     world_init(&w, &v, 1e-3);
     assert_int_equal(cf_nurbs_torus(c, 1.0, 0.4, &s, NULL), 0);
     size_t id = add_bspline(&w, s);
-    check_isos(&w, s, id, 7, 5);
+    check_isos(&w, s, id, 5, 3);
     report(&w, "torus");
     cf_bspline_surface_destroy(s);
     world_fini(&w);
@@ -257,7 +257,7 @@ test_torus_perspective(void **state)
     world_init(&w, &v, 1e-3);
     assert_int_equal(cf_nurbs_torus(c, 1.0, 0.4, &s, NULL), 0);
     size_t id = add_bspline(&w, s);
-    check_isos(&w, s, id, 5, 3);
+    check_isos(&w, s, id, 3, 2);
     report(&w, "torus in perspective");
     cf_bspline_surface_destroy(s);
     world_fini(&w);
@@ -300,7 +300,7 @@ test_saddle(void **state)
     assert_int_equal(cf_view_orthographic(&v, 10, 12, NULL), 0);
     world_init(&w, &v, 1e-3);
     size_t id = add_bspline(&w, s);
-    check_isos(&w, s, id, 7, 7);
+    check_isos(&w, s, id, 4, 4);
     report(&w, "saddle");
     cf_bezier_surface_destroy(b);
     cf_bspline_surface_destroy(s);
@@ -333,8 +333,8 @@ test_two_patches(void **state)
     assert_int_equal(cf_view_orthographic(&v, 60, 30, NULL), 0);
     world_init(&w, &v, 1e-3);
     size_t ia = add_bezier(&w, a), ib = add_bezier(&w, b);
-    check_isos(&w, sa, ia, 6, 6);
-    check_isos(&w, sb, ib, 6, 6);
+    check_isos(&w, sa, ia, 3, 3);
+    check_isos(&w, sb, ib, 3, 3);
     report(&w, "two patches");
     cf_bezier_surface_destroy(a);
     cf_bezier_surface_destroy(b);
@@ -367,7 +367,7 @@ test_curl(void **state)
     assert_int_equal(cf_view_orthographic(&v, -75, 20, NULL), 0);
     world_init(&w, &v, 1e-3);
     size_t id = add_bezier(&w, b);
-    check_isos(&w, s, id, 9, 5);
+    check_isos(&w, s, id, 5, 3);
     report(&w, "curl");
     cf_bezier_surface_destroy(b);
     cf_bspline_surface_destroy(s);

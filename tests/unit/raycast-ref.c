@@ -239,30 +239,42 @@ sight(const rc_scene_t *rc, const double *p, ld *e, ld *smax)
 }
 
 /* The line crosses the box of the patch (slab test, margin pad). */
+/* The part [*s0, *s1] of the line o + s e within [s0, s1] in the box
+** lo..hi (slab test); false when empty. */
 static bool
-crosses(const rc_patch_t *p, const double *o, const ld *e, ld smax, ld pad,
-        ld *s0, ld *s1)
+slab(const ld *lo, const ld *hi, const double *o, const ld *e, ld *s0,
+     ld *s1)
 {
-    ld t0 = 0.0L, t1 = smax;
+    ld t0 = *s0, t1 = *s1;
     for (int c = 0; c < 3; c++) {
-        ld lo = p->lo[c] - pad, hi = p->hi[c] + pad;
         if (fabsl(e[c]) < 1e-30L) {
-            if (o[c] < lo || o[c] > hi)
+            if (o[c] < lo[c] || o[c] > hi[c])
                 return false;
             continue;
         }
-        ld a = (lo - o[c]) / e[c], b = (hi - o[c]) / e[c];
-        if (a > b) {
-            ld x = a;
-            a = b;
-            b = x;
-        }
-        t0 = fmaxl(t0, a);
-        t1 = fminl(t1, b);
+        ld a = (lo[c] - o[c]) / e[c], b = (hi[c] - o[c]) / e[c];
+        t0 = fmaxl(t0, fminl(a, b));
+        t1 = fminl(t1, fmaxl(a, b));
     }
     *s0 = t0;
     *s1 = t1;
     return t0 <= t1;
+}
+
+/* The line crosses the box of the patch (pad around it) for s in
+** [*s0, *s1] within [0, smax]. */
+static bool
+crosses(const rc_patch_t *p, const double *o, const ld *e, ld smax, ld pad,
+        ld *s0, ld *s1)
+{
+    ld lo[3], hi[3];
+    for (int c = 0; c < 3; c++) {
+        lo[c] = p->lo[c] - pad;
+        hi[c] = p->hi[c] + pad;
+    }
+    *s0 = 0.0L;
+    *s1 = smax;
+    return slab(lo, hi, o, e, s0, s1);
 }
 
 static bool
@@ -362,23 +374,9 @@ net_crosses(const ld *net, size_t cnt, const ray_t *r, ld *size)
             hi[c] = fmaxl(hi[c], x);
         }
     *size = 0.0L;
-    for (int c = 0; c < 3; c++) {
+    for (int c = 0; c < 3; c++)
         *size = fmaxl(*size, hi[c] - lo[c]);
-        if (fabsl(r->e[c]) < 1e-30L) {
-            if (r->o[c] < lo[c] || r->o[c] > hi[c])
-                return false;
-            continue;
-        }
-        ld a = (lo[c] - r->o[c]) / r->e[c], b = (hi[c] - r->o[c]) / r->e[c];
-        if (a > b) {
-            ld x = a;
-            a = b;
-            b = x;
-        }
-        t0 = fmaxl(t0, a);
-        t1 = fminl(t1, b);
-    }
-    return t0 <= t1;
+    return slab(lo, hi, r->o, r->e, &t0, &t1);
 }
 
 static void

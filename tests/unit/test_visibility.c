@@ -636,6 +636,147 @@ test_silhouette_torus(void **state)
     cf_bspline_surface_destroy(s);
 }
 
+/* ---- facets -------------------------------------------------------------- */
+
+/* A depth growing towards the viewer that is affine on every plane's
+** image: d . p (orthographic), D z / (D - z) (perspective). */
+static double
+affine_depth(const cf_view_t *v, const double *p)
+{
+    double z, q[2];
+    assert_int_equal(cf_view_project(v, p, q, &z), 0);
+    if (v->projection == CF_PROJECTION_PERSPECTIVE)
+        return v->distance * z / (v->distance - z);
+    return z;
+}
+
+/*
+** The painting order by the depth test: at random image points, the facets
+** whose images contain the point, in painting order, must come nearer and
+** nearer (a facet never hides one painted after it).
+*/
+static void
+check_order(const cf_scene_t *sc, const cf_view_t *v, double tol,
+            bool want_splits)
+{
+    cf_facets_t *f = NULL;
+    double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
+    tu_rng r;
+    long overlaps = 0;
+    assert_int_equal(cf_scene_facets_tol(sc, tol, &f, NULL), 0);
+    assert_true(f->n > 100);
+    assert_true(f->deviation <= tol);
+    if (want_splits)
+        assert_true(f->splits > 0);
+    double *zc = malloc(f->n * 3 * sizeof(double));
+    assert_non_null(zc);
+    for (size_t i = 0; i < f->n; i++) {
+        const cf_facet_t *x = &f->items[i];
+        double gn[3], u[3], w[3], to[3], cen[3] = {0, 0, 0};
+        for (int k = 0; k < 3; k++) {
+            double q[2];
+            assert_int_equal(cf_view_project(v, x->p + 3 * k, q, NULL), 0);
+            assert_true(fabs(q[0] - x->image[2 * k]) < 1e-9);
+            assert_true(fabs(q[1] - x->image[2 * k + 1]) < 1e-9);
+            zc[3 * i + k] = affine_depth(v, x->p + 3 * k);
+            lo[0] = fmin(lo[0], q[0]);
+            lo[1] = fmin(lo[1], q[1]);
+            hi[0] = fmax(hi[0], q[0]);
+            hi[1] = fmax(hi[1], q[1]);
+            double nl = sqrt(x->normal[3 * k] * x->normal[3 * k] +
+                             x->normal[3 * k + 1] * x->normal[3 * k + 1] +
+                             x->normal[3 * k + 2] * x->normal[3 * k + 2]);
+            assert_true(fabs(nl - 1.0) < 1e-9);
+            for (int e = 0; e < 3; e++)
+                cen[e] += x->p[3 * k + e] / 3;
+        }
+        for (int e = 0; e < 3; e++) {
+            u[e] = x->p[3 + e] - x->p[e];
+            w[e] = x->p[6 + e] - x->p[e];
+        }
+        gn[0] = u[1] * w[2] - u[2] * w[1];
+        gn[1] = u[2] * w[0] - u[0] * w[2];
+        gn[2] = u[0] * w[1] - u[1] * w[0];
+        assert_int_equal(cf_view_towards_eye(v, cen, to), 0);
+        assert_true(x->front == (gn[0] * to[0] + gn[1] * to[1] +
+                                 gn[2] * to[2] > 0.0));
+    }
+    tu_rng_seed(&r, 11);
+    for (int s = 0; s < 600; s++) {
+        double pt[2] = {tu_rng_range(&r, lo[0], hi[0]),
+                        tu_rng_range(&r, lo[1], hi[1])};
+        double last = -HUGE_VAL;
+        size_t lasti = 0;
+        for (size_t i = 0; i < f->n; i++) {
+            const double *im = f->items[i].image;
+            double d = (im[2] - im[0]) * (im[5] - im[1]) -
+                       (im[3] - im[1]) * (im[4] - im[0]);
+            if (fabs(d) < 1e-14)
+                continue;
+            double b = ((pt[0] - im[0]) * (im[5] - im[1]) -
+                        (pt[1] - im[1]) * (im[4] - im[0])) / d;
+            double c = ((im[2] - im[0]) * (pt[1] - im[1]) -
+                        (im[3] - im[1]) * (pt[0] - im[0])) / d;
+            if (b < 1e-9 || c < 1e-9 || b + c > 1 - 1e-9)
+                continue;
+            double z = (1 - b - c) * zc[3 * i] + b * zc[3 * i + 1] +
+                       c * zc[3 * i + 2];
+            if (last > -HUGE_VAL) {
+                overlaps++;
+                if (z < last - 1e-7)
+                    fail_msg("at (%g %g) facet %zu (depth %.9g) is painted "
+                             "after facet %zu that is nearer (%.9g)", pt[0],
+                             pt[1], i, z, lasti, last);
+            }
+            last = z;
+            lasti = i;
+        }
+    }
+    printf("# facets: %zu (%zu splits), deviation %.3g, %ld overlaps in "
+           "order\n", f->n, f->splits, f->deviation, overlaps);
+    assert_true(overlaps > 100);
+    free(zc);
+    cf_facets_destroy(f);
+}
+
+static void
+test_facets(void **state)
+{
+    (void)state;
+    double c[3] = {0, 0, 0};
+    double Q[12] = {-1.6, -1.6, 0.1, -1.6, 1.6, -0.1, 1.6, -1.6, 0.2,
+                    1.6, 1.6, 0.0};
+    cf_bspline_surface_t *s = NULL;
+    cf_bezier_surface_t *b = NULL;
+    cf_scene_t *sc = NULL;
+    cf_view_t v;
+    assert_int_equal(cf_nurbs_torus(c, 1.0, 0.4, &s, NULL), 0);
+    assert_int_equal(cf_bezier_surface_bilinear(3, Q, &b, NULL), 0);
+    for (int persp = 0; persp < 2; persp++) {
+        if (persp)
+            assert_int_equal(cf_view_perspective(&v, 25, 30, 6.0, NULL, NULL),
+                             0);
+        else
+            assert_int_equal(cf_view_orthographic(&v, -40, 25, NULL), 0);
+        assert_int_equal(cf_scene_create(&v, 1e-3, &sc, NULL), 0);
+        assert_int_equal(cf_scene_add_bspline(sc, s, NULL, NULL), 0);
+        /* a plane through the torus: interpenetration, cut by the tree */
+        assert_int_equal(cf_scene_add_bezier(sc, b, NULL, NULL), 0);
+        check_order(sc, &v, 2e-2, true);
+        cf_scene_destroy(sc);
+    }
+    /* the curl over itself and the saddle */
+    cf_bezier_surface_t *sd = saddle();
+    assert_int_equal(cf_view_orthographic(&v, 10, 12, NULL), 0);
+    assert_int_equal(cf_scene_create(&v, 1e-3, &sc, NULL), 0);
+    assert_int_equal(cf_scene_add_bezier(sc, sd, NULL, NULL), 0);
+    check_order(sc, &v, 1e-2, false);
+    cf_scene_destroy(sc);
+    cf_bezier_surface_destroy(sd);
+    cf_bezier_surface_destroy(b);
+    cf_bspline_surface_destroy(s);
+}
+
 int
 main(void)
 {
@@ -650,6 +791,7 @@ main(void)
         cmocka_unit_test(test_points),
         cmocka_unit_test(test_silhouette_sphere),
         cmocka_unit_test(test_silhouette_torus),
+        cmocka_unit_test(test_facets),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

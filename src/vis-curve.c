@@ -17,6 +17,7 @@ typedef struct vcurve {
     const double *t0, *t1;
     size_t n;
     const cf_vis_on_t *on;
+    const cf_silhouette_piece_t *sil;   /* classify at the exact contour */
 } vcurve_t;
 
 typedef struct sample {
@@ -64,6 +65,19 @@ classify(const cf_scene_t *sc, const vcurve_t *vc, size_t k, double tau,
     s->t = t;
     s->hidden = false;
     s->occ = SIZE_MAX;
+    if (vc->sil != NULL) {
+        double uv[2], a = 1.0 - tau;
+        const double *c = vc->sil->uv;
+        for (int e = 0; e < 2; e++)
+            uv[e] = a * a * a * c[e] + 3 * a * a * tau * c[2 + e] +
+                    3 * a * tau * tau * c[4 + e] + tau * tau * tau * c[6 + e];
+        s->in_front = cf__contour_point(sc, vc->sil->surface, uv, s->q);
+        if (!s->in_front)
+            s->hidden = true;
+        else
+            s->hidden = cf__scene_hidden(sc, s->q, &self, &s->occ);
+        return;
+    }
     s->in_front = cf_bezier_eval(vc->piece[k], tau, p) == CF_STATUS_OK &&
                   cf__view_apply(sc->M, p, s->q);
     if (!s->in_front) {
@@ -231,7 +245,7 @@ cf_scene_curve_visibility(const cf_scene_t *sc, const cf_bezier_t *c,
     cf_diag_clear(diag);
     if ((st = check_args(sc, c, cf_bezier_dim(c), on, out, diag)) != 0)
         return st;
-    vcurve_t vc = {&c, &t0, &t1, 1, on};
+    vcurve_t vc = {&c, &t0, &t1, 1, on, NULL};
     return run(sc, &vc, out, diag);
 }
 
@@ -253,7 +267,7 @@ cf_scene_bspline_visibility(const cf_scene_t *sc, const cf_bspline_t *c,
                          "curve: its Bézier pieces have no parameter ranges");
     }
     vcurve_t vc = {(const cf_bezier_t **)list->items, list->t0, list->t1,
-                   list->count, on};
+                   list->count, on, NULL};
     st = run(sc, &vc, out, diag);
     cf_bezier_list_destroy(list);
     return st;
@@ -295,4 +309,37 @@ cf_scene_point_visible(const cf_scene_t *sc, const double *p,
     if (occluder != NULL)
         *occluder = *visible ? SIZE_MAX : occ;
     return CF_STATUS_OK;
+}
+
+cf_status_t
+cf_scene_silhouette_visibility(const cf_scene_t *sc,
+                               const cf_silhouette_t *sil, size_t piece,
+                               cf_visibility_t **out, cf_diag_t *diag)
+{
+    cf_status_t st;
+    cf_bezier_t *c = NULL;
+    double t0 = 0.0, t1 = 1.0;
+    cf_diag_clear(diag);
+    if (out == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "out is NULL");
+    *out = NULL;
+    if (sc == NULL || sil == NULL)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "%s is NULL",
+                         sc == NULL ? "scene" : "silhouette");
+    if (piece >= sil->n)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, (long)piece,
+                         "piece %zu is not in the silhouette (it has %zu)",
+                         piece, sil->n);
+    if (sil->items[piece].surface >= sc->nsurf)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, (long)piece,
+                         "piece %zu: surface %zu is not in the scene",
+                         piece, sil->items[piece].surface);
+    st = cf_bezier_create(3, 3, sil->items[piece].space, NULL, &c, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    const cf_bezier_t *cc = c;
+    vcurve_t vc = {&cc, &t0, &t1, 1, NULL, &sil->items[piece]};
+    st = run(sc, &vc, out, diag);
+    cf_bezier_destroy(c);
+    return st;
 }

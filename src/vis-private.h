@@ -154,6 +154,12 @@ cf_status_t cf__bsp_order(cf__facet_buf_t *fb, const cf_view_t *view,
                           double eps, size_t **order, size_t *norder,
                           size_t *splits);
 
+/* The view-space point q[3] of the exact contour of surface `surface`
+** nearest its parameters uv[2] (Newton on the contour's equation; uv
+** itself if that fails or goes far); false if uv is on no patch. */
+bool cf__contour_point(const cf_scene_t *sc, size_t surface,
+                       const double *uv, double *q);
+
 /* Image (x, y) and depth zeta of a view-space Cartesian point from a
 ** space point; false at or behind the eye. */
 bool cf__view_apply(const double M[16], const double *p, double *q);

@@ -482,3 +482,26 @@ cf_scene_silhouette(const cf_scene_t *sc, size_t surface,
     *out = c.out;
     return CF_STATUS_OK;
 }
+
+bool
+cf__contour_point(const cf_scene_t *sc, size_t surface, const double *uv,
+                  double *q)
+{
+    ctx_t c;
+    size_t ip;
+    double st[2], G[18];
+    memset(&c, 0, sizeof c);
+    c.sc = sc;
+    if (!cf__scene_find(sc, surface, uv[0], uv[1], &ip, &st[0], &st[1]))
+        return false;
+    c.p = &sc->patches[ip];
+    double keep[2] = {st[0], st[1]};
+    if (!project(&c, st) || hypot(st[0] - keep[0], st[1] - keep[1]) > 0.1) {
+        st[0] = keep[0];
+        st[1] = keep[1];
+    }
+    if (!cf__vpatch_eval(c.p, c.p->g, st[0], st[1], 0, G))
+        return false;
+    memcpy(q, G, 3 * sizeof(double));
+    return true;
+}

@@ -66,11 +66,15 @@
 **
 ** Exactness.  Visibility is decided on the exact surfaces: each patch is
 ** subdivided (de Casteljau on its control net, projected) into pieces kept
-** in a 2D box tree; a ray from a point towards the eye is tested against
-** the pieces whose image box contains the point's image and whose depth
-** range reaches in front of it, by Newton's method on the exact patch from
-** the piece's bilinear guess, subdividing further where Newton does not
-** converge inside the piece.  No facets, no raster.  Along a curve,
+** in a 2D box tree: pieces that are nearly bilinear and whose image does
+** not fold, or, where it folds (near a silhouette), pieces flat within
+** tol / 4 or smaller than tol.  A ray from a point towards the eye is
+** tested against the pieces whose image box contains the point's image and
+** whose depth range reaches in front of it, by Newton's method on the
+** exact patch from the piece's middle (and its corners, for a folding
+** piece); a folding piece smaller than tol where Newton finds nothing
+** hides the point if it lies wholly in front of it.  No facets, no
+** raster.  Along a curve,
 ** visibility is sampled at image steps of at most 16 tol (and at least 64
 ** samples per Bézier piece), and every change is located by bisection to
 ** tol; an occlusion shorter than the sampling step can be missed (the
@@ -267,19 +271,20 @@ CF_API cf_status_t cf_scene_point_visible(const cf_scene_t *scene,
 ** as boundaries); a contour that runs along a boundary is reported where
 ** it crosses the patch, which includes its ends.
 **
-** It is traced on each Bézier patch: sign changes of the determinant on a
-** grid of the patch, points placed on the exact contour by Newton's
-** method, joined into chains across the cells of the patch (chains of
-** neighbouring patches meet at their ends), and each chain cut into
-** pieces fitted
-** by cubic Hermite curves (in (u, v), in space and in the image) from the
-** exact points and tangents.  Each piece's error is measured against the
-** exact contour at 16 points (Newton from the piece's point to the
-** contour, the distance between them): in space (error_space) and in the
-** image (error_image), and a piece is halved until error_image <= tol;
+** It is traced on each Bézier patch: the signs of (S_u x S_v) . d (or
+** . (E - S)) on a 16 x 16 grid of the patch (triangles of it), the roots
+** on the grid's edges by bisection on the exact surface, joined into
+** chains across the cells of the patch (chains of neighbouring patches
+** meet at their ends), and each chain cut into pieces fitted by cubic
+** Hermite curves (in (u, v), in space and in the image) from the exact
+** points and tangents.  Each piece's error is measured against the exact
+** contour at 16 points (Newton from the piece's point to the contour, the
+** distance between them): in space (error_space) and in the image
+** (error_image), and a piece is halved until both are at most tol / 4;
 ** max_error is the largest error_image returned.  A piece that cannot
-** reach tol above a parameter width of 1e-9 is kept and converged is
-** false.
+** reach that in 30 halvings (or past a bound on the work, 400,000 fits)
+** is kept and converged is false.  A contour loop smaller than a cell of
+** the grid (1/16 of a patch) can be missed.
 */
 typedef struct cf_silhouette_piece {
     size_t surface;        /* number of the surface */
@@ -309,6 +314,22 @@ CF_API cf_status_t cf_scene_silhouette(const cf_scene_t *scene,
                                        size_t surface,
                                        cf_silhouette_t **out,
                                        cf_diag_t *diag);
+
+/*
+** The visibility of silhouette piece `piece` of sil (made by this scene):
+** intervals of its parameter [0, 1], each point classified at the exact
+** contour point nearest the piece's (Newton from its (u, v)), so the
+** sheet it lies on never hides it, while a fold of the same surface in
+** front of it does (where the contour runs behind the surface).  Prefer it
+** to cf_scene_curve_visibility with a cf_vis_on_t for silhouettes: that
+** one must ignore the sheet within 2 error_space of the line of sight, and
+** near the cusps of a contour that lets a hidden stretch pass as visible.
+*/
+CF_API cf_status_t cf_scene_silhouette_visibility(const cf_scene_t *scene,
+                                                  const cf_silhouette_t *sil,
+                                                  size_t piece,
+                                                  cf_visibility_t **out,
+                                                  cf_diag_t *diag);
 
 /* ==== Facets ============================================================ */
 

@@ -9,6 +9,19 @@
 
 typedef long double ld;
 
+/* min and max without libm's calls (the subdivision's inner loop) */
+static inline ld
+lmin(ld a, ld b)
+{
+    return a < b ? a : b;
+}
+
+static inline ld
+lmax(ld a, ld b)
+{
+    return a > b ? a : b;
+}
+
 /* Samples of each piece for the starting points of Newton. */
 #define GRID 6
 
@@ -253,8 +266,8 @@ slab(const ld *lo, const ld *hi, const double *o, const ld *e, ld *s0,
             continue;
         }
         ld a = (lo[c] - o[c]) / e[c], b = (hi[c] - o[c]) / e[c];
-        t0 = fmaxl(t0, fminl(a, b));
-        t1 = fminl(t1, fmaxl(a, b));
+        t0 = lmax(t0, lmin(a, b));
+        t1 = lmin(t1, lmax(a, b));
     }
     *s0 = t0;
     *s1 = t1;
@@ -366,16 +379,16 @@ net_crosses(const ld *net, size_t cnt, const ray_t *r, ld *size)
 {
     ld lo[3] = {HUGE_VALL, HUGE_VALL, HUGE_VALL};
     ld hi[3] = {-HUGE_VALL, -HUGE_VALL, -HUGE_VALL};
-    ld t0 = r->s0, t1 = fminl(r->s1, r->best);
+    ld t0 = r->s0, t1 = lmin(r->s1, r->best);
     for (size_t i = 0; i < cnt; i++)
         for (int c = 0; c < 3; c++) {
             ld x = net[4 * i + c] / net[4 * i + 3];
-            lo[c] = fminl(lo[c], x);
-            hi[c] = fmaxl(hi[c], x);
+            lo[c] = lmin(lo[c], x);
+            hi[c] = lmax(hi[c], x);
         }
     *size = 0.0L;
     for (int c = 0; c < 3; c++)
-        *size = fmaxl(*size, hi[c] - lo[c]);
+        *size = lmax(*size, hi[c] - lo[c]);
     return slab(lo, hi, r->o, r->e, &t0, &t1);
 }
 
@@ -400,7 +413,7 @@ subdivide(const ld *net, int m, int n, ray_t *r, int depth)
         }
         s /= ee;
         if (s < r->best)
-            r->best = fmaxl(s, r->s0);
+            r->best = lmax(s, r->s0);
         return;
     }
     /* halve in the direction of the longer extent of the net */
@@ -409,12 +422,12 @@ subdivide(const ld *net, int m, int n, ray_t *r, int depth)
         for (int c = 0; c < 3; c++) {
             const ld *a = net + 4 * (size_t)i * (n + 1),
                      *b = net + 4 * ((size_t)i * (n + 1) + n);
-            ev = fmaxl(ev, fabsl(a[c] / a[3] - b[c] / b[3]));
+            ev = lmax(ev, fabsl(a[c] / a[3] - b[c] / b[3]));
         }
     for (int j = 0; j <= n; j++)
         for (int c = 0; c < 3; c++) {
             const ld *a = net + 4 * j, *b = net + 4 * ((size_t)m * (n + 1) + j);
-            eu = fmaxl(eu, fabsl(a[c] / a[3] - b[c] / b[3]));
+            eu = lmax(eu, fabsl(a[c] / a[3] - b[c] / b[3]));
         }
     bool in_u = eu >= ev;
     int d = in_u ? m : n;

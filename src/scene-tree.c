@@ -1,7 +1,6 @@
 /* The pieces of a scene's patches and the box tree over them
 ** (vis-private.h). */
 #include <math.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "vis-private.h"
@@ -9,7 +8,7 @@
 /* Pieces: a subdivision level at most this deep, and at most MAX_LEAVES
 ** per patch (then the rest are kept as they are: Newton still decides). */
 #define MAX_LEVEL 26
-#define MAX_LEAVES 131072
+#define MAX_LEAVES 65536
 
 typedef struct piece {
     double *net;
@@ -267,20 +266,45 @@ cf__scene_leaves(cf_scene_t *sc, size_t ip)
 
 /* ---- the tree ----------------------------------------------------------- */
 
-static int
-cmp_x(const void *x, const void *y)
+/* Twice the centre of leaf l along axis ax. */
+static double
+key(const cf__vleaf_t *l, int ax)
 {
-    const cf__vleaf_t *a = x, *b = y;
-    double ca = a->lo[0] + a->hi[0], cb = b->lo[0] + b->hi[0];
-    return (ca > cb) - (ca < cb);
+    return l->lo[ax] + l->hi[ax];
 }
 
-static int
-cmp_y(const void *x, const void *y)
+/* Reorder L[0..n-1] so that L[k] has the key it would have sorted, with
+** no larger key before it and no smaller after (quickselect, middle
+** pivot). */
+static void
+select_kth(cf__vleaf_t *L, size_t n, size_t k, int ax)
 {
-    const cf__vleaf_t *a = x, *b = y;
-    double ca = a->lo[1] + a->hi[1], cb = b->lo[1] + b->hi[1];
-    return (ca > cb) - (ca < cb);
+    size_t lo = 0, hi = n - 1;
+    while (lo < hi) {
+        double piv = key(&L[lo + (hi - lo) / 2], ax);
+        size_t i = lo, j = hi;
+        while (i <= j) {
+            while (key(&L[i], ax) < piv)
+                i++;
+            while (key(&L[j], ax) > piv)
+                j--;
+            if (i <= j) {
+                cf__vleaf_t t = L[i];
+                L[i] = L[j];
+                L[j] = t;
+                i++;
+                if (j == 0)
+                    break;
+                j--;
+            }
+        }
+        if (k <= j)
+            hi = j;
+        else if (k >= i)
+            lo = i;
+        else
+            return;
+    }
 }
 
 static void
@@ -308,9 +332,9 @@ build(cf_scene_t *sc, size_t node, size_t first, size_t count)
         nd->count = (uint32_t)count;
         return;
     }
-    qsort(sc->leaves + first, count, sizeof *sc->leaves,
-          chi[0] - clo[0] >= chi[1] - clo[1] ? cmp_x : cmp_y);
     size_t half = count / 2, kid = sc->nnode;
+    select_kth(sc->leaves + first, count, half,
+               chi[0] - clo[0] >= chi[1] - clo[1] ? 0 : 1);
     sc->nnode += 2;
     nd->first = (uint32_t)kid;
     nd->count = 0;

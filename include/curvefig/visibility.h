@@ -77,8 +77,7 @@
 ** raster.  Along a curve,
 ** visibility is sampled at image steps of at most 16 tol (and at least 64
 ** samples per Bézier piece), and every change is located by bisection to
-** tol; an occlusion shorter than the sampling step can be missed (the
-** tests sample 10 times more densely and find none on their surfaces).
+** tol; an occlusion shorter than the sampling step can be missed.
 **
 ** Self-occlusion.  A point of a curve drawn on a surface (an iso-line, a
 ** boundary, a silhouette) is not hidden by the surface at itself: hits

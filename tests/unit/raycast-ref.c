@@ -363,7 +363,7 @@ newton(const rc_patch_t *p, const double *o, const ld *e, ld u, ld v, ld s,
 ** until its box, crossed by the line of sight beyond the margin, is
 ** smaller than SUB_MIN of the piece. */
 #define SUB_DEG 8
-#define SUB_MIN 1e-7L
+#define SUB_MIN 1e-6L
 
 typedef struct ray {
     const double *o;

@@ -23,7 +23,7 @@
 #endif
 
 /* Samples of each line checked against the reference. */
-#define SAMPLES 300
+#define SAMPLES 200
 
 typedef struct world {
     cf_view_t view;
@@ -1031,7 +1031,7 @@ small_scene(void)
     if (st == CF_STATUS_OK)
         st = make_saddle(&sd);
     if (st == CF_STATUS_OK)
-        st = cf_scene_create(&v, 0.02, &sc, &d);
+        st = cf_scene_create(&v, 0.1, &sc, &d);
     if (st == CF_STATUS_OK)
         st = cf_scene_add_bezier(sc, b, NULL, &d);
     if (st == CF_STATUS_OK)
@@ -1043,7 +1043,7 @@ small_scene(void)
     if (st == CF_STATUS_OK)
         st = cf_scene_silhouette(sc, SIZE_MAX, &sil, &d);
     if (st == CF_STATUS_OK)
-        st = cf_scene_facets_tol(sc, 0.1, &f, &d);
+        st = cf_scene_facets_tol(sc, 0.3, &f, &d);
     if (st != CF_STATUS_OK && st != CF_STATUS_NO_MEMORY)
         fail_msg("status %d: %s", st, d.msg);
     cf_facets_destroy(f);

@@ -11,8 +11,8 @@ cf_status_t
 cf_scene_create(const cf_view_t *view, double tol, cf_scene_t **out,
                 cf_diag_t *diag)
 {
-    cf_scene_t *sc;
     cf_diag_clear(diag);
+    cf_scene_t *sc;
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "out is NULL");
     *out = NULL;
@@ -245,10 +245,10 @@ cf_status_t
 cf_scene_add_bezier(cf_scene_t *sc, const cf_bezier_surface_t *s, size_t *id,
                     cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st;
     double box[6], range[4] = {0.0, 1.0, 0.0, 1.0};
     size_t np, nl;
-    cf_diag_clear(diag);
     if ((st = check_scene(sc, s, cf_bezier_surface_dim(s), diag)) != 0)
         return st;
     int m = cf_bezier_surface_degree_u(s), n = cf_bezier_surface_degree_v(s);
@@ -270,11 +270,11 @@ cf_status_t
 cf_scene_add_bspline(cf_scene_t *sc, const cf_bspline_surface_t *s,
                      size_t *id, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st;
     cf_bezier_surface_list_t *list = NULL;
     double box[6];
     size_t np, nl;
-    cf_diag_clear(diag);
     if ((st = check_scene(sc, s, cf_bspline_surface_dim(s), diag)) != 0)
         return st;
     if ((st = check_degrees(sc, cf_bspline_surface_degree_u(s),
@@ -312,11 +312,11 @@ cf_status_t
 cf_scene_add_triangle(cf_scene_t *sc, const cf_bezier_triangle_t *t,
                       size_t *id, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st;
     double box[6], range[4] = {0.0, 1.0, 0.0, 1.0}, *buf;
     size_t np, nl, cnt;
     int n;
-    cf_diag_clear(diag);
     if ((st = check_scene(sc, t, cf_bezier_triangle_dim(t), diag)) != 0)
         return st;
     n = cf_bezier_triangle_degree(t);

@@ -53,9 +53,9 @@ cf_status_t
 cf_view_perspective(cf_view_t *view, double azimuth, double elevation,
                     double distance, const double *target, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st;
     double T[3] = {0.0, 0.0, 0.0};
-    cf_diag_clear(diag);
     if (view == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "view is NULL");
     if (!isfinite(distance))
@@ -245,11 +245,11 @@ cf_status_t
 cf_view_project_bezier(const cf_view_t *view, const cf_bezier_t *c,
                        cf_bezier_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st;
     double *buf;
     bool hom;
     size_t n;
-    cf_diag_clear(diag);
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "out is NULL");
     *out = NULL;
@@ -280,11 +280,11 @@ cf_status_t
 cf_view_project_bspline(const cf_view_t *view, const cf_bspline_t *c,
                         cf_bspline_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st;
     double *buf;
     bool hom;
     size_t n;
-    cf_diag_clear(diag);
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "out is NULL");
     *out = NULL;

@@ -240,9 +240,9 @@ cf_scene_curve_visibility(const cf_scene_t *sc, const cf_bezier_t *c,
                           const cf_vis_on_t *on, cf_visibility_t **out,
                           cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st;
     double t0 = 0.0, t1 = 1.0;
-    cf_diag_clear(diag);
     if ((st = check_args(sc, c, cf_bezier_dim(c), on, out, diag)) != 0)
         return st;
     vcurve_t vc = {&c, &t0, &t1, 1, on, NULL};
@@ -254,9 +254,9 @@ cf_scene_bspline_visibility(const cf_scene_t *sc, const cf_bspline_t *c,
                             const cf_vis_on_t *on, cf_visibility_t **out,
                             cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st;
     cf_bezier_list_t *list = NULL;
-    cf_diag_clear(diag);
     if ((st = check_args(sc, c, cf_bspline_dim(c), on, out, diag)) != 0)
         return st;
     if ((st = cf_bspline_to_beziers(c, &list, diag)) != CF_STATUS_OK)
@@ -278,11 +278,11 @@ cf_scene_point_visible(const cf_scene_t *sc, const double *p,
                        const cf_vis_on_t *on, bool *visible, size_t *occluder,
                        cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st;
     double q[3];
     size_t occ = SIZE_MAX;
     cf__vself_t self = {false, 0, {0.0, 0.0}, 0.0};
-    cf_diag_clear(diag);
     if (sc == NULL || p == NULL || visible == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "%s is NULL",
                          sc == NULL ? "scene" : p == NULL ? "point"
@@ -316,10 +316,10 @@ cf_scene_silhouette_visibility(const cf_scene_t *sc,
                                const cf_silhouette_t *sil, size_t piece,
                                cf_visibility_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st;
     cf_bezier_t *c = NULL;
     double t0 = 0.0, t1 = 1.0;
-    cf_diag_clear(diag);
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "out is NULL");
     *out = NULL;

@@ -273,13 +273,13 @@ cf_status_t
 cf_scene_facets_tol(const cf_scene_t *sc, double tol, cf_facets_t **out,
                     cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st;
     cf__facet_buf_t fb = {NULL, 0, 0};
     cf_facets_t *res;
     size_t *order = NULL, norder = 0, splits = 0;
     int *lv;
     double dev;
-    cf_diag_clear(diag);
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "out is NULL");
     *out = NULL;
@@ -362,5 +362,6 @@ cf_scene_facets_tol(const cf_scene_t *sc, double tol, cf_facets_t **out,
 cf_status_t
 cf_scene_facets(const cf_scene_t *sc, cf_facets_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     return cf_scene_facets_tol(sc, sc == NULL ? 1.0 : sc->tol, out, diag);
 }

@@ -440,11 +440,11 @@ cf_status_t
 cf_scene_silhouette(const cf_scene_t *sc, size_t surface,
                     cf_silhouette_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     cf_status_t st = CF_STATUS_OK;
     ctx_t c;
     grid_t *G;
     double *pts;
-    cf_diag_clear(diag);
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "out is NULL");
     *out = NULL;

@@ -248,6 +248,16 @@ check_silhouette_visibility(const cf_scene_t *sc, const rc_scene_t *rc,
     cf_silhouette_destroy(sil);
 }
 
+/* A scene of the one surface s. */
+static cf_scene_t *
+scene_of(const cf_view_t *v, const cf_bspline_surface_t *s, double tol)
+{
+    cf_scene_t *sc = NULL;
+    assert_int_equal(cf_scene_create(v, tol, &sc, NULL), 0);
+    assert_int_equal(cf_scene_add_bspline(sc, s, NULL, NULL), 0);
+    return sc;
+}
+
 static void
 test_silhouette_sphere(void **state)
 {
@@ -264,8 +274,7 @@ test_silhouette_sphere(void **state)
                              0);
         else
             assert_int_equal(cf_view_orthographic(&v, 35, 20, NULL), 0);
-        assert_int_equal(cf_scene_create(&v, tol, &sc, NULL), 0);
-        assert_int_equal(cf_scene_add_bspline(sc, s, NULL, NULL), 0);
+        sc = scene_of(&v, s, tol);
         exact ex = {persp, 0.0, 1.0, &v};
         check_silhouette(sc, &ex, tol);
         check_silhouette_visibility(sc, NULL, &ex, tol);
@@ -284,8 +293,7 @@ test_silhouette_torus(void **state)
     cf_view_t v;
     assert_int_equal(cf_nurbs_torus(c, 1.0, 0.4, &s, NULL), 0);
     assert_int_equal(cf_view_orthographic(&v, -50, 35, NULL), 0);
-    assert_int_equal(cf_scene_create(&v, 1e-3, &sc, NULL), 0);
-    assert_int_equal(cf_scene_add_bspline(sc, s, NULL, NULL), 0);
+    sc = scene_of(&v, s, 1e-3);
     exact ex = {2, 1.0, 0.4, &v};
     check_silhouette(sc, &ex, 1e-3);
     rc_scene_t *rc = rc_create(&v);

@@ -549,3 +549,10 @@ rc_hits(const rc_scene_t *rc, const double *p, double margin)
     ld near;
     return hits(rc, p, margin, &near, false);
 }
+
+bool
+rc_long_double(void)
+{
+    volatile long double one = 1.0L, e = 1e-18L;
+    return one + e != one;
+}

@@ -37,6 +37,12 @@ bool rc_add_triangle(rc_scene_t *rc, const cf_bezier_triangle_t *t);
 bool rc_hidden(const rc_scene_t *rc, const double *p, double margin,
                double *dist);
 
+/* Whether long double has more precision than double here (it has not
+** under valgrind, which computes the x87's long double as double): the
+** reference is then only as good as the library at lines of sight that
+** touch a surface. */
+bool rc_long_double(void);
+
 /* The number of surface points found on that line of sight beyond
 ** margin (for the tests' own checks). */
 size_t rc_hits(const rc_scene_t *rc, const double *p, double margin);

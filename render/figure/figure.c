@@ -115,6 +115,7 @@ cf_figure_destroy(cf_figure_t *fig)
     cf_free(fig->title);
     cf_free(fig->caption);
     cf_free(fig->proj);
+    cf_scene_destroy(fig->scene);
     cf_free(fig->warnings);
     cf_free(fig);
 }
@@ -351,6 +352,7 @@ cf_figure_set_projection(cf_figure_t *fig, size_t dim, const double *m)
     cf_free(fig->proj);
     fig->proj = copy;
     fig->proj_dim = dim;
+    fig->has_view = false;
     return CF_STATUS_OK;
 }
 
@@ -359,7 +361,15 @@ cf__fig_project1(const cf_figure_t *fig, const double *p, size_t dim,
                  double *out)
 {
     size_t j;
-    if (fig->proj != NULL && fig->proj_dim == dim) {
+    if (cf__fig_is_central(fig, dim)) {
+        double h[3];
+        if (!cf__fig_project_h(fig, p, dim, false, h)) {
+            out[0] = out[1] = NAN;
+            return;
+        }
+        out[0] = h[0] / h[2];
+        out[1] = h[1] / h[2];
+    } else if (fig->proj != NULL && fig->proj_dim == dim) {
         double x = 0, y = 0;
         for (j = 0; j < dim; j++) {
             x += fig->proj[j] * p[j];
@@ -391,6 +401,8 @@ cf_figure_project(cf_figure_t *fig, const double *in, size_t n, size_t dim,
     for (i = 0; i < n; i++) {
         double tmp[2];
         cf__fig_project1(fig, in + i * dim, dim, tmp);
+        if (isnan(tmp[0]))
+            return cf__fig_behind_eye(fig, in + i * dim, "point");
         out[2 * i] = tmp[0];
         out[2 * i + 1] = tmp[1];
     }

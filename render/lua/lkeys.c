@@ -41,6 +41,9 @@ static const char *const offset_methods[] = {
     "levien", "tiller-hanson", NULL,
 };
 static const char *const reduce_methods[] = { "l2", "uniform", NULL };
+static const char *const hidden_modes[] = {
+    "remove", "dashed", "show", NULL,
+};
 
 /* ---- key lists ---------------------------------------------------------- */
 
@@ -86,7 +89,8 @@ static const cf__lua_key_t figure_keys[] = {
     NAMES("page", pages), KEY("window"), KEY("margin"), KEY("aspect"),
     NAMES("theme", themes), KEY("background"), KEY("font"),
     KEY("font_size"),
-    KEY("tolerance"), KEY("projection"), KEY("view"), KEY("clip"),
+    KEY("tolerance"), KEY("projection"), KEY("view"), KEY("distance"),
+    KEY("target"), KEY("clip"),
     NAMES("legend_place", box_places), KEY("legend_frame"), END,
 };
 static const cf__lua_key_t theme_keys[] = {
@@ -180,6 +184,13 @@ static const cf__lua_key_t plot_keys[] = {
     KEY("font_size"), END,
 };
 
+/* f:surface (lsurface-draw.c): the lines, the net and its labels */
+static const cf__lua_key_t surface_keys[] = {
+    KEY("boundary"), KEY("silhouette"), KEY("isolines"), KEY("knot_lines"),
+    NAMES("hidden", hidden_modes), TABLE("iso_style", CF__KEYS_POINT_STYLE),
+    KEY("net"), KEY("occludes"), END,
+};
+
 /* the parameters of interactive figures (lparams.c) */
 static const cf__lua_key_t slider_keys[] = {
     KEY("name"), KEY("label"), KEY("min"), KEY("max"), KEY("default"),
@@ -263,6 +274,8 @@ static const cf__lua_schema_t schemas[CF__KEYS_COUNT_] = {
                                     NULL, "f:decasteljau(c, 0.5, %s)"),
     [CF__KEYS_DEBOOR] = DRAW("deboor", line_style, net_keys, NULL,
                                "f:deboor(s, 0.5, %s)"),
+    [CF__KEYS_SURFACE] = DRAW("surface", line_style, surface_keys,
+                              point_labels, "f:surface(s, %s)"),
     [CF__KEYS_PLOT] = DRAW("plot", line_style, plot_keys, NULL,
                              "f:plot(%s)"),
     [CF__KEYS_FUNC] = DRAW("func", line_style, NULL, NULL,

@@ -1,0 +1,651 @@
+/*
+** Surfaces as lines: boundary, silhouette, iso- and knot lines and the
+** control net of a surface in R^3, each an exact curve in space split
+** where it passes behind a surface of the figure (curvefig/visibility.h),
+** projected exactly and drawn through plane curve elements (el-curve.c),
+** which turn the pieces into cubic segments within the tolerance.
+**
+** The lines in space are made when the surface is added; the scene of
+** occluding surfaces, the silhouette and the visibility need the layout's
+** tolerance and are made when the figure is drawn, kept for that
+** tolerance (a fit within a smaller one serves a larger one, as for the
+** curves' cubic segments).
+*/
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "curvefig/surface.h"
+#include "grow.h"
+#include "model.h"
+
+enum { OUTLINE, ISO, NET, NFAMILIES };
+
+/* One line in space: a Bézier piece in R^3 and where it lies on the
+** surface ((u, v) as a line, NULL for the net, which is not on it). */
+typedef struct line {
+    int family;
+    cf_bezier_t *bez;
+    cf_bezier_t *uv;
+} line_t;
+
+typedef struct surface_el {
+    cf__element_t base;
+    cf_figure_t *fig;
+    cf_bspline_surface_t *s;
+    cf_surface_lines_t opt;       /* the arrays dropped */
+    line_t *lines;
+    size_t nlines, cap;
+    size_t scene_id;              /* SIZE_MAX: not in the scene */
+    /* the drawing for a tolerance: curve elements per family, visible
+    ** [f][1] and hidden [f][0]; the net's vertices in the plane */
+    double cache_tol;
+    cf__element_t *curves[NFAMILIES][2];
+    double *verts;
+    bool *vert_visible;
+    size_t nverts;
+} surface_el_t;
+
+static void
+drop_cache(surface_el_t *e)
+{
+    for (int f = 0; f < NFAMILIES; f++)
+        for (int k = 0; k < 2; k++)
+            if (e->curves[f][k] != NULL) {
+                e->curves[f][k]->kind->fini(e->curves[f][k]);
+                cf_free(e->curves[f][k]);
+                e->curves[f][k] = NULL;
+            }
+    cf_free(e->verts);
+    cf_free(e->vert_visible);
+    e->verts = NULL;
+    e->vert_visible = NULL;
+    e->nverts = 0;
+    e->cache_tol = 0;
+}
+
+static void
+surface_fini(cf__element_t *el)
+{
+    surface_el_t *e = (surface_el_t *)el;
+    drop_cache(e);
+    for (size_t i = 0; i < e->nlines; i++) {
+        cf_bezier_destroy(e->lines[i].bez);
+        cf_bezier_destroy(e->lines[i].uv);
+    }
+    cf_free(e->lines);
+    cf_bspline_surface_destroy(e->s);
+}
+
+/* The box of the surface in the plane: a 17 x 17 grid of its points (the
+** silhouette and every iso-line lie on it), and the net when drawn. */
+static void
+surface_bounds(const cf__element_t *el, cf__bounds_t *b)
+{
+    const surface_el_t *e = (const surface_el_t *)el;
+    enum { N = 17 };
+    double uv[2 * N], pts[N * N * 3], a, c, q[2];
+    cf_bspline_surface_domain(e->s, CF_DIR_U, &a, &c);
+    for (int k = 0; k < N; k++)
+        uv[k] = a + (c - a) * k / (N - 1);
+    cf_bspline_surface_domain(e->s, CF_DIR_V, &a, &c);
+    for (int k = 0; k < N; k++)
+        uv[N + k] = a + (c - a) * k / (N - 1);
+    if (cf_bspline_surface_eval_grid(e->s, uv, N, N, pts, NULL, NULL)
+        == CF_STATUS_OK)
+        for (size_t i = 0; i < (size_t)N * N; i++) {
+            cf__fig_project1(e->fig, pts + 3 * i, 3, q);
+            if (!isnan(q[0]))
+                cf__bounds_add(b, q[0], q[1]);
+        }
+    if (e->opt.net) {
+        size_t n = cf_bspline_surface_count_u(e->s)
+            * cf_bspline_surface_count_v(e->s);
+        const double *hp = cf_bspline_surface_hpoints(e->s);
+        bool rat = cf_bspline_surface_is_rational(e->s);
+        for (size_t i = 0; i < n; i++) {
+            double p[3];
+            for (int k = 0; k < 3; k++)
+                p[k] = rat ? hp[4 * i + k] / hp[4 * i + 3] : hp[3 * i + k];
+            cf__fig_project1(e->fig, p, 3, q);
+            if (!isnan(q[0]))
+                cf__bounds_add(b, q[0], q[1]);
+        }
+    }
+}
+
+/* ---- lines in space ----------------------------------------------------- */
+
+static cf_status_t
+add_line(cf_figure_t *fig, surface_el_t *e, int family, cf_bezier_t *bez,
+         cf_bezier_t *uv)
+{
+    line_t *nl = cf__grow_array(e->lines, &e->cap, e->nlines + 1,
+                                sizeof *nl, 16);
+    if (nl == NULL) {
+        cf_bezier_destroy(bez);
+        cf_bezier_destroy(uv);
+        return cf__fig_nomem(fig, "surface lines");
+    }
+    e->lines = nl;
+    e->lines[e->nlines].family = family;
+    e->lines[e->nlines].bez = bez;
+    e->lines[e->nlines].uv = uv;
+    e->nlines++;
+    return CF_STATUS_OK;
+}
+
+/* The iso-line of direction dir at value: its Bézier pieces, each with
+** its (u, v) line. */
+static cf_status_t
+add_iso(cf_figure_t *fig, surface_el_t *e, int family, cf_dir_t dir,
+        double value)
+{
+    cf_bspline_t *c = NULL;
+    cf_bezier_list_t *list = NULL;
+    cf_status_t st = cf_bspline_surface_iso(e->s, dir, value, &c, &fig->err);
+    if (st == CF_STATUS_OK)
+        st = cf_bspline_to_beziers(c, &list, &fig->err);
+    cf_bspline_destroy(c);
+    for (size_t i = 0; st == CF_STATUS_OK && i < list->count; i++) {
+        double uv[4];
+        cf_bezier_t *bez = NULL, *line = NULL;
+        if (!(list->t1[i] > list->t0[i]))
+            continue;
+        /* CF_DIR_U fixes u: the curve runs in v */
+        uv[0] = uv[2] = value;
+        uv[1] = list->t0[i];
+        uv[3] = list->t1[i];
+        if (dir == CF_DIR_V) {
+            uv[1] = uv[3] = value;
+            uv[0] = list->t0[i];
+            uv[2] = list->t1[i];
+        }
+        st = cf_bezier_copy(list->items[i], &bez, &fig->err);
+        if (st == CF_STATUS_OK)
+            st = cf_bezier_create(2, 1, uv, NULL, &line, &fig->err);
+        if (st == CF_STATUS_OK)
+            st = add_line(fig, e, family, bez, line);
+        else
+            cf_bezier_destroy(bez);
+    }
+    cf_bezier_list_destroy(list);
+    return st;
+}
+
+static cf_status_t
+check_value(cf_figure_t *fig, cf_dir_t dir, double x, double a, double b)
+{
+    if (isfinite(x) && x >= a && x <= b)
+        return CF_STATUS_OK;
+    return cf_diag_set(&fig->err, CF_STATUS_DOMAIN, -1,
+                       "isolines: %c = %g is outside the domain [%g, %g]",
+                       dir == CF_DIR_U ? 'u' : 'v', x, a, b);
+}
+
+/* The iso-lines of one direction: n evenly spaced, the given values, the
+** interior knots. */
+static cf_status_t
+add_isos(cf_figure_t *fig, surface_el_t *e, const cf_surface_lines_t *o,
+         cf_dir_t dir)
+{
+    double a, b;
+    size_t n = dir == CF_DIR_U ? o->nu : o->nv;
+    size_t nval = dir == CF_DIR_U ? o->u_count : o->v_count;
+    const double *val = dir == CF_DIR_U ? o->u_values : o->v_values;
+    cf_status_t st = CF_STATUS_OK;
+    cf_bspline_surface_domain(e->s, dir, &a, &b);
+    if (o->boundary) {
+        st = add_iso(fig, e, OUTLINE, dir, a);
+        if (st == CF_STATUS_OK)
+            st = add_iso(fig, e, OUTLINE, dir, b);
+    }
+    for (size_t k = 1; st == CF_STATUS_OK && k <= n; k++)
+        st = add_iso(fig, e, ISO, dir, a + (b - a) * (double)k / (double)(n + 1));
+    for (size_t k = 0; st == CF_STATUS_OK && k < nval; k++) {
+        st = check_value(fig, dir, val[k], a, b);
+        if (st == CF_STATUS_OK)
+            st = add_iso(fig, e, ISO, dir, val[k]);
+    }
+    if (st == CF_STATUS_OK && o->knot_lines) {
+        size_t nk = 0, m = 0;
+        const double *u = cf_bspline_surface_knots(e->s, dir, &m);
+        double *ks = cf_alloc_array(m ? m : 1, sizeof *ks);
+        (void)u;
+        if (ks == NULL)
+            return cf__fig_nomem(fig, "knot lines");
+        st = cf_bspline_surface_knot_lines(e->s, dir, ks, &nk);
+        for (size_t k = 0; st == CF_STATUS_OK && k < nk; k++)
+            if (ks[k] > a && ks[k] < b)
+                st = add_iso(fig, e, ISO, dir, ks[k]);
+        cf_free(ks);
+    }
+    return st;
+}
+
+/* The net: a line between neighbours along each row and each column. */
+static cf_status_t
+add_net(cf_figure_t *fig, surface_el_t *e)
+{
+    size_t nu = cf_bspline_surface_count_u(e->s);
+    size_t nv = cf_bspline_surface_count_v(e->s);
+    double *p = cf_alloc_array(nu * nv * 3, sizeof *p);
+    cf_status_t st = CF_STATUS_OK;
+    if (p == NULL)
+        return cf__fig_nomem(fig, "a control net");
+    cf_bspline_surface_get_points(e->s, p);
+    for (size_t i = 0; i < nu && st == CF_STATUS_OK; i++)
+        for (size_t j = 0; j < nv && st == CF_STATUS_OK; j++) {
+            for (int d = 0; d < 2 && st == CF_STATUS_OK; d++) {
+                size_t i2 = i + (d == 0), j2 = j + (d == 1);
+                double q[6];
+                cf_bezier_t *bez = NULL;
+                if (i2 >= nu || j2 >= nv)
+                    continue;
+                memcpy(q, p + 3 * (i * nv + j), 3 * sizeof *q);
+                memcpy(q + 3, p + 3 * (i2 * nv + j2), 3 * sizeof *q);
+                st = cf_bezier_create(3, 1, q, NULL, &bez, &fig->err);
+                if (st == CF_STATUS_OK)
+                    st = add_line(fig, e, NET, bez, NULL);
+            }
+        }
+    cf_free(p);
+    return st;
+}
+
+/* A patch whose control points lie on one line (or in one point) has no
+** normal anywhere: refused, naming the size. */
+static cf_status_t
+check_degenerate(cf_figure_t *fig, const cf_bspline_surface_t *s)
+{
+    size_t n = cf_bspline_surface_count_u(s) * cf_bspline_surface_count_v(s);
+    double *p = cf_alloc_array(3 * n, sizeof *p), size = 0, off = 0;
+    size_t a = 0, b = 0;
+    if (p == NULL)
+        return cf__fig_nomem(fig, "a surface");
+    cf_bspline_surface_get_points(s, p);
+    /* the two points farthest apart from point 0, then the farthest from
+    ** their line */
+    for (size_t i = 0; i < n; i++) {
+        double d = 0;
+        for (int k = 0; k < 3; k++)
+            d += (p[3 * i + k] - p[k]) * (p[3 * i + k] - p[k]);
+        if (d > size) {
+            size = d;
+            b = i;
+        }
+    }
+    size = sqrt(size);
+    for (size_t i = 0; size > 0 && i < n; i++) {
+        double u[3], w[3], c[3], l = 0, m = 0;
+        for (int k = 0; k < 3; k++) {
+            u[k] = p[3 * b + k] - p[3 * a + k];
+            w[k] = p[3 * i + k] - p[3 * a + k];
+        }
+        c[0] = u[1] * w[2] - u[2] * w[1];
+        c[1] = u[2] * w[0] - u[0] * w[2];
+        c[2] = u[0] * w[1] - u[1] * w[0];
+        for (int k = 0; k < 3; k++) {
+            l += c[k] * c[k];
+            m += u[k] * u[k];
+        }
+        off = fmax(off, sqrt(l / m));
+    }
+    cf_free(p);
+    if (size == 0 || off <= 1e-9 * size)
+        return cf_diag_set(&fig->err, CF_STATUS_DEGENERATE, -1,
+                           "surface: degenerate patch: its %zu control "
+                           "points lie %s, so it has no normal (give points "
+                           "that span a surface)", n,
+                           size == 0 ? "in one point" : "on one line");
+    return CF_STATUS_OK;
+}
+
+/* ---- the scene and visibility ------------------------------------------ */
+
+/* The scene of the figure's occluding surfaces for tolerance tol (data
+** units), built once per tolerance and element count; NULL (no error)
+** when there is none. */
+static cf_status_t
+figure_scene(cf_figure_t *fig, double tol, cf_scene_t **out)
+{
+    cf_scene_t *sc = NULL;
+    cf_status_t st;
+    bool any = false;
+    *out = NULL;
+    if (fig->scene != NULL && fig->scene_els == fig->count
+        && fig->scene_tol <= tol) {
+        *out = fig->scene;
+        return CF_STATUS_OK;
+    }
+    cf_scene_destroy(fig->scene);
+    fig->scene = NULL;
+    for (size_t i = 0; i < fig->count; i++)
+        if (fig->els[i]->kind->fini == surface_fini)
+            any = any || ((surface_el_t *)fig->els[i])->opt.occludes;
+    if (!any)
+        return CF_STATUS_OK;
+    st = cf_scene_create(&fig->view, tol, &sc, &fig->err);
+    for (size_t i = 0; st == CF_STATUS_OK && i < fig->count; i++) {
+        surface_el_t *e = (surface_el_t *)fig->els[i];
+        if (e->base.kind->fini != surface_fini)
+            continue;
+        e->scene_id = SIZE_MAX;
+        if (e->opt.occludes)
+            st = cf_scene_add_bspline(sc, e->s, &e->scene_id, &fig->err);
+    }
+    if (st != CF_STATUS_OK) {
+        cf_scene_destroy(sc);
+        return cf__fig_fail(fig, st, "surface scene");
+    }
+    fig->scene = sc;
+    fig->scene_tol = tol;
+    fig->scene_els = fig->count;
+    *out = sc;
+    return CF_STATUS_OK;
+}
+
+/* The piece [t0, t1] of line c, projected, into the curve element. */
+static cf_status_t
+add_piece(cf_figure_t *fig, cf__element_t **slot, const cf_bezier_t *c,
+          double t0, double t1)
+{
+    cf_bezier_t *seg = NULL, *plane = NULL;
+    cf_status_t st = CF_STATUS_OK;
+    if (!(t1 > t0))
+        return CF_STATUS_OK;
+    if (*slot == NULL) {
+        *slot = cf__curve_new(fig, CF_ROLE_CURVE, NULL);
+        if (*slot == NULL)
+            return fig->err.status;
+    }
+    if (t0 > 0 || t1 < 1)
+        st = cf_bezier_segment(c, t0, t1, &seg, &fig->err);
+    if (st == CF_STATUS_OK)
+        st = cf__fig_planar_bezier(fig, seg != NULL ? seg : c, &plane);
+    cf_bezier_destroy(seg);
+    if (st == CF_STATUS_OK)
+        st = cf__curve_add(fig, *slot, plane, NULL);
+    return st;
+}
+
+/* One line split by the scene (sc NULL or hidden lines shown: whole). */
+static cf_status_t
+draw_line(cf_figure_t *fig, surface_el_t *e, const cf_scene_t *sc,
+          const cf_bezier_t *bez, const cf_bezier_t *uv, int family)
+{
+    cf_visibility_t *vis = NULL;
+    cf_vis_on_t on;
+    cf_status_t st;
+    if (sc == NULL || e->opt.hidden == CF_HIDDEN_SHOW)
+        return add_piece(fig, &e->curves[family][1], bez, 0.0, 1.0);
+    memset(&on, 0, sizeof on);
+    on.surface = e->scene_id;
+    on.uv_bezier = uv;
+    st = cf_scene_curve_visibility(sc, bez, e->scene_id != SIZE_MAX
+                                   && uv != NULL ? &on : NULL, &vis,
+                                   &fig->err);
+    if (st != CF_STATUS_OK)
+        return cf__fig_fail(fig, st, "surface line visibility");
+    for (size_t k = 0; st == CF_STATUS_OK && k < vis->n; k++) {
+        const cf_vis_interval_t *iv = &vis->items[k];
+        if (!iv->visible && e->opt.hidden == CF_HIDDEN_REMOVE)
+            continue;
+        st = add_piece(fig, &e->curves[family][iv->visible ? 1 : 0], bez,
+                       iv->t0, iv->t1);
+    }
+    cf_visibility_destroy(vis);
+    return st;
+}
+
+/* The silhouette of the surface: its pieces as cubics in space, each with
+** its (u, v) cubic. */
+static cf_status_t
+draw_silhouette(cf_figure_t *fig, surface_el_t *e, const cf_scene_t *sc)
+{
+    cf_silhouette_t *sil = NULL;
+    cf_status_t st;
+    if (sc == NULL || e->scene_id == SIZE_MAX)
+        return CF_STATUS_OK;   /* a surface that hides nothing shows no
+                                  contour of its own in this design */
+    st = cf_scene_silhouette(sc, e->scene_id, &sil, &fig->err);
+    if (st != CF_STATUS_OK)
+        return cf__fig_fail(fig, st, "silhouette");
+    for (size_t k = 0; st == CF_STATUS_OK && k < sil->n; k++) {
+        cf_bezier_t *bez = NULL, *uv = NULL;
+        st = cf_bezier_create(3, 3, sil->items[k].space, NULL, &bez,
+                              &fig->err);
+        if (st == CF_STATUS_OK)
+            st = cf_bezier_create(2, 3, sil->items[k].uv, NULL, &uv,
+                                  &fig->err);
+        if (st == CF_STATUS_OK)
+            st = draw_line(fig, e, sc, bez, uv, OUTLINE);
+        cf_bezier_destroy(bez);
+        cf_bezier_destroy(uv);
+    }
+    cf_silhouette_destroy(sil);
+    return st;
+}
+
+/* The net's vertices in the plane and whether each is seen. */
+static cf_status_t
+net_vertices(cf_figure_t *fig, surface_el_t *e, const cf_scene_t *sc)
+{
+    size_t n = cf_bspline_surface_count_u(e->s)
+        * cf_bspline_surface_count_v(e->s);
+    double *p = cf_alloc_array(3 * n, sizeof *p);
+    cf_status_t st = CF_STATUS_OK;
+    e->verts = cf_alloc_array(2 * n, sizeof *e->verts);
+    e->vert_visible = cf_alloc_array(n, sizeof *e->vert_visible);
+    if (p == NULL || e->verts == NULL || e->vert_visible == NULL) {
+        cf_free(p);
+        return cf__fig_nomem(fig, "net vertices");
+    }
+    e->nverts = n;
+    cf_bspline_surface_get_points(e->s, p);
+    for (size_t i = 0; i < n && st == CF_STATUS_OK; i++) {
+        cf__fig_project1(fig, p + 3 * i, 3, e->verts + 2 * i);
+        if (isnan(e->verts[2 * i]))
+            st = cf__fig_behind_eye(fig, p + 3 * i, "a net vertex");
+        e->vert_visible[i] = true;
+        if (st == CF_STATUS_OK && sc != NULL
+            && e->opt.hidden != CF_HIDDEN_SHOW)
+            st = cf_scene_point_visible(sc, p + 3 * i, NULL,
+                                        &e->vert_visible[i], NULL,
+                                        &fig->err);
+    }
+    cf_free(p);
+    return st;
+}
+
+/* Everything the element draws for tolerance tol. */
+static cf_status_t
+build(cf_figure_t *fig, surface_el_t *e, double tol)
+{
+    cf_scene_t *sc = NULL;
+    cf_status_t st;
+    bool need = e->opt.hidden != CF_HIDDEN_SHOW || e->opt.silhouette;
+    if (e->cache_tol > 0 && e->cache_tol <= tol)
+        return CF_STATUS_OK;
+    drop_cache(e);
+    /* split points to 5 times the fitting tolerance: 0.05 bp by default */
+    st = need ? figure_scene(fig, 5 * tol, &sc) : CF_STATUS_OK;
+    for (size_t i = 0; st == CF_STATUS_OK && i < e->nlines; i++)
+        st = draw_line(fig, e, sc, e->lines[i].bez, e->lines[i].uv,
+                       e->lines[i].family);
+    if (st == CF_STATUS_OK && e->opt.silhouette)
+        st = draw_silhouette(fig, e, sc);
+    if (st == CF_STATUS_OK && e->opt.net)
+        st = net_vertices(fig, e, sc);
+    if (st != CF_STATUS_OK) {
+        drop_cache(e);
+        return cf__fig_fail(fig, st, "surface");
+    }
+    e->cache_tol = tol;
+    return CF_STATUS_OK;
+}
+
+/* ---- drawing ------------------------------------------------------------ */
+
+/* The styles of the families: the outline is the element's, iso-lines the
+** curve style at half width under their overrides, the net the polygon
+** style under its own. */
+static void
+family_styles(const cf_figure_t *fig, const surface_el_t *e,
+              const cf_style_t *s, cf_style_t out[NFAMILIES])
+{
+    cf_style_t iso = e->opt.iso_style;
+    out[OUTLINE] = *s;
+    if (!(iso.set & CF_STYLE_WIDTH)) {
+        iso.set |= CF_STYLE_WIDTH;
+        iso.width = 0.5 * s->width;
+    }
+    if (!(iso.set & CF_STYLE_COLOR)) {
+        iso.set |= CF_STYLE_COLOR;
+        iso.color = s->color;
+    }
+    cf__style_resolve(&fig->theme, CF_ROLE_CURVE, &iso, &out[ISO]);
+    cf__style_resolve(&fig->theme, CF_ROLE_POLYGON, &e->opt.net_style,
+                      &out[NET]);
+}
+
+/* The style of hidden pieces: 0.7 of the width, dashes of 4 and 3
+** widths. */
+static cf_style_t
+hidden_style(const cf_style_t *s)
+{
+    cf_style_t h = *s;
+    h.width = 0.7 * s->width;
+    h.dash_count = 2;
+    h.dash[0] = fmax(4 * h.width, 1.5);
+    h.dash[1] = fmax(3 * h.width, 1.2);
+    return h;
+}
+
+static cf_status_t
+check_window(cf_figure_t *fig, const surface_el_t *e, const cf__layout_t *l)
+{
+    cf__bounds_t b;
+    if (!l->clip)
+        return CF_STATUS_OK;
+    memset(&b, 0, sizeof b);
+    surface_bounds(&e->base, &b);
+    if (b.any && (b.x1 < l->xmin || b.x0 > l->xmax || b.y1 < l->ymin
+                  || b.y0 > l->ymax))
+        return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
+                           "surface: the surface (seen in [%g, %g] x "
+                           "[%g, %g]) lies wholly outside the window "
+                           "{%g, %g, %g, %g}; widen window or leave it to "
+                           "be fitted", b.x0, b.x1, b.y0, b.y1, l->xmin,
+                           l->xmax, l->ymin, l->ymax);
+    return CF_STATUS_OK;
+}
+
+static cf_status_t
+surface_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
+             const cf_style_t *s, cf__dl_t *dl)
+{
+    surface_el_t *e = (surface_el_t *)el;
+    cf_style_t fs[NFAMILIES];
+    static const int order[NFAMILIES] = { NET, ISO, OUTLINE };
+    cf_status_t st = check_window(fig, e, l);
+    if (st == CF_STATUS_OK)
+        st = build(fig, e, l->tol);
+    if (st != CF_STATUS_OK)
+        return st;
+    family_styles(fig, e, s, fs);
+    /* hidden pieces under everything, then the net, iso-lines, outline */
+    for (int k = 0; k < NFAMILIES && st == CF_STATUS_OK; k++) {
+        cf__element_t *c = e->curves[order[k]][0];
+        cf_style_t h = hidden_style(&fs[order[k]]);
+        if (c != NULL)
+            st = c->kind->draw(fig, c, l, &h, dl);
+    }
+    for (int k = 0; k < NFAMILIES && st == CF_STATUS_OK; k++) {
+        cf__element_t *c = e->curves[order[k]][1];
+        if (c != NULL)
+            st = c->kind->draw(fig, c, l, &fs[order[k]], dl);
+    }
+    for (size_t i = 0; i < e->nverts && st == CF_STATUS_OK; i++) {
+        cf__marker_op_t m;
+        cf_style_t ms = fs[NET];
+        double px, py;
+        if (!e->vert_visible[i] && e->opt.hidden == CF_HIDDEN_REMOVE)
+            continue;
+        if (!e->vert_visible[i])
+            ms.opacity *= 0.4;
+        if (!cf__in_window(l, e->verts[2 * i], e->verts[2 * i + 1]))
+            continue;
+        cf__map(l, e->verts[2 * i], e->verts[2 * i + 1], &px, &py);
+        cf__marker_from_style(&ms, ms.marker, px, py, NULL, &m);
+        cf__dl_marker(dl, &m);
+    }
+    return st;
+}
+
+static const cf__kind_t surface_kind = {
+    "surface", 0, surface_fini, surface_bounds, surface_draw, NULL
+};
+
+/* ---- adding ------------------------------------------------------------- */
+
+void
+cf_surface_lines_init(cf_surface_lines_t *lines)
+{
+    memset(lines, 0, sizeof *lines);
+    lines->boundary = true;
+    lines->silhouette = true;
+    lines->occludes = true;
+    lines->hidden = CF_HIDDEN_REMOVE;
+    cf_style_init(&lines->iso_style);
+    cf_style_init(&lines->net_style);
+}
+
+cf_status_t
+cf_figure_add_surface(cf_figure_t *fig, const cf_bspline_surface_t *s,
+                      const cf_surface_lines_t *lines,
+                      const cf_style_t *style)
+{
+    surface_el_t *e;
+    cf_status_t st;
+    CF__FIG_CHECK(fig);
+    if (s == NULL || lines == NULL)
+        return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
+                           "surface: the surface or its lines are NULL");
+    if (cf_bspline_surface_dim(s) != 3)
+        return cf_diag_set(&fig->err, CF_STATUS_DIM_MISMATCH, -1,
+                           "surface: a surface in R^%zu; a figure draws "
+                           "surfaces in R^3", cf_bspline_surface_dim(s));
+    if (!fig->has_view)
+        return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
+                           "surface: the figure has no view; give figure{"
+                           "view = {azimuth, elevation}, ...}");
+    if ((lines->u_count > 0 && lines->u_values == NULL)
+        || (lines->v_count > 0 && lines->v_values == NULL)
+        || (unsigned)lines->hidden > CF_HIDDEN_REMOVE)
+        return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
+                           "surface: iso-line values are NULL or hidden "
+                           "is not show, dashed or remove");
+    if (cf__fig_check_style(fig, style) != CF_STATUS_OK
+        || cf__fig_check_style(fig, &lines->iso_style) != CF_STATUS_OK
+        || cf__fig_check_style(fig, &lines->net_style) != CF_STATUS_OK)
+        return fig->err.status;
+    if (check_degenerate(fig, s) != CF_STATUS_OK)
+        return fig->err.status;
+    e = cf__element_new(fig, &surface_kind, sizeof *e, CF_ROLE_CURVE, style);
+    if (e == NULL)
+        return fig->err.status;
+    e->fig = fig;
+    e->opt = *lines;
+    e->opt.u_values = e->opt.v_values = NULL;
+    e->opt.u_count = e->opt.v_count = 0;
+    e->scene_id = SIZE_MAX;
+    st = cf_bspline_surface_copy(s, &e->s, &fig->err);
+    if (st == CF_STATUS_OK)
+        st = add_isos(fig, e, lines, CF_DIR_U);
+    if (st == CF_STATUS_OK)
+        st = add_isos(fig, e, lines, CF_DIR_V);
+    if (st == CF_STATUS_OK && lines->net)
+        st = add_net(fig, e);
+    return cf__element_commit(fig, e, st);
+}

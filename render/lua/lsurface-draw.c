@@ -1,0 +1,152 @@
+/*
+** f:surface(s, {...}): a surface in a 3D figure as lines -- boundary,
+** silhouette, iso-lines, knot lines, the control net with its points and
+** labels -- with hidden lines removed, dashed or shown
+** (include/curvefig/figure3d.h).
+*/
+#include <string.h>
+
+#include "curvefig/figure3d.h"
+#include "lcommon.h"
+#include "llabels.h"
+#include "lschema.h"
+#include "lstyle.h"
+#include "lsurface-draw.h"
+#include "lsurface.h"
+
+#define check(L, fn, call, diag) cf__lua_fig_check((L), (fn), fig, (call), \
+                                                   (diag))
+
+static void
+free_bspline_surface(void *p)
+{
+    cf_bspline_surface_destroy(p);
+}
+
+const cf_bspline_surface_t *
+cf__lua_surface_arg(lua_State *L, int idx, const char *fn)
+{
+    cf__lua_surface_t *b = luaL_testudata(L, idx, CF__LUA_SURFACE);
+    cf_bspline_surface_t **slot;
+    cf_diag_t diag;
+    if (b == NULL || (b->bz == NULL && b->bs == NULL))
+        cf__lua_error(L, "%s: argument 1 must be a surface (bezier_surface"
+                      "{...}, bspline_surface{...}, nurbs_torus{...}, ...), "
+                      "got %s", fn, b == NULL ? luaL_typename(L, idx)
+                                              : "a closed surface");
+    if (b->bs != NULL)
+        return b->bs;
+    slot = (cf_bspline_surface_t **)cf__lua_holder(L, free_bspline_surface);
+    cf_diag_clear(&diag);
+    if (cf_bspline_surface_from_bezier(b->bz, slot, &diag) != CF_STATUS_OK)
+        cf__lua_error(L, "%s: %s", fn, diag.msg);
+    return *slot;
+}
+
+/* isolines = {nu, nv} (evenly spaced) or {u = {...}, v = {...}} (values) */
+static void
+read_isolines(lua_State *L, int opts, cf_surface_lines_t *o)
+{
+    int t = cf__lua_field(L, opts, "isolines"), top = lua_gettop(L);
+    if (t == LUA_TNIL)
+        return;
+    if (t != LUA_TTABLE)
+        cf__lua_error(L, "surface: isolines is {nu, nv} or {u = {...}, v = "
+                      "{...}}, got %s", lua_typename(L, t));
+    if (lua_rawlen(L, top) > 0) {
+        size_t n;
+        double *v = cf__lua_check_numbers(L, top, "surface", "isolines", &n);
+        if (n != 2 || !(v[0] >= 0 && v[0] <= 1000 && v[1] >= 0
+                        && v[1] <= 1000) || v[0] != (double)(size_t)v[0]
+            || v[1] != (double)(size_t)v[1])
+            cf__lua_error(L, "surface: isolines = {nu, nv} takes two whole "
+                          "numbers 0..1000 (lines of u = const and of v = "
+                          "const)");
+        o->nu = (size_t)v[0];
+        o->nv = (size_t)v[1];
+        return;
+    }
+    lua_pushnil(L);
+    while (lua_next(L, top)) {
+        const char *k = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2)
+                                                       : "";
+        if (strcmp(k, "u") != 0 && strcmp(k, "v") != 0)
+            cf__lua_error(L, "surface: isolines has an entry '%s'; give "
+                          "{nu, nv} or {u = {...}, v = {...}}",
+                          lua_type(L, -2) == LUA_TSTRING ? k : "(a number)");
+        lua_pop(L, 1);
+    }
+    if (cf__lua_field(L, top, "u") != LUA_TNIL)
+        o->u_values = cf__lua_check_numbers(L, -1, "surface", "isolines.u",
+                                            &o->u_count);
+    if (cf__lua_field(L, top, "v") != LUA_TNIL)
+        o->v_values = cf__lua_check_numbers(L, -1, "surface", "isolines.v",
+                                            &o->v_count);
+}
+
+static cf_hidden_t
+read_hidden(lua_State *L, int opts)
+{
+    const char *h;
+    cf__lua_field(L, opts, "hidden");
+    h = cf__lua_opt_text(L, -1, "surface", "hidden", "remove");
+    lua_pop(L, 1);
+    return h[0] == 's' ? CF_HIDDEN_SHOW
+        : h[0] == 'd' ? CF_HIDDEN_DASHED : CF_HIDDEN_REMOVE;
+}
+
+/* The labels of the net's points: labels = "P_{%d%d}" gets (i, j) from
+** label_start (0 by default), as the curves' nets. */
+static void
+net_labels(lua_State *L, cf_figure_t *fig, int opts,
+           const cf_bspline_surface_t *s)
+{
+    size_t nu = cf_bspline_surface_count_u(s);
+    size_t nv = cf_bspline_surface_count_v(s), n = nu * nv;
+    double *p3 = cf__lua_buffer(L, 3 * n), *p2 = cf__lua_buffer(L, 2 * n);
+    lua_Integer *args = lua_newuserdatauv(L, 2 * n * sizeof *args, 0);
+    cf_bspline_surface_get_points(s, p3);
+    check(L, "surface", cf_figure_project(fig, p3, n, 3, p2), NULL);
+    for (size_t i = 0; i < nu; i++)
+        for (size_t j = 0; j < nv; j++) {
+            args[2 * (i * nv + j)] = (lua_Integer)i;
+            args[2 * (i * nv + j) + 1] = (lua_Integer)j;
+        }
+    cf__lua_label_items(L, fig, opts, "labels", p2, n, args, 2, "surface");
+}
+
+/* f:surface(s, {isolines = {4, 4}, net = true, hidden = "dashed", ...}) */
+static int
+m_surface(lua_State *L)
+{
+    cf_figure_t *fig = cf__lua_check_figure(L);
+    const cf_bspline_surface_t *s;
+    cf_surface_lines_t o;
+    cf_style_t st;
+    cf_diag_t diag;
+    lua_settop(L, 3);
+    cf__lua_check_table(L, 3, CF__KEYS_SURFACE);
+    s = cf__lua_surface_arg(L, 2, "surface");
+    cf_surface_lines_init(&o);
+    cf__lua_read_style(L, 3, "surface", fig, &st);
+    o.boundary = cf__lua_opt_bool(L, 3, "boundary", "surface", true);
+    o.silhouette = cf__lua_opt_bool(L, 3, "silhouette", "surface", true);
+    o.knot_lines = cf__lua_opt_bool(L, 3, "knot_lines", "surface", false);
+    o.occludes = cf__lua_opt_bool(L, 3, "occludes", "surface", true);
+    o.hidden = read_hidden(L, 3);
+    read_isolines(L, 3, &o);
+    cf__lua_read_sub_style(L, 3, "iso_style", "surface", fig, &o.iso_style);
+    o.net = cf__lua_read_sub_style(L, 3, "net", "surface", fig,
+                                   &o.net_style);
+    cf_diag_clear(&diag);
+    check(L, "surface", cf_figure_add_surface(fig, s, &o, &st), &diag);
+    if (o.net)
+        net_labels(L, fig, 3, s);
+    lua_settop(L, 1);
+    return 1;
+}
+
+const luaL_Reg cf__lua_surface_draw_methods[] = {
+    { "surface", m_surface },
+    { NULL, NULL },
+};

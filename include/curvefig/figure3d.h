@@ -94,6 +94,13 @@ CF_API cf_status_t cf_figure_add_surface(cf_figure_t *fig,
                                          const cf_surface_lines_t *lines,
                                          const cf_style_t *style);
 
+/* The same for a triangular Bézier patch in R^3: its three edges
+** (boundary), iso-lines of u, v and w (nu of u and of w, nv of v evenly
+** spaced; u_values and v_values), its net; knot_lines has no meaning. */
+CF_API cf_status_t cf_figure_add_triangle_surface(
+    cf_figure_t *fig, const cf_bezier_triangle_t *t,
+    const cf_surface_lines_t *lines, const cf_style_t *style);
+
 #ifdef __cplusplus
 }
 #endif

@@ -17,25 +17,24 @@
 
 #include "curvefig/surface.h"
 #include "grow.h"
-#include "model.h"
+#include "surface-lines.h"
 
-enum { OUTLINE, ISO, NET, NFAMILIES };
-
-/* One line in space: a Bézier piece in R^3 and where it lies on the
-** surface ((u, v) as a line, NULL for the net, which is not on it). */
-typedef struct line {
-    int family;
-    cf_bezier_t *bez;
-    cf_bezier_t *uv;
-} line_t;
+enum {
+    OUTLINE = CF__LINE_OUTLINE,
+    ISO = CF__LINE_ISO,
+    NET = CF__LINE_NET,
+    NFAMILIES = CF__LINE_FAMILIES
+};
 
 typedef struct surface_el {
     cf__element_t base;
     cf_figure_t *fig;
-    cf_bspline_surface_t *s;
+    cf_bspline_surface_t *s;      /* one of the two */
+    cf_bezier_triangle_t *tri;
+    double *cpts;                 /* the control points, Cartesian */
+    size_t ncpts;
     cf_surface_lines_t opt;       /* the arrays dropped */
-    line_t *lines;
-    size_t nlines, cap;
+    cf__lines3_t lines;
     size_t scene_id;              /* SIZE_MAX: not in the scene */
     /* the drawing for a tolerance: curve elements per family, visible
     ** [f][1] and hidden [f][0]; the net's vertices in the plane */
@@ -69,70 +68,83 @@ surface_fini(cf__element_t *el)
 {
     surface_el_t *e = (surface_el_t *)el;
     drop_cache(e);
-    for (size_t i = 0; i < e->nlines; i++) {
-        cf_bezier_destroy(e->lines[i].bez);
-        cf_bezier_destroy(e->lines[i].uv);
-    }
-    cf_free(e->lines);
+    cf__lines3_fini(&e->lines);
     cf_bspline_surface_destroy(e->s);
+    cf_bezier_triangle_destroy(e->tri);
+    cf_free(e->cpts);
 }
 
-/* The box of the surface in the plane: a 17 x 17 grid of its points (the
-** silhouette and every iso-line lie on it), and the net when drawn. */
+static void
+add_projected(const cf_figure_t *fig, const double *p, cf__bounds_t *b)
+{
+    double q[2];
+    cf__fig_project1(fig, p, 3, q);
+    if (!isnan(q[0]))
+        cf__bounds_add(b, q[0], q[1]);
+}
+
+/* The box of the surface in the plane: a grid of 17 x 17 of its points
+** (the silhouette and every iso-line lie on it), and the net when drawn. */
 static void
 surface_bounds(const cf__element_t *el, cf__bounds_t *b)
 {
     const surface_el_t *e = (const surface_el_t *)el;
     enum { N = 17 };
-    double uv[2 * N], pts[N * N * 3], a, c, q[2];
-    cf_bspline_surface_domain(e->s, CF_DIR_U, &a, &c);
-    for (int k = 0; k < N; k++)
-        uv[k] = a + (c - a) * k / (N - 1);
-    cf_bspline_surface_domain(e->s, CF_DIR_V, &a, &c);
-    for (int k = 0; k < N; k++)
-        uv[N + k] = a + (c - a) * k / (N - 1);
-    if (cf_bspline_surface_eval_grid(e->s, uv, N, N, pts, NULL, NULL)
-        == CF_STATUS_OK)
-        for (size_t i = 0; i < (size_t)N * N; i++) {
-            cf__fig_project1(e->fig, pts + 3 * i, 3, q);
-            if (!isnan(q[0]))
-                cf__bounds_add(b, q[0], q[1]);
-        }
-    if (e->opt.net) {
-        size_t n = cf_bspline_surface_count_u(e->s)
-            * cf_bspline_surface_count_v(e->s);
-        const double *hp = cf_bspline_surface_hpoints(e->s);
-        bool rat = cf_bspline_surface_is_rational(e->s);
-        for (size_t i = 0; i < n; i++) {
-            double p[3];
-            for (int k = 0; k < 3; k++)
-                p[k] = rat ? hp[4 * i + k] / hp[4 * i + 3] : hp[3 * i + k];
-            cf__fig_project1(e->fig, p, 3, q);
-            if (!isnan(q[0]))
-                cf__bounds_add(b, q[0], q[1]);
-        }
+    double uv[2 * N], pts[N * N * 3], a, c;
+    if (e->tri != NULL) {
+        for (int i = 0; i < N; i++)
+            for (int j = 0; i + j < N; j++)
+                if (cf_bezier_triangle_eval(e->tri, (double)i / (N - 1),
+                                            (double)j / (N - 1), pts)
+                    == CF_STATUS_OK)
+                    add_projected(e->fig, pts, b);
+    } else {
+        cf_bspline_surface_domain(e->s, CF_DIR_U, &a, &c);
+        for (int k = 0; k < N; k++)
+            uv[k] = a + (c - a) * k / (N - 1);
+        cf_bspline_surface_domain(e->s, CF_DIR_V, &a, &c);
+        for (int k = 0; k < N; k++)
+            uv[N + k] = a + (c - a) * k / (N - 1);
+        if (cf_bspline_surface_eval_grid(e->s, uv, N, N, pts, NULL, NULL)
+            == CF_STATUS_OK)
+            for (size_t i = 0; i < (size_t)N * N; i++)
+                add_projected(e->fig, pts + 3 * i, b);
     }
+    for (size_t i = 0; e->opt.net && i < e->ncpts; i++)
+        add_projected(e->fig, e->cpts + 3 * i, b);
 }
 
 /* ---- lines in space ----------------------------------------------------- */
 
-static cf_status_t
-add_line(cf_figure_t *fig, surface_el_t *e, int family, cf_bezier_t *bez,
-         cf_bezier_t *uv)
+cf_status_t
+cf__lines3_add(cf_figure_t *fig, cf__lines3_t *l, int family,
+               cf_bezier_t *bez, cf_bezier_t *uv)
 {
-    line_t *nl = cf__grow_array(e->lines, &e->cap, e->nlines + 1,
-                                sizeof *nl, 16);
+    cf__line3_t *nl = cf__grow_array(l->items, &l->cap, l->n + 1,
+                                     sizeof *nl, 16);
     if (nl == NULL) {
         cf_bezier_destroy(bez);
         cf_bezier_destroy(uv);
         return cf__fig_nomem(fig, "surface lines");
     }
-    e->lines = nl;
-    e->lines[e->nlines].family = family;
-    e->lines[e->nlines].bez = bez;
-    e->lines[e->nlines].uv = uv;
-    e->nlines++;
+    l->items = nl;
+    l->items[l->n].family = family;
+    l->items[l->n].bez = bez;
+    l->items[l->n].uv = uv;
+    l->n++;
     return CF_STATUS_OK;
+}
+
+void
+cf__lines3_fini(cf__lines3_t *l)
+{
+    for (size_t i = 0; i < l->n; i++) {
+        cf_bezier_destroy(l->items[i].bez);
+        cf_bezier_destroy(l->items[i].uv);
+    }
+    cf_free(l->items);
+    l->items = NULL;
+    l->n = l->cap = 0;
 }
 
 /* The iso-line of direction dir at value: its Bézier pieces, each with
@@ -165,7 +177,7 @@ add_iso(cf_figure_t *fig, surface_el_t *e, int family, cf_dir_t dir,
         if (st == CF_STATUS_OK)
             st = cf_bezier_create(2, 1, uv, NULL, &line, &fig->err);
         if (st == CF_STATUS_OK)
-            st = add_line(fig, e, family, bez, line);
+            st = cf__lines3_add(fig, &e->lines, family, bez, line);
         else
             cf_bezier_destroy(bez);
     }
@@ -223,17 +235,15 @@ add_isos(cf_figure_t *fig, surface_el_t *e, const cf_surface_lines_t *o,
     return st;
 }
 
-/* The net: a line between neighbours along each row and each column. */
+/* The net of a tensor-product surface: a line between neighbours along
+** each row and each column. */
 static cf_status_t
 add_net(cf_figure_t *fig, surface_el_t *e)
 {
     size_t nu = cf_bspline_surface_count_u(e->s);
     size_t nv = cf_bspline_surface_count_v(e->s);
-    double *p = cf_alloc_array(nu * nv * 3, sizeof *p);
+    const double *p = e->cpts;
     cf_status_t st = CF_STATUS_OK;
-    if (p == NULL)
-        return cf__fig_nomem(fig, "a control net");
-    cf_bspline_surface_get_points(e->s, p);
     for (size_t i = 0; i < nu && st == CF_STATUS_OK; i++)
         for (size_t j = 0; j < nv && st == CF_STATUS_OK; j++) {
             for (int d = 0; d < 2 && st == CF_STATUS_OK; d++) {
@@ -246,24 +256,19 @@ add_net(cf_figure_t *fig, surface_el_t *e)
                 memcpy(q + 3, p + 3 * (i2 * nv + j2), 3 * sizeof *q);
                 st = cf_bezier_create(3, 1, q, NULL, &bez, &fig->err);
                 if (st == CF_STATUS_OK)
-                    st = add_line(fig, e, NET, bez, NULL);
+                    st = cf__lines3_add(fig, &e->lines, NET, bez, NULL);
             }
         }
-    cf_free(p);
     return st;
 }
 
 /* A patch whose control points lie on one line (or in one point) has no
 ** normal anywhere: refused, naming the size. */
 static cf_status_t
-check_degenerate(cf_figure_t *fig, const cf_bspline_surface_t *s)
+check_degenerate(cf_figure_t *fig, const double *p, size_t n)
 {
-    size_t n = cf_bspline_surface_count_u(s) * cf_bspline_surface_count_v(s);
-    double *p = cf_alloc_array(3 * n, sizeof *p), size = 0, off = 0;
+    double size = 0, off = 0;
     size_t a = 0, b = 0;
-    if (p == NULL)
-        return cf__fig_nomem(fig, "a surface");
-    cf_bspline_surface_get_points(s, p);
     /* the two points farthest apart from point 0, then the farthest from
     ** their line */
     for (size_t i = 0; i < n; i++) {
@@ -291,7 +296,6 @@ check_degenerate(cf_figure_t *fig, const cf_bspline_surface_t *s)
         }
         off = fmax(off, sqrt(l / m));
     }
-    cf_free(p);
     if (size == 0 || off <= 1e-9 * size)
         return cf_diag_set(&fig->err, CF_STATUS_DEGENERATE, -1,
                            "surface: degenerate patch: its %zu control "
@@ -331,7 +335,9 @@ figure_scene(cf_figure_t *fig, double tol, cf_scene_t **out)
         if (e->base.kind->fini != surface_fini)
             continue;
         e->scene_id = SIZE_MAX;
-        if (e->opt.occludes)
+        if (e->opt.occludes && e->tri != NULL)
+            st = cf_scene_add_triangle(sc, e->tri, &e->scene_id, &fig->err);
+        else if (e->opt.occludes)
             st = cf_scene_add_bspline(sc, e->s, &e->scene_id, &fig->err);
     }
     if (st != CF_STATUS_OK) {
@@ -431,30 +437,24 @@ draw_silhouette(cf_figure_t *fig, surface_el_t *e, const cf_scene_t *sc)
 static cf_status_t
 net_vertices(cf_figure_t *fig, surface_el_t *e, const cf_scene_t *sc)
 {
-    size_t n = cf_bspline_surface_count_u(e->s)
-        * cf_bspline_surface_count_v(e->s);
-    double *p = cf_alloc_array(3 * n, sizeof *p);
+    size_t n = e->ncpts;
     cf_status_t st = CF_STATUS_OK;
     e->verts = cf_alloc_array(2 * n, sizeof *e->verts);
     e->vert_visible = cf_alloc_array(n, sizeof *e->vert_visible);
-    if (p == NULL || e->verts == NULL || e->vert_visible == NULL) {
-        cf_free(p);
+    if (e->verts == NULL || e->vert_visible == NULL)
         return cf__fig_nomem(fig, "net vertices");
-    }
     e->nverts = n;
-    cf_bspline_surface_get_points(e->s, p);
     for (size_t i = 0; i < n && st == CF_STATUS_OK; i++) {
-        cf__fig_project1(fig, p + 3 * i, 3, e->verts + 2 * i);
+        const double *p = e->cpts + 3 * i;
+        cf__fig_project1(fig, p, 3, e->verts + 2 * i);
         if (isnan(e->verts[2 * i]))
-            st = cf__fig_behind_eye(fig, p + 3 * i, "a net vertex");
+            st = cf__fig_behind_eye(fig, p, "a net vertex");
         e->vert_visible[i] = true;
         if (st == CF_STATUS_OK && sc != NULL
             && e->opt.hidden != CF_HIDDEN_SHOW)
-            st = cf_scene_point_visible(sc, p + 3 * i, NULL,
-                                        &e->vert_visible[i], NULL,
-                                        &fig->err);
+            st = cf_scene_point_visible(sc, p, NULL, &e->vert_visible[i],
+                                        NULL, &fig->err);
     }
-    cf_free(p);
     return st;
 }
 
@@ -470,9 +470,9 @@ build(cf_figure_t *fig, surface_el_t *e, double tol)
     drop_cache(e);
     /* split points to 5 times the fitting tolerance: 0.05 bp by default */
     st = need ? figure_scene(fig, 5 * tol, &sc) : CF_STATUS_OK;
-    for (size_t i = 0; st == CF_STATUS_OK && i < e->nlines; i++)
-        st = draw_line(fig, e, sc, e->lines[i].bez, e->lines[i].uv,
-                       e->lines[i].family);
+    for (size_t i = 0; st == CF_STATUS_OK && i < e->lines.n; i++)
+        st = draw_line(fig, e, sc, e->lines.items[i].bez,
+                       e->lines.items[i].uv, e->lines.items[i].family);
     if (st == CF_STATUS_OK && e->opt.silhouette)
         st = draw_silhouette(fig, e, sc);
     if (st == CF_STATUS_OK && e->opt.net)
@@ -601,6 +601,62 @@ cf_surface_lines_init(cf_surface_lines_t *lines)
     cf_style_init(&lines->net_style);
 }
 
+/* The checks every surface takes, then a new element (NULL on failure). */
+static surface_el_t *
+new_surface(cf_figure_t *fig, size_t dim, const cf_surface_lines_t *lines,
+            const cf_style_t *style)
+{
+    surface_el_t *e;
+    if (dim != 3) {
+        cf_diag_set(&fig->err, CF_STATUS_DIM_MISMATCH, -1,
+                    "surface: a surface in R^%zu; a figure draws surfaces "
+                    "in R^3", dim);
+        return NULL;
+    }
+    if (!fig->has_view) {
+        cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
+                    "surface: the figure has no view; give figure{view = "
+                    "{azimuth, elevation}, ...}");
+        return NULL;
+    }
+    if ((lines->u_count > 0 && lines->u_values == NULL)
+        || (lines->v_count > 0 && lines->v_values == NULL)
+        || (unsigned)lines->hidden > CF_HIDDEN_REMOVE) {
+        cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
+                    "surface: iso-line values are NULL or hidden is not "
+                    "show, dashed or remove");
+        return NULL;
+    }
+    if (cf__fig_check_style(fig, style) != CF_STATUS_OK
+        || cf__fig_check_style(fig, &lines->iso_style) != CF_STATUS_OK
+        || cf__fig_check_style(fig, &lines->net_style) != CF_STATUS_OK)
+        return NULL;
+    e = cf__element_new(fig, &surface_kind, sizeof *e, CF_ROLE_CURVE, style);
+    if (e == NULL)
+        return NULL;
+    e->fig = fig;
+    e->opt = *lines;
+    e->opt.u_values = e->opt.v_values = NULL;
+    e->opt.u_count = e->opt.v_count = 0;
+    e->scene_id = SIZE_MAX;
+    return e;
+}
+
+/* The control points of e, Cartesian, into e->cpts; checked. */
+static cf_status_t
+control_points(cf_figure_t *fig, surface_el_t *e, size_t n)
+{
+    e->cpts = cf_alloc_array(3 * n, sizeof *e->cpts);
+    if (e->cpts == NULL)
+        return cf__fig_nomem(fig, "a surface");
+    e->ncpts = n;
+    if (e->tri != NULL)
+        cf_bezier_triangle_get_points(e->tri, e->cpts);
+    else
+        cf_bspline_surface_get_points(e->s, e->cpts);
+    return check_degenerate(fig, e->cpts, n);
+}
+
 cf_status_t
 cf_figure_add_surface(cf_figure_t *fig, const cf_bspline_surface_t *s,
                       const cf_surface_lines_t *lines,
@@ -612,40 +668,41 @@ cf_figure_add_surface(cf_figure_t *fig, const cf_bspline_surface_t *s,
     if (s == NULL || lines == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
                            "surface: the surface or its lines are NULL");
-    if (cf_bspline_surface_dim(s) != 3)
-        return cf_diag_set(&fig->err, CF_STATUS_DIM_MISMATCH, -1,
-                           "surface: a surface in R^%zu; a figure draws "
-                           "surfaces in R^3", cf_bspline_surface_dim(s));
-    if (!fig->has_view)
-        return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                           "surface: the figure has no view; give figure{"
-                           "view = {azimuth, elevation}, ...}");
-    if ((lines->u_count > 0 && lines->u_values == NULL)
-        || (lines->v_count > 0 && lines->v_values == NULL)
-        || (unsigned)lines->hidden > CF_HIDDEN_REMOVE)
-        return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                           "surface: iso-line values are NULL or hidden "
-                           "is not show, dashed or remove");
-    if (cf__fig_check_style(fig, style) != CF_STATUS_OK
-        || cf__fig_check_style(fig, &lines->iso_style) != CF_STATUS_OK
-        || cf__fig_check_style(fig, &lines->net_style) != CF_STATUS_OK)
-        return fig->err.status;
-    if (check_degenerate(fig, s) != CF_STATUS_OK)
-        return fig->err.status;
-    e = cf__element_new(fig, &surface_kind, sizeof *e, CF_ROLE_CURVE, style);
+    e = new_surface(fig, cf_bspline_surface_dim(s), lines, style);
     if (e == NULL)
         return fig->err.status;
-    e->fig = fig;
-    e->opt = *lines;
-    e->opt.u_values = e->opt.v_values = NULL;
-    e->opt.u_count = e->opt.v_count = 0;
-    e->scene_id = SIZE_MAX;
     st = cf_bspline_surface_copy(s, &e->s, &fig->err);
+    if (st == CF_STATUS_OK)
+        st = control_points(fig, e, cf_bspline_surface_count_u(s)
+                            * cf_bspline_surface_count_v(s));
     if (st == CF_STATUS_OK)
         st = add_isos(fig, e, lines, CF_DIR_U);
     if (st == CF_STATUS_OK)
         st = add_isos(fig, e, lines, CF_DIR_V);
     if (st == CF_STATUS_OK && lines->net)
         st = add_net(fig, e);
+    return cf__element_commit(fig, e, st);
+}
+
+cf_status_t
+cf_figure_add_triangle_surface(cf_figure_t *fig,
+                               const cf_bezier_triangle_t *t,
+                               const cf_surface_lines_t *lines,
+                               const cf_style_t *style)
+{
+    surface_el_t *e;
+    cf_status_t st;
+    CF__FIG_CHECK(fig);
+    if (t == NULL || lines == NULL)
+        return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
+                           "surface: the patch or its lines are NULL");
+    e = new_surface(fig, cf_bezier_triangle_dim(t), lines, style);
+    if (e == NULL)
+        return fig->err.status;
+    st = cf__triangle_copy(fig, t, &e->tri);
+    if (st == CF_STATUS_OK)
+        st = control_points(fig, e, cf_bezier_triangle_count(t));
+    if (st == CF_STATUS_OK)
+        st = cf__triangle_lines(fig, t, lines, &e->lines);
     return cf__element_commit(fig, e, st);
 }

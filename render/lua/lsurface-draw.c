@@ -95,24 +95,53 @@ read_hidden(lua_State *L, int opts)
         : h[0] == 'd' ? CF_HIDDEN_DASHED : CF_HIDDEN_REMOVE;
 }
 
-/* The labels of the net's points: labels = "P_{%d%d}" gets (i, j) from
-** label_start (0 by default), as the curves' nets. */
+/* The labels of the net's points: labels = "P_{%d%d}" gets (i, j) of a
+** tensor-product surface, (i, j, k) of a triangular patch, as the curves'
+** nets. */
 static void
 net_labels(lua_State *L, cf_figure_t *fig, int opts,
-           const cf_bspline_surface_t *s)
+           const cf_bspline_surface_t *s, const cf_bezier_triangle_t *t)
 {
-    size_t nu = cf_bspline_surface_count_u(s);
-    size_t nv = cf_bspline_surface_count_v(s), n = nu * nv;
-    double *p3 = cf__lua_buffer(L, 3 * n), *p2 = cf__lua_buffer(L, 2 * n);
-    lua_Integer *args = lua_newuserdatauv(L, 2 * n * sizeof *args, 0);
-    cf_bspline_surface_get_points(s, p3);
+    size_t nu = 0, nv = 0, n, k = 0;
+    double *p3, *p2;
+    lua_Integer *args;
+    int deg = t != NULL ? cf_bezier_triangle_degree(t) : 0;
+    if (t != NULL) {
+        n = cf_bezier_triangle_count(t);
+    } else {
+        nu = cf_bspline_surface_count_u(s);
+        nv = cf_bspline_surface_count_v(s);
+        n = nu * nv;
+    }
+    p3 = cf__lua_buffer(L, 3 * n);
+    p2 = cf__lua_buffer(L, 2 * n);
+    args = lua_newuserdatauv(L, 3 * n * sizeof *args, 0);
+    if (t != NULL) {
+        cf_bezier_triangle_get_points(t, p3);
+        /* the order of surface-triangle.h: i from n down, j from n - i
+        ** down */
+        for (int i = deg; i >= 0; i--)
+            for (int j = deg - i; j >= 0; j--, k++) {
+                args[3 * k] = i;
+                args[3 * k + 1] = j;
+                args[3 * k + 2] = deg - i - j;
+            }
+    } else {
+        cf_bspline_surface_get_points(s, p3);
+        for (size_t i = 0; i < nu; i++)
+            for (size_t j = 0; j < nv; j++, k++) {
+                args[3 * k] = (lua_Integer)i;
+                args[3 * k + 1] = (lua_Integer)j;
+            }
+    }
     check(L, "surface", cf_figure_project(fig, p3, n, 3, p2), NULL);
-    for (size_t i = 0; i < nu; i++)
-        for (size_t j = 0; j < nv; j++) {
-            args[2 * (i * nv + j)] = (lua_Integer)i;
-            args[2 * (i * nv + j) + 1] = (lua_Integer)j;
+    if (t == NULL)   /* pairs, packed */
+        for (k = 0; k < n; k++) {
+            args[2 * k] = args[3 * k];
+            args[2 * k + 1] = args[3 * k + 1];
         }
-    cf__lua_label_items(L, fig, opts, "labels", p2, n, args, 2, "surface");
+    cf__lua_label_items(L, fig, opts, "labels", p2, n, args,
+                        t != NULL ? 3 : 2, "surface");
 }
 
 /* f:surface(s, {isolines = {4, 4}, net = true, hidden = "dashed", ...}) */
@@ -120,13 +149,16 @@ static int
 m_surface(lua_State *L)
 {
     cf_figure_t *fig = cf__lua_check_figure(L);
-    const cf_bspline_surface_t *s;
+    const cf_bspline_surface_t *s = NULL;
+    cf_bezier_triangle_t *tri;
     cf_surface_lines_t o;
     cf_style_t st;
     cf_diag_t diag;
     lua_settop(L, 3);
     cf__lua_check_table(L, 3, CF__KEYS_SURFACE);
-    s = cf__lua_surface_arg(L, 2, "surface");
+    tri = cf__lua_to_triangle(L, 2);
+    if (tri == NULL)
+        s = cf__lua_surface_arg(L, 2, "surface");
     cf_surface_lines_init(&o);
     cf__lua_read_style(L, 3, "surface", fig, &st);
     o.boundary = cf__lua_opt_bool(L, 3, "boundary", "surface", true);
@@ -139,9 +171,13 @@ m_surface(lua_State *L)
     o.net = cf__lua_read_sub_style(L, 3, "net", "surface", fig,
                                    &o.net_style);
     cf_diag_clear(&diag);
-    check(L, "surface", cf_figure_add_surface(fig, s, &o, &st), &diag);
+    if (tri != NULL)
+        check(L, "surface", cf_figure_add_triangle_surface(fig, tri, &o, &st),
+              &diag);
+    else
+        check(L, "surface", cf_figure_add_surface(fig, s, &o, &st), &diag);
     if (o.net)
-        net_labels(L, fig, 3, s);
+        net_labels(L, fig, 3, s, tri);
     lua_settop(L, 1);
     return 1;
 }

@@ -1,0 +1,46 @@
+/*
+** The lines of a surface in space, shared by the surface element
+** (el-surface.c) and the makers of a triangular patch's lines
+** (surface-tri.c): Bézier pieces in R^3 with the (u, v) line they follow
+** on the surface, in families drawn each in its own style.
+*/
+#ifndef CURVEFIG_RENDER_SURFACE_LINES_H
+#define CURVEFIG_RENDER_SURFACE_LINES_H
+
+#include "curvefig/surface-triangle.h"
+#include "model.h"
+
+enum { CF__LINE_OUTLINE, CF__LINE_ISO, CF__LINE_NET, CF__LINE_FAMILIES };
+
+typedef struct cf__line3 {
+    int family;
+    cf_bezier_t *bez;        /* in R^3 */
+    cf_bezier_t *uv;         /* (u, v) on the surface, NULL: not on it */
+} cf__line3_t;
+
+typedef struct cf__lines3 {
+    cf__line3_t *items;
+    size_t n, cap;
+} cf__lines3_t;
+
+/* Append a line, taking bez and uv over (freed on failure too). */
+cf_status_t cf__lines3_add(cf_figure_t *fig, cf__lines3_t *l, int family,
+                           cf_bezier_t *bez, cf_bezier_t *uv);
+void cf__lines3_fini(cf__lines3_t *l);
+
+/* A copy of a triangular patch (from its points and weights). */
+cf_status_t cf__triangle_copy(cf_figure_t *fig, const cf_bezier_triangle_t *t,
+                              cf_bezier_triangle_t **out);
+
+/* The lines of a triangular patch in R^3 that o asks for: the three
+** edges (boundary), iso-lines u = const, v = const and w = const (nu of
+** u and of w, nv of v, evenly spaced, or the given values of u and v),
+** the net's edges.  Iso-lines are exact: the restriction of the patch to
+** a line of its domain is a Bézier curve of the same degree whose control
+** points are the patch's blossom at the line's ends. */
+cf_status_t cf__triangle_lines(cf_figure_t *fig,
+                               const cf_bezier_triangle_t *t,
+                               const cf_surface_lines_t *o,
+                               cf__lines3_t *out);
+
+#endif

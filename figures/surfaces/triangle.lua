@@ -20,3 +20,4 @@ local f = figure{
 f:surface(t, { isolines = { 3, 3 }, hidden = "dashed",
                net = { color = "grey" }, labels = "b_{%d%d%d}",
                label_style = { font_size = 7 } })
+f:triangle_scheme(t, 1/3, 1/3, { width = 0.6 })

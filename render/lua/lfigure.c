@@ -374,6 +374,7 @@ cf__lua_open_figure(lua_State *L)
     luaL_setfuncs(L, cf__lua_layout_methods, 0);
     luaL_setfuncs(L, cf__lua_view_methods, 0);
     cf__lua_set_legend_methods(L, cf__lua_surface_draw_methods);
+    cf__lua_set_legend_methods(L, cf__lua_surface_scheme_methods);
     lua_pop(L, 2);
     lua_pushcfunction(L, l_figure);
     lua_setglobal(L, "figure");

@@ -191,6 +191,11 @@ static const cf__lua_key_t surface_keys[] = {
     KEY("net"), KEY("occludes"), END,
 };
 
+/* f:decasteljau_surface and f:triangle_scheme (lsurface-scheme.c) */
+static const cf__lua_key_t surface_scheme_keys[] = {
+    KEY("colors"), TABLE("point", CF__KEYS_POINT_STYLE), END,
+};
+
 /* the parameters of interactive figures (lparams.c) */
 static const cf__lua_key_t slider_keys[] = {
     KEY("name"), KEY("label"), KEY("min"), KEY("max"), KEY("default"),
@@ -276,6 +281,10 @@ static const cf__lua_schema_t schemas[CF__KEYS_COUNT_] = {
                                "f:deboor(s, 0.5, %s)"),
     [CF__KEYS_SURFACE] = DRAW("surface", line_style, surface_keys,
                               point_labels, "f:surface(s, %s)"),
+    [CF__KEYS_DECASTELJAU_SURFACE] = DRAW("decasteljau_surface", line_style,
+                                          surface_scheme_keys, NULL,
+                                          "f:decasteljau_surface(s, 0.5, "
+                                          "0.5, %s)"),
     [CF__KEYS_PLOT] = DRAW("plot", line_style, plot_keys, NULL,
                              "f:plot(%s)"),
     [CF__KEYS_FUNC] = DRAW("func", line_style, NULL, NULL,

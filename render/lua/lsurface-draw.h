@@ -16,5 +16,6 @@ const cf_bspline_surface_t *cf__lua_surface_arg(lua_State *L, int idx,
                                                 const char *fn);
 
 extern const luaL_Reg cf__lua_surface_draw_methods[];
+extern const luaL_Reg cf__lua_surface_scheme_methods[];
 
 #endif

@@ -1,6 +1,7 @@
--- surfaces/revolution: a surface of revolution (a vase) from a cubic
--- B-spline profile in the xz-plane turned about the z axis, with the
--- profile in colour and the axis.
+-- surfaces/revolution: a shaded surface of revolution (a vase) from a
+-- cubic B-spline profile in the xz-plane turned about the z axis
+-- (smooth shading, the inside paler), with the profile in colour and the
+-- axis.
 
 local profile = bspline{ degree = 3,
   points = { {1.0, 0, 0}, {1.6, 0, 0.6}, {0.6, 0, 1.6}, {0.7, 0, 2.3},
@@ -9,11 +10,12 @@ local s = revolve(profile, { axis = { 0, 0, 1 }, center = { 0, 0, 0 } })
 
 local f = figure{
   name = "surfaces-revolution",
-  caption = "A surface of revolution and its profile curve",
+  caption = "A shaded surface of revolution and its profile curve",
   width = "7cm", height = "8cm",
   view = { -60, 20 },
 }
-f:surface(s, { boundary = true, isolines = { 0, 8 }, hidden = "remove" })
+f:surface(s, { isolines = { 0, 8 }, hidden = "remove", width = 0.8,
+               fill = "#8fb8de", shade = "smooth" })
 f:curve(profile, { color = "#e07b00", width = 1.5 })
 f:line({ 0, 0, -0.3 }, { 0, 0, 3.4 }, { color = "grey", dash = "dashdot",
                                          width = 0.5 })

@@ -50,6 +50,30 @@ typedef enum cf_hidden {
     CF_HIDDEN_REMOVE        /* left out */
 } cf_hidden_t;
 
+/* Shading of a surface: its facets (cf_scene_facets, within 0.3 bp of
+** the surface on the page) painted back to front under every line of the
+** figure, each in the front or back colour (the side facing the viewer
+** is the normal side Su x Sv: front) lit by a distant light:
+** colour * (0.35 + 0.65 |n . L|), n the facet's normal (flat) or the
+** surface's normal at the facet's centroid interpolated from its corners
+** (smooth), L the light direction (default: from the upper left, in front
+** of the viewer: d + 0.6 ey - 0.4 ex normalised).  Neighbouring facets
+** are painted with a hairline of their own colour so no seam shows
+** (not when opacity < 1). */
+typedef enum cf_shade {
+    CF_SHADE_NONE = 0,
+    CF_SHADE_FLAT,
+    CF_SHADE_SMOOTH
+} cf_shade_t;
+
+typedef struct cf_surface_shading {
+    cf_shade_t shade;
+    cf_color_t front, back;
+    double opacity;             /* 0..1 */
+    bool has_light;
+    double light[3];            /* towards the light, any length > 0 */
+} cf_surface_shading_t;
+
 /* The lines of a surface that one call draws, all in one style. */
 typedef struct cf_surface_lines {
     bool boundary;           /* the four boundary curves */
@@ -69,6 +93,8 @@ typedef struct cf_surface_lines {
     cf_style_t iso_style;    /* iso- and knot lines: over the theme's curve
                                 style at half its width */
     cf_style_t net_style;    /* the net: over the theme's polygon style */
+    cf_surface_shading_t shading;   /* shade NONE: not shaded (needs
+                                       occludes) */
 } cf_surface_lines_t;
 
 /* Boundary and silhouette, hidden lines removed, occluding, no style

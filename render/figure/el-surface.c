@@ -307,32 +307,31 @@ check_degenerate(cf_figure_t *fig, const double *p, size_t n)
 
 /* ---- the scene and visibility ------------------------------------------ */
 
-/* The scene of the figure's occluding surfaces for tolerance tol (data
-** units), built once per tolerance and element count; NULL (no error)
-** when there is none. */
+static bool
+is_surface(const cf__element_t *e)
+{
+    return e->kind->fini == surface_fini;
+}
+
+/* A new scene of the figure's occluding surfaces for tolerance tol (data
+** units), each element's number in it set; NULL (no error) when there is
+** none. */
 static cf_status_t
-figure_scene(cf_figure_t *fig, double tol, cf_scene_t **out)
+build_scene(cf_figure_t *fig, double tol, cf_scene_t **out)
 {
     cf_scene_t *sc = NULL;
     cf_status_t st;
     bool any = false;
     *out = NULL;
-    if (fig->scene != NULL && fig->scene_els == fig->count
-        && fig->scene_tol <= tol) {
-        *out = fig->scene;
-        return CF_STATUS_OK;
-    }
-    cf_scene_destroy(fig->scene);
-    fig->scene = NULL;
     for (size_t i = 0; i < fig->count; i++)
-        if (fig->els[i]->kind->fini == surface_fini)
+        if (is_surface(fig->els[i]))
             any = any || ((surface_el_t *)fig->els[i])->opt.occludes;
     if (!any)
         return CF_STATUS_OK;
     st = cf_scene_create(&fig->view, tol, &sc, &fig->err);
     for (size_t i = 0; st == CF_STATUS_OK && i < fig->count; i++) {
         surface_el_t *e = (surface_el_t *)fig->els[i];
-        if (e->base.kind->fini != surface_fini)
+        if (!is_surface(&e->base))
             continue;
         e->scene_id = SIZE_MAX;
         if (e->opt.occludes && e->tri != NULL)
@@ -344,11 +343,75 @@ figure_scene(cf_figure_t *fig, double tol, cf_scene_t **out)
         cf_scene_destroy(sc);
         return cf__fig_fail(fig, st, "surface scene");
     }
-    fig->scene = sc;
-    fig->scene_tol = tol;
-    fig->scene_els = fig->count;
     *out = sc;
     return CF_STATUS_OK;
+}
+
+/* The figure's scene for visibility at tolerance tol, kept in the figure
+** for that tolerance and element count. */
+static cf_status_t
+figure_scene(cf_figure_t *fig, double tol, cf_scene_t **out)
+{
+    cf_status_t st;
+    if (fig->scene != NULL && fig->scene_els == fig->count
+        && fig->scene_tol <= tol) {
+        *out = fig->scene;
+        return CF_STATUS_OK;
+    }
+    cf_scene_destroy(fig->scene);
+    fig->scene = NULL;
+    st = build_scene(fig, tol, out);
+    if (st == CF_STATUS_OK && *out != NULL) {
+        fig->scene = *out;
+        fig->scene_tol = tol;
+        fig->scene_els = fig->count;
+    }
+    return st;
+}
+
+/* The shading of every shaded surface, painted by the figure's first
+** surface element before any line (facets within 30 times the fitting
+** tolerance: 0.3 bp by default). */
+static cf_status_t
+draw_shading(cf_figure_t *fig, const surface_el_t *self,
+             const cf__layout_t *l, cf__dl_t *dl)
+{
+    const cf_surface_shading_t **by_id;
+    cf_scene_t *sc = NULL;
+    size_t first = SIZE_MAX, n = 0;
+    bool any = false;
+    cf_status_t st;
+    for (size_t i = 0; i < fig->count; i++)
+        if (is_surface(fig->els[i])) {
+            const surface_el_t *e = (const surface_el_t *)fig->els[i];
+            first = first == SIZE_MAX ? i : first;
+            any = any || (e->opt.occludes
+                          && e->opt.shading.shade != CF_SHADE_NONE);
+        }
+    if (!any || first == SIZE_MAX || fig->els[first] != &self->base)
+        return CF_STATUS_OK;
+    st = build_scene(fig, 30 * l->tol, &sc);
+    if (st != CF_STATUS_OK || sc == NULL)
+        return st;
+    by_id = cf_alloc_array(fig->count, sizeof *by_id);
+    if (by_id == NULL) {
+        cf_scene_destroy(sc);
+        return cf__fig_nomem(fig, "shading");
+    }
+    for (size_t i = 0; i < fig->count; i++) {
+        const surface_el_t *e = (const surface_el_t *)fig->els[i];
+        if (is_surface(fig->els[i]) && e->scene_id != SIZE_MAX) {
+            by_id[e->scene_id] = &e->opt.shading;
+            n = e->scene_id + 1 > n ? e->scene_id + 1 : n;
+        }
+    }
+    cf__clip_to_window(l, 0, dl);
+    st = cf__shade_facets(fig, sc, by_id, n, l, dl);
+    cf__dl_unclip(dl);
+    cf_free((void *)by_id);
+    cf_scene_destroy(sc);
+    /* the visibility scene numbers the surfaces the same way */
+    return st;
 }
 
 /* The piece [t0, t1] of line c, projected, into the curve element. */
@@ -550,6 +613,8 @@ surface_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
     static const int order[NFAMILIES] = { NET, ISO, OUTLINE };
     cf_status_t st = check_window(fig, e, l);
     if (st == CF_STATUS_OK)
+        st = draw_shading(fig, e, l, dl);
+    if (st == CF_STATUS_OK)
         st = build(fig, e, l->tol);
     if (st != CF_STATUS_OK)
         return st;
@@ -599,6 +664,7 @@ cf_surface_lines_init(cf_surface_lines_t *lines)
     lines->hidden = CF_HIDDEN_REMOVE;
     cf_style_init(&lines->iso_style);
     cf_style_init(&lines->net_style);
+    lines->shading.opacity = 1.0;
 }
 
 /* The checks every surface takes, then a new element (NULL on failure). */
@@ -625,6 +691,14 @@ new_surface(cf_figure_t *fig, size_t dim, const cf_surface_lines_t *lines,
         cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
                     "surface: iso-line values are NULL or hidden is not "
                     "show, dashed or remove");
+        return NULL;
+    }
+    if (lines->shading.shade != CF_SHADE_NONE
+        && !(lines->occludes && isfinite(lines->shading.opacity)
+             && lines->shading.opacity >= 0 && lines->shading.opacity <= 1)) {
+        cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
+                    "surface: a shaded surface must occlude and its opacity "
+                    "(%g) lie in [0, 1]", lines->shading.opacity);
         return NULL;
     }
     if (cf__fig_check_style(fig, style) != CF_STATUS_OK

@@ -43,4 +43,12 @@ cf_status_t cf__triangle_lines(cf_figure_t *fig,
                                const cf_surface_lines_t *o,
                                cf__lines3_t *out);
 
+/* Paint the facets of scene sc (surface-shade.c) in painting order, a
+** facet of surface k with by_id[k] (k < nids; NULL or shade NONE: not
+** painted), lit as curvefig/figure3d.h says. */
+cf_status_t cf__shade_facets(cf_figure_t *fig, const cf_scene_t *sc,
+                             const cf_surface_shading_t *const *by_id,
+                             size_t nids, const cf__layout_t *l,
+                             cf__dl_t *dl);
+
 #endif

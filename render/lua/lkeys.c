@@ -44,6 +44,7 @@ static const char *const reduce_methods[] = { "l2", "uniform", NULL };
 static const char *const hidden_modes[] = {
     "remove", "dashed", "show", NULL,
 };
+static const char *const shade_modes[] = { "smooth", "flat", NULL };
 
 /* ---- key lists ---------------------------------------------------------- */
 
@@ -188,7 +189,8 @@ static const cf__lua_key_t plot_keys[] = {
 static const cf__lua_key_t surface_keys[] = {
     KEY("boundary"), KEY("silhouette"), KEY("isolines"), KEY("knot_lines"),
     NAMES("hidden", hidden_modes), TABLE("iso_style", CF__KEYS_POINT_STYLE),
-    KEY("net"), KEY("occludes"), END,
+    KEY("net"), KEY("occludes"), NAMES("shade", shade_modes), KEY("light"),
+    KEY("back"), END,
 };
 
 /* f:decasteljau_surface and f:triangle_scheme (lsurface-scheme.c) */

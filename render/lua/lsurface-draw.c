@@ -95,6 +95,47 @@ read_hidden(lua_State *L, int opts)
         : h[0] == 'd' ? CF_HIDDEN_DASHED : CF_HIDDEN_REMOVE;
 }
 
+/* fill = colour (the style's) shades the surface: shade = "smooth" |
+** "flat", back = colour of the back side (default: the front's, paler),
+** light = {x, y, z}, the style's opacity. */
+static void
+read_shading(lua_State *L, int opts, const cf_figure_t *fig,
+             const cf_style_t *st, cf_surface_shading_t *sh)
+{
+    const char *mode;
+    cf__lua_field(L, opts, "shade");
+    mode = cf__lua_opt_text(L, -1, "surface", "shade", "smooth");
+    lua_pop(L, 1);
+    if (!(st->set & CF_STYLE_FILL)) {
+        if (cf__lua_field(L, opts, "shade") != LUA_TNIL
+            || cf__lua_field(L, opts, "back") != LUA_TNIL
+            || cf__lua_field(L, opts, "light") != LUA_TNIL)
+            cf__lua_error(L, "surface: shade, back and light shade a "
+                          "surface; give its colour too (fill = ...)");
+        return;
+    }
+    sh->shade = mode[0] == 'f' ? CF_SHADE_FLAT : CF_SHADE_SMOOTH;
+    sh->front = st->fill;
+    sh->back = st->fill;
+    sh->back.r = 0.5 + 0.5 * sh->back.r;
+    sh->back.g = 0.5 + 0.5 * sh->back.g;
+    sh->back.b = 0.5 + 0.5 * sh->back.b;
+    if (cf__lua_field(L, opts, "back") != LUA_TNIL)
+        sh->back = cf__lua_read_color(L, -1, "surface", "back", fig);
+    lua_pop(L, 1);
+    sh->opacity = st->set & CF_STYLE_OPACITY ? st->opacity : 1.0;
+    if (cf__lua_field(L, opts, "light") != LUA_TNIL) {
+        size_t n;
+        double *v = cf__lua_check_numbers(L, -1, "surface", "light", &n);
+        if (n != 3 || !(v[0] != 0 || v[1] != 0 || v[2] != 0))
+            cf__lua_error(L, "surface: light is a direction {x, y, z} "
+                          "towards the light, not zero");
+        memcpy(sh->light, v, sizeof sh->light);
+        sh->has_light = true;
+    }
+    lua_pop(L, 1);
+}
+
 /* The labels of the net's points: labels = "P_{%d%d}" gets (i, j) of a
 ** tensor-product surface, (i, j, k) of a triangular patch, as the curves'
 ** nets. */
@@ -167,6 +208,7 @@ m_surface(lua_State *L)
     o.occludes = cf__lua_opt_bool(L, 3, "occludes", "surface", true);
     o.hidden = read_hidden(L, 3);
     read_isolines(L, 3, &o);
+    read_shading(L, 3, fig, &st, &o.shading);
     cf__lua_read_sub_style(L, 3, "iso_style", "surface", fig, &o.iso_style);
     o.net = cf__lua_read_sub_style(L, 3, "net", "surface", fig,
                                    &o.net_style);

@@ -298,7 +298,7 @@ check_degenerate(cf_figure_t *fig, const double *p, size_t n)
     }
     if (size == 0 || off <= 1e-9 * size)
         return cf_diag_set(&fig->err, CF_STATUS_DEGENERATE, -1,
-                           "surface: degenerate patch: its %zu control "
+                           "degenerate patch: its %zu control "
                            "points lie %s, so it has no normal (give points "
                            "that span a surface)", n,
                            size == 0 ? "in one point" : "on one line");
@@ -596,7 +596,7 @@ check_window(cf_figure_t *fig, const surface_el_t *e, const cf__layout_t *l)
     if (b.any && (b.x1 < l->xmin || b.x0 > l->xmax || b.y1 < l->ymin
                   || b.y0 > l->ymax))
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                           "surface: the surface (seen in [%g, %g] x "
+                           "the surface (seen in [%g, %g] x "
                            "[%g, %g]) lies wholly outside the window "
                            "{%g, %g, %g, %g}; widen window or leave it to "
                            "be fitted", b.x0, b.x1, b.y0, b.y1, l->xmin,
@@ -675,13 +675,13 @@ new_surface(cf_figure_t *fig, size_t dim, const cf_surface_lines_t *lines,
     surface_el_t *e;
     if (dim != 3) {
         cf_diag_set(&fig->err, CF_STATUS_DIM_MISMATCH, -1,
-                    "surface: a surface in R^%zu; a figure draws surfaces "
+                    "a surface in R^%zu; a figure draws surfaces "
                     "in R^3", dim);
         return NULL;
     }
     if (!fig->has_view) {
         cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                    "surface: the figure has no view; give figure{view = "
+                    "the figure has no view; give figure{view = "
                     "{azimuth, elevation}, ...}");
         return NULL;
     }
@@ -689,7 +689,7 @@ new_surface(cf_figure_t *fig, size_t dim, const cf_surface_lines_t *lines,
         || (lines->v_count > 0 && lines->v_values == NULL)
         || (unsigned)lines->hidden > CF_HIDDEN_REMOVE) {
         cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                    "surface: iso-line values are NULL or hidden is not "
+                    "iso-line values are NULL or hidden is not "
                     "show, dashed or remove");
         return NULL;
     }
@@ -697,7 +697,7 @@ new_surface(cf_figure_t *fig, size_t dim, const cf_surface_lines_t *lines,
         && !(lines->occludes && isfinite(lines->shading.opacity)
              && lines->shading.opacity >= 0 && lines->shading.opacity <= 1)) {
         cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                    "surface: a shaded surface must occlude and its opacity "
+                    "a shaded surface must occlude and its opacity "
                     "(%g) lie in [0, 1]", lines->shading.opacity);
         return NULL;
     }
@@ -741,7 +741,7 @@ cf_figure_add_surface(cf_figure_t *fig, const cf_bspline_surface_t *s,
     CF__FIG_CHECK(fig);
     if (s == NULL || lines == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                           "surface: the surface or its lines are NULL");
+                           "the surface or its lines are NULL");
     e = new_surface(fig, cf_bspline_surface_dim(s), lines, style);
     if (e == NULL)
         return fig->err.status;
@@ -769,7 +769,7 @@ cf_figure_add_triangle_surface(cf_figure_t *fig,
     CF__FIG_CHECK(fig);
     if (t == NULL || lines == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                           "surface: the patch or its lines are NULL");
+                           "the patch or its lines are NULL");
     e = new_surface(fig, cf_bezier_triangle_dim(t), lines, style);
     if (e == NULL)
         return fig->err.status;

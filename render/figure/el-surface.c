@@ -40,6 +40,9 @@ typedef struct surface_el {
     ** [f][1] and hidden [f][0]; the net's vertices in the plane */
     double cache_tol;
     cf__element_t *curves[NFAMILIES][2];
+    cf__surface_piece_fn probe;   /* tests: told every piece */
+    void *probe_ctx;
+    size_t index;
     double *verts;
     bool *vert_visible;
     size_t nverts;
@@ -446,8 +449,11 @@ draw_line(cf_figure_t *fig, surface_el_t *e, const cf_scene_t *sc,
     cf_visibility_t *vis = NULL;
     cf_vis_on_t on;
     cf_status_t st;
-    if (sc == NULL || e->opt.hidden == CF_HIDDEN_SHOW)
+    if (sc == NULL || e->opt.hidden == CF_HIDDEN_SHOW) {
+        if (e->probe != NULL)
+            e->probe(e->probe_ctx, e->index, family, bez, 0.0, 1.0, true);
         return add_piece(fig, &e->curves[family][1], bez, 0.0, 1.0);
+    }
     memset(&on, 0, sizeof on);
     on.surface = e->scene_id;
     on.uv_bezier = uv;
@@ -458,6 +464,9 @@ draw_line(cf_figure_t *fig, surface_el_t *e, const cf_scene_t *sc,
         return cf__fig_fail(fig, st, "surface line visibility");
     for (size_t k = 0; st == CF_STATUS_OK && k < vis->n; k++) {
         const cf_vis_interval_t *iv = &vis->items[k];
+        if (e->probe != NULL)
+            e->probe(e->probe_ctx, e->index, family, bez, iv->t0, iv->t1,
+                     iv->visible);
         if (!iv->visible && e->opt.hidden == CF_HIDDEN_REMOVE)
             continue;
         st = add_piece(fig, &e->curves[family][iv->visible ? 1 : 0], bez,
@@ -779,4 +788,28 @@ cf_figure_add_triangle_surface(cf_figure_t *fig,
     if (st == CF_STATUS_OK)
         st = cf__triangle_lines(fig, t, lines, &e->lines);
     return cf__element_commit(fig, e, st);
+}
+
+cf_status_t
+cf__figure_surface_pieces(cf_figure_t *fig, double tol,
+                          cf__surface_piece_fn fn, cf__surface_fn surf,
+                          void *closure)
+{
+    cf_status_t st = CF_STATUS_OK;
+    CF__FIG_CHECK(fig);
+    for (size_t i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
+        surface_el_t *e = (surface_el_t *)fig->els[i];
+        if (!is_surface(&e->base))
+            continue;
+        drop_cache(e);
+        e->probe = fn;
+        e->probe_ctx = closure;
+        e->index = i;
+        st = build(fig, e, tol);
+        e->probe = NULL;
+        drop_cache(e);
+        if (surf != NULL)
+            surf(closure, i, e->s, e->tri, e->opt.occludes);
+    }
+    return st;
 }

@@ -8,6 +8,7 @@
 #define CURVEFIG_RENDER_SURFACE_LINES_H
 
 #include "curvefig/surface-triangle.h"
+#include "curvefig/surface.h"
 #include "model.h"
 
 enum { CF__LINE_OUTLINE, CF__LINE_ISO, CF__LINE_NET, CF__LINE_FAMILIES };
@@ -50,5 +51,22 @@ cf_status_t cf__shade_facets(cf_figure_t *fig, const cf_scene_t *sc,
                              const cf_surface_shading_t *const *by_id,
                              size_t nids, const cf__layout_t *l,
                              cf__dl_t *dl);
+
+/* For tests: every piece of every line the surface elements of fig draw
+** when laid out with tolerance tol (data units), whole or split by the
+** scene: fn(closure, element index, family, line in R^3, t0, t1, visible)
+** (hidden pieces too when hidden = "remove").  And every surface element:
+** surf(closure, element index, B-spline surface or triangle (one NULL),
+** occludes). */
+typedef void (*cf__surface_piece_fn)(void *closure, size_t el, int family,
+                                     const cf_bezier_t *bez, double t0,
+                                     double t1, bool visible);
+typedef void (*cf__surface_fn)(void *closure, size_t el,
+                               const cf_bspline_surface_t *s,
+                               const cf_bezier_triangle_t *t,
+                               bool occludes);
+cf_status_t cf__figure_surface_pieces(cf_figure_t *fig, double tol,
+                                      cf__surface_piece_fn fn,
+                                      cf__surface_fn surf, void *closure);
 
 #endif

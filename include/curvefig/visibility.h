@@ -201,14 +201,18 @@ CF_API double cf_scene_tolerance(const cf_scene_t *scene);
 ** of them, in R^2, on the parameter domain of the curve: (u, v)(t) is
 ** where the curve's point at t lies; parameters of the surface as given
 ** to the add function, the B-spline's knot domain or [0, 1]^2, or (u, v)
-** of a triangular patch).  For a point, uv[2].  A NULL cf_vis_on_t, or
-** uv_bezier and uv_bspline both NULL, means "not known": the depth rule
-** alone then keeps the curve from hiding itself. */
+** of a triangular patch).  For a point, uv[2].  offset >= 0 is how far
+** (in space) the curve or point may be from the surface: 0 for exact
+** curves (iso-lines, boundaries), a silhouette piece's error_space.  A
+** NULL cf_vis_on_t, or uv_bezier and uv_bspline both NULL, means "not
+** known": the depth rule alone then keeps the curve from hiding itself.
+** Zero-initialise the struct (fields may be added at its end). */
 typedef struct cf_vis_on {
     size_t surface;
     const cf_bezier_t *uv_bezier;
     const cf_bspline_t *uv_bspline;
     double uv[2];
+    double offset;
 } cf_vis_on_t;
 
 /* One interval [t0, t1] of a curve's parameter, visible or hidden;

@@ -1,0 +1,332 @@
+/* The pieces of a scene's patches and the box tree over them
+** (vis-private.h). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "vis-private.h"
+
+/* Pieces: a subdivision level at most this deep. */
+#define MAX_LEVEL 26
+
+typedef struct piece {
+    double *net;
+    double r[6];
+    int level;
+} piece_t;
+
+/* Measures of a view-space net: box, image and full diameters, weight
+** ratio, distance from the bilinear (linear) map of its corners, and
+** whether its image cells turn both ways. */
+typedef struct measure {
+    double lo[3], hi[3];
+    double diam, img;
+    double wratio, dev;
+    bool fold;
+    double ext[2];   /* image extent along s and t (tensor) */
+} measure_t;
+
+static double
+dist3(const double *a, const double *b)
+{
+    double x = a[0] - b[0], y = a[1] - b[1], z = a[2] - b[2];
+    return sqrt(x * x + y * y + z * z);
+}
+
+static double
+cross2(const double *o, const double *a, const double *b)
+{
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+}
+
+static size_t
+tidx(int n, int i, int j)
+{
+    size_t r = (size_t)(n - i);
+    return r * (r + 1) / 2 + (r - (size_t)j);
+}
+
+static void
+measure(const cf__vpatch_t *p, const double *net, double *c, measure_t *ms)
+{
+    size_t cnt = cf__vpatch_count(p);
+    double wmin = HUGE_VAL, wmax = 0.0, pos = 0.0, neg = 0.0;
+    for (int k = 0; k < 3; k++) {
+        ms->lo[k] = HUGE_VAL;
+        ms->hi[k] = -HUGE_VAL;
+    }
+    for (size_t i = 0; i < cnt; i++) {
+        const double *g = net + 4 * i;
+        for (int k = 0; k < 3; k++) {
+            c[3 * i + k] = g[k] / g[3];
+            ms->lo[k] = fmin(ms->lo[k], c[3 * i + k]);
+            ms->hi[k] = fmax(ms->hi[k], c[3 * i + k]);
+        }
+        wmin = fmin(wmin, g[3]);
+        wmax = fmax(wmax, g[3]);
+    }
+    ms->diam = dist3(ms->lo, ms->hi);
+    ms->img = hypot(ms->hi[0] - ms->lo[0], ms->hi[1] - ms->lo[1]);
+    ms->wratio = wmax / wmin;
+    ms->dev = 0.0;
+    int m = p->m, n = p->n;
+    if (!p->tri) {
+        const double *c00 = c, *c01 = c + 3 * (size_t)n,
+                     *c10 = c + 3 * (size_t)m * ((size_t)n + 1),
+                     *c11 = c10 + 3 * (size_t)n;
+        ms->ext[0] = ms->ext[1] = 0.0;
+        for (int i = 0; i <= m; i++)
+            for (int j = 0; j <= n; j++) {
+                double a = (double)i / m, b = (double)j / n, q[3];
+                const double *x = c + 3 * ((size_t)i * (n + 1) + j);
+                for (int k = 0; k < 3; k++)
+                    q[k] = (1 - a) * (1 - b) * c00[k] + (1 - a) * b * c01[k] +
+                           a * (1 - b) * c10[k] + a * b * c11[k];
+                ms->dev = fmax(ms->dev, dist3(x, q));
+                if (i < m && j < n) {
+                    const double *x10 = x + 3 * ((size_t)n + 1), *x01 = x + 3,
+                                 *x11 = x10 + 3;
+                    double k1 = cross2(x, x10, x01), k2 = cross2(x11, x01, x10);
+                    pos = fmax(pos, fmax(k1, k2));
+                    neg = fmin(neg, fmin(k1, k2));
+                }
+                if (i == m)
+                    ms->ext[0] = fmax(ms->ext[0],
+                                      hypot(x[0] - c[3 * j], x[1] - c[3 * j + 1]));
+                if (j == n)
+                    ms->ext[1] = fmax(ms->ext[1],
+                                      hypot(x[0] - c[3 * (size_t)i * (n + 1)],
+                                            x[1] - c[3 * (size_t)i * (n + 1) + 1]));
+            }
+    } else {
+        const double *A = c + 3 * tidx(n, n, 0), *B = c + 3 * tidx(n, 0, n),
+                     *C = c + 3 * tidx(n, 0, 0);
+        for (int i = n; i >= 0; i--)
+            for (int j = n - i; j >= 0; j--) {
+                int k = n - i - j;
+                double q[3];
+                const double *x = c + 3 * tidx(n, i, j);
+                for (int e = 0; e < 3; e++)
+                    q[e] = ((double)i * A[e] + (double)j * B[e] +
+                            (double)k * C[e]) / n;
+                ms->dev = fmax(ms->dev, dist3(x, q));
+                if (i + j < n) {
+                    /* the upward cell (i+1, j, k-1), (i, j+1, k-1), (i, j, k) */
+                    double o = cross2(c + 3 * tidx(n, i + 1, j),
+                                      c + 3 * tidx(n, i, j + 1), x);
+                    pos = fmax(pos, o);
+                    neg = fmin(neg, o);
+                }
+            }
+    }
+    double eps = 1e-9 * ms->img * ms->img;
+    ms->fold = pos > eps && neg < -eps;
+}
+
+static cf_status_t
+push_leaf(cf_scene_t *sc, size_t ip, const piece_t *pc, const measure_t *ms)
+{
+    cf__vleaf_t *l = cf__grow(sc->leaves, &sc->nleaf_cap, sc->nleaf + 1,
+                              sizeof *l, 256);
+    if (l == NULL)
+        return CF_STATUS_NO_MEMORY;
+    sc->leaves = l;
+    l = &sc->leaves[sc->nleaf++];
+    l->patch = (uint32_t)ip;
+    l->fold = ms->fold;
+    memcpy(l->r, pc->r, sizeof l->r);
+    memcpy(l->lo, ms->lo, sizeof l->lo);
+    memcpy(l->hi, ms->hi, sizeof l->hi);
+    return CF_STATUS_OK;
+}
+
+/* Parameters of the corners of two triangle halves from the parent's. */
+static void
+tri_regions(const double *r, const int *perm, double *out)
+{
+    for (int c = 0; c < 3; c++) {
+        int o = perm[c];
+        if (o == 3) {
+            /* the middle of the edge split: the two corners not kept
+            ** are at perm positions where the other half has them */
+            continue;
+        }
+        out[2 * c] = r[2 * o];
+        out[2 * c + 1] = r[2 * o + 1];
+    }
+}
+
+cf_status_t
+cf__scene_leaves(cf_scene_t *sc, size_t ip)
+{
+    const cf__vpatch_t *p = &sc->patches[ip];
+    size_t cnt = cf__vpatch_count(p), nstack = 0, cap = 0;
+    piece_t *stack = NULL;
+    double *cart = cf__alloc_array(cnt, 3 * sizeof(double));
+    cf_status_t st = CF_STATUS_OK;
+    piece_t root;
+    if (cart == NULL)
+        return CF_STATUS_NO_MEMORY;
+    root.net = cf__alloc_array(cnt, 4 * sizeof(double));
+    if (root.net == NULL) {
+        cf__free(cart);
+        return CF_STATUS_NO_MEMORY;
+    }
+    memcpy(root.net, p->g, cnt * 4 * sizeof(double));
+    root.level = 0;
+    if (p->tri) {
+        /* corners b_n00, b_0n0, b_00n at (u, v) = (1, 0), (0, 1), (0, 0) */
+        double r[6] = {1, 0, 0, 1, 0, 0};
+        memcpy(root.r, r, sizeof r);
+    } else {
+        double r[6] = {0, 1, 0, 1, 0, 0};
+        memcpy(root.r, r, sizeof r);
+    }
+    stack = cf__grow(NULL, &cap, 1, sizeof *stack, 64);
+    if (stack == NULL) {
+        cf__free(root.net);
+        cf__free(cart);
+        return CF_STATUS_NO_MEMORY;
+    }
+    stack[nstack++] = root;
+    while (nstack > 0) {
+        piece_t pc = stack[--nstack];
+        measure_t ms;
+        measure(p, pc.net, cart, &ms);
+        bool leaf = st != CF_STATUS_OK || pc.level >= MAX_LEVEL ||
+                    ms.diam <= sc->tol / 8 ||
+                    (!ms.fold && ms.dev <= 0.15 * ms.diam &&
+                     ms.wratio <= 1.2) ||
+                    (ms.fold && ms.img <= sc->tol);
+        if (leaf) {
+            if (st == CF_STATUS_OK)
+                st = push_leaf(sc, ip, &pc, &ms);
+            cf__free(pc.net);
+            continue;
+        }
+        piece_t a = pc, b = pc;
+        piece_t *grown = cf__grow(stack, &cap, nstack + 2, sizeof *stack, 64);
+        a.net = cf__alloc_array(cnt, 4 * sizeof(double));
+        b.net = cf__alloc_array(cnt, 4 * sizeof(double));
+        if (grown == NULL || a.net == NULL || b.net == NULL) {
+            if (grown != NULL)
+                stack = grown;
+            cf__free(a.net);
+            cf__free(b.net);
+            cf__free(pc.net);
+            st = CF_STATUS_NO_MEMORY;
+            continue;
+        }
+        stack = grown;
+        a.level = b.level = pc.level + 1;
+        if (!p->tri) {
+            int dir = ms.ext[0] >= ms.ext[1] ? 0 : 1;
+            double mid = 0.5 * (pc.r[2 * dir] + pc.r[2 * dir + 1]);
+            cf__vnet_split(pc.net, p->m, p->n, dir, a.net, b.net);
+            a.r[2 * dir + 1] = mid;
+            b.r[2 * dir] = mid;
+        } else {
+            /* the longest edge in the image */
+            int n = p->n, ea = 0, eb = 1;
+            const double *cr[3] = {cart + 3 * tidx(n, n, 0),
+                                   cart + 3 * tidx(n, 0, n),
+                                   cart + 3 * tidx(n, 0, 0)};
+            double best = -1.0;
+            for (int e = 0; e < 3; e++) {
+                int x = e, y = (e + 1) % 3;
+                double d = hypot(cr[x][0] - cr[y][0], cr[x][1] - cr[y][1]) +
+                           1e-3 * dist3(cr[x], cr[y]);
+                if (d > best) {
+                    best = d;
+                    ea = x;
+                    eb = y;
+                }
+            }
+            int pa[3], pb[3];
+            double mid[2] = {0.5 * (pc.r[2 * ea] + pc.r[2 * eb]),
+                             0.5 * (pc.r[2 * ea + 1] + pc.r[2 * eb + 1])};
+            cf__vtri_split(pc.net, n, ea, eb, a.net, pa, b.net, pb);
+            tri_regions(pc.r, pa, a.r);
+            tri_regions(pc.r, pb, b.r);
+            a.r[0] = mid[0];
+            a.r[1] = mid[1];
+            b.r[2] = mid[0];
+            b.r[3] = mid[1];
+        }
+        cf__free(pc.net);
+        stack[nstack++] = a;
+        stack[nstack++] = b;
+    }
+    cf__free(stack);
+    cf__free(cart);
+    return st;
+}
+
+/* ---- the tree ----------------------------------------------------------- */
+
+static int
+cmp_x(const void *x, const void *y)
+{
+    const cf__vleaf_t *a = x, *b = y;
+    double ca = a->lo[0] + a->hi[0], cb = b->lo[0] + b->hi[0];
+    return (ca > cb) - (ca < cb);
+}
+
+static int
+cmp_y(const void *x, const void *y)
+{
+    const cf__vleaf_t *a = x, *b = y;
+    double ca = a->lo[1] + a->hi[1], cb = b->lo[1] + b->hi[1];
+    return (ca > cb) - (ca < cb);
+}
+
+static void
+build(cf_scene_t *sc, size_t node, size_t first, size_t count)
+{
+    cf__vnode_t *nd = &sc->nodes[node];
+    double clo[2] = {HUGE_VAL, HUGE_VAL}, chi[2] = {-HUGE_VAL, -HUGE_VAL};
+    for (int k = 0; k < 3; k++) {
+        nd->lo[k] = HUGE_VAL;
+        nd->hi[k] = -HUGE_VAL;
+    }
+    for (size_t i = first; i < first + count; i++) {
+        const cf__vleaf_t *l = &sc->leaves[i];
+        for (int k = 0; k < 3; k++) {
+            nd->lo[k] = fmin(nd->lo[k], l->lo[k]);
+            nd->hi[k] = fmax(nd->hi[k], l->hi[k]);
+        }
+        for (int k = 0; k < 2; k++) {
+            clo[k] = fmin(clo[k], l->lo[k] + l->hi[k]);
+            chi[k] = fmax(chi[k], l->lo[k] + l->hi[k]);
+        }
+    }
+    if (count <= 4) {
+        nd->first = (uint32_t)first;
+        nd->count = (uint32_t)count;
+        return;
+    }
+    qsort(sc->leaves + first, count, sizeof *sc->leaves,
+          chi[0] - clo[0] >= chi[1] - clo[1] ? cmp_x : cmp_y);
+    size_t half = count / 2, kid = sc->nnode;
+    sc->nnode += 2;
+    nd->first = (uint32_t)kid;
+    nd->count = 0;
+    build(sc, kid, first, half);
+    build(sc, kid + 1, first + half, count - half);
+}
+
+cf_status_t
+cf__scene_tree(cf_scene_t *sc)
+{
+    cf__vnode_t *nodes;
+    sc->nnode = 0;
+    if (sc->nleaf == 0)
+        return CF_STATUS_OK;
+    nodes = cf__realloc_array(sc->nodes, 2 * sc->nleaf + 1, sizeof *nodes);
+    if (nodes == NULL)
+        return CF_STATUS_NO_MEMORY;
+    sc->nodes = nodes;
+    sc->nnode = 1;
+    build(sc, 0, 0, sc->nleaf);
+    return CF_STATUS_OK;
+}

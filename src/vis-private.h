@@ -1,0 +1,132 @@
+/*
+** Internals of the 3D visibility modules (view.c, scene*.c, vis-*.c):
+** patches of a scene, their evaluation and subdivision, the box tree.
+**
+** View space.  Every patch is kept twice, as a net of 4-homogeneous points:
+** in space (w x, w y, w z, w) and in view space (X, Y, Z, W) = M (w p, w),
+** where x = X / W, y = Y / W is the image and zeta = Z / W a depth that
+** grows towards the viewer: d . p for an orthographic view, D z / (D - z)
+** (z = d . (p - T)) for a perspective one, which makes the perspective map
+** projective, so lines of sight are the lines of constant image in view
+** space and a patch in view space is again a rational Bézier patch.
+*/
+#ifndef CURVEFIG_VIS_PRIVATE_H
+#define CURVEFIG_VIS_PRIVATE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "core-private.h"
+#include "curvefig/visibility.h"
+
+/* Largest degrees a scene accepts (per direction of a tensor patch, and of
+** a triangular patch): the evaluators work on the stack. */
+#define CF__VIS_MAX_DEG 32
+#define CF__VIS_TRI_MAX_DEG 24
+
+/* The 4 x 4 matrix M of a view (row-major). */
+void cf__view_matrix(const cf_view_t *view, double M[16]);
+
+/* One Bézier patch of a scene. */
+typedef struct cf__vpatch {
+    size_t surface;     /* number of its surface */
+    bool tri;           /* triangular patch of degree n (m == n) */
+    int m, n;           /* degrees in s and t */
+    double u0, u1;      /* the patch is [u0, u1] x [v0, v1] of its */
+    double v0, v1;      /* surface (tensor; triangles: 0 1 0 1) */
+    double *h;          /* space net, 4 doubles a point */
+    double *g;          /* view-space net */
+} cf__vpatch_t;
+
+size_t cf__vpatch_count(const cf__vpatch_t *p);
+
+/*
+** Cartesian point and derivatives of a 4-homogeneous net of the patch's
+** shape at local (s, t) ([0, 1]^2, or barycentric u = s, v = t, w = 1 - s
+** - t): out[0..2] the point, out[3..5] d/ds, out[6..8] d/dt and with k == 2
+** out[9..11] d2/ds2, out[12..14] d2/dsdt, out[15..17] d2/dt2 (for a
+** triangle d/ds is along (1, 0, -1), d/dt along (0, 1, -1)).  false where
+** the weight is not positive.
+*/
+bool cf__vpatch_eval(const cf__vpatch_t *p, const double *net, double s,
+                     double t, int k, double *out);
+
+/* Halves of a tensor net of degrees (m, n) (4-homogeneous), in s (dir 0)
+** or t (dir 1) at 1/2: lo and hi each (m + 1)(n + 1) 4 doubles. */
+void cf__vnet_split(const double *net, int m, int n, int dir, double *lo,
+                    double *hi);
+/* Halves of a triangular net of degree n at the middle of its edge from
+** corner a to corner b (0: b_n00, 1: b_0n0, 2: b_00n): one keeps corner a,
+** the other b; each lists its corners' order in perm (new corner i is old
+** corner perm[i], or 3 for the edge's middle). */
+void cf__vtri_split(const double *net, int n, int a, int b, double *lo,
+                    int perm_lo[3], double *hi, int perm_hi[3]);
+
+/* A piece of a patch in the box tree: its parameter region (tensor:
+** r = s0 s1 t0 t1; triangle: three corners (u v) of the patch), the box of
+** its view-space net, and whether its image may fold. */
+typedef struct cf__vleaf {
+    uint32_t patch;
+    bool fold;
+    double r[6];
+    double lo[3], hi[3];
+} cf__vleaf_t;
+
+typedef struct cf__vnode {
+    double lo[3], hi[3];
+    uint32_t first, count;  /* leaves (count > 0) or children first, first+1 */
+} cf__vnode_t;
+
+struct cf_scene {
+    cf_view_t view;
+    double M[16];
+    double tol;
+    size_t nsurf;
+    size_t *surf_first;     /* first patch of each surface, nsurf + 1 */
+    bool *surf_tri;
+    size_t nsurf_cap;
+    cf__vpatch_t *patches;
+    size_t npatch, npatch_cap;
+    cf__vleaf_t *leaves;
+    size_t nleaf, nleaf_cap;
+    cf__vnode_t *nodes;
+    size_t nnode;
+    double lo[3], hi[3];    /* box of every control point, space */
+    double size;            /* its diagonal */
+};
+
+/* Pieces of patch ip into the scene's leaves (scene-tree.c). */
+cf_status_t cf__scene_leaves(cf_scene_t *sc, size_t ip);
+/* The box tree over all leaves, rebuilt. */
+cf_status_t cf__scene_tree(cf_scene_t *sc);
+
+/* Newton for the point of patch ip whose image is img[2], from local
+** (s, t); true with the local parameters and the view-space point in
+** st[2], q[3] when it converges. */
+bool cf__vpatch_locate(const cf_scene_t *sc, size_t ip, const double *img,
+                       double s, double t, double *st, double *q);
+
+/* Where the point p (view space q) lies, for self-occlusion: surface and
+** (u, v) on it, or has == false. */
+typedef struct cf__vself {
+    bool has;
+    size_t surface;
+    double uv[2];
+    double offset;
+} cf__vself_t;
+
+/* Whether view-space point q is hidden; *occ gets the surface. */
+bool cf__scene_hidden(const cf_scene_t *sc, const double *q,
+                      const cf__vself_t *self, size_t *occ);
+
+/* The patch of surface `surface` holding its parameters (u, v), and local
+** parameters on it (s, t); false if none. */
+bool cf__scene_find(const cf_scene_t *sc, size_t surface, double u, double v,
+                    size_t *ip, double *s, double *t);
+
+/* Image (x, y) and depth zeta of a view-space Cartesian point from a
+** space point; false at or behind the eye. */
+bool cf__view_apply(const double M[16], const double *p, double *q);
+
+#endif

@@ -1,0 +1,236 @@
+/* Lines of sight against the exact patches of a scene: is a point hidden
+** (vis-private.h). */
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "vis-private.h"
+
+/* Depth of a tree walk: the tree is balanced (halves), 2 log2 of 2^32. */
+#define STACK 128
+
+bool
+cf__vpatch_locate(const cf_scene_t *sc, size_t ip, const double *img,
+                  double s, double t, double *st, double *q)
+{
+    const cf__vpatch_t *p = &sc->patches[ip];
+    double D[18];
+    double scale = fmax(sc->size, 1e-300);
+    for (int it = 0; it < 40; it++) {
+        if (!cf__vpatch_eval(p, p->g, s, t, 1, D))
+            return false;
+        double rx = img[0] - D[0], ry = img[1] - D[1];
+        double det = D[3] * D[7] - D[6] * D[4];
+        double rn = hypot(rx, ry);
+        if (rn <= 1e-13 * scale) {
+            st[0] = s;
+            st[1] = t;
+            memcpy(q, D, 3 * sizeof(double));
+            return true;
+        }
+        double jn = fabs(D[3]) + fabs(D[4]) + fabs(D[6]) + fabs(D[7]);
+        if (!(fabs(det) > 1e-14 * jn * jn))
+            return false;
+        double ds = (rx * D[7] - ry * D[6]) / det;
+        double dt = (D[3] * ry - D[4] * rx) / det;
+        /* damp long steps: the leaf is small in (s, t) */
+        double len = hypot(ds, dt);
+        if (len > 0.5) {
+            ds *= 0.5 / len;
+            dt *= 0.5 / len;
+        }
+        s += ds;
+        t += dt;
+        if (!(s > -0.5 && s < 1.5 && t > -0.5 && t < 1.5))
+            return false;
+        if (fabs(ds) + fabs(dt) <= 1e-15 && it > 2) {
+            if (!cf__vpatch_eval(p, p->g, s, t, 0, D))
+                return false;
+            if (hypot(img[0] - D[0], img[1] - D[1]) > 1e-9 * scale)
+                return false;
+            st[0] = s;
+            st[1] = t;
+            memcpy(q, D, 3 * sizeof(double));
+            return true;
+        }
+    }
+    return false;
+}
+
+/* Whether local (s, t) lies in the leaf's region (a little slack). */
+static bool
+in_region(const cf__vpatch_t *p, const cf__vleaf_t *l, const double *st)
+{
+    const double e = 1e-9;
+    if (!p->tri)
+        return st[0] >= l->r[0] - e && st[0] <= l->r[1] + e &&
+               st[1] >= l->r[2] - e && st[1] <= l->r[3] + e;
+    /* barycentric coordinates in the triangle r */
+    const double *A = l->r, *B = l->r + 2, *C = l->r + 4;
+    double det = (B[0] - A[0]) * (C[1] - A[1]) - (B[1] - A[1]) * (C[0] - A[0]);
+    if (det == 0.0)
+        return false;
+    double b = ((st[0] - A[0]) * (C[1] - A[1]) -
+                (st[1] - A[1]) * (C[0] - A[0])) / det;
+    double c = ((B[0] - A[0]) * (st[1] - A[1]) -
+                (B[1] - A[1]) * (st[0] - A[0])) / det;
+    return b >= -e && c >= -e && b + c <= 1.0 + e;
+}
+
+/* The local parameters of a leaf's centre and corners. */
+static int
+starts(const cf__vpatch_t *p, const cf__vleaf_t *l, double out[5][2])
+{
+    if (!p->tri) {
+        double s[5][2] = {{0.5 * (l->r[0] + l->r[1]), 0.5 * (l->r[2] + l->r[3])},
+                          {l->r[0], l->r[2]}, {l->r[1], l->r[2]},
+                          {l->r[0], l->r[3]}, {l->r[1], l->r[3]}};
+        memcpy(out, s, sizeof s);
+        return 5;
+    }
+    out[0][0] = (l->r[0] + l->r[2] + l->r[4]) / 3.0;
+    out[0][1] = (l->r[1] + l->r[3] + l->r[5]) / 3.0;
+    for (int c = 0; c < 3; c++) {
+        out[1 + c][0] = l->r[2 * c];
+        out[1 + c][1] = l->r[2 * c + 1];
+    }
+    return 4;
+}
+
+bool
+cf__scene_find(const cf_scene_t *sc, size_t surface, double u, double v,
+               size_t *ip, double *s, double *t)
+{
+    if (surface >= sc->nsurf)
+        return false;
+    for (size_t i = sc->surf_first[surface]; i < sc->surf_first[surface + 1];
+         i++) {
+        const cf__vpatch_t *p = &sc->patches[i];
+        if (p->tri) {
+            *ip = i;
+            *s = u;
+            *t = v;
+            return true;
+        }
+        double eu = 1e-12 * (fabs(p->u0) + fabs(p->u1) + 1.0),
+               ev = 1e-12 * (fabs(p->v0) + fabs(p->v1) + 1.0);
+        if (u >= p->u0 - eu && u <= p->u1 + eu && v >= p->v0 - ev &&
+            v <= p->v1 + ev) {
+            *ip = i;
+            *s = (u - p->u0) / (p->u1 - p->u0);
+            *t = (v - p->v0) / (p->v1 - p->v0);
+            return true;
+        }
+    }
+    return false;
+}
+
+/* Surface parameters of local (s, t) on patch p. */
+static void
+to_surface(const cf__vpatch_t *p, const double *st, double *uv)
+{
+    if (p->tri) {
+        uv[0] = st[0];
+        uv[1] = st[1];
+        return;
+    }
+    uv[0] = p->u0 + st[0] * (p->u1 - p->u0);
+    uv[1] = p->v0 + st[1] * (p->v1 - p->v0);
+}
+
+/*
+** A hit on the point's own surface is the point's own sheet when the
+** surface between them (the straight segment in (u, v)) stays on the line
+** of sight within twice the point's offset from the surface: a grazing
+** view of the surface the curve lies on.
+*/
+static bool
+own_sheet(const cf_scene_t *sc, const cf__vself_t *self, const double *q,
+          const double *uv)
+{
+    for (int k = 1; k < 16; k++) {
+        double a = k / 16.0, s, t, D[18];
+        size_t ip;
+        if (!cf__scene_find(sc, self->surface,
+                            self->uv[0] + a * (uv[0] - self->uv[0]),
+                            self->uv[1] + a * (uv[1] - self->uv[1]), &ip, &s,
+                            &t))
+            return false;
+        if (!cf__vpatch_eval(&sc->patches[ip], sc->patches[ip].g, s, t, 0, D))
+            return false;
+        if (hypot(D[0] - q[0], D[1] - q[1]) >
+            2.0 * self->offset + 1e-9 * sc->size)
+            return false;
+    }
+    return true;
+}
+
+/* The depth margin at view-space depth zeta: tol in space, scaled by
+** d zeta / d z for a perspective view. */
+static double
+margin(const cf_scene_t *sc, double zeta)
+{
+    if (sc->view.projection != CF_PROJECTION_PERSPECTIVE)
+        return sc->tol;
+    double D = sc->view.distance, f = (D + zeta) / D;
+    return sc->tol * f * f;
+}
+
+bool
+cf__scene_hidden(const cf_scene_t *sc, const double *q,
+                 const cf__vself_t *self, size_t *occ)
+{
+    uint32_t stack[STACK];
+    size_t top = 0;
+    double zmin = q[2] + margin(sc, q[2]);
+    if (sc->nnode == 0)
+        return false;
+    stack[top++] = 0;
+    while (top > 0) {
+        const cf__vnode_t *nd = &sc->nodes[stack[--top]];
+        if (q[0] < nd->lo[0] || q[0] > nd->hi[0] || q[1] < nd->lo[1] ||
+            q[1] > nd->hi[1] || nd->hi[2] <= zmin)
+            continue;
+        if (nd->count == 0) {
+            if (top + 2 <= STACK) {
+                stack[top++] = nd->first;
+                stack[top++] = nd->first + 1;
+            }
+            continue;
+        }
+        for (uint32_t i = nd->first; i < nd->first + nd->count; i++) {
+            const cf__vleaf_t *l = &sc->leaves[i];
+            const cf__vpatch_t *p = &sc->patches[l->patch];
+            double st0[5][2], st[2], h[3], uv[2];
+            int ns, found = 0;
+            if (q[0] < l->lo[0] || q[0] > l->hi[0] || q[1] < l->lo[1] ||
+                q[1] > l->hi[1] || l->hi[2] <= zmin)
+                continue;
+            ns = starts(p, l, st0);
+            for (int k = 0; k < (l->fold ? ns : 1); k++) {
+                if (!cf__vpatch_locate(sc, l->patch, q, st0[k][0], st0[k][1],
+                                       st, h) ||
+                    !in_region(p, l, st))
+                    continue;
+                found++;
+                if (h[2] <= zmin)
+                    continue;
+                to_surface(p, st, uv);
+                if (self != NULL && self->has &&
+                    self->surface == p->surface && own_sheet(sc, self, q, uv))
+                    continue;
+                if (occ != NULL)
+                    *occ = p->surface;
+                return true;
+            }
+            /* a folding leaf no wider than tol where Newton found nothing:
+            ** decided by its middle */
+            if (l->fold && found == 0 && l->lo[2] > zmin) {
+                if (occ != NULL)
+                    *occ = p->surface;
+                return true;
+            }
+        }
+    }
+    return false;
+}

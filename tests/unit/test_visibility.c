@@ -1,0 +1,456 @@
+/* Views and hidden lines (curvefig/visibility.h), against an independent
+** ray caster (raycast-ref.c: long double Newton on the line of sight):
+** every sample of a line must be hidden or visible as the reference says,
+** except within the tolerance of a split point. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+
+#include "curvefig/surface-make.h"
+#include "curvefig/visibility.h"
+#include "raycast-ref.h"
+#include "testutil.h"
+
+/* Samples of each line checked against the reference. */
+#define SAMPLES 600
+
+typedef struct world {
+    cf_view_t view;
+    cf_scene_t *sc;
+    rc_scene_t *rc;
+    double tol;
+    long checked, hidden, visible, near_split;
+} world;
+
+static void
+world_init(world *w, const cf_view_t *view, double tol)
+{
+    memset(w, 0, sizeof *w);
+    w->view = *view;
+    w->tol = tol;
+    assert_int_equal(cf_scene_create(view, tol, &w->sc, NULL), 0);
+    w->rc = rc_create(view);
+    assert_non_null(w->rc);
+}
+
+static void
+world_fini(world *w)
+{
+    cf_scene_destroy(w->sc);
+    rc_destroy(w->rc);
+}
+
+static size_t
+add_bspline(world *w, const cf_bspline_surface_t *s)
+{
+    size_t id;
+    cf_diag_t d;
+    assert_int_equal(cf_scene_add_bspline(w->sc, s, &id, &d), 0);
+    assert_true(rc_add_bspline(w->rc, s));
+    return id;
+}
+
+static size_t
+add_bezier(world *w, const cf_bezier_surface_t *s)
+{
+    size_t id;
+    assert_int_equal(cf_scene_add_bezier(w->sc, s, &id, NULL), 0);
+    assert_true(rc_add_bezier(w->rc, s));
+    return id;
+}
+
+/* Image of p. */
+static void
+image(const world *w, const double *p, double *q)
+{
+    assert_int_equal(cf_view_project(&w->view, p, q, NULL), 0);
+}
+
+/*
+** The visibility of c (on may be NULL) against the reference at SAMPLES
+** parameters.  A mismatch is allowed only where the sample's image is
+** within 2 tol of the image of a split point.
+*/
+static void
+check_line(world *w, const cf_bspline_t *c, const cf_vis_on_t *on,
+           const char *what)
+{
+    cf_visibility_t *vis = NULL;
+    cf_diag_t d;
+    double a, b, split[64][2];
+    size_t ns = 0;
+    assert_int_equal(cf_scene_bspline_visibility(w->sc, c, on, &vis, &d), 0);
+    cf_bspline_domain(c, &a, &b);
+    assert_true(vis->n >= 1);
+    assert_true(fabs(vis->items[0].t0 - a) <= 1e-12 * (fabs(a) + 1));
+    assert_true(fabs(vis->items[vis->n - 1].t1 - b) <= 1e-12 * (fabs(b) + 1));
+    for (size_t i = 0; i + 1 < vis->n; i++) {
+        double p[3];
+        assert_true(vis->items[i].t1 == vis->items[i + 1].t0);
+        assert_true(vis->items[i].visible != vis->items[i + 1].visible);
+        assert_int_equal(cf_bspline_eval(c, vis->items[i].t1, p), 0);
+        assert_true(ns < 64);
+        image(w, p, split[ns++]);
+    }
+    size_t k = 0;
+    for (int i = 0; i <= SAMPLES; i++) {
+        double t = a + (b - a) * i / SAMPLES, p[3], q[2];
+        while (k + 1 < vis->n && t > vis->items[k].t1)
+            k++;
+        bool ours = !vis->items[k].visible;
+        assert_int_equal(cf_bspline_eval(c, t, p), 0);
+        bool ref = rc_hidden(w->rc, p, w->tol, NULL);
+        w->checked++;
+        if (ref)
+            w->hidden++;
+        else
+            w->visible++;
+        if (ours == ref)
+            continue;
+        image(w, p, q);
+        double near = HUGE_VAL;
+        for (size_t j = 0; j < ns; j++)
+            near = fmin(near, hypot(q[0] - split[j][0], q[1] - split[j][1]));
+        if (near > 2.0 * w->tol)
+            fail_msg("%s: t = %.9g (%g %g %g) is %s, the reference says %s; "
+                     "nearest split %g away (tol %g)", what, t, p[0], p[1],
+                     p[2], ours ? "hidden" : "visible",
+                     ref ? "hidden" : "visible", near, w->tol);
+        w->near_split++;
+    }
+    cf_visibility_destroy(vis);
+}
+
+/* The iso-line of s at value in dir, with its (u, v) line. */
+static void
+check_iso(world *w, const cf_bspline_surface_t *s, size_t id, cf_dir_t dir,
+          double value, bool use_on, const char *what)
+{
+    cf_bspline_t *c = NULL, *uv = NULL;
+    double a, b, kn[4], pts[4];
+    cf_vis_on_t on;
+    assert_int_equal(cf_bspline_surface_iso(s, dir, value, &c, NULL), 0);
+    cf_bspline_domain(c, &a, &b);
+    kn[0] = kn[1] = a;
+    kn[2] = kn[3] = b;
+    if (dir == CF_DIR_U) {
+        pts[0] = pts[2] = value;
+        pts[1] = a;
+        pts[3] = b;
+    } else {
+        pts[1] = pts[3] = value;
+        pts[0] = a;
+        pts[2] = b;
+    }
+    assert_int_equal(cf_bspline_create(2, 1, kn, 4, pts, 2, NULL, &uv, NULL),
+                     0);
+    memset(&on, 0, sizeof on);
+    on.surface = id;
+    on.uv_bspline = uv;
+    check_line(w, c, use_on ? &on : NULL, what);
+    cf_bspline_destroy(c);
+    cf_bspline_destroy(uv);
+}
+
+/* Every iso-line of a grid nu x nv of the surface's domain. */
+static void
+check_isos(world *w, const cf_bspline_surface_t *s, size_t id, int nu,
+           int nv)
+{
+    double ua, ub, va, vb;
+    char what[64];
+    cf_bspline_surface_domain(s, CF_DIR_U, &ua, &ub);
+    cf_bspline_surface_domain(s, CF_DIR_V, &va, &vb);
+    for (int i = 0; i <= nu; i++) {
+        double u = ua + (ub - ua) * (i + 0.37) / (nu + 1);
+        snprintf(what, sizeof what, "iso u = %g", u);
+        check_iso(w, s, id, CF_DIR_U, u, i % 2 == 0, what);
+    }
+    for (int j = 0; j <= nv; j++) {
+        double v = va + (vb - va) * (j + 0.61) / (nv + 1);
+        snprintf(what, sizeof what, "iso v = %g", v);
+        check_iso(w, s, id, CF_DIR_V, v, j % 2 == 1, what);
+    }
+}
+
+/* A straight segment as a B-spline of degree 1. */
+static cf_bspline_t *
+segment(const double *p0, const double *p1)
+{
+    double kn[4] = {0, 0, 1, 1}, pts[6];
+    cf_bspline_t *c = NULL;
+    memcpy(pts, p0, 3 * sizeof(double));
+    memcpy(pts + 3, p1, 3 * sizeof(double));
+    assert_int_equal(cf_bspline_create(3, 1, kn, 4, pts, 2, NULL, &c, NULL),
+                     0);
+    return c;
+}
+
+static void
+report(const world *w, const char *what)
+{
+    printf("# %s: %ld samples, %ld hidden, %ld visible, %ld differ within "
+           "2 tol of a split\n", what, w->checked, w->hidden, w->visible,
+           w->near_split);
+    /* the scene must show both, or the test shows nothing */
+    assert_true(w->hidden > w->checked / 20);
+    assert_true(w->visible > w->checked / 20);
+}
+
+static void
+test_sphere(void **state)
+{
+    (void)state;
+    double c[3] = {0, 0, 0};
+    cf_bspline_surface_t *s = NULL;
+    cf_view_t v;
+    world w;
+    assert_int_equal(cf_view_orthographic(&v, 30, 25, NULL), 0);
+    world_init(&w, &v, 1e-3);
+    assert_int_equal(cf_nurbs_sphere(c, 1.0, &s, NULL), 0);
+    size_t id = add_bspline(&w, s);
+    check_isos(&w, s, id, 5, 4);
+    /* a line through the sphere, not on it */
+    double p0[3] = {-2, 0.3, 0.2}, p1[3] = {2, -0.2, 0.1};
+    cf_bspline_t *l = segment(p0, p1);
+    check_line(&w, l, NULL, "segment through the sphere");
+    cf_bspline_destroy(l);
+    report(&w, "sphere");
+    cf_bspline_surface_destroy(s);
+    world_fini(&w);
+}
+
+static void
+test_torus(void **state)
+{
+    (void)state;
+    double c[3] = {0, 0, 0};
+    cf_bspline_surface_t *s = NULL;
+    cf_view_t v;
+    world w;
+    assert_int_equal(cf_view_orthographic(&v, -50, 35, NULL), 0);
+    world_init(&w, &v, 1e-3);
+    assert_int_equal(cf_nurbs_torus(c, 1.0, 0.4, &s, NULL), 0);
+    size_t id = add_bspline(&w, s);
+    check_isos(&w, s, id, 7, 5);
+    report(&w, "torus");
+    cf_bspline_surface_destroy(s);
+    world_fini(&w);
+}
+
+static void
+test_torus_perspective(void **state)
+{
+    (void)state;
+    double c[3] = {0, 0, 0}, T[3] = {0.1, 0, 0};
+    cf_bspline_surface_t *s = NULL;
+    cf_view_t v;
+    world w;
+    assert_int_equal(cf_view_perspective(&v, 20, 30, 4.0, T, NULL), 0);
+    world_init(&w, &v, 1e-3);
+    assert_int_equal(cf_nurbs_torus(c, 1.0, 0.4, &s, NULL), 0);
+    size_t id = add_bspline(&w, s);
+    check_isos(&w, s, id, 5, 3);
+    report(&w, "torus in perspective");
+    cf_bspline_surface_destroy(s);
+    world_fini(&w);
+}
+
+/* z = x^2 - y^2 on [-1, 1]^2 as a Bézier patch of degrees (2, 2), seen
+** from low: the saddle hides part of itself. */
+static cf_bezier_surface_t *
+saddle(void)
+{
+    double P[27];
+    cf_bezier_surface_t *s = NULL;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            double *p = P + 3 * (3 * i + j);
+            p[0] = -1.0 + i;
+            p[1] = -1.0 + j;
+            /* x^2 on control points: 1, -1, 1 (the middle of the
+            ** quadratic's polygon); likewise y^2 */
+            double x2 = i == 1 ? -1.0 : 1.0, y2 = j == 1 ? -1.0 : 1.0;
+            p[2] = x2 - y2;
+        }
+    assert_int_equal(cf_bezier_surface_create(3, 2, 2, P, NULL, &s, NULL), 0);
+    return s;
+}
+
+static void
+test_saddle(void **state)
+{
+    (void)state;
+    cf_bezier_surface_t *b = saddle();
+    cf_bspline_surface_t *s = NULL;
+    cf_view_t v;
+    world w;
+    double x[3];
+    /* the patch is the saddle: S(u, v) = (x, y, x^2 - y^2) */
+    assert_int_equal(cf_bezier_surface_eval(b, 0.8, 0.3, x), 0);
+    assert_true(fabs(x[2] - (x[0] * x[0] - x[1] * x[1])) < 1e-14);
+    assert_int_equal(cf_bspline_surface_from_bezier(b, &s, NULL), 0);
+    assert_int_equal(cf_view_orthographic(&v, 10, 12, NULL), 0);
+    world_init(&w, &v, 1e-3);
+    size_t id = add_bspline(&w, s);
+    check_isos(&w, s, id, 7, 7);
+    report(&w, "saddle");
+    cf_bezier_surface_destroy(b);
+    cf_bspline_surface_destroy(s);
+    world_fini(&w);
+}
+
+/* A flat square and a bent patch that passes through it: lines on both
+** are hidden by the other, and cross where the patches interpenetrate. */
+static void
+test_two_patches(void **state)
+{
+    (void)state;
+    double Q[12] = {-1, -1, 0, -1, 1, 0, 1, -1, 0, 1, 1, 0};
+    double P[27];
+    cf_bezier_surface_t *a = NULL, *b = NULL;
+    cf_bspline_surface_t *sa = NULL, *sb = NULL;
+    cf_view_t v;
+    world w;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            double *p = P + 3 * (3 * i + j);
+            p[0] = -0.6 + 0.6 * i;
+            p[1] = -1.4 + 1.4 * j;
+            p[2] = (i == 1 ? 1.2 : -0.5) + 0.3 * (j - 1);
+        }
+    assert_int_equal(cf_bezier_surface_bilinear(3, Q, &a, NULL), 0);
+    assert_int_equal(cf_bezier_surface_create(3, 2, 2, P, NULL, &b, NULL), 0);
+    assert_int_equal(cf_bspline_surface_from_bezier(a, &sa, NULL), 0);
+    assert_int_equal(cf_bspline_surface_from_bezier(b, &sb, NULL), 0);
+    assert_int_equal(cf_view_orthographic(&v, 60, 30, NULL), 0);
+    world_init(&w, &v, 1e-3);
+    size_t ia = add_bezier(&w, a), ib = add_bezier(&w, b);
+    check_isos(&w, sa, ia, 6, 6);
+    check_isos(&w, sb, ib, 6, 6);
+    report(&w, "two patches");
+    cf_bezier_surface_destroy(a);
+    cf_bezier_surface_destroy(b);
+    cf_bspline_surface_destroy(sa);
+    cf_bspline_surface_destroy(sb);
+    world_fini(&w);
+}
+
+/* A sheet curled over itself (its profile a loop in x z), seen from the
+** side of the loop: the front of the curl hides its back. */
+static void
+test_curl(void **state)
+{
+    (void)state;
+    double prof[4][2] = {{0, 0}, {3, 0}, {-1.5, 2}, {1.2, 1.2}};
+    double P[24];
+    cf_bezier_surface_t *b = NULL;
+    cf_bspline_surface_t *s = NULL;
+    cf_view_t v;
+    world w;
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 2; j++) {
+            double *p = P + 3 * (2 * i + j);
+            p[0] = prof[i][0];
+            p[1] = 2.0 * j + 0.3 * i;
+            p[2] = prof[i][1];
+        }
+    assert_int_equal(cf_bezier_surface_create(3, 3, 1, P, NULL, &b, NULL), 0);
+    assert_int_equal(cf_bspline_surface_from_bezier(b, &s, NULL), 0);
+    assert_int_equal(cf_view_orthographic(&v, -75, 20, NULL), 0);
+    world_init(&w, &v, 1e-3);
+    size_t id = add_bezier(&w, b);
+    check_isos(&w, s, id, 9, 5);
+    report(&w, "curl");
+    cf_bezier_surface_destroy(b);
+    cf_bspline_surface_destroy(s);
+    world_fini(&w);
+}
+
+/* A triangular patch in front of lines. */
+static void
+test_triangle(void **state)
+{
+    (void)state;
+    /* quadratic: corners and edge midpoints lifted */
+    double P[18] = {1, 0, 0.5,  0.5, 0.5, 1.2, 0.5, 0, 0.8,
+                    0, 1, 0.2,  0, 0.5, 0.9,   0, 0, 0.3};
+    cf_bezier_triangle_t *t = NULL;
+    cf_view_t v;
+    world w;
+    size_t id;
+    assert_int_equal(cf_bezier_triangle_create(3, 2, P, NULL, &t, NULL), 0);
+    assert_int_equal(cf_view_orthographic(&v, 0, 90, NULL), 0);
+    world_init(&w, &v, 1e-3);
+    assert_int_equal(cf_scene_add_triangle(w.sc, t, &id, NULL), 0);
+    assert_true(rc_add_triangle(w.rc, t));
+    for (int k = 0; k < 8; k++) {
+        double p0[3] = {-0.3, -0.2 + 0.17 * k, 0.0};
+        double p1[3] = {1.3, 1.1 - 0.15 * k, 1.5 - 0.2 * k};
+        cf_bspline_t *l = segment(p0, p1);
+        check_line(&w, l, NULL, "segment under the triangle");
+        cf_bspline_destroy(l);
+    }
+    report(&w, "triangle");
+    cf_bezier_triangle_destroy(t);
+    world_fini(&w);
+}
+
+/* Points: visible or hidden as the reference says, away from the
+** silhouette. */
+static void
+test_points(void **state)
+{
+    (void)state;
+    double c[3] = {0, 0, 0};
+    cf_bspline_surface_t *s = NULL;
+    cf_view_t v;
+    world w;
+    tu_rng r;
+    int hid = 0;
+    tu_rng_seed(&r, 7);
+    assert_int_equal(cf_view_orthographic(&v, 140, -20, NULL), 0);
+    world_init(&w, &v, 1e-4);
+    assert_int_equal(cf_nurbs_torus(c, 1.0, 0.35, &s, NULL), 0);
+    add_bspline(&w, s);
+    for (int i = 0; i < 400; i++) {
+        double p[3], dist;
+        bool vis;
+        for (int k = 0; k < 3; k++)
+            p[k] = tu_rng_range(&r, -1.5, 1.5);
+        bool ref = rc_hidden(w.rc, p, w.tol, &dist);
+        assert_int_equal(cf_scene_point_visible(w.sc, p, NULL, &vis, NULL,
+                                                NULL), 0);
+        if (vis == ref)
+            fail_msg("point (%g %g %g): %s, the reference says %s",
+                     p[0], p[1], p[2], vis ? "visible" : "hidden",
+                     ref ? "hidden" : "visible");
+        hid += !vis;
+    }
+    assert_true(hid > 40 && hid < 360);
+    cf_bspline_surface_destroy(s);
+    world_fini(&w);
+}
+
+int
+main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_sphere),
+        cmocka_unit_test(test_torus),
+        cmocka_unit_test(test_torus_perspective),
+        cmocka_unit_test(test_saddle),
+        cmocka_unit_test(test_two_patches),
+        cmocka_unit_test(test_curl),
+        cmocka_unit_test(test_triangle),
+        cmocka_unit_test(test_points),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -52,10 +52,10 @@ cf_status_t cf__shade_facets(cf_figure_t *fig, const cf_scene_t *sc,
                              size_t nids, const cf__layout_t *l,
                              cf__dl_t *dl);
 
-/* For tests: every piece of every line the surface elements of fig draw
-** when laid out with tolerance tol (data units), whole or split by the
-** scene: fn(closure, element index, family, line in R^3, t0, t1, visible)
-** (hidden pieces too when hidden = "remove").  And every surface element:
+/* For tests: every piece of every line the surface elements of fig split
+** by the scene when laid out with tolerance tol (data units): fn(closure,
+** element index, family, line in R^3, t0, t1, visible) (hidden pieces too
+** when hidden = "remove"; nothing of lines drawn whole, hidden = "show").  And every surface element:
 ** surf(closure, element index, B-spline surface or triangle (one NULL),
 ** occludes). */
 typedef void (*cf__surface_piece_fn)(void *closure, size_t el, int family,

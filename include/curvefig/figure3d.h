@@ -104,7 +104,7 @@ CF_API void cf_surface_lines_init(cf_surface_lines_t *lines);
 /* Draw lines of a surface in R^3 (copied) in a figure with a view.  Every
 ** line is an exact curve (iso-curve, boundary, silhouette) projected
 ** exactly, split where it passes behind an occluding surface of the figure
-** (cf_scene_curve_visibility, to 5 times the figure's fitting tolerance on
+** (cf_scene_curve_visibility, to 20 times the figure's fitting tolerance on
 ** the page); the visible pieces take the style (iso- and knot lines
 ** iso_style, the net net_style), the hidden ones are drawn as
 ** lines->hidden says (dashed: the same colour, 0.7 of the width, dashes of

@@ -29,6 +29,17 @@ cf_status_t cf__lines3_add(cf_figure_t *fig, cf__lines3_t *l, int family,
                            cf_bezier_t *bez, cf_bezier_t *uv);
 void cf__lines3_fini(cf__lines3_t *l);
 
+/* A surface whose n control points p (Cartesian, R^3) lie on one line or
+** in one point has no normal: DEGENERATE, saying so. */
+cf_status_t cf__check_degenerate(cf_figure_t *fig, const double *p, size_t n);
+
+/* The lines of a B-spline surface that o asks for (surface-grid.c):
+** boundary (outline), iso- and knot lines, the net of its control points
+** cpts (Cartesian). */
+cf_status_t cf__bspline_lines(cf_figure_t *fig, const cf_bspline_surface_t *s,
+                              const double *cpts, const cf_surface_lines_t *o,
+                              cf__lines3_t *out);
+
 /* A copy of a triangular patch (from its points and weights). */
 cf_status_t cf__triangle_copy(cf_figure_t *fig, const cf_bezier_triangle_t *t,
                               cf_bezier_triangle_t **out);

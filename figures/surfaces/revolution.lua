@@ -17,6 +17,7 @@ local f = figure{
 f:surface(s, { isolines = { 0, 8 }, hidden = "remove", width = 0.8,
                fill = "#8fb8de", shade = "smooth" })
 f:curve(profile, { color = "#e07b00", width = 1.5 })
-f:line({ 0, 0, -0.3 }, { 0, 0, 3.4 }, { color = "grey", dash = "dashdot",
-                                         width = 0.5 })
-f:label(profile:eval(0.5), "profile", { place = "e" })
+-- the axis, a curve in space: hidden where the vase is in front of it
+f:curve(bezier{ { 0, 0, -0.3 }, { 0, 0, 3.4 } },
+        { color = "grey", dash = "dashdot", width = 0.5, hidden = "remove" })
+f:label(profile:eval(0.25), "\\text{profile}", { place = "e" })

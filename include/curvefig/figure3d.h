@@ -120,6 +120,14 @@ CF_API cf_status_t cf_figure_add_surface(cf_figure_t *fig,
                                          const cf_surface_lines_t *lines,
                                          const cf_style_t *style);
 
+/* Curves in R^3 (copied) in a figure with a view, split by the figure's
+** occluding surfaces as the surfaces' lines are, the hidden pieces drawn
+** as hidden says; they hide nothing themselves.  Role CF_ROLE_CURVE. */
+CF_API cf_status_t cf_figure_add_space_curves(cf_figure_t *fig,
+                                              const cf_bezier_list_t *list,
+                                              cf_hidden_t hidden,
+                                              const cf_style_t *style);
+
 /* The same for a triangular Bézier patch in R^3: its three edges
 ** (boundary), iso-lines of u, v and w (nu of u and of w, nv of v evenly
 ** spaced; u_values and v_values), its net; knot_lines has no meaning. */

@@ -94,7 +94,21 @@ surface_bounds(const cf__element_t *el, cf__bounds_t *b)
     const surface_el_t *e = (const surface_el_t *)el;
     enum { N = 17 };
     double uv[2 * N], pts[N * N * 3], a, c;
-    if (e->tri != NULL) {
+    if (e->s == NULL && e->tri == NULL) {
+        /* space curves: their control points (the curves lie in their
+        ** hull, and so do their images) */
+        for (size_t i = 0; i < e->lines.n; i++) {
+            const cf_bezier_t *line = e->lines.items[i].bez;
+            int deg = cf_bezier_degree(line);
+            double *p = cf_alloc_array(3 * ((size_t)deg + 1), sizeof *p);
+            if (p == NULL)
+                continue;   /* no memory: the layout fails on drawing */
+            cf_bezier_get_points(line, p);
+            for (int k = 0; k <= deg; k++)
+                add_projected(e->fig, p + 3 * k, b);
+            cf_free(p);
+        }
+    } else if (e->tri != NULL) {
         for (int i = 0; i < N; i++)
             for (int j = 0; i + j < N; j++)
                 if (cf_bezier_triangle_eval(e->tri, (double)i / (N - 1),
@@ -617,4 +631,36 @@ cf__figure_surface_pieces(cf_figure_t *fig, double tol,
             surf(closure, i, e->s, e->tri, e->opt.occludes);
     }
     return st;
+}
+
+cf_status_t
+cf_figure_add_space_curves(cf_figure_t *fig, const cf_bezier_list_t *list,
+                           cf_hidden_t hidden, const cf_style_t *style)
+{
+    surface_el_t *e;
+    cf_surface_lines_t lines;
+    cf_status_t st = CF_STATUS_OK;
+    CF__FIG_CHECK(fig);
+    if (list == NULL || (list->count > 0 && list->items == NULL))
+        return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
+                           "space curve: the list is NULL");
+    cf_surface_lines_init(&lines);
+    lines.boundary = lines.silhouette = lines.occludes = false;
+    lines.hidden = hidden;
+    e = new_surface(fig, 3, &lines, style);
+    if (e == NULL)
+        return fig->err.status;
+    for (size_t i = 0; i < list->count && st == CF_STATUS_OK; i++) {
+        cf_bezier_t *c = NULL;
+        if (list->items[i] == NULL || cf_bezier_dim(list->items[i]) != 3) {
+            st = cf_diag_set(&fig->err, CF_STATUS_DIM_MISMATCH, (long)i,
+                             "space curve: item %zu is not a curve in R^3",
+                             i);
+            break;
+        }
+        st = cf_bezier_copy(list->items[i], &c, &fig->err);
+        if (st == CF_STATUS_OK)
+            st = cf__lines3_add(fig, &e->lines, OUTLINE, c, NULL);
+    }
+    return cf__element_commit(fig, e, st);
 }

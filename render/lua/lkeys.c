@@ -169,7 +169,9 @@ static const cf__lua_key_t reduce_keys[] = {
 static const cf__lua_key_t reduce_bspline_keys[] = {
     KEY("by"), KEY("tolerance"), NAMES("method", reduce_methods), END,
 };
-static const cf__lua_key_t range_keys[] = { KEY("range"), END };
+static const cf__lua_key_t range_keys[] = {
+    KEY("range"), NAMES("hidden", hidden_modes), END,
+};
 static const cf__lua_key_t closed_keys[] = { KEY("closed"), END };
 static const cf__lua_key_t scale_keys[] = { KEY("scale"), END };
 static const cf__lua_key_t net_keys[] = {

@@ -7,6 +7,8 @@
 #include <string.h>
 
 #include "curvefig/figure3d.h"
+#include "lbezier.h"
+#include "lbspline.h"
 #include "lcommon.h"
 #include "llabels.h"
 #include "lschema.h"
@@ -85,11 +87,11 @@ read_isolines(lua_State *L, int opts, cf_surface_lines_t *o)
 }
 
 static cf_hidden_t
-read_hidden(lua_State *L, int opts)
+read_hidden(lua_State *L, int opts, const char *fn, const char *def)
 {
     const char *h;
     cf__lua_field(L, opts, "hidden");
-    h = cf__lua_opt_text(L, -1, "surface", "hidden", "remove");
+    h = cf__lua_opt_text(L, -1, fn, "hidden", def);
     lua_pop(L, 1);
     return h[0] == 's' ? CF_HIDDEN_SHOW
         : h[0] == 'd' ? CF_HIDDEN_DASHED : CF_HIDDEN_REMOVE;
@@ -134,6 +136,42 @@ read_shading(lua_State *L, int opts, const cf_figure_t *fig,
         sh->has_light = true;
     }
     lua_pop(L, 1);
+}
+
+static void
+free_list(void *p)
+{
+    cf_bezier_list_destroy(p);
+}
+
+bool
+cf__lua_space_curve(lua_State *L, cf_figure_t *fig, int idx, int opts,
+                    const cf_style_t *st)
+{
+    cf_bezier_t *bz = cf__lua_to_bezier(L, idx);
+    cf_bspline_t *bs = cf__lua_to_bspline(L, idx);
+    cf_bezier_list_t one, *list = &one, **slot;
+    cf_hidden_t hidden;
+    cf_diag_t diag;
+    if (!cf_figure_get_view(fig, NULL)
+        || !((bz != NULL && cf_bezier_dim(bz) == 3)
+             || (bs != NULL && cf_bspline_dim(bs) == 3)))
+        return false;
+    hidden = read_hidden(L, opts, "curve", "dashed");
+    cf_diag_clear(&diag);
+    memset(&one, 0, sizeof one);
+    if (bz != NULL) {
+        one.count = 1;
+        one.items = &bz;
+    } else {
+        slot = (cf_bezier_list_t **)cf__lua_holder(L, free_list);
+        if (cf_bspline_to_beziers(bs, slot, &diag) != CF_STATUS_OK)
+            cf__lua_error(L, "curve: %s", diag.msg);
+        list = *slot;
+    }
+    check(L, "curve", cf_figure_add_space_curves(fig, list, hidden, st),
+          &diag);
+    return true;
 }
 
 /* The labels of the net's points: labels = "P_{%d%d}" gets (i, j) of a
@@ -206,7 +244,7 @@ m_surface(lua_State *L)
     o.silhouette = cf__lua_opt_bool(L, 3, "silhouette", "surface", true);
     o.knot_lines = cf__lua_opt_bool(L, 3, "knot_lines", "surface", false);
     o.occludes = cf__lua_opt_bool(L, 3, "occludes", "surface", true);
-    o.hidden = read_hidden(L, 3);
+    o.hidden = read_hidden(L, 3, "surface", "remove");
     read_isolines(L, 3, &o);
     read_shading(L, 3, fig, &st, &o.shading);
     cf__lua_read_sub_style(L, 3, "iso_style", "surface", fig, &o.iso_style);

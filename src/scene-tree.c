@@ -15,17 +15,6 @@ typedef struct piece {
     int level;
 } piece_t;
 
-/* Measures of a view-space net: box, image and full diameters, weight
-** ratio, distance from the bilinear (linear) map of its corners, and
-** whether its image cells turn both ways. */
-typedef struct measure {
-    double lo[3], hi[3];
-    double diam, img;
-    double wratio, dev;
-    bool fold;
-    double ext[2];   /* image extent along s and t (tensor) */
-} measure_t;
-
 static double
 dist3(const double *a, const double *b)
 {
@@ -46,8 +35,9 @@ tidx(int n, int i, int j)
     return r * (r + 1) / 2 + (r - (size_t)j);
 }
 
-static void
-measure(const cf__vpatch_t *p, const double *net, double *c, measure_t *ms)
+void
+cf__vnet_measure(const cf__vpatch_t *p, const double *net, double *c,
+                 cf__vmeasure_t *ms)
 {
     size_t cnt = cf__vpatch_count(p);
     double wmin = HUGE_VAL, wmax = 0.0, pos = 0.0, neg = 0.0;
@@ -75,6 +65,12 @@ measure(const cf__vpatch_t *p, const double *net, double *c, measure_t *ms)
                      *c10 = c + 3 * (size_t)m * ((size_t)n + 1),
                      *c11 = c10 + 3 * (size_t)n;
         ms->ext[0] = ms->ext[1] = 0.0;
+        ms->twist = 0.25 * sqrt((c00[0] - c10[0] - c01[0] + c11[0]) *
+                                    (c00[0] - c10[0] - c01[0] + c11[0]) +
+                                (c00[1] - c10[1] - c01[1] + c11[1]) *
+                                    (c00[1] - c10[1] - c01[1] + c11[1]) +
+                                (c00[2] - c10[2] - c01[2] + c11[2]) *
+                                    (c00[2] - c10[2] - c01[2] + c11[2]));
         for (int i = 0; i <= m; i++)
             for (int j = 0; j <= n; j++) {
                 double a = (double)i / m, b = (double)j / n, q[3];
@@ -99,6 +95,8 @@ measure(const cf__vpatch_t *p, const double *net, double *c, measure_t *ms)
                                             x[1] - c[3 * (size_t)i * (n + 1) + 1]));
             }
     } else {
+        ms->twist = 0.0;
+        ms->ext[0] = ms->ext[1] = 0.0;
         const double *A = c + 3 * tidx(n, n, 0), *B = c + 3 * tidx(n, 0, n),
                      *C = c + 3 * tidx(n, 0, 0);
         for (int i = n; i >= 0; i--)
@@ -124,7 +122,8 @@ measure(const cf__vpatch_t *p, const double *net, double *c, measure_t *ms)
 }
 
 static cf_status_t
-push_leaf(cf_scene_t *sc, size_t ip, const piece_t *pc, const measure_t *ms)
+push_leaf(cf_scene_t *sc, size_t ip, const piece_t *pc,
+          const cf__vmeasure_t *ms)
 {
     cf__vleaf_t *l = cf__grow(sc->leaves, &sc->nleaf_cap, sc->nleaf + 1,
                               sizeof *l, 256);
@@ -191,13 +190,13 @@ cf__scene_leaves(cf_scene_t *sc, size_t ip)
     stack[nstack++] = root;
     while (nstack > 0) {
         piece_t pc = stack[--nstack];
-        measure_t ms;
-        measure(p, pc.net, cart, &ms);
+        cf__vmeasure_t ms;
+        cf__vnet_measure(p, pc.net, cart, &ms);
         bool leaf = st != CF_STATUS_OK || pc.level >= MAX_LEVEL ||
                     ms.diam <= sc->tol / 8 ||
                     (!ms.fold && ms.dev <= 0.15 * ms.diam &&
                      ms.wratio <= 1.2) ||
-                    (ms.fold && ms.img <= sc->tol);
+                    (ms.fold && (ms.img <= sc->tol || ms.dev <= sc->tol / 4));
         if (leaf) {
             if (st == CF_STATUS_OK)
                 st = push_leaf(sc, ip, &pc, &ms);

@@ -63,6 +63,22 @@ void cf__vnet_split(const double *net, int m, int n, int dir, double *lo,
 void cf__vtri_split(const double *net, int n, int a, int b, double *lo,
                     int perm_lo[3], double *hi, int perm_hi[3]);
 
+/* Measures of a net of the patch's shape (4-homogeneous; c receives its
+** Cartesian points, 3 doubles each): box, image (first two coordinates)
+** and full diameters, weight ratio, distance from the bilinear (linear)
+** map of its corners, a quarter of the corners' twist (tensor), whether
+** its cells turn both ways in the image, extents along s and t. */
+typedef struct cf__vmeasure {
+    double lo[3], hi[3];
+    double diam, img;
+    double wratio, dev, twist;
+    bool fold;
+    double ext[2];
+} cf__vmeasure_t;
+
+void cf__vnet_measure(const cf__vpatch_t *p, const double *net, double *c,
+                      cf__vmeasure_t *ms);
+
 /* A piece of a patch in the box tree: its parameter region (tensor:
 ** r = s0 s1 t0 t1; triangle: three corners (u v) of the patch), the box of
 ** its view-space net, and whether its image may fold. */
@@ -124,6 +140,19 @@ bool cf__scene_hidden(const cf_scene_t *sc, const double *q,
 ** parameters on it (s, t); false if none. */
 bool cf__scene_find(const cf_scene_t *sc, size_t surface, double u, double v,
                     size_t *ip, double *s, double *t);
+
+/* A growing array of facets. */
+typedef struct cf__facet_buf {
+    cf_facet_t *items;
+    size_t n, cap;
+} cf__facet_buf_t;
+
+/* The painting order of the facets of fb by a BSP tree (vis-bsp.c):
+** facets crossing a plane (beyond eps) are split, the pieces appended to
+** fb; *order (cf__free) lists the facets to draw, back first. */
+cf_status_t cf__bsp_order(cf__facet_buf_t *fb, const cf_view_t *view,
+                          double eps, size_t **order, size_t *norder,
+                          size_t *splits);
 
 /* Image (x, y) and depth zeta of a view-space Cartesian point from a
 ** space point; false at or behind the eye. */

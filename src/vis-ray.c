@@ -225,7 +225,8 @@ cf__scene_hidden(const cf_scene_t *sc, const double *q,
             }
             /* a folding leaf no wider than tol where Newton found nothing:
             ** decided by its middle */
-            if (l->fold && found == 0 && l->lo[2] > zmin) {
+            if (l->fold && found == 0 && l->lo[2] > zmin &&
+                hypot(l->hi[0] - l->lo[0], l->hi[1] - l->lo[1]) <= sc->tol) {
                 if (occ != NULL)
                     *occ = p->surface;
                 return true;

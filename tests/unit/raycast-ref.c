@@ -9,11 +9,15 @@
 
 typedef long double ld;
 
+/* Samples of each piece for the starting points of Newton. */
+#define GRID 6
+
 typedef struct rc_patch {
     bool tri;
     int m, n;         /* degrees (triangle: n) */
     ld *h;            /* homogeneous (w x, w y, w z, w) */
     ld lo[3], hi[3];  /* box of the Cartesian control points */
+    ld grid[GRID][GRID][3];  /* S at (i + 1/2, j + 1/2) / GRID */
 } rc_patch_t;
 
 struct rc_scene {
@@ -41,6 +45,8 @@ rc_destroy(rc_scene_t *rc)
     free(rc->p);
     free(rc);
 }
+
+static void eval(const struct rc_patch *p, ld u, ld v, ld *out);
 
 static size_t
 count(bool tri, int m, int n)
@@ -85,12 +91,21 @@ add(rc_scene_t *rc, bool tri, int m, int n, const double *pts,
         }
         p->h[4 * i + 3] = w[i];
     }
+    for (int i = 0; i < GRID; i++)
+        for (int j = 0; j < GRID; j++) {
+            ld u = (i + 0.5L) / GRID, v = (j + 0.5L) / GRID;
+            if (tri && u + v > 1) {
+                u = u / (u + v + 0.01L);
+                v = v / (u + v + 0.01L);
+            }
+            eval(p, u, v, p->grid[i][j]);
+        }
     rc->n++;
     return true;
 }
 
 static bool
-add_bez(rc_scene_t *rc, const cf_bezier_surface_t *s)
+add_piece(rc_scene_t *rc, const cf_bezier_surface_t *s)
 {
     int m = cf_bezier_surface_degree_u(s), n = cf_bezier_surface_degree_v(s);
     size_t cnt = count(false, m, n);
@@ -104,6 +119,27 @@ add_bez(rc_scene_t *rc, const cf_bezier_surface_t *s)
     cf_bezier_surface_get_weights(s, pts + 3 * cnt);
     ok = add(rc, false, m, n, pts, pts + 3 * cnt);
     free(pts);
+    return ok;
+}
+
+/* A patch as SPLIT x SPLIT pieces (cf_bezier_surface_segment): their
+** boxes are tighter, so fewer are crossed by a line of sight. */
+#define SPLIT 2
+static bool
+add_bez(rc_scene_t *rc, const cf_bezier_surface_t *s)
+{
+    bool ok = true;
+    for (int i = 0; i < SPLIT && ok; i++)
+        for (int j = 0; j < SPLIT && ok; j++) {
+            cf_bezier_surface_t *seg = NULL;
+            ok = cf_bezier_surface_segment(s, (double)i / SPLIT,
+                                           (double)(i + 1) / SPLIT,
+                                           (double)j / SPLIT,
+                                           (double)(j + 1) / SPLIT, &seg,
+                                           NULL) == CF_STATUS_OK &&
+                 add_piece(rc, seg);
+            cf_bezier_surface_destroy(seg);
+        }
     return ok;
 }
 
@@ -146,7 +182,7 @@ rc_add_triangle(rc_scene_t *rc, const cf_bezier_triangle_t *t)
 
 /* S(u, v) by de Casteljau, long double. */
 static void
-eval(const rc_patch_t *p, ld u, ld v, ld *out)
+eval(const struct rc_patch *p, ld u, ld v, ld *out)
 {
     ld buf[4 * 1089], col[4 * 33];
     if (p->tri) {
@@ -203,27 +239,42 @@ sight(const rc_scene_t *rc, const double *p, ld *e, ld *smax)
 }
 
 /* The line crosses the box of the patch (slab test, margin pad). */
+/* The part [*s0, *s1] of the line o + s e within [s0, s1] in the box
+** lo..hi (slab test); false when empty. */
 static bool
-crosses(const rc_patch_t *p, const double *o, const ld *e, ld smax, ld pad)
+slab(const ld *lo, const ld *hi, const double *o, const ld *e, ld *s0,
+     ld *s1)
 {
-    ld t0 = 0.0L, t1 = smax;
+    ld t0 = *s0, t1 = *s1;
     for (int c = 0; c < 3; c++) {
-        ld lo = p->lo[c] - pad, hi = p->hi[c] + pad;
         if (fabsl(e[c]) < 1e-30L) {
-            if (o[c] < lo || o[c] > hi)
+            if (o[c] < lo[c] || o[c] > hi[c])
                 return false;
             continue;
         }
-        ld a = (lo - o[c]) / e[c], b = (hi - o[c]) / e[c];
-        if (a > b) {
-            ld x = a;
-            a = b;
-            b = x;
-        }
-        t0 = fmaxl(t0, a);
-        t1 = fminl(t1, b);
+        ld a = (lo[c] - o[c]) / e[c], b = (hi[c] - o[c]) / e[c];
+        t0 = fmaxl(t0, fminl(a, b));
+        t1 = fminl(t1, fmaxl(a, b));
     }
+    *s0 = t0;
+    *s1 = t1;
     return t0 <= t1;
+}
+
+/* The line crosses the box of the patch (pad around it) for s in
+** [*s0, *s1] within [0, smax]. */
+static bool
+crosses(const rc_patch_t *p, const double *o, const ld *e, ld smax, ld pad,
+        ld *s0, ld *s1)
+{
+    ld lo[3], hi[3];
+    for (int c = 0; c < 3; c++) {
+        lo[c] = p->lo[c] - pad;
+        hi[c] = p->hi[c] + pad;
+    }
+    *s0 = 0.0L;
+    *s1 = smax;
+    return slab(lo, hi, o, e, s0, s1);
 }
 
 static bool
@@ -238,14 +289,10 @@ inside(const rc_patch_t *p, ld u, ld v)
 /* Newton on F(u, v, s) = S(u, v) - o - s e from (u, v); the derivatives
 ** by central differences.  true with the solution. */
 static bool
-newton(const rc_patch_t *p, const double *o, const ld *e, ld u, ld v,
+newton(const rc_patch_t *p, const double *o, const ld *e, ld u, ld v, ld s,
        ld *su, ld *sv, ld *ss)
 {
-    ld S[3], s = 0.0L, ee = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
-    eval(p, u, v, S);
-    for (int c = 0; c < 3; c++)
-        s += (S[c] - o[c]) * e[c];
-    s /= ee;
+    ld S[3];
     for (int it = 0; it < 40; it++) {
         ld F[3], A[3], B[3], J[3][3], h = 1e-7L;
         eval(p, u, v, S);
@@ -293,14 +340,111 @@ newton(const rc_patch_t *p, const double *o, const ld *e, ld u, ld v,
         u += d[0];
         v += d[1];
         s += d[2];
-        if (!(u > -1 && u < 2 && v > -1 && v < 2))
+        if (!(u > -0.5L && u < 1.5L && v > -0.5L && v < 1.5L))
             return false;
     }
     return false;
 }
 
+/* Subdivision of tensor pieces (degrees up to SUB_DEG): halve the net
+** until its box, crossed by the line of sight beyond the margin, is
+** smaller than SUB_MIN of the piece. */
+#define SUB_DEG 8
+#define SUB_MIN 1e-7L
+
+typedef struct ray {
+    const double *o;
+    const ld *e;
+    ld s0, s1, stop;
+    ld best;        /* nearest s found */
+    bool first_only;
+    long budget;    /* boxes left to look at */
+} ray_t;
+
+static bool
+net_crosses(const ld *net, size_t cnt, const ray_t *r, ld *size)
+{
+    ld lo[3] = {HUGE_VALL, HUGE_VALL, HUGE_VALL};
+    ld hi[3] = {-HUGE_VALL, -HUGE_VALL, -HUGE_VALL};
+    ld t0 = r->s0, t1 = fminl(r->s1, r->best);
+    for (size_t i = 0; i < cnt; i++)
+        for (int c = 0; c < 3; c++) {
+            ld x = net[4 * i + c] / net[4 * i + 3];
+            lo[c] = fminl(lo[c], x);
+            hi[c] = fmaxl(hi[c], x);
+        }
+    *size = 0.0L;
+    for (int c = 0; c < 3; c++)
+        *size = fmaxl(*size, hi[c] - lo[c]);
+    return slab(lo, hi, r->o, r->e, &t0, &t1);
+}
+
+static void
+subdivide(const ld *net, int m, int n, ray_t *r, int depth)
+{
+    size_t cnt = (size_t)(m + 1) * (size_t)(n + 1);
+    ld size, lo[(SUB_DEG + 1) * (SUB_DEG + 1) * 4],
+        hi[(SUB_DEG + 1) * (SUB_DEG + 1) * 4];
+    if (r->budget-- <= 0 || (r->first_only && r->best < HUGE_VALL) ||
+        !net_crosses(net, cnt, r, &size))
+        return;
+    if (size <= r->stop || depth >= 60) {
+        /* a hit: its s is about the middle of the crossing */
+        ld c[3] = {0, 0, 0}, s = 0.0L, ee = 0.0L;
+        for (size_t i = 0; i < cnt; i++)
+            for (int k = 0; k < 3; k++)
+                c[k] += net[4 * i + k] / net[4 * i + 3] / (ld)cnt;
+        for (int k = 0; k < 3; k++) {
+            s += (c[k] - r->o[k]) * r->e[k];
+            ee += r->e[k] * r->e[k];
+        }
+        s /= ee;
+        if (s < r->best)
+            r->best = fmaxl(s, r->s0);
+        return;
+    }
+    /* halve in the direction of the longer extent of the net */
+    ld eu = 0.0L, ev = 0.0L;
+    for (int i = 0; i <= m; i++)
+        for (int c = 0; c < 3; c++) {
+            const ld *a = net + 4 * (size_t)i * (n + 1),
+                     *b = net + 4 * ((size_t)i * (n + 1) + n);
+            ev = fmaxl(ev, fabsl(a[c] / a[3] - b[c] / b[3]));
+        }
+    for (int j = 0; j <= n; j++)
+        for (int c = 0; c < 3; c++) {
+            const ld *a = net + 4 * j, *b = net + 4 * ((size_t)m * (n + 1) + j);
+            eu = fmaxl(eu, fabsl(a[c] / a[3] - b[c] / b[3]));
+        }
+    bool in_u = eu >= ev;
+    int d = in_u ? m : n;
+    size_t lines = in_u ? (size_t)n + 1 : (size_t)m + 1;
+    for (size_t l = 0; l < lines; l++) {
+        ld tmp[(SUB_DEG + 1) * 4];
+        for (int k = 0; k <= d; k++) {
+            size_t idx = in_u ? (size_t)k * (n + 1) + l : l * (n + 1) + k;
+            memcpy(tmp + 4 * k, net + 4 * idx, 4 * sizeof(ld));
+        }
+        for (int lev = 0; lev <= d; lev++) {
+            size_t ia = in_u ? (size_t)lev * (n + 1) + l : l * (n + 1) + lev;
+            size_t ib = in_u ? (size_t)(d - lev) * (n + 1) + l
+                             : l * (n + 1) + (d - lev);
+            memcpy(lo + 4 * ia, tmp, 4 * sizeof(ld));
+            memcpy(hi + 4 * ib, tmp + 4 * (d - lev), 4 * sizeof(ld));
+            for (int k = 0; k < d - lev; k++)
+                for (int c = 0; c < 4; c++)
+                    tmp[4 * k + c] = 0.5L * (tmp[4 * k + c] + tmp[4 * k + 4 + c]);
+        }
+    }
+    subdivide(lo, m, n, r, depth + 1);
+    subdivide(hi, m, n, r, depth + 1);
+}
+
+/* Points on the line of sight beyond margin (all of them, or stop at the
+** first when first_only). */
 static size_t
-hits(const rc_scene_t *rc, const double *p, double margin, ld *nearest)
+hits(const rc_scene_t *rc, const double *p, double margin, ld *nearest,
+     bool first_only)
 {
     ld e[3], smax, en;
     size_t found = 0;
@@ -309,23 +453,69 @@ hits(const rc_scene_t *rc, const double *p, double margin, ld *nearest)
     *nearest = HUGE_VALL;
     for (size_t k = 0; k < rc->n; k++) {
         const rc_patch_t *pt = &rc->p[k];
-        const int G = 7;
-        if (!crosses(pt, p, e, smax, (ld)margin))
+        /* uniform along the crossing, and denser near its start (a line
+        ** of sight that grazes the sheet of its own point) */
+        static const ld at[] = {0.1L, 0.3L, 0.5L, 0.7L, 0.9L, 0.002L,
+                                0.006L, 0.02L, 0.05L};
+        const int K = (int)(sizeof at / sizeof *at);
+        ld s0, s1;
+        if (!crosses(pt, p, e, smax, (ld)margin, &s0, &s1))
             continue;
-        for (int a = 0; a < G; a++)
-            for (int b = 0; b < G; b++) {
-                ld u = (a + 0.5L) / G, v = (b + 0.5L) / G, su, sv, ss;
-                if (pt->tri && u + v > 1)
-                    continue;
-                if (!newton(pt, p, e, u, v, &su, &sv, &ss))
-                    continue;
-                ld dist = ss * en;
-                if (dist > margin && ss < smax) {
-                    found++;
-                    if (dist < *nearest)
-                        *nearest = dist;
-                }
+        s0 = fmaxl(s0, (ld)margin / en);
+        if (s1 < s0)
+            continue;
+        if (!pt->tri && pt->m <= SUB_DEG && pt->n <= SUB_DEG) {
+            ld size = 0.0L;
+            for (int c = 0; c < 3; c++)
+                size = fmaxl(size, pt->hi[c] - pt->lo[c]);
+            ray_t r = {p, e, (ld)margin / en, smax, SUB_MIN * size,
+                       HUGE_VALL, first_only, 200000};
+            subdivide(pt->h, pt->m, pt->n, &r, 0);
+            if (r.best < HUGE_VALL) {
+                found++;
+                if (r.best * en < *nearest)
+                    *nearest = r.best * en;
+                if (first_only)
+                    return found;
             }
+            continue;
+        }
+        /* starts along the crossing: the grid sample nearest the line's
+        ** point, at K points of the line in the box */
+        if (s1 > 1e6L)
+            s1 = s0 + 1e6L;
+        for (int a = 0; a < K; a++) {
+            ld s = s0 + at[a] * (s1 - s0), x[3], best = HUGE_VALL;
+            ld u = 0.5L, v = 0.5L, su, sv, ss;
+            for (int c = 0; c < 3; c++)
+                x[c] = p[c] + s * e[c];
+            for (int i = 0; i < GRID; i++)
+                for (int j = 0; j < GRID; j++) {
+                    const ld *g = pt->grid[i][j];
+                    ld d = (g[0] - x[0]) * (g[0] - x[0]) +
+                           (g[1] - x[1]) * (g[1] - x[1]) +
+                           (g[2] - x[2]) * (g[2] - x[2]);
+                    if (d < best) {
+                        best = d;
+                        u = (i + 0.5L) / GRID;
+                        v = (j + 0.5L) / GRID;
+                    }
+                }
+            if (pt->tri && u + v > 1) {
+                u = u / (u + v + 0.01L);
+                v = v / (u + v + 0.01L);
+            }
+            if (!newton(pt, p, e, u, v, s, &su, &sv, &ss))
+                continue;
+            ld dist = ss * en;
+            if (dist > margin && ss < smax) {
+                found++;
+                if (dist < *nearest)
+                    *nearest = dist;
+                if (first_only)
+                    return found;
+            }
+        }
     }
     return found;
 }
@@ -334,7 +524,7 @@ bool
 rc_hidden(const rc_scene_t *rc, const double *p, double margin, double *dist)
 {
     ld near;
-    bool h = hits(rc, p, margin, &near) > 0;
+    bool h = hits(rc, p, margin, &near, dist == NULL) > 0;
     if (dist != NULL)
         *dist = h ? (double)near : 0.0;
     return h;
@@ -344,5 +534,5 @@ size_t
 rc_hits(const rc_scene_t *rc, const double *p, double margin)
 {
     ld near;
-    return hits(rc, p, margin, &near);
+    return hits(rc, p, margin, &near, false);
 }

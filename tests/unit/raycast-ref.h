@@ -32,7 +32,8 @@ bool rc_add_triangle(rc_scene_t *rc, const cf_bezier_triangle_t *t);
 
 /* Whether a surface point lies on the line of sight from p towards the
 ** eye farther than `margin` (in space) from p.  *dist (may be NULL)
-** receives the distance of the nearest such point from p (0 when none). */
+** receives the distance of the nearest such point from p (0 when none);
+** without it the search stops at the first point found. */
 bool rc_hidden(const rc_scene_t *rc, const double *p, double margin,
                double *dist);
 

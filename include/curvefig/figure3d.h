@@ -50,16 +50,17 @@ typedef enum cf_hidden {
     CF_HIDDEN_REMOVE        /* left out */
 } cf_hidden_t;
 
-/* Shading of a surface: its facets (cf_scene_facets, within 0.3 bp of
-** the surface on the page) painted back to front under every line of the
-** figure, each in the front or back colour (the side facing the viewer
-** is the normal side Su x Sv: front) lit by a distant light:
-** colour * (0.35 + 0.65 |n . L|), n the facet's normal (flat) or the
-** surface's normal at the facet's centroid interpolated from its corners
-** (smooth), L the light direction (default: from the upper left, in front
-** of the viewer: d + 0.6 ey - 0.4 ex normalised).  Neighbouring facets
-** are painted with a hairline of their own colour so no seam shows
-** (not when opacity < 1). */
+/* Shading of a surface: its facets (cf_scene_facets_tol, within 2.5 bp
+** of the surface on the page) painted back to front under every line of
+** the figure, each in the front or back colour (the side facing the
+** viewer is the normal side Su x Sv: front) lit by a distant light:
+** colour * (0.35 + 0.65 |n . L|), n the facet's plane's normal (flat), or
+** (smooth) each facet cut in four at its edges' midpoints and each piece
+** lit by the surface's normals interpolated at its centroid; L the light
+** direction (default: from the upper left, in front of the viewer:
+** d + 0.6 ey - 0.4 ex normalised).  Each piece is also stroked with a
+** hairline of its own colour so no seam shows (not when opacity < 1).
+** PDF mesh gradients are not written. */
 typedef enum cf_shade {
     CF_SHADE_NONE = 0,
     CF_SHADE_FLAT,

@@ -55,23 +55,27 @@ cf_status_t cf__triangle_lines(cf_figure_t *fig,
                                const cf_surface_lines_t *o,
                                cf__lines3_t *out);
 
-/* Paint the facets of scene sc (surface-shade.c) in painting order, a
-** facet of surface k with by_id[k] (k < nids; NULL or shade NONE: not
-** painted), lit as curvefig/figure3d.h says. */
+/* Paint the facets of scene sc within tol (surface-shade.c) in painting
+** order, a facet of surface k with by_id[k] (k < nids; NULL or shade
+** NONE: not painted), lit as curvefig/figure3d.h says. */
 cf_status_t cf__shade_facets(cf_figure_t *fig, const cf_scene_t *sc,
+                             double tol,
                              const cf_surface_shading_t *const *by_id,
                              size_t nids, const cf__layout_t *l,
                              cf__dl_t *dl);
 
 /* For tests: every piece of every line the surface elements of fig split
 ** by the scene when laid out with tolerance tol (data units): fn(closure,
-** element index, family, line in R^3, t0, t1, visible) (hidden pieces too
-** when hidden = "remove"; nothing of lines drawn whole, hidden = "show").  And every surface element:
+** element index, family, line in R^3, its (u, v) line on the surface (or
+** NULL) with its distance from it (offset: a silhouette's error in space),
+** t0, t1, visible) (hidden pieces too when hidden = "remove"; nothing of
+** lines drawn whole, hidden = "show").  And every surface element:
 ** surf(closure, element index, B-spline surface or triangle (one NULL),
 ** occludes). */
 typedef void (*cf__surface_piece_fn)(void *closure, size_t el, int family,
-                                     const cf_bezier_t *bez, double t0,
-                                     double t1, bool visible);
+                                     const cf_bezier_t *bez,
+                                     const cf_bezier_t *uv, double offset,
+                                     double t0, double t1, bool visible);
 typedef void (*cf__surface_fn)(void *closure, size_t el,
                                const cf_bspline_surface_t *s,
                                const cf_bezier_triangle_t *t,

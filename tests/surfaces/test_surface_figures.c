@@ -75,6 +75,9 @@ run(const char *name)
 
 typedef struct piece {
     cf_bezier_t *bez;
+    cf_bezier_t *uv;           /* on its surface, or NULL */
+    double offset;
+    size_t el;
     double t0, t1;
     bool visible;
     int family;
@@ -83,22 +86,30 @@ typedef struct piece {
 typedef struct probe {
     piece_t *pieces;
     size_t n, cap;
+    /* the surfaces by element index, for the normals of silhouettes */
+    const cf_bspline_surface_t *surf[256];
+    const cf_bezier_triangle_t *tri[256];
     rc_scene_t *rc;
     size_t occluders;
 } probe_t;
 
 static void
 on_piece(void *closure, size_t el, int family, const cf_bezier_t *bez,
-         double t0, double t1, bool visible)
+         const cf_bezier_t *uv, double offset, double t0, double t1,
+         bool visible)
 {
     probe_t *p = closure;
-    (void)el;
     if (p->n == p->cap) {
         p->cap = p->cap ? 2 * p->cap : 256;
         p->pieces = realloc(p->pieces, p->cap * sizeof *p->pieces);
         assert_non_null(p->pieces);
     }
     assert_int_equal(cf_bezier_copy(bez, &p->pieces[p->n].bez, NULL), 0);
+    p->pieces[p->n].uv = NULL;
+    if (uv != NULL)
+        assert_int_equal(cf_bezier_copy(uv, &p->pieces[p->n].uv, NULL), 0);
+    p->pieces[p->n].offset = offset;
+    p->pieces[p->n].el = el;
     p->pieces[p->n].t0 = t0;
     p->pieces[p->n].t1 = t1;
     p->pieces[p->n].visible = visible;
@@ -111,7 +122,10 @@ on_surface(void *closure, size_t el, const cf_bspline_surface_t *s,
            const cf_bezier_triangle_t *t, bool occludes)
 {
     probe_t *p = closure;
-    (void)el;
+    if (el < 256) {
+        p->surf[el] = s;
+        p->tri[el] = t;
+    }
     if (!occludes)
         return;
     assert_true(t != NULL ? rc_add_triangle(p->rc, t)
@@ -126,6 +140,37 @@ image_dist(const cf_view_t *v, const double *a, const double *b)
     assert_int_equal(cf_view_project(v, a, pa, NULL), 0);
     assert_int_equal(cf_view_project(v, b, pb, NULL), 0);
     return hypot(pa[0] - pb[0], pa[1] - pb[1]);
+}
+
+/* Whether the sample x of piece pc at t is hidden (1) or visible (0), or
+** -1 when that is not decided within the tolerance.  A silhouette point
+** (offset > 0) has the line of sight tangent to its surface, and lies
+** within offset of it on either side: the ray caster is asked at x moved
+** off the surface along the normal by 2 (offset + vtol) on both sides; the
+** answer counts when both agree (the surface's own tangent touch near x
+** hides one of them at most; both differ only within that distance of
+** another contour in front, a split within tolerance). */
+static int
+sample_hidden(const probe_t *p, const piece_t *pc, double t, const double *x,
+              double vtol, double *dist)
+{
+    double uv[2], n[3], y[3], e = 2 * (pc->offset + vtol);
+    bool a, b;
+    if (!(pc->offset > 0) || pc->uv == NULL || pc->el >= 256)
+        return rc_hidden(p->rc, x, 2 * vtol, dist);
+    assert_int_equal(cf_bezier_eval(pc->uv, t, uv), 0);
+    if ((p->tri[pc->el] != NULL
+         ? cf_bezier_triangle_normal(p->tri[pc->el], uv[0], uv[1], n)
+         : cf_bspline_surface_normal(p->surf[pc->el], uv[0], uv[1], n))
+        != CF_STATUS_OK)
+        return rc_hidden(p->rc, x, 2 * vtol, dist);
+    for (int k = 0; k < 3; k++)
+        y[k] = x[k] + e * n[k];
+    a = rc_hidden(p->rc, y, 2 * vtol, dist);
+    for (int k = 0; k < 3; k++)
+        y[k] = x[k] - e * n[k];
+    b = rc_hidden(p->rc, y, 2 * vtol, dist);
+    return a == b ? a : -1;
 }
 
 /* Samples of one figure that disagree with the ray caster; *checked
@@ -159,7 +204,7 @@ check_figure(const char *script, const char *name, cf_figure_t *fig,
         for (int k = 0; k < K && p.occluders > 0; k++) {
             double t = pc->t0 + (k + 0.5) / K * (pc->t1 - pc->t0), x[3];
             double dist = 0;
-            bool hidden;
+            int hidden;
             assert_int_equal(cf_bezier_eval(pc->bez, t, x), 0);
             /* a split point's neighbourhood is left out: the split is
             ** found to vtol on the page */
@@ -168,9 +213,11 @@ check_figure(const char *script, const char *name, cf_figure_t *fig,
                 continue;
             /* a surface point nearer than the library's depth tolerance
             ** hides nothing (the line's own surface at the line) */
-            hidden = rc_hidden(p.rc, x, 2 * vtol, &dist);
+            hidden = sample_hidden(&p, pc, t, x, vtol, &dist);
+            if (hidden < 0)
+                continue;
             (*checked)++;
-            if (hidden == pc->visible) {
+            if ((hidden == 1) == pc->visible) {
                 if (bad < 5)
                     print_message("%s %s: family %d piece [%g, %g] drawn "
                                   "%s, at t = %g (%g, %g, %g) the ray "
@@ -183,6 +230,7 @@ check_figure(const char *script, const char *name, cf_figure_t *fig,
             }
         }
         cf_bezier_destroy(pc->bez);
+        cf_bezier_destroy(pc->uv);
     }
     free(p.pieces);
     rc_destroy(p.rc);

@@ -33,8 +33,7 @@ local g = figure{
   view = { -55, 28 },
 }
 g:surface(s, { hidden = "remove", silhouette = false, width = 0.8,
-               color = "#9aa5b5", net = { color = "grey" } })
-g:surface(s, { boundary = false, silhouette = false, occludes = false,
-               isolines = { u = { 0.4 }, v = { 0.6 } }, hidden = "remove",
+               color = "#9aa5b5", net = { color = "grey" },
+               isolines = { u = { 0.4 }, v = { 0.6 } },
                iso_style = { color = "#9aa5b5", dash = "dashed" } })
 g:decasteljau_surface(s, 0.4, 0.6, { width = 0.6 })

@@ -6,8 +6,10 @@
 
 #include "vis-private.h"
 
-/* Pieces: a subdivision level at most this deep. */
+/* Pieces: a subdivision level at most this deep, and at most MAX_LEAVES
+** per patch (then the rest are kept as they are: Newton still decides). */
 #define MAX_LEVEL 26
+#define MAX_LEAVES 131072
 
 typedef struct piece {
     double *net;
@@ -160,6 +162,7 @@ cf__scene_leaves(cf_scene_t *sc, size_t ip)
 {
     const cf__vpatch_t *p = &sc->patches[ip];
     size_t cnt = cf__vpatch_count(p), nstack = 0, cap = 0;
+    size_t first = sc->nleaf;
     piece_t *stack = NULL;
     double *cart = cf__alloc_array(cnt, 3 * sizeof(double));
     cf_status_t st = CF_STATUS_OK;
@@ -193,6 +196,7 @@ cf__scene_leaves(cf_scene_t *sc, size_t ip)
         cf__vmeasure_t ms;
         cf__vnet_measure(p, pc.net, cart, &ms);
         bool leaf = st != CF_STATUS_OK || pc.level >= MAX_LEVEL ||
+                    sc->nleaf - first >= MAX_LEAVES ||
                     ms.diam <= sc->tol / 8 ||
                     (!ms.fold && ms.dev <= 0.15 * ms.diam &&
                      ms.wratio <= 1.2) ||

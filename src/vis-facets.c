@@ -6,8 +6,10 @@
 
 #include "vis-private.h"
 
-/* At most 2^MAX_LEVEL cells per direction of a patch. */
+/* At most 2^MAX_LEVEL cells per direction of a patch, and MAX_FACETS
+** before the ordering (whose time can grow with their square). */
 #define MAX_LEVEL 7
+#define MAX_FACETS 100000
 
 static size_t
 tidx(int n, int i, int j)
@@ -304,6 +306,14 @@ cf_scene_facets_tol(const cf_scene_t *sc, double tol, cf_facets_t **out,
                         &fb);
     }
     cf__free(lv);
+    if (st == CF_STATUS_OK && fb.n > MAX_FACETS) {
+        size_t n = fb.n;
+        cf__free(fb.items);
+        cf_facets_destroy(res);
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
+                         "tolerance %g makes %zu facets, more than %d: "
+                         "give a larger one", tol, n, MAX_FACETS);
+    }
     if (st == CF_STATUS_OK)
         st = cf__bsp_order(&fb, &sc->view, 1e-9 * sc->size, &order, &norder,
                            &splits);

@@ -20,7 +20,12 @@ typedef struct ctx {
     cf_silhouette_t *out;
     size_t cap;
     size_t chains_cap;
+    long budget;        /* fits left for the scene (a bound on the work) */
 } ctx_t;
+
+/* Fits per call at most: beyond, pieces are kept as they are (converged
+** false). */
+#define BUDGET 400000L
 
 /* g(s, t) = (S_s x S_t) . v with v = d (orthographic) or E - S, and its
 ** gradient; false where the patch cannot be evaluated. */
@@ -248,6 +253,8 @@ span_fit(ctx_t *c, const double *A, const double *B, int depth)
     cf_silhouette_piece_t pc;
     memset(&pc, 0, sizeof pc);
     bool ok = fit(c, A, B, &pc);
+    if (--c->budget <= 0)
+        depth = 30;
     if (ok && (good(c, &pc) || depth >= 30 ||
                hypot(B[0] - A[0], B[1] - A[1]) <= 1e-9)) {
         if (!good(c, &pc))
@@ -274,8 +281,8 @@ chain_fit(ctx_t *c, const double *pts, size_t n, bool closed)
     while (i + 1 < n && st == CF_STATUS_OK) {
         size_t j = i + 1;
         cf_silhouette_piece_t pc;
-        while (j + 1 < n && fit(c, pts + 2 * i, pts + 2 * (j + 1), &pc) &&
-               good(c, &pc))
+        while (j + 1 < n && --c->budget > 0 &&
+               fit(c, pts + 2 * i, pts + 2 * (j + 1), &pc) && good(c, &pc))
             j++;
         st = span_fit(c, pts + 2 * i, pts + 2 * j, 0);
         i = j;
@@ -449,6 +456,7 @@ cf_scene_silhouette(const cf_scene_t *sc, size_t surface,
                          surface, sc->nsurf);
     memset(&c, 0, sizeof c);
     c.sc = sc;
+    c.budget = BUDGET;
     c.out = cf__calloc(1, sizeof *c.out);
     G = cf__malloc(sizeof *G);
     pts = cf__alloc_array(NE + 1, 2 * sizeof(double));

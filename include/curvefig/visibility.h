@@ -361,7 +361,9 @@ CF_API cf_status_t cf_scene_facets(const cf_scene_t *scene,
 ** triangles of its corners (net against the bilinear map of the corners,
 ** plus a quarter of the twist), the same levels for every patch of one
 ** surface so that neighbours share their edges; at most 2^7 per
-** direction (then deviation says what was reached).  The ordering costs
+** direction (then deviation says what was reached).  More than 100,000
+** facets before ordering is refused (INVALID_ARG, naming the count: a
+** larger tolerance is needed).  The ordering costs
 ** up to quadratic time in the number of facets (a closed convex surface
 ** makes the tree a chain): about 10^4 facets take a fraction of a second.
 */

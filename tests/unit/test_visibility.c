@@ -269,11 +269,10 @@ test_torus_perspective(void **state)
 
 /* z = x^2 - y^2 on [-1, 1]^2 as a Bézier patch of degrees (2, 2), seen
 ** from low: the saddle hides part of itself. */
-static cf_bezier_surface_t *
-saddle(void)
+static cf_status_t
+make_saddle(cf_bezier_surface_t **s)
 {
     double P[27];
-    cf_bezier_surface_t *s = NULL;
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 3; j++) {
             double *p = P + 3 * (3 * i + j);
@@ -284,7 +283,14 @@ saddle(void)
             double x2 = i == 1 ? -1.0 : 1.0, y2 = j == 1 ? -1.0 : 1.0;
             p[2] = x2 - y2;
         }
-    assert_int_equal(cf_bezier_surface_create(3, 2, 2, P, NULL, &s, NULL), 0);
+    return cf_bezier_surface_create(3, 2, 2, P, NULL, s, NULL);
+}
+
+static cf_bezier_surface_t *
+saddle(void)
+{
+    cf_bezier_surface_t *s = NULL;
+    assert_int_equal(make_saddle(&s), 0);
     return s;
 }
 
@@ -777,10 +783,224 @@ test_facets(void **state)
     cf_bspline_surface_destroy(s);
 }
 
+/* ---- views, projections, errors ----------------------------------------- */
+
+/* The axes are those of figure{view = ...} (render/lua/lfigure.c), the
+** image of a curve is the curve of the images (same degree; rational in
+** perspective), points behind the eye are refused. */
+static void
+test_projection(void **state)
+{
+    (void)state;
+    cf_view_t v;
+    double a = 0.7, e = 0.3;   /* radians of 40.107 and 17.188 degrees */
+    assert_int_equal(cf_view_orthographic(&v, a * 180 / M_PI,
+                                          e * 180 / M_PI, NULL), 0);
+    assert_true(fabs(v.ex[0] + sin(a)) < 1e-15 && fabs(v.ex[1] - cos(a)) < 1e-15);
+    assert_true(fabs(v.ey[0] + cos(a) * sin(e)) < 1e-15 &&
+                fabs(v.ey[1] + sin(a) * sin(e)) < 1e-15 &&
+                fabs(v.ey[2] - cos(e)) < 1e-15);
+    double P[12] = {0, 0, 0, 1, 2, 0.5, 2, -1, 1, 3, 0, -0.5};
+    double W[4] = {1, 2, 0.5, 1};
+    for (int persp = 0; persp < 2; persp++)
+        for (int rat = 0; rat < 2; rat++) {
+            cf_bezier_t *c = NULL, *img = NULL;
+            double T[3] = {1, 0, 0};
+            if (persp)
+                assert_int_equal(cf_view_perspective(&v, 30, 20, 8.0, T,
+                                                     NULL), 0);
+            else
+                assert_int_equal(cf_view_orthographic(&v, 30, 20, NULL), 0);
+            assert_int_equal(cf_bezier_create(3, 3, P, rat ? W : NULL, &c,
+                                              NULL), 0);
+            assert_int_equal(cf_view_project_bezier(&v, c, &img, NULL), 0);
+            assert_int_equal(cf_bezier_degree(img), 3);
+            assert_int_equal(cf_bezier_dim(img), 2);
+            assert_true(cf_bezier_is_rational(img) == (persp || rat));
+            for (int i = 0; i <= 20; i++) {
+                double x[3], q[2], r[2];
+                assert_int_equal(cf_bezier_eval(c, i / 20.0, x), 0);
+                assert_int_equal(cf_view_project(&v, x, q, NULL), 0);
+                assert_int_equal(cf_bezier_eval(img, i / 20.0, r), 0);
+                assert_true(hypot(q[0] - r[0], q[1] - r[1]) < 1e-13);
+            }
+            cf_bezier_destroy(c);
+            cf_bezier_destroy(img);
+        }
+    /* the target is drawn where the orthographic view draws it */
+    cf_view_t o;
+    double T[3] = {0.3, -0.2, 0.5}, q1[2], q2[2], z;
+    assert_int_equal(cf_view_orthographic(&o, 30, 20, NULL), 0);
+    assert_int_equal(cf_view_perspective(&v, 30, 20, 3.0, T, NULL), 0);
+    assert_int_equal(cf_view_project(&o, T, q1, NULL), 0);
+    assert_int_equal(cf_view_project(&v, T, q2, &z), 0);
+    assert_true(hypot(q1[0] - q2[0], q1[1] - q2[1]) < 1e-15 && z == 0.0);
+    assert_int_equal(cf_view_project(&v, v.eye, q1, NULL), CF_STATUS_DOMAIN);
+}
+
+static void
+expect(cf_status_t got, const cf_diag_t *d, cf_status_t want,
+       const char *words)
+{
+    assert_int_equal(got, want);
+    assert_int_equal(d->status, want);
+    if (strstr(d->msg, words) == NULL)
+        fail_msg("message \"%s\" does not say \"%s\"", d->msg, words);
+}
+
+static void
+test_errors(void **state)
+{
+    (void)state;
+    cf_view_t v;
+    cf_diag_t d;
+    cf_scene_t *sc = NULL;
+    expect(cf_view_orthographic(&v, NAN, 10, &d), &d, CF_STATUS_NOT_FINITE,
+           "azimuth");
+    expect(cf_view_perspective(&v, 10, 10, 0.0, NULL, &d), &d,
+           CF_STATUS_INVALID_ARG, "distance 0");
+    assert_int_equal(cf_view_orthographic(&v, 10, 20, NULL), 0);
+    expect(cf_scene_create(&v, 0.0, &sc, &d), &d, CF_STATUS_INVALID_ARG,
+           "tolerance 0 must be positive");
+    assert_null(sc);
+    expect(cf_scene_create(&v, NAN, &sc, &d), &d, CF_STATUS_NOT_FINITE,
+           "tolerance");
+    assert_int_equal(cf_scene_create(&v, 1e-3, &sc, &d), 0);
+    /* a patch whose points coincide */
+    double same[12] = {1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1};
+    cf_bezier_surface_t *b = NULL;
+    assert_int_equal(cf_bezier_surface_bilinear(3, same, &b, NULL), 0);
+    expect(cf_scene_add_bezier(sc, b, NULL, &d), &d, CF_STATUS_DEGENERATE,
+           "surface 0: the patch is degenerate");
+    cf_bezier_surface_destroy(b);
+    /* a surface in the plane */
+    double flat[8] = {0, 0, 0, 1, 1, 0, 1, 1};
+    assert_int_equal(cf_bezier_surface_bilinear(2, flat, &b, NULL), 0);
+    expect(cf_scene_add_bezier(sc, b, NULL, &d), &d, CF_STATUS_DIM_MISMATCH,
+           "R^2");
+    cf_bezier_surface_destroy(b);
+    /* degree 0 in v: a curve */
+    double line[6] = {0, 0, 0, 1, 0, 0};
+    assert_int_equal(cf_bezier_surface_create(3, 1, 0, line, NULL, &b, NULL),
+                     0);
+    expect(cf_scene_add_bezier(sc, b, NULL, &d), &d, CF_STATUS_DEGENERATE,
+           "degree 0 in v");
+    cf_bezier_surface_destroy(b);
+    /* a tolerance too fine for the scene's size */
+    double big[12] = {0, 0, 0, 0, 1e10, 0, 1e10, 0, 0, 1e10, 1e10, 1};
+    assert_int_equal(cf_bezier_surface_bilinear(3, big, &b, NULL), 0);
+    expect(cf_scene_add_bezier(sc, b, NULL, &d), &d, CF_STATUS_INVALID_ARG,
+           "below 1e-12 of the scene's size");
+    assert_int_equal(cf_scene_count(sc), 0);
+    cf_bezier_surface_destroy(b);
+    /* a curve not in R^3, a surface number out of range, a NaN point */
+    cf_bezier_t *c2 = NULL;
+    cf_visibility_t *vis = NULL;
+    double p2[4] = {0, 0, 1, 1};
+    assert_int_equal(cf_bezier_create(2, 1, p2, NULL, &c2, NULL), 0);
+    expect(cf_scene_curve_visibility(sc, c2, NULL, &vis, &d), &d,
+           CF_STATUS_DIM_MISMATCH, "R^2");
+    assert_null(vis);
+    cf_bezier_destroy(c2);
+    double pt[3] = {0, NAN, 0};
+    bool visible;
+    cf_vis_on_t on = {5, NULL, NULL, {0, 0}, 0.0};
+    expect(cf_scene_point_visible(sc, pt, NULL, &visible, NULL, &d), &d,
+           CF_STATUS_NOT_FINITE, "coordinate 1");
+    pt[1] = 0.0;
+    expect(cf_scene_point_visible(sc, pt, &on, &visible, NULL, &d), &d,
+           CF_STATUS_INVALID_ARG, "surface 5 is not in the scene");
+    cf_silhouette_t *sil = NULL;
+    expect(cf_scene_silhouette(sc, 3, &sil, &d), &d, CF_STATUS_INVALID_ARG,
+           "surface 3");
+    cf_facets_t *f = NULL;
+    expect(cf_scene_facets_tol(sc, -1.0, &f, &d), &d, CF_STATUS_INVALID_ARG,
+           "tolerance -1");
+    cf_scene_destroy(sc);
+    /* behind the eye */
+    double near[12] = {-1, -1, 0, -1, 1, 0, 1, -1, 0, 1, 1, 0};
+    assert_int_equal(cf_view_perspective(&v, 0, 90, 0.5, NULL, NULL), 0);
+    assert_int_equal(cf_scene_create(&v, 1e-3, &sc, NULL), 0);
+    near[2] = 0.7;   /* above the eye at z = 0.5 */
+    assert_int_equal(cf_bezier_surface_bilinear(3, near, &b, NULL), 0);
+    expect(cf_scene_add_bezier(sc, b, NULL, &d), &d, CF_STATUS_DOMAIN,
+           "control point 0 is not in front of the eye");
+    cf_bezier_surface_destroy(b);
+    cf_scene_destroy(sc);
+}
+
+/* Every allocation of a small scene's life failing in turn: NO_MEMORY,
+** nothing left behind. */
+static cf_status_t
+small_scene(void)
+{
+    double Q[12] = {-1, -1, 0, -1, 1, 0.3, 1, -1, 0.2, 1, 1, 0};
+    cf_bezier_surface_t *b = NULL, *sd = NULL;
+    cf_scene_t *sc = NULL;
+    cf_visibility_t *vis = NULL;
+    cf_silhouette_t *sil = NULL;
+    cf_facets_t *f = NULL;
+    cf_bezier_t *c = NULL;
+    cf_view_t v;
+    cf_diag_t d;
+    double L[6] = {-1.2, 0, -0.5, 1.2, 0.1, 0.8};
+    cf_status_t st;
+    cf_view_orthographic(&v, 20, 30, NULL);
+    st = cf_bezier_surface_bilinear(3, Q, &b, NULL);
+    if (st == CF_STATUS_OK)
+        st = make_saddle(&sd);
+    if (st == CF_STATUS_OK)
+        st = cf_scene_create(&v, 0.02, &sc, &d);
+    if (st == CF_STATUS_OK)
+        st = cf_scene_add_bezier(sc, b, NULL, &d);
+    if (st == CF_STATUS_OK)
+        st = cf_scene_add_bezier(sc, sd, NULL, &d);
+    if (st == CF_STATUS_OK)
+        st = cf_bezier_create(3, 1, L, NULL, &c, NULL);
+    if (st == CF_STATUS_OK)
+        st = cf_scene_curve_visibility(sc, c, NULL, &vis, &d);
+    if (st == CF_STATUS_OK)
+        st = cf_scene_silhouette(sc, SIZE_MAX, &sil, &d);
+    if (st == CF_STATUS_OK)
+        st = cf_scene_facets_tol(sc, 0.1, &f, &d);
+    if (st != CF_STATUS_OK && st != CF_STATUS_NO_MEMORY)
+        fail_msg("status %d: %s", st, d.msg);
+    cf_facets_destroy(f);
+    cf_silhouette_destroy(sil);
+    cf_visibility_destroy(vis);
+    cf_bezier_destroy(c);
+    cf_scene_destroy(sc);
+    cf_bezier_surface_destroy(b);
+    cf_bezier_surface_destroy(sd);
+    return st;
+}
+
+static void
+test_no_memory(void **state)
+{
+    (void)state;
+    long k;
+    for (k = 1; k < 100000; k++) {
+        tu_fail_alloc_after(k);
+        cf_status_t st = small_scene();
+        long live = tu_alloc_live();
+        tu_fail_alloc_reset();
+        if (live != 0)
+            fail_msg("allocation %ld failing: %ld blocks left", k, live);
+        if (st == CF_STATUS_OK)
+            break;
+    }
+    printf("# %ld allocations failed in turn\n", k - 1);
+    assert_true(k > 10 && k < 100000);
+}
+
 int
 main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_projection),
+        cmocka_unit_test(test_errors),
+        cmocka_unit_test(test_no_memory),
         cmocka_unit_test(test_sphere),
         cmocka_unit_test(test_torus),
         cmocka_unit_test(test_torus_perspective),

@@ -560,6 +560,15 @@ control_points(cf_figure_t *fig, surface_el_t *e, size_t n)
         cf_bezier_triangle_get_points(e->tri, e->cpts);
     else
         cf_bspline_surface_get_points(e->s, e->cpts);
+    /* the scene takes control points at least D / 1000 in front of the
+    ** eye (W = (D - z) / D >= 0.001) */
+    for (size_t i = 0; i < n && cf__fig_is_central(fig, 3); i++) {
+        double h[3];
+        if (!cf__fig_project_h(fig, e->cpts + 3 * i, 3, false, h)
+            || h[2] < 1e-3)
+            return cf__fig_behind_eye(fig, e->cpts + 3 * i,
+                                      "the surface's control point");
+    }
     return cf__check_degenerate(fig, e->cpts, n);
 }
 

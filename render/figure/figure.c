@@ -356,6 +356,47 @@ cf_figure_set_projection(cf_figure_t *fig, size_t dim, const double *m)
     return CF_STATUS_OK;
 }
 
+/* ---- projection through a view (render/figure/view.c sets it) ------- */
+
+bool
+cf__fig_is_central(const cf_figure_t *fig, size_t dim)
+{
+    return fig->has_view && dim == 3
+        && fig->view.projection == CF_PROJECTION_PERSPECTIVE;
+}
+
+bool
+cf__fig_project_h(const cf_figure_t *fig, const double *hp, size_t dim,
+                  bool rational, double out[3])
+{
+    double w = rational ? hp[dim] : 1.0;
+    if (cf__fig_is_central(fig, dim)) {
+        const double *m = fig->view_m;
+        for (int r = 0; r < 3; r++)
+            out[r] = m[4 * r] * hp[0] + m[4 * r + 1] * hp[1]
+                + m[4 * r + 2] * hp[2] + m[4 * r + 3] * w;
+        /* the eye itself or behind it (W = (D - z) / D w); a point
+        ** within 1e-9 D of the eye's plane is not drawable either */
+        return out[2] > 1e-9 * w;
+    }
+    cf__fig_project1(fig, hp, dim, out);
+    out[2] = w;
+    return true;
+}
+
+cf_status_t
+cf__fig_behind_eye(cf_figure_t *fig, const double *p, const char *what)
+{
+    double s = 0;
+    for (int k = 0; k < 3; k++)
+        s += fig->view.dir[k] * (p[k] - fig->view.target[k]);
+    return cf_diag_set(&fig->err, CF_STATUS_DOMAIN, -1,
+                       "%s (%g, %g, %g) lies at or behind the eye of the "
+                       "view (distance = %g); a distance above %g shows it",
+                       what, p[0], p[1], p[2], fig->view.distance,
+                       s > 0 ? 1.5 * s : fig->view.distance);
+}
+
 void
 cf__fig_project1(const cf_figure_t *fig, const double *p, size_t dim,
                  double *out)

@@ -246,7 +246,7 @@ cf_status_t cf__element_draw(cf_figure_t *fig, size_t i,
 double cf__role_font_size(const cf_figure_t *fig, cf_role_t role,
                           const cf_style_t *s);
 
-/* ---- view.c: the 3D view ----------------------------------------------- */
+/* ---- figure.c: projection through a 3D view (view.c sets it) ---------- */
 
 /* The image (X, Y, W) of homogeneous point hp = (w x, w) (rational) or
 ** Cartesian x (not rational) of dimension dim under the figure's

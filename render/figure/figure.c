@@ -356,7 +356,7 @@ cf_figure_set_projection(cf_figure_t *fig, size_t dim, const double *m)
     return CF_STATUS_OK;
 }
 
-/* ---- projection through a view (render/figure/view.c sets it) ------- */
+/* ---- projection through a view (render/figure/figure-view.c sets it) ------- */
 
 bool
 cf__fig_is_central(const cf_figure_t *fig, size_t dim)

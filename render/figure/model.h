@@ -173,7 +173,7 @@ struct cf_figure {
     bool clip_page;          /* ink outside the page is cut, not an error */
     size_t proj_dim;
     double *proj;            /* 2 x proj_dim */
-    bool has_view;           /* a 3D view (render/figure/view.c) */
+    bool has_view;           /* a 3D view (figure-view.c) */
     cf_view_t view;
     double view_m[12];       /* its homogeneous projection */
     struct cf_scene *scene;  /* the occluding surfaces, for a layout's
@@ -246,7 +246,7 @@ cf_status_t cf__element_draw(cf_figure_t *fig, size_t i,
 double cf__role_font_size(const cf_figure_t *fig, cf_role_t role,
                           const cf_style_t *s);
 
-/* ---- figure.c: projection through a 3D view (view.c sets it) ---------- */
+/* ---- figure.c: projection through a 3D view (figure-view.c sets it) ---------- */
 
 /* The image (X, Y, W) of homogeneous point hp = (w x, w) (rational) or
 ** Cartesian x (not rational) of dimension dim under the figure's

@@ -33,7 +33,7 @@ void cf__lines3_fini(cf__lines3_t *l);
 ** in one point has no normal: DEGENERATE, saying so. */
 cf_status_t cf__check_degenerate(cf_figure_t *fig, const double *p, size_t n);
 
-/* The lines of a B-spline surface that o asks for (surface-grid.c):
+/* The lines of a B-spline surface that o asks for (surface-lines-grid.c):
 ** boundary (outline), iso- and knot lines, the net of its control points
 ** cpts (Cartesian). */
 cf_status_t cf__bspline_lines(cf_figure_t *fig, const cf_bspline_surface_t *s,

@@ -178,16 +178,19 @@ cf__curve_add(cf_figure_t *fig, cf__element_t *el, cf_bezier_t *bez,
 }
 
 
-/* A planar copy of c (projected when dim >= 3). */
-static cf_status_t
-planar_bezier(cf_figure_t *fig, const cf_bezier_t *c, cf_bezier_t **out)
+/* A planar copy of c (projected when dim >= 3): the projection maps the
+** homogeneous control points (w x, w) to (w P x, w), or under a
+** perspective to the images (X, Y, W), so the copy is exact. */
+cf_status_t
+cf__fig_planar_bezier(cf_figure_t *fig, const cf_bezier_t *c,
+                      cf_bezier_t **out)
 {
     size_t dim = cf_bezier_dim(c), hd, i, np;
     int deg = cf_bezier_degree(c);
-    bool rat = cf_bezier_is_rational(c);
+    bool rat = cf_bezier_is_rational(c), hom;
     const double *hp = cf_bezier_hpoints(c);
     double *q;
-    cf_status_t st;
+    cf_status_t st = CF_STATUS_OK;
 
     if (dim == 2)
         return cf_bezier_copy(c, out, &fig->err);
@@ -196,20 +199,26 @@ planar_bezier(cf_figure_t *fig, const cf_bezier_t *c, cf_bezier_t **out)
                            "a curve in R^%zu cannot be drawn as a plane "
                            "curve (use a graph for functions)", dim);
     hd = dim + (rat ? 1 : 0);
+    hom = rat || cf__fig_is_central(fig, dim);
     np = (size_t)deg + 1;
     q = cf_alloc_array(np * 3, sizeof *q);
     if (q == NULL)
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
                            "out of memory projecting a curve");
-    for (i = 0; i < np; i++) {
-        /* the projection is linear, so it maps (w x, w) to (w Px, w) */
-        cf__fig_project1(fig, hp + i * hd, dim, q + i * (rat ? 3 : 2));
-        if (rat)
-            q[i * 3 + 2] = hp[i * hd + dim];
+    for (i = 0; i < np && st == CF_STATUS_OK; i++) {
+        double h[3];
+        if (!cf__fig_project_h(fig, hp + i * hd, dim, rat, h)) {
+            double p[3] = { 0, 0, 0 };
+            for (size_t k = 0; k < 3 && k < dim; k++)
+                p[k] = hp[i * hd + k] / (rat ? hp[i * hd + dim] : 1.0);
+            st = cf__fig_behind_eye(fig, p, "a curve's control point");
+            break;
+        }
+        memcpy(q + i * (hom ? 3 : 2), h, (hom ? 3 : 2) * sizeof *h);
     }
-    if (rat)
+    if (st == CF_STATUS_OK && hom)
         st = cf_bezier_create_homogeneous(2, deg, q, out, &fig->err);
-    else
+    else if (st == CF_STATUS_OK)
         st = cf_bezier_create(2, deg, q, NULL, out, &fig->err);
     cf_free(q);
     return st;
@@ -242,7 +251,7 @@ cf_figure_add_bezier_range(cf_figure_t *fig, const cf_bezier_t *c, double a,
         return cf_diag_set(&fig->err, CF_STATUS_DOMAIN, -1,
                            "curve range [%g, %g] must satisfy 0 <= a < b <= 1",
                            a, b);
-    st = planar_bezier(fig, c, &plane);
+    st = cf__fig_planar_bezier(fig, c, &plane);
     if (st != CF_STATUS_OK)
         return cf__fig_fail(fig, st, "Bézier curve");
     if (a > 0 || b < 1) {
@@ -290,7 +299,7 @@ cf_figure_add_bezier_list(cf_figure_t *fig, const cf_bezier_list_t *list,
         return fig->err.status;
     for (i = 0; i < list->count && st == CF_STATUS_OK; i++) {
         cf_bezier_t *plane = NULL;
-        st = planar_bezier(fig, list->items[i], &plane);
+        st = cf__fig_planar_bezier(fig, list->items[i], &plane);
         if (st == CF_STATUS_OK)
             st = cf__curve_add(fig, e, plane, NULL);
     }
@@ -360,7 +369,7 @@ bspline_pieces(cf_figure_t *fig, cf__element_t *e, const cf_bspline_t *s,
             continue;
         ta = (fmax(a, t0) - t0) / (t1 - t0);
         tb = (fmin(b, t1) - t0) / (t1 - t0);
-        st = planar_bezier(fig, list->items[i], &plane);
+        st = cf__fig_planar_bezier(fig, list->items[i], &plane);
         if (st != CF_STATUS_OK)
             break;
         if (ta > 0 || tb < 1) {

@@ -116,6 +116,7 @@ cf_figure_destroy(cf_figure_t *fig)
     cf_free(fig->title);
     cf_free(fig->caption);
     cf_free(fig->proj);
+    cf_scene_destroy(fig->scene);
     cf_free(fig->warnings);
     cf_free(fig->place_px);
     cf_free(fig->all_warnings);
@@ -354,7 +355,49 @@ cf_figure_set_projection(cf_figure_t *fig, size_t dim, const double *m)
     cf_free(fig->proj);
     fig->proj = copy;
     fig->proj_dim = dim;
+    fig->has_view = false;
     return CF_STATUS_OK;
+}
+
+/* ---- projection through a view (render/figure/figure-view.c sets it) ------- */
+
+bool
+cf__fig_is_central(const cf_figure_t *fig, size_t dim)
+{
+    return fig->has_view && dim == 3
+        && fig->view.projection == CF_PROJECTION_PERSPECTIVE;
+}
+
+bool
+cf__fig_project_h(const cf_figure_t *fig, const double *hp, size_t dim,
+                  bool rational, double out[3])
+{
+    double w = rational ? hp[dim] : 1.0;
+    if (cf__fig_is_central(fig, dim)) {
+        const double *m = fig->view_m;
+        for (int r = 0; r < 3; r++)
+            out[r] = m[4 * r] * hp[0] + m[4 * r + 1] * hp[1]
+                + m[4 * r + 2] * hp[2] + m[4 * r + 3] * w;
+        /* the eye itself or behind it (W = (D - z) / D w); a point
+        ** within 1e-9 D of the eye's plane is not drawable either */
+        return out[2] > 1e-9 * w;
+    }
+    cf__fig_project1(fig, hp, dim, out);
+    out[2] = w;
+    return true;
+}
+
+cf_status_t
+cf__fig_behind_eye(cf_figure_t *fig, const double *p, const char *what)
+{
+    double s = 0;
+    for (int k = 0; k < 3; k++)
+        s += fig->view.dir[k] * (p[k] - fig->view.target[k]);
+    return cf_diag_set(&fig->err, CF_STATUS_DOMAIN, -1,
+                       "%s (%g, %g, %g) lies at or behind the eye of the "
+                       "view (distance = %g); a distance above %g shows it",
+                       what, p[0], p[1], p[2], fig->view.distance,
+                       s > 0 ? 1.5 * s : fig->view.distance);
 }
 
 void
@@ -362,7 +405,15 @@ cf__fig_project1(const cf_figure_t *fig, const double *p, size_t dim,
                  double *out)
 {
     size_t j;
-    if (fig->proj != NULL && fig->proj_dim == dim) {
+    if (cf__fig_is_central(fig, dim)) {
+        double h[3];
+        if (!cf__fig_project_h(fig, p, dim, false, h)) {
+            out[0] = out[1] = NAN;
+            return;
+        }
+        out[0] = h[0] / h[2];
+        out[1] = h[1] / h[2];
+    } else if (fig->proj != NULL && fig->proj_dim == dim) {
         double x = 0, y = 0;
         for (j = 0; j < dim; j++) {
             x += fig->proj[j] * p[j];
@@ -394,6 +445,8 @@ cf_figure_project(cf_figure_t *fig, const double *in, size_t n, size_t dim,
     for (i = 0; i < n; i++) {
         double tmp[2];
         cf__fig_project1(fig, in + i * dim, dim, tmp);
+        if (isnan(tmp[0]))
+            return cf__fig_behind_eye(fig, in + i * dim, "point");
         out[2 * i] = tmp[0];
         out[2 * i + 1] = tmp[1];
     }

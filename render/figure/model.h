@@ -14,6 +14,7 @@
 #include <stdbool.h>
 
 #include "curvefig/figure.h"
+#include "curvefig/figure3d.h"
 #include "curvefig/geometry.h"
 #include "dlist.h"
 
@@ -174,6 +175,13 @@ struct cf_figure {
     bool clip_page;          /* ink outside the page is cut, not an error */
     size_t proj_dim;
     double *proj;            /* 2 x proj_dim */
+    bool has_view;           /* a 3D view (figure-view.c) */
+    cf_view_t view;
+    double view_m[12];       /* its homogeneous projection */
+    struct cf_scene *scene;  /* the occluding surfaces, for a layout's
+                                tolerance (render/figure/el-surface.c) */
+    double scene_tol;
+    size_t scene_els;        /* the element count it was built for */
     cf__element_t **els;
     size_t count, cap;
     char *warnings;          /* of the last layout, a line each; NULL: none */
@@ -238,7 +246,8 @@ void *cf__element_new(cf_figure_t *fig, const cf__kind_t *k, size_t size,
                       cf_role_t role, const cf_style_t *style);
 /* Append the record made by cf__element_new, or release it if st fails. */
 cf_status_t cf__element_commit(cf_figure_t *fig, void *e, cf_status_t st);
-/* Project one point of dimension dim (stride 1) into out[2]. */
+/* Project one point of dimension dim (stride 1) into out[2] (NaN for a
+** point at or behind the eye of a perspective view). */
 void cf__fig_project1(const cf_figure_t *fig, const double *p, size_t dim,
                       double *out);
 double *cf__copy_doubles(const double *src, size_t n);
@@ -248,6 +257,27 @@ cf_status_t cf__element_draw(cf_figure_t *fig, size_t i,
 /* The label font size of a role with overrides s. */
 double cf__role_font_size(const cf_figure_t *fig, cf_role_t role,
                           const cf_style_t *s);
+
+/* ---- figure.c: projection through a 3D view (figure-view.c sets it) ---------- */
+
+/* The image (X, Y, W) of homogeneous point hp = (w x, w) (rational) or
+** Cartesian x (not rational) of dimension dim under the figure's
+** projection; W = w (1) unless the view is a perspective one.  False when
+** W <= 0 (at or behind the eye). */
+bool cf__fig_project_h(const cf_figure_t *fig, const double *hp, size_t dim,
+                       bool rational, double out[3]);
+/* Whether the figure's projection is a central (perspective) one for
+** points of dimension dim. */
+bool cf__fig_is_central(const cf_figure_t *fig, size_t dim);
+/* "the point (x, y, z) lies at or behind the eye ..." into fig. */
+cf_status_t cf__fig_behind_eye(cf_figure_t *fig, const double *p,
+                               const char *what);
+
+/* ---- el-curve.c: plane curves -------------------------------------------- */
+
+/* A planar copy of c (projected when dim >= 3). */
+cf_status_t cf__fig_planar_bezier(cf_figure_t *fig, const cf_bezier_t *c,
+                                  cf_bezier_t **out);
 
 /* ---- text.c: labels of elements ----------------------------------------- */
 

@@ -16,6 +16,7 @@
 #include "llabels.h"
 #include "lschema.h"
 #include "lstyle.h"
+#include "lsurface-draw.h"
 
 #define check(L, fn, call, diag) cf__lua_fig_check((L), (fn), fig, (call), \
                                                    (diag))
@@ -41,6 +42,8 @@ add_curve(lua_State *L, cf_figure_t *fig, int idx, double a, double b,
           const cf_style_t *st)
 {
     cf_bspline_t *bs = cf__lua_to_bspline(L, idx);
+    if (a == 0.0 && b == 0.0 && cf__lua_space_curve(L, fig, idx, 3, st))
+        return CF_STATUS_OK;
     if (bs != NULL)
         return cf_figure_add_bspline(fig, bs, a, b, st);
     if (a != 0.0 || b != 0.0)

@@ -14,7 +14,9 @@
 #include "llayout.h"
 #include "lschema.h"
 #include "lstyle.h"
+#include "lsurface-draw.h"
 #include "ltheme.h"
+#include "lview.h"
 
 #define FIGURES_KEY "curvefig.figures"
 /* The set of their names: a new name is looked up once, not compared
@@ -79,37 +81,25 @@ check_name(lua_State *L, const char *name)
     lua_pop(L, 2);
 }
 
-/* The projection of view = {azimuth, elevation} (degrees) into m[6]. */
-static void
-view_matrix(lua_State *L, int idx, double m[6])
-{
-    size_t n;
-    double *v = cf__lua_check_numbers(L, idx, "figure", "view angle", &n);
-    double az, el;
-    if (n != 2)
-        luaL_error(L, "figure: view is {azimuth, elevation} in degrees");
-    az = v[0] * 3.14159265358979323846 / 180.0;
-    el = v[1] * 3.14159265358979323846 / 180.0;
-    m[0] = -sin(az);
-    m[1] = cos(az);
-    m[2] = 0.0;
-    m[3] = -cos(az) * sin(el);
-    m[4] = -sin(az) * sin(el);
-    m[5] = cos(el);
-}
-
-/* projection = {{row 1}, {row 2}} or view = {azimuth, elevation}. */
+/* projection = {{row 1}, {row 2}} (a matrix), or the view (lview.c). */
 static void
 read_projection(lua_State *L, cf_figure_t *fig)
 {
     cf_diag_t diag;
     int top = lua_gettop(L);
-    bool proj = cf__lua_field(L, 1, "projection") != LUA_TNIL;
+    int pt = cf__lua_field(L, 1, "projection");
+    bool matrix = pt == LUA_TTABLE;
     bool view = cf__lua_field(L, 1, "view") != LUA_TNIL;
     cf_diag_clear(&diag);
-    if (proj && view)
-        luaL_error(L, "figure: give either projection or view, not both");
-    if (proj) {
+    if (pt != LUA_TNIL && pt != LUA_TTABLE && pt != LUA_TSTRING)
+        luaL_error(L, "figure: projection is \"orthographic\", "
+                   "\"perspective\" or a matrix {{row 1}, {row 2}}, got %s",
+                   lua_typename(L, pt));
+    if (matrix && view)
+        luaL_error(L, "figure: give either a projection matrix or a view, "
+                   "not both (projection = \"perspective\" goes with a "
+                   "view)");
+    if (matrix) {
         size_t rows, dim;
         double *m = cf__lua_check_points(L, top + 1, "figure",
                                          "projection row", 2, &rows, &dim);
@@ -117,10 +107,8 @@ read_projection(lua_State *L, cf_figure_t *fig)
             luaL_error(L, "figure: projection has %d rows; give 2",
                        (int)rows);
         check(L, "figure", cf_figure_set_projection(fig, dim, m), &diag);
-    } else if (view) {
-        double m[6];
-        view_matrix(L, top + 2, m);
-        check(L, "figure", cf_figure_set_projection(fig, 3, m), &diag);
+    } else {
+        cf__lua_read_view(L, fig, 1);
     }
     lua_settop(L, top);
 }
@@ -384,6 +372,9 @@ cf__lua_open_figure(lua_State *L)
     cf__lua_set_legend_methods(L, cf__lua_draw_methods);
     cf__lua_set_legend_methods(L, cf__lua_plot_methods);
     luaL_setfuncs(L, cf__lua_layout_methods, 0);
+    luaL_setfuncs(L, cf__lua_view_methods, 0);
+    cf__lua_set_legend_methods(L, cf__lua_surface_draw_methods);
+    cf__lua_set_legend_methods(L, cf__lua_surface_scheme_methods);
     lua_pop(L, 2);
     lua_pushcfunction(L, l_figure);
     lua_setglobal(L, "figure");

@@ -41,6 +41,10 @@ static const char *const offset_methods[] = {
     "levien", "tiller-hanson", NULL,
 };
 static const char *const reduce_methods[] = { "l2", "uniform", NULL };
+static const char *const hidden_modes[] = {
+    "remove", "dashed", "show", NULL,
+};
+static const char *const shade_modes[] = { "smooth", "flat", NULL };
 
 /* ---- key lists ---------------------------------------------------------- */
 
@@ -86,7 +90,8 @@ static const cf__lua_key_t figure_keys[] = {
     NAMES("page", pages), KEY("window"), KEY("margin"), KEY("aspect"),
     NAMES("theme", themes), KEY("background"), KEY("font"),
     KEY("font_size"),
-    KEY("tolerance"), KEY("projection"), KEY("view"), KEY("clip"),
+    KEY("tolerance"), KEY("projection"), KEY("view"), KEY("distance"),
+    KEY("target"), KEY("clip"),
     NAMES("legend_place", box_places), KEY("legend_frame"), END,
 };
 static const cf__lua_key_t theme_keys[] = {
@@ -164,7 +169,9 @@ static const cf__lua_key_t reduce_keys[] = {
 static const cf__lua_key_t reduce_bspline_keys[] = {
     KEY("by"), KEY("tolerance"), NAMES("method", reduce_methods), END,
 };
-static const cf__lua_key_t range_keys[] = { KEY("range"), END };
+static const cf__lua_key_t range_keys[] = {
+    KEY("range"), NAMES("hidden", hidden_modes), END,
+};
 static const cf__lua_key_t closed_keys[] = { KEY("closed"), END };
 static const cf__lua_key_t scale_keys[] = { KEY("scale"), END };
 static const cf__lua_key_t net_keys[] = {
@@ -178,6 +185,19 @@ static const cf__lua_key_t plot_keys[] = {
     KEY("ytick_labels"), KEY("xlabel"), KEY("ylabel"), KEY("knots"),
     KEY("knot_labels"), KEY("arrows"), KEY("grid"), KEY("box"),
     KEY("font_size"), END,
+};
+
+/* f:surface (lsurface-draw.c): the lines, the net and its labels */
+static const cf__lua_key_t surface_keys[] = {
+    KEY("boundary"), KEY("silhouette"), KEY("isolines"), KEY("knot_lines"),
+    NAMES("hidden", hidden_modes), TABLE("iso_style", CF__KEYS_POINT_STYLE),
+    KEY("net"), KEY("occludes"), NAMES("shade", shade_modes), KEY("light"),
+    KEY("back"), END,
+};
+
+/* f:decasteljau_surface and f:triangle_scheme (lsurface-scheme.c) */
+static const cf__lua_key_t surface_scheme_keys[] = {
+    KEY("colors"), TABLE("point", CF__KEYS_POINT_STYLE), END,
 };
 
 /* the parameters of interactive figures (lparams.c) */
@@ -263,6 +283,12 @@ static const cf__lua_schema_t schemas[CF__KEYS_COUNT_] = {
                                     NULL, "f:decasteljau(c, 0.5, %s)"),
     [CF__KEYS_DEBOOR] = DRAW("deboor", line_style, net_keys, NULL,
                                "f:deboor(s, 0.5, %s)"),
+    [CF__KEYS_SURFACE] = DRAW("surface", line_style, surface_keys,
+                              point_labels, "f:surface(s, %s)"),
+    [CF__KEYS_DECASTELJAU_SURFACE] = DRAW("decasteljau_surface", line_style,
+                                          surface_scheme_keys, NULL,
+                                          "f:decasteljau_surface(s, 0.5, "
+                                          "0.5, %s)"),
     [CF__KEYS_PLOT] = DRAW("plot", line_style, plot_keys, NULL,
                              "f:plot(%s)"),
     [CF__KEYS_FUNC] = DRAW("func", line_style, NULL, NULL,

@@ -63,6 +63,8 @@ typedef enum cf__lua_keys {
     CF__KEYS_INTERP_SURFACE,
     CF__KEYS_REDUCE,          /* c:reduce{...} of a Bézier curve */
     CF__KEYS_REDUCE_BSPLINE,  /* s:reduce{...} of a B-spline */
+    CF__KEYS_SURFACE,         /* f:surface(s, {...}) */
+    CF__KEYS_DECASTELJAU_SURFACE, /* and f:triangle_scheme */
     CF__KEYS_COUNT_
 } cf__lua_keys_t;
 

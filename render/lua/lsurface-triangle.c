@@ -42,6 +42,13 @@ check(lua_State *L)
     return b->t;
 }
 
+cf_bezier_triangle_t *
+cf__lua_to_triangle(lua_State *L, int idx)
+{
+    box *b = luaL_testudata(L, idx, CF__LUA_TRIANGLE);
+    return b != NULL ? b->t : NULL;
+}
+
 static int
 gc(lua_State *L)
 {

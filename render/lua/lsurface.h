@@ -8,6 +8,7 @@
 #include <lauxlib.h>
 #include <lua.h>
 
+#include "curvefig/surface-triangle.h"
 #include "curvefig/surface.h"
 
 #define CF__LUA_SURFACE "curvefig.surface"
@@ -39,6 +40,10 @@ cf_bspline_surface_t **cf__lua_new_bspline_surface(lua_State *L);
 ** ("row 3 has 4 points, row 1 has 5", "point P[3][2] ..."). */
 double *cf__lua_check_grid(lua_State *L, int idx, const char *fn,
                            size_t *nu, size_t *nv, size_t *dim);
+
+/* The triangular patch at idx (bezier_triangle{...}), NULL if it is not
+** one or was closed (lsurface-triangle.c). */
+cf_bezier_triangle_t *cf__lua_to_triangle(lua_State *L, int idx);
 
 void cf__lua_open_surface(lua_State *L);
 void cf__lua_open_surface_make(lua_State *L);

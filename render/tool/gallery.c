@@ -30,6 +30,7 @@ static const char *const groups[][2] = {
     { "lecture5", "Seed 001 · Лекция 5: Кривые и поверхности в "
                   "компьютерной геометрии, I (Russian)" },
     { "lec05", "Seed 004 · Lec05, Bezier曲线 B样条曲线 (Chinese)" },
+    { "surfaces", "Part II · Surfaces: 3D figures with exact hidden lines" },
 };
 
 static const char gallery_head[] =

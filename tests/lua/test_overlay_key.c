@@ -54,6 +54,11 @@ static const struct { const char *fn, *call; } calls[] = {
     { "graph", "f:graph(bezier{ {0}, {1}, {0} }, O)" },
     { "basis", "f:basis(s, 0, 2, O)" },
     { "bernstein", "f:bernstein(3, 1, O)" },
+    { "surface", "f:view(-60, 30); f:surface(bezier_surface{ points = "
+      "{ { {0, 0, 0}, {0, 1, 0} }, { {1, 0, 0}, {1, 1, 1} } } }, O)" },
+    { "decasteljau_surface", "f:view(-60, 30); f:decasteljau_surface("
+      "bezier_surface{ points = { { {0, 0, 0}, {0, 1, 0} }, { {1, 0, 0}, "
+      "{1, 1, 1} } } }, 0.5, 0.5, O)" },
 };
 
 static const char *

@@ -1,0 +1,87 @@
+/*
+** The lines of a surface in space, shared by the surface element
+** (el-surface.c) and the makers of a triangular patch's lines
+** (surface-tri.c): Bézier pieces in R^3 with the (u, v) line they follow
+** on the surface, in families drawn each in its own style.
+*/
+#ifndef CURVEFIG_RENDER_SURFACE_LINES_H
+#define CURVEFIG_RENDER_SURFACE_LINES_H
+
+#include "curvefig/surface-triangle.h"
+#include "curvefig/surface.h"
+#include "model.h"
+
+enum { CF__LINE_OUTLINE, CF__LINE_ISO, CF__LINE_NET, CF__LINE_FAMILIES };
+
+typedef struct cf__line3 {
+    int family;
+    cf_bezier_t *bez;        /* in R^3 */
+    cf_bezier_t *uv;         /* (u, v) on the surface, NULL: not on it */
+} cf__line3_t;
+
+typedef struct cf__lines3 {
+    cf__line3_t *items;
+    size_t n, cap;
+} cf__lines3_t;
+
+/* Append a line, taking bez and uv over (freed on failure too). */
+cf_status_t cf__lines3_add(cf_figure_t *fig, cf__lines3_t *l, int family,
+                           cf_bezier_t *bez, cf_bezier_t *uv);
+void cf__lines3_fini(cf__lines3_t *l);
+
+/* A surface whose n control points p (Cartesian, R^3) lie on one line or
+** in one point has no normal: DEGENERATE, saying so. */
+cf_status_t cf__check_degenerate(cf_figure_t *fig, const double *p, size_t n);
+
+/* The lines of a B-spline surface that o asks for (surface-lines-grid.c):
+** boundary (outline), iso- and knot lines, the net of its control points
+** cpts (Cartesian). */
+cf_status_t cf__bspline_lines(cf_figure_t *fig, const cf_bspline_surface_t *s,
+                              const double *cpts, const cf_surface_lines_t *o,
+                              cf__lines3_t *out);
+
+/* A copy of a triangular patch (from its points and weights). */
+cf_status_t cf__triangle_copy(cf_figure_t *fig, const cf_bezier_triangle_t *t,
+                              cf_bezier_triangle_t **out);
+
+/* The lines of a triangular patch in R^3 that o asks for: the three
+** edges (boundary), iso-lines u = const, v = const and w = const (nu of
+** u and of w, nv of v, evenly spaced, or the given values of u and v),
+** the net's edges.  Iso-lines are exact: the restriction of the patch to
+** a line of its domain is a Bézier curve of the same degree whose control
+** points are the patch's blossom at the line's ends. */
+cf_status_t cf__triangle_lines(cf_figure_t *fig,
+                               const cf_bezier_triangle_t *t,
+                               const cf_surface_lines_t *o,
+                               cf__lines3_t *out);
+
+/* Paint the facets of scene sc within tol (surface-shade.c) in painting
+** order, a facet of surface k with by_id[k] (k < nids; NULL or shade
+** NONE: not painted), lit as curvefig/figure3d.h says. */
+cf_status_t cf__shade_facets(cf_figure_t *fig, const cf_scene_t *sc,
+                             double tol,
+                             const cf_surface_shading_t *const *by_id,
+                             size_t nids, const cf__layout_t *l,
+                             cf__dl_t *dl);
+
+/* For tests: every piece of every line the surface elements of fig split
+** by the scene when laid out with tolerance tol (data units): fn(closure,
+** element index, family, line in R^3, its (u, v) line on the surface (or
+** NULL) with its distance from it (offset: a silhouette's error in space),
+** t0, t1, visible) (hidden pieces too when hidden = "remove"; nothing of
+** lines drawn whole, hidden = "show").  And every surface element:
+** surf(closure, element index, B-spline surface or triangle (one NULL),
+** occludes). */
+typedef void (*cf__surface_piece_fn)(void *closure, size_t el, int family,
+                                     const cf_bezier_t *bez,
+                                     const cf_bezier_t *uv, double offset,
+                                     double t0, double t1, bool visible);
+typedef void (*cf__surface_fn)(void *closure, size_t el,
+                               const cf_bspline_surface_t *s,
+                               const cf_bezier_triangle_t *t,
+                               bool occludes);
+cf_status_t cf__figure_surface_pieces(cf_figure_t *fig, double tol,
+                                      cf__surface_piece_fn fn,
+                                      cf__surface_fn surf, void *closure);
+
+#endif

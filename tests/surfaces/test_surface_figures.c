@@ -1,0 +1,452 @@
+/*
+** The surface chapter's figures (figures/surfaces/):
+**
+**   visibility  every line the surface elements draw, sampled densely
+**               (4 points a piece: the pieces are short; the ray caster takes about 1 ms a sample), is visible where the figure draws it
+**               visible and hidden where it draws it hidden, as an
+**               independent ray caster (tests/unit/raycast-ref.h: long
+**               double Newton on the exact surfaces) finds, except within
+**               3 times the split tolerance (on the page) of a split point;
+**   cubic       the surface elements' paths are made of cubic segments
+**               only (no line segment: no polyline) in the display list,
+**               and the SVG and PDF files carry exactly the line segments
+**               of the other elements (a surface's lines reach both
+**               formats as cubics).
+*/
+#include <dirent.h>
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cmocka.h>
+#include <zlib.h>
+
+#include "curvefig/figure3d.h"
+#include "raycast-ref.h"
+#include "script.h"
+#include "surface-lines.h"
+
+#define SURF_DIR CF_SOURCE_ROOT "/figures/surfaces"
+
+/* ---- the scripts -------------------------------------------------------- */
+
+static int
+by_name(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+/* The scripts of figures/surfaces, sorted; returns how many. */
+static size_t
+scripts(char **names, size_t max)
+{
+    DIR *d = opendir(SURF_DIR);
+    struct dirent *de;
+    size_t n = 0;
+    assert_non_null(d);
+    while ((de = readdir(d)) != NULL && n < max) {
+        size_t len = strlen(de->d_name);
+        if (len > 4 && strcmp(de->d_name + len - 4, ".lua") == 0)
+            names[n++] = strdup(de->d_name);
+    }
+    closedir(d);
+    qsort(names, n, sizeof *names, by_name);
+    return n;
+}
+
+static cf_script_t *
+run(const char *name)
+{
+    char path[1024];
+    cf_script_t *sc = NULL;
+    snprintf(path, sizeof path, "%s/%s", SURF_DIR, name);
+    assert_int_equal(cf_script_create(NULL, NULL, &sc, NULL), 0);
+    if (cf_script_run_file(sc, path) != CF_STATUS_OK)
+        fail_msg("%s: %s", path, cf_script_error(sc));
+    return sc;
+}
+
+/* ---- visibility --------------------------------------------------------- */
+
+typedef struct piece {
+    cf_bezier_t *bez;
+    cf_bezier_t *uv;           /* on its surface, or NULL */
+    double offset;
+    size_t el;
+    double t0, t1;
+    bool visible;
+    int family;
+} piece_t;
+
+typedef struct probe {
+    piece_t *pieces;
+    size_t n, cap;
+    /* the surfaces by element index, for the normals of silhouettes */
+    const cf_bspline_surface_t *surf[256];
+    const cf_bezier_triangle_t *tri[256];
+    rc_scene_t *rc;
+    size_t occluders;
+} probe_t;
+
+static void
+on_piece(void *closure, size_t el, int family, const cf_bezier_t *bez,
+         const cf_bezier_t *uv, double offset, double t0, double t1,
+         bool visible)
+{
+    probe_t *p = closure;
+    if (p->n == p->cap) {
+        p->cap = p->cap ? 2 * p->cap : 256;
+        p->pieces = realloc(p->pieces, p->cap * sizeof *p->pieces);
+        assert_non_null(p->pieces);
+    }
+    assert_int_equal(cf_bezier_copy(bez, &p->pieces[p->n].bez, NULL), 0);
+    p->pieces[p->n].uv = NULL;
+    if (uv != NULL)
+        assert_int_equal(cf_bezier_copy(uv, &p->pieces[p->n].uv, NULL), 0);
+    p->pieces[p->n].offset = offset;
+    p->pieces[p->n].el = el;
+    p->pieces[p->n].t0 = t0;
+    p->pieces[p->n].t1 = t1;
+    p->pieces[p->n].visible = visible;
+    p->pieces[p->n].family = family;
+    p->n++;
+}
+
+static void
+on_surface(void *closure, size_t el, const cf_bspline_surface_t *s,
+           const cf_bezier_triangle_t *t, bool occludes)
+{
+    probe_t *p = closure;
+    if (el < 256) {
+        p->surf[el] = s;
+        p->tri[el] = t;
+    }
+    if (!occludes)
+        return;
+    assert_true(t != NULL ? rc_add_triangle(p->rc, t)
+                          : rc_add_bspline(p->rc, s));
+    p->occluders++;
+}
+
+static double
+image_dist(const cf_view_t *v, const double *a, const double *b)
+{
+    double pa[2], pb[2];
+    assert_int_equal(cf_view_project(v, a, pa, NULL), 0);
+    assert_int_equal(cf_view_project(v, b, pb, NULL), 0);
+    return hypot(pa[0] - pb[0], pa[1] - pb[1]);
+}
+
+/* Whether the sample x of piece pc at t is hidden (1) or visible (0), or
+** -1 when that is not decided within the tolerance.  A silhouette point
+** (offset > 0) has the line of sight tangent to its surface, and lies
+** within offset of it on either side: the ray caster is asked at x moved
+** off the surface along the normal by 2 (offset + vtol) on both sides; the
+** answer counts when both agree (the surface's own tangent touch near x
+** hides one of them at most; both differ only within that distance of
+** another contour in front, a split within tolerance). */
+static int
+sample_hidden(const probe_t *p, const piece_t *pc, double t, const double *x,
+              double vtol, double *dist)
+{
+    double uv[2], n[3], y[3], e = 2 * (pc->offset + vtol);
+    bool a, b;
+    if (!(pc->offset > 0) || pc->uv == NULL || pc->el >= 256)
+        return rc_hidden(p->rc, x, 2 * vtol, dist);
+    assert_int_equal(cf_bezier_eval(pc->uv, t, uv), 0);
+    if ((p->tri[pc->el] != NULL
+         ? cf_bezier_triangle_normal(p->tri[pc->el], uv[0], uv[1], n)
+         : cf_bspline_surface_normal(p->surf[pc->el], uv[0], uv[1], n))
+        != CF_STATUS_OK)
+        return rc_hidden(p->rc, x, 2 * vtol, dist);
+    for (int k = 0; k < 3; k++)
+        y[k] = x[k] + e * n[k];
+    a = rc_hidden(p->rc, y, 2 * vtol, dist);
+    for (int k = 0; k < 3; k++)
+        y[k] = x[k] - e * n[k];
+    b = rc_hidden(p->rc, y, 2 * vtol, dist);
+    return a == b ? a : -1;
+}
+
+/* Known disagreements, reported to the visibility core and not yet
+** fixed there: control-net segments (straight lines, not on the surface)
+** leaving the surface tangentially at a corner (knot-insertion: the
+** library calls visible what a surface hides 0.03 to 0.17 away) and
+** running along its edge (bspline: called hidden with no surface on the
+** line of sight).  Counted and printed apart; the test fails when they
+** disappear, so this list is emptied then. */
+static bool
+known_failure(const char *name, int family)
+{
+    return family == CF__LINE_NET
+        && (strcmp(name, "surfaces-knot-insertion") == 0
+            || strcmp(name, "surfaces-bspline") == 0);
+}
+
+/* Samples of one figure that disagree with the ray caster; *checked
+** counts the samples compared, *known those of known_failure. */
+static size_t
+check_figure(const char *script, const char *name, cf_figure_t *fig,
+             size_t *checked, size_t *known)
+{
+    cf_view_t view;
+    probe_t p;
+    double win[4], sx, sy, tol, vtol;
+    size_t bad = 0;
+    enum { K = 4 };
+    memset(&p, 0, sizeof p);
+    if (!cf_figure_get_view(fig, &view))
+        return 0;
+    /* the layout's fitting tolerance in data units: the figure's 0.01 bp
+    ** at the page's scale; the split points are found to 20 times it */
+    assert_int_equal(cf_figure_get_window(fig, win, &sx, &sy), 0);
+    tol = 0.01 / sx;
+    vtol = 20 * tol;
+    p.rc = rc_create(&view);
+    assert_non_null(p.rc);
+    assert_int_equal(cf__figure_surface_pieces(fig, tol, on_piece,
+                                               on_surface, &p), 0);
+    for (size_t i = 0; i < p.n; i++) {
+        piece_t *pc = &p.pieces[i];
+        double a[3], b[3];
+        assert_int_equal(cf_bezier_eval(pc->bez, pc->t0, a), 0);
+        assert_int_equal(cf_bezier_eval(pc->bez, pc->t1, b), 0);
+        for (int k = 0; k < K && p.occluders > 0; k++) {
+            double t = pc->t0 + (k + 0.5) / K * (pc->t1 - pc->t0), x[3];
+            double dist = 0;
+            int hidden;
+            assert_int_equal(cf_bezier_eval(pc->bez, t, x), 0);
+            /* a split point's neighbourhood is left out: the split is
+            ** found to vtol on the page */
+            if ((pc->t0 > 0 && image_dist(&view, x, a) < 3 * vtol)
+                || (pc->t1 < 1 && image_dist(&view, x, b) < 3 * vtol))
+                continue;
+            /* a surface point nearer than the library's depth tolerance
+            ** hides nothing (the line's own surface at the line) */
+            hidden = sample_hidden(&p, pc, t, x, vtol, &dist);
+            if (hidden < 0)
+                continue;
+            (*checked)++;
+            if ((hidden == 1) == pc->visible
+                && known_failure(name, pc->family)) {
+                (*known)++;
+            } else if ((hidden == 1) == pc->visible) {
+                if (bad < 5)
+                    print_message("%s %s: family %d piece [%g, %g] drawn "
+                                  "%s, at t = %g (%g, %g, %g) the ray "
+                                  "caster finds it %s (hit at %g; split tolerance %g)\n", script, name,
+                                  pc->family, pc->t0, pc->t1,
+                                  pc->visible ? "visible" : "hidden", t,
+                                  x[0], x[1], x[2],
+                                  hidden ? "hidden" : "visible", dist, vtol);
+                bad++;
+            }
+        }
+        cf_bezier_destroy(pc->bez);
+        cf_bezier_destroy(pc->uv);
+    }
+    free(p.pieces);
+    rc_destroy(p.rc);
+    return bad;
+}
+
+static void
+test_visibility(void **state)
+{
+    char *names[64];
+    size_t n = scripts(names, 64), checked = 0, bad = 0, figures = 0;
+    size_t known = 0;
+    (void)state;
+    assert_true(n >= 9);
+    for (size_t i = 0; i < n; i++) {
+        cf_script_t *sc = run(names[i]);
+        for (size_t f = 0; f < cf_script_figure_count(sc); f++) {
+            size_t before = checked, b;
+            b = check_figure(names[i], cf_script_figure_name(sc, f),
+                             cf_script_figure(sc, f), &checked, &known);
+            print_message("%s: %zu of %zu samples disagree\n",
+                          cf_script_figure_name(sc, f), b, checked - before);
+            bad += b;
+            figures++;
+        }
+        cf_script_destroy(sc);
+        free(names[i]);
+    }
+    print_message("%zu figures, %zu samples checked, %zu disagree; %zu "
+                  "known disagreements of net segments\n", figures, checked,
+                  bad, known);
+    assert_true(checked > 1000);
+    assert_int_equal(bad, 0);
+    if (known == 0)
+        fail_msg("the known disagreements are gone: empty known_failure()");
+}
+
+/* ---- cubic segments ----------------------------------------------------- */
+
+/* Line segments of stroked-only paths in the dump: inside surface groups
+** (*in_surface) and elsewhere (*other); cubic segments of surface groups
+** into *cubics. */
+static void
+dump_segments(const char *text, size_t *in_surface, size_t *other,
+              size_t *cubics)
+{
+    bool surface = false;
+    *in_surface = *other = *cubics = 0;
+    for (const char *line = text; line != NULL && *line != '\0';) {
+        const char *nl = strchr(line, '\n');
+        size_t len = nl != NULL ? (size_t)(nl - line) : strlen(line);
+        if (strncmp(line, "group ", 6) == 0)
+            surface = memmem(line, len, " surface", 8) != NULL;
+        else if (strncmp(line, "end", 3) == 0)
+            surface = false;
+        else if (strncmp(line, "path stroke", 11) == 0) {
+            for (size_t k = 0; k + 2 < len; k++) {
+                if (line[k] == ' ' && line[k + 2] == ' '
+                    && line[k + 1] == 'L')
+                    (*(surface ? in_surface : other))++;
+                if (surface && line[k] == ' ' && line[k + 2] == ' '
+                    && line[k + 1] == 'C')
+                    (*cubics)++;
+            }
+        }
+        line = nl != NULL ? nl + 1 : NULL;
+    }
+}
+
+static char *
+slurp(const char *path, size_t *size)
+{
+    FILE *f = fopen(path, "rb");
+    char *buf;
+    long n;
+    assert_non_null(f);
+    fseek(f, 0, SEEK_END);
+    n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    buf = malloc((size_t)n + 1);
+    assert_non_null(buf);
+    assert_int_equal(fread(buf, 1, (size_t)n, f), (size_t)n);
+    buf[n] = '\0';
+    fclose(f);
+    *size = (size_t)n;
+    return buf;
+}
+
+/* 'L' commands of the SVG's stroked paths without fill. */
+static size_t
+svg_lines(const char *svg)
+{
+    size_t n = 0;
+    for (const char *p = strstr(svg, "<path"); p != NULL;
+         p = strstr(p + 1, "<path")) {
+        const char *end = strchr(p, '>'), *d;
+        if (end == NULL || !(strstr(p, "fill:none") < end
+                             && strstr(p, "fill:none") != NULL))
+            continue;
+        d = strstr(p, " d=\"");
+        for (d = d != NULL && d < end ? d + 4 : end; d < end && *d != '"';
+             d++)
+            n += *d == 'L';
+    }
+    return n;
+}
+
+/* 'l' operators of the PDF's paths painted by S (stroke only), in every
+** Flate stream. */
+static size_t
+pdf_lines(const char *pdf, size_t size)
+{
+    size_t n = 0;
+    for (const char *p = pdf; (p = memmem(p, size - (size_t)(p - pdf),
+                                          "stream\n", 7)) != NULL;) {
+        const char *e = memmem(p, size - (size_t)(p - pdf), "endstream", 9);
+        uLongf out = 1u << 24;
+        unsigned char *buf = malloc(out + 1);
+        size_t ls = 0;
+        assert_non_null(buf);
+        if (e != NULL && uncompress(buf, &out, (const Bytef *)p + 7,
+                                    (uLong)(e - p - 7)) == Z_OK) {
+            buf[out] = '\0';
+            for (char *tok = strtok((char *)buf, " \n\r"); tok != NULL;
+                 tok = strtok(NULL, " \n\r")) {
+                if (strcmp(tok, "l") == 0)
+                    ls++;
+                else if (strcmp(tok, "S") == 0) {
+                    n += ls;
+                    ls = 0;
+                } else if (strcmp(tok, "f") == 0 || strcmp(tok, "B") == 0
+                           || strcmp(tok, "n") == 0 || strcmp(tok, "f*") == 0
+                           || strcmp(tok, "b") == 0 || strcmp(tok, "s") == 0
+                           || strcmp(tok, "W") == 0) {
+                    ls = 0;
+                }
+            }
+        }
+        free(buf);
+        p = e != NULL ? e : pdf + size;
+    }
+    return n;
+}
+
+static void
+test_cubic(void **state)
+{
+    char *names[64], dir[] = "/tmp/cf-surface-figures-XXXXXX";
+    size_t n = scripts(names, 64), figures = 0;
+    (void)state;
+    assert_non_null(mkdtemp(dir));
+    for (size_t i = 0; i < n; i++) {
+        cf_script_t *sc = run(names[i]);
+        for (size_t f = 0; f < cf_script_figure_count(sc); f++) {
+            cf_figure_t *fig = cf_script_figure(sc, f);
+            const char *name = cf_script_figure_name(sc, f);
+            char *text, *svg, *pdf, path[1200];
+            size_t size, in_surface, other, cubics, svg_size, pdf_size;
+            assert_int_equal(cf_figure_dump(fig, NULL, &text, &size, NULL),
+                             0);
+            dump_segments(text, &in_surface, &other, &cubics);
+            cf_free(text);
+            if (in_surface != 0)
+                fail_msg("%s: %zu line segments in surface paths", name,
+                         in_surface);
+            assert_true(cubics > 0);
+            snprintf(path, sizeof path, "%s/%s.svg", dir, name);
+            assert_int_equal(cf_figure_write(fig, path, CF_FORMAT_SVG, NULL,
+                                             NULL), 0);
+            svg = slurp(path, &svg_size);
+            remove(path);
+            snprintf(path, sizeof path, "%s/%s.pdf", dir, name);
+            assert_int_equal(cf_figure_write(fig, path, CF_FORMAT_PDF, NULL,
+                                             NULL), 0);
+            pdf = slurp(path, &pdf_size);
+            remove(path);
+            if (svg_lines(svg) != other || pdf_lines(pdf, pdf_size) != other)
+                fail_msg("%s: line segments: %zu in the display list's "
+                         "other paths, %zu in the SVG, %zu in the PDF",
+                         name, other, svg_lines(svg),
+                         pdf_lines(pdf, pdf_size));
+            free(svg);
+            free(pdf);
+            figures++;
+        }
+        cf_script_destroy(sc);
+        free(names[i]);
+    }
+    rmdir(dir);
+    assert_true(figures >= 10);
+}
+
+int
+main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_visibility),
+        cmocka_unit_test(test_cubic),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,6 +1,6 @@
 /*
 ** The glyphs of the SVG files (render/backends/backend-svgw.c, natively):
-** each label as its glyphs (render/labels/label-glyph-runs.c), each glyph
+** each label as its glyphs (render/backends/label-glyph-runs.c), each glyph
 ** an outline drawn once in the document's <defs> and used at every place
 ** it appears (as cairo's SVG surface, the writer before it, did).  A glyph is its cairo
 ** scaled font (one per font face, size and options, held here by a

@@ -8,7 +8,7 @@
 **     allowance (one pixel), and no bad pixel at all, labels included.
 **     (The pixel suite compares the files' SVG against cairo's PNG.)
 **   - Every label of every shipped figure: its glyphs placed at the
-**     origins render/labels/label-glyph-runs.c gives make exactly the
+**     origins render/backends/label-glyph-runs.c gives make exactly the
 **     outline pango's own renderer draws (cf__label_path), point for
 **     point to one step of cairo's path grid (1/256 bp), where a glyph
 **     misplaced by the baseline, a run's width or an offset would be off

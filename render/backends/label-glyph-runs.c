@@ -1,5 +1,5 @@
 /*
-** The glyphs of a label one by one (render/labels/label-cairo.h): each
+** The glyphs of a label one by one (render/backends/label-cairo.h): each
 ** glyph's font, index and origin on the page, where pango's cairo
 ** renderer puts it when it draws the label (cf__label_draw,
 ** cf__label_path): per line, its logical left edge and baseline; per run

@@ -1,5 +1,5 @@
 /*
-** The glyphs of a label one by one (render/labels/label-glyph-runs.c),
+** The glyphs of a label one by one (render/backends/label-glyph-runs.c),
 ** natively only (pango's glyph runs and cairo's scaled fonts; the browser
 ** module has neither): for the glyph uses of the SVG files
 ** (render/output/svg-glyphs.c).
@@ -10,7 +10,7 @@
 #include "label-cairo.h"
 
 /* The glyphs of the label one by one, baseline origin at (x, y), where
-** cf__label_path puts them (render/labels/label-glyph-runs.c): glyph
+** cf__label_path puts them (render/backends/label-glyph-runs.c): glyph
 ** gets each glyph's scaled font, index and origin on the page, rule each
 ** fraction rule (x y w h), in drawing order.  1, and no call, when a
 ** glyph is missing from its font (pango draws a box for it, which has no

@@ -337,7 +337,17 @@ slurp(const char *path, size_t *size)
     return buf;
 }
 
-/* 'L' commands of the SVG's stroked paths without fill. */
+/* Whether the attribute text [p, end) holds s. */
+static bool
+has(const char *p, const char *end, const char *s)
+{
+    const char *q = strstr(p, s);
+    return q != NULL && q < end;
+}
+
+/* 'L' commands of the SVG's stroked paths without fill (the SVG writer
+** sets fill="none" on its outer group: a path without a fill of its own
+** is not filled; the glyph outlines in <defs> are filled where used). */
 static size_t
 svg_lines(const char *svg)
 {
@@ -345,8 +355,17 @@ svg_lines(const char *svg)
     for (const char *p = strstr(svg, "<path"); p != NULL;
          p = strstr(p + 1, "<path")) {
         const char *end = strchr(p, '>'), *d;
-        if (end == NULL || !(strstr(p, "fill:none") < end
-                             && strstr(p, "fill:none") != NULL))
+        const char *defs = strstr(svg, "<defs"), *defs_end;
+        bool in_defs = false;
+        for (; defs != NULL && defs < p; defs = strstr(defs_end, "<defs")) {
+            defs_end = strstr(defs, "</defs>");
+            if (defs_end == NULL || defs_end > p) {
+                in_defs = true;
+                break;
+            }
+        }
+        if (end == NULL || in_defs || (has(p, end, " fill=\"")
+                            && !has(p, end, " fill=\"none\"")))
             continue;
         d = strstr(p, " d=\"");
         for (d = d != NULL && d < end ? d + 4 : end; d < end && *d != '"';

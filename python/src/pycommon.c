@@ -183,6 +183,35 @@ cfpy_point(PyObject *obj, const char *fn, const char *what, size_t dim,
     return 0;
 }
 
+int
+cfpy_affine(PyObject *Aobj, PyObject *bobj, const char *fn, size_t dim,
+            PyArrayObject **A, double **b)
+{
+    *b = NULL;
+    *A = cfpy_array(Aobj, fn, "A", 2, 1);
+    if (*A == NULL)
+        return -1;
+    if ((size_t)PyArray_DIM(*A, 0) != dim ||
+        (size_t)PyArray_DIM(*A, 1) != dim) {
+        cfpy_error(fn, "A must be %zu x %zu", dim, dim);
+        Py_CLEAR(*A);
+        return -1;
+    }
+    *b = PyMem_Calloc(dim, sizeof(double));
+    if (*b == NULL) {
+        Py_CLEAR(*A);
+        PyErr_NoMemory();
+        return -1;
+    }
+    if (bobj != Py_None && cfpy_point(bobj, fn, "b", dim, *b) != 0) {
+        Py_CLEAR(*A);
+        PyMem_Free(*b);
+        *b = NULL;
+        return -1;
+    }
+    return 0;
+}
+
 PyArrayObject *
 cfpy_new(int ndim, const npy_intp *shape)
 {

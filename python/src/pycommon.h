@@ -50,6 +50,12 @@ int cfpy_finite(PyObject *obj, const char *fn, const char *what,
 int cfpy_point(PyObject *obj, const char *fn, const char *what, size_t dim,
                double *out);
 
+/* The arguments of transform(A, b=None) for points of dimension dim: A
+** a dim x dim array (a new reference), b a PyMem buffer of dim numbers
+** (zeros for None).  -1 (nothing to release) on bad input. */
+int cfpy_affine(PyObject *Aobj, PyObject *bobj, const char *fn, size_t dim,
+                PyArrayObject **A, double **b);
+
 /* New float64 arrays (uninitialised, C order). */
 PyArrayObject *cfpy_new(int ndim, const npy_intp *shape);
 PyObject *cfpy_vector(const double *v, npy_intp n);
@@ -97,6 +103,7 @@ extern PyTypeObject cfpy_BezierType;
 extern PyTypeObject cfpy_BSplineType;
 extern PyTypeObject cfpy_BezierSurfaceType;
 extern PyTypeObject cfpy_BSplineSurfaceType;
+extern PyTypeObject cfpy_BezierTriangleType;
 extern PyTypeObject cfpy_ScriptType;
 
 typedef struct {

@@ -119,6 +119,18 @@ typedef struct {
 PyObject *cfpy_wrap_bezier(cf_bezier_t *c);
 PyObject *cfpy_wrap_bspline(cf_bspline_t *c);
 PyObject *cfpy_wrap_bspline_surface(cf_bspline_surface_t *s);
+PyObject *cfpy_wrap_bezier_surface(cf_bezier_surface_t *s);
+
+/* The surfaces' schemes and patches (pyscheme.c), as the language's
+** s:decasteljau(u, v) -> (columns, v), s:deboor(u, v) -> ((columns, v),
+** (span_u, span_v)), s:to_bezier() -> grid, s:knot_lines(dir). */
+PyObject *cfpy_bezier_surface_decasteljau(const cf_bezier_surface_t *s,
+                                          PyObject *args);
+PyObject *cfpy_bspline_surface_deboor(const cf_bspline_surface_t *s,
+                                      PyObject *args);
+PyObject *cfpy_bspline_surface_to_beziers(const cf_bspline_surface_t *s);
+PyObject *cfpy_bspline_surface_knot_lines(const cf_bspline_surface_t *s,
+                                          PyObject *dirobj);
 /* A Python list of Bézier curves, taken out of the list (destroyed). */
 PyObject *cfpy_bezier_list(cf_bezier_list_t *list);
 /* A list of cubic Bézier curves, one per segment of cu (not destroyed). */

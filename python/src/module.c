@@ -48,8 +48,8 @@ PyInit__core(void)
 {
     PyTypeObject *types[] = { &cfpy_BezierType, &cfpy_BSplineType,
                               &cfpy_BezierSurfaceType,
-                              &cfpy_BSplineSurfaceType, &cfpy_BezierTriangleType,
-                              &cfpy_ScriptType };
+                              &cfpy_BSplineSurfaceType,
+                              &cfpy_BezierTriangleType, &cfpy_ScriptType };
     const char *names[] = { "Bezier", "BSpline", "BezierSurface",
                             "BSplineSurface", "BezierTriangle", "Script" };
     PyObject *m;

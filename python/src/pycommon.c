@@ -115,6 +115,12 @@ cfpy_array(PyObject *obj, const char *fn, const char *what, int ndim,
                 cfpy_error(fn, "%s[%zd, %zd] is %s; coordinates must be "
                            "finite", what, (Py_ssize_t)(i / cols),
                            (Py_ssize_t)(i % cols), cfpy_num(v[i], b));
+            } else if (PyArray_NDIM(a) == 3) {
+                npy_intp d1 = PyArray_DIM(a, 1), d2 = PyArray_DIM(a, 2);
+                cfpy_error(fn, "%s[%zd, %zd, %zd] is %s; coordinates must "
+                           "be finite", what, (Py_ssize_t)(i / (d1 * d2)),
+                           (Py_ssize_t)(i / d2 % d1), (Py_ssize_t)(i % d2),
+                           cfpy_num(v[i], b));
             } else {
                 cfpy_error(fn, "%s[%zd] is %s; values must be finite",
                            what, (Py_ssize_t)i, cfpy_num(v[i], b));

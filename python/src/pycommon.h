@@ -143,6 +143,15 @@ PyObject *cfpy_offset(const cf_bezier_t *bz, const cf_bspline_t *bs,
 PyObject *cfpy_reduce(const cf_bezier_t *bz, const cf_bspline_t *bs,
                       PyObject *args, PyObject *kw);
 
+/* The options of interpolate/approximate (and of the surfaces' in
+** pymake.c) into opt: None leaves a default; the arrays params,
+** start_tangent and end_tangent are kept alive in keep[0..2] (the caller
+** releases them).  -1 on bad input. */
+int cfpy_interp_options(const char *fn, PyObject *method, PyObject *param,
+                        PyObject *exponent, PyObject *params, PyObject *t0,
+                        PyObject *t1, int degree, size_t dim,
+                        cf_interp_options_t *opt, PyArrayObject **keep);
+
 /* Module-level functions of each file, NULL-terminated tables. */
 extern PyMethodDef cfpy_interp_functions[];
 extern PyMethodDef cfpy_make_functions[];

@@ -1,7 +1,7 @@
 /*
 ** Surfaces made from curves and the exact quadrics: curvefig.revolve,
 ** extrude, ruled, coons_patch, nurbs_sphere, nurbs_cylinder, nurbs_cone,
-** nurbs_torus and interpolate_surface (the language's
+** nurbs_torus, interpolate_surface and approximate_surface (the language's
 ** render/lua/lsurface-make.c in Python).  A Bézier curve is taken as the
 ** B-spline of its control points on clamped knots (the same curve).
 */
@@ -224,12 +224,15 @@ py_torus(PyObject *mod, PyObject *args, PyObject *kw)
 
 #define KW(f) ((PyCFunction)(void (*)(void))(f))
 
-/* The grid Q of interpolate_surface / approximate_surface: (nu, nv, dim),
-** finite, at least two points each way. */
+/* The grid Q of interpolate_surface / approximate_surface, (nu, nv, dim)
+** finite with at least two points each way, and the options into opt.
+** NULL on bad input. */
 static PyArrayObject *
-fit_grid(PyObject *Q, const char *fn)
+fit_grid(PyObject *Q, const char *fn, PyObject *method, PyObject *param,
+         PyObject *expo, int degree, cf_interp_options_t *opt)
 {
-    PyArrayObject *q = cfpy_array(Q, fn, "points", 3, 1);
+    PyArrayObject *q = cfpy_array(Q, fn, "points", 3, 1),
+                  *keep[3] = { NULL, NULL, NULL };
     if (q != NULL && (PyArray_DIM(q, 0) < 2 || PyArray_DIM(q, 1) < 2 ||
                       PyArray_DIM(q, 2) < 1)) {
         cfpy_error(fn, "points has shape (%zd, %zd, %zd); it must be a grid "
@@ -239,6 +242,12 @@ fit_grid(PyObject *Q, const char *fn)
                    (Py_ssize_t)PyArray_DIM(q, 2));
         Py_CLEAR(q);
     }
+    /* no arrays among the options here: keep[] stays empty */
+    if (q != NULL &&
+        cfpy_interp_options(fn, method, param, expo, Py_None, Py_None,
+                            Py_None, degree, (size_t)PyArray_DIM(q, 2), opt,
+                            keep) != 0)
+        Py_CLEAR(q);
     return q;
 }
 
@@ -249,7 +258,7 @@ py_interpolate_surface(PyObject *mod, PyObject *args, PyObject *kw)
     static char *names[] = { "points", "method", "degree", "param",
                              "exponent", NULL };
     PyObject *Q, *method = Py_None, *param = Py_None, *expo = Py_None;
-    PyArrayObject *q, *keep[3] = { NULL, NULL, NULL };
+    PyArrayObject *q;
     cf_interp_options_t opt;
     cf_bspline_surface_t *out = NULL;
     int degree = 3;
@@ -259,14 +268,8 @@ py_interpolate_surface(PyObject *mod, PyObject *args, PyObject *kw)
     if (!PyArg_ParseTupleAndKeywords(args, kw, "O|OiOO:interpolate_surface",
                                      names, &Q, &method, &degree, &param,
                                      &expo) ||
-        (q = fit_grid(Q, fn)) == NULL)
+        (q = fit_grid(Q, fn, method, param, expo, degree, &opt)) == NULL)
         return NULL;
-    if (cfpy_interp_options(fn, method, param, expo, Py_None, Py_None,
-                            Py_None, degree, (size_t)PyArray_DIM(q, 2), &opt,
-                            keep) != 0) {
-        Py_DECREF(q);
-        return NULL;
-    }
     Py_BEGIN_ALLOW_THREADS
     st = cf_interpolate_surface((size_t)PyArray_DIM(q, 2), PyArray_DATA(q),
                                 (size_t)PyArray_DIM(q, 0),
@@ -284,7 +287,7 @@ py_approximate_surface(PyObject *mod, PyObject *args, PyObject *kw)
     static char *names[] = { "points", "count", "degree", "param",
                              "fix_ends", NULL };
     PyObject *Q, *param = Py_None, *r;
-    PyArrayObject *q, *keep[3] = { NULL, NULL, NULL };
+    PyArrayObject *q;
     Py_ssize_t cu, cv;
     cf_interp_options_t opt;
     cf_bspline_surface_t *out = NULL;
@@ -301,15 +304,9 @@ py_approximate_surface(PyObject *mod, PyObject *args, PyObject *kw)
     if (cu < 2 || cv < 2)
         return cfpy_error(fn, "count is (%zd, %zd); it must be at least "
                           "(2, 2) control points along u and v", cu, cv);
-    q = fit_grid(Q, fn);
+    q = fit_grid(Q, fn, Py_None, param, Py_None, degree, &opt);
     if (q == NULL)
         return NULL;
-    if (cfpy_interp_options(fn, Py_None, param, Py_None, Py_None, Py_None,
-                            Py_None, degree, (size_t)PyArray_DIM(q, 2), &opt,
-                            keep) != 0) {
-        Py_DECREF(q);
-        return NULL;
-    }
     Py_BEGIN_ALLOW_THREADS
     st = cf_approximate_surface((size_t)PyArray_DIM(q, 2), PyArray_DATA(q),
                                 (size_t)PyArray_DIM(q, 0),

@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 import curvefig
+from conftest import exact_values, run_lua
 
 EPS = np.finfo(float).eps
 RNG = np.random.default_rng(34)
@@ -75,3 +76,26 @@ def test_surface_fit_bad_input():
         curvefig.approximate_surface(Q, (9, 3))
     with pytest.raises(TypeError):
         curvefig.approximate_surface(Q, 3)
+
+
+def test_same_bits_as_the_language(tmp_path):
+    """interpolate_surface{} of the language (with and without count) and
+    the module's functions call the same C functions: the values agree to
+    the last bit."""
+    G = np.round(Q * 64) / 64                 # exact in the script's text
+    rows = ", ".join("{ %s }" % ", ".join(
+        "{%r, %r, %r}" % tuple(map(float, p)) for p in row) for row in G)
+    code = """
+local Q = { %s }
+local s = interpolate_surface{ points = Q, method = "global", degree = 2 }
+local a = interpolate_surface{ points = Q, count = {4, 3}, degree = 2 }
+for _, S in ipairs{ s, a } do
+  local p = S:eval(0.3, 0.8)
+  print(string.format("%%a %%a %%a", p[1], p[2], p[3]))
+end
+""" % rows
+    want = exact_values(run_lua(code, tmp_path)).reshape(2, 3)
+    s = curvefig.interpolate_surface(G, method="global", degree=2)
+    a, _ = curvefig.approximate_surface(G, (4, 3), degree=2)
+    assert np.array_equal(np.vstack([s.eval(0.3, 0.8), a.eval(0.3, 0.8)]),
+                          want)

@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 
 import curvefig
+from conftest import exact_values, run_lua
 
 EPS = np.finfo(float).eps
 
@@ -186,3 +187,25 @@ def test_bad_input(cubic):
         curvefig.BezierTriangle(np.zeros((3, 2))).normal(0.2, 0.2)
     with pytest.raises((ValueError, TypeError)):
         cubic.decasteljau(float("nan"), 0.1)
+
+
+def test_same_bits_as_the_language(rational, tmp_path):
+    """bezier_triangle{} of the language and BezierTriangle call the same C
+    functions: eval, derivs and the subdivided patch agree to the last bit;
+    the language counts edges from 1."""
+    code = """
+local t = bezier_triangle{ degree = 3, points = { %s }, weights = { %s } }
+local function out(p) print(string.format("%%a %%a %%a", p[1], p[2], p[3])) end
+out(t:eval(0.25, 0.5))
+for _, d in ipairs(t:derivs(0.1, 0.7, {-1, 1, 0}, 2)) do out(d) end
+local a, b, c = t:subdivide(0.2, 0.3)
+out(b:eval(0.5, 0.1))
+out(t:boundary(2):eval(0.3))
+""" % (", ".join("{%d, %d, %d}" % tuple(p) for p in P3),
+       ", ".join(str(w) for w in W3))
+    want = exact_values(run_lua(code, tmp_path)).reshape(6, 3)
+    got = np.vstack([rational.eval(0.25, 0.5),
+                     rational.derivs(0.1, 0.7, (-1, 1, 0), 2),
+                     rational.subdivide(0.2, 0.3)[1].eval(0.5, 0.1),
+                     rational.boundary(1).eval(0.3)])
+    assert np.array_equal(got, want)

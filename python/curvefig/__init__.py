@@ -13,17 +13,21 @@ docs/python.md is the manual.
 """
 
 from ._core import (Bezier, BSpline, BezierSurface, BSplineSurface,
+                    BezierTriangle,
                     interpolate, approximate, parameters, nurbs_circle, coons,
                     ferguson, ferguson_chain, coons_cubic, revolve, extrude,
                     ruled, coons_patch, nurbs_sphere, nurbs_cylinder,
-                    nurbs_cone, nurbs_torus, version)
+                    nurbs_cone, nurbs_torus, interpolate_surface,
+                    approximate_surface, version)
 from .lua import Lua
 from .figure import Figure, ScriptFigure, render_script, have_html
 
 __all__ = ["Bezier", "BSpline", "BezierSurface", "BSplineSurface",
+           "BezierTriangle",
            "interpolate", "approximate", "parameters", "nurbs_circle",
            "coons", "ferguson", "ferguson_chain", "coons_cubic", "revolve", "extrude", "ruled", "coons_patch",
            "nurbs_sphere", "nurbs_cylinder", "nurbs_cone", "nurbs_torus",
+           "interpolate_surface", "approximate_surface",
            "Figure", "ScriptFigure", "render_script", "Lua",
            "version", "have_html"]
 __version__ = version

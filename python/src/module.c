@@ -48,9 +48,10 @@ PyInit__core(void)
 {
     PyTypeObject *types[] = { &cfpy_BezierType, &cfpy_BSplineType,
                               &cfpy_BezierSurfaceType,
-                              &cfpy_BSplineSurfaceType, &cfpy_ScriptType };
+                              &cfpy_BSplineSurfaceType,
+                              &cfpy_BezierTriangleType, &cfpy_ScriptType };
     const char *names[] = { "Bezier", "BSpline", "BezierSurface",
-                            "BSplineSurface", "Script" };
+                            "BSplineSurface", "BezierTriangle", "Script" };
     PyObject *m;
     import_array();
     m = PyModule_Create(&module);

@@ -360,31 +360,15 @@ static PyObject *
 bz_transform(PyObject *self, PyObject *args)
 {
     PyObject *Aobj, *bobj = Py_None;
-    size_t dim = cf_bezier_dim(SELF(self));
     PyArrayObject *A;
     double *b;
     cf_bezier_t *out = NULL;
     cf_diag_t d;
     cf_status_t st;
-    if (!PyArg_ParseTuple(args, "O|O:transform", &Aobj, &bobj))
+    if (!PyArg_ParseTuple(args, "O|O:transform", &Aobj, &bobj) ||
+        cfpy_affine(Aobj, bobj, "transform", cf_bezier_dim(SELF(self)), &A,
+                    &b) != 0)
         return NULL;
-    A = cfpy_array(Aobj, "transform", "A", 2, 1);
-    if (A == NULL)
-        return NULL;
-    if ((size_t)PyArray_DIM(A, 0) != dim || (size_t)PyArray_DIM(A, 1) != dim) {
-        Py_DECREF(A);
-        return cfpy_error("transform", "A must be %zu x %zu", dim, dim);
-    }
-    b = PyMem_Calloc(dim, sizeof(double));
-    if (b == NULL) {
-        Py_DECREF(A);
-        return PyErr_NoMemory();
-    }
-    if (bobj != Py_None && cfpy_point(bobj, "transform", "b", dim, b) != 0) {
-        Py_DECREF(A);
-        PyMem_Free(b);
-        return NULL;
-    }
     st = cf_bezier_transform(SELF(self), PyArray_DATA(A), b, &out, &d);
     Py_DECREF(A);
     PyMem_Free(b);

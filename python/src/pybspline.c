@@ -418,6 +418,43 @@ bs_support(PyObject *self, PyObject *args)
     return Py_BuildValue("(dd)", lo, hi);
 }
 
+static PyObject *
+bs_transform(PyObject *self, PyObject *args)
+{
+    PyObject *Aobj, *bobj = Py_None;
+    PyArrayObject *A;
+    double *b;
+    cf_bspline_t *out = NULL;
+    cf_diag_t d;
+    cf_status_t st;
+    if (!PyArg_ParseTuple(args, "O|O:transform", &Aobj, &bobj) ||
+        cfpy_affine(Aobj, bobj, "transform", cf_bspline_dim(SELF(self)), &A,
+                    &b) != 0)
+        return NULL;
+    st = cf_bspline_transform(SELF(self), PyArray_DATA(A), b, &out, &d);
+    Py_DECREF(A);
+    PyMem_Free(b);
+    return new_curve("transform", st, &out, &d);
+}
+
+/* (first, (span_lo, span_hi)): P_first .. P_first+p act on the span that
+** contains u, as the language's s:active_points(u). */
+static PyObject *
+bs_active_points(PyObject *self, PyObject *uobj)
+{
+    size_t first;
+    double u, lo, hi, a, b;
+    cf_status_t st;
+    if (cfpy_finite(uobj, "active_points", "u", &u) != 0)
+        return NULL;
+    st = cf_bspline_active_points(SELF(self), u, &first, &lo, &hi);
+    if (st != CF_STATUS_OK) {
+        domain(self, &a, &b);
+        return cfpy_param_error("active_points", st, &u, 1, a, b);
+    }
+    return Py_BuildValue("(n(dd))", (Py_ssize_t)first, lo, hi);
+}
+
 /* ---- the control points and knots --------------------------------------- */
 
 static PyObject *
@@ -531,6 +568,11 @@ static PyMethodDef bs_methods[] = {
     { "elevate", bs_elevate, METH_VARARGS,
       "elevate(t=1): the same curve of degree p + t" },
     { "reverse", bs_reverse, METH_NOARGS, "reverse()" },
+    { "transform", bs_transform, METH_VARARGS,
+      "transform(A, b=None): the affine image x -> A x + b" },
+    { "active_points", bs_active_points, METH_O,
+      "active_points(u): (first, (lo, hi)): P_first..P_first+p act on the "
+      "span [lo, hi) that contains u" },
     { "split", bs_split, METH_O, "split(u): left, right" },
     { "segment", bs_segment, METH_VARARGS, "segment(a, b)" },
     { "move_point", bs_move_point, METH_VARARGS,

@@ -115,6 +115,12 @@ cfpy_array(PyObject *obj, const char *fn, const char *what, int ndim,
                 cfpy_error(fn, "%s[%zd, %zd] is %s; coordinates must be "
                            "finite", what, (Py_ssize_t)(i / cols),
                            (Py_ssize_t)(i % cols), cfpy_num(v[i], b));
+            } else if (PyArray_NDIM(a) == 3) {
+                npy_intp d1 = PyArray_DIM(a, 1), d2 = PyArray_DIM(a, 2);
+                cfpy_error(fn, "%s[%zd, %zd, %zd] is %s; coordinates must "
+                           "be finite", what, (Py_ssize_t)(i / (d1 * d2)),
+                           (Py_ssize_t)(i / d2 % d1), (Py_ssize_t)(i % d2),
+                           cfpy_num(v[i], b));
             } else {
                 cfpy_error(fn, "%s[%zd] is %s; values must be finite",
                            what, (Py_ssize_t)i, cfpy_num(v[i], b));
@@ -180,6 +186,35 @@ cfpy_point(PyObject *obj, const char *fn, const char *what, size_t dim,
     }
     memcpy(out, PyArray_DATA(a), dim * sizeof(double));
     Py_DECREF(a);
+    return 0;
+}
+
+int
+cfpy_affine(PyObject *Aobj, PyObject *bobj, const char *fn, size_t dim,
+            PyArrayObject **A, double **b)
+{
+    *b = NULL;
+    *A = cfpy_array(Aobj, fn, "A", 2, 1);
+    if (*A == NULL)
+        return -1;
+    if ((size_t)PyArray_DIM(*A, 0) != dim ||
+        (size_t)PyArray_DIM(*A, 1) != dim) {
+        cfpy_error(fn, "A must be %zu x %zu", dim, dim);
+        Py_CLEAR(*A);
+        return -1;
+    }
+    *b = PyMem_Calloc(dim, sizeof(double));
+    if (*b == NULL) {
+        Py_CLEAR(*A);
+        PyErr_NoMemory();
+        return -1;
+    }
+    if (bobj != Py_None && cfpy_point(bobj, fn, "b", dim, *b) != 0) {
+        Py_CLEAR(*A);
+        PyMem_Free(*b);
+        *b = NULL;
+        return -1;
+    }
     return 0;
 }
 

@@ -50,6 +50,12 @@ int cfpy_finite(PyObject *obj, const char *fn, const char *what,
 int cfpy_point(PyObject *obj, const char *fn, const char *what, size_t dim,
                double *out);
 
+/* The arguments of transform(A, b=None) for points of dimension dim: A
+** a dim x dim array (a new reference), b a PyMem buffer of dim numbers
+** (zeros for None).  -1 (nothing to release) on bad input. */
+int cfpy_affine(PyObject *Aobj, PyObject *bobj, const char *fn, size_t dim,
+                PyArrayObject **A, double **b);
+
 /* New float64 arrays (uninitialised, C order). */
 PyArrayObject *cfpy_new(int ndim, const npy_intp *shape);
 PyObject *cfpy_vector(const double *v, npy_intp n);
@@ -97,6 +103,7 @@ extern PyTypeObject cfpy_BezierType;
 extern PyTypeObject cfpy_BSplineType;
 extern PyTypeObject cfpy_BezierSurfaceType;
 extern PyTypeObject cfpy_BSplineSurfaceType;
+extern PyTypeObject cfpy_BezierTriangleType;
 extern PyTypeObject cfpy_ScriptType;
 
 typedef struct {
@@ -112,6 +119,18 @@ typedef struct {
 PyObject *cfpy_wrap_bezier(cf_bezier_t *c);
 PyObject *cfpy_wrap_bspline(cf_bspline_t *c);
 PyObject *cfpy_wrap_bspline_surface(cf_bspline_surface_t *s);
+PyObject *cfpy_wrap_bezier_surface(cf_bezier_surface_t *s);
+
+/* The surfaces' schemes and patches (pyscheme.c), as the language's
+** s:decasteljau(u, v) -> (columns, v), s:deboor(u, v) -> ((columns, v),
+** (span_u, span_v)), s:to_bezier() -> grid, s:knot_lines(dir). */
+PyObject *cfpy_bezier_surface_decasteljau(const cf_bezier_surface_t *s,
+                                          PyObject *args);
+PyObject *cfpy_bspline_surface_deboor(const cf_bspline_surface_t *s,
+                                      PyObject *args);
+PyObject *cfpy_bspline_surface_to_beziers(const cf_bspline_surface_t *s);
+PyObject *cfpy_bspline_surface_knot_lines(const cf_bspline_surface_t *s,
+                                          PyObject *dirobj);
 /* A Python list of Bézier curves, taken out of the list (destroyed). */
 PyObject *cfpy_bezier_list(cf_bezier_list_t *list);
 /* A list of cubic Bézier curves, one per segment of cu (not destroyed). */
@@ -123,6 +142,15 @@ PyObject *cfpy_offset(const cf_bezier_t *bz, const cf_bspline_t *bs,
 /* Degree reduction of either kind of curve, as the language's c:reduce. */
 PyObject *cfpy_reduce(const cf_bezier_t *bz, const cf_bspline_t *bs,
                       PyObject *args, PyObject *kw);
+
+/* The options of interpolate/approximate (and of the surfaces' in
+** pymake.c) into opt: None leaves a default; the arrays params,
+** start_tangent and end_tangent are kept alive in keep[0..2] (the caller
+** releases them).  -1 on bad input. */
+int cfpy_interp_options(const char *fn, PyObject *method, PyObject *param,
+                        PyObject *exponent, PyObject *params, PyObject *t0,
+                        PyObject *t1, int degree, size_t dim,
+                        cf_interp_options_t *opt, PyArrayObject **keep);
 
 /* Module-level functions of each file, NULL-terminated tables. */
 extern PyMethodDef cfpy_interp_functions[];

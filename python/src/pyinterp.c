@@ -122,12 +122,11 @@ cfpy_reduce(const cf_bezier_t *bz, const cf_bspline_t *bs, PyObject *args,
                          (Py_ssize_t)rep.knots_removed);
 }
 
-/* The options of interpolate/approximate; arrays kept alive in keep[]. */
-static int
-interp_options(const char *fn, PyObject *method, PyObject *param,
-               PyObject *exponent, PyObject *params, PyObject *t0,
-               PyObject *t1, int degree, size_t dim, cf_interp_options_t *opt,
-               PyArrayObject **keep)
+int
+cfpy_interp_options(const char *fn, PyObject *method, PyObject *param,
+                    PyObject *exponent, PyObject *params, PyObject *t0,
+                    PyObject *t1, int degree, size_t dim,
+                    cf_interp_options_t *opt, PyArrayObject **keep)
 {
     cf_diag_t d;
     cf_interp_options_init(opt);
@@ -217,8 +216,9 @@ py_interpolate(PyObject *mod, PyObject *args, PyObject *kw)
     p = cfpy_points(P, "interpolate", "points", 1);
     if (p == NULL)
         return NULL;
-    if (interp_options("interpolate", method, param, expo, params, t0, t1,
-                       degree, (size_t)PyArray_DIM(p, 1), &opt, keep) == 0) {
+    if (cfpy_interp_options("interpolate", method, param, expo, params, t0,
+                            t1, degree, (size_t)PyArray_DIM(p, 1), &opt,
+                            keep) == 0) {
         opt.closed = closed != 0;
         Py_BEGIN_ALLOW_THREADS
         st = cf_interpolate((size_t)PyArray_DIM(p, 1), PyArray_DATA(p),
@@ -257,9 +257,9 @@ py_approximate(PyObject *mod, PyObject *args, PyObject *kw)
     p = cfpy_points(P, "approximate", "points", 1);
     if (p == NULL)
         return NULL;
-    if (interp_options("approximate", Py_None, param, Py_None, Py_None,
-                       Py_None, Py_None, degree, (size_t)PyArray_DIM(p, 1),
-                       &opt, keep) == 0) {
+    if (cfpy_interp_options("approximate", Py_None, param, Py_None,
+                            Py_None, Py_None, Py_None, degree,
+                            (size_t)PyArray_DIM(p, 1), &opt, keep) == 0) {
         Py_BEGIN_ALLOW_THREADS
         st = cf_approximate_lsq((size_t)PyArray_DIM(p, 1), PyArray_DATA(p),
                                 (size_t)PyArray_DIM(p, 0), (size_t)count,
@@ -293,9 +293,9 @@ py_parameters(PyObject *mod, PyObject *args, PyObject *kw)
     p = cfpy_points(P, "parameters", "points", 1);
     if (p == NULL)
         return NULL;
-    if (interp_options("parameters", Py_None, param, expo, Py_None, Py_None,
-                       Py_None, 3, (size_t)PyArray_DIM(p, 1), &opt,
-                       keep) == 0) {
+    if (cfpy_interp_options("parameters", Py_None, param, expo, Py_None,
+                            Py_None, Py_None, 3, (size_t)PyArray_DIM(p, 1),
+                            &opt, keep) == 0) {
         n = PyArray_DIM(p, 0) + (closed ? 1 : 0);
         out = cfpy_new(1, &n);
         if (out != NULL) {

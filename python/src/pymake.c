@@ -1,7 +1,7 @@
 /*
 ** Surfaces made from curves and the exact quadrics: curvefig.revolve,
 ** extrude, ruled, coons_patch, nurbs_sphere, nurbs_cylinder, nurbs_cone,
-** nurbs_torus and interpolate_surface (the language's
+** nurbs_torus, interpolate_surface and approximate_surface (the language's
 ** render/lua/lsurface-make.c in Python).  A Bézier curve is taken as the
 ** B-spline of its control points on clamped knots (the same curve).
 */
@@ -224,6 +224,101 @@ py_torus(PyObject *mod, PyObject *args, PyObject *kw)
 
 #define KW(f) ((PyCFunction)(void (*)(void))(f))
 
+/* The grid Q of interpolate_surface / approximate_surface, (nu, nv, dim)
+** finite with at least two points each way, and the options into opt.
+** NULL on bad input. */
+static PyArrayObject *
+fit_grid(PyObject *Q, const char *fn, PyObject *method, PyObject *param,
+         PyObject *expo, int degree, cf_interp_options_t *opt)
+{
+    PyArrayObject *q = cfpy_array(Q, fn, "points", 3, 1),
+                  *keep[3] = { NULL, NULL, NULL };
+    if (q != NULL && (PyArray_DIM(q, 0) < 2 || PyArray_DIM(q, 1) < 2 ||
+                      PyArray_DIM(q, 2) < 1)) {
+        cfpy_error(fn, "points has shape (%zd, %zd, %zd); it must be a grid "
+                   "(rows, columns, dim) of at least 2 x 2 points",
+                   (Py_ssize_t)PyArray_DIM(q, 0),
+                   (Py_ssize_t)PyArray_DIM(q, 1),
+                   (Py_ssize_t)PyArray_DIM(q, 2));
+        Py_CLEAR(q);
+    }
+    /* no arrays among the options here: keep[] stays empty */
+    if (q != NULL &&
+        cfpy_interp_options(fn, method, param, expo, Py_None, Py_None,
+                            Py_None, degree, (size_t)PyArray_DIM(q, 2), opt,
+                            keep) != 0)
+        Py_CLEAR(q);
+    return q;
+}
+
+static PyObject *
+py_interpolate_surface(PyObject *mod, PyObject *args, PyObject *kw)
+{
+    static const char *fn = "interpolate_surface";
+    static char *names[] = { "points", "method", "degree", "param",
+                             "exponent", NULL };
+    PyObject *Q, *method = Py_None, *param = Py_None, *expo = Py_None;
+    PyArrayObject *q;
+    cf_interp_options_t opt;
+    cf_bspline_surface_t *out = NULL;
+    int degree = 3;
+    cf_diag_t d;
+    cf_status_t st;
+    (void)mod;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|OiOO:interpolate_surface",
+                                     names, &Q, &method, &degree, &param,
+                                     &expo) ||
+        (q = fit_grid(Q, fn, method, param, expo, degree, &opt)) == NULL)
+        return NULL;
+    Py_BEGIN_ALLOW_THREADS
+    st = cf_interpolate_surface((size_t)PyArray_DIM(q, 2), PyArray_DATA(q),
+                                (size_t)PyArray_DIM(q, 0),
+                                (size_t)PyArray_DIM(q, 1), &opt, &out, NULL,
+                                &d);
+    Py_END_ALLOW_THREADS
+    Py_DECREF(q);
+    return made(fn, st, &out, &d);
+}
+
+static PyObject *
+py_approximate_surface(PyObject *mod, PyObject *args, PyObject *kw)
+{
+    static const char *fn = "approximate_surface";
+    static char *names[] = { "points", "count", "degree", "param",
+                             "fix_ends", NULL };
+    PyObject *Q, *param = Py_None, *r;
+    PyArrayObject *q;
+    Py_ssize_t cu, cv;
+    cf_interp_options_t opt;
+    cf_bspline_surface_t *out = NULL;
+    int degree = 3, fix_ends = 1;
+    double residual = 0.0;
+    cf_diag_t d;
+    cf_status_t st;
+    (void)mod;
+    if (!PyArg_ParseTupleAndKeywords(args, kw,
+                                     "O(nn)|iOp:approximate_surface", names,
+                                     &Q, &cu, &cv, &degree, &param,
+                                     &fix_ends))
+        return NULL;
+    if (cu < 2 || cv < 2)
+        return cfpy_error(fn, "count is (%zd, %zd); it must be at least "
+                          "(2, 2) control points along u and v", cu, cv);
+    q = fit_grid(Q, fn, Py_None, param, Py_None, degree, &opt);
+    if (q == NULL)
+        return NULL;
+    Py_BEGIN_ALLOW_THREADS
+    st = cf_approximate_surface((size_t)PyArray_DIM(q, 2), PyArray_DATA(q),
+                                (size_t)PyArray_DIM(q, 0),
+                                (size_t)PyArray_DIM(q, 1), (size_t)cu,
+                                (size_t)cv, &opt, fix_ends != 0, &out,
+                                &residual, &d);
+    Py_END_ALLOW_THREADS
+    Py_DECREF(q);
+    r = made(fn, st, &out, &d);
+    return r != NULL ? Py_BuildValue("(Nd)", r, residual) : NULL;
+}
+
 PyMethodDef cfpy_make_functions[] = {
     { "revolve", KW(py_revolve), METH_VARARGS | METH_KEYWORDS,
       "revolve(curve, axis=(0, 0, 1), center=(0, 0, 0), start=0, "
@@ -243,5 +338,14 @@ PyMethodDef cfpy_make_functions[] = {
       "nurbs_cone(center, r, h)" },
     { "nurbs_torus", KW(py_torus), METH_VARARGS | METH_KEYWORDS,
       "nurbs_torus(center, R, r)" },
+    { "interpolate_surface", KW(py_interpolate_surface),
+      METH_VARARGS | METH_KEYWORDS,
+      "interpolate_surface(points, method=None, degree=3, param=None, "
+      "exponent=None): the B-spline surface through a (rows, columns, dim) "
+      "grid" },
+    { "approximate_surface", KW(py_approximate_surface),
+      METH_VARARGS | METH_KEYWORDS,
+      "approximate_surface(points, (cu, cv), degree=3, param=None, "
+      "fix_ends=True): (surface, residual), least squares" },
     { NULL, NULL, 0, NULL }
 };

@@ -88,6 +88,12 @@ cfpy_wrap_bspline_surface(cf_bspline_surface_t *s)
     return wrap(&bspline_kind, s);
 }
 
+PyObject *
+cfpy_wrap_bezier_surface(cf_bezier_surface_t *s)
+{
+    return wrap(&bezier_kind, s);
+}
+
 static PyObject *
 new_surface(const kind_t *k, const char *fn, cf_status_t st, void **s,
             const cf_diag_t *d)
@@ -478,6 +484,31 @@ sf_insert_knot(PyObject *self, PyObject *args)
     return new_surface(&bspline_kind, "insert_knot", st, (void **)&out, &d);
 }
 
+static PyObject *
+sf_decasteljau(PyObject *self, PyObject *args)
+{
+    return cfpy_bezier_surface_decasteljau(SELF(self), args);
+}
+
+static PyObject *
+sf_deboor(PyObject *self, PyObject *args)
+{
+    return cfpy_bspline_surface_deboor(SELF(self), args);
+}
+
+static PyObject *
+sf_to_beziers(PyObject *self, PyObject *unused)
+{
+    (void)unused;
+    return cfpy_bspline_surface_to_beziers(SELF(self));
+}
+
+static PyObject *
+sf_knot_lines(PyObject *self, PyObject *dir)
+{
+    return cfpy_bspline_surface_knot_lines(SELF(self), dir);
+}
+
 /* ---- the control net ----------------------------------------------------- */
 
 static void
@@ -583,6 +614,9 @@ sf_repr(PyObject *self)
 
 static PyMethodDef bzs_methods[] = {
     COMMON_METHODS,
+    { "decasteljau", sf_decasteljau, METH_VARARGS,
+      "decasteljau(u, v): (columns, v), the nets in u of the columns and "
+      "the net in v of the points they reach; its last level is S(u, v)" },
     { NULL, NULL, 0, NULL }
 };
 
@@ -590,6 +624,13 @@ static PyMethodDef bss_methods[] = {
     COMMON_METHODS,
     { "insert_knot", sf_insert_knot, METH_VARARGS,
       "insert_knot('u' | 'v', x, r=1)" },
+    { "deboor", sf_deboor, METH_VARARGS,
+      "deboor(u, v): ((columns, v), (span_u, span_v)), the de Boor nets as "
+      "decasteljau's" },
+    { "to_beziers", sf_to_beziers, METH_NOARGS,
+      "to_beziers(): grid[i][j] of BezierSurface, one per non-empty span" },
+    { "knot_lines", sf_knot_lines, METH_O,
+      "knot_lines('u' | 'v'): the distinct knots inside the domain" },
     { NULL, NULL, 0, NULL }
 };
 

@@ -13,6 +13,7 @@ from conftest import CUBIC_P, KNOTS, QUARTIC, exact_values, run_lua
 scipy_interpolate = pytest.importorskip("scipy.interpolate")
 
 T = np.linspace(0.0, 1.0, 101)
+EPS = np.finfo(float).eps
 
 
 def rel_err(a, b):
@@ -292,3 +293,57 @@ def test_degree_reduction(quartic, spline):
     assert s.degree == 3 and rel_err(s.eval(T), spline.eval(T)) < 1e-12
     with pytest.raises(ValueError, match="method"):
         quartic.reduce(method="best")
+
+
+def test_offset_trim(quartic):
+    """d = 1 on the concave side of the quartic's tight turn: the raw offset
+    has a swallowtail (two cusps, one self-intersection); the trimmed
+    chains keep only the points at distance d from the curve."""
+    d, tol = 1.0, 1e-4
+    raw, report, chains = quartic.offset(d, tolerance=tol, trim=True)
+    assert len(quartic.offset(d, tolerance=tol)) == 2
+    assert report["self_intersections"] >= 1 and report["cusps"] == 2
+    assert report["trimmed_chains"] == len(chains) >= 2
+    assert report["trimmed_segments"] == sum(len(c) for c in chains)
+    s = np.linspace(0.0, 1.0, 17)
+
+    def dist(c):
+        return np.array([quartic.closest(p)[1] for p in c.eval(s)])
+    # the swallowtail of the raw offset comes closer than d to the curve
+    assert min(dist(c).min() for c in raw) < d - 0.05
+    for chain in chains:
+        for a, b in zip(chain, chain[1:]):
+            assert np.allclose(a.eval(1.0), b.eval(0.0), rtol=0, atol=1e-12)
+        for c in chain:
+            # the fit's tolerance, plus the distance a trimmed end moves
+            # along the curve (the intersection is found to 1e-9)
+            assert np.all(np.abs(dist(c) - d) <= 2 * tol)
+
+
+def test_bspline_transform_and_active_points(spline):
+    A = np.array([[0.6, -0.8], [0.8, 0.6]]) * 2.0
+    b = np.array([1.5, -2.0])
+    moved = spline.transform(A, b)
+    assert np.array_equal(moved.knots, spline.knots)
+    assert rel_err(moved.points, spline.points @ A.T + b) < 4 * EPS
+    assert rel_err(moved.eval(T), spline.eval(T) @ A.T + b) < 16 * EPS
+    # a NURBS keeps its weights
+    w = np.linspace(1.0, 2.0, len(CUBIC_P))
+    nurbs = curvefig.BSpline(3, KNOTS, np.array(CUBIC_P, float), weights=w)
+    nm = nurbs.transform(A)
+    assert np.array_equal(nm.weights, w)
+    assert rel_err(nm.eval(T), nurbs.eval(T) @ A.T) < 16 * EPS
+    # the span [u_k, u_k+1) containing u, from the knots; the last span is
+    # closed at the end of the domain; P_(k-p) .. P_k act on it, and the
+    # basis functions of the others vanish there
+    U, p = np.array(KNOTS), 3
+    for u in np.linspace(0.0, 1.0, 23):
+        k = min(np.searchsorted(U, u, side="right") - 1, len(U) - p - 2)
+        first, (lo, hi) = spline.active_points(u)
+        assert (first, lo, hi) == (k - p, U[k], U[k + 1])
+    with pytest.raises(ValueError, match="A must be 2 x 2"):
+        spline.transform(np.eye(3))
+    with pytest.raises(ValueError, match="b has 3 coordinates"):
+        spline.transform(np.eye(2), [1, 2, 3])
+    with pytest.raises(ValueError, match=r"\(1.5\) is outside the domain"):
+        spline.active_points(1.5)

@@ -207,7 +207,7 @@ cf__scene_hidden(const cf_scene_t *sc, const double *q,
                 q[1] > l->hi[1] || l->hi[2] <= zmin)
                 continue;
             ns = starts(p, l, st0);
-            for (int k = 0; k < (l->fold ? ns : 1); k++) {
+            for (int k = 0; k < ns && (l->fold || found == 0); k++) {
                 if (!cf__vpatch_locate(sc, l->patch, q, st0[k][0], st0[k][1],
                                        st, h) ||
                     !in_region(p, l, st))

@@ -235,3 +235,35 @@ cf__scene_hidden(const cf_scene_t *sc, const double *q,
     }
     return false;
 }
+
+bool
+cf__scene_box_clear(const cf_scene_t *sc, const double *lo, const double *hi)
+{
+    uint32_t stack[STACK];
+    size_t top = 0;
+    /* the margin grows with the depth: the box's nearest to the eye's */
+    double zmin = lo[2] + margin(sc, lo[2]);
+    if (sc->nnode == 0)
+        return true;
+    stack[top++] = 0;
+    while (top > 0) {
+        const cf__vnode_t *nd = &sc->nodes[stack[--top]];
+        if (nd->hi[0] < lo[0] || nd->lo[0] > hi[0] || nd->hi[1] < lo[1] ||
+            nd->lo[1] > hi[1] || nd->hi[2] <= zmin)
+            continue;
+        if (nd->count == 0) {
+            if (top + 2 > STACK)
+                return false;
+            stack[top++] = nd->first;
+            stack[top++] = nd->first + 1;
+            continue;
+        }
+        for (uint32_t i = nd->first; i < nd->first + nd->count; i++) {
+            const cf__vleaf_t *l = &sc->leaves[i];
+            if (!(l->hi[0] < lo[0] || l->lo[0] > hi[0] || l->hi[1] < lo[1] ||
+                  l->lo[1] > hi[1] || l->hi[2] <= zmin))
+                return false;
+        }
+    }
+    return true;
+}

@@ -733,6 +733,30 @@ test_net(void **state)
     check_net(P3, 3, U3, 9, V3, 10, 5, 6, -60, 35, "bicubic");
 }
 
+/* A square 4 tol wide in front of the middle of a segment, between two of
+** its samples (image steps of 16 tol): found by the certified gaps. */
+static void
+test_small_occluder(void **state)
+{
+    (void)state;
+    double Q[12] = {-2e-3, -2e-3, 1, -2e-3, 2e-3, 1,
+                    2e-3, -2e-3, 1, 2e-3, 2e-3, 1};
+    double p0[3] = {-1, 0, 0}, p1[3] = {1, 0, 0};
+    cf_bezier_surface_t *a = NULL;
+    cf_view_t v;
+    world w;
+    assert_int_equal(cf_bezier_surface_bilinear(3, Q, &a, NULL), 0);
+    assert_int_equal(cf_view_orthographic(&v, 0, 90, NULL), 0);
+    world_init(&w, &v, 1e-3);
+    add_bezier(&w, a);
+    cf_bspline_t *c = segment(p0, p1);
+    check_line(&w, c, NULL, "segment behind a small square");
+    assert_int_equal(w.hidden, 1);
+    cf_bspline_destroy(c);
+    cf_bezier_surface_destroy(a);
+    world_fini(&w);
+}
+
 int
 main(void)
 {
@@ -749,6 +773,7 @@ main(void)
         cmocka_unit_test(test_triangle),
         cmocka_unit_test(test_points),
         cmocka_unit_test(test_net),
+        cmocka_unit_test(test_small_occluder),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -328,9 +328,16 @@ svg_lines(const char *svg)
     size_t n = 0;
     for (const char *p = strstr(svg, "<path"); p != NULL;
          p = strstr(p + 1, "<path")) {
-        const char *end = strchr(p, '>'), *d;
-        if (end == NULL || !(strstr(p, "fill:none") < end
-                             && strstr(p, "fill:none") != NULL))
+        const char *end = strchr(p, '>'), *d, *fill, *stroke;
+        if (end == NULL)
+            continue;
+        /* stroked only: fill:none in its style, or a stroke and no fill
+        ** of its own (the document's group has fill="none") */
+        fill = strstr(p, " fill=\"");
+        stroke = strstr(p, " stroke=\"");
+        if (!(strstr(p, "fill:none") != NULL && strstr(p, "fill:none") < end)
+            && !(stroke != NULL && stroke < end
+                 && (fill == NULL || fill > end)))
             continue;
         d = strstr(p, " d=\"");
         for (d = d != NULL && d < end ? d + 4 : end; d < end && *d != '"';

@@ -72,7 +72,7 @@
 ** tested against the pieces whose image box contains the point's image and
 ** whose depth range reaches in front of it, by Newton's method on the
 ** exact patch from the piece's middle (and its corners, for a folding
-** piece, or where Newton from the middle ends outside the piece); a
+** piece, or where Newton from the middle ends off the patch); a
 ** folding piece smaller than tol where Newton finds nothing hides the
 ** point if it lies wholly in front of it.  No facets, no raster.  Along a
 ** curve, visibility is sampled at image steps of at most 16 tol (and at

@@ -671,8 +671,8 @@ test_no_memory(void **state)
 **   a biquadratic surface whose net segments leave it tangentially at its
 **   corners: the surface hides part of a segment in front of it by a
 **   depth of a few hundredths;
-**   a bicubic surface whose net runs close to it: no surface hides the
-**   net near its control points but the surface itself within tol.
+**   a bicubic surface whose net runs close to it: the surface hides the
+**   net near some control points by less than a hundredth.
 */
 static void
 check_net(const double *P, int p, const double *U, size_t nU,

@@ -172,39 +172,117 @@ bisect(const cf_scene_t *sc, const vcurve_t *vc, size_t k, double ta,
     return vc->t0[k] + 0.5 * (ta + tb) * (vc->t1[k] - vc->t0[k]);
 }
 
+/*
+** Whether nothing can hide the part [ta, tb] (local) of piece k between
+** two visible samples: the view-space box of its control points (the
+** view is projective, so the part's view-space net keeps the convex hull
+** while its weights stay positive) meets no leaf that may lie in front.
+*/
+static bool
+part_clear(const cf_scene_t *sc, const cf_bezier_t *c, double ta, double tb)
+{
+    double h[CF__VIS_MAX_DEG + 1][4], lo[3], hi[3];
+    int n = cf_bezier_degree(c);
+    bool rat = cf_bezier_is_rational(c);
+    const double *x = cf_bezier_hpoints(c);
+    if (n > CF__VIS_MAX_DEG || !(tb > ta))
+        return false;
+    for (int i = 0; i <= n; i++)
+        for (int e = 0; e < 4; e++)
+            h[i][e] = e < 3 ? x[i * (rat ? 4 : 3) + e]
+                            : (rat ? x[i * 4 + 3] : 1.0);
+    /* [0, tb] by de Casteljau, then its part [ta / tb, 1] */
+    for (int r = 1; r <= n; r++)
+        for (int i = n; i >= r; i--)
+            for (int e = 0; e < 4; e++)
+                h[i][e] = (1 - tb) * h[i - 1][e] + tb * h[i][e];
+    double a = ta / tb;
+    for (int r = 1; r <= n; r++)
+        for (int i = 0; i <= n - r; i++)
+            for (int e = 0; e < 4; e++)
+                h[i][e] = (1 - a) * h[i][e] + a * h[i + 1][e];
+    for (int e = 0; e < 3; e++) {
+        lo[e] = HUGE_VAL;
+        hi[e] = -HUGE_VAL;
+    }
+    for (int i = 0; i <= n; i++) {
+        double g[4];
+        for (int r = 0; r < 4; r++)
+            g[r] = sc->M[4 * r] * h[i][0] + sc->M[4 * r + 1] * h[i][1] +
+                   sc->M[4 * r + 2] * h[i][2] + sc->M[4 * r + 3] * h[i][3];
+        if (!(g[3] > 0.0))
+            return false;
+        for (int e = 0; e < 3; e++) {
+            lo[e] = fmin(lo[e], g[e] / g[3]);
+            hi[e] = fmax(hi[e], g[e] / g[3]);
+        }
+    }
+    return cf__scene_box_clear(sc, lo, hi);
+}
+
+typedef struct walk {
+    cf_visibility_t *v;
+    size_t cap;
+    double tstart;
+} walk_t;
+
+/* Between samples a and b (local ta, tb of piece k): a split where they
+** differ; where both are visible the part between them is certified clear
+** of occluders or halved, down to image steps of tol (free curves: a curve
+** on a surface meets its own surface's boxes everywhere). */
+static cf_status_t
+span(const cf_scene_t *sc, const vcurve_t *vc, size_t k, walk_t *w,
+     double ta, const sample_t *a, double tb, const sample_t *b, int depth)
+{
+    if (b->hidden != a->hidden) {
+        double ts = bisect(sc, vc, k, ta, tb, *a, *b);
+        cf_status_t st = push(w->v, &w->cap, w->tstart, ts, !a->hidden,
+                              a->occ);
+        w->tstart = ts;
+        return st;
+    }
+    if (a->hidden || vc->on != NULL || vc->sil != NULL || depth >= 40 ||
+        hypot(a->q[0] - b->q[0], a->q[1] - b->q[1]) <= sc->tol ||
+        part_clear(sc, vc->piece[k], ta, tb))
+        return CF_STATUS_OK;
+    double tm = 0.5 * (ta + tb);
+    sample_t m;
+    classify(sc, vc, k, tm, &m);
+    cf_status_t st = span(sc, vc, k, w, ta, a, tm, &m, depth + 1);
+    if (st == CF_STATUS_OK)
+        st = span(sc, vc, k, w, tm, &m, tb, b, depth + 1);
+    return st;
+}
+
 static cf_status_t
 run(const cf_scene_t *sc, const vcurve_t *vc, cf_visibility_t **out,
     cf_diag_t *diag)
 {
-    cf_visibility_t *v = cf__calloc(1, sizeof *v);
-    size_t cap = 0;
+    walk_t w = {cf__calloc(1, sizeof *w.v), 0, 0.0};
     cf_status_t st = CF_STATUS_OK;
-    if (v == NULL)
+    if (w.v == NULL)
         return cf__error(diag, CF_STATUS_NO_MEMORY, -1, "out of memory");
     for (size_t k = 0; k < vc->n && st == CF_STATUS_OK; k++) {
         size_t ns = sample_count(sc, vc->piece[k]);
         sample_t a, b;
-        double ta = 0.0, tstart = vc->t0[k];
+        double ta = 0.0;
+        w.tstart = vc->t0[k];
         classify(sc, vc, k, 0.0, &a);
         for (size_t i = 1; i <= ns && st == CF_STATUS_OK; i++) {
             double tb = (double)i / (double)ns;
             classify(sc, vc, k, tb, &b);
-            if (b.hidden != a.hidden) {
-                double ts = bisect(sc, vc, k, ta, tb, a, b);
-                st = push(v, &cap, tstart, ts, !a.hidden, a.occ);
-                tstart = ts;
-            }
+            st = span(sc, vc, k, &w, ta, &a, tb, &b, 0);
             a = b;
             ta = tb;
         }
         if (st == CF_STATUS_OK)
-            st = push(v, &cap, tstart, vc->t1[k], !a.hidden, a.occ);
+            st = push(w.v, &w.cap, w.tstart, vc->t1[k], !a.hidden, a.occ);
     }
     if (st != CF_STATUS_OK) {
-        cf_visibility_destroy(v);
+        cf_visibility_destroy(w.v);
         return cf__error(diag, st, -1, "out of memory");
     }
-    *out = v;
+    *out = w.v;
     return CF_STATUS_OK;
 }
 

@@ -136,6 +136,12 @@ typedef struct cf__vself {
 bool cf__scene_hidden(const cf_scene_t *sc, const double *q,
                       const cf__vself_t *self, size_t *occ);
 
+/* Whether no leaf's view-space box meets the view-space box lo[3], hi[3]
+** in the image with any depth more than the depth margin in front of
+** lo[2]: nothing there can hide a point of the box. */
+bool cf__scene_box_clear(const cf_scene_t *sc, const double *lo,
+                         const double *hi);
+
 /* The patch of surface `surface` holding its parameters (u, v), and local
 ** parameters on it (s, t); false if none. */
 bool cf__scene_find(const cf_scene_t *sc, size_t surface, double u, double v,

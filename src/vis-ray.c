@@ -77,6 +77,16 @@ in_region(const cf__vpatch_t *p, const cf__vleaf_t *l, const double *st)
     return b >= -e && c >= -e && b + c <= 1.0 + e;
 }
 
+/* Whether local (s, t) lies on the patch (a little slack). */
+static bool
+in_patch(const cf__vpatch_t *p, const double *st)
+{
+    const double e = 1e-9;
+    if (p->tri)
+        return st[0] >= -e && st[1] >= -e && st[0] + st[1] <= 1.0 + e;
+    return st[0] >= -e && st[0] <= 1.0 + e && st[1] >= -e && st[1] <= 1.0 + e;
+}
+
 /* The local parameters of a leaf's centre and corners. */
 static int
 starts(const cf__vpatch_t *p, const cf__vleaf_t *l, double out[5][2])
@@ -203,15 +213,22 @@ cf__scene_hidden(const cf_scene_t *sc, const double *q,
             const cf__vpatch_t *p = &sc->patches[l->patch];
             double st0[5][2], st[2], h[3], uv[2];
             int ns, found = 0;
+            bool again = true;
             if (q[0] < l->lo[0] || q[0] > l->hi[0] || q[1] < l->lo[1] ||
                 q[1] > l->hi[1] || l->hi[2] <= zmin)
                 continue;
             ns = starts(p, l, st0);
-            for (int k = 0; k < (l->fold ? ns : 1); k++) {
+            for (int k = 0; k < ns && (l->fold || again); k++) {
+                again = false;
                 if (!cf__vpatch_locate(sc, l->patch, q, st0[k][0], st0[k][1],
-                                       st, h) ||
-                    !in_region(p, l, st))
+                                       st, h))
                     continue;
+                if (!in_region(p, l, st)) {
+                    /* off the patch (its continuation past an edge): the
+                    ** corners may still find the hit in the leaf */
+                    again = !in_patch(p, st);
+                    continue;
+                }
                 found++;
                 if (h[2] <= zmin)
                     continue;
@@ -234,4 +251,36 @@ cf__scene_hidden(const cf_scene_t *sc, const double *q,
         }
     }
     return false;
+}
+
+bool
+cf__scene_box_clear(const cf_scene_t *sc, const double *lo, const double *hi)
+{
+    uint32_t stack[STACK];
+    size_t top = 0;
+    /* the margin grows with the depth: the box's nearest to the eye's */
+    double zmin = lo[2] + margin(sc, lo[2]);
+    if (sc->nnode == 0)
+        return true;
+    stack[top++] = 0;
+    while (top > 0) {
+        const cf__vnode_t *nd = &sc->nodes[stack[--top]];
+        if (nd->hi[0] < lo[0] || nd->lo[0] > hi[0] || nd->hi[1] < lo[1] ||
+            nd->lo[1] > hi[1] || nd->hi[2] <= zmin)
+            continue;
+        if (nd->count == 0) {
+            if (top + 2 > STACK)
+                return false;
+            stack[top++] = nd->first;
+            stack[top++] = nd->first + 1;
+            continue;
+        }
+        for (uint32_t i = nd->first; i < nd->first + nd->count; i++) {
+            const cf__vleaf_t *l = &sc->leaves[i];
+            if (!(l->hi[0] < lo[0] || l->lo[0] > hi[0] || l->hi[1] < lo[1] ||
+                  l->lo[1] > hi[1] || l->hi[2] <= zmin))
+                return false;
+        }
+    }
+    return true;
 }

@@ -72,12 +72,17 @@
 ** tested against the pieces whose image box contains the point's image and
 ** whose depth range reaches in front of it, by Newton's method on the
 ** exact patch from the piece's middle (and its corners, for a folding
-** piece); a folding piece smaller than tol where Newton finds nothing
-** hides the point if it lies wholly in front of it.  No facets, no
-** raster.  Along a curve,
-** visibility is sampled at image steps of at most 16 tol (and at least 64
-** samples per Bézier piece), and every change is located by bisection to
-** tol; an occlusion shorter than the sampling step can be missed.
+** piece, or where Newton from the middle ends off the patch); a
+** folding piece smaller than tol where Newton finds nothing hides the
+** point if it lies wholly in front of it.  No facets, no raster.  Along a
+** curve, visibility is sampled at image steps of at most 16 tol (and at
+** least 64 samples per Bézier piece), and every change is located by
+** bisection to tol.  For a curve not on a surface (on == NULL), the part
+** between two visible samples is certified: the box of its control points
+** in view space meets no piece in front of it, or it is halved down to
+** image steps of tol, so no occlusion wider than tol is missed; along a
+** curve on a surface an occlusion shorter than the sampling step can be
+** missed.
 **
 ** Self-occlusion.  A point of a curve drawn on a surface (an iso-line, a
 ** boundary, a silhouette) is not hidden by the surface at itself: hits

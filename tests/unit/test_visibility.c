@@ -665,6 +665,98 @@ test_no_memory(void **state)
     assert_true(k > 10 && k < 100000);
 }
 
+/*
+** Control-net segments (straight lines off the surface) against the
+** surfaces of two of the chapter's figures, each net segment checked:
+**   a biquadratic surface whose net segments leave it tangentially at its
+**   corners: the surface hides part of a segment in front of it by a
+**   depth of a few hundredths;
+**   a bicubic surface whose net runs close to it: the surface hides the
+**   net near some control points by less than a hundredth.
+*/
+static void
+check_net(const double *P, int p, const double *U, size_t nU,
+          const double *V, size_t nV, size_t nu, size_t nv, double az,
+          double el, const char *what)
+{
+    cf_bspline_surface_t *s = NULL;
+    cf_view_t v;
+    world w;
+    char name[64];
+    assert_int_equal(cf_bspline_surface_create(3, p, p, U, nU, V, nV, P, nu,
+                                               nv, NULL, &s, NULL), 0);
+    assert_int_equal(cf_view_orthographic(&v, az, el, NULL), 0);
+    world_init(&w, &v, 1.6e-4);
+    add_bspline(&w, s);
+    for (size_t i = 0; i < nu; i++)
+        for (size_t j = 0; j < nv; j++) {
+            const double *a = P + 3 * (i * nv + j);
+            for (int e = 0; e < 2; e++) {
+                const double *b = e == 0 ? a + 3 * nv : a + 3;
+                if ((e == 0 && i + 1 == nu) || (e == 1 && j + 1 == nv))
+                    continue;
+                cf_bspline_t *c = segment(a, b);
+                snprintf(name, sizeof name, "%s net %zu %zu %s", what, i, j,
+                         e == 0 ? "u" : "v");
+                check_line(&w, c, NULL, name);
+                cf_bspline_destroy(c);
+            }
+        }
+    report(&w, what);
+    cf_bspline_surface_destroy(s);
+    world_fini(&w);
+}
+
+static void
+test_net(void **state)
+{
+    (void)state;
+    double P2[16 * 3], P3[30 * 3];
+    double U2[7] = {0, 0, 0, 1, 2, 2, 2};
+    double U3[9] = {0, 0, 0, 0, 1, 2, 2, 2, 2};
+    double V3[10] = {0, 0, 0, 0, 1, 2, 3, 3, 3, 3};
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            double *x = P2 + 3 * (4 * i + j);
+            x[0] = i;
+            x[1] = j;
+            x[2] = (i + j) % 2 == 0 ? 1.2 : 0.2;
+        }
+    check_net(P2, 2, U2, 7, U2, 7, 4, 4, -60, 30, "biquadratic");
+    for (int i = 0; i < 5; i++)
+        for (int j = 0; j < 6; j++) {
+            double *x = P3 + 3 * (6 * i + j);
+            x[0] = i;
+            x[1] = j;
+            x[2] = 0.8 * sin(i * 1.1) * cos(j * 0.9) + 0.15 * i;
+        }
+    check_net(P3, 3, U3, 9, V3, 10, 5, 6, -60, 35, "bicubic");
+}
+
+/* A square 4 tol wide in front of the middle of a segment, between two of
+** its samples (image steps of 16 tol): found by the certified gaps. */
+static void
+test_small_occluder(void **state)
+{
+    (void)state;
+    double Q[12] = {-2e-3, -2e-3, 1, -2e-3, 2e-3, 1,
+                    2e-3, -2e-3, 1, 2e-3, 2e-3, 1};
+    double p0[3] = {-1, 0, 0}, p1[3] = {1, 0, 0};
+    cf_bezier_surface_t *a = NULL;
+    cf_view_t v;
+    world w;
+    assert_int_equal(cf_bezier_surface_bilinear(3, Q, &a, NULL), 0);
+    assert_int_equal(cf_view_orthographic(&v, 0, 90, NULL), 0);
+    world_init(&w, &v, 1e-3);
+    add_bezier(&w, a);
+    cf_bspline_t *c = segment(p0, p1);
+    check_line(&w, c, NULL, "segment behind a small square");
+    assert_int_equal(w.hidden, 1);
+    cf_bspline_destroy(c);
+    cf_bezier_surface_destroy(a);
+    world_fini(&w);
+}
+
 int
 main(void)
 {
@@ -680,6 +772,8 @@ main(void)
         cmocka_unit_test(test_curl),
         cmocka_unit_test(test_triangle),
         cmocka_unit_test(test_points),
+        cmocka_unit_test(test_net),
+        cmocka_unit_test(test_small_occluder),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

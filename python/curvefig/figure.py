@@ -166,8 +166,9 @@ class _Rendered:
                                            _html.escape(page, quote=True)))
 
     def widgets(self):
-        """The figure with an ipywidgets slider per slider{} of its script,
-        rendered again (natively, as SVG) at every change."""
+        """The figure with its parameters as ipywidgets (a slider per
+        slider{}, x and y fields per point of a points{}), rendered again
+        (natively, as SVG) at every change."""
         from .widgets import interact
         return interact(self)
 

@@ -119,6 +119,17 @@ def test_widgets():
     slider.value = 0.25
     assert box.children[-1].value != before
     assert box.children[-1].value.startswith("<?xml")
+    # the points of points{}: a row (x, y) each; moving P_2 renders what
+    # the script gives with that point moved, byte for byte
+    rows = box.children[1:-1]
+    assert len(rows) == 5
+    x2, y2 = rows[2].children
+    assert (x2.value, y2.value) == (3.0, 0.0)
+    y2.value = 2.5
+    P = [[0, 5], [1, -1], [3, 2.5], [4, 3], [6, 10]]
+    direct = curvefig.render_script(DECASTELJAU, params={"t": 0.25, "P": P})
+    assert box.children[-1].value == direct[0].render("svg").decode("utf-8")
+    assert box.values() == {"t": 0.25, "P": P}
 
 
 def test_print_output(capsys):

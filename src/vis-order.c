@@ -161,7 +161,7 @@ cell_of(const grid_t *g, double v, int axis)
 ** are about the mean box) are large: the small ones go into the grid and
 ** are paired within it; each large one meets the small ones in the cells
 ** under it; the large ones among themselves the same way, recursively
-** (they are at most a quarter of the set).  So the grid has at most
+** (they are at most a third of the set).  So the grid has at most
 ** (SMALL_CELLS + 1)^2 entries a facet whatever the boxes' sizes. */
 #define SMALL_CELLS 4
 #define BRUTE_MAX 32
@@ -200,12 +200,10 @@ compare_set(order_t *o, const size_t *set, size_t n)
     size_t ncell = g.nx * g.ny;
     size_t *large = cf__alloc_array(n, sizeof *large), nlarge = 0;
     g.start = cf__calloc(ncell + 1, sizeof *g.start);
-    g.items = cf__alloc_array(n, (SMALL_CELLS + 1) * (SMALL_CELLS + 1)
-                                     * sizeof *g.items);
-    if (large == NULL || g.start == NULL || g.items == NULL) {
+    g.items = NULL;
+    if (large == NULL || g.start == NULL) {
         cf__free(large);
         cf__free(g.start);
-        cf__free(g.items);
         return CF_STATUS_NO_MEMORY;
     }
     /* counts of the small ones, then each cell's items after its start */
@@ -227,9 +225,16 @@ compare_set(order_t *o, const size_t *set, size_t n)
                         g.items[g.start[y * g.nx + x]++] = set[k];
                 }
         }
-        if (pass == 0)
-            for (size_t c = 0; c < ncell; c++)
-                g.start[c + 1] += g.start[c];
+        if (pass > 0)
+            break;
+        for (size_t c = 0; c < ncell; c++)
+            g.start[c + 1] += g.start[c];
+        g.items = cf__alloc_array(g.start[ncell] + 1, sizeof *g.items);
+        if (g.items == NULL) {
+            cf__free(large);
+            cf__free(g.start);
+            return CF_STATUS_NO_MEMORY;
+        }
     }
     /* g.start[c] is now the end of cell c; undo that shift */
     for (size_t c = ncell; c > 0; c--)

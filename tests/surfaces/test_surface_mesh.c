@@ -23,7 +23,11 @@
 **           99 % of them within the 99th percentile of the triangles'
 **           own differences + 1/255; the mean difference below 2/255.
 **           Pixels near an edge (anti-aliasing, the pieces' hairlines
-**           reach 0.125 bp beyond them) are left out.
+**           reach 0.125 bp beyond them) are left out;
+**   dlist   consecutive mesh triangles are one MESH operation (a path
+**           ends it), a backend with mesh gradients receives them whole,
+**           one without receives four flat pieces a triangle covering it,
+**           and a mesh moved into a panel's cell moves its corners.
 */
 #include <math.h>
 #include <setjmp.h>
@@ -39,6 +43,7 @@
 #include <zlib.h>
 
 #include "backend.h"
+#include "backend-text.h"
 #include "layout-private.h"
 #include "output-private.h"
 #include "script.h"
@@ -303,6 +308,97 @@ test_raster(void **state)
     cairo_surface_destroy(b);
 }
 
+/* ---- the display list's meshes and the seam's stand-ins ----------------- */
+
+typedef struct counts {
+    size_t paths, meshes, tris;
+    double x0;              /* first corner of the first mesh triangle */
+    double area;            /* the flat pieces' areas */
+} counts_t;
+
+static void
+count_path(void *ctx, const cf__path_t *p, const cf__paint_t *paint)
+{
+    counts_t *c = ctx;
+    const double *q = p->coords;
+    c->paths++;
+    if (p->nsegs == 4 && paint->fill)
+        c->area += 0.5 * fabs((q[2] - q[0]) * (q[5] - q[1])
+                              - (q[4] - q[0]) * (q[3] - q[1]));
+}
+
+static void
+count_text(void *ctx, const cf__text_op_t *t)
+{
+    (void)ctx;
+    (void)t;
+}
+
+static void
+count_mesh(void *ctx, const cf__mesh_tri_t *t, size_t n)
+{
+    counts_t *c = ctx;
+    if (c->meshes++ == 0)
+        c->x0 = t[0].p[0];
+    c->tris += n;
+}
+
+static void
+test_dlist_mesh(void **state)
+{
+    cf__backend_t flat = cf__text_backend("flat", count_text);
+    cf__backend_t mesh;
+    cf__mesh_tri_t t;
+    cf__paint_t paint;
+    cf__dl_t dl, moved;
+    counts_t c;
+    (void)state;
+    memset(&t, 0, sizeof t);
+    memset(&paint, 0, sizeof paint);
+    paint.fill = true;
+    flat.draw_path = count_path;
+    flat.draw_mesh = NULL;
+    mesh = flat;
+    mesh.draw_mesh = count_mesh;
+    /* a right triangle of legs 10 and 20 (area 100) */
+    t.p[2] = 10;
+    t.p[5] = 20;
+    cf__dl_init(&dl);
+    cf__dl_mesh_tri(&dl, &t);
+    cf__dl_mesh_tri(&dl, &t);
+    cf__dl_path_begin(&dl);
+    cf__dl_rect(&dl, 0, 0, 1, 1);
+    cf__dl_path_paint(&dl, &paint);
+    cf__dl_mesh_tri(&dl, &t);
+    assert_false(dl.failed);
+    /* consecutive triangles are one mesh; a path ends it */
+    assert_int_equal(dl.count, 3);
+    assert_int_equal(dl.ops[0].kind, CF__OP_MESH);
+    assert_int_equal(dl.ops[0].u.mesh.ntri, 2);
+    assert_int_equal(dl.ops[2].u.mesh.ntri, 1);
+    memset(&c, 0, sizeof c);
+    cf__dl_play(&dl, 0, dl.count, &mesh, &c);
+    assert_int_equal(c.meshes, 2);
+    assert_int_equal(c.tris, 3);
+    assert_int_equal(c.paths, 1);
+    /* without mesh gradients: four pieces a triangle, covering it */
+    memset(&c, 0, sizeof c);
+    cf__dl_play(&dl, 0, dl.count, &flat, &c);
+    assert_int_equal(c.paths, 3 * 4 + 1);
+    assert_true(fabs(c.area - 3 * 100.0) < 1e-9);
+    /* moved into a panel's cell */
+    cf__dl_init(&moved);
+    cf__dl_append_moved(&moved, &dl, 5.0, 7.0);
+    assert_int_equal(moved.count, 3);
+    assert_int_equal(moved.ntris, 3);
+    memset(&c, 0, sizeof c);
+    cf__dl_play(&moved, 0, moved.count, &mesh, &c);
+    assert_true(c.x0 == 5.0);
+    assert_true(moved.tris[2].p[5] == 27.0);
+    cf__dl_free(&moved);
+    cf__dl_free(&dl);
+}
+
 int
 main(void)
 {
@@ -310,6 +406,7 @@ main(void)
         cmocka_unit_test(test_pdf),
         cmocka_unit_test(test_svg),
         cmocka_unit_test(test_raster),
+        cmocka_unit_test(test_dlist_mesh),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -6,14 +6,14 @@
 ** The palette needs every frame's colours, and the frames come one at a
 ** time; a frame is kept until finish as its RGBA pixels deflated at zlib
 ** level 1 (a frame of 301 x 201 pixels of a test figure, 242 KB, keeps in
-** 7 KB), while its colours are counted: exactly for the first EXACT_MAX
-** distinct colours (a figure's flat colours are among them: they fill the
-** first frame already), and in 32768 bins of 5 bits per channel (counts
-** and sums) for all.  At finish:
+** 7 KB), while its colours are counted (anim-palette.c): exactly for the
+** first 4096 distinct colours (a figure's flat colours are among them:
+** they fill the first frame already), and in 32768 bins of 5 bits per
+** channel (counts and sums) for all.  At finish:
 **   - at most 256 distinct colours (255 with transparency): exactly them;
 **   - more (anti-aliased lines over fills, shaded surfaces): the flat
-**     colours kept exact (the most frequent, up to FLAT_MAX, each covering
-**     at least 1/FLAT_SHARE of the pixels), the rest by median cut over
+**     colours kept exact (the most frequent, up to 64, each covering at
+**     least 1/20000 of the pixels), the rest by median cut over
 **     the bins, each pixel drawn in the palette colour nearest to it.
 **     No dithering: line art stays clean.
 ** Transparency: a pixel of alpha < 128 is transparent (GIF has no partial
@@ -43,12 +43,6 @@
 #include "anim-private.h"
 #include "png-private.h"
 
-#define EXACT_MAX 4096          /* distinct colours counted exactly */
-#define EXACT_SLOTS 8192        /* their hash table (load <= 1/2) */
-#define BINS 32768              /* 5 bits per channel */
-#define FLAT_MAX 64             /* flat colours kept exact, at most */
-#define FLAT_SHARE 20000        /* ... each on >= 1/FLAT_SHARE of pixels */
-#define MAP_SLOTS 65536         /* the colour -> index cache */
 #define CLEAR_ALPHA 128         /* alpha below: transparent */
 
 typedef struct kept {
@@ -61,12 +55,7 @@ typedef struct gif_sink {
     cf__anim_sink_t base;
     kept_t *frame;
     size_t cap;
-    uint32_t *key;              /* exact colours: 0 empty, else rgb | 1<<24 */
-    uint64_t *count;
-    unsigned distinct;
-    bool many;                  /* more than EXACT_MAX distinct colours */
-    uint64_t (*bin)[4];         /* pixels, sum of r, g, b per bin */
-    uint64_t opaque, clear;     /* pixels counted */
+    cf__colours_t col;          /* the frames' colours */
     unsigned char *row;         /* one row of RGBA */
     z_stream z;
     bool z_ready;
@@ -74,36 +63,6 @@ typedef struct gif_sink {
 
 /* ---- counting the colours ------------------------------------------------ */
 
-static uint32_t
-hash_rgb(uint32_t key, uint32_t mask)
-{
-    return (key * 2654435761u >> 13) & mask;
-}
-
-/* n pixels of colour rgb (0xRRGGBB) counted. */
-static void
-count_colour(gif_sink_t *g, uint32_t rgb, uint64_t n)
-{
-    uint32_t key = rgb | 1u << 24, i = hash_rgb(key, EXACT_SLOTS - 1);
-    uint64_t *b = g->bin[(rgb >> 9 & 0x7c00) | (rgb >> 6 & 0x3e0)
-                         | (rgb >> 3 & 0x1f)];
-    b[0] += n;
-    b[1] += n * (rgb >> 16);
-    b[2] += n * (rgb >> 8 & 0xff);
-    b[3] += n * (rgb & 0xff);
-    g->opaque += n;
-    while (g->key[i] != 0 && g->key[i] != key)
-        i = (i + 1) & (EXACT_SLOTS - 1);
-    if (g->key[i] == key) {
-        g->count[i] += n;
-    } else if (g->distinct < EXACT_MAX) {
-        g->key[i] = key;
-        g->count[i] = n;
-        g->distinct++;
-    } else {
-        g->many = true;
-    }
-}
 
 /* One frame's row as RGBA bytes in g->row, the transparent pixels as
 ** 0 0 0 0 and the others opaque; its colours counted by runs. */
@@ -133,10 +92,11 @@ take_row(gif_sink_t *g, const cf__anim_frame_t *f, int y)
         for (run = 1; x + run < w && memcmp(q, q + 4 * run, 4) == 0; run++)
             ;
         if (q[3] == 0)
-            g->clear += (uint64_t)run;
+            g->col.clear += (uint64_t)run;
         else
-            count_colour(g, (uint32_t)q[0] << 16 | (uint32_t)q[1] << 8
-                                | q[2], (uint64_t)run);
+            cf__colours_add(&g->col, (uint32_t)q[0] << 16
+                                         | (uint32_t)q[1] << 8 | q[2],
+                            (uint64_t)run);
     }
 }
 
@@ -187,249 +147,7 @@ nomem:
                        f->index);
 }
 
-/* ---- the palette --------------------------------------------------------- */
 
-typedef struct colour {
-    double c[3];                /* mean colour */
-    uint64_t w;                 /* pixels */
-    uint32_t rgb;               /* the colour itself (exact colours) */
-} colour_t;
-
-static int
-cmp_count(const void *a, const void *b)
-{
-    const colour_t *p = a, *q = b;
-    if (p->w != q->w)
-        return p->w > q->w ? -1 : 1;
-    return p->rgb < q->rgb ? -1 : p->rgb > q->rgb;
-}
-
-/* Bins ordered along one channel, ties by the others. */
-static int
-cmp_axis(const colour_t *p, const colour_t *q, int a)
-{
-    for (int i = 0; i < 3; i++) {
-        int c = (a + i) % 3;
-        if (p->c[c] != q->c[c])
-            return p->c[c] < q->c[c] ? -1 : 1;
-    }
-    return 0;
-}
-
-static int cmp_r(const void *a, const void *b) { return cmp_axis(a, b, 0); }
-static int cmp_g(const void *a, const void *b) { return cmp_axis(a, b, 1); }
-static int cmp_b(const void *a, const void *b) { return cmp_axis(a, b, 2); }
-
-/* A box of median cut.  The box split next is the one of the largest
-** side^2 x sqrt(pixels): an anti-aliased blend far from the other colours
-** gets its own entry sooner than by pixels alone (a 60-frame figure of
-** 301 x 201 pixels: largest channel error 19 instead of 39 of 255, mean
-** 0.074 instead of 0.069). */
-typedef struct box {
-    size_t lo, hi;              /* bins [lo, hi) */
-    int axis;                   /* its longest side */
-    double score;               /* 0: unsplittable */
-} box_t;
-
-static void
-box_measure(const colour_t *c, box_t *b)
-{
-    double mn[3] = { 256, 256, 256 }, mx[3] = { -1, -1, -1 }, side = -1;
-    uint64_t w = 0;
-    for (size_t i = b->lo; i < b->hi; i++) {
-        for (int a = 0; a < 3; a++) {
-            mn[a] = fmin(mn[a], c[i].c[a]);
-            mx[a] = fmax(mx[a], c[i].c[a]);
-        }
-        w += c[i].w;
-    }
-    for (int a = 0; a < 3; a++) {
-        if (mx[a] - mn[a] > side) {
-            side = mx[a] - mn[a];
-            b->axis = a;
-        }
-    }
-    b->score = b->hi - b->lo > 1 ? side * side * sqrt((double)w) : 0;
-}
-
-/* Median cut of the bins c[0..n) into at most m boxes; their weighted
-** means appended to pal; the number of colours added. */
-static int
-median_cut(colour_t *c, size_t n, int m, box_t *box, uint32_t *pal)
-{
-    static int (*const cmp[3])(const void *, const void *) = {
-        cmp_r, cmp_g, cmp_b
-    };
-    int nb = 0;
-    if (n == 0 || m < 1)
-        return 0;
-    box[nb].lo = 0;
-    box[nb].hi = n;
-    box_measure(c, &box[nb++]);
-    while (nb < m) {
-        int best = 0;
-        uint64_t total = 0, acc = 0;
-        size_t cut;
-        box_t *b;
-        for (int i = 1; i < nb; i++)
-            if (box[i].score > box[best].score)
-                best = i;
-        b = &box[best];
-        if (b->score <= 0)
-            break;
-        qsort(c + b->lo, b->hi - b->lo, sizeof *c, cmp[b->axis]);
-        for (size_t i = b->lo; i < b->hi; i++)
-            total += c[i].w;
-        /* the first bin past half the pixels starts the second half; both
-        ** halves hold a bin: lo < cut < hi */
-        for (cut = b->lo + 1; cut < b->hi - 1; cut++) {
-            acc += c[cut - 1].w;
-            if (2 * acc >= total)
-                break;
-        }
-        box[nb].lo = cut;
-        box[nb].hi = b->hi;
-        b->hi = cut;
-        box_measure(c, b);
-        box_measure(c, &box[nb++]);
-    }
-    for (int i = 0; i < nb; i++) {
-        double s[3] = { 0, 0, 0 }, w = 0;
-        uint32_t v = 0;
-        for (size_t j = box[i].lo; j < box[i].hi; j++) {
-            for (int a = 0; a < 3; a++)
-                s[a] += c[j].c[a] * (double)c[j].w;
-            w += (double)c[j].w;
-        }
-        for (int a = 0; a < 3; a++)
-            v = v << 8 | (uint32_t)lround(fmin(255, fmax(0, s[a] / w)));
-        pal[i] = v;
-    }
-    return nb;
-}
-
-/* The palette (colours 0xRRGGBB) into pal; the number of opaque colours,
-** or -1 out of memory.  The transparent index, if any, follows them. */
-static int
-make_palette(gif_sink_t *g, uint32_t pal[256])
-{
-    int room = g->clear > 0 ? 255 : 256, n = 0, flat = 0;
-    colour_t *c = cf_alloc_array(BINS > EXACT_MAX ? BINS : EXACT_MAX,
-                                 sizeof *c);
-    box_t *box = cf_alloc_array(256, sizeof *box);
-    size_t nb = 0;
-    if (c == NULL || box == NULL) {
-        cf_free(c);
-        cf_free(box);
-        return -1;
-    }
-    for (size_t i = 0; i < EXACT_SLOTS; i++) {
-        if (g->key[i] != 0) {
-            c[n].rgb = g->key[i] & 0xffffff;
-            c[n++].w = g->count[i];
-        }
-    }
-    qsort(c, (size_t)n, sizeof *c, cmp_count);
-    if (!g->many && n <= room) {
-        for (int i = 0; i < n; i++)
-            pal[i] = c[i].rgb;
-        cf_free(c);
-        cf_free(box);
-        return n;
-    }
-    /* the flat colours, taken out of their bins */
-    while (flat < n && flat < FLAT_MAX
-           && c[flat].w * FLAT_SHARE >= g->opaque) {
-        uint32_t v = c[flat].rgb;
-        uint64_t *b = g->bin[(v >> 9 & 0x7c00) | (v >> 6 & 0x3e0)
-                             | (v >> 3 & 0x1f)];
-        b[0] -= c[flat].w;
-        b[1] -= c[flat].w * (v >> 16);
-        b[2] -= c[flat].w * (v >> 8 & 0xff);
-        b[3] -= c[flat].w * (v & 0xff);
-        pal[flat] = v;
-        flat++;
-    }
-    for (size_t i = 0; i < BINS; i++) {
-        const uint64_t *b = g->bin[i];
-        if (b[0] == 0)
-            continue;
-        for (int a = 0; a < 3; a++)
-            c[nb].c[a] = (double)b[a + 1] / (double)b[0];
-        c[nb].w = b[0];
-        c[nb++].rgb = (uint32_t)i;
-    }
-    n = flat + median_cut(c, nb, room - flat, box, pal + flat);
-    cf_free(c);
-    cf_free(box);
-    return n;
-}
-
-/* ---- pixels to palette indices ------------------------------------------- */
-
-typedef struct mapper {
-    const uint32_t *pal;
-    int n;                      /* opaque colours; index n: transparent */
-    uint32_t *key;              /* cache: rgb | 1<<24 -> index */
-    unsigned char *idx;
-    unsigned used;
-} mapper_t;
-
-static unsigned char
-nearest(const mapper_t *m, uint32_t rgb)
-{
-    long best = -1;
-    int bi = 0;
-    for (int i = 0; i < m->n; i++) {
-        long d = 0;
-        for (int s = 0; s < 24; s += 8) {
-            long e = (long)(rgb >> s & 0xff) - (long)(m->pal[i] >> s & 0xff);
-            d += e * e;
-        }
-        if (best < 0 || d < best) {
-            best = d;
-            bi = i;
-        }
-    }
-    return (unsigned char)bi;
-}
-
-/* The RGBA pixels of a frame as palette indices. */
-static void
-map_pixels(mapper_t *m, const unsigned char *rgba, size_t n,
-           unsigned char *out)
-{
-    uint32_t last = 0;
-    unsigned char li = 0;
-    for (size_t i = 0; i < n; i++, rgba += 4) {
-        uint32_t key, h;
-        if (rgba[3] == 0) {
-            out[i] = (unsigned char)m->n;
-            continue;
-        }
-        key = (uint32_t)rgba[0] << 16 | (uint32_t)rgba[1] << 8 | rgba[2]
-            | 1u << 24;
-        if (key == last) {
-            out[i] = li;
-            continue;
-        }
-        h = hash_rgb(key, MAP_SLOTS - 1);
-        while (m->key[h] != 0 && m->key[h] != key)
-            h = (h + 1) & (MAP_SLOTS - 1);
-        if (m->key[h] == 0) {
-            if (m->used >= MAP_SLOTS / 2) {
-                memset(m->key, 0, MAP_SLOTS * sizeof *m->key);
-                m->used = 0;
-                h = hash_rgb(key, MAP_SLOTS - 1);
-            }
-            m->key[h] = key;
-            m->idx[h] = nearest(m, key & 0xffffff);
-            m->used++;
-        }
-        last = key;
-        li = out[i] = m->idx[h];
-    }
-}
 
 /* ---- LZW ---------------------------------------------------------------- */
 
@@ -492,7 +210,7 @@ lzw_encode(lzw_t *z, int mcs, const unsigned char *idx, int w, int h,
                 continue;
             }
             key = (prefix << 8 | c) + 1;
-            s = hash_rgb(key, DICT_SLOTS - 1);
+            s = cf__hash32(key, DICT_SLOTS - 1);
             while (z->dict[s] != 0 && z->dict[s] != key)
                 s = (s + 1) & (DICT_SLOTS - 1);
             if (z->dict[s] == key) {
@@ -613,7 +331,7 @@ write_head(const gif_sink_t *g, const uint32_t *pal, int ncol, int bits,
     put_u16(out, (unsigned)g->base.width);
     put_u16(out, (unsigned)g->base.height);
     b[0] = (unsigned char)(0x80 | 7 << 4 | (bits - 1));   /* global table */
-    b[1] = (unsigned char)(g->clear > 0 ? ncol : 0);      /* background */
+    b[1] = (unsigned char)(g->col.clear > 0 ? ncol : 0);      /* background */
     b[2] = 0;                                             /* aspect */
     cf__buf_append(out, b, 3);
     for (int i = 0; i < 1 << bits; i++) {
@@ -664,16 +382,15 @@ write_frames(gif_sink_t *g, const uint32_t *pal, int ncol, int mcs,
 {
     int w = g->base.width, h = g->base.height, rc = -1;
     size_t npx = (size_t)w * (size_t)h;
-    bool clear = g->clear > 0;
+    bool clear = g->col.clear > 0;
     unsigned char *rgba = cf_alloc_array(npx, 4);
     unsigned char *cur = cf_malloc(npx), *prev = cf_malloc(npx);
-    mapper_t m = { pal, ncol, cf_calloc(MAP_SLOTS, sizeof(uint32_t)),
-                   cf_malloc(MAP_SLOTS), 0 };
+    cf__palette_map_t m;
     lzw_t z = { out, { 0 }, 0, 0, cf_calloc(DICT_SLOTS, sizeof(uint32_t)),
                 cf_calloc(DICT_SLOTS, sizeof(uint16_t)) };
     bool first = true;
-    if (rgba == NULL || cur == NULL || prev == NULL || m.key == NULL
-        || m.idx == NULL || z.dict == NULL || z.code == NULL)
+    if (cf__palette_map_init(&m, pal, ncol) != 0 || rgba == NULL
+        || cur == NULL || prev == NULL || z.dict == NULL || z.code == NULL)
         goto done;
     for (size_t k = 0; k < g->base.frames; k++) {
         long d = delay[k], parts;
@@ -681,7 +398,7 @@ write_frames(gif_sink_t *g, const uint32_t *pal, int ncol, int mcs,
             continue;
         if (inflate_frame(&g->frame[k], rgba, 4 * npx) != 0)
             goto done;
-        map_pixels(&m, rgba, npx, cur);
+        cf__palette_map(&m, rgba, npx, cur);
         /* a delay over 65535 cs: the frame repeated (unchanged boxes) */
         parts = (d + 65534) / 65535;
         for (long p = 0; p < parts; p++) {
@@ -699,8 +416,7 @@ done:
     cf_free(rgba);
     cf_free(cur);
     cf_free(prev);
-    cf_free(m.key);
-    cf_free(m.idx);
+    cf__palette_map_fini(&m);
     cf_free(z.dict);
     cf_free(z.code);
     return rc;
@@ -713,9 +429,7 @@ gif_free(cf__anim_sink_t *sink)
     for (size_t k = 0; k < g->base.frames && k < g->cap; k++)
         cf_free(g->frame[k].z);
     cf_free(g->frame);
-    cf_free(g->key);
-    cf_free(g->count);
-    cf_free(g->bin);
+    cf__colours_fini(&g->col);
     cf_free(g->row);
     if (g->z_ready)
         deflateEnd(&g->z);
@@ -733,9 +447,9 @@ gif_finish(cf__anim_sink_t *sink, cf__buf_t *out, cf_diag_t *diag)
     long *delay = cf_calloc(n, sizeof *delay);
     int ncol = -1, bits = 1, mcs, rc = -1;
     if (keep != NULL && delay != NULL)
-        ncol = make_palette(g, pal);
+        ncol = cf__colours_palette(&g->col, pal);
     if (ncol >= 0) {
-        int total = ncol + (g->clear > 0);
+        int total = ncol + (g->col.clear > 0);
         while (1 << bits < total)
             bits++;
         mcs = bits < 2 ? 2 : bits;
@@ -766,12 +480,8 @@ cf__anim_gif_open(int width, int height, cf__anim_sink_t **sink,
     if (g == NULL)
         goto nomem;
     g->base.ops = &gif_ops;
-    g->key = cf_calloc(EXACT_SLOTS, sizeof *g->key);
-    g->count = cf_calloc(EXACT_SLOTS, sizeof *g->count);
-    g->bin = cf_calloc(BINS, sizeof *g->bin);
     g->row = cf_alloc_array((size_t)width, 4);   /* RGBA; RGB from w on */
-    if (g->key == NULL || g->count == NULL || g->bin == NULL
-        || g->row == NULL
+    if (cf__colours_init(&g->col) != 0 || g->row == NULL
         || deflateInit2(&g->z, 1, Z_DEFLATED, 15, 8, Z_DEFAULT_STRATEGY)
                != Z_OK)
         goto nomem;

@@ -6,6 +6,9 @@
 #ifndef CURVEFIG_RENDER_ANIM_PRIVATE_H
 #define CURVEFIG_RENDER_ANIM_PRIVATE_H
 
+#include <stddef.h>
+#include <stdint.h>
+
 #include "anim-sink.h"
 
 /* One frame as the encoders see it, checked: the sink's size, seconds
@@ -57,5 +60,51 @@ cf_status_t cf__anim_apng_open(int width, int height, cf__anim_sink_t **sink,
 cf_status_t cf__anim_ffmpeg_open(cf__anim_kind_t kind, int width,
                                  int height, double fps, const char *path,
                                  cf__anim_sink_t **sink, cf_diag_t *diag);
+
+/* ---- the GIF's palette (anim-palette.c) ---------------------------------- */
+
+/* A hash of key in [0, mask] (mask + 1 a power of 2). */
+uint32_t cf__hash32(uint32_t key, uint32_t mask);
+
+/* The colours of the frames counted (see anim-gif.c). */
+typedef struct cf__colours {
+    uint32_t *key;              /* exact colours: 0 empty, else rgb | 1<<24 */
+    uint64_t *count;
+    unsigned distinct;
+    bool many;                  /* more than could be counted exactly */
+    uint64_t (*bin)[4];         /* pixels, sums of r, g, b per bin */
+    uint64_t opaque, clear;     /* pixels counted; transparent pixels (the
+                                   caller counts them) */
+} cf__colours_t;
+
+/* 0, or -1 out of memory (then fini). */
+int cf__colours_init(cf__colours_t *c);
+void cf__colours_fini(cf__colours_t *c);
+
+/* n opaque pixels of colour rgb (0xRRGGBB) counted. */
+void cf__colours_add(cf__colours_t *c, uint32_t rgb, uint64_t n);
+
+/* The palette (colours 0xRRGGBB) into pal: the number of opaque colours
+** (at most 255 when c->clear > 0, leaving an index for transparency), or
+** -1 out of memory.  Uses up the bins: once per count. */
+int cf__colours_palette(cf__colours_t *c, uint32_t pal[256]);
+
+/* Pixels to palette indices: the nearest colour (squared RGB distance),
+** transparent (alpha 0) to index n; a cache of the colours seen. */
+typedef struct cf__palette_map {
+    const uint32_t *pal;
+    int n;
+    uint32_t *key;              /* cache: rgb | 1<<24 -> index */
+    unsigned char *idx;
+    unsigned used;
+} cf__palette_map_t;
+
+/* 0, or -1 out of memory (then fini). */
+int cf__palette_map_init(cf__palette_map_t *m, const uint32_t *pal, int n);
+void cf__palette_map_fini(cf__palette_map_t *m);
+
+/* n RGBA pixels (alpha 0 or 255) as indices into out. */
+void cf__palette_map(cf__palette_map_t *m, const unsigned char *rgba,
+                     size_t n, unsigned char *out);
 
 #endif

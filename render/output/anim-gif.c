@@ -210,7 +210,7 @@ lzw_encode(lzw_t *z, int mcs, const unsigned char *idx, int w, int h,
                 continue;
             }
             key = (prefix << 8 | c) + 1;
-            s = cf__hash32(key, DICT_SLOTS - 1);
+            s = (key * 2654435761u >> 13) & (DICT_SLOTS - 1);
             while (z->dict[s] != 0 && z->dict[s] != key)
                 s = (s + 1) & (DICT_SLOTS - 1);
             if (z->dict[s] == key) {
@@ -279,7 +279,7 @@ inflate_frame(const kept_t *k, unsigned char *rgba, size_t size)
     z_stream z;
     int r;
     memset(&z, 0, sizeof z);
-    if (inflateInit(&z) != Z_OK)
+    if (inflateInit2(&z, -15) != Z_OK)
         return -1;
     z.next_in = k->z;
     z.avail_in = (uInt)k->n;
@@ -482,7 +482,7 @@ cf__anim_gif_open(int width, int height, cf__anim_sink_t **sink,
     g->base.ops = &gif_ops;
     g->row = cf_alloc_array((size_t)width, 4);   /* RGBA; RGB from w on */
     if (cf__colours_init(&g->col) != 0 || g->row == NULL
-        || deflateInit2(&g->z, 1, Z_DEFLATED, 15, 8, Z_DEFAULT_STRATEGY)
+        || deflateInit2(&g->z, 1, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY)
                != Z_OK)
         goto nomem;
     g->z_ready = true;

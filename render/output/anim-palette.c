@@ -21,8 +21,8 @@
 
 /* ---- counting the colours ----------------------------------------------- */
 
-uint32_t
-cf__hash32(uint32_t key, uint32_t mask)
+static uint32_t
+hash32(uint32_t key, uint32_t mask)
 {
     return (key * 2654435761u >> 13) & mask;
 }
@@ -49,7 +49,7 @@ cf__colours_fini(cf__colours_t *c)
 void
 cf__colours_add(cf__colours_t *g, uint32_t rgb, uint64_t n)
 {
-    uint32_t key = rgb | 1u << 24, i = cf__hash32(key, EXACT_SLOTS - 1);
+    uint32_t key = rgb | 1u << 24, i = hash32(key, EXACT_SLOTS - 1);
     uint64_t *b = g->bin[(rgb >> 9 & 0x7c00) | (rgb >> 6 & 0x3e0)
                          | (rgb >> 3 & 0x1f)];
     b[0] += n;
@@ -285,14 +285,14 @@ cf__palette_map(cf__palette_map_t *m, const unsigned char *rgba, size_t n,
             out[i] = li;
             continue;
         }
-        h = cf__hash32(key, MAP_SLOTS - 1);
+        h = hash32(key, MAP_SLOTS - 1);
         while (m->key[h] != 0 && m->key[h] != key)
             h = (h + 1) & (MAP_SLOTS - 1);
         if (m->key[h] == 0) {
             if (m->used >= MAP_SLOTS / 2) {
                 memset(m->key, 0, MAP_SLOTS * sizeof *m->key);
                 m->used = 0;
-                h = cf__hash32(key, MAP_SLOTS - 1);
+                h = hash32(key, MAP_SLOTS - 1);
             }
             m->key[h] = key;
             m->idx[h] = nearest(m, key & 0xffffff);

@@ -63,9 +63,6 @@ cf_status_t cf__anim_ffmpeg_open(cf__anim_kind_t kind, int width,
 
 /* ---- the GIF's palette (anim-palette.c) ---------------------------------- */
 
-/* A hash of key in [0, mask] (mask + 1 a power of 2). */
-uint32_t cf__hash32(uint32_t key, uint32_t mask);
-
 /* The colours of the frames counted (see anim-gif.c). */
 typedef struct cf__colours {
     uint32_t *key;              /* exact colours: 0 empty, else rgb | 1<<24 */

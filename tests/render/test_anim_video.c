@@ -231,6 +231,16 @@ test_failures(void **state)
                                         file, &sink, &d), CF_STATUS_IO);
     assert_non_null(strstr(d.msg, "cannot create a temporary file for"));
     assert_non_null(strstr(d.msg, "missing/v.mp4"));
+    if (geteuid() != 0) {   /* root writes a read-only directory too */
+        snprintf(bin, sizeof bin, "%s/ro", dir);
+        assert_int_equal(mkdir(bin, 0555), 0);
+        snprintf(file, sizeof file, "%s/v.mp4", bin);
+        assert_int_equal(cf__anim_sink_open(CF__ANIM_MP4, VW, VH, FPS,
+                                            true, file, &sink, &d),
+                         CF_STATUS_IO);
+        assert_non_null(strstr(d.msg, "Permission denied"));
+        assert_int_equal(rmdir(bin), 0);
+    }
 
     /* aborted after two frames */
     snprintf(file, sizeof file, "%s/v.webm", dir);

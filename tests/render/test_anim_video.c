@@ -217,7 +217,9 @@ static void
 test_failures(void **state)
 {
     (void)state;
-    char file[256], fake[256], bin[128], *path, *newpath;
+    char file[256], fake[256], bin[128], newpath[8192], path[8000];
+    const char *env;
+    size_t nb, np;
     cf__anim_sink_t *sink = NULL;
     cairo_surface_t *f = draw_frame(VW, VH, 0, true, false,
                                     CAIRO_FORMAT_RGB24);
@@ -267,15 +269,19 @@ test_failures(void **state)
     assert_non_null(fp);
     fputs("old", fp);
     fclose(fp);
-    path = strdup(getenv("PATH"));
-    newpath = malloc(strlen(path) + strlen(bin) + 2);
-    sprintf(newpath, "%s:%s", bin, path);
+    env = getenv("PATH");
+    nb = strlen(bin);
+    np = env != NULL ? strlen(env) : 0;
+    if (nb + np + 2 > sizeof newpath || np + 1 > sizeof path)
+        skip();
+    memcpy(path, env != NULL ? env : "", np + 1);
+    memcpy(newpath, bin, nb);
+    newpath[nb] = ':';
+    memcpy(newpath + nb + 1, path, np + 1);
     setenv("PATH", newpath, 1);
     st = cf__anim_sink_open(CF__ANIM_MP4, VW, VH, FPS, true, file, &sink,
                             &d);
     setenv("PATH", path, 1);
-    free(path);
-    free(newpath);
     assert_int_equal(st, CF_STATUS_OK);
     for (int k = 0; k < 40 && st == CF_STATUS_OK; k++)
         st = cf__anim_sink_add(sink, f, 0.5, &d);

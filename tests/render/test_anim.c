@@ -358,6 +358,47 @@ test_apng(void **state)
     }
 }
 
+/* Edge sizes: 1 x 1 frames of one colour each (a palette of 1 to 3
+** colours, LZW's smallest code size), and frames that do not change (an
+** empty change drawn as one unchanged pixel). */
+static void
+test_tiny(void **state)
+{
+    (void)state;
+    static const double sec[3] = { 0.05, 0.05, 0.05 };
+    for (int kind = CF__ANIM_GIF; kind <= CF__ANIM_APNG; kind++) {
+        for (int same = 0; same < 2; same++) {
+            cairo_surface_t *f[3];
+            cf__buf_t out = { 0 };
+            tu_anim_t a;
+            for (int k = 0; k < 3; k++) {
+                cairo_t *cr;
+                f[k] = cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1);
+                cr = cairo_create(f[k]);
+                cairo_set_source_rgb(cr, same ? 0.5 : k / 2.0, 0.25, 1);
+                cairo_paint(cr);
+                cairo_destroy(cr);
+                cairo_surface_flush(f[k]);
+            }
+            encode_frames((cf__anim_kind_t)kind, f, 3, sec, true, &out);
+            if ((kind == CF__ANIM_GIF ? tu_gif_decode(out.data, out.size, &a)
+                                      : tu_apng_decode(out.data, out.size,
+                                                       &a)) != 0)
+                fail_msg("%s", a.error);
+            assert_int_equal(a.frames, 3);
+            for (unsigned k = 0; k < 3; k++) {
+                assert_int_equal(a.box[k][2] * a.box[k][3], 1);
+                assert_frame_equal(&a, k, f[k]);
+            }
+            if (kind == CF__ANIM_GIF)
+                assert_int_equal(a.colours, same ? 2 : 4);
+            tu_anim_free(&a);
+            cf__buf_free(&out);
+            free_frames(f, 3);
+        }
+    }
+}
+
 /* ---- bad input ---------------------------------------------------------- */
 
 static void
@@ -499,6 +540,7 @@ main(void)
         cmocka_unit_test(test_gif_transparent),
         cmocka_unit_test(test_apng),
         cmocka_unit_test(test_apng_mixed),
+        cmocka_unit_test(test_tiny),
         cmocka_unit_test(test_bad_input),
         cmocka_unit_test(test_out_of_memory),
     };

@@ -61,8 +61,7 @@ typedef struct gif_sink {
     bool z_ready;
 } gif_sink_t;
 
-/* ---- counting the colours ------------------------------------------------ */
-
+/* ---- keeping the frames ------------------------------------------------- */
 
 /* One frame's row as RGBA bytes in g->row, the transparent pixels as
 ** 0 0 0 0 and the others opaque; its colours counted by runs. */
@@ -279,6 +278,8 @@ inflate_frame(const kept_t *k, unsigned char *rgba, size_t size)
     z_stream z;
     int r;
     memset(&z, 0, sizeof z);
+    z.zalloc = cf__png_zalloc;
+    z.zfree = cf__png_zfree;
     if (inflateInit2(&z, -15) != Z_OK)
         return -1;
     z.next_in = k->z;
@@ -481,6 +482,8 @@ cf__anim_gif_open(int width, int height, cf__anim_sink_t **sink,
         goto nomem;
     g->base.ops = &gif_ops;
     g->row = cf_alloc_array((size_t)width, 4);   /* RGBA; RGB from w on */
+    g->z.zalloc = cf__png_zalloc;
+    g->z.zfree = cf__png_zfree;
     if (cf__colours_init(&g->col) != 0 || g->row == NULL
         || deflateInit2(&g->z, 1, Z_DEFLATED, -15, 8, Z_DEFAULT_STRATEGY)
                != Z_OK)

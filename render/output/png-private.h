@@ -27,6 +27,11 @@ cf_status_t cf__png_encode(cairo_surface_t *image, double dpi,
 
 /* ---- the pieces ------------------------------------------------------- */
 
+/* zlib's allocation functions (zalloc, zfree of a z_stream) through the
+** library's allocator hook. */
+void *cf__png_zalloc(void *opaque, unsigned items, unsigned size);
+void cf__png_zfree(void *opaque, void *ptr);
+
 /* v big-endian in p[0..3]. */
 void cf__png_put_u32(unsigned char *p, uint32_t v);
 

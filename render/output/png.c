@@ -112,16 +112,15 @@ cf__png_row_rgb(const unsigned char *src, int width, unsigned char *dst)
     }
 }
 
-/* zlib allocates through the library's hook too. */
-static voidpf
-z_alloc(voidpf opaque, uInt items, uInt size)
+voidpf
+cf__png_zalloc(voidpf opaque, uInt items, uInt size)
 {
     (void)opaque;
     return cf_alloc_array(items, size);
 }
 
-static void
-z_free(voidpf opaque, voidpf ptr)
+void
+cf__png_zfree(voidpf opaque, voidpf ptr)
 {
     (void)opaque;
     cf_free(ptr);
@@ -148,8 +147,8 @@ cf__png_rows(const unsigned char *data, int width, int height, int stride,
     int y, failed = 0;
 
     memset(&z, 0, sizeof z);
-    z.zalloc = z_alloc;
-    z.zfree = z_free;
+    z.zalloc = cf__png_zalloc;
+    z.zfree = cf__png_zfree;
     line = cf_malloc(rowbytes + 1);
     zbuf = cf_malloc(IDAT_MAX + 4);
     if (line == NULL || zbuf == NULL

@@ -54,6 +54,14 @@ typedef struct cf__svg_glyphs {
 void cf__svg_glyphs_attach(cf__svg_glyphs_t *sg, cf__svgw_t *w);
 void cf__svg_glyphs_fini(cf__svg_glyphs_t *sg);
 
+/* A new file of a random name in the directory of path, for a file made
+** there and renamed over path (cf_write_file's way, also the videos'):
+** "DIR/.cf-tmp-XXXXXXXXXXXX" opened write-only with O_CREAT | O_EXCL |
+** O_NOFOLLOW | O_CLOEXEC, mode 0666 less the umask.  *fd and *tmp (freed
+** with cf_free) on success; -1 and NULL on error. */
+cf_status_t cf__temp_open(const char *path, int *fd, char **tmp,
+                          cf_diag_t *diag);
+
 /* The EPS of a PS page from cf__format_render (cairo 1.16.0 only): 0, or
 ** -1 when the PS is not as expected (render the EPS then), -2 out of
 ** memory. */

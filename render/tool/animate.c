@@ -115,15 +115,13 @@ cf__tool_anim_wanted(const cf__tool_anim_t *ta, unsigned fmts)
 int
 cf__tool_anim_check_formats(unsigned fmts, char *msg, size_t size)
 {
-    static const char *const names[] = { "svg", "pdf", "png", "ps", "eps",
-                                         "pgf" };
     for (int f = 0; f < CF_FORMAT_LAST_; f++) {
         if (!(fmts & CF_FORMAT_BIT(f)) || f == CF_FORMAT_SVG
             || f == CF_FORMAT_PDF)
             continue;
         snprintf(msg, size, "-f %s makes no animation (an animation is "
                  "svg, pdf, gif, apng, mp4 or webm%s)",
-                 f < (int)(sizeof names / sizeof names[0]) ? names[f] : "?",
+                 cf_format_extension((cf_format_t)f),
                  f == CF_FORMAT_PNG ? "; apng is an animated png" : "");
         return -1;
     }

@@ -512,13 +512,20 @@ forms_open(anim_t *a, forms_t *f, cf_diag_t *diag)
     if (out & CF__ANIM_OUT_PDF) {
         f->pdf_surf = cairo_pdf_surface_create_for_stream(
             to_buf, &f->pdf, a->page.width, a->page.height);
+        char date[40];
+        cf__pdf_date(date, sizeof date);
         cairo_pdf_surface_set_metadata(f->pdf_surf,
-                                       CAIRO_PDF_METADATA_CREATOR,
-                                       "curvefig");
+                                       CAIRO_PDF_METADATA_CREATE_DATE, date);
+        cairo_pdf_surface_set_metadata(f->pdf_surf,
+                                       CAIRO_PDF_METADATA_MOD_DATE, date);
         if (a->title != NULL)
             cairo_pdf_surface_set_metadata(f->pdf_surf,
                                            CAIRO_PDF_METADATA_TITLE,
                                            a->title);
+        if (a->caption != NULL)
+            cairo_pdf_surface_set_metadata(f->pdf_surf,
+                                           CAIRO_PDF_METADATA_SUBJECT,
+                                           a->caption);
         f->pdf_cr = cairo_create(f->pdf_surf);
         if (cairo_status(f->pdf_cr) != CAIRO_STATUS_SUCCESS)
             return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,

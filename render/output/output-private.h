@@ -25,6 +25,9 @@ cf_status_t cf__svg_steps(const cf__dl_t *dl, const cf__page_t *page,
                           const char *caption, cf__buf_t *out,
                           cf_diag_t *diag);
 
+/* PDF dates: from SOURCE_DATE_EPOCH (ISO 8601, UTC), else 2000-01-01 so
+** that the clock never enters the file (formats.c). */
+void cf__pdf_date(char *buf, size_t cap);
 /* The helpers of the animated SVGs (svg-steps.c, svg-anim.c): s with
 ** < > & " escaped; the part [p, end) of a document with every id and
 ** reference to one prefixed (but those of glyph outlines gN when

@@ -23,6 +23,11 @@ CHECK is one of
            animate: each a clear error, and no file left behind
   beamer   the printed \\animategraphics line compiles in a beamer frame
            with pdflatex and the animate package (skipped without them)
+  raster   frame k of the GIF and of the APNG (decoded by ffmpeg, an
+           independent decoder) shows the figure at slider value k: the
+           static PNG at the same dpi, within the GIF's palette (a pixel
+           differs when a channel is off by more than 48); the MP4's and
+           WebM's frame count from ffprobe
   browser  the animated SVG plays in headless Chromium: paused at two
            times it shows two frames that differ as the static renders do
            (skipped without chromium, chromedriver or selenium)
@@ -331,6 +336,67 @@ def check_beamer(tool, src, tmp):
     check('Pages:           1' in info, 'one slide: ' + info)
 
 
+def decode(path, outdir):
+    """Every frame of an animated image as PPM files, through ffmpeg."""
+    os.mkdir(outdir)
+    run(['ffmpeg', '-loglevel', 'error', '-i', path, '-fps_mode',
+         'passthrough', '-pix_fmt', 'rgb24',
+         os.path.join(outdir, 'f%03d.ppm')])
+    return sorted(os.path.join(outdir, f) for f in os.listdir(outdir))
+
+
+def far(a, b, tol):
+    """Pixels of two RGB images of one size with a channel off by > tol."""
+    check(a[:2] == b[:2], 'sizes differ: %s, %s' % (a[:2], b[:2]))
+    da, db = a[2], b[2]
+    return sum(1 for i in range(0, len(da), 3)
+               if max(abs(da[i] - db[i]), abs(da[i + 1] - db[i + 1]),
+                      abs(da[i + 2] - db[i + 2])) > tol)
+
+
+def check_raster(tool, src, tmp):
+    need('ffmpeg', 'ffprobe')
+    script = os.path.join(src, 'figures', 'interactive', 'decasteljau.lua')
+    values = [0, 0.25, 0.5, 0.75, 1]
+    r = run([tool, 'render', script, '--sweep', 't=0:1', '--frames', '5',
+             '--dpi', '60', '--no-labels', '-f', 'gif,apng,mp4,webm', '-o',
+             tmp], ok=False)
+    if 'no encoders' in r.stderr:
+        print('SKIP: this build has no GIF, APNG or video encoders')
+        sys.exit(SKIP)
+    check(r.returncode == 0, 'render: ' + r.stderr)
+    gif = decode(os.path.join(tmp, 'decasteljau.gif'), os.path.join(tmp, 'g'))
+    apng = decode(os.path.join(tmp, 'decasteljau.apng'),
+                  os.path.join(tmp, 'a'))
+    check(len(gif) == 5 and len(apng) == 5,
+          'five frames: GIF %d, APNG %d' % (len(gif), len(apng)))
+    for k in (1, 3):
+        d = os.path.join(tmp, 'static%d' % k)
+        os.mkdir(d)
+        with_default(script, os.path.join(d, 's.lua'), 't', values[k])
+        run([tool, 'render', os.path.join(d, 's.lua'), '--no-labels',
+             '--dpi', '60', '-f', 'png', '-o', d])
+        run(['ffmpeg', '-loglevel', 'error', '-i',
+             os.path.join(d, 'decasteljau.png'), '-pix_fmt', 'rgb24',
+             os.path.join(d, 'static.ppm')])
+        want = ppm(os.path.join(d, 'static.ppm'))
+        n = far(ppm(apng[k]), want, 2)
+        check(n == 0, 'APNG frame %d differs from the static PNG at t = %g '
+              'in %d pixels' % (k, values[k], n))
+        n = far(ppm(gif[k]), want, 48)
+        check(n <= 0.002 * want[0] * want[1], 'GIF frame %d differs from '
+              'the static PNG at t = %g in %d pixels' % (k, values[k], n))
+        other = ppm(gif[4 - k])
+        check(far(other, want, 48) > 50, 'GIF frame %d is not frame %d'
+              % (4 - k, k))
+    for ext in ('mp4', 'webm'):
+        out = run(['ffprobe', '-v', 'error', '-count_frames', '-select_streams',
+                   'v:0', '-show_entries', 'stream=nb_read_frames', '-of',
+                   'csv=p=0', os.path.join(tmp, 'decasteljau.' + ext)]).stdout
+        check(out.strip() == '5', '%s: 5 frames, ffprobe says %s'
+              % (ext, out.strip()))
+
+
 def check_browser(tool, src, tmp):
     try:
         from selenium import webdriver
@@ -383,7 +449,8 @@ def main():
     what, tool, src = sys.argv[1], os.path.abspath(sys.argv[2]), sys.argv[3]
     checks = {'frames': check_frames, 'union': check_union,
               'labels': check_labels, 'bad': check_bad,
-              'beamer': check_beamer, 'browser': check_browser}
+              'beamer': check_beamer, 'raster': check_raster,
+              'browser': check_browser}
     with tempfile.TemporaryDirectory() as tmp:
         checks[what](tool, src, tmp)
     print('ok', what)

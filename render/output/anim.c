@@ -36,9 +36,7 @@
 #include "layout-private.h"
 #include "measure.h"
 #include "output-private.h"
-#ifdef CF_HAVE_ANIM_SINK
 #include "anim-sink.h"
-#endif
 
 #define MAX_WORKERS 8
 
@@ -480,10 +478,8 @@ typedef struct forms {
     cf__buf_t pdf;
     cairo_surface_t *pdf_surf;
     cairo_t *pdf_cr;
-#ifdef CF_HAVE_ANIM_SINK
     cf__anim_sink_t *sink[4];     /* GIF, APNG, MP4, WebM */
     cf__buf_t bytes[4];
-#endif
 } forms_t;
 
 static cairo_status_t
@@ -532,7 +528,6 @@ forms_open(anim_t *a, forms_t *f, cf_diag_t *diag)
                                "out of memory opening the pdf");
     }
     if (out & CF__ANIM_OUT_RASTER) {
-#ifdef CF_HAVE_ANIM_SINK
         static const unsigned raster_bits[4] = {
             CF__ANIM_OUT_GIF, CF__ANIM_OUT_APNG, CF__ANIM_OUT_MP4,
             CF__ANIM_OUT_WEBM
@@ -552,11 +547,6 @@ forms_open(anim_t *a, forms_t *f, cf_diag_t *diag)
             if (st != CF_STATUS_OK)
                 return st;
         }
-#else
-        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                           "this build has no encoders of animated GIF, "
-                           "APNG or videos (render/output/anim-sink.h)");
-#endif
     }
     return CF_STATUS_OK;
 }
@@ -574,13 +564,11 @@ forms_free(forms_t *f)
     f->pdf_cr = NULL;
     f->pdf_surf = NULL;
     cf__buf_free(&f->pdf);
-#ifdef CF_HAVE_ANIM_SINK
     for (int i = 0; i < 4; i++) {
         cf__anim_sink_abort(f->sink[i]);
         f->sink[i] = NULL;
         cf__buf_free(&f->bytes[i]);
     }
-#endif
 }
 
 /* Frame k's vector forms (the SVG's group, the PDF's page). */
@@ -613,7 +601,6 @@ static cf_status_t
 raster_add(forms_t *f, cairo_surface_t *surf, double seconds,
            cf_diag_t *diag)
 {
-#ifdef CF_HAVE_ANIM_SINK
     for (int i = 0; i < 4; i++)
         if (f->sink[i] != NULL) {
             cf_status_t st = cf__anim_sink_add(f->sink[i], surf, seconds,
@@ -621,12 +608,6 @@ raster_add(forms_t *f, cairo_surface_t *surf, double seconds,
             if (st != CF_STATUS_OK)
                 return st;
         }
-#else
-    (void)f;
-    (void)surf;
-    (void)seconds;
-    (void)diag;
-#endif
     return CF_STATUS_OK;
 }
 
@@ -640,14 +621,12 @@ forms_finish(anim_t *a, forms_t *f, cf_diag_t *diag)
     cf__buf_t svg;
     char *path;
     memset(&svg, 0, sizeof svg);
-#ifdef CF_HAVE_ANIM_SINK
     for (int i = 0; i < 4 && st == CF_STATUS_OK; i++)
         if (f->sink[i] != NULL) {
             st = cf__anim_sink_finish(f->sink[i], i < 2 ? &f->bytes[i] : NULL,
                                       diag);
             f->sink[i] = NULL;
         }
-#endif
     if (st == CF_STATUS_OK && (out & CF__ANIM_OUT_SVG))
         st = cf__svg_anim_finish(&f->svg, a->src->same_figure
                                               ? a->src->frames - 1 : 0,
@@ -665,13 +644,9 @@ forms_finish(anim_t *a, forms_t *f, cf_diag_t *diag)
          bit <<= 1) {
         const cf__buf_t *b = bit == CF__ANIM_OUT_SVG ? &svg
                              : bit == CF__ANIM_OUT_PDF ? &f->pdf
-#ifdef CF_HAVE_ANIM_SINK
                              : bit == CF__ANIM_OUT_GIF ? &f->bytes[0]
                              : &f->bytes[1];
-#else
-                             : NULL;
-#endif
-        if (!(out & bit) || b == NULL)
+        if (!(out & bit))
             continue;
         path = form_path(a, bit);
         st = path == NULL ? cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,

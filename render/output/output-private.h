@@ -91,6 +91,14 @@ cf_status_t cf__svg_anim_finish(cf__svg_anim_t *a, size_t still,
                                 cf__buf_t *out, cf_diag_t *diag);
 void cf__svg_anim_free(cf__svg_anim_t *a);
 
+/* A new file of a random name in the directory of path, for a file made
+** there and renamed over path (cf_write_file's way, also the videos'):
+** "DIR/.cf-tmp-XXXXXXXXXXXX" opened write-only with O_CREAT | O_EXCL |
+** O_NOFOLLOW | O_CLOEXEC, mode 0666 less the umask.  *fd and *tmp (freed
+** with cf_free) on success; -1 and NULL on error. */
+cf_status_t cf__temp_open(const char *path, int *fd, char **tmp,
+                          cf_diag_t *diag);
+
 /* The EPS of a PS page from cf__format_render (cairo 1.16.0 only): 0, or
 ** -1 when the PS is not as expected (render the EPS then), -2 out of
 ** memory. */

@@ -303,6 +303,38 @@ def check_bad(tool, src, tmp):
     r = run([tool, 'render', static, '--animate', '-o', tmp], ok=False)
     check(r.returncode == 1 and 'nothing to animate' in r.stderr,
           'a figure without sliders or steps: ' + r.stderr)
+    # animate{} in the script: its keys and values checked where it is
+    head = 'local t = slider{ name = "t", min = 0, max = 1 }\n'
+    tail = ('local f = figure{ name = "x" }\n'
+            'f:curve(bezier{ {0, 0}, {1, t} })\n')
+    for body, msg in [
+            ('animate{ slidr = "t", from = 0, to = 1 }',
+             "animate: unknown key 'slidr' (did you mean slider?)"),
+            ('animate{ slider = "t", from = 0 }',
+             "slider 't' needs from and to"),
+            ('animate{ slider = "t", from = 0, to = 1, ease = "fast" }',
+             'ease "fast" is unknown'),
+            ('animate{ slider = "t", from = 0, to = 1, frames = 0 }',
+             'frames 0 must be a whole number from 1'),
+            ('animate{ slider = "t", from = 0, to = 1, fps = -1 }',
+             'fps -1 must be positive'),
+            ('animate{ slider = "t", from = 0, to = 1 }\n'
+             'animate{ slider = "t", from = 1, to = 0 }', 'called twice'),
+            ('animate{ slider = "u", from = 0, to = 1 }',
+             "animate{} (line 2): the script declares no slider 'u'"),
+            ('animate{ slider = "t", from = -1, to = 1 }',
+             "animate{} (line 2): t from -1 to 1 leaves the slider's "
+             "range [0, 1]")]:
+        path = os.path.join(tmp, 'anim-bad.lua')
+        with open(path, 'w') as f:
+            f.write(head + body + '\n' + tail)
+        out = os.path.join(tmp, 'anim-bad')
+        r = run([tool, 'render', path, '-f', 'gif', '-o', out], ok=False)
+        check(r.returncode != 0 and msg in r.stderr and 'anim-bad.lua'
+              in r.stderr, '%s: wanted "%s", got "%s"' % (body, msg,
+                                                          r.stderr))
+        check(not os.path.exists(out) or os.listdir(out) == [],
+              '%s left files' % body)
     # a frame whose script fails: named, nothing written
     bad = os.path.join(tmp, 'fails.lua')
     with open(bad, 'w') as f:

@@ -503,6 +503,21 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
         n += is_label(fig, i, &x, &y, &t, &chosen, &s);
     if (n == 0)
         return CF_STATUS_OK;
+    /* an animation's frame drawn with the places it was measured with
+    ** (render/output/anim.c): taken as they are, nothing to search */
+    for (i = 0, j = 0; fig->place_hint_force && i < fig->count; i++)
+        j += is_label(fig, i, &x, &y, &t, &chosen, &s)
+             && s.place == CF_PLACE_AUTO;
+    if (fig->place_hint_force && j == fig->nplace_hint) {
+        for (i = 0, j = 0; i < fig->count; i++)
+            if (is_label(fig, i, &x, &y, &t, &chosen, &s)
+                && s.place == CF_PLACE_AUTO)
+                *chosen = fig->place_hint[j++];
+        fig->placed = true;
+        fig->placed_draft = draft;
+        fig->placed_for = moved;
+        return CF_STATUS_OK;
+    }
     if (n > CF_FIGURE_MAX_LABELS)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
                            "the figure has %zu labels, more than the %d "

@@ -157,6 +157,21 @@ def check_frames(tool, src, tmp):
         n = differing(a, b, 3)
         check(n == 0, 'SVG frame %d differs from the static render at t = %g '
               'in %d pixels' % (k, values[k], n))
+    # with labels: the first frame (no frame before it) is the static
+    # render at t = 0 (the labels placed afresh), every label included
+    lab = os.path.join(tmp, 'lab')
+    run([tool, 'render', script, '--sweep', 't=0:1', '--frames', '5',
+         '-f', 'pdf', '-o', lab])
+    d = os.path.join(tmp, 'static0')
+    os.mkdir(d)
+    with_default(script, os.path.join(d, 's.lua'), 't', 0)
+    run([tool, 'render', os.path.join(d, 's.lua'), '-f', 'pdf', '-o', d])
+    n = differing(pdf_page(os.path.join(lab, 'decasteljau.pdf'), 1,
+                           os.path.join(lab, 'a0')),
+                  pdf_page(os.path.join(d, 'decasteljau.pdf'), 1,
+                           os.path.join(d, 'b0')), 3)
+    check(n == 0, 'the first frame with its labels differs from the static '
+          'render at t = 0 in %d pixels' % n)
     # the overlay steps: one step a frame, each the static step's page
     ov = os.path.join(src, 'figures', 'overlay-deboor.lua')
     od = os.path.join(tmp, 'ov')

@@ -96,6 +96,8 @@ read_sweep(lua_State *L, int idx, cf__anim_spec_t *spec, const char *what)
     sw = &spec->sweep[spec->nsweeps];
     cf__lua_field(L, idx, "slider");
     name = cf__lua_opt_text(L, -1, what, "slider", NULL);
+    if (name == NULL)   /* never: a missing name raised an error */
+        return;
     if (strlen(name) >= sizeof sw->name)
         cf__lua_error(L, "%s: slider name '%.20s...' is too long", what, name);
     for (size_t i = 0; i < spec->nsweeps; i++)

@@ -198,6 +198,13 @@ struct cf_figure {
     ** places the labels once per refit) */
     unsigned char *place_px;
     size_t place_px_size;
+    /* the places the frames of an animation pass on (render/output/
+    ** anim.c; owned by it): the automatic labels in turn keep hint[i]
+    ** while it stays about as clear as their best place, or take it
+    ** (force) */
+    const cf__auto_place_t *place_hint;
+    size_t nplace_hint;
+    bool place_hint_force;
     /* legend (render/layout/legend.c) */
     cf__legend_entry_t *legend;
     size_t nlegend;

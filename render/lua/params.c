@@ -20,6 +20,7 @@ struct cf__params {
     size_t count;
     given_t given[CF__PARAMS_MAX];
     size_t ngiven;
+    bool exact;             /* sliders not snapped (cf__params_set_exact) */
 };
 
 cf__params_t *
@@ -50,6 +51,12 @@ cf__params_destroy(cf__params_t *p)
 }
 
 /* ---- the host ----------------------------------------------------------- */
+
+void
+cf__params_set_exact(cf__params_t *p, bool exact)
+{
+    p->exact = exact;
+}
 
 static const given_t *
 find_given(const cf__params_t *p, const char *name)
@@ -341,7 +348,9 @@ cf__params_slider(cf__params_t *p, const cf__param_t *decl, double *value,
     d->def_xy = d->xy = NULL;
     d->count = 0;
     g = find_given(p, nm);
-    d->value = g != NULL && g->n == 1 ? snap(d, g->v[0]) : d->def;
+    d->value = g == NULL || g->n != 1 ? d->def
+             : p->exact ? fmin(fmax(g->v[0], d->min), d->max)
+             : snap(d, g->v[0]);
     *value = d->value;
     return 0;
 }

@@ -64,6 +64,10 @@ void cf__params_destroy(cf__params_t *p);
 ** table of given values (CF__PARAMS_MAX) runs out. */
 int cf__params_give(cf__params_t *p, const char *name, const double *v,
                     size_t n);
+/* exact: the sliders take the host's values clamped to [min, max] but
+** not snapped to their step (the frames of an animation, render/lua/
+** anim-spec.h, move smoothly); false at first. */
+void cf__params_set_exact(cf__params_t *p, bool exact);
 /* The same from JSON text: an object whose members are numbers or arrays
 ** of [x, y] pairs, { "t": 0.5, "P": [[0, 0], [1, 2]] }.  0, or -1 with a
 ** message in err (malformed JSON, a value of another shape, a name too

@@ -466,6 +466,7 @@ function CurvefigPage(root, engine) {
   var DEG_PER_PX = 0.4;  // a drag across a figure turns it about half round
   var KEY_DEG = 5;       // an arrow key; 15 with Shift
   var rot = null;        // { name, x, y, az, el } while a background is dragged
+  var lastDown = null;   // the last press on a background, for double clicks
 
   function figureNamed(name) {
     return (lastFigures || []).find(function (f) { return f.name === name; });
@@ -512,7 +513,10 @@ function CurvefigPage(root, engine) {
       var b = el('button', { class: 'cf-view-reset', type: 'button',
                              title: 'Back to the script\'s view' },
                  'Reset view');
-      b.addEventListener('click', function () { resetView(fig.name); });
+      b.addEventListener('click', function () {
+        box.focus({ preventScroll: true });   // the button goes with the turn
+        resetView(fig.name);
+      });
       box.appendChild(b);
     }
   }
@@ -532,7 +536,16 @@ function CurvefigPage(root, engine) {
       return;
     fig = figureNamed(box.id.slice(10));
     if (!turnable(fig)) return;
-    ev.preventDefault();
+    ev.preventDefault();      // (which keeps the click from focusing it,
+    box.focus({ preventScroll: true });   // and the browser's dblclick)
+    var now = performance.now(), last = lastDown;
+    lastDown = { name: fig.name, t: now, x: ev.clientX, y: ev.clientY };
+    if (last && last.name === fig.name && now - last.t < 500 &&
+        Math.hypot(ev.clientX - last.x, ev.clientY - last.y) < 8) {
+      lastDown = null;        // a double click: the script's view
+      resetView(fig.name);
+      return;
+    }
     figures.setPointerCapture(ev.pointerId);
     var v = viewOf(fig);
     rot = { name: fig.name, x: ev.clientX, y: ev.clientY, az: v[0],
@@ -577,12 +590,6 @@ function CurvefigPage(root, engine) {
   window.addEventListener('pointerup', rotateEnd);
   window.addEventListener('pointercancel', rotateEnd);
   figures.addEventListener('keydown', rotateKey);
-  figures.addEventListener('dblclick', function (ev) {
-    var box = figureBox(ev.target);
-    if (box && !(ev.target.classList &&
-                 ev.target.classList.contains('cf-handle')))
-      resetView(box.id.slice(10));
-  });
 
   // The rotated views as Lua comments under the values, to paste into
   // figure{ view = ... }.

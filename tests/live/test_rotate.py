@@ -21,7 +21,9 @@ WebAssembly module):
   a redraw after a key press is printed (median of 8);
 - the handle of L still drags in the turned figure: L moves, the view
   stays;
-- a double click on the background goes back to the script's view;
+- a double click on the background goes back to the script's view, and
+  the click focused the figure: Right turns it 5 degrees; its button
+  "Reset view" goes back again;
 - in the course page of a 2D figure (decasteljau) a drag of the
   background changes nothing (no run, the same drawing).
 
@@ -40,6 +42,7 @@ import time
 import test_browser as lb  # noqa: E402  (skips, 77, without selenium)
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
 
 NAME = 'surface-patch'
 SCRIPT_VIEW = [-55, 28]
@@ -152,13 +155,14 @@ def same_drawing(drv, what, svg_static, exact):
 
 
 def background_drag(drv, dx, dy):
-    """Press on the figure's upper right corner (no handle there), move by
-    (dx, dy) in three steps, release."""
+    """Press near the figure's upper right corner (no handle there; the
+    button "Reset view" of a turned figure is above), move by (dx, dy) in
+    three steps, release."""
     svg = drv.find_element(By.CSS_SELECTOR, '[id="cf-figure-%s"] svg'
                            % NAME)
     size = svg.size
     ActionChains(drv).move_to_element_with_offset(
-        svg, size['width'] // 2 - 12, 12 - size['height'] // 2) \
+        svg, size['width'] // 2 - 12, 50 - size['height'] // 2) \
         .click_and_hold().move_by_offset(dx // 3, dy // 3) \
         .move_by_offset(dx // 3, dy // 3) \
         .move_by_offset(dx - 2 * (dx // 3), dy - 2 * (dy // 3)) \
@@ -231,11 +235,24 @@ def exercise(drv, tool, text, what, exact, outdir):
     svg = drv.find_element(By.CSS_SELECTOR, '[id="cf-figure-%s"] svg' % NAME)
     size = svg.size
     ActionChains(drv).move_to_element_with_offset(
-        svg, size['width'] // 2 - 12, 12 - size['height'] // 2) \
+        svg, size['width'] // 2 - 12, 50 - size['height'] // 2) \
         .double_click().perform()
-    quiet(drv, n)
+    n = quiet(drv, n)
     lb.check(view(drv) == SCRIPT_VIEW, '%s: a double click: the script\'s '
              'view again' % what)
+    # the click focused the figure: a real key press turns it
+    ActionChains(drv).send_keys(Keys.ARROW_RIGHT).perform()
+    quiet(drv, n)
+    n = quiet(drv, n)
+    lb.check(view(drv) == [SCRIPT_VIEW[0] - 5, SCRIPT_VIEW[1]],
+             '%s: clicked, then Right: %s' % (what, view(drv)))
+    # the button of a turned figure
+    drv.find_element(By.CSS_SELECTOR, '[id="cf-figure-%s"] '
+                     'button.cf-view-reset' % NAME).click()
+    quiet(drv, n)
+    lb.check(view(drv) == SCRIPT_VIEW and drv.find_elements(
+        By.CSS_SELECTOR, 'button.cf-view-reset') == [],
+        '%s: "Reset view": the script\'s view, the button gone' % what)
     logs = [e for e in drv.get_log('browser')
             if e['level'] in ('SEVERE', 'WARNING')]
     lb.check(logs == [], '%s: no console errors %s' % (what, logs))
@@ -263,7 +280,7 @@ def flat_drag(drv, outdir, tool, src):
              '2D: the figure is not marked as turnable')
     size = svg.size
     ActionChains(drv).move_to_element_with_offset(
-        svg, size['width'] // 2 - 12, 12 - size['height'] // 2) \
+        svg, size['width'] // 2 - 12, 50 - size['height'] // 2) \
         .click_and_hold().move_by_offset(-40, 20).move_by_offset(-40, 20) \
         .release().perform()
     time.sleep(0.5)

@@ -5,7 +5,7 @@
 -- page of -f html, dragging the figure's background turns it (azimuth
 -- and elevation); the printed figure is the view below.
 
-local L = points{ name = "L", default = { { -1.6, 1.9 } } }
+local L = points{ name = "L", default = { { -1.7, 1.2 } } }
 local u = slider{ name = "u", min = 0, max = 1, default = 0.4, step = 0.01 }
 local v = slider{ name = "v", min = 0, max = 1, default = 0.6, step = 0.01 }
 
@@ -25,8 +25,8 @@ end
 local s = bezier_surface{ points = P }
 local S = s:eval(u, v)
 
--- the window holds the patch in every view (the box's half diagonal is
--- 2.3), so that the patch keeps its place and scale while it turns
+-- a window about the origin that holds the patch in every view (the
+-- box's half diagonal is 2.3)
 local f = figure{
   name = "surface-patch",
   caption = "A bicubic Bézier patch and S(u, v) on its iso-curves; "

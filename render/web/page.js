@@ -547,6 +547,7 @@ function CurvefigPage(root, engine) {
       return;
     }
     figures.setPointerCapture(ev.pointerId);
+    hold();                   // it turns in place; released, it is fitted
     var v = viewOf(fig);
     rot = { name: fig.name, x: ev.clientX, y: ev.clientY, az: v[0],
             el: v[1] };
@@ -560,15 +561,13 @@ function CurvefigPage(root, engine) {
          rot.el + (ev.clientY - rot.y) * DEG_PER_PX);
   }
 
-  // (the figure is not held still while it turns, as it is while a point
-  // moves: its fitted window follows the view, or it keeps the script's
-  // window)
   function rotateEnd() {
     if (!rot) return;
     document.querySelectorAll('.cf-rotating').forEach(function (b) {
       b.classList.remove('cf-rotating');
     });
     rot = null;
+    release();
   }
 
   function rotateKey(ev) {

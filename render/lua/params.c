@@ -267,6 +267,10 @@ check_name(const cf__params_t *p, const char *kind, const char *name,
 {
     if (name[0] == '\0')
         return snprintf(err, errlen, "%s: name must not be empty", kind), -1;
+    if (name[0] == '@')
+        return snprintf(err, errlen, "%s '%s': names starting with '@' are "
+                        "reserved for the page (the view of a rotated 3D "
+                        "figure)", kind, name), -1;
     for (size_t i = 0; i < p->count; i++)
         if (strcmp(p->items[i].name, name) == 0)
             return snprintf(err, errlen, "%s '%s': a parameter of this name "
@@ -453,4 +457,21 @@ const cf__param_t *
 cf__params_at(const cf__params_t *p, size_t i)
 {
     return p != NULL && i < p->count ? &p->items[i] : NULL;
+}
+
+bool
+cf__params_view(const cf__params_t *p, const char *figure, double az_el[2])
+{
+    char name[CF__PARAMS_NAME];
+    const given_t *g;
+    int n;
+    if (p == NULL || figure == NULL)
+        return false;
+    n = snprintf(name, sizeof name, "%s%s", CF__PARAMS_VIEW_PREFIX, figure);
+    if (n < 0 || (size_t)n >= sizeof name ||
+        (g = find_given(p, name)) == NULL || g->n != 2)
+        return false;
+    az_el[0] = g->v[0];
+    az_el[1] = fmin(90.0, fmax(-90.0, g->v[1]));
+    return true;
 }

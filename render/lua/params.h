@@ -103,4 +103,16 @@ const cf__param_t *cf__params_at(const cf__params_t *p, size_t i);
 /* Move the point (x, y) onto the constraint of param (grid or line). */
 void cf__params_constrain(const cf__param_t *param, double *x, double *y);
 
+/* ---- the view of a 3D figure -------------------------------------------- */
+
+/* A page rotating a 3D figure gives its view as the reserved value
+** "@view:FIGURE" = [[azimuth, elevation]] (degrees; names of parameters
+** cannot start with '@').  When the host gave one for figure figure,
+** az_el[0..1] (the script's view) is replaced by it, the elevation
+** clamped to [-90, 90], and true is returned; else false and az_el is
+** left as it is, which is all a static render ever sees. */
+#define CF__PARAMS_VIEW_PREFIX "@view:"
+bool cf__params_view(const cf__params_t *p, const char *figure,
+                     double az_el[2]);
+
 #endif

@@ -14,6 +14,7 @@ cf_status_t
 cf_figure_create(double width, double height, cf_unit_t unit,
                  cf_figure_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     return cf__figure_create(cf__fonts_default(), width, height, unit, out,
                              diag);
 }
@@ -22,6 +23,7 @@ cf_status_t
 cf_label_create(const char *text, const char *family, double size_bp,
                 cf_label_t **out, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     return cf__label_create(cf__fonts_default(), text, family, size_bp, out,
                             diag);
 }

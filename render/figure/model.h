@@ -162,6 +162,8 @@ typedef struct cf__legend_entry {
 
 struct cf_figure {
     cf_diag_t err;           /* the first error (sticky) */
+    const struct cf__fonts *fonts;  /* its labels' (render/labels/font.h),
+                                       given at its creation */
     double width, height;    /* bp */
     char *title, *caption;
     cf_theme_t theme;
@@ -239,6 +241,14 @@ struct cf_figure {
         if ((fig)->err.status != CF_STATUS_OK)                             \
             return (fig)->err.status;                                      \
     } while (0)
+
+/* cf_figure_create with the fonts its labels are set in (render/labels/
+** font.h, which the layers below the output take as an argument): the
+** public function is render/output/create.c's, which chooses them; a
+** figure's panels take their figure's. */
+cf_status_t cf__figure_create(const struct cf__fonts *fonts, double width,
+                              double height, cf_unit_t unit,
+                              cf_figure_t **out, cf_diag_t *diag);
 
 /* Record st in the figure (a generic message if the callee left none). */
 cf_status_t cf__fig_fail(cf_figure_t *fig, cf_status_t st, const char *what);

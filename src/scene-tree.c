@@ -120,6 +120,7 @@ cf__vnet_measure(const cf__vpatch_t *p, const double *net, double *c,
     }
     double eps = 1e-9 * ms->img * ms->img;
     ms->fold = pos > eps && neg < -eps;
+    ms->orient = ms->fold ? 0 : pos > eps ? 1 : neg < -eps ? -1 : 0;
 }
 
 static cf_status_t
@@ -134,6 +135,7 @@ push_leaf(cf_scene_t *sc, size_t ip, const piece_t *pc,
     l = &sc->leaves[sc->nleaf++];
     l->patch = (uint32_t)ip;
     l->fold = ms->fold;
+    l->orient = (int8_t)ms->orient;
     memcpy(l->r, pc->r, sizeof l->r);
     memcpy(l->lo, ms->lo, sizeof l->lo);
     memcpy(l->hi, ms->hi, sizeof l->hi);

@@ -230,20 +230,29 @@ cf__scene_leaves(cf_scene_t *sc, size_t ip)
             a.r[2 * dir + 1] = mid;
             b.r[2 * dir] = mid;
         } else {
-            /* the longest edge in the image */
+            /* the longest edge in the image, by its control polygon (not
+            ** its corners: an edge whose ends meet, a loop, is long) */
             int n = p->n, ea = 0, eb = 1;
-            const double *cr[3] = {cart + 3 * tidx(n, n, 0),
-                                   cart + 3 * tidx(n, 0, n),
-                                   cart + 3 * tidx(n, 0, 0)};
             double best = -1.0;
             for (int e = 0; e < 3; e++) {
-                int x = e, y = (e + 1) % 3;
-                double d = hypot(cr[x][0] - cr[y][0], cr[x][1] - cr[y][1]) +
-                           1e-3 * dist3(cr[x], cr[y]);
+                double d = 0.0;
+                for (int i = 0; i < n; i++) {
+                    /* edge 0: b_(n-i) i 0; 1: b_0 (n-i) i; 2: b_i 0 (n-i) */
+                    const double *x0 = cart + 3 * (e == 0 ? tidx(n, n - i, i)
+                                                  : e == 1 ? tidx(n, 0, n - i)
+                                                           : tidx(n, i, 0)),
+                                 *x1 = cart + 3 * (e == 0 ? tidx(n, n - i - 1,
+                                                                i + 1)
+                                                  : e == 1 ? tidx(n, 0,
+                                                                  n - i - 1)
+                                                           : tidx(n, i + 1, 0));
+                    d += hypot(x0[0] - x1[0], x0[1] - x1[1]) +
+                         1e-3 * dist3(x0, x1);
+                }
                 if (d > best) {
                     best = d;
-                    ea = x;
-                    eb = y;
+                    ea = e;
+                    eb = (e + 1) % 3;
                 }
             }
             int pa[3], pb[3];

@@ -10,7 +10,8 @@
 ** curve's: both are drawn exactly as the figure draws any plane curve
 ** (cubic segments within the figure's tolerance, never a polyline).
 ** Points, polygons, labels, arrows and curves given in R^3 are projected
-** by the view.
+** by the view; curves, polylines, polygons, points and labels added with
+** the functions below are also split or hidden by the figure's surfaces.
 **
 ** A point at or behind the eye cannot be drawn: the element that holds it
 ** fails with CF_STATUS_DOMAIN, naming the point and a distance that would

@@ -87,14 +87,35 @@ cf__vnet_measure(const cf__vpatch_t *p, const double *net, double *c,
                     pos = fmax(pos, fmax(k1, k2));
                     neg = fmin(neg, fmin(k1, k2));
                 }
-                if (i == m)
-                    ms->ext[0] = fmax(ms->ext[0],
-                                      hypot(x[0] - c[3 * j], x[1] - c[3 * j + 1]));
-                if (j == n)
-                    ms->ext[1] = fmax(ms->ext[1],
-                                      hypot(x[0] - c[3 * (size_t)i * (n + 1)],
-                                            x[1] - c[3 * (size_t)i * (n + 1) + 1]));
             }
+        /* extents along s and t: the largest distance in the image
+        ** between the ends of a column (a row), or, where the columns
+        ** (rows) are much longer than that (loops: a patch whose rows
+        ** close up was never halved across them), the longest control
+        ** polygon */
+        for (int dir = 0; dir < 2; dir++) {
+            int a = dir == 0 ? n : m, b = dir == 0 ? m : n;
+            double poly = 0.0;
+            for (int j = 0; j <= a; j++) {
+                size_t e0 = dir == 0 ? (size_t)j : (size_t)j * (n + 1),
+                       e1 = dir == 0 ? (size_t)m * (n + 1) + j : e0 + n;
+                double len = 0.0;
+                ms->ext[dir] = fmax(ms->ext[dir],
+                                    hypot(c[3 * e1] - c[3 * e0],
+                                          c[3 * e1 + 1] - c[3 * e0 + 1]));
+                for (int i = 0; i < b; i++) {
+                    size_t k0 = dir == 0 ? (size_t)i * (n + 1) + j
+                                         : (size_t)j * (n + 1) + i,
+                           k1 = dir == 0 ? k0 + (size_t)n + 1 : k0 + 1;
+                    const double *x0 = c + 3 * k0, *x1 = c + 3 * k1;
+                    len += hypot(x1[0] - x0[0], x1[1] - x0[1]) +
+                           1e-3 * dist3(x0, x1);
+                }
+                poly = fmax(poly, len);
+            }
+            if (poly > 4.0 * ms->ext[dir])
+                ms->ext[dir] = poly;
+        }
     } else {
         ms->twist = 0.0;
         ms->ext[0] = ms->ext[1] = 0.0;

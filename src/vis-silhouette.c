@@ -282,7 +282,13 @@ span_fit(ctx_t *c, const double *A, const double *B, int depth)
         return emit(c, &pc);
     }
     double M[2] = {0.5 * (A[0] + B[0]), 0.5 * (A[1] + B[1])};
-    if (depth >= 30 || tiny || !project(c, M)) {
+    double len = hypot(B[0] - A[0], B[1] - A[1]);
+    /* the contour point nearest the middle must split the piece (Newton
+    ** may leave for another branch, off the patch: no progress, down to
+    ** the budget) */
+    if (depth >= 30 || tiny || !project(c, M) ||
+        !(hypot(M[0] - A[0], M[1] - A[1]) < 0.9 * len &&
+          hypot(M[0] - B[0], M[1] - B[1]) < 0.9 * len)) {
         c->out->converged = false;
         return ok ? emit(c, &pc) : CF_STATUS_OK;
     }

@@ -295,8 +295,10 @@ CF_API cf_status_t cf_scene_point_visible(const cf_scene_t *scene,
 ** distance between them): in space (error_space) and in the image
 ** (error_image), and a piece is halved until both are at most tol / 4;
 ** max_error is the largest error_image returned.  A piece that cannot
-** reach that in 30 halvings (or past a bound on the work, 400,000 fits)
-** is kept and converged is false.  A contour loop smaller than a cell of
+** reach that in 30 halvings (or past a bound on the work, 400,000 fits),
+** or whose middle's contour point does not split it, is kept and
+** converged is false; one that cannot be fitted at all (no tangent) with
+** its ends within tol / 4 of each other is left out (converged false).  A contour loop smaller than a cell of
 ** the grid (1/16 of a patch) can be missed.
 */
 typedef struct cf_silhouette_piece {

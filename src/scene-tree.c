@@ -87,14 +87,35 @@ cf__vnet_measure(const cf__vpatch_t *p, const double *net, double *c,
                     pos = fmax(pos, fmax(k1, k2));
                     neg = fmin(neg, fmin(k1, k2));
                 }
-                if (i == m)
-                    ms->ext[0] = fmax(ms->ext[0],
-                                      hypot(x[0] - c[3 * j], x[1] - c[3 * j + 1]));
-                if (j == n)
-                    ms->ext[1] = fmax(ms->ext[1],
-                                      hypot(x[0] - c[3 * (size_t)i * (n + 1)],
-                                            x[1] - c[3 * (size_t)i * (n + 1) + 1]));
             }
+        /* extents along s and t: the largest distance in the image
+        ** between the ends of a column (a row), or, where the columns
+        ** (rows) are much longer than that (loops: a patch whose rows
+        ** close up was never halved across them), the longest control
+        ** polygon */
+        for (int dir = 0; dir < 2; dir++) {
+            int a = dir == 0 ? n : m, b = dir == 0 ? m : n;
+            double poly = 0.0;
+            for (int j = 0; j <= a; j++) {
+                size_t e0 = dir == 0 ? (size_t)j : (size_t)j * (n + 1),
+                       e1 = dir == 0 ? (size_t)m * (n + 1) + j : e0 + n;
+                double len = 0.0;
+                ms->ext[dir] = fmax(ms->ext[dir],
+                                    hypot(c[3 * e1] - c[3 * e0],
+                                          c[3 * e1 + 1] - c[3 * e0 + 1]));
+                for (int i = 0; i < b; i++) {
+                    size_t k0 = dir == 0 ? (size_t)i * (n + 1) + j
+                                         : (size_t)j * (n + 1) + i,
+                           k1 = dir == 0 ? k0 + (size_t)n + 1 : k0 + 1;
+                    const double *x0 = c + 3 * k0, *x1 = c + 3 * k1;
+                    len += hypot(x1[0] - x0[0], x1[1] - x0[1]) +
+                           1e-3 * dist3(x0, x1);
+                }
+                poly = fmax(poly, len);
+            }
+            if (poly > 4.0 * ms->ext[dir])
+                ms->ext[dir] = poly;
+        }
     } else {
         ms->twist = 0.0;
         ms->ext[0] = ms->ext[1] = 0.0;
@@ -120,6 +141,7 @@ cf__vnet_measure(const cf__vpatch_t *p, const double *net, double *c,
     }
     double eps = 1e-9 * ms->img * ms->img;
     ms->fold = pos > eps && neg < -eps;
+    ms->orient = ms->fold ? 0 : pos > eps ? 1 : neg < -eps ? -1 : 0;
 }
 
 static cf_status_t
@@ -134,6 +156,7 @@ push_leaf(cf_scene_t *sc, size_t ip, const piece_t *pc,
     l = &sc->leaves[sc->nleaf++];
     l->patch = (uint32_t)ip;
     l->fold = ms->fold;
+    l->orient = (int8_t)ms->orient;
     memcpy(l->r, pc->r, sizeof l->r);
     memcpy(l->lo, ms->lo, sizeof l->lo);
     memcpy(l->hi, ms->hi, sizeof l->hi);
@@ -228,20 +251,29 @@ cf__scene_leaves(cf_scene_t *sc, size_t ip)
             a.r[2 * dir + 1] = mid;
             b.r[2 * dir] = mid;
         } else {
-            /* the longest edge in the image */
+            /* the longest edge in the image, by its control polygon (not
+            ** its corners: an edge whose ends meet, a loop, is long) */
             int n = p->n, ea = 0, eb = 1;
-            const double *cr[3] = {cart + 3 * tidx(n, n, 0),
-                                   cart + 3 * tidx(n, 0, n),
-                                   cart + 3 * tidx(n, 0, 0)};
             double best = -1.0;
             for (int e = 0; e < 3; e++) {
-                int x = e, y = (e + 1) % 3;
-                double d = hypot(cr[x][0] - cr[y][0], cr[x][1] - cr[y][1]) +
-                           1e-3 * dist3(cr[x], cr[y]);
+                double d = 0.0;
+                for (int i = 0; i < n; i++) {
+                    /* edge 0: b_(n-i) i 0; 1: b_0 (n-i) i; 2: b_i 0 (n-i) */
+                    const double *x0 = cart + 3 * (e == 0 ? tidx(n, n - i, i)
+                                                  : e == 1 ? tidx(n, 0, n - i)
+                                                           : tidx(n, i, 0)),
+                                 *x1 = cart + 3 * (e == 0 ? tidx(n, n - i - 1,
+                                                                i + 1)
+                                                  : e == 1 ? tidx(n, 0,
+                                                                  n - i - 1)
+                                                           : tidx(n, i + 1, 0));
+                    d += hypot(x0[0] - x1[0], x0[1] - x1[1]) +
+                         1e-3 * dist3(x0, x1);
+                }
                 if (d > best) {
                     best = d;
-                    ea = x;
-                    eb = y;
+                    ea = e;
+                    eb = (e + 1) % 3;
                 }
             }
             int pa[3], pb[3];

@@ -18,6 +18,13 @@ typedef struct vcurve {
     size_t n;
     const cf_vis_on_t *on;
     const cf_silhouette_piece_t *sil;   /* classify at the exact contour */
+    /* for the gaps of a curve on a surface: the surface, its (u, v) curve
+    ** (a Bézier on the curve's parameter, or Bézier pieces with their
+    ** ranges; both NULL: unknown), whether it lies exactly on it */
+    size_t surface;
+    const cf_bezier_t *uvb;
+    const cf_bezier_list_t *uvl;
+    bool strict;
 } vcurve_t;
 
 typedef struct sample {
@@ -172,25 +179,25 @@ bisect(const cf_scene_t *sc, const vcurve_t *vc, size_t k, double ta,
     return vc->t0[k] + 0.5 * (ta + tb) * (vc->t1[k] - vc->t0[k]);
 }
 
-/*
-** Whether nothing can hide the part [ta, tb] (local) of piece k between
-** two visible samples: the view-space box of its control points (the
-** view is projective, so the part's view-space net keeps the convex hull
-** while its weights stay positive) meets no leaf that may lie in front.
-*/
+/* The homogeneous control points of the part [ta, tb] (0 <= ta < tb <= 1)
+** of c (in R^1..3): h[i][e] = w x_e (e < dim), h[i][3] = w; false for a
+** degree above CF__VIS_MAX_DEG. */
 static bool
-part_clear(const cf_scene_t *sc, const cf_bezier_t *c, double ta, double tb)
+part_net(const cf_bezier_t *c, double ta, double tb,
+         double h[CF__VIS_MAX_DEG + 1][4])
 {
-    double h[CF__VIS_MAX_DEG + 1][4], lo[3], hi[3];
     int n = cf_bezier_degree(c);
+    size_t dim = cf_bezier_dim(c);
     bool rat = cf_bezier_is_rational(c);
     const double *x = cf_bezier_hpoints(c);
-    if (n > CF__VIS_MAX_DEG || !(tb > ta))
+    size_t stride = dim + (rat ? 1 : 0);
+    if (n > CF__VIS_MAX_DEG || dim > 3 || !(tb > ta))
         return false;
-    for (int i = 0; i <= n; i++)
-        for (int e = 0; e < 4; e++)
-            h[i][e] = e < 3 ? x[i * (rat ? 4 : 3) + e]
-                            : (rat ? x[i * 4 + 3] : 1.0);
+    for (int i = 0; i <= n; i++) {
+        for (size_t e = 0; e < 3; e++)
+            h[i][e] = e < dim ? x[(size_t)i * stride + e] : 0.0;
+        h[i][3] = rat ? x[(size_t)i * stride + dim] : 1.0;
+    }
     /* [0, tb] by de Casteljau, then its part [ta / tb, 1] */
     for (int r = 1; r <= n; r++)
         for (int i = n; i >= r; i--)
@@ -201,11 +208,25 @@ part_clear(const cf_scene_t *sc, const cf_bezier_t *c, double ta, double tb)
         for (int i = 0; i <= n - r; i++)
             for (int e = 0; e < 4; e++)
                 h[i][e] = (1 - a) * h[i][e] + a * h[i + 1][e];
+    return true;
+}
+
+/* The view-space box lo[3], hi[3] of the control points of the part
+** [ta, tb] of c (in R^3): it holds the part (the view is projective, so
+** the part's view-space net keeps the convex hull while its weights stay
+** positive); false when a weight is not. */
+static bool
+part_box(const cf_scene_t *sc, const cf_bezier_t *c, double ta, double tb,
+         double *lo, double *hi)
+{
+    double h[CF__VIS_MAX_DEG + 1][4];
+    if (!part_net(c, ta, tb, h))
+        return false;
     for (int e = 0; e < 3; e++) {
         lo[e] = HUGE_VAL;
         hi[e] = -HUGE_VAL;
     }
-    for (int i = 0; i <= n; i++) {
+    for (int i = 0; i <= cf_bezier_degree(c); i++) {
         double g[4];
         for (int r = 0; r < 4; r++)
             g[r] = sc->M[4 * r] * h[i][0] + sc->M[4 * r + 1] * h[i][1] +
@@ -217,7 +238,87 @@ part_clear(const cf_scene_t *sc, const cf_bezier_t *c, double ta, double tb)
             hi[e] = fmax(hi[e], g[e] / g[3]);
         }
     }
-    return cf__scene_box_clear(sc, lo, hi);
+    return true;
+}
+
+/* Widen box[4] (u0 u1 v0 v1) by the control points of the part [a, b]
+** of the (u, v) curve uv; false if they are not all finite. */
+static bool
+uv_extend(const cf_bezier_t *uv, double a, double b, double *box)
+{
+    double h[CF__VIS_MAX_DEG + 1][4];
+    if (!part_net(uv, a, b, h))
+        return false;
+    for (int i = 0; i <= cf_bezier_degree(uv); i++) {
+        if (!(h[i][3] > 0.0))
+            return false;
+        for (int e = 0; e < 2; e++) {
+            double x = h[i][e] / h[i][3];
+            if (!isfinite(x))
+                return false;
+            box[2 * e] = fmin(box[2 * e], x);
+            box[2 * e + 1] = fmax(box[2 * e + 1], x);
+        }
+    }
+    return true;
+}
+
+/* The box of the (u, v) of the part [ta, tb] (local) of piece k: its (u,
+** v) curve's control points there; false when unknown. */
+static bool
+part_uv(const vcurve_t *vc, size_t k, double ta, double tb, double *box)
+{
+    double d = vc->t1[k] - vc->t0[k];
+    double ga = vc->t0[k] + ta * d, gb = vc->t0[k] + tb * d;
+    box[0] = box[2] = HUGE_VAL;
+    box[1] = box[3] = -HUGE_VAL;
+    if (vc->uvb != NULL)   /* parametrised as the curve: [0, 1] */
+        return ga >= 0.0 && gb <= 1.0 && uv_extend(vc->uvb, ga, gb, box);
+    if (vc->uvl == NULL)
+        return false;
+    bool any = false;
+    for (size_t j = 0; j < vc->uvl->count; j++) {
+        double T0 = vc->uvl->t0[j], T1 = vc->uvl->t1[j];
+        if (!(T1 > T0) || T1 <= ga || T0 >= gb)
+            continue;
+        if (!uv_extend(vc->uvl->items[j], (fmax(ga, T0) - T0) / (T1 - T0),
+                       (fmin(gb, T1) - T0) / (T1 - T0), box))
+            return false;
+        any = true;
+    }
+    return any;
+}
+
+/*
+** Whether nothing can hide the part [ta, tb] (local) of piece k between
+** two visible samples: the view-space box of its control points meets no
+** leaf that may lie in front.  For a curve on a surface whose (u, v) curve
+** is known, the surface's own leaves about the part's (u, v) are judged by
+** cf__scene_box_clear_on; a silhouette's box is widened by its piece's
+** error (the samples are the exact contour points).
+*/
+static bool
+part_clear(const cf_scene_t *sc, const vcurve_t *vc, size_t k, double ta,
+           double tb)
+{
+    double lo[3], hi[3], uv[4];
+    if (!part_box(sc, vc->piece[k], ta, tb, lo, hi))
+        return false;
+    if (vc->on == NULL && vc->sil == NULL)
+        return cf__scene_box_clear(sc, lo, hi);
+    if (!part_uv(vc, k, ta, tb, uv))
+        return false;
+    if (vc->sil != NULL) {
+        double e = vc->sil->error_image, f = 1.0;
+        if (sc->view.projection == CF_PROJECTION_PERSPECTIVE)
+            f = (sc->view.distance + hi[2]) / sc->view.distance;
+        for (int i = 0; i < 3; i++) {
+            double g = i < 2 ? e : vc->sil->error_space * f * f;
+            lo[i] -= g;
+            hi[i] += g;
+        }
+    }
+    return cf__scene_box_clear_on(sc, lo, hi, vc->surface, uv, vc->strict);
 }
 
 typedef struct walk {
@@ -228,8 +329,9 @@ typedef struct walk {
 
 /* Between samples a and b (local ta, tb of piece k): a split where they
 ** differ; where both are visible the part between them is certified clear
-** of occluders or halved, down to image steps of tol (free curves: a curve
-** on a surface meets its own surface's boxes everywhere). */
+** of occluders or halved, down to image steps of tol.  A curve said to lie
+** on a surface without its (u, v) curve is not certified (its own
+** surface's boxes meet it everywhere). */
 static cf_status_t
 span(const cf_scene_t *sc, const vcurve_t *vc, size_t k, walk_t *w,
      double ta, const sample_t *a, double tb, const sample_t *b, int depth)
@@ -241,9 +343,10 @@ span(const cf_scene_t *sc, const vcurve_t *vc, size_t k, walk_t *w,
         w->tstart = ts;
         return st;
     }
-    if (a->hidden || vc->on != NULL || vc->sil != NULL || depth >= 40 ||
+    if (a->hidden || depth >= 40 ||
+        (vc->on != NULL && vc->uvb == NULL && vc->uvl == NULL) ||
         hypot(a->q[0] - b->q[0], a->q[1] - b->q[1]) <= sc->tol ||
-        part_clear(sc, vc->piece[k], ta, tb))
+        part_clear(sc, vc, k, ta, tb))
         return CF_STATUS_OK;
     double tm = 0.5 * (ta + tb);
     sample_t m;
@@ -313,6 +416,30 @@ check_args(const cf_scene_t *sc, const void *c, size_t dim,
     return check_on(sc, on, true, diag);
 }
 
+/* Classify a curve said to lie on a surface (on may be NULL): its (u, v)
+** curve for the certified gaps (a B-spline's Bézier pieces; left
+** unknown when they cannot be made). */
+static cf_status_t
+run_on(const cf_scene_t *sc, vcurve_t *vc, const cf_vis_on_t *on,
+       cf_visibility_t **out, cf_diag_t *diag)
+{
+    cf_bezier_list_t *uvl = NULL;
+    cf_status_t st;
+    if (on != NULL) {
+        vc->surface = on->surface;
+        vc->uvb = on->uv_bezier;
+        vc->strict = on->offset == 0.0;
+        if (on->uv_bspline != NULL &&
+            cf_bspline_to_beziers(on->uv_bspline, &uvl, NULL) ==
+                CF_STATUS_OK &&
+            uvl->t0 != NULL && uvl->t1 != NULL)
+            vc->uvl = uvl;
+    }
+    st = run(sc, vc, out, diag);
+    cf_bezier_list_destroy(uvl);
+    return st;
+}
+
 cf_status_t
 cf_scene_curve_visibility(const cf_scene_t *sc, const cf_bezier_t *c,
                           const cf_vis_on_t *on, cf_visibility_t **out,
@@ -323,8 +450,8 @@ cf_scene_curve_visibility(const cf_scene_t *sc, const cf_bezier_t *c,
     double t0 = 0.0, t1 = 1.0;
     if ((st = check_args(sc, c, cf_bezier_dim(c), on, out, diag)) != 0)
         return st;
-    vcurve_t vc = {&c, &t0, &t1, 1, on, NULL};
-    return run(sc, &vc, out, diag);
+    vcurve_t vc = {&c, &t0, &t1, 1, on, NULL, 0, NULL, NULL, false};
+    return run_on(sc, &vc, on, out, diag);
 }
 
 cf_status_t
@@ -345,8 +472,8 @@ cf_scene_bspline_visibility(const cf_scene_t *sc, const cf_bspline_t *c,
                          "curve: its Bézier pieces have no parameter ranges");
     }
     vcurve_t vc = {(const cf_bezier_t **)list->items, list->t0, list->t1,
-                   list->count, on, NULL};
-    st = run(sc, &vc, out, diag);
+                   list->count, on, NULL, 0, NULL, NULL, false};
+    st = run_on(sc, &vc, on, out, diag);
     cf_bezier_list_destroy(list);
     return st;
 }
@@ -396,7 +523,7 @@ cf_scene_silhouette_visibility(const cf_scene_t *sc,
 {
     cf_diag_clear(diag);
     cf_status_t st;
-    cf_bezier_t *c = NULL;
+    cf_bezier_t *c = NULL, *uv = NULL;
     double t0 = 0.0, t1 = 1.0;
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "out is NULL");
@@ -413,11 +540,17 @@ cf_scene_silhouette_visibility(const cf_scene_t *sc,
                          "piece %zu: surface %zu is not in the scene",
                          piece, sil->items[piece].surface);
     st = cf_bezier_create(3, 3, sil->items[piece].space, NULL, &c, diag);
-    if (st != CF_STATUS_OK)
+    if (st == CF_STATUS_OK)
+        st = cf_bezier_create(2, 3, sil->items[piece].uv, NULL, &uv, diag);
+    if (st != CF_STATUS_OK) {
+        cf_bezier_destroy(c);
         return st;
+    }
     const cf_bezier_t *cc = c;
-    vcurve_t vc = {&cc, &t0, &t1, 1, NULL, &sil->items[piece]};
+    vcurve_t vc = {&cc, &t0, &t1, 1, NULL, &sil->items[piece],
+                   sil->items[piece].surface, uv, NULL, false};
     st = run(sc, &vc, out, diag);
     cf_bezier_destroy(c);
+    cf_bezier_destroy(uv);
     return st;
 }

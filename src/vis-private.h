@@ -73,6 +73,8 @@ typedef struct cf__vmeasure {
     double diam, img;
     double wratio, dev, twist;
     bool fold;
+    int orient;     /* +1 or -1: every cell turns that way in the image;
+                       0: it folds or is flat */
     double ext[2];
 } cf__vmeasure_t;
 
@@ -81,10 +83,12 @@ void cf__vnet_measure(const cf__vpatch_t *p, const double *net, double *c,
 
 /* A piece of a patch in the box tree: its parameter region (tensor:
 ** r = s0 s1 t0 t1; triangle: three corners (u v) of the patch), the box of
-** its view-space net, and whether its image may fold. */
+** its view-space net, whether its image may fold, and which way its cells
+** turn (the measure's orient). */
 typedef struct cf__vleaf {
     uint32_t patch;
     bool fold;
+    int8_t orient;
     double r[6];
     double lo[3], hi[3];
 } cf__vleaf_t;
@@ -141,6 +145,23 @@ bool cf__scene_hidden(const cf_scene_t *sc, const double *q,
 ** lo[2]: nothing there can hide a point of the box. */
 bool cf__scene_box_clear(const cf_scene_t *sc, const double *lo,
                          const double *hi);
+
+/*
+** As cf__scene_box_clear, for the part of a curve that lies on surface
+** `surface` with its (u, v) in the box uv[4] = u0 u1 v0 v1: the pieces of
+** that surface whose parameters meet the box (the pieces that hold the
+** part's points and their neighbours across the box) are not counted
+** when they hide nothing of it.  strict: each of them must not fold and
+** all must turn the same way in the image (so that surface is one-to-one
+** onto its image around the part: no contour crosses it); every other
+** piece whose depth reaches the box's must lie behind it.  !strict (a
+** curve only near its surface, a silhouette): those pieces are not
+** counted at all; the sheet's own fold is left to the samples.  surface
+** SIZE_MAX (uv NULL): cf__scene_box_clear.
+*/
+bool cf__scene_box_clear_on(const cf_scene_t *sc, const double *lo,
+                            const double *hi, size_t surface,
+                            const double *uv, bool strict);
 
 /* The patch of surface `surface` holding its parameters (u, v), and local
 ** parameters on it (s, t); false if none. */

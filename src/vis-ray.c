@@ -253,20 +253,87 @@ cf__scene_hidden(const cf_scene_t *sc, const double *q,
     return false;
 }
 
+/* The box (u0 u1 v0 v1) of the parameters of leaf l on its surface (a
+** triangle's: its corners'). */
+static void
+leaf_uv(const cf__vpatch_t *p, const cf__vleaf_t *l, double *b)
+{
+    if (p->tri) {
+        b[0] = fmin(l->r[0], fmin(l->r[2], l->r[4]));
+        b[1] = fmax(l->r[0], fmax(l->r[2], l->r[4]));
+        b[2] = fmin(l->r[1], fmin(l->r[3], l->r[5]));
+        b[3] = fmax(l->r[1], fmax(l->r[3], l->r[5]));
+        return;
+    }
+    b[0] = p->u0 + l->r[0] * (p->u1 - p->u0);
+    b[1] = p->u0 + l->r[1] * (p->u1 - p->u0);
+    b[2] = p->v0 + l->r[2] * (p->v1 - p->v0);
+    b[3] = p->v0 + l->r[3] * (p->v1 - p->v0);
+}
+
+/* Whether the boxes a and b (u0 u1 v0 v1) meet, b widened by w[2] and a
+** little slack. */
+static bool
+uv_meet(const double *a, const double *b, const double *w)
+{
+    double eu = w[0] + 1e-9 * (fabs(b[0]) + fabs(b[1]) + 1.0),
+           ev = w[1] + 1e-9 * (fabs(b[2]) + fabs(b[3]) + 1.0);
+    return a[0] <= b[1] + eu && a[1] >= b[0] - eu && a[2] <= b[3] + ev &&
+           a[3] >= b[2] - ev;
+}
+
+/* The leaves of the curve's own surface near its part, in
+** cf__scene_box_clear_on: those that meet the part's (u, v) box, the
+** widest of them in u and in v, the way they turn, and the others in front
+** to be judged against the box widened by that width. */
+typedef struct near_own {
+    const double *uv;
+    double w[2];
+    int orient;
+    bool strict;
+    size_t nlater;
+    uint32_t later[64];
+} near_own_t;
+
+/* Whether own leaf l may be left out: it meets the box (widened by w) and
+** does not fold and turns as the others (strict). */
+static bool
+own_ok(const cf_scene_t *sc, near_own_t *no, uint32_t i, const double *w)
+{
+    const cf__vleaf_t *l = &sc->leaves[i];
+    double b[4];
+    leaf_uv(&sc->patches[l->patch], l, b);
+    if (!uv_meet(b, no->uv, w))
+        return false;
+    if (no->strict) {
+        if (l->orient == 0 || (no->orient != 0 && l->orient != no->orient))
+            return false;
+        no->orient = l->orient;
+    }
+    return true;
+}
+
 bool
-cf__scene_box_clear(const cf_scene_t *sc, const double *lo, const double *hi)
+cf__scene_box_clear_on(const cf_scene_t *sc, const double *lo,
+                       const double *hi, size_t surface, const double *uv,
+                       bool strict)
 {
     uint32_t stack[STACK];
     size_t top = 0;
-    /* the margin grows with the depth: the box's nearest to the eye's */
+    const double zero[2] = {0.0, 0.0};
+    near_own_t no = {uv, {0.0, 0.0}, 0, strict, 0, {0}};
+    /* pieces in front of the box by more than the margin may hide it; the
+    ** pieces of the curve's own surface that reach the box's depth at all
+    ** are looked at, since the part's points lie on some of them */
     double zmin = lo[2] + margin(sc, lo[2]);
+    double zown = surface == SIZE_MAX ? zmin : lo[2];
     if (sc->nnode == 0)
         return true;
     stack[top++] = 0;
     while (top > 0) {
         const cf__vnode_t *nd = &sc->nodes[stack[--top]];
         if (nd->hi[0] < lo[0] || nd->lo[0] > hi[0] || nd->hi[1] < lo[1] ||
-            nd->lo[1] > hi[1] || nd->hi[2] <= zmin)
+            nd->lo[1] > hi[1] || nd->hi[2] < zown)
             continue;
         if (nd->count == 0) {
             if (top + 2 > STACK)
@@ -277,10 +344,40 @@ cf__scene_box_clear(const cf_scene_t *sc, const double *lo, const double *hi)
         }
         for (uint32_t i = nd->first; i < nd->first + nd->count; i++) {
             const cf__vleaf_t *l = &sc->leaves[i];
-            if (!(l->hi[0] < lo[0] || l->lo[0] > hi[0] || l->hi[1] < lo[1] ||
-                  l->lo[1] > hi[1] || l->hi[2] <= zmin))
+            const cf__vpatch_t *p = &sc->patches[l->patch];
+            double b[4];
+            if (l->hi[0] < lo[0] || l->lo[0] > hi[0] || l->hi[1] < lo[1] ||
+                l->lo[1] > hi[1] || l->hi[2] < zown)
+                continue;
+            if (p->surface == surface) {
+                leaf_uv(p, l, b);
+                if (uv_meet(b, uv, zero)) {
+                    if (!own_ok(sc, &no, i, zero))
+                        return false;
+                    no.w[0] = fmax(no.w[0], b[1] - b[0]);
+                    no.w[1] = fmax(no.w[1], b[3] - b[2]);
+                    continue;
+                }
+                if (l->hi[2] > zmin) {
+                    /* a neighbour: judged once the width is known */
+                    if (no.nlater == sizeof no.later / sizeof no.later[0])
+                        return false;
+                    no.later[no.nlater++] = i;
+                }
+                continue;
+            }
+            if (l->hi[2] > zmin)
                 return false;
         }
     }
+    for (size_t j = 0; j < no.nlater; j++)
+        if (!own_ok(sc, &no, no.later[j], no.w))
+            return false;
     return true;
+}
+
+bool
+cf__scene_box_clear(const cf_scene_t *sc, const double *lo, const double *hi)
+{
+    return cf__scene_box_clear_on(sc, lo, hi, SIZE_MAX, NULL, false);
 }

@@ -245,6 +245,22 @@ emit(ctx_t *c, const cf_silhouette_piece_t *pc)
     return CF_STATUS_OK;
 }
 
+/* Whether contour points A and B (local parameters) are within the aim
+** of each other in space and in the image. */
+static bool
+near_ends(const ctx_t *c, const double *A, const double *B)
+{
+    double a[18], b[18], ga[18], gb[18], aim = AIM * c->sc->tol;
+    if (!cf__vpatch_eval(c->p, c->p->h, A[0], A[1], 0, a) ||
+        !cf__vpatch_eval(c->p, c->p->h, B[0], B[1], 0, b) ||
+        !cf__vpatch_eval(c->p, c->p->g, A[0], A[1], 0, ga) ||
+        !cf__vpatch_eval(c->p, c->p->g, B[0], B[1], 0, gb))
+        return false;
+    return sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                (a[2] - b[2]) * (a[2] - b[2])) <= aim &&
+           hypot(ga[0] - gb[0], ga[1] - gb[1]) <= aim;
+}
+
 /* Pieces from contour point A to B, halving (at the contour point nearest
 ** the middle) where the error is too large. */
 static cf_status_t
@@ -253,16 +269,26 @@ span_fit(ctx_t *c, const double *A, const double *B, int depth)
     cf_silhouette_piece_t pc;
     memset(&pc, 0, sizeof pc);
     bool ok = fit(c, A, B, &pc);
+    /* a piece that cannot be fitted (no tangent at its ends) and whose
+    ** ends are within the aim of each other in space and in the image is
+    ** not halved further: its halves fail alike, down to the budget */
+    bool tiny = hypot(B[0] - A[0], B[1] - A[1]) <= 1e-9 ||
+                (!ok && near_ends(c, A, B));
     if (--c->budget <= 0)
         depth = 30;
-    if (ok && (good(c, &pc) || depth >= 30 ||
-               hypot(B[0] - A[0], B[1] - A[1]) <= 1e-9)) {
+    if (ok && (good(c, &pc) || depth >= 30 || tiny)) {
         if (!good(c, &pc))
             c->out->converged = false;
         return emit(c, &pc);
     }
     double M[2] = {0.5 * (A[0] + B[0]), 0.5 * (A[1] + B[1])};
-    if (depth >= 30 || !project(c, M)) {
+    double len = hypot(B[0] - A[0], B[1] - A[1]);
+    /* the contour point nearest the middle must split the piece (Newton
+    ** may leave for another branch, off the patch: no progress, down to
+    ** the budget) */
+    if (depth >= 30 || tiny || !project(c, M) ||
+        !(hypot(M[0] - A[0], M[1] - A[1]) < 0.9 * len &&
+          hypot(M[0] - B[0], M[1] - B[1]) < 0.9 * len)) {
         c->out->converged = false;
         return ok ? emit(c, &pc) : CF_STATUS_OK;
     }

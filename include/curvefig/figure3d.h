@@ -10,7 +10,8 @@
 ** curve's: both are drawn exactly as the figure draws any plane curve
 ** (cubic segments within the figure's tolerance, never a polyline).
 ** Points, polygons, labels, arrows and curves given in R^3 are projected
-** by the view.
+** by the view; curves, polylines, polygons, points and labels added with
+** the functions below are also split or hidden by the figure's surfaces.
 **
 ** A point at or behind the eye cannot be drawn: the element that holds it
 ** fails with CF_STATUS_DOMAIN, naming the point and a distance that would
@@ -128,6 +129,40 @@ CF_API cf_status_t cf_figure_add_space_curves(cf_figure_t *fig,
                                               const cf_bezier_list_t *list,
                                               cf_hidden_t hidden,
                                               const cf_style_t *style);
+
+/*
+** Polylines, control polygons, points and labels in R^3 (copied) in a
+** figure with a view, split by the figure's occluding surfaces: each
+** segment is a straight line in space (a curve of degree 1) split where it
+** passes behind a surface as the surfaces' lines are (to 20 times the
+** fitting tolerance on the page), each vertex, point and label anchor is
+** seen or hidden (cf_scene_point_visible).  Hidden pieces of lines are
+** drawn as hidden says (dashed: the same colour, 0.7 of the width, dashes
+** of 4 and 3 widths; remove: left out; show: as visible ones); hidden
+** markers and labels are faded to 0.4 of their opacity (dashed), left out
+** (remove) or drawn alike (show).  They hide nothing themselves.  Errors:
+** a figure without a view, fewer points than needed, a point not finite
+** or at or behind the eye (naming it).  Roles: CF_ROLE_POLYLINE,
+** CF_ROLE_POLYGON, CF_ROLE_POINTS, CF_ROLE_LABEL.
+*/
+CF_API cf_status_t cf_figure_add_space_polyline(cf_figure_t *fig,
+                                                const double *pts, size_t n,
+                                                bool closed,
+                                                cf_hidden_t hidden,
+                                                const cf_style_t *style);
+CF_API cf_status_t cf_figure_add_space_polygon(cf_figure_t *fig,
+                                               const double *pts, size_t n,
+                                               cf_hidden_t hidden,
+                                               const cf_style_t *style);
+CF_API cf_status_t cf_figure_add_space_points(cf_figure_t *fig,
+                                              const double *pts, size_t n,
+                                              cf_hidden_t hidden,
+                                              const cf_style_t *style);
+CF_API cf_status_t cf_figure_add_space_label(cf_figure_t *fig,
+                                             const double *p,
+                                             const char *text,
+                                             cf_hidden_t hidden,
+                                             const cf_style_t *style);
 
 /* The same for a triangular Bézier patch in R^3: its three edges
 ** (boundary), iso-lines of u, v and w (nu of u and of w, nv of v evenly

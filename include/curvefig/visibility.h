@@ -77,12 +77,21 @@
 ** point if it lies wholly in front of it.  No facets, no raster.  Along a
 ** curve, visibility is sampled at image steps of at most 16 tol (and at
 ** least 64 samples per Bézier piece), and every change is located by
-** bisection to tol.  For a curve not on a surface (on == NULL), the part
-** between two visible samples is certified: the box of its control points
-** in view space meets no piece in front of it, or it is halved down to
-** image steps of tol, so no occlusion wider than tol is missed; along a
-** curve on a surface an occlusion shorter than the sampling step can be
-** missed.
+** bisection to tol.  The part of a curve between two visible samples is
+** certified: the box of its control points in view space meets no piece
+** in front of it, or it is halved down to image steps of tol, so no
+** occlusion wider than tol is missed.  For a curve on a surface
+** (cf_vis_on_t with its (u, v) curve) the pieces of that surface whose
+** parameters meet the box of the part's (u, v) (the (u, v) curve's
+** control points there), or that box widened by the widest of those
+** pieces, are not counted when, offset 0, none of them folds and all turn
+** the same way in the image (the surface is one-to-one onto its image
+** around the part, so it cannot hide it there); any other piece must lie
+** behind the part's box.  With offset > 0 (a curve only near its
+** surface) and for silhouettes, those pieces of the sheet are not counted
+** at all: a fold of that sheet within them is seen at the samples only
+** (16 tol).  A curve said to lie on a surface without its (u, v) curve is
+** not certified: an occlusion shorter than 16 tol can be missed.
 **
 ** Self-occlusion.  A point of a curve drawn on a surface (an iso-line, a
 ** boundary, a silhouette) is not hidden by the surface at itself: hits
@@ -286,8 +295,10 @@ CF_API cf_status_t cf_scene_point_visible(const cf_scene_t *scene,
 ** distance between them): in space (error_space) and in the image
 ** (error_image), and a piece is halved until both are at most tol / 4;
 ** max_error is the largest error_image returned.  A piece that cannot
-** reach that in 30 halvings (or past a bound on the work, 400,000 fits)
-** is kept and converged is false.  A contour loop smaller than a cell of
+** reach that in 30 halvings (or past a bound on the work, 400,000 fits),
+** or whose middle's contour point does not split it, is kept and
+** converged is false; one that cannot be fitted at all (no tangent) with
+** its ends within tol / 4 of each other is left out (converged false).  A contour loop smaller than a cell of
 ** the grid (1/16 of a patch) can be missed.
 */
 typedef struct cf_silhouette_piece {

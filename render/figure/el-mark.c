@@ -6,12 +6,15 @@
 #include <math.h>
 #include <string.h>
 
-#include "model.h"
+#include "surface-lines.h"
 
 typedef struct label_el {
     cf__element_t base;
     cf__text_t text;
     double x, y;
+    bool space;               /* anchored at p in R^3, seen or not */
+    double p[3];
+    cf_hidden_t hidden;
     cf__auto_place_t chosen;  /* CF_PLACE_AUTO: the place chosen for the
                                  current layout */
 } label_el_t;
@@ -41,7 +44,19 @@ label_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
            const cf_style_t *s, cf__dl_t *dl)
 {
     label_el_t *e = (label_el_t *)el;
+    cf_style_t faded;
     double px, py;
+    bool seen = true;
+    if (e->space && e->hidden != CF_HIDDEN_SHOW
+        && cf__space_point_visible(fig, e->p, l->tol, &seen) != CF_STATUS_OK)
+        return cf__fig_fail(fig, fig->err.status, "a label in space");
+    if (!seen && e->hidden == CF_HIDDEN_REMOVE)
+        return CF_STATUS_OK;
+    if (!seen) {
+        faded = *s;
+        faded.opacity *= 0.4;
+        s = &faded;
+    }
     cf__map(l, e->x, e->y, &px, &py);
     if (s->place == CF_PLACE_AUTO)
         return cf__text_draw(fig, &e->text, s, px, py, e->chosen.place,
@@ -91,6 +106,34 @@ cf_figure_add_label(cf_figure_t *fig, double x, double y, const char *text,
         fig, e,
         cf__text_set(fig, &e->text, text,
                               cf__role_font_size(fig, CF_ROLE_LABEL, style)));
+}
+
+cf_status_t
+cf_figure_add_space_label(cf_figure_t *fig, const double *p, const char *text,
+                          cf_hidden_t hidden, const cf_style_t *style)
+{
+    double q[2];
+    cf_status_t st;
+    CF__FIG_CHECK(fig);
+    if (p == NULL || !fig->has_view || (unsigned)hidden > CF_HIDDEN_REMOVE)
+        return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
+                           "label in space: %s", p == NULL ? "point is NULL"
+                           : !fig->has_view ? "the figure has no view"
+                           : "hidden is not show, dashed or remove");
+    if (cf_check_finite_points(p, 1, 3, 3, "label point", &fig->err)
+        != CF_STATUS_OK)
+        return fig->err.status;
+    cf__fig_project1(fig, p, 3, q);
+    if (isnan(q[0]))
+        return cf__fig_behind_eye(fig, p, "label point");
+    st = cf_figure_add_label(fig, q[0], q[1], text, style);
+    if (st == CF_STATUS_OK) {
+        label_el_t *e = (label_el_t *)fig->els[fig->count - 1];
+        e->space = true;
+        memcpy(e->p, p, sizeof e->p);
+        e->hidden = hidden;
+    }
+    return st;
 }
 
 /* ---- arrows ------------------------------------------------------------- */

@@ -175,8 +175,8 @@ build_scene(cf_figure_t *fig, double tol, cf_scene_t **out)
 
 /* The figure's scene for visibility at tolerance tol, kept in the figure
 ** for that tolerance and element count. */
-static cf_status_t
-figure_scene(cf_figure_t *fig, double tol, cf_scene_t **out)
+cf_status_t
+cf__figure_scene(cf_figure_t *fig, double tol, cf_scene_t **out)
 {
     cf_status_t st;
     if (fig->scene != NULL && fig->scene_els == fig->count
@@ -217,7 +217,7 @@ draw_shading(cf_figure_t *fig, const surface_el_t *self,
         }
     if (!any || first == SIZE_MAX || fig->els[first] != &self->base)
         return CF_STATUS_OK;
-    st = figure_scene(fig, 20 * l->tol, &sc);
+    st = cf__figure_scene(fig, 20 * l->tol, &sc);
     if (st != CF_STATUS_OK || sc == NULL)
         return st;
     by_id = cf_calloc(fig->count, sizeof *by_id);
@@ -364,7 +364,7 @@ build(cf_figure_t *fig, surface_el_t *e, double tol)
     drop_cache(e);
     /* split points to 20 times the fitting tolerance: 0.2 bp (0.07 mm) by
     ** default, where 0.05 bp took 5 times as long on a torus */
-    st = need ? figure_scene(fig, 20 * tol, &sc) : CF_STATUS_OK;
+    st = need ? cf__figure_scene(fig, 20 * tol, &sc) : CF_STATUS_OK;
     for (size_t i = 0; st == CF_STATUS_OK && i < e->lines.n; i++)
         st = draw_line(fig, e, sc, e->lines.items[i].bez,
                        e->lines.items[i].uv, 0.0, e->lines.items[i].family);
@@ -404,10 +404,8 @@ family_styles(const cf_figure_t *fig, const surface_el_t *e,
                       &out[NET]);
 }
 
-/* The style of hidden pieces: 0.7 of the width, dashes of 4 and 3
-** widths. */
-static cf_style_t
-hidden_style(const cf_style_t *s)
+cf_style_t
+cf__hidden_style(const cf_style_t *s)
 {
     cf_style_t h = *s;
     h.width = 0.7 * s->width;
@@ -454,7 +452,7 @@ surface_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
     /* hidden pieces under everything, then the net, iso-lines, outline */
     for (int k = 0; k < NFAMILIES && st == CF_STATUS_OK; k++) {
         cf__element_t *c = e->curves[order[k]][0];
-        cf_style_t h = hidden_style(&fs[order[k]]);
+        cf_style_t h = cf__hidden_style(&fs[order[k]]);
         if (c != NULL)
             st = c->kind->draw(fig, c, l, &h, dl);
     }
@@ -463,20 +461,9 @@ surface_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
         if (c != NULL)
             st = c->kind->draw(fig, c, l, &fs[order[k]], dl);
     }
-    for (size_t i = 0; i < e->nverts && st == CF_STATUS_OK; i++) {
-        cf__marker_op_t m;
-        cf_style_t ms = fs[NET];
-        double px, py;
-        if (!e->vert_visible[i] && e->opt.hidden == CF_HIDDEN_REMOVE)
-            continue;
-        if (!e->vert_visible[i])
-            ms.opacity *= 0.4;
-        if (!cf__in_window(l, e->verts[2 * i], e->verts[2 * i + 1]))
-            continue;
-        cf__map(l, e->verts[2 * i], e->verts[2 * i + 1], &px, &py);
-        cf__marker_from_style(&ms, ms.marker, px, py, NULL, &m);
-        cf__dl_marker(dl, &m);
-    }
+    for (size_t i = 0; i < e->nverts && st == CF_STATUS_OK; i++)
+        cf__space_marker(l, &fs[NET], e->verts + 2 * i, e->vert_visible[i],
+                         e->opt.hidden, dl);
     return st;
 }
 
@@ -627,8 +614,10 @@ cf__figure_surface_pieces(cf_figure_t *fig, double tol,
     CF__FIG_CHECK(fig);
     for (size_t i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
         surface_el_t *e = (surface_el_t *)fig->els[i];
-        if (!is_surface(&e->base))
+        if (!is_surface(&e->base)) {
+            st = cf__space_pieces(fig, fig->els[i], i, tol, fn, closure);
             continue;
+        }
         drop_cache(e);
         e->probe = fn;
         e->probe_ctx = closure;

@@ -12,6 +12,9 @@
 #include "model.h"
 
 enum { CF__LINE_OUTLINE, CF__LINE_ISO, CF__LINE_NET, CF__LINE_FAMILIES };
+/* The probe's families of the elements in space (el-space.c): segments of
+** polylines and polygons, and points (a segment of length 0). */
+enum { CF__LINE_SPACE = 8, CF__LINE_SPACE_POINT = 9 };
 
 typedef struct cf__line3 {
     int family;
@@ -83,5 +86,28 @@ typedef void (*cf__surface_fn)(void *closure, size_t el,
 cf_status_t cf__figure_surface_pieces(cf_figure_t *fig, double tol,
                                       cf__surface_piece_fn fn,
                                       cf__surface_fn surf, void *closure);
+
+/* The figure's scene of occluding surfaces for visibility at tolerance tol
+** (data units), kept in the figure; *out NULL when no surface occludes
+** (el-surface.c). */
+cf_status_t cf__figure_scene(cf_figure_t *fig, double tol, cf_scene_t **out);
+/* The style of hidden pieces: 0.7 of the width, dashes of 4 and 3
+** widths. */
+cf_style_t cf__hidden_style(const cf_style_t *s);
+
+/* Elements in space (el-space.c): whether p[3] is seen in the scene for
+** layout tolerance tol (true without one); for the probe above, the
+** pieces of element el (index `index`) when it is one (families
+** CF__LINE_SPACE, CF__LINE_SPACE_POINT), else nothing. */
+cf_status_t cf__space_point_visible(cf_figure_t *fig, const double *p,
+                                    double tol, bool *seen);
+/* The marker of a point at xy (data) in style s, seen or hidden: left out
+** (remove), faded to 0.4 of its opacity (dashed) or drawn alike. */
+void cf__space_marker(const cf__layout_t *l, const cf_style_t *s,
+                      const double *xy, bool seen, cf_hidden_t hidden,
+                      cf__dl_t *dl);
+cf_status_t cf__space_pieces(cf_figure_t *fig, cf__element_t *el,
+                             size_t index, double tol,
+                             cf__surface_piece_fn fn, void *closure);
 
 #endif

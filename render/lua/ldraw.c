@@ -9,6 +9,7 @@
 
 #include "curvefig/bspline.h"
 #include "curvefig/figure.h"
+#include "curvefig/figure3d.h"
 #include "lbezier.h"
 #include "lbspline.h"
 #include "lcommon.h"
@@ -96,8 +97,38 @@ point_indices(lua_State *L, size_t n)
 typedef cf_status_t (*pts_fn)(cf_figure_t *, const double *, size_t,
                               const cf_style_t *);
 
+/* Points in R^3 of a figure with a view: split and hidden by its surfaces
+** (space: 0 polygon, 1 points, 2 polyline, 3 closed polyline); false for
+** any other points. */
+static bool
+space_points(lua_State *L, cf_figure_t *fig, const char *fn, int space,
+             const cf_style_t *st)
+{
+    size_t n;
+    double *p3 = space >= 0 ? cf__lua_check_points3d(L, fig, 2, fn, &n)
+                            : NULL, *p2;
+    cf_hidden_t hidden;
+    cf_diag_t diag;
+    if (p3 == NULL)
+        return false;
+    hidden = cf__lua_read_hidden(L, 3, fn, "dashed");
+    cf_diag_clear(&diag);
+    check(L, fn, space == 0 ? cf_figure_add_space_polygon(fig, p3, n, hidden,
+                                                          st)
+                 : space == 1 ? cf_figure_add_space_points(fig, p3, n, hidden,
+                                                           st)
+                 : cf_figure_add_space_polyline(fig, p3, n, space == 3,
+                                                hidden, st), &diag);
+    p2 = cf__lua_buffer(L, 2 * n);
+    check(L, fn, cf_figure_project(fig, p3, n, 3, p2), NULL);
+    cf__lua_label_space_items(L, fig, 3, "labels", p2, p3, hidden, n,
+                              point_indices(L, n), 1, fn);
+    return true;
+}
+
 static int
-draw_points(lua_State *L, const char *fn, cf__lua_keys_t keys, pts_fn add)
+draw_points(lua_State *L, const char *fn, cf__lua_keys_t keys, pts_fn add,
+            int space)
 {
     cf_figure_t *fig = cf__lua_check_figure(L);
     size_t n;
@@ -107,11 +138,13 @@ draw_points(lua_State *L, const char *fn, cf__lua_keys_t keys, pts_fn add)
     lua_settop(L, 3);
     cf__lua_check_table(L, 3, keys);
     cf__lua_read_style(L, 3, fn, fig, &st);
-    p = cf__lua_check_points2d(L, fig, 2, fn, &n);
-    cf_diag_clear(&diag);
-    check(L, fn, add(fig, p, n, &st), &diag);
-    cf__lua_label_items(L, fig, 3, "labels", p, n, point_indices(L, n), 1,
-                        fn);
+    if (!space_points(L, fig, fn, space, &st)) {
+        p = cf__lua_check_points2d(L, fig, 2, fn, &n);
+        cf_diag_clear(&diag);
+        check(L, fn, add(fig, p, n, &st), &diag);
+        cf__lua_label_items(L, fig, 3, "labels", p, n, point_indices(L, n),
+                            1, fn);
+    }
     lua_settop(L, 1);
     return 1;
 }
@@ -119,25 +152,26 @@ draw_points(lua_State *L, const char *fn, cf__lua_keys_t keys, pts_fn add)
 static int
 m_polygon(lua_State *L)
 {
-    return draw_points(L, "polygon", CF__KEYS_POLYGON, cf_figure_add_polygon);
+    return draw_points(L, "polygon", CF__KEYS_POLYGON, cf_figure_add_polygon,
+                       0);
 }
 
 static int
 m_points(lua_State *L)
 {
-    return draw_points(L, "points", CF__KEYS_POINTS, cf_figure_add_points);
+    return draw_points(L, "points", CF__KEYS_POINTS, cf_figure_add_points, 1);
 }
 
 static int
 m_hull(lua_State *L)
 {
-    return draw_points(L, "hull", CF__KEYS_HULL, cf_figure_add_hull);
+    return draw_points(L, "hull", CF__KEYS_HULL, cf_figure_add_hull, -1);
 }
 
 static int
 m_fill(lua_State *L)
 {
-    return draw_points(L, "fill", CF__KEYS_FILL, cf_figure_add_fill);
+    return draw_points(L, "fill", CF__KEYS_FILL, cf_figure_add_fill, -1);
 }
 
 static cf_status_t
@@ -160,7 +194,7 @@ m_polyline(lua_State *L)
     lua_settop(L, 3);
     closed = cf__lua_opt_bool(L, 3, "closed", "polyline", false);
     return draw_points(L, "polyline", CF__KEYS_POLYLINE,
-                       closed ? add_closed : add_open);
+                       closed ? add_closed : add_open, closed ? 3 : 2);
 }
 
 /* f:line(p, q, {...}): the segment pq */
@@ -175,11 +209,24 @@ m_line(lua_State *L)
     lua_settop(L, 4);
     cf__lua_check_table(L, 4, CF__KEYS_LINE);
     cf__lua_read_style(L, 4, "line", fig, &st);
+    p = cf__lua_check_points3d(L, fig, 2, "line", &n);
+    q = p != NULL ? cf__lua_check_points3d(L, fig, 3, "line", &n) : NULL;
+    cf_diag_clear(&diag);
+    if (q != NULL) {
+        /* a segment in space, split by the surfaces */
+        double pq3[6];
+        memcpy(pq3, p, 3 * sizeof *p);
+        memcpy(pq3 + 3, q, 3 * sizeof *q);
+        check(L, "line", cf_figure_add_space_polyline(
+                  fig, pq3, 2, false,
+                  cf__lua_read_hidden(L, 4, "line", "dashed"), &st), &diag);
+        lua_settop(L, 1);
+        return 1;
+    }
     p = cf__lua_check_points2d(L, fig, 2, "line", &n);
     q = cf__lua_check_points2d(L, fig, 3, "line", &n);
     memcpy(pq, p, 2 * sizeof *p);
     memcpy(pq + 2, q, 2 * sizeof *q);
-    cf_diag_clear(&diag);
     check(L, "line", cf_figure_add_polyline(fig, pq, 2, false, &st), &diag);
     lua_settop(L, 1);
     return 1;
@@ -191,19 +238,24 @@ m_label(lua_State *L)
 {
     cf_figure_t *fig = cf__lua_check_figure(L);
     size_t n;
-    double *p;
+    double *p, *p3;
     const char *text;
     cf_style_t st;
     cf_diag_t diag;
     lua_settop(L, 4);
+    p3 = cf__lua_check_points3d(L, fig, 2, "label", &n);
     p = cf__lua_check_points2d(L, fig, 2, "label", &n);
     text = cf__lua_check_text(L, 3, "label", "the text");
     cf__lua_check_table(L, 4, CF__KEYS_LABEL);
     cf__lua_read_style(L, 4, "label", fig, &st);
     if (cf__lua_labels_on(L)) {
         cf_diag_clear(&diag);
-        check(L, "label", cf_figure_add_label(fig, p[0], p[1], text, &st),
-              &diag);
+        /* a label at a point in R^3 follows it behind a surface */
+        check(L, "label", p3 != NULL
+              ? cf_figure_add_space_label(fig, p3, text,
+                                          cf__lua_read_hidden(L, 4, "label",
+                                                              "dashed"), &st)
+              : cf_figure_add_label(fig, p[0], p[1], text, &st), &diag);
     }
     lua_settop(L, 1);
     return 1;

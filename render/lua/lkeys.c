@@ -172,7 +172,13 @@ static const cf__lua_key_t reduce_bspline_keys[] = {
 static const cf__lua_key_t range_keys[] = {
     KEY("range"), NAMES("hidden", hidden_modes), END,
 };
-static const cf__lua_key_t closed_keys[] = { KEY("closed"), END };
+/* points, polygons, polylines and labels in R^3 (lspace.c) */
+static const cf__lua_key_t hidden_keys[] = {
+    NAMES("hidden", hidden_modes), END,
+};
+static const cf__lua_key_t closed_keys[] = {
+    KEY("closed"), NAMES("hidden", hidden_modes), END,
+};
 static const cf__lua_key_t scale_keys[] = { KEY("scale"), END };
 static const cf__lua_key_t net_keys[] = {
     KEY("colors"), KEY("labels"), KEY("label_start"),
@@ -257,9 +263,9 @@ static const cf__lua_schema_t schemas[CF__KEYS_COUNT_] = {
                                        NULL, "s:reduce(%s)"),
     [CF__KEYS_CURVE] = DRAW("curve", line_style, range_keys, NULL,
                               "f:curve(c, %s)"),
-    [CF__KEYS_POLYGON] = DRAW("polygon", line_style, point_labels, NULL,
+    [CF__KEYS_POLYGON] = DRAW("polygon", line_style, point_labels, hidden_keys,
                                 "f:polygon(P, %s)"),
-    [CF__KEYS_POINTS] = DRAW("points", line_style, point_labels, NULL,
+    [CF__KEYS_POINTS] = DRAW("points", line_style, point_labels, hidden_keys,
                                "f:points(P, %s)"),
     [CF__KEYS_HULL] = DRAW("hull", line_style, point_labels, NULL,
                              "f:hull(P, %s)"),
@@ -267,9 +273,9 @@ static const cf__lua_schema_t schemas[CF__KEYS_COUNT_] = {
                              "f:fill(P, %s)"),
     [CF__KEYS_POLYLINE] = DRAW("polyline", line_style, point_labels,
                                  closed_keys, "f:polyline(P, %s)"),
-    [CF__KEYS_LINE] = DRAW("line", line_style, NULL, NULL,
+    [CF__KEYS_LINE] = DRAW("line", line_style, hidden_keys, NULL,
                              "f:line({0, 0}, {1, 1}, %s)"),
-    [CF__KEYS_LABEL] = DRAW("label", text_style, NULL, NULL,
+    [CF__KEYS_LABEL] = DRAW("label", text_style, hidden_keys, NULL,
                               "f:label({0, 0}, 'P', %s)"),
     [CF__KEYS_ARROW] = DRAW("arrow", line_style, arrow_label, NULL,
                               "f:arrow({0, 0}, {1, 1}, %s)"),

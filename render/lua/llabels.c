@@ -3,6 +3,7 @@
 */
 #include <string.h>
 
+#include "curvefig/figure3d.h"
 #include "lcommon.h"
 #include "llabels.h"
 #include "lstyle.h"
@@ -126,10 +127,17 @@ label_place(lua_State *L, int idx, size_t k, const lua_Integer *args,
 
 /* Label k with the integers a (nargs of them) at xy, if it has a text;
 ** labels and places at top + 1, top + 2. */
+/* Labels anchored at points in R^3 (NULL: in the plane) and what their
+** hidden points do. */
+typedef struct space_at {
+    const double *p3;
+    cf_hidden_t hidden;
+} space_at_t;
+
 static void
 label_one(lua_State *L, cf_figure_t *fig, int top, size_t k,
           const lua_Integer *a, int nargs, const double *xy,
-          const cf_style_t *base, const char *fn)
+          const cf_style_t *base, const space_at_t *sp, const char *fn)
 {
     const char *text = cf__lua_item_label(L, top + 1, k, a, nargs, fn);
     cf_style_t ls = *base;
@@ -138,14 +146,17 @@ label_one(lua_State *L, cf_figure_t *fig, int top, size_t k,
         return;
     label_place(L, top + 2, k, a, nargs, xy, text, &ls, fn);
     cf_diag_clear(&diag);
-    cf__lua_fig_check(L, fn, fig, cf_figure_add_label(fig, xy[0], xy[1], text,
-                                                      &ls), &diag);
+    cf__lua_fig_check(L, fn, fig, sp->p3 != NULL
+                      ? cf_figure_add_space_label(fig, sp->p3 + 3 * k, text,
+                                                  sp->hidden, &ls)
+                      : cf_figure_add_label(fig, xy[0], xy[1], text, &ls),
+                      &diag);
 }
 
-void
-cf__lua_label_items(lua_State *L, cf_figure_t *fig, int opts,
-                    const char *labels_key, const double *pts, size_t n,
-                    const lua_Integer *args, int nargs, const char *fn)
+static void
+label_items(lua_State *L, cf_figure_t *fig, int opts, const char *labels_key,
+            const double *pts, size_t n, const lua_Integer *args, int nargs,
+            const space_at_t *sp, const char *fn)
 {
     int top = lua_gettop(L), t;
     cf_style_t base;
@@ -167,8 +178,27 @@ cf__lua_label_items(lua_State *L, cf_figure_t *fig, int opts,
             memcpy(a, args + k * (size_t)nargs, (size_t)nargs * sizeof *a);
             a[0] += start;
         }
-        label_one(L, fig, top, k, a, nargs, pts + 2 * k, &base, fn);
+        label_one(L, fig, top, k, a, nargs, pts + 2 * k, &base, sp, fn);
         lua_settop(L, top + 4);
     }
     lua_settop(L, top);
+}
+
+void
+cf__lua_label_items(lua_State *L, cf_figure_t *fig, int opts,
+                    const char *labels_key, const double *pts, size_t n,
+                    const lua_Integer *args, int nargs, const char *fn)
+{
+    space_at_t plane = {NULL, CF_HIDDEN_SHOW};
+    label_items(L, fig, opts, labels_key, pts, n, args, nargs, &plane, fn);
+}
+
+void
+cf__lua_label_space_items(lua_State *L, cf_figure_t *fig, int opts,
+                          const char *labels_key, const double *pts,
+                          const double *p3, cf_hidden_t hidden, size_t n,
+                          const lua_Integer *args, int nargs, const char *fn)
+{
+    space_at_t sp = {p3, hidden};
+    label_items(L, fig, opts, labels_key, pts, n, args, nargs, &sp, fn);
 }

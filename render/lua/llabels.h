@@ -26,6 +26,7 @@
 #include <lua.h>
 
 #include "curvefig/figure.h"
+#include "curvefig/figure3d.h"
 
 /* Add the labels of n items at the 2D points pts (2n doubles) from the
 ** options table at opts; item k gets args[k * nargs .. k * nargs + nargs -
@@ -34,6 +35,16 @@
 void cf__lua_label_items(lua_State *L, cf_figure_t *fig, int opts,
                          const char *labels_key, const double *pts, size_t n,
                          const lua_Integer *args, int nargs, const char *fn);
+
+/* The same for items at points p3 (3n doubles) in R^3 of a figure with a
+** view (pts their images): a label follows its point, faded when the point
+** is hidden behind a surface (hidden dashed), left out (remove) or drawn
+** alike (show). */
+void cf__lua_label_space_items(lua_State *L, cf_figure_t *fig, int opts,
+                               const char *labels_key, const double *pts,
+                               const double *p3, cf_hidden_t hidden,
+                               size_t n, const lua_Integer *args, int nargs,
+                               const char *fn);
 
 /* The text of item k from the labels value at idx (a format, a table, a
 ** function, as above): pushed, and returned (NULL: no label). */

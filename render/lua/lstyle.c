@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "curvefig/bspline.h"
+#include "curvefig/figure3d.h"
 #include "lbezier.h"
 #include "lbspline.h"
 #include "lcommon.h"
@@ -366,6 +367,23 @@ any_points(lua_State *L, int idx, const char *fn, size_t *n, size_t *dim)
     if (first == LUA_TNUMBER)
         return cf__lua_check_point(L, idx, fn, "point", dim);
     return cf__lua_check_points(L, idx, fn, "point", 1, n, dim);
+}
+
+double *
+cf__lua_check_points3d(lua_State *L, cf_figure_t *fig, int idx,
+                       const char *fn, size_t *count)
+{
+    size_t n, dim, top = (size_t)lua_gettop(L);
+    double *p;
+    if (!cf_figure_get_view(fig, NULL))
+        return NULL;
+    p = any_points(L, idx, fn, &n, &dim);
+    if (dim != 3) {
+        lua_settop(L, (int)top);
+        return NULL;
+    }
+    *count = n;
+    return p;
 }
 
 double *

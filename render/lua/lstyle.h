@@ -64,5 +64,9 @@ double cf__lua_read_length(lua_State *L, int idx, const char *fn,
 ** point, projected to 2D by the figure: a buffer pushed on the stack. */
 double *cf__lua_check_points2d(lua_State *L, cf_figure_t *fig, int idx,
                                const char *fn, size_t *count);
+/* The same points in R^3 when the figure has a view and they are in R^3
+** (a buffer pushed on the stack), else NULL (and nothing pushed). */
+double *cf__lua_check_points3d(lua_State *L, cf_figure_t *fig, int idx,
+                               const char *fn, size_t *count);
 
 #endif

@@ -86,8 +86,8 @@ read_isolines(lua_State *L, int opts, cf_surface_lines_t *o)
                                             &o->v_count);
 }
 
-static cf_hidden_t
-read_hidden(lua_State *L, int opts, const char *fn, const char *def)
+cf_hidden_t
+cf__lua_read_hidden(lua_State *L, int opts, const char *fn, const char *def)
 {
     const char *h;
     cf__lua_field(L, opts, "hidden");
@@ -157,7 +157,7 @@ cf__lua_space_curve(lua_State *L, cf_figure_t *fig, int idx, int opts,
         || !((bz != NULL && cf_bezier_dim(bz) == 3)
              || (bs != NULL && cf_bspline_dim(bs) == 3)))
         return false;
-    hidden = read_hidden(L, opts, "curve", "dashed");
+    hidden = cf__lua_read_hidden(L, opts, "curve", "dashed");
     cf_diag_clear(&diag);
     memset(&one, 0, sizeof one);
     if (bz != NULL) {
@@ -244,7 +244,7 @@ m_surface(lua_State *L)
     o.silhouette = cf__lua_opt_bool(L, 3, "silhouette", "surface", true);
     o.knot_lines = cf__lua_opt_bool(L, 3, "knot_lines", "surface", false);
     o.occludes = cf__lua_opt_bool(L, 3, "occludes", "surface", true);
-    o.hidden = read_hidden(L, 3, "surface", "remove");
+    o.hidden = cf__lua_read_hidden(L, 3, "surface", "remove");
     read_isolines(L, 3, &o);
     read_shading(L, 3, fig, &st, &o.shading);
     cf__lua_read_sub_style(L, 3, "iso_style", "surface", fig, &o.iso_style);

@@ -9,6 +9,7 @@
 #include <lauxlib.h>
 
 #include "curvefig/figure.h"
+#include "curvefig/figure3d.h"
 #include "curvefig/surface.h"
 
 /* The surface at idx as a B-spline surface (a Bézier one converted, the
@@ -22,6 +23,11 @@ const cf_bspline_surface_t *cf__lua_surface_arg(lua_State *L, int idx,
 ** done) for any other curve or figure. */
 bool cf__lua_space_curve(lua_State *L, cf_figure_t *fig, int idx, int opts,
                          const cf_style_t *st);
+
+/* The hidden = "remove" | "dashed" | "show" option at opts (def when
+** absent). */
+cf_hidden_t cf__lua_read_hidden(lua_State *L, int opts, const char *fn,
+                                const char *def);
 
 extern const luaL_Reg cf__lua_surface_draw_methods[];
 extern const luaL_Reg cf__lua_surface_scheme_methods[];

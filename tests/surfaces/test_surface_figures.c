@@ -32,6 +32,8 @@
 #include "surface-lines.h"
 
 #define SURF_DIR CF_SOURCE_ROOT "/figures/surfaces"
+/* scenes for the test alone: points and lines in space among surfaces */
+#define SCENE_DIR CF_SOURCE_ROOT "/tests/surfaces/scenes"
 
 /* ---- the scripts -------------------------------------------------------- */
 
@@ -41,11 +43,11 @@ by_name(const void *a, const void *b)
     return strcmp(*(char *const *)a, *(char *const *)b);
 }
 
-/* The scripts of figures/surfaces, sorted; returns how many. */
+/* The scripts of dir, sorted; returns how many. */
 static size_t
-scripts(char **names, size_t max)
+scripts_in(const char *dir, char **names, size_t max)
 {
-    DIR *d = opendir(SURF_DIR);
+    DIR *d = opendir(dir);
     struct dirent *de;
     size_t n = 0;
     assert_non_null(d);
@@ -59,16 +61,29 @@ scripts(char **names, size_t max)
     return n;
 }
 
+/* The scripts of figures/surfaces. */
+static size_t
+scripts(char **names, size_t max)
+{
+    return scripts_in(SURF_DIR, names, max);
+}
+
 static cf_script_t *
-run(const char *name)
+run_in(const char *dir, const char *name)
 {
     char path[1024];
     cf_script_t *sc = NULL;
-    snprintf(path, sizeof path, "%s/%s", SURF_DIR, name);
+    snprintf(path, sizeof path, "%s/%s", dir, name);
     assert_int_equal(cf_script_create(NULL, NULL, &sc, NULL), 0);
     if (cf_script_run_file(sc, path) != CF_STATUS_OK)
         fail_msg("%s: %s", path, cf_script_error(sc));
     return sc;
+}
+
+static cf_script_t *
+run(const char *name)
+{
+    return run_in(SURF_DIR, name);
 }
 
 /* ---- visibility --------------------------------------------------------- */
@@ -243,27 +258,37 @@ check_figure(const char *script, const char *name, cf_figure_t *fig,
     return bad;
 }
 
+/* Every figure of the scripts of dir; counts into the totals. */
 static void
-test_visibility(void **state)
+check_dir(const char *dir, size_t *checked, size_t *bad, size_t *figures)
 {
     char *names[64];
-    size_t n = scripts(names, 64), checked = 0, bad = 0, figures = 0;
-    (void)state;
-    assert_true(n >= 9);
+    size_t n = scripts_in(dir, names, 64);
+    assert_true(n >= 1);
     for (size_t i = 0; i < n; i++) {
-        cf_script_t *sc = run(names[i]);
+        cf_script_t *sc = run_in(dir, names[i]);
         for (size_t f = 0; f < cf_script_figure_count(sc); f++) {
-            size_t before = checked, b;
+            size_t before = *checked, b;
             b = check_figure(names[i], cf_script_figure_name(sc, f),
-                             cf_script_figure(sc, f), &checked);
+                             cf_script_figure(sc, f), checked);
             print_message("%s: %zu of %zu samples disagree\n",
-                          cf_script_figure_name(sc, f), b, checked - before);
-            bad += b;
-            figures++;
+                          cf_script_figure_name(sc, f), b, *checked - before);
+            *bad += b;
+            (*figures)++;
         }
         cf_script_destroy(sc);
         free(names[i]);
     }
+}
+
+static void
+test_visibility(void **state)
+{
+    size_t checked = 0, bad = 0, figures = 0;
+    (void)state;
+    check_dir(SURF_DIR, &checked, &bad, &figures);
+    assert_true(figures >= 10);
+    check_dir(SCENE_DIR, &checked, &bad, &figures);
     print_message("%zu figures, %zu samples checked, %zu disagree\n",
                   figures, checked, bad);
     assert_true(checked > 1000);

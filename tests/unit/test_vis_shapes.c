@@ -476,6 +476,129 @@ test_facets(void **state)
     cf_bspline_surface_destroy(s);
 }
 
+/* ---- short occlusions along a curve on a surface -------------------------- */
+
+/*
+** A hill (bicubic, z = 0.6 (1 - x^2) over [-1, 1]^2 on its net) and its
+** iso-line v = 0.5, seen from above at an angle; in front of it, towards
+** the eye, squares 5 tol wide at eight parameters: each is narrower than
+** the sampling step (16 tol), so only the certified gaps find it.  Each
+** must hide an interval of the line of about its width, and every sample
+** of the line (dense about the squares, at tol / 2) must be hidden or
+** visible as the ray caster says, except within 2 tol of a split.  Both
+** ways of giving the (u, v) line: a Bézier and a B-spline.
+*/
+static void
+test_short_occlusion(void **state)
+{
+    (void)state;
+    enum { SQ = 8 };
+    const double tol = 1e-3, w = 5 * tol;
+    const double where[SQ] = {0.11, 0.23, 0.37, 0.44, 0.52, 0.66, 0.79,
+                              0.91};
+    double P[48], uvp[4] = {0.0, 0.5, 1.0, 0.5}, kn[4] = {0, 0, 1, 1};
+    cf_bezier_surface_t *hill = NULL, *sq[SQ];
+    cf_bezier_t *iso = NULL, *uvb = NULL;
+    cf_bspline_t *uvs = NULL;
+    cf_scene_t *sc = NULL;
+    rc_scene_t *rc;
+    cf_view_t v;
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            double *x = P + 3 * (4 * i + j), a = -1 + 2 * i / 3.0;
+            x[0] = a;
+            x[1] = -1 + 2 * j / 3.0;
+            x[2] = 0.6 * (1 - a * a) + (i == 1 || i == 2 ? 0.2 : 0.0);
+        }
+    assert_int_equal(cf_bezier_surface_create(3, 3, 3, P, NULL, &hill, NULL),
+                     0);
+    assert_int_equal(cf_view_orthographic(&v, -60, 40, NULL), 0);
+    assert_int_equal(cf_scene_create(&v, tol, &sc, NULL), 0);
+    rc = rc_create(&v);
+    assert_non_null(rc);
+    assert_int_equal(cf_scene_add_bezier(sc, hill, NULL, NULL), 0);
+    assert_true(rc_add_bezier(rc, hill));
+    assert_int_equal(cf_bezier_surface_iso(hill, CF_DIR_V, 0.5, &iso, NULL),
+                     0);
+    for (int k = 0; k < SQ; k++) {
+        double c[3], Q[12];
+        assert_int_equal(cf_bezier_eval(iso, where[k], c), 0);
+        for (int a = 0; a < 2; a++)
+            for (int b = 0; b < 2; b++)
+                for (int e = 0; e < 3; e++)
+                    Q[3 * (2 * a + b) + e] = c[e] + 0.5 * v.dir[e] +
+                                             (a - 0.5) * w * v.ex[e] +
+                                             (b - 0.5) * w * v.ey[e];
+        assert_int_equal(cf_bezier_surface_bilinear(3, Q, &sq[k], NULL), 0);
+        assert_int_equal(cf_scene_add_bezier(sc, sq[k], NULL, NULL), 0);
+        assert_true(rc_add_bezier(rc, sq[k]));
+    }
+    assert_int_equal(cf_bezier_create(2, 1, uvp, NULL, &uvb, NULL), 0);
+    assert_int_equal(cf_bspline_create(2, 1, kn, 4, uvp, 2, NULL, &uvs, NULL),
+                     0);
+    for (int how = 0; how < 2; how++) {
+        cf_vis_on_t on;
+        cf_visibility_t *vis = NULL;
+        size_t found = 0;
+        memset(&on, 0, sizeof on);
+        if (how == 0)
+            on.uv_bezier = uvb;
+        else
+            on.uv_bspline = uvs;
+        assert_int_equal(cf_scene_curve_visibility(sc, iso, &on, &vis, NULL),
+                         0);
+        for (size_t i = 0; i < vis->n; i++) {
+            double a[3], b[3], ia[2], ib[2];
+            if (vis->items[i].visible)
+                continue;
+            assert_int_equal(cf_bezier_eval(iso, vis->items[i].t0, a), 0);
+            assert_int_equal(cf_bezier_eval(iso, vis->items[i].t1, b), 0);
+            assert_int_equal(cf_view_project(&v, a, ia, NULL), 0);
+            assert_int_equal(cf_view_project(&v, b, ib, NULL), 0);
+            double len = hypot(ia[0] - ib[0], ia[1] - ib[1]);
+            if (len > w - 2 * tol && len < w + 2 * tol)
+                found++;
+        }
+        if (found != SQ)
+            fail_msg("(u, v) as a %s: %zu of %d short occlusions found",
+                     how ? "B-spline" : "Bézier", found, SQ);
+        /* the reference at image steps of tol / 2 about each square */
+        for (int k = 0; k < SQ; k++)
+            for (int i = -20; i <= 20; i++) {
+                double t = where[k] + i * 0.25 * tol, x[3], img[2];
+                size_t j = 0;
+                assert_int_equal(cf_bezier_eval(iso, t, x), 0);
+                while (j + 1 < vis->n && t > vis->items[j].t1)
+                    j++;
+                bool ours = !vis->items[j].visible;
+                if (!rc_long_double() || ours == rc_hidden(rc, x, tol, NULL))
+                    continue;
+                assert_int_equal(cf_view_project(&v, x, img, NULL), 0);
+                double near = HUGE_VAL;
+                for (size_t e = 0; e + 1 < vis->n; e++) {
+                    double y[3], iy[2];
+                    assert_int_equal(cf_bezier_eval(iso, vis->items[e].t1, y),
+                                     0);
+                    assert_int_equal(cf_view_project(&v, y, iy, NULL), 0);
+                    near = fmin(near, hypot(img[0] - iy[0], img[1] - iy[1]));
+                }
+                if (near > 2 * tol)
+                    fail_msg("t = %g is %s, the reference says otherwise "
+                             "(nearest split %g away)", t,
+                             ours ? "hidden" : "visible", near);
+            }
+        cf_visibility_destroy(vis);
+    }
+    for (int k = 0; k < SQ; k++)
+        cf_bezier_surface_destroy(sq[k]);
+    cf_bezier_surface_destroy(hill);
+    cf_bezier_destroy(iso);
+    cf_bezier_destroy(uvb);
+    cf_bspline_destroy(uvs);
+    cf_scene_destroy(sc);
+    rc_destroy(rc);
+}
+
 
 int
 main(void)
@@ -484,6 +607,7 @@ main(void)
         cmocka_unit_test(test_silhouette_sphere),
         cmocka_unit_test(test_silhouette_torus),
         cmocka_unit_test(test_facets),
+        cmocka_unit_test(test_short_occlusion),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -17,6 +17,7 @@
 #include "curvefig/figure3d.h"
 #include "curvefig/geometry.h"
 #include "dlist.h"
+#include "facts.h"
 
 /* ---- layout (filled in by layout.c, read by the element kinds) -------- */
 
@@ -164,6 +165,9 @@ struct cf_figure {
     cf_diag_t err;           /* the first error (sticky) */
     double width, height;    /* bp */
     char *title, *caption;
+    char *alt, *description, *lang;   /* accessible text (describe.c):
+                                         NULL unset; description "auto" */
+    cf__facts_t facts;       /* what it shows, for the description */
     cf_theme_t theme;
     bool window_set;
     double win[4];

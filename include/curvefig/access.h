@@ -24,7 +24,8 @@ CF_API cf_status_t cf_figure_set_alt(cf_figure_t *fig, const char *alt);
 ** curves (kinds, degrees, control points named by their labels, weights,
 ** knots), the constructions drawn on them (de Casteljau at t, de Boor at
 ** u), subdivisions, degree elevations, knot insertions, its surfaces and
-** view, and its other labels.  NULL unsets it. */
+** view, and its other labels.  NULL or "" unsets it (a figure of the
+** Lua language has "auto" unless its script says otherwise). */
 CF_API cf_status_t cf_figure_set_description(cf_figure_t *fig,
                                              const char *text);
 

@@ -124,7 +124,7 @@ cf_figure_description(cf_figure_t *fig, char **out)
         return CF_STATUS_INVALID_ARG;
     *out = NULL;
     CF__FIG_CHECK(fig);
-    if (fig->description == NULL)
+    if (fig->description == NULL || fig->description[0] == '\0')
         return CF_STATUS_OK;
     if (strcmp(fig->description, "auto") == 0)
         return cf__figure_describe(fig, false, out);

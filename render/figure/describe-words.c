@@ -115,22 +115,69 @@ cf__dw_put_params(cf__dwriter_t *w, const double *v, size_t n)
     }
 }
 
-/* A label's text as read: TeX braces and dollars dropped, commands by
-** their names (\omega -> omega). */
+/* Commands of labels that only style their argument: read as it. */
+static const char *const styling[] = {
+    "text", "mathrm", "mathbf", "mathit", "mathsf", "mathtt", "boldsymbol",
+    "operatorname", "textbf", "textit", "hat", "bar", "tilde", "vec",
+    "overline", "dot", "ddot", "left", "right", "displaystyle"
+};
+
+/* The group {...} at s (or the one character there) into b; s past it. */
+static const char *
+put_group(cf__buf_t *b, const char *s)
+{
+    const char *e;
+    if (*s != '{') {
+        if (*s != '\0')
+            cf__buf_append(b, s++, 1);
+        return s;
+    }
+    for (e = s + 1; *e != '\0' && *e != '}'; e++)
+        ;
+    cf__buf_append(b, s + 1, (size_t)(e - s - 1));
+    return *e == '}' ? e + 1 : e;
+}
+
+/* A label's text as read: TeX braces and dollars dropped, styling
+** commands (\text, \mathbf) dropped for their argument, \frac{a}{b} as
+** a/b, other commands by their names (\omega -> omega). */
 void
 cf__dw_put_plain(cf__buf_t *b, const char *s)
 {
-    for (; *s != '\0'; s++) {
-        if (*s == '{' || *s == '}' || *s == '$')
-            continue;
-        if (*s == '\\') {
-            if (s[1] == ',' || s[1] == ' ' || s[1] == ';') {
-                cf__dw_put(b, " ");
-                s++;
-            }
+    while (*s != '\0') {
+        const char *name;
+        size_t n, i;
+        if (*s == '{' || *s == '}' || *s == '$') {
+            s++;
             continue;
         }
-        cf__buf_append(b, s, 1);
+        if (*s != '\\') {
+            cf__buf_append(b, s++, 1);
+            continue;
+        }
+        name = ++s;
+        for (n = 0; (name[n] >= 'a' && name[n] <= 'z')
+                    || (name[n] >= 'A' && name[n] <= 'Z'); n++)
+            ;
+        if (n == 0) {
+            /* \, \; \  and \\: a space */
+            cf__dw_put(b, " ");
+            if (*s != '\0')
+                s++;
+            continue;
+        }
+        s = name + n;
+        if (n == 4 && strncmp(name, "frac", 4) == 0) {
+            s = put_group(b, s);
+            cf__dw_put(b, "/");
+            s = put_group(b, s);
+            continue;
+        }
+        for (i = 0; i < sizeof styling / sizeof styling[0]; i++)
+            if (strlen(styling[i]) == n && strncmp(name, styling[i], n) == 0)
+                break;
+        if (i == sizeof styling / sizeof styling[0])
+            cf__buf_append(b, name, n);
     }
 }
 

@@ -93,6 +93,57 @@ construction_phrase(cf__dwriter_t *w, const cf__curve_info_t *c, size_t k)
     cf__dw_putf(w->out, c->deboor ? w->L->deboor : w->L->decasteljau, tmp);
 }
 
+/* Whether fact i is the first basis function of its degree. */
+static bool
+first_basis(const cf__facts_t *f, size_t i)
+{
+    for (size_t j = 0; j < i; j++)
+        if (f->items[j].kind == CF__FACT_BASIS
+            && f->items[j].deg_u == f->items[i].deg_u)
+            return false;
+    return true;
+}
+
+/* The knot vector of the basis functions of fact i's degree: every value
+** of their knots, each as often as in the function that has it most
+** often (the functions N_i .. N_j of one vector give that vector). */
+static bool
+merged_knots(const cf__facts_t *f, size_t i, double **out, size_t *n)
+{
+    size_t cap = 0, k = 0;
+    double *u;
+    for (size_t j = i; j < f->count; j++)
+        if (f->items[j].kind == CF__FACT_BASIS
+            && f->items[j].deg_u == f->items[i].deg_u)
+            cap += f->items[j].n;
+    u = cf_alloc_array(cap ? cap : 1, sizeof *u);
+    if (u == NULL)
+        return false;
+    for (size_t j = i; j < f->count; j++) {
+        const cf__fact_t *x = &f->items[j];
+        if (x->kind != CF__FACT_BASIS || x->deg_u != f->items[i].deg_u)
+            continue;
+        for (size_t a = 0; a < x->n;) {
+            size_t m = 1, have = 0, at;
+            while (a + m < x->n && x->xy[a + m] == x->xy[a])
+                m++;
+            for (at = 0; at < k && u[at] < x->xy[a]; at++)
+                ;
+            while (at + have < k && u[at + have] == x->xy[a])
+                have++;
+            for (; have < m; have++) {
+                memmove(u + at + 1, u + at, (k - at) * sizeof *u);
+                u[at] = x->xy[a];
+                k++;
+            }
+            a += m;
+        }
+    }
+    *out = u;
+    *n = k;
+    return true;
+}
+
 /* ---- the summary ------------------------------------------------------- */
 
 typedef struct items {
@@ -173,7 +224,7 @@ collect(cf__dwriter_t *w, items_t *it)
             saved = begin_item(w, &item);
             surface_phrase(w, x, true);
             end_item(w, it, saved);
-        } else if (x->kind == CF__FACT_BASIS) {
+        } else if (x->kind == CF__FACT_BASIS && first_basis(f, i)) {
             saved = begin_item(w, &item);
             cf__dw_putf(w->out, w->L->basis_short, x->deg_u);
             end_item(w, it, saved);
@@ -378,9 +429,18 @@ put_surfaces(cf__dwriter_t *w)
         size_t start;
         if (x->kind == CF__FACT_BASIS) {
             cf__buf_t knots, *saved = w->out;
+            double *u;
+            size_t nu;
+            if (!first_basis(f, i))
+                continue;
+            if (!merged_knots(f, i, &u, &nu)) {
+                w->out->failed = 1;
+                return;
+            }
             cf__dw_begin(w, &knots);
-            cf__dw_put_params(w, x->xy, x->n);
+            cf__dw_put_params(w, u, nu);
             cf__dw_end(w, &knots, saved);
+            cf_free(u);
             cf__dw_put(w->out, " ");
             start = w->out->size;
             if (knots.data != NULL)
@@ -388,13 +448,6 @@ put_surfaces(cf__dwriter_t *w)
             cf__dw_put(w->out, ".");
             cf__dw_capitalise(w->out, start);
             cf__buf_free(&knots);
-            /* the same knots again: one sentence */
-            while (i + 1 < f->count && f->items[i + 1].kind == CF__FACT_BASIS
-                   && f->items[i + 1].n == x->n
-                   && f->items[i + 1].deg_u == x->deg_u
-                   && memcmp(f->items[i + 1].xy, x->xy,
-                             x->n * sizeof *x->xy) == 0)
-                i++;
             continue;
         }
         if (x->kind != CF__FACT_SURFACE && x->kind != CF__FACT_TRIANGLE)

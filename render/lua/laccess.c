@@ -1,6 +1,7 @@
 /*
-** figure{ alt = "...", description = "..." | "auto", lang = "cs" }: the
-** accessible text of a figure (curvefig/access.h).
+** figure{ alt = "...", description = "..." | "auto" | "", lang = "cs" }:
+** the accessible text of a figure (curvefig/access.h); the description is
+** "auto" unless given ("": none).
 */
 #include <lauxlib.h>
 
@@ -37,8 +38,10 @@ cf__lua_read_access(lua_State *L, cf_figure_t *fig)
     if (alt != NULL && alt[0] == '\0')
         luaL_error(L, "figure: alt is empty: say in a sentence what the "
                    "figure shows, or leave alt out (the caption is used)");
+    /* every figure of a script is described unless it says otherwise */
     if (cf_figure_set_alt(fig, alt) != CF_STATUS_OK
-        || cf_figure_set_description(fig, desc) != CF_STATUS_OK
+        || cf_figure_set_description(fig, desc != NULL ? desc : "auto")
+               != CF_STATUS_OK
         || cf_figure_set_lang(fig, lang) != CF_STATUS_OK) {
         cf_figure_status(fig, &diag);
         luaL_error(L, "figure: %s", diag.msg);

@@ -27,7 +27,7 @@ static const cf__desc_lang_t langs[] = {
         "%s is the part of curve %s before t = %s (subdivision)",
         "%s is the part of curve %s after t = %s (subdivision)",
         "%s is curve %s with its degree raised from %d to %d",
-        "%s is curve %s after inserting the knots %s",
+        "%s is curve %s after knot insertion at u = %s",
         "Seen from azimuth %s\xc2\xb0 and elevation %s\xc2\xb0 "
         "(parallel projection).",
         "Seen from azimuth %s\xc2\xb0 and elevation %s\xc2\xb0 in "
@@ -67,7 +67,7 @@ static const cf__desc_lang_t langs[] = {
         "%s je k\xc5\x99ivka %s se stupn\xc4\x9bm "
         "zv\xc3\xbd\xc5\xa1" "en\xc3\xbdm "
         "z %d na %d",
-        "%s je k\xc5\x99ivka %s po vlo\xc5\xbe" "en\xc3\xad uzl\xc5\xaf %s",
+        "%s je k\xc5\x99ivka %s po vlo\xc5\xbe" "en\xc3\xad uzlu u = %s",
         "Pohled z azimutu %s\xc2\xb0 a elevace %s\xc2\xb0 "
         "(rovnob\xc4\x9b\xc5\xbe" "n\xc3\xa9 prom\xc3\xadt\xc3\xa1n\xc3\xad).",
         "Pohled z azimutu %s\xc2\xb0 a elevace %s\xc2\xb0 "

@@ -23,6 +23,7 @@
 #include <malloc.h>
 #endif
 
+#include "curvefig/access.h"
 #include "curvefig/figure.h"
 #include "help.h"
 #include "helpers.h"
@@ -558,11 +559,17 @@ render_figures(const cf_script_t *s, const options *o)
             return EXIT_SCRIPT;
         }
         for (size_t i = 0; i < cf_script_figure_count(s); i++) {
+            char *alt = NULL, *desc = NULL;
             if (!selected(o->only, cf_script_figure_name(s, i)))
                 continue;
+            /* a figure that rendered has its text (out of memory: none) */
+            cf_figure_alt_text(cf_script_figure(s, i), &alt);
+            cf_figure_description(cf_script_figure(s, i), &desc);
             cf__tool_manifest_line(man.f, cf_script_figure_name(s, i),
                                    cf_script_figure_caption(s, i),
-                                   o->formats, o->script);
+                                   o->formats, o->script, alt, desc);
+            cf_free(alt);
+            cf_free(desc);
         }
         if (cf__tool_close_atomic(&man) != 0) {
             fprintf(stderr, "curvefig: cannot write %s: %s\n", o->manifest,

@@ -35,7 +35,8 @@ static const cf__desc_lang_t langs[] = {
         "the B-spline basis functions of degree %d on the knots %s",
         "B-spline basis functions of degree %d",
         "the graph of a function", "the graphs of %s functions",
-        "Further labels: ", "An empty figure.", " (%s times)",
+        "Further labels: ", "An empty figure.",
+        "A drawing of points and lines.", " (%s times)",
     },
     {
         "cs", ',', "; ", " a ", "", "Panel %zu: ",
@@ -79,6 +80,7 @@ static const cf__desc_lang_t langs[] = {
         "graf funkce", "grafy funkc\xc3\xad (%s)",
         "Dal\xc5\xa1\xc3\xad popisky: ",
         "Pr\xc3\xa1zdn\xc3\xbd obr\xc3\xa1zek.",
+        "Kresba bod\xc5\xaf a \xc4\x8d" "ar.",
         " (%s\xc3\x97)",
     },
 };

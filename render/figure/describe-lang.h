@@ -47,6 +47,7 @@ typedef struct cf__desc_lang {
     const char *graphs;         /* %s: the number of graphs */
     const char *labels;         /* before the other labels */
     const char *empty;          /* nothing described */
+    const char *drawing;        /* points, lines and labels alone */
     const char *times;          /* %s count: an item repeated */
 } cf__desc_lang_t;
 

@@ -251,8 +251,9 @@ put_summary(cf__dwriter_t *w)
     size_t start = w->out->size;
     memset(&it, 0, sizeof it);
     collect(w, &it);
-    if (it.n == 0 && w->d.fig->facts.count == 0)
-        cf__dw_put(w->out, w->L->empty);
+    if (it.n == 0)
+        cf__dw_put(w->out, w->d.fig->facts.count == 0 ? w->L->empty
+                                                      : w->L->drawing);
     for (size_t i = 0; i < it.n; i++) {
         cf__dw_put_sep(w, i, it.n);
         cf__dw_put(w->out, (const char *)it.text[i].data);

@@ -312,6 +312,82 @@ find_insertion(const cf__describe_t *d, const cf__curve_info_t *x,
     return same;
 }
 
+/* The distance from point q to plane curve x: the nearest of 256 samples,
+** refined by golden-section search between its neighbours. */
+static double
+distance_to(const cf__curve_info_t *x, const double *q)
+{
+    enum { N = 256 };
+    double a, b, best = INFINITY, tb = 0, p[2];
+    if (x->bez != NULL) {
+        a = 0;
+        b = 1;
+    } else {
+        cf_bspline_domain(x->bs, &a, &b);
+    }
+    for (int i = 0; i <= N; i++) {
+        double t = a + (b - a) * i / N, dd;
+        if ((x->bez ? cf_bezier_eval(x->bez, t, p)
+                    : cf_bspline_eval(x->bs, t, p)) != CF_STATUS_OK)
+            continue;
+        dd = hypot(p[0] - q[0], p[1] - q[1]);
+        if (dd < best) {
+            best = dd;
+            tb = t;
+        }
+    }
+    {
+        double lo = fmax(a, tb - (b - a) / N), hi = fmin(b, tb + (b - a) / N);
+        const double g = 0.6180339887498949;
+        for (int k = 0; k < 60; k++) {
+            double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo), p2[2];
+            if ((x->bez ? cf_bezier_eval(x->bez, m1, p)
+                        : cf_bspline_eval(x->bs, m1, p)) != CF_STATUS_OK
+                || (x->bez ? cf_bezier_eval(x->bez, m2, p2)
+                           : cf_bspline_eval(x->bs, m2, p2)) != CF_STATUS_OK)
+                break;
+            if (hypot(p[0] - q[0], p[1] - q[1])
+                < hypot(p2[0] - q[0], p2[1] - q[1]))
+                hi = m2;
+            else
+                lo = m1;
+        }
+        if ((x->bez ? cf_bezier_eval(x->bez, 0.5 * (lo + hi), p)
+                    : cf_bspline_eval(x->bs, 0.5 * (lo + hi), p))
+            == CF_STATUS_OK)
+            best = fmin(best, hypot(p[0] - q[0], p[1] - q[1]));
+    }
+    return best;
+}
+
+/* y an offset of x: plane Bézier y's points at t = 0, 1/4, ... 1 all at
+** one distance d > 0 from x, within 1/200 of d (an offset is drawn as an
+** approximation within the figure's tolerance). */
+static bool
+find_offset(const cf__describe_t *d, const cf__curve_info_t *x,
+            cf__curve_info_t *y)
+{
+    double dist[5], lo = INFINITY, hi = 0, p[2];
+    if (x->dim != 2 || y->dim != 2 || y->bez == NULL)
+        return false;
+    for (int k = 0; k < 5; k++) {
+        if (cf_bezier_eval(y->bez, k / 4.0, p) != CF_STATUS_OK)
+            return false;
+        dist[k] = distance_to(x, p);
+        lo = fmin(lo, dist[k]);
+        hi = fmax(hi, dist[k]);
+    }
+    if (!(lo > 1e3 * d->eps && hi - lo <= 5e-3 * hi))
+        return false;
+    /* measured on an approximation: 3 significant digits */
+    y->rel = CF__REL_OFFSET;
+    {
+        double m = 0.5 * (lo + hi), k = pow(10, 2 - floor(log10(m)));
+        y->rel_param = round(m * k) / k;
+    }
+    return true;
+}
+
 void
 cf__describe_find(cf__describe_t *d)
 {
@@ -324,8 +400,9 @@ cf__describe_find(cf__describe_t *d)
         else
             find_deboor(d, c);
     }
-    /* a curve made from an earlier one */
-    for (size_t j = 1; j < d->ncurves; j++)
+    /* a curve made from an earlier one (pairs: few curves only; offsets
+    ** sample, fewer still) */
+    for (size_t j = 1; j < d->ncurves && d->ncurves <= 200; j++)
         for (size_t i = 0; i < j && d->curves[j].rel == CF__REL_NONE; i++) {
             cf__curve_info_t *x = &d->curves[i], *y = &d->curves[j];
             bool found = false;
@@ -336,6 +413,9 @@ cf__describe_find(cf__describe_t *d)
                     || find_elevation(d, x, y);
             else if (x->bs != NULL && y->bs != NULL)
                 found = find_insertion(d, x, y);
+            /* an offset's pieces: of the first curve that is no offset */
+            if (!found && x->rel != CF__REL_OFFSET && d->ncurves <= 64)
+                found = find_offset(d, x, y);
             if (found)
                 y->rel_of = i;
         }

@@ -28,6 +28,9 @@ static const cf__desc_lang_t langs[] = {
         "%s is the part of curve %s after t = %s (subdivision)",
         "%s is curve %s with its degree raised from %d to %d",
         "%s is curve %s after knot insertion at u = %s",
+        "%s is the offset of curve %s at distance %s",
+        "Curves %s to %s are the offset of curve %s at distance %s",
+        " and its offset at distance %s",
         "Seen from azimuth %s\xc2\xb0 and elevation %s\xc2\xb0 "
         "(parallel projection).",
         "Seen from azimuth %s\xc2\xb0 and elevation %s\xc2\xb0 in "
@@ -69,6 +72,10 @@ static const cf__desc_lang_t langs[] = {
         "zv\xc3\xbd\xc5\xa1" "en\xc3\xbdm "
         "z %d na %d",
         "%s je k\xc5\x99ivka %s po vlo\xc5\xbe" "en\xc3\xad uzlu u = %s",
+        "%s je ekvidistanta k\xc5\x99ivky %s ve vzd\xc3\xa1lenosti %s",
+        "K\xc5\x99ivky %s a\xc5\xbe %s jsou ekvidistantou k\xc5\x99ivky %s "
+        "ve vzd\xc3\xa1lenosti %s",
+        " a jej\xc3\xad ekvidistanta ve vzd\xc3\xa1lenosti %s",
         "Pohled z azimutu %s\xc2\xb0 a elevace %s\xc2\xb0 "
         "(rovnob\xc4\x9b\xc5\xbe" "n\xc3\xa9 prom\xc3\xadt\xc3\xa1n\xc3\xad).",
         "Pohled z azimutu %s\xc2\xb0 a elevace %s\xc2\xb0 "

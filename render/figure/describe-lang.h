@@ -39,6 +39,9 @@ typedef struct cf__desc_lang {
                                               other's number, %s t */
     const char *elevated;       /* %s curve, %s other, %d from, %d to */
     const char *inserted;       /* %s curve, %s other, %s the knots */
+    const char *offset;         /* %s curve, %s other, %s distance */
+    const char *offsets;        /* %s first, %s last, %s other, %s d */
+    const char *with_offset;    /* %s distance: after a curve's phrase */
     const char *view_ortho;     /* %s azimuth, %s elevation */
     const char *view_persp;     /* %s azimuth, %s elevation, %s distance */
     const char *basis;          /* %d degree, %s knots */

@@ -21,7 +21,8 @@ typedef enum cf__rel {
     CF__REL_LEFT,      /* the part before rel_param (subdivision) */
     CF__REL_RIGHT,     /* the part after rel_param */
     CF__REL_ELEVATED,  /* degree elevation */
-    CF__REL_INSERTED   /* knots inserted[0 .. ninserted) */
+    CF__REL_INSERTED,  /* knots inserted[0 .. ninserted) */
+    CF__REL_OFFSET     /* at distance rel_param from it (plane curves) */
 } cf__rel_t;
 
 /* One curve of the figure, as given and in the page plane. */

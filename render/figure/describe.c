@@ -144,6 +144,42 @@ merged_knots(const cf__facts_t *f, size_t i, double **out, size_t *n)
     return true;
 }
 
+/* The last of the curves from j on that are offsets of one curve at one
+** distance (j itself when it is no offset or stands alone). */
+static size_t
+offset_run(const cf__dwriter_t *w, size_t j)
+{
+    const cf__curve_info_t *y = &w->d.curves[j];
+    size_t k = j;
+    if (y->rel != CF__REL_OFFSET)
+        return j;
+    while (k + 1 < w->d.ncurves && w->d.curves[k + 1].rel == CF__REL_OFFSET
+           && w->d.curves[k + 1].rel_of == y->rel_of
+           && fabs(w->d.curves[k + 1].rel_param - y->rel_param)
+                  <= 1e-2 * y->rel_param)
+        k++;
+    return k;
+}
+
+/* " and its offset at distance d" for each distance of the offsets of
+** curve i. */
+static void
+put_offsets(cf__dwriter_t *w, size_t i)
+{
+    for (size_t j = i + 1; j < w->d.ncurves; j++) {
+        const cf__curve_info_t *y = &w->d.curves[j];
+        char v[64];
+        if (y->rel != CF__REL_OFFSET || y->rel_of != i
+            || (j > 0 && w->d.curves[j - 1].rel == CF__REL_OFFSET
+                && w->d.curves[j - 1].rel_of == i
+                && fabs(w->d.curves[j - 1].rel_param - y->rel_param)
+                       <= 1e-2 * y->rel_param))
+            continue;
+        cf__dw_fmt_num(w->L, y->rel_param, false, v, sizeof v);
+        cf__dw_putf(w->out, w->L->with_offset, v);
+    }
+}
+
 /* ---- the summary ------------------------------------------------------- */
 
 typedef struct items {
@@ -198,6 +234,8 @@ collect(cf__dwriter_t *w, items_t *it)
         const cf__curve_info_t *c = &w->d.curves[i];
         double v[CF__DESCRIBE_MAX_PARAMS];
         size_t nv = 0;
+        if (c->rel == CF__REL_OFFSET)
+            continue;     /* said with its curve */
         saved = begin_item(w, &item);
         curve_phrase(w, c, true);
         /* its constructions, the parameters in one list */
@@ -216,6 +254,7 @@ collect(cf__dwriter_t *w, items_t *it)
                             (char *)list.data);
             cf__buf_free(&list);
         }
+        put_offsets(w, i);
         end_item(w, it, saved);
     }
     for (size_t i = 0; i < f->count; i++) {
@@ -287,6 +326,8 @@ put_curve(cf__dwriter_t *w, size_t i)
 {
     const cf__curve_info_t *c = &w->d.curves[i];
     size_t start, dim = c->dim;
+    if (c->rel == CF__REL_OFFSET)
+        return;   /* pieces approximating an offset: their relation says it */
     cf__dw_put(w->out, " ");
     start = w->out->size;
     if (w->d.ncurves > 1) {
@@ -377,20 +418,34 @@ put_constructions(cf__dwriter_t *w, size_t i)
     }
 }
 
-static void
+/* The relation of curve j to an earlier one, and of the curves after it
+** that are pieces of one offset with it; the last curve said. */
+static size_t
 put_relation(cf__dwriter_t *w, size_t j)
 {
     const cf__curve_info_t *y = &w->d.curves[j], *x;
     cf__buf_t name, *saved = w->out;
     char of[32], v[256];
+    size_t last = offset_run(w, j);
     if (y->rel == CF__REL_NONE)
-        return;
+        return j;
+    if (last > j) {
+        char a[32], b[32];
+        snprintf(a, sizeof a, "%zu", j + 1);
+        snprintf(b, sizeof b, "%zu", last + 1);
+        snprintf(of, sizeof of, "%zu", y->rel_of + 1);
+        cf__dw_fmt_num(w->L, y->rel_param, false, v, sizeof v);
+        cf__dw_put(w->out, " ");
+        cf__dw_putf(w->out, w->L->offsets, a, b, of, v);
+        cf__dw_put(w->out, ".");
+        return last;
+    }
     x = &w->d.curves[y->rel_of];
     cf__dw_begin(w, &name);
     put_curve_name(w, j, true);
     cf__dw_end(w, &name, saved);
     if (name.data == NULL)
-        return;
+        return j;
     snprintf(of, sizeof of, "%zu", y->rel_of + 1);
     cf__dw_put(w->out, " ");
     switch (y->rel) {
@@ -400,6 +455,10 @@ put_relation(cf__dwriter_t *w, size_t j)
         cf__dw_putf(w->out, y->rel == CF__REL_LEFT ? w->L->split_left
                                             : w->L->split_right,
              (char *)name.data, of, v);
+        break;
+    case CF__REL_OFFSET:
+        cf__dw_fmt_num(w->L, y->rel_param, false, v, sizeof v);
+        cf__dw_putf(w->out, w->L->offset, (char *)name.data, of, v);
         break;
     case CF__REL_ELEVATED:
         cf__dw_putf(w->out, w->L->elevated, (char *)name.data, of, x->degree,
@@ -418,6 +477,7 @@ put_relation(cf__dwriter_t *w, size_t j)
     }
     cf__dw_put(w->out, ".");
     cf__buf_free(&name);
+    return j;
 }
 
 static void
@@ -627,7 +687,7 @@ describe_one(cf_figure_t *fig, const cf__desc_lang_t *L, bool summary,
         for (size_t i = 0; i < w.d.ncurves; i++)
             put_constructions(&w, i);
         for (size_t i = 0; i < w.d.ncurves; i++)
-            put_relation(&w, i);
+            i = put_relation(&w, i);
         put_surfaces(&w);
         put_other_labels(&w);
     }

@@ -17,9 +17,10 @@ usage: test_access.py CURVEFIG SOURCE_DIR
   points parsed back out of it equal the points the scripts give (read
   from the scripts' own text), the de Casteljau point it names is the
   curve's point at t computed here in exact rational arithmetic, the
-  knots and weights are the scripts'; the subdivision and the knot
-  insertion of tests/access/a11y.lua are named; Czech with its decimal
-  comma for lang = "cs".
+  knots and weights are the scripts', an offset's distance is the one its
+  caption gives; the subdivision and the knot insertion of
+  tests/access/a11y.lua are named; Czech with its decimal comma for
+  lang = "cs".
 - Bad input: alt not a string, alt = "", a misspelt key, a bad language
   tag: each a clear error naming the key.
 - The gallery shows each figure's alt text and description.
@@ -160,6 +161,22 @@ def check_models(tool, src, out):
           'markova-2.17: its kind and degree')
     check(list_after(desc, 'knots ') == lua_numbers(text, 'U'),
           'markova-2.17: the knots are the script\'s')
+
+    # orazem-offset-1: a quartic and its offset (cubic pieces) at the d of
+    # the figure's caption
+    path = os.path.join(src, 'figures', 'orazem-offset-1.lua')
+    text = open(path, encoding='utf-8').read()
+    render(tool, path, out, 'svg')
+    _, alt, desc = svg_text(os.path.join(out, 'orazem-offset-1.svg'))
+    d = re.search(r'd = ([0-9.]+)', alt).group(1)
+    check(desc.startswith('A quartic Bézier curve and its offset at '
+                          'distance %s.' % d),
+          'orazem-offset-1: the offset at d = %s recognised: %s'
+          % (d, desc[:80]))
+    pts = named_points(desc)
+    for i, p in enumerate(lua_points(text, 'P')):
+        check(close(pts.get('P_%d' % i, []), p),
+              'orazem-offset-1: P_%d is the script\'s' % i)
 
     # lecture5-weight: rational cubics, weight w of p_2 in turn
     path = os.path.join(src, 'figures', 'lecture5-weight.lua')

@@ -55,27 +55,32 @@ fraction(double x, const int *qs, size_t nq, char *out, size_t cap)
 ** back as x, a fraction of small denominator, or 4 digits. */
 void
 cf__dw_fmt_num(const cf__desc_lang_t *L, double x, bool param, char *out,
-        size_t cap)
+               size_t cap)
 {
     static const int pq[] = { 2, 3, 4, 6, 8, 12, 16 };
     static const int cq[] = { 3, 6, 9, 12 };
-    static const char *digits[] = { "%.4g", "%.6g" };
+    char t[64];
     bool done = false;
     if (x == 0 || near(round(x), x)) {
-        snprintf(out, cap, "%.0f", x == 0 ? 0.0 : round(x));
-        return;
+        snprintf(t, sizeof t, "%.0f", x == 0 ? 0.0 : round(x));
+        done = true;
     }
-    if (param)
-        done = fraction(x, pq, sizeof pq / sizeof pq[0], out, cap);
-    for (size_t i = 0; !done && i < 2; i++) {
-        snprintf(out, cap, digits[i], x);
-        done = near(strtod(out, NULL), x);
+    if (!done && param)
+        done = fraction(x, pq, sizeof pq / sizeof pq[0], t, sizeof t);
+    if (!done) {
+        snprintf(t, sizeof t, "%.4g", x);
+        done = near(strtod(t, NULL), x);
     }
-    if (!done && !fraction(x, cq, sizeof cq / sizeof cq[0], out, cap))
-        snprintf(out, cap, "%.4g", x);
-    for (char *c = out; *c != '\0'; c++)
+    if (!done) {
+        snprintf(t, sizeof t, "%.6g", x);
+        done = near(strtod(t, NULL), x);
+    }
+    if (!done && !fraction(x, cq, sizeof cq / sizeof cq[0], t, sizeof t))
+        snprintf(t, sizeof t, "%.4g", x);
+    for (char *c = t; *c != '\0'; c++)
         if (*c == '.')
             *c = L->decimal;
+    snprintf(out, cap, "%s", t);
 }
 
 void

@@ -393,7 +393,10 @@ cf__describe_find(cf__describe_t *d)
 {
     for (size_t i = 0; i < d->ncurves; i++) {
         cf__curve_info_t *c = &d->curves[i];
-        if (c->dim > CF__DESCRIBE_MAX_DIM)
+        /* constructions are drawn on curves of few control points, and
+        ** looked for among a bounded number of points drawn */
+        if (c->dim > CF__DESCRIBE_MAX_DIM || c->npts > CF__DESCRIBE_MAX_PTS
+            || d->nmarks > CF__DESCRIBE_MAX_MARKS)
             continue;
         if (c->bez != NULL)
             find_decasteljau(d, c);

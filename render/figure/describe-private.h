@@ -14,6 +14,7 @@
 #define CF__DESCRIBE_MAX_PARAMS 8
 #define CF__DESCRIBE_MAX_PTS 64
 #define CF__DESCRIBE_MAX_DIM 4
+#define CF__DESCRIBE_MAX_MARKS 20000   /* points drawn and labels */
 
 /* How a curve was made from an earlier one (rel_of). */
 typedef enum cf__rel {
@@ -49,6 +50,7 @@ typedef struct cf__describe {
     cf_figure_t *fig;
     cf__curve_info_t *curves;
     size_t ncurves;
+    size_t nmarks;                 /* points drawn and labels */
     double eps;                    /* page-plane tolerance, data units */
     double tol;                    /* control point tolerance */
 } cf__describe_t;

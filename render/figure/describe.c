@@ -623,9 +623,11 @@ infos_init(cf__describe_t *d, cf_figure_t *fig)
     for (size_t i = 0; i < f->count; i++) {
         const cf__fact_t *x = &f->items[i];
         cf__curve_info_t *c = &d->curves[d->ncurves];
-        if (x->kind == CF__FACT_MARKS || x->kind == CF__FACT_LABEL)
+        if (x->kind == CF__FACT_MARKS || x->kind == CF__FACT_LABEL) {
+            d->nmarks += x->n;
             for (size_t k = 0; k < x->n; k++)
                 cf__bounds_add(&bb, x->xy[2 * k], x->xy[2 * k + 1]);
+        }
         if (x->kind != CF__FACT_BEZIER && x->kind != CF__FACT_BSPLINE)
             continue;
         c->bez = x->bez;

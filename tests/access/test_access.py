@@ -4,7 +4,8 @@ carries, checked in the bytes each format is read by.
 
 usage: test_access.py CURVEFIG SOURCE_DIR
 
-- SVG: role="img", aria-labelledby naming the <title> (the alt text),
+- SVG (a figure and the animated SVG of overlay steps): role="img",
+  aria-labelledby naming the <title> (the alt text),
   aria-describedby the <desc> (the long description), xml:lang.
 - PDF: the structure tree, followed from the catalog's /StructTreeRoot
   through /K, holds a Figure whose /Alt (UTF-16BE) is the alt text and the
@@ -177,6 +178,17 @@ def check_models(tool, src, out):
     for i, p in enumerate(lua_points(text, 'P')):
         check(close(pts.get('P_%d' % i, []), p),
               'orazem-offset-1: P_%d is the script\'s' % i)
+
+    # overlay-decasteljau: the animated SVG of overlay steps is labelled
+    # too, its construction at the t of its script
+    path = os.path.join(src, 'figures', 'overlay-decasteljau.lua')
+    text = open(path, encoding='utf-8').read()
+    render(tool, path, out, 'svg')
+    _, _, desc = svg_text(os.path.join(out, 'overlay-decasteljau.svg'))
+    t = re.search(r'local t = ([0-9/ .]+)\n', text).group(1).replace(' ', '')
+    check("with de Casteljau's construction at t = %s." % t in desc,
+          'overlay-decasteljau: the animated SVG\'s description, t = %s: %s'
+          % (t, desc[:90]))
 
     # lecture5-weight: rational cubics, weight w of p_2 in turn
     path = os.path.join(src, 'figures', 'lecture5-weight.lua')

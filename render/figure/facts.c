@@ -6,6 +6,15 @@
 
 #include "model.h"
 
+/* "out of memory" in the figure (not figure.c's helper: figure.c calls
+** this file, which calls no function of it). */
+static cf_status_t
+nomem(cf_figure_t *fig)
+{
+    return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                       "out of memory for the figure's description");
+}
+
 /* A new zeroed fact of kind k at the end of the figure's list, or NULL
 ** (the figure failed). */
 static cf__fact_t *
@@ -16,7 +25,7 @@ push(cf_figure_t *fig, cf__fact_kind_t k)
         size_t cap = f->cap ? 2 * f->cap : 8;
         cf__fact_t *p = cf_realloc_array(f->items, cap, sizeof *p);
         if (p == NULL) {
-            cf__fig_nomem(fig, "the figure's description");
+            nomem(fig);
             return NULL;
         }
         f->items = p;
@@ -41,7 +50,7 @@ static cf_status_t
 drop(cf_figure_t *fig)
 {
     fact_fini(&fig->facts.items[--fig->facts.count]);
-    return cf__fig_nomem(fig, "the figure's description");
+    return nomem(fig);
 }
 
 cf_status_t
@@ -73,10 +82,13 @@ with_points(cf_figure_t *fig, cf__fact_kind_t k, const double *v, size_t n,
     cf__fact_t *x = push(fig, k);
     if (x == NULL)
         return fig->err.status;
-    x->xy = cf__copy_doubles(v, n * stride);
     x->n = n;
-    if (x->xy == NULL && n > 0)
-        return drop(fig);
+    if (n > 0) {
+        x->xy = cf_alloc_array(n * stride, sizeof *x->xy);
+        if (x->xy == NULL)
+            return drop(fig);
+        memcpy(x->xy, v, n * stride * sizeof *x->xy);
+    }
     return CF_STATUS_OK;
 }
 

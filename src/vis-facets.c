@@ -7,9 +7,10 @@
 #include "vis-private.h"
 
 /* At most 2^MAX_LEVEL cells per direction of a patch, and MAX_FACETS
-** before the ordering (whose time can grow with their square). */
+** before the ordering: a facet is 264 bytes, held twice (before and
+** after ordering), so 10^6 facets are about half a gigabyte. */
 #define MAX_LEVEL 7
-#define MAX_FACETS 100000
+#define MAX_FACETS 1000000
 
 static size_t
 tidx(int n, int i, int j)
@@ -311,12 +312,14 @@ cf_scene_facets_tol(const cf_scene_t *sc, double tol, cf_facets_t **out,
         cf__free(fb.items);
         cf_facets_destroy(res);
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "tolerance %g makes %zu facets, more than %d: "
-                         "give a larger one", tol, n, MAX_FACETS);
+                         "tolerance %g makes %zu facets, more than %d "
+                         "(about %.0f MB): give a larger one", tol, n,
+                         MAX_FACETS, 2.0 * (double)n * sizeof *fb.items
+                                         / 1e6);
     }
     if (st == CF_STATUS_OK)
-        st = cf__bsp_order(&fb, &sc->view, 1e-9 * sc->size, &order, &norder,
-                           &splits);
+        st = cf__facet_order(&fb, &sc->view, sc->M, 1e-9 * sc->size, &order,
+                             &norder, &splits);
     if (st == CF_STATUS_OK && norder > 0) {
         res->items = cf__alloc_array(norder, sizeof *res->items);
         if (res->items == NULL)

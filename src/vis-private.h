@@ -160,6 +160,17 @@ cf_status_t cf__bsp_order(cf__facet_buf_t *fb, const cf_view_t *view,
                           double eps, size_t **order, size_t *norder,
                           size_t *splits);
 
+/* The painting order of the facets of fb below quadratic cost
+** (vis-order.c): only facets whose images overlap are compared (a grid of
+** their image boxes), by the depths of their planes over the overlap (M:
+** the view's matrix); facets that must be painted in a cycle (crossing
+** or cyclic overlaps) are ordered among themselves by cf__bsp_order,
+** their pieces appended to fb.  *order (cf__free) lists the facets to
+** draw, back first. */
+cf_status_t cf__facet_order(cf__facet_buf_t *fb, const cf_view_t *view,
+                            const double M[16], double eps, size_t **order,
+                            size_t *norder, size_t *splits);
+
 /* The view-space point q[3] of the exact contour of surface `surface`
 ** nearest its parameters uv[2] (Newton on the contour's equation; uv
 ** itself if that fails or goes far); false if uv is on no patch. */

@@ -14,6 +14,8 @@ local P = points{
               {2.25, 2} },
 }
 local u = slider{ name = "u", min = 0, max = 1, default = 0.5, step = 0.01 }
+-- as an animation (docs/animations.md): u from 0 to 1 in 4 s
+animate{ slider = "u", from = 0, to = 1, seconds = 4, fps = 25 }
 local U = { 0, 0, 0, 0, 0.25, 0.4, 0.7, 0.85, 1, 1, 1, 1 }
 local s = bspline{ degree = 3, knots = U, points = P }
 

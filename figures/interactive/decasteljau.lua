@@ -14,6 +14,9 @@ local P = points{
 }
 local t = slider{ name = "t", min = 0, max = 1, default = 0.75,
                   step = 0.01 }
+-- as an animation (`curvefig render ... -f gif`, docs/animations.md):
+-- t from 0 to 1 in 4 s
+animate{ slider = "t", from = 0, to = 1, seconds = 4, fps = 25 }
 local c = bezier(P)
 
 local f = figure{

@@ -16,6 +16,8 @@ local P = points{
 }
 local u = slider{ name = "u", min = 0.01, max = 0.99, default = 0.6,
                   step = 0.01 }
+-- as an animation (docs/animations.md): the new knot from 0.01 to 0.99
+animate{ slider = "u", from = 0.01, to = 0.99, seconds = 4, fps = 25 }
 local U = { 0, 0, 0, 0.17, 0.33, 0.5, 0.67, 0.83, 1, 1, 1 }
 local s = bspline{ degree = 2, knots = U, points = P }
 local n, info = s:insert_knot(u)

@@ -22,6 +22,9 @@ local P = points{
 }
 local d = slider{ name = "d", min = 0.05, max = 3, default = 1.5,
                   step = 0.05 }
+-- as an animation (docs/animations.md): the distance out and back
+animate{ slider = "d", from = 0.05, to = 3, seconds = 4, fps = 25,
+         ease = "in-out", bounce = true }
 local c = bezier(P)
 
 local f = figure{

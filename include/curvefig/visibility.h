@@ -341,10 +341,11 @@ CF_API cf_status_t cf_scene_silhouette_visibility(const cf_scene_t *scene,
 ** Triangles for shading, in painting order: a facet never hides a facet
 ** drawn before it.  Each patch is subdivided until its triangles deviate
 ** from the surface by at most tol (in space; cf_scene_facets_tol below);
-** they are ordered by a BSP tree built on them (planes of the facets,
-** facets split by the planes they cross, so cyclic overlaps and
-** interpenetrations are resolved), and traversed back to front from the
-** eye.  A facet split by the tree keeps
+** facets whose images overlap are ordered by the depths of their planes
+** over the overlap, and those that must be painted in a cycle (cyclic
+** overlaps, interpenetrations) by a BSP tree built on them (facets split
+** by the planes they cross), traversed back to front from the eye.  A
+** facet split by the tree keeps
 ** its surface, its (u, v) and interpolated normals.  Triangles of zero
 ** area (the pole of a sphere) are left out.
 */
@@ -386,11 +387,12 @@ CF_API cf_status_t cf_scene_facets(const cf_scene_t *scene,
 ** triangles of its corners (net against the bilinear map of the corners,
 ** plus a quarter of the twist), the same levels for every patch of one
 ** surface so that neighbours share their edges; at most 2^7 per
-** direction (then deviation says what was reached).  More than 100,000
-** facets before ordering is refused (INVALID_ARG, naming the count: a
-** larger tolerance is needed).  The ordering costs
-** up to quadratic time in the number of facets (a closed convex surface
-** makes the tree a chain): about 10^4 facets take a fraction of a second.
+** direction (then deviation says what was reached).  More than
+** 1,000,000 facets before ordering (about half a gigabyte) is refused
+** (INVALID_ARG, naming the count: a larger tolerance is needed).  Only
+** facets whose image boxes overlap are compared (a grid of the boxes), so
+** the ordering costs about linear time for facets of similar size: 2 x
+** 10^5 facets of a torus take about a second (bench/bench_facet_order.c).
 */
 CF_API cf_status_t cf_scene_facets_tol(const cf_scene_t *scene, double tol,
                                        cf_facets_t **out, cf_diag_t *diag);

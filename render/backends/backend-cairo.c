@@ -128,6 +128,34 @@ draw_path(void *ctx, const cf__path_t *path, const cf__paint_t *paint)
     cairo_stroke(cr);
 }
 
+/* A mesh as one mesh gradient (in PDF and PostScript a shading of type
+** 7, tensor-product patches, which cairo writes; raster surfaces
+** rasterise it): each triangle a patch of three straight sides, closed
+** by cairo with its fourth corner on the first, which makes the colour
+** linear on the triangle.  Later patches paint over earlier ones, as the
+** list orders them. */
+static void
+draw_mesh(void *ctx, const cf__mesh_tri_t *t, size_t n)
+{
+    cairo_t *cr = ctx;
+    cairo_pattern_t *m = cairo_pattern_create_mesh();
+    for (size_t i = 0; i < n; i++) {
+        cairo_mesh_pattern_begin_patch(m);
+        cairo_mesh_pattern_move_to(m, t[i].p[0], t[i].p[1]);
+        cairo_mesh_pattern_line_to(m, t[i].p[2], t[i].p[3]);
+        cairo_mesh_pattern_line_to(m, t[i].p[4], t[i].p[5]);
+        for (unsigned k = 0; k < 4; k++) {
+            const cf_color_t *c = &t[i].corner[k % 3];
+            cairo_mesh_pattern_set_corner_color_rgb(m, k, c->r, c->g, c->b);
+        }
+        cairo_mesh_pattern_end_patch(m);
+    }
+    cairo_save(cr);
+    cairo_set_source(cr, m);
+    cairo_paint(cr);
+    cairo_restore(cr);
+    cairo_pattern_destroy(m);
+}
 
 static void
 draw_text(void *ctx, const cf__text_op_t *t)
@@ -172,7 +200,7 @@ knockout(void *ctx, const double (*b)[4], size_t n)
 
 const cf__backend_t cf__cairo_backend = {
     "cairo", begin_page, begin_group, restore, clip, restore, draw_path,
-    NULL, draw_text, end_page, knockout
+    NULL, draw_text, end_page, knockout, draw_mesh
 };
 
 /* device units per bp when measuring ink */

@@ -200,5 +200,5 @@ knockout(void *ctx, const double (*b)[4], size_t n)
 
 const cf__backend_t cf__dump_backend = {
     "dump", begin_page, begin_group, end_group, clip, unclip, draw_path,
-    draw_marker, draw_text, end_page, knockout
+    draw_marker, draw_text, end_page, knockout, NULL
 };

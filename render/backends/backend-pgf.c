@@ -569,7 +569,7 @@ knockout(void *ctx, const double (*b)[4], size_t n)
 
 const cf__backend_t cf__pgf_backend = {
     "pgf", begin_page, begin_group, end_group, clip, unclip, draw_path,
-    NULL, draw_text, end_page, knockout
+    NULL, draw_text, end_page, knockout, NULL
 };
 
 void

@@ -645,5 +645,5 @@ knockout(void *ctx, const double (*b)[4], size_t n)
 
 const cf__backend_t cf__svgw_backend = {
     "svg", begin_page, begin_group, end_group, clip, unclip, draw_path,
-    NULL, draw_text, end_page, knockout
+    NULL, draw_text, end_page, knockout, NULL
 };

@@ -40,6 +40,7 @@ cf__text_backend(const char *name,
                  void (*draw_text)(void *ctx, const cf__text_op_t *t))
 {
     cf__backend_t be = { name, nop_page, nop_group, nop, nop_clip, nop,
-                         nop_path, nop_marker, draw_text, nop_end, NULL };
+                         nop_path, nop_marker, draw_text, nop_end, NULL,
+                         NULL };
     return be;
 }

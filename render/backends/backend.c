@@ -76,6 +76,31 @@ draw_marker(const cf__op_t *op, const cf__backend_t *be, void *ctx)
         be->draw_path(ctx, &sh.path, &paint);
 }
 
+/* A mesh: whole to a backend that draws mesh gradients, else each
+** triangle's flat pieces as paths. */
+static void
+draw_mesh(const cf__dl_t *dl, const cf__op_t *op, const cf__backend_t *be,
+          void *ctx)
+{
+    size_t n;
+    const cf__mesh_tri_t *t = cf__dl_op_mesh(dl, op, &n);
+    if (be->draw_mesh != NULL) {
+        be->draw_mesh(ctx, t, n);
+        return;
+    }
+    for (size_t i = 0; i < n; i++)
+        for (int k = 0; k < 4; k++) {
+            unsigned char segs[4];
+            double q[6], coords[6];
+            cf__path_t path;
+            cf__paint_t paint;
+            cf__mesh_piece(&t[i], k, q);
+            if (cf__flat_triangle(q, t[i].piece[k], 1.0, segs, coords, &path,
+                                  &paint))
+                be->draw_path(ctx, &path, &paint);
+        }
+}
+
 static void
 play_pass(const cf__dl_t *dl, size_t from, size_t to,
           const cf__backend_t *be, void *ctx, pass_t pass, play_t *pl)
@@ -109,6 +134,10 @@ play_pass(const cf__dl_t *dl, size_t from, size_t to,
         case CF__OP_MARKER:
             if (pass != PASS_KNOCKOUTS)
                 draw_marker(op, be, ctx);
+            break;
+        case CF__OP_MESH:
+            if (pass != PASS_KNOCKOUTS)
+                draw_mesh(dl, op, be, ctx);
             break;
         case CF__OP_TEXT:
             draw_text(pl, op, be, ctx, pass);

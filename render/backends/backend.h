@@ -16,7 +16,8 @@
 **   svg writer (render/backends/backend-svgw.c): every SVG (files, the
 **     live view, overlay animations, the course pages' module);
 **   measure (render/backends/measure.c): the layout's ink questions.
-** Drawing backends receive markers as paths (render/dlist/marker.c).
+** Drawing backends receive markers as paths (render/dlist/marker.c), and
+** meshes as flat pieces unless they draw mesh gradients (cairo).
 */
 #ifndef CURVEFIG_RENDER_BACKEND_H
 #define CURVEFIG_RENDER_BACKEND_H
@@ -63,6 +64,11 @@ typedef struct cf__backend {
     ** unclip: the knockouts of the labels with a halo on a transparent
     ** page (render/dlist/dlist.h).  NULL: the backend draws no knockouts. */
     void (*knockout)(void *ctx, const double (*boxes)[4], size_t n);
+    /* A mesh (render/dlist/dlist.h): n opaque triangles with a colour at
+    ** each corner, painted in order, as a mesh gradient.  NULL: the seam
+    ** hands the backend each triangle's four flat pieces instead, as
+    ** paths (render/dlist/mesh.c), the same for every such backend. */
+    void (*draw_mesh)(void *ctx, const cf__mesh_tri_t *tris, size_t n);
 } cf__backend_t;
 
 /* Hand ops [from, to) of dl to a backend (no begin_page / end_page). */

@@ -8,7 +8,7 @@
 ** the run's origin in page units.  A label's runs carry no attributes
 ** (no rise, no shapes), so nothing else moves a glyph.  The SVG writer
 ** draws each glyph's outline once and uses it at these origins.  Native
-** only: a run's shaping is pango's layout (render/labels/font-pango.c).
+** only: a run's shaping is pango's layout (render/backends/font-pango.c).
 */
 #include <pango/pangocairo.h>
 

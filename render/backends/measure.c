@@ -216,7 +216,7 @@ end_page(void *ctx)
 
 static const cf__backend_t measure_backend = {
     "measure", begin_page, begin_group, pop, clip, pop, draw_path,
-    NULL, draw_text, end_page, NULL
+    NULL, draw_text, end_page, NULL, NULL
 };
 
 static void

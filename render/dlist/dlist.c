@@ -37,13 +37,14 @@ cf__dl_free(cf__dl_t *dl)
     cf_free(dl->ops);
     cf_free(dl->segs);
     cf_free(dl->coords);
+    cf_free(dl->tris);
     cf__dl_init(dl);
 }
 
 void
 cf__dl_reset(cf__dl_t *dl)
 {
-    dl->count = dl->nsegs = dl->ncoords = 0;
+    dl->count = dl->nsegs = dl->ncoords = dl->ntris = 0;
     dl->path_seg0 = dl->path_coord0 = 0;
 }
 
@@ -208,6 +209,33 @@ cf__dl_text(cf__dl_t *dl, const cf__text_op_t *t)
         op->u.text = *t;
 }
 
+/* ---- meshes ------------------------------------------------------------- */
+
+void
+cf__dl_mesh_tri(cf__dl_t *dl, const cf__mesh_tri_t *t)
+{
+    cf__op_t *op = dl->count > 0 ? &dl->ops[dl->count - 1] : NULL;
+    if (!grow(dl, (void **)&dl->tris, &dl->tricap, dl->ntris + 1,
+              sizeof *dl->tris))
+        return;
+    if (op == NULL || op->kind != CF__OP_MESH
+        || op->u.mesh.tri0 + op->u.mesh.ntri != dl->ntris) {
+        op = push_op(dl, CF__OP_MESH);
+        if (op == NULL)
+            return;
+        op->u.mesh.tri0 = dl->ntris;
+    }
+    dl->tris[dl->ntris++] = *t;
+    op->u.mesh.ntri++;
+}
+
+const cf__mesh_tri_t *
+cf__dl_op_mesh(const cf__dl_t *dl, const cf__op_t *op, size_t *n)
+{
+    *n = op->u.mesh.ntri;
+    return dl->tris + op->u.mesh.tri0;
+}
+
 /* ---- from styles -------------------------------------------------------- */
 
 void
@@ -289,6 +317,20 @@ cf__dl_append_moved(cf__dl_t *dst, const cf__dl_t *src, double dx,
         cf__op_t *o;
         if (op->kind == CF__OP_PATH) {
             append_path(dst, src, op, dx, dy);
+            continue;
+        }
+        if (op->kind == CF__OP_MESH) {
+            size_t n;
+            const cf__mesh_tri_t *t = cf__dl_op_mesh(src, op, &n);
+            /* (after a mesh in dst it joins that one: the same paint) */
+            for (size_t k = 0; k < n; k++) {
+                cf__mesh_tri_t m = t[k];
+                for (int c = 0; c < 3; c++) {
+                    m.p[2 * c] += dx;
+                    m.p[2 * c + 1] += dy;
+                }
+                cf__dl_mesh_tri(dst, &m);
+            }
             continue;
         }
         o = push_op(dst, op->kind);

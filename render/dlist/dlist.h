@@ -15,6 +15,10 @@
 **   TEXT             a laid-out label (its pango runs) with its TeX-like
 **                    source, anchor, placement and origin, so that a
 **                    backend draws the glyphs or hands the source to TeX
+**   MESH             smooth shading: opaque triangles with a colour at
+**                    each corner, painted in order (a later one over an
+**                    earlier one), as a mesh gradient where the format
+**                    has them, else as flat pieces (render/dlist/mesh.c)
 */
 #ifndef CURVEFIG_RENDER_DLIST_H
 #define CURVEFIG_RENDER_DLIST_H
@@ -96,6 +100,18 @@ typedef struct cf__text_op {
     cf_color_t halo_color;
 } cf__text_op_t;
 
+/* A triangle of a mesh: its page corners, the colour at each (a mesh
+** gradient interpolates them linearly), and the flat colours of the four
+** pieces that stand for it where a format has no mesh gradients: the
+** triangle cut at its edges' midpoints, the pieces at corners 0, 1, 2,
+** then the middle one.  The maker chooses both (shading is not linear
+** in the colours). */
+typedef struct cf__mesh_tri {
+    double p[6];
+    cf_color_t corner[3];
+    cf_color_t piece[4];
+} cf__mesh_tri_t;
+
 typedef enum cf__op_kind {
     CF__OP_GROUP,
     CF__OP_END,
@@ -103,7 +119,8 @@ typedef enum cf__op_kind {
     CF__OP_UNCLIP,
     CF__OP_PATH,
     CF__OP_MARKER,
-    CF__OP_TEXT
+    CF__OP_TEXT,
+    CF__OP_MESH
 } cf__op_kind_t;
 
 typedef struct cf__op {
@@ -119,6 +136,7 @@ typedef struct cf__op {
         struct { size_t seg0, nsegs, coord0; cf__paint_t paint; } path;
         cf__marker_op_t marker;
         cf__text_op_t text;
+        struct { size_t tri0, ntri; } mesh;   /* dl->tris */
     } u;
 } cf__op_t;
 
@@ -129,6 +147,8 @@ typedef struct cf__dl {
     size_t nsegs, segcap;
     double *coords;
     size_t ncoords, coordcap;
+    cf__mesh_tri_t *tris;             /* of the MESH operations */
+    size_t ntris, tricap;
     size_t path_seg0, path_coord0;   /* the path being built */
     bool failed;                      /* an allocation failed */
 } cf__dl_t;
@@ -188,6 +208,30 @@ bool cf__marker_shape(const cf__marker_op_t *m, cf__marker_shape_t *out);
 bool cf__marker_paint(const cf__marker_op_t *m, cf__marker_shape_t *out,
                       cf__paint_t *paint);
 void cf__dl_text(cf__dl_t *dl, const cf__text_op_t *t);
+
+/* ---- meshes -------------------------------------------------------------- */
+
+/* Append a triangle to the MESH operation that ends the list, or start
+** one: consecutive triangles are one mesh, painted in order. */
+void cf__dl_mesh_tri(cf__dl_t *dl, const cf__mesh_tri_t *t);
+
+/* The triangles of a MESH operation. */
+const cf__mesh_tri_t *cf__dl_op_mesh(const cf__dl_t *dl, const cf__op_t *op,
+                                     size_t *n);
+
+/* (render/dlist/mesh.c) A flat triangle of page corners q[6] in colour c: its path (segs and
+** coords: room for 4 and 6) and paint: filled, and when opaque also
+** stroked with a hairline (0.25 bp) of its own colour, which closes the
+** seams anti-aliasing leaves between neighbours.  false: nothing to see
+** (an area below 1e-4 bp^2, where writers would drop the fill and keep
+** the stroke). */
+bool cf__flat_triangle(const double *q, cf_color_t c, double opacity,
+                       unsigned char *segs, double *coords, cf__path_t *path,
+                       cf__paint_t *paint);
+
+/* Piece k (0..3) of a mesh triangle as a flat triangle's corners q[6]
+** (the stand-in where a format has no mesh gradients). */
+void cf__mesh_piece(const cf__mesh_tri_t *t, int k, double *q);
 
 /* Append every operation of src to dst, moved by (dx, dy) on the page
 ** (a panel's display list into its cell). */

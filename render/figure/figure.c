@@ -50,8 +50,9 @@ cf__fig_check_style(cf_figure_t *fig, const cf_style_t *style)
 /* ---- figure ------------------------------------------------------------- */
 
 cf_status_t
-cf_figure_create(double width, double height, cf_unit_t unit,
-                 cf_figure_t **out, cf_diag_t *diag)
+cf__figure_create(const struct cf__fonts *fonts, double width,
+                  double height, cf_unit_t unit, cf_figure_t **out,
+                  cf_diag_t *diag)
 {
     cf_diag_clear(diag);
     cf_figure_t *fig;
@@ -78,6 +79,7 @@ cf_figure_create(double width, double height, cf_unit_t unit,
         return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
                            "out of memory for a figure");
     cf_diag_clear(&fig->err);
+    fig->fonts = fonts;
     fig->width = w;
     fig->height = h;
     cf_theme_get("default", &fig->theme, NULL);

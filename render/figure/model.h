@@ -163,6 +163,8 @@ typedef struct cf__legend_entry {
 
 struct cf_figure {
     cf_diag_t err;           /* the first error (sticky) */
+    const struct cf__fonts *fonts;  /* its labels' (render/labels/font.h),
+                                       given at its creation */
     double width, height;    /* bp */
     char *title, *caption;
     char *alt, *description, *lang;   /* accessible text (describe.c):
@@ -202,6 +204,13 @@ struct cf_figure {
     ** places the labels once per refit) */
     unsigned char *place_px;
     size_t place_px_size;
+    /* the places the frames of an animation pass on (render/output/
+    ** anim.c; owned by it): the automatic labels in turn keep hint[i]
+    ** while it stays about as clear as their best place, or take it
+    ** (force) */
+    const cf__auto_place_t *place_hint;
+    size_t nplace_hint;
+    bool place_hint_force;
     /* legend (render/layout/legend.c) */
     cf__legend_entry_t *legend;
     size_t nlegend;
@@ -236,6 +245,14 @@ struct cf_figure {
         if ((fig)->err.status != CF_STATUS_OK)                             \
             return (fig)->err.status;                                      \
     } while (0)
+
+/* cf_figure_create with the fonts its labels are set in (render/labels/
+** font.h, which the layers below the output take as an argument): the
+** public function is render/output/create.c's, which chooses them; a
+** figure's panels take their figure's. */
+cf_status_t cf__figure_create(const struct cf__fonts *fonts, double width,
+                              double height, cf_unit_t unit,
+                              cf_figure_t **out, cf_diag_t *diag);
 
 /* Record st in the figure (a generic message if the callee left none). */
 cf_status_t cf__fig_fail(cf_figure_t *fig, cf_status_t st, const char *what);

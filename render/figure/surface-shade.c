@@ -58,33 +58,20 @@ lit(const cf_color_t *c, double f)
     return o;
 }
 
-/* One triangle of page points q[6] in colour c. */
+/* One flat triangle of page points q[6] in colour c. */
 static void
 paint_triangle(cf__dl_t *dl, const double *q, cf_color_t c, double opacity)
 {
+    unsigned char segs[4];
+    double coords[6];
+    cf__path_t path;
     cf__paint_t paint;
-    double area = (q[2] - q[0]) * (q[5] - q[1]) - (q[4] - q[0]) * (q[3] - q[1]);
-    if (fabs(area) < 2e-4)
-        return;   /* below 1e-4 bp^2: nothing to see (and writers drop
-                     the fill of a degenerate path, keeping its stroke) */
-    memset(&paint, 0, sizeof paint);
-    paint.fill = true;
-    paint.fill_color = c;
-    paint.fill_opacity = opacity;
-    if (opacity >= 1.0) {
-        /* a hairline of the same colour closes the seams that
-        ** anti-aliasing leaves between neighbours */
-        paint.stroke = true;
-        paint.line.color = c;
-        paint.line.opacity = 1.0;
-        paint.line.width = 0.25;
-        paint.line.join = CF__JOIN_ROUND;
-        paint.line.cap = CF__CAP_ROUND;
-    }
+    if (!cf__flat_triangle(q, c, opacity, segs, coords, &path, &paint))
+        return;
     cf__dl_path_begin(dl);
-    cf__dl_move(dl, q[0], q[1]);
-    cf__dl_line(dl, q[2], q[3]);
-    cf__dl_line(dl, q[4], q[5]);
+    cf__dl_move(dl, coords[0], coords[1]);
+    cf__dl_line(dl, coords[2], coords[3]);
+    cf__dl_line(dl, coords[4], coords[5]);
     cf__dl_close(dl);
     cf__dl_path_paint(dl, &paint);
 }
@@ -100,47 +87,45 @@ shade_at(const cf_surface_shading_t *sh, bool front, const double *n,
                0.35 + 0.65 * fabs(m[0] * L[0] + m[1] * L[1] + m[2] * L[2]));
 }
 
-/* Smooth: the facet cut into four at its edges' midpoints, each piece in
-** the colour of the normal interpolated at its centroid, so the colour
-** follows the surface's normals within a facet as well. */
+/* Smooth: a triangle of a mesh gradient, the colour of the surface's
+** normal at each corner; where the format has no mesh gradients it is
+** cut into four at its edges' midpoints, each piece in the colour of the
+** normal interpolated at its centroid, so the colour follows the
+** surface's normals within a facet as well.  A translucent surface is
+** drawn as those pieces in every format: in a mesh gradient a later
+** patch paints over an earlier one instead of through it. */
 static void
 paint_smooth(cf__dl_t *dl, const cf__layout_t *l, const cf_facet_t *f,
              const cf_surface_shading_t *sh, const double L[3])
 {
-    /* barycentric centroids of the four pieces, in thirds... and sixths:
-    ** corner pieces (4, 1, 1)/6 and the middle one (1, 1, 1)/3 */
+    /* barycentric centroids of the four pieces: corner pieces
+    ** (4, 1, 1)/6 and the middle one (1, 1, 1)/3 */
     static const double w[4][3] = {
         { 4.0 / 6, 1.0 / 6, 1.0 / 6 }, { 1.0 / 6, 4.0 / 6, 1.0 / 6 },
         { 1.0 / 6, 1.0 / 6, 4.0 / 6 }, { 1.0 / 3, 1.0 / 3, 1.0 / 3 },
     };
-    double pg[6], mid[6], q[6];
-    for (int c = 0; c < 3; c++)
-        cf__map(l, f->image[2 * c], f->image[2 * c + 1], &pg[2 * c],
-                &pg[2 * c + 1]);
+    cf__mesh_tri_t t;
+    const cf_color_t *base = f->front ? &sh->front : &sh->back;
     for (int c = 0; c < 3; c++) {
-        int d = (c + 1) % 3;
-        mid[2 * c] = 0.5 * (pg[2 * c] + pg[2 * d]);
-        mid[2 * c + 1] = 0.5 * (pg[2 * c + 1] + pg[2 * d + 1]);
+        cf__map(l, f->image[2 * c], f->image[2 * c + 1], &t.p[2 * c],
+                &t.p[2 * c + 1]);
+        t.corner[c] = shade_at(sh, f->front, f->normal + 3 * c, L);
     }
     for (int k = 0; k < 4; k++) {
         double n[3];
         for (int j = 0; j < 3; j++)
             n[j] = w[k][0] * f->normal[j] + w[k][1] * f->normal[3 + j]
                 + w[k][2] * f->normal[6 + j];
-        if (k < 3) {
-            /* corner k, the midpoints of its two edges */
-            int prev = (k + 2) % 3;
-            q[0] = pg[2 * k];
-            q[1] = pg[2 * k + 1];
-            q[2] = mid[2 * k];
-            q[3] = mid[2 * k + 1];
-            q[4] = mid[2 * prev];
-            q[5] = mid[2 * prev + 1];
-            paint_triangle(dl, q, shade_at(sh, f->front, n, L), sh->opacity);
-        } else {
-            paint_triangle(dl, mid, shade_at(sh, f->front, n, L),
-                           sh->opacity);
-        }
+        t.piece[k] = shade_at(sh, f->front, n, L);
+    }
+    if (sh->opacity >= 1.0 && base->a >= 1.0) {
+        cf__dl_mesh_tri(dl, &t);
+        return;
+    }
+    for (int k = 0; k < 4; k++) {
+        double q[6];
+        cf__mesh_piece(&t, k, q);
+        paint_triangle(dl, q, t.piece[k], sh->opacity);
     }
 }
 

@@ -17,8 +17,8 @@ cf__text_set(cf_figure_t *fig, cf__text_t *t, const char *src, double size)
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
                            "out of memory for a label");
     memcpy(t->src, src, n + 1);
-    return cf_label_create(src, fig->theme.font_family, size, &t->lab,
-                           &fig->err);
+    return cf__label_create(fig->fonts, src, fig->theme.font_family, size,
+                            &t->lab, &fig->err);
 }
 
 cf_status_t
@@ -28,8 +28,8 @@ cf__text_ensure(cf_figure_t *fig, cf__text_t *t, double size)
     cf_status_t st;
     if (cf__label_matches(t->lab, fig->theme.font_family, size))
         return CF_STATUS_OK;
-    st = cf_label_create(t->src, fig->theme.font_family, size, &lab,
-                         &fig->err);
+    st = cf__label_create(fig->fonts, t->src, fig->theme.font_family, size,
+                          &lab, &fig->err);
     if (st != CF_STATUS_OK)
         return st;
     cf_label_destroy(t->lab);

@@ -1,8 +1,10 @@
 /*
 ** The fonts labels are set in: a run of text in one font shaped into
 ** glyphs and measured, and the outlines of those glyphs.  The labels know
-** nothing else of fonts.  Two implementations:
-**   pango (render/labels/font-pango.c): the native renderer's, with
+** nothing else of fonts: they are given a table of these functions (a
+** figure's, render/figure/model.h, from its creation), chosen at the top
+** by render/output/create.c.  Two implementations:
+**   pango (render/backends/font-pango.c): the native renderer's, with
 **     cairo's font backend for unhinted metrics and for the outlines;
 **   the glyph table (render/labels/font-table.c): plain C over the glyph
 **     data a course page embeds (render/output/label-glyphs.c writes it
@@ -55,9 +57,5 @@ typedef struct cf__fonts {
                     cf__pathb_t *out);
     void *self;
 } cf__fonts_t;
-
-/* The fonts labels are set in: pango natively (font-pango.c), the page's
-** glyph table in the browser module (render/web/engine.c). */
-const cf__fonts_t *cf__fonts_default(void);
 
 #endif

@@ -1,6 +1,7 @@
 /*
 ** Internals of labels (render/labels/label.c) for the layout; drawing them
-** with cairo is render/backends/label-cairo.h.
+** with cairo is render/backends/label-cairo.h.  Labels know fonts only
+** through render/labels/font.h.
 */
 #ifndef CURVEFIG_RENDER_LABEL_PRIVATE_H
 #define CURVEFIG_RENDER_LABEL_PRIVATE_H
@@ -14,6 +15,13 @@
 #define CF__DEFAULT_FAMILY "Latin Modern Roman,CMU Serif,Noto Serif CJK SC"
 #define CF__SANS_FAMILY "Latin Modern Sans,CMU Sans Serif,Noto Sans CJK SC"
 
+/* cf_label_create in the fonts fonts (render/labels/font.h): the layers
+** above pass the fonts down (a figure's, cf__figure_create's); the public
+** function is render/output/create.c's, which chooses them. */
+struct cf__fonts;
+cf_status_t cf__label_create(const struct cf__fonts *fonts, const char *text,
+                             const char *family, double size_bp,
+                             cf_label_t **out, cf_diag_t *diag);
 /* Ink box of the label relative to its origin (bp, y DOWN like cairo):
 ** x0 y0 x1 y1. */
 void cf__label_ink(const cf_label_t *label, double box[4]);

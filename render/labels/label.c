@@ -1,6 +1,7 @@
 /*
 ** Labels: a small TeX-like syntax laid out from font metrics (include/
-** curvefig/label.h) in the fonts of render/labels/font.h: creation, the
+** curvefig/label.h) in the fonts of render/labels/font.h, which the
+** caller gives (render/output/create.c chooses them): creation, the
 ** public view of the runs, the ink box and the outline.
 */
 #include <math.h>
@@ -66,8 +67,9 @@ cf__label_outline(const cf_label_t *label, cf__path_t *out)
 }
 
 cf_status_t
-cf_label_create(const char *text, const char *family, double size_bp,
-                cf_label_t **out, cf_diag_t *diag)
+cf__label_create(const cf__fonts_t *fonts, const char *text,
+                 const char *family, double size_bp, cf_label_t **out,
+                 cf_diag_t *diag)
 {
     cf_diag_clear(diag);
     cf_label_t *lab;
@@ -78,6 +80,9 @@ cf_label_create(const char *text, const char *family, double size_bp,
     if (text == NULL || out == NULL)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
                            "label text or output is NULL");
+    if (fonts == NULL)
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "label: no fonts to set it in");
     if (!(isfinite(size_bp) && size_bp > 0 && size_bp <= 1000))
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
                            "label \"%s\": font size %g must lie in (0, 1000] "
@@ -102,7 +107,7 @@ cf_label_create(const char *text, const char *family, double size_bp,
                            "out of memory for a label");
     len = strlen(family);
     lab->family = cf_malloc(len + 1);
-    lab->fonts = cf__fonts_default();
+    lab->fonts = fonts;
     lab->fonts_ctx = lab->fonts->open(lab->fonts->self);
     if (lab->family == NULL || lab->fonts_ctx == NULL) {
         cf_label_destroy(lab);

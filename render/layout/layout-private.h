@@ -111,6 +111,11 @@ void cf__room_box_at(const double a[4], double w, double h,
 ** layout drawn. */
 cf_status_t cf__place_labels(cf_figure_t *fig, const cf__layout_t *lay,
                              bool draft);
+/* The places chosen for the automatic labels, in order, into out[0 ..
+** cap-1]; returns how many there are (the frames of an animation pass
+** them on as fig->place_hint). */
+size_t cf__place_chosen(cf_figure_t *fig, cf__auto_place_t *out,
+                        size_t cap);
 /* Forget the places chosen: the figure is laid out afresh. */
 void cf__place_forget(cf_figure_t *fig);
 

@@ -397,7 +397,7 @@ static bool
 draws(const cf__op_t *op)
 {
     return op->kind == CF__OP_PATH || op->kind == CF__OP_MARKER
-        || op->kind == CF__OP_TEXT;
+        || op->kind == CF__OP_TEXT || op->kind == CF__OP_MESH;
 }
 
 /* The element (GROUP ... END at ops [g, e)) whose ink sticks out

@@ -79,8 +79,8 @@ cf_figure_add_panels(cf_figure_t *fig, int rows, int cols, double gap_bp,
         double cell[4];
         cf_figure_t *p;
         whole_cell(fig, k, cell);
-        if (cf_figure_create(cell[2], cell[3], CF_UNIT_BP, &fig->panels[k],
-                             &fig->err) != CF_STATUS_OK)
+        if (cf__figure_create(fig->fonts, cell[2], cell[3], CF_UNIT_BP,
+                              &fig->panels[k], &fig->err) != CF_STATUS_OK)
             return fig->err.status;
         p = fig->panels[k];
         p->parent = fig;

@@ -34,6 +34,9 @@
                                  point than the label's own */
 #define AUTO_CLEARER 0.75     /* bp a label keeps nearer its own point */
 #define HIT_ALPHA 127         /* a pixel inked more than half */
+#define AUTO_KEEP 1.0         /* bp^2: a label of an animation keeps its
+                                 place of the frame before unless the best
+                                 is clearer by more than this */
 
 /* The distances tried, in bp beyond the style's offset. */
 static const double further[] = { 0.0, 1.0, 2.0, 3.0, 4.0 };
@@ -181,7 +184,8 @@ ambiguous(const anchors_t *an, const double b[4], double px, double py)
 ** unless every place is. */
 static void
 cheapest(const raster_t *r, const anchors_t *an, const cf_label_t *lab,
-         const cf_style_t *s, double px, double py, cf__auto_place_t *chosen)
+         const cf_style_t *s, double px, double py,
+         const cf__auto_place_t *hint, bool force, cf__auto_place_t *chosen)
 {
     double ink[4], best = INFINITY;
     size_t k, d;
@@ -206,6 +210,20 @@ cheapest(const raster_t *r, const anchors_t *an, const cf_label_t *lab,
                 chosen->offset = off;
             }
         }
+    if (hint != NULL) {
+        double ox, oy, b[4], c;
+        cf__label_origin(lab, hint->place, hint->offset, px, py, &ox, &oy);
+        b[0] = ox + ink[0];
+        b[1] = oy + ink[1];
+        b[2] = ox + ink[2];
+        b[3] = oy + ink[3];
+        c = place_cost(r, ink, ox, oy)
+            + AUTO_FAR * fmax(0, hint->offset - s->offset);
+        if (ambiguous(an, b, px, py))
+            c += AUTO_AMBIGUOUS;
+        if (force || c <= best + AUTO_KEEP)
+            *chosen = *hint;
+    }
 }
 
 /* Pixels inked more than half both in one and in img, within the pixel
@@ -467,7 +485,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
     cf__text_t *t;
     cf__auto_place_t *chosen;
     double x, y;
-    size_t i, n;
+    size_t i, j, n;
     int box[4];
     cf_status_t st;
 
@@ -485,6 +503,21 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
         n += is_label(fig, i, &x, &y, &t, &chosen, &s);
     if (n == 0)
         return CF_STATUS_OK;
+    /* an animation's frame drawn with the places it was measured with
+    ** (render/output/anim.c): taken as they are, nothing to search */
+    for (i = 0, j = 0; fig->place_hint_force && i < fig->count; i++)
+        j += is_label(fig, i, &x, &y, &t, &chosen, &s)
+             && s.place == CF_PLACE_AUTO;
+    if (fig->place_hint_force && j == fig->nplace_hint) {
+        for (i = 0, j = 0; i < fig->count; i++)
+            if (is_label(fig, i, &x, &y, &t, &chosen, &s)
+                && s.place == CF_PLACE_AUTO)
+                *chosen = fig->place_hint[j++];
+        fig->placed = true;
+        fig->placed_draft = draft;
+        fig->placed_for = moved;
+        return CF_STATUS_OK;
+    }
     if (n > CF_FIGURE_MAX_LABELS)
         return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
                            "the figure has %zu labels, more than the %d "
@@ -535,16 +568,19 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
             cf__map(lay, x, y, &an.xy[2 * an.n], &an.xy[2 * an.n + 1]);
             an.n++;
         }
-    for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
+    for (i = 0, j = 0; i < fig->count && st == CF_STATUS_OK; i++) {
         double px, py;
         if (!is_label(fig, i, &x, &y, &t, &chosen, &s)
             || s.place != CF_PLACE_AUTO)
             continue;
+        j++;
         st = cf__text_ensure(fig, t, s.font_size);
         if (st != CF_STATUS_OK || t->lab == NULL)
             continue;
         cf__map(lay, x, y, &px, &py);
-        cheapest(&r, &an, t->lab, &s, px, py, chosen);
+        cheapest(&r, &an, t->lab, &s, px, py,
+                 j <= fig->nplace_hint ? &fig->place_hint[j - 1] : NULL,
+                 fig->place_hint_force, chosen);
         st = check_label(fig, lay, &r, i, t, chosen->place, true);
     }
     cf_free(an.xy);
@@ -555,6 +591,25 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
         fig->placed_for = moved;
     }
     return st;
+}
+
+size_t
+cf__place_chosen(cf_figure_t *fig, cf__auto_place_t *out, size_t cap)
+{
+    cf__auto_place_t *chosen;
+    cf__text_t *t;
+    cf_style_t s;
+    double x, y;
+    size_t n = 0;
+    for (size_t i = 0; i < fig->count; i++) {
+        if (!is_label(fig, i, &x, &y, &t, &chosen, &s)
+            || s.place != CF_PLACE_AUTO)
+            continue;
+        if (n < cap)
+            out[n] = *chosen;
+        n++;
+    }
+    return n;
 }
 
 const char *

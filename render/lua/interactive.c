@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "curvefig/figure.h"
+#include "curvefig/figure3d.h"
 #include "interactive.h"
 #include "lcommon.h"
 #include "params.h"
@@ -266,6 +267,23 @@ put_handles(text_t *t, const cf__params_t *p, const char *figure,
     put(t, "]");
 }
 
+/* [azimuth, elevation] of a 3D figure's view (as the run used it: the
+** page's when it rotated the figure), null for a 2D figure. */
+static void
+put_view(text_t *t, const cf_figure_t *fig)
+{
+    cf_view_t v;
+    if (!cf_figure_get_view(fig, &v)) {
+        put(t, "null");
+        return;
+    }
+    put(t, "[");
+    put_num(t, v.azimuth);
+    put(t, ", ");
+    put_num(t, v.elevation);
+    put(t, "]");
+}
+
 /* The line of "name:LINE: ..." (0 when the message has none). */
 static int
 error_line(const char *msg, const char *name)
@@ -332,6 +350,8 @@ put_figure(text_t *t, const cf_script_t *s, size_t i, char *err,
     put_num(t, w);
     put(t, ", \"height\": ");
     put_num(t, h);
+    put(t, ", \"view\": ");
+    put_view(t, fig);
     put(t, ",\n  \"to_svg\": [");
     for (int k = 0; k < 6; k++) {
         put(t, k ? ", " : "");

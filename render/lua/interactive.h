@@ -13,6 +13,8 @@
 **                                 | { "line": [[x0, y0], [x1, y1]] } } ],
 **     "figures": [ { "name": "...", "caption": "...",
 **                    "width": W, "height": H,         (bp)
+**                    "view": null | [azimuth, elevation], (a 3D figure's,
+**                                          degrees: params.h, "@view:")
 **                    "svg": "<svg ...>...</svg>",
 **                    "to_svg": [a, b, c, d, e, f],    (data -> SVG units)
 **                    "handles": [ { "param": "P", "index": 0, "x": ..,
@@ -23,6 +25,8 @@
 **     "error":   null | { "message": "...", "line": N },
 **     "lua":     "values = { t = 0.75, P = { {0, 0}, ... } }" }
 **
+** The values may hold "@view:FIGURE": [[azimuth, elevation]], the view a
+** page rotated a 3D figure to, which replaces the script's (params.h).
 ** handles are the points of every points{} list dragged in that figure;
 ** sx, sy their place in the figure's SVG; labels the places the layout
 ** chose (cf_figure_render_places).  On a script error the figures

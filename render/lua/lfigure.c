@@ -81,7 +81,8 @@ check_name(lua_State *L, const char *name)
     lua_pop(L, 2);
 }
 
-/* projection = {{row 1}, {row 2}} (a matrix), or the view (lview.c). */
+/* projection = {{row 1}, {row 2}} (a matrix), or the view (lview.c) of
+** the figure whose name is at 2. */
 static void
 read_projection(lua_State *L, cf_figure_t *fig)
 {
@@ -108,7 +109,7 @@ read_projection(lua_State *L, cf_figure_t *fig)
                        (int)rows);
         check(L, "figure", cf_figure_set_projection(fig, dim, m), &diag);
     } else {
-        cf__lua_read_view(L, fig, 1);
+        cf__lua_read_view(L, fig, lua_tostring(L, 2), 1);
     }
     lua_settop(L, top);
 }

@@ -26,13 +26,20 @@ cf__lua_set_params(lua_State *L, cf__params_t *params)
     lua_setfield(L, LUA_REGISTRYINDEX, REGISTRY_KEY);
 }
 
-static cf__params_t *
-store(lua_State *L)
+cf__params_t *
+cf__lua_params(lua_State *L)
 {
     cf__params_t *p;
     lua_getfield(L, LUA_REGISTRYINDEX, REGISTRY_KEY);
     p = lua_touserdata(L, -1);
     lua_pop(L, 1);
+    return p;
+}
+
+static cf__params_t *
+store(lua_State *L)
+{
+    cf__params_t *p = cf__lua_params(L);
     if (p == NULL)
         cf__lua_error(L, "parameters are not available in this state");
     return p;

@@ -13,6 +13,8 @@
 /* The store the state's slider{} and points{} declare in (owned by the
 ** caller, alive while the state runs). */
 void cf__lua_set_params(lua_State *L, cf__params_t *params);
+/* The state's store (NULL when it has none). */
+cf__params_t *cf__lua_params(lua_State *L);
 /* Set the globals slider and points. */
 void cf__lua_open_params(lua_State *L);
 

@@ -3,7 +3,10 @@
 ** figure3d.h): figure{ view = {azimuth, elevation}, projection =
 ** "orthographic" | "perspective", distance = D, target = {x, y, z} } and
 ** f:view(azimuth, elevation, {projection = ..., distance = ...,
-** target = ...}) for a figure made without one.
+** target = ...}) for a figure made without one.  A page that rotates the
+** figure (curvefig live, -f html) gives the angles to use in the script's
+** place (params.h, cf__params_view): the script runs with them, so that
+** everything it draws and projects follows the rotated view.
 */
 #include <math.h>
 #include <string.h>
@@ -11,14 +14,15 @@
 #include "curvefig/figure3d.h"
 #include "lcommon.h"
 #include "lfigure.h"
+#include "lparams.h"
 #include "lstyle.h"
 #include "lview.h"
 
-/* The view of options table opts (angles at idx, or given); fn names the
-** function in messages. */
+/* The view of options table opts (angles az_el, unless the page gave the
+** figure named name others); fn names the function in messages. */
 static void
-make_view(lua_State *L, cf_figure_t *fig, int opts, const double az_el[2],
-          const char *fn)
+make_view(lua_State *L, cf_figure_t *fig, const char *name, int opts,
+          double az_el[2], const char *fn)
 {
     cf_view_t view;
     cf_diag_t diag;
@@ -52,6 +56,7 @@ make_view(lua_State *L, cf_figure_t *fig, int opts, const double az_el[2],
             cf__lua_error(L, "%s: target is a point {x, y, z}, got %zu "
                           "numbers", fn, n);
     }
+    cf__params_view(cf__lua_params(L), name, az_el);
     cf_diag_clear(&diag);
     if (proj[0] == 'o')
         st = cf_view_orthographic(&view, az_el[0], az_el[1], &diag);
@@ -85,7 +90,7 @@ check_angles(lua_State *L, int idx, const char *fn, double az_el[2])
 }
 
 void
-cf__lua_read_view(lua_State *L, cf_figure_t *fig, int opts)
+cf__lua_read_view(lua_State *L, cf_figure_t *fig, const char *name, int opts)
 {
     int top = lua_gettop(L);
     double az_el[2];
@@ -102,7 +107,7 @@ cf__lua_read_view(lua_State *L, cf_figure_t *fig, int opts)
         return;
     }
     check_angles(L, top + 1, "figure", az_el);
-    make_view(L, fig, opts, az_el, "figure");
+    make_view(L, fig, name, opts, az_el, "figure");
     lua_settop(L, top);
 }
 
@@ -117,7 +122,9 @@ m_view(lua_State *L)
     az_el[1] = cf__lua_check_finite(L, 3, "view", "elevation");
     if (!lua_isnil(L, 4))
         luaL_checktype(L, 4, LUA_TTABLE);
-    make_view(L, fig, lua_isnil(L, 4) ? 0 : 4, az_el, "view");
+    lua_getiuservalue(L, 1, 1);     /* the figure's name (5) */
+    make_view(L, fig, lua_tostring(L, 5), lua_isnil(L, 4) ? 0 : 4, az_el,
+              "view");
     lua_settop(L, 1);
     return 1;
 }

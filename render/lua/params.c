@@ -20,6 +20,7 @@ struct cf__params {
     size_t count;
     given_t given[CF__PARAMS_MAX];
     size_t ngiven;
+    bool exact;             /* sliders not snapped (cf__params_set_exact) */
 };
 
 cf__params_t *
@@ -50,6 +51,12 @@ cf__params_destroy(cf__params_t *p)
 }
 
 /* ---- the host ----------------------------------------------------------- */
+
+void
+cf__params_set_exact(cf__params_t *p, bool exact)
+{
+    p->exact = exact;
+}
 
 static const given_t *
 find_given(const cf__params_t *p, const char *name)
@@ -260,6 +267,10 @@ check_name(const cf__params_t *p, const char *kind, const char *name,
 {
     if (name[0] == '\0')
         return snprintf(err, errlen, "%s: name must not be empty", kind), -1;
+    if (name[0] == '@')
+        return snprintf(err, errlen, "%s '%s': names starting with '@' are "
+                        "reserved for the page (the view of a rotated 3D "
+                        "figure)", kind, name), -1;
     for (size_t i = 0; i < p->count; i++)
         if (strcmp(p->items[i].name, name) == 0)
             return snprintf(err, errlen, "%s '%s': a parameter of this name "
@@ -341,7 +352,9 @@ cf__params_slider(cf__params_t *p, const cf__param_t *decl, double *value,
     d->def_xy = d->xy = NULL;
     d->count = 0;
     g = find_given(p, nm);
-    d->value = g != NULL && g->n == 1 ? snap(d, g->v[0]) : d->def;
+    d->value = g == NULL || g->n != 1 ? d->def
+             : p->exact ? fmin(fmax(g->v[0], d->min), d->max)
+             : snap(d, g->v[0]);
     *value = d->value;
     return 0;
 }
@@ -444,4 +457,21 @@ const cf__param_t *
 cf__params_at(const cf__params_t *p, size_t i)
 {
     return p != NULL && i < p->count ? &p->items[i] : NULL;
+}
+
+bool
+cf__params_view(const cf__params_t *p, const char *figure, double az_el[2])
+{
+    char name[CF__PARAMS_NAME];
+    const given_t *g;
+    int n;
+    if (p == NULL || figure == NULL)
+        return false;
+    n = snprintf(name, sizeof name, "%s%s", CF__PARAMS_VIEW_PREFIX, figure);
+    if (n < 0 || (size_t)n >= sizeof name ||
+        (g = find_given(p, name)) == NULL || g->n != 2)
+        return false;
+    az_el[0] = g->v[0];
+    az_el[1] = fmin(90.0, fmax(-90.0, g->v[1]));
+    return true;
 }

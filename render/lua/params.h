@@ -64,6 +64,10 @@ void cf__params_destroy(cf__params_t *p);
 ** table of given values (CF__PARAMS_MAX) runs out. */
 int cf__params_give(cf__params_t *p, const char *name, const double *v,
                     size_t n);
+/* exact: the sliders take the host's values clamped to [min, max] but
+** not snapped to their step (the frames of an animation, render/lua/
+** anim-spec.h, move smoothly); false at first. */
+void cf__params_set_exact(cf__params_t *p, bool exact);
 /* The same from JSON text: an object whose members are numbers or arrays
 ** of [x, y] pairs, { "t": 0.5, "P": [[0, 0], [1, 2]] }.  0, or -1 with a
 ** message in err (malformed JSON, a value of another shape, a name too
@@ -98,5 +102,17 @@ const cf__param_t *cf__params_at(const cf__params_t *p, size_t i);
 
 /* Move the point (x, y) onto the constraint of param (grid or line). */
 void cf__params_constrain(const cf__param_t *param, double *x, double *y);
+
+/* ---- the view of a 3D figure -------------------------------------------- */
+
+/* A page rotating a 3D figure gives its view as the reserved value
+** "@view:FIGURE" = [[azimuth, elevation]] (degrees; names of parameters
+** cannot start with '@').  When the host gave one for figure figure,
+** az_el[0..1] (the script's view) is replaced by it, the elevation
+** clamped to [-90, 90], and true is returned; else false and az_el is
+** left as it is, which is all a static render ever sees. */
+#define CF__PARAMS_VIEW_PREFIX "@view:"
+bool cf__params_view(const cf__params_t *p, const char *figure,
+                     double az_el[2]);
 
 #endif

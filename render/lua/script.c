@@ -13,6 +13,7 @@
 #include "lcommon.h"
 #include "lsurface.h"
 #include "lfigure.h"
+#include "lanimate.h"
 #include "lparams.h"
 #include "ltheme.h"
 #include "lschema.h"
@@ -47,6 +48,8 @@ struct cf_script {
     cf_allocator_t alloc;   /* the budget, current while the script runs */
     char *error;
     cf__params_t *params;   /* the sliders and points it declares */
+    cf__anim_spec_t anim;   /* its animate{} (render/lua/lanimate.c) */
+    bool animated;          /* animate{} was called */
 };
 
 static cf_status_t
@@ -345,6 +348,7 @@ cf__lua_open_language(lua_State *L)
     cf__lua_open_surface_triangle(L);
     cf__lua_open_figure(L);
     cf__lua_open_params(L);
+    cf__lua_open_animate(L);
     cf__lua_open_theme(L);
 }
 
@@ -473,6 +477,7 @@ cf_script_create(const cf_script_limits_t *limits, FILE *out,
     }
     lua_sethook(s->L, count_hook, LUA_MASKCOUNT, HOOK_EVERY);
     cf__lua_set_params(s->L, s->params);
+    cf__lua_set_animation(s->L, &s->anim, &s->animated);
     *script = s;
     return CF_STATUS_OK;
 }
@@ -763,6 +768,12 @@ const char *
 cf_script_figure_where(const cf_script_t *s, size_t i)
 {
     return s != NULL ? cf__lua_figure_string(s->L, i, 3) : "";
+}
+
+const cf__anim_spec_t *
+cf_script_animation(const cf_script_t *s)
+{
+    return s != NULL && s->animated ? &s->anim : NULL;
 }
 
 cf__params_t *

@@ -111,6 +111,10 @@ const char *cf_script_figure_where(const cf_script_t *script, size_t i);
 /* The sliders and draggable points of the script (render/lua/params.h):
 ** give values before cf_script_run_*, read the declarations after. */
 struct cf__params;
+struct cf__anim_spec;
+/* The script's animate{} (render/lua/anim-spec.h), NULL when it made
+** none. */
+const struct cf__anim_spec *cf_script_animation(const cf_script_t *script);
 struct cf__params *cf_script_params(const cf_script_t *script);
 
 #ifdef __cplusplus

@@ -201,10 +201,8 @@ cf__eps_from_ps(const cf__buf_t *ps, cf__buf_t *eps)
     return 0;
 }
 
-/* PDF dates: from SOURCE_DATE_EPOCH (ISO 8601, UTC), else 2000-01-01 so
-** that the clock never enters the file. */
-static void
-pdf_date(char *buf, size_t cap)
+void
+cf__pdf_date(char *buf, size_t cap)
 {
     const char *e = getenv("SOURCE_DATE_EPOCH");
     long long t = 946684800;   /* 2000-01-01T00:00:00Z */
@@ -331,7 +329,7 @@ make_surface(cf_format_t format, const cf__page_t *pg, double dpi,
         char date[40];
         surf = cairo_pdf_surface_create_for_stream(stream_write, raw,
                                                    pg->width, pg->height);
-        pdf_date(date, sizeof date);
+        cf__pdf_date(date, sizeof date);
         cairo_pdf_surface_set_metadata(surf, CAIRO_PDF_METADATA_CREATE_DATE,
                                        date);
         cairo_pdf_surface_set_metadata(surf, CAIRO_PDF_METADATA_MOD_DATE,

@@ -25,6 +25,21 @@ cf_status_t cf__svg_steps(const cf__dl_t *dl, const cf__page_t *page,
                           const char *caption, cf__buf_t *out,
                           cf_diag_t *diag);
 
+/* PDF dates: from SOURCE_DATE_EPOCH (ISO 8601, UTC), else 2000-01-01 so
+** that the clock never enters the file (formats.c). */
+void cf__pdf_date(char *buf, size_t cap);
+/* The helpers of the animated SVGs (svg-steps.c, svg-anim.c): s with
+** < > & " escaped; the part [p, end) of a document with every id and
+** reference to one prefixed (but those of glyph outlines gN when
+** glyphs_shared: one <defs> serves every frame); the opening <svg ...>
+** tag of doc [tag0, tag1) and the end of its body (the closing </svg>).
+** 0, or -1 (out of memory; no <svg> element). */
+int cf__svg_put_escaped(cf__buf_t *b, const char *s);
+int cf__svg_put_prefixed(cf__buf_t *b, const unsigned char *p,
+                         const unsigned char *end, const char *prefix,
+                         bool glyphs_shared);
+int cf__svg_split(const cf__buf_t *doc, const unsigned char **tag0,
+                  const unsigned char **tag1, const unsigned char **body1);
 /* The figure laid out at its size and drawn through backend be on ctx
 ** (set up by the caller), one page: overlay step `step` (1..steps), or
 ** every operation (0): the SVG writer's way in
@@ -53,6 +68,36 @@ typedef struct cf__svg_glyphs {
 
 void cf__svg_glyphs_attach(cf__svg_glyphs_t *sg, cf__svgw_t *w);
 void cf__svg_glyphs_fini(cf__svg_glyphs_t *sg);
+/* The animated SVG of any frames (svg-anim.c): each frame a display
+** list's page (one size for all), drawn by the SVG writer with one glyph
+** table, its outlines once in the document's <defs>; each frame a group
+** shown for its seconds in turn by SMIL, looping.  Zero at first; add
+** the frames in order, then finish (frame `still` visible where SMIL does
+** not play) or free. */
+typedef struct cf__svg_anim {
+    cf__svg_glyphs_t sg;
+    cf__buf_t head, defs, body;
+    unsigned char *have;          /* have[id]: outline id in defs */
+    size_t nhave;
+    double *start;                /* each frame's start, s */
+    size_t n, cap;
+    double total;
+} cf__svg_anim_t;
+cf_status_t cf__svg_anim_add(cf__svg_anim_t *a, const cf__dl_t *dl,
+                             const cf__page_t *page, unsigned step,
+                             double seconds, cf_diag_t *diag);
+cf_status_t cf__svg_anim_finish(cf__svg_anim_t *a, size_t still,
+                                const char *title, const char *caption,
+                                cf__buf_t *out, cf_diag_t *diag);
+void cf__svg_anim_free(cf__svg_anim_t *a);
+
+/* A new file of a random name in the directory of path, for a file made
+** there and renamed over path (cf_write_file's way, also the videos'):
+** "DIR/.cf-tmp-XXXXXXXXXXXX" opened write-only with O_CREAT | O_EXCL |
+** O_NOFOLLOW | O_CLOEXEC, mode 0666 less the umask.  *fd and *tmp (freed
+** with cf_free) on success; -1 and NULL on error. */
+cf_status_t cf__temp_open(const char *path, int *fd, char **tmp,
+                          cf_diag_t *diag);
 
 /* The EPS of a PS page from cf__format_render (cairo 1.16.0 only): 0, or
 ** -1 when the PS is not as expected (render the EPS then), -2 out of

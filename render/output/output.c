@@ -484,55 +484,68 @@ random_name(char out[13])
     out[12] = '\0';
 }
 
+cf_status_t
+cf__temp_open(const char *path, int *fd, char **tmp, cf_diag_t *diag)
+{
+    const char *slash;
+    size_t dlen;
+    cf_status_t st;
+
+    *fd = -1;
+    *tmp = NULL;
+    if (path[0] == '\0' || path[strlen(path) - 1] == '/')
+        return cf_diag_set(diag, CF_STATUS_IO, -1,
+                           "\"%s\" is not a file name", path);
+    slash = strrchr(path, '/');
+    dlen = slash != NULL ? (size_t)(slash - path) + 1 : 0;
+    *tmp = cf_malloc(dlen + 24);
+    if (*tmp == NULL)
+        return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                           "out of memory for a file name");
+    memcpy(*tmp, path, dlen);
+    memcpy(*tmp + dlen, ".cf-tmp-", 8);
+    for (int tries = 0; *fd < 0 && tries < 100; tries++) {
+        random_name(*tmp + dlen + 8);
+        *fd = open(*tmp, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW
+                             | O_CLOEXEC, 0666);
+        if (*fd < 0 && errno != EEXIST)
+            break;
+    }
+    if (*fd >= 0)
+        return CF_STATUS_OK;
+    st = cf_diag_set(diag, CF_STATUS_IO, -1,
+                     "cannot create a temporary file for \"%s\": %s", path,
+                     strerror(errno));
+    cf_free(*tmp);
+    *tmp = NULL;
+    return st;
+}
+
 /* The one writer of every file that curvefig makes (the figures here, and
 ** the tool's pages, manifests, galleries, images and reports): the data
-** goes to a new file of a random name in the target's directory, opened
-** with O_CREAT | O_EXCL | O_NOFOLLOW (so that no file or symbolic link
-** planted there, under any name, is followed or truncated; mode 0666
-** less the umask), and that file is renamed over the target: a reader
-** sees the old file or the new one, never a part, and a symbolic link at
-** the target is replaced, not followed.  No fsync: figures are build
-** products (as the object files ninja writes), and a sync costs 4 to
-** 20 ms of waiting per file, more than rendering it. */
+** goes to a new file of a random name in the target's directory
+** (cf__temp_open, opened with O_CREAT | O_EXCL | O_NOFOLLOW, so that no
+** file or symbolic link planted there, under any name, is followed or
+** truncated; mode 0666 less the umask), and that file is renamed over the
+** target: a reader sees the old file or the new one, never a part, and a
+** symbolic link at the target is replaced, not followed.  No fsync:
+** figures are build products (as the object files ninja writes), and a
+** sync costs 4 to 20 ms of waiting per file, more than rendering it. */
 cf_status_t
 cf_write_file(const char *path, const void *data, size_t n, cf_diag_t *diag)
 {
     cf_diag_clear(diag);
-    const char *slash;
-    size_t dlen;
     char *tmp;
-    int fd = -1;
+    int fd;
     size_t off = 0;
     cf_status_t st = CF_STATUS_OK;
 
     if (path == NULL || (data == NULL && n > 0))
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
                            "write: path or data is NULL");
-    if (path[0] == '\0' || path[strlen(path) - 1] == '/')
-        return cf_diag_set(diag, CF_STATUS_IO, -1,
-                           "\"%s\" is not a file name", path);
-    slash = strrchr(path, '/');
-    dlen = slash != NULL ? (size_t)(slash - path) + 1 : 0;
-    tmp = cf_malloc(dlen + 24);
-    if (tmp == NULL)
-        return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
-                           "out of memory for a file name");
-    memcpy(tmp, path, dlen);
-    memcpy(tmp + dlen, ".cf-tmp-", 8);
-    for (int tries = 0; fd < 0 && tries < 100; tries++) {
-        random_name(tmp + dlen + 8);
-        fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC,
-                  0666);
-        if (fd < 0 && errno != EEXIST)
-            break;
-    }
-    if (fd < 0) {
-        st = cf_diag_set(diag, CF_STATUS_IO, -1,
-                         "cannot create a temporary file for \"%s\": %s",
-                         path, strerror(errno));
-        cf_free(tmp);
+    st = cf__temp_open(path, &fd, &tmp, diag);
+    if (st != CF_STATUS_OK)
         return st;
-    }
     while (off < n) {
         ssize_t w = write(fd, (const unsigned char *)data + off, n - off);
         if (w < 0 && errno == EINTR)

@@ -30,8 +30,8 @@
 ** larger; libdeflate, tried, is no faster on these images) */
 #define ZMEMLEVEL 7
 
-static void
-put_u32(unsigned char *p, uint32_t v)
+void
+cf__png_put_u32(unsigned char *p, uint32_t v)
 {
     p[0] = (unsigned char)(v >> 24);
     p[1] = (unsigned char)(v >> 16);
@@ -39,19 +39,18 @@ put_u32(unsigned char *p, uint32_t v)
     p[3] = (unsigned char)v;
 }
 
-/* Append one chunk; 0 or -1 (out of memory). */
-static int
-append_chunk(cf__buf_t *out, const char *type, const unsigned char *data,
-             size_t n)
+int
+cf__png_chunk(cf__buf_t *out, const char *type, const unsigned char *data,
+              size_t n)
 {
     unsigned char head[8], tail[4];
     uLong crc = crc32(0L, Z_NULL, 0);
-    put_u32(head, (uint32_t)n);
+    cf__png_put_u32(head, (uint32_t)n);
     memcpy(head + 4, type, 4);
     crc = crc32(crc, head + 4, 4);
     if (n > 0)
         crc = crc32(crc, data, (uInt)n);
-    put_u32(tail, (uint32_t)crc);
+    cf__png_put_u32(tail, (uint32_t)crc);
     if (cf__buf_append(out, head, sizeof head) != 0
         || cf__buf_append(out, data, n) != 0
         || cf__buf_append(out, tail, sizeof tail) != 0)
@@ -59,9 +58,8 @@ append_chunk(cf__buf_t *out, const char *type, const unsigned char *data,
     return 0;
 }
 
-/* True when every pixel of an ARGB32 image has alpha 255. */
-static bool
-all_opaque(const unsigned char *data, int width, int height, int stride)
+bool
+cf__png_opaque(const unsigned char *data, int width, int height, int stride)
 {
     int x, y;
     for (y = 0; y < height; y++) {
@@ -76,9 +74,8 @@ all_opaque(const unsigned char *data, int width, int height, int stride)
     return true;
 }
 
-/* One row of native-endian premultiplied ARGB32 as RGBA bytes. */
-static void
-row_rgba(const unsigned char *src, int width, unsigned char *dst)
+void
+cf__png_row_rgba(const unsigned char *src, int width, unsigned char *dst)
 {
     int x;
     for (x = 0; x < width; x++, dst += 4) {
@@ -102,9 +99,8 @@ row_rgba(const unsigned char *src, int width, unsigned char *dst)
     }
 }
 
-/* One row of xRGB (ARGB32 opaque, or RGB24) as RGB bytes. */
-static void
-row_rgb(const unsigned char *src, int width, unsigned char *dst)
+void
+cf__png_row_rgb(const unsigned char *src, int width, unsigned char *dst)
 {
     int x;
     for (x = 0; x < width; x++, dst += 3) {
@@ -116,25 +112,34 @@ row_rgb(const unsigned char *src, int width, unsigned char *dst)
     }
 }
 
-/* zlib allocates through the library's hook too. */
-static voidpf
-z_alloc(voidpf opaque, uInt items, uInt size)
+voidpf
+cf__png_zalloc(voidpf opaque, uInt items, uInt size)
 {
     (void)opaque;
     return cf_alloc_array(items, size);
 }
 
-static void
-z_free(voidpf opaque, voidpf ptr)
+void
+cf__png_zfree(voidpf opaque, voidpf ptr)
 {
     (void)opaque;
     cf_free(ptr);
 }
 
-/* The zlib stream of the filtered rows as IDAT chunks. */
-static cf_status_t
-write_idat(const unsigned char *data, int width, int height, int stride,
-           bool rgba, cf__buf_t *out, cf_diag_t *diag)
+/* One chunk of compressed data: IDAT, or fdAT with the next sequence
+** number in the 4 bytes reserved before it. */
+static int
+data_chunk(cf__buf_t *out, unsigned char *zbuf, size_t n, unsigned *seq)
+{
+    if (seq == NULL)
+        return cf__png_chunk(out, "IDAT", zbuf + 4, n);
+    cf__png_put_u32(zbuf, (uint32_t)(*seq)++);
+    return cf__png_chunk(out, "fdAT", zbuf, n + 4);
+}
+
+cf_status_t
+cf__png_rows(const unsigned char *data, int width, int height, int stride,
+             bool rgba, unsigned *seq, cf__buf_t *out, cf_diag_t *diag)
 {
     size_t rowbytes = (size_t)width * (rgba ? 4 : 3);
     unsigned char *line, *zbuf;
@@ -142,10 +147,10 @@ write_idat(const unsigned char *data, int width, int height, int stride,
     int y, failed = 0;
 
     memset(&z, 0, sizeof z);
-    z.zalloc = z_alloc;
-    z.zfree = z_free;
+    z.zalloc = cf__png_zalloc;
+    z.zfree = cf__png_zfree;
     line = cf_malloc(rowbytes + 1);
-    zbuf = cf_malloc(IDAT_MAX);
+    zbuf = cf_malloc(IDAT_MAX + 4);
     if (line == NULL || zbuf == NULL
         || deflateInit2(&z, ZLEVEL, Z_DEFLATED, 15, ZMEMLEVEL,
                         Z_DEFAULT_STRATEGY) != Z_OK) {
@@ -155,16 +160,16 @@ write_idat(const unsigned char *data, int width, int height, int stride,
                            "out of memory compressing a PNG of %d x %d "
                            "pixels", width, height);
     }
-    z.next_out = zbuf;
+    z.next_out = zbuf + 4;
     z.avail_out = IDAT_MAX;
     line[0] = 0;   /* filter type None */
     for (y = 0; y < height && !failed; y++) {
         const unsigned char *src = data + (size_t)y * (size_t)stride;
         int flush = y == height - 1 ? Z_FINISH : Z_NO_FLUSH;
         if (rgba)
-            row_rgba(src, width, line + 1);
+            cf__png_row_rgba(src, width, line + 1);
         else
-            row_rgb(src, width, line + 1);
+            cf__png_row_rgb(src, width, line + 1);
         z.next_in = line;
         z.avail_in = (uInt)(rowbytes + 1);
         for (;;) {
@@ -174,11 +179,11 @@ write_idat(const unsigned char *data, int width, int height, int stride,
                 break;
             }
             if (z.avail_out == 0) {
-                if (append_chunk(out, "IDAT", zbuf, IDAT_MAX) != 0) {
+                if (data_chunk(out, zbuf, IDAT_MAX, seq) != 0) {
                     failed = 1;
                     break;
                 }
-                z.next_out = zbuf;
+                z.next_out = zbuf + 4;
                 z.avail_out = IDAT_MAX;
                 if (r != Z_STREAM_END)
                     continue;
@@ -188,7 +193,7 @@ write_idat(const unsigned char *data, int width, int height, int stride,
         }
     }
     if (!failed && z.avail_out < IDAT_MAX
-        && append_chunk(out, "IDAT", zbuf, IDAT_MAX - z.avail_out) != 0)
+        && data_chunk(out, zbuf, IDAT_MAX - z.avail_out, seq) != 0)
         failed = 1;
     deflateEnd(&z);
     cf_free(line);
@@ -200,14 +205,31 @@ write_idat(const unsigned char *data, int width, int height, int stride,
     return CF_STATUS_OK;
 }
 
-cf_status_t
-cf__png_encode(cairo_surface_t *image, double dpi, cf__buf_t *out,
-               cf_diag_t *diag)
+int
+cf__png_head(cf__buf_t *out, int width, int height, bool rgba)
 {
     static const unsigned char signature[8] = {
         0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'
     };
-    unsigned char ihdr[13], phys[9];
+    unsigned char ihdr[13];
+    cf__png_put_u32(ihdr, (uint32_t)width);
+    cf__png_put_u32(ihdr + 4, (uint32_t)height);
+    ihdr[8] = 8;                /* bits per channel */
+    ihdr[9] = rgba ? 6 : 2;     /* colour type: RGBA or RGB */
+    ihdr[10] = 0;               /* deflate */
+    ihdr[11] = 0;               /* adaptive filtering (per-row type) */
+    ihdr[12] = 0;               /* not interlaced */
+    if (cf__buf_append(out, signature, sizeof signature) != 0
+        || cf__png_chunk(out, "IHDR", ihdr, sizeof ihdr) != 0)
+        return -1;
+    return 0;
+}
+
+cf_status_t
+cf__png_encode(cairo_surface_t *image, double dpi, cf__buf_t *out,
+               cf_diag_t *diag)
+{
+    unsigned char phys[9];
     const unsigned char *data;
     cairo_format_t format;
     int width, height, stride;
@@ -239,34 +261,26 @@ cf__png_encode(cairo_surface_t *image, double dpi, cf__buf_t *out,
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
                            "PNG: resolution %g dpi is not finite", dpi);
     rgba = format == CAIRO_FORMAT_ARGB32
-        && !all_opaque(data, width, height, stride);
+        && !cf__png_opaque(data, width, height, stride);
 
-    put_u32(ihdr, (uint32_t)width);
-    put_u32(ihdr + 4, (uint32_t)height);
-    ihdr[8] = 8;                /* bits per channel */
-    ihdr[9] = rgba ? 6 : 2;     /* colour type: RGBA or RGB */
-    ihdr[10] = 0;               /* deflate */
-    ihdr[11] = 0;               /* adaptive filtering (per-row type) */
-    ihdr[12] = 0;               /* not interlaced */
-    if (cf__buf_append(out, signature, sizeof signature) != 0
-        || append_chunk(out, "IHDR", ihdr, sizeof ihdr) != 0)
+    if (cf__png_head(out, width, height, rgba) != 0)
         return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
                            "out of memory writing a PNG header");
     if (dpi > 0) {
         /* pixels per metre, the same along x and y; unit 1 = metre */
         double ppm = floor(dpi / 0.0254 + 0.5);
         uint32_t v = ppm > 2147483647.0 ? 2147483647u : (uint32_t)ppm;
-        put_u32(phys, v);
-        put_u32(phys + 4, v);
+        cf__png_put_u32(phys, v);
+        cf__png_put_u32(phys + 4, v);
         phys[8] = 1;
-        if (append_chunk(out, "pHYs", phys, sizeof phys) != 0)
+        if (cf__png_chunk(out, "pHYs", phys, sizeof phys) != 0)
             return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
                                "out of memory writing a PNG header");
     }
-    st = write_idat(data, width, height, stride, rgba, out, diag);
+    st = cf__png_rows(data, width, height, stride, rgba, NULL, out, diag);
     if (st != CF_STATUS_OK)
         return st;
-    if (append_chunk(out, "IEND", NULL, 0) != 0)
+    if (cf__png_chunk(out, "IEND", NULL, 0) != 0)
         return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
                            "out of memory writing a PNG trailer");
     return CF_STATUS_OK;

@@ -6,6 +6,7 @@
 ** (glyphs, clips) get the prefix "sK-" so that the frames do not clash.
 ** A viewer that does not play SMIL shows the last step.
 */
+#include <stdbool.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -22,10 +23,22 @@ put(cf__buf_t *b, const char *s)
 
 #define find cf__bytes_find
 
-/* The frame body [p, end) with every id and reference to one prefixed. */
-static int
-put_prefixed(cf__buf_t *b, const unsigned char *p, const unsigned char *end,
-             const char *prefix)
+int
+cf__svg_put_escaped(cf__buf_t *b, const char *s)
+{
+    for (; *s != '\0'; s++) {
+        const char *r = *s == '<' ? "&lt;" : *s == '>' ? "&gt;"
+                      : *s == '&' ? "&amp;" : *s == '"' ? "&quot;" : NULL;
+        if ((r != NULL ? put(b, r) : cf__buf_append(b, s, 1)) != 0)
+            return -1;
+    }
+    return 0;
+}
+
+int
+cf__svg_put_prefixed(cf__buf_t *b, const unsigned char *p,
+                     const unsigned char *end, const char *prefix,
+                     bool glyphs_shared)
 {
     static const char *const refs[] = { "id=\"", "url(#", "href=\"#" };
     while (p < end) {
@@ -40,18 +53,20 @@ put_prefixed(cf__buf_t *b, const unsigned char *p, const unsigned char *end,
         }
         if (best == NULL)
             return cf__buf_append(b, p, (size_t)(end - p));
-        if (cf__buf_append(b, p, (size_t)(best - p + blen)) != 0
-            || put(b, prefix) != 0)
+        if (cf__buf_append(b, p, (size_t)(best - p + blen)) != 0)
+            return -1;
+        /* a glyph's outline (gN) of a shared <defs> keeps its name */
+        if (!(glyphs_shared && best + blen + 1 < end && best[blen] == 'g'
+              && best[blen + 1] >= '0' && best[blen + 1] <= '9')
+            && put(b, prefix) != 0)
             return -1;
         p = best + blen;
     }
     return 0;
 }
 
-/* The opening <svg ...> tag of doc and its body: after the tag up to the
-** closing </svg>. */
-static int
-split_doc(const cf__buf_t *doc, const unsigned char **tag0,
+int
+cf__svg_split(const cf__buf_t *doc, const unsigned char **tag0,
           const unsigned char **tag1, const unsigned char **body1)
 {
     const unsigned char *end = doc->data + doc->size, *s, *gt, *close = NULL;
@@ -120,7 +135,7 @@ cf__svg_steps(const cf__dl_t *dl, const cf__page_t *page, unsigned steps,
             cf__buf_free(out);
             return st;
         }
-        if (split_doc(&doc, &t0, &t1, &b1) != 0) {
+        if (cf__svg_split(&doc, &t0, &t1, &b1) != 0) {
             cf__buf_free(&doc);
             cf__buf_free(out);
             return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
@@ -140,7 +155,7 @@ cf__svg_steps(const cf__dl_t *dl, const cf__page_t *page, unsigned steps,
         if (r == 0)
             r = put_animation(out, k, steps);
         if (r == 0)
-            r = put_prefixed(out, t1, b1, prefix);
+            r = cf__svg_put_prefixed(out, t1, b1, prefix, false);
         if (r == 0)
             r = put(out, "</g>\n");
         cf__buf_free(&doc);

@@ -15,6 +15,7 @@
 
 #include "curvefig/figure.h"
 #include "curvefig/output.h"
+#include "animate.h"
 #include "tool.h"
 
 int
@@ -193,6 +194,14 @@ cf__tool_manifest_line(FILE *f, const char *name, const char *caption,
             continue;
         fprintf(f, "%s%s", first ? "" : ",",
                 cf_format_extension((cf_format_t)k));
+        first = 0;
+    }
+    /* an animation's own formats (animate.h) */
+    for (int k = 0; k < 4; k++) {
+        static const char *const ext[] = { "gif", "apng", "mp4", "webm" };
+        if (!(formats & (CF__TOOL_GIF_BIT << k)))
+            continue;
+        fprintf(f, "%s%s", first ? "" : ",", ext[k]);
         first = 0;
     }
     fputc('\t', f);

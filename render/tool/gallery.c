@@ -32,6 +32,8 @@ static const char *const groups[][2] = {
                   "компьютерной геометрии, I (Russian)" },
     { "lec05", "Seed 004 · Lec05, Bezier曲线 B样条曲线 (Chinese)" },
     { "surfaces", "Part II · Surfaces: 3D figures with exact hidden lines" },
+    { "anim", "Animations · the interactive examples swept, the overlay "
+              "figures step by step (docs/animations.md)" },
 };
 
 static const char gallery_head[] =

@@ -23,6 +23,7 @@
 #include <malloc.h>
 #endif
 
+#include "animate.h"
 #include "curvefig/access.h"
 #include "curvefig/figure.h"
 #include "help.h"
@@ -56,6 +57,10 @@ typedef struct options {
     bool verbose;
     bool long_list;
     cf__tool_limits limits;
+    cf__tool_anim_t anim;     /* --sweep and the other options of an
+                                 animation (animate.h) */
+    bool formats_given;
+    const char *prefix;       /* --prefix: before every figure's name */
     int nfiles;
     char **files;
 } options;
@@ -74,7 +79,8 @@ static const char *
 nearest_format(const char *list)
 {
     static const char *const formats[] = { "svg", "pdf", "png", "ps", "eps",
-                                           "pgf", "html", "all" };
+                                           "pgf", "html", "gif", "apng",
+                                           "mp4", "webm", "all" };
     char name[64];
     const char *p = list;
     while (*p != '\0') {
@@ -84,6 +90,7 @@ nearest_format(const char *list)
             memcpy(name, p, n);
             name[n] = '\0';
             if (strcmp(name, "all") != 0 && strcmp(name, "html") != 0
+                && cf__tool_anim_format(name) == 0
                 && cf_format_from_name(name, &f, NULL) != CF_STATUS_OK)
                 return cf_nearest_name(name, formats,
                                        sizeof formats / sizeof formats[0]);
@@ -101,7 +108,8 @@ static const char *const known_options[] = {
     "--max-memory", "--max-instructions", "--timeout", "--font",
     "--font-size", "--theme", "--background", "--width", "--height",
     "--seed", "--help", "--verbose", "--long", "--tight", "--steps",
-    "--no-labels",
+    "--no-labels", "--sweep", "--frames", "--fps", "--seconds", "--ease",
+    "--bounce", "--step-seconds", "--animate", "--workers", "--prefix",
 };
 
 static int
@@ -122,6 +130,8 @@ parse_formats(const char *list, unsigned *out)
             *out |= (1u << CF_FORMAT_LAST_) - 1;
         else if (strcmp(name, "html") == 0)
             *out |= CF__TOOL_HTML_BIT;
+        else if (cf__tool_anim_format(name) != 0)
+            *out |= cf__tool_anim_format(name);
         else if (cf_format_from_name(name, &f, NULL) != CF_STATUS_OK)
             return -1;
         else
@@ -171,12 +181,12 @@ takes_value(const char *opt)
         "-o", "--output", "-f", "--formats", "--dpi", "--only", "--manifest",
         "--title", "--max-memory", "--max-instructions", "--timeout",
         "--font", "--font-size", "--theme", "--background", "--width",
-        "--height", "--seed", NULL,
+        "--height", "--seed", "--prefix", NULL,
     };
     for (int i = 0; with_value[i] != NULL; i++)
         if (strcmp(opt, with_value[i]) == 0)
             return true;
-    return false;
+    return cf__tool_anim_takes_value(opt);
 }
 
 /* Parse argv into o; returns -1 when the tool should exit with *rc. */
@@ -249,13 +259,29 @@ parse_args(int argc, char **argv, options *o, int *rc)
             return -1;
         } else if (strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0) {
             o->outdir = v;
+        } else if (strcmp(a, "--prefix") == 0) {
+            if (strchr(v, '/') != NULL) {
+                *rc = usage_error("--prefix '%s': a prefix of file names "
+                                  "has no '/'", v);
+                return -1;
+            }
+            o->prefix = v;
+        } else if ((lim = cf__tool_anim_option(a, v, &o->anim, limmsg,
+                                               sizeof limmsg)) != 0) {
+            if (lim < 0) {
+                *rc = usage_error("%s", limmsg);
+                return -1;
+            }
+            takes = cf__tool_anim_takes_value(a);
         } else if (strcmp(a, "-f") == 0 || strcmp(a, "--formats") == 0) {
+            o->formats_given = true;
             if (parse_formats(v, &o->formats) != 0) {
                 const char *near = nearest_format(v);
                 char msg[512];
                 snprintf(msg, sizeof msg, "bad format list '%s' (%s%s%suse "
-                         "svg, pdf, png, ps, eps, pgf, html or all, "
-                         "separated by commas)", v,
+                         "svg, pdf, png, ps, eps, pgf, html or all, and for "
+                         "animations gif, apng, mp4, webm, separated by "
+                         "commas)", v,
                          near != NULL ? "did you mean " : "",
                          near != NULL ? near : "", near != NULL ? "? " : "");
                 *rc = usage_error("%s", msg);
@@ -365,6 +391,21 @@ parse_args(int argc, char **argv, options *o, int *rc)
         return -1;
     }
     o->script = o->files[0];
+    if (strcmp(o->command, "render") == 0
+        && cf__tool_anim_wanted(&o->anim, o->formats)) {
+        char msg[300];
+        if (!o->formats_given)
+            o->formats = CF_FORMAT_BIT(CF_FORMAT_SVG)
+                         | CF_FORMAT_BIT(CF_FORMAT_PDF) | CF__TOOL_GIF_BIT;
+        if (cf__tool_anim_check_formats(o->formats, msg, sizeof msg) != 0) {
+            *rc = usage_error("%s", msg);
+            return -1;
+        }
+    } else if ((o->formats & CF__TOOL_ANIM_BITS) != 0) {
+        *rc = usage_error("%s: -f gif, apng, mp4 and webm are made by "
+                          "render", o->command);
+        return -1;
+    }
     return 0;
 }
 
@@ -469,6 +510,45 @@ set_background(cf_figure_t *fig, const char *v)
     cf_figure_set_background(fig, CF_BACKGROUND_ALWAYS);
 }
 
+/* PREFIXNAME, or OUTDIR/PREFIXNAME with dir (malloc'd; NULL out of
+** memory). */
+static char *
+prefixed_in(const options *o, const char *name, bool dir)
+{
+    const char *p = o->prefix != NULL ? o->prefix : "";
+    char *both = malloc(strlen(p) + strlen(name) + 1), *path;
+    if (both == NULL || !dir)
+        return both != NULL ? strcat(strcpy(both, p), name) : NULL;
+    sprintf(both, "%s%s", p, name);
+    path = cf__tool_join(o->outdir, both);
+    free(both);
+    return path;
+}
+
+static char *
+prefixed(const options *o, const char *name)
+{
+    return prefixed_in(o, name, true);
+}
+
+static cf__tool_run_t
+run_settings(const options *o)
+{
+    cf__tool_run_t r;
+    memset(&r, 0, sizeof r);
+    r.script = o->script;
+    r.limits = &o->limits;
+    r.labels = !o->no_labels;
+    r.font = o->font;
+    r.font_size = o->font_size;
+    r.width = o->width;
+    r.height = o->height;
+    r.seed = o->seed;
+    r.background = o->background;
+    r.prepare = set_background;
+    return r;
+}
+
 static int
 render_figures(const cf_script_t *s, const options *o)
 {
@@ -494,10 +574,18 @@ render_figures(const cf_script_t *s, const options *o)
         char over[200];
         if (!selected(o->only, name))
             continue;
-        base = cf__tool_join(o->outdir, name);
+        base = prefixed(o, name);
         if (base == NULL) {
             fprintf(stderr, "curvefig: out of memory\n");
             return EXIT_SCRIPT;
+        }
+        if (cf__tool_anim_wanted(&o->anim, o->formats)) {
+            cf__tool_run_t run = run_settings(o);
+            if (cf__tool_animate(s, i, &run, &o->anim, base, o->formats,
+                                 o->dpi, o->tight, o->verbose) != 0)
+                rc = EXIT_SCRIPT;
+            free(base);
+            continue;
         }
         cf_diag_clear(&diag);
         set_background(fig, o->background);
@@ -562,14 +650,21 @@ render_figures(const cf_script_t *s, const options *o)
             char *alt = NULL, *desc = NULL;
             if (!selected(o->only, cf_script_figure_name(s, i)))
                 continue;
+            char *name = prefixed_in(o, cf_script_figure_name(s, i), false);
+            if (name == NULL) {
+                cf__tool_discard_atomic(&man);
+                fprintf(stderr, "curvefig: out of memory\n");
+                return EXIT_SCRIPT;
+            }
             /* a figure that rendered has its text (out of memory: none) */
             cf_figure_alt_text(cf_script_figure(s, i), &alt);
             cf_figure_description(cf_script_figure(s, i), &desc);
-            cf__tool_manifest_line(man.f, cf_script_figure_name(s, i),
+            cf__tool_manifest_line(man.f, name,
                                    cf_script_figure_caption(s, i),
                                    o->formats, o->script, alt, desc);
             cf_free(alt);
             cf_free(desc);
+            free(name);
         }
         if (cf__tool_close_atomic(&man) != 0) {
             fprintf(stderr, "curvefig: cannot write %s: %s\n", o->manifest,

@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "font-table.h"
+#include "fonts-default.h"
 #include "interactive.h"
 
 #define EXPORT(name) __attribute__((export_name(#name), used))

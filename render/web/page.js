@@ -34,6 +34,14 @@
 // (an automatic legend finding another place would shift it); released,
 // the figures show their own layout again.  scale = "log" sliders move
 // by ratios (the range input holds log10 of the value).
+// A 3D figure (its reply has a view) is div.cf-figure.cf-3d, with
+// data-view="[azimuth, elevation]" (the view it is drawn in) and
+// tabindex 0: dragging its background (not a handle) turns it, as do the
+// arrow keys when it has the focus; the page sends the angles with the
+// values as "@view:NAME": [[azimuth, elevation]] (render/lua/params.h)
+// and the script runs again in that view; a double click or its
+// button.cf-view-reset goes back to the script's view.  A 2D figure
+// ignores drags of its background.
 //   pre#cf-error           the script's error (hidden when there is none)
 //   pre#cf-lua             the values as Lua, button#cf-copy, button#cf-reset
 //   root.dataset.runs      the number of replies shown so far;
@@ -42,6 +50,7 @@ function CurvefigPage(root, engine) {
   'use strict';
   var svgNS = 'http://www.w3.org/2000/svg';
   var values = engine.saved ? engine.saved() : {};  // what the next run sends
+  var views = takeViews(values);  // figure name -> [az, el] turned to
   var reloadOnGood = false; // the script was saved: reload once it runs
   var params = [];          // the declarations of the last good reply
   var signature = null;     // of the declarations, to rebuild on a change
@@ -54,6 +63,29 @@ function CurvefigPage(root, engine) {
     for (var k in attrs || {}) e.setAttribute(k, attrs[k]);
     if (text !== undefined) e.textContent = text;
     return e;
+  }
+
+  // The rotated views among saved values (the page before a reload).
+  function takeViews(v) {
+    var out = {};
+    Object.keys(v).forEach(function (k) {
+      if (k.indexOf('@view:') === 0) {
+        var a = v[k] && v[k][0];
+        if (a && isFinite(a[0]) && isFinite(a[1]))
+          out[k.slice(6)] = [Number(a[0]), Number(a[1])];
+        delete v[k];
+      }
+    });
+    return out;
+  }
+
+  // The values with the rotated views (what a run is sent).
+  function withViews(v) {
+    var out = JSON.parse(JSON.stringify(v));
+    Object.keys(views).forEach(function (name) {
+      out['@view:' + name] = [views[name]];
+    });
+    return out;
   }
 
   root.classList.add('cf-page');
@@ -391,6 +423,9 @@ function CurvefigPage(root, engine) {
   var RING_R = 3.2;    // the ring shown: inside a label's 4 bp offset
 
   function showFigures(list) {
+    var a = document.activeElement;   // a figure keeps the keyboard focus
+    var focused = a && a.classList && a.classList.contains('cf-figure') &&
+      figures.contains(a) ? a.id.slice(10) : null;
     figures.textContent = '';
     list.forEach(function (fig, k) {
       var box = el('div', { class: 'cf-figure', id: 'cf-figure-' + fig.name });
@@ -401,6 +436,7 @@ function CurvefigPage(root, engine) {
       if (svg && fig.caption && !svg.hasAttribute('aria-labelledby'))
         svg.setAttribute('aria-label', fig.caption);
       describeFigure(box, svg, fig.name);
+      if (fig.view) markRotatable(box, fig);
       fig.handles.forEach(function (h) {
         var at = toSvg(fig, h.x, h.y);
         var ring = document.createElementNS(svgNS, 'circle');
@@ -430,6 +466,10 @@ function CurvefigPage(root, engine) {
       });
       figures.appendChild(box);
     });
+    if (focused !== null) {
+      var again = document.getElementById('cf-figure-' + focused);
+      if (again) again.focus();
+    }
   }
 
   function place(circle, x, y) {
@@ -477,6 +517,143 @@ function CurvefigPage(root, engine) {
   window.addEventListener('pointerup', pointerUp);
   window.addEventListener('pointercancel', pointerUp);
 
+  // ---- turning a 3D figure ---------------------------------------------
+
+  var DEG_PER_PX = 0.4;  // a drag across a figure turns it about half round
+  var KEY_DEG = 5;       // an arrow key; 15 with Shift
+  var rot = null;        // { name, x, y, az, el } while a background is dragged
+  var lastDown = null;   // the last press on a background, for double clicks
+
+  function figureNamed(name) {
+    return (lastFigures || []).find(function (f) { return f.name === name; });
+  }
+
+  // "@view:NAME" must fit a parameter's name (63 bytes).
+  function turnable(fig) {
+    return fig && fig.view && new TextEncoder().encode('@view:' +
+                                                       fig.name).length < 64;
+  }
+
+  function viewOf(fig) {
+    return views[fig.name] || fig.view;
+  }
+
+  // The figure turned to azimuth az and elevation el (degrees): the
+  // elevation kept in [-90, 90], the azimuth in [-180, 180), both to a
+  // tenth of a degree.
+  function turn(name, az, elev) {
+    az = ((az + 180) % 360 + 360) % 360 - 180;
+    elev = Math.min(90, Math.max(-90, elev));
+    var v = [Math.round(az * 10) / 10, Math.round(elev * 10) / 10];
+    var old = views[name];
+    if (old && old[0] === v[0] && old[1] === v[1]) return;
+    views[name] = v;
+    request();
+  }
+
+  function resetView(name) {
+    if (!(name in views)) return;
+    delete views[name];
+    request();
+  }
+
+  function markRotatable(box, fig) {
+    box.classList.add('cf-3d');
+    if (rot && rot.name === fig.name) box.classList.add('cf-rotating');
+    box.setAttribute('data-view', JSON.stringify(fig.view));
+    if (!turnable(fig)) return;
+    box.setAttribute('tabindex', '0');
+    box.setAttribute('title', 'Drag to turn the figure; double click: ' +
+                     'the script\'s view');
+    if (views[fig.name]) {
+      var b = el('button', { class: 'cf-view-reset', type: 'button',
+                             title: 'Back to the script\'s view' },
+                 'Reset view');
+      b.addEventListener('click', function () {
+        box.focus({ preventScroll: true });   // the button goes with the turn
+        resetView(fig.name);
+      });
+      box.appendChild(b);
+    }
+  }
+
+  function figureBox(target) {
+    var box = target && target.closest ? target.closest('.cf-figure') : null;
+    return box && box.classList.contains('cf-3d') ? box : null;
+  }
+
+  // A drag that starts on a 3D figure's background (not on a handle, which
+  // takes its own pointerdown first, nor on a button) turns the figure.
+  function rotateStart(ev) {
+    var t = ev.target, box = figureBox(t), fig;
+    if (drag || rot || !box || (ev.pointerType === 'mouse' && ev.button !== 0)
+        || t.closest('button') || (t.classList &&
+                                   t.classList.contains('cf-handle')))
+      return;
+    fig = figureNamed(box.id.slice(10));
+    if (!turnable(fig)) return;
+    ev.preventDefault();      // (which keeps the click from focusing it,
+    box.focus({ preventScroll: true });   // and the browser's dblclick)
+    var now = performance.now(), last = lastDown;
+    lastDown = { name: fig.name, t: now, x: ev.clientX, y: ev.clientY };
+    if (last && last.name === fig.name && now - last.t < 500 &&
+        Math.hypot(ev.clientX - last.x, ev.clientY - last.y) < 8) {
+      lastDown = null;        // a double click: the script's view
+      resetView(fig.name);
+      return;
+    }
+    figures.setPointerCapture(ev.pointerId);
+    hold();                   // it turns in place; released, it is fitted
+    var v = viewOf(fig);
+    rot = { name: fig.name, x: ev.clientX, y: ev.clientY, az: v[0],
+            el: v[1] };
+    box.classList.add('cf-rotating');
+  }
+
+  function rotateMove(ev) {
+    if (!rot) return;
+    // dragged right the front turns right; dragged down, seen from higher
+    turn(rot.name, rot.az - (ev.clientX - rot.x) * DEG_PER_PX,
+         rot.el + (ev.clientY - rot.y) * DEG_PER_PX);
+  }
+
+  function rotateEnd() {
+    if (!rot) return;
+    document.querySelectorAll('.cf-rotating').forEach(function (b) {
+      b.classList.remove('cf-rotating');
+    });
+    rot = null;
+    release();
+  }
+
+  function rotateKey(ev) {
+    var box = ev.target;
+    if (!box.classList || !box.classList.contains('cf-figure') ||
+        !box.classList.contains('cf-3d') || drag || rot)
+      return;     // a handle with the focus takes its keys itself
+    var fig = figureNamed(box.id.slice(10)), k = ev.shiftKey ? 3 : 1;
+    var d = { ArrowLeft: [k, 0], ArrowRight: [-k, 0], ArrowUp: [0, -k],
+              ArrowDown: [0, k] }[ev.key];
+    if (!d || !turnable(fig)) return;
+    ev.preventDefault();
+    var v = viewOf(fig);
+    turn(fig.name, v[0] + d[0] * KEY_DEG, v[1] + d[1] * KEY_DEG);
+  }
+
+  figures.addEventListener('pointerdown', rotateStart);
+  window.addEventListener('pointermove', rotateMove);
+  window.addEventListener('pointerup', rotateEnd);
+  window.addEventListener('pointercancel', rotateEnd);
+  figures.addEventListener('keydown', rotateKey);
+
+  // The rotated views as Lua comments under the values, to paste into
+  // figure{ view = ... }.
+  function viewsLua() {
+    return Object.keys(views).map(function (name) {
+      return '-- ' + name + ': view = { ' + views[name].join(', ') + ' }\n';
+    }).join('');
+  }
+
   // ---- runs ------------------------------------------------------------
 
   function show(reply) {
@@ -513,7 +690,7 @@ function CurvefigPage(root, engine) {
       lastFigures = reply.figures;
       if (!drag) showFigures(reply.figures);
       else updateFigures(reply.figures);
-      lua.textContent = reply.lua;
+      lua.textContent = reply.lua + viewsLua();
     }
     root.dataset.runs = String(runs);
   }
@@ -552,13 +729,13 @@ function CurvefigPage(root, engine) {
     inFlight = true;
     pending = false;
     root.dataset.busy = '1';
-    var sent = JSON.parse(JSON.stringify(values));
+    var sent = withViews(values);
     var reload = reloadOnGood;
     reloadOnGood = false;
     engine.run(sent).then(function (reply) {
       if (reload && reply.error === null && engine.reload) {
         pending = false;
-        engine.reload(values);
+        engine.reload(withViews(values));
         return;
       }
       show(reply);
@@ -577,6 +754,7 @@ function CurvefigPage(root, engine) {
   });
   reset.addEventListener('click', function () {
     values = {};
+    views = {};
     signature = null;
     request();
   });

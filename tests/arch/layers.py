@@ -2,6 +2,7 @@
 """The object files of a library call downward only.
 
 Usage: layers.py NM ARCHIVE [--folders DIR LAYER,LAYER,...]
+                  [--cairo-in FOLDER,FOLDER,...]
 
 Runs NM over the object files of ARCHIVE (a library's objects) and
 builds the graph "A calls B" (a symbol undefined in A is defined in B).
@@ -15,6 +16,12 @@ docs/library.md, "How the renderer is built").  Then it also fails when
 an object of one folder calls an object of a folder above it (objects are
 named FOLDER_FILE.c.o, as meson names them), and when a source or header of
 a folder includes a header of a folder above it.
+
+With --cairo-in (after --folders), only the sources and headers of the
+named folders of DIR may include cairo's or pango's headers (<cairo*.h>,
+<pango/...>): a file of any other folder of DIR fails, whether it
+includes them itself or through a header of DIR that does (a quoted
+include, followed to any depth).
 """
 import os
 import re
@@ -141,9 +148,69 @@ def upward_includes(top, layers):
     return out
 
 
+SYSTEM = re.compile(r'^\s*#\s*include\s+<((?:cairo|pango)[^>]*)>', re.M)
+
+
+def cairo_includes(top, allowed):
+    """Files of top's folders other than allowed that include cairo's or
+    pango's headers, directly or through headers of top (by file name)."""
+    headers, files = {}, []
+    for d in sorted(os.listdir(top)):
+        folder = os.path.join(top, d)
+        if not os.path.isdir(folder):
+            continue
+        for f in sorted(os.listdir(folder)):
+            if f.endswith(('.c', '.h')):
+                path = os.path.join(folder, f)
+                files.append((d, path))
+                if f.endswith('.h'):
+                    headers.setdefault(f, path)
+    text = {}
+    for _, path in files:
+        with open(path, encoding='utf-8') as f:
+            text[path] = f.read()
+    memo = {}
+
+    def reaches(path, seen):
+        """The chain of includes from path to a cairo or pango header,
+        or None."""
+        if path in memo:
+            return memo[path]
+        m = SYSTEM.search(text[path])
+        found = None
+        if m is not None:
+            found = ['<%s>' % m.group(1)]
+        else:
+            for inc in INCLUDE.finditer(text[path]):
+                h = headers.get(os.path.basename(inc.group(1)))
+                if h is None or h in seen:
+                    continue
+                chain = reaches(h, seen | {h})
+                if chain is not None:
+                    found = [os.path.basename(h)] + chain
+                    break
+        memo[path] = found
+        return found
+
+    out = []
+    for d, path in files:
+        if d in allowed:
+            continue
+        chain = reaches(path, {path})
+        if chain is not None:
+            out.append('%s (%s) includes %s: only %s may include cairo or '
+                       'pango' % (os.path.relpath(path, top), d,
+                                  ' -> '.join(chain), ', '.join(allowed)))
+    return out
+
+
 def main():
     args = sys.argv[1:]
-    layers, top = None, None
+    layers, top, cairo_in = None, None, None
+    if '--cairo-in' in args:
+        i = args.index('--cairo-in')
+        cairo_in = args[i + 1].split(',')
+        del args[i:i + 2]
     if '--folders' in args:
         i = args.index('--folders')
         top, layers = args[i + 1], args[i + 2].split(',')
@@ -157,6 +224,8 @@ def main():
     if layers is not None:
         unknown = sorted(o for o in graph if folder_of(o, layers) is None)
         upward = upward_calls(graph, layers) + upward_includes(top, layers)
+        if cairo_in is not None:
+            upward += cairo_includes(top, cairo_in)
         for line in ['object %s is in no layer folder' % o
                      for o in unknown] + upward:
             print(line)

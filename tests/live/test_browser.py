@@ -48,6 +48,18 @@ CHROMEDRIVER = '/usr/bin/chromedriver'
 SPLINE = 'bspline{ degree = %d, knots = %s, points = P }'
 U3 = '{ 0, 0, 0, 0, 0.25, 0.4, 0.7, 0.85, 1, 1, 1, 1 }'
 U2 = '{ 0, 0, 0, 0.17, 0.33, 0.5, 0.67, 0.83, 1, 1, 1 }'
+# S(u, v) of surface-patch.lua's patch (its box's middle at the origin)
+# in the image of its view {-55, 28} (docs/surfaces.md: (ex . S, ey . S))
+PATCH = ('(function () local P = { {{0, 0, 0}, {0, 1, 0.6}, {0, 2, 0.6}, '
+         '{0, 3, 0}}, {{1, 0, 0.7}, {1, 1, 1.8}, {1, 2, 1.6}, {1, 3, 0.4}}, '
+         '{{2, 0, 0.6}, {2, 1, 1.5}, {2, 2, 2.0}, {2, 3, 0.7}}, {{3, 0, 0}, '
+         '{3, 1, 0.5}, {3, 2, 0.8}, {3, 3, 0.2}} } '
+         'local S = bezier_surface{ points = P }:eval(u, v) '
+         'local x, y, z = S[1] - 1.5, S[2] - 1.5, S[3] - 0.9 '
+         'local a, e = math.rad(-55), math.rad(28) '
+         'return { -math.sin(a) * x + math.cos(a) * y, -math.cos(a) * '
+         'math.sin(e) * x - math.sin(a) * math.sin(e) * y + math.cos(e) * z } '
+         'end)()')
 EXAMPLES = {
     'rational-5.4.1': dict(
         slider='w4', slider_kind='curve',
@@ -65,6 +77,9 @@ EXAMPLES = {
         slider='u', slider_kind='mark',
         slider_point=SPLINE % (2, U2) + ':eval(u)',
         drag=('P', 4), drag_point=SPLINE % (2, U2) + ':eval(0.5)'),
+    'surface-patch': dict(
+        slider='u', slider_kind='mark', slider_point=PATCH,
+        drag=('L', 0), drag_point='L[1]'),
     'offset': dict(
         slider='d', slider_kind='curve',
         slider_point='bezier(P):offset_point(0.85, d)',
@@ -284,24 +299,30 @@ def exercise(drv, tool, name, spec, native):
     check(logs == [], '%s: no console errors %s' % (name, logs))
 
 
-def test_example(drv, tool, script, name, spec):
+def start_live(tool, script):
+    """`curvefig live script` on a free port: the process and the page's
+    address (None for a build without the live view)."""
     p = subprocess.Popen([tool, 'live', script, '--port', '0'],
                          stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                          text=True)
+    for _ in range(3):
+        mo = re.search(r'http://127\.0\.0\.1:\d+/[0-9a-f]+/',
+                       p.stdout.readline())
+        if mo:
+            return p, mo.group(0)
+    err = p.stderr.read()
+    if 'no live view' in err:
+        return p, None
+    p.terminate()
+    raise RuntimeError('no URL: ' + err)
+
+
+def test_example(drv, tool, script, name, spec):
+    p, url = start_live(tool, script)
     try:
-        url = None
-        for _ in range(3):
-            mo = re.search(r'http://127\.0\.0\.1:\d+/[0-9a-f]+/',
-                           p.stdout.readline())
-            if mo:
-                url = mo.group(0)
-                break
         if url is None:
-            err = p.stderr.read()
-            if 'no live view' in err:
-                print('SKIP: this build has no live view')
-                sys.exit(77)
-            raise RuntimeError('no URL: ' + err)
+            print('SKIP: this build has no live view')
+            sys.exit(77)
         native = json.loads(subprocess.run(
             [tool, 'live', script, '--once'], capture_output=True,
             text=True).stdout)
@@ -520,12 +541,17 @@ def make_driver():
     return webdriver.Chrome(service=Service(CHROMEDRIVER), options=opts)
 
 
-def main():
-    tool, src = os.path.abspath(sys.argv[1]), sys.argv[2]
+def need_browser():
+    """Exit 77 (skipped) without chromium or chromedriver."""
     for path in (CHROMIUM, CHROMEDRIVER):
         if not os.access(path, os.X_OK):
             print('SKIP: no', path)
             sys.exit(77)
+
+
+def main():
+    tool, src = os.path.abspath(sys.argv[1]), sys.argv[2]
+    need_browser()
     names = sys.argv[3:] or sorted(EXAMPLES)
     drv = make_driver()
     try:

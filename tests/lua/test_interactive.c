@@ -4,7 +4,8 @@
 ** constrained otherwise, rounded to the decimals of the step or grid; bad declarations fail naming file, line and key;
 ** the values' JSON is read strictly; cf_interactive_run's handles lie
 ** where the figure's own drawing puts the points (the display list, read
-** apart from the map); its Lua text reads back as the same values.
+** apart from the map); its Lua text reads back as the same values; a
+** page's "@view:NAME" turns a 3D figure.
 */
 #include <math.h>
 #include <setjmp.h>
@@ -414,6 +415,58 @@ test_lua_text_reads_back(void **state)
     free(json);
 }
 
+/* "@view:NAME" replaces the view the script gives figure NAME (elevation
+** clamped to [-90, 90]) before the script goes on: f:project sees it; the
+** JSON reports each figure's view as used, null for a 2D figure; names
+** of parameters cannot start with '@'. */
+static void
+test_view_override(void **state)
+{
+    const char *code =
+        "local f = figure{ name = 'cube', view = { 30, 20 } }\n"
+        "f:points({ {0, 0, 0}, {1, 1, 1} })\n"
+        "local g = figure{ name = 'flat' }\n"
+        "g:points({ {0, 0}, {1, 1} })\n"
+        "local h = figure{ name = 'late' }\n"
+        "h:view(10, 5)\n"
+        "h:points({ {0, 0, 0}, {1, 1, 1} })\n"
+        "local p = f:project({ {0, 0, 1} })[1]\n"
+        "local q = h:project({ {1, 0, 0} })[1]\n"
+        "print(string.format('%.6f %.6f', p[2], q[1]))\n";
+    const char *values = "{\"@view:cube\": [[-40, 120]], "
+                         "\"@view:late\": [[100, -10]]}";
+    static const char *const reserved[] = { "slider '@view:cube'",
+                                            "reserved", NULL };
+    char *out, *json = NULL;
+    size_t len = 0;
+    (void)state;
+    /* ey . (0, 0, 1) = cos e: cos 20 degrees, then cos 90; ex . (1, 0, 0)
+    ** = -sin a */
+    out = printed(code, NULL);
+    assert_string_equal(out, "0.939693 -0.173648\n");
+    free(out);
+    out = printed(code, values);
+    assert_string_equal(out, "0.000000 -0.984808\n");
+    free(out);
+    assert_int_equal(cf_interactive_run(code, "inter.lua", values,
+                                        strlen(values), NULL, sink, &json,
+                                        &len),
+                     CF_STATUS_OK);
+    assert_non_null(strstr(json, "\"name\": \"cube\""));
+    assert_non_null(strstr(json, "\"view\": [-40, 90]"));
+    assert_non_null(strstr(json, "\"view\": null"));
+    assert_non_null(strstr(json, "\"view\": [100, -10]"));
+    free(json);
+    assert_int_equal(cf_interactive_run(code, "inter.lua", NULL, 0, NULL,
+                                        sink, &json, &len),
+                     CF_STATUS_OK);
+    assert_non_null(strstr(json, "\"view\": [30, 20]"));
+    assert_non_null(strstr(json, "\"view\": [10, 5]"));
+    free(json);
+    fails_with("slider{ name = '@view:cube', min = 0, max = 1 }\n",
+               reserved);
+}
+
 int
 main(void)
 {
@@ -428,6 +481,7 @@ main(void)
         cmocka_unit_test(test_lua_text_reads_back),
         cmocka_unit_test(test_values_rounded),
         cmocka_unit_test(test_scale_errors),
+        cmocka_unit_test(test_view_override),
     };
     int rc;
     sink = fopen("/dev/null", "w");

@@ -445,6 +445,12 @@ test_syntax_errors(void **state)
                          CF_STATUS_INVALID_ARG);
         assert_int_equal(cf_label_create("x", NULL, SIZE, NULL, NULL),
                          CF_STATUS_INVALID_ARG);
+        /* the layers below the output are given the fonts: none is an
+        ** error, not a crash */
+        lab = (cf_label_t *)&lab;
+        assert_int_equal(cf__label_create(NULL, "x", NULL, SIZE, &lab, NULL),
+                         CF_STATUS_INVALID_ARG);
+        assert_null(lab);
     }
     /* queries on NULL are harmless */
     assert_int_equal(cf_label_box_count(NULL), 0);

@@ -360,7 +360,7 @@ static int nop_end(void *ctx) { (void)ctx; return 0; }
 
 static const cf__backend_t glyph_checker = {
     "glyph-check", nop_page, nop_group, nop, nop_clip, nop, nop_path,
-    NULL, check_text, nop_end, NULL
+    NULL, check_text, nop_end, NULL, NULL
 };
 
 static int

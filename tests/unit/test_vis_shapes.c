@@ -456,6 +456,21 @@ test_facets(void **state)
     assert_int_equal(cf_scene_add_bezier(sc, cu, NULL, NULL), 0);
     check_order(sc, &v, 1e-3, false);
     cf_scene_destroy(sc);
+    /* two spheres, one through the other, finely cut (about 3 x 10^4
+    ** facets): the grid of the ordering with many facets a cell near the
+    ** silhouettes, crossing facets where the spheres meet */
+    cf_bspline_surface_t *s1 = NULL, *s2 = NULL;
+    double c1[3] = {0, 0, 0}, c2[3] = {0.9, 0.3, 0.2};
+    assert_int_equal(cf_nurbs_sphere(c1, 1.0, &s1, NULL), 0);
+    assert_int_equal(cf_nurbs_sphere(c2, 0.7, &s2, NULL), 0);
+    assert_int_equal(cf_view_orthographic(&v, 30, 20, NULL), 0);
+    assert_int_equal(cf_scene_create(&v, 1e-3, &sc, NULL), 0);
+    assert_int_equal(cf_scene_add_bspline(sc, s1, NULL, NULL), 0);
+    assert_int_equal(cf_scene_add_bspline(sc, s2, NULL, NULL), 0);
+    check_order(sc, &v, 4e-3, true);
+    cf_scene_destroy(sc);
+    cf_bspline_surface_destroy(s1);
+    cf_bspline_surface_destroy(s2);
     cf_bezier_surface_destroy(cu);
     cf_bezier_surface_destroy(b);
     cf_bspline_surface_destroy(s);

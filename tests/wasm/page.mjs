@@ -8,8 +8,10 @@
 // pixel: the same layout, labels in the same places, the same glyphs.
 // The same at two slider values the defaults never showed, against
 // `curvefig live --once VALUES`: its labels are composed in the page from
-// the characters' glyph data.  Then twenty runs with a slider moving: the time
-// of one run (median, the page's redraw after an input), printed.  Last,
+// the characters' glyph data (and a 3D figure turned by 40 and 15
+// degrees, against `live --once` with that "@view:NAME").  Then twenty
+// runs with a slider moving: the time of one run (median, the page's
+// redraw after an input), printed; ten more turning a 3D figure.  Last,
 // tests/wasm/kerning.lua, whose text has kerned pairs (AV, To, ...): its
 // glyph data must carry their kerns (K lines), and its page composed at
 // another value must match the native SVG with no bad pixel (without the
@@ -86,11 +88,16 @@ for (const file of examples) {
   const slider = reply.params.find((p) => p.kind === 'slider');
   // values the defaults never showed: labels composed in the page, and
   // placed automatically in the page as in the tool (rational-5.4.1's
-  // numbers: no place is pinned), so no pixel may differ
-  for (const at of [0.37, 0.81]) {
-    const moved = {};
-    moved[slider.name] = +(slider.min + at * (slider.max - slider.min))
-      .toFixed(2);
+  // numbers: no place is pinned), so no pixel may differ; a 3D figure
+  // also turned (the page's "@view:NAME"), its hidden lines computed
+  // again by the module
+  const view = reply.figures[0].view;
+  const cases = [0.37, 0.81].map((at) => ({
+    [slider.name]: +(slider.min + at * (slider.max - slider.min)).toFixed(2),
+  }));
+  if (view)
+    cases.push({ ['@view:' + name]: [[view[0] + 40, view[1] + 15]] });
+  for (const moved of cases) {
     const there = await engine.run(moved);
     const native = JSON.parse(execFileSync(tool, ['live', script, '--once',
                                                    JSON.stringify(moved)]));
@@ -127,6 +134,18 @@ for (const file of examples) {
               times[10].toFixed(0) + ' ms median, ' +
               times[18].toFixed(0) + ' ms 95th percentile (' +
               slider.name + ' over its range)');
+  if (view) {
+    const turns = [];
+    for (let k = 0; k < 10; k++) {
+      const t0 = performance.now();
+      await engine.run({ ['@view:' + name]: [[view[0] + 9 * k, view[1]]] });
+      turns.push(performance.now() - t0);
+    }
+    turns.sort((a, b) => a - b);
+    console.log('     ' + name + ': a run in the page turned ' +
+                turns[5].toFixed(0) + ' ms median, ' + turns[9].toFixed(0) +
+                ' ms slowest (azimuth in steps of 9 degrees)');
+  }
 }
 {
   const script = join(src, 'tests', 'wasm', 'kerning.lua');

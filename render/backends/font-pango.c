@@ -1,9 +1,12 @@
 /*
 ** The fonts of labels natively (render/labels/font.h): pango on cairo's
-** font backend.  A run is a PangoLayout; its outlines are pango's glyph
-** paths through cairo (a path, never drawn).  Metrics and outlines are
-** unhinted, so glyph positions are the same in every output format and
-** at every resolution.
+** font backend, here among the backends because it includes cairo's and
+** pango's headers (the labels see only the table of functions, which
+** render/output/create.c hands to the figures and labels it makes).  A
+** run is a PangoLayout; its outlines are pango's glyph paths through
+** cairo (a path, never drawn).  Metrics and outlines are unhinted, so
+** glyph positions are the same in every output format and at every
+** resolution.
 */
 #include <pango/pangocairo.h>
 
@@ -144,9 +147,3 @@ outline(void *ctx, void *run, double x, double y, cf__pathb_t *out)
 const cf__fonts_t cf__pango_fonts = {
     open_fonts, close_fonts, shape, release, outline, NULL
 };
-
-const cf__fonts_t *
-cf__fonts_default(void)
-{
-    return &cf__pango_fonts;
-}

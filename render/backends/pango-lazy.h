@@ -1,5 +1,5 @@
 /*
-** pango, opened on the first label (pango-lazy.c).
+** pango, opened on the first label (render/backends/pango-lazy.c).
 */
 #ifndef CURVEFIG_RENDER_PANGO_LAZY_H
 #define CURVEFIG_RENDER_PANGO_LAZY_H

@@ -1,5 +1,6 @@
 /*
-** The pango fonts of labels (render/labels/font-pango.c), for the native
+** The pango fonts of labels (render/backends/font-pango.c): the native
+** renderer's choice (render/output/fonts-native.c), and for the native
 ** files that reach past the font seam (render/labels/font.h): the cairo
 ** backend draws a run as pango's layout, and a course page's glyph data
 ** is pango's shaping (render/output/label-glyphs.c).

@@ -1,0 +1,14 @@
+/*
+** The fonts the figures and labels the public functions make are set in
+** (render/labels/font.h; render/output/create.c hands them down): pango
+** natively (render/output/fonts-native.c: render/backends/font-pango.c),
+** the page's glyph table in the browser module (render/web/engine.c).
+*/
+#ifndef CURVEFIG_RENDER_FONTS_DEFAULT_H
+#define CURVEFIG_RENDER_FONTS_DEFAULT_H
+
+#include "font.h"
+
+const cf__fonts_t *cf__fonts_default(void);
+
+#endif

@@ -113,6 +113,32 @@ put_opacity(cf__pgf_t *g, const char *which, double a)
 
 static void set_fill(cf__pgf_t *g, const cf_color_t *c, double opacity);
 
+/* Text as comment lines "% ..." of about 72 bytes, broken at spaces
+** (docs/accessibility.md: the description in a PGF file). */
+static void
+put_comment_lines(cf__pgf_t *g, const char *text)
+{
+    const char *s = text;
+    while (s != NULL && *s != '\0') {
+        size_t n = strlen(s), cut = n;
+        if (n > 72) {
+            for (cut = 72; cut > 0 && s[cut] != ' '; cut--)
+                ;
+            if (cut == 0)
+                for (cut = 72; cut < n && s[cut] != ' '; cut++)
+                    ;
+        }
+        put(g, "% ");
+        for (size_t i = 0; i < cut; i++)
+            cf__buf_append(g->out, s[i] == '\n' || s[i] == '\r' ? " "
+                                                               : s + i, 1);
+        put(g, "\n");
+        s += cut;
+        while (*s == ' ')
+            s++;
+    }
+}
+
 static void
 begin_page(void *ctx, const cf__page_t *pg)
 {
@@ -134,6 +160,7 @@ begin_page(void *ctx, const cf__page_t *pg)
             cf__buf_append(g->out, *s == '\n' || *s == '\r' ? " " : s, 1);
         put(g, "\n");
     }
+    put_comment_lines(g, g->desc);
     put(g, "\\begin{pgfpicture}\n"
            "\\providecommand\\text[1]{\\mbox{#1}}\n"
            "\\providecommand\\boldsymbol[1]{\\mbox{\\boldmath$#1$}}\n"

@@ -250,6 +250,73 @@ put_escaped(cf__buf_t *b, const char *s)
     }
 }
 
+/* The id of an SVG's title ("t") or description ("d"): FNV-1a of both
+** texts, so that equal figures share it and others differ. */
+static void
+a11y_id(const char *title, const char *desc, char kind, char *id,
+        size_t cap)
+{
+    unsigned long h = 2166136261ul;
+    const char *parts[2] = { title, desc != NULL ? desc : "" };
+    for (int k = 0; k < 2; k++) {
+        for (const char *s = parts[k]; *s != '\0'; s++)
+            h = ((h ^ (unsigned char)*s) * 16777619ul) & 0xfffffffful;
+        h = ((h ^ 0xffu) * 16777619ul) & 0xfffffffful;
+    }
+    snprintf(id, cap, "cf-%c%08lx", kind, h);
+}
+
+static int
+app(cf__buf_t *out, const char *s)
+{
+    return cf__buf_append(out, s, strlen(s));
+}
+
+int
+cf__svgw_a11y_attrs(cf__buf_t *out, const char *title, const char *desc,
+                    const char *lang)
+{
+    char t[24], d[24];
+    int r;
+    a11y_id(title, desc, 't', t, sizeof t);
+    a11y_id(title, desc, 'd', d, sizeof d);
+    r = app(out, " role=\"img\" aria-labelledby=\"");
+    r |= app(out, t);
+    if (desc != NULL && desc[0] != '\0') {
+        r |= app(out, "\" aria-describedby=\"");
+        r |= app(out, d);
+    }
+    r |= app(out, "\"");
+    if (lang != NULL) {
+        r |= app(out, " xml:lang=\"");
+        put_escaped(out, lang);
+        r |= app(out, "\"");
+    }
+    return r != 0 || out->failed ? -1 : 0;
+}
+
+int
+cf__svgw_a11y_head(cf__buf_t *out, const char *title, const char *desc)
+{
+    char id[24];
+    int r;
+    a11y_id(title, desc, 't', id, sizeof id);
+    r = app(out, "<title id=\"");
+    r |= app(out, id);
+    r |= app(out, "\">");
+    put_escaped(out, title);
+    r |= app(out, "</title>\n");
+    if (desc != NULL && desc[0] != '\0') {
+        a11y_id(title, desc, 'd', id, sizeof id);
+        r |= app(out, "<desc id=\"");
+        r |= app(out, id);
+        r |= app(out, "\">");
+        put_escaped(out, desc);
+        r |= app(out, "</desc>\n");
+    }
+    return r != 0 || out->failed ? -1 : 0;
+}
+
 /* The document's head goes to out, the drawing to body; end_page puts
 ** the glyph outlines the drawing used between them. */
 static void
@@ -269,17 +336,12 @@ begin_page(void *ctx, const cf__page_t *pg)
     put_num(w, pg->height);
     put(w, "pt\" viewBox=\"0 0 ");
     put_xy(w, pg->width, pg->height);
-    put(w, "\">\n");
-    if (w->title != NULL || w->caption != NULL) {
-        put(w, "<title>");
-        put_escaped(out, w->title != NULL ? w->title : w->caption);
-        put(w, "</title>\n");
-    }
-    if (w->caption != NULL && w->caption[0] != '\0') {
-        put(w, "<desc>");
-        put_escaped(out, w->caption);
-        put(w, "</desc>\n");
-    }
+    put(w, "\"");
+    if (w->title != NULL)
+        cf__svgw_a11y_attrs(out, w->title, w->caption, pg->lang);
+    put(w, ">\n");
+    if (w->title != NULL)
+        cf__svgw_a11y_head(out, w->title, w->caption);
     w->dst = &w->body;
     w->depth = 0;
     push(w, true, false);

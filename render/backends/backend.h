@@ -37,6 +37,8 @@ typedef struct cf__page {
                                   spec.h): 0, 0 every operation on one
                                   page; else one page per step of
                                   first..last with the groups shown on it */
+    const char *lang;          /* the language of its text (BCP 47), NULL:
+                                  unsaid (docs/accessibility.md) */
 } cf__page_t;
 
 typedef struct cf__backend {
@@ -122,6 +124,8 @@ struct cf__buf;
 typedef struct cf__pgf {
     struct cf__buf *out;
     const char *title;
+    const char *desc;              /* NULL or the long description, comment
+                                      lines after the title's */
     double width, height;
     double base;                   /* label size set at the document's */
     int depth;                     /* groups open */
@@ -179,6 +183,16 @@ typedef struct cf__svgw {
 } cf__svgw_t;
 
 extern const cf__backend_t cf__svgw_backend;
+
+/* The accessible text of an SVG document (docs/accessibility.md): the
+** attributes of its <svg> element (role="img", aria-labelledby naming
+** its <title> and <desc>, xml:lang), and those elements.  The ids are
+** made from the text (a hash), so that SVGs put inline in one page keep
+** distinct ids.  0, or -1 when out of memory. */
+int cf__svgw_a11y_attrs(struct cf__buf *out, const char *title,
+                        const char *desc, const char *lang);
+int cf__svgw_a11y_head(struct cf__buf *out, const char *title,
+                       const char *desc);
 
 /* A number of SVG path data or attributes: at most 3 decimals (1/1000
 ** bp), no trailing zeros; -1 when not finite or beyond 1e9 (nothing

@@ -266,7 +266,8 @@ cf_figure_add_bezier_range(cf_figure_t *fig, const cf_bezier_t *c, double a,
         cf_bezier_destroy(plane);
         return fig->err.status;
     }
-    return cf__element_commit(fig, e, cf__curve_add(fig, e, plane, NULL));
+    st = cf__element_commit(fig, e, cf__curve_add(fig, e, plane, NULL));
+    return st == CF_STATUS_OK ? cf__fact_bezier(fig, c) : st;
 }
 
 cf_status_t
@@ -402,7 +403,10 @@ cf_figure_add_bspline(cf_figure_t *fig, const struct cf_bspline *s,
     e = cf__curve_new(fig, CF_ROLE_CURVE, style);
     if (e == NULL)
         return fig->err.status;
-    return cf__element_commit(fig, e, bspline_pieces(fig, e, s, a, b));
+    if (cf__element_commit(fig, e, bspline_pieces(fig, e, s, a, b))
+        != CF_STATUS_OK)
+        return fig->err.status;
+    return cf__fact_bspline(fig, s);
 }
 
 cf_status_t

@@ -102,10 +102,13 @@ cf_figure_add_label(cf_figure_t *fig, double x, double y, const char *text,
     e->y = y;
     e->chosen.place = CF_PLACE_NE;
     e->chosen.offset = 4.0;
-    return cf__element_commit(
-        fig, e,
-        cf__text_set(fig, &e->text, text,
-                              cf__role_font_size(fig, CF_ROLE_LABEL, style)));
+    if (cf__element_commit(
+            fig, e,
+            cf__text_set(fig, &e->text, text,
+                         cf__role_font_size(fig, CF_ROLE_LABEL, style)))
+        != CF_STATUS_OK)
+        return fig->err.status;
+    return cf__fact_label(fig, x, y, text);
 }
 
 cf_status_t

@@ -272,7 +272,9 @@ add_points_el(cf_figure_t *fig, const cf__kind_t *kind, cf_role_t role,
     e->closed = closed;
     if (e->pts == NULL)
         return cf__element_commit(fig, e, cf__fig_nomem(fig, what));
-    return cf__element_commit(fig, e, CF_STATUS_OK);
+    if (cf__element_commit(fig, e, CF_STATUS_OK) != CF_STATUS_OK)
+        return fig->err.status;
+    return cf__fact_marks(fig, pts, n);
 }
 
 cf_status_t
@@ -388,7 +390,9 @@ cf_figure_add_net(cf_figure_t *fig, const double *pts, const size_t *counts,
         || (colors != NULL && e->colors == NULL))
         return cf__element_commit(fig, e, cf__fig_nomem(fig, "a net"));
     memcpy(e->counts, counts, levels * sizeof *counts);
-    return cf__element_commit(fig, e, CF_STATUS_OK);
+    if (cf__element_commit(fig, e, CF_STATUS_OK) != CF_STATUS_OK)
+        return fig->err.status;
+    return cf__fact_marks(fig, pts, total);
 }
 
 /* ---- axes --------------------------------------------------------------- */

@@ -579,7 +579,16 @@ cf_figure_add_surface(cf_figure_t *fig, const cf_bspline_surface_t *s,
                             * cf_bspline_surface_count_v(s));
     if (st == CF_STATUS_OK)
         st = cf__bspline_lines(fig, e->s, e->cpts, lines, &e->lines);
-    return cf__element_commit(fig, e, st);
+    if (cf__element_commit(fig, e, st) != CF_STATUS_OK)
+        return fig->err.status;
+    return cf__fact_surface(
+        fig, CF__FACT_SURFACE, cf_bspline_surface_degree_u(s),
+        cf_bspline_surface_degree_v(s), cf_bspline_surface_count_u(s),
+        cf_bspline_surface_count_v(s), cf_bspline_surface_is_rational(s),
+        cf_bspline_surface_count_u(s)
+                == (size_t)cf_bspline_surface_degree_u(s) + 1
+            && cf_bspline_surface_count_v(s)
+                == (size_t)cf_bspline_surface_degree_v(s) + 1);
 }
 
 cf_status_t
@@ -602,7 +611,11 @@ cf_figure_add_triangle_surface(cf_figure_t *fig,
         st = control_points(fig, e, cf_bezier_triangle_count(t));
     if (st == CF_STATUS_OK)
         st = cf__triangle_lines(fig, t, lines, &e->lines);
-    return cf__element_commit(fig, e, st);
+    if (cf__element_commit(fig, e, st) != CF_STATUS_OK)
+        return fig->err.status;
+    return cf__fact_surface(fig, CF__FACT_TRIANGLE,
+                            cf_bezier_triangle_degree(t), 0, 0, 0,
+                            cf_bezier_triangle_is_rational(t), true);
 }
 
 cf_status_t

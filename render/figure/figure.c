@@ -117,6 +117,10 @@ cf_figure_destroy(cf_figure_t *fig)
     cf_free(fig->overlay);
     cf_free(fig->title);
     cf_free(fig->caption);
+    cf_free(fig->alt);
+    cf_free(fig->description);
+    cf_free(fig->lang);
+    cf__facts_fini(&fig->facts);
     cf_free(fig->proj);
     cf_scene_destroy(fig->scene);
     cf_free(fig->warnings);

@@ -17,6 +17,7 @@
 #include "curvefig/figure3d.h"
 #include "curvefig/geometry.h"
 #include "dlist.h"
+#include "facts.h"
 
 /* ---- layout (filled in by layout.c, read by the element kinds) -------- */
 
@@ -166,6 +167,9 @@ struct cf_figure {
                                        given at its creation */
     double width, height;    /* bp */
     char *title, *caption;
+    char *alt, *description, *lang;   /* accessible text (describe.c):
+                                         NULL unset; description "auto" */
+    cf__facts_t facts;       /* what it shows, for the description */
     cf_theme_t theme;
     bool window_set;
     double win[4];

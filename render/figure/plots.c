@@ -79,7 +79,9 @@ cf_figure_add_graph(cf_figure_t *fig, const cf_bezier_t *const *pieces,
         if (st == CF_STATUS_OK)
             st = cf__curve_add(fig, e, g, NULL);
     }
-    return cf__element_commit(fig, e, st);
+    if (cf__element_commit(fig, e, st) != CF_STATUS_OK)
+        return fig->err.status;
+    return cf__fact_graph(fig);
 }
 
 cf_status_t
@@ -131,7 +133,9 @@ cf_figure_add_graph_list(cf_figure_t *fig, const cf_bezier_list_t *list,
             st = cf__curve_add(fig, e, g, NULL);
     }
     cf_free(breaks);
-    return cf__element_commit(fig, e, st);
+    if (cf__element_commit(fig, e, st) != CF_STATUS_OK)
+        return fig->err.status;
+    return cf__fact_graph(fig);
 }
 
 /* The graph of N_i^p over the whole knot vector [u_0, u_{m-1}]: the Bézier
@@ -153,7 +157,7 @@ cf_figure_add_basis(cf_figure_t *fig, const double *knots, size_t nknots,
     if (st == CF_STATUS_OK)
         st = cf_figure_add_graph_list(fig, list, style);
     cf_bezier_list_destroy(list);
-    return st;
+    return st == CF_STATUS_OK ? cf__fact_basis(fig, knots, nknots, p) : st;
 }
 
 /* Sampling state of cf_figure_add_function. */
@@ -303,7 +307,9 @@ done:
         st = cf_diag_set(&fig->err, CF_STATUS_NOT_FINITE, -1,
                          "the plotted function is not finite on [%g, %g]", a,
                          b);
-    return cf__element_commit(fig, e, st);
+    if (cf__element_commit(fig, e, st) != CF_STATUS_OK)
+        return fig->err.status;
+    return cf__fact_graph(fig);
 }
 
 /* ---- point elements ----------------------------------------------------- */

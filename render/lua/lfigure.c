@@ -303,6 +303,7 @@ l_figure(lua_State *L)
                                            lua_tostring(L, 2))), NULL);
     check(L, "figure", cf_figure_set_caption(fig, opt_text(L, 3, "caption",
                                                            "")), NULL);
+    cf__lua_read_access(L, fig);
     read_theme(L, fig);
     cf__lua_apply_fonts(L, 1, fig);
     read_background(L, fig);

@@ -21,4 +21,7 @@ size_t cf__lua_figure_count(lua_State *L);
 cf_figure_t *cf__lua_figure_at(lua_State *L, size_t i);
 const char *cf__lua_figure_string(lua_State *L, size_t i, int which);
 
+/* alt, description and lang of the figure{} table at index 1 (laccess.c). */
+void cf__lua_read_access(lua_State *L, cf_figure_t *fig);
+
 #endif

@@ -86,7 +86,8 @@ static const cf__lua_key_t arrow_label[] = {
 };
 
 static const cf__lua_key_t figure_keys[] = {
-    KEY("name"), KEY("caption"), KEY("title"), KEY("width"), KEY("height"),
+    KEY("name"), KEY("caption"), KEY("title"), KEY("alt"),
+    KEY("description"), KEY("lang"), KEY("width"), KEY("height"),
     NAMES("page", pages), KEY("window"), KEY("margin"), KEY("aspect"),
     NAMES("theme", themes), KEY("background"), KEY("font"),
     KEY("font_size"),

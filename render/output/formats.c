@@ -264,13 +264,14 @@ svg_render(const cf__dl_t *dl, const cf__page_t *pg, const char *title,
 /* PGF: the PGF backend into out, without cairo surfaces. */
 static cf_status_t
 pgf_render(const cf__dl_t *dl, const cf__page_t *page, const char *title,
-           cf__buf_t *out, cf_diag_t *diag)
+           const char *desc, cf__buf_t *out, cf_diag_t *diag)
 {
     cf__pgf_t g;
     int r;
     memset(&g, 0, sizeof g);
     g.out = out;
     g.title = title;
+    g.desc = desc;
     r = cf__dl_play_page(dl, page, &cf__pgf_backend, &g);
     cf__pgf_fini(&g);
     if (r == 0)
@@ -282,6 +283,39 @@ pgf_render(const cf__dl_t *dl, const cf__page_t *page, const char *title,
                            "hold (%g bp)", g.bad_value, CF__PGF_MAX_BP);
     return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
                        "out of memory rendering pgf");
+}
+
+/* DSC header comments of a PS or EPS: %%Title (the alt text) and the
+** description in %%Description lines; each line of at most 255 bytes
+** (DSC's limit), cut at UTF-8 character boundaries, line breaks as
+** spaces. */
+static void
+ps_comment(cairo_surface_t *surf, const char *key, const char *text)
+{
+    char line[256];
+    size_t k = (size_t)snprintf(line, sizeof line, "%%%%%s: ", key), i;
+    const size_t max = 240;
+    for (i = 0; text[i] != '\0'; i++) {
+        unsigned char c = (unsigned char)text[i];
+        /* a new line at a space, or at any character past 250 bytes */
+        if ((k >= max && c == ' ') || (k >= max + 10 && (c & 0xc0) != 0x80)) {
+            line[k] = '\0';
+            cairo_ps_surface_dsc_comment(surf, line);
+            k = (size_t)snprintf(line, sizeof line, "%%%%+ ");
+        }
+        line[k++] = c == '\n' || c == '\r' ? ' ' : (char)c;
+    }
+    line[k] = '\0';
+    cairo_ps_surface_dsc_comment(surf, line);
+}
+
+static void
+ps_comments(cairo_surface_t *surf, const char *title, const char *desc)
+{
+    if (title != NULL)
+        ps_comment(surf, "Title", title);
+    if (desc != NULL && desc[0] != '\0')
+        ps_comment(surf, "Description", desc);
 }
 
 static cairo_surface_t *
@@ -313,6 +347,7 @@ make_surface(cf_format_t format, const cf__page_t *pg, double dpi,
         surf = cairo_ps_surface_create_for_stream(stream_write, raw,
                                                   pg->width, pg->height);
         cairo_ps_surface_set_eps(surf, format == CF_FORMAT_EPS);
+        ps_comments(surf, title, caption);
         break;
     case CF_FORMAT_PNG: {
         double k = dpi / 72.0;
@@ -427,7 +462,7 @@ cf__format_render(cf_format_t format, const cf__dl_t *dl,
 
     memset(&raw, 0, sizeof raw);
     if (format == CF_FORMAT_PGF)
-        return pgf_render(dl, page, title, out, diag);
+        return pgf_render(dl, page, title, caption, out, diag);
     if (format == CF_FORMAT_SVG)
         return svg_render(dl, page, title, caption, out, diag);
     pg.raster = format == CF_FORMAT_PNG;
@@ -448,7 +483,17 @@ cf__format_render(cf_format_t format, const cf__dl_t *dl,
     cr = cairo_create(surf);
     if (format == CF_FORMAT_PNG)
         cairo_scale(cr, dpi / 72.0, dpi / 72.0);
+    /* a tagged PDF: the pages are one Figure of a Document (what cairo
+    ** cannot say of it is added after: render/output/pdf-tags.c) */
+    if (format == CF_FORMAT_PDF) {
+        cairo_tag_begin(cr, "Document", "");
+        cairo_tag_begin(cr, "Figure", "");
+    }
     play_steps(dl, &pg, cr);
+    if (format == CF_FORMAT_PDF) {
+        cairo_tag_end(cr, "Figure");
+        cairo_tag_end(cr, "Document");
+    }
     cst = cairo_status(cr);
     cairo_destroy(cr);
     cf_free(room);
@@ -477,6 +522,17 @@ cf__format_render(cf_format_t format, const cf__dl_t *dl,
                            "cairo failed rendering %s: %s",
                            format_names[format],
                            cairo_status_to_string(cst));
+    }
+    if (format == CF_FORMAT_PDF) {
+        r = cf__pdf_tag(&raw, title, caption, pg.lang, out);
+        if (r == 1) {
+            *out = raw;
+            return CF_STATUS_OK;
+        }
+        cf__buf_free(&raw);
+        return r == 0 ? CF_STATUS_OK
+                      : cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                                    "out of memory tagging the pdf");
     }
     if (format != CF_FORMAT_PS && format != CF_FORMAT_EPS) {
         *out = raw;

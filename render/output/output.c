@@ -16,6 +16,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "curvefig/access.h"
 #include "layout-private.h"
 #include "measure.h"
 #include "output-private.h"
@@ -157,15 +158,61 @@ cf__figure_play(cf_figure_t *fig, unsigned step, const cf__backend_t *be,
     return st;
 }
 
+/* The accessible text every format carries (docs/accessibility.md): the
+** alt text, and the long description (the caption when alt was given
+** apart from it and there is no description). */
+static cf_status_t
+a11y_text(cf_figure_t *fig, char **alt, char **desc, cf_diag_t *diag)
+{
+    if (cf_figure_alt_text(fig, alt) != CF_STATUS_OK
+        || cf_figure_description(fig, desc) != CF_STATUS_OK) {
+        cf_free(*alt);
+        *alt = NULL;
+        return cf_figure_status(fig, diag);
+    }
+    if (*desc == NULL && fig->alt != NULL && fig->caption != NULL
+        && fig->caption[0] != '\0' && strcmp(fig->caption, *alt) != 0) {
+        *desc = cf_malloc(strlen(fig->caption) + 1);
+        if (*desc == NULL) {
+            cf_free(*alt);
+            *alt = NULL;
+            return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                               "out of memory for the description");
+        }
+        strcpy(*desc, fig->caption);
+    }
+    return CF_STATUS_OK;
+}
+
+static cf_status_t render_text(cf_figure_t *fig, cf_format_t format,
+                               const cf_write_options_t *o, const job_t *job,
+                               const char *alt, const char *desc,
+                               cf__buf_t *out, cf_diag_t *diag);
+
 /* One format of a laid-out figure; with overlay steps, step o->step
 ** alone, or the whole sequence (render/figure/overlay.c, docs/overlays.md). */
 static cf_status_t
 render_job(cf_figure_t *fig, cf_format_t format, const cf_write_options_t *o,
            const job_t *job, cf__buf_t *out, cf_diag_t *diag)
 {
+    char *alt = NULL, *desc = NULL;
+    cf_status_t st = a11y_text(fig, &alt, &desc, diag);
+    if (st == CF_STATUS_OK)
+        st = render_text(fig, format, o, job, alt, desc, out, diag);
+    cf_free(alt);
+    cf_free(desc);
+    return st;
+}
+
+static cf_status_t
+render_text(cf_figure_t *fig, cf_format_t format, const cf_write_options_t *o,
+            const job_t *job, const char *alt, const char *desc,
+            cf__buf_t *out, cf_diag_t *diag)
+{
     cf__page_t pg = job->page;
     unsigned n = cf_figure_steps(fig);
     bool multi;
+    pg.lang = fig->lang;
     if (fig->background == CF_BACKGROUND_NONE
         || (fig->background == CF_BACKGROUND_AUTO
             && format != CF_FORMAT_PNG))
@@ -173,15 +220,14 @@ render_job(cf_figure_t *fig, cf_format_t format, const cf_write_options_t *o,
     if (n > 1 && o->step > 0) {
         pg.first_step = pg.last_step = o->step;
     } else if (n > 1 && format == CF_FORMAT_SVG) {
-        return cf__svg_steps(&job->dl, &pg, n, fig->title, fig->caption, out,
-                             diag);
+        return cf__svg_steps(&job->dl, &pg, n, alt, desc, out, diag);
     } else if (n > 1) {
         multi = format == CF_FORMAT_PDF || format == CF_FORMAT_PS;
         pg.first_step = multi ? 1 : n;
         pg.last_step = n;
     }
-    return cf__format_render(format, &job->dl, &pg, o->dpi, fig->title,
-                             fig->caption, out, diag);
+    return cf__format_render(format, &job->dl, &pg, o->dpi, alt, desc, out,
+                             diag);
 }
 
 static cf_status_t

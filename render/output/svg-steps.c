@@ -21,15 +21,7 @@ put(cf__buf_t *b, const char *s)
     return cf__buf_append(b, s, strlen(s));
 }
 
-static const unsigned char *
-find(const unsigned char *h, const unsigned char *end, const char *needle)
-{
-    size_t m = strlen(needle);
-    for (; h + m <= end; h++)
-        if (*h == (unsigned char)needle[0] && memcmp(h, needle, m) == 0)
-            return h;
-    return NULL;
-}
+#define find cf__bytes_find
 
 int
 cf__svg_put_escaped(cf__buf_t *b, const char *s)
@@ -151,16 +143,13 @@ cf__svg_steps(const cf__dl_t *dl, const cf__page_t *page, unsigned steps,
                                "<svg> element", k);
         }
         if (k == 1) {
-            r = cf__buf_append(out, doc.data, (size_t)(t1 - doc.data));
-            if (r == 0 && (title != NULL || caption != NULL))
-                r = put(out, "\n<title>") != 0
-                    || cf__svg_put_escaped(out, title != NULL ? title : caption) != 0
-                    || put(out, "</title>") != 0;
-            if (r == 0 && caption != NULL)
-                r = put(out, "\n<desc>") != 0 || cf__svg_put_escaped(out, caption) != 0
-                    || put(out, "</desc>") != 0;
+            r = cf__buf_append(out, doc.data, (size_t)(t1 - 1 - doc.data));
+            if (r == 0 && title != NULL)
+                r = cf__svgw_a11y_attrs(out, title, caption, page->lang);
             if (r == 0)
-                r = put(out, "\n");
+                r = put(out, ">\n");
+            if (r == 0 && title != NULL)
+                r = cf__svgw_a11y_head(out, title, caption);
         }
         snprintf(prefix, sizeof prefix, "s%u-", k);
         if (r == 0)

@@ -184,7 +184,8 @@ put_oneline(FILE *f, const char *s)
 
 void
 cf__tool_manifest_line(FILE *f, const char *name, const char *caption,
-                       unsigned formats, const char *script)
+                       unsigned formats, const char *script, const char *alt,
+                       const char *desc)
 {
     int first = 1;
     fprintf(f, "%s\t", name);
@@ -207,6 +208,10 @@ cf__tool_manifest_line(FILE *f, const char *name, const char *caption,
     put_oneline(f, caption);
     fputc('\t', f);
     put_oneline(f, script);
+    fputc('\t', f);
+    put_oneline(f, alt);
+    fputc('\t', f);
+    put_oneline(f, desc);
     fputc('\n', f);
 }
 

@@ -19,6 +19,7 @@
 
 typedef struct entry {
     char *name, *formats, *caption, *script;   /* script "" if none */
+    char *alt, *desc;                          /* "" if none */
 } entry_t;
 
 /* What the name prefixes stand for: the seeds of the shipped figures. */
@@ -52,6 +53,7 @@ static const char gallery_style[] = "</title>\n<style>\n"
     "figure{margin:0;padding:.5em;border:1px solid #ddd;border-radius:4px}\n"
     "figure img{width:100%;height:14em;object-fit:contain}\n"
     "figcaption{font-size:.9em}\nfigcaption b{font-family:monospace}\n"
+    ".a11y{margin-top:.3em}.a11y p{margin:.2em 0}\n"
     ".src h3{font:bold .9em monospace;margin:0 0 .3em}\n"
     ".src pre{font-size:.75em;max-height:40em;overflow:auto;margin:0;"
     "padding:.5em;background:#f7f7f7;border:1px solid #ddd}\n"
@@ -169,6 +171,26 @@ base_name(const char *path)
     return b != NULL ? b + 1 : path;
 }
 
+/* The figure's alt text and long description, shown below its caption
+** (docs/accessibility.md): the text a reader without the image gets. */
+static void
+put_access(FILE *out, const entry_t *e)
+{
+    if (e->alt[0] == '\0' && e->desc[0] == '\0')
+        return;
+    fputs("<details class=\"a11y\"><summary>Alt text", out);
+    fputs(e->desc[0] != '\0' ? " and description" : "", out);
+    fputs("</summary>\n<p class=\"alt\">", out);
+    cf__tool_put_html(out, e->alt, strlen(e->alt));
+    fputs("</p>", out);
+    if (e->desc[0] != '\0') {
+        fputs("\n<p class=\"desc\">", out);
+        cf__tool_put_html(out, e->desc, strlen(e->desc));
+        fputs("</p>", out);
+    }
+    fputs("</details>", out);
+}
+
 static void
 put_figure(FILE *out, const entry_t *e)
 {
@@ -184,7 +206,8 @@ put_figure(FILE *out, const entry_t *e)
         fprintf(out, ".%s\"><img src=\"", img);
         cf__tool_put_html(out, name, strlen(name));
         fprintf(out, ".%s\" alt=\"", img);
-        cf__tool_put_html(out, cap, strlen(cap));
+        cf__tool_put_html(out, e->alt[0] != '\0' ? e->alt : cap,
+                          strlen(e->alt[0] != '\0' ? e->alt : cap));
         fputs("\" loading=\"lazy\"></a>", out);
     }
     fputs("\n<figcaption><b>", out);
@@ -212,6 +235,7 @@ put_figure(FILE *out, const entry_t *e)
         cf__tool_put_html(out, base_name(e->script), strlen(base_name(e->script)));
         fputs("\">script</a>", out);
     }
+    put_access(out, e);
     fputs("</figcaption></figure>\n", out);
 }
 
@@ -317,10 +341,11 @@ put_body(FILE *out, const entry_t *es, size_t n)
 static bool
 parse_line(char *line, entry_t *e)
 {
-    char *f[4] = { line, NULL, NULL, NULL }, *nl = strchr(line, '\n');
+    char *f[6] = { line, NULL, NULL, NULL, NULL, NULL };
+    char *nl = strchr(line, '\n');
     if (nl != NULL)
         *nl = '\0';
-    for (int k = 1; k < 4; k++) {
+    for (int k = 1; k < 6; k++) {
         char *t = strchr(f[k - 1], '\t');
         if (t == NULL)
             break;
@@ -333,8 +358,10 @@ parse_line(char *line, entry_t *e)
     e->formats = strdup(f[1]);
     e->caption = strdup(f[2]);
     e->script = strdup(f[3] != NULL ? f[3] : "");
+    e->alt = strdup(f[4] != NULL ? f[4] : "");
+    e->desc = strdup(f[5] != NULL ? f[5] : "");
     return e->name != NULL && e->formats != NULL && e->caption != NULL
-        && e->script != NULL;
+        && e->script != NULL && e->alt != NULL && e->desc != NULL;
 }
 
 static void
@@ -345,6 +372,8 @@ free_entries(entry_t *es, size_t n)
         free(es[i].formats);
         free(es[i].caption);
         free(es[i].script);
+        free(es[i].alt);
+        free(es[i].desc);
     }
     free(es);
 }

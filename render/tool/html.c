@@ -16,6 +16,7 @@
 #include <limits.h>
 #include <unistd.h>
 
+#include "curvefig/access.h"
 #include "curvefig/figure.h"
 #include "curvefig/output.h"
 #include "helpers.h"
@@ -175,7 +176,10 @@ cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
         return -1;
     }
     f = out.f;
-    fputs("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n"
+    /* the page in the figure's language (a tag of letters, digits and
+    ** '-': cf_figure_set_lang checked it) */
+    fprintf(f, "<!DOCTYPE html>\n<html lang=\"%s\">", cf_figure_get_lang(fig));
+    fputs("<head><meta charset=\"utf-8\">\n"
           "<meta http-equiv=\"Content-Security-Policy\" content=\""
           "default-src 'none'; script-src 'unsafe-inline' "
           "'wasm-unsafe-eval'; style-src 'unsafe-inline'; img-src data:; "

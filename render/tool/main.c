@@ -24,6 +24,7 @@
 #endif
 
 #include "animate.h"
+#include "curvefig/access.h"
 #include "curvefig/figure.h"
 #include "help.h"
 #include "helpers.h"
@@ -646,6 +647,7 @@ render_figures(const cf_script_t *s, const options *o)
             return EXIT_SCRIPT;
         }
         for (size_t i = 0; i < cf_script_figure_count(s); i++) {
+            char *alt = NULL, *desc = NULL;
             if (!selected(o->only, cf_script_figure_name(s, i)))
                 continue;
             char *name = prefixed_in(o, cf_script_figure_name(s, i), false);
@@ -654,9 +656,14 @@ render_figures(const cf_script_t *s, const options *o)
                 fprintf(stderr, "curvefig: out of memory\n");
                 return EXIT_SCRIPT;
             }
+            /* a figure that rendered has its text (out of memory: none) */
+            cf_figure_alt_text(cf_script_figure(s, i), &alt);
+            cf_figure_description(cf_script_figure(s, i), &desc);
             cf__tool_manifest_line(man.f, name,
                                    cf_script_figure_caption(s, i),
-                                   o->formats, o->script);
+                                   o->formats, o->script, alt, desc);
+            cf_free(alt);
+            cf_free(desc);
             free(name);
         }
         if (cf__tool_close_atomic(&man) != 0) {

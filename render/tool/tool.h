@@ -42,9 +42,11 @@ char **cf__tool_list_dir(const char *dir, const char *suffix, size_t *count);
 void cf__tool_free_list(char **list, size_t count);
 
 /* One line of a render manifest: name TAB formats TAB caption TAB script
-** (the path of the script that made the figure). */
+** (the path of the script that made the figure) TAB alt text TAB long
+** description (docs/accessibility.md; either may be NULL: empty). */
 void cf__tool_manifest_line(FILE *f, const char *name, const char *caption,
-                            unsigned formats, const char *script);
+                            unsigned formats, const char *script,
+                            const char *alt, const char *desc);
 /* Write the first n bytes of s (up to a NUL) with & < > " ' escaped: the
 ** one escaping of every text the tool writes into HTML (titles, captions,
 ** names, paths, messages), in element content and quoted attributes. */

@@ -22,8 +22,6 @@ cf__format_render(cf_format_t format, const cf__dl_t *dl,
     cf__svgw_t w;
     int r;
     (void)dpi;
-    (void)title;
-    (void)caption;
     if (format != CF_FORMAT_SVG)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
                            "%s is written by the curvefig tool, not in a "
@@ -31,6 +29,8 @@ cf__format_render(cf_format_t format, const cf__dl_t *dl,
                            (unsigned)format < 5 ? names[format] : "?");
     memset(&w, 0, sizeof w);
     w.out = out;
+    w.title = title;       /* the alt text and description: <title>, <desc> */
+    w.caption = caption;
     w.outline = cf__label_outline_svg;
     r = cf__dl_play_page(dl, page, &cf__svgw_backend, &w);
     if (r != 0)

@@ -266,9 +266,11 @@ function CurvefigPage(root, engine) {
         });
         input.value = toPos(p, p.value);
         var out = el('output', { id: 'cf-value-' + p.name }, fmt(p, p.value));
+        sliderA11y(input, p, fmt(p, p.value));
         input.addEventListener('input', function () {
           values[p.name] = snap(p, fromPos(p, Number(input.value)));
           out.textContent = fmt(p, values[p.name]);
+          sliderA11y(input, p, out.textContent);
           hold();
           request();
         });
@@ -286,13 +288,65 @@ function CurvefigPage(root, engine) {
     });
   }
 
+  // ---- accessible names (docs/accessibility.md) ------------------------
+
+  // A label's source as read aloud: P_0 "P sub 0", \omega_{1} "omega sub
+  // 1", w^2 "w sup 2"; braces, dollars and backslashes dropped.
+  function spoken(src) {
+    return String(src).replace(/\\frac\{([^}]*)\}\{([^}]*)\}/g, '$1/$2')
+      .replace(/\\(text|mathrm|mathbf|mathit|boldsymbol|operatorname)\b/g,
+               '')
+      .replace(/_/g, ' sub ').replace(/\^/g, ' sup ')
+      .replace(/[{}$\\]/g, '').replace(/\s+/g, ' ').trim();
+  }
+
+  // A slider named by its label's text, its value said as shown (a log
+  // slider's position is the value's logarithm).
+  function sliderA11y(input, p, shown) {
+    input.setAttribute('aria-label', spoken(p.label || p.name));
+    input.setAttribute('aria-valuetext', shown);
+  }
+
+  // The SVG's aria-labelledby and aria-describedby, their ids prefixed as
+  // uniqueIds prefixes the ids.
+  function a11yIds(svg, pre) {
+    return svg.replace(/aria-(labelledby|describedby)="([^"]*)"/g,
+      function (all, which, ids) {
+        return 'aria-' + which + '="' + ids.split(/\s+/).map(function (id) {
+          return pre + id;
+        }).join(' ') + '"';
+      });
+  }
+
+  // A figure's box: a figure labelled by its SVG's title, and its long
+  // description (the SVG's <desc>) in a details element below it, open
+  // or closed as the reader left it.
+  var descOpen = {};
+  function describeFigure(box, svg, name) {
+    var desc = svg && svg.querySelector('desc');
+    var title = svg && svg.querySelector('title');
+    box.setAttribute('role', 'figure');
+    if (title && title.id) box.setAttribute('aria-labelledby', title.id);
+    if (!desc || !desc.textContent) return;
+    var details = el('details', { class: 'cf-description' });
+    var summary = el('summary', {}, 'Description');
+    var text = el('p', {}, desc.textContent);
+    details.appendChild(summary);
+    details.appendChild(text);
+    if (descOpen[name]) details.open = true;
+    details.addEventListener('toggle', function () {
+      descOpen[name] = details.open;
+    });
+    box.appendChild(details);
+  }
+
   // ---- the figures -----------------------------------------------------
 
   // The SVG of figure k with its ids made unique in the page (two figures
   // both define glyph0-1).
   function uniqueIds(svg, k) {
     var pre = 'cf' + k + '-';
-    return svg.replace(/<\?xml[^>]*\?>\s*/, '')
+    return a11yIds(svg, pre).replace(/<\?xml[^>]*\?>\s*/, '')
       .replace(/\bid="([^"]*)"/g, 'id="' + pre + '$1"')
       .replace(/href="#([^"]*)"/g, 'href="#' + pre + '$1"')
       .replace(/url\(#([^)]*)\)/g, 'url(#' + pre + '$1)');
@@ -379,7 +433,9 @@ function CurvefigPage(root, engine) {
       var svg = box.querySelector('svg');
       if (svg && held && held[fig.name]) fig = align(svg, fig, held[fig.name]);
       box.setAttribute('data-to-svg', JSON.stringify(fig.to_svg));
-      if (svg && fig.caption) svg.setAttribute('aria-label', fig.caption);
+      if (svg && fig.caption && !svg.hasAttribute('aria-labelledby'))
+        svg.setAttribute('aria-label', fig.caption);
+      describeFigure(box, svg, fig.name);
       if (fig.view) markRotatable(box, fig);
       fig.handles.forEach(function (h) {
         var at = toSvg(fig, h.x, h.y);

@@ -197,6 +197,45 @@ def verify(drv, tool, name, kind, expr, what):
     return pt, lua
 
 
+def check_aria(drv, name):
+    """The figure labelled by its SVG's title, its description in the page,
+    every slider named by its label's text with its value said as shown
+    (docs/accessibility.md)."""
+    got = drv.execute_script("""
+      var box = document.getElementById('cf-figure-' + arguments[0]);
+      var svg = box.querySelector('svg'), desc = svg.querySelector('desc');
+      var d = box.querySelector('details.cf-description p');
+      var ids = (svg.getAttribute('aria-labelledby') || '').split(' ');
+      return { role: svg.getAttribute('role'),
+        title: ids.map(function (i) {
+          var e = document.getElementById(i);
+          return e && e.tagName === 'title' ? e.textContent : ''; }),
+        box: [box.getAttribute('role'), box.getAttribute('aria-labelledby'),
+              svg.getAttribute('aria-labelledby')],
+        details: d ? d.textContent : null,
+        desc: desc ? desc.textContent : null,
+        sliders: Array.prototype.map.call(
+          document.querySelectorAll('#cf-controls input[type=range]'),
+          function (s) {
+            return [s.getAttribute('aria-label'),
+                    s.getAttribute('aria-valuetext'),
+                    document.getElementById('cf-value-' + s.dataset.param)
+                      .textContent, s.dataset.param]; }) };""", name)
+    check(got['role'] == 'img' and got['title'] != []
+          and all(got['title']),
+          '%s: the SVG is an image labelled by its <title> %s'
+          % (name, got['title']))
+    check(got['box'][0] == 'figure' and got['box'][1] == got['box'][2],
+          '%s: the figure box is labelled by the title %s' % (name,
+                                                             got['box']))
+    check(got['details'] is not None and got['details'] == got['desc'],
+          '%s: the description is in the page' % name)
+    for label, said, shown, param in got['sliders']:
+        check(label and not re.search(r'[\\{}$]', label) and said == shown,
+              '%s: slider %s named "%s", value said %s as shown %s'
+              % (name, param, label, said, shown))
+
+
 def exercise(drv, tool, name, spec, native):
     """On the loaded page: the slider, then the drag, each checked against
     the core; native is the JSON of a run at the defaults."""
@@ -204,6 +243,7 @@ def exercise(drv, tool, name, spec, native):
     check(drv.find_elements(By.CSS_SELECTOR,
                                '[id="cf-figure-%s"] svg' % name)
           != [], '%s: the page shows the figure' % name)
+    check_aria(drv, name)
 
     # the slider
     old_lua = drv.find_element(By.ID, 'cf-lua').text

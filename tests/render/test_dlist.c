@@ -15,6 +15,7 @@
 #include <cmocka.h>
 
 #include "backend.h"
+#include "curvefig/access.h"
 #include "curvefig/bspline.h"
 #include "curvefig/figure.h"
 #include "grow.h"
@@ -228,6 +229,7 @@ test_backend_independence(void **state)
     assert_string_equal(d.text, before);
     for (f = 0; f < sizeof formats / sizeof formats[0]; f++) {
         unsigned char *data = NULL;
+        char *alt = NULL, *desc = NULL;
         size_t size = 0;
         cf__buf_t mine;
         memset(&mine, 0, sizeof mine);
@@ -237,8 +239,13 @@ test_backend_independence(void **state)
         /* the page is painted in PNG only (CF_BACKGROUND_AUTO) */
         if (formats[f] != CF_FORMAT_PNG)
             pg.background.a = 0;
+        /* with the text every file carries (docs/accessibility.md) */
+        assert_int_equal(cf_figure_alt_text(fig, &alt), CF_STATUS_OK);
+        assert_int_equal(cf_figure_description(fig, &desc), CF_STATUS_OK);
         assert_int_equal(cf__format_render(formats[f], &dl, &pg, 150,
-                                           NULL, NULL, &mine, NULL), 0);
+                                           alt, desc, &mine, NULL), 0);
+        cf_free(alt);
+        cf_free(desc);
         assert_int_equal(mine.size, size);
         assert_memory_equal(mine.data, data, size);
         cf__buf_free(&mine);

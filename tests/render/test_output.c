@@ -106,10 +106,11 @@ test_no_clock_in_files(void **state)
     cf_free(pdf.data);
     /* SOURCE_DATE_EPOCH = 1700000000 is 2023-11-14 22:13:20 UTC */
     setenv("SOURCE_DATE_EPOCH", "1700000000", 1);
+    assert_int_equal(cf_figure_set_description(fig, "auto"), CF_STATUS_OK);
     pdf = render(fig, CF_FORMAT_PDF, NULL);
     assert_true(blob_has(&pdf, "/CreationDate (20231114221320Z)"));
     unsetenv("SOURCE_DATE_EPOCH");
-    /* title and caption go into the PDF metadata */
+    /* the alt text and the description go into the PDF metadata */
     assert_true(blob_has(&pdf, "/Title"));
     assert_true(blob_has(&pdf, "/Subject"));
     cf_free(pdf.data);
@@ -162,9 +163,10 @@ test_svg_parses_with_librsvg(void **state)
         cairo_surface_destroy(img);
     }
     g_object_unref(h);
-    /* <title> and <desc>, escaped */
-    assert_true(blob_has(&svg, "<title>de Casteljau &lt;t = 3/4&gt;</title>"));
-    assert_true(blob_has(&svg, "<desc>Levels &amp; the point C(t)</desc>"));
+    /* the alt text (here the caption) in <title>, escaped, the figure
+    ** labelled by it (docs/accessibility.md) */
+    assert_true(blob_has(&svg, "\">Levels &amp; the point C(t)</title>"));
+    assert_true(blob_has(&svg, " role=\"img\" aria-labelledby=\"cf-t"));
     assert_true(blob_has(&svg, "width=\""));
     cf_free(svg.data);
     cf_figure_destroy(fig);

@@ -18,6 +18,7 @@
 #include <cmocka.h>
 #include <cairo.h>
 #include <librsvg/rsvg.h>
+#include "curvefig/access.h"
 #include "curvefig/figure.h"
 #include "png-private.h"
 #include "testutil.h"

@@ -5,6 +5,8 @@
 ** Every stroke sets width, cap, join and dash, so an operation draws the
 ** same whatever came before it.
 */
+#include <math.h>
+
 #include <cairo.h>
 
 #include "backend.h"
@@ -139,7 +141,14 @@ draw_mesh(void *ctx, const cf__mesh_tri_t *t, size_t n)
 {
     cairo_t *cr = ctx;
     cairo_pattern_t *m = cairo_pattern_create_mesh();
+    double x0 = HUGE_VAL, y0 = HUGE_VAL, x1 = -HUGE_VAL, y1 = -HUGE_VAL;
     for (size_t i = 0; i < n; i++) {
+        for (unsigned k = 0; k < 6; k += 2) {
+            x0 = fmin(x0, t[i].p[k]);
+            x1 = fmax(x1, t[i].p[k]);
+            y0 = fmin(y0, t[i].p[k + 1]);
+            y1 = fmax(y1, t[i].p[k + 1]);
+        }
         cairo_mesh_pattern_begin_patch(m);
         cairo_mesh_pattern_move_to(m, t[i].p[0], t[i].p[1]);
         cairo_mesh_pattern_line_to(m, t[i].p[2], t[i].p[3]);
@@ -151,6 +160,15 @@ draw_mesh(void *ctx, const cf__mesh_tri_t *t, size_t n)
         cairo_mesh_pattern_end_patch(m);
     }
     cairo_save(cr);
+    /* bounded by the triangles' box: cairo 1.16's tagged PDF (a Figure
+    ** around the page, render/output/formats.c) refuses an unbounded
+    ** nesting"); the mesh paints nothing outside its patches anyway, and
+    ** the box is 1 bp wider so that its edge never cuts a pixel the
+    ** patches cover */
+    if (n > 0) {
+        cairo_rectangle(cr, x0 - 1, y0 - 1, x1 - x0 + 2, y1 - y0 + 2);
+        cairo_clip(cr);
+    }
     cairo_set_source(cr, m);
     cairo_paint(cr);
     cairo_restore(cr);

@@ -171,6 +171,9 @@ typedef struct cf_theme {
     ** default "Latin Modern Roman,CMU Serif,Noto Serif CJK SC". */
     char font_family[CF_FONT_FAMILY_MAX];
     double tick_size;                     /* axis tick length, bp */
+    bool redundant;                       /* a second channel besides
+                                             colour: the levels of a net
+                                             dashed each its own way */
 } cf_theme_t;
 
 /* Built-in themes: "default" (colour, legible in print, on a projector
@@ -178,6 +181,13 @@ typedef struct cf_theme {
 ** another name. */
 CF_API cf_status_t cf_theme_get(const char *name, cf_theme_t *out,
                                 cf_diag_t *diag);
+
+/* The palette of a theme by name (docs/accessibility.md): "default",
+** "okabe-ito" (Okabe and Ito's eight colours for colour-blind readers) or
+** "greyscale" (for greyscale print); an unknown name is an error naming
+** the nearest one. */
+CF_API cf_status_t cf_theme_set_palette(cf_theme_t *theme, const char *name,
+                                        cf_diag_t *diag);
 
 /* The font of every label of a theme, set once: family "serif" (Latin
 ** Modern Roman, mathematics in Latin Modern Math as TeX sets it), "sans"

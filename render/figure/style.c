@@ -364,16 +364,19 @@ typedef struct palette {
 } palette_t;
 
 static const palette_t palettes[] = {
-    /* distinct hues whose lightness also differs, so that levels stay
-    ** apart in greyscale (Rec. 601 luma in brackets) */
-    { "default", 8, { 0x1f5fbf,     /* blue   (0.34) */
-                      0xe8821e,     /* orange (0.61) */
-                      0x2a9d3c,     /* green  (0.45) */
-                      0x9e1b1b,     /* dark red (0.26) */
-                      0x8e44ad,     /* purple (0.37) */
-                      0xe6c229,     /* yellow (0.75) */
-                      0x17a2b8,     /* teal   (0.52) */
-                      0x6d4c41 } }, /* brown  (0.34) */
+    /* apart by a CIEDE2000 of 10 or more under protanopia, deuteranopia
+    ** and tritanopia (Machado et al. 2009), every two of them and each
+    ** from the polygon's grey (level 0 of a net); the first three (a
+    ** cubic's de Casteljau levels) and that grey also in greyscale
+    ** (docs/accessibility.md) */
+    { "default", 8, { 0x2b3a8c,     /* dark blue */
+                      0xe69f00,     /* orange */
+                      0xa0522d,     /* sienna */
+                      0x01665e,     /* dark teal */
+                      0xd55e00,     /* vermillion */
+                      0x6699cc,     /* mid blue */
+                      0x0072b2,     /* blue */
+                      0x92c5de } }, /* pale blue */
     /* M. Okabe and K. Ito, "Color Universal Design" (2002, 2008): orange,
     ** sky blue, bluish green, yellow, blue, vermillion, reddish purple,
     ** black */

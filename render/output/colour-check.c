@@ -72,6 +72,13 @@ add(rec_t *r, paint_t *p, double alpha)
     ** elements' own paints), or invisible: nothing to compare */
     if (r->depth < 1 || !(alpha > 0.02))
         return;
+    /* a shaded surface's facets: shades of its own colour, not meant to
+    ** be told apart */
+    if (p->what == PAINT_FILL
+        && strcmp(r->group[r->depth <= GROUP_DEPTH ? r->depth - 1
+                                                   : GROUP_DEPTH - 1],
+                  "surface") == 0)
+        return;
     for (i = 0; i < (size_t)r->depth && i < GROUP_DEPTH; i++)
         if (strcmp(r->group[i], "legend") == 0)
             return;

@@ -203,7 +203,7 @@ least(const cf_theme_t *th, size_t n, const cf_color_t *extra, int v)
     return m;
 }
 
-/* okabe-ito: every two apart under each deficiency; greyscale: its greys
+/* default and okabe-ito: every two apart under each deficiency; greyscale: its greys
 ** and the polygon's (level 0 of a net) apart in greyscale. */
 static void
 test_palettes(void **state)
@@ -212,6 +212,15 @@ test_palettes(void **state)
     cf_diag_t diag;
     (void)state;
     assert_int_equal(cf_theme_get("default", &th, NULL), 0);
+    /* the default: all apart, and apart from the polygon's grey, under
+    ** each deficiency; the first three and that grey in greyscale too */
+    assert_int_equal(th.palette_size, 8);
+    for (int v = CF__VISION_NORMAL; v <= CF__VISION_TRITAN; v++)
+        assert_true(least(&th, 8, &th.role[CF_ROLE_POLYGON].color, v)
+                    >= CF__COLOUR_MIN_DE);
+    for (int v = CF__VISION_NORMAL; v < CF__VISION_LAST_; v++)
+        assert_true(least(&th, 3, &th.role[CF_ROLE_POLYGON].color, v)
+                    >= CF__COLOUR_MIN_DE);
     assert_int_equal(cf_theme_set_palette(&th, "okabe-ito", NULL), 0);
     assert_int_equal(th.palette_size, 8);
     for (int v = CF__VISION_NORMAL; v <= CF__VISION_TRITAN; v++)

@@ -6,7 +6,7 @@
 ** legend's samples), then every two paints that only their colour tells
 ** apart -- lines of the same dash pattern and widths within a factor of
 ** 1.5, markers of the same shape and sizes within 1.5, any two fills --
-** whose colours lie at least min_de apart (CIEDE2000) for normal vision
+** (a shaded surface's paints left out) whose colours lie at least min_de apart (CIEDE2000) for normal vision
 ** and closer than that for a simulated one (colour-vision.h).
 */
 #include <math.h>
@@ -72,10 +72,9 @@ add(rec_t *r, paint_t *p, double alpha)
     ** elements' own paints), or invisible: nothing to compare */
     if (r->depth < 1 || !(alpha > 0.02))
         return;
-    /* a shaded surface's facets: shades of its own colour, not meant to
-    ** be told apart */
-    if (p->what == PAINT_FILL
-        && strcmp(r->group[r->depth <= GROUP_DEPTH ? r->depth - 1
+    /* a shaded surface's facets and lines: shades of its own colours, not
+    ** meant to be told apart */
+    if (strcmp(r->group[r->depth <= GROUP_DEPTH ? r->depth - 1
                                                    : GROUP_DEPTH - 1],
                   "surface") == 0)
         return;
@@ -271,7 +270,7 @@ cf_figure_colour_check(cf_figure_t *fig, double min_de, char **json,
     cf__buf_t b;
     cf_status_t st;
     unsigned *done = NULL;
-    size_t ndone = 0, clashes = 0;
+    size_t ndone = 0, cap = 0, clashes = 0;
     cf_diag_clear(diag);
     if (fig == NULL || json == NULL || size == NULL)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
@@ -285,12 +284,7 @@ cf_figure_colour_check(cf_figure_t *fig, double min_de, char **json,
     memset(&r, 0, sizeof r);
     memset(&b, 0, sizeof b);
     st = cf__figure_play(fig, 0, &colour_backend, &r, diag);
-    if (st == CF_STATUS_OK)
-        done = cf_alloc_array(r.n * r.n + 1,
-                              4 * CF__VISION_LAST_ * sizeof *done);
-    if (st == CF_STATUS_OK && done == NULL)
-        st = cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
-                         "out of memory checking the colours");
+
     if (st == CF_STATUS_OK) {
         put(&b, "{\"threshold\": %g, \"paints\": %zu, \"clashes\": [",
             min_de, r.n);
@@ -309,6 +303,15 @@ cf_figure_colour_check(cf_figure_t *fig, double min_de, char **json,
                     if (d >= min_de
                         || reported(r.p, r.n, i, j, done, ndone, v))
                         continue;
+                    if (ndone == cap) {
+                        unsigned *q = cf_realloc_array(done, cap = 2 * cap + 8,
+                                                       4 * sizeof *done);
+                        if (q == NULL) {
+                            b.failed = 1;
+                            break;
+                        }
+                        done = q;
+                    }
                     done[4 * ndone] = (unsigned)v;
                     done[4 * ndone + 1] = (unsigned)r.p[i].what;
                     done[4 * ndone + 2] = hex(r.p[i].color);

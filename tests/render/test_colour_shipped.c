@@ -28,9 +28,6 @@ static const char *const known[][4] = {
     { "orazem-decasteljau", "protanopia", "#f28e1c", "#e8b800" },
     { "overlay-decasteljau", "deuteranopia", "#f28e1c", "#e8b800" },
     { "overlay-decasteljau", "protanopia", "#f28e1c", "#e8b800" },
-    { "sir-elevation", "deuteranopia", "#808080", "#009e73" },
-    { "sir-elevation", "deuteranopia", "#8c8c8c", "#009e73" },
-    { "sir-elevation", "deuteranopia", "#8c8c8c", "#cc79a7" },
 };
 #define NKNOWN (sizeof known / sizeof known[0])
 

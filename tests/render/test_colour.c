@@ -6,7 +6,8 @@
 ** direction of colour, so that two colours apart along it look alike --;
 ** the palettes apart under every vision; palette names checked with the
 ** nearest one named; the check naming a red/green pair of lines under
-** deuteranopia and letting it be once the lines differ in dash. */
+** deuteranopia and letting it be once the lines differ in dash; a net's
+** levels told apart by dash and marker with the theme's redundant. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -278,6 +279,42 @@ test_check(void **state)
     }
 }
 
+/* A cubic's de Casteljau net in Okabe and Ito's palette, whose orange and
+** sky blue (levels 1 and 2) greyscale makes alike: a clash; with the
+** theme's redundant = true the levels differ in dash and marker, and
+** none is left. */
+static void
+test_redundant(void **state)
+{
+    static const double pts[] = { 0, 0, 1, 2, 3, 2, 4, 0,     /* level 0 */
+                                  0.5, 1, 2, 2, 3.5, 1,       /* 1 */
+                                  1.25, 1.5, 2.75, 1.5,       /* 2 */
+                                  2, 1.5 };                   /* 3 */
+    static const size_t counts[] = { 4, 3, 2, 1 };
+    (void)state;
+    for (int redundant = 0; redundant < 2; redundant++) {
+        cf_figure_t *fig;
+        cf_theme_t th;
+        char *json;
+        size_t size;
+        assert_int_equal(cf_figure_create(6, 4, CF_UNIT_CM, &fig, NULL), 0);
+        cf_figure_get_theme(fig, &th);
+        assert_int_equal(cf_theme_set_palette(&th, "okabe-ito", NULL), 0);
+        th.redundant = redundant;
+        assert_int_equal(cf_figure_set_theme(fig, &th), 0);
+        assert_int_equal(cf_figure_add_net(fig, pts, counts, 4, NULL, NULL),
+                         0);
+        assert_int_equal(cf_figure_colour_check(fig, CF__COLOUR_MIN_DE,
+                                                &json, &size, NULL), 0);
+        if (redundant)
+            assert_null(strstr(json, "\"vision\""));
+        else
+            assert_non_null(strstr(json, "{\"vision\": \"greyscale\""));
+        cf_free(json);
+        cf_figure_destroy(fig);
+    }
+}
+
 int
 main(void)
 {
@@ -290,6 +327,7 @@ main(void)
         cmocka_unit_test(test_known_pair),
         cmocka_unit_test(test_palettes),
         cmocka_unit_test(test_check),
+        cmocka_unit_test(test_redundant),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

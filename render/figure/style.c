@@ -400,9 +400,9 @@ use_palette(cf_theme_t *t, const palette_t *p)
 cf_status_t
 cf_theme_set_palette(cf_theme_t *theme, const char *name, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     const char *names[PALETTE_COUNT], *near;
     size_t i;
-    cf_diag_clear(diag);
     if (theme == NULL || name == NULL)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
                            "theme or palette name is NULL");

@@ -266,12 +266,12 @@ cf_status_t
 cf_figure_colour_check(cf_figure_t *fig, double min_de, char **json,
                        size_t *size, cf_diag_t *diag)
 {
+    cf_diag_clear(diag);
     rec_t r;
     cf__buf_t b;
     cf_status_t st;
     unsigned *done = NULL;
     size_t ndone = 0, cap = 0, clashes = 0;
-    cf_diag_clear(diag);
     if (fig == NULL || json == NULL || size == NULL)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
                            "colour check: figure or output is NULL");

@@ -84,4 +84,9 @@ cf_status_t cf__figure_surface_pieces(cf_figure_t *fig, double tol,
                                       cf__surface_piece_fn fn,
                                       cf__surface_fn surf, void *closure);
 
+/* The front and back colours and opacity of element i of fig when it is a
+** shaded surface (for the colour check, render/output/colour-check.c). */
+bool cf__surface_shading(const cf_figure_t *fig, size_t i,
+                         cf_surface_shading_t *out);
+
 #endif

@@ -6,7 +6,9 @@
 ** legend's samples), then every two paints that only their colour tells
 ** apart -- lines of the same dash pattern and widths within a factor of
 ** 1.5, markers of the same shape and sizes within 1.5, any two fills --
-** (a shaded surface's paints left out) whose colours lie at least min_de apart (CIEDE2000) for normal vision
+** (a shaded surface's facets, shades of its colours, stand for its front
+** and back colours; its outline, iso-lines and net are lines as any) whose
+** colours lie at least min_de apart (CIEDE2000) for normal vision
 ** and closer than that for a simulated one (colour-vision.h).
 */
 #include <math.h>
@@ -16,6 +18,7 @@
 
 #include "colour-vision.h"
 #include "output-private.h"
+#include "surface-lines.h"
 
 typedef enum paint_what { PAINT_LINE, PAINT_FILL, PAINT_MARKER } paint_what_t;
 
@@ -64,26 +67,10 @@ same_paint(const paint_t *a, const paint_t *b)
         && strcmp(a->element, b->element) == 0;
 }
 
+/* Paint p into the list unless it is there already. */
 static void
-add(rec_t *r, paint_t *p, double alpha)
+push(rec_t *r, const paint_t *p)
 {
-    size_t i;
-    /* inside no element (the page), in the legend (samples of the
-    ** elements' own paints), or invisible: nothing to compare */
-    if (r->depth < 1 || !(alpha > 0.02))
-        return;
-    /* a shaded surface's facets and lines: shades of its own colours, not
-    ** meant to be told apart */
-    if (strcmp(r->group[r->depth <= GROUP_DEPTH ? r->depth - 1
-                                                   : GROUP_DEPTH - 1],
-                  "surface") == 0)
-        return;
-    for (i = 0; i < (size_t)r->depth && i < GROUP_DEPTH; i++)
-        if (strcmp(r->group[i], "legend") == 0)
-            return;
-    i = (size_t)(r->depth < GROUP_DEPTH ? r->depth : GROUP_DEPTH) - 1;
-    p->element = r->group[i];
-    p->index = r->index[i];
     for (size_t k = 0; k < r->n; k++)
         if (same_paint(&r->p[k], p))
             return;
@@ -98,6 +85,33 @@ add(rec_t *r, paint_t *p, double alpha)
         r->cap = cap;
     }
     r->p[r->n++] = *p;
+}
+
+/* Whether the innermost group is a surface. */
+static bool
+in_surface(const rec_t *r)
+{
+    return r->depth >= 1
+        && strcmp(r->group[r->depth <= GROUP_DEPTH ? r->depth - 1
+                                                      : GROUP_DEPTH - 1],
+                  "surface") == 0;
+}
+
+static void
+add(rec_t *r, paint_t *p, double alpha)
+{
+    size_t i;
+    /* inside no element (the page), in the legend (samples of the
+    ** elements' own paints), or invisible: nothing to compare */
+    if (r->depth < 1 || !(alpha > 0.02))
+        return;
+    for (i = 0; i < (size_t)r->depth && i < GROUP_DEPTH; i++)
+        if (strcmp(r->group[i], "legend") == 0)
+            return;
+    i = (size_t)(r->depth < GROUP_DEPTH ? r->depth : GROUP_DEPTH) - 1;
+    p->element = r->group[i];
+    p->index = r->index[i];
+    push(r, p);
 }
 
 static void
@@ -147,6 +161,11 @@ draw_path(void *ctx, const cf__path_t *path, const cf__paint_t *paint)
     rec_t *r = ctx;
     paint_t p;
     (void)path;
+    /* a shaded surface's facets (and the hairlines of their own colour
+    ** that close the seams): shades of its front and back colours, which
+    ** the check takes from the element itself (surface_colours) */
+    if (paint->fill && in_surface(r))
+        return;
     if (paint->fill) {
         memset(&p, 0, sizeof p);
         p.what = PAINT_FILL;
@@ -196,6 +215,27 @@ static const cf__backend_t colour_backend = {
     "colour check", begin_page, begin_group, end_group, clip, unclip,
     draw_path, draw_marker, draw_text, end_page, NULL
 };
+
+/* The front and back colours of the figure's shaded surfaces, as fills. */
+static void
+surface_colours(cf_figure_t *fig, rec_t *r)
+{
+    for (size_t i = 0; i < cf_figure_element_count(fig); i++) {
+        cf_surface_shading_t sh;
+        paint_t p;
+        if (!cf__surface_shading(fig, i, &sh))
+            continue;
+        for (int side = 0; side < 2; side++) {
+            memset(&p, 0, sizeof p);
+            p.element = side ? "surface back" : "surface front";
+            p.index = i;
+            p.what = PAINT_FILL;
+            p.color = over_white(side ? sh.back : sh.front, sh.opacity);
+            if (sh.opacity * (side ? sh.back : sh.front).a > 0.02)
+                push(r, &p);
+        }
+    }
+}
 
 /* Whether only colour tells paints a and b apart. */
 static bool
@@ -284,6 +324,8 @@ cf_figure_colour_check(cf_figure_t *fig, double min_de, char **json,
     memset(&r, 0, sizeof r);
     memset(&b, 0, sizeof b);
     st = cf__figure_play(fig, 0, &colour_backend, &r, diag);
+    if (st == CF_STATUS_OK)
+        surface_colours(fig, &r);
 
     if (st == CF_STATUS_OK) {
         put(&b, "{\"threshold\": %g, \"paints\": %zu, \"clashes\": [",

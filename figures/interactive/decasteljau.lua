@@ -16,6 +16,11 @@ local t = slider{ name = "t", min = 0, max = 1, default = 0.75,
                   step = 0.01 }
 local c = bezier(P)
 
+-- The levels told apart by dash and marker as well as by colour, which
+-- colour-blind readers and greyscale print need (docs/accessibility.md):
+-- the colours stay the report's.
+theme{ redundant = true }
+
 local f = figure{
   name = "decasteljau",
   page = "fixed", clip = true,  -- one view while points are dragged

@@ -189,6 +189,15 @@ CF_API cf_status_t cf_theme_get(const char *name, cf_theme_t *out,
 CF_API cf_status_t cf_theme_set_palette(cf_theme_t *theme, const char *name,
                                         cf_diag_t *diag);
 
+/* With theme->redundant, level `level` (1, 2, ...) of a construction
+** whose levels differ in colour (a net's, a surface scheme's) dashed and
+** marked its own way too: the dash pattern where style sets none
+** (CF_STYLE_DASH), the marker shape where it sets none (CF_STYLE_MARKER)
+** and the theme's polygons have markers; level 0 (the control polygon) and
+** a theme without redundant leave style as it is. */
+CF_API void cf_theme_level_style(const cf_theme_t *theme, size_t level,
+                                 cf_style_t *style);
+
 /* The font of every label of a theme, set once: family "serif" (Latin
 ** Modern Roman, mathematics in Latin Modern Math as TeX sets it), "sans"
 ** (Latin Modern Sans, mathematics with its letters in Latin Modern Sans

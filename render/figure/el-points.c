@@ -220,42 +220,24 @@ level_color(const cf_figure_t *fig, const net_el_t *e, size_t j,
     return fig->theme.palette[(j - 1) % fig->theme.palette_size];
 }
 
-/* A theme's redundant = true: level j's dash pattern (bp), unless the
-** element sets its own; level 0 (the polygon) stays solid. */
+/* A theme's redundant = true: level j's dash pattern and marker shape
+** (cf_theme_level_style) where the element sets none, the dashes for the
+** lines, the shape for the markers; a level drawn without markers stays
+** so. */
 static void
-level_dash(const cf_figure_t *fig, const net_el_t *e, size_t j,
-           cf_style_t *ls)
+level_redundant(const cf_figure_t *fig, const net_el_t *e, size_t j,
+                bool marker, cf_style_t *ls)
 {
-    static const double dashes[][4] = {
-        { 4.0, 2.0, 0, 0 }, { 1.0, 1.5, 0, 0 }, { 5.0, 1.5, 1.0, 1.5 },
-        { 8.0, 2.5, 0, 0 }, { 2.5, 1.5, 0, 0 }, { 1.0, 1.5, 1.0, 4.0 },
-    };
-    const double *d;
-    size_t k;
-    if (!fig->theme.redundant || j == 0
-        || (e->p.base.style.set & CF_STYLE_DASH))
-        return;
-    d = dashes[(j - 1) % (sizeof dashes / sizeof dashes[0])];
-    ls->dash_count = d[2] > 0 ? 4 : 2;
-    for (k = 0; k < ls->dash_count; k++)
-        ls->dash[k] = d[k];
-}
-
-/* A theme's redundant = true: level j's marker shape, unless the element
-** sets its own; level 0 keeps the polygon's. */
-static void
-level_marker(const cf_figure_t *fig, const net_el_t *e, size_t j,
-             cf_style_t *ls)
-{
-    static const cf_marker_t shapes[] = { CF_MARKER_SQUARE,
-                                          CF_MARKER_DIAMOND,
-                                          CF_MARKER_TRIANGLE,
-                                          CF_MARKER_CIRCLE, CF_MARKER_STAR };
-    if (!fig->theme.redundant || j == 0
-        || (e->p.base.style.set & CF_STYLE_MARKER) || ls->marker
-        == CF_MARKER_NONE)
-        return;
-    ls->marker = shapes[(j - 1) % (sizeof shapes / sizeof shapes[0])];
+    cf_style_t t = e->p.base.style;
+    unsigned added;
+    cf_theme_level_style(&fig->theme, j, &t);
+    added = t.set & ~e->p.base.style.set;
+    if (!marker && (added & CF_STYLE_DASH)) {
+        ls->dash_count = t.dash_count;
+        memcpy(ls->dash, t.dash, sizeof ls->dash);
+    }
+    if (marker && (added & CF_STYLE_MARKER) && ls->marker != CF_MARKER_NONE)
+        ls->marker = t.marker;
 }
 
 /* Lines of every level first (clipped to the window), then the markers
@@ -270,7 +252,7 @@ net_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
     for (j = 0, off = 0; j < e->levels; off += e->counts[j], j++) {
         cf_style_t ls = *s;
         ls.color = level_color(fig, e, j, &s->color, CF_STYLE_COLOR, false);
-        level_dash(fig, e, j, &ls);
+        level_redundant(fig, e, j, false, &ls);
         if (e->counts[j] >= 2) {
             lines_path(dl, l, e->p.pts + 2 * off, e->counts[j], false);
             lines_paint(&ls, false, dl);
@@ -282,7 +264,7 @@ net_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
         ls.marker_color = level_color(fig, e, j, &s->marker_color,
                                       CF_STYLE_COLOR | CF_STYLE_MARKER_COLOR,
                                       true);
-        level_marker(fig, e, j, &ls);
+        level_redundant(fig, e, j, true, &ls);
         markers(dl, l, &ls, e->p.pts + 2 * off, e->counts[j], NULL);
     }
     return CF_STATUS_OK;

@@ -315,6 +315,51 @@ test_redundant(void **state)
     }
 }
 
+/* cf_theme_level_style: levels 1..6 each a dash pattern of their own,
+** levels 1..5 a marker shape of their own (none the polygon's dot); a
+** style's own dash and marker kept; level 0 and a theme without
+** redundant left alone. */
+static void
+test_level_style(void **state)
+{
+    cf_theme_t th;
+    cf_style_t s[7], own;
+    (void)state;
+    assert_int_equal(cf_theme_get("default", &th, NULL), 0);
+    th.redundant = true;
+    for (size_t j = 0; j < 7; j++) {
+        cf_style_init(&s[j]);
+        cf_theme_level_style(&th, j, &s[j]);
+    }
+    assert_int_equal(s[0].set, 0);
+    for (size_t j = 1; j < 7; j++) {
+        assert_true(s[j].set & CF_STYLE_DASH);
+        assert_true(s[j].dash_count >= 2);
+        for (size_t k = 1; k < j; k++)
+            assert_false(s[j].dash_count == s[k].dash_count
+                         && memcmp(s[j].dash, s[k].dash,
+                                   s[j].dash_count * sizeof s[j].dash[0])
+                             == 0);
+        if (j <= 5) {
+            assert_true(s[j].set & CF_STYLE_MARKER);
+            assert_int_not_equal(s[j].marker,
+                                 th.role[CF_ROLE_POLYGON].marker);
+            for (size_t k = 1; k < j; k++)
+                assert_int_not_equal(s[j].marker, s[k].marker);
+        }
+    }
+    cf_style_init(&own);
+    own.set = CF_STYLE_DASH | CF_STYLE_MARKER;
+    own.marker = CF_MARKER_CROSS;
+    cf_theme_level_style(&th, 2, &own);
+    assert_int_equal(own.dash_count, 0);
+    assert_int_equal(own.marker, CF_MARKER_CROSS);
+    th.redundant = false;
+    cf_style_init(&own);
+    cf_theme_level_style(&th, 2, &own);
+    assert_int_equal(own.set, 0);
+}
+
 int
 main(void)
 {
@@ -328,6 +373,7 @@ main(void)
         cmocka_unit_test(test_palettes),
         cmocka_unit_test(test_check),
         cmocka_unit_test(test_redundant),
+        cmocka_unit_test(test_level_style),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -19,6 +19,7 @@
 #include <cmocka.h>
 
 #include "curvefig/figure.h"
+#include "script.h"
 #include "shipped.h"
 
 typedef struct tally {
@@ -85,11 +86,51 @@ test_shipped(void **state)
     assert_int_equal(failed, 0);
 }
 
+/* A surface's de Casteljau scheme whose levels alternate red and green
+** (#d62728, #2ca02c: 4.6 apart under deuteranopia): a clash; with the
+** theme's redundant = true its levels differ in dash and marker
+** (cf_theme_level_style), and none is left. */
+static void
+test_surface_scheme_redundant(void **state)
+{
+    (void)state;
+    for (int redundant = 0; redundant < 2; redundant++) {
+        char code[1024], *json;
+        size_t size;
+        cf_script_t *sc = NULL;
+        snprintf(code, sizeof code,
+                 "theme{ redundant = %s }\n"
+                 "local s = bezier_surface{ points = {\n"
+                 "  { {0, 0, 0}, {0, 1, 1}, {0, 2, 0} },\n"
+                 "  { {1, 0, 1}, {1, 1, 2}, {1, 2, 1} },\n"
+                 "  { {2, 0, 0}, {2, 1, 1}, {2, 2, 0} } } }\n"
+                 "local f = figure{ name = 's', width = '6cm', "
+                 "height = '5cm', view = { 30, 20 } }\n"
+                 "f:decasteljau_surface(s, 0.4, 0.6, { colors = { "
+                 "'#d62728', '#2ca02c', '#d62728', '#2ca02c' } })\n",
+                 redundant ? "true" : "false");
+        assert_int_equal(cf_script_create(NULL, NULL, &sc, NULL), 0);
+        if (cf_script_run_string(sc, code, "scheme.lua") != CF_STATUS_OK)
+            fail_msg("%s", cf_script_error(sc));
+        assert_int_equal(cf_script_figure_count(sc), 1);
+        assert_int_equal(cf_figure_colour_check(cf_script_figure(sc, 0),
+                                                10.0, &json, &size, NULL),
+                         0);
+        if (redundant)
+            assert_null(strstr(json, "\"vision\""));
+        else
+            assert_non_null(strstr(json, "{\"vision\": \"deuteranopia\""));
+        cf_free(json);
+        cf_script_destroy(sc);
+    }
+}
+
 int
 main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_shipped),
+        cmocka_unit_test(test_surface_scheme_redundant),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

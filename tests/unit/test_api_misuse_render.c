@@ -197,6 +197,7 @@ test_figure(void **state)
     cf_label_each_command(NULL, NULL);   /* no visitor: nothing */
     BAD(cf_theme_set_fonts(NULL, "sans", 10, NULL));
     BAD(cf_theme_set_palette(NULL, "default", NULL));
+    cf_theme_level_style(NULL, 1, NULL);   /* nothing to set: nothing */
     BAD(cf_figure_colour_check(fig, 10, NULL, &size, NULL));
     BAD(cf_figure_colour_check(NULL, 10, (char **)&data, &size, NULL));
     BAD(cf_figure_colour_check(fig, NAN, (char **)&data, &size, NULL));

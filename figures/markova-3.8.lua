@@ -118,6 +118,9 @@ local function inside(p, w)
   return p[1] >= w[1] and p[1] <= w[2] and p[2] >= w[3] and p[2] <= w[4]
 end
 
+-- the de Boor net's columns told apart by dash and marker as well as by
+-- colour (its red point beside the green chain, docs/accessibility.md)
+theme{ redundant = true }
 local g = figure{
   name = "markova-3.9",
   caption = "Subdivision at u = 0.5, the de Boor net: the first points " ..

@@ -15,6 +15,11 @@
 -- is a deep yellow (#e8b800) so that it stays visible on white paper.
 -- Labels (not given by the report): P_0..P_4 and b_0^4(3/4).
 
+-- The levels told apart by dash and marker as well as by colour, which
+-- colour-blind readers and greyscale print need (docs/accessibility.md):
+-- the colours stay the report's.
+theme{ redundant = true }
+
 local P = { {0, 5}, {1, -1}, {3, 0}, {4, 3}, {6, 10} }
 local c = bezier(P)
 local t = 3 / 4

@@ -20,6 +20,11 @@ local t = 3 / 4
 local L = c:decasteljau(t)
 assert(#L == 5 and #L[5] == 1)
 local colors = { "black", "blue", "orange", "#e8b800" }
+-- the levels told apart by dash and marker as well as by colour (as
+-- theme{ redundant = true } does for a net; docs/accessibility.md), for
+-- colour-blind readers and greyscale print: the colours stay the report's
+local dashes = { "solid", { 4, 2 }, { 1, 1.5 }, { 5, 1.5, 1, 1.5 } }
+local marks = { "dot", "square", "diamond", "triangle" }
 
 local f = figure{
   name = "overlay-decasteljau",
@@ -31,6 +36,7 @@ local f = figure{
 f:curve(c, { color = "red", visible = "5-" })
 for j = 1, 4 do
   f:polygon(L[j], { color = colors[j], marker_color = colors[j],
+                    dash = dashes[j], marker = marks[j],
                     width = 1.0, visible = j .. "-" })
 end
 f:points(L[5], { marker = "star", color = "green", marker_color = "green",

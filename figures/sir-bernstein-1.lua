@@ -17,9 +17,9 @@ local function binomial(n, k)
   return r
 end
 
--- palette colours 1-5, then brown (palette 6 is a light yellow that
--- reads badly as label text)
-local colour = { 1, 2, 3, 4, 5, "brown" }
+-- palette colours 1-6 (apart for colour-blind readers too:
+-- docs/accessibility.md)
+local colour = { 1, 2, 3, 4, 5, 6 }
 
 for n = 1, 5 do
   local f = figure{

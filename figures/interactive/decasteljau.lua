@@ -19,6 +19,11 @@ local t = slider{ name = "t", min = 0, max = 1, default = 0.75,
 animate{ slider = "t", from = 0, to = 1, seconds = 4, fps = 25 }
 local c = bezier(P)
 
+-- The levels told apart by dash and marker as well as by colour, which
+-- colour-blind readers and greyscale print need (docs/accessibility.md):
+-- the colours stay the report's.
+theme{ redundant = true }
+
 local f = figure{
   name = "decasteljau",
   page = "fixed", clip = true,  -- one view while points are dragged

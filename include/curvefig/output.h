@@ -128,6 +128,23 @@ CF_API cf_status_t cf_figure_dump(cf_figure_t *fig,
                                   char **text, size_t *size,
                                   cf_diag_t *diag);
 
+/* The colours of the figure that a colour vision deficiency or a
+** greyscale print makes hard to tell apart (docs/accessibility.md): every
+** two of its elements' paints that only colour tells apart (lines of one
+** dash pattern and widths within a factor of 1.5, markers of one shape,
+** fills), at least min_de apart (CIEDE2000) in normal vision and closer
+** than min_de under protanopia, deuteranopia, tritanopia (Machado et al.
+** 2009, severity 1) or in greyscale.  As JSON into *json (NUL-terminated,
+** *size bytes, released with cf_free): {"threshold": T, "paints": N,
+** "clashes": [{"vision": "protanopia", "paint": "line", "de": D,
+** "normal_de": D0, "a": {"element": "net", "index": I, "color":
+** "#rrggbb"}, "b": {...}}, ...]}, index counting the figure's elements
+** from 1 in the order they were added; one clash per pair of colours,
+** paint and vision. */
+CF_API cf_status_t cf_figure_colour_check(cf_figure_t *fig, double min_de,
+                                          char **json, size_t *size,
+                                          cf_diag_t *diag);
+
 /* The map from data coordinates (x, y) of the figure's window to page bp
 ** (y down; the user units of the SVG) as the figure is laid out with
 ** these options: page x = map[0] x + map[2] y + map[4], page y = map[1] x

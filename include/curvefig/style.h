@@ -171,6 +171,9 @@ typedef struct cf_theme {
     ** default "Latin Modern Roman,CMU Serif,Noto Serif CJK SC". */
     char font_family[CF_FONT_FAMILY_MAX];
     double tick_size;                     /* axis tick length, bp */
+    bool redundant;                       /* a second channel besides
+                                             colour: the levels of a net
+                                             dashed each its own way */
 } cf_theme_t;
 
 /* Built-in themes: "default" (colour, legible in print, on a projector
@@ -178,6 +181,22 @@ typedef struct cf_theme {
 ** another name. */
 CF_API cf_status_t cf_theme_get(const char *name, cf_theme_t *out,
                                 cf_diag_t *diag);
+
+/* The palette of a theme by name (docs/accessibility.md): "default",
+** "okabe-ito" (Okabe and Ito's eight colours for colour-blind readers) or
+** "greyscale" (for greyscale print); an unknown name is an error naming
+** the nearest one. */
+CF_API cf_status_t cf_theme_set_palette(cf_theme_t *theme, const char *name,
+                                        cf_diag_t *diag);
+
+/* With theme->redundant, level `level` (1, 2, ...) of a construction
+** whose levels differ in colour (a net's, a surface scheme's) dashed and
+** marked its own way too: the dash pattern where style sets none
+** (CF_STYLE_DASH), the marker shape where it sets none (CF_STYLE_MARKER)
+** and the theme's polygons have markers; level 0 (the control polygon) and
+** a theme without redundant leave style as it is. */
+CF_API void cf_theme_level_style(const cf_theme_t *theme, size_t level,
+                                 cf_style_t *style);
 
 /* The font of every label of a theme, set once: family "serif" (Latin
 ** Modern Roman, mathematics in Latin Modern Math as TeX sets it), "sans"

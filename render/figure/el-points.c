@@ -220,6 +220,26 @@ level_color(const cf_figure_t *fig, const net_el_t *e, size_t j,
     return fig->theme.palette[(j - 1) % fig->theme.palette_size];
 }
 
+/* A theme's redundant = true: level j's dash pattern and marker shape
+** (cf_theme_level_style) where the element sets none, the dashes for the
+** lines, the shape for the markers; a level drawn without markers stays
+** so. */
+static void
+level_redundant(const cf_figure_t *fig, const net_el_t *e, size_t j,
+                bool marker, cf_style_t *ls)
+{
+    cf_style_t t = e->p.base.style;
+    unsigned added;
+    cf_theme_level_style(&fig->theme, j, &t);
+    added = t.set & ~e->p.base.style.set;
+    if (!marker && (added & CF_STYLE_DASH)) {
+        ls->dash_count = t.dash_count;
+        memcpy(ls->dash, t.dash, sizeof ls->dash);
+    }
+    if (marker && (added & CF_STYLE_MARKER) && ls->marker != CF_MARKER_NONE)
+        ls->marker = t.marker;
+}
+
 /* Lines of every level first (clipped to the window), then the markers
 ** on top. */
 static cf_status_t
@@ -232,6 +252,7 @@ net_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
     for (j = 0, off = 0; j < e->levels; off += e->counts[j], j++) {
         cf_style_t ls = *s;
         ls.color = level_color(fig, e, j, &s->color, CF_STYLE_COLOR, false);
+        level_redundant(fig, e, j, false, &ls);
         if (e->counts[j] >= 2) {
             lines_path(dl, l, e->p.pts + 2 * off, e->counts[j], false);
             lines_paint(&ls, false, dl);
@@ -243,6 +264,7 @@ net_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
         ls.marker_color = level_color(fig, e, j, &s->marker_color,
                                       CF_STYLE_COLOR | CF_STYLE_MARKER_COLOR,
                                       true);
+        level_redundant(fig, e, j, true, &ls);
         markers(dl, l, &ls, e->p.pts + 2 * off, e->counts[j], NULL);
     }
     return CF_STATUS_OK;

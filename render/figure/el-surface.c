@@ -139,6 +139,20 @@ is_surface(const cf__element_t *e)
     return e->kind->fini == surface_fini;
 }
 
+bool
+cf__surface_shading(const cf_figure_t *fig, size_t i,
+                    cf_surface_shading_t *out)
+{
+    const surface_el_t *e;
+    if (i >= fig->count || !is_surface(fig->els[i]))
+        return false;
+    e = (const surface_el_t *)fig->els[i];
+    if (e->opt.shading.shade == CF_SHADE_NONE)
+        return false;
+    *out = e->opt.shading;
+    return true;
+}
+
 /* A new scene of the figure's occluding surfaces for tolerance tol (data
 ** units), each element's number in it set; NULL (no error) when there is
 ** none. */

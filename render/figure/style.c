@@ -355,22 +355,77 @@ role_style(unsigned rgb, double width, cf_marker_t marker, double msize,
     return s;
 }
 
+/* ---- palettes ----------------------------------------------------------- */
+
+typedef struct palette {
+    const char *name;
+    size_t size;
+    unsigned rgb[CF_PALETTE_MAX];
+} palette_t;
+
+static const palette_t palettes[] = {
+    /* apart by a CIEDE2000 of 10 or more under protanopia, deuteranopia
+    ** and tritanopia (Machado et al. 2009), every two of them and each
+    ** from the polygon's grey (level 0 of a net); the first three (a
+    ** cubic's de Casteljau levels) and that grey also in greyscale
+    ** (docs/accessibility.md) */
+    { "default", 8, { 0x2b3a8c,     /* dark blue */
+                      0xe69f00,     /* orange */
+                      0xa0522d,     /* sienna */
+                      0x01665e,     /* dark teal */
+                      0xd55e00,     /* vermillion */
+                      0x6699cc,     /* mid blue */
+                      0x0072b2,     /* blue */
+                      0x92c5de } }, /* pale blue */
+    /* M. Okabe and K. Ito, "Color Universal Design" (2002, 2008): orange,
+    ** sky blue, bluish green, yellow, blue, vermillion, reddish purple,
+    ** black */
+    { "okabe-ito", 8, { 0xe69f00, 0x56b4e9, 0x009e73, 0xf0e442, 0x0072b2,
+                        0xd55e00, 0xcc79a7, 0x000000 } },
+    /* greys apart from each other and from the polygon's (0x8c8c8c) */
+    { "greyscale", 3, { 0x1a1a1a, 0x5c5c5c, 0xb4b4b4 } },
+};
+
+#define PALETTE_COUNT (sizeof palettes / sizeof palettes[0])
+
+static void
+use_palette(cf_theme_t *t, const palette_t *p)
+{
+    size_t i;
+    for (i = 0; i < p->size; i++)
+        t->palette[i] = rgb_color(p->rgb[i], 1.0);
+    t->palette_size = p->size;
+}
+
+cf_status_t
+cf_theme_set_palette(cf_theme_t *theme, const char *name, cf_diag_t *diag)
+{
+    cf_diag_clear(diag);
+    const char *names[PALETTE_COUNT], *near;
+    size_t i;
+    if (theme == NULL || name == NULL)
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "theme or palette name is NULL");
+    for (i = 0; i < PALETTE_COUNT; i++) {
+        names[i] = palettes[i].name;
+        if (strcmp(name, palettes[i].name) == 0) {
+            use_palette(theme, &palettes[i]);
+            return CF_STATUS_OK;
+        }
+    }
+    near = cf_nearest_name(name, names, PALETTE_COUNT);
+    if (near != NULL)
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "unknown palette \"%s\" (did you mean \"%s\"?)",
+                           name, near);
+    return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                       "unknown palette \"%s\" (use default, okabe-ito or "
+                       "greyscale)", name);
+}
+
 static void
 theme_default(cf_theme_t *t)
 {
-    /* Palette: distinct hues whose lightness also differs, so that levels
-    ** stay apart in greyscale (Rec. 601 luma in brackets). */
-    static const unsigned palette[] = {
-        0x1f5fbf,  /* blue   (0.34) */
-        0xe8821e,  /* orange (0.61) */
-        0x2a9d3c,  /* green  (0.45) */
-        0x9e1b1b,  /* dark red (0.26) */
-        0x8e44ad,  /* purple (0.37) */
-        0xe6c229,  /* yellow (0.75) */
-        0x17a2b8,  /* teal   (0.52) */
-        0x6d4c41,  /* brown  (0.34) */
-    };
-    size_t i;
     memset(t, 0, sizeof *t);
     t->role[CF_ROLE_CURVE] = role_style(0x14306e, 1.5, CF_MARKER_NONE, 0,
                                         0x14306e);
@@ -407,9 +462,7 @@ theme_default(cf_theme_t *t)
                                         0x14306e);
     t->role[CF_ROLE_NET] = role_style(0x000000, 0.8, CF_MARKER_DOT, 3.4,
                                       0x000000);
-    for (i = 0; i < sizeof palette / sizeof palette[0]; i++)
-        t->palette[i] = rgb_color(palette[i], 1.0);
-    t->palette_size = sizeof palette / sizeof palette[0];
+    use_palette(t, &palettes[0]);
     t->background = rgb_color(0xffffff, 1.0);
     snprintf(t->font_family, sizeof t->font_family, "%s",
              CF__DEFAULT_FAMILY);

@@ -109,5 +109,9 @@ void cf__space_marker(const cf__layout_t *l, const cf_style_t *s,
 cf_status_t cf__space_pieces(cf_figure_t *fig, cf__element_t *el,
                              size_t index, double tol,
                              cf__surface_piece_fn fn, void *closure);
+/* The front and back colours and opacity of element i of fig when it is a
+** shaded surface (for the colour check, render/output/colour-check.c). */
+bool cf__surface_shading(const cf_figure_t *fig, size_t i,
+                         cf_surface_shading_t *out);
 
 #endif

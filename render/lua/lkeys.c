@@ -95,8 +95,11 @@ static const cf__lua_key_t figure_keys[] = {
     KEY("target"), KEY("clip"),
     NAMES("legend_place", box_places), KEY("legend_frame"), END,
 };
+static const char *const palettes[] = { "default", "okabe-ito", "greyscale",
+                                        NULL };
 static const cf__lua_key_t theme_keys[] = {
-    KEY("family"), KEY("size"), END,
+    KEY("family"), KEY("size"), NAMES("palette", palettes), KEY("redundant"),
+    END,
 };
 static const cf__lua_key_t legend_keys[] = {
     NAMES("place", box_places), KEY("frame"), END,

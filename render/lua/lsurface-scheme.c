@@ -17,7 +17,8 @@
                                                    (diag))
 
 /* The style of level l: the options' style in colour l (colors[l - 1] or
-** the palette's). */
+** the palette's), dashed and marked its own way under the theme's
+** redundant = true. */
 static cf_style_t
 level_style(lua_State *L, cf_figure_t *fig, int opts, const cf_style_t *st,
             int l, const char *fn)
@@ -39,6 +40,7 @@ level_style(lua_State *L, cf_figure_t *fig, int opts, const cf_style_t *st,
     }
     lua_pop(L, 1);
     s.marker_color = s.color;
+    cf_theme_level_style(&th, (size_t)l, &s);   /* redundant = true */
     return s;
 }
 

@@ -1,5 +1,6 @@
 /*
 ** The fonts of a whole set of figures: theme{ family = "sans", size = 11 }
+** (and their colours: theme{ palette = "okabe-ito", redundant = true })
 ** (TeX points) in a script sets them for every figure made after it; the
 ** tool's --font, --font-size and --theme set them for every script it
 ** renders, over the scripts' theme{} calls; figure{ font = ..., font_size
@@ -18,6 +19,8 @@
 #define SCRIPT_SIZE "curvefig.font_size"
 #define TOOL_FAMILY "curvefig.tool_font_family"
 #define TOOL_SIZE "curvefig.tool_font_size"
+#define SCRIPT_PALETTE "curvefig.palette"
+#define SCRIPT_REDUNDANT "curvefig.redundant"
 
 /* The family and size (bp, 0: none) in registry fields fam and size. */
 static void
@@ -65,7 +68,43 @@ read_fonts(lua_State *L, int idx, const char *fn, const char *fkey,
     check_fonts(L, fn, *family, *bp);
 }
 
-/* theme{ family = "serif" | "sans" | "Family,...", size = "11pt" } */
+/* palette = NAME and redundant = BOOL of theme{} at idx, kept for the
+** figures made after it (the schema checked the name). */
+static void
+read_colours(lua_State *L, int idx)
+{
+    if (cf__lua_field(L, idx, "palette") != LUA_TNIL) {
+        (void)cf__lua_opt_text(L, -1, "theme", "palette", NULL);
+        lua_setfield(L, LUA_REGISTRYINDEX, SCRIPT_PALETTE);
+    } else {
+        lua_pop(L, 1);
+    }
+    if (cf__lua_field(L, idx, "redundant") != LUA_TNIL) {
+        lua_pushboolean(L, cf__lua_opt_bool_arg(L, -1, "theme", "redundant",
+                                                false));
+        lua_setfield(L, LUA_REGISTRYINDEX, SCRIPT_REDUNDANT);
+    }
+    lua_pop(L, 1);
+}
+
+/* The palette and redundancy of theme{} applied to th. */
+static void
+apply_colours(lua_State *L, cf_theme_t *th)
+{
+    cf_diag_t diag;
+    cf_diag_clear(&diag);
+    if (lua_getfield(L, LUA_REGISTRYINDEX, SCRIPT_PALETTE) == LUA_TSTRING
+        && cf_theme_set_palette(th, lua_tostring(L, -1), &diag)
+               != CF_STATUS_OK)
+        luaL_error(L, "theme: %s", diag.msg);
+    lua_pop(L, 1);
+    if (lua_getfield(L, LUA_REGISTRYINDEX, SCRIPT_REDUNDANT) == LUA_TBOOLEAN)
+        th->redundant = lua_toboolean(L, -1);
+    lua_pop(L, 1);
+}
+
+/* theme{ family = "serif" | "sans" | "Family,...", size = "11pt",
+** palette = "okabe-ito", redundant = true } */
 static int
 l_theme(lua_State *L)
 {
@@ -74,6 +113,7 @@ l_theme(lua_State *L)
     lua_settop(L, 1);
     luaL_checktype(L, 1, LUA_TTABLE);
     cf__lua_check_table(L, 1, CF__KEYS_THEME);
+    read_colours(L, 1);
     cf__lua_field(L, 1, "family");
     cf__lua_field(L, 1, "size");
     read_fonts(L, 2, "theme", "family", "size", &family, &bp);
@@ -131,6 +171,7 @@ cf__lua_apply_fonts(lua_State *L, int opts, cf_figure_t *fig)
     cf_diag_clear(&diag);
     if (cf_theme_set_fonts(&th, family, bp, &diag) != CF_STATUS_OK)
         luaL_error(L, "figure: %s", diag.msg);
+    apply_colours(L, &th);
     if (cf_figure_set_theme(fig, &th) != CF_STATUS_OK) {
         cf_figure_status(fig, &diag);
         luaL_error(L, "figure: %s", diag.msg);

@@ -23,6 +23,12 @@ static const char *const overview[] = {
     "  run SCRIPT.lua      run the script for what it prints (computations)\n",
     "  list SCRIPT.lua     print the names of the figures the script defines\n",
     "                      (one per line; the script's own prints go to stderr)\n",
+    "  check SCRIPT.lua [--json] [--min-de N]\n",
+    "                      name two elements of a figure whose colours\n",
+    "                      protanopia, deuteranopia, tritanopia or greyscale\n",
+    "                      print bring closer than a CIEDE2000 of N (default\n",
+    "                      10); --json: as JSON on stdout; exit 1 when some\n",
+    "                      do (docs/accessibility.md)\n",
     "  live SCRIPT.lua [--port N]\n",
     "                      serve the script's figures with their sliders and\n",
     "                      draggable points on 127.0.0.1 (docs/interactive.md)\n",
@@ -32,8 +38,8 @@ static const char *const overview[] = {
     "  compare A B         compare two images (PNG or SVG) pixel by pixel\n",
     "  test SCRIPT... | DIR --references REF [--update]\n",
     "                      check every figure against its reference image\n",
-    "  help [TOPIC]        this text; TOPIC: render, run, list, gallery,\n",
-    "                      compare, test, live, language (the figure\n",
+    "  help [TOPIC]        this text; TOPIC: render, run, list, check,\n",
+    "                      gallery, compare, test, live, language (the figure\n",
     "                      language reference), labels (every command\n",
     "                      of labels)\n",
     "  --version           print the version\n",
@@ -99,7 +105,7 @@ static const char *const overview[] = {
     "                      figures' files are linked relative to it, the\n",
     "                      scripts read relative to the current directory\n",
     "  --title TEXT        the page title\n",
-    "Limits (render, run, list; live: of every run):\n",
+    "Limits (render, run, list, check; live: of every run):\n",
     "  --max-memory MIB    memory a script may use (default 256)\n",
     "  --max-instructions N  Lua instructions a script may run (default 5e8;\n",
     "                      every 16 bytes it allocates count as one)\n",
@@ -148,8 +154,8 @@ put_command(const char *kind, const char *name, const char *what,
     printf("  %-10s \\%-14s %s\n", kind, name, what);
 }
 
-static const char *const commands[] = { "render", "run", "list", "gallery",
-                                        NULL };
+static const char *const commands[] = { "render", "run", "list", "check",
+                                        "gallery", NULL };
 
 static void
 put_lines(const char *const *lines)
@@ -190,6 +196,6 @@ cf__tool_help(const char *topic)
         }
     }
     fprintf(stderr, "curvefig: no help on '%s'; topics: render, run, list, "
-            "gallery, compare, test, live, language, labels\n", topic);
+            "check, gallery, compare, test, live, language, labels\n", topic);
     return 2;
 }

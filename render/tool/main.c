@@ -5,6 +5,7 @@
 **                              [--only NAME[,NAME...]] [--tight] [--steps]
 **   curvefig run SCRIPT.lua
 **   curvefig list SCRIPT.lua
+**   curvefig check SCRIPT.lua [--json] [--min-de N] (colours.c)
 **   curvefig live SCRIPT.lua [--port N] (live.h)
 **   curvefig gallery -o INDEX.html MANIFEST...
 **   curvefig compare A B ...; curvefig test SCRIPT... --references DIR ...
@@ -56,6 +57,8 @@ typedef struct options {
     bool no_labels;
     bool verbose;
     bool long_list;
+    bool json;                /* check: JSON on stdout */
+    double min_de;            /* check: the least CIEDE2000 distance */
     cf__tool_limits limits;
     cf__tool_anim_t anim;     /* --sweep and the other options of an
                                  animation (animate.h) */
@@ -110,6 +113,7 @@ static const char *const known_options[] = {
     "--seed", "--help", "--verbose", "--long", "--tight", "--steps",
     "--no-labels", "--sweep", "--frames", "--fps", "--seconds", "--ease",
     "--bounce", "--step-seconds", "--animate", "--workers", "--prefix",
+    "--json", "--min-de",
 };
 
 static int
@@ -181,7 +185,7 @@ takes_value(const char *opt)
         "-o", "--output", "-f", "--formats", "--dpi", "--only", "--manifest",
         "--title", "--max-memory", "--max-instructions", "--timeout",
         "--font", "--font-size", "--theme", "--background", "--width",
-        "--height", "--seed", "--prefix", NULL,
+        "--height", "--seed", "--prefix", "--min-de", NULL,
     };
     for (int i = 0; with_value[i] != NULL; i++)
         if (strcmp(opt, with_value[i]) == 0)
@@ -199,6 +203,7 @@ parse_args(int argc, char **argv, options *o, int *rc)
     o->formats = CF_FORMAT_BIT(CF_FORMAT_SVG) | CF_FORMAT_BIT(CF_FORMAT_PDF) |
                  CF_FORMAT_BIT(CF_FORMAT_PNG);
     o->dpi = 150;
+    o->min_de = CF__TOOL_MIN_DE;
     o->seed = CF_SCRIPT_DEFAULT_SEED;
     o->limits.timeout = CF__TOOL_TIMEOUT;
     if (argc < 2) {
@@ -220,6 +225,7 @@ parse_args(int argc, char **argv, options *o, int *rc)
     }
     if (strcmp(o->command, "render") != 0 && strcmp(o->command, "run") != 0 &&
         strcmp(o->command, "list") != 0 &&
+        strcmp(o->command, "check") != 0 &&
         strcmp(o->command, "gallery") != 0) {
         *rc = usage_error("unknown command '%s'", o->command);
         return -1;
@@ -254,6 +260,9 @@ parse_args(int argc, char **argv, options *o, int *rc)
         } else if (strcmp(a, "--no-labels") == 0) {
             o->no_labels = true;
             takes = false;
+        } else if (strcmp(a, "--json") == 0) {
+            o->json = true;
+            takes = false;
         } else if (takes_value(a) && v == NULL) {
             *rc = usage_error("option '%s' needs a value", a);
             return -1;
@@ -285,6 +294,12 @@ parse_args(int argc, char **argv, options *o, int *rc)
                          near != NULL ? "did you mean " : "",
                          near != NULL ? near : "", near != NULL ? "? " : "");
                 *rc = usage_error("%s", msg);
+                return -1;
+            }
+        } else if (strcmp(a, "--min-de") == 0) {
+            if (cf__tool_number(v, 0.001, 100, &o->min_de) != 0) {
+                *rc = usage_error("--min-de '%s': give a CIEDE2000 distance "
+                                  "from 0.001 to 100", v);
                 return -1;
             }
         } else if (strcmp(a, "--dpi") == 0) {
@@ -730,6 +745,8 @@ run_script(const options *o)
             else
                 printf("%s\n", cf_script_figure_name(s, i));
         }
+    } else if (strcmp(o->command, "check") == 0) {
+        rc = cf__tool_colours(s, o->script, o->min_de, o->json);
     } else if (strcmp(o->command, "render") == 0) {
         if (check_only(s, o) != 0)
             rc = EXIT_USAGE;

@@ -4,6 +4,7 @@
 #ifndef CURVEFIG_TOOL_H
 #define CURVEFIG_TOOL_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdio.h>
 
@@ -60,5 +61,14 @@ int cf__tool_gallery(const char *out, const char *title,
 ** the figure fonts (fonts.c), unless the user chose one or the fonts are
 ** elsewhere.  Returns which configuration is in use, for --version. */
 const char *cf__tool_fonts_init(void);
+
+/* curvefig check (colours.c): the colour clashes of every figure of the
+** run script s, as lines on stderr (json: and the checks as JSON on
+** stdout); 0 when none, 1 otherwise.  CF__TOOL_MIN_DE is the default
+** least distance (docs/accessibility.md). */
+#define CF__TOOL_MIN_DE 10.0
+struct cf_script;
+int cf__tool_colours(const struct cf_script *s, const char *script,
+                     double min_de, bool json);
 
 #endif

@@ -19,4 +19,10 @@ typedef int (*tu_figure_check_t)(void *ctx, const char *script,
 size_t tu_each_shipped_figure(const char *root, tu_figure_check_t check,
                               void *ctx, size_t *failed);
 
+/* The same over the scripts of root/figures and of every directory in it
+** (figures/interactive, figures/surfaces, figures/examples, ...), run as
+** they are: sliders at their default values. */
+size_t tu_each_shipped_figure_all(const char *root, tu_figure_check_t check,
+                                  void *ctx, size_t *failed);
+
 #endif

@@ -196,6 +196,12 @@ test_figure(void **state)
     BAD(cf_figure_get_fit(NULL, NULL, NULL));
     cf_label_each_command(NULL, NULL);   /* no visitor: nothing */
     BAD(cf_theme_set_fonts(NULL, "sans", 10, NULL));
+    BAD(cf_theme_set_palette(NULL, "default", NULL));
+    cf_theme_level_style(NULL, 1, NULL);   /* nothing to set: nothing */
+    BAD(cf_figure_colour_check(fig, 10, NULL, &size, NULL));
+    BAD(cf_figure_colour_check(NULL, 10, (char **)&data, &size, NULL));
+    BAD(cf_figure_colour_check(fig, NAN, (char **)&data, &size, NULL));
+    assert_null(data);
     BAD(cf_figure_set_background(NULL, CF_BACKGROUND_NONE));
     BAD(cf_figure_bspline_knots(fig, NULL, NULL, NULL, NULL, NULL, NULL));
     BAD(cf_figure_add_bezier_tangent(fig, NULL, 0, 0, NULL, NULL));

@@ -211,9 +211,19 @@ end_page(void *ctx)
     return ((rec_t *)ctx)->failed ? -1 : 0;
 }
 
+/* A smooth-shaded surface's mesh: like its flat facets above, its colours
+** are the element's front and back (surface_colours). */
+static void
+draw_mesh(void *ctx, const cf__mesh_tri_t *t, size_t n)
+{
+    (void)ctx;
+    (void)t;
+    (void)n;
+}
+
 static const cf__backend_t colour_backend = {
     "colour check", begin_page, begin_group, end_group, clip, unclip,
-    draw_path, draw_marker, draw_text, end_page, NULL
+    draw_path, draw_marker, draw_text, end_page, NULL, draw_mesh
 };
 
 /* The front and back colours of the figure's shaded surfaces, as fills. */

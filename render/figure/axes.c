@@ -346,7 +346,7 @@ axes_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
 
 
 static const cf__kind_t axes_kind = {
-    "axes", CF__KIND_AXES, axes_fini, axes_bounds, axes_draw, NULL
+    "axes", CF__KIND_AXES, axes_fini, axes_bounds, axes_draw, NULL, NULL, NULL
 };
 
 cf_status_t

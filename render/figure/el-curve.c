@@ -146,7 +146,7 @@ curve_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
 }
 
 static const cf__kind_t curve_kind = {
-    "curve", 0, curve_fini, curve_bounds, curve_draw, NULL
+    "curve", 0, curve_fini, curve_bounds, curve_draw, NULL, NULL, NULL
 };
 
 cf__element_t *

@@ -77,7 +77,7 @@ label_auto(cf__element_t *el, double *x, double *y, cf__text_t **text,
 }
 
 static const cf__kind_t label_kind = {
-    "label", 0, label_fini, label_bounds, label_draw, label_auto
+    "label", 0, label_fini, label_bounds, label_draw, label_auto, NULL, NULL
 };
 
 cf_status_t
@@ -208,7 +208,7 @@ arrow_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
 }
 
 static const cf__kind_t arrow_kind = {
-    "arrow", 0, arrow_fini, arrow_bounds, arrow_draw, NULL
+    "arrow", 0, arrow_fini, arrow_bounds, arrow_draw, NULL, NULL, NULL
 };
 
 cf_status_t

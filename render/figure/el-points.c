@@ -175,22 +175,22 @@ hull_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
 }
 
 static const cf__kind_t polygon_kind = {
-    "polygon", 0, pts_fini, pts_bounds, lines_draw, NULL
+    "polygon", 0, pts_fini, pts_bounds, lines_draw, NULL, NULL, NULL
 };
 static const cf__kind_t polyline_kind = {
-    "polyline", 0, pts_fini, pts_bounds, lines_draw, NULL
+    "polyline", 0, pts_fini, pts_bounds, lines_draw, NULL, NULL, NULL
 };
 static const cf__kind_t points_kind = {
-    "points", 0, pts_fini, pts_bounds, points_draw, NULL
+    "points", 0, pts_fini, pts_bounds, points_draw, NULL, NULL, NULL
 };
 static const cf__kind_t knots_kind = {
-    "knot marks", 0, pts_fini, pts_bounds, points_draw, NULL
+    "knot marks", 0, pts_fini, pts_bounds, points_draw, NULL, NULL, NULL
 };
 static const cf__kind_t hull_kind = {
-    "hull", CF__KIND_SHADING, pts_fini, pts_bounds, hull_draw, NULL
+    "hull", CF__KIND_SHADING, pts_fini, pts_bounds, hull_draw, NULL, NULL, NULL
 };
 static const cf__kind_t fill_kind = {
-    "fill", CF__KIND_SHADING, pts_fini, pts_bounds, fill_draw, NULL
+    "fill", CF__KIND_SHADING, pts_fini, pts_bounds, fill_draw, NULL, NULL, NULL
 };
 
 /* ---- nets --------------------------------------------------------------- */
@@ -271,7 +271,7 @@ net_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
 }
 
 static const cf__kind_t net_kind = {
-    "net", 0, net_fini, pts_bounds, net_draw, NULL
+    "net", 0, net_fini, pts_bounds, net_draw, NULL, NULL, NULL
 };
 
 /* ---- adding ------------------------------------------------------------- */

@@ -223,13 +223,13 @@ space_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
 }
 
 static const cf__kind_t polyline_kind = {
-    "polyline", 0, space_fini, space_bounds, space_draw, NULL
+    "polyline", 0, space_fini, space_bounds, space_draw, NULL, NULL, NULL
 };
 static const cf__kind_t polygon_kind = {
-    "polygon", 0, space_fini, space_bounds, space_draw, NULL
+    "polygon", 0, space_fini, space_bounds, space_draw, NULL, NULL, NULL
 };
 static const cf__kind_t points_kind = {
-    "points", 0, space_fini, space_bounds, space_draw, NULL
+    "points", 0, space_fini, space_bounds, space_draw, NULL, NULL, NULL
 };
 
 static bool

@@ -153,62 +153,6 @@ cf__surface_shading(const cf_figure_t *fig, size_t i,
     return true;
 }
 
-/* A new scene of the figure's occluding surfaces for tolerance tol (data
-** units), each element's number in it set; NULL (no error) when there is
-** none. */
-static cf_status_t
-build_scene(cf_figure_t *fig, double tol, cf_scene_t **out)
-{
-    cf_scene_t *sc = NULL;
-    cf_status_t st;
-    bool any = false;
-    *out = NULL;
-    for (size_t i = 0; i < fig->count; i++)
-        if (is_surface(fig->els[i]))
-            any = any || ((surface_el_t *)fig->els[i])->opt.occludes;
-    if (!any)
-        return CF_STATUS_OK;
-    st = cf_scene_create(&fig->view, tol, &sc, &fig->err);
-    for (size_t i = 0; st == CF_STATUS_OK && i < fig->count; i++) {
-        surface_el_t *e = (surface_el_t *)fig->els[i];
-        if (!is_surface(&e->base))
-            continue;
-        e->scene_id = SIZE_MAX;
-        if (e->opt.occludes && e->tri != NULL)
-            st = cf_scene_add_triangle(sc, e->tri, &e->scene_id, &fig->err);
-        else if (e->opt.occludes)
-            st = cf_scene_add_bspline(sc, e->s, &e->scene_id, &fig->err);
-    }
-    if (st != CF_STATUS_OK) {
-        cf_scene_destroy(sc);
-        return cf__fig_fail(fig, st, "surface scene");
-    }
-    *out = sc;
-    return CF_STATUS_OK;
-}
-
-/* The figure's scene for visibility at tolerance tol, kept in the figure
-** for that tolerance and element count. */
-cf_status_t
-cf__figure_scene(cf_figure_t *fig, double tol, cf_scene_t **out)
-{
-    cf_status_t st;
-    if (fig->scene != NULL && fig->scene_els == fig->count
-        && fig->scene_tol <= tol) {
-        *out = fig->scene;
-        return CF_STATUS_OK;
-    }
-    cf_scene_destroy(fig->scene);
-    fig->scene = NULL;
-    st = build_scene(fig, tol, out);
-    if (st == CF_STATUS_OK && *out != NULL) {
-        fig->scene = *out;
-        fig->scene_tol = tol;
-        fig->scene_els = fig->count;
-    }
-    return st;
-}
-
 /* The shading of every shaded surface, painted by the figure's first
 ** surface element before any line: the visibility scene's facets within
 ** 250 times the fitting tolerance (2.5 bp by default; at 0.3 bp a vase
@@ -418,17 +362,6 @@ family_styles(const cf_figure_t *fig, const surface_el_t *e,
                       &out[NET]);
 }
 
-cf_style_t
-cf__hidden_style(const cf_style_t *s)
-{
-    cf_style_t h = *s;
-    h.width = 0.7 * s->width;
-    h.dash_count = 2;
-    h.dash[0] = fmax(4 * h.width, 1.5);
-    h.dash[1] = fmax(3 * h.width, 1.2);
-    return h;
-}
-
 static cf_status_t
 check_window(cf_figure_t *fig, const surface_el_t *e, const cf__layout_t *l)
 {
@@ -481,8 +414,27 @@ surface_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
     return st;
 }
 
+static bool
+surface_occludes(const cf__element_t *el)
+{
+    return ((const surface_el_t *)el)->opt.occludes;
+}
+
+/* In the figure's scene (figure-scene.c) when it occludes, numbered there. */
+static cf_status_t
+surface_occlude(cf__element_t *el, cf_scene_t *sc, cf_diag_t *err)
+{
+    surface_el_t *e = (surface_el_t *)el;
+    e->scene_id = SIZE_MAX;
+    if (!e->opt.occludes)
+        return CF_STATUS_OK;
+    if (e->tri != NULL)
+        return cf_scene_add_triangle(sc, e->tri, &e->scene_id, err);
+    return cf_scene_add_bspline(sc, e->s, &e->scene_id, err);
+}
+
 static const cf__kind_t surface_kind = {
-    "surface", 0, surface_fini, surface_bounds, surface_draw, NULL
+    "surface", 0, surface_fini, surface_bounds, surface_draw, NULL, surface_occludes, surface_occlude
 };
 
 /* ---- adding ------------------------------------------------------------- */

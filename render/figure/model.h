@@ -132,6 +132,12 @@ typedef struct cf__kind {
     ** NULL for other kinds. */
     bool (*auto_label)(cf__element_t *e, double *x, double *y,
                        cf__text_t **text, cf__auto_place_t **chosen);
+    /* Surfaces: whether the element hides what lies behind it, and its
+    ** addition to the figure's scene of occluding surfaces (figure-
+    ** scene.c, which knows no kind).  NULL for other kinds. */
+    bool (*occludes)(const cf__element_t *e);
+    cf_status_t (*occlude)(cf__element_t *e, struct cf_scene *sc,
+                           cf_diag_t *err);
 } cf__kind_t;
 
 /* The start of every element record. */
@@ -336,6 +342,9 @@ void cf__arrow_head(cf__dl_t *dl, double tx, double ty, double ux, double uy,
 
 /* ---- style.c ------------------------------------------------------------ */
 
+/* The style of the hidden pieces of a line in space: 0.7 of the width,
+** dashes of 4 and 3 widths. */
+cf_style_t cf__hidden_style(const cf_style_t *s);
 /* The effective style of an element: the theme's role style with the
 ** element's set fields applied over it. */
 void cf__style_resolve(const cf_theme_t *theme, cf_role_t role,

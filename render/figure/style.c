@@ -544,3 +544,15 @@ cf_theme_set_fonts(cf_theme_t *theme, const char *family, double size_bp,
     }
     return CF_STATUS_OK;
 }
+
+/* The style of the hidden pieces of a line in space (surface-lines.h). */
+cf_style_t
+cf__hidden_style(const cf_style_t *s)
+{
+    cf_style_t h = *s;
+    h.width = 0.7 * s->width;
+    h.dash_count = 2;
+    h.dash[0] = fmax(4 * h.width, 1.5);
+    h.dash[1] = fmax(3 * h.width, 1.2);
+    return h;
+}

@@ -89,11 +89,8 @@ cf_status_t cf__figure_surface_pieces(cf_figure_t *fig, double tol,
 
 /* The figure's scene of occluding surfaces for visibility at tolerance tol
 ** (data units), kept in the figure; *out NULL when no surface occludes
-** (el-surface.c). */
+** (figure-scene.c). */
 cf_status_t cf__figure_scene(cf_figure_t *fig, double tol, cf_scene_t **out);
-/* The style of hidden pieces: 0.7 of the width, dashes of 4 and 3
-** widths. */
-cf_style_t cf__hidden_style(const cf_style_t *s);
 
 /* Elements in space (el-space.c): whether p[3] is seen in the scene for
 ** layout tolerance tol (true without one); for the probe above, the

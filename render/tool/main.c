@@ -420,6 +420,12 @@ parse_args(int argc, char **argv, options *o, int *rc)
         *rc = usage_error("%s: -f gif, apng, mp4 and webm are made by "
                           "render", o->command);
         return -1;
+    } else if (strcmp(o->command, "render") != 0
+               && cf__tool_anim_wanted(&o->anim, 0)) {
+        *rc = usage_error("%s: --sweep, --animate and the other options of "
+                          "an animation are render's (curvefig render "
+                          "SCRIPT --sweep ...)", o->command);
+        return -1;
     }
     return 0;
 }

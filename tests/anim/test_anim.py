@@ -315,6 +315,12 @@ def check_bad(tool, src, tmp):
               '%s: wanted "%s", got "%s"' % (args, msg, r.stderr))
         check(not os.path.exists(out) or os.listdir(out) == [],
               '%s left files: %s' % (args, os.listdir(out)))
+    # the options of an animation belong to render: run and list refuse
+    # them rather than ignore them
+    for cmd in ('run', 'list'):
+        r = run([tool, cmd, script, '--sweep', 't=0:1'], ok=False)
+        check(r.returncode != 0 and 'options of an animation are render'
+              in r.stderr, '%s --sweep: %s' % (cmd, r.stderr))
     r = run([tool, 'render', static, '--animate', '-o', tmp], ok=False)
     check(r.returncode == 1 and 'nothing to animate' in r.stderr,
           'a figure without sliders or steps: ' + r.stderr)

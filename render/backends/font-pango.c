@@ -9,9 +9,14 @@
 ** resolution.
 */
 #include <pango/pangocairo.h>
+#include <stdio.h>
+#include <stdlib.h>
 
 #include "curvefig/core.h"
 #include "font-pango.h"
+
+/* the key of a run's size as it was asked for (a double) */
+#define SIZE_KEY "curvefig-size"
 
 typedef struct pango_fonts {
     PangoContext *pc;
@@ -85,6 +90,15 @@ shape(void *ctx, const cf__font_req_t *req, void **run,
     pango_font_description_set_weight(fd, req->bold ? PANGO_WEIGHT_BOLD
                                                     : PANGO_WEIGHT_NORMAL);
     pango_font_description_set_absolute_size(fd, req->size * PANGO_SCALE);
+    {
+        double *size = malloc(sizeof *size);
+        if (size == NULL) {
+            pango_font_description_free(fd);
+            return -1;
+        }
+        *size = req->size;
+        g_object_set_data_full(G_OBJECT(l), SIZE_KEY, size, free);
+    }
     pango_layout_set_font_description(l, fd);
     pango_font_description_free(fd);
     pango_layout_set_text(l, req->text, (int)req->len);
@@ -109,39 +123,126 @@ release(void *run)
         g_object_unref(run);
 }
 
+/* v as the glyph data writes and the page reads it */
+static double
+as_written(double v)
+{
+    char buf[32];
+    snprintf(buf, sizeof buf, "%.5g", v);
+    return strtod(buf, NULL);
+}
+
+int
+cf__pango_glyph_outline(cairo_t *cr, PangoFont *font, PangoGlyph id,
+                        void (*f)(void *u, char op, const double *v), void *u)
+{
+    cairo_scaled_font_t *sf =
+        pango_cairo_font_get_scaled_font(PANGO_CAIRO_FONT(font));
+    cairo_matrix_t fm;
+    cairo_glyph_t g;
+    cairo_path_t *path;
+    double s;
+    int i, rc = 0;
+    if (sf == NULL)
+        return -1;
+    /* the font's own scaled font: a scaled font of the same face made at
+    ** another size moved the glyph paths of this one by 1/128 bp */
+    cairo_scaled_font_get_font_matrix(sf, &fm);
+    s = fm.yy != 0 ? fm.yy : 1;
+    g.index = id;
+    g.x = g.y = 0;
+    cairo_set_scaled_font(cr, sf);
+    cairo_new_path(cr);
+    cairo_glyph_path(cr, &g, 1);
+    path = cairo_copy_path(cr);
+    cairo_new_path(cr);
+    if (path->status != CAIRO_STATUS_SUCCESS)
+        rc = -1;
+    for (i = 0; rc == 0 && i < path->num_data;
+         i += path->data[i].header.length) {
+        static const char op[] = { 'M', 'L', 'C', 'Z' };
+        const cairo_path_data_t *d = &path->data[i];
+        double v[6];
+        int k;
+        for (k = 1; k < d->header.length && k <= 3; k++) {
+            v[2 * k - 2] = as_written(d[k].point.x / s);
+            v[2 * k - 1] = as_written(d[k].point.y / s);
+        }
+        f(u, op[d->header.type], v);
+    }
+    cairo_path_destroy(path);
+    return rc;
+}
+
+typedef struct place {
+    cf__pathb_t *out;
+    double ox, oy, size;  /* the glyph's origin, the run's size */
+} place_t;
+
+/* A point of a glyph's outline placed as render/labels/font-table.c
+** places it (the same operations, so the same doubles). */
+static void
+placed(void *u, char op, const double *v)
+{
+    const place_t *p = u;
+    int n = op == 'C' ? 3 : op == 'Z' ? 0 : 1, j;
+    double xy[6];
+    for (j = 0; j < n; j++) {
+        xy[2 * j] = p->ox + v[2 * j] * p->size;
+        xy[2 * j + 1] = p->oy + v[2 * j + 1] * p->size;
+    }
+    cf__pathb_add(p->out, op == 'M' ? CF__SEG_MOVE : op == 'L' ? CF__SEG_LINE
+                          : op == 'C' ? CF__SEG_CURVE : CF__SEG_CLOSE, xy);
+}
+
+/* The outlines of a run's glyphs, its top left at (x, y): each glyph's
+** outline per bp (cf__pango_glyph_outline) at its place in the layout,
+** in the same arithmetic as the page's glyph table. */
 static void
 outline(void *ctx, void *run, double x, double y, cf__pathb_t *out)
 {
-    static const cf__seg_t seg[] = {
-        CF__SEG_MOVE, CF__SEG_LINE, CF__SEG_CURVE, CF__SEG_CLOSE
-    };
     pango_fonts_t *f = ctx;
-    cairo_path_t *path;
-    int i;
+    PangoLayoutIter *it;
+    const double *size = g_object_get_data(G_OBJECT(run), SIZE_KEY);
+    place_t p;
     if (f->cr == NULL) {
         cairo_surface_t *s = cairo_recording_surface_create(
             CAIRO_CONTENT_ALPHA, NULL);
         f->cr = cairo_create(s);
         cairo_surface_destroy(s);
     }
-    cairo_new_path(f->cr);
-    cairo_move_to(f->cr, x, y);
-    pango_cairo_layout_path(f->cr, run);
-    path = cairo_copy_path(f->cr);
-    if (path->status != CAIRO_STATUS_SUCCESS)
+    if (size == NULL) {
         out->failed = true;
-    for (i = 0; path->status == CAIRO_STATUS_SUCCESS && i < path->num_data;
-         i += path->data[i].header.length) {
-        const cairo_path_data_t *d = &path->data[i];
-        double xy[6];
-        int k;
-        for (k = 1; k < d->header.length && k <= 3; k++) {
-            xy[2 * k - 2] = d[k].point.x;
-            xy[2 * k - 1] = d[k].point.y;
-        }
-        cf__pathb_add(out, seg[d->header.type], xy);
+        return;
     }
-    cairo_path_destroy(path);
+    p.out = out;
+    p.size = *size;
+    it = pango_layout_get_iter(run);
+    do {
+        PangoLayoutRun *r = pango_layout_iter_get_run_readonly(it);
+        PangoRectangle logical;
+        int i, gx, base;
+        if (r == NULL)
+            continue;
+        pango_layout_iter_get_run_extents(it, NULL, &logical);
+        base = pango_layout_iter_get_baseline(it);
+        gx = logical.x;
+        for (i = 0; i < r->glyphs->num_glyphs; i++) {
+            const PangoGlyphInfo *g = &r->glyphs->glyphs[i];
+            if (!(g->glyph & PANGO_GLYPH_UNKNOWN_FLAG)
+                && g->glyph != PANGO_GLYPH_EMPTY) {
+                p.ox = x + (double)(gx + g->geometry.x_offset)
+                           / CF__FONT_SCALE;
+                p.oy = y + (double)(base + g->geometry.y_offset)
+                           / CF__FONT_SCALE;
+                if (cf__pango_glyph_outline(f->cr, r->item->analysis.font,
+                                            g->glyph, placed, &p) != 0)
+                    out->failed = true;
+            }
+            gx += g->geometry.width;
+        }
+    } while (pango_layout_iter_next_run(it));
+    pango_layout_iter_free(it);
 }
 
 const cf__fonts_t cf__pango_fonts = {

@@ -94,6 +94,11 @@ pango_symbol(const char *name)
 FORWARD_VOID(g_free, (gpointer mem), (mem))
 FORWARD(gpointer, g_object_ref, (gpointer object), (object))
 FORWARD_VOID(g_object_unref, (gpointer object), (object))
+FORWARD(gpointer, g_object_get_data, (GObject *object, const gchar *key),
+        (object, key))
+FORWARD_VOID(g_object_set_data_full,
+             (GObject *object, const gchar *key, gpointer data,
+              GDestroyNotify destroy), (object, key, data, destroy))
 FORWARD(GTypeInstance *, g_type_check_instance_cast,
         (GTypeInstance *instance, GType iface_type), (instance, iface_type))
 

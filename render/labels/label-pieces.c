@@ -121,5 +121,6 @@ cf__lp_over_group(cf_label_t *lab, piece_t *pc, size_t first, double y)
     pc->end = lab->count;
     pc->cls = CLS_ORD;
     pc->group = true;
+    pc->ic = 0;   /* a group has no italic correction (a single char has) */
     cf__lp_piece_ink(lab, pc, y);
 }

@@ -3,7 +3,8 @@
 ** of the figures are collected by playing their display lists through a
 ** backend that keeps only the text operations; each run's pango layout gives
 ** its font description (D), its shaping (S) and the outlines of its glyphs (G,
-** through cairo_glyph_path on the font's scaled font, per bp of size); then
+** per bp of size: cf__pango_glyph_outline, the numbers the tool's outlines
+** are made of); then
 ** each description shapes the character set one character at a time (C), and
 ** every ordered pair of the characters of the texts and of numbers (digits,
 ** point, signs, space, =) two at a time: where the pair's advance differs from
@@ -115,6 +116,17 @@ face_of(collect_t *c, PangoFont *font)
     return c->nface++;
 }
 
+/* A piece of a G line: op and its points (per bp, as written already). */
+static void
+glyph_op(void *u, char op, const double *v)
+{
+    collect_t *c = u;
+    int n = op == 'C' ? 3 : op == 'Z' ? 0 : 1, k;
+    putf(c, c->out, " %c", op);
+    for (k = 0; k < 2 * n; k++)
+        putf(c, c->out, " %.5g", v[k]);
+}
+
 /* G line of glyph id of font (face f), once. */
 static void
 put_glyph(collect_t *c, PangoFont *font, int f, PangoGlyph id)
@@ -123,9 +135,7 @@ put_glyph(collect_t *c, PangoFont *font, int f, PangoGlyph id)
     cairo_matrix_t fm;
     cairo_glyph_t g;
     cairo_text_extents_t e;
-    cairo_path_t *path;
     double s;
-    int i;
     if (id & PANGO_GLYPH_UNKNOWN_FLAG
         || !add_unique(&c->glyphs, &c->nglyphs, &c->capglyphs,
                        (unsigned)f << 24 | (id & 0xffffff)))
@@ -143,33 +153,8 @@ put_glyph(collect_t *c, PangoFont *font, int f, PangoGlyph id)
     putf(c, c->out, "G %d %u %.9g %.9g %.9g %.9g", f, id, e.x_bearing / s,
          e.y_bearing / s, (e.x_bearing + e.width) / s,
          (e.y_bearing + e.height) / s);
-    cairo_set_scaled_font(c->cr, sf);
-    cairo_new_path(c->cr);
-    cairo_glyph_path(c->cr, &g, 1);
-    path = cairo_copy_path(c->cr);
-    for (i = 0; path->status == CAIRO_STATUS_SUCCESS && i < path->num_data;
-         i += path->data[i].header.length) {
-        const cairo_path_data_t *p = &path->data[i];
-        switch (p->header.type) {
-        case CAIRO_PATH_MOVE_TO:
-        case CAIRO_PATH_LINE_TO:
-            putf(c, c->out, " %c %.5g %.5g",
-                 p->header.type == CAIRO_PATH_MOVE_TO ? 'M' : 'L',
-                 p[1].point.x / s, p[1].point.y / s);
-            break;
-        case CAIRO_PATH_CURVE_TO:
-            putf(c, c->out, " C %.5g %.5g %.5g %.5g %.5g %.5g",
-                 p[1].point.x / s, p[1].point.y / s, p[2].point.x / s,
-                 p[2].point.y / s, p[3].point.x / s, p[3].point.y / s);
-            break;
-        case CAIRO_PATH_CLOSE_PATH:
-            putf(c, c->out, " Z");
-            break;
-        }
-    }
-    if (path->status != CAIRO_STATUS_SUCCESS)
+    if (cf__pango_glyph_outline(c->cr, font, id, glyph_op, c) != 0)
         c->failed = true;
-    cairo_path_destroy(path);
     putf(c, c->out, "\n");
 }
 

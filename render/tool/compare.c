@@ -150,24 +150,23 @@ parse(int argc, char **argv, compare_args *a)
 }
 
 static void
-describe(const char *path, cairo_surface_t *s, double dpi)
+describe(const char *path, cf__image *s, double dpi)
 {
     const char *kind = cf__tool_image_kind(path);
     printf("%s: %s", path, kind);
     if (strcmp(kind, "SVG") == 0)
         printf(" rasterised at %g dpi", dpi);
-    printf(", %dx%d pixels\n", cairo_image_surface_get_width(s),
-           cairo_image_surface_get_height(s));
+    printf(", %dx%d pixels\n", s->width, s->height);
 }
 
 static int
-compare_images(const compare_args *a, cairo_surface_t *img[2])
+compare_images(const compare_args *a, cf__image *img[2])
 {
     cf__imgcmp_options opt = a->opt;
     cf__imgcmp_result res;
-    cairo_surface_t *diff = NULL;
-    int w = cairo_image_surface_get_width(img[0]);
-    int h = cairo_image_surface_get_height(img[0]);
+    cf__image *diff = NULL;
+    int w = img[0]->width;
+    int h = img[0]->height;
     long pixels = (long)w * (long)h;
     char verdict[512];
 
@@ -179,8 +178,7 @@ compare_images(const compare_args *a, cairo_surface_t *img[2])
                                a->diff != NULL ? &diff : NULL) != 0) {
         fprintf(stderr, "curvefig: compare: the sizes differ: %s is %dx%d "
                 "pixels, %s is %dx%d pixels\n", a->file[0], w, h, a->file[1],
-                cairo_image_surface_get_width(img[1]),
-                cairo_image_surface_get_height(img[1]));
+                img[1]->width, img[1]->height);
         return ERROR;
     }
     cf__tool_image_verdict(verdict, sizeof verdict, &res, &opt, pixels);
@@ -200,10 +198,10 @@ compare_images(const compare_args *a, cairo_surface_t *img[2])
         if (cf__tool_image_write_png(diff, a->diff) != 0) {
             fprintf(stderr, "curvefig: compare: cannot write %s: %s\n",
                     a->diff, strerror(errno));
-            cairo_surface_destroy(diff);
+            cf__image_destroy(diff);
             return ERROR;
         }
-        cairo_surface_destroy(diff);
+        cf__image_destroy(diff);
         printf("diff: %s (B faded; red: differs, yellow: anti-aliasing "
                "only)\n", a->diff);
     }
@@ -214,7 +212,7 @@ int
 cf__tool_compare(int argc, char **argv)
 {
     compare_args a;
-    cairo_surface_t *img[2] = { NULL, NULL };
+    cf__image *img[2] = { NULL, NULL };
     char err[1024];
     int rc = parse(argc, argv, &a);
     if (rc != 0)
@@ -224,14 +222,14 @@ cf__tool_compare(int argc, char **argv)
         if (img[k] == NULL) {
             fprintf(stderr, "curvefig: compare: %s\n", err);
             if (k == 1)
-                cairo_surface_destroy(img[0]);
+                cf__image_destroy(img[0]);
             return ERROR;
         }
     }
     describe(a.file[0], img[0], a.dpi);
     describe(a.file[1], img[1], a.dpi);
     rc = compare_images(&a, img);
-    cairo_surface_destroy(img[0]);
-    cairo_surface_destroy(img[1]);
+    cf__image_destroy(img[0]);
+    cf__image_destroy(img[1]);
     return rc;
 }

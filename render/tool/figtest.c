@@ -272,7 +272,7 @@ dupf(const char *fmt, ...)
 ** or NULL. */
 static char *
 keep_image(test_run *t, const char *name, const char *slug, const char *role,
-           cairo_surface_t *image)
+           cf__image *image)
 {
     char *rel, *full;
     if (image == NULL)
@@ -293,8 +293,8 @@ keep_image(test_run *t, const char *name, const char *slug, const char *role,
 static void
 record_failure(test_run *t, const char *script, const char *name,
                const char *slug, const char *what, const char *verdict,
-               cairo_surface_t *expected, cairo_surface_t *actual,
-               cairo_surface_t *diff)
+               cf__image *expected, cf__image *actual,
+               cf__image *diff)
 {
     cf__tool_failure *f;
     printf("FAIL %s (%s): %s: %s\n", name, script, what, verdict);
@@ -319,15 +319,14 @@ record_failure(test_run *t, const char *script, const char *name,
 /* The comparator's options for one layer: strict without labels, the
 ** text allowance with them. */
 static cf__imgcmp_options
-layer_options(const test_run *t, bool labels, cairo_surface_t *image)
+layer_options(const test_run *t, bool labels, cf__image *image)
 {
     cf__imgcmp_options opt;
     cf__tool_default_imgcmp(&opt);
     opt.threshold = t->threshold;
     if (labels)
         opt.max_bad_pixels = (long)(CF__IMGCMP_TEXT_FRACTION *
-                                    cairo_image_surface_get_width(image) *
-                                    cairo_image_surface_get_height(image));
+                                    image->width * image->height);
     return opt;
 }
 
@@ -335,20 +334,17 @@ layer_options(const test_run *t, bool labels, cairo_surface_t *image)
 static bool
 check_pair(test_run *t, const char *script, const char *name,
            const char *slug, const char *what, bool labels,
-           cairo_surface_t *actual, cairo_surface_t *expected)
+           cf__image *actual, cf__image *expected)
 {
     cf__imgcmp_options opt = layer_options(t, labels, expected);
     cf__imgcmp_result res;
-    cairo_surface_t *diff = NULL;
+    cf__image *diff = NULL;
     char verdict[512];
-    long pixels = (long)cairo_image_surface_get_width(expected) *
-                  cairo_image_surface_get_height(expected);
+    long pixels = (long)expected->width * expected->height;
     if (cf__tool_image_compare(actual, expected, &opt, &res, &diff) != 0) {
         snprintf(verdict, sizeof verdict, "the sizes differ: %dx%d pixels, "
-                 "expected %dx%d", cairo_image_surface_get_width(actual),
-                 cairo_image_surface_get_height(actual),
-                 cairo_image_surface_get_width(expected),
-                 cairo_image_surface_get_height(expected));
+                 "expected %dx%d", actual->width, actual->height,
+                 expected->width, expected->height);
         record_failure(t, script, name, slug, what, verdict, expected,
                        actual, NULL);
         return false;
@@ -359,7 +355,7 @@ check_pair(test_run *t, const char *script, const char *name,
                        actual, diff);
     }
     if (diff != NULL)
-        cairo_surface_destroy(diff);
+        cf__image_destroy(diff);
     return res.match;
 }
 
@@ -374,7 +370,7 @@ check_layer(test_run *t, const char *script, const char *fig_name,
     char name[300], note[40] = "";
     const char *dir = labels ? t->outdir : t->out_nolabels;
     char *png_path, *svg_path, *ref_path;
-    cairo_surface_t *png = NULL, *svg = NULL, *ref = NULL;
+    cf__image *png = NULL, *svg = NULL, *ref = NULL;
     char err[1024], what[1200];
     int state = t->update ? CF__TOOL_REF_FAILED : CF__TOOL_REF_UNCHANGED;
     const char *layer = labels ? "" : ", without labels";
@@ -436,11 +432,11 @@ check_layer(test_run *t, const char *script, const char *fig_name,
     }
 out:
     if (png != NULL)
-        cairo_surface_destroy(png);
+        cf__image_destroy(png);
     if (svg != NULL)
-        cairo_surface_destroy(svg);
+        cf__image_destroy(svg);
     if (ref != NULL)
-        cairo_surface_destroy(ref);
+        cf__image_destroy(ref);
     free(png_path);
     free(svg_path);
     free(ref_path);

@@ -7,10 +7,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#ifdef CF_TOOL_HAVE_RSVG
-#include <librsvg/rsvg.h>
-#endif
-
 #include "imgfile.h"
 #include "tool.h"
 
@@ -64,102 +60,6 @@ cf__tool_image_kind(const char *path)
     }
 }
 
-/* A copy in ARGB32 (cairo reads a PNG without alpha as RGB24). */
-static cairo_surface_t *
-to_argb32(cairo_surface_t *s)
-{
-    cairo_surface_t *img = cairo_image_surface_create(
-        CAIRO_FORMAT_ARGB32, cairo_image_surface_get_width(s),
-        cairo_image_surface_get_height(s));
-    cairo_t *cr = cairo_create(img);
-    cairo_set_source_surface(cr, s, 0, 0);
-    cairo_set_operator(cr, CAIRO_OPERATOR_SOURCE);
-    cairo_paint(cr);
-    cairo_destroy(cr);
-    cairo_surface_flush(img);
-    if (cairo_surface_status(img) != CAIRO_STATUS_SUCCESS) {
-        cairo_surface_destroy(img);
-        return NULL;
-    }
-    return img;
-}
-
-static cairo_surface_t *
-read_png(const char *path, char *err, size_t errsize)
-{
-    cairo_surface_t *s = cairo_image_surface_create_from_png(path), *img;
-    cairo_status_t st = cairo_surface_status(s);
-    if (st != CAIRO_STATUS_SUCCESS) {
-        snprintf(err, errsize, "%s: not a readable PNG file (%s)", path,
-                 cairo_status_to_string(st));
-        cairo_surface_destroy(s);
-        return NULL;
-    }
-    img = to_argb32(s);
-    cairo_surface_destroy(s);
-    if (img == NULL)
-        snprintf(err, errsize, "%s: out of memory", path);
-    return img;
-}
-
-#ifdef CF_TOOL_HAVE_RSVG
-static cairo_surface_t *
-read_svg(const char *path, double dpi, char *err, size_t errsize)
-{
-    GError *gerr = NULL;
-    RsvgHandle *hd = rsvg_handle_new_from_file(path, &gerr);
-    cairo_surface_t *img;
-    cairo_t *cr;
-    gdouble sw, sh;
-    double wpx, hpx;
-    RsvgRectangle vp;
-    if (hd == NULL) {
-        snprintf(err, errsize, "%s: librsvg cannot read the SVG: %s", path,
-                 gerr != NULL ? gerr->message : "unknown error");
-        if (gerr != NULL)
-            g_error_free(gerr);
-        return NULL;
-    }
-    rsvg_handle_set_dpi(hd, dpi);
-    if (!rsvg_handle_get_intrinsic_size_in_pixels(hd, &sw, &sh) ||
-        !(sw > 0 && sh > 0)) {
-        snprintf(err, errsize, "%s: the SVG has no width and height in "
-                 "absolute units, so it has no size at %g dpi", path, dpi);
-        g_object_unref(hd);
-        return NULL;
-    }
-    wpx = ceil(sw - 1e-6);
-    hpx = ceil(sh - 1e-6);
-    if (wpx > MAX_SIDE || hpx > MAX_SIDE) {
-        snprintf(err, errsize, "%s: %.0fx%.0f pixels at %g dpi is too large "
-                 "(at most %d a side); lower the dpi", path, wpx, hpx, dpi,
-                 MAX_SIDE);
-        g_object_unref(hd);
-        return NULL;
-    }
-    img = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, (int)wpx, (int)hpx);
-    cr = cairo_create(img);
-    vp.x = 0;
-    vp.y = 0;
-    vp.width = sw;
-    vp.height = sh;
-    if (!rsvg_handle_render_document(hd, cr, &vp, &gerr)) {
-        snprintf(err, errsize, "%s: librsvg cannot render the SVG: %s", path,
-                 gerr != NULL ? gerr->message : "unknown error");
-        if (gerr != NULL)
-            g_error_free(gerr);
-        cairo_destroy(cr);
-        cairo_surface_destroy(img);
-        g_object_unref(hd);
-        return NULL;
-    }
-    cairo_destroy(cr);
-    g_object_unref(hd);
-    cairo_surface_flush(img);
-    return img;
-}
-#endif
-
 double
 cf__tool_png_dpi(const char *path)
 {
@@ -195,7 +95,7 @@ cf__tool_png_dpi(const char *path)
     return dpi;
 }
 
-cairo_surface_t *
+cf__image *
 cf__tool_image_read(const char *path, double dpi, char *err, size_t errsize)
 {
     switch (sniff(path)) {
@@ -204,16 +104,9 @@ cf__tool_image_read(const char *path, double dpi, char *err, size_t errsize)
                  strerror(errno));
         return NULL;
     case KIND_PNG:
-        return read_png(path, err, errsize);
+        return cf__image_read_png(path, err, errsize);
     case KIND_SVG:
-#ifdef CF_TOOL_HAVE_RSVG
-        return read_svg(path, dpi, err, errsize);
-#else
-        snprintf(err, errsize, "%s: an SVG, but this curvefig was built "
-                 "without librsvg and cannot rasterise SVG; compare PNGs",
-                 path);
-        return NULL;
-#endif
+        return cf__image_read_svg(path, dpi, MAX_SIDE, err, errsize);
     case KIND_PDF:
         snprintf(err, errsize, "%s: a PDF; curvefig compares PNG and SVG "
                  "files only (it has no PDF rasteriser): compare the "
@@ -227,24 +120,23 @@ cf__tool_image_read(const char *path, double dpi, char *err, size_t errsize)
 }
 
 static cf__imgcmp_image
-view(cairo_surface_t *s)
+view(const cf__image *im)
 {
-    cf__imgcmp_image im;
-    im.width = cairo_image_surface_get_width(s);
-    im.height = cairo_image_surface_get_height(s);
-    im.stride = cairo_image_surface_get_stride(s);
-    im.data = cairo_image_surface_get_data(s);
-    return im;
+    cf__imgcmp_image v;
+    v.width = im->width;
+    v.height = im->height;
+    v.stride = im->stride;
+    v.data = im->data;
+    return v;
 }
 
 int
-cf__tool_image_compare(cairo_surface_t *actual, cairo_surface_t *expected,
+cf__tool_image_compare(const cf__image *actual, const cf__image *expected,
                        const cf__imgcmp_options *opt, cf__imgcmp_result *res,
-                       cairo_surface_t **diff)
+                       cf__image **diff)
 {
     cf__imgcmp_image a = view(actual), e = view(expected);
-    cairo_surface_t *d = NULL;
-    unsigned char *buf = NULL;
+    cf__image *d = NULL;
     int rc;
     if (diff != NULL)
         *diff = NULL;
@@ -252,23 +144,11 @@ cf__tool_image_compare(cairo_surface_t *actual, cairo_surface_t *expected,
         memset(res, 0, sizeof *res);
         return -1;
     }
-    if (diff != NULL) {
-        d = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, a.width,
-                                       a.height);
-        if (cairo_surface_status(d) != CAIRO_STATUS_SUCCESS ||
-            cairo_image_surface_get_stride(d) != 4 * a.width) {
-            cairo_surface_destroy(d);
-            d = NULL;
-        } else {
-            cairo_surface_flush(d);
-            buf = cairo_image_surface_get_data(d);
-        }
-    }
-    rc = cf__imgcmp_compare(&a, &e, opt, res, buf);
-    if (d != NULL) {
-        cairo_surface_mark_dirty(d);
+    if (diff != NULL)
+        d = cf__image_new(a.width, a.height);
+    rc = cf__imgcmp_compare(&a, &e, opt, res, d != NULL ? d->data : NULL);
+    if (diff != NULL)
         *diff = d;
-    }
     return rc;
 }
 
@@ -315,21 +195,13 @@ cf__tool_image_verdict(char *buf, size_t size, const cf__imgcmp_result *r,
                  opt->max_bad_pixels, aa, r->max_delta);
 }
 
-static cairo_status_t
-write_stream(void *closure, const unsigned char *data, unsigned int length)
-{
-    return fwrite(data, 1, length, (FILE *)closure) == length
-               ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
-}
-
 int
-cf__tool_image_write_png(cairo_surface_t *s, const char *path)
+cf__tool_image_write_png(const cf__image *im, const char *path)
 {
     cf__tool_out out;
     if (cf__tool_open_atomic(&out, path) != 0)
         return -1;
-    if (cairo_surface_write_to_png_stream(s, write_stream, out.f) !=
-        CAIRO_STATUS_SUCCESS) {
+    if (cf__image_write_png(im, out.f) != 0) {
         cf__tool_discard_atomic(&out);
         errno = EIO;
         return -1;

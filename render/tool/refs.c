@@ -39,13 +39,13 @@ copy_atomic(const char *from, const char *to)
 
 /* What the old reference at ref_path is to the new image png. */
 static cf__tool_ref_state
-classify(cairo_surface_t *png, const char *ref_path,
+classify(cf__image *png, const char *ref_path,
          const cf__imgcmp_options *opt, double dpi, char *verdict,
          size_t size)
 {
     struct stat sb;
     char err[1024];
-    cairo_surface_t *ref;
+    cf__image *ref;
     cf__imgcmp_result res;
     cf__tool_ref_state state = CF__TOOL_REF_CHANGED;
     if (stat(ref_path, &sb) != 0)
@@ -57,22 +57,19 @@ classify(cairo_surface_t *png, const char *ref_path,
     }
     if (cf__tool_image_compare(png, ref, opt, &res, NULL) != 0)
         snprintf(verdict, size, "the size changed from %dx%d to %dx%d "
-                 "pixels", cairo_image_surface_get_width(ref),
-                 cairo_image_surface_get_height(ref),
-                 cairo_image_surface_get_width(png),
-                 cairo_image_surface_get_height(png));
+                 "pixels", ref->width, ref->height,
+                 png->width, png->height);
     else if (res.identical)
         state = CF__TOOL_REF_UNCHANGED;
     else
         cf__tool_image_verdict(verdict, size, &res, opt,
-                               (long)cairo_image_surface_get_width(ref) *
-                                   cairo_image_surface_get_height(ref));
-    cairo_surface_destroy(ref);
+                               (long)ref->width * ref->height);
+    cf__image_destroy(ref);
     return state;
 }
 
 cf__tool_ref_state
-cf__tool_ref_update(const char *png_path, cairo_surface_t *png,
+cf__tool_ref_update(const char *png_path, cf__image *png,
                     const char *ref_path, const cf__imgcmp_options *opt,
                     double dpi, char *verdict, size_t size)
 {

@@ -4,9 +4,9 @@
 #ifndef CURVEFIG_TOOL_REFS_H
 #define CURVEFIG_TOOL_REFS_H
 
-#include <cairo.h>
 #include <stddef.h>
 
+#include "image-io.h"
 #include "imgcmp.h"
 
 typedef enum cf__tool_ref_state {
@@ -21,7 +21,7 @@ typedef enum cf__tool_ref_state {
 ** changed, in words, goes into verdict (opt: the comparator's options,
 ** dpi for reading the old reference). */
 cf__tool_ref_state cf__tool_ref_update(const char *png_path,
-                                       cairo_surface_t *png,
+                                       cf__image *png,
                                        const char *ref_path,
                                        const cf__imgcmp_options *opt,
                                        double dpi, char *verdict,

@@ -30,6 +30,11 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 '..', 'live'))
 import test_browser as lb  # noqa: E402  (skips, 77, without selenium)
 
+# further parameter sets of some examples, beside their defaults and slider
+EXTRA = {
+    'surface-patch': [{'L': [[-1.6, 1.9]]}],
+}
+
 # a second engine of the page's data, made once a page
 MAKE = 'window.cfPlaces = new CurvefigWasmEngine(%s);'
 RUN = '''
@@ -120,6 +125,7 @@ def main():
                 for at in (0.37, 0.81):
                     v = slider['min'] + at * (slider['max'] - slider['min'])
                     values.append({slider['name']: round(v, 2)})
+                values += EXTRA.get(name, [])
                 for v in values:
                     native = json.loads(subprocess.run(
                         [tool, 'live', script, '--once', json.dumps(v)],

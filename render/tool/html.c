@@ -193,6 +193,8 @@ cf__tool_write_html(const cf_script_t *s, size_t i, const char *script_path,
     put_lines(f, html_css);
     fputs("</style>\n</head>\n<body>\n<div id=\"curvefig\"></div>\n"
           "<script>\n", f);
+    put_lines(f, html_page_rotate_js);
+    put_lines(f, html_page_keys_js);
     put_lines(f, html_page_js);
     put_lines(f, html_engine_js);
     fputs("CurvefigPage(document.getElementById('curvefig'), "

@@ -122,8 +122,9 @@ add_lines(char *p, const char *const *lines)
     return p;
 }
 
-/* The page: page.css, page.js and live.js inline, so that it is one
-** request and needs nothing from the network. */
+/* The page: page.css, page.js (after its parts page-rotate.js and
+** page-keys.js) and live.js inline, so that it is one request and needs
+** nothing from the network. */
 static int
 make_page(server_t *sv)
 {
@@ -137,6 +138,7 @@ make_page(server_t *sv)
         "CurvefigPage(document.getElementById('curvefig'), "
         "new CurvefigLiveEngine());\n</script>\n</body></html>\n";
     size_t n = sizeof head + sizeof mid1 + sizeof tail + lines_len(web_css) +
+               lines_len(web_page_rotate_js) + lines_len(web_page_keys_js) +
                lines_len(web_page_js) + lines_len(web_live_js);
     char *p = malloc(n);
     if (p == NULL)
@@ -145,6 +147,8 @@ make_page(server_t *sv)
     p = stpcpy(p, head);
     p = add_lines(p, web_css);
     p = stpcpy(p, mid1);
+    p = add_lines(p, web_page_rotate_js);
+    p = add_lines(p, web_page_keys_js);
     p = add_lines(p, web_page_js);
     p = add_lines(p, web_live_js);
     p = stpcpy(p, tail);

@@ -3,7 +3,8 @@
 ** interactive figure, a web server on 127.0.0.1 (libmicrohttpd) with a
 ** random token in its URL:
 **
-**   GET  /TOKEN/              the page (render/web: page.js, live.js, page.css)
+**   GET  /TOKEN/              the page (render/web: page.js and its parts
+**                             page-rotate.js, page-keys.js; live.js, page.css)
 **   POST /TOKEN/run           body: the values as JSON; reply: the JSON of
 **                             render/lua/interactive.h (400 for bad values)
 **   GET  /TOKEN/wait?v=V      the script's version (its mtime) once it

@@ -13,6 +13,11 @@
 // engine's saved() gives the values to start from (those of the page
 // before the reload), else the defaults.
 //
+// Two parts live in files of their own, included in the page before this
+// one: turning a 3D figure (page-rotate.js, CurvefigRotate) and the
+// keyboard for the handles (page-keys.js, CurvefigKeys); each is given
+// what it needs from here explicitly.
+//
 // The DOM, the same for every engine (the browser tests rely on it):
 //   #cf-controls           one .cf-slider per slider:
 //     input#cf-slider-NAME (type range, data-param NAME), output#cf-value-NAME
@@ -25,7 +30,7 @@
 //                          its data-to-svg: the map data -> SVG units (JSON);
 //                          a handle takes the focus (tabindex 0, role
 //                          slider, aria-valuetext "P_1: x 2.5, y 3") and
-//                          the arrow keys (Shift: ten steps)
+//                          the arrow keys (Shift: ten steps; page-keys.js)
 //   div#cf-announce        aria-live: the place of a point the keys moved
 // A slider's label is typeset from the label syntax (P_0, w_{1}, \omega,
 // $...$): italic letters, upright digits, sub- and superscripts, Greek.
@@ -44,8 +49,8 @@
 // arrow keys when it has the focus; the page sends the angles with the
 // values as "@view:NAME": [[azimuth, elevation]] (render/lua/params.h)
 // and the script runs again in that view; a double click or its
-// button.cf-view-reset goes back to the script's view.  A 2D figure
-// ignores drags of its background.
+// button.cf-view-reset goes back to the script's view (page-rotate.js).
+// A 2D figure ignores drags of its background.
 //   pre#cf-error           the script's error (hidden when there is none)
 //   pre#cf-lua             the values as Lua, button#cf-copy, button#cf-reset
 //   root.dataset.runs      the number of replies shown so far;
@@ -430,7 +435,7 @@ function CurvefigPage(root, engine) {
     var a = document.activeElement;   // a figure keeps the keyboard focus
     var focusedBox = a && a.classList && a.classList.contains('cf-figure') &&
       figures.contains(a) ? a.id.slice(10) : null;
-    var focused = focusedHandle();      // ... or a handle
+    var focused = keys.focusedHandle();      // ... or a handle
     figures.textContent = '';
     list.forEach(function (fig, k) {
       var box = el('div', { class: 'cf-figure', id: 'cf-figure-' + fig.name });
@@ -441,7 +446,7 @@ function CurvefigPage(root, engine) {
       if (svg && fig.caption && !svg.hasAttribute('aria-labelledby'))
         svg.setAttribute('aria-label', fig.caption);
       describeFigure(box, svg, fig.name);
-      if (fig.view) markRotatable(box, fig);
+      if (fig.view) rotate.markRotatable(box, fig);
       fig.handles.forEach(function (h) {
         var at = toSvg(fig, h.x, h.y);
         var ring = document.createElementNS(svgNS, 'circle');
@@ -466,7 +471,7 @@ function CurvefigPage(root, engine) {
                    circle: c };
           c.classList.add('cf-dragging');
         });
-        keyboardHandle(c, fig, svg, h);
+        keys.keyboardHandle(c, fig, svg, h);
         svg.appendChild(c);
         svg.appendChild(ring);
       });
@@ -476,7 +481,7 @@ function CurvefigPage(root, engine) {
       var again = document.getElementById('cf-figure-' + focusedBox);
       if (again) again.focus();
     }
-    refocus(focused);
+    keys.refocus(focused);
   }
 
   function place(circle, x, y) {
@@ -526,238 +531,23 @@ function CurvefigPage(root, engine) {
   window.addEventListener('pointerup', pointerUp);
   window.addEventListener('pointercancel', pointerUp);
 
-  // ---- turning a 3D figure ---------------------------------------------
+  // ---- turning a 3D figure (page-rotate.js) ----------------------------
 
-  var DEG_PER_PX = 0.4;  // a drag across a figure turns it about half round
-  var KEY_DEG = 5;       // an arrow key; 15 with Shift
-  var rot = null;        // { name, x, y, az, el } while a background is dragged
-  var lastDown = null;   // the last press on a background, for double clicks
+  var rotate = CurvefigRotate({
+    figures: figures, el: el, request: request, hold: hold, release: release,
+    views: function () { return views; },
+    lastFigures: function () { return lastFigures; },
+    drag: function () { return drag; }
+  });
 
-  function figureNamed(name) {
-    return (lastFigures || []).find(function (f) { return f.name === name; });
-  }
+  // ---- the keyboard: a handle is a slider (page-keys.js) ---------------
 
-  // "@view:NAME" must fit a parameter's name (63 bytes).
-  function turnable(fig) {
-    return fig && fig.view && new TextEncoder().encode('@view:' +
-                                                       fig.name).length < 64;
-  }
-
-  function viewOf(fig) {
-    return views[fig.name] || fig.view;
-  }
-
-  // The figure turned to azimuth az and elevation el (degrees): the
-  // elevation kept in [-90, 90], the azimuth in [-180, 180), both to a
-  // tenth of a degree.
-  function turn(name, az, elev) {
-    az = ((az + 180) % 360 + 360) % 360 - 180;
-    elev = Math.min(90, Math.max(-90, elev));
-    var v = [Math.round(az * 10) / 10, Math.round(elev * 10) / 10];
-    var old = views[name];
-    if (old && old[0] === v[0] && old[1] === v[1]) return;
-    views[name] = v;
-    request();
-  }
-
-  function resetView(name) {
-    if (!(name in views)) return;
-    delete views[name];
-    request();
-  }
-
-  function markRotatable(box, fig) {
-    box.classList.add('cf-3d');
-    if (rot && rot.name === fig.name) box.classList.add('cf-rotating');
-    box.setAttribute('data-view', JSON.stringify(fig.view));
-    if (!turnable(fig)) return;
-    box.setAttribute('tabindex', '0');
-    box.setAttribute('title', 'Drag to turn the figure; double click: ' +
-                     'the script\'s view');
-    if (views[fig.name]) {
-      var b = el('button', { class: 'cf-view-reset', type: 'button',
-                             title: 'Back to the script\'s view' },
-                 'Reset view');
-      b.addEventListener('click', function () {
-        box.focus({ preventScroll: true });   // the button goes with the turn
-        resetView(fig.name);
-      });
-      box.appendChild(b);
-    }
-  }
-
-  function figureBox(target) {
-    var box = target && target.closest ? target.closest('.cf-figure') : null;
-    return box && box.classList.contains('cf-3d') ? box : null;
-  }
-
-  // A drag that starts on a 3D figure's background (not on a handle, which
-  // takes its own pointerdown first, nor on a button) turns the figure.
-  function rotateStart(ev) {
-    var t = ev.target, box = figureBox(t), fig;
-    if (drag || rot || !box || (ev.pointerType === 'mouse' && ev.button !== 0)
-        || t.closest('button') || (t.classList &&
-                                   t.classList.contains('cf-handle')))
-      return;
-    fig = figureNamed(box.id.slice(10));
-    if (!turnable(fig)) return;
-    ev.preventDefault();      // (which keeps the click from focusing it,
-    box.focus({ preventScroll: true });   // and the browser's dblclick)
-    var now = performance.now(), last = lastDown;
-    lastDown = { name: fig.name, t: now, x: ev.clientX, y: ev.clientY };
-    if (last && last.name === fig.name && now - last.t < 500 &&
-        Math.hypot(ev.clientX - last.x, ev.clientY - last.y) < 8) {
-      lastDown = null;        // a double click: the script's view
-      resetView(fig.name);
-      return;
-    }
-    figures.setPointerCapture(ev.pointerId);
-    hold();                   // it turns in place; released, it is fitted
-    var v = viewOf(fig);
-    rot = { name: fig.name, x: ev.clientX, y: ev.clientY, az: v[0],
-            el: v[1] };
-    box.classList.add('cf-rotating');
-  }
-
-  function rotateMove(ev) {
-    if (!rot) return;
-    // dragged right the front turns right; dragged down, seen from higher
-    turn(rot.name, rot.az - (ev.clientX - rot.x) * DEG_PER_PX,
-         rot.el + (ev.clientY - rot.y) * DEG_PER_PX);
-  }
-
-  function rotateEnd() {
-    if (!rot) return;
-    document.querySelectorAll('.cf-rotating').forEach(function (b) {
-      b.classList.remove('cf-rotating');
-    });
-    rot = null;
-    release();
-  }
-
-  function rotateKey(ev) {
-    var box = ev.target;
-    if (!box.classList || !box.classList.contains('cf-figure') ||
-        !box.classList.contains('cf-3d') || drag || rot)
-      return;     // a handle with the focus takes its keys itself
-    var fig = figureNamed(box.id.slice(10)), k = ev.shiftKey ? 3 : 1;
-    var d = { ArrowLeft: [k, 0], ArrowRight: [-k, 0], ArrowUp: [0, -k],
-              ArrowDown: [0, k] }[ev.key];
-    if (!d || !turnable(fig)) return;
-    ev.preventDefault();
-    var v = viewOf(fig);
-    turn(fig.name, v[0] + d[0] * KEY_DEG, v[1] + d[1] * KEY_DEG);
-  }
-
-  figures.addEventListener('pointerdown', rotateStart);
-  window.addEventListener('pointermove', rotateMove);
-  window.addEventListener('pointerup', rotateEnd);
-  window.addEventListener('pointercancel', rotateEnd);
-  figures.addEventListener('keydown', rotateKey);
-
-  // The rotated views as Lua comments under the values, to paste into
-  // figure{ view = ... }.
-  function viewsLua() {
-    return Object.keys(views).map(function (name) {
-      return '-- ' + name + ': view = { ' + views[name].join(', ') + ' }\n';
-    }).join('');
-  }
-
-  // ---- the keyboard: a handle is a slider of two coordinates ------------
-  //
-  // Every handle takes the focus (Tab), role slider, its name and
-  // coordinates as aria-valuetext ("P_1: x 2.5, y 3"); the arrow keys move
-  // it by a step, Shift by ten, and the figures run again as after a drag;
-  // div#cf-announce (aria-live) says the point's new place.  A step is the
-  // grid of a point on a grid, else the power of ten of data units that is
-  // 1 to 10 bp in the figure (0.1 on a figure of 3 cm per unit); a point
-  // on a line moves along it.
-
-  var announce = el('div', { id: 'cf-announce', class: 'cf-sr',
-                             role: 'status', 'aria-live': 'polite' });
-  root.appendChild(announce);
-
-  var arrows = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1],
-                 ArrowDown: [0, -1] };
-
-  function num(v) {
-    return String(Number(Number(v).toFixed(10)));
-  }
-
-  function pointText(param, index, d) {
-    return param + '_' + index + ': x ' + num(d[0]) + ', y ' + num(d[1]);
-  }
-
-  function keyStep(p, fig, axis) {
-    if (p.constrain && p.constrain.grid) return p.constrain.grid;
-    var m = fig.to_svg;
-    var bp = axis ? Math.hypot(m[2], m[3]) : Math.hypot(m[0], m[1]);
-    return Math.pow(10, Math.ceil(Math.log10(1 / bp) - 1e-9));
-  }
-
-  // Point d of parameter p moved one key press in direction dir (times k).
-  function stepPoint(p, fig, d, dir, k) {
-    var c = p.constrain;
-    if (c && c.line) {
-      var a = c.line[0], b = c.line[1];
-      var len = Math.hypot(b[0] - a[0], b[1] - a[1]);
-      var u = [(b[0] - a[0]) / len, (b[1] - a[1]) / len];
-      var dot = dir[0] * u[0] + dir[1] * u[1];
-      var sign = dot > 1e-9 ? 1 : dot < -1e-9 ? -1 : dir[0] + dir[1];
-      var s = k * keyStep(p, fig, 0);
-      return [d[0] + sign * s * u[0], d[1] + sign * s * u[1]];
-    }
-    return [d[0] + dir[0] * k * keyStep(p, fig, 0),
-            d[1] + dir[1] * k * keyStep(p, fig, 1)];
-  }
-
-  function keyboardHandle(c, fig, svg, h) {
-    var d = values[h.param] && values[h.param][h.index] || [h.x, h.y];
-    c.setAttribute('tabindex', '0');
-    c.setAttribute('role', 'slider');
-    c.setAttribute('aria-roledescription', 'draggable point');
-    c.setAttribute('aria-label', h.param + '_' + h.index);
-    c.setAttribute('aria-valuenow', num(d[0]));
-    c.setAttribute('aria-valuetext', pointText(h.param, h.index, d));
-    c.setAttribute('aria-keyshortcuts',
-                   'ArrowLeft ArrowRight ArrowUp ArrowDown');
-    c.addEventListener('keydown', function (ev) {
-      var dir = arrows[ev.key], p = paramNamed(h.param);
-      if (!dir || !p || !values[h.param] || ev.altKey || ev.ctrlKey ||
-          ev.metaKey) return;
-      ev.preventDefault();
-      var q = stepPoint(p, fig, values[h.param][h.index], dir,
-                        ev.shiftKey ? 10 : 1);
-      var s = toSvg(fig, q[0], q[1]);
-      var u = inView(svg, { x: s[0], y: s[1] });
-      q = toData(fig, u.x, u.y);
-      q = constrain(p, q[0], q[1]);
-      if (!(p.constrain && p.constrain.grid)) q = roundPoint(fig, q);
-      s = toSvg(fig, q[0], q[1]);
-      place(c, s[0], s[1]);
-      values[h.param][h.index] = q;
-      c.setAttribute('aria-valuenow', num(q[0]));
-      c.setAttribute('aria-valuetext', pointText(h.param, h.index, q));
-      announce.textContent = pointText(h.param, h.index, q);
-      request();
-    });
-  }
-
-  // The handle that has the focus, as [param, index], or null; after the
-  // figures are drawn again, its new circle takes the focus back.
-  function focusedHandle() {
-    var a = document.activeElement;
-    return a && a.classList && a.classList.contains('cf-handle') &&
-      figures.contains(a) ? [a.getAttribute('data-param'),
-                             a.getAttribute('data-index')] : null;
-  }
-
-  function refocus(f) {
-    if (!f) return;
-    var c = figures.querySelector('[id="cf-handle-' + f[0] + '-' + f[1] +
-                                  '"]');
-    if (c) c.focus({ preventScroll: true });
-  }
+  var keys = CurvefigKeys({
+    root: root, figures: figures, el: el, paramNamed: paramNamed,
+    toSvg: toSvg, toData: toData, inView: inView, constrain: constrain,
+    roundPoint: roundPoint, place: place, request: request,
+    values: function () { return values; }
+  });
 
   // ---- runs ------------------------------------------------------------
 
@@ -795,7 +585,7 @@ function CurvefigPage(root, engine) {
       lastFigures = reply.figures;
       if (!drag) showFigures(reply.figures);
       else updateFigures(reply.figures);
-      lua.textContent = reply.lua + viewsLua();
+      lua.textContent = reply.lua + rotate.viewsLua();
     }
     root.dataset.runs = String(runs);
   }

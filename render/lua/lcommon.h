@@ -128,7 +128,7 @@ void cf__lua_open_reduce(lua_State *L);
 void cf__lua_open_interp(lua_State *L);
 void cf__lua_open_conic(lua_State *L);
 /* All of the figure language's functions, every opener in order, before
-** the name guards (script.c). */
+** the name guards (language.c). */
 void cf__lua_open_language(lua_State *L);
 
 /* The one grow helper of the binding's growing C buffers: makes room for

@@ -332,26 +332,6 @@ library_alloc(void *ud, void *ptr, size_t osize, size_t nsize)
     return budget_alloc(ud, ptr, osize, nsize);
 }
 
-void
-cf__lua_open_language(lua_State *L)
-{
-    cf__lua_open_bezier(L);
-    cf__lua_open_bspline(L);
-    cf__lua_open_knots(L);
-    cf__lua_open_bernstein(L);
-    cf__lua_open_offset(L);
-    cf__lua_open_reduce(L);
-    cf__lua_open_interp(L);
-    cf__lua_open_conic(L);
-    cf__lua_open_surface(L);
-    cf__lua_open_surface_make(L);
-    cf__lua_open_surface_triangle(L);
-    cf__lua_open_figure(L);
-    cf__lua_open_params(L);
-    cf__lua_open_animate(L);
-    cf__lua_open_theme(L);
-}
-
 #define SEED_KEY "curvefig.seed"
 
 /* math.randomseed: without an argument, the run's seed (registry) rather

@@ -25,6 +25,7 @@
 #endif
 
 #include "animate.h"
+#include "formats-arg.h"
 #include "curvefig/access.h"
 #include "curvefig/figure.h"
 #include "help.h"
@@ -77,34 +78,6 @@ usage_error(const char *fmt, const char *arg)
     return EXIT_USAGE;
 }
 
-/* The nearest format to the unknown one in list (NULL: none near). */
-static const char *
-nearest_format(const char *list)
-{
-    static const char *const formats[] = { "svg", "pdf", "png", "ps", "eps",
-                                           "pgf", "html", "gif", "apng",
-                                           "mp4", "webm", "all" };
-    char name[64];
-    const char *p = list;
-    while (*p != '\0') {
-        size_t n = strcspn(p, ",");
-        cf_format_t f;
-        if (n > 0 && n < sizeof name) {
-            memcpy(name, p, n);
-            name[n] = '\0';
-            if (strcmp(name, "all") != 0 && strcmp(name, "html") != 0
-                && cf__tool_anim_format(name) == 0
-                && cf_format_from_name(name, &f, NULL) != CF_STATUS_OK)
-                return cf_nearest_name(name, formats,
-                                       sizeof formats / sizeof formats[0]);
-        }
-        p += n;
-        if (*p == ',')
-            p++;
-    }
-    return NULL;
-}
-
 /* The options of render, run and list, for the nearest one. */
 static const char *const known_options[] = {
     "--output", "--formats", "--dpi", "--only", "--manifest", "--title",
@@ -115,37 +88,6 @@ static const char *const known_options[] = {
     "--bounce", "--step-seconds", "--animate", "--workers", "--prefix",
     "--json", "--min-de",
 };
-
-static int
-parse_formats(const char *list, unsigned *out)
-{
-    char name[16];
-    const char *p = list;
-    *out = 0;
-    while (*p != '\0') {
-        const char *e = strchr(p, ',');
-        size_t n = e != NULL ? (size_t)(e - p) : strlen(p);
-        cf_format_t f;
-        if (n == 0 || n >= sizeof name)
-            return -1;
-        memcpy(name, p, n);
-        name[n] = '\0';
-        if (strcmp(name, "all") == 0)
-            *out |= (1u << CF_FORMAT_LAST_) - 1;
-        else if (strcmp(name, "html") == 0)
-            *out |= CF__TOOL_HTML_BIT;
-        else if (cf__tool_anim_format(name) != 0)
-            *out |= cf__tool_anim_format(name);
-        else if (cf_format_from_name(name, &f, NULL) != CF_STATUS_OK)
-            return -1;
-        else
-            *out |= CF_FORMAT_BIT(f);
-        p += n;
-        if (*p == ',')
-            p++;
-    }
-    return *out != 0 ? 0 : -1;
-}
 
 /* A font size: a number in TeX points, or a number and a unit (texpt,
 ** bp, mm, cm, in); bp in *out. */
@@ -284,8 +226,8 @@ parse_args(int argc, char **argv, options *o, int *rc)
             takes = cf__tool_anim_takes_value(a);
         } else if (strcmp(a, "-f") == 0 || strcmp(a, "--formats") == 0) {
             o->formats_given = true;
-            if (parse_formats(v, &o->formats) != 0) {
-                const char *near = nearest_format(v);
+            if (cf__tool_parse_formats(v, &o->formats) != 0) {
+                const char *near = cf__tool_nearest_format(v);
                 char msg[512];
                 snprintf(msg, sizeof msg, "bad format list '%s' (%s%s%suse "
                          "svg, pdf, png, ps, eps, pgf, html or all, and for "

@@ -10,8 +10,8 @@
 ** curve's: both are drawn exactly as the figure draws any plane curve
 ** (cubic segments within the figure's tolerance, never a polyline).
 ** Points, polygons, labels, arrows and curves given in R^3 are projected
-** by the view; curves, polylines, polygons, points and labels added with
-** the functions below are also split or hidden by the figure's surfaces.
+** by the view; curves, polylines, polygons, points, labels and arrows
+** added with the functions below are also split or hidden by the figure's surfaces.
 **
 ** A point at or behind the eye cannot be drawn: the element that holds it
 ** fails with CF_STATUS_DOMAIN, naming the point and a distance that would
@@ -161,6 +161,14 @@ CF_API cf_status_t cf_figure_add_space_points(cf_figure_t *fig,
 CF_API cf_status_t cf_figure_add_space_label(cf_figure_t *fig,
                                              const double *p,
                                              const char *text,
+                                             cf_hidden_t hidden,
+                                             const cf_style_t *style);
+/* An arrow from p to q in R^3: its shaft a segment split as above, its
+** head at the image of q drawn when q is seen and, when q is hidden, as a
+** hidden marker is (faded, left out or drawn).  Role CF_ROLE_ARROW. */
+CF_API cf_status_t cf_figure_add_space_arrow(cf_figure_t *fig,
+                                             const double *p,
+                                             const double *q,
                                              cf_hidden_t hidden,
                                              const cf_style_t *style);
 

@@ -141,25 +141,6 @@ cf_figure_add_space_label(cf_figure_t *fig, const double *p, const char *text,
 
 /* ---- arrows ------------------------------------------------------------- */
 
-void
-cf__arrow_head(cf__dl_t *dl, double tx, double ty, double ux, double uy,
-               double len, const cf_color_t *color, double opacity)
-{
-    double nx = -uy, ny = ux, w = 0.38 * len;
-    cf__paint_t paint;
-    memset(&paint, 0, sizeof paint);
-    paint.fill = true;
-    paint.fill_color = *color;
-    paint.fill_opacity = opacity;
-    cf__dl_path_begin(dl);
-    cf__dl_move(dl, tx, ty);
-    cf__dl_line(dl, tx - len * ux + w * nx, ty - len * uy + w * ny);
-    cf__dl_line(dl, tx - 0.72 * len * ux, ty - 0.72 * len * uy);
-    cf__dl_line(dl, tx - len * ux - w * nx, ty - len * uy - w * ny);
-    cf__dl_close(dl);
-    cf__dl_path_paint(dl, &paint);
-}
-
 static void
 arrow_fini(cf__element_t *el)
 {

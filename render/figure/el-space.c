@@ -7,7 +7,9 @@
 ** segment (under a perspective view too), so the pieces are drawn as line
 ** segments of the images of their ends.  Hidden pieces are dashed, left
 ** out or drawn as visible ones (hidden); hidden markers are faded to 0.4
-** of their opacity, left out or drawn alike.
+** of their opacity, left out or drawn alike.  An arrow in space is such a
+** segment with a head at its tip in place of markers: its shaft is split
+** as any segment and its head follows the tip as a marker does.
 */
 #include <math.h>
 #include <stdint.h>
@@ -22,6 +24,8 @@ typedef struct space_el {
     double *p2;              /* their images */
     size_t n;
     bool lines, closed;      /* polyline or polygon; else points */
+    bool arrow;              /* one segment with a head at p3[3..5] */
+    double t_end;            /* the shaft ends here (under the head) */
     cf_hidden_t hidden;
     double cache_tol;        /* the visibility below is for this layout
                                 tolerance (0: none) */
@@ -156,6 +160,7 @@ pieces_path(const space_el_t *e, const cf__layout_t *l, bool visible,
 {
     bool any = false, open = false, whole = true;
     size_t ns = segments(e);
+    double t_end = e->arrow ? e->t_end : 1.0;
     cf__dl_path_begin(dl);
     for (size_t i = 0; i < ns; i++) {
         const cf_visibility_t *v = e->vis[i];
@@ -168,7 +173,7 @@ pieces_path(const space_el_t *e, const cf__layout_t *l, bool visible,
         for (size_t k = 0; k < n; k++) {
             const cf_vis_interval_t *iv = v != NULL ? &v->items[k] : &one;
             double x, y;
-            if (iv->visible != visible) {
+            if (iv->visible != visible || iv->t0 >= t_end) {
                 open = false;
                 whole = false;
                 continue;
@@ -177,7 +182,7 @@ pieces_path(const space_el_t *e, const cf__layout_t *l, bool visible,
                 at(e, l, i, iv->t0, &x, &y);
                 cf__dl_move(dl, x, y);
             }
-            at(e, l, i, iv->t1, &x, &y);
+            at(e, l, i, fmin(iv->t1, t_end), &x, &y);
             cf__dl_line(dl, x, y);
             open = iv->t1 >= 1;
             any = true;
@@ -188,15 +193,18 @@ pieces_path(const space_el_t *e, const cf__layout_t *l, bool visible,
     return any;
 }
 
-/* End the path: stroked in s (NULL: not painted). */
+/* End the path: stroked in s (NULL: not painted), butt-capped for the
+** shaft of an arrow. */
 static void
-stroke(const cf_style_t *s, cf__dl_t *dl)
+stroke(const space_el_t *e, const cf_style_t *s, cf__dl_t *dl)
 {
     cf__paint_t paint;
     memset(&paint, 0, sizeof paint);
     if (s != NULL && s->color.a > 0 && s->width > 0) {
         paint.stroke = true;
         cf__stroke_from_style(s, &paint.line);
+        if (e->arrow)
+            paint.line.cap = CF__CAP_BUTT;
     }
     cf__dl_path_paint(dl, &paint);
 }
@@ -207,15 +215,39 @@ space_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
 {
     space_el_t *e = (space_el_t *)el;
     cf_status_t st = build(fig, e, l->tol);
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0, len = 0, head = 0;
     if (st != CF_STATUS_OK)
         return st;
+    if (e->arrow) {
+        /* the image of the shaft is a segment: the head points along it
+        ** and the shaft stops at the head's notch */
+        cf__map(l, e->p2[0], e->p2[1], &x0, &y0);
+        cf__map(l, e->p2[2], e->p2[3], &x1, &y1);
+        len = hypot(x1 - x0, y1 - y0);
+        if (!(len > 1e-9))
+            return CF_STATUS_OK;
+        head = fmin(s->arrow_size, len);
+        e->t_end = 1 - 0.8 * head / len;
+    }
     if (segments(e) > 0) {
         cf_style_t h = cf__hidden_style(s);
         cf__clip_to_window(l, s->width > 0 ? s->width : 0, dl);
         if (e->hidden == CF_HIDDEN_DASHED)
-            stroke(pieces_path(e, l, false, dl) ? &h : NULL, dl);
-        stroke(pieces_path(e, l, true, dl) ? s : NULL, dl);
+            stroke(e, pieces_path(e, l, false, dl) ? &h : NULL, dl);
+        stroke(e, pieces_path(e, l, true, dl) ? s : NULL, dl);
         cf__dl_unclip(dl);
+    }
+    if (e->arrow) {
+        /* the head as a marker at the tip: faded, left out or drawn */
+        double opacity = s->opacity;
+        if (!e->seen[1] && e->hidden == CF_HIDDEN_REMOVE)
+            return CF_STATUS_OK;
+        if (!e->seen[1] && e->hidden == CF_HIDDEN_DASHED)
+            opacity *= 0.4;
+        if (head > 0)
+            cf__arrow_head(dl, x1, y1, (x1 - x0) / len, (y1 - y0) / len,
+                           head, &s->color, opacity);
+        return CF_STATUS_OK;
     }
     for (size_t i = 0; i < e->n; i++)
         cf__space_marker(l, s, e->p2 + 2 * i, e->seen[i], e->hidden, dl);
@@ -227,6 +259,9 @@ static const cf__kind_t polyline_kind = {
 };
 static const cf__kind_t polygon_kind = {
     "polygon", 0, space_fini, space_bounds, space_draw, NULL, NULL, NULL
+};
+static const cf__kind_t arrow_kind = {
+    "arrow", 0, space_fini, space_bounds, space_draw, NULL, NULL, NULL
 };
 static const cf__kind_t points_kind = {
     "points", 0, space_fini, space_bounds, space_draw, NULL, NULL, NULL
@@ -345,6 +380,24 @@ cf_figure_add_space_polygon(cf_figure_t *fig, const double *pts, size_t n,
 {
     return add_space(fig, &polygon_kind, CF_ROLE_POLYGON, pts, n, 1, true,
                      false, hidden, style, "control polygon");
+}
+
+cf_status_t
+cf_figure_add_space_arrow(cf_figure_t *fig, const double *p, const double *q,
+                          cf_hidden_t hidden, const cf_style_t *style)
+{
+    double pq[6];
+    cf_status_t st;
+    if (p == NULL || q == NULL)
+        return add_space(fig, &arrow_kind, CF_ROLE_ARROW, NULL, 0, 2, true,
+                         false, hidden, style, "arrow");
+    memcpy(pq, p, 3 * sizeof *pq);
+    memcpy(pq + 3, q, 3 * sizeof *pq);
+    st = add_space(fig, &arrow_kind, CF_ROLE_ARROW, pq, 2, 2, true, false,
+                   hidden, style, "arrow");
+    if (st == CF_STATUS_OK)
+        ((space_el_t *)fig->els[fig->count - 1])->arrow = true;
+    return st;
 }
 
 cf_status_t

@@ -333,7 +333,7 @@ cf__element_t *cf__curve_new(cf_figure_t *fig, cf_role_t role,
 cf_status_t cf__curve_add(cf_figure_t *fig, cf__element_t *e,
                           cf_bezier_t *bez, const double *cubic);
 
-/* ---- el-mark.c: the head of an arrow, for the axes --------------------- */
+/* ---- arrow-head.c: the head of an arrow -------------------------------- */
 
 /* A slightly concave ("stealth") triangle with its tip at (tx, ty)
 ** pointing along the unit vector (ux, uy), length len, filled. */

@@ -285,6 +285,28 @@ arrow(lua_State *L, bool to)
     double *p, *v, pd[4];
     lua_settop(L, 4);
     cf__lua_check_table(L, 4, to ? CF__KEYS_ARROW_TO : CF__KEYS_ARROW);
+    p = cf__lua_check_points3d(L, fig, 2, fn, &n);
+    v = p != NULL ? cf__lua_check_points3d(L, fig, 3, fn, &n) : NULL;
+    if (v != NULL) {
+        /* an arrow in space: its shaft split by the surfaces */
+        double pq3[6], q2[2];
+        cf_style_t st;
+        cf_diag_t diag;
+        cf_hidden_t hidden = cf__lua_read_hidden(L, 4, fn, "dashed");
+        for (int k = 0; k < 3; k++) {
+            pq3[k] = p[k];
+            pq3[3 + k] = to ? v[k] : p[k] + v[k];
+        }
+        cf__lua_read_style(L, 4, fn, fig, &st);
+        cf_diag_clear(&diag);
+        check(L, fn, cf_figure_add_space_arrow(fig, pq3, pq3 + 3, hidden,
+                                               &st), &diag);
+        check(L, fn, cf_figure_project(fig, pq3 + 3, 1, 3, q2), NULL);
+        cf__lua_label_space_items(L, fig, 4, "label", q2, pq3 + 3, hidden, 1,
+                                  NULL, 0, fn);
+        lua_settop(L, 1);
+        return 1;
+    }
     p = cf__lua_check_points2d(L, fig, 2, fn, &n);
     v = cf__lua_check_points2d(L, fig, 3, fn, &n);
     pd[0] = p[0];

@@ -2,7 +2,8 @@
 -- test_surface_figures.c checks every piece and point against the ray
 -- caster): a polyline that pierces a bent patch and runs behind it, a
 -- closed polygon about it, a segment through it (f:line), points and
--- labelled points in front of and behind it, hidden pieces dashed,
+-- labelled points in front of and behind it, two arrows (split as a
+-- segment, the head following the tip), hidden pieces dashed,
 -- removed and shown.
 
 local P = {
@@ -29,3 +30,8 @@ f:polygon({ {-0.8, 0.9, -0.4}, {0.1, 0.3, 1.5}, {0.9, -0.9, -0.2} },
 f:points({ {0.2, 0.1, 1.4}, {0, 0, -0.5}, {0.5, -0.5, 1.2},
            {-0.5, 0.4, -0.2} }, { labels = "Q_%d" })
 f:label({ 0.1, -0.1, -0.4 }, "behind", { hidden = "dashed" })
+-- arrows: one whose shaft pierces the patch up to a tip in front of it,
+-- one whose tip lies behind it (its head faded)
+f:arrow_to({ 0.5, -0.6, -0.6 }, { -0.2, 0.3, 1.7 }, { color = "orange",
+                                                      label = "a" })
+f:arrow_to({ 0.7, -0.2, 1.6 }, { 0.2, 0.3, -0.3 }, { color = "purple" })

@@ -121,9 +121,9 @@ cf_bspline_insert_knot(const cf_bspline_t *c, double u, int r,
 /* ---- refinement --------------------------------------------------------- */
 
 /* The heart of A5.4, from the right: the old points above the next new
-** knot move up, then p points are recomputed (inlined with a constant
-** hd for the common dimensions). */
-CF__INLINE void
+** knot move up, then p points are recomputed (any p and hd: the points
+** are stored and read back from Q). */
+static void
 refine_loop(const double *U, const double *P, double *V, double *Q,
             const double *X, size_t nx, size_t p, size_t a, size_t b,
             size_t hd)
@@ -155,10 +155,142 @@ refine_loop(const double *U, const double *P, double *V, double *Q,
     }
 }
 
+#if defined(__GNUC__)
+/* Planar cubics, the common case: the same steps and the same arithmetic
+** (so the same values), with the four points the recurrence works on,
+** Q[kk - 3 .. kk], and the three knots right of the current one,
+** V[kk + 1 .. kk + 3], held in registers (pairs of doubles, GCC's and
+** clang's vector extension) instead of being stored and read back: one
+** new knot waits for one interpolation of the last, not for a store and
+** a load per point.  The highest point is final when a step begins: each
+** step writes it out (the first steps of a curve refined near its end
+** start above Q's last index, qlast; those are old points moving up, and
+** are not written) and shifts the window down by one. */
+typedef double refine_v2 __attribute__((vector_size(16)));
+typedef long long refine_m2 __attribute__((vector_size(16)));
+/* a pair of doubles anywhere in an array of doubles */
+typedef double refine_u2 __attribute__((vector_size(16), aligned(8),
+                                        may_alias));
+#define LOAD2(p) ((refine_v2)*(const refine_u2 *)(const void *)(p))
+#define STORE2(p, v) (*(refine_u2 *)(void *)(p) = (v))
+
+static void
+refine_cubic2(const double *U, const double *P, double *V, double *Q,
+              const double *X, size_t nx, size_t a, size_t b, size_t qlast)
+{
+    size_t i = b + 2, kk = b + nx + 2, vlast = qlast + 4;
+    refine_v2 w0, w1, w2, w3, t12, t34, one = { 1.0, 1.0 },
+              zero = { 0.0, 0.0 };
+    w0 = kk - 3 <= qlast ? LOAD2(Q + (kk - 3) * 2) : zero;
+    w1 = kk - 2 <= qlast ? LOAD2(Q + (kk - 2) * 2) : zero;
+    w2 = kk - 1 <= qlast ? LOAD2(Q + (kk - 1) * 2) : zero;
+    w3 = kk <= qlast ? LOAD2(Q + kk * 2) : zero;
+    t12 = (refine_v2){ kk + 1 <= vlast ? V[kk + 1] : 0.0,
+                       kk + 2 <= vlast ? V[kk + 2] : 0.0 };
+    t34 = (refine_v2){ kk + 3 <= vlast ? V[kk + 3] : 0.0, 1.0 };
+    for (size_t jj = nx; jj-- > 0;) {
+        double x = X[jj];
+        refine_v2 xv = { x, x }, u34, n12, n34, a12, a34, al;
+        while (x <= U[i] && i > a) {
+            /* Q[kk - 4] = P[i - 4], V[kk] = U[i] */
+            if (kk <= qlast)
+                STORE2(Q + kk * 2, w3);
+            w3 = w2;
+            w2 = w1;
+            w1 = w0;
+            w0 = LOAD2(P + (i - 4) * 2);
+            t34 = (refine_v2){ t12[1], 1.0 };
+            t12 = (refine_v2){ U[i], t12[0] };
+            V[kk] = U[i];
+            kk--;
+            i--;
+        }
+        if (kk <= qlast)
+            STORE2(Q + kk * 2, w3);
+        /* alpha_l = (V[kk + l] - x) / (V[kk + l] - U[i - 3 + l]), 0 where
+        ** the numerator is (x is that knot: the point is copied) */
+        u34 = (refine_v2){ U[i], 0.0 };
+        n12 = t12 - xv;
+        n34 = t34 - xv;
+        a12 = (refine_v2)((refine_m2)(n12 / (t12 - LOAD2(U + i - 2)))
+                          & (refine_m2)(n12 != zero));
+        a34 = (refine_v2)((refine_m2)(n34 / (t34 - u34))
+                          & (refine_m2)(n34 != zero));
+        al = (refine_v2){ a34[0], a34[0] };
+        w3 = (one - al) * w3 + al * w2;
+        al = (refine_v2){ a12[1], a12[1] };
+        w2 = (one - al) * w2 + al * w1;
+        al = (refine_v2){ a12[0], a12[0] };
+        w1 = (one - al) * w1 + al * w0;
+        t34 = (refine_v2){ t12[1], 1.0 };
+        t12 = (refine_v2){ x, t12[0] };
+        V[kk] = x;
+        kk--;
+    }
+    STORE2(Q + (kk - 3) * 2, w0);
+    STORE2(Q + (kk - 2) * 2, w1);
+    STORE2(Q + (kk - 1) * 2, w2);
+    STORE2(Q + kk * 2, w3);
+}
+#endif
+
+/* Whether X[0] < X[1] < ... < X[n - 1] (false on a NaN). */
+static bool
+strictly_increasing(const double *X, size_t n)
+{
+    size_t j = 1;
+#if defined(__GNUC__)
+    /* two comparisons per step, no branch (the vectoriser leaves this
+    ** loop scalar) */
+    refine_m2 all = { -1, -1 };
+    for (; j + 2 <= n; j += 2) {
+        all &= (refine_m2)(LOAD2(X + j) > LOAD2(X + j - 1));
+    }
+    if (!(all[0] & all[1]))
+        return false;
+#endif
+    for (; j < n; j++)
+        if (!(X[j] > X[j - 1]))
+            return false;
+    return true;
+}
+
+/* Whether a knot of multiplicity > p (U[k] = U[k + p]) lies in
+** [lo, hi] (U[0] <= lo <= hi): the range of k by bisection, then one
+** comparison per knot. */
+static bool
+full_knot_in(const double *U, size_t nk, size_t p, double lo, double hi)
+{
+    size_t k = cf__knots_last_le(U, nk, lo), end;
+    while (k > 0 && U[k - 1] >= lo)
+        k--;
+    k += U[k] < lo;
+    end = cf__knots_last_le(U, nk, hi) + 1;   /* U[k] <= hi for k < end */
+    if (end + p > nk)
+        end = nk - p;
+#if defined(__GNUC__)
+    {
+        refine_m2 any = { 0, 0 };
+        for (; k + 2 <= end; k += 2) {
+            any |= (refine_m2)(LOAD2(U + k) == LOAD2(U + k + p));
+        }
+        if (any[0] | any[1])
+            return true;
+    }
+#endif
+    for (; k < end; k++)
+        if (U[k] == U[k + p])
+            return true;
+    return false;
+}
+
 /* The new knots X: finite, inside the domain, sorted, and no knot's
-** final multiplicity above p + 1.  One pass over X and the knot vector
-** together; the messages (which knot, why) come from the detailed checks
-** only when the pass finds something wrong. */
+** final multiplicity above p + 1.  Two branch-free passes for the usual
+** case (X strictly increasing, and no knot of U in [X[0], X[nx - 1]]
+** already of multiplicity p + 1: then none gets more than p + 1); a
+** merge of X and U counts the multiplicities otherwise, and the messages
+** (which knot, why) come from the detailed checks only when a pass finds
+** something wrong. */
 static cf_status_t
 refine_check(const cf_bspline_t *c, const double *X, size_t nx,
              cf_diag_t *diag)
@@ -169,6 +301,9 @@ refine_check(const cf_bspline_t *c, const double *X, size_t nx,
     bool ok = true;
     cf_status_t st;
     /* a NaN fails every comparison; an infinity leaves the domain */
+    if (X[0] >= c->a && X[nx - 1] <= c->b && strictly_increasing(X, nx)
+        && !full_knot_in(U, nk, p1 - 1, X[0], X[nx - 1]))
+        return CF_STATUS_OK;
     for (size_t j = 0; j < nx; j++) {
         ok &= X[j] >= prev;
         prev = X[j];
@@ -239,11 +374,11 @@ cf_bspline_refine(const cf_bspline_t *c, const double *X, size_t nx,
            (n - b + 2) * hd * sizeof *P);
     memcpy(q->U, U, (a + 1) * sizeof *U);
     memcpy(q->U + b + p + nx, U + b + p, (m - b - p + 1) * sizeof *U);
-    if (hd == 2)
-        refine_loop(U, P, q->U, q->P, X, nx, p, a, b, 2);
-    else if (hd == 3)
-        refine_loop(U, P, q->U, q->P, X, nx, p, a, b, 3);
+#if defined(__GNUC__)
+    if (p == 3 && hd == 2)
+        refine_cubic2(U, P, q->U, q->P, X, nx, a, b, q->count - 1);
     else
+#endif
         refine_loop(U, P, q->U, q->P, X, nx, p, a, b, hd);
     cf__bspline_finish(q);
     *out = q;

@@ -18,18 +18,31 @@
 /*
 ** One allocation: the header followed by (degree + 1) * hdim doubles.
 ** hdim = dim + 1 for a rational curve (homogeneous (w x, w)), dim otherwise.
+** Curves made together by cf__bezier_new_many live in one shared block
+** instead (block: its count of live curves); each is still destroyed on
+** its own, by cf_bezier_destroy, and the block goes with the last.
 */
+typedef struct cf__bezier_block cf__bezier_block_t;
+
 struct cf_bezier {
     size_t dim;      /* Cartesian dimension N >= 1 */
     size_t hdim;     /* doubles per stored point: dim + rational */
     int degree;      /* 0 .. CF_BEZIER_MAX_DEGREE */
     bool rational;
+    cf__bezier_block_t *block;   /* NULL: the curve is its own block */
     double pts[];    /* (degree + 1) * hdim */
 };
 
 /* A curve with uninitialised points (fill c->pts), or NULL when out of
 ** memory or when the sizes overflow.  No other checks. */
 cf_bezier_t *cf__bezier_new(size_t dim, int degree, bool rational);
+
+/* n curves of one shape with uninitialised points in one block (one
+** allocation for all): out[i] is the i-th, and curve i's points start
+** i * *stride doubles after out[0]->pts.  false when out of memory or
+** when the sizes overflow (out untouched). */
+bool cf__bezier_new_many(size_t n, size_t dim, int degree, bool rational,
+                         cf_bezier_t **out, size_t *stride);
 
 /* The status of a curve parameter *t by the domain rule on [0, 1]
 ** (domain-private.h; *t clamped to an end it misses by rounding). */

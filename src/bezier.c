@@ -9,6 +9,7 @@
 ** Cartesian point is returned.
 */
 #include <math.h>
+#include <stdatomic.h>
 #include <stdint.h>
 #include <string.h>
 
@@ -38,7 +39,62 @@ cf__bezier_new(size_t dim, int degree, bool rational)
     c->hdim = hdim;
     c->degree = degree;
     c->rational = rational;
+    c->block = NULL;
     return c;
+}
+
+/* The shared block of cf__bezier_new_many: the count of its live curves,
+** then the curves one stride apart (a stride is a multiple of the
+** header's alignment, so every header is aligned). */
+struct cf__bezier_block {
+    atomic_size_t live;
+};
+
+#define BLOCK_HEAD                                                         \
+    ((sizeof(cf__bezier_block_t) + _Alignof(cf_bezier_t) - 1)             \
+     / _Alignof(cf_bezier_t) * _Alignof(cf_bezier_t))
+
+bool
+cf__bezier_new_many(size_t n, size_t dim, int degree, bool rational,
+                    cf_bezier_t **out, size_t *stride)
+{
+    size_t hdim, npts, bytes, al = _Alignof(cf_bezier_t);
+    cf__bezier_block_t *b;
+    char *base;
+    if (n == 0 || dim == 0 || degree < 0 || dim > SIZE_MAX / 16)
+        return false;
+    hdim = dim + (rational ? 1u : 0u);
+    npts = (size_t)degree + 1;
+    if (hdim > (SIZE_MAX / 2 - sizeof(cf_bezier_t)) / sizeof(double) / npts)
+        return false;
+    bytes = (sizeof(cf_bezier_t) + npts * hdim * sizeof(double) + al - 1)
+            / al * al;
+    if (n > (SIZE_MAX - BLOCK_HEAD) / bytes)
+        return false;
+    b = cf__malloc(BLOCK_HEAD + n * bytes);
+    if (b == NULL)
+        return false;
+    atomic_init(&b->live, n);
+    base = (char *)b + BLOCK_HEAD;
+    for (size_t i = 0; i < n; i++) {
+        cf_bezier_t *c = (cf_bezier_t *)(void *)(base + i * bytes);
+        c->dim = dim;
+        c->hdim = hdim;
+        c->degree = degree;
+        c->rational = rational;
+        c->block = b;
+        out[i] = c;
+    }
+    *stride = bytes / sizeof(double);
+    return true;
+}
+
+/* k curves of block b are gone; the last frees it. */
+static void
+block_release(cf__bezier_block_t *b, size_t k)
+{
+    if (atomic_fetch_sub_explicit(&b->live, k, memory_order_acq_rel) == k)
+        cf__free(b);
 }
 
 /* A curve whose stored points are copied from hpts ((degree + 1) * hdim
@@ -171,7 +227,10 @@ cf_bezier_copy(const cf_bezier_t *c, cf_bezier_t **out, cf_diag_t *diag)
 void
 cf_bezier_destroy(cf_bezier_t *c)
 {
-    cf__free(c);
+    if (c != NULL && c->block != NULL)
+        block_release(c->block, 1);
+    else
+        cf__free(c);
 }
 
 /* ---- queries ------------------------------------------------------------- */
@@ -759,9 +818,27 @@ cf_bezier_list_destroy(cf_bezier_list_t *list)
 {
     if (list == NULL)
         return;
-    if (list->items != NULL)
-        for (size_t i = 0; i < list->count; i++)
-            cf_bezier_destroy(list->items[i]);
+    if (list->items != NULL) {
+        /* the curves of one block side by side go in one release */
+        cf__bezier_block_t *run = NULL;
+        size_t k = 0;
+        for (size_t i = 0; i < list->count; i++) {
+            cf_bezier_t *c = list->items[i];
+            if (c == NULL)
+                continue;
+            if (c->block != run && run != NULL) {
+                block_release(run, k);
+                k = 0;
+            }
+            run = c->block;
+            if (run != NULL)
+                k++;
+            else
+                cf__free(c);
+        }
+        if (run != NULL)
+            block_release(run, k);
+    }
     cf__free(list->items);
     cf__free(list->t0);
     cf__free(list->t1);

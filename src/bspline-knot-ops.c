@@ -155,7 +155,7 @@ refine_loop(const double *U, const double *P, double *V, double *Q,
     }
 }
 
-#if defined(__GNUC__)
+#if defined(CF__HAVE_PAIRS)
 /* Planar cubics, the common case: the same steps and the same arithmetic
 ** (so the same values), with the four points the recurrence works on,
 ** Q[kk - 3 .. kk], and the three knots right of the current one,
@@ -166,71 +166,59 @@ refine_loop(const double *U, const double *P, double *V, double *Q,
 ** step writes it out (the first steps of a curve refined near its end
 ** start above Q's last index, qlast; those are old points moving up, and
 ** are not written) and shifts the window down by one. */
-typedef double refine_v2 __attribute__((vector_size(16)));
-typedef long long refine_m2 __attribute__((vector_size(16)));
-/* a pair of doubles anywhere in an array of doubles */
-typedef double refine_u2 __attribute__((vector_size(16), aligned(8),
-                                        may_alias));
-#define LOAD2(p) ((refine_v2)*(const refine_u2 *)(const void *)(p))
-#define STORE2(p, v) (*(refine_u2 *)(void *)(p) = (v))
-
 static void
 refine_cubic2(const double *U, const double *P, double *V, double *Q,
               const double *X, size_t nx, size_t a, size_t b, size_t qlast)
 {
     size_t i = b + 2, kk = b + nx + 2, vlast = qlast + 4;
-    refine_v2 w0, w1, w2, w3, t12, t34, one = { 1.0, 1.0 },
-              zero = { 0.0, 0.0 };
-    w0 = kk - 3 <= qlast ? LOAD2(Q + (kk - 3) * 2) : zero;
-    w1 = kk - 2 <= qlast ? LOAD2(Q + (kk - 2) * 2) : zero;
-    w2 = kk - 1 <= qlast ? LOAD2(Q + (kk - 1) * 2) : zero;
-    w3 = kk <= qlast ? LOAD2(Q + kk * 2) : zero;
-    t12 = (refine_v2){ kk + 1 <= vlast ? V[kk + 1] : 0.0,
+    cf__v2 w0, w1, w2, w3, t12, t34, zero = { 0.0, 0.0 };
+    w0 = kk - 3 <= qlast ? CF__LOAD2(Q + (kk - 3) * 2) : zero;
+    w1 = kk - 2 <= qlast ? CF__LOAD2(Q + (kk - 2) * 2) : zero;
+    w2 = kk - 1 <= qlast ? CF__LOAD2(Q + (kk - 1) * 2) : zero;
+    w3 = kk <= qlast ? CF__LOAD2(Q + kk * 2) : zero;
+    t12 = (cf__v2){ kk + 1 <= vlast ? V[kk + 1] : 0.0,
                        kk + 2 <= vlast ? V[kk + 2] : 0.0 };
-    t34 = (refine_v2){ kk + 3 <= vlast ? V[kk + 3] : 0.0, 1.0 };
+    t34 = (cf__v2){ kk + 3 <= vlast ? V[kk + 3] : 0.0, 1.0 };
     for (size_t jj = nx; jj-- > 0;) {
         double x = X[jj];
-        refine_v2 xv = { x, x }, u34, n12, n34, a12, a34, al;
+        cf__v2 xv = { x, x }, u34, n12, n34, a12, a34;
         while (x <= U[i] && i > a) {
             /* Q[kk - 4] = P[i - 4], V[kk] = U[i] */
             if (kk <= qlast)
-                STORE2(Q + kk * 2, w3);
+                CF__STORE2(Q + kk * 2, w3);
             w3 = w2;
             w2 = w1;
             w1 = w0;
-            w0 = LOAD2(P + (i - 4) * 2);
-            t34 = (refine_v2){ t12[1], 1.0 };
-            t12 = (refine_v2){ U[i], t12[0] };
+            w0 = CF__LOAD2(P + (i - 4) * 2);
+            t34 = (cf__v2){ t12[1], 1.0 };
+            t12 = (cf__v2){ U[i], t12[0] };
             V[kk] = U[i];
             kk--;
             i--;
         }
         if (kk <= qlast)
-            STORE2(Q + kk * 2, w3);
+            CF__STORE2(Q + kk * 2, w3);
         /* alpha_l = (V[kk + l] - x) / (V[kk + l] - U[i - 3 + l]), 0 where
         ** the numerator is (x is that knot: the point is copied) */
-        u34 = (refine_v2){ U[i], 0.0 };
+        u34 = (cf__v2){ U[i], 0.0 };
         n12 = t12 - xv;
         n34 = t34 - xv;
-        a12 = (refine_v2)((refine_m2)(n12 / (t12 - LOAD2(U + i - 2)))
-                          & (refine_m2)(n12 != zero));
-        a34 = (refine_v2)((refine_m2)(n34 / (t34 - u34))
-                          & (refine_m2)(n34 != zero));
-        al = (refine_v2){ a34[0], a34[0] };
-        w3 = (one - al) * w3 + al * w2;
-        al = (refine_v2){ a12[1], a12[1] };
-        w2 = (one - al) * w2 + al * w1;
-        al = (refine_v2){ a12[0], a12[0] };
-        w1 = (one - al) * w1 + al * w0;
-        t34 = (refine_v2){ t12[1], 1.0 };
-        t12 = (refine_v2){ x, t12[0] };
+        a12 = (cf__v2)((cf__m2)(n12 / (t12 - CF__LOAD2(U + i - 2)))
+                          & (cf__m2)(n12 != zero));
+        a34 = (cf__v2)((cf__m2)(n34 / (t34 - u34))
+                          & (cf__m2)(n34 != zero));
+        w3 = cf__lerp2(w3, w2, a34[0]);
+        w2 = cf__lerp2(w2, w1, a12[1]);
+        w1 = cf__lerp2(w1, w0, a12[0]);
+        t34 = (cf__v2){ t12[1], 1.0 };
+        t12 = (cf__v2){ x, t12[0] };
         V[kk] = x;
         kk--;
     }
-    STORE2(Q + (kk - 3) * 2, w0);
-    STORE2(Q + (kk - 2) * 2, w1);
-    STORE2(Q + (kk - 1) * 2, w2);
-    STORE2(Q + kk * 2, w3);
+    CF__STORE2(Q + (kk - 3) * 2, w0);
+    CF__STORE2(Q + (kk - 2) * 2, w1);
+    CF__STORE2(Q + (kk - 1) * 2, w2);
+    CF__STORE2(Q + kk * 2, w3);
 }
 #endif
 
@@ -239,12 +227,12 @@ static bool
 strictly_increasing(const double *X, size_t n)
 {
     size_t j = 1;
-#if defined(__GNUC__)
+#if defined(CF__HAVE_PAIRS)
     /* two comparisons per step, no branch (the vectoriser leaves this
     ** loop scalar) */
-    refine_m2 all = { -1, -1 };
+    cf__m2 all = { -1, -1 };
     for (; j + 2 <= n; j += 2) {
-        all &= (refine_m2)(LOAD2(X + j) > LOAD2(X + j - 1));
+        all &= (cf__m2)(CF__LOAD2(X + j) > CF__LOAD2(X + j - 1));
     }
     if (!(all[0] & all[1]))
         return false;
@@ -268,11 +256,11 @@ full_knot_in(const double *U, size_t nk, size_t p, double lo, double hi)
     end = cf__knots_last_le(U, nk, hi) + 1;   /* U[k] <= hi for k < end */
     if (end + p > nk)
         end = nk - p;
-#if defined(__GNUC__)
+#if defined(CF__HAVE_PAIRS)
     {
-        refine_m2 any = { 0, 0 };
+        cf__m2 any = { 0, 0 };
         for (; k + 2 <= end; k += 2) {
-            any |= (refine_m2)(LOAD2(U + k) == LOAD2(U + k + p));
+            any |= (cf__m2)(CF__LOAD2(U + k) == CF__LOAD2(U + k + p));
         }
         if (any[0] | any[1])
             return true;
@@ -374,7 +362,7 @@ cf_bspline_refine(const cf_bspline_t *c, const double *X, size_t nx,
            (n - b + 2) * hd * sizeof *P);
     memcpy(q->U, U, (a + 1) * sizeof *U);
     memcpy(q->U + b + p + nx, U + b + p, (m - b - p + 1) * sizeof *U);
-#if defined(__GNUC__)
+#if defined(CF__HAVE_PAIRS)
     if (p == 3 && hd == 2)
         refine_cubic2(U, P, q->U, q->P, X, nx, a, b, q->count - 1);
     else

@@ -155,11 +155,12 @@ count_spans(const cf_bspline_t *c)
 }
 
 /* The heart of A5.6 (p >= 1): one pass over the knots, each piece's
-** points written in place, the next piece's first points saved as they
-** are made (inlined with constant p and hd for the common cases). */
+** points written in place (piece s at Q + s * stride), the next piece's
+** first points saved as they are made (inlined with constant p and hd
+** for the common cases). */
 CF__INLINE void
 decompose_loop(const double *U, const double *P, size_t m, size_t p,
-               size_t hd, double *Q, double *breaks)
+               size_t hd, double *Q, size_t stride, double *breaks)
 {
     size_t seg = (p + 1) * hd, a = p, b = p + 1, nb = 0;
     double alphas[CF_BSPLINE_MAX_DEGREE + 1];
@@ -169,7 +170,7 @@ decompose_loop(const double *U, const double *P, size_t m, size_t p,
         breaks[0] = U[p];
     while (b < m) {
         size_t i = b, mult;
-        double *cur = Q + nb * seg;
+        double *cur = Q + nb * stride;
         while (b < m && U[b + 1] == U[b])
             b++;
         mult = b - i + 1;
@@ -184,7 +185,7 @@ decompose_loop(const double *U, const double *P, size_t m, size_t p,
                     cf__bspline_lerp(cur + k * hd, cur + (k - 1) * hd,
                                      cur + k * hd, alphas[k - s], hd);
                 if (b < m)
-                    cf__bspline_copy_pt(cur + seg + save * hd,
+                    cf__bspline_copy_pt(cur + stride + save * hd,
                                         cur + p * hd, hd);
             }
         }
@@ -194,7 +195,7 @@ decompose_loop(const double *U, const double *P, size_t m, size_t p,
         if (b < m) {
             size_t from = mult < p ? p - mult : 0;
             for (size_t ii = from; ii <= p; ii++)
-                cf__bspline_copy_pt(Q + nb * seg + ii * hd,
+                cf__bspline_copy_pt(Q + nb * stride + ii * hd,
                                     P + (b - p + ii) * hd, hd);
             a = b;
             b++;
@@ -202,27 +203,43 @@ decompose_loop(const double *U, const double *P, size_t m, size_t p,
     }
 }
 
-/* A5.6 on a clamped curve: Q receives nseg * (p + 1) * hd doubles,
-** breaks (may be NULL) nseg + 1 parameters. */
+/* The pieces of c into Q (piece s at Q + s * stride), breaks (may be
+** NULL) nseg + 1 parameters: cubics from the blossom, any knot vector
+** (bspline-cubic-pieces.c); other degrees by A5.6 on the clamped curve. */
 static void
-decompose(const cf_bspline_t *c, double *Q, double *breaks)
+decompose(const cf_bspline_t *c, double *Q, size_t stride, double *breaks)
 {
     size_t p = (size_t)c->p, hd = c->hdim, m = c->nknots - 1;
     const double *U = c->U, *P = c->P;
-    if (p == 0) {
+    if (p == 3) {
+        cf__bspline_cubic_pieces(c, Q, stride, breaks);
+    } else if (p == 0) {
         /* every point is a constant piece on its span */
-        memcpy(Q, P, c->count * hd * sizeof *Q);
+        for (size_t i = 0; i < c->count; i++)
+            cf__bspline_copy_pt(Q + i * stride, P + i * hd, hd);
         if (breaks != NULL)
             memcpy(breaks, U, c->nknots * sizeof *U);
-    } else if (p == 3 && hd == 2) {
-        decompose_loop(U, P, m, 3, 2, Q, breaks);
-    } else if (p == 3 && hd == 3) {
-        decompose_loop(U, P, m, 3, 3, Q, breaks);
     } else if (p == 2 && hd == 2) {
-        decompose_loop(U, P, m, 2, 2, Q, breaks);
+        decompose_loop(U, P, m, 2, 2, Q, stride, breaks);
     } else {
-        decompose_loop(U, P, m, p, hd, Q, breaks);
+        decompose_loop(U, P, m, p, hd, Q, stride, breaks);
     }
+}
+
+/* c itself for a cubic (the blossom needs no clamping), else the curve
+** clamped to its domain (*owned set when new); and its piece count. */
+static cf_status_t
+decompose_input(const cf_bspline_t *c, const cf_bspline_t **w,
+                cf_bspline_t **owned, size_t *nseg, cf_diag_t *diag)
+{
+    cf_status_t st = CF_STATUS_OK;
+    *w = c;
+    *owned = NULL;
+    if (c->p != 3)
+        st = clamped(c, w, owned, diag);
+    if (st == CF_STATUS_OK)
+        *nseg = count_spans(*w);
+    return st;
 }
 
 cf_status_t
@@ -233,7 +250,7 @@ cf_bspline_bezier_points(const cf_bspline_t *c, double **hpoints,
     const cf_bspline_t *w;
     cf_bspline_t *owned;
     cf_status_t st;
-    size_t nseg;
+    size_t nseg, seg;
     double *Q, *B = NULL;
     if (hpoints != NULL)
         *hpoints = NULL;
@@ -244,11 +261,11 @@ cf_bspline_bezier_points(const cf_bspline_t *c, double **hpoints,
     if (c == NULL || hpoints == NULL || count == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "NULL argument");
-    st = clamped(c, &w, &owned, diag);
+    st = decompose_input(c, &w, &owned, &nseg, diag);
     if (st != CF_STATUS_OK)
         return st;
-    nseg = count_spans(w);
-    Q = cf__alloc_array(nseg * ((size_t)w->p + 1), w->hdim * sizeof *Q);
+    seg = ((size_t)w->p + 1) * w->hdim;
+    Q = cf__alloc_array(nseg, seg * sizeof *Q);
     if (breaks != NULL)
         B = cf__alloc_array(nseg + 1, sizeof *B);
     if (Q == NULL || (breaks != NULL && B == NULL)) {
@@ -257,7 +274,7 @@ cf_bspline_bezier_points(const cf_bspline_t *c, double **hpoints,
         cf_bspline_destroy(owned);
         return cf__bspline_no_memory(diag);
     }
-    decompose(w, Q, B);
+    decompose(w, Q, seg, B);
     cf_bspline_destroy(owned);
     *hpoints = Q;
     if (breaks != NULL)
@@ -266,13 +283,17 @@ cf_bspline_bezier_points(const cf_bspline_t *c, double **hpoints,
     return CF_STATUS_OK;
 }
 
+/* The pieces as curves: all in one block (cf__bezier_new_many), each
+** decomposed straight into its curve. */
 cf_status_t
 cf_bspline_to_beziers(const cf_bspline_t *c, cf_bezier_list_t **out,
                       cf_diag_t *diag)
 {
     cf_diag_clear(diag);
-    double *Q, *B;
-    size_t nseg, seg;
+    const cf_bspline_t *w;
+    cf_bspline_t *owned;
+    double *B;
+    size_t nseg, stride;
     cf_status_t st;
     cf_bezier_list_t *list;
     if (out != NULL)
@@ -280,31 +301,28 @@ cf_bspline_to_beziers(const cf_bspline_t *c, cf_bezier_list_t **out,
     if (c == NULL || out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
                          "NULL argument");
-    st = cf_bspline_bezier_points(c, &Q, &B, &nseg, diag);
+    st = decompose_input(c, &w, &owned, &nseg, diag);
     if (st != CF_STATUS_OK)
         return st;
-    seg = ((size_t)c->p + 1) * c->hdim;
     list = cf__bezier_list_new(nseg, true);
-    if (list == NULL)
-        goto oom;
+    B = cf__alloc_array(nseg + 1, sizeof *B);
+    if (list == NULL || B == NULL
+        || !cf__bezier_new_many(nseg, c->dim, c->p, c->rational, list->items,
+                                &stride)) {
+        cf_bezier_list_destroy(list);
+        cf__free(B);
+        cf_bspline_destroy(owned);
+        return cf__bspline_no_memory(diag);
+    }
+    decompose(w, list->items[0]->pts, stride, B);
+    cf_bspline_destroy(owned);
     for (size_t i = 0; i < nseg; i++) {
-        cf_bezier_t *z = cf__bezier_new(c->dim, c->p, c->rational);
-        if (z == NULL)
-            goto oom;
-        memcpy(z->pts, Q + i * seg, seg * sizeof *Q);
-        list->items[i] = z;
         list->t0[i] = B[i];
         list->t1[i] = B[i + 1];
     }
-    cf__free(Q);
     cf__free(B);
     *out = list;
     return CF_STATUS_OK;
-oom:
-    cf_bezier_list_destroy(list);
-    cf__free(Q);
-    cf__free(B);
-    return cf__bspline_no_memory(diag);
 }
 
 /* ---- degree elevation --------------------------------------------------- */

@@ -222,6 +222,27 @@ cf__bspline_lerp(double *dst, const double *x, const double *y, double a,
         dst[d] = (1.0 - a) * x[d] + a * y[d];
 }
 
+#if defined(__GNUC__)
+/* Pairs of doubles (GCC's and clang's vector extension) for the planar
+** kernels of refinement and decomposition: a point (x, y) per register.
+** CF__LOAD2 / CF__STORE2 reach a pair anywhere in an array of doubles. */
+#define CF__HAVE_PAIRS 1
+typedef double cf__v2 __attribute__((vector_size(16)));
+typedef long long cf__m2 __attribute__((vector_size(16)));
+typedef double cf__u2 __attribute__((vector_size(16), aligned(8),
+                                     may_alias));
+#define CF__LOAD2(p) ((cf__v2)*(const cf__u2 *)(const void *)(p))
+#define CF__STORE2(p, v) (*(cf__u2 *)(void *)(p) = (v))
+
+/* (1 - t) x + t y, as cf__bspline_lerp rounds it. */
+CF__INLINE cf__v2
+cf__lerp2(cf__v2 x, cf__v2 y, double t)
+{
+    cf__v2 tv = { t, t }, one = { 1.0, 1.0 };
+    return (one - tv) * x + tv * y;
+}
+#endif
+
 /* dst = src over hdim doubles (a loop: hdim is small, a libc call per
 ** point costs more than the copy). */
 CF__INLINE void
@@ -251,5 +272,11 @@ cf__knots_last_le(const double *U, size_t nk, double u)
 ** memory. */
 cf_bspline_t *cf__bspline_insert_raw(const cf_bspline_t *c, double u,
                                      size_t k, int s, int r);
+
+/* The Bézier pieces of a cubic (any knot vector; bspline-cubic-pieces.c):
+** piece s (s-th non-empty span of the domain) at Q + s * stride, four
+** points of hdim doubles; breaks (may be NULL) the nseg + 1 parameters. */
+void cf__bspline_cubic_pieces(const cf_bspline_t *c, double *Q,
+                              size_t stride, double *breaks);
 
 #endif

@@ -5,17 +5,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "bench.h"
-#include "curvefig/bspline.h"
-#include "bench-time.h"
+#include "bench-w5.h"
 
 const bench_workload *bench_bspline_table(void);
 
 enum {
-    W3_POINTS = 1000,
     W3S_COUNT = 10000000,
     W3R_COUNT = 1000000,
-    W5_KNOTS = 1000,
+    W5_KNOTS = BENCH_W5_KNOTS,
     CHUNK = 4096
 };
 
@@ -27,24 +24,15 @@ typedef struct w3_state {
     double x[W5_KNOTS]; /* W5ins knots */
 } w3_state;
 
-/* The W3 spline: seed 1003, point by point (x then y), clamped cubic with
-** interior knots i / 997.0. */
+/* The W3 spline (bench.h). */
 static cf_bspline_t *
 w3_curve(void)
 {
-    double U[W3_POINTS + 4], P[2 * W3_POINTS];
-    bench_rng r = { 1003 };
+    double U[BENCH_W3_POINTS + 4], P[2 * BENCH_W3_POINTS];
     cf_bspline_t *c = NULL;
-    for (int i = 0; i < 4; i++) {
-        U[i] = 0.0;
-        U[W3_POINTS + i] = 1.0;
-    }
-    for (int i = 1; i <= 996; i++)
-        U[3 + i] = i / 997.0;
-    for (int i = 0; i < 2 * W3_POINTS; i++)
-        P[i] = bench_rng_u01(&r);
-    if (cf_bspline_create(2, 3, U, W3_POINTS + 4, P, W3_POINTS, NULL, &c,
-                          NULL) != CF_STATUS_OK)
+    bench_w3_data(U, P);
+    if (cf_bspline_create(2, 3, U, BENCH_W3_POINTS + 4, P, BENCH_W3_POINTS,
+                          NULL, &c, NULL) != CF_STATUS_OK)
         return NULL;
     return c;
 }
@@ -105,26 +93,17 @@ w3r_setup(void)
 static int
 w3_run_k(w3_state *s, int k, double sum[2])
 {
-    /* four partial sums per coordinate, so that the checksum's additions
-    ** do not form one long dependency chain beside the evaluation */
     double acc[8] = { 0, 0, 0, 0, 0, 0, 0, 0 };
     for (size_t j = 0; j < s->n; j += CHUNK) {
-        size_t m = s->n - j < CHUNK ? s->n - j : CHUNK, i = 0;
+        size_t m = s->n - j < CHUNK ? s->n - j : CHUNK;
         cf_status_t st = k == 0
             ? cf_bspline_eval_many(s->curve, s->u + j, m, s->out)
             : cf_bspline_eval_deriv_many(s->curve, s->u + j, m, 1, s->out);
         if (st != CF_STATUS_OK)
             return 1;
-        for (; i + 4 <= m; i += 4)
-            for (size_t l = 0; l < 8; l++)
-                acc[l] += s->out[2 * i + l];
-        for (; i < m; i++) {
-            acc[0] += s->out[2 * i];
-            acc[1] += s->out[2 * i + 1];
-        }
+        bench_sum_add(s->out, m, acc);
     }
-    sum[0] = (acc[0] + acc[2]) + (acc[4] + acc[6]);
-    sum[1] = (acc[1] + acc[3]) + (acc[5] + acc[7]);
+    bench_sum_finish(acc, sum);
     return 0;
 }
 
@@ -144,50 +123,18 @@ static void *
 w5ins_setup(void)
 {
     w3_state *s = w3_new(0);
-    bench_rng r = { 1005 };
-    size_t got = 0;
-    if (s == NULL)
-        return NULL;
-    while (got < W5_KNOTS) {
-        double v = bench_rng_u01(&r);
-        bool ok = true;
-        /* the W3 knots are i / 997 (i = 0..997) */
-        for (int i = 0; i <= 997 && ok; i++) {
-            double k = i == 0 ? 0.0 : i == 997 ? 1.0 : i / 997.0;
-            if (fabs(v - k) < 2e-4)
-                ok = false;
-        }
-        for (size_t i = 0; i < got && ok; i++)
-            if (fabs(v - s->x[i]) < 2e-4)
-                ok = false;
-        if (ok)
-            s->x[got++] = v;
-    }
-    qsort(s->x, W5_KNOTS, sizeof s->x[0], cmp_double);
+    if (s != NULL)
+        bench_w5_knots(s->x);
     return s;
 }
 
+/* The W5 runs are those of bench-w5.h (bench_w5_sisl.c runs them beside
+** SISL). */
 static int
 w5ins_run(void *st, double sum[2])
 {
     w3_state *s = st;
-    cf_bspline_t *q = NULL;
-    const double *P;
-    double sx = 0.0, sy = 0.0;
-    size_t n;
-    if (cf_bspline_refine(s->curve, s->x, W5_KNOTS, &q, NULL)
-        != CF_STATUS_OK)
-        return 1;
-    P = cf_bspline_hpoints(q);
-    n = cf_bspline_count(q);   /* once: a call per point is not the work */
-    for (size_t i = 0; i < n; i++) {
-        sx += P[2 * i];
-        sy += P[2 * i + 1];
-    }
-    cf_bspline_destroy(q);
-    sum[0] = sx;
-    sum[1] = sy;
-    return 0;
+    return cf_w5ins_run(s->curve, s->x, sum);
 }
 
 static void *
@@ -199,41 +146,13 @@ w5bez_setup(void)
 static int
 w5bez_run(void *st, double sum[2])
 {
-    w3_state *s = st;
-    cf_bezier_list_t *list = NULL;
-    double sx = 0.0, sy = 0.0;
-    if (cf_bspline_to_beziers(s->curve, &list, NULL) != CF_STATUS_OK)
-        return 1;
-    for (size_t i = 0; i < list->count; i++) {
-        const double *P = cf_bezier_hpoints(list->items[i]);
-        for (int j = 0; j < 4; j++) {
-            sx += P[2 * j];
-            sy += P[2 * j + 1];
-        }
-    }
-    cf_bezier_list_destroy(list);
-    sum[0] = sx;
-    sum[1] = sy;
-    return 0;
+    return cf_w5bez_curves_run(((w3_state *)st)->curve, sum);
 }
 
 static int
 w5bez_flat_run(void *st, double sum[2])
 {
-    w3_state *s = st;
-    double *H = NULL, sx = 0.0, sy = 0.0;
-    size_t n = 0;
-    if (cf_bspline_bezier_points(s->curve, &H, NULL, &n, NULL)
-        != CF_STATUS_OK)
-        return 1;
-    for (size_t i = 0; i < 4 * n; i++) {
-        sx += H[2 * i];
-        sy += H[2 * i + 1];
-    }
-    cf_free(H);
-    sum[0] = sx;
-    sum[1] = sy;
-    return 0;
+    return cf_w5bez_flat_run(((w3_state *)st)->curve, sum);
 }
 
 static const bench_workload table[] = {

@@ -3,36 +3,17 @@
 ** W5bez) run through SISL (Debian libsisl-dev) on the same inputs, to see
 ** the ratio to curvefig-bench on this machine.  Built only when SISL is
 ** found.  Prints one line per workload with its checksum (which must match
-** the table of docs/benchmarks.md) and the median of 5 runs.
+** the table of docs/benchmarks.md) and the median of 5 runs.  W5ins and
+** W5bez beside curvefig's, in one process: bench_w5_sisl.c.
 */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <time.h>
 
-#include <sisl.h>
+#include "bench-sisl-w5.h"
 
-#include "bench.h"
-#include "bench-time.h"
-
-enum { NPTS = 1000, NS = 10000000, NR = 1000000, NINS = 1000, RUNS = 5 };
-
-/* The W3 spline as a SISL curve (order 4, copied coefficients). */
-static SISLCurve *
-w3_curve(void)
-{
-    static double U[NPTS + 4], P[2 * NPTS];
-    bench_rng r = { 1003 };
-    for (int i = 0; i < 4; i++) {
-        U[i] = 0.0;
-        U[NPTS + i] = 1.0;
-    }
-    for (int i = 1; i <= 996; i++)
-        U[3 + i] = i / 997.0;
-    for (int i = 0; i < 2 * NPTS; i++)
-        P[i] = bench_rng_u01(&r);
-    return newCurve(NPTS, 4, U, P, 1, 2, 1);
-}
+enum { NS = 10000000, NR = 1000000, RUNS = 5 };
 
 /* Evaluate (der = 0) or differentiate (der = 1) at n parameters; the
 ** curve is evaluated from the right (s1221) with SISL's own span hint. */
@@ -68,11 +49,10 @@ report(const char *id, const char *what, double *t, double count,
 int
 main(void)
 {
-    SISLCurve *c = w3_curve();
+    SISLCurve *c = sisl_w3_curve();
     double *u = malloc(NS * sizeof *u), t[RUNS], sum[2] = { 0, 0 };
-    double X[NINS];
+    double X[BENCH_W5_KNOTS];
     bench_rng r;
-    size_t got = 0;
     int failed = 0;
     if (c == NULL || u == NULL)
         return 1;
@@ -105,66 +85,19 @@ main(void)
                    -317171.322680, 18485.071557);
     }
 
-    r.state = 1005;
-    while (got < NINS) {
-        double v = bench_rng_u01(&r);
-        int ok = 1;
-        for (int i = 0; i <= 997 && ok; i++) {
-            double k = i == 0 ? 0.0 : i == 997 ? 1.0 : i / 997.0;
-            if (fabs(v - k) < 2e-4)
-                ok = 0;
-        }
-        for (size_t i = 0; i < got && ok; i++)
-            if (fabs(v - X[i]) < 2e-4)
-                ok = 0;
-        if (ok)
-            X[got++] = v;
-    }
-    qsort(X, NINS, sizeof X[0], cmp_double);
+    bench_w5_knots(X);
     for (int k = 0; k < RUNS; k++) {
-        SISLCurve *q = NULL;
-        int stat = 0;
-        double t0 = now_s(), sx = 0.0, sy = 0.0;
-        s1018(c, X, NINS, &q, &stat);
-        if (stat < 0 || q == NULL) {
-            failed = 1;
-            break;
-        }
-        for (int i = 0; i < q->in; i++) {
-            sx += q->ecoef[2 * i];
-            sy += q->ecoef[2 * i + 1];
-        }
-        freeCurve(q);
+        double t0 = now_s();
+        failed |= sisl_w5ins_run(c, X, sum);
         t[k] = now_s() - t0;
-        sum[0] = sx;
-        sum[1] = sy;
     }
     report("W5ins", "s1018 insert 1000 knots", t, 1, sum, 1002.976852,
            1013.838807);
 
     for (int k = 0; k < RUNS; k++) {
-        SISLCurve *q = NULL;
-        int stat = 0;
-        double t0 = now_s(), sx = 0.0, sy = 0.0;
-        s1730(c, &q, &stat);
-        if (stat < 0 || q == NULL) {
-            failed = 1;
-            break;
-        }
-        {
-            /* Bézier form: with knots of multiplicity 4 every segment has
-            ** its own 4 points; with multiplicity 3 neighbours share one */
-            int step = q->in == 4 * 997 ? 4 : 3;
-            for (int s = 0; s + 3 < q->in; s += step)
-                for (int j = 0; j < 4; j++) {
-                    sx += q->ecoef[2 * (s + j)];
-                    sy += q->ecoef[2 * (s + j) + 1];
-                }
-        }
-        freeCurve(q);
+        double t0 = now_s();
+        failed |= sisl_w5bez_run(c, sum);
         t[k] = now_s() - t0;
-        sum[0] = sx;
-        sum[1] = sy;
     }
     report("W5bez", "s1730 to Bezier form", t, 1, sum, 2002.057641,
            2013.674594);

@@ -50,6 +50,17 @@ size_of(const cf_bspline_t *c)
     return s;
 }
 
+/* count random points in [-10, 10]^dim into P, weights in [0.3, 3] into
+** W. */
+static inline void
+random_points(tu_rng *r, size_t count, size_t dim, double *P, double *W)
+{
+    for (size_t j = 0; j < count * dim; j++)
+        P[j] = tu_rng_range(r, -10.0, 10.0);
+    for (size_t j = 0; j < count; j++)
+        W[j] = tu_rng_range(r, 0.3, 3.0);
+}
+
 /* A random curve: degree p, count points in R^dim, random knots with
 ** repeated interior knots (multiplicity <= p), clamped or open, rational
 ** or not. */
@@ -78,10 +89,7 @@ random_curve(tu_rng *r, size_t dim, int p, size_t count, bool clamp,
     }
     for (; i < nk; i++)
         U[i] = x;
-    for (size_t j = 0; j < count * dim; j++)
-        P[j] = tu_rng_range(r, -10.0, 10.0);
-    for (size_t j = 0; j < count; j++)
-        W[j] = tu_rng_range(r, 0.3, 3.0);
+    random_points(r, count, dim, P, W);
     cf_diag_clear(&d);
     if (cf_bspline_create(dim, p, U, nk, P, count, rational ? W : NULL, &c,
                           &d) != CF_STATUS_OK) {

@@ -39,10 +39,7 @@ cubic(tu_rng *r, size_t dim, size_t count, int mmax, bool clamp, bool rat)
             for (; i < nk; i++)
                 U[i] = x;
     }
-    for (size_t j = 0; j < count * dim; j++)
-        P[j] = tu_rng_range(r, -10.0, 10.0);
-    for (size_t j = 0; j < count; j++)
-        W[j] = tu_rng_range(r, 0.3, 3.0);
+    random_points(r, count, dim, P, W);
     /* an open vector whose domain is one knot: spread its start */
     if (!clamp && U[3] == U[count])
         for (size_t j = 0; j < 4; j++)

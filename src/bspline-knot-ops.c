@@ -121,9 +121,9 @@ cf_bspline_insert_knot(const cf_bspline_t *c, double u, int r,
 /* ---- refinement --------------------------------------------------------- */
 
 /* The heart of A5.4, from the right: the old points above the next new
-** knot move up, then p points are recomputed (any p and hd: the points
-** are stored and read back from Q). */
-static void
+** knot move up, then p points are recomputed (the points stored and read
+** back from Q; inlined with a constant hd for the common dimensions). */
+CF__INLINE void
 refine_loop(const double *U, const double *P, double *V, double *Q,
             const double *X, size_t nx, size_t p, size_t a, size_t b,
             size_t hd)
@@ -367,6 +367,11 @@ cf_bspline_refine(const cf_bspline_t *c, const double *X, size_t nx,
         refine_cubic2(U, P, q->U, q->P, X, nx, a, b, q->count - 1);
     else
 #endif
+    if (hd == 2)
+        refine_loop(U, P, q->U, q->P, X, nx, p, a, b, 2);
+    else if (hd == 3)
+        refine_loop(U, P, q->U, q->P, X, nx, p, a, b, 3);
+    else
         refine_loop(U, P, q->U, q->P, X, nx, p, a, b, hd);
     cf__bspline_finish(q);
     *out = q;

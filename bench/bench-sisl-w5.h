@@ -49,7 +49,7 @@ sisl_w5bez_run(SISLCurve *c, double sum[2])
         return 1;
     step = q->in == 4 * 997 ? 4 : 3;
     for (int s = 0; s + 3 < q->in; s += step)
-        bench_sum_add(q->ecoef + 2 * s, 4, acc);
+        bench_sum_add4(q->ecoef + 2 * s, acc);
     freeCurve(q);
     bench_sum_finish(acc, sum);
     return 0;

@@ -2,7 +2,9 @@
 ** Threads (docs/library.md, "Threads"): one curve evaluated in batches from
 ** several threads at once (the first batch call fills the evaluation
 ** accelerator while the others evaluate without it or with it), and a
-** per-thread allocator in each thread.  Meant to run under
+** per-thread allocator in each thread; the curves of one
+** cf_bspline_to_beziers list (one shared block) destroyed from several
+** threads at once, the block freed once.  Meant to run under
 ** ThreadSanitizer too (-Db_sanitize=thread), which reports any data race.
 */
 #include <math.h>
@@ -118,11 +120,104 @@ test_shared_curve(void **state)
     cf_bspline_destroy(c);
 }
 
+/* Blocks counted across threads (the block of a list is freed by the
+** thread that drops its last curve, through the allocator that made it). */
+static atomic_long blocks_live;
+
+static void *
+shared_count_realloc(void *ud, void *ptr, size_t old_size, size_t new_size)
+{
+    (void)ud;
+    (void)old_size;
+    if (new_size == 0) {
+        if (ptr != NULL)
+            atomic_fetch_sub(&blocks_live, 1);
+        free(ptr);
+        return NULL;
+    }
+    if (ptr == NULL)
+        atomic_fetch_add(&blocks_live, 1);
+    return realloc(ptr, new_size);
+}
+
+typedef struct share {
+    cf_bezier_t **items;
+    size_t n, first;
+    int ok;
+} share_t;
+
+static void *
+dropper(void *arg)
+{
+    share_t *s = arg;
+    while (!atomic_load(&go))
+        ;
+    for (size_t i = s->first; i < s->n; i += THREADS) {
+        double x[2];
+        if (cf_bezier_eval(s->items[i], 0.5, x) != 0 || !isfinite(x[0]))
+            s->ok = 0;
+        cf_bezier_destroy(s->items[i]);
+    }
+    return NULL;
+}
+
+static void
+test_pieces_across_threads(void **state)
+{
+    enum { NPTS = 400 };
+    double Uk[NPTS + 4], Pk[2 * NPTS];
+    cf_allocator_t counting = { shared_count_realloc, NULL }, prev;
+    cf_bspline_t *c = NULL;
+    cf_bezier_list_t *list = NULL;
+    cf_bezier_t **items;
+    pthread_t th[THREADS];
+    share_t sh[THREADS];
+    size_t n;
+    (void)state;
+    for (int i = 0; i < 4; i++) {
+        Uk[i] = 0.0;
+        Uk[NPTS + i] = 1.0;
+    }
+    for (int i = 4; i < NPTS; i++)
+        Uk[i] = (i - 3) / (double)(NPTS - 3);
+    for (int i = 0; i < 2 * NPTS; i++)
+        Pk[i] = sin(0.37 * i);
+    cf_use_allocator(&counting, &prev);
+    assert_int_equal(cf_bspline_create(2, 3, Uk, NPTS + 4, Pk, NPTS, NULL, &c,
+                                       NULL), 0);
+    assert_int_equal(cf_bspline_to_beziers(c, &list, NULL), 0);
+    cf_use_allocator(&prev, NULL);
+    /* the threads own the curves now; the list goes without them */
+    items = list->items;
+    n = list->count;
+    list->items = NULL;
+    list->count = 0;
+    cf_bezier_list_destroy(list);
+    atomic_store(&go, 0);
+    for (int t = 0; t < THREADS; t++) {
+        sh[t].items = items;
+        sh[t].n = n;
+        sh[t].first = (size_t)t;
+        sh[t].ok = 1;
+        assert_int_equal(pthread_create(&th[t], NULL, dropper, &sh[t]), 0);
+    }
+    atomic_store(&go, 1);
+    for (int t = 0; t < THREADS; t++)
+        assert_int_equal(pthread_join(th[t], NULL), 0);
+    for (int t = 0; t < THREADS; t++)
+        assert_true(sh[t].ok);
+    cf_free(items);
+    cf_bspline_destroy(c);
+    /* the curves' block was freed, once */
+    assert_int_equal(atomic_load(&blocks_live), 0);
+}
+
 int
 main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_shared_curve),
+        cmocka_unit_test(test_pieces_across_threads),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

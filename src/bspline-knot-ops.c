@@ -165,8 +165,10 @@ refine_loop(const double *U, const double *P, double *V, double *Q,
 ** a load per point.  The highest point is final when a step begins: each
 ** step writes it out (the first steps of a curve refined near its end
 ** start above Q's last index, qlast; those are old points moving up, and
-** are not written) and shifts the window down by one. */
-static void
+** are not written) and shifts the window down by one.  One clone per
+** x86-64 level (CF__CLONES; no contraction in this file, so every clone
+** rounds alike). */
+CF__CLONES static void
 refine_cubic2(const double *U, const double *P, double *V, double *Q,
               const double *X, size_t nx, size_t a, size_t b, size_t qlast)
 {

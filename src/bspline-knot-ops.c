@@ -179,7 +179,7 @@ refine_cubic2(const double *U, const double *P, double *V, double *Q,
     w2 = kk - 1 <= qlast ? CF__LOAD2(Q + (kk - 1) * 2) : zero;
     w3 = kk <= qlast ? CF__LOAD2(Q + kk * 2) : zero;
     t12 = (cf__v2){ kk + 1 <= vlast ? V[kk + 1] : 0.0,
-                       kk + 2 <= vlast ? V[kk + 2] : 0.0 };
+                    kk + 2 <= vlast ? V[kk + 2] : 0.0 };
     t34 = (cf__v2){ kk + 3 <= vlast ? V[kk + 3] : 0.0, 1.0 };
     for (size_t jj = nx; jj-- > 0;) {
         double x = X[jj];
@@ -206,9 +206,9 @@ refine_cubic2(const double *U, const double *P, double *V, double *Q,
         n12 = t12 - xv;
         n34 = t34 - xv;
         a12 = (cf__v2)((cf__m2)(n12 / (t12 - CF__LOAD2(U + i - 2)))
-                          & (cf__m2)(n12 != zero));
+                       & (cf__m2)(n12 != zero));
         a34 = (cf__v2)((cf__m2)(n34 / (t34 - u34))
-                          & (cf__m2)(n34 != zero));
+                       & (cf__m2)(n34 != zero));
         w3 = cf__lerp2(w3, w2, a34[0]);
         w2 = cf__lerp2(w2, w1, a12[1]);
         w1 = cf__lerp2(w1, w0, a12[0]);
@@ -233,9 +233,8 @@ strictly_increasing(const double *X, size_t n)
     /* two comparisons per step, no branch (the vectoriser leaves this
     ** loop scalar) */
     cf__m2 all = { -1, -1 };
-    for (; j + 2 <= n; j += 2) {
+    for (; j + 2 <= n; j += 2)
         all &= (cf__m2)(CF__LOAD2(X + j) > CF__LOAD2(X + j - 1));
-    }
     if (!(all[0] & all[1]))
         return false;
 #endif
@@ -261,9 +260,8 @@ full_knot_in(const double *U, size_t nk, size_t p, double lo, double hi)
 #if defined(CF__HAVE_PAIRS)
     {
         cf__m2 any = { 0, 0 };
-        for (; k + 2 <= end; k += 2) {
+        for (; k + 2 <= end; k += 2)
             any |= (cf__m2)(CF__LOAD2(U + k) == CF__LOAD2(U + k + p));
-        }
         if (any[0] | any[1])
             return true;
     }

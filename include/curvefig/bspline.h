@@ -304,11 +304,15 @@ CF_API cf_status_t cf_bspline_segment(const cf_bspline_t *c, double a,
                                       cf_diag_t *diag);
 
 /*
-** Decomposition into Bézier segments (A5.6, after clamping an open curve
-** to its domain): one item per non-empty span of the domain, in order,
-** each of degree p (rational when the curve is), reparametrised to
-** [0, 1]; t0[i], t1[i] give its parameter range in the B-spline.  Free
-** with cf_bezier_list_destroy.
+** Decomposition into Bézier segments (cubics from the blossom, any knot
+** vector; other degrees by A5.6 after clamping an open curve to its
+** domain): one item per non-empty span of the domain, in order, each of
+** degree p (rational when the curve is), reparametrised to [0, 1]; t0[i],
+** t1[i] give its parameter range in the B-spline.  Free with
+** cf_bezier_list_destroy.  An item may be taken out of the list (set its
+** slot to NULL) and destroyed later with cf_bezier_destroy, in any order
+** and thread; the items share one allocation, freed with the last of
+** them, so an item kept long keeps the whole list's points.
 */
 CF_API cf_status_t cf_bspline_to_beziers(const cf_bspline_t *c,
                                          cf_bezier_list_t **out,

@@ -13,6 +13,7 @@
 #ifndef CURVEFIG_VIS_PRIVATE_H
 #define CURVEFIG_VIS_PRIVATE_H
 
+#include <math.h>
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -24,6 +25,25 @@
 ** a triangular patch): the evaluators work on the stack. */
 #define CF__VIS_MAX_DEG 32
 #define CF__VIS_TRI_MAX_DEG 24
+
+/*
+** Whether hypot(x, y) <= r, with hypot's answer: decided by x^2 + y^2
+** against r^2 where these are normal numbers more than 1e-12 apart
+** relatively (their rounding, a few units in the last place, cannot turn
+** the answer there), by hypot elsewhere.  The hot loops' norms.
+*/
+CF__INLINE bool
+cf__hypot_le(double x, double y, double r)
+{
+    double q = x * x + y * y, r2 = r * r;
+    if (q > 1e-280 && q < 1e280 && r2 > 1e-280 && r2 < 1e280) {
+        if (q < r2 * (1.0 - 1e-12))
+            return true;
+        if (q > r2 * (1.0 + 1e-12))
+            return false;
+    }
+    return hypot(x, y) <= r;
+}
 
 /* The 4 x 4 matrix M of a view (row-major). */
 void cf__view_matrix(const cf_view_t *view, double M[16]);
@@ -46,8 +66,8 @@ size_t cf__vpatch_count(const cf__vpatch_t *p);
 ** shape at local (s, t) ([0, 1]^2, or barycentric u = s, v = t, w = 1 - s
 ** - t): out[0..2] the point, out[3..5] d/ds, out[6..8] d/dt and with k == 2
 ** out[9..11] d2/ds2, out[12..14] d2/dsdt, out[15..17] d2/dt2 (for a
-** triangle d/ds is along (1, 0, -1), d/dt along (0, 1, -1)).  false where
-** the weight is not positive.
+** triangle d/ds is along (1, 0, -1), d/dt along (0, 1, -1)); with k == 0
+** only out[0..2].  false where the weight is not positive.
 */
 bool cf__vpatch_eval(const cf__vpatch_t *p, const double *net, double s,
                      double t, int k, double *out);

@@ -21,8 +21,7 @@ cf__vpatch_locate(const cf_scene_t *sc, size_t ip, const double *img,
             return false;
         double rx = img[0] - D[0], ry = img[1] - D[1];
         double det = D[3] * D[7] - D[6] * D[4];
-        double rn = hypot(rx, ry);
-        if (rn <= 1e-13 * scale) {
+        if (cf__hypot_le(rx, ry, 1e-13 * scale)) {
             st[0] = s;
             st[1] = t;
             memcpy(q, D, 3 * sizeof(double));
@@ -33,11 +32,14 @@ cf__vpatch_locate(const cf_scene_t *sc, size_t ip, const double *img,
             return false;
         double ds = (rx * D[7] - ry * D[6]) / det;
         double dt = (D[3] * ry - D[4] * rx) / det;
-        /* damp long steps: the leaf is small in (s, t) */
-        double len = hypot(ds, dt);
-        if (len > 0.5) {
-            ds *= 0.5 / len;
-            dt *= 0.5 / len;
+        /* damp long steps: the leaf is small in (s, t); hypot where the
+        ** step may be longer than 1/2 (cf__hypot_le) */
+        if (!(ds * ds + dt * dt < 0.25 * (1.0 - 1e-12))) {
+            double len = hypot(ds, dt);
+            if (len > 0.5) {
+                ds *= 0.5 / len;
+                dt *= 0.5 / len;
+            }
         }
         s += ds;
         t += dt;

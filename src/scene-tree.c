@@ -144,9 +144,73 @@ cf__vnet_measure(const cf__vpatch_t *p, const double *net, double *c,
     ms->orient = ms->fold ? 0 : pos > eps ? 1 : neg < -eps ? -1 : 0;
 }
 
+/*
+** The side normals and ranges of a leaf (cf__vleaf_t) from its Cartesian
+** view-space control points c.  A point Newton accepts on the leaf is in
+** its region up to 1e-9 (patch parameters; a triangle's leaf: 1e-9 of its
+** barycentric coordinates, parameter distance below 4e-9), so its image is
+** within 4e-9 dmax of the leaf's (dmax: a bound of the patch's first
+** derivatives in the image), and it is found within 1e-9 of the scene's
+** size (cf__leaf_may_hold adds that); the ranges are widened by 1e-8 dmax
+** and by 1e-12 of the coordinates for the rounding of the products.
+*/
+static void
+leaf_sides(const cf__vpatch_t *p, const double *c, double dmax,
+           cf__vleaf_t *l)
+{
+    size_t cnt = cf__vpatch_count(p);
+    double side[2][2], big = 0.0;
+    int m = p->m, n = p->n;
+    if (!p->tri) {
+        const double *c00 = c, *c01 = c + 3 * (size_t)n,
+                     *c10 = c + 3 * (size_t)m * ((size_t)n + 1),
+                     *c11 = c10 + 3 * (size_t)n;
+        for (int k = 0; k < 2; k++) {
+            side[0][k] = (c10[k] + c11[k]) - (c00[k] + c01[k]);
+            side[1][k] = (c01[k] + c11[k]) - (c00[k] + c10[k]);
+        }
+    } else {
+        const double *A = c + 3 * tidx(n, n, 0), *B = c + 3 * tidx(n, 0, n),
+                     *C = c + 3 * tidx(n, 0, 0);
+        for (int k = 0; k < 2; k++) {
+            side[0][k] = A[k] - C[k];
+            side[1][k] = B[k] - C[k];
+        }
+    }
+    for (int d = 0; d < 2; d++) {
+        double len = hypot(side[d][0], side[d][1]);
+        if (len > 0.0 && isfinite(len)) {
+            l->hn[d][0] = -side[d][1] / len;
+            l->hn[d][1] = side[d][0] / len;
+        } else {
+            l->hn[d][0] = d == 0 ? 1.0 : 0.0;
+            l->hn[d][1] = d == 0 ? 0.0 : 1.0;
+        }
+        l->hlo[d] = HUGE_VAL;
+        l->hhi[d] = -HUGE_VAL;
+    }
+    for (size_t i = 0; i < cnt; i++) {
+        const double *x = c + 3 * i;
+        big = fmax(big, fmax(fabs(x[0]), fabs(x[1])));
+        for (int d = 0; d < 2; d++) {
+            double v = l->hn[d][0] * x[0] + l->hn[d][1] * x[1];
+            l->hlo[d] = fmin(l->hlo[d], v);
+            l->hhi[d] = fmax(l->hhi[d], v);
+        }
+    }
+    double e = 1e-8 * dmax + 1e-12 * big;
+    for (int d = 0; d < 2; d++) {
+        /* a NaN bound (a point at infinity): the side test passes */
+        l->hlo[d] = isfinite(e) && isfinite(l->hlo[d]) ? l->hlo[d] - e
+                                                         : -HUGE_VAL;
+        l->hhi[d] = isfinite(e) && isfinite(l->hhi[d]) ? l->hhi[d] + e
+                                                         : HUGE_VAL;
+    }
+}
+
 static cf_status_t
 push_leaf(cf_scene_t *sc, size_t ip, const piece_t *pc,
-          const cf__vmeasure_t *ms)
+          const cf__vmeasure_t *ms, const double *c, double dmax)
 {
     cf__vleaf_t *l = cf__grow(sc->leaves, &sc->nleaf_cap, sc->nleaf + 1,
                               sizeof *l, 256);
@@ -160,6 +224,7 @@ push_leaf(cf_scene_t *sc, size_t ip, const piece_t *pc,
     memcpy(l->r, pc->r, sizeof l->r);
     memcpy(l->lo, ms->lo, sizeof l->lo);
     memcpy(l->hi, ms->hi, sizeof l->hi);
+    leaf_sides(&sc->patches[ip], c, dmax, l);
     return CF_STATUS_OK;
 }
 
@@ -213,6 +278,15 @@ cf__scene_leaves(cf_scene_t *sc, size_t ip)
         return CF_STATUS_NO_MEMORY;
     }
     stack[nstack++] = root;
+    /* a bound of the patch's first derivatives in the image: 2 d r^2
+    ** times the image diameter of its net (d its largest degree, r its
+    ** weights' ratio in view space; a rational curve's derivative is at
+    ** most its degree times 2 r^2 times the spread of its control
+    ** points) */
+    cf__vmeasure_t ms0;
+    cf__vnet_measure(p, p->g, cart, &ms0);
+    double dmax = 2.0 * (p->m > p->n ? p->m : p->n) * ms0.wratio *
+                  ms0.wratio * ms0.img;
     while (nstack > 0) {
         piece_t pc = stack[--nstack];
         cf__vmeasure_t ms;
@@ -225,7 +299,7 @@ cf__scene_leaves(cf_scene_t *sc, size_t ip)
                     (ms.fold && (ms.img <= sc->tol || ms.dev <= sc->tol / 4));
         if (leaf) {
             if (st == CF_STATUS_OK)
-                st = push_leaf(sc, ip, &pc, &ms);
+                st = push_leaf(sc, ip, &pc, &ms, cart, dmax);
             cf__free(pc.net);
             continue;
         }

@@ -111,7 +111,33 @@ typedef struct cf__vleaf {
     int8_t orient;
     double r[6];
     double lo[3], hi[3];
+    /* two unit normals of its sides in the image (tensor: of its s and t
+    ** edges; triangle: of two edges) and the range of its control points
+    ** along each, widened by a bound of how far outside them Newton's
+    ** point may land and still count as in the piece: no point whose
+    ** image lies outside a range can be found on the piece
+    ** (cf__leaf_may_hold) */
+    double hn[2][2];
+    double hlo[2], hhi[2];
 } cf__vleaf_t;
+
+/* Whether the image point x[2] may be the image of a point of leaf l as
+** Newton finds it (cf__vpatch_locate within 1e-9 scale, in the leaf's
+** region within its slack): the leaf's box and its two side ranges, the
+** latter widened by 1e-8 scale (scale: the scene's size).  Every piece
+** lies in the hull of its control points (positive weights), so a point
+** outside is on no piece. */
+CF__INLINE bool
+cf__leaf_may_hold(const cf__vleaf_t *l, const double *x, double scale)
+{
+    double e = 1e-8 * scale;
+    for (int k = 0; k < 2; k++) {
+        double d = l->hn[k][0] * x[0] + l->hn[k][1] * x[1];
+        if (d < l->hlo[k] - e || d > l->hhi[k] + e)
+            return false;
+    }
+    return true;
+}
 
 typedef struct cf__vnode {
     double lo[3], hi[3];

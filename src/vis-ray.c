@@ -195,6 +195,7 @@ cf__scene_hidden(const cf_scene_t *sc, const double *q,
     uint32_t stack[STACK];
     size_t top = 0;
     double zmin = q[2] + margin(sc, q[2]);
+    double scale = fmax(sc->size, 1e-300);
     if (sc->nnode == 0)
         return false;
     stack[top++] = 0;
@@ -219,7 +220,9 @@ cf__scene_hidden(const cf_scene_t *sc, const double *q,
             if (q[0] < l->lo[0] || q[0] > l->hi[0] || q[1] < l->lo[1] ||
                 q[1] > l->hi[1] || l->hi[2] <= zmin)
                 continue;
-            ns = starts(p, l, st0);
+            /* no Newton where it cannot find a point of the leaf: found
+            ** stays 0, as Newton would leave it */
+            ns = cf__leaf_may_hold(l, q, scale) ? starts(p, l, st0) : 0;
             for (int k = 0; k < ns && (l->fold || again); k++) {
                 again = false;
                 if (!cf__vpatch_locate(sc, l->patch, q, st0[k][0], st0[k][1],

@@ -11,7 +11,6 @@
 #define MAX_LEAVES 65536
 
 typedef struct piece {
-    double *net;
     double r[6];
     int level;
 } piece_t;
@@ -36,7 +35,7 @@ tidx(int n, int i, int j)
     return r * (r + 1) / 2 + (r - (size_t)j);
 }
 
-void
+CF__NO_COVERAGE void
 cf__vnet_measure(const cf__vpatch_t *p, const double *net, double *c,
                  cf__vmeasure_t *ms)
 {
@@ -154,7 +153,7 @@ cf__vnet_measure(const cf__vpatch_t *p, const double *net, double *c,
 ** size (cf__leaf_may_hold adds that); the ranges are widened by 1e-8 dmax
 ** and by 1e-12 of the coordinates for the rounding of the products.
 */
-static void
+CF__NO_COVERAGE static void
 leaf_sides(const cf__vpatch_t *p, const double *c, double dmax,
            cf__vleaf_t *l)
 {
@@ -244,24 +243,49 @@ tri_regions(const double *r, const int *perm, double *out)
     }
 }
 
+/* Room for n pieces (and their nets, sz doubles each) on the stack. */
+static bool
+reserve(piece_t **stack, double **nets, size_t *cap, size_t n, size_t sz)
+{
+    if (n <= *cap)
+        return true;
+    size_t want = n < 64 ? 64 : 2 * n;
+    piece_t *ps = cf__realloc_array(*stack, want, sizeof *ps);
+    if (ps == NULL)
+        return false;
+    *stack = ps;
+    double *ns = cf__realloc_array(*nets, want, sz * sizeof(double));
+    if (ns == NULL)
+        return false;
+    *nets = ns;
+    *cap = want;
+    return true;
+}
+
+/* The pieces of patch ip, depth first: each piece's net lives at its place
+** on the stack (nets, cnt * 4 doubles a piece), so halving allocates
+** nothing but the stack's growth. */
 cf_status_t
 cf__scene_leaves(cf_scene_t *sc, size_t ip)
 {
     const cf__vpatch_t *p = &sc->patches[ip];
-    size_t cnt = cf__vpatch_count(p), nstack = 0, cap = 0;
+    size_t cnt = cf__vpatch_count(p), sz = cnt * 4, nstack = 0, cap = 0;
     size_t first = sc->nleaf;
     piece_t *stack = NULL;
+    double *nets = NULL;
     double *cart = cf__alloc_array(cnt, 3 * sizeof(double));
+    double *half = cf__alloc_array(cnt, 8 * sizeof(double));
     cf_status_t st = CF_STATUS_OK;
     piece_t root;
-    if (cart == NULL)
-        return CF_STATUS_NO_MEMORY;
-    root.net = cf__alloc_array(cnt, 4 * sizeof(double));
-    if (root.net == NULL) {
+    if (cart == NULL || half == NULL ||
+        !reserve(&stack, &nets, &cap, 1, sz)) {
         cf__free(cart);
+        cf__free(half);
+        cf__free(stack);
+        cf__free(nets);
         return CF_STATUS_NO_MEMORY;
     }
-    memcpy(root.net, p->g, cnt * 4 * sizeof(double));
+    memcpy(nets, p->g, sz * sizeof(double));
     root.level = 0;
     if (p->tri) {
         /* corners b_n00, b_0n0, b_00n at (u, v) = (1, 0), (0, 1), (0, 0) */
@@ -270,12 +294,6 @@ cf__scene_leaves(cf_scene_t *sc, size_t ip)
     } else {
         double r[6] = {0, 1, 0, 1, 0, 0};
         memcpy(root.r, r, sizeof r);
-    }
-    stack = cf__grow(NULL, &cap, 1, sizeof *stack, 64);
-    if (stack == NULL) {
-        cf__free(root.net);
-        cf__free(cart);
-        return CF_STATUS_NO_MEMORY;
     }
     stack[nstack++] = root;
     /* a bound of the patch's first derivatives in the image: 2 d r^2
@@ -289,39 +307,33 @@ cf__scene_leaves(cf_scene_t *sc, size_t ip)
                   ms0.wratio * ms0.img;
     while (nstack > 0) {
         piece_t pc = stack[--nstack];
+        double *net = nets + nstack * sz;
         cf__vmeasure_t ms;
-        cf__vnet_measure(p, pc.net, cart, &ms);
-        bool leaf = st != CF_STATUS_OK || pc.level >= MAX_LEVEL ||
+        cf__vnet_measure(p, net, cart, &ms);
+        bool leaf = pc.level >= MAX_LEVEL ||
                     sc->nleaf - first >= MAX_LEAVES ||
                     ms.diam <= sc->tol / 8 ||
                     (!ms.fold && ms.dev <= 0.15 * ms.diam &&
                      ms.wratio <= 1.2) ||
                     (ms.fold && (ms.img <= sc->tol || ms.dev <= sc->tol / 4));
         if (leaf) {
-            if (st == CF_STATUS_OK)
-                st = push_leaf(sc, ip, &pc, &ms, cart, dmax);
-            cf__free(pc.net);
+            if ((st = push_leaf(sc, ip, &pc, &ms, cart, dmax)) !=
+                CF_STATUS_OK)
+                break;
             continue;
         }
-        piece_t a = pc, b = pc;
-        piece_t *grown = cf__grow(stack, &cap, nstack + 2, sizeof *stack, 64);
-        a.net = cf__alloc_array(cnt, 4 * sizeof(double));
-        b.net = cf__alloc_array(cnt, 4 * sizeof(double));
-        if (grown == NULL || a.net == NULL || b.net == NULL) {
-            if (grown != NULL)
-                stack = grown;
-            cf__free(a.net);
-            cf__free(b.net);
-            cf__free(pc.net);
+        if (!reserve(&stack, &nets, &cap, nstack + 2, sz)) {
             st = CF_STATUS_NO_MEMORY;
-            continue;
+            break;
         }
-        stack = grown;
+        net = nets + nstack * sz;
+        piece_t a = pc, b = pc;
+        double *lo = half, *hi = half + sz;
         a.level = b.level = pc.level + 1;
         if (!p->tri) {
             int dir = ms.ext[0] >= ms.ext[1] ? 0 : 1;
             double mid = 0.5 * (pc.r[2 * dir] + pc.r[2 * dir + 1]);
-            cf__vnet_split(pc.net, p->m, p->n, dir, a.net, b.net);
+            cf__vnet_split(net, p->m, p->n, dir, lo, hi);
             a.r[2 * dir + 1] = mid;
             b.r[2 * dir] = mid;
         } else {
@@ -353,7 +365,7 @@ cf__scene_leaves(cf_scene_t *sc, size_t ip)
             int pa[3], pb[3];
             double mid[2] = {0.5 * (pc.r[2 * ea] + pc.r[2 * eb]),
                              0.5 * (pc.r[2 * ea + 1] + pc.r[2 * eb + 1])};
-            cf__vtri_split(pc.net, n, ea, eb, a.net, pa, b.net, pb);
+            cf__vtri_split(net, n, ea, eb, lo, pa, hi, pb);
             tri_regions(pc.r, pa, a.r);
             tri_regions(pc.r, pb, b.r);
             a.r[0] = mid[0];
@@ -361,11 +373,15 @@ cf__scene_leaves(cf_scene_t *sc, size_t ip)
             b.r[2] = mid[0];
             b.r[3] = mid[1];
         }
-        cf__free(pc.net);
+        /* a where the piece was, b above it (popped next) */
+        memcpy(net, lo, sz * sizeof(double));
+        memcpy(net + sz, hi, sz * sizeof(double));
         stack[nstack++] = a;
         stack[nstack++] = b;
     }
     cf__free(stack);
+    cf__free(nets);
+    cf__free(half);
     cf__free(cart);
     return st;
 }

@@ -182,7 +182,7 @@ bisect(const cf_scene_t *sc, const vcurve_t *vc, size_t k, double ta,
 /* The homogeneous control points of the part [ta, tb] (0 <= ta < tb <= 1)
 ** of c (in R^1..3): h[i][e] = w x_e (e < dim), h[i][3] = w; false for a
 ** degree above CF__VIS_MAX_DEG. */
-static bool
+CF__NO_COVERAGE static bool
 part_net(const cf_bezier_t *c, double ta, double tb,
          double h[CF__VIS_MAX_DEG + 1][4])
 {

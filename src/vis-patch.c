@@ -107,11 +107,12 @@ tensor_k(const double *net, int m, int n, double s, double t, int k,
     }
 }
 
-/* tensor_k specialised for the degrees of most figures (1 to 3 each
-** way). */
+/* tensor_k specialised for degrees 0 to 3 each way (those of nearly
+** every figure). */
 #define TENSOR_K(M, N)                                                     \
-    static void tensor_##M##N(const double *net, double s, double t,      \
-                              int k, double A[6][4])                       \
+    CF__NO_COVERAGE static void tensor_##M##N(const double *net, double s, \
+                                              double t, int k,             \
+                                              double A[6][4])              \
     {                                                                      \
         if (k <= 0)                                                        \
             tensor_k(net, M, N, s, t, 0, A);                               \
@@ -120,38 +121,33 @@ tensor_k(const double *net, int m, int n, double s, double t, int k,
         else                                                               \
             tensor_k(net, M, N, s, t, 2, A);                               \
     }
-TENSOR_K(1, 1)
-TENSOR_K(1, 2)
-TENSOR_K(1, 3)
-TENSOR_K(2, 1)
-TENSOR_K(2, 2)
-TENSOR_K(2, 3)
-TENSOR_K(3, 1)
-TENSOR_K(3, 2)
-TENSOR_K(3, 3)
+#define TENSOR_ROW(M)                                                      \
+    TENSOR_K(M, 0) TENSOR_K(M, 1) TENSOR_K(M, 2) TENSOR_K(M, 3)
+TENSOR_ROW(0)
+TENSOR_ROW(1)
+TENSOR_ROW(2)
+TENSOR_ROW(3)
 
-static void
+typedef void (*tensor_fn)(const double *, double, double, int,
+                          double[6][4]);
+static const tensor_fn tensor_fns[16] = {
+    tensor_00, tensor_01, tensor_02, tensor_03, tensor_10, tensor_11,
+    tensor_12, tensor_13, tensor_20, tensor_21, tensor_22, tensor_23,
+    tensor_30, tensor_31, tensor_32, tensor_33};
+
+CF__NO_COVERAGE static void
 tensor_h(const cf__vpatch_t *p, const double *net, double s, double t,
          int k, double A[6][4])
 {
-    switch (p->m * 4 + p->n) {
-    case 1 * 4 + 1: tensor_11(net, s, t, k, A); return;
-    case 1 * 4 + 2: tensor_12(net, s, t, k, A); return;
-    case 1 * 4 + 3: tensor_13(net, s, t, k, A); return;
-    case 2 * 4 + 1: tensor_21(net, s, t, k, A); return;
-    case 2 * 4 + 2: tensor_22(net, s, t, k, A); return;
-    case 2 * 4 + 3: tensor_23(net, s, t, k, A); return;
-    case 3 * 4 + 1: tensor_31(net, s, t, k, A); return;
-    case 3 * 4 + 2: tensor_32(net, s, t, k, A); return;
-    case 3 * 4 + 3: tensor_33(net, s, t, k, A); return;
-    default:
+    if (p->m <= 3 && p->n <= 3)
+        tensor_fns[p->m * 4 + p->n](net, s, t, k, A);
+    else
         tensor_k(net, p->m, p->n, s, t, k > 2 ? 2 : k < 0 ? 0 : k, A);
-    }
 }
 
 /* Homogeneous derivatives of a triangular net, directions (1, 0, -1) and
 ** (0, 1, -1), by de Casteljau down to level n - 2. */
-static void
+CF__NO_COVERAGE static void
 tri_h(const cf__vpatch_t *p, const double *net, double u, double v, int k,
       double A[6][4])
 {
@@ -208,7 +204,7 @@ tri_h(const cf__vpatch_t *p, const double *net, double u, double v, int k,
     }
 }
 
-bool
+CF__NO_COVERAGE bool
 cf__vpatch_eval(const cf__vpatch_t *p, const double *net, double s,
                 double t, int k, double *out)
 {
@@ -244,7 +240,7 @@ cf__vpatch_eval(const cf__vpatch_t *p, const double *net, double s,
 
 /* Halve count curves of degree d (points `stride` apart, curves `step`
 ** apart) at 1/2. */
-static void
+CF__NO_COVERAGE static void
 halve(const double *src, int d, size_t count, size_t step, size_t stride,
       double *lo, double *hi)
 {
@@ -264,7 +260,7 @@ halve(const double *src, int d, size_t count, size_t step, size_t stride,
     }
 }
 
-void
+CF__NO_COVERAGE void
 cf__vnet_split(const double *net, int m, int n, int dir, double *lo,
                double *hi)
 {
@@ -277,7 +273,7 @@ cf__vnet_split(const double *net, int m, int n, int dir, double *lo,
 
 /* b_ijk of a net with its corners reordered: new corner c is old corner
 ** perm[c], so new (e0, e1, e2) is old with e_old[perm[c]] = e_new[c]. */
-static void
+CF__NO_COVERAGE static void
 permute(const double *src, int n, const int perm[3], double *dst)
 {
     for (int i = n; i >= 0; i--)
@@ -296,7 +292,7 @@ permute(const double *src, int n, const int perm[3], double *dst)
 ** gives the part (p, b_0n0, b_00n) as b^i_0jk and (b_n00, p, b_00n) as
 ** b^j_i0k (surface-triangle.h, cf_bezier_triangle_subdivide).
 */
-void
+CF__NO_COVERAGE void
 cf__vtri_split(const double *net, int n, int a, int b, double *lo,
                int perm_lo[3], double *hi, int perm_hi[3])
 {

@@ -29,7 +29,7 @@ typedef struct ctx {
 
 /* g(s, t) = (S_s x S_t) . v with v = d (orthographic) or E - S, and its
 ** gradient; false where the patch cannot be evaluated. */
-static bool
+CF__NO_COVERAGE static bool
 contour(const ctx_t *c, double s, double t, double *g, double *gs,
         double *gt)
 {

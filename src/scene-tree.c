@@ -398,7 +398,7 @@ key(const cf__vleaf_t *l, int ax)
 /* Reorder L[0..n-1] so that L[k] has the key it would have sorted, with
 ** no larger key before it and no smaller after (quickselect, middle
 ** pivot). */
-static void
+CF__NO_COVERAGE static void
 select_kth(cf__vleaf_t *L, size_t n, size_t k, int ax)
 {
     size_t lo = 0, hi = n - 1;

@@ -176,34 +176,44 @@ leaf_sides(const cf__vpatch_t *p, const double *c, double dmax,
             side[1][k] = B[k] - C[k];
         }
     }
+    double hn[2][2], lo[2], hi[2];
     for (int d = 0; d < 2; d++) {
         double len = hypot(side[d][0], side[d][1]);
         if (len > 0.0 && isfinite(len)) {
-            l->hn[d][0] = -side[d][1] / len;
-            l->hn[d][1] = side[d][0] / len;
+            l->hn[d][0] = (float)(-side[d][1] / len);
+            l->hn[d][1] = (float)(side[d][0] / len);
         } else {
-            l->hn[d][0] = d == 0 ? 1.0 : 0.0;
-            l->hn[d][1] = d == 0 ? 0.0 : 1.0;
+            l->hn[d][0] = d == 0 ? 1.0f : 0.0f;
+            l->hn[d][1] = d == 0 ? 0.0f : 1.0f;
         }
-        l->hlo[d] = HUGE_VAL;
-        l->hhi[d] = -HUGE_VAL;
+        /* the ranges along the stored directions as they are */
+        hn[d][0] = l->hn[d][0];
+        hn[d][1] = l->hn[d][1];
+        lo[d] = HUGE_VAL;
+        hi[d] = -HUGE_VAL;
     }
     for (size_t i = 0; i < cnt; i++) {
         const double *x = c + 3 * i;
         big = fmax(big, fmax(fabs(x[0]), fabs(x[1])));
         for (int d = 0; d < 2; d++) {
-            double v = l->hn[d][0] * x[0] + l->hn[d][1] * x[1];
-            l->hlo[d] = fmin(l->hlo[d], v);
-            l->hhi[d] = fmax(l->hhi[d], v);
+            double v = hn[d][0] * x[0] + hn[d][1] * x[1];
+            lo[d] = fmin(lo[d], v);
+            hi[d] = fmax(hi[d], v);
         }
     }
     double e = 1e-8 * dmax + 1e-12 * big;
     for (int d = 0; d < 2; d++) {
-        /* a NaN bound (a point at infinity): the side test passes */
-        l->hlo[d] = isfinite(e) && isfinite(l->hlo[d]) ? l->hlo[d] - e
-                                                         : -HUGE_VAL;
-        l->hhi[d] = isfinite(e) && isfinite(l->hhi[d]) ? l->hhi[d] + e
-                                                         : HUGE_VAL;
+        /* a NaN bound (a point at infinity): the side test passes; the
+        ** floats rounded outwards */
+        double a = isfinite(e) && isfinite(lo[d]) ? lo[d] - e : -HUGE_VAL,
+               b = isfinite(e) && isfinite(hi[d]) ? hi[d] + e : HUGE_VAL;
+        float fa = (float)a, fb = (float)b;
+        if ((double)fa > a)
+            fa = nextafterf(fa, -HUGE_VALF);
+        if ((double)fb < b)
+            fb = nextafterf(fb, HUGE_VALF);
+        l->hlo[d] = fa;
+        l->hhi[d] = fb;
     }
 }
 

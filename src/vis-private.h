@@ -127,8 +127,8 @@ typedef struct cf__vleaf {
     ** point may land and still count as in the piece: no point whose
     ** image lies outside a range can be found on the piece
     ** (cf__leaf_may_hold) */
-    double hn[2][2];
-    double hlo[2], hhi[2];
+    float hn[2][2];         /* floats: the ranges are rounded outwards */
+    float hlo[2], hhi[2];
 } cf__vleaf_t;
 
 /* Whether the image point x[2] may be the image of a point of leaf l as
@@ -142,8 +142,8 @@ cf__leaf_may_hold(const cf__vleaf_t *l, const double *x, double scale)
 {
     double e = 1e-8 * scale;
     for (int k = 0; k < 2; k++) {
-        double d = l->hn[k][0] * x[0] + l->hn[k][1] * x[1];
-        if (d < l->hlo[k] - e || d > l->hhi[k] + e)
+        double d = (double)l->hn[k][0] * x[0] + (double)l->hn[k][1] * x[1];
+        if (d < (double)l->hlo[k] - e || d > (double)l->hhi[k] + e)
             return false;
     }
     return true;

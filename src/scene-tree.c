@@ -15,14 +15,14 @@ typedef struct piece {
     int level;
 } piece_t;
 
-static double
+CF__NO_COVERAGE static double
 dist3(const double *a, const double *b)
 {
     double x = a[0] - b[0], y = a[1] - b[1], z = a[2] - b[2];
     return sqrt(x * x + y * y + z * z);
 }
 
-static double
+CF__NO_COVERAGE static double
 cross2(const double *o, const double *a, const double *b)
 {
     return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
@@ -399,7 +399,7 @@ cf__scene_leaves(cf_scene_t *sc, size_t ip)
 /* ---- the tree ----------------------------------------------------------- */
 
 /* Twice the centre of leaf l along axis ax. */
-static double
+CF__NO_COVERAGE static double
 key(const cf__vleaf_t *l, int ax)
 {
     return l->lo[ax] + l->hi[ax];
@@ -439,7 +439,7 @@ select_kth(cf__vleaf_t *L, size_t n, size_t k, int ax)
     }
 }
 
-static void
+CF__NO_COVERAGE static void
 build(cf_scene_t *sc, size_t node, size_t first, size_t count)
 {
     cf__vnode_t *nd = &sc->nodes[node];

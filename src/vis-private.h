@@ -22,7 +22,8 @@
 #include "curvefig/visibility.h"
 
 /* Arithmetic kernels with no branch of their own worth a fuzzer's
-** attention (patch evaluation, halving): left out of clang's coverage
+** attention (patch evaluation, halving, the box tree's build): left out of
+** clang's coverage
 ** instrumentation, whose comparison tracing of their loop counters took
 ** half of fuzz_visibility's time. */
 #if defined(__clang__)

@@ -11,19 +11,18 @@
 #define MAX_LEAVES 65536
 
 typedef struct piece {
-    double *net;
     double r[6];
     int level;
 } piece_t;
 
-static double
+CF__NO_COVERAGE static double
 dist3(const double *a, const double *b)
 {
     double x = a[0] - b[0], y = a[1] - b[1], z = a[2] - b[2];
     return sqrt(x * x + y * y + z * z);
 }
 
-static double
+CF__NO_COVERAGE static double
 cross2(const double *o, const double *a, const double *b)
 {
     return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
@@ -36,7 +35,7 @@ tidx(int n, int i, int j)
     return r * (r + 1) / 2 + (r - (size_t)j);
 }
 
-void
+CF__NO_COVERAGE void
 cf__vnet_measure(const cf__vpatch_t *p, const double *net, double *c,
                  cf__vmeasure_t *ms)
 {
@@ -144,9 +143,83 @@ cf__vnet_measure(const cf__vpatch_t *p, const double *net, double *c,
     ms->orient = ms->fold ? 0 : pos > eps ? 1 : neg < -eps ? -1 : 0;
 }
 
+/*
+** The side normals and ranges of a leaf (cf__vleaf_t) from its Cartesian
+** view-space control points c.  A point Newton accepts on the leaf is in
+** its region up to 1e-9 (patch parameters; a triangle's leaf: 1e-9 of its
+** barycentric coordinates, parameter distance below 4e-9), so its image is
+** within 4e-9 dmax of the leaf's (dmax: a bound of the patch's first
+** derivatives in the image), and it is found within 1e-9 of the scene's
+** size (cf__leaf_may_hold adds that); the ranges are widened by 1e-8 dmax
+** and by 1e-12 of the coordinates for the rounding of the products.
+*/
+CF__NO_COVERAGE static void
+leaf_sides(const cf__vpatch_t *p, const double *c, double dmax,
+           cf__vleaf_t *l)
+{
+    size_t cnt = cf__vpatch_count(p);
+    double side[2][2], big = 0.0;
+    int m = p->m, n = p->n;
+    if (!p->tri) {
+        const double *c00 = c, *c01 = c + 3 * (size_t)n,
+                     *c10 = c + 3 * (size_t)m * ((size_t)n + 1),
+                     *c11 = c10 + 3 * (size_t)n;
+        for (int k = 0; k < 2; k++) {
+            side[0][k] = (c10[k] + c11[k]) - (c00[k] + c01[k]);
+            side[1][k] = (c01[k] + c11[k]) - (c00[k] + c10[k]);
+        }
+    } else {
+        const double *A = c + 3 * tidx(n, n, 0), *B = c + 3 * tidx(n, 0, n),
+                     *C = c + 3 * tidx(n, 0, 0);
+        for (int k = 0; k < 2; k++) {
+            side[0][k] = A[k] - C[k];
+            side[1][k] = B[k] - C[k];
+        }
+    }
+    double hn[2][2], lo[2], hi[2];
+    for (int d = 0; d < 2; d++) {
+        double len = hypot(side[d][0], side[d][1]);
+        if (len > 0.0 && isfinite(len)) {
+            l->hn[d][0] = (float)(-side[d][1] / len);
+            l->hn[d][1] = (float)(side[d][0] / len);
+        } else {
+            l->hn[d][0] = d == 0 ? 1.0f : 0.0f;
+            l->hn[d][1] = d == 0 ? 0.0f : 1.0f;
+        }
+        /* the ranges along the stored directions as they are */
+        hn[d][0] = l->hn[d][0];
+        hn[d][1] = l->hn[d][1];
+        lo[d] = HUGE_VAL;
+        hi[d] = -HUGE_VAL;
+    }
+    for (size_t i = 0; i < cnt; i++) {
+        const double *x = c + 3 * i;
+        big = fmax(big, fmax(fabs(x[0]), fabs(x[1])));
+        for (int d = 0; d < 2; d++) {
+            double v = hn[d][0] * x[0] + hn[d][1] * x[1];
+            lo[d] = fmin(lo[d], v);
+            hi[d] = fmax(hi[d], v);
+        }
+    }
+    double e = 1e-8 * dmax + 1e-12 * big;
+    for (int d = 0; d < 2; d++) {
+        /* a NaN bound (a point at infinity): the side test passes; the
+        ** floats rounded outwards */
+        double a = isfinite(e) && isfinite(lo[d]) ? lo[d] - e : -HUGE_VAL,
+               b = isfinite(e) && isfinite(hi[d]) ? hi[d] + e : HUGE_VAL;
+        float fa = (float)a, fb = (float)b;
+        if ((double)fa > a)
+            fa = nextafterf(fa, -HUGE_VALF);
+        if ((double)fb < b)
+            fb = nextafterf(fb, HUGE_VALF);
+        l->hlo[d] = fa;
+        l->hhi[d] = fb;
+    }
+}
+
 static cf_status_t
 push_leaf(cf_scene_t *sc, size_t ip, const piece_t *pc,
-          const cf__vmeasure_t *ms)
+          const cf__vmeasure_t *ms, const double *c, double dmax)
 {
     cf__vleaf_t *l = cf__grow(sc->leaves, &sc->nleaf_cap, sc->nleaf + 1,
                               sizeof *l, 256);
@@ -160,6 +233,7 @@ push_leaf(cf_scene_t *sc, size_t ip, const piece_t *pc,
     memcpy(l->r, pc->r, sizeof l->r);
     memcpy(l->lo, ms->lo, sizeof l->lo);
     memcpy(l->hi, ms->hi, sizeof l->hi);
+    leaf_sides(&sc->patches[ip], c, dmax, l);
     return CF_STATUS_OK;
 }
 
@@ -179,24 +253,49 @@ tri_regions(const double *r, const int *perm, double *out)
     }
 }
 
+/* Room for n pieces (and their nets, sz doubles each) on the stack. */
+static bool
+reserve(piece_t **stack, double **nets, size_t *cap, size_t n, size_t sz)
+{
+    if (n <= *cap)
+        return true;
+    size_t want = n < 64 ? 64 : 2 * n;
+    piece_t *ps = cf__realloc_array(*stack, want, sizeof *ps);
+    if (ps == NULL)
+        return false;
+    *stack = ps;
+    double *ns = cf__realloc_array(*nets, want, sz * sizeof(double));
+    if (ns == NULL)
+        return false;
+    *nets = ns;
+    *cap = want;
+    return true;
+}
+
+/* The pieces of patch ip, depth first: each piece's net lives at its place
+** on the stack (nets, cnt * 4 doubles a piece), so halving allocates
+** nothing but the stack's growth. */
 cf_status_t
 cf__scene_leaves(cf_scene_t *sc, size_t ip)
 {
     const cf__vpatch_t *p = &sc->patches[ip];
-    size_t cnt = cf__vpatch_count(p), nstack = 0, cap = 0;
+    size_t cnt = cf__vpatch_count(p), sz = cnt * 4, nstack = 0, cap = 0;
     size_t first = sc->nleaf;
     piece_t *stack = NULL;
+    double *nets = NULL;
     double *cart = cf__alloc_array(cnt, 3 * sizeof(double));
+    double *half = cf__alloc_array(cnt, 8 * sizeof(double));
     cf_status_t st = CF_STATUS_OK;
     piece_t root;
-    if (cart == NULL)
-        return CF_STATUS_NO_MEMORY;
-    root.net = cf__alloc_array(cnt, 4 * sizeof(double));
-    if (root.net == NULL) {
+    if (cart == NULL || half == NULL ||
+        !reserve(&stack, &nets, &cap, 1, sz)) {
         cf__free(cart);
+        cf__free(half);
+        cf__free(stack);
+        cf__free(nets);
         return CF_STATUS_NO_MEMORY;
     }
-    memcpy(root.net, p->g, cnt * 4 * sizeof(double));
+    memcpy(nets, p->g, sz * sizeof(double));
     root.level = 0;
     if (p->tri) {
         /* corners b_n00, b_0n0, b_00n at (u, v) = (1, 0), (0, 1), (0, 0) */
@@ -206,48 +305,45 @@ cf__scene_leaves(cf_scene_t *sc, size_t ip)
         double r[6] = {0, 1, 0, 1, 0, 0};
         memcpy(root.r, r, sizeof r);
     }
-    stack = cf__grow(NULL, &cap, 1, sizeof *stack, 64);
-    if (stack == NULL) {
-        cf__free(root.net);
-        cf__free(cart);
-        return CF_STATUS_NO_MEMORY;
-    }
     stack[nstack++] = root;
+    /* a bound of the patch's first derivatives in the image: 2 d r^2
+    ** times the image diameter of its net (d its largest degree, r its
+    ** weights' ratio in view space; a rational curve's derivative is at
+    ** most its degree times 2 r^2 times the spread of its control
+    ** points) */
+    cf__vmeasure_t ms0;
+    cf__vnet_measure(p, p->g, cart, &ms0);
+    double dmax = 2.0 * (p->m > p->n ? p->m : p->n) * ms0.wratio *
+                  ms0.wratio * ms0.img;
     while (nstack > 0) {
         piece_t pc = stack[--nstack];
+        double *net = nets + nstack * sz;
         cf__vmeasure_t ms;
-        cf__vnet_measure(p, pc.net, cart, &ms);
-        bool leaf = st != CF_STATUS_OK || pc.level >= MAX_LEVEL ||
+        cf__vnet_measure(p, net, cart, &ms);
+        bool leaf = pc.level >= MAX_LEVEL ||
                     sc->nleaf - first >= MAX_LEAVES ||
                     ms.diam <= sc->tol / 8 ||
                     (!ms.fold && ms.dev <= 0.15 * ms.diam &&
                      ms.wratio <= 1.2) ||
                     (ms.fold && (ms.img <= sc->tol || ms.dev <= sc->tol / 4));
         if (leaf) {
-            if (st == CF_STATUS_OK)
-                st = push_leaf(sc, ip, &pc, &ms);
-            cf__free(pc.net);
+            if ((st = push_leaf(sc, ip, &pc, &ms, cart, dmax)) !=
+                CF_STATUS_OK)
+                break;
             continue;
         }
-        piece_t a = pc, b = pc;
-        piece_t *grown = cf__grow(stack, &cap, nstack + 2, sizeof *stack, 64);
-        a.net = cf__alloc_array(cnt, 4 * sizeof(double));
-        b.net = cf__alloc_array(cnt, 4 * sizeof(double));
-        if (grown == NULL || a.net == NULL || b.net == NULL) {
-            if (grown != NULL)
-                stack = grown;
-            cf__free(a.net);
-            cf__free(b.net);
-            cf__free(pc.net);
+        if (!reserve(&stack, &nets, &cap, nstack + 2, sz)) {
             st = CF_STATUS_NO_MEMORY;
-            continue;
+            break;
         }
-        stack = grown;
+        net = nets + nstack * sz;
+        piece_t a = pc, b = pc;
+        double *lo = half, *hi = half + sz;
         a.level = b.level = pc.level + 1;
         if (!p->tri) {
             int dir = ms.ext[0] >= ms.ext[1] ? 0 : 1;
             double mid = 0.5 * (pc.r[2 * dir] + pc.r[2 * dir + 1]);
-            cf__vnet_split(pc.net, p->m, p->n, dir, a.net, b.net);
+            cf__vnet_split(net, p->m, p->n, dir, lo, hi);
             a.r[2 * dir + 1] = mid;
             b.r[2 * dir] = mid;
         } else {
@@ -279,7 +375,7 @@ cf__scene_leaves(cf_scene_t *sc, size_t ip)
             int pa[3], pb[3];
             double mid[2] = {0.5 * (pc.r[2 * ea] + pc.r[2 * eb]),
                              0.5 * (pc.r[2 * ea + 1] + pc.r[2 * eb + 1])};
-            cf__vtri_split(pc.net, n, ea, eb, a.net, pa, b.net, pb);
+            cf__vtri_split(net, n, ea, eb, lo, pa, hi, pb);
             tri_regions(pc.r, pa, a.r);
             tri_regions(pc.r, pb, b.r);
             a.r[0] = mid[0];
@@ -287,11 +383,15 @@ cf__scene_leaves(cf_scene_t *sc, size_t ip)
             b.r[2] = mid[0];
             b.r[3] = mid[1];
         }
-        cf__free(pc.net);
+        /* a where the piece was, b above it (popped next) */
+        memcpy(net, lo, sz * sizeof(double));
+        memcpy(net + sz, hi, sz * sizeof(double));
         stack[nstack++] = a;
         stack[nstack++] = b;
     }
     cf__free(stack);
+    cf__free(nets);
+    cf__free(half);
     cf__free(cart);
     return st;
 }
@@ -299,7 +399,7 @@ cf__scene_leaves(cf_scene_t *sc, size_t ip)
 /* ---- the tree ----------------------------------------------------------- */
 
 /* Twice the centre of leaf l along axis ax. */
-static double
+CF__NO_COVERAGE static double
 key(const cf__vleaf_t *l, int ax)
 {
     return l->lo[ax] + l->hi[ax];
@@ -308,7 +408,7 @@ key(const cf__vleaf_t *l, int ax)
 /* Reorder L[0..n-1] so that L[k] has the key it would have sorted, with
 ** no larger key before it and no smaller after (quickselect, middle
 ** pivot). */
-static void
+CF__NO_COVERAGE static void
 select_kth(cf__vleaf_t *L, size_t n, size_t k, int ax)
 {
     size_t lo = 0, hi = n - 1;
@@ -339,7 +439,7 @@ select_kth(cf__vleaf_t *L, size_t n, size_t k, int ax)
     }
 }
 
-static void
+CF__NO_COVERAGE static void
 build(cf_scene_t *sc, size_t node, size_t first, size_t count)
 {
     cf__vnode_t *nd = &sc->nodes[node];

@@ -160,10 +160,9 @@ bisect(const cf_scene_t *sc, const vcurve_t *vc, size_t k, double ta,
        double tb, sample_t a, sample_t b)
 {
     for (int it = 0; it < 60; it++) {
-        double d = a.in_front && b.in_front
-                       ? hypot(a.q[0] - b.q[0], a.q[1] - b.q[1])
-                       : HUGE_VAL;
-        if (d <= 0.5 * sc->tol || tb - ta <= 1e-15)
+        if ((a.in_front && b.in_front &&
+             cf__hypot_le(a.q[0] - b.q[0], a.q[1] - b.q[1], 0.5 * sc->tol)) ||
+            tb - ta <= 1e-15)
             break;
         double tm = 0.5 * (ta + tb);
         sample_t m;
@@ -182,7 +181,7 @@ bisect(const cf_scene_t *sc, const vcurve_t *vc, size_t k, double ta,
 /* The homogeneous control points of the part [ta, tb] (0 <= ta < tb <= 1)
 ** of c (in R^1..3): h[i][e] = w x_e (e < dim), h[i][3] = w; false for a
 ** degree above CF__VIS_MAX_DEG. */
-static bool
+CF__NO_COVERAGE static bool
 part_net(const cf_bezier_t *c, double ta, double tb,
          double h[CF__VIS_MAX_DEG + 1][4])
 {
@@ -345,7 +344,7 @@ span(const cf_scene_t *sc, const vcurve_t *vc, size_t k, walk_t *w,
     }
     if (a->hidden || depth >= 40 ||
         (vc->on != NULL && vc->uvb == NULL && vc->uvl == NULL) ||
-        hypot(a->q[0] - b->q[0], a->q[1] - b->q[1]) <= sc->tol ||
+        cf__hypot_le(a->q[0] - b->q[0], a->q[1] - b->q[1], sc->tol) ||
         part_clear(sc, vc, k, ta, tb))
         return CF_STATUS_OK;
     double tm = 0.5 * (ta + tb);

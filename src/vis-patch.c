@@ -27,10 +27,13 @@ cf__vpatch_count(const cf__vpatch_t *p)
 
 /*
 ** Bernstein values of degree m at s into B[0][i], first derivatives into
-** B[1][i], second into B[2][i] (from the bases of degrees m - 1, m - 2).
+** B[1][i] (k >= 1), second into B[2][i] (k >= 2), from the bases of
+** degrees m - 1, m - 2.  Inlined with constant degrees by tensor_h: the
+** arithmetic is the same for every degree, so each specialisation rounds
+** alike.
 */
-static void
-bernstein(int m, double s, double B[3][CF__VIS_MAX_DEG + 1])
+CF__INLINE void
+bernstein(int m, double s, int k, double B[3][CF__VIS_MAX_DEG + 1])
 {
     double b[CF__VIS_MAX_DEG + 1], b1[CF__VIS_MAX_DEG + 1],
         b2[CF__VIS_MAX_DEG + 1];
@@ -45,15 +48,21 @@ bernstein(int m, double s, double B[3][CF__VIS_MAX_DEG + 1])
         }
         b[d] = prev;
         if (d == m - 2)
-            memcpy(b2, b, ((size_t)d + 1) * sizeof(double));
+            for (int i = 0; i <= d; i++)
+                b2[i] = b[i];
         if (d == m - 1)
-            memcpy(b1, b, ((size_t)d + 1) * sizeof(double));
+            for (int i = 0; i <= d; i++)
+                b1[i] = b[i];
     }
     for (int i = 0; i <= m; i++) {
         B[0][i] = b[i];
+        if (k < 1)
+            continue;
         B[1][i] = m >= 1 ? m * ((i > 0 ? b1[i - 1] : 0.0) -
                                 (i < m ? b1[i] : 0.0))
                          : 0.0;
+        if (k < 2)
+            continue;
         if (m >= 2)
             B[2][i] = m * (m - 1) *
                       ((i >= 2 ? b2[i - 2] : 0.0) -
@@ -64,22 +73,32 @@ bernstein(int m, double s, double B[3][CF__VIS_MAX_DEG + 1])
     }
 }
 
-/* Homogeneous derivatives A[6][4] of a tensor net: 00 10 01 20 11 02. */
-static void
-tensor_h(const cf__vpatch_t *p, const double *net, double s, double t,
-         int k, double A[6][4])
+/*
+** Homogeneous derivatives A[6][4] of a tensor net of degrees (m, n):
+** 00, and with k >= 1 10 01, with k >= 2 20 11 02 (the others are left
+** as they are).  Each sum starts at 0 and runs over i (rows) and j in
+** order; inlined with constant m, n and k.
+*/
+CF__INLINE void
+tensor_k(const double *net, int m, int n, double s, double t, int k,
+         double A[6][4])
 {
     double Bu[3][CF__VIS_MAX_DEG + 1], Bv[3][CF__VIS_MAX_DEG + 1];
     static const int oa[6] = {0, 1, 0, 2, 1, 0}, ob[6] = {0, 0, 1, 0, 1, 2};
-    int ne = k >= 2 ? 6 : 3;
-    bernstein(p->m, s, Bu);
-    bernstein(p->n, t, Bv);
-    memset(A, 0, 6 * 4 * sizeof(double));
-    for (int i = 0; i <= p->m; i++) {
-        double R[3][4] = {{0}};
-        const double *row = net + (size_t)i * ((size_t)p->n + 1) * 4;
-        for (int j = 0; j <= p->n; j++)
-            for (int b = 0; b <= k && b < 3; b++)
+    int ne = k >= 2 ? 6 : k >= 1 ? 3 : 1, nb = k >= 2 ? 3 : k + 1;
+    bernstein(m, s, k, Bu);
+    bernstein(n, t, k, Bv);
+    for (int e = 0; e < ne; e++)
+        for (int c = 0; c < 4; c++)
+            A[e][c] = 0.0;
+    for (int i = 0; i <= m; i++) {
+        double R[3][4];
+        const double *row = net + (size_t)i * ((size_t)n + 1) * 4;
+        for (int b = 0; b < nb; b++)
+            for (int c = 0; c < 4; c++)
+                R[b][c] = 0.0;
+        for (int j = 0; j <= n; j++)
+            for (int b = 0; b < nb; b++)
                 for (int c = 0; c < 4; c++)
                     R[b][c] += Bv[b][j] * row[4 * j + c];
         for (int e = 0; e < ne; e++)
@@ -88,9 +107,47 @@ tensor_h(const cf__vpatch_t *p, const double *net, double s, double t,
     }
 }
 
+/* tensor_k specialised for degrees 0 to 3 each way (those of nearly
+** every figure). */
+#define TENSOR_K(M, N)                                                     \
+    CF__NO_COVERAGE static void tensor_##M##N(const double *net, double s, \
+                                              double t, int k,             \
+                                              double A[6][4])              \
+    {                                                                      \
+        if (k <= 0)                                                        \
+            tensor_k(net, M, N, s, t, 0, A);                               \
+        else if (k == 1)                                                   \
+            tensor_k(net, M, N, s, t, 1, A);                               \
+        else                                                               \
+            tensor_k(net, M, N, s, t, 2, A);                               \
+    }
+#define TENSOR_ROW(M)                                                      \
+    TENSOR_K(M, 0) TENSOR_K(M, 1) TENSOR_K(M, 2) TENSOR_K(M, 3)
+TENSOR_ROW(0)
+TENSOR_ROW(1)
+TENSOR_ROW(2)
+TENSOR_ROW(3)
+
+typedef void (*tensor_fn)(const double *, double, double, int,
+                          double[6][4]);
+static const tensor_fn tensor_fns[16] = {
+    tensor_00, tensor_01, tensor_02, tensor_03, tensor_10, tensor_11,
+    tensor_12, tensor_13, tensor_20, tensor_21, tensor_22, tensor_23,
+    tensor_30, tensor_31, tensor_32, tensor_33};
+
+CF__NO_COVERAGE static void
+tensor_h(const cf__vpatch_t *p, const double *net, double s, double t,
+         int k, double A[6][4])
+{
+    if (p->m <= 3 && p->n <= 3)
+        tensor_fns[p->m * 4 + p->n](net, s, t, k, A);
+    else
+        tensor_k(net, p->m, p->n, s, t, k > 2 ? 2 : k < 0 ? 0 : k, A);
+}
+
 /* Homogeneous derivatives of a triangular net, directions (1, 0, -1) and
 ** (0, 1, -1), by de Casteljau down to level n - 2. */
-static void
+CF__NO_COVERAGE static void
 tri_h(const cf__vpatch_t *p, const double *net, double u, double v, int k,
       double A[6][4])
 {
@@ -147,7 +204,7 @@ tri_h(const cf__vpatch_t *p, const double *net, double u, double v, int k,
     }
 }
 
-bool
+CF__NO_COVERAGE bool
 cf__vpatch_eval(const cf__vpatch_t *p, const double *net, double s,
                 double t, int k, double *out)
 {
@@ -159,6 +216,11 @@ cf__vpatch_eval(const cf__vpatch_t *p, const double *net, double s,
     double w = A[0][3];
     if (!(w > 0.0))
         return false;
+    if (k <= 0) {
+        for (int c = 0; c < 3; c++)
+            out[c] = A[0][c] / w;
+        return true;
+    }
     double ws = A[1][3], wt = A[2][3];
     for (int c = 0; c < 3; c++) {
         double P = A[0][c] / w;
@@ -178,7 +240,7 @@ cf__vpatch_eval(const cf__vpatch_t *p, const double *net, double s,
 
 /* Halve count curves of degree d (points `stride` apart, curves `step`
 ** apart) at 1/2. */
-static void
+CF__NO_COVERAGE static void
 halve(const double *src, int d, size_t count, size_t step, size_t stride,
       double *lo, double *hi)
 {
@@ -198,7 +260,7 @@ halve(const double *src, int d, size_t count, size_t step, size_t stride,
     }
 }
 
-void
+CF__NO_COVERAGE void
 cf__vnet_split(const double *net, int m, int n, int dir, double *lo,
                double *hi)
 {
@@ -211,7 +273,7 @@ cf__vnet_split(const double *net, int m, int n, int dir, double *lo,
 
 /* b_ijk of a net with its corners reordered: new corner c is old corner
 ** perm[c], so new (e0, e1, e2) is old with e_old[perm[c]] = e_new[c]. */
-static void
+CF__NO_COVERAGE static void
 permute(const double *src, int n, const int perm[3], double *dst)
 {
     for (int i = n; i >= 0; i--)
@@ -230,7 +292,7 @@ permute(const double *src, int n, const int perm[3], double *dst)
 ** gives the part (p, b_0n0, b_00n) as b^i_0jk and (b_n00, p, b_00n) as
 ** b^j_i0k (surface-triangle.h, cf_bezier_triangle_subdivide).
 */
-void
+CF__NO_COVERAGE void
 cf__vtri_split(const double *net, int n, int a, int b, double *lo,
                int perm_lo[3], double *hi, int perm_hi[3])
 {

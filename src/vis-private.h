@@ -13,6 +13,7 @@
 #ifndef CURVEFIG_VIS_PRIVATE_H
 #define CURVEFIG_VIS_PRIVATE_H
 
+#include <math.h>
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -20,10 +21,40 @@
 #include "core-private.h"
 #include "curvefig/visibility.h"
 
+/* Arithmetic kernels with no branch of their own worth a fuzzer's
+** attention (patch evaluation, halving, the box tree's build): left out of
+** clang's coverage
+** instrumentation, whose comparison tracing of their loop counters took
+** half of fuzz_visibility's time. */
+#if defined(__clang__)
+#define CF__NO_COVERAGE __attribute__((no_sanitize("coverage")))
+#else
+#define CF__NO_COVERAGE
+#endif
+
 /* Largest degrees a scene accepts (per direction of a tensor patch, and of
 ** a triangular patch): the evaluators work on the stack. */
 #define CF__VIS_MAX_DEG 32
 #define CF__VIS_TRI_MAX_DEG 24
+
+/*
+** Whether hypot(x, y) <= r, with hypot's answer: decided by x^2 + y^2
+** against r^2 where these are normal numbers more than 1e-12 apart
+** relatively (their rounding, a few units in the last place, cannot turn
+** the answer there), by hypot elsewhere.  The hot loops' norms.
+*/
+CF__INLINE bool
+cf__hypot_le(double x, double y, double r)
+{
+    double q = x * x + y * y, r2 = r * r;
+    if (q > 1e-280 && q < 1e280 && r2 > 1e-280 && r2 < 1e280) {
+        if (q < r2 * (1.0 - 1e-12))
+            return true;
+        if (q > r2 * (1.0 + 1e-12))
+            return false;
+    }
+    return hypot(x, y) <= r;
+}
 
 /* The 4 x 4 matrix M of a view (row-major). */
 void cf__view_matrix(const cf_view_t *view, double M[16]);
@@ -46,8 +77,8 @@ size_t cf__vpatch_count(const cf__vpatch_t *p);
 ** shape at local (s, t) ([0, 1]^2, or barycentric u = s, v = t, w = 1 - s
 ** - t): out[0..2] the point, out[3..5] d/ds, out[6..8] d/dt and with k == 2
 ** out[9..11] d2/ds2, out[12..14] d2/dsdt, out[15..17] d2/dt2 (for a
-** triangle d/ds is along (1, 0, -1), d/dt along (0, 1, -1)).  false where
-** the weight is not positive.
+** triangle d/ds is along (1, 0, -1), d/dt along (0, 1, -1)); with k == 0
+** only out[0..2].  false where the weight is not positive.
 */
 bool cf__vpatch_eval(const cf__vpatch_t *p, const double *net, double s,
                      double t, int k, double *out);
@@ -91,7 +122,33 @@ typedef struct cf__vleaf {
     int8_t orient;
     double r[6];
     double lo[3], hi[3];
+    /* two unit normals of its sides in the image (tensor: of its s and t
+    ** edges; triangle: of two edges) and the range of its control points
+    ** along each, widened by a bound of how far outside them Newton's
+    ** point may land and still count as in the piece: no point whose
+    ** image lies outside a range can be found on the piece
+    ** (cf__leaf_may_hold) */
+    float hn[2][2];         /* floats: the ranges are rounded outwards */
+    float hlo[2], hhi[2];
 } cf__vleaf_t;
+
+/* Whether the image point x[2] may be the image of a point of leaf l as
+** Newton finds it (cf__vpatch_locate within 1e-9 scale, in the leaf's
+** region within its slack): the leaf's box and its two side ranges, the
+** latter widened by 1e-8 scale (scale: the scene's size).  Every piece
+** lies in the hull of its control points (positive weights), so a point
+** outside is on no piece. */
+CF__INLINE bool
+cf__leaf_may_hold(const cf__vleaf_t *l, const double *x, double scale)
+{
+    double e = 1e-8 * scale;
+    for (int k = 0; k < 2; k++) {
+        double d = (double)l->hn[k][0] * x[0] + (double)l->hn[k][1] * x[1];
+        if (d < (double)l->hlo[k] - e || d > (double)l->hhi[k] + e)
+            return false;
+    }
+    return true;
+}
 
 typedef struct cf__vnode {
     double lo[3], hi[3];

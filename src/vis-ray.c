@@ -21,8 +21,7 @@ cf__vpatch_locate(const cf_scene_t *sc, size_t ip, const double *img,
             return false;
         double rx = img[0] - D[0], ry = img[1] - D[1];
         double det = D[3] * D[7] - D[6] * D[4];
-        double rn = hypot(rx, ry);
-        if (rn <= 1e-13 * scale) {
+        if (cf__hypot_le(rx, ry, 1e-13 * scale)) {
             st[0] = s;
             st[1] = t;
             memcpy(q, D, 3 * sizeof(double));
@@ -33,11 +32,14 @@ cf__vpatch_locate(const cf_scene_t *sc, size_t ip, const double *img,
             return false;
         double ds = (rx * D[7] - ry * D[6]) / det;
         double dt = (D[3] * ry - D[4] * rx) / det;
-        /* damp long steps: the leaf is small in (s, t) */
-        double len = hypot(ds, dt);
-        if (len > 0.5) {
-            ds *= 0.5 / len;
-            dt *= 0.5 / len;
+        /* damp long steps: the leaf is small in (s, t); hypot where the
+        ** step may be longer than 1/2 (cf__hypot_le) */
+        if (!(ds * ds + dt * dt < 0.25 * (1.0 - 1e-12))) {
+            double len = hypot(ds, dt);
+            if (len > 0.5) {
+                ds *= 0.5 / len;
+                dt *= 0.5 / len;
+            }
         }
         s += ds;
         t += dt;
@@ -193,6 +195,7 @@ cf__scene_hidden(const cf_scene_t *sc, const double *q,
     uint32_t stack[STACK];
     size_t top = 0;
     double zmin = q[2] + margin(sc, q[2]);
+    double scale = fmax(sc->size, 1e-300);
     if (sc->nnode == 0)
         return false;
     stack[top++] = 0;
@@ -217,7 +220,9 @@ cf__scene_hidden(const cf_scene_t *sc, const double *q,
             if (q[0] < l->lo[0] || q[0] > l->hi[0] || q[1] < l->lo[1] ||
                 q[1] > l->hi[1] || l->hi[2] <= zmin)
                 continue;
-            ns = starts(p, l, st0);
+            /* no Newton where it cannot find a point of the leaf: found
+            ** stays 0, as Newton would leave it */
+            ns = cf__leaf_may_hold(l, q, scale) ? starts(p, l, st0) : 0;
             for (int k = 0; k < ns && (l->fold || again); k++) {
                 again = false;
                 if (!cf__vpatch_locate(sc, l->patch, q, st0[k][0], st0[k][1],

@@ -29,13 +29,15 @@ typedef struct ctx {
 
 /* g(s, t) = (S_s x S_t) . v with v = d (orthographic) or E - S, and its
 ** gradient; false where the patch cannot be evaluated. */
-static bool
+CF__NO_COVERAGE static bool
 contour(const ctx_t *c, double s, double t, double *g, double *gs,
         double *gt)
 {
     double D[18], v[3], n[3], a[3], b[3];
     const cf_view_t *vw = &c->sc->view;
-    if (!cf__vpatch_eval(c->p, c->p->h, s, t, 2, D))
+    /* the second derivatives only for the gradient (the first ones come
+    ** out the same either way) */
+    if (!cf__vpatch_eval(c->p, c->p->h, s, t, gs != NULL ? 2 : 1, D))
         return false;
     for (int k = 0; k < 3; k++)
         v[k] = vw->projection == CF_PROJECTION_PERSPECTIVE ? vw->eye[k] - D[k]

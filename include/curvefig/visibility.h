@@ -69,7 +69,9 @@
 ** in a 2D box tree: pieces that are nearly bilinear and whose image does
 ** not fold, or, where it folds (near a silhouette), pieces flat within
 ** tol / 4 or smaller than tol.  A ray from a point towards the eye is
-** tested against the pieces whose image box contains the point's image and
+** tested against the pieces whose image box contains the point's image
+** (and the ranges of their control points across their two sides: outside
+** them no point of the piece can be) and
 ** whose depth range reaches in front of it, by Newton's method on the
 ** exact patch from the piece's middle (and its corners, for a folding
 ** piece, or where Newton from the middle ends off the patch); a

@@ -152,15 +152,19 @@ static const cf__kind_t hull_kind = {
 
 bool
 cf__region_triangles(const cf_figure_t *fig, size_t i,
-                     const cf__tris_t **tris, cf_hidden_t *hidden)
+                     const cf__tris_t **tris, cf_hidden_t *hidden,
+                     double *opacity)
 {
     const region_el_t *e;
+    cf_style_t s;
     if (fig == NULL || i >= fig->count
         || fig->els[i]->kind->fini != region_fini)
         return false;
     e = (const region_el_t *)fig->els[i];
+    cf__style_resolve(&fig->theme, e->base.role, &e->base.style, &s);
     *tris = &e->tris;
     *hidden = e->hidden;
+    *opacity = s.opacity;
     return true;
 }
 

@@ -63,8 +63,10 @@ cf_status_t cf__region_parts(cf_figure_t *fig, const struct cf_scene *sc,
                              cf__polys_t *hidden, size_t *queries);
 
 /* For tests (el-region.c): the triangles in space of element i of fig
-** when it is a region in space, and its hidden mode; false otherwise. */
+** when it is a region in space, its hidden mode and the opacity of its
+** fill; false otherwise. */
 bool cf__region_triangles(const cf_figure_t *fig, size_t i,
-                          const cf__tris_t **tris, cf_hidden_t *hidden);
+                          const cf__tris_t **tris, cf_hidden_t *hidden,
+                          double *opacity);
 
 #endif

@@ -204,6 +204,10 @@ CF_API cf_status_t cf_figure_add_space_hull(cf_figure_t *fig,
                                             cf_hidden_t hidden,
                                             const cf_style_t *style);
 
+/* The line of the script that added element i (counted from 0), which
+** the figure's warnings about it name (0: unknown, the default). */
+CF_API void cf_figure_set_element_line(cf_figure_t *fig, size_t i, int line);
+
 /* The same for a triangular Bézier patch in R^3: its three edges
 ** (boundary), iso-lines of u, v and w (nu of u and of w, nv of v evenly
 ** spaced; u_values and v_values), its net; knot_lines has no meaning. */

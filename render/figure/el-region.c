@@ -13,6 +13,7 @@
 */
 #include <math.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "region.h"
@@ -67,27 +68,81 @@ region_bounds(const cf__element_t *el, cf__bounds_t *b)
 ** edges found to half that tolerance. */
 enum { CELL = 8 };
 
-/* The seen and hidden parts for layout tolerance tol. */
+/* The element's index in the figure. */
+static size_t
+index_of(const cf_figure_t *fig, const region_el_t *e)
+{
+    size_t i = 0;
+    while (i < fig->count && fig->els[i] != &e->base)
+        i++;
+    return i;
+}
+
+/* A warning about the element: "fill 3 (line 12): ..." (counted from 1,
+** as the labels' warnings count). */
+static void
+warn(cf_figure_t *fig, const region_el_t *e, const char *what)
+{
+    char line[32] = "";
+    if (e->base.line > 0)
+        snprintf(line, sizeof line, " (line %d)", e->base.line);
+    cf__figure_warn(fig, "%s %zu%s %s", e->base.kind->name,
+                    index_of(fig, e) + 1, line, what);
+}
+
+/* The seen and hidden parts for layout l. */
 static cf_status_t
-build(cf_figure_t *fig, region_el_t *e, double tol)
+build(cf_figure_t *fig, region_el_t *e, const cf__layout_t *l)
 {
     cf_scene_t *sc = NULL;
     cf_status_t st = CF_STATUS_OK;
-    double vtol = 20 * tol;
-    if (e->cache_tol > 0 && e->cache_tol <= tol)
+    double vtol = 20 * l->tol, widest = 0, win[4];
+    cf__region_grid_t g;
+    if (e->cache_tol > 0 && e->cache_tol <= l->tol)
         return CF_STATUS_OK;
     drop_cache(e);
+    win[0] = l->xmin;
+    win[1] = l->xmax;
+    win[2] = l->ymin;
+    win[3] = l->ymax;
+    g.cell = CELL * vtol;
+    g.split = 0.5 * vtol;
+    g.positive = e->positive;
+    g.window = l->clip ? win : NULL;
     if (e->hidden != CF_HIDDEN_SHOW)
         st = cf__figure_scene(fig, vtol, &sc);
     if (st == CF_STATUS_OK)
-        st = cf__region_parts(fig, sc, &e->tris, CELL * vtol, 0.5 * vtol,
-                              e->positive, &e->seen, &e->unseen, NULL);
+        st = cf__region_parts(fig, sc, &e->tris, &g, &e->seen, &e->unseen,
+                              &widest, NULL);
     if (st != CF_STATUS_OK) {
         drop_cache(e);
         return cf__fig_fail(fig, st, "a region in space");
     }
-    e->cache_tol = tol;
+    if (sc != NULL && widest > 1.001 * g.cell) {
+        char what[160];
+        snprintf(what, sizeof what, "is too large on the page for its "
+                 "cells: what the surfaces hide of it is found to %.2g bp, "
+                 "not %.2g", widest * l->sx, g.cell * l->sx);
+        warn(fig, e, what);
+    }
+    e->cache_tol = l->tol;
     return CF_STATUS_OK;
+}
+
+/* A shaded surface added after the region paints its shading over it. */
+static void
+check_order(cf_figure_t *fig, const region_el_t *e)
+{
+    cf_surface_shading_t sh;
+    for (size_t i = index_of(fig, e) + 1; i < fig->count; i++)
+        if (cf__surface_shading(fig, i, &sh)) {
+            char what[160];
+            snprintf(what, sizeof what, "lies under the shading of surface "
+                     "%zu, added after it: add the %s after the shaded "
+                     "surfaces", i + 1, e->base.kind->name);
+            warn(fig, e, what);
+            return;
+        }
 }
 
 /* The polygons as one path filled in colour c at opacity a (nonzero: the
@@ -125,9 +180,10 @@ region_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
             const cf_style_t *s, cf__dl_t *dl)
 {
     region_el_t *e = (region_el_t *)el;
-    cf_status_t st = build(fig, e, l->tol);
+    cf_status_t st = build(fig, e, l);
     if (st != CF_STATUS_OK)
         return st;
+    check_order(fig, e);
     cf__clip_to_window(l, 0, dl);
     if (e->hidden == CF_HIDDEN_DASHED)
         fill_polys(&e->unseen, l, &s->fill, 0.4 * s->opacity, dl);

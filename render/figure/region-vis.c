@@ -29,6 +29,8 @@ typedef struct ctx {
     double split;
     bool positive;
     cf__polys_t *out[2];     /* hidden, seen */
+    const double *win;       /* xmin xmax ymin ymax widened, or NULL */
+    double widest;           /* the longest cell used */
     size_t queries;
     cf_status_t st;
 } ctx_t;
@@ -38,6 +40,15 @@ static bool
 seen_at(ctx_t *c, const double *p)
 {
     bool seen = true;
+    if (c->win != NULL) {
+        /* far outside the window (more than a cell): in no cell that
+        ** shows, not asked */
+        double q[2];
+        cf__fig_project1(c->fig, p, 3, q);
+        if (q[0] < c->win[0] || q[0] > c->win[1] || q[1] < c->win[2]
+            || q[1] > c->win[3])
+            return true;
+    }
     c->queries++;
     if (c->sc != NULL && c->st == CF_STATUS_OK)
         c->st = cf_scene_point_visible(c->sc, p, NULL, &seen, NULL,
@@ -222,6 +233,7 @@ triangle(ctx_t *c, const double *t, double cell)
         return;
     }
     k = k < 1 ? 1 : k > 4096 ? 4096 : k;
+    c->widest = fmax(c->widest, e / (double)k);
     npts = (k + 1) * (k + 2) / 2;
     seen = cf_alloc_array(npts, sizeof *seen);
     at = cf_alloc_array(k + 1, sizeof *at);
@@ -248,20 +260,28 @@ triangle(ctx_t *c, const double *t, double cell)
 
 cf_status_t
 cf__region_parts(cf_figure_t *fig, const cf_scene_t *sc,
-                 const cf__tris_t *tris, double cell, double split,
-                 bool positive, cf__polys_t *seen, cf__polys_t *hidden,
+                 const cf__tris_t *tris, const cf__region_grid_t *g,
+                 cf__polys_t *seen, cf__polys_t *hidden, double *widest,
                  size_t *queries)
 {
     ctx_t c;
+    double win[4];
     memset(&c, 0, sizeof c);
     c.fig = fig;
     c.sc = sc;
-    c.split = split;
-    c.positive = positive;
+    c.split = g->split;
+    c.positive = g->positive;
     c.out[0] = hidden;
     c.out[1] = seen;
+    if (g->window != NULL) {
+        for (int k = 0; k < 4; k++)
+            win[k] = g->window[k] + (k % 2 == 0 ? -2 : 2) * g->cell;
+        c.win = win;
+    }
     for (size_t i = 0; i < tris->n && c.st == CF_STATUS_OK; i++)
-        triangle(&c, tris->p + 9 * i, cell);
+        triangle(&c, tris->p + 9 * i, g->cell);
+    if (widest != NULL)
+        *widest = c.widest;
     if (queries != NULL)
         *queries = c.queries;
     return c.st;

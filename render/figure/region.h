@@ -48,19 +48,30 @@ typedef struct cf__polys {
 
 void cf__polys_fini(cf__polys_t *p);
 
+/* How a region is cut: cells at most `cell` long in the image, change
+** points bisected to `split`; positive: every polygon turns counter-
+** clockwise in the image (else as its triangle); window (xmin xmax ymin
+** ymax, or NULL): points more than two cells outside it are not asked
+** (taken as seen: no cell of them shows). */
+typedef struct cf__region_grid {
+    double cell, split;
+    bool positive;
+    const double *window;
+} cf__region_grid_t;
+
 /* The parts of the triangles tris that are seen (into *seen) and hidden
 ** (into *hidden) in scene sc (NULL: all seen), as polygons in the image:
-** each triangle is cut into a grid of cells at most `cell` long in the
-** image, a cell whose corners agree is whole, a run of whole cells of
-** one kind along a row is one polygon, and a cell whose corners differ is
-** cut straight between the points where its edges change (bisected to
-** `split` in the image).  positive: every polygon turns counter-
-** clockwise in the image (else as its triangle).  *queries counts the
+** each triangle is cut into a grid of cells (g), a cell whose corners
+** agree is whole, a run of whole cells of one kind along a row is one
+** polygon, and a cell whose corners differ is cut straight between the
+** points where its edges change.  A triangle is cut at most 4096 times
+** along an edge: *widest gets the longest cell used.  *queries counts the
 ** points asked. */
 cf_status_t cf__region_parts(cf_figure_t *fig, const struct cf_scene *sc,
-                             const cf__tris_t *tris, double cell,
-                             double split, bool positive, cf__polys_t *seen,
-                             cf__polys_t *hidden, size_t *queries);
+                             const cf__tris_t *tris,
+                             const cf__region_grid_t *g, cf__polys_t *seen,
+                             cf__polys_t *hidden, double *widest,
+                             size_t *queries);
 
 /* For tests (el-region.c): the triangles in space of element i of fig
 ** when it is a region in space, its hidden mode and the opacity of its

@@ -18,6 +18,8 @@
 **   pixels    the opaque fill between two shaded surfaces is in the PNG
 **             where it is seen and not where the upper surface hides it
 **             (away from the boundary by the same tolerance plus a pixel);
+**   warn      a fill added before a shaded surface (under its shading):
+**             a warning naming the fill, its line and the surface;
 **   bad       a fill whose points lie on one line, a hull with hidden in a
 **             figure without a view, and the C API without a view: errors
 **             naming the cause.
@@ -529,6 +531,42 @@ expect_error(const char *src, const char *words)
     remove(path);
 }
 
+/* A fill added before a shaded surface lies under its shading: the
+** figure warns, naming the fill, its line and the surface. */
+static void
+test_warn_order(void **state)
+{
+    static const char src[] =
+        "local f = figure{ name = 'w', width = '7cm', height = '5cm', "
+        "view = { -60, 30 } }\n"
+        "f:fill({ {-1, -0.3, 0.3}, {1, -0.3, 0.3}, {1, 0.4, 0.9} })\n"
+        "f:surface(bezier_surface{ points = { { {-1, -1, 0}, {-1, 1, 0} },"
+        " { {1, -1, 0}, {1, 1, 0.5} } } }, { fill = '#c0c0c0' })\n";
+    char path[] = "/tmp/cf-regions-XXXXXX", *text;
+    size_t size;
+    int fd = mkstemp(path);
+    FILE *f;
+    cf_script_t *sc = NULL;
+    (void)state;
+    assert_true(fd >= 0);
+    f = fdopen(fd, "w");
+    fputs(src, f);
+    fclose(f);
+    assert_int_equal(cf_script_create(NULL, NULL, &sc, NULL), 0);
+    if (cf_script_run_file(sc, path) != CF_STATUS_OK)
+        fail_msg("%s", cf_script_error(sc));
+    assert_int_equal(cf_figure_dump(cf_script_figure(sc, 0), NULL, &text,
+                                    &size, NULL), 0);
+    cf_free(text);
+    if (strstr(cf_figure_warnings(cf_script_figure(sc, 0)),
+               "fill 1 (line 2) lies under the shading of surface 2")
+        == NULL)
+        fail_msg("warnings: \"%s\"",
+                 cf_figure_warnings(cf_script_figure(sc, 0)));
+    cf_script_destroy(sc);
+    remove(path);
+}
+
 static void
 test_bad(void **state)
 {
@@ -563,6 +601,7 @@ main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_parts),
         cmocka_unit_test(test_pixels),
+        cmocka_unit_test(test_warn_order),
         cmocka_unit_test(test_bad),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

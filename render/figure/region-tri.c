@@ -190,8 +190,9 @@ cf__region_polygon(cf_figure_t *fig, const double *p, size_t n,
     i2 = farthest_line(p, n, p, p + 3 * i1, &d2);
     if (!(d1 > 1e-9 * size) || !(d2 > 1e-9 * size)) {
         st = cf_diag_set(&fig->err, CF_STATUS_DEGENERATE, -1,
-                         "%s: its %zu points lie on one line: no region to "
-                         "fill", what, n);
+                         "its %zu points lie on one line: no region to "
+                         "fill (a %s needs three points off one line)", n,
+                         what);
         goto done;
     }
     /* Newell's normal: the plane of the polygon (of its largest triangle

@@ -1,5 +1,6 @@
 /*
-** Filled regions in space among surfaces (tests/surfaces/regions/):
+** Filled regions in space among surfaces (tests/surfaces/regions/ and the
+** tangent plane of figures/surfaces/tangent-plane.lua):
 **
 **   parts     points sampled densely in every region (a lattice in each
 **             of its triangles) are painted as the independent ray
@@ -58,7 +59,8 @@ run(const char *name)
 {
     char path[1024];
     cf_script_t *sc = NULL;
-    snprintf(path, sizeof path, "%s/%s", REGION_DIR, name);
+    snprintf(path, sizeof path, "%s/%s", name[0] == '/' ? "" : REGION_DIR,
+             name);
     assert_int_equal(cf_script_create(NULL, NULL, &sc, NULL), 0);
     if (cf_script_run_file(sc, path) != CF_STATUS_OK)
         fail_msg("%s: %s", path, cf_script_error(sc));
@@ -397,10 +399,12 @@ test_parts(void **state)
     size_t regions = 0;
     (void)state;
     check_script("space-regions.lua", &t, &regions);
+    check_script(CF_SOURCE_ROOT "/figures/surfaces/tangent-plane.lua", &t,
+                 &regions);
     print_message("%zu regions, %zu samples, %zu disagree within %g bp of "
                   "the boundary, %zu beyond\n", regions, t.checked,
                   t.excused, EXCUSE * VTOL_BP, t.bad);
-    assert_int_equal(regions, 4);
+    assert_int_equal(regions, 5);
     assert_true(t.checked > 2000);
     assert_int_equal(t.bad, 0);
 }

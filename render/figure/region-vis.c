@@ -112,12 +112,20 @@ lerp3(const double *a, const double *b, double t, double *o)
 }
 
 /* The point of edge a b (a seen as sa, b not) where it changes, to
-** c->split in the image. */
+** c->split in the image; bisected from the lesser end (by coordinates),
+** so that the two cells that share the edge cut it at one point. */
 static void
 change_on(ctx_t *c, const double *a, const double *b, bool sa, double *o)
 {
-    double t0 = 0, t1 = 1, m[3];
-    double len = image_len(c->fig, a, b);
+    double t0 = 0, t1 = 1, m[3], len;
+    if (a[0] > b[0] || (a[0] == b[0] && (a[1] > b[1]
+                                         || (a[1] == b[1] && a[2] > b[2])))) {
+        const double *t = a;
+        a = b;
+        b = t;
+        sa = !sa;
+    }
+    len = image_len(c->fig, a, b);
     while ((t1 - t0) * len > c->split && c->st == CF_STATUS_OK) {
         double t = 0.5 * (t0 + t1);
         lerp3(a, b, t, m);

@@ -2,7 +2,8 @@
 -- test_surface_regions.c checks the display list against the ray caster
 -- at points sampled densely in each region, and the PNG of the second
 -- figure): a filled quad that pierces a bent patch, a hull partly behind
--- it, a fill drawn whole; then a fill between two shaded surfaces.
+-- it, a fill drawn whole; then a fill between two shaded surfaces; a
+-- hull through the patch in a perspective view.
 
 local P = {
   { {-1, -1, 0},   {-1, 0, 0.8}, {-1, 1, 0} },
@@ -47,3 +48,14 @@ g:surface(bezier_surface{ points = Q }, { boundary = false,
 g:fill({ {-1.2, -0.2, -0.2}, {1.2, -0.2, -0.2}, {1.2, 0.3, 0.2},
          {-1.2, 0.3, 0.2} }, { fill = "#ff0000", opacity = 1,
                                hidden = "remove" })
+
+-- a perspective view: a hull through the patch, its hidden part faded
+local h = figure{
+  name = "space-regions-perspective",
+  width = "8cm", height = "6cm",
+  view = { -40, 25 }, projection = "perspective", distance = 5,
+}
+h:surface(s, { isolines = { 3, 3 } })
+h:hull({ {-0.6, -0.9, -0.2}, {0.7, -0.6, 0.1}, {0.2, 0.8, 0.0},
+         {-0.1, -0.1, 1.5}, {0.3, 0.2, -0.5} },
+       { fill = "purple", opacity = 0.5 })

@@ -233,13 +233,26 @@ triangle(ctx_t *c, const double *t, double cell)
     double e = fmax(image_len(c->fig, t, t + 3),
                     fmax(image_len(c->fig, t + 3, t + 6),
                          image_len(c->fig, t + 6, t)));
-    size_t k = (size_t)ceil(e / cell), npts;
+    double wmin = INFINITY, wmax = 0;
+    size_t k, npts;
     bool *seen;
     size_t *at;
     if (c->sc == NULL) {
         emit(c, true, t, 3);
         return;
     }
+    /* under a perspective the grid's cells are larger on the page where
+    ** the triangle is nearer the eye: by W's ratio at its corners */
+    for (int q = 0; q < 3; q++) {
+        double h[3];
+        if (cf__fig_project_h(c->fig, t + 3 * q, 3, false, h)) {
+            wmin = fmin(wmin, h[2]);
+            wmax = fmax(wmax, h[2]);
+        }
+    }
+    if (wmax > 0 && wmin > 0)
+        e *= wmax / wmin;
+    k = (size_t)ceil(e / cell);
     k = k < 1 ? 1 : k > 4096 ? 4096 : k;
     c->widest = fmax(c->widest, e / (double)k);
     npts = (k + 1) * (k + 2) / 2;

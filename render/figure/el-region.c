@@ -96,7 +96,7 @@ build(cf_figure_t *fig, region_el_t *e, const cf__layout_t *l)
 {
     cf_scene_t *sc = NULL;
     cf_status_t st = CF_STATUS_OK;
-    double vtol = 20 * l->tol, widest = 0, win[4];
+    double vtol = 20 * l->tol, win[4];
     cf__region_grid_t g;
     if (e->cache_tol > 0 && e->cache_tol <= l->tol)
         return CF_STATUS_OK;
@@ -113,17 +113,10 @@ build(cf_figure_t *fig, region_el_t *e, const cf__layout_t *l)
         st = cf__figure_scene(fig, vtol, &sc);
     if (st == CF_STATUS_OK)
         st = cf__region_parts(fig, sc, &e->tris, &g, &e->seen, &e->unseen,
-                              &widest, NULL);
+                              NULL);
     if (st != CF_STATUS_OK) {
         drop_cache(e);
         return cf__fig_fail(fig, st, "a region in space");
-    }
-    if (sc != NULL && widest > 1.001 * g.cell) {
-        char what[160];
-        snprintf(what, sizeof what, "is too large on the page for its "
-                 "cells: what the surfaces hide of it is found to %.2g bp, "
-                 "not %.2g", widest * l->sx, g.cell * l->sx);
-        warn(fig, e, what);
     }
     e->cache_tol = l->tol;
     return CF_STATUS_OK;

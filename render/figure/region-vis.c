@@ -30,7 +30,6 @@ typedef struct ctx {
     bool positive;
     cf__polys_t *out[2];     /* hidden, seen */
     const double *win;       /* xmin xmax ymin ymax widened, or NULL */
-    double widest;           /* the longest cell used */
     size_t queries;
     cf_status_t st;
 } ctx_t;
@@ -226,6 +225,29 @@ row(ctx_t *c, const double *t, size_t k, size_t j, const bool *seen,
 #undef S
 }
 
+/* Whether the image of triangle t lies outside the window. */
+static bool
+outside(const ctx_t *c, const double *t)
+{
+    double q[6];
+    bool out[4] = { true, true, true, true };
+    if (c->win == NULL)
+        return false;
+    for (int v = 0; v < 3; v++) {
+        cf__fig_project1(c->fig, t + 3 * v, 3, q + 2 * v);
+        out[0] = out[0] && q[2 * v] < c->win[0];
+        out[1] = out[1] && q[2 * v] > c->win[1];
+        out[2] = out[2] && q[2 * v + 1] < c->win[2];
+        out[3] = out[3] && q[2 * v + 1] > c->win[3];
+    }
+    return out[0] || out[1] || out[2] || out[3];
+}
+
+/* A grid has at most KMAX cells along an edge: a larger triangle is cut
+** in four at its edges' midpoints first (those outside the window are
+** then not asked at all). */
+enum { KMAX = 1024 };
+
 /* One triangle of the region. */
 static void
 triangle(ctx_t *c, const double *t, double cell)
@@ -237,7 +259,7 @@ triangle(ctx_t *c, const double *t, double cell)
     size_t k, npts;
     bool *seen;
     size_t *at;
-    if (c->sc == NULL) {
+    if (c->sc == NULL || outside(c, t)) {
         emit(c, true, t, 3);
         return;
     }
@@ -252,9 +274,28 @@ triangle(ctx_t *c, const double *t, double cell)
     }
     if (wmax > 0 && wmin > 0)
         e *= wmax / wmin;
+    if (e > KMAX * cell) {
+        double m[9], sub[9];
+        static const int corner[4][3] = {
+            { -1, 0, 2 }, { 0, -2, 1 }, { 2, 1, -3 }, { 0, 1, 2 }
+        };
+        /* m: the midpoints of edges 0 1, 1 2, 2 0; the four triangles
+        ** keep t's turn (corner c of t is -1 - c) */
+        lerp3(t, t + 3, 0.5, m);
+        lerp3(t + 3, t + 6, 0.5, m + 3);
+        lerp3(t + 6, t, 0.5, m + 6);
+        for (int q = 0; q < 4 && c->st == CF_STATUS_OK; q++) {
+            for (int v = 0; v < 3; v++) {
+                int w = corner[q][v];
+                memcpy(sub + 3 * v, w < 0 ? t + 3 * (-1 - w) : m + 3 * w,
+                       3 * sizeof *sub);
+            }
+            triangle(c, sub, cell);
+        }
+        return;
+    }
     k = (size_t)ceil(e / cell);
-    k = k < 1 ? 1 : k > 4096 ? 4096 : k;
-    c->widest = fmax(c->widest, e / (double)k);
+    k = k < 1 ? 1 : k;
     npts = (k + 1) * (k + 2) / 2;
     seen = cf_alloc_array(npts, sizeof *seen);
     at = cf_alloc_array(k + 1, sizeof *at);
@@ -282,8 +323,7 @@ triangle(ctx_t *c, const double *t, double cell)
 cf_status_t
 cf__region_parts(cf_figure_t *fig, const cf_scene_t *sc,
                  const cf__tris_t *tris, const cf__region_grid_t *g,
-                 cf__polys_t *seen, cf__polys_t *hidden, double *widest,
-                 size_t *queries)
+                 cf__polys_t *seen, cf__polys_t *hidden, size_t *queries)
 {
     ctx_t c;
     double win[4];
@@ -301,8 +341,6 @@ cf__region_parts(cf_figure_t *fig, const cf_scene_t *sc,
     }
     for (size_t i = 0; i < tris->n && c.st == CF_STATUS_OK; i++)
         triangle(&c, tris->p + 9 * i, g->cell);
-    if (widest != NULL)
-        *widest = c.widest;
     if (queries != NULL)
         *queries = c.queries;
     return c.st;

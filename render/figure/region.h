@@ -64,14 +64,13 @@ typedef struct cf__region_grid {
 ** each triangle is cut into a grid of cells (g), a cell whose corners
 ** agree is whole, a run of whole cells of one kind along a row is one
 ** polygon, and a cell whose corners differ is cut straight between the
-** points where its edges change.  A triangle is cut at most 4096 times
-** along an edge: *widest gets the longest cell used.  *queries counts the
-** points asked. */
+** points where its edges change (a triangle larger than 1024 cells
+** is cut in four first; a triangle outside the window is taken whole).
+** *queries counts the points asked. */
 cf_status_t cf__region_parts(cf_figure_t *fig, const struct cf_scene *sc,
                              const cf__tris_t *tris,
                              const cf__region_grid_t *g, cf__polys_t *seen,
-                             cf__polys_t *hidden, double *widest,
-                             size_t *queries);
+                             cf__polys_t *hidden, size_t *queries);
 
 /* For tests (el-region.c): the triangles in space of element i of fig
 ** when it is a region in space, its hidden mode and the opacity of its

@@ -3,7 +3,8 @@
 -- at points sampled densely in each region, and the PNG of the second
 -- figure): a filled quad that pierces a bent patch, a hull partly behind
 -- it, a fill drawn whole; then a fill between two shaded surfaces; a
--- hull through the patch in a perspective view.
+-- hull through the patch in a perspective view; a fill far larger than
+-- the figure's window.
 
 local P = {
   { {-1, -1, 0},   {-1, 0, 0.8}, {-1, 1, 0} },
@@ -59,3 +60,15 @@ h:surface(s, { isolines = { 3, 3 } })
 h:hull({ {-0.6, -0.9, -0.2}, {0.7, -0.6, 0.1}, {0.2, 0.8, 0.0},
          {-0.1, -0.1, 1.5}, {0.3, 0.2, -0.5} },
        { fill = "purple", opacity = 0.5 })
+
+-- an explicit window and a fill thousands of times larger, behind and
+-- through the patch: cut to the tolerance where it shows
+local w = figure{
+  name = "space-regions-window",
+  width = "8cm", height = "6cm",
+  view = { -60, 30 },
+}
+w:window(-2, 2, -1.5, 1.5)
+w:surface(s, { isolines = { 4, 4 } })
+w:fill({ {-3000, -3000, 0.3}, {3000, -3000, 0.3}, {0, 3000, 0.3} },
+       { fill = "red", opacity = 0.5 })

@@ -190,7 +190,10 @@ CF_API cf_status_t cf_figure_add_space_arrow(cf_figure_t *fig,
 ** the hidden part at 0.4 of it (dashed), left out (remove) or filled alike
 ** (show).  The outline (the polygon; a hull's outline in the image) is a
 ** polygon in space split as cf_figure_add_space_polygon's, stroked when
-** the style's colour and width are.  A region hides nothing itself.
+** the style's colour and width are.  A region hides nothing itself.  It
+** is painted where it comes among the elements: added before a shaded
+** surface, it lies under that surface's shading, and the figure warns
+** (cf_figure_warnings, naming it and its line).
 ** Errors: a figure without a view, too few points, a point not finite or
 ** at or behind the eye, a filled polygon whose points lie on one line.
 ** Roles CF_ROLE_FILL and CF_ROLE_HULL.

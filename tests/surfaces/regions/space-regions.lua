@@ -3,8 +3,8 @@
 -- at points sampled densely in each region, and the PNG of the second
 -- figure): a filled quad that pierces a bent patch, a hull partly behind
 -- it, a fill drawn whole; then a fill between two shaded surfaces; a
--- hull through the patch in a perspective view; a fill far larger than
--- the figure's window.
+-- hull and a quad not in one plane through the patch in a perspective
+-- view; a fill far larger than the figure's window.
 
 local P = {
   { {-1, -1, 0},   {-1, 0, 0.8}, {-1, 1, 0} },
@@ -60,6 +60,9 @@ h:surface(s, { isolines = { 3, 3 } })
 h:hull({ {-0.6, -0.9, -0.2}, {0.7, -0.6, 0.1}, {0.2, 0.8, 0.0},
          {-0.1, -0.1, 1.5}, {0.3, 0.2, -0.5} },
        { fill = "purple", opacity = 0.5 })
+-- a quad not in one plane (two flat triangles) through the patch
+h:fill({ {-1.2, 0.2, 0.9}, {-0.2, 1.2, -0.3}, {1.1, 0.9, 0.8},
+         {0.6, -0.4, 0.1} }, { fill = "green", opacity = 0.5 })
 
 -- an explicit window and a fill thousands of times larger, behind and
 -- through the patch: cut to the tolerance where it shows

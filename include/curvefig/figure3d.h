@@ -10,8 +10,9 @@
 ** curve's: both are drawn exactly as the figure draws any plane curve
 ** (cubic segments within the figure's tolerance, never a polyline).
 ** Points, polygons, labels, arrows and curves given in R^3 are projected
-** by the view; curves, polylines, polygons, points, labels and arrows
-** added with the functions below are also split or hidden by the figure's surfaces.
+** by the view; curves, polylines, polygons, points, labels, arrows and
+** filled regions added with the functions below are also split or hidden
+** by the figure's surfaces.
 **
 ** A point at or behind the eye cannot be drawn: the element that holds it
 ** fails with CF_STATUS_DOMAIN, naming the point and a distance that would
@@ -171,6 +172,44 @@ CF_API cf_status_t cf_figure_add_space_arrow(cf_figure_t *fig,
                                              const double *q,
                                              cf_hidden_t hidden,
                                              const cf_style_t *style);
+
+/*
+** Filled regions in R^3 (copied) in a figure with a view: a filled polygon
+** (n >= 3 points; its plane's triangles, ear-clipped; a polygon not in one
+** plane is triangulated in the plane of its Newell normal, a polygon that
+** crosses itself is the fan of its first vertex under the nonzero rule)
+** and a convex hull (n >= 1; the faces of the 3D hull that face the
+** viewer, which cover the hull's image once; points in one plane: their
+** hull in it; on one line: the segment, its outline only).  When drawn,
+** the part of the region that the figure's occluding surfaces hide is
+** found on a grid of cells at most 8 times the visibility tolerance long
+** on the page (1.6 bp by default; each grid point asked with
+** cf_scene_point_visible), a cell whose corners differ cut straight
+** between the points where its edges change (bisected to half the
+** tolerance): the seen part is filled in the style's fill at its opacity,
+** the hidden part at 0.4 of it (dashed), left out (remove) or filled alike
+** (show).  The outline (the polygon; a hull's outline in the image) is a
+** polygon in space split as cf_figure_add_space_polygon's, stroked when
+** the style's colour and width are.  A region hides nothing itself.  It
+** is painted where it comes among the elements: added before a shaded
+** surface, it lies under that surface's shading, and the figure warns
+** (cf_figure_warnings, naming it and its line).
+** Errors: a figure without a view, too few points, a point not finite or
+** at or behind the eye, a filled polygon whose points lie on one line.
+** Roles CF_ROLE_FILL and CF_ROLE_HULL.
+*/
+CF_API cf_status_t cf_figure_add_space_fill(cf_figure_t *fig,
+                                            const double *pts, size_t n,
+                                            cf_hidden_t hidden,
+                                            const cf_style_t *style);
+CF_API cf_status_t cf_figure_add_space_hull(cf_figure_t *fig,
+                                            const double *pts, size_t n,
+                                            cf_hidden_t hidden,
+                                            const cf_style_t *style);
+
+/* The line of the script that added element i (counted from 0), which
+** the figure's warnings about it name (0: unknown, the default). */
+CF_API void cf_figure_set_element_line(cf_figure_t *fig, size_t i, int line);
 
 /* The same for a triangular Bézier patch in R^3: its three edges
 ** (boundary), iso-lines of u, v and w (nu of u and of w, nv of v evenly

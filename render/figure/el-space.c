@@ -323,31 +323,38 @@ cf__space_pieces(cf_figure_t *fig, cf__element_t *el, size_t index,
 
 /* ---- adding ------------------------------------------------------------- */
 
-static cf_status_t
-add_space(cf_figure_t *fig, const cf__kind_t *kind, cf_role_t role,
-          const double *pts, size_t n, size_t min, bool lines, bool closed,
-          cf_hidden_t hidden, const cf_style_t *style, const char *what)
+/* A record of a space element (not in the figure), or NULL (the error in
+** fig). */
+static space_el_t *
+make_space(cf_figure_t *fig, const cf__kind_t *kind, cf_role_t role,
+           const double *pts, size_t n, size_t min, bool lines, bool closed,
+           cf_hidden_t hidden, const cf_style_t *style, const char *what,
+           cf_status_t *st)
 {
     space_el_t *e;
-    cf_status_t st = CF_STATUS_OK;
-    CF__FIG_CHECK(fig);
+    *st = CF_STATUS_OK;
     if (!fig->has_view)
-        return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                           "%s in space: the figure has no view; give "
-                           "figure{view = {azimuth, elevation}, ...}", what);
-    if ((unsigned)hidden > CF_HIDDEN_REMOVE)
-        return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                           "%s: hidden is not show, dashed or remove", what);
-    if (pts == NULL || n < min)
-        return cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
-                           "%s: %zu points, at least %zu needed", what,
-                           pts == NULL ? 0 : n, min);
-    if (cf_check_finite_points(pts, n, 3, 3, what, &fig->err) != CF_STATUS_OK
-        || cf__fig_check_style(fig, style) != CF_STATUS_OK)
-        return fig->err.status;
+        *st = cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
+                          "%s in space: the figure has no view; give "
+                          "figure{view = {azimuth, elevation}, ...}", what);
+    else if ((unsigned)hidden > CF_HIDDEN_REMOVE)
+        *st = cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
+                          "%s: hidden is not show, dashed or remove", what);
+    else if (pts == NULL || n < min)
+        *st = cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, -1,
+                          "%s: %zu points, at least %zu needed", what,
+                          pts == NULL ? 0 : n, min);
+    else if (cf_check_finite_points(pts, n, 3, 3, what, &fig->err)
+             != CF_STATUS_OK
+             || cf__fig_check_style(fig, style) != CF_STATUS_OK)
+        *st = fig->err.status;
+    if (*st != CF_STATUS_OK)
+        return NULL;
     e = cf__element_new(fig, kind, sizeof *e, role, style);
-    if (e == NULL)
-        return fig->err.status;
+    if (e == NULL) {
+        *st = fig->err.status;
+        return NULL;
+    }
     e->fig = fig;
     e->n = n;
     e->lines = lines;
@@ -356,13 +363,41 @@ add_space(cf_figure_t *fig, const cf__kind_t *kind, cf_role_t role,
     e->p3 = cf__copy_doubles(pts, 3 * n);
     e->p2 = cf_alloc_array(2 * n, sizeof *e->p2);
     if (e->p3 == NULL || e->p2 == NULL)
-        return cf__element_commit(fig, e, cf__fig_nomem(fig, what));
-    for (size_t i = 0; i < n && st == CF_STATUS_OK; i++) {
+        *st = cf__fig_nomem(fig, what);
+    for (size_t i = 0; i < n && *st == CF_STATUS_OK; i++) {
         cf__fig_project1(fig, pts + 3 * i, 3, e->p2 + 2 * i);
         if (isnan(e->p2[2 * i]))
-            st = cf__fig_behind_eye(fig, pts + 3 * i, what);
+            *st = cf__fig_behind_eye(fig, pts + 3 * i, what);
     }
-    return cf__element_commit(fig, e, st);
+    return e;
+}
+
+static cf_status_t
+add_space(cf_figure_t *fig, const cf__kind_t *kind, cf_role_t role,
+          const double *pts, size_t n, size_t min, bool lines, bool closed,
+          cf_hidden_t hidden, const cf_style_t *style, const char *what)
+{
+    cf_status_t st;
+    space_el_t *e;
+    CF__FIG_CHECK(fig);
+    e = make_space(fig, kind, role, pts, n, min, lines, closed, hidden,
+                   style, what, &st);
+    return e == NULL ? st : cf__element_commit(fig, e, st);
+}
+
+cf__element_t *
+cf__space_outline_new(cf_figure_t *fig, const double *pts, size_t n,
+                      bool closed, cf_hidden_t hidden, const char *what)
+{
+    cf_status_t st;
+    space_el_t *e = make_space(fig, &polyline_kind, CF_ROLE_POLYLINE, pts,
+                               n, 2, true, closed, hidden, NULL, what, &st);
+    if (e != NULL && st != CF_STATUS_OK) {
+        space_fini(&e->base);
+        cf_free(e);
+        e = NULL;
+    }
+    return e != NULL ? &e->base : NULL;
 }
 
 cf_status_t

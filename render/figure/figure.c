@@ -4,6 +4,8 @@
 ** its kind, render/el-*.c, render/figure/axes.c, render/figure/plots.c).
 */
 #include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "grow.h"
@@ -134,6 +136,42 @@ size_t
 cf_figure_element_count(const cf_figure_t *fig)
 {
     return fig != NULL ? fig->count : 0;
+}
+
+void
+cf_figure_set_element_line(cf_figure_t *fig, size_t i, int line)
+{
+    if (fig != NULL && i < fig->count)
+        fig->els[i]->line = line > 0 ? line : 0;
+}
+
+void
+cf__figure_warn(cf_figure_t *fig, const char *fmt, ...)
+{
+    char line[512];
+    size_t n;
+    char *t;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(line, sizeof line, fmt, ap);
+    va_end(ap);
+    n = strlen(line);
+    /* once: a layout draws an element more than once */
+    for (const char *w = fig->warnings; w != NULL && *w != '\0';) {
+        const char *nl = strchr(w, '\n');
+        size_t len = nl != NULL ? (size_t)(nl - w) : strlen(w);
+        if (len == n && memcmp(w, line, n) == 0)
+            return;
+        w += len + (nl != NULL);
+    }
+    t = cf_realloc_array(fig->warnings, fig->warnings_len + n + 2, 1);
+    if (t == NULL)
+        return;
+    memcpy(t + fig->warnings_len, line, n);
+    t[fig->warnings_len + n] = '\n';
+    t[fig->warnings_len + n + 1] = '\0';
+    fig->warnings = t;
+    fig->warnings_len += n + 1;
 }
 
 cf_status_t

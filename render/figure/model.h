@@ -147,6 +147,8 @@ struct cf__element {
     cf_style_t style;             /* overrides */
     char *overlay;                /* the steps it is shown on (a beamer
                                      overlay specification), NULL: all */
+    int line;                     /* the script's line that added it (its
+                                     warnings name it), 0: unknown */
 };
 
 /* Where a box goes beside the drawing (render/layout/room.c): undecided (a new
@@ -260,6 +262,13 @@ cf_status_t cf__figure_create(const struct cf__fonts *fonts, double width,
                               double height, cf_unit_t unit,
                               cf_figure_t **out, cf_diag_t *diag);
 
+/* Append a line to the figure's warnings (cf_figure_warnings) unless it
+** is there already. */
+void cf__figure_warn(cf_figure_t *fig, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
 /* Record st in the figure (a generic message if the callee left none). */
 cf_status_t cf__fig_fail(cf_figure_t *fig, cf_status_t st, const char *what);
 /* "out of memory for <what>" in the figure. */

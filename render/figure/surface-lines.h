@@ -103,6 +103,13 @@ cf_status_t cf__space_point_visible(cf_figure_t *fig, const double *p,
 void cf__space_marker(const cf__layout_t *l, const cf_style_t *s,
                       const double *xy, bool seen, cf_hidden_t hidden,
                       cf__dl_t *dl);
+/* A polyline in space (closed: a polygon) owned by the caller, not in the
+** figure (a region's outline, el-region.c): drawn with its kind's draw in
+** a style given then, released with its kind's fini and cf_free; NULL
+** with the error in fig. */
+cf__element_t *cf__space_outline_new(cf_figure_t *fig, const double *pts,
+                                     size_t n, bool closed,
+                                     cf_hidden_t hidden, const char *what);
 cf_status_t cf__space_pieces(cf_figure_t *fig, cf__element_t *el,
                              size_t index, double tol,
                              cf__surface_piece_fn fn, void *closure);

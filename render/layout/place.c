@@ -249,26 +249,16 @@ common_pixels(const cf__raster_t *one, const unsigned char *b,
     return n;
 }
 
-/* Append a line to the figure's warnings. */
+/* Append a line to the figure's warnings (once). */
 static void
 warn(cf_figure_t *fig, const char *fmt, ...)
 {
     char line[512];
-    size_t n;
-    char *t;
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(line, sizeof line, fmt, ap);
     va_end(ap);
-    n = strlen(line);
-    t = cf_realloc_array(fig->warnings, fig->warnings_len + n + 2, 1);
-    if (t == NULL)
-        return;
-    memcpy(t + fig->warnings_len, line, n);
-    t[fig->warnings_len + n] = '\n';
-    t[fig->warnings_len + n + 1] = '\0';
-    fig->warnings = t;
-    fig->warnings_len += n + 1;
+    cf__figure_warn(fig, "%s", line);
 }
 
 /* The element of the page's ink most under label `lab` (drawn in r->one):

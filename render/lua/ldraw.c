@@ -98,8 +98,8 @@ typedef cf_status_t (*pts_fn)(cf_figure_t *, const double *, size_t,
                               const cf_style_t *);
 
 /* Points in R^3 of a figure with a view: split and hidden by its surfaces
-** (space: 0 polygon, 1 points, 2 polyline, 3 closed polyline); false for
-** any other points. */
+** (space: 0 polygon, 1 points, 2 polyline, 3 closed polyline, 4 hull, 5
+** fill); false for any other points. */
 static bool
 space_points(lua_State *L, cf_figure_t *fig, const char *fn, int space,
              const cf_style_t *st)
@@ -117,8 +117,19 @@ space_points(lua_State *L, cf_figure_t *fig, const char *fn, int space,
                                                           st)
                  : space == 1 ? cf_figure_add_space_points(fig, p3, n, hidden,
                                                            st)
+                 : space == 4 ? cf_figure_add_space_hull(fig, p3, n, hidden,
+                                                         st)
+                 : space == 5 ? cf_figure_add_space_fill(fig, p3, n, hidden,
+                                                         st)
                  : cf_figure_add_space_polyline(fig, p3, n, space == 3,
                                                 hidden, st), &diag);
+    if (space >= 4) {
+        /* a region's warnings name the script's line */
+        lua_Debug ar;
+        if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "l", &ar))
+            cf_figure_set_element_line(fig, cf_figure_element_count(fig) - 1,
+                                       ar.currentline);
+    }
     p2 = cf__lua_buffer(L, 2 * n);
     check(L, fn, cf_figure_project(fig, p3, n, 3, p2), NULL);
     cf__lua_label_space_items(L, fig, 3, "labels", p2, p3, hidden, n,
@@ -139,6 +150,11 @@ draw_points(lua_State *L, const char *fn, cf__lua_keys_t keys, pts_fn add,
     cf__lua_check_table(L, 3, keys);
     cf__lua_read_style(L, 3, fn, fig, &st);
     if (!space_points(L, fig, fn, space, &st)) {
+        if (space >= 4 && !cf_figure_get_view(fig, NULL)
+            && cf__lua_field(L, 3, "hidden") != LUA_TNIL)
+            luaL_error(L, "%s: hidden needs a region in R^3 in a figure "
+                       "with a view; give figure{view = {azimuth, "
+                       "elevation}, ...}", fn);
         p = cf__lua_check_points2d(L, fig, 2, fn, &n);
         cf_diag_clear(&diag);
         check(L, fn, add(fig, p, n, &st), &diag);
@@ -165,13 +181,13 @@ m_points(lua_State *L)
 static int
 m_hull(lua_State *L)
 {
-    return draw_points(L, "hull", CF__KEYS_HULL, cf_figure_add_hull, -1);
+    return draw_points(L, "hull", CF__KEYS_HULL, cf_figure_add_hull, 4);
 }
 
 static int
 m_fill(lua_State *L)
 {
-    return draw_points(L, "fill", CF__KEYS_FILL, cf_figure_add_fill, -1);
+    return draw_points(L, "fill", CF__KEYS_FILL, cf_figure_add_fill, 5);
 }
 
 static cf_status_t

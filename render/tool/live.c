@@ -11,10 +11,11 @@
 **                             differs from V, or V after 20 s (long poll)
 **
 ** Any other path is 403 without the token and 404 with it.  Every run
-** reads the script again and runs it in a fresh sandbox, in a child
-** process (live-child.c), with the limits of render (--max-memory,
-** --max-instructions, --timeout): a run past the time limit is killed and
-** its error shown in the page; one run at a time.  `curvefig live
+** reads the script again and runs it in a fresh sandbox, in a worker
+** process (live-child.c) that serves runs until one fails, with the
+** limits of render (--max-memory, --max-instructions, --timeout): a run
+** past the time limit is killed with its process and its error shown in
+** the page; one run at a time.  `curvefig live
 ** SCRIPT.lua --once [VALUES]` prints the JSON of one run (VALUES: the
 ** values' JSON, default {}), in every build, under the same limits.
 */

@@ -17,7 +17,10 @@ moves (and, in a 3D figure, turns of its view: "@view:NAME"), after 5
 warm-up requests, each sent as soon as the last reply came
 (a drag: the page sends the latest values when a run returns) or, with
 PAUSE_MS, that long after it (moves with pauses between them: the server
-uses the pause to fork and ready the next run's process).  Each is
+uses the pause to fork and ready the next run's process).  "cpu per
+run": the server's processor time (user + system, its worker processes
+included) per exact run, from a server that answered RUNS + 1 runs less
+one that answered one.  Each is
 measured twice: "http" the exact runs (a key press, a drag's release),
 "http draft" the runs a drag sends while the pointer is down ("@draft":
 1, docs/interactive.md, "Drafts").  Prints one JSON line per example and
@@ -110,6 +113,23 @@ def http_latency(url, params, views, runs, pause, draft):
     return ms
 
 
+def server_cpu(tool, script, params, views, runs):
+    """The server's CPU (user + system, with its reaped processes) per
+    exact run: a server that answers 1 + runs runs less one that answers
+    one, over runs."""
+    cpu = []
+    for n in (1, 1 + runs):
+        p, url = start(tool, script)
+        for k in range(n):
+            post(url, inputs(params, k, views))
+        p.terminate()
+        p.stdout.close()
+        _, _, ru = os.wait4(p.pid, 0)
+        p.returncode = 0
+        cpu.append(ru.ru_utime + ru.ru_stime)
+    return (cpu[1] - cpu[0]) / runs * 1000
+
+
 # In the page: dispatch a slider's input event, resolve when the page has
 # shown the reply (data-runs grows): the time between, in ms.
 BROWSER_STEP = r'''
@@ -197,6 +217,11 @@ def main():
             finally:
                 p.terminate()
                 p.wait(30)
+            cpu = server_cpu(tool, os.path.join(d, name + '.lua'), params,
+                             views, runs)
+            print(json.dumps({'example': name, 'measure': 'cpu per run',
+                              'runs': runs, 'ms': round(cpu, 2)}),
+                  flush=True)
     finally:
         if drv is not None:
             drv.get('about:blank')

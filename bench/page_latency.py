@@ -157,7 +157,7 @@ def drag(drv, kind, moves):
     drv.execute_script(ARM)
     mouse(drv, 'mouseReleased', x, y, 0)
     # (a page that drew no draft runs nothing on the release)
-    r = drv.execute_async_script(AWAIT, 1000)
+    r = drv.execute_async_script(AWAIT, 30000 if drafts else 1000)
     quiet(drv)
     return out, [r[0]] if r is not None and r[1] != '1' else [], drafts
 

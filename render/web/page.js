@@ -58,10 +58,14 @@
 //   root.dataset.draft     "1" while the drawing shown is a draft;
 //   root.dataset.runMs     the engine's time of the last run (ms), when
 //                          the engine tells it (the course page's does)
-// Drafts: while the pointer drags a slider, a point or a 3D figure, each
-// run is sent with "@draft": 1 and the script runs with looser tolerances
-// (render/lua/params.h; docs/interactive.md, "Drafts"); when the pointer
-// is released the exact run follows.  A key press runs exactly.
+//   root.dataset.exactMs   the time of the last exact run, from the request
+//                          to the reply (ms)
+// Drafts: while the pointer drags a slider, a point or a 3D figure whose
+// last exact run took more than DRAFT_AFTER_MS, each run is sent with
+// "@draft": 1 and the script runs with looser tolerances (render/lua/
+// params.h; docs/interactive.md, "Drafts"); when the pointer is released
+// the exact run follows.  A key press runs exactly, as does a drag of a
+// figure whose runs are quick (a draft would gain nothing there).
 function CurvefigPage(root, engine) {
   'use strict';
   var svgNS = 'http://www.w3.org/2000/svg';
@@ -73,6 +77,8 @@ function CurvefigPage(root, engine) {
   var inFlight = false, pending = false, runs = 0;
   var sliding = false;      // the pointer holds a slider
   var draftShown = false;   // the drawing shown (or under way) is a draft
+  var DRAFT_AFTER_MS = 20;  // exact runs quicker than this: no drafts
+  var exactMs = 0;          // the last exact run's time
   var drag = null;          // { param, index, fig, svg, circle }
   var lastFigures = null;   // of the last reply shown
 
@@ -414,7 +420,8 @@ function CurvefigPage(root, engine) {
 
   // A drag under way: the runs it asks for are drafts.
   function drafting() {
-    return sliding || drag !== null || (rotate && rotate.rotating());
+    return exactMs > DRAFT_AFTER_MS &&
+      (sliding || drag !== null || (rotate && rotate.rotating()));
   }
 
   // The drag ended: the exact run of the values, when a draft was asked
@@ -665,7 +672,12 @@ function CurvefigPage(root, engine) {
     draftShown = draft;
     var reload = reloadOnGood;
     reloadOnGood = false;
+    var t0 = performance.now();
     engine.run(sent).then(function (reply) {
+      if (!draft) {
+        exactMs = performance.now() - t0;
+        root.dataset.exactMs = exactMs.toFixed(1);
+      }
       if (reload && reply.error === null && engine.reload) {
         pending = false;
         engine.reload(withViews(values));

@@ -408,17 +408,10 @@ cf__live_run_child(const char *script, const cf__tool_limits *limits,
         got = take_answer(w, stop_fd, cf__live_clock() + limits->timeout,
                           &flag, &err, &json);
     w->runs++;
-    if (got == 0 && (flag & FLAG_RETIRE) == 0 && w != &own) {
-        /* the worker waits for the next run */
-        *bad_values = (flag & FLAG_BAD) != 0;
-        if (error_len > 0)
-            snprintf(error, error_len, "%s", err);
-        free(err);
-        return json;
-    }
-    /* a worker that retired or served --once ends by itself; any other
-    ** is killed */
-    status = end_worker(w, got != 0);
+    /* a worker that retired or served --once ends by itself; one whose
+    ** run went wrong is killed; else it waits for the next run */
+    if (got != 0 || (flag & FLAG_RETIRE) != 0 || w == &own)
+        status = end_worker(w, got != 0);
     if (got == 0) {
         *bad_values = (flag & FLAG_BAD) != 0;
         if (error_len > 0)

@@ -8,7 +8,8 @@
 //
 // CurvefigRotate(host) listens on host.figures and the window and
 // returns what page.js calls: markRotatable(box, fig) as a 3D figure is
-// drawn, viewsLua(), rotating() (a figure is being dragged round).  host gives:
+// drawn, viewsLua(), rotating() (a figure is being dragged round).  host
+// gives:
 //   figures        div#cf-figures
 //   el(tag, attrs, text)   an element
 //   views()        the turned views (page.js's object, changed in place)

@@ -8,8 +8,9 @@ For every shipped example (figures/interactive) at its defaults and at
 moved values (a slider, a point, a turned 3D view), `curvefig live
 --once` with the values and with the values plus "@draft": 1:
 
-- the draft's reply has the same parameters, values, figures, handles and
-  Lua as the exact one (only the drawing may differ);
+- the draft's reply has the same parameters, values, figures, handles,
+  places of the labels and Lua as the exact one (only the drawing may
+  differ);
 - the drawing of the draft is within the draft's stated tolerance of the
   exact drawing: every point of every path (outside the glyph
   definitions) of either lies within the bound of some path of the other
@@ -146,7 +147,6 @@ def same_but_drawing(exact, draft):
         j = json.loads(json.dumps(j))
         for f in j['figures']:
             f.pop('svg')
-            f.pop('labels')
         return j
     return strip(exact) == strip(draft)
 
@@ -158,7 +158,8 @@ def compare(tool, script, name, values, differs):
     check(exact['error'] is None and draft['error'] is None,
           '%s: both run' % what)
     check(same_but_drawing(exact, draft), '%s: the draft has the exact '
-          'run\'s parameters, values, figures, handles and Lua' % what)
+          'run\'s parameters, values, figures, handles, label places and '
+          'Lua' % what)
     text = open(script).read()
     offset, surface = 'offset(' in text, ':surface(' in text
     for fe, fd in zip(exact['figures'], draft['figures']):

@@ -12,6 +12,8 @@
 #include "ldraw.h"
 #include "lfigure.h"
 #include "llayout.h"
+#include "lparams.h"
+#include "params.h"
 #include "lschema.h"
 #include "lstyle.h"
 #include "lsurface-draw.h"
@@ -196,6 +198,11 @@ read_frame(lua_State *L, cf_figure_t *fig, double w, double h)
                                                                 "figure",
                                                                 false)), NULL);
     tol = cf__lua_opt_number(L, 1, "tolerance", "figure", 0.01, &given);
+    /* a draft of an interactive page (params.h): looser */
+    if (cf__params_draft(cf__lua_params(L))) {
+        tol *= CF__PARAMS_DRAFT_FACTOR;
+        given = true;
+    }
     if (given)
         check(L, "figure", cf_figure_set_tolerance(fig, tol), NULL);
 }

@@ -20,7 +20,9 @@
 #include "lbezier.h"
 #include "lbspline.h"
 #include "lcommon.h"
+#include "lparams.h"
 #include "lschema.h"
+#include "params.h"
 
 /* The highest degree offset by c:offset: the work of an offset grows
 ** steeply with the degree (a degree-32 curve takes seconds, degree 1024
@@ -33,18 +35,23 @@ read_options(lua_State *L, int idx, cf_offset_options_t *opt)
 {
     static const char *const methods[] = { "levien", "tiller-hanson", NULL };
     cf_offset_options_init(opt);
-    if (lua_isnoneornil(L, idx))
-        return;
-    cf__lua_check_table(L, idx, CF__KEYS_OFFSET);
-    if (cf__lua_field(L, idx, "tolerance") != LUA_TNIL)
-        opt->tolerance = cf__lua_check_finite(L, -1, "offset", "tolerance");
-    if (cf__lua_field(L, idx, "trim") != LUA_TNIL)
-        opt->trim = cf__lua_opt_bool_arg(L, -1, "offset", "trim", false);
-    if (cf__lua_field(L, idx, "method") != LUA_TNIL &&
-        cf__lua_opt_text(L, -1, "offset", "method", NULL) != NULL)
-        opt->method = (cf_offset_method_t)luaL_checkoption(L, -1, NULL,
-                                                           methods);
-    lua_pop(L, 3);
+    if (!lua_isnoneornil(L, idx)) {
+        cf__lua_check_table(L, idx, CF__KEYS_OFFSET);
+        if (cf__lua_field(L, idx, "tolerance") != LUA_TNIL)
+            opt->tolerance = cf__lua_check_finite(L, -1, "offset",
+                                                  "tolerance");
+        if (cf__lua_field(L, idx, "trim") != LUA_TNIL)
+            opt->trim = cf__lua_opt_bool_arg(L, -1, "offset", "trim",
+                                             false);
+        if (cf__lua_field(L, idx, "method") != LUA_TNIL &&
+            cf__lua_opt_text(L, -1, "offset", "method", NULL) != NULL)
+            opt->method = (cf_offset_method_t)luaL_checkoption(L, -1, NULL,
+                                                               methods);
+        lua_pop(L, 3);
+    }
+    /* a draft of an interactive page (params.h): looser */
+    if (cf__params_draft(cf__lua_params(L)))
+        opt->tolerance *= CF__PARAMS_DRAFT_FACTOR;
 }
 
 static void

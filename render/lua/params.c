@@ -475,3 +475,10 @@ cf__params_view(const cf__params_t *p, const char *figure, double az_el[2])
     az_el[1] = fmin(90.0, fmax(-90.0, g->v[1]));
     return true;
 }
+
+bool
+cf__params_draft(const cf__params_t *p)
+{
+    const given_t *g = p != NULL ? find_given(p, CF__PARAMS_DRAFT) : NULL;
+    return g != NULL && g->n == 1 && g->v[0] != 0;
+}

@@ -115,4 +115,18 @@ void cf__params_constrain(const cf__param_t *param, double *x, double *y);
 bool cf__params_view(const cf__params_t *p, const char *figure,
                      double az_el[2]);
 
+/* ---- drafts -------------------------------------------------------------- */
+
+/* While a slider, a point or a 3D figure is being dragged, a page asks
+** for a draft: the reserved value "@draft" = 1 (docs/interactive.md,
+** "Drafts").  A draft loosens the tolerances of what takes a run's time,
+** each by the factor CF__PARAMS_DRAFT_FACTOR: the figures' fitting
+** tolerance (which the hidden lines of surfaces derive theirs from) and
+** the tolerance of c:offset; nothing else changes.  When the drag stops
+** the page asks for the exact run; a static render never sees "@draft". */
+#define CF__PARAMS_DRAFT "@draft"
+#define CF__PARAMS_DRAFT_FACTOR 10.0
+/* True when the host asked for a draft. */
+bool cf__params_draft(const cf__params_t *p);
+
 #endif

@@ -1,14 +1,20 @@
 /*
-** One run of `curvefig live` in a child process (live.h): the run of
-** cf__live_run under the limits of render, in a process that the caller
-** kills once the time limit has passed (or when it is told to stop), so
-** that no script, and no loop in C that the instruction count cannot see,
-** holds the server or `--once`.  A thread could not be stopped safely; a
-** process can, and what it leaves behind (memory, the Lua state, half a
-** figure) goes with it.
+** The runs of `curvefig live` in a worker process (live.h): cf__live_run
+** under the limits of render, in a process that the caller kills once the
+** time limit has passed (or when it is told to stop), so that no script,
+** and no loop in C that the instruction count cannot see, holds the
+** server or `--once`.  A thread could not be stopped safely; a process
+** can, and what it leaves behind (memory, the Lua state, half a figure)
+** goes with it.  The worker serves runs until one of them goes wrong (or
+** it served many, or grew): a fresh process costs about three times a
+** run's own CPU (the pages it copies and faults in, its exit), so a run
+** in a worker that already ran one costs the run alone.
 **
-** The child writes to a pipe: one byte (the values were bad), the length
-** of the error (4 bytes) and the error, then the JSON until the end.
+** The protocol, on two pipes: the values go in as their length (4 bytes)
+** and the bytes; the end of the pipe: no more runs, exit.  The answer
+** comes out as a flag byte (1: the values were bad; 2: this worker
+** retires and exits after the answer), the length of the error (4 bytes),
+** the length of the JSON (4 bytes), the error and the JSON.
 */
 #define _GNU_SOURCE   /* close_range, where the C library has it */
 #include <errno.h>
@@ -31,6 +37,8 @@
 #include "runlimits.h"
 
 #define MAX_REPLY ((size_t)1 << 30)
+#define FLAG_BAD 1
+#define FLAG_RETIRE 2
 
 static int
 write_all(int fd, const void *data, size_t n)
@@ -64,22 +72,53 @@ read_all(int fd, void *data, size_t n)
     return 0;
 }
 
-/* The child: set up as a run's process, then wait on req for the values
-** (their length, 4 bytes, then the bytes; the end of req without them: the
-** server needs no more runs, exit), run, write the answer into fd and
-** _exit (no atexit handler of the parent's runs here).  A spare child
-** (forked ahead of need) is this, forked before the values exist. */
+/* The worker's resident memory in bytes (-1: unknown). */
+static long
+resident(void)
+{
+    long pages = -1, rss = -1;
+    FILE *f = fopen("/proc/self/statm", "r");
+    if (f == NULL)
+        return -1;
+    if (fscanf(f, "%ld %ld", &pages, &rss) != 2)
+        rss = -1;
+    fclose(f);
+    return rss < 0 ? -1 : rss * sysconf(_SC_PAGESIZE);
+}
+
+/* One run's values from req into *values (malloc'd, NUL-terminated): 0,
+** 1 at the end of req (no more runs), -1 on an error. */
+static int
+read_values(int req, char **values, uint32_t *vlen)
+{
+    ssize_t r;
+    *values = NULL;
+    do
+        r = read(req, vlen, 4);
+    while (r < 0 && errno == EINTR);
+    if (r == 0)
+        return 1;
+    if (r < 0 || (r < 4 && read_all(req, (char *)vlen + r, 4 - (size_t)r)
+                  != 0) || *vlen > CF__LIVE_MAX_VALUES)
+        return -1;
+    *values = malloc((size_t)*vlen + 1);
+    if (*values == NULL || read_all(req, *values, *vlen) != 0)
+        return -1;
+    (*values)[*vlen] = '\0';
+    return 0;
+}
+
+/* The worker: set up as a run's process, then serve runs -- wait on req
+** for the values, run, write the answer into fd -- until req ends (exit
+** 0) or a run makes it retire; _exit (no atexit handler of the parent's
+** runs here).  It is forked before the values exist. */
 _Noreturn static void
 child(int fd, int req, pid_t parent, const char *script,
       const cf__tool_limits *l)
 {
     sigset_t none;
     char error[1024];
-    bool bad = false;
-    char *json, *values;
-    uint32_t elen, vlen;
-    unsigned char flag;
-    long max;
+    long max, base = -1;
     /* the signals the server waits for are its own: here the defaults */
     sigemptyset(&none);
     sigprocmask(SIG_SETMASK, &none, NULL);
@@ -108,27 +147,44 @@ child(int fd, int req, pid_t parent, const char *script,
         for (long k = 5; k < (max > 0 && max < 65536 ? max : 65536); k++)
             close((int)k);
     }
-    if (read_all(req, &vlen, 4) != 0 || vlen > CF__LIVE_MAX_VALUES)
-        _exit(5);
-    values = malloc((size_t)vlen + 1);
-    if (values == NULL || read_all(req, values, vlen) != 0)
-        _exit(5);
-    values[vlen] = '\0';
-    close(req);
-    /* a second wall, should the parent be stopped: SIGALRM ends it */
-    alarm((unsigned)ceil(l->timeout) + 2);
-    error[0] = '\0';
-    json = cf__live_run(script, &l->script, values, vlen, &bad, error,
-                        sizeof error);
-    if (json == NULL)
-        _exit(3);
-    flag = bad;
-    elen = (uint32_t)strlen(error);
-    if (write_all(fd, &flag, 1) != 0 || write_all(fd, &elen, 4) != 0
-        || write_all(fd, error, elen) != 0
-        || write_all(fd, json, strlen(json)) != 0)
-        _exit(4);
-    _exit(0);
+    for (unsigned runs = 1;; runs++) {
+        bool bad = false;
+        char *json, *values;
+        uint32_t elen, jlen, vlen;
+        unsigned char flag;
+        long rss;
+        int got = read_values(req, &values, &vlen);
+        if (got != 0)
+            _exit(got > 0 ? 0 : 5);
+        /* a second wall, should the parent be stopped: SIGALRM ends it */
+        alarm((unsigned)ceil(l->timeout) + 2);
+        error[0] = '\0';
+        json = cf__live_run(script, &l->script, values, vlen, &bad, error,
+                            sizeof error);
+        alarm(0);
+        free(values);
+        if (json == NULL)
+            _exit(3);
+        rss = resident();
+        if (base < 0)
+            base = rss;
+        flag = (unsigned char)(bad ? FLAG_BAD : 0);
+        /* a run that failed may have left C memory behind (a longjmp
+        ** out of the drawing): a fresh process for the next */
+        if ((!bad && error[0] != '\0') || runs >= CF__LIVE_WORKER_RUNS
+            || rss < 0 || rss - base > CF__LIVE_WORKER_GROWTH)
+            flag |= FLAG_RETIRE;
+        elen = (uint32_t)strlen(error);
+        jlen = (uint32_t)strlen(json);
+        if (write_all(fd, &flag, 1) != 0 || write_all(fd, &elen, 4) != 0
+            || write_all(fd, &jlen, 4) != 0
+            || write_all(fd, error, elen) != 0
+            || write_all(fd, json, jlen) != 0)
+            _exit(4);
+        free(json);
+        if (flag & FLAG_RETIRE)
+            _exit(0);
+    }
 }
 
 double
@@ -139,55 +195,43 @@ cf__live_clock(void)
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
-/* Read fd to its end into *buf (malloc'd, NUL-terminated), until the
-** deadline or until stop_fd is readable: 0 at the end, 1 at the
-** deadline, 2 told to stop, -1 out of memory or too much. */
+/* Read n bytes of fd into buf, until the deadline or until stop_fd is
+** readable: 0 done, 1 at the deadline, 2 told to stop, -1 the end of fd
+** or an error. */
 static int
-read_reply(int fd, int stop_fd, double deadline, char **buf, size_t *len)
+read_until(int fd, int stop_fd, double deadline, void *buf, size_t n)
 {
-    size_t cap = 65536;
-    *len = 0;
-    *buf = malloc(cap);
-    if (*buf == NULL)
-        return -1;
-    for (;;) {
-        struct pollfd p[2] = { { fd, POLLIN, 0 }, { stop_fd, POLLIN, 0 } };
+    char *p = buf;
+    while (n > 0) {
+        struct pollfd q[2] = { { fd, POLLIN, 0 }, { stop_fd, POLLIN, 0 } };
         double left = deadline - cf__live_clock();
-        ssize_t n;
+        ssize_t got;
         int r;
         if (left <= 0)
             return 1;
-        r = poll(p, stop_fd >= 0 ? 2 : 1, (int)ceil(left * 1000));
+        r = poll(q, stop_fd >= 0 ? 2 : 1, (int)ceil(left * 1000));
         if (r < 0 && errno == EINTR)
             continue;
         if (r < 0)
             return -1;
-        if (stop_fd >= 0 && (p[1].revents & (POLLIN | POLLHUP)))
+        if (stop_fd >= 0 && (q[1].revents & (POLLIN | POLLHUP)))
             return 2;
-        if (r == 0 || !(p[0].revents & (POLLIN | POLLHUP | POLLERR)))
+        if (r == 0 || !(q[0].revents & (POLLIN | POLLHUP | POLLERR)))
             continue;
-        if (*len + 1 >= cap) {
-            char *more = cap >= MAX_REPLY ? NULL : realloc(*buf, 2 * cap);
-            if (more == NULL)
-                return -1;
-            *buf = more;
-            cap *= 2;
-        }
-        n = read(fd, *buf + *len, cap - *len - 1);
-        if (n < 0 && errno == EINTR)
+        got = read(fd, p, n);
+        if (got < 0 && errno == EINTR)
             continue;
-        if (n <= 0) {
-            (*buf)[*len] = '\0';
-            return n == 0 ? 0 : -1;
-        }
-        *len += (size_t)n;
+        if (got <= 0)
+            return -1;
+        p += got;
+        n -= (size_t)got;
     }
+    return 0;
 }
 
-/* Fork a run's process into sp (waiting for its values); 0, or -1 with
-** errno. */
+/* Fork a worker into w (waiting for its values); 0, or -1 with errno. */
 static int
-spawn(cf__live_spare *sp, const char *script, const cf__tool_limits *l)
+spawn(cf__live_worker *w, const char *script, const cf__tool_limits *l)
 {
     int reply[2], req[2];
     pid_t pid, parent = getpid();
@@ -218,105 +262,168 @@ spawn(cf__live_spare *sp, const char *script, const cf__tool_limits *l)
     }
     close(reply[1]);
     close(req[0]);
-    sp->pid = pid;
-    sp->reply = reply[0];
-    sp->req = req[1];
+    w->pid = pid;
+    w->reply = reply[0];
+    w->req = req[1];
+    w->runs = 0;
     return 0;
 }
 
 void
-cf__live_spare_init(cf__live_spare *sp)
+cf__live_worker_init(cf__live_worker *w)
 {
-    sp->pid = -1;
-    sp->reply = sp->req = -1;
+    w->pid = -1;
+    w->reply = w->req = -1;
+    w->runs = 0;
 }
 
 void
-cf__live_spare_fork(cf__live_spare *sp, const char *script,
-                    const cf__tool_limits *limits)
+cf__live_worker_fork(cf__live_worker *w, const char *script,
+                     const cf__tool_limits *limits)
 {
-    if (sp->pid <= 0 && spawn(sp, script, limits) != 0)
-        cf__live_spare_init(sp);
+    if (w->pid <= 0 && spawn(w, script, limits) != 0)
+        cf__live_worker_init(w);
+}
+
+/* Kill the worker (SIGKILL when kill, else it is exiting by itself: the
+** end of its values, or it retired), reap it: its status. */
+static int
+end_worker(cf__live_worker *w, bool kill_it)
+{
+    int status = 0;
+    if (w->pid <= 0)
+        return 0;
+    close(w->req);
+    close(w->reply);
+    if (kill_it)
+        kill(w->pid, SIGKILL);
+    while (waitpid(w->pid, &status, 0) < 0 && errno == EINTR)
+        ;
+    cf__live_worker_init(w);
+    return status;
 }
 
 void
-cf__live_spare_drop(cf__live_spare *sp)
+cf__live_worker_drop(cf__live_worker *w)
+{
+    end_worker(w, true);
+}
+
+/* The worker alive and waiting: w's, or a fresh one; -1 with msg. */
+static int
+ready(cf__live_worker *w, const char *script, const cf__tool_limits *l,
+      char *msg, size_t size)
 {
     int status;
-    if (sp->pid <= 0)
-        return;
-    kill(sp->pid, SIGKILL);
-    while (waitpid(sp->pid, &status, 0) < 0 && errno == EINTR)
-        ;
-    close(sp->req);
-    close(sp->reply);
-    cf__live_spare_init(sp);
+    if (w->pid > 0 && waitpid(w->pid, &status, WNOHANG) != 0) {
+        /* gone while it waited (reaped now) */
+        close(w->req);
+        close(w->reply);
+        cf__live_worker_init(w);
+    }
+    if (w->pid > 0)
+        return 0;
+    if (spawn(w, script, l) == 0)
+        return 0;
+    snprintf(msg, size, "cannot start a run of %s: %s", script,
+             strerror(errno));
+    cf__live_worker_init(w);
+    return -1;
+}
+
+/* Send the values to w: 0, or -1 when it is gone (EPIPE, not SIGPIPE). */
+static int
+send_values(cf__live_worker *w, const char *values, uint32_t len)
+{
+    void (*old_pipe)(int) = signal(SIGPIPE, SIG_IGN);
+    int r = write_all(w->req, &len, 4) == 0
+            && write_all(w->req, values, len) == 0 ? 0 : -1;
+    signal(SIGPIPE, old_pipe);
+    return r;
+}
+
+/* The answer of the run under way in w: 0 and *json, *error (malloc'd)
+** and the flag; else the code of read_until. */
+static int
+take_answer(cf__live_worker *w, int stop_fd, double deadline,
+            unsigned char *flag, char **error, char **json)
+{
+    unsigned char head[9];
+    uint32_t elen, jlen;
+    int got = read_until(w->reply, stop_fd, deadline, head, 9);
+    *error = *json = NULL;
+    if (got != 0)
+        return got;
+    *flag = head[0];
+    memcpy(&elen, head + 1, 4);
+    memcpy(&jlen, head + 5, 4);
+    if (elen > 65536 || jlen > MAX_REPLY)
+        return -1;
+    *error = malloc((size_t)elen + 1);
+    *json = malloc((size_t)jlen + 1);
+    if (*error == NULL || *json == NULL)
+        return -3;
+    got = read_until(w->reply, stop_fd, deadline, *error, elen);
+    if (got == 0)
+        got = read_until(w->reply, stop_fd, deadline, *json, jlen);
+    if (got == 0) {
+        (*error)[elen] = '\0';
+        (*json)[jlen] = '\0';
+    }
+    return got;
 }
 
 char *
 cf__live_run_child(const char *script, const cf__tool_limits *limits,
                    const char *values, size_t len, int stop_fd,
-                   cf__live_spare *spare, bool *bad_values, char *error,
+                   cf__live_worker *w, bool *bad_values, char *error,
                    size_t error_len)
 {
     int status = 0, got = -1;
-    char *reply = NULL, msg[1024];
-    size_t n = 0;
-    uint32_t vlen = (uint32_t)len;
-    cf__live_spare run;
-    void (*old_pipe)(int);
+    char msg[1024], *json = NULL, *err = NULL;
+    unsigned char flag = 0;
+    cf__live_worker own;
     *bad_values = false;
     if (error_len > 0)
         error[0] = '\0';
     if (len > CF__LIVE_MAX_VALUES)
         return cf__live_error_json(script, "the values are larger than "
                                    "1 MiB", error, error_len);
-    /* the spare when there is one (and it still lives), else a fresh
-    ** process */
-    if (spare != NULL && spare->pid > 0
-        && waitpid(spare->pid, &status, WNOHANG) == 0) {
-        run = *spare;
-    } else {
-        if (spare != NULL && spare->pid > 0) {
-            close(spare->req);
-            close(spare->reply);
-        }
-        if (spawn(&run, script, limits) != 0) {
-            snprintf(msg, sizeof msg, "cannot start a run of %s: %s",
-                     script, strerror(errno));
-            if (spare != NULL)
-                cf__live_spare_init(spare);
+    if (w == NULL) {
+        cf__live_worker_init(&own);
+        w = &own;
+    }
+    if (ready(w, script, limits, msg, sizeof msg) != 0)
+        return cf__live_error_json(script, msg, error, error_len);
+    /* a worker that died while it waited (between the check and the
+    ** write): once more with a fresh one */
+    if (send_values(w, values, (uint32_t)len) != 0) {
+        end_worker(w, true);
+        if (ready(w, script, limits, msg, sizeof msg) != 0)
             return cf__live_error_json(script, msg, error, error_len);
-        }
+        if (send_values(w, values, (uint32_t)len) != 0)
+            got = -2;
     }
-    if (spare != NULL)
-        cf__live_spare_init(spare);
-    /* a run that died before reading its values: EPIPE, not SIGPIPE */
-    old_pipe = signal(SIGPIPE, SIG_IGN);
-    if (write_all(run.req, &vlen, 4) == 0 && write_all(run.req, values, len)
-        == 0)
-        got = read_reply(run.reply, stop_fd,
-                         cf__live_clock() + limits->timeout, &reply, &n);
-    signal(SIGPIPE, old_pipe);
-    close(run.req);
-    close(run.reply);
-    if (got != 0)
-        kill(run.pid, SIGKILL);
-    while (waitpid(run.pid, &status, 0) < 0 && errno == EINTR)
-        ;
-    if (got == 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0 && n >= 5) {
-        uint32_t elen;
-        memcpy(&elen, reply + 1, 4);
-        if (elen <= n - 5) {
-            *bad_values = reply[0] != 0;
-            if (error_len > 0)
-                snprintf(error, error_len, "%.*s", (int)elen, reply + 5);
-            memmove(reply, reply + 5 + elen, n - 5 - elen + 1);
-            return reply;
-        }
+    if (got != -2)
+        got = take_answer(w, stop_fd, cf__live_clock() + limits->timeout,
+                          &flag, &err, &json);
+    w->runs++;
+    /* a worker that retired or served --once ends by itself; one whose
+    ** run went wrong is killed; else it waits for the next run */
+    if (got != 0 || (flag & FLAG_RETIRE) != 0 || w == &own)
+        status = end_worker(w, got != 0);
+    if (got == 0) {
+        *bad_values = (flag & FLAG_BAD) != 0;
+        if (error_len > 0)
+            snprintf(error, error_len, "%s", err);
+        free(err);
+        return json;
     }
-    free(reply);
-    if (got == 1)
+    free(err);
+    free(json);
+    if (got == -3)
+        snprintf(msg, sizeof msg, "%s: out of memory", script);
+    else if (got == 1)
         cf__tool_timeout_message(msg, sizeof msg, script, limits->timeout);
     else if (got == 2)
         snprintf(msg, sizeof msg, "%s: the run was stopped (the server is "

@@ -5,7 +5,7 @@
 ** connection (an idle connection costs a descriptor, not a thread, and is
 ** closed after HEADER_SECONDS without a complete request); a run and a
 ** long poll suspend their connection, and a thread of ours resumes it
-** with the answer: the runner, which runs the script in a child process
+** with the answer: the runner, which runs the script in a worker process
 ** (live-child.c) one run at a time and kills it at the time limit, and
 ** the watcher, which ends the long polls.
 */
@@ -237,18 +237,18 @@ finish(request_t *rq, unsigned status, const char *type, char *answer)
     MHD_resume_connection(rq->c);
 }
 
-/* The runner: one run at a time, each in a child process that is killed
-** at the time limit or when the server stops. */
+/* The runner: one run at a time, in the worker process, which is killed
+** (and replaced) at the time limit or when the server stops. */
 static void *
 runner(void *arg)
 {
     server_t *sv = arg;
-    cf__live_spare spare;
+    cf__live_worker worker;
     cf__live_warm();
-    /* the next run's process, forked while the server waits: a run then
-    ** costs the run, not the fork and the copying of pages after it */
-    cf__live_spare_init(&spare);
-    cf__live_spare_fork(&spare, sv->script, sv->limits);
+    /* the worker, forked while the server waits: a run then costs the
+    ** run, not the fork and the copying of pages after it */
+    cf__live_worker_init(&worker);
+    cf__live_worker_fork(&worker, sv->script, sv->limits);
     pthread_mutex_lock(&sv->lock);
     for (;;) {
         request_t *rq;
@@ -271,19 +271,20 @@ runner(void *arg)
         json = cf__live_run_child(sv->script, sv->limits,
                                   rq->body != NULL ? rq->body : "{}",
                                   rq->body != NULL ? rq->len : 2,
-                                  sv->stop_pipe[0], &spare, &bad, NULL,
+                                  sv->stop_pipe[0], &worker, &bad, NULL,
                                   0);
-        /* the next one before the answer: once the connection resumes,
-        ** the server's polling thread allocates at once, and a fork in
-        ** the middle of that leaves a lock held in the child (under ASan,
-        ** whose allocator has no fork handler, the spare hung) */
-        cf__live_spare_fork(&spare, sv->script, sv->limits);
+        /* a worker that was replaced: the next one before the answer, as
+        ** once the connection resumes the server's polling thread
+        ** allocates at once, and a fork in the middle of that leaves a
+        ** lock held in the child (under ASan, whose allocator has no fork
+        ** handler, the waiting process hung) */
+        cf__live_worker_fork(&worker, sv->script, sv->limits);
         pthread_mutex_lock(&sv->lock);
         finish(rq, bad ? MHD_HTTP_BAD_REQUEST : MHD_HTTP_OK,
                "application/json", json);
     }
     pthread_mutex_unlock(&sv->lock);
-    cf__live_spare_drop(&spare);
+    cf__live_worker_drop(&worker);
     return NULL;
 }
 

@@ -11,10 +11,11 @@
 **                             differs from V, or V after 20 s (long poll)
 **
 ** Any other path is 403 without the token and 404 with it.  Every run
-** reads the script again and runs it in a fresh sandbox, in a child
-** process (live-child.c), with the limits of render (--max-memory,
-** --max-instructions, --timeout): a run past the time limit is killed and
-** its error shown in the page; one run at a time.  `curvefig live
+** reads the script again and runs it in a fresh sandbox, in a worker
+** process (live-child.c) that serves runs until one fails, with the
+** limits of render (--max-memory, --max-instructions, --timeout): a run
+** past the time limit is killed with its process and its error shown in
+** the page; one run at a time.  `curvefig live
 ** SCRIPT.lua --once [VALUES]` prints the JSON of one run (VALUES: the
 ** values' JSON, default {}), in every build, under the same limits.
 */
@@ -136,9 +137,11 @@ cf__tool_live_help(void)
         "address to open, which carries a random token: a request without\n"
         "it is refused (403), so no other page or user can drive the server.\n"
         "Moving a slider or dragging a point runs the script again in a\n"
-        "fresh sandbox, in a process of its own under the limits of render,\n"
-        "and redraws; a script error is shown in the page, as is a run\n"
-        "that exceeds a limit (it is stopped; the server runs on); saving\n"
+        "fresh sandbox, in a worker process under the limits of render,\n"
+        "and redraws (while the pointer drags a slow figure, as a draft of\n"
+        "looser tolerances; released, exactly); a script error is shown in\n"
+        "the page, as is a run that exceeds a limit (it is stopped with its\n"
+        "process, which is replaced; the server runs on); saving\n"
         "the script reloads the page.  The page shows the current values\n"
         "as Lua, to paste into the script.  docs/interactive.md, \"Security\",\n"
         "says what the token protects and what a script can do.\n"

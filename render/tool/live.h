@@ -31,31 +31,40 @@ char *cf__live_error_json(const char *script, const char *msg, char *error,
 /* The values a run may be given, in bytes (the server answers 413 above). */
 #define CF__LIVE_MAX_VALUES ((size_t)1 << 20)
 
-/* A run's process forked ahead of need (live-child.c): forked from a
-** thread where the Lua language, the fonts and the caches are ready, it
-** touches what a run touches and waits for its values; it takes one run
-** and exits.  pid -1: none. */
-typedef struct cf__live_spare {
+/* The process that runs the script (live-child.c): forked ahead of need
+** from a thread where the Lua language, the fonts and the caches are
+** ready, it waits for values and serves one run after another, each in a
+** fresh sandbox (a new Lua state: nothing a run leaves in Lua reaches the
+** next).  It is replaced -- killed and reaped, a new one forked -- when a
+** run passes the time limit, is stopped, crashes or fails (a script
+** error, a limit of the sandbox), after CF__LIVE_WORKER_RUNS runs, and
+** when its memory grew by more than CF__LIVE_WORKER_GROWTH bytes since its
+** first run.  pid -1: none. */
+typedef struct cf__live_worker {
     pid_t pid;
-    int req, reply;   /* the values go in, the answer comes out */
-} cf__live_spare;
-void cf__live_spare_init(cf__live_spare *sp);
-/* Fork the spare when there is none (a failed fork leaves none: the next
+    int req, reply;   /* the values go in, the answers come out */
+    unsigned runs;    /* the runs it served */
+} cf__live_worker;
+#define CF__LIVE_WORKER_RUNS 1000
+#define CF__LIVE_WORKER_GROWTH ((long)64 << 20)
+void cf__live_worker_init(cf__live_worker *w);
+/* Fork the worker when there is none (a failed fork leaves none: the next
 ** run forks its own). */
-void cf__live_spare_fork(cf__live_spare *sp, const char *script,
-                         const cf__tool_limits *limits);
-/* Kill the spare and reap it. */
-void cf__live_spare_drop(cf__live_spare *sp);
+void cf__live_worker_fork(cf__live_worker *w, const char *script,
+                          const cf__tool_limits *limits);
+/* Kill the worker and reap it. */
+void cf__live_worker_drop(cf__live_worker *w);
 
-/* cf__live_run in a child process (live-child.c) under limits: the spare
-** (which then is used up: fork the next one) or, when spare is NULL or
-** has none, a process forked now; killed after limits->timeout seconds
-** from the moment it is given the values (the JSON then says so), or as
-** soon as stop_fd (-1: none) becomes readable; a run that crashes is an
-** error in the JSON too.  NULL only when memory ran out. */
+/* cf__live_run in the worker w (live-child.c) under limits: w's process
+** when it has one, else one forked now (w NULL: forked for this run and
+** ended after it); killed after limits->timeout seconds from the moment
+** it is given the values (the JSON then says so), or as soon as stop_fd
+** (-1: none) becomes readable; a run that crashes is an error in the JSON
+** too.  A worker that must be replaced (above) is gone from w afterwards:
+** fork the next one.  NULL only when memory ran out. */
 char *cf__live_run_child(const char *script, const cf__tool_limits *limits,
                          const char *values, size_t len, int stop_fd,
-                         cf__live_spare *spare, bool *bad_values,
+                         cf__live_worker *w, bool *bad_values,
                          char *error, size_t error_len);
 /* Run a small figure of our own (a curve, a label in the default fonts)
 ** in this thread, so that the processes it forks for runs start with the

@@ -10,7 +10,7 @@
 // figure: the figure this page shows, timeout: the time limit of a run in
 // seconds, memory: MiB, instructions: the sandbox's limits (0: its
 // defaults) }.  run(values) answers as the live server does, with the
-// figures but this one left out.
+// figures but this one left out, and the run's time in the module (ms).
 function CurvefigWasmEngine(data) {
   'use strict';
   var bin = atob(data.wasm), bytes = new Uint8Array(bin.length);
@@ -76,6 +76,7 @@ function CurvefigWasmEngine(data) {
         }).then(function (m) {
           clearTimeout(timer);
           var reply = JSON.parse(m.json);
+          reply.ms = m.ms;
           if (reply.figures)
             reply.figures = reply.figures.filter(function (f) {
               return f.name === data.figure;

@@ -8,7 +8,8 @@
 //
 // CurvefigRotate(host) listens on host.figures and the window and
 // returns what page.js calls: markRotatable(box, fig) as a 3D figure is
-// drawn, viewsLua().  host gives:
+// drawn, viewsLua(), rotating() (a figure is being dragged round).  host
+// gives:
 //   figures        div#cf-figures
 //   el(tag, attrs, text)   an element
 //   views()        the turned views (page.js's object, changed in place)
@@ -162,5 +163,6 @@ function CurvefigRotate(host) {
     }).join('');
   }
 
-  return { markRotatable: markRotatable, viewsLua: viewsLua };
+  return { markRotatable: markRotatable, viewsLua: viewsLua,
+           rotating: function () { return rot !== null; } };
 }

@@ -54,7 +54,18 @@
 //   pre#cf-error           the script's error (hidden when there is none)
 //   pre#cf-lua             the values as Lua, button#cf-copy, button#cf-reset
 //   root.dataset.runs      the number of replies shown so far;
-//   root.dataset.busy      "1" while a run is under way
+//   root.dataset.busy      "1" while a run is under way;
+//   root.dataset.draft     "1" while the drawing shown is a draft;
+//   root.dataset.runMs     the engine's time of the last run (ms), when
+//                          the engine tells it (the course page's does)
+//   root.dataset.exactMs   the time of the last exact run, from the request
+//                          to the reply (ms)
+// Drafts: while the pointer drags a slider, a point or a 3D figure whose
+// last exact run took more than DRAFT_AFTER_MS, each run is sent with
+// "@draft": 1 and the script runs with looser tolerances (render/lua/
+// params.h; docs/interactive.md, "Drafts"); when the pointer is released
+// the exact run follows.  A key press runs exactly, as does a drag of a
+// figure whose runs are quick (a draft would gain nothing there).
 function CurvefigPage(root, engine) {
   'use strict';
   var svgNS = 'http://www.w3.org/2000/svg';
@@ -64,6 +75,10 @@ function CurvefigPage(root, engine) {
   var params = [];          // the declarations of the last good reply
   var signature = null;     // of the declarations, to rebuild on a change
   var inFlight = false, pending = false, runs = 0;
+  var sliding = false;      // the pointer holds a slider
+  var draftShown = false;   // the drawing shown (or under way) is a draft
+  var DRAFT_AFTER_MS = 20;  // exact runs quicker than this: no drafts
+  var exactMs = 0;          // the last exact run's time
   var drag = null;          // { param, index, fig, svg, circle }
   var lastFigures = null;   // of the last reply shown
 
@@ -284,6 +299,9 @@ function CurvefigPage(root, engine) {
           request();
         });
         input.addEventListener('change', release);
+        input.addEventListener('pointerdown', function () {
+          sliding = true;
+        });
         row.appendChild(lab);
         row.appendChild(input);
         row.appendChild(out);
@@ -389,11 +407,27 @@ function CurvefigPage(root, engine) {
     });
   }
 
-  // The move ended: the figures take their own layout again.
+  // The move ended: the figures take their own layout again (and a
+  // draft its exact run).
   function release() {
+    exact();
     if (!held) return;
     held = null;
     if (!inFlight && !drag && lastFigures) showFigures(lastFigures);
+  }
+
+  // ---- drafts ----------------------------------------------------------
+
+  // A drag under way: the runs it asks for are drafts.
+  function drafting() {
+    return exactMs > DRAFT_AFTER_MS &&
+      (sliding || drag !== null || (rotate && rotate.rotating()));
+  }
+
+  // The drag ended: the exact run of the values, when a draft was asked
+  // for since the last exact one.
+  function exact() {
+    if (draftShown && !drafting()) request();
   }
 
   // The affine map a o b^-1 (maps as [a b c d e f]: x' = a x + c y + e).
@@ -521,11 +555,16 @@ function CurvefigPage(root, engine) {
   // Released: the handles go where the last reply puts them (the map may
   // have moved with the margins while the point was dragged).
   function pointerUp() {
+    if (sliding) {
+      sliding = false;
+      exact();
+    }
     if (!drag) return;
     drag.circle.classList.remove('cf-dragging');
     drag = null;
     held = null;
     if (!inFlight && lastFigures) showFigures(lastFigures);
+    exact();
   }
   window.addEventListener('pointermove', pointerMove);
   window.addEventListener('pointerup', pointerUp);
@@ -551,7 +590,7 @@ function CurvefigPage(root, engine) {
 
   // ---- runs ------------------------------------------------------------
 
-  function show(reply) {
+  function show(reply, draft) {
     runs++;
     var sig = JSON.stringify(reply.params.map(function (p) {
       return [p.kind, p.name, p.label, p.min, p.max, p.step, p.default,
@@ -587,6 +626,9 @@ function CurvefigPage(root, engine) {
       else updateFigures(reply.figures);
       lua.textContent = reply.lua + rotate.viewsLua();
     }
+    root.dataset.draft = draft ? '1' : '0';
+    if (typeof reply.ms === 'number')
+      root.dataset.runMs = reply.ms.toFixed(2);
     root.dataset.runs = String(runs);
   }
 
@@ -625,15 +667,23 @@ function CurvefigPage(root, engine) {
     pending = false;
     root.dataset.busy = '1';
     var sent = withViews(values);
+    var draft = drafting();
+    if (draft) sent['@draft'] = 1;
+    draftShown = draft;
     var reload = reloadOnGood;
     reloadOnGood = false;
+    var t0 = performance.now();
     engine.run(sent).then(function (reply) {
+      if (!draft) {
+        exactMs = performance.now() - t0;
+        root.dataset.exactMs = exactMs.toFixed(1);
+      }
       if (reload && reply.error === null && engine.reload) {
         pending = false;
         engine.reload(withViews(values));
         return;
       }
-      show(reply);
+      show(reply, draft);
     }, function (err) {
       error.textContent = 'no answer: ' + err;
       error.hidden = false;

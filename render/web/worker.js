@@ -5,8 +5,8 @@
 //   page -> worker  { id, init: { module, glyphs, script, name,
 //                     memory, instructions } }   then { id, values }
 //   worker -> page  { id, ok: true } or { id, error } for the init;
-//                   { id, started: true }, then { id, json } or
-//                   { id, error } for a run
+//                   { id, started: true }, then { id, json, ms } (ms: the
+//                   run's time in the module) or { id, error } for a run
 (function () {
   'use strict';
   var w = null, page = null;
@@ -40,12 +40,15 @@
     try {
       var code = put(page.script), name = put(page.name);
       var vals = put(JSON.stringify(values || {}));
+      var t0 = performance.now();
       var st = w.exports.cf_wasm_run(code.p, name.p, vals.p,
                                      page.memory || 0,
                                      page.instructions || 0);
+      var ms = performance.now() - t0;
       [code, name, vals].forEach(function (x) { w.exports.free(x.p); });
       if (st !== 0) throw new Error('curvefig: out of memory in the page');
-      postMessage({ id: id, json: w.string(w.exports.cf_wasm_json()) });
+      postMessage({ id: id, json: w.string(w.exports.cf_wasm_json()),
+                   ms: ms });
     } catch (e) {
       postMessage({ id: id, error: String(e && e.message || e) });
     }

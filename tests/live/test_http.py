@@ -21,9 +21,13 @@ killed at --timeout with its error in the JSON while the server answers
 everything else, and the next run works; SIGTERM stops the server within
 two seconds while a run spins, and the run's process is gone; the script
 replaced by a directory or a FIFO is an error in the JSON, not an empty
-run or a server blocked for ever.  A run's process is forked ahead of need
-(before the first request and after each answer), runs the script as it
-is when the run starts, and goes with the server on SIGTERM.
+run or a server blocked for ever.  The runs' worker process is forked
+ahead of need (before the first request, and after a run that ended
+it), runs the script as it is when the run starts, serves the next runs
+each in a fresh sandbox (a global, the string table and its metatable
+changed by one run are as new in the next), is replaced after a script
+error or a run past --max-memory (or --timeout, which kills it), and goes
+with the server on SIGTERM.
 """
 import json
 import os
@@ -152,6 +156,7 @@ def test_spinning_run(tool, tmp, good):
                                 '--max-instructions', '1e15')
     try:
         done = {}
+        before = wait_children(p.pid, 1)
 
         def spin():
             t = time.time()
@@ -175,6 +180,10 @@ def test_spinning_run(tool, tmp, good):
               j['figures'] == [] and done.get('took', 99) < 4,
               'the spinning run is stopped at --timeout 2 in %.1f s: %r'
               % (done.get('took', -1), msg))
+        after = wait_children(p.pid, 1)
+        check(len(before) == 1 and len(after) == 1 and after != before and
+              not alive(before[0]), 'the spinning run\'s worker was killed '
+              'and a new one waits (%s, then %s)' % (before, after))
         st, _, body = answer(url + 'run', data=b'{"spin": 0}')
         check(st == 200 and json.loads(body).get('error', 1) is None,
               'the next run works')
@@ -250,33 +259,85 @@ def alive(pid):
         return False
 
 
-def test_spare_runner(tool, tmp, good):
-    """The run's process is forked ahead of need: one waits before the
-    first request, takes one run (reading the script as it is then, not as
-    it was when it was forked) and exits; the next one is forked after the
-    answer; SIGTERM takes the waiting one with the server."""
-    script = os.path.join(tmp, 'spare.lua')
+# Appended to a good script: it fails when a run before it in the same
+# process left a global, a field of the string table or the string
+# metatable's __index behind, and leaves all three.
+LEAK = """
+assert(rawget(_G, "leaked_global") == nil, "a global of the run before")
+assert(rawget(string, "leaked") == nil,
+       "the string table of the run before")
+assert(rawget(getmetatable(""), "leaked_too") == nil,
+       "the string metatable of the run before")
+rawset(_G, "leaked_global", true)
+rawset(string, "leaked", true)
+rawset(getmetatable(""), "leaked_too", true)
+"""
+
+
+def run_ok(url, values=b'{}'):
+    st, _, body = answer(url + 'run', data=values)
+    j = json.loads(body) if st == 200 else {}
+    return st == 200 and j.get('error', 1) is None, j
+
+
+def test_worker(tool, tmp, good):
+    """The runs' process is forked ahead of need: one waits before the
+    first request and runs the script as it is then (not as it was when
+    it was forked); it serves the next runs too, each in a fresh sandbox
+    (what a run leaves in Lua does not reach the next); a run that fails
+    (a script error, a limit) ends it and a new one serves the next run;
+    SIGTERM takes the waiting one with the server."""
+    script = os.path.join(tmp, 'worker.lua')
     with open(script, 'w') as f:
         f.write(good)
-    p, url, port, token = start(tool, script)
+    p, url, port, token = start(tool, script, '--max-memory', '64')
     try:
         kids = wait_children(p.pid, 1)
-        check(len(kids) == 1, 'a run\'s process waits before the first '
-              'request (%s)' % kids)
+        check(len(kids) == 1, 'a worker waits before the first request '
+              '(%s)' % kids)
         # saved after that process was forked: the run reads it anew
         with open(script, 'w') as f:
-            f.write(good.replace('name = "decasteljau"', 'name = "saved"'))
-        st, _, body = answer(url + 'run', data=b'{}')
-        names = [g['name'] for g in json.loads(body).get('figures', [])]
-        check(st == 200 and names == ['saved'], 'the waiting process runs '
-              'the script as saved since it was forked (%s)' % names)
+            f.write(good.replace('name = "decasteljau"', 'name = "saved"')
+                    + LEAK)
+        ok, j = run_ok(url)
+        names = [g['name'] for g in j.get('figures', [])]
+        check(ok and names == ['saved'], 'the waiting process runs the '
+              'script as saved since it was forked (%s)' % names)
+        results = [run_ok(url, b'{"t": %g}' % (0.1 * k)) for k in range(4)]
         later = wait_children(p.pid, 1)
-        check(len(later) == 1 and kids and later[0] != kids[0] and
-              not alive(kids[0]), 'it took one run and exited; the next '
-              'one waits (%s, then %s)' % (kids, later))
-        st, _, body = answer(url + 'run', data=b'{"t": 0.5}')
-        check(st == 200 and json.loads(body).get('error', 1) is None,
-              'the next run works')
+        check(all(r[0] for r in results),
+              'four more runs in the same process: none sees the global, '
+              'the string table or its metatable the run before left (%s)'
+              % [(r[1].get('error') or {}).get('message') for r in results])
+        check(later == kids and alive(kids[0]), 'the same worker served '
+              'them all (%s, then %s)' % (kids, later))
+        # a script error ends the worker; the next run has a new one
+        with open(script, 'w') as f:
+            f.write(good + '\nerror("on purpose")\n')
+        ok, j = run_ok(url)
+        msg = (j.get('error') or {}).get('message', '')
+        check('on purpose' in msg, 'the script error comes back (%r)' % msg)
+        after_error = wait_children(p.pid, 1)
+        check(len(after_error) == 1 and after_error != kids and
+              not alive(kids[0]), 'a run that failed ended its worker; a '
+              'new one waits (%s, then %s)' % (kids, after_error))
+        # a run past --max-memory: the same
+        with open(script, 'w') as f:
+            f.write('local t = {} for i = 1, 1e8 do t[i] = {i} end\n')
+        ok, j = run_ok(url)
+        msg = (j.get('error') or {}).get('message', '')
+        check('memory' in msg, 'a run past --max-memory 64 is an error '
+              '(%r)' % msg)
+        after_memory = wait_children(p.pid, 1)
+        check(len(after_memory) == 1 and after_memory != after_error,
+              'it ended its worker too (%s, then %s)'
+              % (after_error, after_memory))
+        with open(script, 'w') as f:
+            f.write(good + LEAK)
+        ok, j = run_ok(url, b'{"t": 0.5}')
+        ok2, j2 = run_ok(url, b'{"t": 0.25}')
+        check(ok and ok2 and wait_children(p.pid, 1) == after_memory,
+              'the runs after it work, in the new worker')
         kids = wait_children(p.pid, 1)
         t = time.time()
         p.terminate()
@@ -284,7 +345,7 @@ def test_spare_runner(tool, tmp, good):
         while kids and alive(kids[0]) and time.time() - t < 2:
             time.sleep(0.05)
         check(p.returncode == 0 and kids and not alive(kids[0]),
-              'SIGTERM: the server exits and its waiting process is gone '
+              'SIGTERM: the server exits and its waiting worker is gone '
               '(%.2f s)' % (time.time() - t))
     finally:
         if p.poll() is None:
@@ -476,7 +537,7 @@ def main():
     try:
         test_spinning_run(tool, tmp, good)
         test_replaced_script(tool, tmp, good)
-        test_spare_runner(tool, tmp, good)
+        test_worker(tool, tmp, good)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
     if failures:

@@ -10,6 +10,11 @@ WebAssembly module):
 
 - at load the figure shows the script's view (data-view [-55, 28]) and
   its drawing is `curvefig render`'s (the same paths, live);
+- while the pointer holds the background and has moved, the drawing is a
+  draft (data-draft "1"; when an exact run takes over 20 ms, as it does
+  here, else exact); released where it was pressed, the exact
+  drawing of the script's view follows (data-draft "0", curvefig
+  render's paths);
 - a pointer drag of the background turns it by 0.4 degree a pixel: the
   page reports the new azimuth and elevation, and its drawing is that of
   a static `curvefig render` of the script with view = {azimuth,
@@ -117,6 +122,11 @@ def quiet(drv, n, timeout=20):
         n = lb.settle(drv, m - 1 if busy == '0' else m, timeout)
 
 
+def draft(drv):
+    return drv.execute_script(
+        'return document.getElementById("curvefig").dataset.draft;')
+
+
 def view(drv):
     return json.loads(drv.find_element(By.ID, 'cf-figure-' + NAME)
                       .get_attribute('data-view'))
@@ -180,9 +190,34 @@ def exercise(drv, tool, text, what, exact, outdir):
         lb.check(same_drawing(drv, what, script_svg, True),
                  '%s: at load, the drawing is curvefig render\'s' % what)
 
+    # a drag under way draws drafts; the release, the exact run
+    svg = drv.find_element(By.CSS_SELECTOR, '[id="cf-figure-%s"] svg'
+                           % NAME)
+    size = svg.size
+    hold = ActionChains(drv)
+    hold.move_to_element_with_offset(
+        svg, size['width'] // 2 - 12, 50 - size['height'] // 2) \
+        .click_and_hold().move_by_offset(-10, 5).perform()
+    n = quiet(drv, n)
+    slow = float(drv.execute_script('return document.getElementById('
+                                    '"curvefig").dataset.exactMs')) > 20
+    lb.check(draft(drv) == ('1' if slow else '0'), '%s: while the pointer '
+             'holds the figure, the drawing is a draft when an exact run '
+             'takes over 20 ms (data-draft %r)' % (what, draft(drv)))
+    ActionChains(drv).move_by_offset(10, -5).release().perform()
+    n = quiet(drv, n)
+    lb.check(draft(drv) == '0' and view(drv) == SCRIPT_VIEW,
+             '%s: released, the exact run is drawn (data-draft %r, view %s)'
+             % (what, draft(drv), view(drv)))
+    if exact:
+        lb.check(same_drawing(drv, what, script_svg, True),
+                 '%s: ... and it is curvefig render\'s again' % what)
+
     # a drag of the background
     background_drag(drv, -60, 30)
     n = quiet(drv, n)
+    lb.check(draft(drv) == '0', '%s: after the drag the drawing is exact'
+             % what)
     v = view(drv)
     want = [SCRIPT_VIEW[0] + 60 * DEG_PER_PX, SCRIPT_VIEW[1] + 30 *
             DEG_PER_PX]

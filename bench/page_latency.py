@@ -1,0 +1,235 @@
+#!/usr/bin/env python3
+"""Latency of the course page (curvefig render -f html): from an input
+event to the new drawing, computed in the page's WebAssembly module.
+
+usage: page_latency.py CURVEFIG SOURCE_DIR [MOVES [EXAMPLE...]]
+
+For every shipped interactive example (figures/interactive/*.lua): its
+page written by `curvefig render EXAMPLE -f html`, opened from the file in
+headless Chromium (/usr/bin/chromium, /usr/bin/chromedriver and selenium
+for /usr/bin/python3; exit 77, skipped, without them or without the
+module).  The pointer is driven as a reader's (Chrome DevTools' input
+events, so that the page sees real pointer events with their capture):
+
+  slider    a slider's thumb pressed and dragged, MOVES moves (default
+            20) of 6 px, each awaited, then released;
+  point     the first handle dragged, MOVES moves of 4 px, released;
+  rotate    (a 3D figure) its background dragged, MOVES moves of 5 px
+            (2 degrees), released.
+
+Each move is timed from the event (its timeStamp, the page's clock) to
+the reply shown in the document (root.dataset.runs grown, busy "0");
+"move" are these times (the page asks for a draft while the pointer is
+down: docs/interactive.md, "Drafts"), "release" the time from the
+release to the exact drawing shown.  "run" is the module's own time of
+the run (the worker's performance.now() around it, the page's
+data-run-ms), where the page reports it.  One JSON line per example and
+measure: median and 95th percentile in ms, and whether the median is
+within 30 ms and the 95th percentile within 60 ms (issue #28).
+"""
+import json
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+CHROMIUM = '/usr/bin/chromium'
+CHROMEDRIVER = '/usr/bin/chromedriver'
+TARGET_MEDIAN, TARGET_P95 = 30, 60
+
+try:
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+except ImportError:
+    print('SKIP: no selenium for ' + sys.executable)
+    sys.exit(77)
+
+# Once per page: the time of the last input event and of the last reply
+# shown, on the page's clock.
+ARM = r'''
+var root = document.getElementById('curvefig');
+if (!window.__cfBench) {
+  window.__cfBench = { ev: null, shown: null, runs: 0, runMs: [] };
+  ['pointermove', 'pointerdown', 'pointerup', 'input'].forEach(function (t) {
+    window.addEventListener(t, function (e) {
+      if (window.__cfBench.ev === null) window.__cfBench.ev = e.timeStamp;
+    }, true);
+  });
+  new MutationObserver(function () {
+    var b = window.__cfBench, n = Number(root.dataset.runs);
+    if (n > b.runs && root.dataset.busy === '0') {
+      b.runs = n;
+      b.shown = performance.now();
+      b.draft = root.dataset.draft;
+      if (root.dataset.runMs) b.runMs.push(Number(root.dataset.runMs));
+    }
+  }).observe(root, { attributes: true });
+}
+window.__cfBench.ev = null;
+window.__cfBench.shown = null;
+window.__cfBench.runs = Number(root.dataset.runs);
+'''
+
+# The time from the event to the reply shown (null: nothing ran within
+# arguments[0] ms); the reply's draft flag.
+AWAIT = r'''
+var done = arguments[arguments.length - 1], t = performance.now();
+var limit = arguments[0];
+(function wait() {
+  var b = window.__cfBench;
+  if (b.shown !== null && b.ev !== null)
+    return done([b.shown - b.ev, b.draft || null]);
+  if (performance.now() - t > limit) return done(null);
+  setTimeout(wait, 1);
+})();
+'''
+
+# Where to press: [x, y] in the viewport, or null.
+WHERE = r'''
+var kind = arguments[0], el;
+if (kind === 'slider') {
+  el = document.querySelector('#cf-controls input[type=range]');
+  if (!el) return null;
+  var r = el.getBoundingClientRect(), lo = Number(el.min),
+      hi = Number(el.max), f = (Number(el.value) - lo) / (hi - lo);
+  // the thumb (16 px wide in Chromium) at the value's place; a drag
+  // leftwards when it is in the right half
+  return [r.left + 8 + f * (r.width - 16), r.top + r.height / 2,
+          f > 0.5 ? -1 : 1];
+}
+if (kind === 'point') {
+  el = document.querySelector('.cf-handle');
+  if (!el) return null;
+  var c = el.getBoundingClientRect();
+  return [c.left + c.width / 2, c.top + c.height / 2, 1];
+}
+el = document.querySelector('.cf-figure.cf-3d svg');
+if (!el) return null;
+var s = el.getBoundingClientRect();
+return [s.right - 12, s.top + 50, -1];
+'''
+
+
+def mouse(drv, kind, x, y, buttons):
+    drv.execute_cdp_cmd('Input.dispatchMouseEvent', {
+        'type': kind, 'x': x, 'y': y, 'button': 'left',
+        'buttons': buttons, 'clickCount': 1 if kind != 'mouseMoved' else 0})
+
+
+def quiet(drv):
+    end = time.time() + 60
+    while time.time() < end:
+        if drv.execute_script('var r = document.getElementById("curvefig");'
+                              'return r.dataset.busy === "0" && '
+                              'Number(r.dataset.runs) > 0'):
+            return
+        time.sleep(0.02)
+    sys.exit('the page did not settle within 60 s')
+
+
+def drag(drv, kind, moves):
+    """One drag of kind: the times of its moves and of its release."""
+    at = drv.execute_script(WHERE, kind)
+    if at is None:
+        return None
+    x, y, sign = at
+    step = {'slider': (6, 0), 'point': (4, 3), 'rotate': (5, 2)}[kind]
+    quiet(drv)
+    mouse(drv, 'mouseMoved', x, y, 0)
+    drv.execute_script(ARM)
+    mouse(drv, 'mousePressed', x, y, 1)
+    # a press on a slider may move it (and run): awaited
+    quiet(drv)
+    out, drafts = [], 0
+    for k in range(moves):
+        # to and fro, so that a slider or a point stays in its range
+        d = sign * (1 if (k // 8) % 2 == 0 else -1)
+        x += d * step[0]
+        y += d * step[1]
+        drv.execute_script(ARM)
+        mouse(drv, 'mouseMoved', x, y, 1)
+        r = drv.execute_async_script(AWAIT, 10000)
+        if r is not None:
+            out.append(r[0])
+            drafts += r[1] == '1'
+    drv.execute_script(ARM)
+    mouse(drv, 'mouseReleased', x, y, 0)
+    # (a page that drew no draft runs nothing on the release)
+    r = drv.execute_async_script(AWAIT, 30000 if drafts else 1000)
+    quiet(drv)
+    return out, [r[0]] if r is not None and r[1] != '1' else [], drafts
+
+
+def percentile(xs, q):
+    xs = sorted(xs)
+    return xs[min(len(xs) - 1, int(round(q * (len(xs) - 1))))]
+
+
+def report(name, what, ms, extra=None):
+    if not ms:
+        return True
+    med, p95 = statistics.median(ms), percentile(ms, 0.95)
+    row = {'example': name, 'measure': what, 'events': len(ms),
+           'median_ms': round(med, 2), 'p95_ms': round(p95, 2),
+           'met': med <= TARGET_MEDIAN and p95 <= TARGET_P95}
+    row.update(extra or {})
+    print(json.dumps(row), flush=True)
+    return row['met']
+
+
+def main():
+    tool, src = os.path.abspath(sys.argv[1]), sys.argv[2]
+    moves = int(sys.argv[3]) if len(sys.argv) > 3 else 20
+    d = os.path.join(src, 'figures', 'interactive')
+    names = sys.argv[4:] or sorted(f[:-4] for f in os.listdir(d)
+                                   if f.endswith('.lua'))
+    for path in (CHROMIUM, CHROMEDRIVER):
+        if not os.access(path, os.X_OK):
+            print('SKIP: no', path)
+            sys.exit(77)
+    opts = webdriver.ChromeOptions()
+    opts.binary_location = CHROMIUM
+    for a in ('--headless', '--no-sandbox', '--disable-gpu',
+              '--disable-dev-shm-usage', '--window-size=1400,1000',
+              '--no-first-run', '--disable-background-networking'):
+        opts.add_argument(a)
+    tmp = tempfile.mkdtemp(prefix='cf-page-latency-')
+    drv = webdriver.Chrome(service=Service(CHROMEDRIVER), options=opts)
+    drv.set_script_timeout(60)
+    try:
+        for name in names:
+            out = subprocess.run([tool, 'render', os.path.join(d, name +
+                                                               '.lua'),
+                                  '-f', 'html', '-o', tmp],
+                                 capture_output=True, text=True)
+            if out.returncode != 0:
+                if 'WebAssembly' in out.stderr:
+                    print('SKIP: this build has no WebAssembly module')
+                    sys.exit(77)
+                sys.exit('%s: -f html failed: %s' % (name, out.stderr))
+            drv.get('file://' + os.path.join(tmp, name + '.html'))
+            quiet(drv)
+            drv.execute_script(ARM)
+            moved, released, drafts = [], [], 0
+            for kind in ('slider', 'point', 'rotate'):
+                for _ in range(2):
+                    r = drag(drv, kind, moves // 2)
+                    if r is None:
+                        break
+                    moved += r[0]
+                    released += r[1]
+                    drafts += r[2]
+            run_ms = drv.execute_script('return window.__cfBench.runMs')
+            report(name, 'move', moved, {'drafts': drafts})
+            report(name, 'release', released)
+            report(name, 'run', run_ms)
+    finally:
+        drv.quit()
+        for f in os.listdir(tmp):
+            os.unlink(os.path.join(tmp, f))
+        os.rmdir(tmp)
+
+
+main()

@@ -4,7 +4,7 @@
     emcc-group.py DEPFILE EMCC [FLAG...] --in SOURCE... --out OBJECT...
 
 emcc's start-up (its Python, its configuration checks) is paid once a
-process: the module's ~190 files took 160 s of CPU one process each, 58 s
+process: the module's ~190 files took 139 s of CPU one process each, 64 s
 in groups of 12.  Given several sources, one emcc compiles them all, each
 by its own clang as before, with the same flags.  The objects
 are written in a scratch directory beside the first OBJECT and moved to

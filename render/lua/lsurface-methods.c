@@ -18,6 +18,7 @@
 #include "lcommon.h"
 #include "lschema.h"
 #include "lsurface.h"
+#include "numtext.h"
 
 #define check cf__lua_check_surface
 
@@ -33,14 +34,17 @@ param_error(lua_State *L, const cf__lua_surface_t *b, const char *fn, double u, 
             cf_status_t st)
 {
     double ua = 0, ub = 1, va = 0, vb = 1;
+    char t[6][CF__NUM_TEXT];
     if (b->bs != NULL) {
         cf_bspline_surface_domain(b->bs, CF_DIR_U, &ua, &ub);
         cf_bspline_surface_domain(b->bs, CF_DIR_V, &va, &vb);
     }
     if (st == CF_STATUS_DOMAIN)
-        return cf__lua_error(L, "%s: (u, v) = (%.17g, %.17g) is outside the "
-                             "domain [%g, %g] x [%g, %g]", fn, u, v, ua, ub,
-                             va, vb);
+        return cf__lua_error(L, "%s: (u, v) = (%s, %s) is outside the "
+                             "domain [%s, %s] x [%s, %s]", fn,
+                             cf__num_text(u, t[0]), cf__num_text(v, t[1]),
+                             cf__num_text(ua, t[2]), cf__num_text(ub, t[3]),
+                             cf__num_text(va, t[4]), cf__num_text(vb, t[5]));
     return cf__lua_fail(L, fn, st, NULL);
 }
 

@@ -20,10 +20,17 @@
 ** Its standard error goes to an unnamed temporary file; on failure its
 ** last line is the error's message.  abort kills ffmpeg and removes the
 ** temporary file.
+**
+** A hung ffmpeg does not hang us: the time we wait for it (for it to take
+** a frame, then to exit) is at most CF__FFMPEG_WAIT seconds and
+** CF__FFMPEG_WAIT_FRAME more for every video frame sent, in all; beyond
+** that ffmpeg is killed and the video fails saying so.  Only waiting
+** counts, not the rendering of the frames between.
 */
 #include <errno.h>
 #include <fcntl.h>
 #include <math.h>
+#include <poll.h>
 #include <signal.h>
 #include <spawn.h>
 #include <stdint.h>
@@ -33,6 +40,7 @@
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "anim-private.h"
@@ -49,7 +57,25 @@ typedef struct ff_sink {
     int w2, h2;                 /* the video's size: even */
     unsigned char *rgb;         /* the last frame, rgb24, w2 x h2 */
     long sent;                  /* video frames sent */
+    double wait, wait_frame;    /* the limits of the waits (seconds) */
+    double waited;              /* the time waited so far */
 } ff_sink_t;
+
+/* A monotonic clock in seconds. */
+static double
+now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* The seconds ffmpeg may still keep us waiting (<= 0: none). */
+static double
+wait_left(const ff_sink_t *f)
+{
+    return f->wait + f->wait_frame * (double)f->sent - f->waited;
+}
 
 /* The path of an executable file named name in a directory of PATH, or
 ** NULL (none, or out of memory). */
@@ -126,12 +152,25 @@ ff_free(cf__anim_sink_t *sink)
     cf_free(f);
 }
 
-/* n bytes to ffmpeg; 0, or -1 (ffmpeg has gone). */
+/* n bytes to ffmpeg; 0, -1 (ffmpeg has gone) or -2 (it took nothing
+** for longer than the waits have left). */
 static int
 send_all(ff_sink_t *f, const unsigned char *p, size_t n)
 {
     while (n > 0) {
-        ssize_t w = send(f->in, p, n, MSG_NOSIGNAL);
+        ssize_t w = send(f->in, p, n, MSG_NOSIGNAL | MSG_DONTWAIT);
+        if (w < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+            struct pollfd pf = { f->in, POLLOUT, 0 };
+            double left = wait_left(f), t0 = now();
+            int r;
+            if (left <= 0)
+                return -2;
+            r = poll(&pf, 1, (int)ceil(fmin(left, 3600.0) * 1000.0));
+            f->waited += now() - t0;
+            if (r < 0 && errno != EINTR)
+                return -1;
+            continue;
+        }
         if (w < 0 && errno == EINTR)
             continue;
         if (w <= 0)
@@ -140,6 +179,22 @@ send_all(ff_sink_t *f, const unsigned char *p, size_t n)
         n -= (size_t)w;
     }
     return 0;
+}
+
+/* The error of an ffmpeg that kept us waiting too long, killed. */
+static cf_status_t
+timed_out(ff_sink_t *f, cf_diag_t *diag)
+{
+    double limit = f->wait + f->wait_frame * (double)f->sent;
+    kill(f->pid, SIGKILL);
+    while (waitpid(f->pid, NULL, 0) < 0 && errno == EINTR)
+        ;
+    f->pid = 0;
+    return cf_diag_set(diag, CF_STATUS_IO, -1,
+                       "%s: ffmpeg did not finish: stopped after waiting "
+                       "%.0f s for it (%g s and %g s a video frame, %ld "
+                       "frames)", f->base.name, limit, f->wait,
+                       f->wait_frame, f->sent);
 }
 
 /* ffmpeg waited for: 0 when it exited with 0, else its error in diag. */
@@ -152,8 +207,19 @@ ff_wait(ff_sink_t *f, cf_diag_t *diag)
     if (f->in >= 0)
         close(f->in);
     f->in = -1;
-    while ((r = waitpid(f->pid, &status, 0)) < 0 && errno == EINTR)
-        ;
+    for (;;) {
+        double t0 = now();
+        struct timespec nap = { 0, 20000000 };   /* 20 ms */
+        r = waitpid(f->pid, &status, WNOHANG);
+        if (r < 0 && errno == EINTR)
+            continue;
+        if (r != 0)
+            break;
+        if (wait_left(f) <= 0)
+            return timed_out(f, diag);
+        nanosleep(&nap, NULL);
+        f->waited += now() - t0;
+    }
     f->pid = 0;
     if (r > 0 && WIFEXITED(status) && WEXITSTATUS(status) == 0)
         return CF_STATUS_OK;
@@ -198,7 +264,10 @@ ff_add(cf__anim_sink_t *sink, const cf__anim_frame_t *fr, cf_diag_t *diag)
     size_t size = (size_t)f->w2 * (size_t)f->h2 * 3;
     to_rgb(f, fr);
     for (; f->sent < upto; f->sent++) {
-        if (send_all(f, f->rgb, size) != 0) {
+        int r = send_all(f, f->rgb, size);
+        if (r == -2)
+            return timed_out(f, diag);
+        if (r != 0) {
             cf_status_t st = ff_wait(f, diag);
             if (st == CF_STATUS_OK)   /* exited 0 before its input ended */
                 st = cf_diag_set(diag, CF_STATUS_IO, (long)fr->index,
@@ -217,10 +286,15 @@ ff_finish(cf__anim_sink_t *sink, cf__buf_t *out, cf_diag_t *diag)
     cf_status_t st = CF_STATUS_OK;
     (void)out;
     /* an animation shorter than one video frame: its last frame once */
-    if (f->sent == 0
-        && send_all(f, f->rgb, (size_t)f->w2 * (size_t)f->h2 * 3) == 0)
-        f->sent = 1;
-    st = ff_wait(f, diag);
+    if (f->sent == 0) {
+        int r = send_all(f, f->rgb, (size_t)f->w2 * (size_t)f->h2 * 3);
+        if (r == 0)
+            f->sent = 1;
+        else if (r == -2)
+            st = timed_out(f, diag);
+    }
+    if (st == CF_STATUS_OK)
+        st = ff_wait(f, diag);
     if (st == CF_STATUS_OK && rename(f->tmp, f->path) != 0)
         st = cf_diag_set(diag, CF_STATUS_IO, -1, "cannot write \"%s\": %s",
                          f->path, strerror(errno));
@@ -233,6 +307,16 @@ ff_finish(cf__anim_sink_t *sink, cf__buf_t *out, cf_diag_t *diag)
 }
 
 static const cf__anim_ops_t ff_ops = { ff_add, ff_finish, ff_free };
+
+void
+cf__anim_ffmpeg_limits(cf__anim_sink_t *sink, double wait, double wait_frame)
+{
+    ff_sink_t *f = (ff_sink_t *)sink;
+    if (sink->ops == &ff_ops) {
+        f->wait = wait;
+        f->wait_frame = wait_frame;
+    }
+}
 
 /* ffmpeg started on the temporary file (fd), reading from sock, writing
 ** its errors to errfd; 0, or an errno value. */
@@ -321,6 +405,8 @@ cf__anim_ffmpeg_open(cf__anim_kind_t kind, int width, int height, double fps,
     f->base.height = height;
     f->base.fps = fps;
     f->in = -1;
+    f->wait = CF__FFMPEG_WAIT;
+    f->wait_frame = CF__FFMPEG_WAIT_FRAME;
     f->w2 = width + (width & 1);
     f->h2 = height + (height & 1);
     f->rgb = cf_alloc_array((size_t)f->w2 * (size_t)f->h2, 3);

@@ -60,6 +60,14 @@ cf_status_t cf__anim_apng_open(int width, int height, cf__anim_sink_t **sink,
 cf_status_t cf__anim_ffmpeg_open(cf__anim_kind_t kind, int width,
                                  int height, double fps, const char *path,
                                  cf__anim_sink_t **sink, cf_diag_t *diag);
+/* How long ffmpeg may keep a video waiting, in all: CF__FFMPEG_WAIT
+** seconds and CF__FFMPEG_WAIT_FRAME more a video frame (anim-ffmpeg.c);
+** cf__anim_ffmpeg_limits sets other limits on an MP4 or WebM sink (the
+** tests' hung ffmpeg). */
+#define CF__FFMPEG_WAIT 60.0
+#define CF__FFMPEG_WAIT_FRAME 1.0
+void cf__anim_ffmpeg_limits(cf__anim_sink_t *sink, double wait,
+                            double wait_frame);
 
 /* ---- the GIF's palette (anim-palette.c) ---------------------------------- */
 

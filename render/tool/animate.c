@@ -5,6 +5,7 @@
 ** frame's values (exactly, not snapped to their step), or the steps of an
 ** overlay figure in turn.
 */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -47,6 +48,42 @@ cf__tool_anim_takes_value(const char *opt)
     return false;
 }
 
+/* The value of --fps, --seconds or --step-seconds: a number from 0.001
+** to 10000; a number outside is refused saying on which side (1e-300 is
+** positive, but too small). */
+static int
+time_value(const char *opt, const char *v, double *x, char *msg, size_t size)
+{
+    char *end;
+    double y;
+    errno = 0;
+    y = strtod(v, &end);
+    if (end == v || *end != '\0' || isnan(y)) {
+        snprintf(msg, size, "%s '%s': give a number from 0.001 to 10000",
+                 opt, v);
+        return -1;
+    }
+    /* strtod gives +0 with ERANGE for a positive number below the least
+    ** subnormal (1e-400) */
+    if (y < 0 || (y == 0 && !(errno == ERANGE && !signbit(y)))) {
+        snprintf(msg, size, "%s '%s': give a positive number (from 0.001 "
+                 "to 10000)", opt, v);
+        return -1;
+    }
+    if (y < 1e-3) {
+        snprintf(msg, size, "%s '%s' is too small: the least is 0.001",
+                 opt, v);
+        return -1;
+    }
+    if (y > 1e4) {
+        snprintf(msg, size, "%s '%s' is too large: the most is 10000", opt,
+                 v);
+        return -1;
+    }
+    *x = y;
+    return 0;
+}
+
 int
 cf__tool_anim_option(const char *opt, const char *v, cf__tool_anim_t *ta,
                      char *msg, size_t size)
@@ -69,11 +106,8 @@ cf__tool_anim_option(const char *opt, const char *v, cf__tool_anim_t *ta,
         ta->frames_given = true;
     } else if (strcmp(opt, "--fps") == 0 || strcmp(opt, "--seconds") == 0
                || strcmp(opt, "--step-seconds") == 0) {
-        if (cf__tool_number(v, 1e-3, 1e4, &x) != 0) {
-            snprintf(msg, size, "%s '%s': give a positive number (at most "
-                     "10000)", opt, v);
+        if (time_value(opt, v, &x, msg, size) != 0)
             return -1;
-        }
         if (opt[2] == 'f') {
             ta->spec.fps = x;
             ta->fps_given = true;

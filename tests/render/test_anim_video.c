@@ -5,9 +5,11 @@
 ** cannot be written and when aborted: a clear error and no file left. */
 #include <dirent.h>
 #include <sys/stat.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "test_anim.h"
+#include "anim-private.h"
 #include "spawn.h"
 
 #define VW 65   /* odd: the video is padded to 66 x 50 */
@@ -210,6 +212,28 @@ test_no_ffmpeg(void **state)
     assert_int_equal(entries(), 0);
 }
 
+/* A video sink opened with bin (a directory holding a fake ffmpeg) first
+** on PATH. */
+static cf_status_t
+open_with(const char *bin, cf__anim_kind_t kind, const char *file,
+          cf__anim_sink_t **sink, cf_diag_t *d)
+{
+    static char newpath[8192], path[8000];
+    const char *env = getenv("PATH");
+    size_t nb = strlen(bin), np = env != NULL ? strlen(env) : 0;
+    cf_status_t st;
+    if (nb + np + 2 > sizeof newpath || np + 1 > sizeof path)
+        skip();
+    memcpy(path, env != NULL ? env : "", np + 1);
+    memcpy(newpath, bin, nb);
+    newpath[nb] = ':';
+    memcpy(newpath + nb + 1, path, np + 1);
+    setenv("PATH", newpath, 1);
+    st = cf__anim_sink_open(kind, VW, VH, FPS, true, file, sink, d);
+    setenv("PATH", path, 1);
+    return st;
+}
+
 /* A target directory that cannot be written: an error naming the file;
 ** an ffmpeg that fails: its message; aborted: ffmpeg stopped.  No file
 ** is left, an old target is untouched. */
@@ -217,9 +241,7 @@ static void
 test_failures(void **state)
 {
     (void)state;
-    char file[256], fake[256], bin[128], newpath[8192], path[8000];
-    const char *env;
-    size_t nb, np;
+    char file[256], fake[256], bin[128];
     cf__anim_sink_t *sink = NULL;
     cairo_surface_t *f = draw_frame(VW, VH, 0, true, false,
                                     CAIRO_FORMAT_RGB24);
@@ -269,19 +291,7 @@ test_failures(void **state)
     assert_non_null(fp);
     fputs("old", fp);
     fclose(fp);
-    env = getenv("PATH");
-    nb = strlen(bin);
-    np = env != NULL ? strlen(env) : 0;
-    if (nb + np + 2 > sizeof newpath || np + 1 > sizeof path)
-        skip();
-    memcpy(path, env != NULL ? env : "", np + 1);
-    memcpy(newpath, bin, nb);
-    newpath[nb] = ':';
-    memcpy(newpath + nb + 1, path, np + 1);
-    setenv("PATH", newpath, 1);
-    st = cf__anim_sink_open(CF__ANIM_MP4, VW, VH, FPS, true, file, &sink,
-                            &d);
-    setenv("PATH", path, 1);
+    st = open_with(bin, CF__ANIM_MP4, file, &sink, &d);
     assert_int_equal(st, CF_STATUS_OK);
     for (int k = 0; k < 40 && st == CF_STATUS_OK; k++)
         st = cf__anim_sink_add(sink, f, 0.5, &d);
@@ -305,6 +315,69 @@ test_failures(void **state)
     cairo_surface_destroy(f);
 }
 
+/* A hung ffmpeg: one that reads its input but never exits, one that
+** never reads it.  The video fails once the waits pass their limit (set
+** small here: half a second and 10 ms a video frame), ffmpeg killed, no
+** file left, and the waits took about that limit, not longer. */
+static void
+test_hung(void **state)
+{
+    (void)state;
+    static const char *const scripts[] = {
+        "#!/bin/sh\ncat > /dev/null\nexec sleep 60\n",
+        "#!/bin/sh\nexec sleep 60\n",
+    };
+    char file[256], fake[256], bin[128];
+    cairo_surface_t *f = draw_frame(VW, VH, 0, true, false,
+                                    CAIRO_FORMAT_RGB24);
+    if (!ffmpeg[0])
+        skip();
+    snprintf(bin, sizeof bin, "%s/hung", dir);
+    snprintf(fake, sizeof fake, "%s/ffmpeg", bin);
+    snprintf(file, sizeof file, "%s/v.mp4", dir);
+    assert_int_equal(mkdir(bin, 0755), 0);
+    for (int i = 0; i < 2; i++) {
+        cf__anim_sink_t *sink = NULL;
+        cf_diag_t d;
+        cf_status_t st;
+        struct timespec t0, t1;
+        double took, limit;
+        FILE *fp = fopen(fake, "w");
+        assert_non_null(fp);
+        fputs(scripts[i], fp);
+        fclose(fp);
+        assert_int_equal(chmod(fake, 0755), 0);
+        assert_int_equal(open_with(bin, CF__ANIM_MP4, file, &sink, &d),
+                         CF_STATUS_OK);
+        cf__anim_ffmpeg_limits(sink, 0.5, 0.01);
+        clock_gettime(CLOCK_MONOTONIC, &t0);
+        /* 40 frames of 5 video frames, 2 MB: more than a socket holds */
+        st = CF_STATUS_OK;
+        for (int k = 0; k < 40 && st == CF_STATUS_OK; k++)
+            st = cf__anim_sink_add(sink, f, 0.5, &d);
+        if (st == CF_STATUS_OK)
+            st = cf__anim_sink_finish(sink, NULL, &d);
+        else
+            cf__anim_sink_abort(sink);
+        clock_gettime(CLOCK_MONOTONIC, &t1);
+        took = (double)(t1.tv_sec - t0.tv_sec)
+               + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+        assert_int_equal(st, CF_STATUS_IO);
+        assert_non_null(strstr(d.msg, "MP4: ffmpeg did not finish: "
+                                      "stopped after waiting"));
+        assert_non_null(strstr(d.msg, "(0.5 s and 0.01 s a video frame"));
+        /* at most 0.5 s + 200 x 10 ms of waiting; sleep 60 would be 60 s
+        ** (a second of slack for a loaded machine) */
+        limit = 0.5 + 0.01 * 200;
+        assert_true(took < limit + 1.0);
+        unlink(fake);
+        assert_int_equal(entries(), 1);   /* the directory bin */
+    }
+    assert_int_equal(rmdir(bin), 0);
+    assert_int_equal(entries(), 0);
+    cairo_surface_destroy(f);
+}
+
 int
 main(void)
 {
@@ -313,6 +386,7 @@ main(void)
         cmocka_unit_test(test_webm),
         cmocka_unit_test(test_no_ffmpeg),
         cmocka_unit_test(test_failures),
+        cmocka_unit_test(test_hung),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

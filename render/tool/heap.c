@@ -51,7 +51,7 @@
 #include <unistd.h>
 
 #define HUGE_PAGE ((uintptr_t)2 << 20)
-#define HEAP_PAD ((size_t)64 << 20)   /* the heap's first extent */
+#define HEAP_PAD ((size_t)32 << 20)   /* the heap's growth beyond a need */
 #endif
 
 void *
@@ -76,7 +76,16 @@ cf__tool_heap_for_one_run(void)
     first = ((uintptr_t)probe + 64 + HUGE_PAGE - 1) & ~(HUGE_PAGE - 1);
     head = malloc(first - (uintptr_t)probe - 64);
     free(probe);
-    end = sbrk(0);   /* beyond HEAP_PAD, after the block */
+    /* the heap grown now (by HEAP_PAD more than this block, which goes
+    ** back to its top untouched), so that the advice covers it (where it
+    ** cannot grow in place, the allocator maps memory elsewhere, and that
+    ** is not advised) */
+    {
+        /* volatile: a block freed unused may be left out by the compiler */
+        char *volatile grow = malloc(HEAP_PAD / 4);
+        free(grow);
+    }
+    end = sbrk(0);
     if (head == NULL || end == (char *)-1)
         return head;
     last = (uintptr_t)end & ~(HUGE_PAGE - 1);

@@ -14,6 +14,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include <cmocka.h>
 
@@ -66,11 +67,15 @@ static void
 test_allocations_in_huge_pages(void **state)
 {
     void *head = cf__tool_heap_for_one_run();
+    uintptr_t grown = (uintptr_t)sbrk(0);
     char flags[512];
     long rss;
     size_t sizes[] = { 5000, 100000, 3u << 20 };
     (void)state;
-    if (head == NULL || !huge_pages_offered()) {
+    /* the heap could not grow in place (another mapping after it, as
+    ** address randomisation sometimes puts one): nothing was advised */
+    if (head == NULL || !huge_pages_offered()
+        || grown < (uintptr_t)head + (16u << 20)) {
         free(head);
         skip();
     }
@@ -90,8 +95,7 @@ test_allocations_in_huge_pages(void **state)
     }
     /* the head block's own mapping: not advised, and nearly nothing of it
     ** resident (its header's page and the allocator's first blocks) */
-    assert_true(mapping_of((uintptr_t)head + 8192, flags, sizeof flags,
-                           &rss));
+    assert_true(mapping_of((uintptr_t)head, flags, sizeof flags, &rss));
     assert_null(strstr(flags, " hg"));
     assert_true(rss >= 0 && rss < 256);
     free(head);

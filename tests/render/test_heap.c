@@ -97,7 +97,10 @@ test_allocations_in_huge_pages(void **state)
     ** resident (its header's page and the allocator's first blocks) */
     assert_true(mapping_of((uintptr_t)head, flags, sizeof flags, &rss));
     assert_null(strstr(flags, " hg"));
-    assert_true(rss >= 0 && rss < 256);
+    /* (unless the allocator fills every block it hands out: MALLOC_PERTURB_,
+    ** which meson's test runner sets) */
+    if (getenv("MALLOC_PERTURB_") == NULL)
+        assert_true(rss >= 0 && rss < 256);
     free(head);
 }
 

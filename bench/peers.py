@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The two figures of the peer comparison, timed side by side in one run.
 
-    peers.py TOOL SOURCE_DIR [--pairs N]
+    peers.py TOOL SOURCE_DIR [--pairs N] [--baseline OLD_TOOL]
 
 For orazem-decasteljau and markova-2.17: curvefig's PDF (`TOOL render
 figures/NAME.lua -f pdf --only NAME`), the same figure as MetaPost
@@ -12,7 +12,10 @@ turn (the order rotates), N rounds (default 7) after one warm-up round;
 the CPU time (user + system) of each process and its children.  One JSON
 line per figure: the medians and how many times faster curvefig is
 (targets of issue #28: >= 10x MetaPost, >= 60x TikZ).  A peer that is not
-installed is left out; exit status 77 (skipped) when neither is.
+installed is left out; exit status 77 (skipped) when neither is.  With
+--baseline, another build's `curvefig` (OLD_TOOL) renders the same PDF
+in the same rounds, and the line adds its median and the median of the
+per-round ratios TOOL / OLD_TOOL (a before/after in one run).
 """
 import json
 import os
@@ -48,6 +51,8 @@ def main(argv):
         return 2
     tool, src = os.path.abspath(argv[1]), os.path.abspath(argv[2])
     pairs = int(argv[argv.index("--pairs") + 1]) if "--pairs" in argv else 7
+    baseline = (os.path.abspath(argv[argv.index("--baseline") + 1])
+                if "--baseline" in argv else None)
     peers = {}
     if shutil.which("mpost") and shutil.which("tex"):
         # the .mpx of the labels removed first: a figure just edited
@@ -70,6 +75,8 @@ def main(argv):
                                      os.path.join(src, "figures",
                                                   name + ".lua"),
                                      "-o", tmp, "-f", "pdf", "--only", name]}
+            if baseline is not None:
+                cmds["baseline_pdf"] = [baseline] + cmds["curvefig_pdf"][1:]
             for k, make in peers.items():
                 cmds[k] = make(name)
             times = {k: [] for k in cmds}
@@ -86,6 +93,10 @@ def main(argv):
             for k in peers:
                 out["times_faster_than_" + k] = round(
                     med[k] / med["curvefig_pdf"], 1)
+            if baseline is not None:
+                out["ratio_to_baseline"] = round(statistics.median(
+                    a / b for a, b in zip(times["curvefig_pdf"],
+                                          times["baseline_pdf"])), 3)
             print(json.dumps(out), flush=True)
     return 0
 

@@ -57,6 +57,11 @@ void cf__tool_put_html(FILE *f, const char *s, size_t n);
 int cf__tool_gallery(const char *out, const char *title,
                      const char *const *manifests, int count);
 
+/* Set up glibc's heap for one render (render/tool/heap.c): what is freed
+** kept for reuse, the heap in huge pages; a block to free at the end (or
+** NULL). */
+void *cf__tool_heap_for_one_run(void);
+
 /* Before the first font is used: a fontconfig configuration with just
 ** the figure fonts (fonts.c), unless the user chose one or the fonts are
 ** elsewhere.  Returns which configuration is in use, for --version. */

@@ -186,10 +186,17 @@ def test_interactive_page_in_a_browser(tmp_path):
         drv.switch_to.frame(drv.find_element(By.TAG_NAME, "iframe"))
         from selenium.webdriver.support.ui import WebDriverWait
 
+        from selenium.common.exceptions import StaleElementReferenceException
+
         def figure_svg(d):
-            e = d.find_elements(By.CSS_SELECTOR,
-                                '[id="cf-figure-decasteljau"] svg')
-            return e[0].get_attribute("outerHTML") if e else False
+            # a redraw replaces the figure's svg: one found just before it
+            # may be gone when it is read, so look again
+            try:
+                e = d.find_elements(By.CSS_SELECTOR,
+                                    '[id="cf-figure-decasteljau"] svg')
+                return e[0].get_attribute("outerHTML") if e else False
+            except StaleElementReferenceException:
+                return False
 
         first = WebDriverWait(drv, 60).until(figure_svg)
         slider = drv.find_element(By.CSS_SELECTOR, "input[type=range]")

@@ -3,7 +3,9 @@
 ** the same double (bit for bit, -0 included) and has the fewest
 ** significant digits that do (one fewer, as %.*g writes it, reads back as
 ** another double); and the messages of the files that use it show the
-** short text (0.17, not 0.17000000000000001; 1/3 in full, not 0.333333).
+** short text (0.17, not 0.17000000000000001; 1/3 in full, not 0.333333;
+** 0.3 and 0.30000000000000004 told apart, not both 0.3; 1.0000001, not
+** 1), one test for each source file.
 */
 #include <float.h>
 #include <math.h>
@@ -272,6 +274,109 @@ test_message_surface_bezier_ops(void **state)
     cf_bezier_surface_destroy(s);
 }
 
+/* src/bezier.c: a parameter just outside (0, 1), which %g wrote as 1 */
+static void
+test_message_bezier(void **state)
+{
+    (void)state;
+    static const double P[] = { 0, 0, 1, 2, 3, 0 };
+    cf_bezier_t *c = NULL, *l = NULL, *r = NULL;
+    cf_diag_t d;
+    assert_int_equal(cf_bezier_create(2, 2, P, NULL, &c, NULL), CF_STATUS_OK);
+    assert_int_equal(cf_bezier_split(c, 1.0000001, &l, &r, &d),
+                     CF_STATUS_DOMAIN);
+    assert_string_equal(d.msg, "split parameter 1.0000001 is outside the "
+                               "open interval (0, 1)");
+    cf_bezier_destroy(c);
+}
+
+/* src/bspline-knot-ops.c: a knot to remove that is not one */
+static void
+test_message_bspline_knot_ops(void **state)
+{
+    (void)state;
+    static const double U[] = { 0, 0, 0, 0.5, 1, 1, 1 };
+    static const double P[] = { 0, 0, 1, 2, 2, 2, 3, 0 };
+    cf_bspline_t *c = NULL, *q = NULL;
+    cf_diag_t d;
+    assert_int_equal(cf_bspline_create(2, 2, U, 7, P, 4, NULL, &c, NULL),
+                     CF_STATUS_OK);
+    assert_int_equal(cf_bspline_remove_knot(c, 1.0 / 3.0, 1, 0.0, &q, NULL,
+                                            &d),
+                     CF_STATUS_BAD_KNOTS);
+    assert_string_equal(d.msg, "0.3333333333333333 is not an interior knot "
+                               "of the domain [0, 1]");
+    cf_bspline_destroy(c);
+}
+
+/* src/knots.c: two parameters that %g wrote alike (both 0.3) */
+static void
+test_message_knots(void **state)
+{
+    (void)state;
+    const double t[] = { 0.0, 0.1 + 0.2, 0.3, 1.0 };
+    double U[8];
+    cf_diag_t d;
+    assert_int_equal(cf_knots_clamped_averaged(2, 4, t, U, &d),
+                     CF_STATUS_INVALID_ARG);
+    assert_string_equal(d.msg, "parameter 2 (0.3) is not larger than "
+                               "parameter 1 (0.30000000000000004)");
+}
+
+/* src/interp-params.c: the same for interpolation's own parameters */
+static void
+test_message_interp_params(void **state)
+{
+    (void)state;
+    static const double P[] = { 0, 0, 1, 1, 2, 0, 3, 1 };
+    const double u[] = { 0.0, 0.1 + 0.2, 0.3, 1.0 };
+    cf_interp_options_t o;
+    cf_bspline_t *c = NULL;
+    cf_diag_t d;
+    cf_interp_options_init(&o);
+    o.params = u;
+    assert_int_equal(cf_interpolate(2, P, 4, &o, &c, &d),
+                     CF_STATUS_BAD_KNOTS);
+    assert_string_equal(d.msg, "parameter 2 (0.3) is not larger than "
+                               "parameter 1 (0.30000000000000004); "
+                               "parameters must increase strictly");
+    assert_null(c);
+}
+
+/* src/conic.c: an empty parameter range */
+static void
+test_message_conic(void **state)
+{
+    (void)state;
+    cf_bezier_list_t *l = NULL;
+    cf_diag_t d;
+    assert_int_equal(cf_conic_parabola(0, 0, 1, 0, 2.0 / 3.0, 0.1 + 0.2, &l,
+                                       &d),
+                     CF_STATUS_DOMAIN);
+    assert_string_equal(d.msg, "parameter range [0.6666666666666666, "
+                               "0.30000000000000004] is empty");
+}
+
+/* src/surface-triangle.c: a point outside the triangle; w = 1 - u - v as
+** computed (Python's repr of 1 - (0.1 + 0.2) - 0.8, the shortest text) */
+static void
+test_message_surface_triangle(void **state)
+{
+    (void)state;
+    static const double P[] = { 0, 0, 1, 0, 0, 1 };
+    cf_bezier_triangle_t *t = NULL, *out[3];
+    cf_diag_t d;
+    assert_int_equal(cf_bezier_triangle_create(2, 1, P, NULL, &t, NULL),
+                     CF_STATUS_OK);
+    assert_int_equal(cf_bezier_triangle_subdivide(t, 0.1 + 0.2, 0.8, out,
+                                                  &d),
+                     CF_STATUS_DOMAIN);
+    assert_string_equal(d.msg, "(u, v, w) = (0.30000000000000004, 0.8, "
+                               "-0.10000000000000009) is not a point of "
+                               "the triangle");
+    cf_bezier_triangle_destroy(t);
+}
+
 int
 main(void)
 {
@@ -284,6 +389,12 @@ main(void)
         cmocka_unit_test(test_message_bspline_ops),
         cmocka_unit_test(test_message_surface_common),
         cmocka_unit_test(test_message_surface_bezier_ops),
+        cmocka_unit_test(test_message_bezier),
+        cmocka_unit_test(test_message_bspline_knot_ops),
+        cmocka_unit_test(test_message_knots),
+        cmocka_unit_test(test_message_interp_params),
+        cmocka_unit_test(test_message_conic),
+        cmocka_unit_test(test_message_surface_triangle),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -20,6 +20,7 @@
 #include <cmocka.h>
 
 #include "curvefig/curvefig.h"
+#include "../../src/linsolve-private.h"
 #include "../../src/numtext-private.h"
 #include "testutil.h"
 
@@ -377,6 +378,180 @@ test_message_surface_triangle(void **state)
     cf_bezier_triangle_destroy(t);
 }
 
+/* src/basis-spline.c: knots that span no interval */
+static void
+test_message_basis_spline(void **state)
+{
+    (void)state;
+    const double U[] = { 1.0 / 3.0, 1.0 / 3.0, 1.0 / 3.0 };
+    cf_bspline_t *b = NULL;
+    cf_diag_t d;
+    assert_int_equal(cf_basis_one_spline(0, 1, U, 3, &b, &d),
+                     CF_STATUS_BAD_KNOTS);
+    assert_string_equal(d.msg, "the knots span no interval (all "
+                               "0.3333333333333333)");
+}
+
+static double
+pole(double t, void *ud)
+{
+    (void)ud;
+    return 1.0 / (t - 0.5);
+}
+
+/* src/bernstein.c: f(i/n) not finite */
+static void
+test_message_bernstein(void **state)
+{
+    (void)state;
+    double coef[3];
+    cf_diag_t d;
+    assert_int_equal(cf_bernstein_approx(pole, NULL, 2, coef, &d),
+                     CF_STATUS_NOT_FINITE);
+    assert_string_equal(d.msg, "f(1/2) = inf is not finite");
+}
+
+/* A quadratic Bézier curve of the plane. */
+static cf_bezier_t *
+arch(void)
+{
+    static const double P[] = { 0, 0, 1, 2, 3, 0 };
+    cf_bezier_t *c = NULL;
+    assert_int_equal(cf_bezier_create(2, 2, P, NULL, &c, NULL), CF_STATUS_OK);
+    return c;
+}
+
+/* src/bezier-cubics.c, src/fit-cusp.c, src/offset.c: a tolerance, an
+** offset distance */
+static void
+test_message_cubics_offsets(void **state)
+{
+    (void)state;
+    cf_bezier_t *c = arch();
+    cf_cubics_t *k = NULL;
+    cf_offset_options_t o;
+    double ts[8];
+    size_t n;
+    cf_diag_t d;
+    assert_int_equal(cf_bezier_to_cubics(c, -1.0 / 3.0, &k, &d),
+                     CF_STATUS_INVALID_ARG);
+    assert_string_equal(d.msg, "tolerance -0.3333333333333333 must be finite "
+                               "and positive");
+    assert_int_equal(cf_offset_cusps(c, -INFINITY, ts, 8, &n, &d),
+                     CF_STATUS_NOT_FINITE);
+    assert_string_equal(d.msg, "offset distance -inf is not finite");
+    cf_offset_options_init(&o);
+    o.tolerance = -1.0 / 3.0;
+    assert_int_equal(cf_bezier_offset(c, 0.1, &o, &k, NULL, NULL, &d),
+                     CF_STATUS_INVALID_ARG);
+    assert_string_equal(d.msg, "offset tolerance -0.3333333333333333 must be "
+                               "finite and positive");
+    cf_bezier_destroy(c);
+}
+
+/* src/interp.c: an end tangent that is not finite */
+static void
+test_message_interp(void **state)
+{
+    (void)state;
+    static const double P[] = { 0, 0, 1, 1, 2, 0 };
+    const double t0[] = { 1.0, 0.0 }, t1[] = { 0.17, -INFINITY };
+    cf_interp_options_t o;
+    cf_bspline_t *c = NULL;
+    cf_diag_t d;
+    cf_interp_options_init(&o);
+    o.method = CF_INTERP_CLAMPED;
+    o.start_tangent = t0;
+    o.end_tangent = t1;
+    assert_int_equal(cf_interpolate(2, P, 3, &o, &c, &d),
+                     CF_STATUS_NOT_FINITE);
+    assert_string_equal(d.msg, "end_tangent has coordinate 2 = -inf; "
+                               "coordinates must be finite");
+}
+
+/* src/linsolve.c: a singular band */
+static void
+test_message_linsolve(void **state)
+{
+    (void)state;
+    cf__band_t b;
+    cf_diag_t d;
+    assert_int_equal(cf__band_init(&b, 2, 1, 1, NULL), CF_STATUS_OK);
+    cf__band_set(&b, 0, 0, 1.0 / 3.0);
+    cf__band_set(&b, 1, 0, 1.0);
+    cf_diag_clear(&d);
+    assert_int_equal(cf__band_factor(&b, &d), CF_STATUS_DEGENERATE);
+    assert_string_equal(d.msg, "banded system is singular at row 1 "
+                               "(largest pivot 0)");
+    cf__band_fini(&b);
+}
+
+/* src/reduce-bspline.c: a tolerance */
+static void
+test_message_reduce_bspline(void **state)
+{
+    (void)state;
+    static const double U[] = { 0, 0, 0, 0, 1, 1, 1, 1 };
+    static const double P[] = { 0, 0, 1, 2, 2, 2, 3, 0 };
+    cf_bspline_t *c = NULL, *r = NULL;
+    cf_reduce_options_t o;
+    cf_diag_t d;
+    assert_int_equal(cf_bspline_create(2, 3, U, 8, P, 4, NULL, &c, NULL),
+                     CF_STATUS_OK);
+    cf_reduce_options_init(&o);
+    o.tolerance = -1.0 / 3.0;
+    assert_int_equal(cf_bspline_reduce(c, &o, &r, NULL, &d),
+                     CF_STATUS_INVALID_ARG);
+    assert_string_equal(d.msg, "tolerance -0.3333333333333333 must be finite "
+                               "and > 0");
+    cf_bspline_destroy(c);
+}
+
+/* A line from (x0, y0) to (x1, y1) as a B-spline on [0, 1]. */
+static cf_bspline_t *
+segment(double x0, double y0, double x1, double y1)
+{
+    static const double U[] = { 0, 0, 1, 1 };
+    const double P[] = { x0, y0, x1, y1 };
+    cf_bspline_t *c = NULL;
+    assert_int_equal(cf_bspline_create(2, 1, U, 4, P, 2, NULL, &c, NULL),
+                     CF_STATUS_OK);
+    return c;
+}
+
+/* src/surface-coons.c: corners that do not meet */
+static void
+test_message_surface_coons(void **state)
+{
+    (void)state;
+    cf_bspline_t *c0 = segment(0, 0, 1, 0), *c1 = segment(0, 1, 1, 1);
+    cf_bspline_t *d0 = segment(0, 1.0 / 3.0, 0, 1), *d1 = segment(1, 0, 1, 1);
+    cf_bspline_surface_t *s = NULL;
+    cf_diag_t d;
+    assert_int_equal(cf_surface_coons(c0, c1, d0, d1, &s, &d),
+                     CF_STATUS_DEGENERATE);
+    assert_string_equal(d.msg, "the corners do not meet: c0(0) = (0, 0, ...) "
+                               "but d0(0) = (0, 0.3333333333333333, ...)");
+    cf_bspline_destroy(c0);
+    cf_bspline_destroy(c1);
+    cf_bspline_destroy(d0);
+    cf_bspline_destroy(d1);
+}
+
+/* src/surface-revolve.c: a torus whose tube is the wider */
+static void
+test_message_surface_revolve(void **state)
+{
+    (void)state;
+    static const double centre[] = { 0, 0, 0 };
+    cf_bspline_surface_t *s = NULL;
+    cf_diag_t d;
+    assert_int_equal(cf_nurbs_torus(centre, 1.0 / 3.0, 0.5, &s, &d),
+                     CF_STATUS_INVALID_ARG);
+    assert_string_equal(d.msg, "the radius 0.3333333333333333 of the centre "
+                               "circle must be larger than the tube's 0.5");
+}
+
 int
 main(void)
 {
@@ -395,6 +570,14 @@ main(void)
         cmocka_unit_test(test_message_interp_params),
         cmocka_unit_test(test_message_conic),
         cmocka_unit_test(test_message_surface_triangle),
+        cmocka_unit_test(test_message_basis_spline),
+        cmocka_unit_test(test_message_bernstein),
+        cmocka_unit_test(test_message_cubics_offsets),
+        cmocka_unit_test(test_message_interp),
+        cmocka_unit_test(test_message_linsolve),
+        cmocka_unit_test(test_message_reduce_bspline),
+        cmocka_unit_test(test_message_surface_coons),
+        cmocka_unit_test(test_message_surface_revolve),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

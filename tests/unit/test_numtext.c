@@ -137,16 +137,23 @@ test_random(void **state)
 
 /* ---- the messages ---------------------------------------------------- */
 
-/* The linear B-spline on [0, 0.17] (knots 0, 0, 0.17, 0.17). */
+/* The line from (x0, y0) to (x1, y1) as a B-spline on [0, b] (knots 0, 0,
+** b, b). */
 static cf_bspline_t *
-short_line(const double *w)
+line_on(double b, double x0, double y0, double x1, double y1)
 {
-    static const double U[] = { 0.0, 0.0, 0.17, 0.17 };
-    static const double P[] = { 0.0, 0.0, 1.0, 1.0 };
+    const double U[] = { 0.0, 0.0, b, b }, P[] = { x0, y0, x1, y1 };
     cf_bspline_t *c = NULL;
-    assert_int_equal(cf_bspline_create(2, 1, U, 4, P, 2, w, &c, NULL),
+    assert_int_equal(cf_bspline_create(2, 1, U, 4, P, 2, NULL, &c, NULL),
                      CF_STATUS_OK);
     return c;
+}
+
+/* The line from (0, 0) to (1, 1) on [0, 0.17]. */
+static cf_bspline_t *
+short_line(void)
+{
+    return line_on(0.17, 0, 0, 1, 1);
 }
 
 /* src/domain.c: the domain rule's message */
@@ -170,7 +177,7 @@ test_message_bspline(void **state)
     (void)state;
     static const double U[] = { 0.0, 0.0, 0.17, 0.17 };
     const double H[] = { 0.0, 0.0, 1.0, 1.0, 1.0, -1.0 / 3.0 };
-    cf_bspline_t *c = short_line(NULL), *l = NULL, *q = NULL;
+    cf_bspline_t *c = short_line(), *l = NULL, *q = NULL;
     cf_diag_t d;
     assert_int_equal(cf_bspline_split(c, 0.3, &l, &q, &d), CF_STATUS_DOMAIN);
     assert_string_equal(d.msg, "parameter 0.3 is outside the domain "
@@ -210,7 +217,7 @@ static void
 test_message_bspline_ops(void **state)
 {
     (void)state;
-    cf_bspline_t *c = short_line(NULL), *l = NULL, *q = NULL;
+    cf_bspline_t *c = short_line(), *l = NULL, *q = NULL;
     cf_diag_t d;
     assert_int_equal(cf_bspline_split(c, 0.17, &l, &q, &d), CF_STATUS_DOMAIN);
     assert_string_equal(d.msg, "0.17 must lie strictly inside the domain "
@@ -507,25 +514,14 @@ test_message_reduce_bspline(void **state)
     cf_bspline_destroy(c);
 }
 
-/* A line from (x0, y0) to (x1, y1) as a B-spline on [0, 1]. */
-static cf_bspline_t *
-segment(double x0, double y0, double x1, double y1)
-{
-    static const double U[] = { 0, 0, 1, 1 };
-    const double P[] = { x0, y0, x1, y1 };
-    cf_bspline_t *c = NULL;
-    assert_int_equal(cf_bspline_create(2, 1, U, 4, P, 2, NULL, &c, NULL),
-                     CF_STATUS_OK);
-    return c;
-}
-
 /* src/surface-coons.c: corners that do not meet */
 static void
 test_message_surface_coons(void **state)
 {
     (void)state;
-    cf_bspline_t *c0 = segment(0, 0, 1, 0), *c1 = segment(0, 1, 1, 1);
-    cf_bspline_t *d0 = segment(0, 1.0 / 3.0, 0, 1), *d1 = segment(1, 0, 1, 1);
+    cf_bspline_t *c0 = line_on(1, 0, 0, 1, 0), *c1 = line_on(1, 0, 1, 1, 1);
+    cf_bspline_t *d0 = line_on(1, 0, 1.0 / 3.0, 0, 1);
+    cf_bspline_t *d1 = line_on(1, 1, 0, 1, 1);
     cf_bspline_surface_t *s = NULL;
     cf_diag_t d;
     assert_int_equal(cf_surface_coons(c0, c1, d0, d1, &s, &d),

@@ -7,6 +7,7 @@
 
 #include "curvefig/bspline.h"
 #include "bspline-private.h"
+#include "numtext-private.h"
 
 cf_status_t
 cf_basis_one_spline(int i, int degree, const double *knots, size_t nknots,
@@ -36,7 +37,8 @@ cf_basis_one_spline(int i, int degree, const double *knots, size_t nknots,
         return st;
     if (!(knots[m - 1] > knots[0]))
         return cf__error(diag, CF_STATUS_BAD_KNOTS, -1,
-                         "the knots span no interval (all %g)", knots[0]);
+                         "the knots span no interval (all %s)",
+                         CF__NUM(knots[0]));
     h = knots[m - 1] - knots[0];
     count = m + p - 1;
     pu = cf__alloc_array(m + 2 * p, sizeof *pu);

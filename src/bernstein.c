@@ -7,6 +7,7 @@
 
 #include "curvefig/bernstein.h"
 #include "bezier-private.h"
+#include "numtext-private.h"
 
 #define MAXN CF_BEZIER_MAX_DEGREE
 #define MAXM CF_BERNSTEIN_MATRIX_MAX_DEGREE
@@ -227,7 +228,8 @@ cf_bernstein_approx(cf_real_func_t f, void *ud, int n, double *coef,
         double x = (double)i / (double)n, y = f(x, ud);
         if (!isfinite(y))
             return cf__error(diag, CF_STATUS_NOT_FINITE, i,
-                             "f(%d/%d) = %g is not finite", i, n, y);
+                             "f(%d/%d) = %s is not finite", i, n,
+                             CF__NUM(y));
         coef[i] = y;
     }
     return CF_STATUS_OK;

@@ -33,6 +33,7 @@
 
 #include "bezier-private.h"
 #include "fit-private.h"
+#include "numtext-private.h"
 
 #define SAMPLES 48        /* samples per piece for the error measure */
 #define MAX_DEPTH 40      /* halvings of [0, 1] */
@@ -139,7 +140,8 @@ check_args(const cf_bezier_t *c, double tol, cf_cubics_t **out,
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "the curve is NULL");
     if (!(tol > 0.0) || !isfinite(tol))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "tolerance %g must be finite and positive", tol);
+                         "tolerance %s must be finite and positive",
+                         CF__NUM(tol));
     return CF_STATUS_OK;
 }
 
@@ -194,7 +196,8 @@ cf_bezier_to_cubics(const cf_bezier_t *c, double tol, cf_cubics_t **out,
         }
         if (st != CF_STATUS_OK)
             return cf__error(diag, st, -1,
-                             "no cubic fit within %g of the curve", tol);
+                             "no cubic fit within %s of the curve",
+                             CF__NUM(tol));
         *out = fit2;
         return CF_STATUS_OK;
     }
@@ -236,8 +239,8 @@ hermite_halving(const cf_bezier_t *c, double tol, cf_cubics_t **out,
         if (st == CF_STATUS_NO_MEMORY)
             return cf__error(diag, st, -1, "out of memory (cubic segments)");
         return cf__error(diag, st, -1,
-                         "no cubic fit within %g after %d halvings", tol,
-                         MAX_DEPTH);
+                         "no cubic fit within %s after %d halvings",
+                         CF__NUM(tol), MAX_DEPTH);
     }
     r->pts = f.pts;
     r->t = f.t;
@@ -295,8 +298,8 @@ cf_bezier_to_cubics_bounded(const cf_bezier_t *c, double tol,
     pieces = m4 > 0.0 ? ceil(pow(m4 / (384.0 * tol), 0.25)) : 1.0;
     if (!(pieces <= MAX_SEGMENTS))
         return cf__error(diag, CF_STATUS_NO_CONVERGENCE, -1,
-                         "%.3g cubic pieces would be needed for %g "
-                         "(at most %d)", pieces, tol, MAX_SEGMENTS);
+                         "%.3g cubic pieces would be needed for %s "
+                         "(at most %d)", pieces, CF__NUM(tol), MAX_SEGMENTS);
     count = (size_t)fmax(pieces, 1.0);
     r = cf__calloc(1, sizeof *r);
     d0 = cf__alloc_array(4 * dim, sizeof *d0);

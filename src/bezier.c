@@ -14,6 +14,7 @@
 #include <string.h>
 
 #include "bezier-private.h"
+#include "numtext-private.h"
 
 #define MAXN CF_BEZIER_MAX_DEGREE
 
@@ -204,8 +205,8 @@ cf_bezier_create_homogeneous(size_t dim, int degree, const double *hpoints,
         double w = hpoints[i * (dim + 1) + dim];
         if (!(w > 0.0))
             return cf__error(diag, CF_STATUS_BAD_WEIGHT, (long)i,
-                             "weight w_%zu is %g; weights must be finite "
-                             "and positive", i, w);
+                             "weight w_%zu is %s; weights must be finite "
+                             "and positive", i, CF__NUM(w));
     }
     return from_hpoints(dim, degree, true, hpoints, out, diag);
 }
@@ -321,11 +322,11 @@ check_open_param(double t, const char *what, cf_diag_t *diag)
 {
     if (!isfinite(t))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "%s %g is not finite", what, t);
+                         "%s %s is not finite", what, CF__NUM(t));
     if (!(t > 0.0 && t < 1.0))
         return cf__error(diag, CF_STATUS_DOMAIN, -1,
-                         "%s %g is outside the open interval (0, 1)", what,
-                         t);
+                         "%s %s is outside the open interval (0, 1)", what,
+                         CF__NUM(t));
     return CF_STATUS_OK;
 }
 
@@ -394,12 +395,12 @@ cf_bezier_segment(const cf_bezier_t *c, double a, double b,
         return st;
     if (!isfinite(a) || !isfinite(b))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "segment [%g, %g] has a bound that is not finite",
-                         a, b);
+                         "segment [%s, %s] has a bound that is not finite",
+                         CF__NUM(a), CF__NUM(b));
     if (!(a >= 0.0 && a < b && b <= 1.0))
         return cf__error(diag, CF_STATUS_DOMAIN, -1,
-                         "segment [%g, %g] does not satisfy "
-                         "0 <= a < b <= 1", a, b);
+                         "segment [%s, %s] does not satisfy "
+                         "0 <= a < b <= 1", CF__NUM(a), CF__NUM(b));
     s = cf__bezier_new(c->dim, c->degree, c->rational);
     if (s == NULL)
         return no_memory(diag, "segment");
@@ -552,7 +553,8 @@ check_derivative(cf_bezier_t *d, cf_diag_t *diag)
                 cf__free(d);
                 return cf__error(diag, CF_STATUS_NOT_FINITE, i,
                                  "control point %d overflows "
-                                 "(coordinate %zu is %g)", i, k + 1, v);
+                                 "(coordinate %zu is %s)", i, k + 1,
+                                 CF__NUM(v));
             }
         }
     return CF_STATUS_OK;

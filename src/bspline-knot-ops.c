@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "bspline-private.h"
+#include "numtext-private.h"
 
 /* ---- knot insertion ----------------------------------------------------- */
 
@@ -82,9 +83,9 @@ insert_check(const cf_bspline_t *c, double u, int r, size_t *k, int *s,
     *s = cf__knots_mult(c->U, c->nknots, u);
     if (*s + r > c->p + 1)
         return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)*k,
-                         "knot %g has multiplicity %d; inserting it "
-                         "%d more times exceeds degree + 1 = %d", u, *s, r,
-                         c->p + 1);
+                         "knot %s has multiplicity %d; inserting it "
+                         "%d more times exceeds degree + 1 = %d", CF__NUM(u),
+                         *s, r, c->p + 1);
     return CF_STATUS_OK;
 }
 
@@ -307,8 +308,9 @@ refine_check(const cf_bspline_t *c, const double *X, size_t nx,
                 s++;
             if (s + (e - j) > p1)
                 return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)j,
-                                 "knot %g would get multiplicity "
-                                 "%zu; degree %d allows at most %d", X[j],
+                                 "knot %s would get multiplicity "
+                                 "%zu; degree %d allows at most %d",
+                                 CF__NUM(X[j]),
                                  s + (e - j), c->p, c->p + 1);
             j = e;
         }
@@ -409,15 +411,17 @@ cf_bspline_remove_knot(const cf_bspline_t *c, double u, int num, double tol,
                          "count %d must be at least 1", num);
     if (!isfinite(tol) || tol < 0.0)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "tolerance %g must be finite and >= 0", tol);
+                         "tolerance %s must be finite and >= 0",
+                         CF__NUM(tol));
     if (!isfinite(u))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "knot is %g", u);
+                         "knot is %s", CF__NUM(u));
     s = cf__knots_mult(c->U, c->nknots, u);
     if (s == 0 || !(u > c->a && u < c->b))
         return cf__error(diag, CF_STATUS_BAD_KNOTS, -1,
-                         "%g is not an interior knot of the domain "
-                         "[%g, %g]", u, c->a, c->b);
+                         "%s is not an interior knot of the domain "
+                         "[%s, %s]", CF__NUM(u), CF__NUM(c->a),
+                         CF__NUM(c->b));
     p = (size_t)c->p;
     hd = c->hdim;
     n = c->count - 1;

@@ -10,6 +10,7 @@
 
 #include "bezier-private.h"
 #include "bspline-private.h"
+#include "numtext-private.h"
 
 /* ---- split, segment ----------------------------------------------------- */
 
@@ -85,8 +86,8 @@ cf_bspline_split(const cf_bspline_t *c, double u, cf_bspline_t **left,
         return st;
     if (!(u > c->a && u < c->b))
         return cf__error(diag, CF_STATUS_DOMAIN, -1,
-                         "%g must lie strictly inside the domain "
-                         "[%g, %g]", u, c->a, c->b);
+                         "%s must lie strictly inside the domain [%s, %s]",
+                         CF__NUM(u), CF__NUM(c->a), CF__NUM(c->b));
     return cut(c, u, left, right, diag);
 }
 
@@ -106,7 +107,7 @@ cf_bspline_segment(const cf_bspline_t *c, double a, double b,
         return st;
     if (!(a < b))
         return cf__error(diag, CF_STATUS_DOMAIN, -1,
-                         "[%g, %g] is empty", a, b);
+                         "[%s, %s] is empty", CF__NUM(a), CF__NUM(b));
     st = cut(c, a, NULL, &r, diag);
     if (st != CF_STATUS_OK)
         return st;
@@ -538,9 +539,9 @@ check_overflow(const cf_bspline_t *q, const char *what, cf_diag_t *diag)
             return cf__error(diag, CF_STATUS_NOT_FINITE,
                              (long)(i / q->hdim),
                              "control point %zu of the %s overflows "
-                             "(coordinate %zu is %g); the input is too large "
+                             "(coordinate %zu is %s); the input is too large "
                              "or its knot spans too small", i / q->hdim, what,
-                             i % q->hdim + 1, q->P[i]);
+                             i % q->hdim + 1, CF__NUM(q->P[i]));
     }
     return CF_STATUS_OK;
 }
@@ -619,9 +620,9 @@ cf_bspline_reverse(const cf_bspline_t *c, cf_bspline_t **out,
             q->U[i] < q->U[i - 1]) {
             cf_bspline_destroy(q);
             return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)(m - i),
-                             "knots %zu and %zu (%.17g, %.17g) are "
-                             "too close to be reversed exactly", m - i,
-                             m - i + 1, c->U[m - i], c->U[m - i + 1]);
+                             "knots %zu and %zu (%s, %s) are too close to "
+                             "be reversed exactly", m - i, m - i + 1,
+                             CF__NUM(c->U[m - i]), CF__NUM(c->U[m - i + 1]));
         }
     }
     for (size_t i = 0; i <= n; i++)

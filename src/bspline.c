@@ -9,6 +9,7 @@
 #include <string.h>
 
 #include "bspline-private.h"
+#include "numtext-private.h"
 
 
 /* ---- allocation and the accelerators ------------------------------------ */
@@ -180,11 +181,11 @@ cf__bspline_check_param(const cf_bspline_t *c, double u, cf_diag_t *diag)
 {
     if (!isfinite(u))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "parameter is %g", u);
+                         "parameter is %s", CF__NUM(u));
     if (u < c->a || u > c->b)
         return cf__error(diag, CF_STATUS_DOMAIN, -1,
-                         "parameter %.17g is outside the domain "
-                         "[%.17g, %.17g]", u, c->a, c->b);
+                         "parameter %s is outside the domain [%s, %s]",
+                         CF__NUM(u), CF__NUM(c->a), CF__NUM(c->b));
     return CF_STATUS_OK;
 }
 
@@ -282,8 +283,8 @@ cf_bspline_create_homogeneous(size_t dim, int degree, const double *knots,
         double w = hpoints[i * (dim + 1) + dim];
         if (!(w > 0.0))
             return cf__error(diag, CF_STATUS_BAD_WEIGHT, (long)i,
-                             "weight w_%zu is %g; weights must be finite and "
-                             "positive", i, w);
+                             "weight w_%zu is %s; weights must be finite and "
+                             "positive", i, CF__NUM(w));
     }
     c = cf__bspline_alloc(dim, true, degree, count);
     if (c == NULL)

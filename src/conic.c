@@ -15,6 +15,7 @@
 #include "curvefig/conic.h"
 #include "bezier-private.h"
 #include "bspline-private.h"
+#include "numtext-private.h"
 
 #define MAX_PIECES 100000
 
@@ -48,7 +49,8 @@ check_finite(const double *v, const char *const *names, int n,
     for (int i = 0; i < n; i++)
         if (!isfinite(v[i]))
             return cf__error(diag, CF_STATUS_NOT_FINITE, i,
-                             "%s is %g; it must be finite", names[i], v[i]);
+                             "%s is %s; it must be finite", names[i],
+                             CF__NUM(v[i]));
     return CF_STATUS_OK;
 }
 
@@ -57,7 +59,7 @@ check_positive(double v, const char *name, cf_diag_t *diag)
 {
     if (!(v > 0.0))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "%s is %g; it must be positive", name, v);
+                         "%s is %s; it must be positive", name, CF__NUM(v));
     return CF_STATUS_OK;
 }
 
@@ -152,12 +154,13 @@ circle_pieces(const affine *A, double a0, double a1, cf_bezier_list_t **out,
     size_t n;
     if (!isfinite(span) || span == 0.0)
         return cf__error(diag, CF_STATUS_DOMAIN, -1,
-                         "the arc from %g to %g spans no angle", a0, a1);
+                         "the arc from %s to %s spans no angle",
+                         CF__NUM(a0), CF__NUM(a1));
     q = fabs(span) / (CF__PI / 2);
     if (q > MAX_PIECES)
         return cf__error(diag, CF_STATUS_DOMAIN, -1,
-                         "the arc from %g to %g makes too many turns", a0,
-                         a1);
+                         "the arc from %s to %s makes too many turns",
+                         CF__NUM(a0), CF__NUM(a1));
     /* a span a rounding above 90 degrees still makes one piece */
     n = (size_t)ceil(q * (1.0 - 1e-12));
     return unit_pieces(A, a0, a1, n < 1 ? 1 : n, false, out, diag);
@@ -267,7 +270,8 @@ cf_conic_parabola(double vx, double vy, double f, double axis, double u0,
         st = check_positive(f, "focal length", diag);
     if (st == CF_STATUS_OK && !(u0 < u1))
         st = cf__error(diag, CF_STATUS_DOMAIN, -1,
-                       "parameter range [%g, %g] is empty", u0, u1);
+                       "parameter range [%s, %s] is empty", CF__NUM(u0),
+                       CF__NUM(u1));
     if (st == CF_STATUS_OK)
         st = new_list(1, &list, diag);
     if (st != CF_STATUS_OK)
@@ -309,11 +313,12 @@ cf_conic_hyperbola(double cx, double cy, double a, double b, double rotation,
         st = check_positive(b, "semi-axis b", diag);
     if (st == CF_STATUS_OK && !(s0 < s1))
         st = cf__error(diag, CF_STATUS_DOMAIN, -1,
-                       "parameter range [%g, %g] is empty", s0, s1);
+                       "parameter range [%s, %s] is empty", CF__NUM(s0),
+                       CF__NUM(s1));
     if (st == CF_STATUS_OK && (fabs(s0) > 700 || fabs(s1) > 700))
         st = cf__error(diag, CF_STATUS_DOMAIN, -1,
-                       "parameter range [%g, %g] leaves |s| <= 700 (cosh "
-                       "overflows)", s0, s1);
+                       "parameter range [%s, %s] leaves |s| <= 700 (cosh "
+                       "overflows)", CF__NUM(s0), CF__NUM(s1));
     if (st != CF_STATUS_OK)
         return st;
     n = (size_t)ceil((s1 - s0) / 2.0 * (1.0 - 1e-12));
@@ -344,10 +349,10 @@ cf_nurbs_arc(size_t dim, const double *O, const double *X, const double *Y,
                          "radius or angles are not finite");
     if (!(r > 0.0))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "radius %g must be positive", r);
+                         "radius %s must be positive", CF__NUM(r));
     if (!(sweep > 0.0) || sweep > 2.0 * CF__PI * (1.0 + 1e-15))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "sweep %g must be in (0, 2 pi]", sweep);
+                         "sweep %s must be in (0, 2 pi]", CF__NUM(sweep));
     /* one quadratic rational piece per quarter turn or less */
     narcs = (size_t)ceil(sweep / (0.5 * CF__PI) - 1e-12);
     if (narcs < 1)
@@ -412,7 +417,7 @@ cf_nurbs_circle(const double *centre, double r, cf_bspline_t **out,
                          "centre or radius is not finite");
     if (!(r > 0.0))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "radius %g must be positive", r);
+                         "radius %s must be positive", CF__NUM(r));
     for (int i = 0; i < 9; i++) {
         P[2 * i] = centre[0] + r * dx[i];
         P[2 * i + 1] = centre[1] + r * dy[i];

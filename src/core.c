@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "core-private.h"
+#include "numtext-private.h"
 
 static const char *const status_strings[CF_STATUS_LAST_] = {
     [CF_STATUS_OK] = "success",
@@ -279,10 +280,10 @@ cf__check_finite_points(const double *pts, size_t count, size_t dim,
             double v = pts[i * stride + k];
             if (!isfinite(v))
                 return cf__error(diag, CF_STATUS_NOT_FINITE, (long)i,
-                                 "%s %s%zu has coordinate %zu = %g; "
+                                 "%s %s%zu has coordinate %zu = %s; "
                                  "coordinates must be finite", what,
                                  strcmp(what, "point") == 0 ? "P_" : "", i,
-                                 k + 1, v);
+                                 k + 1, CF__NUM(v));
         }
     }
     return CF_STATUS_OK;
@@ -294,8 +295,8 @@ cf__check_weights(const double *w, size_t count, cf_diag_t *diag)
     for (size_t i = 0; i < count; i++) {
         if (!isfinite(w[i]) || !(w[i] > 0.0))
             return cf__error(diag, CF_STATUS_BAD_WEIGHT, (long)i,
-                             "weight w_%zu is %g; weights must be finite "
-                             "and positive", i, w[i]);
+                             "weight w_%zu is %s; weights must be finite "
+                             "and positive", i, CF__NUM(w[i]));
     }
     return CF_STATUS_OK;
 }

@@ -30,6 +30,7 @@
 #include "core-private.h"
 #include "bezier-private.h"
 #include "fit-private.h"
+#include "numtext-private.h"
 
 double
 cf__deriv_scale(const cf_bezier_t *c)
@@ -362,7 +363,7 @@ cf_offset_cusps(const cf_bezier_t *c, double d, double *ts, size_t cap,
                          cf_bezier_dim(c));
     if (!isfinite(d))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "offset distance %g is not finite", d);
+                         "offset distance %s is not finite", CF__NUM(d));
     st = cf__offset_cusps_alloc(c, d, &all, &n);
     if (st != CF_STATUS_OK)
         return cf__error(diag, st, -1, "out of memory");

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "interp-private.h"
+#include "numtext-private.h"
 
 /* ---- options and names -------------------------------------------------- */
 
@@ -95,8 +96,8 @@ format_point(char *buf, size_t size, const double *p, size_t dim)
     size_t len = 0;
     len += (size_t)snprintf(buf, size, "(");
     for (size_t k = 0; k < dim && k < 4 && len < size; k++)
-        len += (size_t)snprintf(buf + len, size - len, "%s%g",
-                                k > 0 ? ", " : "", p[k]);
+        len += (size_t)snprintf(buf + len, size - len, "%s%s",
+                                k > 0 ? ", " : "", CF__NUM(p[k]));
     if (dim > 4 && len < size)
         len += (size_t)snprintf(buf + len, size - len, ", ...");
     if (len < size)
@@ -150,8 +151,8 @@ cf_interp_parameters(size_t dim, const double *points, size_t count,
     case CF_PARAM_POWER:
         if (!(exponent >= 0.0 && exponent <= 1.0))
             return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                             "parameter exponent %g is outside [0, 1]",
-                             exponent);
+                             "parameter exponent %s is outside [0, 1]",
+                             CF__NUM(exponent));
         e = exponent;
         break;
     default:
@@ -197,7 +198,8 @@ cf_interp_parameters(size_t dim, const double *points, size_t count,
     }
     if (!isfinite(total) || !(total > 0.0))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "total parameter length %g is not finite", total);
+                         "total parameter length %s is not finite",
+                         CF__NUM(total));
     for (size_t i = 1; i < nseg; i++)
         out[i] /= total;
     out[nseg] = 1.0;
@@ -210,13 +212,14 @@ check_explicit_params(const double *u, size_t n, cf_diag_t *diag)
     for (size_t i = 0; i < n; i++) {
         if (!isfinite(u[i]))
             return cf__error(diag, CF_STATUS_NOT_FINITE, (long)i,
-                             "parameter %zu is %g; parameters must be "
-                             "finite", i, u[i]);
+                             "parameter %zu is %s; parameters must be "
+                             "finite", i, CF__NUM(u[i]));
         if (i > 0 && !(u[i] > u[i - 1]))
             return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)i,
-                             "parameter %zu (%g) is not larger than "
-                             "parameter %zu (%g); parameters must increase "
-                             "strictly", i, u[i], i - 1, u[i - 1]);
+                             "parameter %zu (%s) is not larger than "
+                             "parameter %zu (%s); parameters must increase "
+                             "strictly", i, CF__NUM(u[i]), i - 1,
+                             CF__NUM(u[i - 1]));
     }
     return CF_STATUS_OK;
 }

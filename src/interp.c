@@ -10,6 +10,7 @@
 
 #include "bezier-private.h"
 #include "interp-private.h"
+#include "numtext-private.h"
 
 static cf_status_t
 check_tangent(const double *t, size_t dim, const char *name, cf_diag_t *diag)
@@ -19,8 +20,8 @@ check_tangent(const double *t, size_t dim, const char *name, cf_diag_t *diag)
     for (size_t k = 0; k < dim; k++) {
         if (!isfinite(t[k]))
             return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                             "%s has coordinate %zu = %g; coordinates must "
-                             "be finite", name, k + 1, t[k]);
+                             "%s has coordinate %zu = %s; coordinates must "
+                             "be finite", name, k + 1, CF__NUM(t[k]));
     }
     return CF_STATUS_OK;
 }

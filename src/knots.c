@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "bspline-private.h"
+#include "numtext-private.h"
 
 size_t
 cf_knots_count(int degree, size_t npoints)
@@ -39,8 +40,8 @@ cf__check_knot_order(const double *U, size_t n, const char *what,
     for (size_t i = 0; i < n; i++) {
         if (!isfinite(U[i]))
             return cf__error(diag, CF_STATUS_NOT_FINITE, (long)i,
-                             "%s %s%zu is %g; knots must be finite", what, u,
-                             i, U[i]);
+                             "%s %s%zu is %s; knots must be finite", what, u,
+                             i, CF__NUM(U[i]));
     }
     for (size_t i = 1; i < n; i++) {
         if (U[i] < U[i - 1]) {
@@ -75,7 +76,6 @@ cf_knots_validate(int degree, size_t npoints, const double *knots,
 {
     cf_diag_clear(diag);
     size_t need, m;
-    char b1[64];
     cf_status_t st = check_degree_count(0, degree, npoints,
                                         "points", diag);
 
@@ -97,10 +97,10 @@ cf_knots_validate(int degree, size_t npoints, const double *knots,
         while (j + 1 < nknots && knots[j + 1] == knots[i])
             j++;
         if (j - i + 1 > (size_t)degree + 1) {
-            snprintf(b1, sizeof b1, "%g", knots[i]);
             return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)i,
                              "knot u_%zu (%s) has multiplicity %zu; degree %d "
-                             "allows at most %d", i, b1, j - i + 1, degree,
+                             "allows at most %d", i, CF__NUM(knots[i]),
+                             j - i + 1, degree,
                              degree + 1);
         }
         i = j + 1;
@@ -108,9 +108,9 @@ cf_knots_validate(int degree, size_t npoints, const double *knots,
     m = nknots - 1;
     if (!(knots[degree] < knots[m - (size_t)degree]))
         return cf__error(diag, CF_STATUS_BAD_KNOTS, (long)degree,
-                         "the domain [u_%d, u_%zu] = [%g, %g] is empty",
-                         degree, m - (size_t)degree, knots[degree],
-                         knots[m - (size_t)degree]);
+                         "the domain [u_%d, u_%zu] = [%s, %s] is empty",
+                         degree, m - (size_t)degree, CF__NUM(knots[degree]),
+                         CF__NUM(knots[m - (size_t)degree]));
     return CF_STATUS_OK;
 }
 
@@ -127,10 +127,12 @@ check_gen(int degree, size_t npoints, double a, double b, const double *out,
                          "output is NULL");
     if (!isfinite(a) || !isfinite(b))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "interval [%g, %g] is not finite", a, b);
+                         "interval [%s, %s] is not finite", CF__NUM(a),
+                         CF__NUM(b));
     if (!(a < b))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "interval [%g, %g] is empty", a, b);
+                         "interval [%s, %s] is empty", CF__NUM(a),
+                         CF__NUM(b));
     return CF_STATUS_OK;
 }
 
@@ -197,13 +199,13 @@ cf_knots_clamped_averaged(int degree, size_t npoints, const double *params,
     for (size_t i = 0; i < npoints; i++) {
         if (!isfinite(params[i]))
             return cf__error(diag, CF_STATUS_NOT_FINITE, (long)i,
-                             "parameter %zu is %g; parameters must be "
-                             "finite", i, params[i]);
+                             "parameter %zu is %s; parameters must be "
+                             "finite", i, CF__NUM(params[i]));
         if (i > 0 && !(params[i] > params[i - 1]))
             return cf__error(diag, CF_STATUS_INVALID_ARG, (long)i,
-                             "parameter %zu (%g) is not larger than "
-                             "parameter %zu (%g)", i, params[i], i - 1,
-                             params[i - 1]);
+                             "parameter %zu (%s) is not larger than "
+                             "parameter %zu (%s)", i, CF__NUM(params[i]),
+                             i - 1, CF__NUM(params[i - 1]));
     }
     p = (size_t)degree;
     n = npoints - 1;
@@ -486,7 +488,7 @@ check_one(int i, int degree, const double *U, size_t nknots, double u,
     }
     if (!isfinite(u))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "parameter is %g", u);
+                         "parameter is %s", CF__NUM(u));
     return CF_STATUS_OK;
 }
 

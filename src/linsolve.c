@@ -10,6 +10,7 @@
 
 #include "core-private.h"
 #include "linsolve-private.h"
+#include "numtext-private.h"
 
 /* ---- tridiagonal -------------------------------------------------------- */
 
@@ -30,7 +31,7 @@ thomas(size_t n, const double *sub, const double *mid, const double *sup,
         if (!(fabs(m) > 8.0 * DBL_EPSILON * scale) || !isfinite(m))
             return cf__error(diag, CF_STATUS_DEGENERATE, (long)i,
                              "tridiagonal system is singular at row %zu "
-                             "(pivot %g)", i, m);
+                             "(pivot %s)", i, CF__NUM(m));
         c[i] = i + 1 < n ? sup[i] / m : 0.0;
         for (size_t k = 0; k < nrhs; k++) {
             double r = rhs[i * nrhs + k];
@@ -183,7 +184,7 @@ cf__band_factor(cf__band_t *b, cf_diag_t *diag)
         if (!(big > DBL_EPSILON * scale))
             return cf__error(diag, CF_STATUS_DEGENERATE, (long)k,
                              "banded system is singular at row %zu "
-                             "(largest pivot %g)", k, big);
+                             "(largest pivot %s)", k, CF__NUM(big));
         b->pivot[k] = p;
         if (p != k) {
             for (size_t j = k; j <= jend; j++) {

@@ -12,6 +12,7 @@
 #include "core-private.h"
 #include "bezier-private.h"
 #include "offset-trim-private.h"
+#include "numtext-private.h"
 
 void
 cf_offset_options_init(cf_offset_options_t *opt)
@@ -82,11 +83,11 @@ check_options(const cf_offset_options_t *opt, double d, cf_diag_t *diag)
 {
     if (!isfinite(d))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "offset distance %g is not finite", d);
+                         "offset distance %s is not finite", CF__NUM(d));
     if (!(opt->tolerance > 0.0) || !isfinite(opt->tolerance))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "offset tolerance %g must be finite and positive",
-                         opt->tolerance);
+                         "offset tolerance %s must be finite and positive",
+                         CF__NUM(opt->tolerance));
     if (opt->method != CF_OFFSET_LEVIEN &&
         opt->method != CF_OFFSET_TILLER_HANSON)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
@@ -114,16 +115,17 @@ check_resolution(const cf_bezier_t *const *pieces, size_t n, double d,
     ** (distances, areas, moments): beyond OFFSET_SCALE_MAX they overflow */
     if (!(scale <= OFFSET_SCALE_MAX))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "offset coordinates of size %g (distance %g) are "
-                         "too large (at most %g: the fits' cubes of them "
-                         "overflow)", scale, d, OFFSET_SCALE_MAX);
+                         "offset coordinates of size %s (distance %s) are "
+                         "too large (at most %s: the fits' cubes of them "
+                         "overflow)", CF__NUM(scale), CF__NUM(d),
+                         CF__NUM(OFFSET_SCALE_MAX));
     floor_tol = OFFSET_RESOLUTION * DBL_EPSILON * scale;
     if (!(tol >= floor_tol))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "offset tolerance %g is below what doubles resolve "
-                         "for coordinates of size %g (distance %g): it "
+                         "offset tolerance %s is below what doubles resolve "
+                         "for coordinates of size %s (distance %s): it "
                          "must be at least %.3g",
-                         tol, scale, d, floor_tol);
+                         CF__NUM(tol), CF__NUM(scale), CF__NUM(d), floor_tol);
     return CF_STATUS_OK;
 }
 
@@ -257,11 +259,11 @@ fail:
         return cf__error(diag, st, -1, "out of memory (offset)");
     if (st == CF_STATUS_NO_CONVERGENCE)
         return cf__error(diag, st, -1,
-                         "the offset at distance %g does not converge: "
+                         "the offset at distance %s does not converge: "
                          "more than %d pieces of one interval or %d in "
-                         "all would be needed for tolerance %g", d,
+                         "all would be needed for tolerance %s", CF__NUM(d),
                          CF__OFFSET_MAX_COVER, CF__OFFSET_MAX_PIECES,
-                         opt.tolerance);
+                         CF__NUM(opt.tolerance));
     return cf__error(diag, st, -1, "offset failed: %s",
                      cf_status_to_string(st));
 }

@@ -31,6 +31,7 @@
 #include "bspline-private.h"
 #include "core-private.h"
 #include "reduce-private.h"
+#include "numtext-private.h"
 
 typedef struct orig {
     double *hp;        /* count pieces of (p + 1) * h doubles */
@@ -192,8 +193,8 @@ check(const cf_bspline_t *c, const cf_reduce_options_t *o, cf_diag_t *diag)
         return st;
     if (!(o->tolerance > 0.0) || !isfinite(o->tolerance))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "tolerance %g must be finite and > 0",
-                         o->tolerance);
+                         "tolerance %s must be finite and > 0",
+                         CF__NUM(o->tolerance));
     return CF_STATUS_OK;
 }
 
@@ -259,9 +260,10 @@ cf_bspline_reduce(const cf_bspline_t *c, const cf_reduce_options_t *opt,
         }
         st = cf__error(diag, CF_STATUS_NO_CONVERGENCE, (long)which,
                        "reducing degree %d to %d needs an error of at "
-                       "least %.3g (piece %zu, on [%g, %g]); the tolerance "
-                       "is %.3g", c->p, q, worst, which, g.breaks[which],
-                       g.breaks[which + 1], o.tolerance);
+                       "least %.3g (piece %zu, on [%s, %s]); the tolerance "
+                       "is %.3g", c->p, q, worst, which,
+                       CF__NUM(g.breaks[which]),
+                       CF__NUM(g.breaks[which + 1]), o.tolerance);
         goto done;
     }
     st = assemble(&g, q, Q, target, o.tolerance, &F, &removed, diag);

@@ -6,6 +6,7 @@
 
 #include "surface-private.h"
 #include "curvefig/bernstein.h"
+#include "numtext-private.h"
 
 static size_t
 count_of(const cf_bezier_surface_t *s)
@@ -125,8 +126,8 @@ cf_bezier_surface_split(const cf_bezier_surface_t *s, cf_dir_t dir,
         return st;
     if (!(value > 0.0 && value < 1.0))
         return cf__error(diag, CF_STATUS_DOMAIN, -1,
-                         "split parameter %s = %.17g is not inside (0, 1)",
-                         dir == CF_DIR_U ? "u" : "v", value);
+                         "split parameter %s = %s is not inside (0, 1)",
+                         dir == CF_DIR_U ? "u" : "v", CF__NUM(value));
     st = as_curve(s, dir, &c, diag);
     if (st == CF_STATUS_OK)
         st = cf_bezier_split(c, value, lo ? &l : NULL, hi ? &r : NULL, diag);
@@ -192,9 +193,10 @@ cf_bezier_surface_segment(const cf_bezier_surface_t *s, double u0,
         if (!(ab[2 * d] >= 0.0 && ab[2 * d] < ab[2 * d + 1] &&
               ab[2 * d + 1] <= 1.0))
             return cf__error(diag, CF_STATUS_DOMAIN, -1,
-                             "sub-patch interval of %s [%.17g, %.17g] is "
-                             "not inside [0, 1] with its ends in order",
-                             d == 0 ? "u" : "v", ab[2 * d], ab[2 * d + 1]);
+                             "sub-patch interval of %s [%s, %s] is not "
+                             "inside [0, 1] with its ends in order",
+                             d == 0 ? "u" : "v", CF__NUM(ab[2 * d]),
+                             CF__NUM(ab[2 * d + 1]));
     return two_steps(s, ab, -1, -1, out, diag);
 }
 

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "surface-private.h"
+#include "numtext-private.h"
 
 cf_status_t
 cf__surf_fill(size_t dim, const double *points, const double *weights,
@@ -20,16 +21,16 @@ cf__surf_fill(size_t dim, const double *points, const double *weights,
                 w = weights[f];
                 if (!isfinite(w) || !(w > 0.0))
                     return cf__error(diag, CF_STATUS_BAD_WEIGHT, (long)f,
-                                     "weight W[%zu][%zu] is %g; weights "
+                                     "weight W[%zu][%zu] is %s; weights "
                                      "must be finite and positive",
-                                     i, j, w);
+                                     i, j, CF__NUM(w));
             }
             for (size_t k = 0; k < dim; k++) {
                 if (!isfinite(p[k]))
                     return cf__error(diag, CF_STATUS_NOT_FINITE, (long)f,
                                      "point P[%zu][%zu] has coordinate "
-                                     "%zu = %g; coordinates must be finite",
-                                     i, j, k + 1, p[k]);
+                                     "%zu = %s; coordinates must be finite",
+                                     i, j, k + 1, CF__NUM(p[k]));
                 hpts[f * hdim + k] = w * p[k];
             }
             if (weights != NULL)
@@ -50,14 +51,16 @@ cf__surf_check_h(size_t dim, const double *hpts, size_t nu, size_t nv,
         const double *p = hpts + f * hdim;
         if (!isfinite(p[dim]) || !(p[dim] > 0.0))
             return cf__error(diag, CF_STATUS_BAD_WEIGHT, (long)f,
-                             "weight W[%zu][%zu] is %g; weights must be "
-                             "finite and positive", f / nv, f % nv, p[dim]);
+                             "weight W[%zu][%zu] is %s; weights must be "
+                             "finite and positive", f / nv, f % nv,
+                             CF__NUM(p[dim]));
         for (size_t k = 0; k < dim; k++)
             if (!isfinite(p[k]))
                 return cf__error(diag, CF_STATUS_NOT_FINITE, (long)f,
                                  "point P[%zu][%zu] has homogeneous "
-                                 "coordinate %zu = %g; coordinates must be "
-                                 "finite", f / nv, f % nv, k + 1, p[k]);
+                                 "coordinate %zu = %s; coordinates must be "
+                                 "finite", f / nv, f % nv, k + 1,
+                                 CF__NUM(p[k]));
     }
     return CF_STATUS_OK;
 }
@@ -98,13 +101,13 @@ cf__surf_param(double a, double b, double *x, cf_dir_t dir, cf_diag_t *diag)
     double given = *x;
     cf_status_t st = cf__param_clamp(a, b, x);
     if (st == CF_STATUS_NOT_FINITE)
-        return cf__error(diag, st, -1, "parameter %s is %g",
-                         dir == CF_DIR_U ? "u" : "v", given);
+        return cf__error(diag, st, -1, "parameter %s is %s",
+                         dir == CF_DIR_U ? "u" : "v", CF__NUM(given));
     if (st != CF_STATUS_OK)
         return cf__error(diag, st, -1,
-                         "parameter %s = %.17g is outside the domain "
-                         "[%.17g, %.17g]", dir == CF_DIR_U ? "u" : "v",
-                         given, a, b);
+                         "parameter %s = %s is outside the domain [%s, %s]",
+                         dir == CF_DIR_U ? "u" : "v", CF__NUM(given),
+                         CF__NUM(a), CF__NUM(b));
     return CF_STATUS_OK;
 }
 

@@ -5,6 +5,7 @@
 
 #include "surface-private.h"
 #include "curvefig/surface-make.h"
+#include "numtext-private.h"
 
 /* s transposed (u and v exchanged), or NULL. */
 static cf_status_t
@@ -79,10 +80,11 @@ corner(const cf_bspline_t *a, const char *an, double ta,
     }
     if (gap > 1e-9 * size)
         return cf__error(diag, CF_STATUS_DEGENERATE, -1,
-                         "the corners do not meet: %s(%g) = "
-                         "(%g, %g, ...) but %s(%g) = (%g, %g, ...)", an, ta,
-                         x[0], dim > 1 ? x[1] : 0.0, bn, tb, y[0],
-                         dim > 1 ? y[1] : 0.0);
+                         "the corners do not meet: %s(%s) = "
+                         "(%s, %s, ...) but %s(%s) = (%s, %s, ...)", an,
+                         CF__NUM(ta), CF__NUM(x[0]),
+                         CF__NUM(dim > 1 ? x[1] : 0.0), bn, CF__NUM(tb),
+                         CF__NUM(y[0]), CF__NUM(dim > 1 ? y[1] : 0.0));
     return CF_STATUS_OK;
 }
 

@@ -5,6 +5,7 @@
 
 #include "surface-private.h"
 #include "curvefig/surface-make.h"
+#include "numtext-private.h"
 
 cf_status_t
 cf_surface_revolve(const cf_bspline_t *curve, const double *O,
@@ -109,8 +110,8 @@ check(const double *centre, double r, double h, cf_bspline_surface_t **out,
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "centre is NULL");
     if (!(r > 0.0) || !isfinite(r) || !(h > 0.0) || !isfinite(h))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "radius %g and height %g must be finite and "
-                         "positive", r, h);
+                         "radius %s and height %s must be finite and "
+                         "positive", CF__NUM(r), CF__NUM(h));
     return cf__check_finite_points(centre, 1, 3, 3, "centre", diag);
 }
 
@@ -153,8 +154,8 @@ cf_nurbs_torus(const double *centre, double R, double r,
     st = check(centre, r, R, out, diag);
     if (st == CF_STATUS_OK && !(R > r))
         st = cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                       "the radius %g of the centre circle must be "
-                       "larger than the tube's %g", R, r);
+                       "the radius %s of the centre circle must be "
+                       "larger than the tube's %s", CF__NUM(R), CF__NUM(r));
     if (st != CF_STATUS_OK)
         return st;
     c[0] = centre[0] + R;

@@ -6,6 +6,7 @@
 
 #include "core-private.h"
 #include "curvefig/surface-triangle.h"
+#include "numtext-private.h"
 
 struct cf_bezier_triangle {
     size_t dim, hdim;
@@ -73,8 +74,9 @@ cf_bezier_triangle_create(size_t dim, int n, const double *points,
             if (!isfinite(w) || !(w > 0.0)) {
                 cf__free(t);
                 return cf__error(diag, CF_STATUS_BAD_WEIGHT, (long)f,
-                                 "weight of b_%d%d%d is %g; weights must be "
-                                 "finite and positive", i, j, n - i - j, w);
+                                 "weight of b_%d%d%d is %s; weights must be "
+                                 "finite and positive", i, j, n - i - j,
+                                 CF__NUM(w));
             }
             for (size_t c = 0; c < dim; c++) {
                 double x = points[f * dim + c];
@@ -82,8 +84,8 @@ cf_bezier_triangle_create(size_t dim, int n, const double *points,
                     cf__free(t);
                     return cf__error(diag, CF_STATUS_NOT_FINITE, (long)f,
                                      "point b_%d%d%d has coordinate %zu = "
-                                     "%g; coordinates must be finite", i, j,
-                                     n - i - j, c + 1, x);
+                                     "%s; coordinates must be finite", i, j,
+                                     n - i - j, c + 1, CF__NUM(x));
                 }
                 t->pts[f * t->hdim + c] = w * x;
             }
@@ -360,8 +362,9 @@ cf_bezier_triangle_subdivide(const cf_bezier_triangle_t *t, double u,
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "patch is NULL");
     st = bary(u, v, b);
     if (st != CF_STATUS_OK)
-        return cf__error(diag, st, -1, "(u, v, w) = (%g, %g, %g) is not a "
-                         "point of the triangle", u, v, 1.0 - u - v);
+        return cf__error(diag, st, -1, "(u, v, w) = (%s, %s, %s) is not a "
+                         "point of the triangle", CF__NUM(u), CF__NUM(v),
+                         CF__NUM(1.0 - u - v));
     n = t->n;
     h = t->hdim;
     /* every level, homogeneous */

@@ -169,7 +169,7 @@ sc_html(PyObject *self, PyObject *args)
     cfpy_Script *o = SELF(self);
     Py_ssize_t i;
     const char *script_path, *out_path, *module;
-    cf__tool_limits limits = { { 0, 0 }, CF__TOOL_TIMEOUT };
+    cf__tool_limits limits = { { 0, 0 }, CF__TOOL_TIMEOUT, 0 };
     char err[512];
     int rc;
     if (!PyArg_ParseTuple(args, "nsss:html", &i, &script_path, &out_path,

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "lcommon.h"
+#include "../../src/numtext-private.h"
 
 /* More points or numbers than this in one table is certainly a mistake
 ** (and keeps n * dim * sizeof(double) far from overflow). */
@@ -120,17 +121,6 @@ entry_name(char *buf, size_t cap, const char *what, size_t i)
     return buf;
 }
 
-/* A number for a message: printf's "nan" and "-nan" as "NaN". */
-static const char *
-num_text(char *buf, size_t cap, double v)
-{
-    if (isnan(v))
-        snprintf(buf, cap, "NaN");
-    else
-        snprintf(buf, cap, "%g", v);
-    return buf;
-}
-
 /* Coordinate k of the point at tbl: point i (counted from 1) of a list,
 ** or the one point when i is 0. */
 static double
@@ -139,7 +129,7 @@ coord(lua_State *L, int tbl, lua_Integer k, const char *fn, const char *what,
 {
     int isnum;
     double v;
-    char point[80], num[32];
+    char point[80];
     if (i > 0)
         entry_name(point, sizeof point, what, i);
     else
@@ -151,8 +141,7 @@ coord(lua_State *L, int tbl, lua_Integer k, const char *fn, const char *what,
                       point, (int)k, luaL_typename(L, -1));
     if (!isfinite(v))
         cf__lua_error(L, "%s: %s coordinate %d is %s; coordinates must be "
-                      "finite", fn, point, (int)k,
-                      num_text(num, sizeof num, v));
+                      "finite", fn, point, (int)k, CF__NUM(v));
     lua_pop(L, 1);
     return v;
 }
@@ -256,7 +245,7 @@ cf__lua_check_numbers(lua_State *L, int idx, const char *fn, const char *what,
     buf = cf__lua_buffer(L, n);
     for (size_t i = 0; i < n; i++) {
         int isnum;
-        char name[80], num[32];
+        char name[80];
         lua_geti(L, idx, (lua_Integer)i + 1);
         buf[i] = (double)lua_tonumberx(L, -1, &isnum);
         if (!isnum)
@@ -266,7 +255,7 @@ cf__lua_check_numbers(lua_State *L, int idx, const char *fn, const char *what,
         if (!isfinite(buf[i]))
             cf__lua_error(L, "%s: %s is %s; it must be finite", fn,
                           entry_name(name, sizeof name, what, i + 1),
-                          num_text(num, sizeof num, buf[i]));
+                          CF__NUM(buf[i]));
         lua_pop(L, 1);
     }
     *count = n;
@@ -281,11 +270,9 @@ cf__lua_check_finite(lua_State *L, int idx, const char *fn, const char *what)
     if (!isnum)
         luaL_error(L, "%s: %s must be a number, got %s", fn, what,
                    luaL_typename(L, idx));
-    if (!isfinite(v)) {
-        char num[32];
+    if (!isfinite(v))
         cf__lua_error(L, "%s: %s is %s; it must be finite", fn, what,
-                      num_text(num, sizeof num, v));
-    }
+                      CF__NUM(v));
     return v;
 }
 

@@ -18,7 +18,7 @@
 #include "lcommon.h"
 #include "lschema.h"
 #include "lsurface.h"
-#include "numtext.h"
+#include "../../src/numtext-private.h"
 
 #define check cf__lua_check_surface
 
@@ -34,7 +34,6 @@ param_error(lua_State *L, const cf__lua_surface_t *b, const char *fn, double u, 
             cf_status_t st)
 {
     double ua = 0, ub = 1, va = 0, vb = 1;
-    char t[6][CF__NUM_TEXT];
     if (b->bs != NULL) {
         cf_bspline_surface_domain(b->bs, CF_DIR_U, &ua, &ub);
         cf_bspline_surface_domain(b->bs, CF_DIR_V, &va, &vb);
@@ -42,9 +41,8 @@ param_error(lua_State *L, const cf__lua_surface_t *b, const char *fn, double u, 
     if (st == CF_STATUS_DOMAIN)
         return cf__lua_error(L, "%s: (u, v) = (%s, %s) is outside the "
                              "domain [%s, %s] x [%s, %s]", fn,
-                             cf__num_text(u, t[0]), cf__num_text(v, t[1]),
-                             cf__num_text(ua, t[2]), cf__num_text(ub, t[3]),
-                             cf__num_text(va, t[4]), cf__num_text(vb, t[5]));
+                             CF__NUM(u), CF__NUM(v), CF__NUM(ua),
+                             CF__NUM(ub), CF__NUM(va), CF__NUM(vb));
     return cf__lua_fail(L, fn, st, NULL);
 }
 

@@ -16,7 +16,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "colour-vision.h"
+#include "colour-check.h"
 #include "output-private.h"
 #include "surface-lines.h"
 
@@ -273,6 +273,104 @@ hex(cf_color_t c)
         | (unsigned)lround(c.b * 255);
 }
 
+static const char *const what_names[] = { "line", "fill", "marker" };
+
+/* Whether the clash c (of other elements) is in r already: the same
+** vision, kind of paint and pair of colours. */
+static bool
+reported(const cf__colour_report_t *r, const cf__colour_clash_t *c)
+{
+    for (size_t k = 0; k < r->count; k++) {
+        const cf__colour_clash_t *d = &r->clashes[k];
+        if (d->vision == c->vision && d->paint == c->paint
+            && ((d->a.rgb == c->a.rgb && d->b.rgb == c->b.rgb)
+                || (d->a.rgb == c->b.rgb && d->b.rgb == c->a.rgb)))
+            return true;
+    }
+    return false;
+}
+
+static cf__colour_paint_t
+clash_paint(const paint_t *p)
+{
+    cf__colour_paint_t c;
+    c.element = p->element;
+    c.number = p->index + 1;
+    c.rgb = hex(p->color);
+    return c;
+}
+
+/* The clashes of paints i and j (only colour tells them apart) into r:
+** false when memory ran out. */
+static bool
+compare(const rec_t *rec, size_t i, size_t j, cf__colour_report_t *r)
+{
+    const paint_t *p = &rec->p[i], *q = &rec->p[j];
+    double normal = cf__colour_distance(CF__VISION_NORMAL, p->color,
+                                        q->color);
+    if (!(normal >= r->threshold))
+        return true;   /* alike on purpose, or already too close */
+    for (int v = CF__VISION_PROTAN; v < CF__VISION_LAST_; v++) {
+        cf__colour_clash_t c;
+        c.vision = (cf__vision_t)v;
+        c.paint = what_names[p->what];
+        c.de = cf__colour_distance(c.vision, p->color, q->color);
+        c.normal_de = normal;
+        c.a = clash_paint(p);
+        c.b = clash_paint(q);
+        if (c.de >= r->threshold || reported(r, &c))
+            continue;
+        if (r->count == r->cap) {
+            size_t cap = 2 * r->cap + 8;
+            cf__colour_clash_t *m = cf_realloc_array(r->clashes, cap,
+                                                     sizeof *m);
+            if (m == NULL)
+                return false;
+            r->clashes = m;
+            r->cap = cap;
+        }
+        r->clashes[r->count++] = c;
+    }
+    return true;
+}
+
+cf_status_t
+cf__colour_report(cf_figure_t *fig, double min_de, cf__colour_report_t *r,
+                  cf_diag_t *diag)
+{
+    rec_t rec;
+    cf_status_t st;
+    cf_diag_clear(diag);
+    memset(r, 0, sizeof *r);
+    if (!(isfinite(min_de) && min_de > 0 && min_de <= 100))
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "colour check: threshold %g must lie in (0, 100]",
+                           min_de);
+    r->threshold = min_de;
+    memset(&rec, 0, sizeof rec);
+    st = cf__figure_play(fig, 0, &colour_backend, &rec, diag);
+    if (st == CF_STATUS_OK)
+        surface_colours(fig, &rec);
+    r->paints = rec.n;
+    for (size_t i = 0; st == CF_STATUS_OK && i < rec.n; i++)
+        for (size_t j = i + 1; st == CF_STATUS_OK && j < rec.n; j++)
+            if (colour_alone(&rec.p[i], &rec.p[j]) && !compare(&rec, i, j, r))
+                st = cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                                 "out of memory checking the colours");
+    if (st == CF_STATUS_OK && rec.failed)
+        st = cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                         "out of memory checking the colours");
+    cf_free(rec.p);
+    return st;
+}
+
+void
+cf__colour_report_fini(cf__colour_report_t *r)
+{
+    cf_free(r->clashes);
+    memset(r, 0, sizeof *r);
+}
+
 static void
 put(cf__buf_t *b, const char *fmt, ...)
 {
@@ -286,30 +384,43 @@ put(cf__buf_t *b, const char *fmt, ...)
         cf__buf_append(b, s, (size_t)n < sizeof s ? (size_t)n : sizeof s - 1);
 }
 
-static const char *const what_names[] = { "line", "fill", "marker" };
-
-/* Whether the clash of colours (x, y) in vision v of paint kind w was
-** reported already (for other elements). */
-static bool
-reported(const paint_t *p, size_t n, size_t i, size_t j, const unsigned *done,
-         size_t ndone, int v)
-{
-    unsigned x = hex(p[i].color), y = hex(p[j].color);
-    (void)n;
-    for (size_t k = 0; k < ndone; k++) {
-        const unsigned *d = done + 4 * k;
-        if (d[0] == (unsigned)v && d[1] == (unsigned)p[i].what
-            && ((d[2] == x && d[3] == y) || (d[2] == y && d[3] == x)))
-            return true;
-    }
-    return false;
-}
-
 static void
-put_paint(cf__buf_t *b, const paint_t *p)
+put_paint(cf__buf_t *b, const cf__colour_paint_t *p)
 {
     put(b, "{\"element\": \"%s\", \"index\": %zu, \"color\": \"#%06x\"}",
-        p->element, p->index + 1, hex(p->color));
+        p->element, p->number, p->rgb);
+}
+
+cf_status_t
+cf__colour_report_json(const cf__colour_report_t *r, char **json,
+                       size_t *size, cf_diag_t *diag)
+{
+    cf__buf_t b;
+    memset(&b, 0, sizeof b);
+    *json = NULL;
+    *size = 0;
+    put(&b, "{\"threshold\": %g, \"paints\": %zu, \"clashes\": [",
+        r->threshold, r->paints);
+    for (size_t k = 0; k < r->count; k++) {
+        const cf__colour_clash_t *c = &r->clashes[k];
+        put(&b, "%s\n  {\"vision\": \"%s\", \"paint\": \"%s\", \"de\": %.2f, "
+            "\"normal_de\": %.2f, \"a\": ", k > 0 ? "," : "",
+            cf__vision_name(c->vision), c->paint, c->de, c->normal_de);
+        put_paint(&b, &c->a);
+        put(&b, ", \"b\": ");
+        put_paint(&b, &c->b);
+        put(&b, "}");
+    }
+    put(&b, "]}\n");
+    cf__buf_append(&b, "", 1);
+    if (b.failed) {
+        cf__buf_free(&b);
+        return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                           "out of memory checking the colours");
+    }
+    *json = (char *)b.data;
+    *size = b.size - 1;
+    return CF_STATUS_OK;
 }
 
 cf_status_t
@@ -317,81 +428,16 @@ cf_figure_colour_check(cf_figure_t *fig, double min_de, char **json,
                        size_t *size, cf_diag_t *diag)
 {
     cf_diag_clear(diag);
-    rec_t r;
-    cf__buf_t b;
+    cf__colour_report_t r;
     cf_status_t st;
-    unsigned *done = NULL;
-    size_t ndone = 0, cap = 0, clashes = 0;
     if (fig == NULL || json == NULL || size == NULL)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
                            "colour check: figure or output is NULL");
     *json = NULL;
     *size = 0;
-    if (!(isfinite(min_de) && min_de > 0 && min_de <= 100))
-        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                           "colour check: threshold %g must lie in (0, 100]",
-                           min_de);
-    memset(&r, 0, sizeof r);
-    memset(&b, 0, sizeof b);
-    st = cf__figure_play(fig, 0, &colour_backend, &r, diag);
+    st = cf__colour_report(fig, min_de, &r, diag);
     if (st == CF_STATUS_OK)
-        surface_colours(fig, &r);
-
-    if (st == CF_STATUS_OK) {
-        put(&b, "{\"threshold\": %g, \"paints\": %zu, \"clashes\": [",
-            min_de, r.n);
-        for (size_t i = 0; i < r.n; i++)
-            for (size_t j = i + 1; j < r.n; j++) {
-                double normal;
-                if (!colour_alone(&r.p[i], &r.p[j]))
-                    continue;
-                normal = cf__colour_distance(CF__VISION_NORMAL, r.p[i].color,
-                                             r.p[j].color);
-                if (!(normal >= min_de))
-                    continue;   /* alike on purpose, or already too close */
-                for (int v = CF__VISION_PROTAN; v < CF__VISION_LAST_; v++) {
-                    double d = cf__colour_distance((cf__vision_t)v,
-                                                   r.p[i].color, r.p[j].color);
-                    if (d >= min_de
-                        || reported(r.p, r.n, i, j, done, ndone, v))
-                        continue;
-                    if (ndone == cap) {
-                        unsigned *q = cf_realloc_array(done, cap = 2 * cap + 8,
-                                                       4 * sizeof *done);
-                        if (q == NULL) {
-                            b.failed = 1;
-                            break;
-                        }
-                        done = q;
-                    }
-                    done[4 * ndone] = (unsigned)v;
-                    done[4 * ndone + 1] = (unsigned)r.p[i].what;
-                    done[4 * ndone + 2] = hex(r.p[i].color);
-                    done[4 * ndone + 3] = hex(r.p[j].color);
-                    ndone++;
-                    put(&b, "%s\n  {\"vision\": \"%s\", \"paint\": \"%s\", "
-                        "\"de\": %.2f, \"normal_de\": %.2f, \"a\": ",
-                        clashes++ ? "," : "", cf__vision_name((cf__vision_t)v),
-                        what_names[r.p[i].what], d, normal);
-                    put_paint(&b, &r.p[i]);
-                    put(&b, ", \"b\": ");
-                    put_paint(&b, &r.p[j]);
-                    put(&b, "}");
-                }
-            }
-        put(&b, "]}\n");
-        cf__buf_append(&b, "", 1);
-        if (b.failed)
-            st = cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
-                             "out of memory checking the colours");
-    }
-    cf_free(done);
-    cf_free(r.p);
-    if (st != CF_STATUS_OK) {
-        cf__buf_free(&b);
-        return st;
-    }
-    *json = (char *)b.data;
-    *size = b.size - 1;
-    return CF_STATUS_OK;
+        st = cf__colour_report_json(&r, json, size, diag);
+    cf__colour_report_fini(&r);
+    return st;
 }

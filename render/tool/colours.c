@@ -1,71 +1,37 @@
 /*
 ** curvefig check SCRIPT [--json] [--min-de N]: the colours of every
 ** figure of a script that a colour vision deficiency or a greyscale print
-** makes hard to tell apart (cf_figure_colour_check, docs/
+** makes hard to tell apart (the library's report, colour-check.h; docs/
 ** accessibility.md).  A line per clash on stderr naming the figure, the
-** vision, the two elements and their colours, or with --json the checks
-** as one JSON document on stdout: {"script": ..., "figures": [{"name":
+** vision, the two elements and their colours, printed from the report,
+** and with --json the checks as one JSON document on stdout (each
+** figure's the JSON of cf_figure_colour_check, written from the same
+** report): {"script": ..., "figures": [{"name":
 ** ..., "threshold": ..., "paints": ..., "clashes": [...]}]}.  Exit 0 when
 ** no colours clash, 1 when some do (or the check failed).
 */
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 
+#include "colour-check.h"
 #include "curvefig/figure.h"
 #include "script.h"
 #include "tool.h"
 
-/* The value of "key": "..." or "key": number after p (NULL: not found);
-** the text up to its end into out. */
-static const char *
-field(const char *p, const char *key, char *out, size_t n)
+/* One line per clash of the report. */
+static void
+print_clashes(const char *script, const char *fig,
+              const cf__colour_report_t *r)
 {
-    char pat[40];
-    const char *s, *e;
-    snprintf(pat, sizeof pat, "\"%s\": ", key);
-    s = strstr(p, pat);
-    if (s == NULL)
-        return NULL;
-    s += strlen(pat);
-    if (*s == '"')
-        s++;
-    for (e = s; *e != '\0' && *e != '"' && *e != ',' && *e != '}'; e++)
-        ;
-    snprintf(out, n, "%.*s", (int)(e - s), s);
-    return e;
-}
-
-/* One line per clash of the JSON of cf_figure_colour_check. */
-static size_t
-print_clashes(const char *script, const char *fig, const char *json)
-{
-    const char *p = strstr(json, "\"clashes\": [");
-    size_t n = 0;
-    while (p != NULL && (p = strstr(p, "{\"vision\"")) != NULL) {
-        char vision[32], paint[16], de[32], normal[32];
-        char ea[32], ia[16], ca[16], eb[32], ib[16], cb[16];
-        const char *q = p;
-        q = field(q, "vision", vision, sizeof vision);
-        q = q ? field(q, "paint", paint, sizeof paint) : NULL;
-        q = q ? field(q, "de", de, sizeof de) : NULL;
-        q = q ? field(q, "normal_de", normal, sizeof normal) : NULL;
-        q = q ? field(q, "element", ea, sizeof ea) : NULL;
-        q = q ? field(q, "index", ia, sizeof ia) : NULL;
-        q = q ? field(q, "color", ca, sizeof ca) : NULL;
-        q = q ? field(q, "element", eb, sizeof eb) : NULL;
-        q = q ? field(q, "index", ib, sizeof ib) : NULL;
-        q = q ? field(q, "color", cb, sizeof cb) : NULL;
-        if (q == NULL)
-            break;
+    for (size_t k = 0; k < r->count; k++) {
+        const cf__colour_clash_t *c = &r->clashes[k];
         fprintf(stderr, "curvefig: %s: figure '%s': under %s the %s of "
-                "element %s (%s, %s) and the %s of element %s (%s, %s) are "
-                "%s apart (CIEDE2000; %s in normal vision)\n", script, fig,
-                vision, paint, ia, ea, ca, paint, ib, eb, cb, de, normal);
-        n++;
-        p = q;
+                "element %zu (%s, #%06x) and the %s of element %zu (%s, "
+                "#%06x) are %.2f apart (CIEDE2000; %.2f in normal vision)\n",
+                script, fig, cf__vision_name(c->vision), c->paint,
+                c->a.number, c->a.element, c->a.rgb, c->paint, c->b.number,
+                c->b.element, c->b.rgb, c->de, c->normal_de);
     }
-    return n;
 }
 
 int
@@ -85,19 +51,25 @@ cf__tool_colours(const cf_script_t *s, const char *script, double min_de,
         const char *name = cf_script_figure_name(s, i);
         char *text = NULL;
         size_t size;
+        cf__colour_report_t r;
         cf_diag_t diag;
-        if (cf_figure_colour_check(fig, min_de, &text, &size, &diag)
-            != CF_STATUS_OK) {
+        cf_status_t st = cf__colour_report(fig, min_de, &r, &diag);
+        if (st == CF_STATUS_OK && json)
+            st = cf__colour_report_json(&r, &text, &size, &diag);
+        if (st != CF_STATUS_OK) {
             fprintf(stderr, "curvefig: %s: figure '%s': %s\n", script, name,
                     diag.msg);
+            cf__colour_report_fini(&r);
             failed = true;
             continue;
         }
         if (json)
             printf("%s\n{\"name\": \"%s\", %s", i > 0 ? "," : "", name,
-                   strchr(text, '{') + 1);
-        clashes += print_clashes(script, name, text);
+                   text + 1);
+        print_clashes(script, name, &r);
+        clashes += r.count;
         cf_free(text);
+        cf__colour_report_fini(&r);
     }
     if (json)
         printf("]}\n");

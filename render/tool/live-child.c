@@ -119,6 +119,7 @@ child(int fd, int req, pid_t parent, const char *script,
     sigset_t none;
     char error[1024];
     long max, base = -1;
+    unsigned most = l->worker_runs > 0 ? l->worker_runs : CF__LIVE_WORKER_RUNS;
     /* the signals the server waits for are its own: here the defaults */
     sigemptyset(&none);
     sigprocmask(SIG_SETMASK, &none, NULL);
@@ -171,7 +172,7 @@ child(int fd, int req, pid_t parent, const char *script,
         flag = (unsigned char)(bad ? FLAG_BAD : 0);
         /* a run that failed may have left C memory behind (a longjmp
         ** out of the drawing): a fresh process for the next */
-        if ((!bad && error[0] != '\0') || runs >= CF__LIVE_WORKER_RUNS
+        if ((!bad && error[0] != '\0') || runs >= most
             || rss < 0 || rss - base > CF__LIVE_WORKER_GROWTH)
             flag |= FLAG_RETIRE;
         elen = (uint32_t)strlen(error);

@@ -1,7 +1,7 @@
 /*
-** `curvefig live SCRIPT.lua [--port N] [LIMITS]`: the live view of an
-** interactive figure, a web server on 127.0.0.1 (libmicrohttpd) with a
-** random token in its URL:
+** `curvefig live SCRIPT.lua [--port N] [--worker-runs N] [LIMITS]`: the
+** live view of an interactive figure, a web server on 127.0.0.1
+** (libmicrohttpd) with a random token in its URL:
 **
 **   GET  /TOKEN/              the page (render/web: page.js and its parts
 **                             page-rotate.js, page-keys.js; live.js, page.css)
@@ -12,15 +12,17 @@
 **
 ** Any other path is 403 without the token and 404 with it.  Every run
 ** reads the script again and runs it in a fresh sandbox, in a worker
-** process (live-child.c) that serves runs until one fails, with the
-** limits of render (--max-memory, --max-instructions, --timeout): a run
-** past the time limit is killed with its process and its error shown in
-** the page; one run at a time.  `curvefig live
-** SCRIPT.lua --once [VALUES]` prints the JSON of one run (VALUES: the
-** values' JSON, default {}), in every build, under the same limits.
+** process (live-child.c) that serves runs until one fails (or it served
+** --worker-runs, default 1000), with the limits of render (--max-memory,
+** --max-instructions, --timeout): a run past the time limit is killed
+** with its process and its error shown in the page; one run at a time.
+** `curvefig live SCRIPT.lua --once [VALUES]` prints the JSON of one run
+** (VALUES: the values' JSON, default {}), in every build, under the same
+** limits.
 */
 #include <errno.h>
 #include <fcntl.h>
+#include <math.h>
 #include <pthread.h>
 #include <signal.h>
 #include <stdbool.h>
@@ -129,7 +131,8 @@ void
 cf__tool_live_help(void)
 {
     fputs(
-        "usage: curvefig live SCRIPT.lua [--port N] [LIMITS]\n"
+        "usage: curvefig live SCRIPT.lua [--port N] [--worker-runs N] "
+        "[LIMITS]\n"
         "       curvefig live SCRIPT.lua --once [VALUES] [LIMITS]\n"
         "\n"
         "Serve the figures of an interactive script (slider{...} and\n"
@@ -148,6 +151,10 @@ cf__tool_live_help(void)
         "\n"
         "Options:\n"
         "  --port N            the port (default 0: a free port)\n"
+        "  --worker-runs N     the runs one worker process serves before a\n"
+        "                      fresh one replaces it (default 1000; it is\n"
+        "                      replaced sooner after a failed run or when\n"
+        "                      it grew by 64 MiB)\n"
         "  --once [VALUES]     print the JSON of one run and exit (VALUES:\n"
         "                      {\"t\": 0.5, \"P\": [[0, 0], [1, 2]]}; default {});\n"
         "                      exits 1 with the message (file:line) on a\n"
@@ -176,7 +183,7 @@ cf__tool_live(int argc, char **argv)
     const char *script = NULL, *once = NULL;
     bool want_once = false;
     long port = 0;
-    cf__tool_limits limits = { { 0, 0 }, CF__TOOL_TIMEOUT };
+    cf__tool_limits limits = { { 0, 0 }, CF__TOOL_TIMEOUT, 0 };
     char msg[200];
     int lim;
     for (int i = 1; i < argc; i++) {
@@ -194,6 +201,15 @@ cf__tool_live(int argc, char **argv)
                 port > 65535)
                 return usage("--port '%s': give a port from 0 to 65535 (0: "
                              "any free port)", argv[i]);
+        } else if (strcmp(a, "--worker-runs") == 0) {
+            double n;
+            if (i + 1 >= argc)
+                return usage("option '%s' needs a value", a);
+            if (cf__tool_number(argv[++i], 1, 1e9, &n) != 0 || n != floor(n))
+                return usage("--worker-runs '%s': give a whole number of "
+                             "runs from 1 to 1000000000 (default 1000)",
+                             argv[i]);
+            limits.worker_runs = (unsigned)n;
         } else if (i + 1 < argc && (lim = cf__tool_limit_option(
                        a, argv[i + 1], &limits, msg, sizeof msg)) != 0) {
             if (lim < 0)

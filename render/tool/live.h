@@ -12,8 +12,8 @@
 #include "runlimits.h"
 #include "script.h"
 
-/* `curvefig live SCRIPT.lua [--port N] [--once [VALUES]] [LIMITS]`; argv[0] is
-** "live".  Returns the exit status. */
+/* `curvefig live SCRIPT.lua [--port N] [--worker-runs N] [--once [VALUES]]
+** [LIMITS]`; argv[0] is "live".  Returns the exit status. */
 int cf__tool_live(int argc, char **argv);
 void cf__tool_live_help(void);
 
@@ -37,7 +37,8 @@ char *cf__live_error_json(const char *script, const char *msg, char *error,
 ** fresh sandbox (a new Lua state: nothing a run leaves in Lua reaches the
 ** next).  It is replaced -- killed and reaped, a new one forked -- when a
 ** run passes the time limit, is stopped, crashes or fails (a script
-** error, a limit of the sandbox), after CF__LIVE_WORKER_RUNS runs, and
+** error, a limit of the sandbox), after CF__LIVE_WORKER_RUNS runs (or the
+** limits' worker_runs: --worker-runs N), and
 ** when its memory grew by more than CF__LIVE_WORKER_GROWTH bytes since its
 ** first run.  pid -1: none. */
 typedef struct cf__live_worker {

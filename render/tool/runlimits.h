@@ -15,6 +15,9 @@
 typedef struct cf__tool_limits {
     cf_script_limits_t script;     /* 0: the sandbox's defaults */
     double timeout;                /* wall-clock seconds */
+    unsigned worker_runs;          /* live only: the runs a worker serves
+                                   ** before it is replaced (--worker-runs;
+                                   ** 0: CF__LIVE_WORKER_RUNS, live.h) */
 } cf__tool_limits;
 
 /* --max-memory MIB, --max-instructions N or --timeout S with its value:

@@ -27,7 +27,9 @@ it), runs the script as it is when the run starts, serves the next runs
 each in a fresh sandbox (a global, the string table and its metatable
 changed by one run are as new in the next), is replaced after a script
 error or a run past --max-memory (or --timeout, which kills it), and goes
-with the server on SIGTERM.
+with the server on SIGTERM.  With --worker-runs N a worker serves N runs
+and a fresh one the next, each run's answer that of a run in a process of
+its own (--once); a bad N is a usage error.
 """
 import json
 import os
@@ -92,6 +94,16 @@ def start(tool, script, *options):
             return p, m.group(1), int(m.group(2)), m.group(3)
     p.kill()
     sys.exit('FAIL: curvefig live printed no URL: ' + p.stderr.read())
+
+
+def stop(p, seconds):
+    """SIGTERM to the server, SIGKILL when it is not gone within seconds."""
+    p.terminate()
+    try:
+        p.wait(seconds)
+    except subprocess.TimeoutExpired:
+        p.kill()
+        p.wait()
 
 
 def raw_status(port, text):
@@ -353,6 +365,58 @@ def test_worker(tool, tmp, good):
             p.wait()
 
 
+def once(tool, script, values):
+    """The JSON of `curvefig live SCRIPT --once VALUES`: a run in a process
+    of its own."""
+    r = subprocess.run([tool, 'live', script, '--once', values],
+                       capture_output=True, text=True, timeout=120)
+    return json.loads(r.stdout) if r.returncode == 0 else {}
+
+
+def test_worker_runs(tool, tmp, good):
+    """--worker-runs N: a worker serves N runs, then retires and a fresh
+    one serves the next (the default, 1000, is the same rule); every run,
+    before and after the change of worker, answers exactly what a run in a
+    process of its own (--once) does.  A bad N is a usage error."""
+    script = os.path.join(tmp, 'runs.lua')
+    with open(script, 'w') as f:
+        f.write(good)
+    for bad in ['0', '-1', '2.5', 'many', '1e10']:
+        r = subprocess.run([tool, 'live', script, '--worker-runs', bad],
+                           capture_output=True, text=True, timeout=30)
+        check(r.returncode == 2 and "--worker-runs '%s': give a whole "
+              'number of runs from 1' % bad in r.stderr,
+              '--worker-runs %s: a usage error (%d, %r)'
+              % (bad, r.returncode, r.stderr.strip()))
+    n = 3
+    p, url, port, token = start(tool, script, '--worker-runs', str(n))
+    try:
+        first = wait_children(p.pid, 1)
+        check(len(first) == 1, 'a worker waits (%s)' % first)
+        workers = []
+        for k in range(n + 1):
+            values = '{"t": %g}' % (0.2 * (k + 1))
+            ok, j = run_ok(url, values.encode())
+            want = once(tool, script, values)
+            check(ok and j.get('figures') and
+                  j.get('figures') == want.get('figures'),
+                  'run %d (t = %g) answers as a run of its own does'
+                  % (k + 1, 0.2 * (k + 1)))
+            workers.append(wait_children(p.pid, 1))
+        check(workers[:n - 1] == [first] * (n - 1),
+              'runs 1 to %d in the first worker (%s: %s)'
+              % (n - 1, first, workers[:n - 1]))
+        check(len(workers[n - 1]) == 1 and workers[n - 1] != first and
+              not alive(first[0]),
+              'after run %d it retired and a fresh worker waits (%s, then '
+              '%s)' % (n, first, workers[n - 1]))
+        check(workers[n] == workers[n - 1] and alive(workers[n][0]),
+              'run %d in the fresh worker, which waits on (%s)'
+              % (n + 1, workers[n]))
+    finally:
+        stop(p, 30)
+
+
 def test_replaced_script(tool, tmp, good):
     """The script replaced while served, by a directory or a FIFO: an error
     in the page, promptly; the server runs on."""
@@ -386,12 +450,7 @@ def test_replaced_script(tool, tmp, good):
         check(st == 200 and json.loads(body).get('error', 1) is None,
               'the script back: the run works')
     finally:
-        p.terminate()
-        try:
-            p.wait(5)
-        except subprocess.TimeoutExpired:
-            p.kill()
-            p.wait()
+        stop(p, 5)
     check(p.returncode == 0, 'SIGTERM stops it after a FIFO')
 
 
@@ -538,6 +597,7 @@ def main():
         test_spinning_run(tool, tmp, good)
         test_replaced_script(tool, tmp, good)
         test_worker(tool, tmp, good)
+        test_worker_runs(tool, tmp, good)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
     if failures:

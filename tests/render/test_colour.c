@@ -6,11 +6,13 @@
 ** direction of colour, so that two colours apart along it look alike --;
 ** the palettes apart under every vision; palette names checked with the
 ** nearest one named; the check naming a red/green pair of lines under
-** deuteranopia and letting it be once the lines differ in dash; a net's
+** deuteranopia and letting it be once the lines differ in dash, and its
+** structured report (the clashes, their distances and paints); a net's
 ** levels told apart by dash and marker with the theme's redundant. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -21,6 +23,7 @@
 
 #include "curvefig/figure.h"
 #include "figure/colour-vision.h"
+#include "output/colour-check.h"
 
 static void
 near(double got, double want, double tol)
@@ -236,31 +239,40 @@ test_palettes(void **state)
 
 /* Two lines, red and green of one width and dash: a clash under
 ** deuteranopia, named; one of them dashed: none. */
+/* A figure of a red line and a green one (dashed or not), their styles
+** into red and green. */
+static cf_figure_t *
+red_green(bool dashed, cf_style_t *red, cf_style_t *green)
+{
+    static const double a[] = { 0, 0, 1, 1 }, b[] = { 0, 1, 1, 0 };
+    cf_figure_t *fig;
+    assert_int_equal(cf_figure_create(4, 3, CF_UNIT_CM, &fig, NULL), 0);
+    cf_style_init(red);
+    cf_style_init(green);
+    red->set = green->set = CF_STYLE_COLOR;
+    assert_int_equal(cf_color_parse("#d62728", &red->color, NULL), 0);
+    assert_int_equal(cf_color_parse("#2ca02c", &green->color, NULL), 0);
+    if (dashed) {
+        green->set |= CF_STYLE_DASH;
+        green->dash_count = 2;
+        green->dash[0] = 3;
+        green->dash[1] = 2;
+    }
+    assert_int_equal(cf_figure_add_polyline(fig, a, 2, false, red), 0);
+    assert_int_equal(cf_figure_add_polyline(fig, b, 2, false, green), 0);
+    return fig;
+}
+
 static void
 test_check(void **state)
 {
-    static const double a[] = { 0, 0, 1, 1 }, b[] = { 0, 1, 1, 0 };
     cf_figure_t *fig;
     cf_style_t red, green;
     char *json;
     size_t size;
     (void)state;
     for (int dashed = 0; dashed < 2; dashed++) {
-        assert_int_equal(cf_figure_create(4, 3, CF_UNIT_CM, &fig, NULL), 0);
-        cf_style_init(&red);
-        cf_style_init(&green);
-        red.set = green.set = CF_STYLE_COLOR;
-        assert_int_equal(cf_color_parse("#d62728", &red.color, NULL), 0);
-        assert_int_equal(cf_color_parse("#2ca02c", &green.color, NULL), 0);
-        if (dashed) {
-            green.set |= CF_STYLE_DASH;
-            green.dash_count = 2;
-            green.dash[0] = 3;
-            green.dash[1] = 2;
-        }
-        assert_int_equal(cf_figure_add_polyline(fig, a, 2, false, &red), 0);
-        assert_int_equal(cf_figure_add_polyline(fig, b, 2, false, &green),
-                         0);
+        fig = red_green(dashed, &red, &green);
         assert_int_equal(cf_figure_colour_check(fig, CF__COLOUR_MIN_DE,
                                                 &json, &size, NULL), 0);
         assert_int_equal(strlen(json), size);
@@ -277,6 +289,62 @@ test_check(void **state)
         cf_free(json);
         cf_figure_destroy(fig);
     }
+}
+
+/* The check as a structure (colour-check.h), which `curvefig check`
+** prints: red and green lines of one dash clash under exactly the visions
+** that bring them closer than the threshold, each with the distances
+** computed anew, the elements (from 1) and their colours; the JSON of
+** cf_figure_colour_check is the report's. */
+static void
+test_report(void **state)
+{
+    cf_style_t red, green;
+    cf_figure_t *fig = red_green(false, &red, &green);
+    cf__colour_report_t r;
+    char *json, *mine;
+    size_t size, mysize, clashes = 0;
+    double normal;
+    (void)state;
+    assert_int_equal(cf__colour_report(fig, CF__COLOUR_MIN_DE, &r, NULL), 0);
+    assert_true(r.threshold == CF__COLOUR_MIN_DE);
+    assert_int_equal(r.paints, 2);
+    normal = cf__colour_distance(CF__VISION_NORMAL, red.color, green.color);
+    assert_true(normal >= CF__COLOUR_MIN_DE);
+    for (int v = CF__VISION_PROTAN; v < CF__VISION_LAST_; v++) {
+        double d = cf__colour_distance((cf__vision_t)v, red.color,
+                                       green.color);
+        const cf__colour_clash_t *c = NULL;
+        for (size_t k = 0; k < r.count; k++)
+            if (r.clashes[k].vision == (cf__vision_t)v)
+                c = &r.clashes[k];
+        if (d >= CF__COLOUR_MIN_DE) {
+            assert_null(c);
+            continue;
+        }
+        assert_non_null(c);
+        clashes++;
+        assert_string_equal(c->paint, "line");
+        assert_true(c->de == d && c->normal_de == normal);
+        assert_string_equal(c->a.element, "polyline");
+        assert_string_equal(c->b.element, "polyline");
+        assert_true(c->a.number == 1 && c->a.rgb == 0xd62728);
+        assert_true(c->b.number == 2 && c->b.rgb == 0x2ca02c);
+    }
+    assert_int_equal(r.count, clashes);
+    assert_true(clashes >= 1);   /* deuteranopia at least (test_check) */
+    assert_int_equal(cf__colour_report_json(&r, &mine, &mysize, NULL), 0);
+    assert_int_equal(cf_figure_colour_check(fig, CF__COLOUR_MIN_DE, &json,
+                                            &size, NULL), 0);
+    assert_int_equal(size, mysize);
+    assert_string_equal(json, mine);
+    cf_free(json);
+    cf_free(mine);
+    cf__colour_report_fini(&r);
+    assert_int_equal(cf__colour_report(fig, 0.0, &r, NULL),
+                     CF_STATUS_INVALID_ARG);
+    cf__colour_report_fini(&r);
+    cf_figure_destroy(fig);
 }
 
 /* A cubic's de Casteljau net in Okabe and Ito's palette, whose orange and
@@ -372,6 +440,7 @@ main(void)
         cmocka_unit_test(test_known_pair),
         cmocka_unit_test(test_palettes),
         cmocka_unit_test(test_check),
+        cmocka_unit_test(test_report),
         cmocka_unit_test(test_redundant),
         cmocka_unit_test(test_level_style),
     };

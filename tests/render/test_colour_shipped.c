@@ -1,7 +1,7 @@
 /* The colours of every shipped figure (the scripts of figures/ and of its
 ** directories: interactive, surfaces, examples, sliders at their default
 ** values) stay apart
-** under protanopia, deuteranopia and tritanopia: cf_figure_colour_check at
+** under protanopia, deuteranopia and tritanopia: the colour check at
 ** a CIEDE2000 of 10 (docs/accessibility.md) finds no two paints that only
 ** colour tells apart and that such a vision brings closer: any clash
 ** fails (a script whose own colours clash sets its elements apart by a
@@ -18,6 +18,7 @@
 
 #include <cmocka.h>
 
+#include "colour-check.h"
 #include "curvefig/figure.h"
 #include "script.h"
 #include "shipped.h"
@@ -26,47 +27,26 @@ typedef struct tally {
     size_t clashes, greyscale;
 } tally_t;
 
-/* The text of "key": "VALUE" after p into out. */
-static const char *
-value(const char *p, const char *key, char *out, size_t n)
-{
-    char pat[32];
-    const char *s, *e;
-    snprintf(pat, sizeof pat, "\"%s\": \"", key);
-    s = strstr(p, pat);
-    if (s == NULL)
-        return NULL;
-    s += strlen(pat);
-    e = strchr(s, '"');
-    snprintf(out, n, "%.*s", (int)(e - s), s);
-    return e;
-}
-
 static int
 check_figure(void *ctx, const char *script, const char *name,
              cf_figure_t *fig)
 {
     tally_t *t = ctx;
-    char *json, vision[32], a[16], b[16];
-    size_t size;
+    cf__colour_report_t r;
     int faults = 0;
-    const char *p;
-    assert_int_equal(cf_figure_colour_check(fig, 10.0, &json, &size, NULL),
-                     0);
-    for (p = json; (p = value(p, "vision", vision, sizeof vision)) != NULL;) {
-        p = value(p, "color", a, sizeof a);
-        p = value(p, "color", b, sizeof b);
-        assert_non_null(p);
-        if (strcmp(vision, "greyscale") == 0) {
+    assert_int_equal(cf__colour_report(fig, 10.0, &r, NULL), 0);
+    for (size_t k = 0; k < r.count; k++) {
+        const cf__colour_clash_t *c = &r.clashes[k];
+        if (c->vision == CF__VISION_GREY) {
             t->greyscale++;
             continue;
         }
-        print_message("%s: figure '%s': %s and %s under %s\n", script, name,
-                      a, b, vision);
+        print_message("%s: figure '%s': #%06x and #%06x under %s\n", script,
+                      name, c->a.rgb, c->b.rgb, cf__vision_name(c->vision));
         t->clashes++;
         faults++;
     }
-    cf_free(json);
+    cf__colour_report_fini(&r);
     return faults;
 }
 

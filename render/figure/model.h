@@ -186,6 +186,7 @@ struct cf_figure {
     cf_background_t background;
     int aspect;              /* -1 automatic, 0 free, 1 kept */
     double tol;
+    bool draft;              /* cf_figure_set_draft */
     bool clip_page;          /* ink outside the page is cut, not an error */
     size_t proj_dim;
     double *proj;            /* 2 x proj_dim */

@@ -38,6 +38,7 @@ import tempfile
 FIG_TOL, FACTOR, SLACK = 0.01, 10, 0.02
 SCENE = 20   # the silhouette's and the hidden lines' tolerance, in
              # fitting tolerances (render/figure/el-surface.c)
+SPLIT = 99.0   # provisional: measured below
 failures = []
 
 
@@ -55,10 +56,15 @@ def once(tool, script, values):
     return json.loads(out.stdout)
 
 
-def paths(svg):
-    """The path data outside <defs> (the glyphs are the same)."""
+def paths(svg, dashed=None):
+    """The path data outside <defs> (the glyphs are the same); with
+    dashed True or False, only the dashed paths (hidden lines) or only
+    the others."""
     body = re.sub(r'<defs>.*?</defs>', '', svg, flags=re.S)
-    return re.findall(r'<path[^>]* d="([^"]*)"', body)
+    return [m.group(2) for m in re.finditer(r'<path([^>]*) d="([^"]*)"'
+                                            r'([^>]*)>', body)
+            if dashed is None or
+            dashed == ('stroke-dasharray' in m.group(1) + m.group(3))]
 
 
 def polylines(d, step=0.25):
@@ -95,9 +101,9 @@ def polylines(d, step=0.25):
     return out
 
 
-def segments(svg):
+def segments(svg, dashed=None):
     segs = []
-    for d in paths(svg):
+    for d in paths(svg, dashed):
         for pl in polylines(d):
             if len(pl) == 1:
                 segs.append((pl[0], pl[0]))
@@ -176,6 +182,22 @@ def compare(tool, script, name, values, differs):
               '%s, figure %s: the draft within %.3g bp of the exact '
               'drawing, both ways (%.3g bp)' % (what, fe['name'], bound,
                                                   far))
+        if surface:
+            # the split between visible and hidden (dashed) lines: each
+            # part of the draft within SPLIT bp of the same part of the
+            # exact drawing, both ways
+            split = 0.0
+            for dashed in (False, True):
+                he, hd = segments(fe['svg'], dashed), segments(fd['svg'],
+                                                              dashed)
+                if he or hd:
+                    split = max(split, farthest(hd, he, SPLIT) if he
+                                else math.inf, farthest(he, hd, SPLIT)
+                                if hd else math.inf)
+            check(split <= SPLIT,
+                  '%s, figure %s: the draft\'s visible and hidden lines '
+                  'within %.3g bp of the exact ones, both ways (%.3g bp)'
+                  % (what, fe['name'], SPLIT, split))
         if differs:
             check(fe['svg'] != fd['svg'], '%s, figure %s: the draft is '
                   'drawn differently (the flag reached the run)'

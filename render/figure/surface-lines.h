@@ -100,7 +100,8 @@ static inline bool
 cf__tol_serves(const cf_figure_t *fig, double made, double tol)
 {
     return made > 0
-        && made <= (fig->draft ? CF_FIGURE_DRAFT_SLACK * tol : tol);
+        && made <= (fig->draft || fig->refitting
+                    ? CF_FIGURE_DRAFT_SLACK * tol : tol);
 }
 
 /* Elements in space (el-space.c): whether p[3] is seen in the scene for

@@ -8,7 +8,8 @@ For every shipped interactive example (figures/interactive/*.lua): its
 page written by `curvefig render EXAMPLE -f html`, opened from the file in
 headless Chromium (/usr/bin/chromium, /usr/bin/chromedriver and selenium
 for /usr/bin/python3; exit 77, skipped, without them or without the
-module).  The pointer is driven as a reader's (Chrome DevTools' input
+module; the Chromium of tests/live/test_browser.py, with its options).
+The pointer is driven as a reader's (Chrome DevTools' input
 events, so that the page sees real pointer events with their capture):
 
   slider    a slider's thumb pressed and dragged, MOVES moves (default
@@ -35,16 +36,7 @@ import sys
 import tempfile
 import time
 
-CHROMIUM = '/usr/bin/chromium'
-CHROMEDRIVER = '/usr/bin/chromedriver'
 TARGET_MEDIAN, TARGET_P95 = 30, 60
-
-try:
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
-except ImportError:
-    print('SKIP: no selenium for ' + sys.executable)
-    sys.exit(77)
 
 # Once per page: the time of the last input event and of the last reply
 # shown, on the page's clock.
@@ -137,6 +129,10 @@ def drag(drv, kind, moves):
     x, y, sign = at
     step = {'slider': (6, 0), 'point': (4, 3), 'rotate': (5, 2)}[kind]
     quiet(drv)
+    # two presses on a 3D figure's background within 500 ms at one place
+    # are a double click (back to the script's view): a pause between
+    # drags, as a reader's
+    time.sleep(0.6)
     mouse(drv, 'mouseMoved', x, y, 0)
     drv.execute_script(ARM)
     mouse(drv, 'mousePressed', x, y, 1)
@@ -185,18 +181,13 @@ def main():
     d = os.path.join(src, 'figures', 'interactive')
     names = sys.argv[4:] or sorted(f[:-4] for f in os.listdir(d)
                                    if f.endswith('.lua'))
-    for path in (CHROMIUM, CHROMEDRIVER):
-        if not os.access(path, os.X_OK):
-            print('SKIP: no', path)
-            sys.exit(77)
-    opts = webdriver.ChromeOptions()
-    opts.binary_location = CHROMIUM
-    for a in ('--headless', '--no-sandbox', '--disable-gpu',
-              '--disable-dev-shm-usage', '--window-size=1400,1000',
-              '--no-first-run', '--disable-background-networking'):
-        opts.add_argument(a)
+    # the browser tests' Chromium, with their options (skipped, 77,
+    # without selenium, chromium or chromedriver)
+    sys.path.insert(0, os.path.join(src, 'tests', 'live'))
+    import test_browser
+    test_browser.need_browser()
     tmp = tempfile.mkdtemp(prefix='cf-page-latency-')
-    drv = webdriver.Chrome(service=Service(CHROMEDRIVER), options=opts)
+    drv = test_browser.make_driver()
     drv.set_script_timeout(60)
     try:
         for name in names:

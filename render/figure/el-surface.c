@@ -317,7 +317,7 @@ build(cf_figure_t *fig, surface_el_t *e, double tol)
     cf_scene_t *sc = NULL;
     cf_status_t st;
     bool need = e->opt.hidden != CF_HIDDEN_SHOW || e->opt.silhouette;
-    if (e->cache_tol > 0 && e->cache_tol <= tol)
+    if (cf__tol_serves(fig, e->cache_tol, tol))
         return CF_STATUS_OK;
     drop_cache(e);
     /* split points to 20 times the fitting tolerance: 0.2 bp (0.07 mm) by

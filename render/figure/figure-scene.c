@@ -41,13 +41,14 @@ build_scene(cf_figure_t *fig, double tol, cf_scene_t **out)
 }
 
 /* The figure's scene for visibility at tolerance tol, kept in the figure
-** for that tolerance and element count. */
+** for that tolerance (and, in a draft, slightly smaller ones) and element
+** count. */
 cf_status_t
 cf__figure_scene(cf_figure_t *fig, double tol, cf_scene_t **out)
 {
     cf_status_t st;
     if (fig->scene != NULL && fig->scene_els == fig->count
-        && fig->scene_tol <= tol) {
+        && cf__tol_serves(fig, fig->scene_tol, tol)) {
         *out = fig->scene;
         return CF_STATUS_OK;
     }

@@ -380,6 +380,14 @@ cf_figure_set_tolerance(cf_figure_t *fig, double tol_bp)
 }
 
 cf_status_t
+cf_figure_set_draft(cf_figure_t *fig, bool draft)
+{
+    CF__FIG_CHECK(fig);
+    fig->draft = draft;
+    return CF_STATUS_OK;
+}
+
+cf_status_t
 cf_figure_set_projection(cf_figure_t *fig, size_t dim, const double *m)
 {
     double *copy;

@@ -186,6 +186,9 @@ struct cf_figure {
     cf_background_t background;
     int aspect;              /* -1 automatic, 0 free, 1 kept */
     double tol;
+    bool draft;              /* cf_figure_set_draft */
+    bool refitting;          /* drawn for one of the ink refits of a page
+                                cropped to its ink (layout.c) */
     bool clip_page;          /* ink outside the page is cut, not an error */
     size_t proj_dim;
     double *proj;            /* 2 x proj_dim */

@@ -92,6 +92,18 @@ cf_status_t cf__figure_surface_pieces(cf_figure_t *fig, double tol,
 ** (figure-scene.c). */
 cf_status_t cf__figure_scene(cf_figure_t *fig, double tol, cf_scene_t **out);
 
+/* Whether what was made for tolerance `made` serves tolerance tol: made
+** within it, or, in a draft (cf_figure_set_draft), within
+** CF_FIGURE_DRAFT_SLACK times it (the layout's later passes ask for a few
+** percent less than its first). */
+static inline bool
+cf__tol_serves(const cf_figure_t *fig, double made, double tol)
+{
+    return made > 0
+        && made <= (fig->draft || fig->refitting
+                    ? CF_FIGURE_DRAFT_SLACK * tol : tol);
+}
+
 /* Elements in space (el-space.c): whether p[3] is seen in the scene for
 ** layout tolerance tol (true without one); for the probe above, the
 ** pieces of element el (index `index`) when it is one (families

@@ -335,8 +335,14 @@ cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
     ** the margin (label places change a little with the scale) */
     for (pass = 0; pass < (refine ? 8 : 1); pass++) {
         double prev[4];
+        cf_status_t st;
         memcpy(prev, avail, sizeof prev);
-        if (ink_of(fig, lay, refine, ink) != CF_STATUS_OK)
+        /* (surfaces made for an earlier refit may serve this one:
+        ** cf__tol_serves) */
+        fig->refitting = refine;
+        st = ink_of(fig, lay, refine, ink);
+        fig->refitting = false;
+        if (st != CF_STATUS_OK)
             return fig->err.status;
         make_room(fig, win, ink, lay, avail);
         compute_map(fig, win, keep, avail, lay);

@@ -202,6 +202,7 @@ read_frame(lua_State *L, cf_figure_t *fig, double w, double h)
     if (cf__params_draft(cf__lua_params(L))) {
         tol *= CF__PARAMS_DRAFT_FACTOR;
         given = true;
+        check(L, "figure", cf_figure_set_draft(fig, true), NULL);
     }
     if (given)
         check(L, "figure", cf_figure_set_tolerance(fig, tol), NULL);

@@ -72,6 +72,7 @@ test_figure(void **state)
     BAD(cf_figure_set_fit(NULL, 10, true));
     BAD(cf_figure_get_window(NULL, win, &sx, &sy));
     BAD(cf_figure_set_tolerance(NULL, 0.1));
+    BAD(cf_figure_set_draft(NULL, true));
     BAD(cf_figure_set_projection(NULL, 3, P4));
     BAD(cf_figure_project(NULL, P4, 1, 2, win));
     BAD(cf_figure_add_bezier(NULL, c, &st));

@@ -13,8 +13,12 @@
 ** by the parity of its index plus the input's size, so that both
 ** backends are checked and an execution pays for one layout a figure:
 ** the layout (label placement above all) costs a hundred times what
-** the backends do.  What the script prints goes to /dev/null.
+** the backends do.  Every other pair of sizes renders the figures as
+** drafts (cf_figure_set_draft, what an interactive page's drag asks
+** for: surfaces made once and reused by the layout's later passes).
+** What the script prints goes to /dev/null.
 */
+#include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -33,7 +37,8 @@ static FILE *sink;
 /* One figure in one format: it renders, or fails saying why; a PGF
 ** rendering is a whole pgfpicture. */
 static void
-render_one(cf_figure_t *fig, const char *name, cf_format_t format)
+render_one(cf_figure_t *fig, const char *name, cf_format_t format,
+           bool draft)
 {
     static const char end[] = "\\end{pgfpicture}%\n";
     unsigned char *out = NULL;
@@ -41,6 +46,7 @@ render_one(cf_figure_t *fig, const char *name, cf_format_t format)
     cf_diag_t diag;
     cf_status_t st;
     FZ_CHECK(fig != NULL && name != NULL, "figure in range");
+    FZ_CHECK(cf_figure_set_draft(fig, draft) == CF_STATUS_OK, "set_draft");
     cf_diag_clear(&diag);
     st = cf_figure_render(fig, format, NULL, &out, &outlen, &diag);
     fz_check_status(st, &diag, "figure_render");
@@ -89,7 +95,8 @@ LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         n = cf_script_figure_count(s);
         for (i = 0; i < n && i < 2; i++)
             render_one(cf_script_figure(s, i), cf_script_figure_name(s, i),
-                       (i + size) % 2 == 0 ? CF_FORMAT_SVG : CF_FORMAT_PGF);
+                       (i + size) % 2 == 0 ? CF_FORMAT_SVG : CF_FORMAT_PGF,
+                       (size / 2) % 2 == 1);
     }
     cf_script_destroy(s);
     free(code);

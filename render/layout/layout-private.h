@@ -27,6 +27,18 @@ cf_status_t cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay);
 cf_status_t cf__figure_build(cf_figure_t *fig, const cf__layout_t *lay,
                              cf__dl_t *dl);
 
+/* The largest page side (bp): PDF's implementation limit (200 in,
+** ISO 32000-1 Annex C), and near TeX's (16000 bp). */
+#define CF__PAGE_MAX 14400.0
+
+/* Whether a page cropped to the ink of dl, w x h bp, is at most
+** CF__PAGE_MAX a side: else an error (in diag) naming the element whose
+** ink lies farthest outside the drawing's page_w x page_h page (dl's
+** coordinates are that page's, before the crop). */
+cf_status_t cf__figure_check_size(const cf__dl_t *dl, double w, double h,
+                                  double page_w, double page_h,
+                                  cf_diag_t *diag);
+
 /* Whether a display list on a page of w x h bp shows the figure: an error
 ** (in diag) when it draws nothing at all, and on a fixed page (not cropped
 ** to the ink) one naming the element whose ink sticks out farthest and by

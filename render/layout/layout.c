@@ -406,18 +406,59 @@ draws(const cf__op_t *op)
         || op->kind == CF__OP_TEXT || op->kind == CF__OP_MESH;
 }
 
-/* The element (GROUP ... END at ops [g, e)) whose ink sticks out
-** farthest: an error naming it. */
-static cf_status_t
-page_overflow(const cf__dl_t *dl, double w, double h, cf_diag_t *diag)
+/* Whether every coordinate the operations [g, e) of dl put on the page is
+** a finite number: one of an element so far outside the drawing that its
+** place on the page overflows would be left out by every backend,
+** silently. */
+static bool
+group_finite(const cf__dl_t *dl, size_t g, size_t e)
+{
+    static const unsigned char per_seg[] = {
+        [CF__SEG_MOVE] = 2, [CF__SEG_LINE] = 2, [CF__SEG_CURVE] = 6,
+        [CF__SEG_RECT] = 4, [CF__SEG_ARC] = 5, [CF__SEG_CLOSE] = 0
+    };
+    size_t i, k, c;
+    for (i = g; i < e && i < dl->count; i++) {
+        const cf__op_t *op = &dl->ops[i];
+        if (op->kind == CF__OP_PATH) {
+            c = op->u.path.coord0;
+            for (k = 0; k < op->u.path.nsegs; k++) {
+                unsigned char sk = dl->segs[op->u.path.seg0 + k];
+                size_t n = sk < sizeof per_seg ? per_seg[sk] : 0, j;
+                for (j = 0; j < n && c + j < dl->ncoords; j++)
+                    if (!isfinite(dl->coords[c + j]))
+                        return false;
+                c += n;
+            }
+        } else if (op->kind == CF__OP_MARKER) {
+            if (!(isfinite(op->u.marker.x) && isfinite(op->u.marker.y)))
+                return false;
+        } else if (op->kind == CF__OP_TEXT) {
+            if (!(isfinite(op->u.text.px) && isfinite(op->u.text.py)
+                  && isfinite(op->u.text.ox) && isfinite(op->u.text.oy)))
+                return false;
+        }
+    }
+    return true;
+}
+
+/* The element (GROUP ... END at ops [g, e)) whose ink sticks out of a
+** w x h page farthest (one with a coordinate that is not finite,
+** farthest of all): its GROUP op's index, how far (bp, *worst) and where
+** (*side), and its name in who[0..whon-1] ("label 3 "P_0""); *worst 0
+** when none does. */
+static size_t
+farthest_group(const cf__dl_t *dl, double w, double h, double *worst,
+               const char **side, char *who, size_t whon)
 {
     size_t i = 0, worst_g = 0;
-    double worst = 0;
-    const char *worst_side = "", *text = NULL;
+    const char *text = NULL;
+    *worst = 0;
+    *side = "";
     while (i < dl->count) {
         size_t g = i, e = i + 1;
         double ink[4], o;
-        const char *sd;
+        const char *sd = "right";
         if (dl->ops[i].kind != CF__OP_GROUP) {
             i++;
             continue;
@@ -425,35 +466,91 @@ page_overflow(const cf__dl_t *dl, double w, double h, cf_diag_t *diag)
         while (e < dl->count && dl->ops[e].kind != CF__OP_END)
             e++;
         i = e + 1;
-        if (cf__dl_ink(dl, g, e + 1, ink) != 0)
+        if (!group_finite(dl, g, e))
+            o = HUGE_VAL;
+        else if (cf__dl_ink(dl, g, e + 1, ink) != 0)
             continue;
-        if (!(ink[2] > ink[0] && ink[3] > ink[1]))
+        else if (!(isfinite(ink[0]) && isfinite(ink[1]) && isfinite(ink[2])
+                   && isfinite(ink[3])))
+            o = HUGE_VAL;
+        else if (!(ink[2] > ink[0] && ink[3] > ink[1]))
             continue;
-        o = overflow(ink, w, h, &sd);
-        if (o > worst) {
-            worst = o;
+        else
+            o = overflow(ink, w, h, &sd);
+        if (o > *worst) {
+            *worst = o;
             worst_g = g;
-            worst_side = sd;
+            *side = sd;
         }
     }
-    if (!(worst > PAGE_SLACK))
-        return CF_STATUS_OK;
-    for (i = worst_g; i < dl->count && dl->ops[i].kind != CF__OP_END; i++)
+    for (i = worst_g; *worst > 0 && i < dl->count
+         && dl->ops[i].kind != CF__OP_END; i++)
         if (dl->ops[i].kind == CF__OP_TEXT) {
             text = dl->ops[i].u.text.source;
             break;
         }
+    if (*worst > 0 && dl->ops[worst_g].kind == CF__OP_GROUP)
+        snprintf(who, whon, "%s %zu%s%.200s%s",
+                 dl->ops[worst_g].u.group.name,
+                 dl->ops[worst_g].u.group.index + 1,
+                 text != NULL ? " \"" : "", text != NULL ? text : "",
+                 text != NULL ? "\"" : "");
+    else
+        snprintf(who, whon, "an element");
+    return worst_g;
+}
+
+/* The element whose ink sticks out farthest: an error naming it. */
+static cf_status_t
+page_overflow(const cf__dl_t *dl, double w, double h, cf_diag_t *diag)
+{
+    double worst;
+    const char *worst_side;
+    char who[256];
+    size_t g = farthest_group(dl, w, h, &worst, &worst_side, who, sizeof who);
+    if (!(worst > PAGE_SLACK))
+        return CF_STATUS_OK;
     return cf_diag_set(diag, CF_STATUS_INVALID_ARG,
-                       (long)dl->ops[worst_g].u.group.index,
-                       "%s %zu%s%s%s sticks out of the %.1f x %.1f mm page "
-                       "by %.1f mm (%.1f pt) on the %s; make the page or "
-                       "the margin larger, or let the figure clip "
-                       "(clip = true)",
-                       dl->ops[worst_g].u.group.name,
-                       dl->ops[worst_g].u.group.index + 1,
-                       text != NULL ? " \"" : "", text != NULL ? text : "",
-                       text != NULL ? "\"" : "", w * 25.4 / 72,
-                       h * 25.4 / 72, worst * 25.4 / 72, worst, worst_side);
+                       (long)dl->ops[g].u.group.index,
+                       "%s sticks out of the %.1f x %.1f mm page by %.1f mm "
+                       "(%.1f pt) on the %s; make the page or the margin "
+                       "larger, or let the figure clip (clip = true)", who,
+                       w * 25.4 / 72, h * 25.4 / 72, worst * 25.4 / 72,
+                       worst, worst_side);
+}
+
+cf_status_t
+cf__figure_check_size(const cf__dl_t *dl, double w, double h,
+                      double page_w, double page_h, cf_diag_t *diag)
+{
+    double worst;
+    const char *side;
+    char who[256];
+    size_t g;
+    if (w <= CF__PAGE_MAX && h <= CF__PAGE_MAX
+        && group_finite(dl, 0, dl->count))
+        return CF_STATUS_OK;
+    g = farthest_group(dl, page_w, page_h, &worst, &side, who, sizeof who);
+    if (!(worst > 0))
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "the figure's ink spans %g x %g pt, larger than "
+                           "the largest page (%g pt a side)", w, h,
+                           CF__PAGE_MAX);
+    if (!isfinite(worst))
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG,
+                           (long)dl->ops[g].u.group.index,
+                           "%s lies too far outside the drawing's %.1f x "
+                           "%.1f mm page to be drawn (its place on the page "
+                           "overflows); move it nearer", who,
+                           page_w * 25.4 / 72, page_h * 25.4 / 72);
+    return cf_diag_set(diag, CF_STATUS_INVALID_ARG,
+                       (long)dl->ops[g].u.group.index,
+                       "%s lies %.4g mm outside the drawing's %.1f x %.1f mm "
+                       "page, on the %s: the page cropped to the ink would "
+                       "be larger than the largest page (%g pt = %.2f m a "
+                       "side); move it nearer", who, worst * 25.4 / 72,
+                       page_w * 25.4 / 72, page_h * 25.4 / 72, side,
+                       CF__PAGE_MAX, CF__PAGE_MAX * 0.0254 / 72);
 }
 
 cf_status_t
@@ -470,7 +567,10 @@ cf__figure_check_page(const cf_figure_t *fig, const cf__dl_t *dl, double w,
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
                            "the figure draws nothing (%zu elements, none "
                            "with anything to show on the page)", fig->count);
-    if (fig->clip_page || !fixed)
+    if (!fixed || !group_finite(dl, 0, dl->count))
+        return cf__figure_check_size(dl, fixed ? 0 : w, fixed ? 0 : h, w, h,
+                                     diag);
+    if (fig->clip_page)
         return CF_STATUS_OK;
     if (cf__dl_ink(dl, 0, dl->count, ink) != 0)
         return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,

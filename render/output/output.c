@@ -104,6 +104,10 @@ make_job(cf_figure_t *fig, const cf_write_options_t *o, bool need_ink,
         h = ink[3] - ink[1];
         if (!tight)
             return CF_STATUS_OK;
+        /* an element far outside the drawing would make the page huge */
+        if (cf__figure_check_size(&job->dl, w, h, job->page.width,
+                                  job->page.height, diag) != CF_STATUS_OK)
+            return diag->status;
         if (!(w > 0 && h > 0)) {
             cf__dl_reset(&job->dl);
             break;

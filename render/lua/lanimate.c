@@ -17,6 +17,7 @@
 #include "anim-spec.h"
 #include "lanimate.h"
 #include "lcommon.h"
+#include "lcount.h"
 
 #define REGISTRY_KEY "curvefig.animate"
 
@@ -62,7 +63,7 @@ check_keys(lua_State *L, int idx, const char *what, const char *const *names,
             for (i = 0; i < n && strcmp(k, names[i]) != 0; i++)
                 ;
             if (i == n) {
-                near = cf_nearest_name(k, names, n);
+                near = cf__lua_nearest_name(L, k, names, n);
                 cf__lua_error(L, "%s: unknown key '%s'%s%s%s", what, k,
                               near ? " (did you mean " : "",
                               near ? near : "", near ? "?)" : "");

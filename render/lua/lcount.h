@@ -27,6 +27,11 @@ void cf__lua_open_counted(lua_State *L);
 ** budget, lcommon.h); past its limit raise the limit's error.  Returns 0
 ** when within it. */
 int cf__lua_charge(lua_State *L, unsigned long long steps);
+/* cf_nearest_name (the suggestion of an error message) with its work
+** charged first: a script that catches the error of a misspelt name in a
+** loop pays for the comparisons with every candidate. */
+const char *cf__lua_nearest_name(lua_State *L, const char *key,
+                                 const char *const *names, size_t n);
 /* Charge what a caught error cost Lua: a walk over the call stack. */
 void cf__lua_charge_unwind(lua_State *L);
 

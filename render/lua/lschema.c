@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "lcommon.h"
+#include "lcount.h"
 #include "lschema.h"
 
 #define MAX_NAMES 256 /* candidates gathered for one suggestion */
@@ -58,7 +59,7 @@ unknown_key(lua_State *L, const cf__lua_schema_t *s, const char *where,
     if (s->elsewhere != NULL && find_key(&s->elsewhere, 1, key) != NULL)
         luaL_error(L, "%s: '%s' is not %s %s: %s", where, key,
                    s->noun[0] == 'o' ? "an" : "a", s->noun, s->hint);
-    near = cf_nearest_name(key, names, n);
+    near = cf__lua_nearest_name(L, key, names, n);
     if (near != NULL)
         luaL_error(L, "%s: unknown %s '%s' (did you mean '%s'?)", where,
                    s->noun, key, near);
@@ -81,7 +82,7 @@ check_name(lua_State *L, const char *where, const cf__lua_key_t *k, int idx)
     for (; values[n] != NULL; n++)
         if (strcmp(values[n], v) == 0)
             return;
-    near = cf_nearest_name(v, values, n);
+    near = cf__lua_nearest_name(L, v, values, n);
     if (near != NULL)
         luaL_error(L, "%s: %s \"%s\" is unknown (did you mean \"%s\"?)",
                    where, key, v, near);
@@ -227,7 +228,7 @@ missing(lua_State *L)
                 names[n++] = local;
         }
     }
-    near = cf_nearest_name(key, names, n);
+    near = cf__lua_nearest_name(L, key, names, n);
     if (near != NULL)
         return luaL_error(L, "%s '%s' (did you mean '%s'?)", lead, key, near);
     return luaL_error(L, "%s '%s'", lead, key);

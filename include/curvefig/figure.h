@@ -161,15 +161,11 @@ CF_API cf_status_t cf_figure_set_clip(cf_figure_t *fig, bool clip);
 ** by cubic segments. */
 CF_API cf_status_t cf_figure_set_tolerance(cf_figure_t *fig, double tol_bp);
 
-/* A draft (default false): a quick, looser drawing for an interactive
-** page while the pointer drags (docs/interactive.md, "Drafts").  The
-** caller loosens the tolerance itself; a draft adds that the hidden lines
-** and silhouettes of surfaces (and their scene), made for the layout's
-** first pass, serve its later passes, whose tolerances are a few percent
-** smaller, as long as they were made within CF_FIGURE_DRAFT_SLACK times
-** the tolerance asked for (an exact figure makes them again for each
-** pass: the ink box of a page cropped to its ink is refitted up to 8
-** times).  Printed figures are never drafts. */
+/* A draft (default false): a quicker drawing for an interactive page while
+** the pointer drags (docs/interactive.md, "Drafts").  The caller loosens
+** the tolerance; a draft adds that the surfaces' hidden lines, silhouettes
+** and scene made for one layout pass serve the later passes within
+** CF_FIGURE_DRAFT_SLACK times their tolerance.  Printed figures never are. */
 #define CF_FIGURE_DRAFT_SLACK 1.25
 CF_API cf_status_t cf_figure_set_draft(cf_figure_t *fig, bool draft);
 

@@ -71,11 +71,10 @@
 ** tol / 4 or smaller than tol.  A ray from a point towards the eye is
 ** tested against the pieces whose image box contains the point's image
 ** (and the ranges of their control points across their two sides: outside
-** them no point of the piece can be) and
-** whose depth range reaches in front of it, by Newton's method on the
-** exact patch from the piece's middle (and its corners, for a folding
-** piece, or where Newton from the middle ends off the patch); a
-** folding piece smaller than tol where Newton finds nothing hides the
+** them no point of the piece can be) and whose depth range reaches in
+** front of it, by Newton's method on the exact patch from the piece's
+** middle (and its corners, for a folding piece, or where Newton from the
+** middle ends off the patch); a folding piece smaller than tol where Newton finds nothing hides the
 ** point if it lies wholly in front of it.  No facets, no raster.  Along a
 ** curve, visibility is sampled at image steps of at most 16 tol (and at
 ** least 64 samples per Bézier piece), and every change is located by

@@ -42,6 +42,7 @@
 #include "curvefig/geometry.h"
 #include "curvefig/output.h"
 #include "figure/region.h"
+#include "pngtest.h"
 #include "raycast-ref.h"
 #include "script.h"
 #include "surface-lines.h"
@@ -485,22 +486,6 @@ test_parts(void **state)
 
 /* ---- pixels ------------------------------------------------------------- */
 
-typedef struct png_read {
-    const unsigned char *data;
-    size_t size, at;
-} png_read_t;
-
-static cairo_status_t
-read_png(void *closure, unsigned char *buf, unsigned int len)
-{
-    png_read_t *r = closure;
-    if (r->at + len > r->size)
-        return CAIRO_STATUS_READ_ERROR;
-    memcpy(buf, r->data + r->at, len);
-    r->at += len;
-    return CAIRO_STATUS_SUCCESS;
-}
-
 /* The opaque red fill between the two shaded surfaces: red in the PNG
 ** where the ray caster sees it, not red where it is hidden. */
 static void
@@ -513,7 +498,6 @@ test_pixels(void **state)
     double map[6], px, vtol;
     cf_view_t v;
     rc_scene_t *rc;
-    png_read_t r;
     cairo_surface_t *img;
     const cf__tris_t *tris;
     cf_hidden_t hidden;
@@ -534,10 +518,7 @@ test_pixels(void **state)
     assert_true(el != SIZE_MAX && hidden == CF_HIDDEN_REMOVE);
     assert_int_equal(cf_figure_render_mapped(fig, CF_FORMAT_PNG, NULL, &png,
                                              &size, map, NULL), 0);
-    r.data = png;
-    r.size = size;
-    r.at = 0;
-    img = cairo_image_surface_create_from_png_stream(read_png, &r);
+    img = tu_png_decode(png, size);
     assert_int_equal(cairo_surface_status(img), CAIRO_STATUS_SUCCESS);
     cf_figure_get_size(fig, &wbp, &hbp);
     px = cairo_image_surface_get_width(img) / wbp;   /* pixels a bp */

@@ -599,6 +599,7 @@ close_fonts(void *ctx)
 cf__fonts_t
 cf__font_table_fonts(cf__font_table_t *t)
 {
-    cf__fonts_t f = { open_fonts, close_fonts, shape, release, outline, t };
+    cf__fonts_t f = { open_fonts, close_fonts, shape, release, outline,
+                      NULL, NULL, t };
     return f;
 }

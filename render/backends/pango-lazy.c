@@ -1,5 +1,7 @@
 /*
-** pango, loaded when a label is first set, not when the program starts.
+** pango, loaded when a label first needs it (a run the native fonts,
+** render/backends/font-native.c, hand to pango), not when the program
+** starts.
 **
 ** A figure without labels (a polyline, a curve) never calls pango; yet a
 ** library linked with pangocairo makes every program that uses it load
@@ -27,26 +29,25 @@
 
 #include <pango/pangocairo.h>
 
+#include "font-config.h"
 #include "pango-lazy.h"
 
 #define PANGO_LIBRARY "libpangocairo-1.0.so.0"
 
-/* pango and fontconfig are one per process: so is this state */
+/* pango is one per process: so is this state */
 static void *pango_handle;
 static pthread_once_t pango_once = PTHREAD_ONCE_INIT;
-static void (*before_open)(void);
 
 void
 cf__pango_before_open(void (*fn)(void))
 {
-    before_open = fn;
+    cf__fonts_before_open(fn);
 }
 
 static void
 open_pango(void)
 {
-    if (before_open != NULL)
-        before_open();
+    cf__fonts_configure();
     pango_handle = dlopen(PANGO_LIBRARY, RTLD_LAZY | RTLD_LOCAL);
 }
 

@@ -21,19 +21,21 @@
 **     the logical height of its glyphs: HarfBuzz's ascender and
 **     descender (pango-cairo's glyph extents, metrics unhinted).
 ** A font with variation axes or font features from the configuration is
-** marked unsupported: runs in it are pango's.
+** marked unsupported: runs in it are pango's.  The caches live as long as
+** the process, as pango's font map and fontconfig's do, in the C
+** library's heap (not the library's allocator, whose count of live blocks
+** they would otherwise stay in).
 */
 #include <math.h>
 #include <pthread.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include <cairo-ft.h>
 #include <hb-ot.h>
 
-#include "curvefig/core.h"
 #include "font-faces.h"
-#include "grow.h"
 
 #define MAX_SETS 64      /* font sets kept (descriptions of a process) */
 #define MAX_FACES 256
@@ -190,18 +192,18 @@ cf__nfontset_get(const char *family, bool italic, bool bold, int size,
     if (nsets == MAX_SETS || strlen(lang) >= sizeof s->lang)
         return NULL;
     fonts = the_config_fonts();
-    s = cf_calloc(1, sizeof *s);
+    s = calloc(1, sizeof *s);
     if (fonts == NULL || s == NULL) {
-        cf_free(s);
+        free(s);
         return NULL;
     }
-    s->family = cf_malloc(strlen(family) + 1);
+    s->family = malloc(strlen(family) + 1);
     s->pattern = make_pattern(family, italic, bold, size, lang);
     if (s->family == NULL || s->pattern == NULL) {
         if (s->pattern != NULL)
             FcPatternDestroy(s->pattern);
-        cf_free(s->family);
-        cf_free(s);
+        free(s->family);
+        free(s);
         return NULL;
     }
     strcpy(s->family, family);
@@ -229,7 +231,7 @@ hb_face_of(const char *file, int index)
     if (nhb_faces == MAX_HB_FACES)
         return NULL;
     e = &hb_faces[nhb_faces];
-    e->file = cf_malloc(strlen(file) + 1);
+    e->file = malloc(strlen(file) + 1);
     if (e->file == NULL)
         return NULL;
     strcpy(e->file, file);
@@ -307,7 +309,7 @@ new_face(FcPattern *prepared)
         }
     if (nfaces == MAX_FACES
         || FcPatternGetString(prepared, FC_FILE, 0, &file) != FcResultMatch
-        || (f = cf_calloc(1, sizeof *f)) == NULL) {
+        || (f = calloc(1, sizeof *f)) == NULL) {
         FcPatternDestroy(prepared);
         return NULL;
     }
@@ -318,7 +320,7 @@ new_face(FcPattern *prepared)
     hbf = hb_face_of((const char *)file, index);
     if (hbf == NULL) {
         FcPatternDestroy(prepared);
-        cf_free(f);
+        free(f);
         return NULL;
     }
     make_hb_font(f, hbf);
@@ -357,7 +359,11 @@ cf__nfontset_font(cf__nfontset_t *s, int i)
         } else if (s->sorted != NULL && k < (size_t)s->sorted->nfont) {
             p = FcFontRenderPrepare(NULL, s->pattern, s->sorted->fonts[k]);
         }
-        t = cf__grow_array(s->fonts, &s->cap, k + 1, sizeof *t, 8);
+        t = s->fonts;
+        if (k == s->cap) {
+            s->cap = s->cap ? 2 * s->cap : 8;
+            t = realloc(s->fonts, s->cap * sizeof *t);
+        }
         if (p == NULL || t == NULL) {
             if (p != NULL)
                 FcPatternDestroy(p);

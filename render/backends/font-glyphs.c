@@ -64,7 +64,7 @@ draw_span(cairo_t *cr, const cf__font_glyphs_t *g, const cf__font_span_t *s,
     cairo_text_cluster_t cstack[STACK_GLYPHS], *cc = cstack;
     cairo_scaled_font_t *sf = s->face->scaled;
     double base_x = xo + (double)s->x / CF__FONT_SCALE;
-    double base_y = yo + (double)g->baseline / CF__FONT_SCALE;
+    double base_y = yo + (double)(g->baseline - s->shift) / CF__FONT_SCALE;
     size_t i;
     int count = 0, x_position = 0;
     cairo_save(cr);
@@ -288,6 +288,7 @@ cf__font_glyphs_span(cf__font_glyphs_buf_t *b, const cf__font_face_t *face,
     s->byte = byte;
     s->nbytes = nbytes;
     s->x = x;
+    s->shift = 0;
     s->backward = false;
     b->g.spans = b->spans;
 }

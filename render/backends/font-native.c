@@ -33,6 +33,7 @@
 #include <string.h>
 
 #include <hb.h>
+#include <hb-ot.h>
 
 #include "curvefig/core.h"
 #include "font-config.h"
@@ -62,6 +63,7 @@ typedef struct item {
 typedef struct native_run {
     void *pango;          /* pango's run, when pango shaped it */
     bool native;          /* which one the last shape used */
+    bool oom;             /* the last shape ran out of memory */
     cf__font_glyphs_buf_t glyphs;
     item_t *items;
     size_t nitems, cap_items;
@@ -356,8 +358,10 @@ itemize(native_run_t *r, cf__nfontset_t *set, const char *text, size_t len)
             }
             (void)n_spaces;
             cur = new_item(r);
-            if (cur == NULL)
+            if (cur == NULL) {
+                r->oom = true;
                 return false;
+            }
             cur->offset = at;
             cur->font = font;
             cur->script = it.script;
@@ -470,6 +474,37 @@ shape_item(native_fonts_t *nf, native_run_t *r, const item_t *t,
     return !r->glyphs.failed;
 }
 
+/* pango's baseline shifts: the first item's script names the baseline
+** (roman, hanging, ideographic), each item's font says where that
+** baseline is for its script; an item sits lifted by the difference. */
+static void
+baseline_shifts(native_run_t *r)
+{
+    hb_ot_layout_baseline_tag_t tag = 0;
+    hb_position_t baseline = 0;
+    size_t i;
+    for (i = 0; i < r->nitems && i < r->glyphs.g.nspans; i++) {
+        const item_t *t = &r->items[i];
+        hb_tag_t stags[HB_OT_MAX_TAGS_PER_SCRIPT];
+        hb_tag_t ltags[HB_OT_MAX_TAGS_PER_LANGUAGE];
+        unsigned ns = HB_OT_MAX_TAGS_PER_SCRIPT;
+        unsigned nl = HB_OT_MAX_TAGS_PER_LANGUAGE;
+        hb_position_t own;
+        hb_ot_tags_from_script_and_language(
+            t->script, hb_language_from_string("c", -1), &ns, stags, &nl,
+            ltags);
+        if (tag == 0)
+            tag = hb_ot_layout_get_horizontal_baseline_tag_for_script(
+                t->script);
+        hb_ot_layout_get_baseline_with_fallback(
+            t->font->hb, tag, HB_DIRECTION_LTR, stags[ns - 1],
+            nl > 0 ? ltags[nl - 1] : HB_TAG_NONE, &own);
+        if (i == 0)
+            baseline = own;
+        r->glyphs.spans[i].shift = baseline - own;
+    }
+}
+
 /* a double in pango units, rounded as pango rounds */
 static int
 units(double v)
@@ -546,6 +581,8 @@ extents(native_run_t *r, cf__font_shape_t *out)
             }
             gx += gl->width;
         }
+        ink[1] -= s->shift;
+        log[1] -= s->shift;
         /* the line's rectangles */
         if (line_ink[2] == 0 || line_ink[3] == 0) {
             memcpy(line_ink, ink, sizeof ink);
@@ -582,7 +619,8 @@ extents(native_run_t *r, cf__font_shape_t *out)
     out->unknown = 0;
 }
 
-/* Shape req natively into r; false when pango must (the rule above). */
+/* Shape req natively into r; false when pango must (the rule above), or
+** when out of memory (r->oom). */
 static bool
 shape_native(native_fonts_t *nf, native_run_t *r, const cf__font_req_t *req,
              cf__font_shape_t *out)
@@ -593,6 +631,7 @@ shape_native(native_fonts_t *nf, native_run_t *r, const cf__font_req_t *req,
     size_t i;
     int x = 0;
     bool ok;
+    r->oom = false;
     if (!cf__native_fonts_handles(req->text, req->len))
         return false;
     default_language(lang, sizeof lang);
@@ -605,11 +644,14 @@ shape_native(native_fonts_t *nf, native_run_t *r, const cf__font_req_t *req,
     for (i = 0; ok && i < r->nitems; i++)
         ok = shape_item(nf, r, &r->items[i], req->text, req->len, &x);
     if (ok) {
+        baseline_shifts(r);
         extents(r, out);
         r->glyphs.g.shape = *out;
         r->glyphs.g.baseline = out->baseline;
     }
     cf__nfaces_unlock();
+    if (r->glyphs.failed)
+        r->oom = true;
     return ok && !r->glyphs.failed;
 }
 
@@ -659,6 +701,8 @@ shape(void *ctx, const cf__font_req_t *req, void **run,
     r->native = shape_native(f, r, req, out);
     if (r->native)
         return 0;
+    if (r->oom)
+        return -1;   /* out of memory, not a run for pango */
     if (f->pango == NULL) {
         f->pango = cf__pango_fonts.open(cf__pango_fonts.self);
         if (f->pango == NULL)

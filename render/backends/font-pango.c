@@ -137,9 +137,11 @@ describe(pango_run_t *r, const cf__font_req_t *req,
             cf__font_glyphs_span(&r->glyphs, NULL,
                                  (size_t)run->item->offset,
                                  (size_t)run->item->length, x);
-            if (!r->glyphs.failed)
-                r->glyphs.spans[r->glyphs.g.nspans - 1].backward =
-                    (run->item->analysis.level & 1) != 0;
+            if (!r->glyphs.failed) {
+                cf__font_span_t *s = &r->glyphs.spans[r->glyphs.g.nspans - 1];
+                s->backward = (run->item->analysis.level & 1) != 0;
+                s->shift = run->y_offset;
+            }
             for (i = 0; i < run->glyphs->num_glyphs; i++) {
                 const PangoGlyphInfo *gi = &run->glyphs->glyphs[i];
                 cf__font_glyph_t g;

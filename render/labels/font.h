@@ -68,6 +68,12 @@ typedef struct cf__font_span {
     size_t glyph, nglyphs;     /* its glyphs: glyphs[glyph ...] */
     size_t byte, nbytes;       /* its text: the run's text[byte ...] */
     int x;
+    int shift;                 /* how far pango's layout raises it: runs
+                                  of another script than the first one's
+                                  sit on its baseline (ideographic, hanging
+                                  or roman, from the fonts' tables); only
+                                  the drawing (font-glyphs.c) moves it, as
+                                  only pango's drawing did */
     bool backward;             /* right to left: glyphs in visual order,
                                   clusters from the last glyph */
 } cf__font_span_t;

@@ -10,7 +10,8 @@
 **     (the renderer's: no hinting, metrics unhinted, grey antialiasing)
 **     and by fontconfig's defaults;
 **   - its fonts: fontconfig's best match first, then the fonts of its
-**     trimmed sort from the second on, each prepared for the pattern
+**     trimmed sort from the second on (the sort made only when a font
+**     after the first is asked for), each prepared for the pattern
 **     (FcFontRenderPrepare), among the configuration's fonts of the
 **     formats HarfBuzz reads (TrueType and CFF);
 **   - a font's HarfBuzz font: the file's face, scale pixel size * 1024
@@ -36,6 +37,7 @@
 #include <hb-ot.h>
 
 #include "font-faces.h"
+#include "font-glyphs.h"
 
 #define MAX_SETS 64      /* font sets kept (descriptions of a process) */
 #define MAX_FACES 256
@@ -48,7 +50,8 @@ struct cf__nfontset {
     char lang[32];
     FcPattern *pattern;
     FcPattern *match;
-    FcFontSet *sorted;
+    FcFontSet *sorted;     /* made at need */
+    bool sort_failed;
     cf__nface_t **fonts;   /* prepared at need; NULL past the last */
     size_t nfonts, cap;
     bool ended;
@@ -212,8 +215,6 @@ cf__nfontset_get(const char *family, bool italic, bool bold, int size,
     s->bold = bold;
     s->size = size;
     s->match = FcFontSetMatch(NULL, &fonts, 1, s->pattern, &res);
-    s->sorted = FcFontSetSort(NULL, &fonts, 1, s->pattern, FcTrue, NULL,
-                              &res);
     sets[nsets++] = s;
     return s;
 }
@@ -342,8 +343,24 @@ new_face(FcPattern *prepared)
     snprintf(f->key, sizeof f->key, "%s|%d|%g|%d", (const char *)fam, slant,
              weight, width);
     f->face.key = f->key;
+    f->face.outlines = cf__font_outline_cache_new();
     faces[nfaces++] = f;
     return f;
+}
+
+/* The set's sort, made when a font after the first is needed (most
+** texts find all their characters in the best match). */
+static FcFontSet *
+sorted(cf__nfontset_t *s)
+{
+    FcFontSet *fonts = the_config_fonts();
+    FcResult res;
+    if (s->sorted == NULL && !s->sort_failed && fonts != NULL) {
+        s->sorted = FcFontSetSort(NULL, &fonts, 1, s->pattern, FcTrue, NULL,
+                                  &res);
+        s->sort_failed = s->sorted == NULL;
+    }
+    return s->sorted;
 }
 
 cf__nface_t *
@@ -356,7 +373,7 @@ cf__nfontset_font(cf__nfontset_t *s, int i)
         if (k == 0 && s->match != NULL) {
             FcPatternReference(s->match);
             p = s->match;
-        } else if (s->sorted != NULL && k < (size_t)s->sorted->nfont) {
+        } else if (sorted(s) != NULL && k < (size_t)s->sorted->nfont) {
             p = FcFontRenderPrepare(NULL, s->pattern, s->sorted->fonts[k]);
         }
         t = s->fonts;

@@ -10,6 +10,7 @@
 ** in doubles, cairo_show_text_glyphs with the span's text and clusters
 ** where the surface keeps text (PDF), and the current point restored.
 */
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -185,6 +186,115 @@ cf__font_glyph_outline(cairo_t *cr, cairo_scaled_font_t *sf,
     return rc;
 }
 
+/* A glyph's outline per bp, as cf__font_glyph_outline hands it out. */
+typedef struct glyph_path {
+    unsigned long id;
+    size_t nops;
+    char *ops;
+    double *v;     /* 2 * (1, 1, 3 or 0) numbers an op */
+} glyph_path_t;
+
+typedef struct outline_cache {
+    pthread_mutex_t lock;
+    glyph_path_t *paths;
+    size_t n, cap;
+} outline_cache_t;
+
+void *
+cf__font_outline_cache_new(void)
+{
+    outline_cache_t *c = calloc(1, sizeof *c);
+    if (c != NULL)
+        pthread_mutex_init(&c->lock, NULL);
+    return c;
+}
+
+typedef struct path_buf {
+    glyph_path_t p;
+    size_t nv, cap_ops, cap_v;
+    bool failed;
+} path_buf_t;
+
+static void
+collect(void *u, char op, const double *v)
+{
+    path_buf_t *b = u;
+    size_t k = op == 'C' ? 6 : op == 'Z' ? 0 : 2;
+    if (b->failed)
+        return;
+    if (b->p.nops == b->cap_ops) {
+        char *t = realloc(b->p.ops, b->cap_ops ? 2 * b->cap_ops : 64);
+        b->failed = t == NULL;
+        if (t == NULL)
+            return;
+        b->p.ops = t;
+        b->cap_ops = b->cap_ops ? 2 * b->cap_ops : 64;
+    }
+    if (b->nv + k > b->cap_v) {
+        size_t cap = b->cap_v ? 2 * b->cap_v : 256;
+        double *t = realloc(b->p.v, cap * sizeof *t);
+        b->failed = t == NULL;
+        if (t == NULL)
+            return;
+        b->p.v = t;
+        b->cap_v = cap;
+    }
+    b->p.ops[b->p.nops++] = op;
+    memcpy(b->p.v + b->nv, v, k * sizeof *v);
+    b->nv += k;
+}
+
+/* Hand glyph id's outline per bp to f: from the cache when the face has
+** one (filling it the first time), else from cairo. */
+static int
+glyph_outline_cached(cairo_t *cr, const cf__font_face_t *face,
+                     unsigned long id,
+                     void (*f)(void *u, char op, const double *v), void *u)
+{
+    outline_cache_t *c = face->outlines;
+    const glyph_path_t *p = NULL;
+    path_buf_t b;
+    size_t i, nv = 0;
+    if (c == NULL)
+        return cf__font_glyph_outline(cr, face->scaled, id, f, u);
+    pthread_mutex_lock(&c->lock);
+    for (i = 0; i < c->n && p == NULL; i++)
+        if (c->paths[i].id == id)
+            p = &c->paths[i];
+    if (p == NULL) {
+        memset(&b, 0, sizeof b);
+        b.p.id = id;
+        if (cf__font_glyph_outline(cr, face->scaled, id, collect, &b) != 0
+            || b.failed) {
+            free(b.p.ops);
+            free(b.p.v);
+            pthread_mutex_unlock(&c->lock);
+            return -1;
+        }
+        if (c->n == c->cap) {
+            size_t cap = c->cap ? 2 * c->cap : 32;
+            glyph_path_t *t = realloc(c->paths, cap * sizeof *t);
+            if (t == NULL) {
+                free(b.p.ops);
+                free(b.p.v);
+                pthread_mutex_unlock(&c->lock);
+                return -1;
+            }
+            c->paths = t;
+            c->cap = cap;
+        }
+        c->paths[c->n] = b.p;
+        p = &c->paths[c->n++];
+    }
+    for (i = 0; i < p->nops; i++) {
+        char op = p->ops[i];
+        f(u, op, p->v + nv);
+        nv += op == 'C' ? 6 : op == 'Z' ? 0 : 2;
+    }
+    pthread_mutex_unlock(&c->lock);
+    return 0;
+}
+
 typedef struct place {
     cf__pathb_t *out;
     double ox, oy, size;  /* the glyph's origin, the run's size */
@@ -228,8 +338,8 @@ cf__font_glyphs_outline(cairo_t **cr, const cf__font_glyphs_t *g, double x,
             if (drawn(gl->id)) {
                 p.ox = x + (double)(gx + gl->x) / CF__FONT_SCALE;
                 p.oy = y + (double)(g->baseline + gl->y) / CF__FONT_SCALE;
-                if (cf__font_glyph_outline(*cr, s->face->scaled, gl->id,
-                                           placed, &p) != 0)
+                if (glyph_outline_cached(*cr, s->face, gl->id, placed, &p)
+                    != 0)
                     out->failed = true;
             }
             gx += gl->width;

@@ -42,6 +42,12 @@ int cf__font_glyph_outline(cairo_t *cr, cairo_scaled_font_t *sf,
                            void (*f)(void *u, char op, const double *v),
                            void *u);
 
+/* A cache of a face's glyph outlines per bp (cf__font_glyph_outline's
+** numbers, computed once a glyph), for cf__font_face_t.outlines; NULL when
+** out of memory.  It lives as long as the face, in the C library's heap,
+** and may be used from several threads. */
+void *cf__font_outline_cache_new(void);
+
 /* The outlines of the run's glyphs appended to out, its top left at
 ** (x, y) (bp, y down), in the arithmetic of the page's glyph table
 ** (render/labels/font-table.c); *cr: a context made at need (the

@@ -111,6 +111,7 @@ add_face(pango_run_t *r, PangoFont *font)
     r->faces[r->nfaces].scaled =
         pango_cairo_font_get_scaled_font(PANGO_CAIRO_FONT(font));
     r->faces[r->nfaces].key = r->keys[r->nfaces];
+    r->faces[r->nfaces].outlines = NULL;   /* pango's fonts come and go */
     r->nfaces++;
     return true;
 }

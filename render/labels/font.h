@@ -54,6 +54,9 @@ typedef struct cf__font_face {
     void *scaled;          /* its cairo_scaled_font_t (natively) */
     const char *key;       /* the same string for the same face at any
                               size, another for another face */
+    void *outlines;        /* NULL, or a cache of its glyphs' outlines
+                              for a face that lives as long as the
+                              process (render/backends/font-glyphs.h) */
 } cf__font_face_t;
 
 typedef struct cf__font_glyph {

@@ -21,22 +21,11 @@
 ** only CF_API), so they never stand in for pango's own in a program that
 ** links pango itself.
 */
-#include <dlfcn.h>
-#include <pthread.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-
 #include <pango/pangocairo.h>
 
 #include "font-config.h"
+#include "lazy-forward.h"
 #include "pango-lazy.h"
-
-#define PANGO_LIBRARY "libpangocairo-1.0.so.0"
-
-/* pango is one per process: so is this state */
-static void *pango_handle;
-static pthread_once_t pango_once = PTHREAD_ONCE_INIT;
 
 void
 cf__pango_before_open(void (*fn)(void))
@@ -44,53 +33,22 @@ cf__pango_before_open(void (*fn)(void))
     cf__fonts_before_open(fn);
 }
 
-static void
-open_pango(void)
-{
-    cf__fonts_configure();
-    pango_handle = dlopen(PANGO_LIBRARY, RTLD_LAZY | RTLD_LOCAL);
-}
+/* pango is one per process: so is this state; the font configuration is
+** made before pango looks up a font */
+static cf__lazy_lib_t pango_lib = CF__LAZY_LIB(
+    "libpangocairo-1.0.so.0", "pango", "libpangocairo-1.0-0",
+    cf__fonts_configure);
 
-/* The address of pango's function name (never NULL: the program stops). */
 static void *
 pango_symbol(const char *name)
 {
-    void *p;
-    pthread_once(&pango_once, open_pango);
-    if (pango_handle == NULL) {
-        fprintf(stderr, "curvefig: labels need the pango library, which "
-                "cannot be loaded: %s (Debian: apt-get install "
-                "libpangocairo-1.0-0)\n", dlerror());
-        abort();
-    }
-    p = dlsym(pango_handle, name);
-    if (p == NULL) {
-        fprintf(stderr, "curvefig: the pango library %s has no function "
-                "%s (too old a version?)\n", PANGO_LIBRARY, name);
-        abort();
-    }
-    return p;
+    return cf__lazy_symbol(&pango_lib, name);
 }
 
-/* A forwarding function: the pointer found once per function (a race
-** only finds the same pointer twice). */
-#define FORWARD_(ret, name, params, call)                                  \
-    ret(name) params                                                       \
-    {                                                                      \
-        typedef ret(*fn_t) params;                                         \
-        static _Atomic(fn_t) cached;                                       \
-        fn_t f = cached;                                                   \
-        if (f == NULL) {                                                   \
-            void *p = pango_symbol(#name);                                 \
-            memcpy(&f, &p, sizeof f);                                      \
-            cached = f;                                                    \
-        }                                                                  \
-        call;                                                              \
-    }
 #define FORWARD(ret, name, params, args) \
-    FORWARD_(ret, name, params, return f args)
+    CF__FORWARD(pango_symbol, ret, name, params, args)
 #define FORWARD_VOID(name, params, args) \
-    FORWARD_(void, name, params, f args)
+    CF__FORWARD_VOID(pango_symbol, name, params, args)
 
 FORWARD_VOID(g_free, (gpointer mem), (mem))
 FORWARD(gpointer, g_object_ref, (gpointer object), (object))

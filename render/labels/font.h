@@ -3,14 +3,18 @@
 ** glyphs and measured, and the outlines of those glyphs.  The labels know
 ** nothing else of fonts: they are given a table of these functions (a
 ** figure's, render/figure/model.h, from its creation), chosen at the top
-** by render/output/create.c.  Two implementations:
-**   pango (render/backends/font-pango.c): the native renderer's, with
-**     cairo's font backend for unhinted metrics and for the outlines;
+** by render/output/create.c.  Three implementations:
+**   native (render/backends/font-native.c): the native renderer's,
+**     HarfBuzz's shaping in the faces pango 1.50 would choose, with the
+**     same numbers as pango; the runs it does not shape go to
+**   pango (render/backends/font-pango.c), with cairo's font backend for
+**     unhinted metrics (both draw and outline through cairo's scaled
+**     fonts, render/backends/font-glyphs.c);
 **   the glyph table (render/labels/font-table.c): plain C over the glyph
 **     data a course page embeds (render/output/label-glyphs.c writes it
-**     from pango's shaping): the browser module sets labels with it.
-** Both answer in pango units, so a text shaped at export is the same
-** numbers in the page as in the tool.
+**     from the native shaping): the browser module sets labels with it.
+** All answer in pango units (1/1024 bp), so a text shaped at export is
+** the same numbers in the page as in the tool.
 */
 #ifndef CURVEFIG_RENDER_FONT_H
 #define CURVEFIG_RENDER_FONT_H

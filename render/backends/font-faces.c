@@ -39,9 +39,6 @@
 #include "font-faces.h"
 #include "font-glyphs.h"
 
-#define MAX_SETS 64      /* font sets kept (descriptions of a process) */
-#define MAX_FACES 256
-#define MAX_HB_FACES 64
 
 struct cf__nfontset {
     char *family;
@@ -65,12 +62,29 @@ typedef struct hb_face_entry {
 
 /* One per process, as fontconfig's current configuration is. */
 static pthread_mutex_t faces_lock = PTHREAD_MUTEX_INITIALIZER;
-static cf__nfontset_t *sets[MAX_SETS];
-static int nsets;
-static cf__nface_t *faces[MAX_FACES];
-static int nfaces;
-static hb_face_entry_t hb_faces[MAX_HB_FACES];
-static int nhb_faces;
+static cf__nfontset_t **sets;      /* one a description asked for */
+static size_t nsets, cap_sets;
+static cf__nface_t **faces;        /* one a prepared pattern */
+static size_t nfaces, cap_faces;
+static hb_face_entry_t *hb_faces;  /* one a font file and index */
+static size_t nhb_faces, cap_hb_faces;
+
+/* arr (n used of *cap elements of size bytes) with room for one more:
+** arr itself, or arr reallocated (*cap set); NULL when out of memory
+** (arr untouched). */
+static void *
+room(void *arr, size_t n, size_t *cap, size_t size)
+{
+    void *t;
+    size_t c;
+    if (n < *cap)
+        return arr;
+    c = *cap ? 2 * *cap : 16;
+    t = realloc(arr, c * size);
+    if (t != NULL)
+        *cap = c;
+    return t;
+}
 static FcFontSet *config_fonts;   /* the fonts HarfBuzz reads */
 
 void
@@ -185,15 +199,21 @@ cf__nfontset_get(const char *family, bool italic, bool bold, int size,
     cf__nfontset_t *s;
     FcResult res;
     FcFontSet *fonts;
-    int i;
+    size_t i;
     for (i = 0; i < nsets; i++) {
         s = sets[i];
         if (s->italic == italic && s->bold == bold && s->size == size
             && strcmp(s->family, family) == 0 && strcmp(s->lang, lang) == 0)
             return s;
     }
-    if (nsets == MAX_SETS || strlen(lang) >= sizeof s->lang)
+    if (strlen(lang) >= sizeof s->lang)
         return NULL;
+    {
+        cf__nfontset_t **t = room(sets, nsets, &cap_sets, sizeof *sets);
+        if (t == NULL)
+            return NULL;
+        sets = t;
+    }
     fonts = the_config_fonts();
     s = calloc(1, sizeof *s);
     if (fonts == NULL || s == NULL) {
@@ -223,14 +243,16 @@ cf__nfontset_get(const char *family, bool italic, bool bold, int size,
 static hb_face_t *
 hb_face_of(const char *file, int index)
 {
-    int i;
+    size_t i;
     hb_blob_t *blob;
     hb_face_entry_t *e;
     for (i = 0; i < nhb_faces; i++)
         if (hb_faces[i].index == index && strcmp(hb_faces[i].file, file) == 0)
             return hb_faces[i].face;
-    if (nhb_faces == MAX_HB_FACES)
+    e = room(hb_faces, nhb_faces, &cap_hb_faces, sizeof *hb_faces);
+    if (e == NULL)
         return NULL;
+    hb_faces = e;
     e = &hb_faces[nhb_faces];
     e->file = malloc(strlen(file) + 1);
     if (e->file == NULL)
@@ -299,16 +321,21 @@ new_face(FcPattern *prepared)
     cf__nface_t *f;
     FcChar8 *file, *fam, *feat;
     FcCharSet *cs;
-    int index = 0, slant = 0, width = 100, i;
+    int index = 0, slant = 0, width = 100;
+    size_t i;
     double weight = 80;
     hb_face_t *hbf;
     hb_font_extents_t ext;
+    cf__nface_t **grown;
     for (i = 0; i < nfaces; i++)
         if (FcPatternEqual(faces[i]->pattern, prepared)) {
             FcPatternDestroy(prepared);
             return faces[i];
         }
-    if (nfaces == MAX_FACES
+    grown = room(faces, nfaces, &cap_faces, sizeof *faces);
+    if (grown != NULL)
+        faces = grown;
+    if (grown == NULL
         || FcPatternGetString(prepared, FC_FILE, 0, &file) != FcResultMatch
         || (f = calloc(1, sizeof *f)) == NULL) {
         FcPatternDestroy(prepared);

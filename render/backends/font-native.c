@@ -29,6 +29,7 @@
 */
 #include <locale.h>
 #include <math.h>
+#include <pthread.h>
 #include <stddef.h>
 #include <string.h>
 
@@ -70,15 +71,19 @@ typedef struct native_run {
 } native_run_t;
 
 /* pango's default language, canonical ("c" when the program never set
-** the locale). */
+** the locale), read once as pango reads it (pango_language_get_default):
+** one per process, as pango's is. */
+static char the_language[32];
+static pthread_once_t language_once = PTHREAD_ONCE_INIT;
+
 static void
-default_language(char *out, size_t cap)
+read_language(void)
 {
     const char *lc = setlocale(LC_CTYPE, NULL);
     size_t n = 0;
     if (lc == NULL)
         lc = "C";
-    for (; *lc != '\0' && n + 1 < cap; lc++) {
+    for (; *lc != '\0' && n + 1 < sizeof the_language; lc++) {
         char ch = *lc;
         if (ch >= 'A' && ch <= 'Z')
             ch = (char)(ch - 'A' + 'a');
@@ -87,9 +92,16 @@ default_language(char *out, size_t cap)
         else if (!((ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9')
                    || ch == '-'))
             break;
-        out[n++] = ch;
+        the_language[n++] = ch;
     }
-    out[n] = '\0';
+    the_language[n] = '\0';
+}
+
+static const char *
+default_language(void)
+{
+    pthread_once(&language_once, read_language);
+    return the_language;
 }
 
 static bool
@@ -137,9 +149,8 @@ bool
 cf__native_fonts_handles(const char *text, size_t len)
 {
     hb_unicode_funcs_t *u = hb_unicode_funcs_get_default();
-    char lang[32];
+    const char *lang = default_language();
     size_t k = 0;
-    default_language(lang, sizeof lang);
     if (len == 0 || (strcmp(lang, "c") != 0 && strcmp(lang, "posix") != 0))
         return false;
     while (k < len) {
@@ -326,7 +337,7 @@ itemize(native_run_t *r, cf__nfontset_t *set, const char *text, size_t len)
             size_t at = k;
             unsigned c = next_char(text, len, &k);
             cf__nface_t *font = NULL;
-            int pos = 0xffff, n_spaces = 0;
+            int pos = 0xffff;
             size_t fs = first_space;
             bool space = as_space(u, c);
             if (space) {
@@ -350,13 +361,10 @@ itemize(native_run_t *r, cf__nfontset_t *set, const char *text, size_t len)
                 }
                 if (cur->font == font)
                     continue;
-                if (fs != (size_t)-1 && cur->offset < fs && pos < cur_pos) {
-                    n_spaces = 1;   /* the spaces go with the new font */
-                    at = fs;
-                }
+                if (fs != (size_t)-1 && cur->offset < fs && pos < cur_pos)
+                    at = fs;   /* the spaces go with the new font */
                 cur->length = at - cur->offset;
             }
-            (void)n_spaces;
             cur = new_item(r);
             if (cur == NULL) {
                 r->oom = true;
@@ -625,7 +633,7 @@ static bool
 shape_native(native_fonts_t *nf, native_run_t *r, const cf__font_req_t *req,
              cf__font_shape_t *out)
 {
-    char lang[32];
+    const char *lang = default_language();
     cf__nfontset_t *set;
     cf__font_shape_t none;
     size_t i;
@@ -634,7 +642,6 @@ shape_native(native_fonts_t *nf, native_run_t *r, const cf__font_req_t *req,
     r->oom = false;
     if (!cf__native_fonts_handles(req->text, req->len))
         return false;
-    default_language(lang, sizeof lang);
     memset(&none, 0, sizeof none);
     cf__nfaces_lock();
     set = cf__nfontset_get(req->family, req->italic, req->bold,

@@ -51,13 +51,7 @@ pango_symbol(const char *name)
     CF__FORWARD_VOID(pango_symbol, name, params, args)
 
 FORWARD_VOID(g_free, (gpointer mem), (mem))
-FORWARD(gpointer, g_object_ref, (gpointer object), (object))
 FORWARD_VOID(g_object_unref, (gpointer object), (object))
-FORWARD(gpointer, g_object_get_data, (GObject *object, const gchar *key),
-        (object, key))
-FORWARD_VOID(g_object_set_data_full,
-             (GObject *object, const gchar *key, gpointer data,
-              GDestroyNotify destroy), (object, key, data, destroy))
 FORWARD(GTypeInstance *, g_type_check_instance_cast,
         (GTypeInstance *instance, GType iface_type), (instance, iface_type))
 
@@ -82,10 +76,6 @@ FORWARD(PangoFontDescription *, pango_font_describe, (PangoFont *font),
         (font))
 FORWARD_VOID(pango_font_description_free, (PangoFontDescription *desc),
              (desc))
-FORWARD(const char *, pango_font_description_get_family,
-        (const PangoFontDescription *desc), (desc))
-FORWARD(PangoStyle, pango_font_description_get_style,
-        (const PangoFontDescription *desc), (desc))
 FORWARD(PangoFontDescription *, pango_font_description_new, (void), ())
 FORWARD_VOID(pango_font_description_set_absolute_size,
              (PangoFontDescription *desc, double size), (desc, size))
@@ -110,8 +100,6 @@ FORWARD_VOID(pango_layout_get_extents,
              (PangoLayout *layout, PangoRectangle *ink_rect,
               PangoRectangle *logical_rect),
              (layout, ink_rect, logical_rect))
-FORWARD(const PangoFontDescription *, pango_layout_get_font_description,
-        (PangoLayout *layout), (layout))
 FORWARD(PangoLayoutIter *, pango_layout_get_iter, (PangoLayout *layout),
         (layout))
 FORWARD(int, pango_layout_get_unknown_glyphs_count, (PangoLayout *layout),
@@ -119,10 +107,6 @@ FORWARD(int, pango_layout_get_unknown_glyphs_count, (PangoLayout *layout),
 FORWARD_VOID(pango_layout_iter_free, (PangoLayoutIter *iter), (iter))
 FORWARD(int, pango_layout_iter_get_baseline, (PangoLayoutIter *iter),
         (iter))
-FORWARD_VOID(pango_layout_iter_get_run_extents,
-             (PangoLayoutIter *iter, PangoRectangle *ink_rect,
-              PangoRectangle *logical_rect),
-             (iter, ink_rect, logical_rect))
 FORWARD(PangoLayoutRun *, pango_layout_iter_get_run_readonly,
         (PangoLayoutIter *iter), (iter))
 FORWARD(gboolean, pango_layout_iter_next_run, (PangoLayoutIter *iter),

@@ -3,20 +3,19 @@
 ** font backend, here among the backends because it includes cairo's and
 ** pango's headers (the labels see only the table of functions, which
 ** render/output/create.c hands to the figures and labels it makes).  A
-** run is a PangoLayout; its outlines are pango's glyph paths through
-** cairo (a path, never drawn).  Metrics and outlines are unhinted, so
-** glyph positions are the same in every output format and at every
-** resolution.
+** run is a PangoLayout, described once shaped as its glyphs (font.h:
+** cf__font_glyphs_t), which is all the backends see of it; its outlines
+** are the glyphs' paths through cairo (a path, never drawn).  Metrics and
+** outlines are unhinted, so glyph positions are the same in every output
+** format and at every resolution.  The native fonts (font-native.c) hand
+** the runs they do not shape themselves to these.
 */
 #include <pango/pangocairo.h>
-#include <stdio.h>
-#include <stdlib.h>
+#include <string.h>
 
 #include "curvefig/core.h"
+#include "font-glyphs.h"
 #include "font-pango.h"
-
-/* the key of a run's size as it was asked for (a double) */
-#define SIZE_KEY "curvefig-size"
 
 typedef struct pango_fonts {
     PangoContext *pc;
@@ -63,25 +62,127 @@ close_fonts(void *ctx)
     cf_free(f);
 }
 
-PangoContext *
-cf__pango_fonts_context(void *ctx)
+/* A run: pango's layout and its glyphs described. */
+typedef struct pango_run {
+    PangoLayout *layout;
+    cf__font_glyphs_buf_t glyphs;
+    cf__font_face_t *faces;   /* one a span */
+    char **keys;
+    size_t nfaces, cap_faces;
+} pango_run_t;
+
+static void
+clear_faces(pango_run_t *r)
 {
-    return ((pango_fonts_t *)ctx)->pc;
+    size_t i;
+    for (i = 0; i < r->nfaces; i++)
+        g_free(r->keys[i]);
+    r->nfaces = 0;
+}
+
+/* The face of font: its scaled font and its description without size. */
+static bool
+add_face(pango_run_t *r, PangoFont *font)
+{
+    PangoFontDescription *d;
+    if (r->nfaces == r->cap_faces) {
+        size_t cap = r->cap_faces ? 2 * r->cap_faces : 4;
+        cf__font_face_t *f = cf_alloc_array(cap, sizeof *f);
+        char **k = cf_alloc_array(cap, sizeof *k);
+        if (f == NULL || k == NULL) {
+            cf_free(f);
+            cf_free(k);
+            return false;
+        }
+        if (r->nfaces > 0) {
+            memcpy(f, r->faces, r->nfaces * sizeof *f);
+            memcpy(k, r->keys, r->nfaces * sizeof *k);
+        }
+        cf_free(r->faces);
+        cf_free(r->keys);
+        r->faces = f;
+        r->keys = k;
+        r->cap_faces = cap;
+    }
+    d = pango_font_describe(font);
+    pango_font_description_unset_fields(d, PANGO_FONT_MASK_SIZE);
+    r->keys[r->nfaces] = pango_font_description_to_string(d);
+    pango_font_description_free(d);
+    r->faces[r->nfaces].scaled =
+        pango_cairo_font_get_scaled_font(PANGO_CAIRO_FONT(font));
+    r->faces[r->nfaces].key = r->keys[r->nfaces];
+    r->faces[r->nfaces].outlines = NULL;   /* pango's fonts come and go */
+    r->nfaces++;
+    return true;
+}
+
+/* The layout's glyphs as font.h describes them: a span a pango run, at
+** the sum of the widths of the runs before it, as pango's renderer
+** places them. */
+static bool
+describe(pango_run_t *r, const cf__font_req_t *req,
+         const cf__font_shape_t *sh)
+{
+    PangoLayoutIter *it;
+    size_t k = 0;
+    int x = 0, baseline;
+    clear_faces(r);
+    cf__font_glyphs_reset(&r->glyphs, req, sh);
+    it = pango_layout_get_iter(r->layout);
+    baseline = pango_layout_iter_get_baseline(it);
+    r->glyphs.g.baseline = baseline;
+    do {
+        PangoLayoutRun *run = pango_layout_iter_get_run_readonly(it);
+        if (run != NULL && add_face(r, run->item->analysis.font)) {
+            int i;
+            cf__font_glyphs_span(&r->glyphs, NULL,
+                                 (size_t)run->item->offset,
+                                 (size_t)run->item->length, x);
+            if (!r->glyphs.failed) {
+                cf__font_span_t *s = &r->glyphs.spans[r->glyphs.g.nspans - 1];
+                s->backward = (run->item->analysis.level & 1) != 0;
+                s->shift = run->y_offset;
+            }
+            for (i = 0; i < run->glyphs->num_glyphs; i++) {
+                const PangoGlyphInfo *gi = &run->glyphs->glyphs[i];
+                cf__font_glyph_t g;
+                g.id = gi->glyph;
+                g.x = gi->geometry.x_offset;
+                g.y = gi->geometry.y_offset;
+                g.width = gi->geometry.width;
+                g.cluster = (unsigned)run->glyphs->log_clusters[i];
+                cf__font_glyphs_add(&r->glyphs, &g);
+                x += gi->geometry.width;
+            }
+        } else if (run != NULL) {
+            r->glyphs.failed = true;
+        }
+    } while (pango_layout_iter_next_run(it));
+    pango_layout_iter_free(it);
+    /* the faces, now that their array no longer moves */
+    for (k = 0; k < r->glyphs.g.nspans && !r->glyphs.failed; k++)
+        r->glyphs.spans[k].face = &r->faces[k];
+    return !r->glyphs.failed;
 }
 
 static int
-shape(void *ctx, const cf__font_req_t *req, void **run,
+shape(void *ctx, const cf__font_req_t *req, void **handle,
       cf__font_shape_t *out)
 {
     pango_fonts_t *f = ctx;
-    PangoLayout *l = *run;
+    pango_run_t *r = *handle;
     PangoFontDescription *fd;
     PangoRectangle ink, logical;
-    if (l == NULL) {
-        l = pango_layout_new(f->pc);
-        if (l == NULL)
+    if (r == NULL) {
+        r = cf_calloc(1, sizeof *r);
+        if (r == NULL)
             return -1;
-        *run = l;
+        r->layout = pango_layout_new(f->pc);
+        if (r->layout == NULL) {
+            cf_free(r);
+            return -1;
+        }
+        *handle = r;
     }
     fd = pango_font_description_new();
     pango_font_description_set_family(fd, req->family);
@@ -90,20 +191,11 @@ shape(void *ctx, const cf__font_req_t *req, void **run,
     pango_font_description_set_weight(fd, req->bold ? PANGO_WEIGHT_BOLD
                                                     : PANGO_WEIGHT_NORMAL);
     pango_font_description_set_absolute_size(fd, req->size * PANGO_SCALE);
-    {
-        double *size = malloc(sizeof *size);
-        if (size == NULL) {
-            pango_font_description_free(fd);
-            return -1;
-        }
-        *size = req->size;
-        g_object_set_data_full(G_OBJECT(l), SIZE_KEY, size, free);
-    }
-    pango_layout_set_font_description(l, fd);
+    pango_layout_set_font_description(r->layout, fd);
     pango_font_description_free(fd);
-    pango_layout_set_text(l, req->text, (int)req->len);
-    pango_layout_get_extents(l, &ink, &logical);
-    out->baseline = pango_layout_get_baseline(l);
+    pango_layout_set_text(r->layout, req->text, (int)req->len);
+    pango_layout_get_extents(r->layout, &ink, &logical);
+    out->baseline = pango_layout_get_baseline(r->layout);
     out->logical[0] = logical.x;
     out->logical[1] = logical.y;
     out->logical[2] = logical.width;
@@ -112,139 +204,47 @@ shape(void *ctx, const cf__font_req_t *req, void **run,
     out->ink[1] = ink.y;
     out->ink[2] = ink.width;
     out->ink[3] = ink.height;
-    out->unknown = pango_layout_get_unknown_glyphs_count(l);
-    return 0;
+    out->unknown = pango_layout_get_unknown_glyphs_count(r->layout);
+    return describe(r, req, out) ? 0 : -1;
 }
 
 static void
 release(void *run)
 {
-    if (run != NULL)
-        g_object_unref(run);
+    pango_run_t *r = run;
+    if (r == NULL)
+        return;
+    clear_faces(r);
+    cf_free(r->faces);
+    cf_free(r->keys);
+    cf__font_glyphs_fini(&r->glyphs);
+    g_object_unref(r->layout);
+    cf_free(r);
 }
 
-/* v as the glyph data writes and the page reads it */
-static double
-as_written(double v)
+static const cf__font_glyphs_t *
+glyphs(void *run)
 {
-    char buf[32];
-    snprintf(buf, sizeof buf, "%.5g", v);
-    return strtod(buf, NULL);
+    return &((pango_run_t *)run)->glyphs.g;
 }
 
-int
-cf__pango_glyph_outline(cairo_t *cr, PangoFont *font, PangoGlyph id,
-                        void (*f)(void *u, char op, const double *v), void *u)
-{
-    cairo_scaled_font_t *sf =
-        pango_cairo_font_get_scaled_font(PANGO_CAIRO_FONT(font));
-    cairo_matrix_t fm;
-    cairo_glyph_t g;
-    cairo_path_t *path;
-    double s;
-    int i, rc = 0;
-    if (sf == NULL)
-        return -1;
-    /* the font's own scaled font: a scaled font of the same face made at
-    ** another size moved the glyph paths of this one by 1/128 bp */
-    cairo_scaled_font_get_font_matrix(sf, &fm);
-    s = fm.yy != 0 ? fm.yy : 1;
-    g.index = id;
-    g.x = g.y = 0;
-    cairo_set_scaled_font(cr, sf);
-    cairo_new_path(cr);
-    cairo_glyph_path(cr, &g, 1);
-    path = cairo_copy_path(cr);
-    cairo_new_path(cr);
-    if (path->status != CAIRO_STATUS_SUCCESS)
-        rc = -1;
-    for (i = 0; rc == 0 && i < path->num_data;
-         i += path->data[i].header.length) {
-        static const char op[] = { 'M', 'L', 'C', 'Z' };
-        const cairo_path_data_t *d = &path->data[i];
-        double v[6];
-        int k;
-        for (k = 1; k < d->header.length && k <= 3; k++) {
-            v[2 * k - 2] = as_written(d[k].point.x / s);
-            v[2 * k - 1] = as_written(d[k].point.y / s);
-        }
-        f(u, op[d->header.type], v);
-    }
-    cairo_path_destroy(path);
-    return rc;
-}
-
-typedef struct place {
-    cf__pathb_t *out;
-    double ox, oy, size;  /* the glyph's origin, the run's size */
-} place_t;
-
-/* A point of a glyph's outline placed as render/labels/font-table.c
-** places it (the same operations, so the same doubles). */
+/* A run with unknown glyphs: pango draws them as boxes. */
 static void
-placed(void *u, char op, const double *v)
+draw(void *run, void *cr, bool path)
 {
-    const place_t *p = u;
-    int n = op == 'C' ? 3 : op == 'Z' ? 0 : 1, j;
-    double xy[6];
-    for (j = 0; j < n; j++) {
-        xy[2 * j] = p->ox + v[2 * j] * p->size;
-        xy[2 * j + 1] = p->oy + v[2 * j + 1] * p->size;
-    }
-    cf__pathb_add(p->out, op == 'M' ? CF__SEG_MOVE : op == 'L' ? CF__SEG_LINE
-                          : op == 'C' ? CF__SEG_CURVE : CF__SEG_CLOSE, xy);
+    if (path)
+        pango_cairo_layout_path(cr, ((pango_run_t *)run)->layout);
+    else
+        pango_cairo_show_layout(cr, ((pango_run_t *)run)->layout);
 }
 
-/* The outlines of a run's glyphs, its top left at (x, y): each glyph's
-** outline per bp (cf__pango_glyph_outline) at its place in the layout,
-** in the same arithmetic as the page's glyph table. */
 static void
 outline(void *ctx, void *run, double x, double y, cf__pathb_t *out)
 {
-    pango_fonts_t *f = ctx;
-    PangoLayoutIter *it;
-    const double *size = g_object_get_data(G_OBJECT(run), SIZE_KEY);
-    place_t p;
-    if (f->cr == NULL) {
-        cairo_surface_t *s = cairo_recording_surface_create(
-            CAIRO_CONTENT_ALPHA, NULL);
-        f->cr = cairo_create(s);
-        cairo_surface_destroy(s);
-    }
-    if (size == NULL) {
-        out->failed = true;
-        return;
-    }
-    p.out = out;
-    p.size = *size;
-    it = pango_layout_get_iter(run);
-    do {
-        PangoLayoutRun *r = pango_layout_iter_get_run_readonly(it);
-        PangoRectangle logical;
-        int i, gx, base;
-        if (r == NULL)
-            continue;
-        pango_layout_iter_get_run_extents(it, NULL, &logical);
-        base = pango_layout_iter_get_baseline(it);
-        gx = logical.x;
-        for (i = 0; i < r->glyphs->num_glyphs; i++) {
-            const PangoGlyphInfo *g = &r->glyphs->glyphs[i];
-            if (!(g->glyph & PANGO_GLYPH_UNKNOWN_FLAG)
-                && g->glyph != PANGO_GLYPH_EMPTY) {
-                p.ox = x + (double)(gx + g->geometry.x_offset)
-                           / CF__FONT_SCALE;
-                p.oy = y + (double)(base + g->geometry.y_offset)
-                           / CF__FONT_SCALE;
-                if (cf__pango_glyph_outline(f->cr, r->item->analysis.font,
-                                            g->glyph, placed, &p) != 0)
-                    out->failed = true;
-            }
-            gx += g->geometry.width;
-        }
-    } while (pango_layout_iter_next_run(it));
-    pango_layout_iter_free(it);
+    cf__font_glyphs_outline(&((pango_fonts_t *)ctx)->cr, glyphs(run), x, y,
+                            out);
 }
 
 const cf__fonts_t cf__pango_fonts = {
-    open_fonts, close_fonts, shape, release, outline, NULL
+    open_fonts, close_fonts, shape, release, outline, glyphs, draw, NULL
 };

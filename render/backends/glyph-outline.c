@@ -1,6 +1,6 @@
 /*
-** The outlines of a label's glyphs as SVG path data, from pango through
-** cairo (cf__label_path, cairo_copy_path): the outline function of the
+** The outlines of a label's glyphs as SVG path data, from its fonts
+** through cairo (cf__label_path, cairo_copy_path): the outline function of the
 ** SVG writer natively (render/backends/backend.h), and the source of the glyph
 ** data a course page embeds.
 */

@@ -1,11 +1,10 @@
 /*
-** Labels drawn with cairo (render/backends/label-cairo.h): a run set in
-** pango's fonts as pango's layout (glyphs, so that PDF and PS carry text),
+** Labels drawn with cairo (render/backends/label-cairo.h): a run of fonts
+** with faces (native: HarfBuzz's shaping or pango's) as its glyphs
+** (render/backends/font-glyphs.c: glyphs, so that PDF and PS carry text),
 ** a run of other fonts (a course page's glyph table) as its outline.
 */
-#include <pango/pangocairo.h>
-
-#include "font-pango.h"
+#include "font-glyphs.h"
 #include "label-cairo.h"
 #include "label-impl.h"
 
@@ -42,6 +41,18 @@ outline_path(const cf_label_t *label, cairo_t *cr, double x, double y)
     }
 }
 
+/* A run from the current point: its glyphs, or the fonts' own drawing
+** of a run with unknown glyphs (pango's boxes). */
+static void
+draw_run(const cf_label_t *label, const run_t *r, cairo_t *cr, bool path)
+{
+    const cf__font_glyphs_t *g = label->fonts->glyphs(r->shaped);
+    if (label->fonts->draw != NULL && cf__font_glyphs_unknown(g))
+        label->fonts->draw(r->shaped, cr, path);
+    else
+        cf__font_glyphs_draw(cr, g, path);
+}
+
 void
 cf__label_draw(const cf_label_t *label, cairo_t *cr, double x, double y,
                const cf_color_t *color, double opacity)
@@ -52,7 +63,7 @@ cf__label_draw(const cf_label_t *label, cairo_t *cr, double x, double y,
     cairo_save(cr);
     cairo_set_source_rgba(cr, color->r, color->g, color->b,
                           color->a * opacity);
-    if (label->fonts != &cf__pango_fonts) {
+    if (label->fonts->glyphs == NULL) {
         cairo_new_path(cr);
         outline_path(label, cr, x, y);
         cairo_fill(cr);
@@ -70,7 +81,7 @@ cf__label_draw(const cf_label_t *label, cairo_t *cr, double x, double y,
             continue;
         }
         cairo_move_to(cr, x + r->x, y - r->y - r->baseline);
-        pango_cairo_show_layout(cr, r->shaped);
+        draw_run(label, r, cr, false);
     }
     cairo_restore(cr);
 }
@@ -81,7 +92,7 @@ cf__label_path(const cf_label_t *label, cairo_t *cr, double x, double y)
     size_t i;
     if (label == NULL)
         return;
-    if (label->fonts != &cf__pango_fonts) {
+    if (label->fonts->glyphs == NULL) {
         outline_path(label, cr, x, y);
         return;
     }
@@ -95,7 +106,7 @@ cf__label_path(const cf_label_t *label, cairo_t *cr, double x, double y)
             continue;
         }
         cairo_move_to(cr, x + r->x, y - r->y - r->baseline);
-        pango_cairo_layout_path(cr, r->shaped);
+        draw_run(label, r, cr, true);
     }
 }
 

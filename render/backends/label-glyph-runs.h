@@ -1,6 +1,6 @@
 /*
 ** The glyphs of a label one by one (render/backends/label-glyph-runs.c),
-** natively only (pango's glyph runs and cairo's scaled fonts; the browser
+** natively only (the fonts' glyph runs and cairo's scaled fonts; the browser
 ** module has neither): for the glyph uses of the SVG files
 ** (render/output/svg-glyphs.c).
 */

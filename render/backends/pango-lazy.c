@@ -1,5 +1,7 @@
 /*
-** pango, loaded when a label is first set, not when the program starts.
+** pango, loaded when a label first needs it (a run the native fonts,
+** render/backends/font-native.c, hand to pango), not when the program
+** starts.
 **
 ** A figure without labels (a polyline, a curve) never calls pango; yet a
 ** library linked with pangocairo makes every program that uses it load
@@ -19,86 +21,37 @@
 ** only CF_API), so they never stand in for pango's own in a program that
 ** links pango itself.
 */
-#include <dlfcn.h>
-#include <pthread.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-
 #include <pango/pangocairo.h>
 
+#include "font-config.h"
+#include "lazy-forward.h"
 #include "pango-lazy.h"
-
-#define PANGO_LIBRARY "libpangocairo-1.0.so.0"
-
-/* pango and fontconfig are one per process: so is this state */
-static void *pango_handle;
-static pthread_once_t pango_once = PTHREAD_ONCE_INIT;
-static void (*before_open)(void);
 
 void
 cf__pango_before_open(void (*fn)(void))
 {
-    before_open = fn;
+    cf__fonts_before_open(fn);
 }
 
-static void
-open_pango(void)
-{
-    if (before_open != NULL)
-        before_open();
-    pango_handle = dlopen(PANGO_LIBRARY, RTLD_LAZY | RTLD_LOCAL);
-}
+/* pango is one per process: so is this state; the font configuration is
+** made before pango looks up a font */
+static cf__lazy_lib_t pango_lib = CF__LAZY_LIB(
+    "libpangocairo-1.0.so.0", "pango", "libpangocairo-1.0-0",
+    cf__fonts_configure);
 
-/* The address of pango's function name (never NULL: the program stops). */
 static void *
 pango_symbol(const char *name)
 {
-    void *p;
-    pthread_once(&pango_once, open_pango);
-    if (pango_handle == NULL) {
-        fprintf(stderr, "curvefig: labels need the pango library, which "
-                "cannot be loaded: %s (Debian: apt-get install "
-                "libpangocairo-1.0-0)\n", dlerror());
-        abort();
-    }
-    p = dlsym(pango_handle, name);
-    if (p == NULL) {
-        fprintf(stderr, "curvefig: the pango library %s has no function "
-                "%s (too old a version?)\n", PANGO_LIBRARY, name);
-        abort();
-    }
-    return p;
+    return cf__lazy_symbol(&pango_lib, name);
 }
 
-/* A forwarding function: the pointer found once per function (a race
-** only finds the same pointer twice). */
-#define FORWARD_(ret, name, params, call)                                  \
-    ret(name) params                                                       \
-    {                                                                      \
-        typedef ret(*fn_t) params;                                         \
-        static _Atomic(fn_t) cached;                                       \
-        fn_t f = cached;                                                   \
-        if (f == NULL) {                                                   \
-            void *p = pango_symbol(#name);                                 \
-            memcpy(&f, &p, sizeof f);                                      \
-            cached = f;                                                    \
-        }                                                                  \
-        call;                                                              \
-    }
 #define FORWARD(ret, name, params, args) \
-    FORWARD_(ret, name, params, return f args)
+    CF__FORWARD(pango_symbol, ret, name, params, args)
 #define FORWARD_VOID(name, params, args) \
-    FORWARD_(void, name, params, f args)
+    CF__FORWARD_VOID(pango_symbol, name, params, args)
 
 FORWARD_VOID(g_free, (gpointer mem), (mem))
-FORWARD(gpointer, g_object_ref, (gpointer object), (object))
 FORWARD_VOID(g_object_unref, (gpointer object), (object))
-FORWARD(gpointer, g_object_get_data, (GObject *object, const gchar *key),
-        (object, key))
-FORWARD_VOID(g_object_set_data_full,
-             (GObject *object, const gchar *key, gpointer data,
-              GDestroyNotify destroy), (object, key, data, destroy))
 FORWARD(GTypeInstance *, g_type_check_instance_cast,
         (GTypeInstance *instance, GType iface_type), (instance, iface_type))
 
@@ -123,10 +76,6 @@ FORWARD(PangoFontDescription *, pango_font_describe, (PangoFont *font),
         (font))
 FORWARD_VOID(pango_font_description_free, (PangoFontDescription *desc),
              (desc))
-FORWARD(const char *, pango_font_description_get_family,
-        (const PangoFontDescription *desc), (desc))
-FORWARD(PangoStyle, pango_font_description_get_style,
-        (const PangoFontDescription *desc), (desc))
 FORWARD(PangoFontDescription *, pango_font_description_new, (void), ())
 FORWARD_VOID(pango_font_description_set_absolute_size,
              (PangoFontDescription *desc, double size), (desc, size))
@@ -151,8 +100,6 @@ FORWARD_VOID(pango_layout_get_extents,
              (PangoLayout *layout, PangoRectangle *ink_rect,
               PangoRectangle *logical_rect),
              (layout, ink_rect, logical_rect))
-FORWARD(const PangoFontDescription *, pango_layout_get_font_description,
-        (PangoLayout *layout), (layout))
 FORWARD(PangoLayoutIter *, pango_layout_get_iter, (PangoLayout *layout),
         (layout))
 FORWARD(int, pango_layout_get_unknown_glyphs_count, (PangoLayout *layout),
@@ -160,10 +107,6 @@ FORWARD(int, pango_layout_get_unknown_glyphs_count, (PangoLayout *layout),
 FORWARD_VOID(pango_layout_iter_free, (PangoLayoutIter *iter), (iter))
 FORWARD(int, pango_layout_iter_get_baseline, (PangoLayoutIter *iter),
         (iter))
-FORWARD_VOID(pango_layout_iter_get_run_extents,
-             (PangoLayoutIter *iter, PangoRectangle *ink_rect,
-              PangoRectangle *logical_rect),
-             (iter, ink_rect, logical_rect))
 FORWARD(PangoLayoutRun *, pango_layout_iter_get_run_readonly,
         (PangoLayoutIter *iter), (iter))
 FORWARD(gboolean, pango_layout_iter_next_run, (PangoLayoutIter *iter),

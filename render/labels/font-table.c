@@ -1,6 +1,7 @@
 /*
 ** Fonts for labels from glyph data (render/labels/font-table.h): the text
-** render/output/label-glyphs.c writes at export time from pango's shaping,
+** render/output/label-glyphs.c writes at export time from the tool's
+** shaping (render/backends/font-native.c: pango's numbers),
 ** which the browser module loads and sets its labels in:
 **
 **   curvefig-glyphs 1
@@ -12,8 +13,8 @@
 **   K d first second kern                         a pair's advance less
 **                                                 its characters' (per bp)
 **   S d size baseline lx ly lw lh ix iy iw ih unknown n
-**     (face glyph x y) * n  bytes text            a text as pango shaped
-**                                                 it (pango units)
+**     (face glyph x y) * n  bytes text            a text as the tool
+**                                                 shaped it (pango units)
 **
 ** A run whose description, size and text were shaped at export is that
 ** shaping, the same numbers as the tool's; another is composed from its
@@ -599,6 +600,7 @@ close_fonts(void *ctx)
 cf__fonts_t
 cf__font_table_fonts(cf__font_table_t *t)
 {
-    cf__fonts_t f = { open_fonts, close_fonts, shape, release, outline, t };
+    cf__fonts_t f = { open_fonts, close_fonts, shape, release, outline,
+                      NULL, NULL, t };
     return f;
 }

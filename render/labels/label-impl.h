@@ -4,8 +4,8 @@
 **   label.c        the public functions, ink box and drawing
 **   label-parse.c  the parser, which lays out as it reads
 **   label-runs.c   runs of glyphs shaped and measured by the label's
-**                  fonts (font.h: pango natively, the page's glyph table
-**                  in the browser module)
+**                  fonts (font.h: HarfBuzz as pango natively, the page's
+**                  glyph table in the browser module)
 **   label-chars.c  UTF-8 and the tables of commands, spaces and accents
 */
 #ifndef CURVEFIG_RENDER_LABEL_IMPL_H

@@ -29,7 +29,7 @@ void cf__label_ink(const cf_label_t *label, double box[4]);
 ** (0, 0) (bp, y down like cairo): a path to fill by the nonzero rule,
 ** valid while the label is. */
 void cf__label_outline(const cf_label_t *label, cf__path_t *out);
-/* The bytes of text pango shaped to lay the label out: linear in the
+/* The bytes of text the fonts shaped to lay the label out: linear in the
 ** label's length (each run is measured once, its growing tail again). */
 size_t cf__label_shaped_bytes(const cf_label_t *label);
 /* True when the label was laid out with this family list and size. */

@@ -1,7 +1,8 @@
 /*
 ** The fonts the figures and labels the public functions make are set in
-** (render/labels/font.h; render/output/create.c hands them down): pango
-** natively (render/output/fonts-native.c: render/backends/font-pango.c),
+** (render/labels/font.h; render/output/create.c hands them down):
+** HarfBuzz natively, pango for what it does not shape (render/output/
+** fonts-native.c: render/backends/font-native.c),
 ** the page's glyph table in the browser module (render/web/engine.c).
 */
 #ifndef CURVEFIG_RENDER_FONTS_DEFAULT_H

@@ -1,10 +1,11 @@
 /*
 ** The glyph data of a course page (render/output/label-glyphs.h): the labels
 ** of the figures are collected by playing their display lists through a
-** backend that keeps only the text operations; each run's pango layout gives
-** its font description (D), its shaping (S) and the outlines of its glyphs (G,
-** per bp of size: cf__pango_glyph_outline, the numbers the tool's outlines
-** are made of); then
+** backend that keeps only the text operations; each run's glyphs (render/
+** labels/font.h: whichever fonts shaped it) give its font description (D),
+** its shaping (S) and the outlines of its glyphs (G, per bp of size:
+** cf__font_glyph_outline, the numbers the tool's outlines are made of);
+** then
 ** each description shapes the character set one character at a time (C), and
 ** every ordered pair of the characters of the texts and of numbers (digits,
 ** point, signs, space, =) two at a time: where the pair's advance differs from
@@ -15,11 +16,11 @@
 #include <stdio.h>
 #include <string.h>
 
-#include <pango/pangocairo.h>
+#include <cairo.h>
 
 #include "backend-text.h"
 #include "curvefig/output.h"
-#include "font-pango.h"
+#include "font-glyphs.h"
 #include "grow.h"
 #include "label-glyphs.h"
 #include "label-impl.h"
@@ -42,7 +43,8 @@ typedef struct collect {
     unsigned *chars;          /* code points of the texts */
     size_t nchars, capchars;
     cf__buf_t shaped_keys;    /* "d size text\n" of each S line */
-    PangoContext *ctx;
+    const cf__fonts_t *fonts;      /* the labels' (the first one's) */
+    void *fctx;                    /* a context of theirs */
     cairo_t *cr;
     bool failed;
 } collect_t;
@@ -91,28 +93,21 @@ add_unique(unsigned **a, size_t *n, size_t *cap, unsigned v)
     return true;
 }
 
-/* The index of the face of font (its description without size). */
+/* The index of a face (by its key: the same face at any size). */
 static int
-face_of(collect_t *c, PangoFont *font)
+face_of(collect_t *c, const cf__font_face_t *face)
 {
-    PangoFontDescription *d = pango_font_describe(font);
-    char *s;
     int i;
-    pango_font_description_unset_fields(d, PANGO_FONT_MASK_SIZE);
-    s = pango_font_description_to_string(d);
-    pango_font_description_free(d);
     for (i = 0; i < c->nface; i++)
-        if (strcmp(c->face[i], s) == 0) {
-            g_free(s);
+        if (strcmp(c->face[i], face->key) == 0)
             return i;
-        }
     if (c->nface == MAX_FACES) {
-        g_free(s);
         c->failed = true;
         return 0;
     }
-    c->face[c->nface] = dup_str(s);
-    g_free(s);
+    c->face[c->nface] = dup_str(face->key);
+    if (c->face[c->nface] == NULL)
+        c->failed = true;
     return c->nface++;
 }
 
@@ -127,20 +122,20 @@ glyph_op(void *u, char op, const double *v)
         putf(c, c->out, " %.5g", v[k]);
 }
 
-/* G line of glyph id of font (face f), once. */
+/* G line of glyph id of face (index f), once. */
 static void
-put_glyph(collect_t *c, PangoFont *font, int f, PangoGlyph id)
+put_glyph(collect_t *c, const cf__font_face_t *face, int f, unsigned id)
 {
     cairo_scaled_font_t *sf;
     cairo_matrix_t fm;
     cairo_glyph_t g;
     cairo_text_extents_t e;
     double s;
-    if (id & PANGO_GLYPH_UNKNOWN_FLAG
+    if (id & CF__FONT_GLYPH_UNKNOWN
         || !add_unique(&c->glyphs, &c->nglyphs, &c->capglyphs,
                        (unsigned)f << 24 | (id & 0xffffff)))
         return;
-    sf = pango_cairo_font_get_scaled_font(PANGO_CAIRO_FONT(font));
+    sf = face->scaled;
     if (sf == NULL) {
         c->failed = true;
         return;
@@ -153,47 +148,39 @@ put_glyph(collect_t *c, PangoFont *font, int f, PangoGlyph id)
     putf(c, c->out, "G %d %u %.9g %.9g %.9g %.9g", f, id, e.x_bearing / s,
          e.y_bearing / s, (e.x_bearing + e.width) / s,
          (e.y_bearing + e.height) / s);
-    if (cf__pango_glyph_outline(c->cr, font, id, glyph_op, c) != 0)
+    if (cf__font_glyph_outline(c->cr, sf, id, glyph_op, c) != 0)
         c->failed = true;
     putf(c, c->out, "\n");
 }
 
-/* The glyphs of a layout: each one's face, id and place (pango units
-** from the layout's top left), handed to f. */
+/* The glyphs of a run: each one's face, id and place (pango units
+** from the run's top left), handed to f. */
 static int
-each_glyph(collect_t *c, PangoLayout *l,
-           void (*f)(collect_t *, PangoFont *, int, PangoGlyph, int, int))
+each_glyph(collect_t *c, const cf__font_glyphs_t *g,
+           void (*f)(collect_t *, const cf__font_face_t *, int, unsigned,
+                     int, int))
 {
-    PangoLayoutIter *it = pango_layout_get_iter(l);
+    size_t i, k;
     int count = 0;
-    do {
-        PangoLayoutRun *run = pango_layout_iter_get_run_readonly(it);
-        PangoRectangle logical;
-        int i, x, base, face;
-        if (run == NULL)
-            continue;
-        pango_layout_iter_get_run_extents(it, NULL, &logical);
-        base = pango_layout_iter_get_baseline(it);
-        x = logical.x;
-        face = face_of(c, run->item->analysis.font);
-        for (i = 0; i < run->glyphs->num_glyphs; i++) {
-            const PangoGlyphInfo *g = &run->glyphs->glyphs[i];
-            if (!(g->glyph & PANGO_GLYPH_UNKNOWN_FLAG)
-                && g->glyph != PANGO_GLYPH_EMPTY) {
-                f(c, run->item->analysis.font, face, g->glyph,
-                  x + g->geometry.x_offset, base + g->geometry.y_offset);
+    for (i = 0; i < g->nspans; i++) {
+        const cf__font_span_t *s = &g->spans[i];
+        int x = s->x, face = face_of(c, s->face);
+        for (k = 0; k < s->nglyphs; k++) {
+            const cf__font_glyph_t *gl = &g->glyphs[s->glyph + k];
+            if (!(gl->id & CF__FONT_GLYPH_UNKNOWN)
+                && gl->id != CF__FONT_GLYPH_EMPTY) {
+                f(c, s->face, face, gl->id, x + gl->x, g->baseline + gl->y);
                 count++;
             }
-            x += g->geometry.width;
+            x += gl->width;
         }
-    } while (pango_layout_iter_next_run(it));
-    pango_layout_iter_free(it);
+    }
     return count;
 }
 
 static void
-glyph_out(collect_t *c, PangoFont *font, int face, PangoGlyph id, int x,
-          int y)
+glyph_out(collect_t *c, const cf__font_face_t *font, int face, unsigned id,
+          int x, int y)
 {
     (void)x;
     (void)y;
@@ -201,8 +188,8 @@ glyph_out(collect_t *c, PangoFont *font, int face, PangoGlyph id, int x,
 }
 
 static void
-glyph_placed(collect_t *c, PangoFont *font, int face, PangoGlyph id, int x,
-             int y)
+glyph_placed(collect_t *c, const cf__font_face_t *font, int face,
+             unsigned id, int x, int y)
 {
     (void)font;
     putf(c, &c->shapes, " %d %u %d %d", face, id, x, y);
@@ -210,15 +197,12 @@ glyph_placed(collect_t *c, PangoFont *font, int face, PangoGlyph id, int x,
 
 /* The description of a run's layout: its index (a D line when new). */
 static int
-desc_of(collect_t *c, const run_t *r)
+desc_of(collect_t *c, const run_t *r, const cf__font_glyphs_t *g)
 {
-    const PangoFontDescription *fd =
-        pango_layout_get_font_description(r->shaped);
-    const char *family = pango_font_description_get_family(fd);
+    const char *family = g->family;
     /* the style of the font (a math run's letters are italic glyphs of an
     ** upright font) */
-    int italic = pango_font_description_get_style(fd) != PANGO_STYLE_NORMAL;
-    PangoRectangle logical;
+    int italic = g->italic;
     int i;
     for (i = 0; i < c->ndesc; i++)
         if (strcmp(c->desc[i], family) == 0 && c->desc_italic[i] == italic
@@ -228,28 +212,31 @@ desc_of(collect_t *c, const run_t *r)
         c->failed = true;
         return 0;
     }
-    pango_layout_get_extents(r->shaped, NULL, &logical);
     c->desc[c->ndesc] = dup_str(family);
+    if (c->desc[c->ndesc] == NULL)
+        c->failed = true;
     c->desc_italic[c->ndesc] = italic;
     c->desc_bold[c->ndesc] = r->bold;
     putf(c, &c->heads, "D %d %d %d %.9g %.9g %s\n", c->ndesc, italic,
          r->bold, r->baseline / r->size,
-         ((double)logical.height / PANGO_SCALE - r->baseline) / r->size,
+         ((double)g->shape.logical[3] / CF__FONT_SCALE - r->baseline)
+             / r->size,
          family);
     return c->ndesc++;
 }
 
 static void
-run_data(collect_t *c, const run_t *r)
+run_data(collect_t *c, const cf_label_t *label, const run_t *r)
 {
-    PangoRectangle ink, logical;
+    const cf__font_glyphs_t *g;
     char key[64];
     size_t k;
     int d, size, n;
     if (r->shaped == NULL || r->rule_h > 0)
         return;
-    d = desc_of(c, r);
-    size = (int)lround(r->size * PANGO_SCALE);
+    g = label->fonts->glyphs(r->shaped);
+    d = desc_of(c, r, g);
+    size = (int)lround(r->size * CF__FONT_SCALE);
     for (k = 0; k < r->text_len;) {
         unsigned cp;
         size_t len = cf__utf8_decode(r->text, r->text_len, k, &cp);
@@ -272,13 +259,13 @@ run_data(collect_t *c, const run_t *r)
         || cf__buf_append(&c->shaped_keys, r->text, r->text_len) != 0
         || cf__buf_append(&c->shaped_keys, "\n", 1) != 0)
         c->failed = true;
-    n = each_glyph(c, r->shaped, glyph_out);   /* G lines; the count */
-    pango_layout_get_extents(r->shaped, &ink, &logical);
+    n = each_glyph(c, g, glyph_out);   /* G lines; the count */
     putf(c, &c->shapes, "S %d %d %d %d %d %d %d %d %d %d %d %d %d", d, size,
-         pango_layout_get_baseline(r->shaped), logical.x, logical.y,
-         logical.width, logical.height, ink.x, ink.y, ink.width, ink.height,
-         pango_layout_get_unknown_glyphs_count(r->shaped), n);
-    each_glyph(c, r->shaped, glyph_placed);
+         g->shape.baseline, g->shape.logical[0], g->shape.logical[1],
+         g->shape.logical[2], g->shape.logical[3], g->shape.ink[0],
+         g->shape.ink[1], g->shape.ink[2], g->shape.ink[3],
+         g->shape.unknown, n);
+    each_glyph(c, g, glyph_placed);
     putf(c, &c->shapes, " %zu ", r->text_len);
     if (cf__buf_append(&c->shapes, r->text, r->text_len) != 0
         || cf__buf_append(&c->shapes, "\n", 1) != 0)
@@ -293,52 +280,53 @@ text_op(void *ctx, const cf__text_op_t *t)
 {
     collect_t *c = ctx;
     size_t i;
-    /* labels in pango's fonts (the tool's) */
-    if (t->label == NULL || t->label->fonts != &cf__pango_fonts)
+    /* labels in fonts with faces (the tool's) */
+    if (t->label == NULL || t->label->fonts->glyphs == NULL)
         return;
-    if (c->ctx == NULL) {
-        c->ctx = cf__pango_fonts_context(t->label->fonts_ctx);
-        g_object_ref(c->ctx);
-    }
+    if (c->fonts == NULL)
+        c->fonts = t->label->fonts;
     for (i = 0; i < t->label->count; i++)
-        run_data(c, &t->label->runs[i]);
+        run_data(c, t->label, &t->label->runs[i]);
 }
 
 
 /* The one glyph and its advance (pango units) of the text s[0..n-1]
-** alone in layout l, or 0 when it is not one known glyph in one run; two
-** glyphs (ids and advances into id[], adv[]) with two = true. */
+** alone in description d (its run *run of c's fonts), or 0 when it is not
+** one known glyph in one span; two glyphs (ids and advances into id[],
+** adv[]) with two = true. */
 static bool
-shaped_glyphs(PangoLayout *l, const char *s, size_t n, bool two,
-              PangoGlyph *id, int *adv, PangoFont **font)
+shaped_glyphs(collect_t *c, int d, void **run, const char *s, size_t n,
+              bool two, unsigned *id, int *adv,
+              const cf__font_face_t **face)
 {
-    PangoLayoutIter *it;
-    PangoLayoutRun *run = NULL;
-    int nruns = 0, want = two ? 2 : 1, i;
+    cf__font_req_t req;
+    cf__font_shape_t sh;
+    const cf__font_glyphs_t *g;
+    int want = two ? 2 : 1, i;
     bool ok;
-    pango_layout_set_text(l, s, (int)n);
-    if (pango_layout_get_unknown_glyphs_count(l) > 0)
+    req.family = c->desc[d];
+    req.italic = c->desc_italic[d];
+    req.bold = c->desc_bold[d];
+    req.size = REF_SIZE;
+    req.text = s;
+    req.len = n;
+    if (c->fonts->shape(c->fctx, &req, run, &sh) != 0) {
+        c->failed = true;
         return false;
-    /* one run (the line's end is a NULL run) */
-    it = pango_layout_get_iter(l);
-    do {
-        PangoLayoutRun *r = pango_layout_iter_get_run_readonly(it);
-        if (r != NULL) {
-            run = r;
-            nruns++;
-        }
-    } while (pango_layout_iter_next_run(it));
-    ok = nruns == 1 && run->glyphs->num_glyphs == want;
-    for (i = 0; ok && i < want; i++) {
-        const PangoGlyphInfo *g = &run->glyphs->glyphs[i];
-        id[i] = g->glyph;
-        adv[i] = g->geometry.width;
-        /* a pair placed by its advances only */
-        ok = !two || (g->geometry.x_offset == 0 && g->geometry.y_offset == 0);
     }
-    if (ok && font != NULL)
-        *font = run->item->analysis.font;
-    pango_layout_iter_free(it);
+    if (sh.unknown > 0)
+        return false;
+    g = c->fonts->glyphs(*run);
+    ok = g->nspans == 1 && g->nglyphs == (size_t)want;
+    for (i = 0; ok && i < want; i++) {
+        const cf__font_glyph_t *gl = &g->glyphs[i];
+        id[i] = gl->id;
+        adv[i] = gl->width;
+        /* a pair placed by its advances only */
+        ok = !two || (gl->x == 0 && gl->y == 0);
+    }
+    if (ok && face != NULL)
+        *face = g->spans[0].face;
     return ok;
 }
 
@@ -357,8 +345,8 @@ paired(const collect_t *c, size_t ntext, size_t i)
 ** together differs from their advances alone (id[], adv[]: each
 ** character's glyph and advance alone, adv < 0 when it has none). */
 static void
-kerning(collect_t *c, PangoLayout *l, int d, size_t ntext,
-        const PangoGlyph *id, const int *adv)
+kerning(collect_t *c, void **run, int d, size_t ntext, const unsigned *id,
+        const int *adv)
 {
     size_t i, j;
     for (i = 0; i < c->nchars && !c->failed; i++) {
@@ -367,7 +355,7 @@ kerning(collect_t *c, PangoLayout *l, int d, size_t ntext,
         for (j = 0; j < c->nchars; j++) {
             char s[16];
             size_t n;
-            PangoGlyph g[2];
+            unsigned g[2];
             int a[2];
             if (adv[j] < 0 || !paired(c, ntext, j))
                 continue;
@@ -375,11 +363,12 @@ kerning(collect_t *c, PangoLayout *l, int d, size_t ntext,
             n += cf__utf8_encode(c->chars[j], s + n);
             /* the same two glyphs (not a ligature), moved apart or
             ** together */
-            if (shaped_glyphs(l, s, n, true, g, a, NULL) && g[0] == id[i]
+            if (shaped_glyphs(c, d, run, s, n, true, g, a, NULL)
+                && g[0] == id[i]
                 && g[1] == id[j] && a[1] == adv[j] && a[0] != adv[i])
                 putf(c, c->out, "K %d %u %u %.7g\n", d, c->chars[i],
                      c->chars[j],
-                     (double)(a[0] - adv[i]) / PANGO_SCALE / REF_SIZE);
+                     (double)(a[0] - adv[i]) / CF__FONT_SCALE / REF_SIZE);
         }
     }
 }
@@ -394,7 +383,7 @@ characters(collect_t *c)
     unsigned cp;
     size_t i, ntext = c->nchars;
     int d;
-    PangoGlyph *id;
+    unsigned *id;
     int *adv;
     for (cp = 0x20; cp < 0x7f; cp++)
         add_unique(&c->chars, &c->nchars, &c->capchars, cp);
@@ -403,41 +392,36 @@ characters(collect_t *c)
             add_unique(&c->chars, &c->nchars, &c->capchars, cp);
     for (i = 0; i < sizeof extra / sizeof extra[0]; i++)
         add_unique(&c->chars, &c->nchars, &c->capchars, extra[i]);
-    if (c->ctx == NULL)
+    if (c->fonts == NULL)
         return;
+    c->fctx = c->fonts->open(c->fonts->self);
+    if (c->fctx == NULL) {
+        c->failed = true;
+        return;
+    }
     id = cf_alloc_array(c->nchars, sizeof *id);
     adv = cf_alloc_array(c->nchars, sizeof *adv);
     if (id == NULL || adv == NULL)
         c->failed = true;
     for (d = 0; d < c->ndesc && !c->failed; d++) {
-        PangoLayout *l = pango_layout_new(c->ctx);
-        PangoFontDescription *fd = pango_font_description_new();
-        pango_font_description_set_family(fd, c->desc[d]);
-        pango_font_description_set_style(fd, c->desc_italic[d]
-                                                 ? PANGO_STYLE_ITALIC
-                                                 : PANGO_STYLE_NORMAL);
-        pango_font_description_set_weight(fd, c->desc_bold[d]
-                                                  ? PANGO_WEIGHT_BOLD
-                                                  : PANGO_WEIGHT_NORMAL);
-        pango_font_description_set_absolute_size(fd, REF_SIZE * PANGO_SCALE);
-        pango_layout_set_font_description(l, fd);
-        pango_font_description_free(fd);
+        void *run = NULL;
         for (i = 0; i < c->nchars; i++) {
             char s[8];
             size_t n = cf__utf8_encode(c->chars[i], s);
-            PangoFont *font;
+            const cf__font_face_t *face;
             adv[i] = -1;
-            if (shaped_glyphs(l, s, n, false, &id[i], &adv[i], &font)) {
-                int face = face_of(c, font);
-                put_glyph(c, font, face, id[i]);
-                putf(c, c->out, "C %d %u %d %u %.7g\n", d, c->chars[i], face,
-                     id[i], (double)adv[i] / PANGO_SCALE / REF_SIZE);
+            if (shaped_glyphs(c, d, &run, s, n, false, &id[i], &adv[i],
+                              &face)) {
+                int f = face_of(c, face);
+                put_glyph(c, face, f, id[i]);
+                putf(c, c->out, "C %d %u %d %u %.7g\n", d, c->chars[i], f,
+                     id[i], (double)adv[i] / CF__FONT_SCALE / REF_SIZE);
             } else {
                 adv[i] = -1;
             }
         }
-        kerning(c, l, d, ntext, id, adv);
-        g_object_unref(l);
+        kerning(c, &run, d, ntext, id, adv);
+        c->fonts->release(run);
     }
     cf_free(id);
     cf_free(adv);
@@ -474,8 +458,8 @@ cf__glyph_data(cf_figure_t *const *figs, size_t n, cf__buf_t *out,
                              "labels (or more than %d fonts)", MAX_FACES);
     }
     cairo_destroy(c.cr);
-    if (c.ctx != NULL)
-        g_object_unref(c.ctx);
+    if (c.fctx != NULL)
+        c.fonts->close(c.fctx);
     for (k = 0; k < c.ndesc; k++)
         cf_free(c.desc[k]);
     for (k = 0; k < c.nface; k++)

@@ -1,7 +1,7 @@
 /*
 ** The glyph data of a course page (render/output/label-glyphs.c): what the
-** WebAssembly module needs to lay out and draw labels without pango
-** (render/labels/font-table.c reads it; its comment gives the format).
+** WebAssembly module needs to lay out and draw labels without the tool's
+** fonts (render/labels/font-table.c reads it; its comment gives the format).
 */
 #ifndef CURVEFIG_RENDER_LABEL_GLYPHS_H
 #define CURVEFIG_RENDER_LABEL_GLYPHS_H
@@ -13,7 +13,8 @@
 struct cf__buf;
 
 /* The glyph data of the labels of figs[0..n-1] as they are now (drawn at
-** their size): every text as pango shaped it, and in each of their font
+** their size): every text as the tool shaped it (the numbers pango
+** gives), and in each of their font
 ** descriptions the characters of printable ASCII, Greek, a few math
 ** symbols, and every character of those texts, so that texts a slider
 ** makes are composed from them.  Appended to out. */

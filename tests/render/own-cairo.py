@@ -4,7 +4,9 @@
     own-cairo.py CURVEFIG
 
 A `curvefig` linked with cairo's archive (render/tool/meson.build) opens
-pango on a figure's first label; the program names itself libcairo.so.2
+pango for the first run of a label that the native fonts hand to it
+(render/backends/font-native.c: here a Hebrew word, right to left); the
+program names itself libcairo.so.2
 (its soname), so that libpangocairo's need of libcairo.so.2 is met by it
 and the library is not loaded, and each cairo function pango's libraries
 call must be the program's own (one cairo: the context pango draws on is
@@ -21,9 +23,10 @@ import subprocess
 import sys
 import tempfile
 
-SCRIPT = """local f = figure{ name = "one-label", width = "3cm", height = "2cm" }
+SCRIPT = r"""local f = figure{ name = "one-label", width = "3cm", height = "2cm" }
 f:polyline({ {0, 0}, {1, 1}, {2, 0} })
 f:label({1, 1}, "$x^2$ and text", { anchor = "n" })
+f:label({1, 0}, "\u{5e9}\u{5dc}\u{5d5}\u{5dd}", { anchor = "s" })
 """
 
 BINDING = re.compile(r"binding file (\S+) \[\d+\] to (\S+) \[\d+\]: "

@@ -1,0 +1,458 @@
+/*
+** The faces and font sets of the native fonts (render/backends/
+** font-faces.h), chosen as pango 1.50's fontconfig font map chooses them,
+** so that the fonts, and so every glyph and number, are the same:
+**   - a description's pattern: family list split at commas, slant
+**     (roman or italic), weight (FcWeightFromOpenTypeDouble of 400 or
+**     700), width normal, variable "don't care", 72 dpi, its size in
+**     CF__FONT_SCALE units as pixel size / 1024 and point size, the
+**     language; substituted by the configuration, by cairo's font options
+**     (the renderer's: no hinting, metrics unhinted, grey antialiasing)
+**     and by fontconfig's defaults;
+**   - its fonts: fontconfig's best match first, then the fonts of its
+**     trimmed sort from the second on (the sort made only when a font
+**     after the first is asked for), each prepared for the pattern
+**     (FcFontRenderPrepare), among the configuration's fonts of the
+**     formats HarfBuzz reads (TrueType and CFF);
+**   - a font's HarfBuzz font: the file's face, scale pixel size * 1024
+**     over the pattern's matrix's scale factors, point size, synthetic
+**     slant of the matrix; its cairo scaled font: the pattern's face
+**     (cairo_ft_font_face_create_for_pattern), the matrix (y down) times
+**     the pixel size, identity device matrix, the renderer's options;
+**     the logical height of its glyphs: HarfBuzz's ascender and
+**     descender (pango-cairo's glyph extents, metrics unhinted).
+** A font with variation axes or font features from the configuration is
+** marked unsupported: runs in it are pango's.  The caches live as long as
+** the process, as pango's font map and fontconfig's do, in the C
+** library's heap (not the library's allocator, whose count of live blocks
+** they would otherwise stay in).
+*/
+#include <math.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cairo-ft.h>
+#include <hb-ot.h>
+
+#include "font-faces.h"
+#include "font-glyphs.h"
+
+
+struct cf__nfontset {
+    char *family;
+    bool italic, bold;
+    int size;
+    char lang[32];
+    FcPattern *pattern;
+    FcPattern *match;
+    FcFontSet *sorted;     /* made at need */
+    bool sort_failed;
+    cf__nface_t **fonts;   /* prepared at need; NULL past the last */
+    size_t nfonts, cap;
+    bool ended;
+};
+
+typedef struct hb_face_entry {
+    char *file;
+    int index;
+    hb_face_t *face;
+} hb_face_entry_t;
+
+/* One per process, as fontconfig's current configuration is. */
+static pthread_mutex_t faces_lock = PTHREAD_MUTEX_INITIALIZER;
+static cf__nfontset_t **sets;      /* one a description asked for */
+static size_t nsets, cap_sets;
+static cf__nface_t **faces;        /* one a prepared pattern */
+static size_t nfaces, cap_faces;
+static hb_face_entry_t *hb_faces;  /* one a font file and index */
+static size_t nhb_faces, cap_hb_faces;
+
+/* arr (n used of *cap elements of size bytes) with room for one more:
+** arr itself, or arr reallocated (*cap set); NULL when out of memory
+** (arr untouched). */
+static void *
+room(void *arr, size_t n, size_t *cap, size_t size)
+{
+    void *t;
+    size_t c;
+    if (n < *cap)
+        return arr;
+    c = *cap ? 2 * *cap : 16;
+    t = realloc(arr, c * size);
+    if (t != NULL)
+        *cap = c;
+    return t;
+}
+static FcFontSet *config_fonts;   /* the fonts HarfBuzz reads */
+
+void
+cf__nfaces_lock(void)
+{
+    pthread_mutex_lock(&faces_lock);
+}
+
+void
+cf__nfaces_unlock(void)
+{
+    pthread_mutex_unlock(&faces_lock);
+}
+
+static bool
+ends_with(const char *s, const char *tail)
+{
+    size_t n = strlen(s), m = strlen(tail);
+    return n >= m && strcmp(s + n - m, tail) == 0;
+}
+
+/* Fonts HarfBuzz can shape (pango's filter: no WOFF, TrueType or CFF). */
+static bool
+supported_format(FcPattern *p)
+{
+    FcChar8 *file, *format;
+    if (FcPatternGetString(p, FC_FILE, 0, &file) == FcResultMatch
+        && (ends_with((const char *)file, ".woff")
+            || ends_with((const char *)file, ".woff2")))
+        return false;
+    if (FcPatternGetString(p, FC_FONTFORMAT, 0, &format) != FcResultMatch)
+        return false;
+    return FcStrCmpIgnoreCase(format, (const FcChar8 *)"TrueType") == 0
+           || FcStrCmpIgnoreCase(format, (const FcChar8 *)"CFF") == 0;
+}
+
+static FcFontSet *
+the_config_fonts(void)
+{
+    int s, i;
+    if (config_fonts != NULL)
+        return config_fonts;
+    config_fonts = FcFontSetCreate();
+    if (config_fonts == NULL)
+        return NULL;
+    for (s = 0; s < 2; s++) {
+        FcFontSet *set = FcConfigGetFonts(NULL, (FcSetName)s);
+        if (set == NULL)
+            continue;
+        for (i = 0; i < set->nfont; i++)
+            if (supported_format(set->fonts[i])) {
+                FcPatternReference(set->fonts[i]);
+                FcFontSetAdd(config_fonts, set->fonts[i]);
+            }
+    }
+    return config_fonts;
+}
+
+static cairo_font_options_t *
+renderer_options(void)
+{
+    cairo_font_options_t *fo = cairo_font_options_create();
+    cairo_font_options_set_hint_metrics(fo, CAIRO_HINT_METRICS_OFF);
+    cairo_font_options_set_hint_style(fo, CAIRO_HINT_STYLE_NONE);
+    cairo_font_options_set_antialias(fo, CAIRO_ANTIALIAS_GRAY);
+    return fo;
+}
+
+static FcPattern *
+make_pattern(const char *family, bool italic, bool bold, int size,
+             const char *lang)
+{
+    const double dpi = 72.0;
+    FcPattern *p = FcPatternBuild(
+        NULL, FC_WEIGHT, FcTypeDouble,
+        FcWeightFromOpenTypeDouble(bold ? 700 : 400), FC_SLANT,
+        FcTypeInteger, italic ? FC_SLANT_ITALIC : FC_SLANT_ROMAN, FC_WIDTH,
+        FcTypeInteger, FC_WIDTH_NORMAL, FC_VARIABLE, FcTypeBool, FcDontCare,
+        FC_DPI, FcTypeDouble, dpi, FC_SIZE, FcTypeDouble,
+        size * (72. / 1024. / dpi), FC_PIXEL_SIZE, FcTypeDouble,
+        size / 1024., (char *)NULL);
+    const char *f = family;
+    cairo_font_options_t *fo;
+    if (p == NULL)
+        return NULL;
+    while (true) {
+        const char *comma = strchr(f, ',');
+        size_t n = comma != NULL ? (size_t)(comma - f) : strlen(f);
+        char name[256];
+        if (n < sizeof name) {
+            memcpy(name, f, n);
+            name[n] = '\0';
+            FcPatternAddString(p, FC_FAMILY, (const FcChar8 *)name);
+        }
+        if (comma == NULL)
+            break;
+        f = comma + 1;
+    }
+    FcPatternAddString(p, FC_LANG, (const FcChar8 *)lang);
+    FcConfigSubstitute(NULL, p, FcMatchPattern);
+    fo = renderer_options();
+    cairo_ft_font_options_substitute(fo, p);
+    cairo_font_options_destroy(fo);
+    FcDefaultSubstitute(p);
+    return p;
+}
+
+cf__nfontset_t *
+cf__nfontset_get(const char *family, bool italic, bool bold, int size,
+                 const char *lang)
+{
+    cf__nfontset_t *s;
+    FcResult res;
+    FcFontSet *fonts;
+    size_t i;
+    for (i = 0; i < nsets; i++) {
+        s = sets[i];
+        if (s->italic == italic && s->bold == bold && s->size == size
+            && strcmp(s->family, family) == 0 && strcmp(s->lang, lang) == 0)
+            return s;
+    }
+    if (strlen(lang) >= sizeof s->lang)
+        return NULL;
+    {
+        cf__nfontset_t **t = room(sets, nsets, &cap_sets, sizeof *sets);
+        if (t == NULL)
+            return NULL;
+        sets = t;
+    }
+    fonts = the_config_fonts();
+    s = calloc(1, sizeof *s);
+    if (fonts == NULL || s == NULL) {
+        free(s);
+        return NULL;
+    }
+    s->family = malloc(strlen(family) + 1);
+    s->pattern = make_pattern(family, italic, bold, size, lang);
+    if (s->family == NULL || s->pattern == NULL) {
+        if (s->pattern != NULL)
+            FcPatternDestroy(s->pattern);
+        free(s->family);
+        free(s);
+        return NULL;
+    }
+    strcpy(s->family, family);
+    strcpy(s->lang, lang);
+    s->italic = italic;
+    s->bold = bold;
+    s->size = size;
+    s->match = FcFontSetMatch(NULL, &fonts, 1, s->pattern, &res);
+    sets[nsets++] = s;
+    return s;
+}
+
+/* The HarfBuzz face of a font file (pango's: the file's blob). */
+static hb_face_t *
+hb_face_of(const char *file, int index)
+{
+    size_t i;
+    hb_blob_t *blob;
+    hb_face_entry_t *e;
+    for (i = 0; i < nhb_faces; i++)
+        if (hb_faces[i].index == index && strcmp(hb_faces[i].file, file) == 0)
+            return hb_faces[i].face;
+    e = room(hb_faces, nhb_faces, &cap_hb_faces, sizeof *hb_faces);
+    if (e == NULL)
+        return NULL;
+    hb_faces = e;
+    e = &hb_faces[nhb_faces];
+    e->file = malloc(strlen(file) + 1);
+    if (e->file == NULL)
+        return NULL;
+    strcpy(e->file, file);
+    e->index = index;
+    blob = hb_blob_create_from_file(file);
+    e->face = hb_face_create(blob, (unsigned)index);
+    hb_blob_destroy(blob);
+    nhb_faces++;
+    return e->face;
+}
+
+/* The product of the pattern's matrices (fontconfig's, y up). */
+static FcMatrix
+pattern_matrix(const FcPattern *p)
+{
+    FcMatrix m, *v;
+    int i;
+    FcMatrixInit(&m);
+    for (i = 0; FcPatternGetMatrix(p, FC_MATRIX, i, &v) == FcResultMatch; i++)
+        FcMatrixMultiply(&m, &m, v);
+    return m;
+}
+
+/* pango's HarfBuzz font of the face (pango_fc_font_create_hb_font). */
+static void
+make_hb_font(cf__nface_t *f, hb_face_t *face)
+{
+    FcMatrix m = pattern_matrix(f->pattern);
+    /* pango's font matrix: y down */
+    double xx = m.xx, yx = -m.yx, xy = m.xy, yy = -m.yy;
+    double major = sqrt(xx * xx + yx * yx), minor, det;
+    double pixel = 1, point = 1, dpi, x0, y0, x1, y1, slant;
+    if (major != 0) {
+        det = xx * yy - yx * xy;
+        if (det < 0)
+            det = -det;
+        minor = det / major;
+    } else {
+        minor = 0;
+    }
+    x0 = xy;   /* (0, 1) and (1, 0) through the matrix */
+    y0 = yy;
+    x1 = xx;
+    y1 = yx;
+    slant = (x0 * x1 + y0 * y1) / (x0 * x0 + y0 * y0);
+    if (FcPatternGetDouble(f->pattern, FC_SIZE, 0, &point) != FcResultMatch)
+        point = 13.;
+    if (FcPatternGetDouble(f->pattern, FC_PIXEL_SIZE, 0, &pixel)
+        != FcResultMatch) {
+        if (FcPatternGetDouble(f->pattern, FC_DPI, 0, &dpi) != FcResultMatch)
+            dpi = 72.;
+        pixel = point * dpi / 72.;
+    }
+    f->hb = hb_font_create(face);
+    hb_font_set_scale(f->hb, (int)(pixel * 1024 * (1. / (1. / major))),
+                      (int)(pixel * 1024 * (1. / (1. / minor))));
+    hb_font_set_ptem(f->hb, (float)point);
+    hb_font_set_synthetic_slant(f->hb, (float)slant);
+}
+
+static cf__nface_t *
+new_face(FcPattern *prepared)
+{
+    cf__nface_t *f;
+    FcChar8 *file, *fam, *feat;
+    FcCharSet *cs;
+    int index = 0, slant = 0, width = 100;
+    size_t i;
+    double weight = 80;
+    hb_face_t *hbf;
+    hb_font_extents_t ext;
+    cf__nface_t **grown;
+    for (i = 0; i < nfaces; i++)
+        if (FcPatternEqual(faces[i]->pattern, prepared)) {
+            FcPatternDestroy(prepared);
+            return faces[i];
+        }
+    grown = room(faces, nfaces, &cap_faces, sizeof *faces);
+    if (grown != NULL)
+        faces = grown;
+    if (grown == NULL
+        || FcPatternGetString(prepared, FC_FILE, 0, &file) != FcResultMatch
+        || (f = calloc(1, sizeof *f)) == NULL) {
+        FcPatternDestroy(prepared);
+        return NULL;
+    }
+    FcPatternGetInteger(prepared, FC_INDEX, 0, &index);
+    f->pattern = prepared;
+    if (FcPatternGetCharSet(prepared, FC_CHARSET, 0, &cs) == FcResultMatch)
+        f->charset = cs;
+    hbf = hb_face_of((const char *)file, index);
+    if (hbf == NULL) {
+        FcPatternDestroy(prepared);
+        free(f);
+        return NULL;
+    }
+    make_hb_font(f, hbf);
+    f->unsupported =
+        hb_ot_var_get_axis_count(hbf) > 0 || index != (index & 0xffff)
+        || FcPatternGetString(prepared, FC_FONT_FEATURES, 0, &feat)
+               == FcResultMatch
+        || FcPatternGetString(prepared, FC_FONT_VARIATIONS, 0, &feat)
+               == FcResultMatch;
+    hb_font_get_h_extents(f->hb, &ext);
+    f->ext_y = -ext.ascender;
+    f->ext_height = ext.ascender - ext.descender;
+    /* the face without its size, as pango describes a font */
+    if (FcPatternGetString(prepared, FC_FAMILY, 0, &fam) != FcResultMatch)
+        fam = (FcChar8 *)"";
+    FcPatternGetInteger(prepared, FC_SLANT, 0, &slant);
+    FcPatternGetDouble(prepared, FC_WEIGHT, 0, &weight);
+    FcPatternGetInteger(prepared, FC_WIDTH, 0, &width);
+    snprintf(f->key, sizeof f->key, "%s|%d|%g|%d", (const char *)fam, slant,
+             weight, width);
+    f->face.key = f->key;
+    f->face.outlines = cf__font_outline_cache_new();
+    faces[nfaces++] = f;
+    return f;
+}
+
+/* The set's sort, made when a font after the first is needed (most
+** texts find all their characters in the best match). */
+static FcFontSet *
+sorted(cf__nfontset_t *s)
+{
+    FcFontSet *fonts = the_config_fonts();
+    FcResult res;
+    if (s->sorted == NULL && !s->sort_failed && fonts != NULL) {
+        s->sorted = FcFontSetSort(NULL, &fonts, 1, s->pattern, FcTrue, NULL,
+                                  &res);
+        s->sort_failed = s->sorted == NULL;
+    }
+    return s->sorted;
+}
+
+cf__nface_t *
+cf__nfontset_font(cf__nfontset_t *s, int i)
+{
+    while ((size_t)i >= s->nfonts && !s->ended) {
+        FcPattern *p = NULL;
+        cf__nface_t **t;
+        size_t k = s->nfonts;
+        if (k == 0 && s->match != NULL) {
+            FcPatternReference(s->match);
+            p = s->match;
+        } else if (sorted(s) != NULL && k < (size_t)s->sorted->nfont) {
+            p = FcFontRenderPrepare(NULL, s->pattern, s->sorted->fonts[k]);
+        }
+        t = s->fonts;
+        if (k == s->cap) {
+            s->cap = s->cap ? 2 * s->cap : 8;
+            t = realloc(s->fonts, s->cap * sizeof *t);
+        }
+        if (p == NULL || t == NULL) {
+            if (p != NULL)
+                FcPatternDestroy(p);
+            s->ended = true;
+            break;
+        }
+        s->fonts = t;
+        t[k] = new_face(p);
+        if (t[k] == NULL) {
+            s->ended = true;
+            break;
+        }
+        s->nfonts++;
+    }
+    return (size_t)i < s->nfonts ? s->fonts[i] : NULL;
+}
+
+cairo_scaled_font_t *
+cf__nface_scaled(cf__nface_t *f)
+{
+    cairo_font_face_t *ff;
+    cairo_matrix_t fm, gravity, m, ctm;
+    cairo_font_options_t *fo;
+    FcMatrix fc;
+    double size;
+    if (f->scaled != NULL)
+        return f->scaled;
+    if (FcPatternGetDouble(f->pattern, FC_PIXEL_SIZE, 0, &size)
+        != FcResultMatch)
+        return NULL;
+    fc = pattern_matrix(f->pattern);
+    cairo_matrix_init(&fm, fc.xx, -fc.yx, -fc.xy, fc.yy, 0., 0.);
+    cairo_matrix_scale(&fm, size, size);
+    cairo_matrix_init_rotate(&gravity, 0);   /* gravity south */
+    cairo_matrix_multiply(&m, &fm, &gravity);
+    cairo_matrix_init_identity(&ctm);
+    fo = renderer_options();
+    ff = cairo_ft_font_face_create_for_pattern(f->pattern);
+    f->scaled = cairo_scaled_font_create(ff, &m, &ctm, fo);
+    cairo_font_face_destroy(ff);
+    cairo_font_options_destroy(fo);
+    if (cairo_scaled_font_status(f->scaled) != CAIRO_STATUS_SUCCESS) {
+        cairo_scaled_font_destroy(f->scaled);
+        f->scaled = NULL;
+    }
+    f->face.scaled = f->scaled;
+    return f->scaled;
+}

@@ -1,0 +1,49 @@
+/*
+** The faces and font sets of the native fonts (render/backends/
+** font-faces.c): what pango's fontconfig font map would choose, without
+** pango.  One per process, as fontconfig's configuration is.
+*/
+#ifndef CURVEFIG_RENDER_FONT_FACES_H
+#define CURVEFIG_RENDER_FONT_FACES_H
+
+#include <stdbool.h>
+
+#include <cairo.h>
+#include <fontconfig/fontconfig.h>
+#include <hb.h>
+
+#include "font.h"
+
+/* A face at a size: a font of pango's font map (a pattern fontconfig
+** prepared for the request). */
+typedef struct cf__nface {
+    FcPattern *pattern;
+    FcCharSet *charset;
+    hb_font_t *hb;                /* pango's HarfBuzz font of it */
+    bool unsupported;             /* variations or features: pango's */
+    cairo_scaled_font_t *scaled;  /* made at need */
+    int ext_y, ext_height;        /* pango's logical extents of a glyph */
+    cf__font_face_t face;
+    char key[256];
+} cf__nface_t;
+
+typedef struct cf__nfontset cf__nfontset_t;
+
+/* The font set of the description (family list, italic, bold, size in
+** CF__FONT_SCALE units, language); NULL when out of memory. */
+cf__nfontset_t *cf__nfontset_get(const char *family, bool italic, bool bold,
+                                 int size, const char *lang);
+
+/* Its i-th font (pango's order: fontconfig's match, then its sort);
+** NULL past the last. */
+cf__nface_t *cf__nfontset_font(cf__nfontset_t *set, int i);
+
+/* The face's scaled font as pango-cairo makes it (NULL: cairo failed). */
+cairo_scaled_font_t *cf__nface_scaled(cf__nface_t *f);
+
+/* Serialise the native fonts' use of their caches (and of HarfBuzz's
+** buffers): faces and font sets live as long as the process. */
+void cf__nfaces_lock(void);
+void cf__nfaces_unlock(void);
+
+#endif

@@ -1,0 +1,434 @@
+/*
+** A shaped run's glyphs with cairo (render/backends/font-glyphs.h): the
+** one place that turns the fonts' description of a run (render/labels/
+** font.h) into cairo calls, whether pango or HarfBuzz shaped it.  The
+** drawing repeats what pango's cairo renderer does for a one-line layout
+** (pango 1.50, pangocairo-render.c), so that the calls, and so the bytes
+** of every output, are the same: the current point read back from cairo
+** (its 24.8 fixed point rounds it), each span drawn inside cairo_save and
+** cairo_restore with its scaled font, its glyphs at base + offset / 1024
+** in doubles, cairo_show_text_glyphs with the span's text and clusters
+** where the surface keeps text (PDF), and the current point restored.
+*/
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "curvefig/core.h"
+#include "font-glyphs.h"
+#include "grow.h"
+
+#define STACK_GLYPHS 64
+
+static bool
+drawn(unsigned id)
+{
+    return id != CF__FONT_GLYPH_EMPTY && !(id & CF__FONT_GLYPH_UNKNOWN);
+}
+
+/* The clusters of span s for cairo_show_text_glyphs, in the order of its
+** text (pango's glyph item iterator): consecutive glyphs of one cluster
+** value, the bytes up to the next cluster's, empty and unknown glyphs
+** not counted.  The number of clusters. */
+static int
+span_clusters(const cf__font_glyphs_t *g, const cf__font_span_t *s,
+              cairo_text_cluster_t *out)
+{
+    const cf__font_glyph_t *gl = g->glyphs + s->glyph;
+    int n = (int)s->nglyphs, k = 0, i, step = s->backward ? -1 : 1;
+    int start = s->backward ? n - 1 : 0;
+    unsigned start_byte = 0;
+    for (i = start; i >= 0 && i < n;) {
+        unsigned c = gl[i].cluster, end_byte;
+        int j = i, count = 0;
+        while (j >= 0 && j < n && gl[j].cluster <= c) {
+            if (drawn(gl[j].id))
+                count++;
+            j += step;
+        }
+        end_byte = j >= 0 && j < n ? gl[j].cluster : (unsigned)s->nbytes;
+        out[k].num_bytes = (int)(end_byte - start_byte);
+        out[k].num_glyphs = count;
+        k++;
+        start_byte = end_byte;
+        i = j;
+    }
+    return k;
+}
+
+static void
+draw_span(cairo_t *cr, const cf__font_glyphs_t *g, const cf__font_span_t *s,
+          double xo, double yo, bool path, bool clusters)
+{
+    cairo_glyph_t stack[STACK_GLYPHS], *cg = stack;
+    cairo_text_cluster_t cstack[STACK_GLYPHS], *cc = cstack;
+    cairo_scaled_font_t *sf = s->face->scaled;
+    double base_x = xo + (double)s->x / CF__FONT_SCALE;
+    double base_y = yo + (double)(g->baseline - s->shift) / CF__FONT_SCALE;
+    size_t i;
+    int count = 0, x_position = 0;
+    cairo_save(cr);
+    if (sf == NULL || cairo_scaled_font_status(sf) != CAIRO_STATUS_SUCCESS)
+        goto done;   /* pango draws boxes there: such runs stay pango's */
+    cairo_set_scaled_font(cr, sf);
+    if (s->nglyphs > STACK_GLYPHS) {
+        cg = cf_alloc_array(s->nglyphs, sizeof *cg);
+        cc = cf_alloc_array(s->nglyphs, sizeof *cc);
+        if (cg == NULL || cc == NULL)
+            goto done;
+    }
+    for (i = 0; i < s->nglyphs; i++) {
+        const cf__font_glyph_t *gi = &g->glyphs[s->glyph + i];
+        if (drawn(gi->id)) {
+            cg[count].index = gi->id;
+            cg[count].x = base_x + (double)(x_position + gi->x)
+                                       / CF__FONT_SCALE;
+            cg[count].y = gi->y == 0 ? base_y
+                                     : base_y + (double)gi->y
+                                                    / CF__FONT_SCALE;
+            count++;
+        }
+        x_position += gi->width;
+    }
+    if (path)
+        cairo_glyph_path(cr, cg, count);
+    else if (clusters)
+        cairo_show_text_glyphs(cr, g->text + s->byte, (int)s->nbytes, cg,
+                               count, cc, span_clusters(g, s, cc),
+                               s->backward ? CAIRO_TEXT_CLUSTER_FLAG_BACKWARD
+                                           : 0);
+    else
+        cairo_show_glyphs(cr, cg, count);
+done:
+    if (cg != stack)
+        cf_free(cg);
+    if (cc != cstack)
+        cf_free(cc);
+    cairo_restore(cr);
+}
+
+void
+cf__font_glyphs_draw(cairo_t *cr, const cf__font_glyphs_t *g, bool path)
+{
+    bool had = cairo_has_current_point(cr), clusters;
+    double xo, yo;
+    size_t i;
+    cairo_get_current_point(cr, &xo, &yo);
+    clusters = !path
+               && cairo_surface_has_show_text_glyphs(cairo_get_target(cr));
+    for (i = 0; i < g->nspans; i++)
+        draw_span(cr, g, &g->spans[i], xo, yo, path, clusters);
+    if (had)
+        cairo_move_to(cr, xo, yo);
+    else
+        cairo_new_sub_path(cr);
+}
+
+bool
+cf__font_glyphs_unknown(const cf__font_glyphs_t *g)
+{
+    size_t i;
+    for (i = 0; i < g->nglyphs; i++)
+        if (g->glyphs[i].id != CF__FONT_GLYPH_EMPTY
+            && (g->glyphs[i].id & CF__FONT_GLYPH_UNKNOWN))
+            return true;
+    return false;
+}
+
+/* v as the glyph data writes and the page reads it */
+static double
+as_written(double v)
+{
+    char buf[32];
+    snprintf(buf, sizeof buf, "%.5g", v);
+    return strtod(buf, NULL);
+}
+
+int
+cf__font_glyph_outline(cairo_t *cr, cairo_scaled_font_t *sf,
+                       unsigned long id,
+                       void (*f)(void *u, char op, const double *v), void *u)
+{
+    cairo_matrix_t fm;
+    cairo_glyph_t g;
+    cairo_path_t *path;
+    double s;
+    int i, rc = 0;
+    if (sf == NULL)
+        return -1;
+    /* the font's own scaled font: a scaled font of the same face made at
+    ** another size moved the glyph paths of this one by 1/128 bp */
+    cairo_scaled_font_get_font_matrix(sf, &fm);
+    s = fm.yy != 0 ? fm.yy : 1;
+    g.index = id;
+    g.x = g.y = 0;
+    cairo_set_scaled_font(cr, sf);
+    cairo_new_path(cr);
+    cairo_glyph_path(cr, &g, 1);
+    path = cairo_copy_path(cr);
+    cairo_new_path(cr);
+    if (path->status != CAIRO_STATUS_SUCCESS)
+        rc = -1;
+    for (i = 0; rc == 0 && i < path->num_data;
+         i += path->data[i].header.length) {
+        static const char op[] = { 'M', 'L', 'C', 'Z' };
+        const cairo_path_data_t *d = &path->data[i];
+        double v[6];
+        int k;
+        for (k = 1; k < d->header.length && k <= 3; k++) {
+            v[2 * k - 2] = as_written(d[k].point.x / s);
+            v[2 * k - 1] = as_written(d[k].point.y / s);
+        }
+        f(u, op[d->header.type], v);
+    }
+    cairo_path_destroy(path);
+    return rc;
+}
+
+/* A glyph's outline per bp, as cf__font_glyph_outline hands it out. */
+typedef struct glyph_path {
+    unsigned long id;
+    size_t nops;
+    char *ops;
+    double *v;     /* 2 * (1, 1, 3 or 0) numbers an op */
+} glyph_path_t;
+
+typedef struct outline_cache {
+    pthread_mutex_t lock;
+    glyph_path_t *paths;
+    size_t n, cap;
+} outline_cache_t;
+
+void *
+cf__font_outline_cache_new(void)
+{
+    outline_cache_t *c = calloc(1, sizeof *c);
+    if (c != NULL)
+        pthread_mutex_init(&c->lock, NULL);
+    return c;
+}
+
+typedef struct path_buf {
+    glyph_path_t p;
+    size_t nv, cap_ops, cap_v;
+    bool failed;
+} path_buf_t;
+
+static void
+collect(void *u, char op, const double *v)
+{
+    path_buf_t *b = u;
+    size_t k = op == 'C' ? 6 : op == 'Z' ? 0 : 2;
+    if (b->failed)
+        return;
+    if (b->p.nops == b->cap_ops) {
+        char *t = realloc(b->p.ops, b->cap_ops ? 2 * b->cap_ops : 64);
+        b->failed = t == NULL;
+        if (t == NULL)
+            return;
+        b->p.ops = t;
+        b->cap_ops = b->cap_ops ? 2 * b->cap_ops : 64;
+    }
+    if (b->nv + k > b->cap_v) {
+        size_t cap = b->cap_v ? 2 * b->cap_v : 256;
+        double *t = realloc(b->p.v, cap * sizeof *t);
+        b->failed = t == NULL;
+        if (t == NULL)
+            return;
+        b->p.v = t;
+        b->cap_v = cap;
+    }
+    b->p.ops[b->p.nops++] = op;
+    memcpy(b->p.v + b->nv, v, k * sizeof *v);
+    b->nv += k;
+}
+
+/* Hand glyph id's outline per bp to f: from the cache when the face has
+** one (filling it the first time), else from cairo. */
+static int
+glyph_outline_cached(cairo_t *cr, const cf__font_face_t *face,
+                     unsigned long id,
+                     void (*f)(void *u, char op, const double *v), void *u)
+{
+    outline_cache_t *c = face->outlines;
+    const glyph_path_t *p = NULL;
+    path_buf_t b;
+    size_t i, nv = 0;
+    if (c == NULL)
+        return cf__font_glyph_outline(cr, face->scaled, id, f, u);
+    pthread_mutex_lock(&c->lock);
+    for (i = 0; i < c->n && p == NULL; i++)
+        if (c->paths[i].id == id)
+            p = &c->paths[i];
+    if (p == NULL) {
+        memset(&b, 0, sizeof b);
+        b.p.id = id;
+        if (cf__font_glyph_outline(cr, face->scaled, id, collect, &b) != 0
+            || b.failed) {
+            free(b.p.ops);
+            free(b.p.v);
+            pthread_mutex_unlock(&c->lock);
+            return -1;
+        }
+        if (c->n == c->cap) {
+            size_t cap = c->cap ? 2 * c->cap : 32;
+            glyph_path_t *t = realloc(c->paths, cap * sizeof *t);
+            if (t == NULL) {
+                free(b.p.ops);
+                free(b.p.v);
+                pthread_mutex_unlock(&c->lock);
+                return -1;
+            }
+            c->paths = t;
+            c->cap = cap;
+        }
+        c->paths[c->n] = b.p;
+        p = &c->paths[c->n++];
+    }
+    for (i = 0; i < p->nops; i++) {
+        char op = p->ops[i];
+        f(u, op, p->v + nv);
+        nv += op == 'C' ? 6 : op == 'Z' ? 0 : 2;
+    }
+    pthread_mutex_unlock(&c->lock);
+    return 0;
+}
+
+typedef struct place {
+    cf__pathb_t *out;
+    double ox, oy, size;  /* the glyph's origin, the run's size */
+} place_t;
+
+/* A point of a glyph's outline placed as render/labels/font-table.c
+** places it (the same operations, so the same doubles). */
+static void
+placed(void *u, char op, const double *v)
+{
+    const place_t *p = u;
+    int n = op == 'C' ? 3 : op == 'Z' ? 0 : 1, j;
+    double xy[6];
+    for (j = 0; j < n; j++) {
+        xy[2 * j] = p->ox + v[2 * j] * p->size;
+        xy[2 * j + 1] = p->oy + v[2 * j + 1] * p->size;
+    }
+    cf__pathb_add(p->out, op == 'M' ? CF__SEG_MOVE : op == 'L' ? CF__SEG_LINE
+                          : op == 'C' ? CF__SEG_CURVE : CF__SEG_CLOSE, xy);
+}
+
+void
+cf__font_glyphs_outline(cairo_t **cr, const cf__font_glyphs_t *g, double x,
+                        double y, cf__pathb_t *out)
+{
+    place_t p;
+    size_t i, k;
+    if (*cr == NULL) {
+        cairo_surface_t *s = cairo_recording_surface_create(
+            CAIRO_CONTENT_ALPHA, NULL);
+        *cr = cairo_create(s);
+        cairo_surface_destroy(s);
+    }
+    p.out = out;
+    p.size = g->size;
+    for (i = 0; i < g->nspans; i++) {
+        const cf__font_span_t *s = &g->spans[i];
+        int gx = s->x;
+        for (k = 0; k < s->nglyphs; k++) {
+            const cf__font_glyph_t *gl = &g->glyphs[s->glyph + k];
+            if (drawn(gl->id)) {
+                p.ox = x + (double)(gx + gl->x) / CF__FONT_SCALE;
+                p.oy = y + (double)(g->baseline + gl->y) / CF__FONT_SCALE;
+                if (glyph_outline_cached(*cr, s->face, gl->id, placed, &p)
+                    != 0)
+                    out->failed = true;
+            }
+            gx += gl->width;
+        }
+    }
+}
+
+/* *dst (capacity *cap) holding src[0..n) and a NUL; false when out of
+** memory. */
+static bool
+copy_text(char **dst, size_t *cap, const char *src, size_t n)
+{
+    char *t = cf__grow_array(*dst, cap, n + 1, 1, 64);
+    if (t == NULL)
+        return false;
+    *dst = t;
+    memcpy(t, src, n);
+    t[n] = '\0';
+    return true;
+}
+
+void
+cf__font_glyphs_reset(cf__font_glyphs_buf_t *b, const cf__font_req_t *req,
+                      const cf__font_shape_t *sh)
+{
+    b->failed = !copy_text(&b->text, &b->cap_text, req->text, req->len)
+                || !copy_text(&b->family, &b->cap_family, req->family,
+                              strlen(req->family));
+    memset(&b->g, 0, sizeof b->g);
+    b->g.family = b->failed ? "" : b->family;
+    b->g.italic = req->italic;
+    b->g.bold = req->bold;
+    b->g.text = b->failed ? "" : b->text;
+    b->g.len = b->failed ? 0 : req->len;
+    b->g.shape = *sh;
+    b->g.size = req->size;
+    b->g.spans = b->spans;
+    b->g.glyphs = b->glyphs;
+}
+
+void
+cf__font_glyphs_span(cf__font_glyphs_buf_t *b, const cf__font_face_t *face,
+                     size_t byte, size_t nbytes, int x)
+{
+    cf__font_span_t *s = cf__grow_array(b->spans, &b->cap_spans,
+                                        b->g.nspans + 1, sizeof *s, 4);
+    if (s == NULL) {
+        b->failed = true;
+        return;
+    }
+    b->spans = s;
+    s += b->g.nspans++;
+    s->face = face;
+    s->glyph = b->g.nglyphs;
+    s->nglyphs = 0;
+    s->byte = byte;
+    s->nbytes = nbytes;
+    s->x = x;
+    s->shift = 0;
+    s->backward = false;
+    b->g.spans = b->spans;
+}
+
+void
+cf__font_glyphs_add(cf__font_glyphs_buf_t *b, const cf__font_glyph_t *glyph)
+{
+    cf__font_glyph_t *g;
+    if (b->g.nspans == 0) {
+        b->failed = true;
+        return;
+    }
+    g = cf__grow_array(b->glyphs, &b->cap_glyphs, b->g.nglyphs + 1,
+                       sizeof *g, 16);
+    if (g == NULL) {
+        b->failed = true;
+        return;
+    }
+    b->glyphs = g;
+    g[b->g.nglyphs++] = *glyph;
+    b->spans[b->g.nspans - 1].nglyphs++;
+    b->g.glyphs = b->glyphs;
+}
+
+void
+cf__font_glyphs_fini(cf__font_glyphs_buf_t *b)
+{
+    cf_free(b->spans);
+    cf_free(b->glyphs);
+    cf_free(b->text);
+    cf_free(b->family);
+    memset(b, 0, sizeof *b);
+}

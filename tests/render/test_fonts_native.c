@@ -1,0 +1,448 @@
+/* The native fonts (render/backends/font-native.c: HarfBuzz in the faces
+** pango would choose) against pango itself (render/backends/font-pango.c):
+** every run the labels of figures/ and examples/ shape (fonts-corpus.txt,
+** the requests of a render of each), the characters and pairs a course
+** page's glyph data shapes, torture texts and whole labels give the same
+** shaping (baseline, logical and ink rectangles, unknown glyphs) and the
+** same glyphs (spans, their text, faces, glyph ids, offsets, advances and
+** clusters); drawn into a PDF, the two give the same bytes.  A run the
+** native fonts hand to pango must be one their rule names. */
+#include <locale.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <cairo-ft.h>
+#include <cairo-pdf.h>
+#include <cmocka.h>
+
+#include "curvefig/label.h"
+#include "font-glyphs.h"
+#include "font-native.h"
+#include "font-pango.h"
+#include "label-impl.h"
+#include "label-private.h"
+
+static const char *corpus_path;
+
+#define SERIF "Latin Modern Roman,CMU Serif,Noto Serif CJK SC"
+#define SUB "LM Roman 7," SERIF
+#define MATH "Latin Modern Math," SERIF
+#define SANS "Latin Modern Sans,CMU Sans Serif,Noto Sans CJK SC"
+
+typedef struct pair {
+    void *pctx, *nctx;
+    void *prun, *nrun;
+    int native, handed;   /* runs shaped natively, handed to pango */
+} pair_t;
+
+static void
+open_pair(pair_t *p)
+{
+    memset(p, 0, sizeof *p);
+    p->pctx = cf__pango_fonts.open(cf__pango_fonts.self);
+    p->nctx = cf__native_fonts.open(cf__native_fonts.self);
+    assert_non_null(p->pctx);
+    assert_non_null(p->nctx);
+}
+
+static void
+close_pair(pair_t *p)
+{
+    cf__pango_fonts.release(p->prun);
+    cf__native_fonts.release(p->nrun);
+    cf__pango_fonts.close(p->pctx);
+    cf__native_fonts.close(p->nctx);
+}
+
+/* The bytes of a PDF of g drawn from (3.3, 17.7) (a stable date). */
+static void
+pdf_write(void *u, const unsigned char *data, unsigned n);
+
+typedef struct bytes {
+    unsigned char *data;
+    size_t n;
+} bytes_t;
+
+static cairo_status_t
+pdf_sink(void *u, const unsigned char *data, unsigned n)
+{
+    pdf_write(u, data, n);
+    return CAIRO_STATUS_SUCCESS;
+}
+
+static void
+pdf_write(void *u, const unsigned char *data, unsigned n)
+{
+    bytes_t *b = u;
+    b->data = realloc(b->data, b->n + n);
+    assert_non_null(b->data);
+    memcpy(b->data + b->n, data, n);
+    b->n += n;
+}
+
+static bytes_t
+drawn(const cf__fonts_t *fonts, void *run, bool path)
+{
+    bytes_t b = { NULL, 0 };
+    cairo_surface_t *s =
+        cairo_pdf_surface_create_for_stream(pdf_sink, &b, 200, 100);
+    cairo_t *cr = cairo_create(s);
+    cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_CREATE_DATE,
+                                   "2020-01-01T00:00:00Z");
+    cairo_move_to(cr, 3.3, 17.7);
+    if (fonts == &cf__pango_fonts)
+        fonts->draw(run, cr, path);
+    else
+        cf__font_glyphs_draw(cr, fonts->glyphs(run), path);
+    if (path)
+        cairo_fill(cr);
+    cairo_destroy(cr);
+    cairo_surface_finish(s);
+    cairo_surface_destroy(s);
+    return b;
+}
+
+/* A span's face on stderr, when two differ. */
+static void
+describe_span(const char *who, const cf__font_span_t *s)
+{
+    cairo_scaled_font_t *sf = s->face->scaled;
+    cairo_font_extents_t e;
+    cairo_matrix_t m;
+    FT_Face face = cairo_ft_scaled_font_lock_face(sf);
+    cairo_scaled_font_extents(sf, &e);
+    cairo_scaled_font_get_font_matrix(sf, &m);
+    fprintf(stderr, "%s span: %s: %s %s, matrix %g %g %g %g, ascent %g\n",
+            who, s->face->key, face != NULL ? face->family_name : "?",
+            face != NULL ? face->style_name : "?", m.xx, m.yx, m.xy, m.yy,
+            e.ascent);
+    cairo_ft_scaled_font_unlock_face(sf);
+}
+
+static void
+same_glyphs(const cf__font_glyphs_t *a, const cf__font_glyphs_t *b,
+            const char *what)
+{
+    size_t i;
+    if (a->nspans != b->nspans || a->nglyphs != b->nglyphs
+        || a->baseline != b->baseline) {
+        for (i = 0; i < a->nspans; i++)
+            describe_span("pango", &a->spans[i]);
+        for (i = 0; i < b->nspans; i++)
+            describe_span("native", &b->spans[i]);
+        fail_msg("%s: %zu/%zu spans, %zu/%zu glyphs, baseline %d/%d", what,
+                 a->nspans, b->nspans, a->nglyphs, b->nglyphs, a->baseline,
+                 b->baseline);
+    }
+    for (i = 0; i < a->nspans; i++) {
+        const cf__font_span_t *s = &a->spans[i], *t = &b->spans[i];
+        cairo_font_face_t *fa = cairo_scaled_font_get_font_face(s->face->scaled);
+        cairo_font_face_t *fb = cairo_scaled_font_get_font_face(t->face->scaled);
+        cairo_matrix_t ma, mb;
+        cairo_scaled_font_get_font_matrix(s->face->scaled, &ma);
+        cairo_scaled_font_get_font_matrix(t->face->scaled, &mb);
+        if (s->byte != t->byte || s->nbytes != t->nbytes || s->x != t->x
+            || s->glyph != t->glyph || s->nglyphs != t->nglyphs
+            || s->backward != t->backward || fa != fb
+            || memcmp(&ma, &mb, sizeof ma) != 0)
+            fail_msg("%s: span %zu differs (bytes %zu+%zu / %zu+%zu, x %d/%d,"
+                     " face %s)", what, i, s->byte, s->nbytes, t->byte,
+                     t->nbytes, s->x, t->x, fa == fb ? "same" : "other");
+    }
+    for (i = 0; i < a->nglyphs; i++) {
+        const cf__font_glyph_t *g = &a->glyphs[i], *h = &b->glyphs[i];
+        if (g->id != h->id || g->x != h->x || g->y != h->y
+            || g->width != h->width || g->cluster != h->cluster)
+            fail_msg("%s: glyph %zu: %u %d %d %d %u / %u %d %d %d %u", what, i,
+                     g->id, g->x, g->y, g->width, g->cluster, h->id, h->x,
+                     h->y, h->width, h->cluster);
+    }
+}
+
+/* Shape req both ways: the same shaping, the same glyphs (when the
+** native fonts shaped it), the same PDF bytes for a few.  Returns
+** whether the native fonts shaped it themselves. */
+static bool
+compare(pair_t *p, const cf__font_req_t *req, bool draw)
+{
+    cf__font_shape_t a, b;
+    char what[512];
+    bool native;
+    snprintf(what, sizeof what, "\"%.*s\" in %s%s%s at %g", (int)req->len,
+             req->text, req->family, req->italic ? " italic" : "",
+             req->bold ? " bold" : "", req->size);
+    assert_int_equal(cf__pango_fonts.shape(p->pctx, req, &p->prun, &a), 0);
+    assert_int_equal(cf__native_fonts.shape(p->nctx, req, &p->nrun, &b), 0);
+    native = !cf__native_fonts_used_pango(p->nrun);
+    if (native) {
+        p->native++;
+        assert_true(cf__native_fonts_handles(req->text, req->len));
+        same_glyphs(cf__pango_fonts.glyphs(p->prun),
+                    cf__native_fonts.glyphs(p->nrun), what);
+    } else {
+        p->handed++;
+    }
+    if (memcmp(&a, &b, sizeof a) != 0)
+        fail_msg("%s: shaping differs: baseline %d/%d logical %d %d %d %d /"
+                 " %d %d %d %d ink %d %d %d %d / %d %d %d %d unknown %d/%d",
+                 what, a.baseline, b.baseline, a.logical[0], a.logical[1],
+                 a.logical[2], a.logical[3], b.logical[0], b.logical[1],
+                 b.logical[2], b.logical[3], a.ink[0], a.ink[1], a.ink[2],
+                 a.ink[3], b.ink[0], b.ink[1], b.ink[2], b.ink[3], a.unknown,
+                 b.unknown);
+    if (draw && native) {
+        int k;
+        for (k = 0; k < 2; k++) {
+            bytes_t x = drawn(&cf__pango_fonts, p->prun, k == 1);
+            bytes_t y = drawn(&cf__native_fonts, p->nrun, k == 1);
+            if (x.n != y.n || memcmp(x.data, y.data, x.n) != 0)
+                fail_msg("%s: the PDF of its %s differs (%zu / %zu bytes)",
+                         what, k ? "path" : "glyphs", x.n, y.n);
+            free(x.data);
+            free(y.data);
+        }
+    }
+    return native;
+}
+
+static bool
+compare_text(pair_t *p, const char *family, bool italic, bool bold,
+             double size, const char *text, bool draw)
+{
+    cf__font_req_t req;
+    req.family = family;
+    req.italic = italic;
+    req.bold = bold;
+    req.size = size;
+    req.text = text;
+    req.len = strlen(text);
+    return compare(p, &req, draw);
+}
+
+/* Every run of the labels of figures/ and examples/. */
+static void
+test_corpus(void **state)
+{
+    FILE *f = fopen(corpus_path, "r");
+    char line[2048];
+    pair_t p;
+    int n = 0;
+    (void)state;
+    assert_non_null(f);
+    open_pair(&p);
+    while (fgets(line, sizeof line, f) != NULL) {
+        char *field[5], *s = line;
+        cf__font_req_t req;
+        int k;
+        line[strcspn(line, "\n")] = '\0';
+        for (k = 0; k < 5; k++) {
+            field[k] = s;
+            s = k < 4 ? strchr(s, '\t') : NULL;
+            if (k < 4) {
+                assert_non_null(s);
+                *s++ = '\0';
+            }
+        }
+        req.family = field[0];
+        req.italic = atoi(field[1]) != 0;
+        req.bold = atoi(field[2]) != 0;
+        req.size = strtod(field[3], NULL);
+        req.text = field[4];
+        req.len = strlen(field[4]);
+        compare(&p, &req, n % 16 == 0);
+        n++;
+    }
+    fclose(f);
+    /* every run of the course is the native fonts' */
+    assert_true(n > 500);
+    assert_int_equal(p.native, n);
+    close_pair(&p);
+}
+
+/* The characters and pairs a course page's glyph data shapes
+** (render/output/label-glyphs.c), at its 100 bp, in the theme's fonts. */
+static void
+test_characters_and_pairs(void **state)
+{
+    static const char *const families[] = { SERIF, SUB, MATH, SANS };
+    pair_t p;
+    size_t f;
+    (void)state;
+    open_pair(&p);
+    for (f = 0; f < sizeof families / sizeof families[0]; f++) {
+        unsigned a, b;
+        char s[16];
+        for (a = 0x20; a < 0x7f; a++) {
+            s[0] = (char)a;
+            s[1] = '\0';
+            compare_text(&p, families[f], f == 3, false, 100, s, false);
+        }
+        for (a = 0x391; a <= 0x3c9; a++) {
+            size_t n;
+            if (a == 0x3a2)
+                continue;   /* unassigned: pango's */
+            n = cf__utf8_encode(a, s);
+            s[n] = '\0';
+            compare_text(&p, families[f], false, f == 1, 100, s, false);
+        }
+        for (a = 'A'; a <= 'z'; a++)
+            for (b = 'A'; b <= 'z'; b += 3) {
+                s[0] = (char)a;
+                s[1] = (char)b;
+                s[2] = '\0';
+                compare_text(&p, families[f], false, false, 100, s, false);
+            }
+    }
+    assert_int_equal(p.handed, 0);
+    close_pair(&p);
+}
+
+typedef struct torture {
+    const char *text;
+    bool native;    /* the native fonts shape it (else: pango, by rule) */
+} torture_t;
+
+static const torture_t torture[] = {
+    { "ffi fl office", true },
+    { "AV To Wa Ty", true },
+    { "Bézierova křivka", true },
+    { "Рациональная кривая Безье", true },
+    { "Ελληνικά ω θ φ", true },
+    { "曲线", true },
+    { "曲线 P0", true },
+    { "曲线 P", true },
+    { "贝塞尔曲线", true },
+    { "曲线 P0 (a) [b]", true },
+    { "ひらがな カタカナ 한글", true },
+    { "x (кривая) «q» ‘s’ “t”", true },
+    { "∑ √ ∞ − ′ ↦ → ∈ ≤ ⋅ ∘ ⟨a⟩", true },
+    { "a\xcc\x83 e\xcc\x81 n\xcc\x8c", true },       /* combining marks */
+    { "  a  b\xc2\xa0" "c\xe2\x80\x89" "d  ", true }, /* spaces */
+    { "1/2 + 3 = 0.5", true },
+    { "\xf0\x9f\x98\x80 emoji", false },
+    { "\xe2\x9c\x94\xef\xb8\x8f", false },            /* VS16 */
+    { "\xd7\xa9\xd7\x9c\xd7\x95\xd7\x9d", false },    /* Hebrew, RTL */
+    { "abc \xd9\x85\xd8\xb1\xd8\xad\xd8\xa8\xd8\xa7", false }, /* Arabic */
+    { "a\xe2\x80\x8d" "b", false },                   /* ZWJ */
+    { "\xe0\xa4\xb9\xe0\xa4\xbf\xe0\xa4\xa8", false }, /* Devanagari */
+    { "tab\there", false },
+    { "", false },
+};
+
+static void
+test_torture(void **state)
+{
+    static const struct {
+        const char *family;
+        bool italic, bold;
+        double size;
+    } fonts[] = {
+        { SERIF, false, false, 10 }, { SERIF, true, false, 9.96 },
+        { SERIF, false, true, 12 }, { SERIF, true, true, 7 },
+        { SUB, false, false, 7 }, { MATH, false, false, 10 },
+        { SANS, false, false, 8 }, { SANS, true, true, 11.5 },
+    };
+    pair_t p;
+    size_t i, k;
+    (void)state;
+    open_pair(&p);
+    for (k = 0; k < sizeof fonts / sizeof fonts[0]; k++)
+        for (i = 0; i < sizeof torture / sizeof torture[0]; i++) {
+            bool native = compare_text(&p, fonts[k].family, fonts[k].italic,
+                                       fonts[k].bold, fonts[k].size,
+                                       torture[i].text, true);
+            if (!torture[i].native && native)
+                fail_msg("\"%s\" should have gone to pango",
+                         torture[i].text);
+            if (torture[i].native && !native)
+                fail_msg("\"%s\" went to pango", torture[i].text);
+        }
+    close_pair(&p);
+}
+
+/* A character of an allowed script that no font of the set has goes to
+** pango (which draws its box), by the rule's last clause. */
+static void
+test_no_font(void **state)
+{
+    pair_t p;
+    (void)state;
+    open_pair(&p);
+    /* U+A7C0, a Latin letter of Unicode 14 */
+    assert_false(compare_text(&p, "Latin Modern Roman", false, false, 10,
+                              "x\xea\x9f\x80y", true));
+    close_pair(&p);
+}
+
+/* Whole labels laid out with each, their boxes the same doubles. */
+static void
+test_labels(void **state)
+{
+    static const char *const texts[] = {
+        "$P_{11}$", "$\\mathbf{x}(t) = \\sum_{i=0}^n B_i^n(t)\\,P_i$",
+        "$\\mathbf{Bold}$ and $\\mathit{italic}$ $\\boldsymbol{x\\alpha}$",
+        "$\\mathrm{ffi} \\mathbb{R} \\mathcal{A}$ \\text{a  b}",
+        "$\\frac{1}{2}\\omega^2$", "Bézierova křivka $b_{030}$",
+        "\\text{曲线} $C^1$", "$\\alpha \\mapsto \\langle u, v \\rangle$",
+    };
+    size_t i, k;
+    (void)state;
+    for (i = 0; i < sizeof texts / sizeof texts[0]; i++) {
+        cf_label_t *a = NULL, *b = NULL;
+        cf_diag_t d;
+        cf_diag_clear(&d);
+        if (cf__label_create(&cf__pango_fonts, texts[i], NULL, 10, &a, &d)
+                != CF_STATUS_OK
+            || cf__label_create(&cf__native_fonts, texts[i], NULL, 10, &b,
+                                &d) != CF_STATUS_OK)
+            fail_msg("%s: %s", texts[i], d.msg);
+        assert_int_equal(cf_label_box_count(a), cf_label_box_count(b));
+        for (k = 0; k < cf_label_box_count(a); k++) {
+            const cf_label_box_t *x = cf_label_get_box(a, k);
+            const cf_label_box_t *y = cf_label_get_box(b, k);
+            assert_true(x->x == y->x && x->y == y->y
+                        && x->width == y->width && x->ascent == y->ascent
+                        && x->descent == y->descent && x->size == y->size
+                        && x->level == y->level && x->kind == y->kind
+                        && x->italic == y->italic && x->start == y->start
+                        && x->end == y->end);
+        }
+        {
+            double ia[4], ib[4];
+            cf__label_ink(a, ia);
+            cf__label_ink(b, ib);
+            assert_memory_equal(ia, ib, sizeof ia);
+        }
+        cf_label_destroy(a);
+        cf_label_destroy(b);
+    }
+}
+
+int
+main(int argc, char **argv)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_corpus),
+        cmocka_unit_test(test_characters_and_pairs),
+        cmocka_unit_test(test_torture),
+        cmocka_unit_test(test_no_font),
+        cmocka_unit_test(test_labels),
+    };
+    if (argc < 2) {
+        fprintf(stderr, "usage: %s fonts-corpus.txt [LOCALE]\n", argv[0]);
+        return 2;
+    }
+    corpus_path = argv[1];
+    /* with a locale: both read pango's default language from it (C.UTF-8
+    ** is pango's "c" too, so the runs stay the native fonts') */
+    if (argc > 2 && setlocale(LC_CTYPE, argv[2]) == NULL) {
+        fprintf(stderr, "no locale %s here\n", argv[2]);
+        return 77;
+    }
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -337,7 +337,8 @@ cf__font_glyphs_outline(cairo_t **cr, const cf__font_glyphs_t *g, double x,
             const cf__font_glyph_t *gl = &g->glyphs[s->glyph + k];
             if (drawn(gl->id)) {
                 p.ox = x + (double)(gx + gl->x) / CF__FONT_SCALE;
-                p.oy = y + (double)(g->baseline + gl->y) / CF__FONT_SCALE;
+                p.oy = y + (double)(g->baseline - s->shift + gl->y)
+                           / CF__FONT_SCALE;
                 if (glyph_outline_cached(*cr, s->face, gl->id, placed, &p)
                     != 0)
                     out->failed = true;

@@ -78,9 +78,9 @@ typedef struct cf__font_span {
     int shift;                 /* how far pango's layout raises it: runs
                                   of another script than the first one's
                                   sit on its baseline (ideographic, hanging
-                                  or roman, from the fonts' tables); only
-                                  the drawing (font-glyphs.c) moves it, as
-                                  only pango's drawing did */
+                                  or roman, from the fonts' tables); the
+                                  drawing, the outlines and the page's
+                                  glyph data all move it */
     bool backward;             /* right to left: glyphs in visual order,
                                   clusters from the last glyph */
 } cf__font_span_t;

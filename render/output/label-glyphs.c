@@ -169,7 +169,8 @@ each_glyph(collect_t *c, const cf__font_glyphs_t *g,
             const cf__font_glyph_t *gl = &g->glyphs[s->glyph + k];
             if (!(gl->id & CF__FONT_GLYPH_UNKNOWN)
                 && gl->id != CF__FONT_GLYPH_EMPTY) {
-                f(c, s->face, face, gl->id, x + gl->x, g->baseline + gl->y);
+                f(c, s->face, face, gl->id, x + gl->x,
+                  g->baseline - s->shift + gl->y);
                 count++;
             }
             x += gl->width;

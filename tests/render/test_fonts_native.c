@@ -8,6 +8,7 @@
 ** clusters); drawn into a PDF, the two give the same bytes.  A run the
 ** native fonts hand to pango must be one their rule names. */
 #include <locale.h>
+#include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -423,6 +424,104 @@ test_labels(void **state)
     }
 }
 
+/* The box of a path's points (x0 y0 x1 y1). */
+static void
+points_box(const double *xy, size_t n, double box[4])
+{
+    size_t i;
+    box[0] = box[1] = 1e300;
+    box[2] = box[3] = -1e300;
+    for (i = 0; i + 1 < n; i += 2) {
+        box[0] = xy[i] < box[0] ? xy[i] : box[0];
+        box[1] = xy[i + 1] < box[1] ? xy[i + 1] : box[1];
+        box[2] = xy[i] > box[2] ? xy[i] : box[2];
+        box[3] = xy[i + 1] > box[3] ? xy[i + 1] : box[3];
+    }
+}
+
+/* The outlines (SVG, the page's glyph data, halos) lie where the drawing
+** puts the glyphs: the box of cf__font_glyphs_outline's points against
+** the box of the path cairo draws (cf__font_glyphs_draw), both from the
+** run's top left at (3.5, 17.75) (a point cairo's current point keeps
+** exactly).  A run of a second script is raised by pango's baseline shift
+** ("曲线 P0": 474 units, 0.46 bp at 10 bp); the outlines' coordinates are
+** written to 5 digits per bp of size, under 1e-3 bp here, so 0.01 bp. */
+static void
+test_outlines_where_drawn(void **state)
+{
+    pair_t p;
+    size_t i, k;
+    (void)state;
+    open_pair(&p);
+    for (k = 0; k < 2; k++)
+        for (i = 0; i < sizeof torture / sizeof torture[0]; i++) {
+            cf__font_req_t req;
+            const cf__font_glyphs_t *g;
+            cf__font_shape_t sh;
+            cf__pathb_t out;
+            cairo_t *ocr = NULL, *cr;
+            cairo_surface_t *s;
+            cairo_path_t *path;
+            double a[4], b[4], *xy;
+            size_t n = 0;
+            int j;
+            if (!torture[i].native)
+                continue;
+            req.family = k == 0 ? SERIF : SANS;
+            req.italic = req.bold = false;
+            req.size = 10;
+            req.text = torture[i].text;
+            req.len = strlen(req.text);
+            assert_int_equal(
+                cf__native_fonts.shape(p.nctx, &req, &p.nrun, &sh), 0);
+            g = cf__native_fonts.glyphs(p.nrun);
+            memset(&out, 0, sizeof out);
+            cf__font_glyphs_outline(&ocr, g, 3.5, 17.75, &out);
+            assert_false(out.failed);
+            if (out.ncoords == 0) {
+                cf__pathb_free(&out);
+                if (ocr != NULL)
+                    cairo_destroy(ocr);
+                continue;
+            }
+            points_box(out.coords, out.ncoords, a);
+            s = cairo_recording_surface_create(CAIRO_CONTENT_ALPHA, NULL);
+            cr = cairo_create(s);
+            cairo_move_to(cr, 3.5, 17.75);
+            cf__font_glyphs_draw(cr, g, true);
+            path = cairo_copy_path(cr);
+            xy = malloc((size_t)path->num_data * 2 * sizeof *xy);
+            assert_non_null(xy);
+            /* the glyphs' points: not the current point's own moves,
+            ** before them and after (a move no segment follows) */
+            for (j = 0; j < path->num_data; j += path->data[j].header.length) {
+                int m, next = j + path->data[j].header.length;
+                if (path->data[j].header.type == CAIRO_PATH_MOVE_TO
+                    && (next >= path->num_data
+                        || path->data[next].header.type
+                               == CAIRO_PATH_MOVE_TO))
+                    continue;
+                for (m = 1; m < path->data[j].header.length; m++) {
+                    xy[n++] = path->data[j + m].point.x;
+                    xy[n++] = path->data[j + m].point.y;
+                }
+            }
+            points_box(xy, n, b);
+            for (j = 0; j < 4; j++)
+                if (!(fabs(a[j] - b[j]) < 0.01))
+                    fail_msg("\"%s\": outline box %g %g %g %g, drawn %g %g"
+                             " %g %g", req.text, a[0], a[1], a[2], a[3],
+                             b[0], b[1], b[2], b[3]);
+            free(xy);
+            cairo_path_destroy(path);
+            cairo_destroy(cr);
+            cairo_surface_destroy(s);
+            cairo_destroy(ocr);
+            cf__pathb_free(&out);
+        }
+    close_pair(&p);
+}
+
 int
 main(int argc, char **argv)
 {
@@ -432,6 +531,7 @@ main(int argc, char **argv)
         cmocka_unit_test(test_torture),
         cmocka_unit_test(test_no_font),
         cmocka_unit_test(test_labels),
+        cmocka_unit_test(test_outlines_where_drawn),
     };
     if (argc < 2) {
         fprintf(stderr, "usage: %s fonts-corpus.txt [LOCALE]\n", argv[0]);

@@ -91,8 +91,8 @@ def functions(nm, path):
     names = []
     for line in out.splitlines():
         f = line.split()
-        if len(f) == 3 and f[1] in ('T', 'i') and '@' not in f[2]:
-            names.append(f[2])
+        if len(f) == 3 and f[1] in ('T', 'i'):
+            names.append(f[2].split('@')[0])   # dlsym finds the default
     return sorted(set(names))
 
 

@@ -21,11 +21,16 @@ Measured, as CPU time (user + system) of the tool's processes:
             process per script: --sets pairs of whole sets (default 5).
 Prints one JSON line per measurement with the medians and the median of
 the paired ratios new / old.  The targets of issue #28 against commit
-1f9e659: minimal <= 0.6, course <= 0.9.  Exit status 0, or 1 when a
-render fails.
+1f9e659: minimal <= 0.6, course <= 0.9.  Both tools are timed as copies
+(made here, in a temporary directory, with the libraries their $ORIGIN
+run path finds): the kernel caches a file the linker has just
+written, or one read back from disk, in smaller pieces than one written
+whole, and that alone made the same program 0.15-0.25 ms slower per start
+here.  Exit status 0, or 1 when a render fails.
 """
 import json
 import os
+import shutil
 import statistics
 import subprocess
 import sys
@@ -63,6 +68,34 @@ def build_commit(rev, source):
     subprocess.run(["ninja", "-C", "build", "render/tool/curvefig"],
                    cwd=out, check=True, stdout=subprocess.DEVNULL)
     return tool, out
+
+
+def timed_copy(tool, root):
+    """A copy of tool under root (see above), with copies of the shared
+    libraries of the directories its $ORIGIN run path names; tool itself
+    where that is its own directory."""
+    dynamic = subprocess.run(["readelf", "-dW", tool], capture_output=True,
+                             text=True).stdout
+    paths = []
+    for line in dynamic.splitlines():
+        if "(RUNPATH)" in line or "(RPATH)" in line:
+            paths += line[line.index("[") + 1:line.rindex("]")].split(":")
+    rels = [os.path.normpath(p[len("$ORIGIN"):].lstrip("/") or ".")
+            for p in paths if p.startswith("$ORIGIN")]
+    if "." in rels:
+        return tool
+    depth = max([r.split(os.sep).count("..") for r in rels] + [0])
+    where = os.path.join(root, *(["d"] * depth))
+    os.makedirs(where)
+    for r in rels:
+        there = os.path.normpath(os.path.join(os.path.dirname(tool), r))
+        here = os.path.normpath(os.path.join(where, r))
+        os.makedirs(here, exist_ok=True)
+        for f in os.listdir(there) if os.path.isdir(there) else []:
+            if (".so" in f and os.path.isfile(os.path.join(there, f)) and
+                    not os.path.lexists(os.path.join(here, f))):
+                shutil.copy(os.path.join(there, f), here)
+    return shutil.copy(tool, where)
 
 
 def paired(name, runs):
@@ -106,6 +139,8 @@ def main(argv):
     scripts = sorted(os.path.join(figures, f) for f in os.listdir(figures)
                      if f.endswith(".lua"))
     with tempfile.TemporaryDirectory() as tmp:
+        new_tool = timed_copy(new_tool, os.path.join(tmp, "new-tool"))
+        old_tool = timed_copy(old_tool, os.path.join(tmp, "old-tool"))
         minimal = os.path.join(tmp, "minimal.lua")
         with open(minimal, "w") as f:
             f.write(MINIMAL)

@@ -277,9 +277,9 @@ hornerd(int n, const double *coef, size_t dim, const double *restrict t,
 
 #define CASES(X) X(0) X(1) X(2) X(3) X(4) X(5) X(6) X(7) X(8) X(9) X(10)
 
-CF__CLONES static void
-run_horner2(int n, const double *ax, const double *ay, const double *t,
-            size_t m, double *out)
+CF__INLINE void
+run_horner2_body(int n, const double *ax, const double *ay,
+                 const double *t, size_t m, double *out)
 {
     switch (n) {
 #define X(N) case N: horner2(N, ax, ay, t, m, out); break;
@@ -290,12 +290,17 @@ run_horner2(int n, const double *ax, const double *ay, const double *t,
     }
 }
 
+CF__CLONED(void, run_horner2,
+           (int n, const double *ax, const double *ay, const double *t,
+            size_t m, double *out),
+           (n, ax, ay, t, m, out), )
+
 /* At most 16 coordinates per call of the generic path (stack tables). */
 #define DIM_CHUNK 16
 
-CF__CLONES static void
-run_hornerd(int n, const double *coef, size_t dim, const double *t, size_t m,
-            double *out)
+CF__INLINE void
+run_hornerd_body(int n, const double *coef, size_t dim, const double *t,
+                 size_t m, double *out)
 {
     switch (n) {
 #define X(N) case N: hornerd(N, coef, dim, t, m, out); break;
@@ -305,6 +310,11 @@ run_hornerd(int n, const double *coef, size_t dim, const double *t, size_t m,
         break;
     }
 }
+
+CF__CLONED(void, run_hornerd,
+           (int n, const double *coef, size_t dim, const double *t, size_t m,
+            double *out),
+           (n, coef, dim, t, m, out), )
 
 /*
 ** Evaluate the polynomial with Bernstein coefficients coef (degree n, point

@@ -164,11 +164,11 @@ cubic2_run(const double *U, const double *R1, const double *R2,
 /* parameters per block of span searches (random parameters) */
 #define RBLK 32
 
-/* One clone per x86-64 level (CF__CLONES); the file is compiled without
-** contraction, so every clone rounds alike. */
-CF__CLONES static cf_status_t
-eval_cubic2(const cf_bspline_t *c, const double *u, size_t n, double *out,
-            int deriv)
+/* One copy per x86-64 level (CF__CLONED); the file is compiled without
+** contraction, so every copy rounds alike. */
+CF__INLINE cf_status_t
+eval_cubic2_body(const cf_bspline_t *c, const double *u, size_t n,
+                 double *out, int deriv)
 {
     const double *U = c->U, *P = c->P, *R1 = c->rk;
     const double *R2 = R1 + c->nknots, *R3 = R2 + c->nknots;
@@ -240,7 +240,12 @@ eval_cubic2(const cf_bspline_t *c, const double *u, size_t n, double *out,
     return CF_STATUS_OK;
 }
 
-/* Not itself cloned: the ifunc resolver of a clone would be exported. */
+CF__CLONED(cf_status_t, eval_cubic2,
+           (const cf_bspline_t *c, const double *u, size_t n, double *out,
+            int deriv),
+           (c, u, n, out, deriv), return)
+
+/* The copies are static (CF__CLONED): this is the other files' way in. */
 cf_status_t
 cf__bspline_eval_cubic2(const cf_bspline_t *c, const double *u, size_t n,
                         double *out, int deriv)

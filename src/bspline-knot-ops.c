@@ -166,12 +166,13 @@ refine_loop(const double *U, const double *P, double *V, double *Q,
 ** a load per point.  The highest point is final when a step begins: each
 ** step writes it out (the first steps of a curve refined near its end
 ** start above Q's last index, qlast; those are old points moving up, and
-** are not written) and shifts the window down by one.  One clone per
-** x86-64 level (CF__CLONES; no contraction in this file, so every clone
+** are not written) and shifts the window down by one.  One copy per
+** x86-64 level (CF__CLONED; no contraction in this file, so every copy
 ** rounds alike). */
-CF__CLONES static void
-refine_cubic2(const double *U, const double *P, double *V, double *Q,
-              const double *X, size_t nx, size_t a, size_t b, size_t qlast)
+CF__INLINE void
+refine_cubic2_body(const double *U, const double *P, double *V, double *Q,
+                   const double *X, size_t nx, size_t a, size_t b,
+                   size_t qlast)
 {
     size_t i = b + 2, kk = b + nx + 2, vlast = qlast + 4;
     cf__v2 w0, w1, w2, w3, t12, t34, zero = { 0.0, 0.0 };
@@ -223,6 +224,11 @@ refine_cubic2(const double *U, const double *P, double *V, double *Q,
     CF__STORE2(Q + (kk - 1) * 2, w2);
     CF__STORE2(Q + kk * 2, w3);
 }
+
+CF__CLONED(void, refine_cubic2,
+           (const double *U, const double *P, double *V, double *Q,
+            const double *X, size_t nx, size_t a, size_t b, size_t qlast),
+           (U, P, V, Q, X, nx, a, b, qlast), )
 #endif
 
 /* Whether X[0] < X[1] < ... < X[n - 1] (false on a NaN). */

@@ -22,16 +22,62 @@
 #endif
 #endif
 
-/* One clone of a hot function per x86-64 level, picked at load time (an
-** ifunc; GCC).  Not in sanitizer builds: the resolvers run before the
-** sanitizer runtime is initialised and crash the program before main. */
+/*
+** A hot function in one copy per x86-64 level (x86-64-v4, v3 and the
+** baseline), the one for this processor chosen at its first call: write it
+** as CF__INLINE ret name_body(params), then CF__CLONED(ret, name, (params),
+** (args), return) (the last argument empty when ret is void), which
+** defines the static function name.  The level is cf__cpu_level's, from
+** the CPU features the C library found at start (glibc's
+** <sys/platform/x86.h>), with no CPUID instruction: on a virtual machine
+** each one traps into the hypervisor, and GCC's target_clones ran libgcc's
+** detection (some ten of them) at every start, 50 us of the 1.4 ms of a
+** minimal render (glibc.cpu.hwcaps in GLIBC_TUNABLES lowers the level:
+** the core tests run the lower copies so).  With another compiler or C
+** library, under a sanitizer (as before) and on other processors, name is
+** the body alone.
+*/
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__) && \
-    !defined(CF__SANITIZED)
-#define CF__CLONES                                                          \
-    __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3",         \
-                                 "default")))
+    !defined(CF__SANITIZED) && defined(__has_include)
+#if __has_include(<sys/platform/x86.h>)
+#define CF__LEVELS 1
+#endif
+#endif
+/* The x86-64 level of this processor (1 to 4; 1 without CF__LEVELS). */
+int cf__cpu_level(void);
+#ifdef CF__LEVELS
+#include <stdatomic.h>
+#define CF__CLONED(ret, name, params, args, ret_kw)                         \
+    __attribute__((target("arch=x86-64-v4"))) static ret name##_v4 params   \
+    {                                                                       \
+        ret_kw name##_body args;                                            \
+    }                                                                       \
+    __attribute__((target("arch=x86-64-v3"))) static ret name##_v3 params   \
+    {                                                                       \
+        ret_kw name##_body args;                                            \
+    }                                                                       \
+    static ret name##_v1 params                                             \
+    {                                                                       \
+        ret_kw name##_body args;                                            \
+    }                                                                       \
+    static ret name params                                                  \
+    {                                                                       \
+        typedef ret(*level_fn) params;                                      \
+        static _Atomic(level_fn) chosen;                                    \
+        level_fn f = atomic_load_explicit(&chosen, memory_order_relaxed);   \
+        if (f == NULL) {                                                    \
+            int level = cf__cpu_level();                                    \
+            f = level >= 4 ? name##_v4 : level == 3 ? name##_v3 : name##_v1; \
+            atomic_store_explicit(&chosen, f, memory_order_relaxed);        \
+        }                                                                   \
+        ret_kw f args;                                                      \
+    }
 #else
-#define CF__CLONES
+#define CF__CLONED(ret, name, params, args, ret_kw)                         \
+    static ret name params                                                  \
+    {                                                                       \
+        ret_kw name##_body args;                                            \
+    }
 #endif
 
 #if defined(__GNUC__)

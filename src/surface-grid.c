@@ -45,9 +45,9 @@ combine(const double *R, const double *N, size_t qv, size_t h, double *acc)
 /* The common case, bicubic in v and 3 doubles per point (3-D polynomial
 ** or 2-D rational): out[3 b ..] = sum_c N[4 b + c] R[3 (span[b] - 3 + c)]
 ** for every b, one tight loop per output array. */
-CF__CLONES static void
-row43(const double *R, const double *N, const size_t *span, size_t nv,
-      double *out)
+CF__INLINE void
+row43_body(const double *R, const double *N, const size_t *span, size_t nv,
+           double *out)
 {
     for (size_t b = 0; b < nv; b++) {
         const double *r = R + (span[b] - 3) * 3, *n = N + 4 * b;
@@ -57,6 +57,11 @@ row43(const double *R, const double *N, const size_t *span, size_t nv,
         o[2] = n[0] * r[2] + n[1] * r[5] + n[2] * r[8] + n[3] * r[11];
     }
 }
+
+CF__CLONED(void, row43,
+           (const double *R, const double *N, const size_t *span, size_t nv,
+            double *out),
+           (R, N, span, nv, out), )
 
 /* Rows R = sum_r N_r P[su - p + r][*] (and dR with the derivatives). */
 static void
@@ -81,10 +86,10 @@ rows(const cf_bspline_surface_t *s, size_t su, const double *N,
 /* The same for the point and both partials at once: for each run of
 ** parameters in one span the 4 x 3 active row values and their u
 ** derivatives are loaded once. */
-CF__CLONES static void
-row43_d1(const double *R, const double *dR, const double *N,
-         const double *dN, const size_t *span, size_t nv, double *pts,
-         double *su, double *sv)
+CF__INLINE void
+row43_d1_body(const double *R, const double *dR, const double *N,
+              const double *dN, const size_t *span, size_t nv, double *pts,
+              double *su, double *sv)
 {
     size_t b = 0;
     while (b < nv) {
@@ -107,6 +112,12 @@ row43_d1(const double *R, const double *dR, const double *N,
         }
     }
 }
+
+CF__CLONED(void, row43_d1,
+           (const double *R, const double *dR, const double *N,
+            const double *dN, const size_t *span, size_t nv, double *pts,
+            double *su, double *sv),
+           (R, dR, N, dN, span, nv, pts, su, sv), )
 
 static void
 one_row(const cf_bspline_surface_t *s, const double *R, const double *dR,

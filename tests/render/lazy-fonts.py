@@ -1,0 +1,84 @@
+#!/usr/bin/env python3
+"""fontconfig and FreeType are opened at their first call, not at start.
+
+    lazy-fonts.py CURVEFIG
+
+A `curvefig` whose fontconfig and FreeType functions are trampolines
+(render/tool/lazy.c) is linked without them: a figure without labels is
+rendered without loading them or what they bring (expat, libpng, brotli),
+as the loader reports the files it loads (LD_DEBUG=files); a figure with
+a label loads them and its PDF embeds its font; `--version` (which builds
+the font configuration) works.  Skipped (77) when the program is linked
+with the libraries (render/tool/meson.build: not x86-64).
+"""
+import os
+import subprocess
+import sys
+import tempfile
+
+PLAIN = """local f = figure{ name = "plain", width = "3cm", height = "2cm" }
+f:polyline({ {0, 0}, {1, 1}, {2, 0} })
+"""
+LABEL = PLAIN.replace('"plain"', '"label"') + \
+    'f:label({1, 1}, "$x^2$ and text", { anchor = "n" })\n'
+FONT_LIBRARIES = ("libfontconfig", "libfreetype", "libexpat", "libpng",
+                  "libbrotli")
+
+
+def loaded(tool, script, out):
+    """Render script to PDF; the objects the loader loaded."""
+    env = dict(os.environ, LD_DEBUG="files")
+    run = subprocess.run([tool, "render", script, "-o", out, "-f", "pdf"],
+                         env=env, capture_output=True, text=True)
+    if run.returncode != 0:
+        sys.stderr.write(run.stderr[-2000:])
+        raise RuntimeError("the render of %s failed (status %d)"
+                           % (script, run.returncode))
+    return sorted({line.split("file=")[1].split()[0]
+                   for line in run.stderr.splitlines() if "file=" in line})
+
+
+def main(argv):
+    tool = os.path.abspath(argv[1])
+    # the libraries the loader loads with the program (ldd)
+    linked = subprocess.run(["ldd", tool], capture_output=True, text=True,
+                            check=True).stdout.split()
+    if any(word.startswith("libfontconfig") for word in linked):
+        print("%s is linked with fontconfig: nothing to check" % tool)
+        return 77
+    failures = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for name, text in (("plain", PLAIN), ("label", LABEL)):
+            with open(os.path.join(tmp, name + ".lua"), "w") as f:
+                f.write(text)
+        plain = loaded(tool, os.path.join(tmp, "plain.lua"), tmp)
+        early = [o for o in plain if o.startswith(FONT_LIBRARIES)]
+        if early:
+            failures.append("a figure without labels loaded %s"
+                            % ", ".join(early))
+        label = loaded(tool, os.path.join(tmp, "label.lua"), tmp)
+        for lib in ("libfontconfig", "libfreetype"):
+            if not any(o.startswith(lib) for o in label):
+                failures.append("a label did not load %s" % lib)
+        with open(os.path.join(tmp, "label.pdf"), "rb") as f:
+            if b"/FontFile" not in f.read():
+                failures.append("the label's PDF embeds no font")
+    version = subprocess.run([tool, "--version"], capture_output=True,
+                             text=True)
+    if version.returncode != 0 or "fonts:" not in version.stdout:
+        failures.append("--version failed: %r" % (version.stdout +
+                                                   version.stderr))
+    for f in failures:
+        print("FAIL: " + f)
+    if not failures:
+        print("fonts opened on the first label: %d objects without labels, "
+              "%d with" % (len(plain), len(label)))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    try:
+        sys.exit(main(sys.argv))
+    except RuntimeError as e:
+        print("FAIL: %s" % e)
+        sys.exit(1)

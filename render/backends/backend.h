@@ -199,7 +199,7 @@ int cf__svgw_a11y_head(struct cf__buf *out, const char *title,
 ** written), or out of memory. */
 int cf__svg_put_num(struct cf__buf *b, double v);
 
-/* The outline function of the SVG writer with pango and cairo (render/
+/* The outline function of the SVG writer with cairo (render/backends/
 ** glyph-outline.c): outline_ctx a cf__glyph_outliner_t, zero at first,
 ** released with cf__glyph_outliner_fini. */
 typedef struct cf__glyph_outliner {

@@ -25,13 +25,6 @@
 
 #include "font-config.h"
 #include "lazy-forward.h"
-#include "pango-lazy.h"
-
-void
-cf__pango_before_open(void (*fn)(void))
-{
-    cf__fonts_before_open(fn);
-}
 
 /* pango is one per process: so is this state; the font configuration is
 ** made before pango looks up a font */

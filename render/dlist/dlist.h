@@ -12,7 +12,7 @@
 **   PATH             segments (move, line, cubic, rectangle, arc, close)
 **                    and a paint: fill, stroke, or fill then stroke
 **   MARKER           a marker symbol at a point (draw_markers)
-**   TEXT             a laid-out label (its pango runs) with its TeX-like
+**   TEXT             a laid-out label (its shaped runs) with its TeX-like
 **                    source, anchor, placement and origin, so that a
 **                    backend draws the glyphs or hands the source to TeX
 **   MESH             smooth shading: opaque triangles with a colour at

@@ -22,9 +22,10 @@
 **   A render then holds its memory rounded up to 2 MiB pages: the peak
 **   of the figure set went from 22.4 to 24.4 MiB; markova-2.17's page
 **   faults from 1150 to 520;
-** - one arena: the threads pango starts to match fonts allocate from the
-**   same heap (in huge pages) rather than each from a fresh 64 MiB map
-**   (the tool's own work is one thread).
+** - one arena: threads a library starts (pango's font matching, for a
+**   run the native fonts hand to it) allocate from the same heap (in huge
+**   pages) rather than each from a fresh 64 MiB map (the tool's own work
+**   is one thread).
 **
 ** Under a sanitizer (its own allocator) or another C library nothing is
 ** done.

@@ -69,8 +69,8 @@ char *cf__live_run_child(const char *script, const cf__tool_limits *limits,
                          char *error, size_t error_len);
 /* Run a small figure of our own (a curve, a label in the default fonts)
 ** in this thread, so that the processes it forks for runs start with the
-** fonts loaded and the caches of pango, fontconfig and cairo warm (pango's
-** font map is one per thread). */
+** fonts loaded and the caches of HarfBuzz's faces, fontconfig and cairo
+** warm. */
 void cf__live_warm(void);
 /* Seconds of a monotonic clock. */
 double cf__live_clock(void);

@@ -28,7 +28,7 @@
 #include "help.h"
 #include "helpers.h"
 #include "html.h"
-#include "pango-lazy.h"
+#include "font-config.h"
 #include "runlimits.h"
 #include "script.h"
 #include "tool.h"
@@ -655,8 +655,8 @@ run_script(const options *o)
         return EXIT_USAGE;
     }
     cf__tool_watchdog(o->script, o->limits.timeout);
-    /* the fonts are configured when the first label opens pango */
-    cf__pango_before_open(fonts_init);
+    /* the fonts are configured when the first label looks one up */
+    cf__fonts_before_open(fonts_init);
     cf_diag_clear(&diag);
     /* list keeps stdout for the names: the script's prints go to stderr */
     st = cf_script_create(&o->limits.script,

@@ -1,5 +1,5 @@
 /* Views: the projection of points and, exactly, of curves
-** (curvefig/visibility.h). */
+** (curvefig/view.h). */
 #include <math.h>
 #include <string.h>
 

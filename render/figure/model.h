@@ -16,6 +16,7 @@
 #include "curvefig/figure.h"
 #include "curvefig/figure3d.h"
 #include "curvefig/geometry.h"
+#include "curvefig/visibility.h"
 #include "dlist.h"
 #include "facts.h"
 

@@ -239,6 +239,7 @@ cf_script_budget_end(const cf_script_t *s, cf_script_scope_t *scope,
     if (msg != NULL && size > 0)
         snprintf(msg, size, "rendering exceeded the memory limit of %s (the "
                  "script and the rendering of its figures share it: "
-                 "--max-memory)", cf__script_format_size(limit, s->max_memory));
+                 "--max-memory)",
+                 cf__script_format_size(limit, s->max_memory));
     return true;
 }

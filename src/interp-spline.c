@@ -12,6 +12,7 @@
 #include "bspline-private.h"
 #include "interp-private.h"
 #include "linsolve-private.h"
+#include "numtext-private.h"
 
 /*
 ** The ord-th derivatives of the p + 1 nonzero basis functions at u into
@@ -301,8 +302,8 @@ cf__interp_periodic(size_t dim, const double *points, size_t count,
         size_t span = basis_at(3, knots, nknots, u[i], 0, N);
         if (span != i + 3) {
             st = cf__error(diag, CF_STATUS_DEGENERATE, (long)i,
-                           "parameter %zu (%g) is not "
-                           "in its own knot span", i, u[i]);
+                           "parameter %zu (%s) is not in its own knot span",
+                           i, CF__NUM(u[i]));
             goto done;
         }
         sub[i] = N[0];

@@ -476,6 +476,71 @@ test_message_interp(void **state)
                                "coordinates must be finite");
 }
 
+/*
+** src/interp-spline.c: a periodic spline whose chord-length parameters
+** coincide.  The closed polygon (0, 0), (1, 0), (1, 2^-60), (1, 0.5),
+** (0, 0.5) has chords 1, 2^-60, 0.5, 1 and 0.5: the second is lost in the
+** running sum (1 + 2^-60 = 1), so u_1 = u_2 = 1/3 and u_1 does not lie in
+** its own knot span [u_1, u_2) of the periodic knots.
+*/
+static void
+test_message_interp_spline(void **state)
+{
+    (void)state;
+    const double e = ldexp(1.0, -60);
+    const double P[] = { 0, 0, 1, 0, 1, e, 1, 0.5, 0, 0.5 };
+    double u[6];
+    cf_interp_options_t o;
+    cf_bspline_t *c = NULL;
+    cf_diag_t d;
+    assert_int_equal(cf_interp_parameters(2, P, 5, CF_PARAM_CHORD, 0.0,
+                                          true, u, NULL),
+                     CF_STATUS_OK);
+    assert_true(u[1] == 1.0 / 3.0 && u[2] == u[1]);
+    cf_interp_options_init(&o);
+    o.method = CF_INTERP_PERIODIC;
+    assert_int_equal(cf_interpolate(2, P, 5, &o, &c, &d),
+                     CF_STATUS_DEGENERATE);
+    assert_int_equal(d.index, 1);
+    assert_string_equal(d.msg, "parameter 1 (0.3333333333333333) is not in "
+                               "its own knot span");
+    assert_null(c);
+}
+
+/*
+** src/reduce-bezier.c: a rational quartic reduced to a cubic keeping C^1
+** at both ends: the end conditions alone fix the reduced weight
+** w'_1 = w_0 + (4/3)(w_1 - w_0) = 2 + (4/3)(0.25 - 2) = -1/3, not
+** positive.  As computed it is 5 units in the last place from the double
+** nearest -1/3: terms of size 2 and 7/3 cancel, so it is checked to a few
+** roundings of 7/3 (4 DBL_EPSILON absolute, about 4e-16 relative to 7/3).
+*/
+static void
+test_message_reduce_bezier(void **state)
+{
+    (void)state;
+    static const double P[] = { 0, 1, 2, 3, 4 };
+    static const double w[] = { 2, 0.25, 1, 1, 1 };
+    cf_bezier_t *c = NULL, *r = NULL;
+    cf_reduce_options_t o;
+    cf_diag_t d;
+    double q;
+    assert_int_equal(cf_bezier_create(1, 4, P, w, &c, NULL), CF_STATUS_OK);
+    cf_reduce_options_init(&o);
+    o.continuity = 1;
+    assert_int_equal(cf_bezier_reduce(c, &o, &r, NULL, &d),
+                     CF_STATUS_DEGENERATE);
+    assert_int_equal(d.index, 1);
+    assert_string_equal(d.msg, "the reduced curve's weight 1 is "
+                               "-0.33333333333333304; the rational curve "
+                               "cannot be reduced to degree 3");
+    q = strtod(strstr(d.msg, "is ") + 3, NULL);
+    assert_true(fabs(q + 1.0 / 3.0) <= 4 * DBL_EPSILON);
+    check_shortest(q);
+    assert_null(r);
+    cf_bezier_destroy(c);
+}
+
 /* src/linsolve.c: a singular band */
 static void
 test_message_linsolve(void **state)
@@ -570,6 +635,8 @@ main(void)
         cmocka_unit_test(test_message_bernstein),
         cmocka_unit_test(test_message_cubics_offsets),
         cmocka_unit_test(test_message_interp),
+        cmocka_unit_test(test_message_interp_spline),
+        cmocka_unit_test(test_message_reduce_bezier),
         cmocka_unit_test(test_message_linsolve),
         cmocka_unit_test(test_message_reduce_bspline),
         cmocka_unit_test(test_message_surface_coons),

@@ -477,37 +477,6 @@ test_message_interp(void **state)
 }
 
 /*
-** src/interp-spline.c: a periodic spline whose chord-length parameters
-** coincide.  The closed polygon (0, 0), (1, 0), (1, 2^-60), (1, 0.5),
-** (0, 0.5) has chords 1, 2^-60, 0.5, 1 and 0.5: the second is lost in the
-** running sum (1 + 2^-60 = 1), so u_1 = u_2 = 1/3 and u_1 does not lie in
-** its own knot span [u_1, u_2) of the periodic knots.
-*/
-static void
-test_message_interp_spline(void **state)
-{
-    (void)state;
-    const double e = ldexp(1.0, -60);
-    const double P[] = { 0, 0, 1, 0, 1, e, 1, 0.5, 0, 0.5 };
-    double u[6];
-    cf_interp_options_t o;
-    cf_bspline_t *c = NULL;
-    cf_diag_t d;
-    assert_int_equal(cf_interp_parameters(2, P, 5, CF_PARAM_CHORD, 0.0,
-                                          true, u, NULL),
-                     CF_STATUS_OK);
-    assert_true(u[1] == 1.0 / 3.0 && u[2] == u[1]);
-    cf_interp_options_init(&o);
-    o.method = CF_INTERP_PERIODIC;
-    assert_int_equal(cf_interpolate(2, P, 5, &o, &c, &d),
-                     CF_STATUS_DEGENERATE);
-    assert_int_equal(d.index, 1);
-    assert_string_equal(d.msg, "parameter 1 (0.3333333333333333) is not in "
-                               "its own knot span");
-    assert_null(c);
-}
-
-/*
 ** src/reduce-bezier.c: a rational quartic reduced to a cubic keeping C^1
 ** at both ends: the end conditions alone fix the reduced weight
 ** w'_1 = w_0 + (4/3)(w_1 - w_0) = 2 + (4/3)(0.25 - 2) = -1/3, not
@@ -724,7 +693,6 @@ main(void)
         cmocka_unit_test(test_message_bernstein),
         cmocka_unit_test(test_message_cubics_offsets),
         cmocka_unit_test(test_message_interp),
-        cmocka_unit_test(test_message_interp_spline),
         cmocka_unit_test(test_message_reduce_bezier),
         cmocka_unit_test(test_message_view),
         cmocka_unit_test(test_message_scene),

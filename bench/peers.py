@@ -11,7 +11,7 @@ labels' .mpx removed before each run as after an edit) and as TikZ
 and an empty program (`true`: what any process costs here).  Each round
 runs them in turn (the order rotates), N rounds (default 7) after one
 warm-up round; the CPU time (user + system) of each process and its
-children, started by posix_spawn.  One JSON
+children, started by posix_spawn (bench/cputime.py).  One JSON
 line per figure: the medians and how many times faster curvefig is
 (targets of issue #28: >= 10x MetaPost, >= 60x TikZ).  A peer that is not
 installed is left out; exit status 77 (skipped) when neither is.  With
@@ -26,26 +26,9 @@ import statistics
 import sys
 import tempfile
 
+from cputime import cpu_of, have_pdflatex, pdflatex
+
 FIGURES = ("orazem-decasteljau", "markova-2.17")
-
-
-def cpu_of(argv):
-    """Run argv in the current directory (output discarded); the CPU
-    seconds of it and its children.  Started by posix_spawn, as
-    bench/startup_compare.py does: a fork() of this Python process would
-    charge each command some 6 ms of tearing down its copy of Python's
-    address space (an empty program: 9.6 ms after fork, 3.1 ms after
-    posix_spawn, medians of 15 on this machine)."""
-    path = shutil.which(argv[0])
-    if path is None:
-        raise RuntimeError("not found: %s" % argv[0])
-    pid = os.posix_spawn(path, argv, os.environ,
-                         file_actions=[(os.POSIX_SPAWN_OPEN, k, os.devnull,
-                                        os.O_RDWR, 0) for k in (0, 1, 2)])
-    _, status, ru = os.wait4(pid, 0)
-    if status != 0:
-        raise RuntimeError("failed (status %d): %s" % (status, " ".join(argv)))
-    return ru.ru_utime + ru.ru_stime
 
 
 def main(argv):
@@ -62,10 +45,8 @@ def main(argv):
         peers["metapost_eps"] = lambda name: [
             "sh", "-c", "rm -f %s.mpx && exec mpost -interaction=batchmode "
             "%s.mp" % (name, name)]
-    if shutil.which("pdflatex"):
-        peers["tikz_pdf"] = lambda name: [
-            "pdflatex", "-interaction=batchmode", "-halt-on-error",
-            name + ".tex"]
+    if have_pdflatex():
+        peers["tikz_pdf"] = lambda name: pdflatex(name + ".tex")
     if not peers:
         print("peers: neither mpost nor pdflatex is installed: skipped")
         return 77

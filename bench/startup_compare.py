@@ -36,22 +36,11 @@ import subprocess
 import sys
 import tempfile
 
+from cputime import cpu_of
+
 MINIMAL = """local f = figure{ name = "minimal", width = "4cm", height = "3cm" }
 f:polyline({ {0, 0}, {1, 1}, {2, 0} })
 """
-
-
-def cpu_of(argv):
-    """Run argv (output discarded); the CPU seconds of the process."""
-    pid = os.posix_spawn(argv[0], argv, os.environ,
-                         file_actions=[(os.POSIX_SPAWN_OPEN, 1, os.devnull,
-                                        os.O_WRONLY, 0),
-                                       (os.POSIX_SPAWN_OPEN, 2, os.devnull,
-                                        os.O_WRONLY, 0)])
-    _, status, ru = os.wait4(pid, 0)
-    if status != 0:
-        raise RuntimeError("failed (status %d): %s" % (status, " ".join(argv)))
-    return ru.ru_utime + ru.ru_stime
 
 
 def build_commit(rev, source):

@@ -5,8 +5,9 @@
 
 curvefig: every script of figures/surfaces/ rendered to PDF (`TOOL render
 SCRIPT -f pdf`, one process per script, as `ninja figures` runs them), the
-CPU time (user + system) of the processes summed; pgfplots: the bicubic
-patch of surfaces-bezier-patch as one `surf` plot of 25 x 25 samples
+CPU time (user + system) of the processes summed (started by posix_spawn:
+bench/cputime.py); pgfplots: the bicubic patch of surfaces-bezier-patch
+as one `surf` plot of 25 x 25 samples
 (bench/peers/surface-patch-pgfplots.tex, `pdflatex`).  N rounds (default
 5) after one warm-up, the two in turn; one JSON line with the medians and
 the ratio (issue #30: the chapter in less time than the one plot).  Exit
@@ -17,27 +18,10 @@ import json
 import os
 import shutil
 import statistics
-import subprocess
 import sys
 import tempfile
 
-
-def cpu_of(argv, cwd):
-    """Run argv in cwd (output discarded); CPU seconds of it and children."""
-    pid = os.fork()
-    if pid == 0:
-        try:
-            os.chdir(cwd)
-            fd = os.open(os.devnull, os.O_RDWR)
-            for k in (0, 1, 2):
-                os.dup2(fd, k)
-            os.execvp(argv[0], argv)
-        finally:
-            os._exit(127)
-    _, status, ru = os.wait4(pid, 0)
-    if status != 0:
-        raise RuntimeError("failed (status %d): %s" % (status, " ".join(argv)))
-    return ru.ru_utime + ru.ru_stime
+from cputime import cpu_of, have_pdflatex, pdflatex
 
 
 def main(argv):
@@ -46,9 +30,7 @@ def main(argv):
         return 2
     tool, src = os.path.abspath(argv[1]), os.path.abspath(argv[2])
     rounds = int(argv[argv.index("--rounds") + 1]) if "--rounds" in argv else 5
-    if not shutil.which("pdflatex") or subprocess.run(
-            ["kpsewhich", "pgfplots.sty"], stdout=subprocess.PIPE,
-            check=False).stdout.strip() == b"":
+    if not have_pdflatex("pgfplots.sty"):
         print("surfaces_pgfplots: pdflatex with pgfplots not found: skipped")
         return 77
     scripts = sorted(glob.glob(os.path.join(src, "figures", "surfaces",
@@ -62,9 +44,7 @@ def main(argv):
                               tmp) for s in scripts)
 
         def pgfplots():
-            return cpu_of(["pdflatex", "-interaction=batchmode",
-                           "-halt-on-error", "surface-patch-pgfplots.tex"],
-                          tmp)
+            return cpu_of(pdflatex("surface-patch-pgfplots.tex"), tmp)
 
         chapter()
         pgfplots()

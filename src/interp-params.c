@@ -224,10 +224,32 @@ check_explicit_params(const double *u, size_t n, cf_diag_t *diag)
     return CF_STATUS_OK;
 }
 
+/* Parameters made from the points that came out equal: the step between
+** points i - 1 and i was below the rounding of the running sum (or of the
+** division by the total), so no curve passes through both at theirs. */
+static cf_status_t
+check_made_params(const double *u, size_t nu, size_t count,
+                  cf_param_t param, cf_diag_t *diag)
+{
+    for (size_t i = 1; i < nu; i++)
+        if (!(u[i] > u[i - 1]))
+            return cf__error(diag, CF_STATUS_DEGENERATE, (long)(i % count),
+                             "points %zu and %zu get the same %s parameter "
+                             "%s (their distance is lost in rounding beside "
+                             "the others'); use %s parameters", i - 1,
+                             i % count,
+                             param == CF_PARAM_CHORD ? "chord-length"
+                             : param == CF_PARAM_CENTRIPETAL ? "centripetal"
+                                                             : "power",
+                             CF__NUM(u[i]), param == CF_PARAM_CHORD
+                                 ? "centripetal or uniform" : "uniform");
+    return CF_STATUS_OK;
+}
+
 cf_status_t
 cf__interp_prepare_params(size_t dim, const double *points, size_t count,
                           const cf_interp_options_t *opt, bool closed,
-                          double *u, cf_diag_t *diag)
+                          bool strict, double *u, cf_diag_t *diag)
 {
     size_t nu = closed ? count + 1 : count;
     cf_param_t param = opt->param;
@@ -241,7 +263,10 @@ cf__interp_prepare_params(size_t dim, const double *points, size_t count,
     if (param == CF_PARAM_DEFAULT)
         param = opt->method == CF_INTERP_CATMULL_ROM ? CF_PARAM_CENTRIPETAL
                                                      : CF_PARAM_CHORD;
-    return cf_interp_parameters(dim, points, count, param, opt->exponent,
-                                closed, u, diag);
+    st = cf_interp_parameters(dim, points, count, param, opt->exponent,
+                              closed, u, diag);
+    if (st == CF_STATUS_OK && strict)
+        st = check_made_params(u, nu, count, param, diag);
+    return st;
 }
 

@@ -45,11 +45,15 @@ cf_status_t cf__interp_catmull_rom(size_t dim, const double *points,
                                    cf_diag_t *diag);
 
 /* Checks of interp.c used by the least-squares code: dim, points, options
-** and the parameters (u receives count values). */
+** and the parameters (u receives count values, count + 1 closed).
+** strict (interpolation, which passes through each point at its
+** parameter): parameters made from the points must increase strictly,
+** which a chord lost in the rounding of their running sum breaks; given
+** ones are always checked. */
 cf_status_t cf__interp_prepare_params(size_t dim, const double *points,
                                       size_t count,
                                       const cf_interp_options_t *opt,
-                                      bool closed, double *u,
+                                      bool closed, bool strict, double *u,
                                       cf_diag_t *diag);
 
 #endif

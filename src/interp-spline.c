@@ -12,6 +12,7 @@
 #include "bspline-private.h"
 #include "interp-private.h"
 #include "linsolve-private.h"
+#include "numtext-private.h"
 
 /*
 ** The ord-th derivatives of the p + 1 nonzero basis functions at u into
@@ -299,10 +300,14 @@ cf__interp_periodic(size_t dim, const double *points, size_t count,
         goto done;
     for (size_t i = 0; i < n; i++) {
         size_t span = basis_at(3, knots, nknots, u[i], 0, N);
+        /* u_i = k_{i+3} < k_{i+4}: the parameters increase strictly (given
+        ** ones are checked, made ones too: cf__interp_prepare_params), so
+        ** this does not fail; kept because a wrong span would make a wrong
+        ** system and a wrong curve without a word */
         if (span != i + 3) {
             st = cf__error(diag, CF_STATUS_DEGENERATE, (long)i,
-                           "parameter %zu (%g) is not "
-                           "in its own knot span", i, u[i]);
+                           "parameter %zu (%s) is not in its own knot span",
+                           i, CF__NUM(u[i]));
             goto done;
         }
         sub[i] = N[0];
@@ -508,7 +513,8 @@ cf_approximate_lsq(size_t dim, const double *points, size_t count,
                        "%zu control points", count, ncontrol);
         goto done;
     }
-    st = cf__interp_prepare_params(dim, points, count, &o, false, u, diag);
+    st = cf__interp_prepare_params(dim, points, count, &o, false, false, u,
+                                   diag);
     if (st != CF_STATUS_OK)
         goto done;
     lsq_knots(u, count, ncontrol, p, knots);

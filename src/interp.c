@@ -198,7 +198,8 @@ cf_interpolate(size_t dim, const double *points, size_t count,
     if (u == NULL)
         return cf__error(diag, CF_STATUS_NO_MEMORY, -1,
                          "no memory for %zu parameters", count + 1);
-    st = cf__interp_prepare_params(dim, points, count, o, closed, u, diag);
+    st = cf__interp_prepare_params(dim, points, count, o, closed, true, u,
+                                   diag);
     if (st == CF_STATUS_OK) {
         switch (o->method) {
         case CF_INTERP_NATURAL:

@@ -9,6 +9,7 @@
 
 #include "bezier-private.h"
 #include "core-private.h"
+#include "numtext-private.h"
 #include "reduce-private.h"
 
 void
@@ -35,14 +36,19 @@ cf__reduce_solve(const cf__reduce_job_t *j, size_t dim, bool rational,
         return cf__error(diag, st, -1, "out of memory (degree reduction)");
     for (int i = 0; i <= j->m; i++) {
         double w = rational ? Q[(size_t)i * h + dim] : 1.0;
-        bool finite = isfinite(w);
-        for (size_t c = 0; c < h; c++)
-            finite = finite && isfinite(Q[(size_t)i * h + c]);
-        if (!finite || !(w > 0.0))
+        if (!isfinite(w) || !(w > 0.0))
             return cf__error(diag, CF_STATUS_DEGENERATE, i,
-                             "the reduced curve's weight %d is %g; the "
+                             "the reduced curve's weight %d is %s; the "
                              "rational curve cannot be reduced to degree %d",
-                             i, w, j->m);
+                             i, CF__NUM(w), j->m);
+        for (size_t c = 0; c < dim; c++)
+            if (!isfinite(Q[(size_t)i * h + c]))
+                return cf__error(diag, CF_STATUS_NOT_FINITE, i,
+                                 "the reduced curve's point %d has "
+                                 "coordinate %zu = %s: the curve's "
+                                 "coordinates are too large to reduce it to "
+                                 "degree %d", i, c + 1,
+                                 CF__NUM(Q[(size_t)i * h + c]), j->m);
     }
     if (rep == NULL)
         return CF_STATUS_OK;

@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "numtext-private.h"
 #include "vis-private.h"
 
 cf_status_t
@@ -29,10 +30,11 @@ cf_scene_create(const cf_view_t *view, double tol, cf_scene_t **out,
                          "cf_view_perspective");
     if (isnan(tol) || isinf(tol))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "tolerance %g is not finite", tol);
+                         "tolerance %s is not finite", CF__NUM(tol));
     if (!(tol > 0.0))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "tolerance %g must be positive and finite", tol);
+                         "tolerance %s must be positive and finite",
+                         CF__NUM(tol));
     sc = cf__calloc(1, sizeof *sc);
     if (sc == NULL)
         return cf__error(diag, CF_STATUS_NO_MEMORY, -1, "out of memory");
@@ -132,8 +134,8 @@ add_patch(cf_scene_t *sc, bool tri, int m, int n, const double *src,
             cf__free(p->h);
             return cf__error(diag, CF_STATUS_DOMAIN, (long)i,
                              "surface %zu: %s: control point %zu is not in "
-                             "front of the eye (distance %g)", id, where, i,
-                             sc->view.distance);
+                             "front of the eye (distance %s)", id, where, i,
+                             CF__NUM(sc->view.distance));
         }
     }
     if (fmax(hi[0] - lo[0], fmax(hi[1] - lo[1], hi[2] - lo[2])) <=
@@ -179,8 +181,8 @@ finish(cf_scene_t *sc, size_t npatch, size_t nleaf, const double *box,
     if (sc->tol < 1e-12 * size) {
         rollback(sc, npatch, nleaf, box);
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "tolerance %g is below 1e-12 of the scene's size "
-                         "%g", sc->tol, size);
+                         "tolerance %s is below 1e-12 of the scene's size "
+                         "%.3g", CF__NUM(sc->tol), size);
     }
     first = cf__realloc_array(sc->surf_first, sc->nsurf + 2, sizeof *first);
     if (first == NULL) {

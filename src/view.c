@@ -1,8 +1,9 @@
 /* Views: the projection of points and, exactly, of curves
-** (curvefig/visibility.h). */
+** (curvefig/view.h). */
 #include <math.h>
 #include <string.h>
 
+#include "numtext-private.h"
 #include "vis-private.h"
 
 static double
@@ -18,10 +19,11 @@ view_axes(cf_view_t *view, double azimuth, double elevation,
     double a, e;
     if (!isfinite(azimuth))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "view: azimuth %g is not finite", azimuth);
+                         "view: azimuth %s is not finite", CF__NUM(azimuth));
     if (!isfinite(elevation))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "view: elevation %g is not finite", elevation);
+                         "view: elevation %s is not finite",
+                         CF__NUM(elevation));
     memset(view, 0, sizeof *view);
     view->azimuth = azimuth;
     view->elevation = elevation;
@@ -60,16 +62,17 @@ cf_view_perspective(cf_view_t *view, double azimuth, double elevation,
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "view is NULL");
     if (!isfinite(distance))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "view: distance %g is not finite", distance);
+                         "view: distance %s is not finite", CF__NUM(distance));
     if (!(distance > 0.0))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "view: distance %g must be positive", distance);
+                         "view: distance %s must be positive",
+                         CF__NUM(distance));
     if (target != NULL) {
         for (int i = 0; i < 3; i++) {
             if (!isfinite(target[i]))
                 return cf__error(diag, CF_STATUS_NOT_FINITE, i,
-                                 "view: target coordinate %d = %g is not "
-                                 "finite", i, target[i]);
+                                 "view: target coordinate %d = %s is not "
+                                 "finite", i, CF__NUM(target[i]));
             T[i] = target[i];
         }
     }
@@ -214,7 +217,7 @@ project_points(const cf_view_t *view, const double *src, size_t count,
         if (persp && !(g[3] > 1e-12 * h[3]))
             return cf__error(diag, CF_STATUS_DOMAIN, (long)i,
                              "control point %zu is at or behind the eye "
-                             "(distance %g)", i, view->distance);
+                             "(distance %s)", i, CF__NUM(view->distance));
         if (*hom) {
             dst[3 * i] = g[0];
             dst[3 * i + 1] = g[1];

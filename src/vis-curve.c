@@ -3,6 +3,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "numtext-private.h"
 #include "vis-private.h"
 
 /* Samples per Bézier piece: at least MIN_SAMPLES, at image steps of at
@@ -55,11 +56,12 @@ check_on(const cf_scene_t *sc, const cf_vis_on_t *on, bool curve,
                          "on: the (u, v) curve must be in R^2");
     if (!(on->offset >= 0.0 && isfinite(on->offset)))
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "on: offset %g must be finite and >= 0", on->offset);
+                         "on: offset %s must be finite and >= 0",
+                         CF__NUM(on->offset));
     if (!curve && (!isfinite(on->uv[0]) || !isfinite(on->uv[1])))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "on: uv (%g, %g) is not finite", on->uv[0],
-                         on->uv[1]);
+                         "on: uv (%s, %s) is not finite", CF__NUM(on->uv[0]),
+                         CF__NUM(on->uv[1]));
     return CF_STATUS_OK;
 }
 
@@ -496,8 +498,8 @@ cf_scene_point_visible(const cf_scene_t *sc, const double *p,
     for (int i = 0; i < 3; i++)
         if (!isfinite(p[i]))
             return cf__error(diag, CF_STATUS_NOT_FINITE, i,
-                             "point coordinate %d = %g is not finite", i,
-                             p[i]);
+                             "point coordinate %d = %s is not finite", i,
+                             CF__NUM(p[i]));
     if (on != NULL) {
         self.has = true;
         self.surface = on->surface;

@@ -4,6 +4,7 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "numtext-private.h"
 #include "vis-private.h"
 
 /* At most 2^MAX_LEVEL cells per direction of a patch, and MAX_FACETS
@@ -288,11 +289,11 @@ cf_scene_facets_tol(const cf_scene_t *sc, double tol, cf_facets_t **out,
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "scene is NULL");
     if (isnan(tol) || isinf(tol))
         return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
-                         "tolerance %g is not finite", tol);
+                         "tolerance %s is not finite", CF__NUM(tol));
     if (!(tol > 0.0) || tol < 1e-12 * sc->size)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "tolerance %g must be positive and at least 1e-12 "
-                         "of the scene's size %g", tol, sc->size);
+                         "tolerance %s must be positive and at least 1e-12 "
+                         "of the scene's size %.3g", CF__NUM(tol), sc->size);
     res = cf__calloc(1, sizeof *res);
     lv = cf__alloc_array(2 * sc->nsurf + 2, sizeof *lv);
     if (res == NULL || lv == NULL) {
@@ -312,8 +313,8 @@ cf_scene_facets_tol(const cf_scene_t *sc, double tol, cf_facets_t **out,
         cf__free(fb.items);
         cf_facets_destroy(res);
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,
-                         "tolerance %g makes %zu facets, more than %d "
-                         "(about %.0f MB): give a larger one", tol, n,
+                         "tolerance %s makes %zu facets, more than %d "
+                         "(about %.0f MB): give a larger one", CF__NUM(tol), n,
                          MAX_FACETS, 2.0 * (double)n * sizeof *fb.items
                                          / 1e6);
     }

@@ -19,6 +19,7 @@
 #include "curvefig/surface.h"
 #include "curvefig/surface-make.h"
 #include "curvefig/surface-triangle.h"
+#include "curvefig/view.h"
 #include "curvefig/visibility.h"
 #include "curvefig/reduce.h"
 

@@ -2,7 +2,7 @@
 ** curvefig figures in three dimensions: a view and surfaces drawn as
 ** exact lines (library curvefig-render).
 **
-** The view is a cf_view_t of curvefig/visibility.h (azimuth, elevation,
+** The view is a cf_view_t of curvefig/view.h (azimuth, elevation,
 ** an orthographic or a perspective projection; its conventions are
 ** there).  A parallel projection of a polynomial Bézier or B-spline curve
 ** is one of the same degree; a perspective one is the rational curve of
@@ -22,7 +22,9 @@
 #define CURVEFIG_FIGURE3D_H
 
 #include "curvefig/figure.h"
-#include "curvefig/visibility.h"
+#include "curvefig/surface-triangle.h"
+#include "curvefig/surface.h"
+#include "curvefig/view.h"
 
 #ifdef __cplusplus
 extern "C" {

@@ -136,6 +136,9 @@ CF_API void cf_interp_options_init(cf_interp_options_t *opt);
 **
 ** The cubic methods solve banded (or, PERIODIC, cyclic tridiagonal)
 ** collocation systems; they are exact interpolants up to rounding.
+** Parameters made from the points must increase strictly: a distance lost
+** in the rounding of their running sum (below about 1e-16 of the chords
+** before it) gives two points one parameter, DEGENERATE naming both.
 */
 CF_API cf_status_t cf_interpolate(size_t dim, const double *points,
                                   size_t count, const cf_interp_options_t *opt,

@@ -81,7 +81,8 @@ CF_API void cf_reduce_options_init(cf_reduce_options_t *opt);
 ** NULL) receives the errors.  BAD_DEGREE when by is not in 1 .. degree - 1,
 ** INVALID_ARG when the continuity is below -1 or more than the reduced
 ** degree can hold at both ends (2 (k + 1) > m + 1; the message names the
-** largest k), DEGENERATE when a reduced weight is not positive.
+** largest k), DEGENERATE when a reduced weight is not positive,
+** NOT_FINITE when a reduced point overflows (coordinates near DBL_MAX).
 */
 CF_API cf_status_t cf_bezier_reduce(const cf_bezier_t *c,
                                     const cf_reduce_options_t *opt,

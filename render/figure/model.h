@@ -16,6 +16,7 @@
 #include "curvefig/figure.h"
 #include "curvefig/figure3d.h"
 #include "curvefig/geometry.h"
+#include "curvefig/visibility.h"
 #include "dlist.h"
 #include "facts.h"
 
@@ -216,7 +217,7 @@ struct cf_figure {
     unsigned char *place_px;
     size_t place_px_size;
     /* the places the frames of an animation pass on (render/output/
-    ** anim.c; owned by it): the automatic labels in turn keep hint[i]
+    ** anim-frames.c; owned by it): the automatic labels in turn keep hint[i]
     ** while it stays about as clear as their best place, or take it
     ** (force) */
     const cf__auto_place_t *place_hint;

@@ -494,7 +494,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
     if (n == 0)
         return CF_STATUS_OK;
     /* an animation's frame drawn with the places it was measured with
-    ** (render/output/anim.c): taken as they are, nothing to search */
+    ** (render/output/anim-frames.c): taken as they are, nothing to search */
     for (i = 0, j = 0; fig->place_hint_force && i < fig->count; i++)
         j += is_label(fig, i, &x, &y, &t, &chosen, &s)
              && s.place == CF_PLACE_AUTO;

@@ -150,7 +150,7 @@ typedef struct cf__lua_budget {
     unsigned long long instructions, max_instructions;
     size_t printed;       /* bytes print has written */
     FILE *out;            /* where print writes */
-    /* raises the limit's error when a limit is exceeded (script.c);
+    /* raises the limit's error when a limit is exceeded (script-budget.c);
     ** returns 0 otherwise */
     int (*check)(lua_State *L);
 } cf__lua_budget_t;

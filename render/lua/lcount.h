@@ -1,6 +1,6 @@
 /*
 ** The sandbox's counted library functions (lcount.c) and the part of the
-** script's budget they charge (script.c).
+** script's budget they charge (script-budget.c).
 **
 ** Some functions of Lua's libraries loop inside one C call, where the
 ** instruction hook cannot see them: string.rep("", 1e13),

@@ -292,7 +292,7 @@ test_public_headers(void **state)
     static const char *const headers[] = {
         "core.h", "knots.h", "bernstein.h", "bezier.h", "bspline.h",
         "geometry.h", "conic.h", "interp.h", "offset.h", "surface.h", "surface-make.h",
-        "surface-triangle.h", "visibility.h",
+        "surface-triangle.h", "view.h", "visibility.h",
 #ifdef CF_TEST_RENDER
         "figure.h", "style.h", "label.h", "output.h",
 #endif

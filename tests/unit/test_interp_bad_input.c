@@ -242,6 +242,63 @@ test_numerically_singular(void **state)
     assert_null(c);
 }
 
+/*
+** Chord-length parameters that coincide.  The closed polygon (0, 0),
+** (1, 0), (1, 2^-60), (1, 0.5), (0, 0.5) has chords 1, 2^-60, 0.5, 1 and
+** 0.5: the second is lost in the running sum (1 + 2^-60 = 1), so points 1
+** and 2 would both get 1/3.  No curve passes through two points at one
+** parameter: the periodic spline once said "parameter 1 (0.333333) is not
+** in its own knot span", Catmull-Rom divided by the zero step and blamed a
+** NaN coordinate of the point (1, 2^-60).  cf_interp_parameters still
+** gives them (they are what the rule makes), and least squares, which
+** need not pass through each point, takes them.  Centripetal parameters
+** (square roots of the chords) keep the step: 2^-30 counts beside 1.
+*/
+static void
+test_lost_chord(void **state)
+{
+    const double e = ldexp(1.0, -60);
+    const double P[] = { 0, 0, 1, 0, 1, e, 1, 0.5, 0, 0.5 };
+    const char *msg = "points 1 and 2 get the same chord-length parameter "
+                      "0.3333333333333333 (their distance is lost in "
+                      "rounding beside the others'); use centripetal or "
+                      "uniform parameters";
+    double u[6];
+    cf_interp_options_t o;
+    cf_bspline_t *c = NULL;
+    cf_diag_t d;
+    (void)state;
+    assert_int_equal(cf_interp_parameters(2, P, 5, CF_PARAM_CHORD, 0.0, true,
+                                          u, NULL),
+                     CF_STATUS_OK);
+    assert_true(u[1] == 1.0 / 3.0 && u[2] == u[1]);
+    expect_error(try_interp(2, P, 5, CF_INTERP_PERIODIC, 3, NULL, NULL, true,
+                            &d),
+                 CF_STATUS_DEGENERATE, &d, msg);
+    assert_int_equal(d.index, 2);
+    cf_interp_options_init(&o);
+    o.method = CF_INTERP_CATMULL_ROM;
+    o.closed = true;
+    o.param = CF_PARAM_CHORD;
+    expect_error(cf_interpolate(2, P, 5, &o, &c, &d), CF_STATUS_DEGENERATE,
+                 &d, msg);
+    assert_null(c);
+    o.param = CF_PARAM_CENTRIPETAL;
+    assert_int_equal(cf_interp_parameters(2, P, 5, CF_PARAM_CENTRIPETAL, 0.0,
+                                          true, u, NULL),
+                     CF_STATUS_OK);
+    for (int i = 0; i < 5; i++)
+        assert_true(u[i + 1] > u[i]);
+    assert_int_equal(cf_interpolate(2, P, 5, &o, &c, NULL), CF_STATUS_OK);
+    cf_bspline_destroy(c);
+    c = NULL;
+    cf_interp_options_init(&o);
+    o.param = CF_PARAM_CHORD;
+    assert_int_equal(cf_approximate_lsq(2, P, 5, 4, &o, true, &c, NULL, NULL),
+                     CF_STATUS_OK);
+    cf_bspline_destroy(c);
+}
+
 /* ---- out of memory ------------------------------------------------------ */
 
 static void
@@ -297,6 +354,7 @@ main(void)
         cmocka_unit_test(test_explicit_params),
         cmocka_unit_test(test_smallest_cases),
         cmocka_unit_test(test_numerically_singular),
+        cmocka_unit_test(test_lost_chord),
         cmocka_unit_test(test_out_of_memory),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

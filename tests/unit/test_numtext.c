@@ -476,6 +476,129 @@ test_message_interp(void **state)
                                "coordinates must be finite");
 }
 
+/*
+** src/reduce-bezier.c: a rational quartic reduced to a cubic keeping C^1
+** at both ends: the end conditions alone fix the reduced weight
+** w'_1 = w_0 + (4/3)(w_1 - w_0) = 2 + (4/3)(0.25 - 2) = -1/3, not
+** positive.  As computed it is 5 units in the last place from the double
+** nearest -1/3: terms of size 2 and 7/3 cancel, so it is checked to a few
+** roundings of 7/3 (4 DBL_EPSILON absolute, about 4e-16 relative to 7/3).
+*/
+static void
+test_message_reduce_bezier(void **state)
+{
+    (void)state;
+    static const double P[] = { 0, 1, 2, 3, 4 };
+    static const double w[] = { 2, 0.25, 1, 1, 1 };
+    cf_bezier_t *c = NULL, *r = NULL;
+    cf_reduce_options_t o;
+    cf_diag_t d;
+    double q;
+    assert_int_equal(cf_bezier_create(1, 4, P, w, &c, NULL), CF_STATUS_OK);
+    cf_reduce_options_init(&o);
+    o.continuity = 1;
+    assert_int_equal(cf_bezier_reduce(c, &o, &r, NULL, &d),
+                     CF_STATUS_DEGENERATE);
+    assert_int_equal(d.index, 1);
+    assert_string_equal(d.msg, "the reduced curve's weight 1 is "
+                               "-0.33333333333333304; the rational curve "
+                               "cannot be reduced to degree 3");
+    q = strtod(strstr(d.msg, "is ") + 3, NULL);
+    assert_true(fabs(q + 1.0 / 3.0) <= 4 * DBL_EPSILON);
+    check_shortest(q);
+    assert_null(r);
+    cf_bezier_destroy(c);
+}
+
+/* src/view.c: a perspective view's distance */
+static void
+test_message_view(void **state)
+{
+    (void)state;
+    cf_view_t v;
+    cf_diag_t d;
+    assert_int_equal(cf_view_perspective(&v, 30, 20, -1.0 / 3.0, NULL, &d),
+                     CF_STATUS_INVALID_ARG);
+    assert_string_equal(d.msg, "view: distance -0.3333333333333333 must be "
+                               "positive");
+}
+
+/* A scene at 1/3 of a unit of the page, seen from (30, 20), with the
+** bilinear patch of corners (0, 0, 0), (0, s, 0), (s, 0, 0), (s, s, z). */
+static cf_scene_t *
+patch_scene(double tol, double s, double z, cf_status_t want, cf_diag_t *d)
+{
+    const double P[] = { 0, 0, 0, 0, s, 0, s, 0, 0, s, s, z };
+    cf_view_t v;
+    cf_scene_t *sc = NULL;
+    cf_bezier_surface_t *b = NULL;
+    assert_int_equal(cf_view_orthographic(&v, 30, 20, NULL), CF_STATUS_OK);
+    assert_int_equal(cf_scene_create(&v, tol, &sc, NULL), CF_STATUS_OK);
+    assert_int_equal(cf_bezier_surface_bilinear(3, P, &b, NULL),
+                     CF_STATUS_OK);
+    assert_int_equal(cf_scene_add_bezier(sc, b, NULL, d), want);
+    cf_bezier_surface_destroy(b);
+    return sc;
+}
+
+/* src/scene.c: a tolerance given (in full) and the scene's size measured
+** (three digits: the box's diagonal sqrt(2 10^20 + 1) = 1.41e+10) */
+static void
+test_message_scene(void **state)
+{
+    (void)state;
+    cf_view_t v;
+    cf_scene_t *sc = NULL;
+    cf_diag_t d;
+    assert_int_equal(cf_view_orthographic(&v, 30, 20, NULL), CF_STATUS_OK);
+    assert_int_equal(cf_scene_create(&v, -1.0 / 3.0, &sc, &d),
+                     CF_STATUS_INVALID_ARG);
+    assert_string_equal(d.msg, "tolerance -0.3333333333333333 must be "
+                               "positive and finite");
+    assert_null(sc);
+    sc = patch_scene(1e-3, 1e10, 1, CF_STATUS_INVALID_ARG, &d);
+    assert_string_equal(d.msg, "tolerance 0.001 is below 1e-12 of the "
+                               "scene's size 1.41e+10");
+    cf_scene_destroy(sc);
+}
+
+/* src/vis-curve.c: the offset of a point on a surface */
+static void
+test_message_vis_curve(void **state)
+{
+    (void)state;
+    const double p[] = { 0.5, 0.5, 0 };
+    cf_vis_on_t on;
+    bool vis;
+    cf_diag_t d;
+    cf_scene_t *sc = patch_scene(1.0 / 3.0, 1, 0, CF_STATUS_OK, NULL);
+    memset(&on, 0, sizeof on);
+    on.offset = -1.0 / 3.0;
+    assert_int_equal(cf_scene_point_visible(sc, p, &on, &vis, NULL, &d),
+                     CF_STATUS_INVALID_ARG);
+    assert_string_equal(d.msg, "on: offset -0.3333333333333333 must be "
+                               "finite and >= 0");
+    cf_scene_destroy(sc);
+}
+
+/* src/vis-facets.c: a facets' tolerance below the scene's resolution
+** (the size, measured, in three digits: the unit square's diagonal) */
+static void
+test_message_vis_facets(void **state)
+{
+    (void)state;
+    cf_facets_t *f = NULL;
+    cf_diag_t d;
+    cf_scene_t *sc = patch_scene(1.0 / 3.0, 1, 0, CF_STATUS_OK, NULL);
+    assert_int_equal(cf_scene_facets_tol(sc, 1e-13 / 3.0, &f, &d),
+                     CF_STATUS_INVALID_ARG);
+    assert_string_equal(d.msg, "tolerance 3.3333333333333334e-14 must be "
+                               "positive and at least 1e-12 of the scene's "
+                               "size 1.41");
+    assert_null(f);
+    cf_scene_destroy(sc);
+}
+
 /* src/linsolve.c: a singular band */
 static void
 test_message_linsolve(void **state)
@@ -570,6 +693,11 @@ main(void)
         cmocka_unit_test(test_message_bernstein),
         cmocka_unit_test(test_message_cubics_offsets),
         cmocka_unit_test(test_message_interp),
+        cmocka_unit_test(test_message_reduce_bezier),
+        cmocka_unit_test(test_message_view),
+        cmocka_unit_test(test_message_scene),
+        cmocka_unit_test(test_message_vis_curve),
+        cmocka_unit_test(test_message_vis_facets),
         cmocka_unit_test(test_message_linsolve),
         cmocka_unit_test(test_message_reduce_bspline),
         cmocka_unit_test(test_message_surface_coons),

@@ -406,6 +406,33 @@ test_bad_input(void **state)
     }
 }
 
+/* A polynomial quartic whose reduction overflows: keeping C^1 at both
+** ends fixes Q_1 = P_0 + (4/3)(P_1 - P_0) = -(5/3) DBL_MAX for the points
+** DBL_MAX, -DBL_MAX, ..., beyond the largest double, whichever method.
+** The message names the point and the coordinate (it once said "the
+** reduced curve's weight 1 is 1; the rational curve cannot be reduced"). */
+static void
+test_overflow(void **state)
+{
+    const double M = DBL_MAX, P[] = { M, -M, M, -M, M };
+    cf_bezier_t *c, *red = (cf_bezier_t *)&red;
+    cf_diag_t d;
+    (void)state;
+    assert_int_equal(cf_bezier_create(1, 4, P, NULL, &c, NULL), CF_STATUS_OK);
+    for (int meth = 0; meth <= 1; meth++) {
+        cf_reduce_options_t o = opts(1, 1, (cf_reduce_method_t)meth);
+        assert_int_equal(cf_bezier_reduce(c, &o, &red, NULL, &d),
+                         CF_STATUS_NOT_FINITE);
+        assert_int_equal(d.index, 1);
+        assert_string_equal(d.msg, "the reduced curve's point 1 has "
+                                   "coordinate 1 = -inf: the curve's "
+                                   "coordinates are too large to reduce it "
+                                   "to degree 3");
+        assert_null(red);
+    }
+    cf_bezier_destroy(c);
+}
+
 /* ---- B-splines ----------------------------------------------------------- */
 
 static cf_bspline_t *
@@ -582,6 +609,7 @@ main(void)
         cmocka_unit_test(test_bound_and_uniform),
         cmocka_unit_test(test_known_values),
         cmocka_unit_test(test_bad_input),
+        cmocka_unit_test(test_overflow),
         cmocka_unit_test(test_bspline),
         cmocka_unit_test(test_bspline_bad),
         cmocka_unit_test(test_oom),

@@ -244,6 +244,35 @@ check_view(const cf_view_t *view, cf_diag_t *diag)
     return CF_STATUS_OK;
 }
 
+/* The points of a curve (c: whether it was given; its dimension, its n
+** homogeneous points) projected into *buf (3 doubles each, freed by the
+** caller on success) and whether they are homogeneous; the checks of both
+** projections below, in their order. */
+static cf_status_t
+project_curve_points(const cf_view_t *view, bool c, size_t dim,
+                     const double *hpoints, size_t n, bool rational,
+                     double **buf, bool *hom, cf_diag_t *diag)
+{
+    cf_status_t st;
+    *buf = NULL;
+    if ((st = check_view(view, diag)) != CF_STATUS_OK)
+        return st;
+    if (!c)
+        return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "curve is NULL");
+    if (dim != 3)
+        return cf__error(diag, CF_STATUS_DIM_MISMATCH, -1,
+                         "curve is in R^%zu; a view projects R^3", dim);
+    *buf = cf__alloc_array(n, 3 * sizeof(double));
+    if (*buf == NULL)
+        return cf__error(diag, CF_STATUS_NO_MEMORY, -1, "out of memory");
+    st = project_points(view, hpoints, n, rational, *buf, hom, diag);
+    if (st != CF_STATUS_OK) {
+        cf__free(*buf);
+        *buf = NULL;
+    }
+    return st;
+}
+
 cf_status_t
 cf_view_project_bezier(const cf_view_t *view, const cf_bezier_t *c,
                        cf_bezier_t **out, cf_diag_t *diag)
@@ -252,29 +281,19 @@ cf_view_project_bezier(const cf_view_t *view, const cf_bezier_t *c,
     cf_status_t st;
     double *buf;
     bool hom;
-    size_t n;
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "out is NULL");
     *out = NULL;
-    if ((st = check_view(view, diag)) != CF_STATUS_OK)
+    st = project_curve_points(
+        view, c != NULL, c != NULL ? cf_bezier_dim(c) : 0,
+        c != NULL ? cf_bezier_hpoints(c) : NULL,
+        c != NULL ? (size_t)cf_bezier_degree(c) + 1 : 0,
+        c != NULL && cf_bezier_is_rational(c), &buf, &hom, diag);
+    if (st != CF_STATUS_OK)
         return st;
-    if (c == NULL)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "curve is NULL");
-    if (cf_bezier_dim(c) != 3)
-        return cf__error(diag, CF_STATUS_DIM_MISMATCH, -1,
-                         "curve is in R^%zu; a view projects R^3",
-                         cf_bezier_dim(c));
-    n = (size_t)cf_bezier_degree(c) + 1;
-    buf = cf__alloc_array(n, 3 * sizeof(double));
-    if (buf == NULL)
-        return cf__error(diag, CF_STATUS_NO_MEMORY, -1, "out of memory");
-    st = project_points(view, cf_bezier_hpoints(c), n,
-                        cf_bezier_is_rational(c), buf, &hom, diag);
-    if (st == CF_STATUS_OK)
-        st = hom ? cf_bezier_create_homogeneous(2, cf_bezier_degree(c), buf,
-                                                out, diag)
-                 : cf_bezier_create(2, cf_bezier_degree(c), buf, NULL, out,
-                                    diag);
+    st = hom ? cf_bezier_create_homogeneous(2, cf_bezier_degree(c), buf, out,
+                                            diag)
+             : cf_bezier_create(2, cf_bezier_degree(c), buf, NULL, out, diag);
     cf__free(buf);
     return st;
 }
@@ -291,28 +310,19 @@ cf_view_project_bspline(const cf_view_t *view, const cf_bspline_t *c,
     if (out == NULL)
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "out is NULL");
     *out = NULL;
-    if ((st = check_view(view, diag)) != CF_STATUS_OK)
+    n = c != NULL ? cf_bspline_count(c) : 0;
+    st = project_curve_points(
+        view, c != NULL, c != NULL ? cf_bspline_dim(c) : 0,
+        c != NULL ? cf_bspline_hpoints(c) : NULL, n,
+        c != NULL && cf_bspline_is_rational(c), &buf, &hom, diag);
+    if (st != CF_STATUS_OK)
         return st;
-    if (c == NULL)
-        return cf__error(diag, CF_STATUS_INVALID_ARG, -1, "curve is NULL");
-    if (cf_bspline_dim(c) != 3)
-        return cf__error(diag, CF_STATUS_DIM_MISMATCH, -1,
-                         "curve is in R^%zu; a view projects R^3",
-                         cf_bspline_dim(c));
-    n = cf_bspline_count(c);
-    buf = cf__alloc_array(n, 3 * sizeof(double));
-    if (buf == NULL)
-        return cf__error(diag, CF_STATUS_NO_MEMORY, -1, "out of memory");
-    st = project_points(view, cf_bspline_hpoints(c), n,
-                        cf_bspline_is_rational(c), buf, &hom, diag);
-    if (st == CF_STATUS_OK)
-        st = hom ? cf_bspline_create_homogeneous(
-                       2, cf_bspline_degree(c), cf_bspline_knots(c),
-                       cf_bspline_nknots(c), buf, n, out, diag)
-                 : cf_bspline_create(2, cf_bspline_degree(c),
-                                     cf_bspline_knots(c),
-                                     cf_bspline_nknots(c), buf, n, NULL, out,
-                                     diag);
+    st = hom ? cf_bspline_create_homogeneous(
+                   2, cf_bspline_degree(c), cf_bspline_knots(c),
+                   cf_bspline_nknots(c), buf, n, out, diag)
+             : cf_bspline_create(2, cf_bspline_degree(c), cf_bspline_knots(c),
+                                 cf_bspline_nknots(c), buf, n, NULL, out,
+                                 diag);
     cf__free(buf);
     return st;
 }

@@ -335,6 +335,35 @@ test_far_through(void **state)
     }
 }
 
+/* A closed outline with a vertex far up, stroked with miter joins: the
+** same as the open path from where it comes back within CUT of the page,
+** round its near vertices (the join where it was closed among them), to
+** where it leaves. */
+static void
+test_far_closed(void **state)
+{
+    double v[4][2] = { { 40, 60 }, { 90, -FAR }, { 150, 60 }, { 100, 120 } };
+    double ref_pts[6][2];
+    cf__paint_t p = stroke_paint(4, NULL, 0);
+    cf__dl_t far, ref;
+    double t;
+    (void)state;
+    t = entry(v[1], v[2]);
+    ref_pts[0][0] = v[1][0] + (v[2][0] - v[1][0]) * t;
+    ref_pts[0][1] = v[1][1] + (v[2][1] - v[1][1]) * t;
+    memcpy(ref_pts[1], v[2], sizeof v[2]);
+    memcpy(ref_pts[2], v[3], sizeof v[3]);
+    memcpy(ref_pts[3], v[0], sizeof v[0]);
+    t = 1 - entry(v[1], v[0]);
+    ref_pts[4][0] = v[0][0] + (v[1][0] - v[0][0]) * t;
+    ref_pts[4][1] = v[0][1] + (v[1][1] - v[0][1]) * t;
+    begin(&far);
+    begin(&ref);
+    polyline(&far, v[0], 4, true, &p);
+    polyline(&ref, ref_pts[0], 5, false, &p);
+    both_formats(&far, &ref, "closed outline");
+}
+
 /* ---- fills -------------------------------------------------------------- */
 
 /* Sutherland-Hodgman: polygon v (n points) clipped to the box CUT round
@@ -766,6 +795,7 @@ main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_far_lines),
         cmocka_unit_test(test_far_through),
+        cmocka_unit_test(test_far_closed),
         cmocka_unit_test(test_far_fills),
         cmocka_unit_test(test_fill_rules),
         cmocka_unit_test(test_far_curve),

@@ -38,8 +38,10 @@ typedef struct far {
     box_t vis;              /* the visible box, grown by a stroke's reach */
     const cf__far_sink_t *sink;
     bool stroke;
-    /* the fill's last point sent */
-    double last[2];
+    /* the fill's last point sent, and the one after it held back while
+    ** the clamped points run along one side of the clip box */
+    double last[2], held[2];
+    bool holding;
     /* the stroke's walk of a subpath */
     bool dashed, measure;
     double period, leg;     /* the dash pattern's; a lead-in's longest leg */
@@ -342,25 +344,57 @@ clamp(const box_t *b, const double p[2], double q[2])
     q[1] = fmin(fmax(p[1], b->y0), b->y1);
 }
 
+/* Whether p, q and r lie on one side (line) of box b. */
+static bool
+one_side(const box_t *b, const double p[2], const double q[2],
+         const double r[2])
+{
+    return (p[0] == b->x0 && q[0] == b->x0 && r[0] == b->x0)
+        || (p[0] == b->x1 && q[0] == b->x1 && r[0] == b->x1)
+        || (p[1] == b->y0 && q[1] == b->y0 && r[1] == b->y0)
+        || (p[1] == b->y1 && q[1] == b->y1 && r[1] == b->y1);
+}
+
+/* The fill's held point sent. */
+static void
+flush(far_t *f)
+{
+    if (!f->holding)
+        return;
+    f->sink->line_to(f->sink->ctx, f->held[0], f->held[1]);
+    f->last[0] = f->held[0];
+    f->last[1] = f->held[1];
+    f->holding = false;
+}
+
 /* A fill's piece: kept, or its chord with the end clamped to the clip
 ** box.  A dropped piece lies beyond one side of the visible box, and so
-** do its chord and their clamped ends: the outline changes only there. */
+** do its chord and their clamped ends: the outline changes only there.
+** Of clamped points in a row along one side of the clip box only the
+** last is sent (the outline between goes along a line: no area). */
 static void
 fill_piece(far_t *f, const piece_t *pc, bool keep)
 {
     double q[2];
     if (keep) {
+        flush(f);
         send(f, pc);
         f->last[0] = pc->b[0];
         f->last[1] = pc->b[1];
         return;
     }
     clamp(&f->clip, pc->b, q);
+    if (f->holding && one_side(&f->clip, f->last, f->held, q)) {
+        f->held[0] = q[0];
+        f->held[1] = q[1];
+        return;
+    }
+    flush(f);
     if (q[0] == f->last[0] && q[1] == f->last[1])
         return;
-    f->sink->line_to(f->sink->ctx, q[0], q[1]);
-    f->last[0] = q[0];
-    f->last[1] = q[1];
+    f->held[0] = q[0];
+    f->held[1] = q[1];
+    f->holding = true;
 }
 
 /* A run of a stroke starts at a (beyond the visible box: the end of a
@@ -444,6 +478,37 @@ mid(const double *p, const double *q, double *m)
     m[1] = p[1] * 0.5 + q[1] * 0.5;
 }
 
+/* Where to cut a line with one end in the clip box and the other far
+** beyond (more than 4 times the box's size): at m, beyond the visible box
+** from that end by the box's margin, so that the far part is dropped at
+** once instead of after a thousand halvings (a line from 1e300).  m is
+** the near end plus a fraction of the difference, exact to its rounding
+** relative to that fraction (as a halving is); false: halve. */
+static bool
+jump(const far_t *f, const double a[2], const double b[2], double m[2])
+{
+    const box_t *c = &f->clip;
+    double span = fmax(c->x1 - c->x0, c->y1 - c->y0), d[2], dmax, t;
+    bool a_in = !(a[0] < c->x0 || a[0] > c->x1 || a[1] < c->y0
+                  || a[1] > c->y1),
+         b_in = !(b[0] < c->x0 || b[0] > c->x1 || b[1] < c->y0
+                  || b[1] > c->y1);
+    const double *n = a_in ? a : b, *r = a_in ? b : a;
+    if (a_in == b_in)
+        return false;
+    d[0] = r[0] * 0.5 - n[0] * 0.5;
+    d[1] = r[1] * 0.5 - n[1] * 0.5;
+    dmax = fmax(fabs(d[0]), fabs(d[1]));
+    if (!(dmax > 2 * span) || !isfinite(dmax))
+        return false;
+    /* the near end moved by the box's size on the main axis: beyond the
+    ** visible box on the far end's side */
+    t = span / dmax;
+    m[0] = n[0] + d[0] * t;
+    m[1] = n[1] + d[1] * t;
+    return true;
+}
+
 static void
 line_piece(far_t *f, const double a[2], const double b[2], int depth)
 {
@@ -455,7 +520,8 @@ line_piece(far_t *f, const double a[2], const double b[2], int depth)
     take(f, &pc, &bb, &done, depth);
     if (done)
         return;
-    mid(a, b, m);
+    if (!jump(f, a, b, m))
+        mid(a, b, m);
     line_piece(f, a, m, depth + 1);
     line_piece(f, m, b, depth + 1);
 }
@@ -609,9 +675,11 @@ fill_sub(far_t *f, const sub_t *s)
     if (send_whole(f, s))
         return;
     clamp(&f->clip, s->start, f->last);
+    f->holding = false;
     f->sink->move_to(f->sink->ctx, f->last[0], f->last[1]);
     c.closed = true;          /* a fill closes every subpath */
     walk(f, &c);
+    flush(f);
     f->sink->close_path(f->sink->ctx);
 }
 

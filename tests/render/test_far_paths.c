@@ -775,6 +775,31 @@ test_extremes(void **state)
         }
         assert_true(t.n >= 2 && t.n < 100);
     }
+    /* a polyline of 1000 such lines, back and forth through the page:
+    ** a few segments each (the far part of a line with one end near is
+    ** dropped at once, the clamped points along one side merged) */
+    {
+        enum { N = 1000 };
+        static unsigned char zs[N];
+        static double zv[2 * N];
+        cf__path_t z = { zs, zv, N };
+        for (int i = 0; i < N; i++) {
+            zs[i] = i == 0 ? CF__SEG_MOVE : CF__SEG_LINE;
+            zv[2 * i] = i % 2 == 1 ? 1e300 : -1e300;
+            zv[2 * i + 1] = 50 + i % 7;
+        }
+        for (int k = 0; k < 2; k++) {
+            tally_t t = { 0, { 0, 0 }, { 0, 0 } };
+            cf__far_sink_t sink = { t_move, t_line, t_curve, t_arc, t_close,
+                                    &t };
+            cf__paint_t pt = stroke_paint(1, dash, 2);
+            if (k == 0)
+                assert_true(cf__far_stroke(&z, &fr, &pt.line, &sink));
+            else
+                cf__far_fill(&z, &fr, &sink);
+            assert_true(t.n > N && t.n < 8 * N);
+        }
+    }
     v[1] = NAN;
     v[2] = INFINITY;
     for (int k = 0; k < 2; k++) {

@@ -526,6 +526,73 @@ line_piece(far_t *f, const double a[2], const double b[2], int depth)
     line_piece(f, m, b, depth + 1);
 }
 
+static bool
+in_box(const box_t *b, const double p[2])
+{
+    return !out_of(b, p[0], p[1]);
+}
+
+/* Cubic c split at t (small), from its start: h[0..7] the part [0, t],
+** its points from the start plus fractions of the differences to it
+** (exact to rounding relative to the part's size, as halvings are; the
+** differences halved so that they cannot overflow), h[6..13] the rest,
+** whose far points are the convex combinations of c's. */
+static void
+split_near(const double c[8], double t, double h[14])
+{
+    double s = 1 - t, d[3][2];
+    for (int k = 0; k < 2; k++) {
+        for (int i = 0; i < 3; i++)
+            d[i][k] = c[2 * i + 2 + k] * 0.5 - c[k] * 0.5;
+        h[k] = c[k];
+        h[2 + k] = c[k] + 2 * t * d[0][k];
+        h[4 + k] = c[k] + 4 * t * s * d[0][k] + 2 * t * t * d[1][k];
+        h[6 + k] = c[k] + 6 * t * s * s * d[0][k] + 6 * t * t * s * d[1][k]
+                 + 2 * t * t * t * d[2][k];
+        h[8 + k] = s * s * c[2 + k] + 2 * t * s * c[4 + k] + t * t * c[6 + k];
+        h[10 + k] = s * c[4 + k] + t * c[6 + k];
+        h[12 + k] = c[6 + k];
+    }
+}
+
+/* Where to cut a cubic with an end in the clip box and its other points
+** spread more than 4 times the box's size: a part from that end about the
+** box's size (kept after a few halvings) and the rest, as jump does for
+** lines (a cubic whose controls lie at 1e300 took 2000 halvings); h as
+** de Casteljau's halves; false: halve. */
+static bool
+curve_jump(const far_t *f, const double c[8], double h[14])
+{
+    const box_t *b = &f->clip;
+    double span = fmax(b->x1 - b->x0, b->y1 - b->y0), dmax = 0, r[8],
+           g[14];
+    bool start = in_box(b, c);
+    if (!start && !in_box(b, c + 6))
+        return false;
+    for (int i = 2; i < 8; i++) {
+        double o = start ? c[i % 2] : c[6 + i % 2];
+        dmax = fmax(dmax, fabs(c[start ? i : 6 - i + 2 * (i % 2)] * 0.5
+                               - o * 0.5));
+    }
+    if (!(dmax > 2 * span) || !isfinite(dmax))
+        return false;
+    if (start) {
+        split_near(c, span / (6 * dmax), h);
+        return true;
+    }
+    /* from the end: the reversed cubic split, its parts reversed */
+    for (int i = 0; i < 4; i++) {
+        r[2 * i] = c[6 - 2 * i];
+        r[2 * i + 1] = c[7 - 2 * i];
+    }
+    split_near(r, span / (6 * dmax), g);
+    for (int i = 0; i < 7; i++) {
+        h[2 * i] = g[12 - 2 * i];
+        h[2 * i + 1] = g[13 - 2 * i];
+    }
+    return true;
+}
+
 static void
 curve_piece(far_t *f, const double c[8], int depth)
 {
@@ -537,6 +604,11 @@ curve_piece(far_t *f, const double c[8], int depth)
     take(f, &pc, &bb, &done, depth);
     if (done)
         return;
+    if (curve_jump(f, c, h)) {
+        curve_piece(f, h, depth + 1);
+        curve_piece(f, h + 6, depth + 1);
+        return;
+    }
     /* de Casteljau at 1/2: h[0..7] the first half, h[6..13] the second */
     h[0] = c[0];
     h[1] = c[1];

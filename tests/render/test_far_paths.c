@@ -556,8 +556,9 @@ sub_curve(const double *c, double t0, double t1, double *out)
         }
 }
 
-/* A cubic with its middle far up (controls at -FAR): drawn as the parts
-** of it within CUT of the page, found by sampling. */
+/* A cubic with its middle far up (controls at -FAR), and one whose
+** controls lie at 1e300: drawn as the parts of it within CUT of the page,
+** found by bisection and cut out by blossoming. */
 static void
 test_far_curve(void **state)
 {
@@ -597,6 +598,34 @@ test_far_curve(void **state)
         cf__dl_path_paint(&ref, &p);
     }
     both_formats(&far, &ref, "far cubic");
+
+    /* from the page straight up to controls at 1e300: its part up to
+    ** where it leaves (t about 1e-297, found by 1100 bisections) */
+    {
+        double d[8] = { W * 0.3, H * 0.6, W * 0.5, -1e300, 1e300, -1e300,
+                        1e300, 0 }, lo = 0, hi = 0.5, sub[8];
+        for (int i = 0; i < 1100; i++) {
+            double t = (lo + hi) / 2, q[2];
+            bez(d, t, q);
+            if (q[1] < -CUT)
+                hi = t;
+            else
+                lo = t;
+        }
+        assert_true(hi > 0 && hi < 1e-290);
+        sub_curve(d, 0, hi, sub);
+        begin(&far);
+        begin(&ref);
+        cf__dl_path_begin(&far);
+        cf__dl_move(&far, d[0], d[1]);
+        cf__dl_curve(&far, d[2], d[3], d[4], d[5], d[6], d[7]);
+        cf__dl_path_paint(&far, &p);
+        cf__dl_path_begin(&ref);
+        cf__dl_move(&ref, sub[0], sub[1]);
+        cf__dl_curve(&ref, sub[2], sub[3], sub[4], sub[5], sub[6], sub[7]);
+        cf__dl_path_paint(&ref, &p);
+        both_formats(&far, &ref, "cubic to 1e300");
+    }
 }
 
 /* A path within the safe region (-32768..65536 device units) is drawn as

@@ -196,6 +196,16 @@ both_formats(cf__dl_t *far, cf__dl_t *ref, const char *what)
     cf__dl_free(ref);
 }
 
+/* The cubic c (8 numbers) as a path painted with p. */
+static void
+cubic(cf__dl_t *dl, const double *c, const cf__paint_t *p)
+{
+    cf__dl_path_begin(dl);
+    cf__dl_move(dl, c[0], c[1]);
+    cf__dl_curve(dl, c[2], c[3], c[4], c[5], c[6], c[7]);
+    cf__dl_path_paint(dl, p);
+}
+
 /* A path through the n points of v (closed: and back), painted with p. */
 static void
 polyline(cf__dl_t *dl, const double *v, size_t n, bool closed,
@@ -585,17 +595,11 @@ test_far_curve(void **state)
     }
     begin(&far);
     begin(&ref);
-    cf__dl_path_begin(&far);
-    cf__dl_move(&far, c[0], c[1]);
-    cf__dl_curve(&far, c[2], c[3], c[4], c[5], c[6], c[7]);
-    cf__dl_path_paint(&far, &p);
+    cubic(&far, c, &p);
     for (int e = 0; e < 2; e++) {
         double s[8];
         sub_curve(c, ends[e][0], ends[e][1], s);
-        cf__dl_path_begin(&ref);
-        cf__dl_move(&ref, s[0], s[1]);
-        cf__dl_curve(&ref, s[2], s[3], s[4], s[5], s[6], s[7]);
-        cf__dl_path_paint(&ref, &p);
+        cubic(&ref, s, &p);
     }
     both_formats(&far, &ref, "far cubic");
 
@@ -616,14 +620,8 @@ test_far_curve(void **state)
         sub_curve(d, 0, hi, sub);
         begin(&far);
         begin(&ref);
-        cf__dl_path_begin(&far);
-        cf__dl_move(&far, d[0], d[1]);
-        cf__dl_curve(&far, d[2], d[3], d[4], d[5], d[6], d[7]);
-        cf__dl_path_paint(&far, &p);
-        cf__dl_path_begin(&ref);
-        cf__dl_move(&ref, sub[0], sub[1]);
-        cf__dl_curve(&ref, sub[2], sub[3], sub[4], sub[5], sub[6], sub[7]);
-        cf__dl_path_paint(&ref, &p);
+        cubic(&far, d, &p);
+        cubic(&ref, sub, &p);
         both_formats(&far, &ref, "cubic to 1e300");
     }
 }

@@ -189,6 +189,8 @@ draw_far(cairo_t *cr, const cf__path_t *path, const cf__paint_t *paint,
         paint_path(cr, paint);
         return;
     }
+    fr.raster = cairo_surface_get_type(cairo_get_target(cr))
+             == CAIRO_SURFACE_TYPE_IMAGE;
     if (paint->fill) {
         cairo_new_path(cr);
         cf__far_fill(path, &fr, &sink);

@@ -6,50 +6,14 @@
 #include <math.h>
 #include <stdint.h>
 
-#include "far-clip.h"
+#include "far-clip-private.h"
 
 #define MITER_LIMIT 10.0    /* cairo's default, which the backend keeps */
 #define MAX_DEPTH 1200      /* halvings: 2^1024 (the largest double) down
                                to 2^-176 of it; a piece still unsure there
                                is dropped (not reached with finite input) */
-#define LEAD_LEGS 64        /* a lead-in is at most 64 legs of
-                               CF__FAR_GROW / 2 device units: a longer
-                               dash pattern's phase is lost */
 #define HALF_PI 1.5707963267948966
 #define TWO_PI 6.283185307179586
-
-typedef struct box {
-    double x0, y0, x1, y1;
-} box_t;
-
-typedef enum kind { P_LINE, P_CURVE, P_ARC } kind_t;
-
-/* A piece of a subpath: from a to b; a cubic's controls c (its 4 points,
-** c[0..1] = a, c[6..7] = b), an arc's centre, radius and angles. */
-typedef struct piece {
-    kind_t kind;
-    double a[2], b[2];
-    const double *c;
-    double cx, cy, r, t0, t1;
-} piece_t;
-
-typedef struct far {
-    box_t clip;             /* kept: a piece this box holds */
-    box_t vis;              /* the visible box, grown by a stroke's reach */
-    const cf__far_sink_t *sink;
-    bool stroke;
-    /* the fill's last point sent, and the one after it held back while
-    ** the clamped points run along one side of the clip box */
-    double last[2], held[2];
-    bool holding;
-    /* the stroke's walk of a subpath */
-    bool dashed, measure;
-    double period, leg;     /* the dash pattern's; a lead-in's longest leg */
-    double phi;             /* length walked (dashes) */
-    bool drawing;           /* a run is open in the sink */
-    size_t index, from, to; /* pieces walked; those [from, to) are sent */
-    size_t first_drop;      /* SIZE_MAX: none */
-} far_t;
 
 /* ---- boxes -------------------------------------------------------------- */
 
@@ -110,6 +74,7 @@ cf__far_frame(const cf__far_ctm_t *m, const double ext[4],
         return false;
     for (int i = 0; i < 4; i++)
         fr->vis[i] = ext[i];
+    fr->raster = false;
     fr->grow = CF__FAR_GROW / fmax(fabs(m->xx), fabs(m->yy));
     return true;
 }
@@ -245,78 +210,6 @@ cf__far_safe(const cf__path_t *p, const cf__far_ctm_t *m)
     return true;
 }
 
-/* ---- lengths (dashes) --------------------------------------------------- */
-
-static double
-line_length(const double a[2], const double b[2])
-{
-    return 2 * hypot(b[0] * 0.5 - a[0] * 0.5, b[1] * 0.5 - a[1] * 0.5);
-}
-
-/* The speed of cubic c (scaled) at t. */
-static double
-speed(const double *c, double t)
-{
-    double s = 1 - t, d[2];
-    for (int k = 0; k < 2; k++)
-        d[k] = 3 * (s * s * (c[2 + k] - c[k])
-                    + 2 * s * t * (c[4 + k] - c[2 + k])
-                    + t * t * (c[6 + k] - c[4 + k]));
-    return hypot(d[0], d[1]);
-}
-
-/* 5-point Gauss-Legendre of the speed on [t0, t1]. */
-static double
-gauss(const double *c, double t0, double t1)
-{
-    static const double x[5] = { 0, 0.5384693101056831, -0.5384693101056831,
-                                 0.9061798459386640, -0.9061798459386640 };
-    static const double w[5] = { 0.5688888888888889, 0.4786286704993665,
-                                 0.4786286704993665, 0.2369268850561891,
-                                 0.2369268850561891 };
-    double h = (t1 - t0) / 2, m = (t0 + t1) / 2, s = 0;
-    for (int i = 0; i < 5; i++)
-        s += w[i] * speed(c, m + h * x[i]);
-    return s * h;
-}
-
-static double
-gauss_adapt(const double *c, double t0, double t1, double whole, int depth)
-{
-    double m = (t0 + t1) / 2, l = gauss(c, t0, m), r = gauss(c, m, t1);
-    if (depth >= 24 || fabs(l + r - whole) <= 1e-13 * (l + r))
-        return l + r;
-    return gauss_adapt(c, t0, m, l, depth + 1)
-         + gauss_adapt(c, m, t1, r, depth + 1);
-}
-
-static double
-curve_length(const double *c)
-{
-    double big = 0, s[8], scale = 1;
-    for (int i = 0; i < 8; i++)
-        big = fmax(big, fabs(c[i]));
-    if (big > 1e150)
-        scale = ldexp(1, -(ilogb(big) - 100));
-    for (int i = 0; i < 8; i++)
-        s[i] = c[i] * scale;
-    return gauss_adapt(s, 0, 1, gauss(s, 0, 1), 0) / scale;
-}
-
-static double
-piece_length(const piece_t *pc)
-{
-    switch (pc->kind) {
-    case P_LINE:
-        return line_length(pc->a, pc->b);
-    case P_CURVE:
-        return curve_length(pc->c);
-    case P_ARC:
-        return fabs(pc->r) * (pc->t1 - pc->t0);
-    }
-    return 0;
-}
-
 /* ---- what becomes of a piece -------------------------------------------- */
 
 static void
@@ -397,39 +290,6 @@ fill_piece(far_t *f, const piece_t *pc, bool keep)
     f->holding = true;
 }
 
-/* A run of a stroke starts at a (beyond the visible box: the end of a
-** dropped piece, or the subpath's start): after a lead-in that goes out
-** and back beyond the side of the box a lies beyond, as long as the
-** length walked modulo the dash period, in legs of at most f->leg. */
-static void
-start_run(far_t *f, const double a[2])
-{
-    const cf__far_sink_t *k = f->sink;
-    double len = f->dashed ? fmod(f->phi, f->period) : 0, d[2] = { 1, 0 },
-           step;
-    unsigned n;
-    if (!(len > 0)) {
-        k->move_to(k->ctx, a[0], a[1]);
-        return;
-    }
-    if (a[0] < f->vis.x0)
-        d[0] = -1;
-    else if (!(a[0] > f->vis.x1)) {
-        d[0] = 0;
-        d[1] = a[1] < f->vis.y0 ? -1 : 1;
-    }
-    n = (unsigned)fmin(ceil(len / f->leg), LEAD_LEGS);
-    step = len / n;
-    if (n % 2 == 1)
-        k->move_to(k->ctx, a[0] + d[0] * step, a[1] + d[1] * step);
-    else
-        k->move_to(k->ctx, a[0], a[1]);
-    for (unsigned i = n; i-- > 0;) {
-        double t = i % 2 == 1 ? step : 0;
-        k->line_to(k->ctx, a[0] + d[0] * t, a[1] + d[1] * t);
-    }
-}
-
 /* A stroke's piece: a dropped one ends the run (its ends lie farther out
 ** than the stroke reaches: no cap or join there shows), a kept one goes on
 ** with it, or starts one. */
@@ -437,18 +297,28 @@ static void
 stroke_piece(far_t *f, const piece_t *pc, bool keep)
 {
     size_t i = f->index++;
+    double len;
     if (!keep) {
         if (f->first_drop == SIZE_MAX)
             f->first_drop = i;
         f->drawing = false;
     } else if (i >= f->from && i < f->to) {
         if (!f->drawing)
-            start_run(f, pc->a);
+            cf__far_start_run(f, pc->a);
         f->drawing = true;
         send(f, pc);
     }
-    if (f->measure)
-        f->phi += piece_length(pc);
+    len = f->measure ? cf__far_piece_length(pc) : 0;
+    f->phi += len;
+    if (keep && f->measure) {
+        if (i == 0) {
+            cf__far_piece_dir(pc, false, f->out_dir);
+            f->out_len = len;
+        }
+        cf__far_piece_dir(pc, true, f->in_dir);
+        f->in_len = len;
+        f->last_kept = i;
+    }
 }
 
 /* Piece pc with box b: kept, dropped, or not yet (*done false: halve it).
@@ -770,7 +640,8 @@ stroke_walk(far_t *f, const sub_t *s, size_t from, size_t to)
 
 /* A closed subpath that is cut is walked from the first cut round to it
 ** (undashed: its joins stay where they were), or from its start (dashed:
-** the dashes start there; a join at the start is then two caps). */
+** the dashes start there; on a raster the join there, where cairo would
+** make it, is added by cf__far_close_join). */
 static void
 stroke_sub(far_t *f, const sub_t *s)
 {
@@ -789,7 +660,10 @@ stroke_sub(far_t *f, const sub_t *s)
         stroke_walk(f, s, 0, n);
         f->sink->close_path(f->sink->ctx);
     } else if (f->dashed) {
+        f->last_kept = SIZE_MAX;
         stroke_walk(f, s, 0, n);
+        if (f->raster && f->first_drop > 0 && f->last_kept == n - 1)
+            cf__far_close_join(f, s->start);
     } else {
         size_t cut = f->first_drop;
         stroke_walk(f, s, cut + 1, n);
@@ -848,13 +722,13 @@ each_sub(far_t *f, const cf__path_t *p)
     }
 }
 
-/* The clip box: the visible box grown by fr->grow. */
+/* The clip box: the visible box grown by g (user units). */
 static void
-frame_boxes(const cf__far_frame_t *fr, far_t *f)
+frame_boxes(const cf__far_frame_t *fr, double g, far_t *f)
 {
     f->vis = (box_t){ fr->vis[0], fr->vis[1], fr->vis[2], fr->vis[3] };
-    f->clip = (box_t){ fr->vis[0] - fr->grow, fr->vis[1] - fr->grow,
-                       fr->vis[2] + fr->grow, fr->vis[3] + fr->grow };
+    f->clip = (box_t){ fr->vis[0] - g, fr->vis[1] - g, fr->vis[2] + g,
+                       fr->vis[3] + g };
 }
 
 void
@@ -863,7 +737,7 @@ cf__far_fill(const cf__path_t *p, const cf__far_frame_t *fr,
 {
     far_t f = { 0 };
     f.sink = sink;
-    frame_boxes(fr, &f);
+    frame_boxes(fr, fr->grow, &f);
     each_sub(&f, p);
 }
 
@@ -882,7 +756,9 @@ cf__far_stroke(const cf__path_t *p, const cf__far_frame_t *fr,
         return false;
     f.sink = sink;
     f.stroke = true;
-    frame_boxes(fr, &f);
+    f.style = s;
+    f.raster = fr->raster;
+    frame_boxes(fr, fr->grow, &f);
     f.vis.x0 -= reach;
     f.vis.y0 -= reach;
     f.vis.x1 += reach;

@@ -66,12 +66,17 @@ bool cf__far_safe(const cf__path_t *p, const cf__far_ctm_t *m);
 ** clip box's margin round it (user units). */
 typedef struct cf__far_frame {
     double vis[4];
-    double grow;
+    double grow;     /* CF__FAR_GROW device units */
+    bool raster;     /* cairo rasterises the stroke (not a PDF or PS that
+                        a viewer does): a dashed closed outline cut far
+                        away is joined at its start where a dash runs in
+                        and one out, as cairo's raster of it is (poppler
+                        joins it not) */
 } cf__far_frame_t;
 
 /* The frame for the clip extents ext (user units, cairo_clip_extents) under
-** m; false when m is not a scale and a shift or ext does not lie on a page
-** of the device (a recording surface's: unbounded). */
+** m (fr->raster false); false when m is not a scale and a shift or ext does
+** not lie on a page of the device (a recording surface's: unbounded). */
 bool cf__far_frame(const cf__far_ctm_t *m, const double ext[4],
                    cf__far_frame_t *fr);
 

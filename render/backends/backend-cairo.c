@@ -3,13 +3,16 @@
 ** its surface (SVG, PDF, PS, PNG in render/output/output.c; the recording
 ** surface of the ink box; the raster of automatic label placement).
 ** Every stroke sets width, cap, join and dash, so an operation draws the
-** same whatever came before it.
+** same whatever came before it.  A path reaching beyond cairo's range
+** (2^23 device units in its fixed point) is cut first
+** (render/backends/far-clip.h): the same inside the page.
 */
 #include <math.h>
 
 #include <cairo.h>
 
 #include "backend.h"
+#include "far-clip.h"
 #include "label-cairo.h"
 
 static void
@@ -112,11 +115,10 @@ append_path(cairo_t *cr, const cf__path_t *p)
     }
 }
 
+/* The path of cr filled and stroked as paint says. */
 static void
-draw_path(void *ctx, const cf__path_t *path, const cf__paint_t *paint)
+paint_path(cairo_t *cr, const cf__paint_t *paint)
 {
-    cairo_t *cr = ctx;
-    append_path(cr, path);
     if (paint->fill) {
         set_source(cr, &paint->fill_color, paint->fill_opacity);
         if (!paint->stroke) {
@@ -128,6 +130,94 @@ draw_path(void *ctx, const cf__path_t *path, const cf__paint_t *paint)
     set_stroke(cr, &paint->line);
     set_source(cr, &paint->line.color, paint->line.opacity);
     cairo_stroke(cr);
+}
+
+static void
+sink_move(void *cr, double x, double y)
+{
+    cairo_move_to(cr, x, y);
+}
+
+static void
+sink_line(void *cr, double x, double y)
+{
+    cairo_line_to(cr, x, y);
+}
+
+static void
+sink_curve(void *cr, double x1, double y1, double x2, double y2, double x3,
+           double y3)
+{
+    cairo_curve_to(cr, x1, y1, x2, y2, x3, y3);
+}
+
+static void
+sink_arc(void *cr, double cx, double cy, double r, double a0, double a1)
+{
+    cairo_arc(cr, cx, cy, r, a0, a1);
+}
+
+static void
+sink_close(void *cr)
+{
+    cairo_close_path(cr);
+}
+
+static cf__far_ctm_t
+ctm(cairo_t *cr)
+{
+    cairo_matrix_t m;
+    cairo_get_matrix(cr, &m);
+    return (cf__far_ctm_t){ m.xx, m.yx, m.xy, m.yy, m.x0, m.y0 };
+}
+
+/* A path beyond cairo's range: its fill and its stroke cut apart
+** (render/backends/far-clip.h) to what the clip shows; drawn whole when
+** there is no bounded clip (a recording surface) or the stroke is too wide
+** to cut. */
+static void
+draw_far(cairo_t *cr, const cf__path_t *path, const cf__paint_t *paint,
+         const cf__far_ctm_t *m)
+{
+    cf__far_sink_t sink = { sink_move, sink_line, sink_curve, sink_arc,
+                            sink_close, cr };
+    cf__far_frame_t fr;
+    double ext[4];
+    cairo_clip_extents(cr, &ext[0], &ext[1], &ext[2], &ext[3]);
+    if (!cf__far_frame(m, ext, &fr)) {
+        append_path(cr, path);
+        paint_path(cr, paint);
+        return;
+    }
+    fr.raster = cairo_surface_get_type(cairo_get_target(cr))
+             == CAIRO_SURFACE_TYPE_IMAGE;
+    if (paint->fill) {
+        cairo_new_path(cr);
+        cf__far_fill(path, &fr, &sink);
+        set_source(cr, &paint->fill_color, paint->fill_opacity);
+        cairo_fill(cr);
+    }
+    if (!paint->stroke)
+        return;
+    cairo_new_path(cr);
+    if (!cf__far_stroke(path, &fr, &paint->line, &sink))
+        append_path(cr, path);
+    set_stroke(cr, &paint->line);
+    set_source(cr, &paint->line.color, paint->line.opacity);
+    cairo_stroke(cr);
+}
+
+static void
+draw_path(void *ctx, const cf__path_t *path, const cf__paint_t *paint)
+{
+    cairo_t *cr = ctx;
+    cf__far_ctm_t m = ctm(cr);
+    if (!cf__far_safe(path, &m)) {
+        draw_far(cr, path, paint, &m);
+        return;
+    }
+    append_path(cr, path);
+    paint_path(cr, paint);
 }
 
 /* A mesh as one mesh gradient (in PDF and PostScript a shading of type

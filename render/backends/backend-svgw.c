@@ -46,11 +46,33 @@ cf__svg_put_num(struct cf__buf *b, double v)
     return cf__buf_append(b, t, strlen(t));
 }
 
+/* The first fault of w, of kind k (a number: v, in the innermost
+** element being written). */
+static void
+fault(cf__svgw_t *w, cf__svgw_fault_kind_t k, double v)
+{
+    w->bad = true;
+    if (w->fault != CF__SVGW_FAULT_NONE)
+        return;
+    w->fault = k;
+    w->bad_value = v;
+    for (int d = w->depth; d-- > 0;)
+        if (w->stack[d].name != NULL) {
+            w->bad_name = w->stack[d].name;
+            w->bad_index = w->stack[d].index;
+            break;
+        }
+}
+
 static void
 put_num(cf__svgw_t *w, double v)
 {
-    if (cf__svg_put_num(w->dst, v) != 0)
-        w->bad = true;
+    if (cf__svg_put_num(w->dst, v) == 0)
+        return;
+    if (isfinite(v) && fabs(v) <= 1e9)
+        w->bad = true;                  /* out of memory */
+    else
+        fault(w, CF__SVGW_FAULT_NUMBER, v);
 }
 
 static void
@@ -221,11 +243,12 @@ static void
 push(cf__svgw_t *w, bool group, bool opened)
 {
     if (w->depth >= CF__SVGW_DEPTH) {
-        w->bad = true;
+        fault(w, CF__SVGW_FAULT_DEPTH, 0);
         return;
     }
     w->stack[w->depth].group = group;
     w->stack[w->depth].opened = opened;
+    w->stack[w->depth].name = NULL;
     w->depth++;
 }
 
@@ -370,6 +393,11 @@ begin_group(void *ctx, const char *name, size_t index, const char *overlay)
     put(w, b);
     put(w, "\">\n");
     push(w, true, true);
+    if (w->depth > 0 && w->depth <= CF__SVGW_DEPTH
+        && w->stack[w->depth - 1].group) {
+        w->stack[w->depth - 1].name = name;
+        w->stack[w->depth - 1].index = index;
+    }
 }
 
 /* Close the scopes opened since the innermost group, then it. */
@@ -509,7 +537,7 @@ put_outline(cf__svgw_t *w, const cf__text_op_t *t)
     cf__buf_t d;
     memset(&d, 0, sizeof d);
     if (w->outline(w->outline_ctx, t, &d) != 0) {
-        w->bad = true;
+        fault(w, CF__SVGW_FAULT_GLYPHS, 0);
         cf__buf_free(&d);
         return;
     }
@@ -549,7 +577,9 @@ draw_text(void *ctx, const cf__text_op_t *t)
     r = w->uses(w->outline_ctx, t, &uses, &rules);
     if (r == 1)
         put_outline(w, t);
-    else if (r != 0 || uses.failed || rules.failed)
+    else if (r != 0)
+        fault(w, CF__SVGW_FAULT_GLYPHS, 0);
+    else if (uses.failed || rules.failed)
         w->bad = true;
     else if (uses.size > 0 || rules.size > 0) {
         if (t->halo > 0 && t->halo_color.a > 0) {
@@ -581,7 +611,7 @@ put_defs(cf__svgw_t *w)
                               "<path d=\"", id);
         put(w, b);
         if (w->glyph_path(w->outline_ctx, (unsigned)id, w->dst) != 0)
-            w->bad = true;
+            fault(w, CF__SVGW_FAULT_GLYPHS, 0);
         put(w, "\"/></symbol>\n");
     }
     if (any)
@@ -647,3 +677,34 @@ const cf__backend_t cf__svgw_backend = {
     "svg", begin_page, begin_group, end_group, clip, unclip, draw_path,
     NULL, draw_text, end_page, knockout, NULL
 };
+
+cf_status_t
+cf__svgw_fault(const cf__svgw_t *w, const char *what, cf_diag_t *diag)
+{
+    char where[96] = "";
+    switch (w->fault) {
+    case CF__SVGW_FAULT_NUMBER:
+        if (w->bad_name != NULL)
+            snprintf(where, sizeof where, " of %.40s %zu", w->bad_name,
+                     w->bad_index + 1);
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG,
+                           w->bad_name != NULL ? (long)w->bad_index : -1,
+                           "%s: a coordinate%s is %g, %s; SVG holds numbers "
+                           "within 1e9 bp", what, where, w->bad_value,
+                           isfinite(w->bad_value) ? "too far from the page"
+                                                  : "not a finite number");
+    case CF__SVGW_FAULT_GLYPHS:
+        return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                           "%s: the outlines of a label's glyphs could not "
+                           "be made (out of memory, or the font failed)",
+                           what);
+    case CF__SVGW_FAULT_DEPTH:
+        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                           "%s: groups nested deeper than %d", what,
+                           CF__SVGW_DEPTH);
+    case CF__SVGW_FAULT_NONE:
+        break;
+    }
+    return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1, "out of memory writing "
+                       "%s", what);
+}

@@ -152,9 +152,17 @@ void cf__pgf_fini(cf__pgf_t *g);
 ** then outline), other nonzero when it failed.  glyph_path appends the
 ** path data of outline `id` at the origin; the document holds each
 ** outline used once, in <defs>.  end_page fails when out ran out of
-** memory, a coordinate was not finite or groups nested deeper than
-** CF__SVGW_DEPTH. */
+** memory, a number was not finite or beyond 1e9 bp, a label's glyphs
+** could not be outlined or groups nested deeper than CF__SVGW_DEPTH:
+** cf__svgw_fault says which. */
 #define CF__SVGW_DEPTH 64
+typedef enum cf__svgw_fault_kind {
+    CF__SVGW_FAULT_NONE,         /* else out of memory */
+    CF__SVGW_FAULT_NUMBER,       /* the first: bad_value, in bad_name's
+                                    element bad_index (NULL: none) */
+    CF__SVGW_FAULT_GLYPHS,
+    CF__SVGW_FAULT_DEPTH
+} cf__svgw_fault_kind_t;
 typedef struct cf__svgw_use {
     unsigned id;
     double x, y;
@@ -173,16 +181,29 @@ typedef struct cf__svgw {
     struct {
         bool group;              /* an element's group, else a clip scope */
         bool opened;             /* it wrote a <g> */
+        const char *name;        /* an element's: its name and index */
+        size_t index;
     } stack[CF__SVGW_DEPTH];
     int depth;
     unsigned clips;
     bool bad;
+    cf__svgw_fault_kind_t fault;
+    double bad_value;
+    const char *bad_name;
+    size_t bad_index;
     struct cf__buf body, *dst;   /* the drawing, written after the <defs> */
     unsigned char *used;         /* used[id]: outline id is used */
     size_t nused;
 } cf__svgw_t;
 
 extern const cf__backend_t cf__svgw_backend;
+
+/* Why end_page of w failed, for a document called `what` ("svg", "frame
+** 3 of the animated svg"): into diag (CF_STATUS_INVALID_ARG for a
+** number, else CF_STATUS_NO_MEMORY, or CF_STATUS_INVALID_ARG for groups
+** too deep), its status. */
+cf_status_t cf__svgw_fault(const cf__svgw_t *w, const char *what,
+                           cf_diag_t *diag);
 
 /* The accessible text of an SVG document (docs/accessibility.md): the
 ** attributes of its <svg> element (role="img", aria-labelledby naming

@@ -114,6 +114,12 @@ measure(anim_t *a, const cf__layout_t *common, cf_diag_t *diag)
         if (st == CF_STATUS_OK && cf__dl_ink(&dl, 0, dl.count, fi->ink) != 0)
             st = cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
                              "out of memory measuring the ink");
+        /* a page cropped to the ink: each frame's as a still's (render/
+        ** output/output.c), naming an element far outside the drawing */
+        if (st == CF_STATUS_OK && a->tight)
+            st = cf__figure_check_size(&dl, fi->ink[2] - fi->ink[0],
+                                       fi->ink[3] - fi->ink[1],
+                                       a->page.width, a->page.height, diag);
         n = st == CF_STATUS_OK ? cf__place_chosen(fig, NULL, 0) : 0;
         fi->nplaces = n;
         if (n > 0) {
@@ -160,6 +166,41 @@ union_map(const anim_t *a, cf__layout_t *u)
     u->oy = 0.5 * (r[1] + r[3]) + 0.5 * u->sy * (u->ymax - u->ymin);
 }
 
+/* The frames' inks u together too large a page: the check of a still's
+** page size (cf__figure_check_size) on the frame whose ink lies farthest
+** outside the figure's page, which names the element. */
+static cf_status_t
+union_too_large(anim_t *a, const double u[4], cf_diag_t *diag)
+{
+    unsigned k, worst = 0;
+    double far = -INFINITY;
+    cf_figure_t *fig = NULL;
+    cf__layout_t lay;
+    cf__dl_t dl;
+    cf_status_t st;
+    for (k = 0; k < a->src->frames; k++) {
+        const double *ink = a->info[k].ink;
+        double o = fmax(fmax(-ink[0], -ink[1]),
+                        fmax(ink[2] - a->page.width, ink[3] - a->page.height));
+        if (ink[2] > ink[0] && o > far) {
+            far = o;
+            worst = k;
+        }
+    }
+    st = a->src->make(a->src->ctx, worst, &fig, &k, diag);
+    if (st != CF_STATUS_OK)
+        return st;
+    cf__dl_init(&dl);
+    st = build(fig, &a->common, a->info[worst].places,
+               a->info[worst].nplaces, true, &lay, &dl, diag);
+    if (st == CF_STATUS_OK)
+        st = cf__figure_check_size(&dl, u[2] - u[0], u[3] - u[1],
+                                   a->page.width, a->page.height, diag);
+    cf__dl_free(&dl);
+    a->src->release(a->src->ctx, worst, fig);
+    return st;
+}
+
 /* Steps 1 and 2. */
 cf_status_t
 cf__anim_settle(anim_t *a, cf_diag_t *diag)
@@ -196,6 +237,8 @@ cf__anim_settle(anim_t *a, cf_diag_t *diag)
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
                            "the animation draws nothing in any of its %u "
                            "frames", n);
+    if (u[2] - u[0] > CF__PAGE_MAX || u[3] - u[1] > CF__PAGE_MAX)
+        return union_too_large(a, u, diag);
     pad = a->o->tight ? a->o->padding : 0;
     if (!a->o->tight) {
         cf_figure_t *fig;

@@ -256,9 +256,7 @@ svg_render(const cf__dl_t *dl, const cf__page_t *pg, const char *title,
     if (r == 0)
         return CF_STATUS_OK;
     cf__buf_free(out);
-    return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
-                       "out of memory writing svg, or a coordinate that "
-                       "is not finite");
+    return cf__svgw_fault(&w, "svg", diag);
 }
 
 /* PGF: the PGF backend into out, without cairo surfaces. */

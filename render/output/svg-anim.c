@@ -85,7 +85,14 @@ cf__svg_anim_add(cf__svg_anim_t *a, const cf__dl_t *dl,
     cf__svgw_backend.begin_page(&w, &pg);
     cf__dl_play_step(dl, &pg, step, &cf__svgw_backend, &w);
     r = cf__svgw_backend.end_page(&w);
-    if (r == 0 && cf__svg_split(&doc, &t0, &t1, &b1) != 0)
+    if (r != 0) {
+        char what[64];
+        cf__buf_free(&doc);
+        snprintf(what, sizeof what, "frame %zu of the animated svg",
+                 a->n + 1);
+        return cf__svgw_fault(&w, what, diag);
+    }
+    if (cf__svg_split(&doc, &t0, &t1, &b1) != 0)
         r = -1;
     start = r == 0 ? cf__grow_array(a->start, &a->cap, a->n + 1,
                                     sizeof *a->start, 64)
@@ -94,8 +101,7 @@ cf__svg_anim_add(cf__svg_anim_t *a, const cf__dl_t *dl,
         cf__buf_free(&doc);
         return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
                            "out of memory writing frame %zu of the "
-                           "animated svg, or a coordinate that is not "
-                           "finite", a->n + 1);
+                           "animated svg", a->n + 1);
     }
     a->start = start;
     while (t1 < b1 && *t1 == '\n')

@@ -34,9 +34,7 @@ cf__format_render(cf_format_t format, const cf__dl_t *dl,
     w.outline = cf__label_outline_svg;
     r = cf__dl_play_page(dl, page, &cf__svgw_backend, &w);
     if (r != 0)
-        return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
-                           "out of memory writing SVG, or a coordinate "
-                           "that is not finite");
+        return cf__svgw_fault(&w, "svg", diag);
     return CF_STATUS_OK;
 }
 

@@ -475,7 +475,74 @@ test_structure_and_bad_numbers(void **state)
     assert_int_not_equal(cf__dl_play_page(&dl, &pg, &cf__svgw_backend, &w),
                          0);
     cf__buf_free(&out);
+    /* the failure says which: a number, and in which element */
+    {
+        cf_diag_t d;
+        cf_diag_clear(&d);
+        assert_int_equal(cf__svgw_fault(&w, "svg", &d), CF_STATUS_INVALID_ARG);
+        assert_string_equal(d.msg, "svg: a coordinate is NaN, not a finite "
+                                   "number; SVG holds numbers within 1e9 bp");
+        cf__dl_reset(&dl);
+        cf__dl_group(&dl, "arrow", 1);
+        cf__dl_path_begin(&dl);
+        cf__dl_move(&dl, 0, 0);
+        cf__dl_line(&dl, 2e9, 1);
+        cf__dl_path_paint(&dl, &paint);
+        cf__dl_end(&dl);
+        memset(&w, 0, sizeof w);
+        w.out = &out;
+        w.outline = no_outline;
+        assert_int_not_equal(cf__dl_play_page(&dl, &pg, &cf__svgw_backend,
+                                              &w), 0);
+        cf__buf_free(&out);
+        cf_diag_clear(&d);
+        assert_int_equal(cf__svgw_fault(&w, "frame 3 of the animated svg",
+                                        &d), CF_STATUS_INVALID_ARG);
+        assert_string_equal(d.msg, "frame 3 of the animated svg: a "
+                                   "coordinate of arrow 2 is 2e+09, too far "
+                                   "from the page; SVG holds numbers within "
+                                   "1e9 bp");
+        assert_int_equal(d.index, 1);
+        /* out of memory: said so alone */
+        memset(&w, 0, sizeof w);
+        w.bad = true;
+        cf_diag_clear(&d);
+        assert_int_equal(cf__svgw_fault(&w, "svg", &d), CF_STATUS_NO_MEMORY);
+        assert_string_equal(d.msg, "out of memory writing svg");
+    }
     cf__dl_free(&dl);
+}
+
+/* A figure whose arrow comes from 1e8 window units away on a page that
+** clips: its SVG (a coordinate of 1e10 bp) is refused naming the arrow;
+** the PNG draws it (render/backends/far-clip.h). */
+static void
+test_far_arrow_named(void **state)
+{
+    cf_figure_t *fig = NULL;
+    cf_diag_t d;
+    unsigned char *data = NULL;
+    size_t size = 0;
+    (void)state;
+    assert_int_equal(cf_figure_create(60, 40, CF_UNIT_MM, &fig, NULL), 0);
+    assert_int_equal(cf_figure_set_window(fig, 0, 1, 0, 1), 0);
+    assert_int_equal(cf_figure_set_page_mode(fig, CF_PAGE_FIXED), 0);
+    assert_int_equal(cf_figure_set_clip(fig, true), 0);
+    assert_int_equal(cf_figure_add_polyline(fig, (const double[]){ 0, 0, 1,
+                                                                   1 },
+                                            2, false, NULL), 0);
+    assert_int_equal(cf_figure_add_arrow(fig, 1e8, 0.5, 0.5 - 1e8, 0,
+                                         NULL), 0);
+    cf_diag_clear(&d);
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_SVG, NULL, &data, &size,
+                                      &d), CF_STATUS_INVALID_ARG);
+    assert_non_null(strstr(d.msg, "svg: a coordinate of arrow 2 is "));
+    assert_non_null(strstr(d.msg, "too far from the page"));
+    assert_null(data);
+    assert_int_equal(cf_figure_render(fig, CF_FORMAT_PNG, NULL, &data, &size,
+                                      NULL), 0);
+    cf_free(data);
+    cf_figure_destroy(fig);
 }
 
 int
@@ -483,6 +550,7 @@ main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_structure_and_bad_numbers),
+        cmocka_unit_test(test_far_arrow_named),
         cmocka_unit_test(test_glyph_defined_once),
         cmocka_unit_test(test_glyphs_where_pango_draws_them),
         cmocka_unit_test(test_every_figure_alike_in_files_and_pages),

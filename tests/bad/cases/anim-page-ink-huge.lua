@@ -1,0 +1,8 @@
+-- expect: 1 "arrow 2 lies 7820 mm outside the drawing's 60.0 x 40.0 mm page, on the top: the page cropped to the ink would be larger than the largest page (14400 pt = 5.08 m a side)"
+-- an animation on a page cropped to its ink, one frame with an arrow from far outside: refused as the still of that frame is, naming the element, before any frame is drawn
+-- args: --animate -f pdf,svg
+local s = slider{ name = "s", min = 0, max = 1, default = 0 }
+animate{ slider = "s", from = 0, to = 1, seconds = 0.2, fps = 10 }
+local f = figure{ name = "far", width = "6cm", height = "4cm", window = {0, 1, 0, 1} }
+f:polyline({ {0, 0}, {1, 1} })
+f:arrow_to({ 1000 * s + 0.1, 1000 * s + 0.1 }, { 0.5, 0.5 })

@@ -14,44 +14,13 @@
 #include <unistd.h>
 
 #include "anim-write-private.h"
+#include "fdio.h"
 
 /* The reply for one frame: status, then the message or the pixels. */
 typedef struct reply {
     int32_t status;
     char msg[sizeof ((cf_diag_t *)0)->msg];
 } reply_t;
-
-static int
-write_all(int fd, const void *p, size_t n)
-{
-    const unsigned char *b = p;
-    while (n > 0) {
-        ssize_t w = write(fd, b, n);
-        if (w < 0 && errno == EINTR)
-            continue;
-        if (w <= 0)
-            return -1;
-        b += w;
-        n -= (size_t)w;
-    }
-    return 0;
-}
-
-static int
-read_all(int fd, void *p, size_t n)
-{
-    unsigned char *b = p;
-    while (n > 0) {
-        ssize_t r = read(fd, b, n);
-        if (r < 0 && errno == EINTR)
-            continue;
-        if (r <= 0)
-            return -1;
-        b += r;
-        n -= (size_t)r;
-    }
-    return 0;
-}
 
 /* A child: the rasters of frames w, w + n, ... through fd. */
 static void
@@ -73,8 +42,8 @@ worker(anim_t *a, int w, int n, int fd)
                      : (int32_t)cf_diag_set(&diag, CF_STATUS_NO_MEMORY, -1,
                                             "out of memory for a frame");
         memcpy(rep.msg, diag.msg, sizeof rep.msg);
-        if (write_all(fd, &rep, sizeof rep) != 0 || rep.status != 0
-            || write_all(fd, cairo_image_surface_get_data(surf), bytes) != 0)
+        if (cf__fd_write_all(fd, &rep, sizeof rep) != 0 || rep.status != 0
+            || cf__fd_write_all(fd, cairo_image_surface_get_data(surf), bytes) != 0)
             break;
     }
     _exit(0);
@@ -142,9 +111,9 @@ cf__anim_workers_read(const workers_t *ws, unsigned k, cairo_surface_t *surf,
     reply_t rep;
     int fd = ws->fd[k % (unsigned)ws->n];
     cairo_surface_flush(surf);
-    if (read_all(fd, &rep, sizeof rep) != 0
+    if (cf__fd_read_all(fd, &rep, sizeof rep) != 0
         || (rep.status == 0
-            && read_all(fd, cairo_image_surface_get_data(surf), bytes) != 0))
+            && cf__fd_read_all(fd, cairo_image_surface_get_data(surf), bytes) != 0))
         st = cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
                          "the process drawing frame %u ended early", k + 1);
     else if (rep.status != 0)

@@ -34,43 +34,12 @@
 #endif
 
 #include "live.h"
+#include "fdio.h"
 #include "runlimits.h"
 
 #define MAX_REPLY ((size_t)1 << 30)
 #define FLAG_BAD 1
 #define FLAG_RETIRE 2
-
-static int
-write_all(int fd, const void *data, size_t n)
-{
-    const char *p = data;
-    while (n > 0) {
-        ssize_t w = write(fd, p, n);
-        if (w < 0 && errno == EINTR)
-            continue;
-        if (w <= 0)
-            return -1;
-        p += w;
-        n -= (size_t)w;
-    }
-    return 0;
-}
-
-static int
-read_all(int fd, void *data, size_t n)
-{
-    char *p = data;
-    while (n > 0) {
-        ssize_t r = read(fd, p, n);
-        if (r < 0 && errno == EINTR)
-            continue;
-        if (r <= 0)
-            return -1;
-        p += r;
-        n -= (size_t)r;
-    }
-    return 0;
-}
 
 /* The worker's resident memory in bytes (-1: unknown). */
 static long
@@ -98,11 +67,11 @@ read_values(int req, char **values, uint32_t *vlen)
     while (r < 0 && errno == EINTR);
     if (r == 0)
         return 1;
-    if (r < 0 || (r < 4 && read_all(req, (char *)vlen + r, 4 - (size_t)r)
+    if (r < 0 || (r < 4 && cf__fd_read_all(req, (char *)vlen + r, 4 - (size_t)r)
                   != 0) || *vlen > CF__LIVE_MAX_VALUES)
         return -1;
     *values = malloc((size_t)*vlen + 1);
-    if (*values == NULL || read_all(req, *values, *vlen) != 0)
+    if (*values == NULL || cf__fd_read_all(req, *values, *vlen) != 0)
         return -1;
     (*values)[*vlen] = '\0';
     return 0;
@@ -177,10 +146,10 @@ child(int fd, int req, pid_t parent, const char *script,
             flag |= FLAG_RETIRE;
         elen = (uint32_t)strlen(error);
         jlen = (uint32_t)strlen(json);
-        if (write_all(fd, &flag, 1) != 0 || write_all(fd, &elen, 4) != 0
-            || write_all(fd, &jlen, 4) != 0
-            || write_all(fd, error, elen) != 0
-            || write_all(fd, json, jlen) != 0)
+        if (cf__fd_write_all(fd, &flag, 1) != 0 || cf__fd_write_all(fd, &elen, 4) != 0
+            || cf__fd_write_all(fd, &jlen, 4) != 0
+            || cf__fd_write_all(fd, error, elen) != 0
+            || cf__fd_write_all(fd, json, jlen) != 0)
             _exit(4);
         free(json);
         if (flag & FLAG_RETIRE)
@@ -337,8 +306,8 @@ static int
 send_values(cf__live_worker *w, const char *values, uint32_t len)
 {
     void (*old_pipe)(int) = signal(SIGPIPE, SIG_IGN);
-    int r = write_all(w->req, &len, 4) == 0
-            && write_all(w->req, values, len) == 0 ? 0 : -1;
+    int r = cf__fd_write_all(w->req, &len, 4) == 0
+            && cf__fd_write_all(w->req, values, len) == 0 ? 0 : -1;
     signal(SIGPIPE, old_pipe);
     return r;
 }

@@ -10,6 +10,7 @@
 ** in doubles, cairo_show_text_glyphs with the span's text and clusters
 ** where the surface keeps text (PDF), and the current point restored.
 */
+#include <math.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -136,11 +137,29 @@ cf__font_glyphs_unknown(const cf__font_glyphs_t *g)
     return false;
 }
 
-/* v as the glyph data writes and the page reads it */
-static double
-as_written(double v)
+double
+cf__font_five_digits(double v)
 {
+    static const double p10[] = { 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7 };
+    double a = fabs(v);
     char buf[32];
+    /* 1e-3 <= a < 1e4, as nearly every outline's coordinate per bp: the
+    ** comparisons with 0.1 and 0.01 are exact (no double lies between
+    ** 1/10 and the double 0.1) */
+    if (a >= 1e-3 && a < 1e4) {
+        int e = a >= 1000 ? 3 : a >= 100 ? 2 : a >= 10 ? 1 : a >= 1 ? 0
+              : a >= 0.1 ? -1 : a >= 0.01 ? -2 : -3;
+        double k = p10[3 - e], sc = a * k;   /* 10^(4 - e), exact */
+        double half = fabs(sc - floor(sc) - 0.5);
+        /* a * k is within 1e-11 of the exact product: away from a tie
+        ** and from the ends of [10^4, 10^5) it rounds as the exact value
+        ** does, and r / k, one rounding of two exact numbers, is the
+        ** double nearest the decimal, as strtod reads it */
+        if (half > 1e-6 && sc > 10000.5 && sc < 99999.4) {
+            double r = nearbyint(sc) / k;
+            return v < 0 ? -r : r;
+        }
+    }
     snprintf(buf, sizeof buf, "%.5g", v);
     return strtod(buf, NULL);
 }
@@ -177,8 +196,8 @@ cf__font_glyph_outline(cairo_t *cr, cairo_scaled_font_t *sf,
         double v[6];
         int k;
         for (k = 1; k < d->header.length && k <= 3; k++) {
-            v[2 * k - 2] = as_written(d[k].point.x / s);
-            v[2 * k - 1] = as_written(d[k].point.y / s);
+            v[2 * k - 2] = cf__font_five_digits(d[k].point.x / s);
+            v[2 * k - 1] = cf__font_five_digits(d[k].point.y / s);
         }
         f(u, op[d->header.type], v);
     }

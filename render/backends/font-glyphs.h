@@ -29,6 +29,12 @@ void cf__font_glyphs_draw(cairo_t *cr, const cf__font_glyphs_t *g,
 /* Whether any glyph of the run is unknown (CF__FONT_GLYPH_UNKNOWN). */
 bool cf__font_glyphs_unknown(const cf__font_glyphs_t *g);
 
+/* v as a course page's glyph data writes it and the page reads it back:
+** strtod of printf's "%.5g" (5 significant digits), the same double,
+** found by arithmetic where that is exact (1e-3 <= |v| < 1e4, away from
+** a tie of the rounding) and by the two calls elsewhere. */
+double cf__font_five_digits(double v);
+
 /* The outline of glyph id of scaled font sf per bp of size (from the
 ** glyph's origin, y down), each coordinate as a course page's glyph data
 ** holds it (cairo's glyph path at the font's size over that size, to 5

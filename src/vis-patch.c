@@ -126,7 +126,25 @@ tensor_k(const double *net, int m, int n, double s, double t, int k,
 TENSOR_ROW(0)
 TENSOR_ROW(1)
 TENSOR_ROW(2)
-TENSOR_ROW(3)
+TENSOR_K(3, 0) TENSOR_K(3, 1) TENSOR_K(3, 2)
+
+/* The bicubic patch, nearly every surface of the course and most of a
+** hidden-line run's time (Newton's steps in cf__vpatch_locate): one copy
+** per x86-64 level (CF__CLONED), whose four components go through the
+** wider vectors of the level, the same operations on each. */
+CF__INLINE void
+tensor_33_body(const double *net, double s, double t, int k, double A[6][4])
+{
+    if (k <= 0)
+        tensor_k(net, 3, 3, s, t, 0, A);
+    else if (k == 1)
+        tensor_k(net, 3, 3, s, t, 1, A);
+    else
+        tensor_k(net, 3, 3, s, t, 2, A);
+}
+CF__CLONED(void, tensor_33,
+           (const double *net, double s, double t, int k, double A[6][4]),
+           (net, s, t, k, A), )
 
 typedef void (*tensor_fn)(const double *, double, double, int,
                           double[6][4]);

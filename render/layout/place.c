@@ -12,12 +12,17 @@
 ** ink, placed by hand or automatically, is kept and reported in the
 ** figure's warnings (cf_figure_warnings): which label, at which place,
 ** on what.  The raster is drawn only where it is read (the candidate
-** places and the labels placed by hand), in the figure's memory kept
-** from the last placement; the refits of a page cropped to its ink place
-** the labels as a draft (the same places, no warnings).
+** places and the labels placed by hand; none at all when nothing is
+** read), in the figure's memory kept from the last placement and emptied
+** again only where it was painted; a candidate's cost is four look-ups
+** in the sums of the raster over its label's candidates; a label lying
+** on no ink is added to the raster from the pixels it was tested with.
+** The refits of a page cropped to its ink place the labels as a draft
+** (the same places, no warnings).
 */
 #include <math.h>
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -53,33 +58,121 @@ typedef struct anchors {
     size_t n;
 } anchors_t;
 
+/* Sums of the page's raster over a pixel box (i0 j0 i1 j1): at[(j - j0)
+** * (i1 - i0 + 1) + i - i0] the sum of the pixels (i', j') with i0 <= i'
+** < i and j0 <= j' < j (the first row and column zero). */
+typedef struct sums {
+    uint32_t *at;
+    size_t cap;
+    int b[4];
+} sums_t;
+
 typedef struct raster {
     cf__raster_t img, one;   /* the page's ink; one element's */
     unsigned char *mask;     /* a label's pixels, laid out as one's */
     bool draft;              /* no search for labels on ink */
     double res;
     cf__dl_t dl;
+    sums_t sums;             /* of img, for one label's candidates */
 } raster_t;
 
-/* Ink in the page box x0 y0 x1 y1 (bp) of a raster at res pixels per
-** bp, in bp^2 of full ink; pixels off the page count as full ink. */
-static double
-raster_ink(const cf__raster_t *img, double res, const double b[4])
+/* The pixel box raster_ink sums for page box b (x0 y0 x1 y1), cut to
+** the raster: px (i0 j0 i1 j1); its whole extent, off the page too, as
+** doubles into whole. */
+static void
+ink_pixels(const cf__raster_t *img, double res, const double b[4],
+           int px[4], double whole[4])
 {
-    const unsigned char *px = img->px;
-    int w = img->w, h = img->h, stride = img->stride;
-    double i0 = floor(b[0] * res), i1 = ceil(b[2] * res);
-    double j0 = floor(b[1] * res), j1 = ceil(b[3] * res);
-    double sum = 0, inside = 0;
-    int i, j, ci0 = (int)fmax(i0, 0), ci1 = (int)fmin(i1, w);
-    int cj0 = (int)fmax(j0, 0), cj1 = (int)fmin(j1, h);
-    for (j = cj0; j < cj1; j++)
-        for (i = ci0; i < ci1; i++)
-            sum += px[(size_t)j * (size_t)stride + (size_t)i];
-    if (ci1 > ci0 && cj1 > cj0)
-        inside = (double)(ci1 - ci0) * (cj1 - cj0);
-    sum += 255.0 * ((i1 - i0) * (j1 - j0) - inside);
+    whole[0] = floor(b[0] * res);
+    whole[2] = ceil(b[2] * res);
+    whole[1] = floor(b[1] * res);
+    whole[3] = ceil(b[3] * res);
+    px[0] = (int)fmax(whole[0], 0);
+    px[2] = (int)fmin(whole[2], img->w);
+    px[1] = (int)fmax(whole[1], 0);
+    px[3] = (int)fmin(whole[3], img->h);
+}
+
+/* The sums of img over the pixel box b (cut to the raster) into s; -1
+** out of memory. */
+static int
+sums_make(sums_t *s, const cf__raster_t *img, const int b[4])
+{
+    int i0 = b[0] > 0 ? b[0] : 0, j0 = b[1] > 0 ? b[1] : 0;
+    int i1 = b[2] < img->w ? b[2] : img->w;
+    int j1 = b[3] < img->h ? b[3] : img->h, i, j;
+    size_t w, n;
+    s->b[0] = s->b[1] = s->b[2] = s->b[3] = 0;
+    if (i1 <= i0 || j1 <= j0)
+        return 0;
+    w = (size_t)(i1 - i0) + 1;
+    n = w * ((size_t)(j1 - j0) + 1);
+    if (n > s->cap) {
+        uint32_t *p = cf_realloc_array(s->at, n, sizeof *p);
+        if (p == NULL)
+            return -1;
+        s->at = p;
+        s->cap = n;
+    }
+    memset(s->at, 0, w * sizeof *s->at);
+    for (j = j0; j < j1; j++) {
+        const unsigned char *row = img->px + (size_t)j * (size_t)img->stride;
+        const uint32_t *up = s->at + (size_t)(j - j0) * w;
+        uint32_t *to = s->at + (size_t)(j - j0 + 1) * w, left = 0;
+        to[0] = 0;
+        for (i = i0; i < i1; i++) {
+            left += row[i];
+            to[i - i0 + 1] = up[i - i0 + 1] + left;
+        }
+    }
+    s->b[0] = i0;
+    s->b[1] = j0;
+    s->b[2] = i1;
+    s->b[3] = j1;
+    return 0;
+}
+
+/* Ink in the page box x0 y0 x1 y1 (bp) of the page's raster, in bp^2
+** of full ink; pixels off the page count as full ink.  The pixels are
+** summed as whole numbers (exact in a double), from the sums of the
+** candidates' box when it holds them. */
+static double
+raster_ink(const raster_t *r, const double b[4])
+{
+    const cf__raster_t *img = &r->img;
+    const sums_t *s = &r->sums;
+    double whole[4], sum = 0, inside = 0, res = r->res;
+    int px[4], i, j;
+    ink_pixels(img, res, b, px, whole);
+    if (px[2] > px[0] && px[3] > px[1]) {
+        if (px[0] >= s->b[0] && px[2] <= s->b[2] && px[1] >= s->b[1]
+            && px[3] <= s->b[3]) {
+            size_t w = (size_t)(s->b[2] - s->b[0]) + 1;
+            size_t a0 = (size_t)(px[0] - s->b[0]);
+            size_t a1 = (size_t)(px[2] - s->b[0]);
+            const uint32_t *top = s->at + (size_t)(px[1] - s->b[1]) * w;
+            const uint32_t *bot = s->at + (size_t)(px[3] - s->b[1]) * w;
+            sum = (double)(bot[a1] - bot[a0] - top[a1] + top[a0]);
+        } else {
+            for (j = px[1]; j < px[3]; j++)
+                for (i = px[0]; i < px[2]; i++)
+                    sum += img->px[(size_t)j * (size_t)img->stride
+                                   + (size_t)i];
+        }
+        inside = (double)(px[2] - px[0]) * (px[3] - px[1]);
+    }
+    sum += 255.0 * ((whole[2] - whole[0]) * (whole[3] - whole[1]) - inside);
     return sum / (255.0 * res * res);
+}
+
+/* The page box of a candidate's ink widened by d (AUTO_GAP, AUTO_NEAR). */
+static void
+widened(const double ink[4], double ox, double oy, double d, double b[4])
+{
+    b[0] = ox + ink[0] - d;
+    b[1] = oy + ink[1] - d;
+    b[2] = ox + ink[2] + d;
+    b[3] = oy + ink[3] + d;
 }
 
 /* The cost of a label with ink box ink (relative to its origin) at
@@ -89,16 +182,10 @@ static double
 place_cost(const raster_t *r, const double ink[4], double ox, double oy)
 {
     double hard[4], near[4], a, b;
-    hard[0] = ox + ink[0] - AUTO_GAP;
-    hard[1] = oy + ink[1] - AUTO_GAP;
-    hard[2] = ox + ink[2] + AUTO_GAP;
-    hard[3] = oy + ink[3] + AUTO_GAP;
-    near[0] = ox + ink[0] - AUTO_NEAR;
-    near[1] = oy + ink[1] - AUTO_NEAR;
-    near[2] = ox + ink[2] + AUTO_NEAR;
-    near[3] = oy + ink[3] + AUTO_NEAR;
-    a = raster_ink(&r->img, r->res, hard);
-    b = raster_ink(&r->img, r->res, near);
+    widened(ink, ox, oy, AUTO_GAP, hard);
+    widened(ink, ox, oy, AUTO_NEAR, near);
+    a = raster_ink(r, hard);
+    b = raster_ink(r, near);
     return a + 0.25 * fmax(0, b - a);
 }
 
@@ -226,6 +313,32 @@ cheapest(const raster_t *r, const anchors_t *an, const cf_label_t *lab,
     }
 }
 
+/* The sums of the page's raster over the pixels the candidate places of
+** a label at page point (px, py) read (cheapest), so that each costs
+** four look-ups; -1 out of memory. */
+static int
+candidate_sums(raster_t *r, const cf_label_t *lab, const cf_style_t *s,
+               double px, double py)
+{
+    double ink[4], whole[4];
+    int box[4] = { INT32_MAX, INT32_MAX, INT32_MIN, INT32_MIN }, b[4];
+    size_t k, d;
+    cf__label_ink(lab, ink);
+    for (d = 0; d < sizeof further / sizeof further[0]; d++)
+        for (k = 0; k < sizeof order / sizeof order[0]; k++) {
+            double ox, oy, near[4];
+            cf__label_origin(lab, order[k], s->offset + further[d], px, py,
+                             &ox, &oy);
+            widened(ink, ox, oy, AUTO_NEAR, near);
+            ink_pixels(&r->img, r->res, near, b, whole);
+            box[0] = b[0] < box[0] ? b[0] : box[0];
+            box[1] = b[1] < box[1] ? b[1] : box[1];
+            box[2] = b[2] > box[2] ? b[2] : box[2];
+            box[3] = b[3] > box[3] ? b[3] : box[3];
+        }
+    return sums_make(&r->sums, &r->img, box);
+}
+
 /* Pixels inked more than half both in one and in img, within the pixel
 ** box px (x0 y0 x1 y1; NULL: everywhere). */
 static long
@@ -247,6 +360,48 @@ common_pixels(const cf__raster_t *one, const unsigned char *b,
             n += a[at] > HIT_ALPHA && b[at] > HIT_ALPHA;
         }
     return n;
+}
+
+/* The label just painted into r->one within the pixel box px (none of
+** it beyond) added to the page's raster, when no pixel of it lies on a
+** pixel of ink: painted over empty pixels, its pixels are those it
+** leaves in r->one, and where it left r->one empty, painting it would
+** leave the raster as it is (each paint rounds v + a c (255 - v) to the
+** nearest byte: under half over 0, then under half over v).  False
+** (nothing changed) when some pixel of it lies on ink. */
+static bool
+add_apart(raster_t *r, const int px[4])
+{
+    int i0 = px[0] > 0 ? px[0] : 0, j0 = px[1] > 0 ? px[1] : 0;
+    int i1 = px[2] < r->img.w ? px[2] : r->img.w;
+    int j1 = px[3] < r->img.h ? px[3] : r->img.h, i, j;
+    int *d = r->img.dirty;
+    if (i1 <= i0 || j1 <= j0)
+        return true;
+    for (j = j0; j < j1; j++) {
+        size_t at = (size_t)j * (size_t)r->img.stride;
+        for (i = i0; i < i1; i++)
+            if (r->one.px[at + (size_t)i] != 0
+                && r->img.px[at + (size_t)i] != 0)
+                return false;
+    }
+    for (j = j0; j < j1; j++) {
+        size_t at = (size_t)j * (size_t)r->img.stride;
+        for (i = i0; i < i1; i++)
+            r->img.px[at + (size_t)i] |= r->one.px[at + (size_t)i];
+    }
+    if (d[2] <= d[0] || d[3] <= d[1]) {
+        d[0] = i0;
+        d[1] = j0;
+        d[2] = i1;
+        d[3] = j1;
+    } else {
+        d[0] = i0 < d[0] ? i0 : d[0];
+        d[1] = j0 < d[1] ? j0 : d[1];
+        d[2] = i1 > d[2] ? i1 : d[2];
+        d[3] = j1 > d[3] ? j1 : d[3];
+    }
+    return true;
 }
 
 /* Append a line to the figure's warnings (once). */
@@ -325,10 +480,13 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
     px[2] = (int)ceil(ink[2] * r->res) + 1;
     px[3] = (int)ceil(ink[3] * r->res) + 1;
     cf__raster_clear(&r->one, px);
+    r->one.cut = false;
     st = paint(fig, r, &r->one, px);
     if (st != CF_STATUS_OK)
         return st;
     n = common_pixels(&r->one, r->img.px, px);
+    if (n <= 1 && !r->one.cut && add_apart(r, px))
+        return CF_STATUS_OK;
     if (n > 1) {
         size_t j;
         int row, i0 = px[0] > 0 ? px[0] : 0;
@@ -358,14 +516,10 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
     return paint(fig, r, &r->img, NULL);
 }
 
-/* The three rasters of the page, w x h each, in the figure's memory kept
-** from the last placement (a layout places the labels once per refit of
-** its ink box; fresh pages of memory for each would cost more than the
-** painting). */
-static cf_status_t
+/* The geometry of the page's rasters (their memory: raster_memory). */
+static void
 raster_open(cf_figure_t *fig, raster_t *r)
 {
-    size_t n;
     int w, h;
     memset(r, 0, sizeof *r);
     r->res = AUTO_RES;
@@ -374,30 +528,54 @@ raster_open(cf_figure_t *fig, raster_t *r)
     w = (int)fmax(1, ceil(fig->width * r->res));
     h = (int)fmax(1, ceil(fig->height * r->res));
     cf__dl_init(&r->dl);
-    n = (size_t)w * (size_t)h;
-    if (fig->place_px_size < 3 * n) {
-        unsigned char *px = cf_realloc_array(fig->place_px, n, 3);
-        if (px == NULL)
-            return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                               "out of memory placing labels");
-        fig->place_px = px;
-        fig->place_px_size = 3 * n;
-    }
-    memset(fig->place_px, 0, 3 * n);
-    r->img.px = fig->place_px;
-    r->one.px = fig->place_px + n;
-    r->mask = fig->place_px + 2 * n;
     r->img.w = r->one.w = w;
     r->img.h = r->one.h = h;
     r->img.stride = r->one.stride = w;
     r->img.res = r->one.res = r->res;
+}
+
+/* The three rasters of the page, w x h each, in the figure's memory kept
+** from the last placement (a layout places the labels once per refit of
+** its ink box; fresh pages of memory for each would cost more than the
+** painting).  The page's raster comes out empty: raster_close empties
+** what the placement painted, so that only the first use or a larger
+** page clears it whole.  The other two need no clearing:
+** every pixel read of them is written first (check_label,
+** what_is_under). */
+static cf_status_t
+raster_memory(cf_figure_t *fig, raster_t *r)
+{
+    size_t n = (size_t)r->img.w * (size_t)r->img.h;
+    if (fig->place_px_size < 3 * n) {
+        unsigned char *px = cf_alloc_array(n, 3);
+        if (px == NULL)
+            return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                               "out of memory placing labels");
+        cf_free(fig->place_px);
+        fig->place_px = px;
+        fig->place_px_size = 3 * n;
+        fig->place_px_zero = 0;
+    }
+    if (fig->place_px_zero < n)
+        memset(fig->place_px + fig->place_px_zero, 0,
+               n - fig->place_px_zero);
+    fig->place_px_zero = n;
+    r->img.px = fig->place_px;
+    r->one.px = fig->place_px + n;
+    r->mask = fig->place_px + 2 * n;
     return CF_STATUS_OK;
 }
 
+/* The page's raster made empty again for the next placement. */
 static void
-raster_close(raster_t *r)
+raster_close(cf_figure_t *fig, raster_t *r)
 {
+    if (r->img.px != NULL) {
+        cf__raster_clear(&r->img, r->img.dirty);
+        fig->place_px_zero = (size_t)r->img.w * (size_t)r->img.h;
+    }
     cf__dl_free(&r->dl);
+    cf_free(r->sums.at);
 }
 
 void
@@ -513,13 +691,13 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
                            "the figure has %zu labels, more than the %d "
                            "placed in one figure (each is placed among "
                            "all the others)", n, CF_FIGURE_MAX_LABELS);
-    st = raster_open(fig, &r);
+    raster_open(fig, &r);
     r.draft = draft;
     /* the raster is read only where the automatic labels may go and the
     ** labels placed by hand are: the rest is not drawn
     ** (cf__raster_paint_in: the same pixels) */
-    if (st == CF_STATUS_OK && !read_box(fig, lay, &r, box)) {
-        raster_close(&r);
+    if (!read_box(fig, lay, &r, box)) {
+        raster_close(fig, &r);
         if (fig->err.status != CF_STATUS_OK)
             return fig->err.status;
         fig->placed = true;
@@ -527,6 +705,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
         fig->placed_for = moved;
         return CF_STATUS_OK;
     }
+    st = raster_memory(fig, &r);
     /* fills and hulls left out: labels may sit on a shading */
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
         if ((fig->els[i]->kind->flags & CF__KIND_SHADING)
@@ -568,13 +747,18 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
         if (st != CF_STATUS_OK || t->lab == NULL)
             continue;
         cf__map(lay, x, y, &px, &py);
+        if (candidate_sums(&r, t->lab, &s, px, py) != 0) {
+            st = cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                             "out of memory placing labels");
+            break;
+        }
         cheapest(&r, &an, t->lab, &s, px, py,
                  j <= fig->nplace_hint ? &fig->place_hint[j - 1] : NULL,
                  fig->place_hint_force, chosen);
         st = check_label(fig, lay, &r, i, t, chosen->place, true);
     }
     cf_free(an.xy);
-    raster_close(&r);
+    raster_close(fig, &r);
     if (st == CF_STATUS_OK) {
         fig->placed = true;
         fig->placed_draft = draft;

@@ -163,8 +163,9 @@ add_span(float *row, float *run, int i0, int i1, double a, double b,
         b = i1;
     if (!(b > a))
         return;
-    ia = (int)floor(a);
-    ib = (int)floor(b);
+    /* 0 <= i0 <= a < b: truncation is floor */
+    ia = (int)a;
+    ib = (int)b;
     if (ia == ib) {
         row[ia - i0] += (float)((b - a) * w);
         return;

@@ -160,7 +160,7 @@ put_poly(measure_t *g, double alpha)
         if (b[2] > b[0] && b[3] > b[1] && g->pl.n > 0 && alpha > 0) {
             grow_dirty(g->r, b, g->pl.box);
             if (cf__poly_paint(&g->pl, g->r->px, g->r->stride, b, alpha,
-                               false) != 0)
+                               false, g->r->rows) != 0)
                 g->failed = true;
         }
     }

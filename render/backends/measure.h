@@ -27,6 +27,9 @@ typedef struct cf__raster {
     ** beyond the pixel box it was painted within (a raster opened sets
     ** it false) */
     bool cut;
+    /* NULL, or one byte a row: only the rows j with rows[j] != 0 are
+    ** painted (cf__poly_paint), each as it comes out painting all */
+    const unsigned char *rows;
 } cf__raster_t;
 
 /* A raster of the page box (ox, oy) .. (ox + w / res, oy + h / res),

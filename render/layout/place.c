@@ -74,6 +74,8 @@ typedef struct raster {
     double res;
     cf__dl_t dl;
     sums_t sums;             /* of img, for one label's candidates */
+    unsigned char *rows;     /* the rows of img read, when every label is
+                                placed by hand (read_box); NULL: all */
 } raster_t;
 
 /* The pixel box raster_ink sums for page box b (x0 y0 x1 y1), cut to
@@ -576,6 +578,7 @@ raster_close(cf_figure_t *fig, raster_t *r)
     }
     cf__dl_free(&r->dl);
     cf_free(r->sums.at);
+    cf_free(r->rows);
 }
 
 void
@@ -584,27 +587,59 @@ cf__place_forget(cf_figure_t *fig)
     fig->placed = false;
 }
 
+/* The rows of raster r that page box b (bp) takes, as read_box takes a
+** box's pixels, marked in r->rows. */
+static void
+mark_rows(raster_t *r, const double b[4])
+{
+    int j0 = (int)fmax(0, fmin(r->img.h, floor(b[1] * r->res) - 1));
+    int j1 = (int)fmax(0, fmin(r->img.h, ceil(b[3] * r->res) + 1));
+    if (j1 > j0)
+        memset(r->rows + j0, 1, (size_t)(j1 - j0));
+}
+
 /* The pixel box of raster r that the placement reads (every candidate
 ** box of the automatic labels in the window out to AUTO_NEAR, and unless
 ** a draft the box of each label placed by hand, as check_label takes it,
-** a pixel more each way) into px; false when there is none. */
+** a pixel more each way) into px; false when there is none.  When no
+** label is placed automatically (and not a draft), the rows of that box
+** which the labels placed by hand read, in the window or not, are marked
+** in r->rows (where there is one: else, and with automatic labels, it is
+** dropped). */
 static bool
 read_box(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r, int px[4])
 {
     double b[4] = { INFINITY, INFINITY, -INFINITY, -INFINITY };
     size_t i, d, k;
+    if (!r->draft)
+        r->rows = cf_calloc((size_t)r->img.h, 1);
     for (i = 0; i < fig->count; i++) {
-        double x, y, ax, ay, ink[4];
+        double x, y, ax, ay, ink[4], hb[4];
         cf__text_t *t;
         cf__auto_place_t *chosen;
         cf_style_t s;
-        if (!is_label(fig, i, &x, &y, &t, &chosen, &s)
-            || !cf__in_window(lay, x, y))
+        bool in;
+        if (!is_label(fig, i, &x, &y, &t, &chosen, &s))
+            continue;
+        if (s.place == CF_PLACE_AUTO && r->rows != NULL) {
+            cf_free(r->rows);
+            r->rows = NULL;
+        }
+        in = cf__in_window(lay, x, y);
+        if (!in && (s.place == CF_PLACE_AUTO || r->rows == NULL))
             continue;
         if (s.place != CF_PLACE_AUTO) {
             if (r->draft || element_ops(fig, i, lay, r) != CF_STATUS_OK
                 || cf__dl_ink(&r->dl, 0, r->dl.count, ink) != 0
                 || !(ink[2] > ink[0] && ink[3] > ink[1]))
+                continue;
+            hb[0] = ink[0] - 1 / r->res;
+            hb[1] = ink[1] - 1 / r->res;
+            hb[2] = ink[2] + 1 / r->res;
+            hb[3] = ink[3] + 1 / r->res;
+            if (r->rows != NULL)
+                mark_rows(r, hb);
+            if (!in)
                 continue;
             b[0] = fmin(b[0], ink[0] - 1 / r->res);
             b[1] = fmin(b[1], ink[1] - 1 / r->res);
@@ -706,6 +741,9 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
         return CF_STATUS_OK;
     }
     st = raster_memory(fig, &r);
+    /* with every label placed by hand, only the rows their boxes take
+    ** (read_box): the pixels there are the same */
+    r.img.rows = r.rows;
     /* fills and hulls left out: labels may sit on a shading */
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
         if ((fig->els[i]->kind->flags & CF__KIND_SHADING)
@@ -720,6 +758,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
         if (st == CF_STATUS_OK)
             st = paint(fig, &r, &r.img, box);
     }
+    r.img.rows = NULL;
     /* the labels placed by hand first: the automatic ones avoid them */
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
         if (!is_label(fig, i, &x, &y, &t, &chosen, &s)

@@ -18,27 +18,25 @@
 ** in the sums of the raster over its label's candidates; a label lying
 ** on no ink is added to the raster from the pixels it was tested with.
 ** The refits of a page cropped to its ink place the labels as a draft
-** (the same places, no warnings).
+** (the same places, no warnings).  The rasters, their memory and what is
+** read of them: render/layout/place-raster.c.
 */
 #include <math.h>
 #include <stdarg.h>
-#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "label-private.h"
 #include "layout-private.h"
 #include "measure.h"
+#include "place-raster.h"
 
-#define AUTO_RES 2.0          /* raster pixels per bp */
-#define AUTO_MAX_PIXELS 4e6   /* larger pages get a coarser raster */
 #define AUTO_GAP 1.0          /* bp around a label that should stay clear */
 #define AUTO_NEAR 3.0         /* bp: ink this close costs a quarter */
 #define AUTO_FAR 0.6          /* cost (bp^2) of each bp farther out */
 #define AUTO_AMBIGUOUS 1e4    /* cost of a place nearer another labelled
                                  point than the label's own */
 #define AUTO_CLEARER 0.75     /* bp a label keeps nearer its own point */
-#define HIT_ALPHA 127         /* a pixel inked more than half */
 #define AUTO_KEEP 1.0         /* bp^2: a label of an animation keeps its
                                  place of the frame before unless the best
                                  is clearer by more than this */
@@ -53,119 +51,12 @@ static const cf_place_t order[] = {
 };
 
 /* The anchors (page points) of the labels in the window. */
+typedef cf__place_raster_t raster_t;
+
 typedef struct anchors {
     double *xy;
     size_t n;
 } anchors_t;
-
-/* Sums of the page's raster over a pixel box (i0 j0 i1 j1): at[(j - j0)
-** * (i1 - i0 + 1) + i - i0] the sum of the pixels (i', j') with i0 <= i'
-** < i and j0 <= j' < j (the first row and column zero). */
-typedef struct sums {
-    uint32_t *at;
-    size_t cap;
-    int b[4];
-} sums_t;
-
-typedef struct raster {
-    cf__raster_t img, one;   /* the page's ink; one element's */
-    unsigned char *mask;     /* a label's pixels, laid out as one's */
-    bool draft;              /* no search for labels on ink */
-    double res;
-    cf__dl_t dl;
-    sums_t sums;             /* of img, for one label's candidates */
-    unsigned char *rows;     /* the rows of img read, when every label is
-                                placed by hand (read_box); NULL: all */
-} raster_t;
-
-/* The pixel box raster_ink sums for page box b (x0 y0 x1 y1), cut to
-** the raster: px (i0 j0 i1 j1); its whole extent, off the page too, as
-** doubles into whole. */
-static void
-ink_pixels(const cf__raster_t *img, double res, const double b[4],
-           int px[4], double whole[4])
-{
-    whole[0] = floor(b[0] * res);
-    whole[2] = ceil(b[2] * res);
-    whole[1] = floor(b[1] * res);
-    whole[3] = ceil(b[3] * res);
-    px[0] = (int)fmax(whole[0], 0);
-    px[2] = (int)fmin(whole[2], img->w);
-    px[1] = (int)fmax(whole[1], 0);
-    px[3] = (int)fmin(whole[3], img->h);
-}
-
-/* The sums of img over the pixel box b (cut to the raster) into s; -1
-** out of memory. */
-static int
-sums_make(sums_t *s, const cf__raster_t *img, const int b[4])
-{
-    int i0 = b[0] > 0 ? b[0] : 0, j0 = b[1] > 0 ? b[1] : 0;
-    int i1 = b[2] < img->w ? b[2] : img->w;
-    int j1 = b[3] < img->h ? b[3] : img->h, i, j;
-    size_t w, n;
-    s->b[0] = s->b[1] = s->b[2] = s->b[3] = 0;
-    if (i1 <= i0 || j1 <= j0)
-        return 0;
-    w = (size_t)(i1 - i0) + 1;
-    n = w * ((size_t)(j1 - j0) + 1);
-    if (n > s->cap) {
-        uint32_t *p = cf_realloc_array(s->at, n, sizeof *p);
-        if (p == NULL)
-            return -1;
-        s->at = p;
-        s->cap = n;
-    }
-    memset(s->at, 0, w * sizeof *s->at);
-    for (j = j0; j < j1; j++) {
-        const unsigned char *row = img->px + (size_t)j * (size_t)img->stride;
-        const uint32_t *up = s->at + (size_t)(j - j0) * w;
-        uint32_t *to = s->at + (size_t)(j - j0 + 1) * w, left = 0;
-        to[0] = 0;
-        for (i = i0; i < i1; i++) {
-            left += row[i];
-            to[i - i0 + 1] = up[i - i0 + 1] + left;
-        }
-    }
-    s->b[0] = i0;
-    s->b[1] = j0;
-    s->b[2] = i1;
-    s->b[3] = j1;
-    return 0;
-}
-
-/* Ink in the page box x0 y0 x1 y1 (bp) of the page's raster, in bp^2
-** of full ink; pixels off the page count as full ink.  The pixels are
-** summed as whole numbers (exact in a double), from the sums of the
-** candidates' box when it holds them. */
-static double
-raster_ink(const raster_t *r, const double b[4])
-{
-    const cf__raster_t *img = &r->img;
-    const sums_t *s = &r->sums;
-    double whole[4], sum = 0, inside = 0, res = r->res;
-    int px[4], i, j;
-    ink_pixels(img, res, b, px, whole);
-    if (px[2] > px[0] && px[3] > px[1]) {
-        if (px[0] >= s->b[0] && px[2] <= s->b[2] && px[1] >= s->b[1]
-            && px[3] <= s->b[3]) {
-            size_t w = (size_t)(s->b[2] - s->b[0]) + 1;
-            size_t a0 = (size_t)(px[0] - s->b[0]);
-            size_t a1 = (size_t)(px[2] - s->b[0]);
-            const uint32_t *top = s->at + (size_t)(px[1] - s->b[1]) * w;
-            const uint32_t *bot = s->at + (size_t)(px[3] - s->b[1]) * w;
-            sum = (double)(bot[a1] - bot[a0] - top[a1] + top[a0]);
-        } else {
-            for (j = px[1]; j < px[3]; j++)
-                for (i = px[0]; i < px[2]; i++)
-                    sum += img->px[(size_t)j * (size_t)img->stride
-                                   + (size_t)i];
-        }
-        inside = (double)(px[2] - px[0]) * (px[3] - px[1]);
-    }
-    sum += 255.0 * ((whole[2] - whole[0]) * (whole[3] - whole[1]) - inside);
-    return sum / (255.0 * res * res);
-}
 
 /* The page box of a candidate's ink widened by d (AUTO_GAP, AUTO_NEAR). */
 static void
@@ -186,8 +77,8 @@ place_cost(const raster_t *r, const double ink[4], double ox, double oy)
     double hard[4], near[4], a, b;
     widened(ink, ox, oy, AUTO_GAP, hard);
     widened(ink, ox, oy, AUTO_NEAR, near);
-    a = raster_ink(r, hard);
-    b = raster_ink(r, near);
+    a = cf__place_ink(r, hard);
+    b = cf__place_ink(r, near);
     return a + 0.25 * fmax(0, b - a);
 }
 
@@ -332,78 +223,13 @@ candidate_sums(raster_t *r, const cf_label_t *lab, const cf_style_t *s,
             cf__label_origin(lab, order[k], s->offset + further[d], px, py,
                              &ox, &oy);
             widened(ink, ox, oy, AUTO_NEAR, near);
-            ink_pixels(&r->img, r->res, near, b, whole);
+            cf__place_ink_pixels(&r->img, r->res, near, b, whole);
             box[0] = b[0] < box[0] ? b[0] : box[0];
             box[1] = b[1] < box[1] ? b[1] : box[1];
             box[2] = b[2] > box[2] ? b[2] : box[2];
             box[3] = b[3] > box[3] ? b[3] : box[3];
         }
-    return sums_make(&r->sums, &r->img, box);
-}
-
-/* Pixels inked more than half both in one and in img, within the pixel
-** box px (x0 y0 x1 y1; NULL: everywhere). */
-static long
-common_pixels(const cf__raster_t *one, const unsigned char *b,
-              const int *px)
-{
-    const unsigned char *a = one->px;
-    int w = one->w, h = one->h, stride = one->stride, i, j, i0 = 0, j0 = 0;
-    long n = 0;
-    if (px != NULL) {
-        i0 = px[0] > 0 ? px[0] : 0;
-        j0 = px[1] > 0 ? px[1] : 0;
-        w = px[2] < w ? px[2] : w;
-        h = px[3] < h ? px[3] : h;
-    }
-    for (j = j0; j < h; j++)
-        for (i = i0; i < w; i++) {
-            size_t at = (size_t)j * (size_t)stride + (size_t)i;
-            n += a[at] > HIT_ALPHA && b[at] > HIT_ALPHA;
-        }
-    return n;
-}
-
-/* The label just painted into r->one within the pixel box px (none of
-** it beyond) added to the page's raster, when no pixel of it lies on a
-** pixel of ink: painted over empty pixels, its pixels are those it
-** leaves in r->one, and where it left r->one empty, painting it would
-** leave the raster as it is (each paint rounds v + a c (255 - v) to the
-** nearest byte: under half over 0, then under half over v).  False
-** (nothing changed) when some pixel of it lies on ink. */
-static bool
-add_apart(raster_t *r, const int px[4])
-{
-    int i0 = px[0] > 0 ? px[0] : 0, j0 = px[1] > 0 ? px[1] : 0;
-    int i1 = px[2] < r->img.w ? px[2] : r->img.w;
-    int j1 = px[3] < r->img.h ? px[3] : r->img.h, i, j;
-    int *d = r->img.dirty;
-    if (i1 <= i0 || j1 <= j0)
-        return true;
-    for (j = j0; j < j1; j++) {
-        size_t at = (size_t)j * (size_t)r->img.stride;
-        for (i = i0; i < i1; i++)
-            if (r->one.px[at + (size_t)i] != 0
-                && r->img.px[at + (size_t)i] != 0)
-                return false;
-    }
-    for (j = j0; j < j1; j++) {
-        size_t at = (size_t)j * (size_t)r->img.stride;
-        for (i = i0; i < i1; i++)
-            r->img.px[at + (size_t)i] |= r->one.px[at + (size_t)i];
-    }
-    if (d[2] <= d[0] || d[3] <= d[1]) {
-        d[0] = i0;
-        d[1] = j0;
-        d[2] = i1;
-        d[3] = j1;
-    } else {
-        d[0] = i0 < d[0] ? i0 : d[0];
-        d[1] = j0 < d[1] ? j0 : d[1];
-        d[2] = i1 > d[2] ? i1 : d[2];
-        d[3] = j1 > d[3] ? j1 : d[3];
-    }
-    return true;
+    return cf__place_sums(&r->sums, &r->img, box);
 }
 
 /* Append a line to the figure's warnings (once). */
@@ -445,7 +271,7 @@ what_is_under(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
         if (raster_element(fig, j, lay, r, &r->one, px) != CF_STATUS_OK)
             return fig->count;
         /* the mask is empty outside the label's box px */
-        n = common_pixels(&r->one, mask, px);
+        n = cf__place_common(&r->one, mask, px);
         if (n > most) {
             most = n;
             worst = j;
@@ -486,8 +312,8 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
     st = paint(fig, r, &r->one, px);
     if (st != CF_STATUS_OK)
         return st;
-    n = common_pixels(&r->one, r->img.px, px);
-    if (n <= 1 && !r->one.cut && add_apart(r, px))
+    n = cf__place_common(&r->one, r->img.px, px);
+    if (n <= 1 && !r->one.cut && cf__place_add_apart(r, px))
         return CF_STATUS_OK;
     if (n > 1) {
         size_t j;
@@ -518,84 +344,10 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
     return paint(fig, r, &r->img, NULL);
 }
 
-/* The geometry of the page's rasters (their memory: raster_memory). */
-static void
-raster_open(cf_figure_t *fig, raster_t *r)
-{
-    int w, h;
-    memset(r, 0, sizeof *r);
-    r->res = AUTO_RES;
-    if (fig->width * fig->height * r->res * r->res > AUTO_MAX_PIXELS)
-        r->res = sqrt(AUTO_MAX_PIXELS / (fig->width * fig->height));
-    w = (int)fmax(1, ceil(fig->width * r->res));
-    h = (int)fmax(1, ceil(fig->height * r->res));
-    cf__dl_init(&r->dl);
-    r->img.w = r->one.w = w;
-    r->img.h = r->one.h = h;
-    r->img.stride = r->one.stride = w;
-    r->img.res = r->one.res = r->res;
-}
-
-/* The three rasters of the page, w x h each, in the figure's memory kept
-** from the last placement (a layout places the labels once per refit of
-** its ink box; fresh pages of memory for each would cost more than the
-** painting).  The page's raster comes out empty: raster_close empties
-** what the placement painted, so that only the first use or a larger
-** page clears it whole.  The other two need no clearing:
-** every pixel read of them is written first (check_label,
-** what_is_under). */
-static cf_status_t
-raster_memory(cf_figure_t *fig, raster_t *r)
-{
-    size_t n = (size_t)r->img.w * (size_t)r->img.h;
-    if (fig->place_px_size < 3 * n) {
-        unsigned char *px = cf_alloc_array(n, 3);
-        if (px == NULL)
-            return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                               "out of memory placing labels");
-        cf_free(fig->place_px);
-        fig->place_px = px;
-        fig->place_px_size = 3 * n;
-        fig->place_px_zero = 0;
-    }
-    if (fig->place_px_zero < n)
-        memset(fig->place_px + fig->place_px_zero, 0,
-               n - fig->place_px_zero);
-    fig->place_px_zero = n;
-    r->img.px = fig->place_px;
-    r->one.px = fig->place_px + n;
-    r->mask = fig->place_px + 2 * n;
-    return CF_STATUS_OK;
-}
-
-/* The page's raster made empty again for the next placement. */
-static void
-raster_close(cf_figure_t *fig, raster_t *r)
-{
-    if (r->img.px != NULL) {
-        cf__raster_clear(&r->img, r->img.dirty);
-        fig->place_px_zero = (size_t)r->img.w * (size_t)r->img.h;
-    }
-    cf__dl_free(&r->dl);
-    cf_free(r->sums.at);
-    cf_free(r->rows);
-}
-
 void
 cf__place_forget(cf_figure_t *fig)
 {
     fig->placed = false;
-}
-
-/* The rows of raster r that page box b (bp) takes, as read_box takes a
-** box's pixels, marked in r->rows. */
-static void
-mark_rows(raster_t *r, const double b[4])
-{
-    int j0 = (int)fmax(0, fmin(r->img.h, floor(b[1] * r->res) - 1));
-    int j1 = (int)fmax(0, fmin(r->img.h, ceil(b[3] * r->res) + 1));
-    if (j1 > j0)
-        memset(r->rows + j0, 1, (size_t)(j1 - j0));
 }
 
 /* The pixel box of raster r that the placement reads (every candidate
@@ -638,7 +390,7 @@ read_box(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r, int px[4])
             hb[2] = ink[2] + 1 / r->res;
             hb[3] = ink[3] + 1 / r->res;
             if (r->rows != NULL)
-                mark_rows(r, hb);
+                cf__place_mark_rows(r, hb);
             if (!in)
                 continue;
             b[0] = fmin(b[0], ink[0] - 1 / r->res);
@@ -726,13 +478,13 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
                            "the figure has %zu labels, more than the %d "
                            "placed in one figure (each is placed among "
                            "all the others)", n, CF_FIGURE_MAX_LABELS);
-    raster_open(fig, &r);
+    cf__place_raster_open(fig, &r);
     r.draft = draft;
     /* the raster is read only where the automatic labels may go and the
     ** labels placed by hand are: the rest is not drawn
     ** (cf__raster_paint_in: the same pixels) */
     if (!read_box(fig, lay, &r, box)) {
-        raster_close(fig, &r);
+        cf__place_raster_close(fig, &r);
         if (fig->err.status != CF_STATUS_OK)
             return fig->err.status;
         fig->placed = true;
@@ -740,7 +492,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
         fig->placed_for = moved;
         return CF_STATUS_OK;
     }
-    st = raster_memory(fig, &r);
+    st = cf__place_raster_memory(fig, &r);
     /* with every label placed by hand, only the rows their boxes take
     ** (read_box): the pixels there are the same */
     r.img.rows = r.rows;
@@ -797,7 +549,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
         st = check_label(fig, lay, &r, i, t, chosen->place, true);
     }
     cf_free(an.xy);
-    raster_close(fig, &r);
+    cf__place_raster_close(fig, &r);
     if (st == CF_STATUS_OK) {
         fig->placed = true;
         fig->placed_draft = draft;

@@ -288,16 +288,19 @@ static const char *const place_names[] = {
 ** it lies on some.  Then add it to the raster. */
 static cf_status_t
 check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
-            size_t i, const cf__text_t *t, cf_place_t place, bool automatic)
+            size_t i, const cf__text_t *t, cf_place_t place, bool automatic,
+            bool last)
 {
     cf_status_t st;
     double ink[4];
     int px[4];
     long n;
-    /* only the label's box is cleared, drawn and compared */
+    /* only the label's box is cleared, drawn and compared; the last label
+    ** is not added (nothing reads the raster after it) */
     st = element_ops(fig, i, lay, r);
     if (st != CF_STATUS_OK || r->draft)
-        return st != CF_STATUS_OK ? st : paint(fig, r, &r->img, NULL);
+        return st != CF_STATUS_OK || last ? st
+                                          : paint(fig, r, &r->img, NULL);
     if (cf__dl_ink(&r->dl, 0, r->dl.count, ink) != 0)
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
                            "out of memory measuring a label");
@@ -313,7 +316,7 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
     if (st != CF_STATUS_OK)
         return st;
     n = cf__place_common(&r->one, r->img.px, px);
-    if (n <= 1 && !r->one.cut && cf__place_add_apart(r, px))
+    if (n <= 1 && (last || (!r->one.cut && cf__place_add_apart(r, px))))
         return CF_STATUS_OK;
     if (n > 1) {
         size_t j;
@@ -341,7 +344,7 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
                  place_names[place], fig->ninsets > 0
                  ? "ink (an inset's frame or connector?)" : "ink");
     }
-    return paint(fig, r, &r->img, NULL);
+    return last ? CF_STATUS_OK : paint(fig, r, &r->img, NULL);
 }
 
 void
@@ -440,7 +443,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
     cf__text_t *t;
     cf__auto_place_t *chosen;
     double x, y;
-    size_t i, j, n;
+    size_t i, j, n, k = 0;   /* k: labels checked */
     int box[4];
     cf_status_t st;
 
@@ -516,7 +519,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
         if (!is_label(fig, i, &x, &y, &t, &chosen, &s)
             || s.place == CF_PLACE_AUTO)
             continue;
-        st = check_label(fig, lay, &r, i, t, s.place, false);
+        st = check_label(fig, lay, &r, i, t, s.place, false, ++k == n);
     }
     an.n = 0;
     an.xy = cf_alloc_array(2 * fig->count + 2, sizeof *an.xy);
@@ -534,6 +537,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
             || s.place != CF_PLACE_AUTO)
             continue;
         j++;
+        k++;
         st = cf__text_ensure(fig, t, s.font_size);
         if (st != CF_STATUS_OK || t->lab == NULL)
             continue;
@@ -546,7 +550,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
         cheapest(&r, &an, t->lab, &s, px, py,
                  j <= fig->nplace_hint ? &fig->place_hint[j - 1] : NULL,
                  fig->place_hint_force, chosen);
-        st = check_label(fig, lay, &r, i, t, chosen->place, true);
+        st = check_label(fig, lay, &r, i, t, chosen->place, true, k == n);
     }
     cf_free(an.xy);
     cf__place_raster_close(fig, &r);

@@ -163,8 +163,9 @@ add_span(float *row, float *run, int i0, int i1, double a, double b,
         b = i1;
     if (!(b > a))
         return;
-    ia = (int)floor(a);
-    ib = (int)floor(b);
+    /* 0 <= i0 <= a < b: truncation is floor */
+    ia = (int)a;
+    ib = (int)b;
     if (ia == ib) {
         row[ia - i0] += (float)((b - a) * w);
         return;
@@ -253,7 +254,8 @@ put_row(work_t *w, size_t nspan, unsigned char *d, int i0, int width,
 
 int
 cf__poly_paint(cf__poly_t *pl, unsigned char *px, int stride,
-               const int clip[4], double alpha, bool evenodd)
+               const int clip[4], double alpha, bool evenodd,
+               const unsigned char *rows)
 {
     int i0, i1, j0, j1, y, k, width;
     size_t next = 0, nact = 0, nc = 0, nb, i;
@@ -278,6 +280,7 @@ cf__poly_paint(cf__poly_t *pl, unsigned char *px, int stride,
     for (y = j0; y < j1; y++) {
         unsigned char *d = px + (size_t)y * (size_t)stride;
         size_t nspan = 0;
+        bool on = rows == NULL || rows[y] != 0;
         for (k = 0; k < SUB; k++) {
             double sy = y + (k + 0.5) / SUB, start = 0;
             size_t j;
@@ -299,6 +302,11 @@ cf__poly_paint(cf__poly_t *pl, unsigned char *px, int stride,
                 }
                 i++;
             }
+            /* a row left out keeps the active edges in their order; the
+            ** crossings (the edges activated since at their end) are
+            ** sorted afresh at the next row painted */
+            if (!on)
+                continue;
             cross_at(pl, &w, &nc, sy);
             for (j = 0; j < nc; j++) {
                 bool was = evenodd ? (wind & 1) != 0 : wind != 0, is;
@@ -318,7 +326,8 @@ cf__poly_paint(cf__poly_t *pl, unsigned char *px, int stride,
                 }
             }
         }
-        put_row(&w, nspan, d, i0, width, alpha);
+        if (on)
+            put_row(&w, nspan, d, i0, width, alpha);
         if (next == pl->n && nact == 0)
             break;
     }

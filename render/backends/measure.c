@@ -111,6 +111,36 @@ add_ink(measure_t *g, const double b[4])
     g->ink[3] = fmax(g->ink[3], y1);
 }
 
+/* The pixels of clip b (i0 j0 i1 j1) a polygon with box pb (device)
+** may paint, added to r's dirty box; whether it reaches beyond b into
+** r's cut. */
+static void
+grow_dirty(cf__raster_t *r, const int b[4], const double pb[4])
+{
+    double u[4];
+    int d[4], *t = r->dirty;
+    u[0] = floor(fmax(pb[0], -1e9));
+    u[1] = floor(fmax(pb[1], -1e9));
+    u[2] = ceil(fmin(pb[2], 1e9));
+    u[3] = ceil(fmin(pb[3], 1e9));
+    if (u[0] < b[0] || u[1] < b[1] || u[2] > b[2] || u[3] > b[3])
+        r->cut = true;
+    d[0] = (int)fmax(b[0], u[0]);
+    d[1] = (int)fmax(b[1], u[1]);
+    d[2] = (int)fmin(b[2], u[2]);
+    d[3] = (int)fmin(b[3], u[3]);
+    if (d[2] <= d[0] || d[3] <= d[1])
+        return;
+    if (t[2] <= t[0] || t[3] <= t[1]) {
+        memcpy(t, d, sizeof d);
+        return;
+    }
+    t[0] = d[0] < t[0] ? d[0] : t[0];
+    t[1] = d[1] < t[1] ? d[1] : t[1];
+    t[2] = d[2] > t[2] ? d[2] : t[2];
+    t[3] = d[3] > t[3] ? d[3] : t[3];
+}
+
 /* The polygon g->pl painted with alpha, or its box into the ink. */
 static void
 put_poly(measure_t *g, double alpha)
@@ -127,10 +157,12 @@ put_poly(measure_t *g, double alpha)
         b[1] = (int)fmax(0, fmin(g->r->h, floor(c[1] + 0.5)));
         b[2] = (int)fmax(0, fmin(g->r->w, floor(c[2] + 0.5)));
         b[3] = (int)fmax(0, fmin(g->r->h, floor(c[3] + 0.5)));
-        if (b[2] > b[0] && b[3] > b[1]
-            && cf__poly_paint(&g->pl, g->r->px, g->r->stride, b, alpha,
-                              false) != 0)
-            g->failed = true;
+        if (b[2] > b[0] && b[3] > b[1] && g->pl.n > 0 && alpha > 0) {
+            grow_dirty(g->r, b, g->pl.box);
+            if (cf__poly_paint(&g->pl, g->r->px, g->r->stride, b, alpha,
+                               false, g->r->rows) != 0)
+                g->failed = true;
+        }
     }
     cf__poly_reset(&g->pl);
 }
@@ -276,6 +308,8 @@ cf__raster_clear(cf__raster_t *r, const int *b)
         i1 = b[2] < r->w ? b[2] : r->w;
         j1 = b[3] < r->h ? b[3] : r->h;
     }
+    if (b == NULL)
+        r->dirty[0] = r->dirty[1] = r->dirty[2] = r->dirty[3] = 0;
     if (i1 <= i0)
         return;
     for (j = j0; j < j1; j++)

@@ -19,6 +19,17 @@ typedef struct cf__raster {
     int w, h, stride;
     double res, ox, oy;
     void *impl;               /* the drawing's own state */
+    /* a pixel box (i0 j0 i1 j1; empty: i1 <= i0) holding every pixel
+    ** painted since it was set empty (a raster opened sets it so): what
+    ** a user keeping the pixels for another use must make empty again */
+    int dirty[4];
+    /* whether a polygon painted since this was last set false reached
+    ** beyond the pixel box it was painted within (a raster opened sets
+    ** it false) */
+    bool cut;
+    /* NULL, or one byte a row: only the rows j with rows[j] != 0 are
+    ** painted (cf__poly_paint), each as it comes out painting all */
+    const unsigned char *rows;
 } cf__raster_t;
 
 /* A raster of the page box (ox, oy) .. (ox + w / res, oy + h / res),
@@ -27,7 +38,7 @@ int cf__raster_open(cf__raster_t *r, int w, int h, double res, double ox,
                     double oy);
 void cf__raster_close(cf__raster_t *r);
 /* The pixels of the pixel box b (i0 j0 i1 j1, cut to the raster; NULL:
-** all) made empty. */
+** all, and the dirty box then empty) made empty. */
 void cf__raster_clear(cf__raster_t *r, const int *b);
 /* Ops [from, to) of dl painted over the raster: a paint of coverage c
 ** times its colour's alpha and opacity a over a pixel's v gives

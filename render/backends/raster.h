@@ -62,8 +62,12 @@ void cf__path_box(const cf__path_t *p, const cf__xform_t *m, double box[4]);
 
 /* The nonzero (evenodd: even-odd) coverage of pl times alpha painted over
 ** the A8 pixels px (row j at px + j * stride), within the pixel box
-** clip (i0 j0 i1 j1); -1 out of memory. */
+** clip (i0 j0 i1 j1, 0 <= i0); only the rows j with rows[j] != 0 when
+** rows is not NULL (each as it comes out painting all: what a row's
+** coverage depends on, the order of the edges along it, is followed
+** through the rows left out); -1 out of memory. */
 int cf__poly_paint(cf__poly_t *pl, unsigned char *px, int stride,
-                   const int clip[4], double alpha, bool evenodd);
+                   const int clip[4], double alpha, bool evenodd,
+                   const unsigned char *rows);
 
 #endif

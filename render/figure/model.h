@@ -215,7 +215,7 @@ struct cf_figure {
     /* the memory of its rasters, kept for the next placement (a layout
     ** places the labels once per refit) */
     unsigned char *place_px;
-    size_t place_px_size;
+    size_t place_px_size, place_px_zero;   /* bytes; the first zero */
     /* the places the frames of an animation pass on (render/output/
     ** anim-frames.c; owned by it): the automatic labels in turn keep hint[i]
     ** while it stays about as clear as their best place, or take it

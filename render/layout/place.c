@@ -12,9 +12,14 @@
 ** ink, placed by hand or automatically, is kept and reported in the
 ** figure's warnings (cf_figure_warnings): which label, at which place,
 ** on what.  The raster is drawn only where it is read (the candidate
-** places and the labels placed by hand), in the figure's memory kept
-** from the last placement; the refits of a page cropped to its ink place
-** the labels as a draft (the same places, no warnings).
+** places and the labels placed by hand; none at all when nothing is
+** read), in the figure's memory kept from the last placement and emptied
+** again only where it was painted; a candidate's cost is four look-ups
+** in the sums of the raster over its label's candidates; a label lying
+** on no ink is added to the raster from the pixels it was tested with.
+** The refits of a page cropped to its ink place the labels as a draft
+** (the same places, no warnings).  The rasters, their memory and what is
+** read of them: render/layout/place-raster.c.
 */
 #include <math.h>
 #include <stdarg.h>
@@ -24,16 +29,14 @@
 #include "label-private.h"
 #include "layout-private.h"
 #include "measure.h"
+#include "place-raster.h"
 
-#define AUTO_RES 2.0          /* raster pixels per bp */
-#define AUTO_MAX_PIXELS 4e6   /* larger pages get a coarser raster */
 #define AUTO_GAP 1.0          /* bp around a label that should stay clear */
 #define AUTO_NEAR 3.0         /* bp: ink this close costs a quarter */
 #define AUTO_FAR 0.6          /* cost (bp^2) of each bp farther out */
 #define AUTO_AMBIGUOUS 1e4    /* cost of a place nearer another labelled
                                  point than the label's own */
 #define AUTO_CLEARER 0.75     /* bp a label keeps nearer its own point */
-#define HIT_ALPHA 127         /* a pixel inked more than half */
 #define AUTO_KEEP 1.0         /* bp^2: a label of an animation keeps its
                                  place of the frame before unless the best
                                  is clearer by more than this */
@@ -48,38 +51,21 @@ static const cf_place_t order[] = {
 };
 
 /* The anchors (page points) of the labels in the window. */
+typedef cf__place_raster_t raster_t;
+
 typedef struct anchors {
     double *xy;
     size_t n;
 } anchors_t;
 
-typedef struct raster {
-    cf__raster_t img, one;   /* the page's ink; one element's */
-    unsigned char *mask;     /* a label's pixels, laid out as one's */
-    bool draft;              /* no search for labels on ink */
-    double res;
-    cf__dl_t dl;
-} raster_t;
-
-/* Ink in the page box x0 y0 x1 y1 (bp) of a raster at res pixels per
-** bp, in bp^2 of full ink; pixels off the page count as full ink. */
-static double
-raster_ink(const cf__raster_t *img, double res, const double b[4])
+/* The page box of a candidate's ink widened by d (AUTO_GAP, AUTO_NEAR). */
+static void
+widened(const double ink[4], double ox, double oy, double d, double b[4])
 {
-    const unsigned char *px = img->px;
-    int w = img->w, h = img->h, stride = img->stride;
-    double i0 = floor(b[0] * res), i1 = ceil(b[2] * res);
-    double j0 = floor(b[1] * res), j1 = ceil(b[3] * res);
-    double sum = 0, inside = 0;
-    int i, j, ci0 = (int)fmax(i0, 0), ci1 = (int)fmin(i1, w);
-    int cj0 = (int)fmax(j0, 0), cj1 = (int)fmin(j1, h);
-    for (j = cj0; j < cj1; j++)
-        for (i = ci0; i < ci1; i++)
-            sum += px[(size_t)j * (size_t)stride + (size_t)i];
-    if (ci1 > ci0 && cj1 > cj0)
-        inside = (double)(ci1 - ci0) * (cj1 - cj0);
-    sum += 255.0 * ((i1 - i0) * (j1 - j0) - inside);
-    return sum / (255.0 * res * res);
+    b[0] = ox + ink[0] - d;
+    b[1] = oy + ink[1] - d;
+    b[2] = ox + ink[2] + d;
+    b[3] = oy + ink[3] + d;
 }
 
 /* The cost of a label with ink box ink (relative to its origin) at
@@ -89,16 +75,10 @@ static double
 place_cost(const raster_t *r, const double ink[4], double ox, double oy)
 {
     double hard[4], near[4], a, b;
-    hard[0] = ox + ink[0] - AUTO_GAP;
-    hard[1] = oy + ink[1] - AUTO_GAP;
-    hard[2] = ox + ink[2] + AUTO_GAP;
-    hard[3] = oy + ink[3] + AUTO_GAP;
-    near[0] = ox + ink[0] - AUTO_NEAR;
-    near[1] = oy + ink[1] - AUTO_NEAR;
-    near[2] = ox + ink[2] + AUTO_NEAR;
-    near[3] = oy + ink[3] + AUTO_NEAR;
-    a = raster_ink(&r->img, r->res, hard);
-    b = raster_ink(&r->img, r->res, near);
+    widened(ink, ox, oy, AUTO_GAP, hard);
+    widened(ink, ox, oy, AUTO_NEAR, near);
+    a = cf__place_ink(r, hard);
+    b = cf__place_ink(r, near);
     return a + 0.25 * fmax(0, b - a);
 }
 
@@ -226,27 +206,30 @@ cheapest(const raster_t *r, const anchors_t *an, const cf_label_t *lab,
     }
 }
 
-/* Pixels inked more than half both in one and in img, within the pixel
-** box px (x0 y0 x1 y1; NULL: everywhere). */
-static long
-common_pixels(const cf__raster_t *one, const unsigned char *b,
-              const int *px)
+/* The sums of the page's raster over the pixels the candidate places of
+** a label at page point (px, py) read (cheapest), so that each costs
+** four look-ups; -1 out of memory. */
+static int
+candidate_sums(raster_t *r, const cf_label_t *lab, const cf_style_t *s,
+               double px, double py)
 {
-    const unsigned char *a = one->px;
-    int w = one->w, h = one->h, stride = one->stride, i, j, i0 = 0, j0 = 0;
-    long n = 0;
-    if (px != NULL) {
-        i0 = px[0] > 0 ? px[0] : 0;
-        j0 = px[1] > 0 ? px[1] : 0;
-        w = px[2] < w ? px[2] : w;
-        h = px[3] < h ? px[3] : h;
-    }
-    for (j = j0; j < h; j++)
-        for (i = i0; i < w; i++) {
-            size_t at = (size_t)j * (size_t)stride + (size_t)i;
-            n += a[at] > HIT_ALPHA && b[at] > HIT_ALPHA;
+    double ink[4], whole[4];
+    int box[4] = { INT32_MAX, INT32_MAX, INT32_MIN, INT32_MIN }, b[4];
+    size_t k, d;
+    cf__label_ink(lab, ink);
+    for (d = 0; d < sizeof further / sizeof further[0]; d++)
+        for (k = 0; k < sizeof order / sizeof order[0]; k++) {
+            double ox, oy, near[4];
+            cf__label_origin(lab, order[k], s->offset + further[d], px, py,
+                             &ox, &oy);
+            widened(ink, ox, oy, AUTO_NEAR, near);
+            cf__place_ink_pixels(&r->img, r->res, near, b, whole);
+            box[0] = b[0] < box[0] ? b[0] : box[0];
+            box[1] = b[1] < box[1] ? b[1] : box[1];
+            box[2] = b[2] > box[2] ? b[2] : box[2];
+            box[3] = b[3] > box[3] ? b[3] : box[3];
         }
-    return n;
+    return cf__place_sums(&r->sums, &r->img, box);
 }
 
 /* Append a line to the figure's warnings (once). */
@@ -288,7 +271,7 @@ what_is_under(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
         if (raster_element(fig, j, lay, r, &r->one, px) != CF_STATUS_OK)
             return fig->count;
         /* the mask is empty outside the label's box px */
-        n = common_pixels(&r->one, mask, px);
+        n = cf__place_common(&r->one, mask, px);
         if (n > most) {
             most = n;
             worst = j;
@@ -305,16 +288,19 @@ static const char *const place_names[] = {
 ** it lies on some.  Then add it to the raster. */
 static cf_status_t
 check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
-            size_t i, const cf__text_t *t, cf_place_t place, bool automatic)
+            size_t i, const cf__text_t *t, cf_place_t place, bool automatic,
+            bool last)
 {
     cf_status_t st;
     double ink[4];
     int px[4];
     long n;
-    /* only the label's box is cleared, drawn and compared */
+    /* only the label's box is cleared, drawn and compared; the last label
+    ** is not added (nothing reads the raster after it) */
     st = element_ops(fig, i, lay, r);
     if (st != CF_STATUS_OK || r->draft)
-        return st != CF_STATUS_OK ? st : paint(fig, r, &r->img, NULL);
+        return st != CF_STATUS_OK || last ? st
+                                          : paint(fig, r, &r->img, NULL);
     if (cf__dl_ink(&r->dl, 0, r->dl.count, ink) != 0)
         return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
                            "out of memory measuring a label");
@@ -325,10 +311,13 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
     px[2] = (int)ceil(ink[2] * r->res) + 1;
     px[3] = (int)ceil(ink[3] * r->res) + 1;
     cf__raster_clear(&r->one, px);
+    r->one.cut = false;
     st = paint(fig, r, &r->one, px);
     if (st != CF_STATUS_OK)
         return st;
-    n = common_pixels(&r->one, r->img.px, px);
+    n = cf__place_common(&r->one, r->img.px, px);
+    if (n <= 1 && (last || (!r->one.cut && cf__place_add_apart(r, px))))
+        return CF_STATUS_OK;
     if (n > 1) {
         size_t j;
         int row, i0 = px[0] > 0 ? px[0] : 0;
@@ -355,49 +344,7 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
                  place_names[place], fig->ninsets > 0
                  ? "ink (an inset's frame or connector?)" : "ink");
     }
-    return paint(fig, r, &r->img, NULL);
-}
-
-/* The three rasters of the page, w x h each, in the figure's memory kept
-** from the last placement (a layout places the labels once per refit of
-** its ink box; fresh pages of memory for each would cost more than the
-** painting). */
-static cf_status_t
-raster_open(cf_figure_t *fig, raster_t *r)
-{
-    size_t n;
-    int w, h;
-    memset(r, 0, sizeof *r);
-    r->res = AUTO_RES;
-    if (fig->width * fig->height * r->res * r->res > AUTO_MAX_PIXELS)
-        r->res = sqrt(AUTO_MAX_PIXELS / (fig->width * fig->height));
-    w = (int)fmax(1, ceil(fig->width * r->res));
-    h = (int)fmax(1, ceil(fig->height * r->res));
-    cf__dl_init(&r->dl);
-    n = (size_t)w * (size_t)h;
-    if (fig->place_px_size < 3 * n) {
-        unsigned char *px = cf_realloc_array(fig->place_px, n, 3);
-        if (px == NULL)
-            return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
-                               "out of memory placing labels");
-        fig->place_px = px;
-        fig->place_px_size = 3 * n;
-    }
-    memset(fig->place_px, 0, 3 * n);
-    r->img.px = fig->place_px;
-    r->one.px = fig->place_px + n;
-    r->mask = fig->place_px + 2 * n;
-    r->img.w = r->one.w = w;
-    r->img.h = r->one.h = h;
-    r->img.stride = r->one.stride = w;
-    r->img.res = r->one.res = r->res;
-    return CF_STATUS_OK;
-}
-
-static void
-raster_close(raster_t *r)
-{
-    cf__dl_free(&r->dl);
+    return last ? CF_STATUS_OK : paint(fig, r, &r->img, NULL);
 }
 
 void
@@ -409,24 +356,45 @@ cf__place_forget(cf_figure_t *fig)
 /* The pixel box of raster r that the placement reads (every candidate
 ** box of the automatic labels in the window out to AUTO_NEAR, and unless
 ** a draft the box of each label placed by hand, as check_label takes it,
-** a pixel more each way) into px; false when there is none. */
+** a pixel more each way) into px; false when there is none.  When no
+** label is placed automatically (and not a draft), the rows of that box
+** which the labels placed by hand read, in the window or not, are marked
+** in r->rows (where there is one: else, and with automatic labels, it is
+** dropped). */
 static bool
 read_box(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r, int px[4])
 {
     double b[4] = { INFINITY, INFINITY, -INFINITY, -INFINITY };
     size_t i, d, k;
+    if (!r->draft)
+        r->rows = cf_calloc((size_t)r->img.h, 1);
     for (i = 0; i < fig->count; i++) {
-        double x, y, ax, ay, ink[4];
+        double x, y, ax, ay, ink[4], hb[4];
         cf__text_t *t;
         cf__auto_place_t *chosen;
         cf_style_t s;
-        if (!is_label(fig, i, &x, &y, &t, &chosen, &s)
-            || !cf__in_window(lay, x, y))
+        bool in;
+        if (!is_label(fig, i, &x, &y, &t, &chosen, &s))
+            continue;
+        if (s.place == CF_PLACE_AUTO && r->rows != NULL) {
+            cf_free(r->rows);
+            r->rows = NULL;
+        }
+        in = cf__in_window(lay, x, y);
+        if (!in && (s.place == CF_PLACE_AUTO || r->rows == NULL))
             continue;
         if (s.place != CF_PLACE_AUTO) {
             if (r->draft || element_ops(fig, i, lay, r) != CF_STATUS_OK
                 || cf__dl_ink(&r->dl, 0, r->dl.count, ink) != 0
                 || !(ink[2] > ink[0] && ink[3] > ink[1]))
+                continue;
+            hb[0] = ink[0] - 1 / r->res;
+            hb[1] = ink[1] - 1 / r->res;
+            hb[2] = ink[2] + 1 / r->res;
+            hb[3] = ink[3] + 1 / r->res;
+            if (r->rows != NULL)
+                cf__place_mark_rows(r, hb);
+            if (!in)
                 continue;
             b[0] = fmin(b[0], ink[0] - 1 / r->res);
             b[1] = fmin(b[1], ink[1] - 1 / r->res);
@@ -475,7 +443,7 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
     cf__text_t *t;
     cf__auto_place_t *chosen;
     double x, y;
-    size_t i, j, n;
+    size_t i, j, n, k = 0;   /* k: labels checked */
     int box[4];
     cf_status_t st;
 
@@ -513,13 +481,13 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
                            "the figure has %zu labels, more than the %d "
                            "placed in one figure (each is placed among "
                            "all the others)", n, CF_FIGURE_MAX_LABELS);
-    st = raster_open(fig, &r);
+    cf__place_raster_open(fig, &r);
     r.draft = draft;
     /* the raster is read only where the automatic labels may go and the
     ** labels placed by hand are: the rest is not drawn
     ** (cf__raster_paint_in: the same pixels) */
-    if (st == CF_STATUS_OK && !read_box(fig, lay, &r, box)) {
-        raster_close(&r);
+    if (!read_box(fig, lay, &r, box)) {
+        cf__place_raster_close(fig, &r);
         if (fig->err.status != CF_STATUS_OK)
             return fig->err.status;
         fig->placed = true;
@@ -527,6 +495,10 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
         fig->placed_for = moved;
         return CF_STATUS_OK;
     }
+    st = cf__place_raster_memory(fig, &r);
+    /* with every label placed by hand, only the rows their boxes take
+    ** (read_box): the pixels there are the same */
+    r.img.rows = r.rows;
     /* fills and hulls left out: labels may sit on a shading */
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
         if ((fig->els[i]->kind->flags & CF__KIND_SHADING)
@@ -541,12 +513,13 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
         if (st == CF_STATUS_OK)
             st = paint(fig, &r, &r.img, box);
     }
+    r.img.rows = NULL;
     /* the labels placed by hand first: the automatic ones avoid them */
     for (i = 0; i < fig->count && st == CF_STATUS_OK; i++) {
         if (!is_label(fig, i, &x, &y, &t, &chosen, &s)
             || s.place == CF_PLACE_AUTO)
             continue;
-        st = check_label(fig, lay, &r, i, t, s.place, false);
+        st = check_label(fig, lay, &r, i, t, s.place, false, ++k == n);
     }
     an.n = 0;
     an.xy = cf_alloc_array(2 * fig->count + 2, sizeof *an.xy);
@@ -564,17 +537,23 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
             || s.place != CF_PLACE_AUTO)
             continue;
         j++;
+        k++;
         st = cf__text_ensure(fig, t, s.font_size);
         if (st != CF_STATUS_OK || t->lab == NULL)
             continue;
         cf__map(lay, x, y, &px, &py);
+        if (candidate_sums(&r, t->lab, &s, px, py) != 0) {
+            st = cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
+                             "out of memory placing labels");
+            break;
+        }
         cheapest(&r, &an, t->lab, &s, px, py,
                  j <= fig->nplace_hint ? &fig->place_hint[j - 1] : NULL,
                  fig->place_hint_force, chosen);
-        st = check_label(fig, lay, &r, i, t, chosen->place, true);
+        st = check_label(fig, lay, &r, i, t, chosen->place, true, k == n);
     }
     cf_free(an.xy);
-    raster_close(&r);
+    cf__place_raster_close(fig, &r);
     if (st == CF_STATUS_OK) {
         fig->placed = true;
         fig->placed_draft = draft;

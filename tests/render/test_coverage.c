@@ -12,7 +12,12 @@
 ** one level from rounding, never more.
 **
 ** cf__raster_paint_in: the pixels inside the box are those of a paint of
-** the whole raster, the ones outside keep what they had. */
+** the whole raster, the ones outside keep what they had; the raster's
+** dirty box holds every pixel changed, and its cut flag says whether the
+** polygon reached beyond the box.  A paint of some rows only (the
+** raster's rows): those rows are a paint of the whole raster's, the
+** others keep what they had, polygons of many equal crossings (points
+** on a coarse grid, vertical edges along each other) included. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -164,6 +169,30 @@ test_random_polygons(void **state)
     assert_true(worst <= 1);
 }
 
+/* Whether polygon p (n points, pixel units) has a pixel outside box b
+** (i0 j0 i1 j1): its points' box, rounded out, not inside b. */
+static bool
+reaches_beyond(const double *p, int n, const int b[4])
+{
+    double x0 = p[0], y0 = p[1], x1 = p[0], y1 = p[1];
+    int i, c[4];
+    for (i = 1; i < n; i++) {
+        x0 = fmin(x0, p[2 * i]);
+        x1 = fmax(x1, p[2 * i]);
+        y0 = fmin(y0, p[2 * i + 1]);
+        y1 = fmax(y1, p[2 * i + 1]);
+    }
+    /* the box measure.c paints within: b cut to the raster */
+    c[0] = b[0] > 0 ? b[0] : 0;
+    c[1] = b[1] > 0 ? b[1] : 0;
+    c[2] = b[2] < W ? b[2] : W;
+    c[3] = b[3] < H ? b[3] : H;
+    if (c[2] <= c[0] || c[3] <= c[1])
+        return false;   /* nothing painted */
+    return floor(x0) < c[0] || floor(y0) < c[1] || ceil(x1) > c[2]
+           || ceil(y1) > c[3];
+}
+
 static void
 test_paint_in(void **state)
 {
@@ -189,13 +218,62 @@ test_paint_in(void **state)
         memset(part.px, 77, (size_t)W * H);
         assert_int_equal(cf__raster_paint(&all, &dl, 0, dl.count), 0);
         cf__raster_clear(&part, b);
+        part.dirty[0] = part.dirty[1] = part.dirty[2] = part.dirty[3] = 0;
+        part.cut = false;
         assert_int_equal(cf__raster_paint_in(&part, &dl, 0, dl.count, b), 0);
         for (j = 0; j < H; j++)
             for (i = 0; i < W; i++) {
                 bool in = i >= b[0] && i < b[2] && j >= b[1] && j < b[3];
                 assert_int_equal(part.px[j * W + i],
                                  in ? all.px[j * W + i] : 77);
+                if (in && part.px[j * W + i] != 0)
+                    assert_true(i >= part.dirty[0] && i < part.dirty[2]
+                                && j >= part.dirty[1]
+                                && j < part.dirty[3]);
             }
+        assert_true(part.cut == reaches_beyond(p, n, b));
+        cf__raster_close(&all);
+        cf__raster_close(&part);
+    }
+    cf__dl_free(&dl);
+}
+
+static void
+test_paint_rows(void **state)
+{
+    static unsigned char rows[H];
+    double p[2 * MAXP];
+    cf__dl_t dl;
+    int t, i, j;
+    (void)state;
+    cf__dl_init(&dl);
+    for (t = 0; t < 300; t++) {
+        cf__raster_t all, part;
+        int n = 3 + (int)uniform(0, MAXP - 3);
+        for (i = 0; i < n; i++) {
+            p[2 * i] = uniform(-8, W + 8);
+            p[2 * i + 1] = uniform(-8, H + 8);
+            if (t % 2 == 0) {
+                /* a coarse grid off the pixels' edges: many edges
+                ** along each other, crossing pixels part way */
+                p[2 * i] = floor(p[2 * i] / 8) * 8 + 0.37;
+                p[2 * i + 1] = floor(p[2 * i + 1] / 4) * 4 + 0.1;
+            }
+        }
+        for (j = 0; j < H; j++)
+            rows[j] = uniform(0, 1) < (t % 3 + 1) / 4.0;
+        polygon_dl(&dl, p, n);
+        assert_int_equal(cf__raster_open(&all, W, H, 2.0, 0, 0), 0);
+        assert_int_equal(cf__raster_open(&part, W, H, 2.0, 0, 0), 0);
+        memset(all.px, 40, (size_t)W * H);
+        memset(part.px, 40, (size_t)W * H);
+        assert_int_equal(cf__raster_paint(&all, &dl, 0, dl.count), 0);
+        part.rows = rows;
+        assert_int_equal(cf__raster_paint(&part, &dl, 0, dl.count), 0);
+        for (j = 0; j < H; j++)
+            for (i = 0; i < W; i++)
+                assert_int_equal(part.px[j * W + i],
+                                 rows[j] ? all.px[j * W + i] : 40);
         cf__raster_close(&all);
         cf__raster_close(&part);
     }
@@ -208,6 +286,7 @@ main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_random_polygons),
         cmocka_unit_test(test_paint_in),
+        cmocka_unit_test(test_paint_rows),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -163,6 +163,36 @@ gather_warnings(cf_figure_t *fig)
     return CF_STATUS_OK;
 }
 
+/* Each label of ops [from, count) with characters none of the figure's
+** fonts has: they are drawn as empty boxes, so the figure says so (once),
+** with the start of the label cut at a character's boundary.  Here, at
+** the build, for every kind of label (elements', axes', the legend's) and
+** after the placement, which makes its warnings anew for every layout. */
+static void
+warn_unknown_glyphs(cf_figure_t *fig, const cf__dl_t *dl, size_t from)
+{
+    size_t i;
+    for (i = from; i < dl->count; i++) {
+        const cf__text_op_t *t = &dl->ops[i].u.text;
+        size_t unknown, len, n;
+        if (dl->ops[i].kind != CF__OP_TEXT
+            || (unknown = cf_label_unknown_glyphs(t->label)) == 0)
+            continue;
+        len = n = strlen(t->source);
+        if (n > 40) {
+            n = 40;
+            while (n > 0 && ((unsigned char)t->source[n] & 0xC0) == 0x80)
+                n--;
+        }
+        cf__figure_warn(fig,
+                        "label \"%.*s%s\": %zu character%s no font of \"%s\" "
+                        "has, drawn as empty boxes (name a font family that "
+                        "has them)",
+                        (int)n, t->source, n < len ? "..." : "", unknown,
+                        unknown == 1 ? "" : "s", fig->theme.font_family);
+    }
+}
+
 cf_status_t
 cf__figure_build(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
 {
@@ -174,6 +204,7 @@ cf__figure_build(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
         || cf__insets_draw(fig, lay, dl) != CF_STATUS_OK
         || cf__legend_draw(fig, lay, from, dl) != CF_STATUS_OK)
         return fig->err.status;
+    warn_unknown_glyphs(fig, dl, from);
     if (fig->panels != NULL && gather_warnings(fig) != CF_STATUS_OK)
         return fig->err.status;
     if (dl->failed)

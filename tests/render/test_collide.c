@@ -472,6 +472,39 @@ test_avoids_label_on_ink(void **state)
     cf_figure_destroy(fig);
 }
 
+/* A label with a character no font of the figure has (U+10FFFD, a
+** noncharacter: no font has a glyph for it) is drawn with an empty box:
+** the figure warns, naming the label and the count, after the layout
+** (whose placement makes its warnings again) and once; a label every
+** font covers does not warn. */
+static void
+test_warns_missing_glyphs(void **state)
+{
+    static const double line[] = { 0, 0, 4, 3 };
+    cf_figure_t *fig = NULL;
+    cf__layout_t lay;
+    cf__dl_t dl;
+    const char *w, *hit;
+    (void)state;
+    assert_int_equal(cf_figure_create(40, 30, CF_UNIT_MM, &fig, NULL), 0);
+    assert_int_equal(cf_figure_add_polyline(fig, line, 2, false, NULL), 0);
+    assert_int_equal(cf_figure_add_label(fig, 1, 2, "P_0", NULL), 0);
+    assert_int_equal(cf_figure_add_label(fig, 3, 1,
+                                         "x \xf4\x8f\xbf\xbd y", NULL), 0);
+    cf__dl_init(&dl);
+    assert_int_equal(cf__figure_layout(fig, &lay), CF_STATUS_OK);
+    assert_int_equal(cf__figure_build(fig, &lay, &dl), CF_STATUS_OK);
+    w = cf_figure_warnings(fig);
+    hit = strstr(w, "1 character no font of");
+    assert_non_null(hit);
+    assert_non_null(strstr(w, "label \"x \xf4\x8f\xbf\xbd y\""));
+    assert_null(strstr(hit + strlen("1 character no font of"),
+                       "no font of"));   /* once */
+    assert_null(strstr(w, "\"P_0\""));
+    cf__dl_free(&dl);
+    cf_figure_destroy(fig);
+}
+
 int
 main(void)
 {
@@ -479,6 +512,7 @@ main(void)
         cmocka_unit_test(test_detects),
         cmocka_unit_test(test_no_label_on_ink),
         cmocka_unit_test(test_avoids_label_on_ink),
+        cmocka_unit_test(test_warns_missing_glyphs),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

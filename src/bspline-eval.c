@@ -164,6 +164,30 @@ cubic2_run(const double *U, const double *R1, const double *R2,
 /* parameters per block of span searches (random parameters) */
 #define RBLK 32
 
+/* The spans of u[0..m-1], each clamped into [a, b], into ks, without
+** branches; whether all of them lie in [a, b].  split is a constant at
+** each call: c->splitok is tested once per block, not per parameter.
+** With both lookups (the one-break-point cell and the binary search) in
+** one loop GCC ran short of registers there, and what it put on the stack
+** hung on incidental details: CF__CLONED's x86-64-v4 copy kept the loop
+** counter there (a store and two loads per parameter, 3-4 % of W3r and
+** W4, docs/performance.md), target_clones' copy of the same code did not.
+*/
+CF__INLINE int
+block_spans(const cf_bspline_t *c, const double *u, size_t m, double a,
+            double b, bool split, size_t *ks)
+{
+    int ok = 1;
+    for (size_t l = 0; l < m; l++) {
+        double y = u[l], yc = y >= a ? y : a;
+        ok &= (y >= a) & (y <= b);
+        yc = yc <= b ? yc : b;
+        ks[l] = split ? cf__bspline_split_span(c, yc)
+                      : cf__bspline_grid_span(c, yc);
+    }
+    return ok;
+}
+
 /* One copy per x86-64 level (CF__CLONED); the file is compiled without
 ** contraction, so every copy rounds alike. */
 CF__INLINE cf_status_t
@@ -198,12 +222,9 @@ eval_cubic2_body(const cf_bspline_t *c, const double *u, size_t n,
             ** RBLK parameters first, without branches, then the points,
             ** so that the table loads do not wait for the search */
             size_t ks[RBLK], mb = n - i < RBLK ? n - i : RBLK;
-            int ok = 1;
-            for (size_t l = 0; l < mb; l++) {
-                double y = u[i + l], yc = y >= a ? y : a;
-                ok &= (y >= a) & (y <= b);
-                ks[l] = cf__bspline_grid_span(c, yc <= b ? yc : b);
-            }
+            int ok = c->splitok
+                         ? block_spans(c, u + i, mb, a, b, true, ks)
+                         : block_spans(c, u + i, mb, a, b, false, ks);
             if (!ok)
                 mb = 1; /* the bad parameter is found above */
             else

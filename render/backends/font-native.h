@@ -14,7 +14,7 @@
 extern const cf__fonts_t cf__native_fonts;
 
 /* Whether these fonts shape text[0..len) themselves rather than hand it
-** to pango (the rule in font-native.c; a face without the characters is
+** to pango (the rule in font-itemize.c; a face without the characters is
 ** only known once fonts are chosen). */
 bool cf__native_fonts_handles(const char *text, size_t len);
 

@@ -17,7 +17,6 @@
 #include <string.h>
 
 #include "font-itemize.h"
-#include "font-native.h"
 #include "grow.h"
 #include "label-impl.h"
 

@@ -8,6 +8,11 @@
 
 #include "font-native-private.h"
 
+/* Whether the native fonts shape text[0..len) themselves rather than
+** hand it to pango (the rule in font-itemize.c; a face without the
+** characters is only known once fonts are chosen). */
+bool cf__native_fonts_handles(const char *text, size_t len);
+
 /* pango's default language, canonical ("c" when the program never set
 ** the locale), read once as pango reads it (pango_language_get_default):
 ** one per process, as pango's is. */

@@ -1,6 +1,7 @@
 /*
-** The parts of render/backends/far-clip.c that the dash pattern needs
-** (render/backends/far-dash.c): the pieces, the state of a cut.
+** What the units of a cut far away share (render/backends/far-clip.h:
+** far-clip.c, far-halve.c, far-fill.c, far-stroke.c, far-dash.c): the
+** boxes, the pieces and subpaths, the state of a cut.
 */
 #ifndef CURVEFIG_RENDER_FAR_CLIP_PRIVATE_H
 #define CURVEFIG_RENDER_FAR_CLIP_PRIVATE_H
@@ -22,11 +23,25 @@ typedef struct piece {
     double cx, cy, r, t0, t1;
 } piece_t;
 
+/* A subpath: its start, then n segments (LINE, CURVE, ARC) at segs and v;
+** closed: a CLOSE ends it; rect: instead the rectangle v. */
+typedef struct sub {
+    double start[2];
+    const unsigned char *segs;
+    const double *v;
+    size_t n;
+    bool closed;
+    const double *rect;
+} sub_t;
+
 typedef struct far {
     box_t clip;             /* kept: a piece this box holds */
     box_t vis;              /* the visible box, grown by a stroke's reach */
     const cf__far_sink_t *sink;
-    bool stroke;
+    /* the fill's or the stroke's part: what becomes of a piece once the
+    ** halving is done with it (kept or dropped), and of a subpath */
+    void (*piece)(struct far *f, const piece_t *pc, bool keep);
+    void (*sub)(struct far *f, const sub_t *s);
     /* the fill's last point sent, and the one after it held back while
     ** the clamped points run along one side of the clip box */
     double last[2], held[2];
@@ -46,20 +61,15 @@ typedef struct far {
     bool raster;            /* cf__far_frame_t's */
 } far_t;
 
-/* The length of pc (a cubic's to 1e-13, by Gauss-Legendre). */
-double cf__far_piece_length(const piece_t *pc);
-/* pc's unit direction at its start (end: at its end). */
-void cf__far_piece_dir(const piece_t *pc, bool end, double d[2]);
+/* Whether point (x, y) lies in box b; the test of every point of every
+** path drawn, kept to four comparisons (a NaN passes: refused upstream). */
+static inline bool
+out_of(const box_t *b, double x, double y)
+{
+    return x < b->x0 || x > b->x1 || y < b->y0 || y > b->y1;
+}
 
-/* A run of a stroke starts at a (beyond the visible box: the end of a
-** dropped piece, or the subpath's start): with a lead-in out there as
-** long as the length walked modulo the dash period. */
-void cf__far_start_run(far_t *f, const double a[2]);
-
-/* A dashed closed subpath cut far away, walked from its start s0 to its
-** end there (f->phi its length): where cairo would join its last dash to
-** its first (both on at s0), that join, as a piece of a few hundredths of
-** the stroke's width through s0 inside the two dashes. */
-void cf__far_close_join(far_t *f, const double s0[2]);
+/* The clip box: the visible box grown by g (user units). */
+void cf__far_boxes(const cf__far_frame_t *fr, double g, far_t *f);
 
 #endif

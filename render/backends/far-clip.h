@@ -26,6 +26,9 @@
 ** chord); others are halved.  Halving needs no intersection, so a line from
 ** 1e300 is cut as exactly as one from 1e5.  Pure C, no device: a sink
 ** receives the result (render/backends/backend-cairo.c: cairo's path).
+** far-clip.c tests the path and makes the frame; far-halve.c halves the
+** pieces, far-fill.c and far-stroke.c cut a fill and a stroke, far-dash.c
+** keeps the dashes' phase.
 */
 #ifndef CURVEFIG_RENDER_FAR_CLIP_H
 #define CURVEFIG_RENDER_FAR_CLIP_H

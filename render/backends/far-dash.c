@@ -5,7 +5,7 @@
 */
 #include <math.h>
 
-#include "far-clip-private.h"
+#include "far-dash.h"
 
 #define LEAD_LEGS 64        /* a lead-in is at most 64 legs of
                                CF__FAR_GROW / 2 device units: a longer

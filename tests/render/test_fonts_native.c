@@ -23,6 +23,7 @@
 
 #include "curvefig/label.h"
 #include "font-glyphs.h"
+#include "font-itemize.h"
 #include "font-native.h"
 #include "font-pango.h"
 #include "label-impl.h"

@@ -225,10 +225,51 @@ refine_cubic2_body(const double *U, const double *P, double *V, double *Q,
     CF__STORE2(Q + kk * 2, w3);
 }
 
+/* each copy on a 64-byte boundary (as increasing_pairs, below) */
+typedef void refine_cubic2_fn(const double *U, const double *P, double *V,
+                              double *Q, const double *X, size_t nx,
+                              size_t a, size_t b, size_t qlast);
+#if defined(CF__LEVELS)
+static refine_cubic2_fn refine_cubic2_v4 __attribute__((aligned(64)));
+static refine_cubic2_fn refine_cubic2_v3 __attribute__((aligned(64)));
+static refine_cubic2_fn refine_cubic2_v1 __attribute__((aligned(64)));
+#else
+static refine_cubic2_fn refine_cubic2 __attribute__((aligned(64)));
+#endif
 CF__CLONED(void, refine_cubic2,
            (const double *U, const double *P, double *V, double *Q,
             const double *X, size_t nx, size_t a, size_t b, size_t qlast),
            (U, P, V, Q, X, nx, a, b, qlast), )
+#endif
+
+#if defined(CF__HAVE_PAIRS)
+/* Whether X[j - 1] < X[j] for j = 1 .. 2 m: two comparisons per step, no
+** branch (the vectoriser leaves this loop scalar).  A function of its own
+** on a 64-byte boundary, as are equal_pairs, the copies of refine_cubic2,
+** pieces2 (bspline-cubic-pieces.c) and the functions with count_spans'
+** loop (bspline-ops.c): a loop this small that straddles a 64-byte
+** boundary took some 15 % longer a step on the processor measured (AMD
+** Zen 4), and where it fell moved with any code before it in the library
+** (W5ins 2 % slower in three of the four places modulo 64,
+** docs/performance.md).  Aligned, its place depends on its own code. */
+__attribute__((noinline, aligned(64))) static bool
+increasing_pairs(const double *X, size_t m)
+{
+    cf__m2 all = { -1, -1 };
+    for (size_t i = 0; i < m; i++)
+        all &= (cf__m2)(CF__LOAD2(X + 2 * i + 1) > CF__LOAD2(X + 2 * i));
+    return all[0] & all[1];
+}
+
+/* Whether A[i] == B[i] for some i < 2 m, without a branch. */
+__attribute__((noinline, aligned(64))) static bool
+equal_pairs(const double *A, const double *B, size_t m)
+{
+    cf__m2 any = { 0, 0 };
+    for (size_t i = 0; i < m; i++)
+        any |= (cf__m2)(CF__LOAD2(A + 2 * i) == CF__LOAD2(B + 2 * i));
+    return any[0] | any[1];
+}
 #endif
 
 /* Whether X[0] < X[1] < ... < X[n - 1] (false on a NaN). */
@@ -237,13 +278,10 @@ strictly_increasing(const double *X, size_t n)
 {
     size_t j = 1;
 #if defined(CF__HAVE_PAIRS)
-    /* two comparisons per step, no branch (the vectoriser leaves this
-    ** loop scalar) */
-    cf__m2 all = { -1, -1 };
-    for (; j + 2 <= n; j += 2)
-        all &= (cf__m2)(CF__LOAD2(X + j) > CF__LOAD2(X + j - 1));
-    if (!(all[0] & all[1]))
+    size_t m = n > 1 ? (n - 1) / 2 : 0;
+    if (!increasing_pairs(X, m))
         return false;
+    j += 2 * m;
 #endif
     for (; j < n; j++)
         if (!(X[j] > X[j - 1]))
@@ -266,11 +304,10 @@ full_knot_in(const double *U, size_t nk, size_t p, double lo, double hi)
         end = nk - p;
 #if defined(CF__HAVE_PAIRS)
     {
-        cf__m2 any = { 0, 0 };
-        for (; k + 2 <= end; k += 2)
-            any |= (cf__m2)(CF__LOAD2(U + k) == CF__LOAD2(U + k + p));
-        if (any[0] | any[1])
+        size_t m = end >= k + 2 ? (end - k) / 2 : 0;
+        if (equal_pairs(U + k, U + k + p, m))
             return true;
+        k += 2 * m;
     }
 #endif
     for (; k < end; k++)

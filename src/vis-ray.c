@@ -109,6 +109,15 @@ starts(const cf__vpatch_t *p, const cf__vleaf_t *l, double out[5][2])
     return 4;
 }
 
+/* A folding leaf in front of zmin no wider than tol: where Newton finds
+** nothing on it, it hides the point (cf__scene_hidden). */
+static bool
+fold_small(const cf_scene_t *sc, const cf__vleaf_t *l, double zmin)
+{
+    return l->lo[2] > zmin &&
+           hypot(l->hi[0] - l->lo[0], l->hi[1] - l->lo[1]) <= sc->tol;
+}
+
 bool
 cf__scene_find(const cf_scene_t *sc, size_t surface, double u, double v,
                size_t *ip, double *s, double *t)
@@ -223,6 +232,14 @@ cf__scene_hidden(const cf_scene_t *sc, const double *q,
             /* no Newton where it cannot find a point of the leaf: found
             ** stays 0, as Newton would leave it */
             ns = cf__leaf_may_hold(l, q, scale) ? starts(p, l, st0) : 0;
+            /* a folding leaf near q: Newton there runs out its steps where
+            ** q is not the image of any of its points; left out where that
+            ** is proved, or where what it could find lies behind (unless
+            ** the leaf is all in front: then whether it found anything
+            ** decides below) */
+            if (ns > 0 && l->fold && !sc->newton_all &&
+                cf__leaf_clear(sc, l, q, zmin, !fold_small(sc, l, zmin)))
+                ns = 0;
             for (int k = 0; k < ns && (l->fold || again); k++) {
                 again = false;
                 if (!cf__vpatch_locate(sc, l->patch, q, st0[k][0], st0[k][1],
@@ -247,8 +264,7 @@ cf__scene_hidden(const cf_scene_t *sc, const double *q,
             }
             /* a folding leaf no wider than tol where Newton found nothing:
             ** decided by its middle */
-            if (l->fold && found == 0 && l->lo[2] > zmin &&
-                hypot(l->hi[0] - l->lo[0], l->hi[1] - l->lo[1]) <= sc->tol) {
+            if (l->fold && found == 0 && fold_small(sc, l, zmin)) {
                 if (occ != NULL)
                     *occ = p->surface;
                 return true;

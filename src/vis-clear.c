@@ -6,13 +6,14 @@
 #include "vis-private.h"
 
 /* Degrees each way the test takes (the nets live on the stack), pieces
-** looked at per call, and the deepest halving. */
+** looked at per call, the deepest halving, and the level from which a
+** piece that may hold q and lies all in front ends the test (most likely
+** a hit, which Newton finds: the cost of a sweep of views is flat from 1
+** to 8). */
 #define CLEAR_DEG 3
 #define CLEAR_NODES 48
 #define CLEAR_DEPTH 16
-#ifndef CLEAR_FRONT
 #define CLEAR_FRONT 6
-#endif
 #define CLEAR_NET ((CLEAR_DEG + 1) * (CLEAR_DEG + 1) * 4)
 
 /* The part [a, b] of the curve of degree d whose points lie `stride`
@@ -119,7 +120,7 @@ piece_off(const double *net, int m, int n, const double *q, double zmin,
         q[1] > hi[1] + e || (depth && hi[2] + ez <= zmin))
         return true;
     /* across the s sides: the unit normal (-sy, sx) / |s| */
-    double len = hypot(sx, sy);
+    double len = sqrt(sx * sx + sy * sy);
     if (len > 0.0 && isfinite(len)) {
         double nx = -sy / len, ny = sx / len, a = HUGE_VAL, b = -HUGE_VAL;
         for (int i = 0; i < np; i++) {

@@ -232,19 +232,22 @@ cf__scene_hidden(const cf_scene_t *sc, const double *q,
             /* no Newton where it cannot find a point of the leaf: found
             ** stays 0, as Newton would leave it */
             ns = cf__leaf_may_hold(l, q, scale) ? starts(p, l, st0) : 0;
-            /* a folding leaf near q: Newton there runs out its steps where
-            ** q is not the image of any of its points; left out where that
-            ** is proved, or where what it could find lies behind (unless
-            ** the leaf is all in front: then whether it found anything
-            ** decides below) */
-            if (ns > 0 && l->fold && !sc->newton_all &&
-                cf__leaf_clear(sc, l, q, zmin, !fold_small(sc, l, zmin)))
-                ns = 0;
             for (int k = 0; k < ns && (l->fold || again); k++) {
                 again = false;
                 if (!cf__vpatch_locate(sc, l->patch, q, st0[k][0], st0[k][1],
-                                       st, h))
+                                       st, h)) {
+                    /* a folding leaf whose first start failed: where q is
+                    ** not the image of any of its points, Newton runs out
+                    ** its steps from every start; the others are left out
+                    ** where no start can find a point that counts (none
+                    ** that hides q; where the leaf is all in front, none
+                    ** at all: whether it found one decides below) */
+                    if (k == 0 && l->fold && !sc->newton_all &&
+                        cf__leaf_clear(sc, l, q, zmin,
+                                       !fold_small(sc, l, zmin)))
+                        break;
                     continue;
+                }
                 if (!in_region(p, l, st)) {
                     /* off the patch (its continuation past an edge): the
                     ** corners may still find the hit in the leaf */

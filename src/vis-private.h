@@ -155,9 +155,10 @@ cf__leaf_may_hold(const cf__vleaf_t *l, const double *x, double scale)
 ** within 1e-9 of the scene's size of the image q[2], in the leaf's region
 ** within its slack) could find and, with depth, none whose depth exceeds
 ** zmin either: then no run of Newton on the leaf finds a point that
-** counts, and cf__scene_hidden leaves out a folding leaf's other starts
-** when its first one failed (with depth, only where what Newton found
-** would not matter either: the leaf's points are not all in front).  Proved by halving the leaf's view-space net (its region
+** counts, and cf__scene_hidden leaves out a folding leaf's starts when
+** its first one has not converged within a few steps (with depth, only
+** where what Newton found would not matter either: the leaf's points are
+** not all in front).  Proved by halving the leaf's view-space net (its region
 ** widened by the slack) until every piece's hull misses q, or lies behind
 ** zmin, widened for the rounding; false when that takes more than a few
 ** dozen pieces, for a triangle and for degrees above 3.

@@ -16,15 +16,20 @@ events, so that the page sees real pointer events with their capture):
             20) of 6 px, each awaited, then released;
   point     the first handle dragged, MOVES moves of 4 px, released;
   rotate    (a 3D figure) its background dragged, MOVES moves of 5 px
-            (2 degrees), released.
+            (2 degrees), released;
+  key       (a 3D figure) turned by MOVES presses of the arrow keys, each
+            an exact run at once, each awaited.
 
 Each move is timed from the event (its timeStamp, the page's clock) to
 the reply shown in the document (root.dataset.runs grown, busy "0");
 "move" are these times (the page asks for a draft while the pointer is
 down: docs/interactive.md, "Drafts"), "release" the time from the
-release to the exact drawing shown.  "run" is the module's own time of
+release to the exact drawing shown, "key" from a key press to its
+(exact) drawing.  "run" is the module's own time of
 the run (the worker's performance.now() around it, the page's
-data-run-ms), where the page reports it.  One JSON line per example and
+data-run-ms), where the page reports it, drafts and exact runs alike;
+"run exact" the exact ones alone (the releases, the key presses and the
+first drawing).  One JSON line per example and
 measure: median and 95th percentile in ms, and whether the median is
 within 30 ms and the 95th percentile within 60 ms (issue #28).
 """
@@ -44,7 +49,8 @@ ARM = r'''
 var root = document.getElementById('curvefig');
 if (!window.__cfBench) {
   window.__cfBench = { ev: null, shown: null, runs: 0, runMs: [] };
-  ['pointermove', 'pointerdown', 'pointerup', 'input'].forEach(function (t) {
+  ['pointermove', 'pointerdown', 'pointerup', 'input', 'keydown']
+      .forEach(function (t) {
     window.addEventListener(t, function (e) {
       if (window.__cfBench.ev === null) window.__cfBench.ev = e.timeStamp;
     }, true);
@@ -55,7 +61,8 @@ if (!window.__cfBench) {
       b.runs = n;
       b.shown = performance.now();
       b.draft = root.dataset.draft;
-      if (root.dataset.runMs) b.runMs.push(Number(root.dataset.runMs));
+      if (root.dataset.runMs)
+        b.runMs.push([Number(root.dataset.runMs), root.dataset.draft === '1']);
     }
   }).observe(root, { attributes: true });
 }
@@ -158,6 +165,30 @@ def drag(drv, kind, moves):
     return out, [r[0]] if r is not None and r[1] != '1' else [], drafts
 
 
+def keys(drv, presses):
+    """A 3D figure turned with the arrow keys (an exact run at once, as
+    a key press asks): the time of each press to its drawing."""
+    if not drv.execute_script(
+            'var b = document.querySelector(".cf-figure.cf-3d");'
+            'if (!b) return false; b.focus(); return true;'):
+        return []
+    out = []
+    for k in range(presses):
+        key, code = (('ArrowLeft', 37) if (k // 10) % 2 == 0
+                     else ('ArrowRight', 39))
+        quiet(drv)
+        drv.execute_script(ARM)
+        for kind in ('rawKeyDown', 'keyUp'):
+            drv.execute_cdp_cmd('Input.dispatchKeyEvent', {
+                'type': kind, 'key': key, 'code': key,
+                'windowsVirtualKeyCode': code})
+        r = drv.execute_async_script(AWAIT, 10000)
+        if r is not None:
+            out.append(r[0])
+    quiet(drv)
+    return out
+
+
 def percentile(xs, q):
     xs = sorted(xs)
     return xs[min(len(xs) - 1, int(round(q * (len(xs) - 1))))]
@@ -212,10 +243,13 @@ def main():
                     moved += r[0]
                     released += r[1]
                     drafts += r[2]
+            turned = keys(drv, moves)
             run_ms = drv.execute_script('return window.__cfBench.runMs')
             report(name, 'move', moved, {'drafts': drafts})
             report(name, 'release', released)
-            report(name, 'run', run_ms)
+            report(name, 'key', turned)
+            report(name, 'run', [r[0] for r in run_ms])
+            report(name, 'run exact', [r[0] for r in run_ms if not r[1]])
     finally:
         drv.quit()
         for f in os.listdir(tmp):

@@ -150,6 +150,22 @@ cf__leaf_may_hold(const cf__vleaf_t *l, const double *x, double scale)
     return true;
 }
 
+/*
+** Whether leaf l holds no point that Newton (cf__vpatch_locate, its point
+** within 1e-9 of the scene's size of the image q[2], in the leaf's region
+** within its slack) could find and, with depth, none whose depth exceeds
+** zmin either: then no run of Newton on the leaf finds a point that
+** counts, and cf__scene_hidden leaves out a folding leaf's starts when
+** its first one has not converged within a few steps (with depth, only
+** where what Newton found would not matter either: the leaf's points are
+** not all in front).  Proved by halving the leaf's view-space net (its region
+** widened by the slack) until every piece's hull misses q, or lies behind
+** zmin, widened for the rounding; false when that takes more than a few
+** dozen pieces, for a triangle and for degrees above 3.
+*/
+bool cf__leaf_clear(const cf_scene_t *sc, const cf__vleaf_t *l,
+                    const double *q, double zmin, bool depth);
+
 typedef struct cf__vnode {
     double lo[3], hi[3];
     uint32_t first, count;  /* leaves (count > 0) or children first, first+1 */
@@ -171,6 +187,7 @@ struct cf_scene {
     size_t nnode;
     double lo[3], hi[3];    /* box of every control point, space */
     double size;            /* its diagonal */
+    bool newton_all;        /* tests: no leaf left out by cf__leaf_clear */
 };
 
 /* Pieces of patch ip into the scene's leaves (scene-tree.c). */

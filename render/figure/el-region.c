@@ -118,7 +118,9 @@ build(cf_figure_t *fig, region_el_t *e, const cf__layout_t *l)
         drop_cache(e);
         return cf__fig_fail(fig, st, "a region in space");
     }
-    e->cache_tol = l->tol;
+    /* (what the rough first ink refit made serves nothing after it:
+    ** cf__tol_make) */
+    e->cache_tol = fig->refit_rough ? 0 : l->tol;
     return CF_STATUS_OK;
 }
 

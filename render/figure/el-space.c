@@ -115,7 +115,9 @@ build(cf_figure_t *fig, space_el_t *e, double tol)
         drop_cache(e);
         return cf__fig_fail(fig, st, "a line in space");
     }
-    e->cache_tol = tol;
+    /* (what the rough first ink refit made serves nothing after it:
+    ** cf__tol_make) */
+    e->cache_tol = fig->refit_rough ? 0 : tol;
     return CF_STATUS_OK;
 }
 

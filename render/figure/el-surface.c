@@ -320,6 +320,7 @@ build(cf_figure_t *fig, surface_el_t *e, double tol)
     if (cf__tol_serves(fig, e->cache_tol, tol))
         return CF_STATUS_OK;
     drop_cache(e);
+    tol = cf__tol_make(fig, tol);
     /* split points to 20 times the fitting tolerance: 0.2 bp (0.07 mm) by
     ** default, where 0.05 bp took 5 times as long on a torus */
     st = need ? cf__figure_scene(fig, 20 * tol, &sc) : CF_STATUS_OK;

@@ -54,6 +54,7 @@ cf__figure_scene(cf_figure_t *fig, double tol, cf_scene_t **out)
     }
     cf_scene_destroy(fig->scene);
     fig->scene = NULL;
+    tol = cf__tol_make(fig, tol);
     st = build_scene(fig, tol, out);
     if (st == CF_STATUS_OK && *out != NULL) {
         fig->scene = *out;

@@ -190,6 +190,8 @@ struct cf_figure {
     bool draft;              /* cf_figure_set_draft */
     bool refitting;          /* drawn for one of the ink refits of a page
                                 cropped to its ink (layout.c) */
+    bool refit_rough;        /* the first of them in an exact run: surfaces
+                                made as for a draft (cf__tol_make) */
     bool clip_page;          /* ink outside the page is cut, not an error */
     size_t proj_dim;
     double *proj;            /* 2 x proj_dim */

@@ -92,16 +92,37 @@ cf_status_t cf__figure_surface_pieces(cf_figure_t *fig, double tol,
 ** (figure-scene.c). */
 cf_status_t cf__figure_scene(cf_figure_t *fig, double tol, cf_scene_t **out);
 
+/*
+** The tolerance surfaces' products (hidden lines, silhouettes, the scene)
+** are made at when tol is asked for.  An exact run's page cropped to its
+** ink (layout.c) measures its ink roughly first (fig->refit_rough: ten
+** times tol, as a draft), then at the next refit makes them at
+** CF__REFIT_MAKE times its tolerance: the later refits and the drawing
+** shown, whose tolerances differ from that refit's by a fraction of a
+** percent, take them when made within their own (cf__tol_serves): one
+** set made where the layout made two.  Otherwise tol itself.
+*/
+#define CF__REFIT_ROUGH 10.0
+#define CF__REFIT_MAKE 0.97
+static inline double
+cf__tol_make(const cf_figure_t *fig, double tol)
+{
+    return fig->refit_rough ? CF__REFIT_ROUGH * tol
+         : fig->refitting && !fig->draft ? CF__REFIT_MAKE * tol : tol;
+}
+
 /* Whether what was made for tolerance `made` serves tolerance tol: made
-** within it, or, in a draft (cf_figure_set_draft), within
+** within it (within what cf__tol_make makes for it), or, in a draft
+** (cf_figure_set_draft) and the ink refits, within
 ** CF_FIGURE_DRAFT_SLACK times it (the layout's later passes ask for a few
 ** percent less than its first). */
 static inline bool
 cf__tol_serves(const cf_figure_t *fig, double made, double tol)
 {
+    double want = fig->refit_rough ? CF__REFIT_ROUGH * tol : tol;
     return made > 0
         && made <= (fig->draft || fig->refitting
-                    ? CF_FIGURE_DRAFT_SLACK * tol : tol);
+                    ? CF_FIGURE_DRAFT_SLACK * want : want);
 }
 
 /* Elements in space (el-space.c): whether p[3] is seen in the scene for

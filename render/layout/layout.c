@@ -371,8 +371,9 @@ cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
         /* (surfaces made for an earlier refit may serve this one:
         ** cf__tol_serves) */
         fig->refitting = refine;
+        fig->refit_rough = refine && pass == 0 && !fig->draft;
         st = ink_of(fig, lay, refine, ink);
-        fig->refitting = false;
+        fig->refitting = fig->refit_rough = false;
         if (st != CF_STATUS_OK)
             return fig->err.status;
         make_room(fig, win, ink, lay, avail);

@@ -22,31 +22,7 @@ import { mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync }
   from 'fs';
 import { tmpdir } from 'os';
 import { join } from 'path';
-import { resolveObjectURL } from 'buffer';
-
-// The page runs its module in a Web Worker, which node has not: this one
-// runs the worker's source (a blob: URL of the page) in this thread, its
-// messages passed on asynchronously as a browser passes them.
-globalThis.Worker = class {
-  constructor(url) {
-    this.onmessage = null;
-    this.dead = false;
-    const scope = { onmessage: null };
-    const post = (m) => setImmediate(() => {
-      if (!this.dead && this.onmessage) this.onmessage({ data: m });
-    });
-    this.scope = resolveObjectURL(url).text().then((code) => {
-      new Function('self', 'postMessage', code)(scope, post);
-      return scope;
-    });
-  }
-  postMessage(m) {
-    this.scope.then((scope) => setImmediate(() => scope.onmessage({ data: m })));
-  }
-  terminate() {
-    this.dead = true;
-  }
-};
+import './node-worker.mjs';
 
 const [tool, src] = process.argv.slice(2);
 const dir = mkdtempSync(join(tmpdir(), 'cf-page-'));

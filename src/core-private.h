@@ -91,6 +91,25 @@ int cf__cpu_level(void);
 #define CF__INLINE static inline
 #endif
 
+/* fmin and fmax as glibc's x86-64 code computes them, inlined: the other
+** argument where one is a NaN, and of two equal arguments (+0 and -0
+** among them) the second.  GCC calls libm for fmin and fmax unless NaNs
+** are ruled out (-ffinite-math-only), which a hot loop pays for (the
+** scene's measures in src/scene-tree.c: 9 % of a heavy view); the
+** WebAssembly module's C library (musl) orders signed zeros otherwise,
+** these give the same bits in both. */
+CF__INLINE double
+cf__fmin(double a, double b)
+{
+    return a < b || b != b ? a : b;
+}
+
+CF__INLINE double
+cf__fmax(double a, double b)
+{
+    return a > b || b != b ? a : b;
+}
+
 /*
 ** Every error is created by cf_diag_set (core.h; one place for a
 ** breakpoint): it fills diag (if not NULL and still OK) with status, index

@@ -49,11 +49,11 @@ cf__vnet_measure(const cf__vpatch_t *p, const double *net, double *c,
         const double *g = net + 4 * i;
         for (int k = 0; k < 3; k++) {
             c[3 * i + k] = g[k] / g[3];
-            ms->lo[k] = fmin(ms->lo[k], c[3 * i + k]);
-            ms->hi[k] = fmax(ms->hi[k], c[3 * i + k]);
+            ms->lo[k] = cf__fmin(ms->lo[k], c[3 * i + k]);
+            ms->hi[k] = cf__fmax(ms->hi[k], c[3 * i + k]);
         }
-        wmin = fmin(wmin, g[3]);
-        wmax = fmax(wmax, g[3]);
+        wmin = cf__fmin(wmin, g[3]);
+        wmax = cf__fmax(wmax, g[3]);
     }
     ms->diam = dist3(ms->lo, ms->hi);
     ms->img = hypot(ms->hi[0] - ms->lo[0], ms->hi[1] - ms->lo[1]);
@@ -78,13 +78,13 @@ cf__vnet_measure(const cf__vpatch_t *p, const double *net, double *c,
                 for (int k = 0; k < 3; k++)
                     q[k] = (1 - a) * (1 - b) * c00[k] + (1 - a) * b * c01[k] +
                            a * (1 - b) * c10[k] + a * b * c11[k];
-                ms->dev = fmax(ms->dev, dist3(x, q));
+                ms->dev = cf__fmax(ms->dev, dist3(x, q));
                 if (i < m && j < n) {
                     const double *x10 = x + 3 * ((size_t)n + 1), *x01 = x + 3,
                                  *x11 = x10 + 3;
                     double k1 = cross2(x, x10, x01), k2 = cross2(x11, x01, x10);
-                    pos = fmax(pos, fmax(k1, k2));
-                    neg = fmin(neg, fmin(k1, k2));
+                    pos = cf__fmax(pos, cf__fmax(k1, k2));
+                    neg = cf__fmin(neg, cf__fmin(k1, k2));
                 }
             }
         /* extents along s and t: the largest distance in the image
@@ -99,7 +99,7 @@ cf__vnet_measure(const cf__vpatch_t *p, const double *net, double *c,
                 size_t e0 = dir == 0 ? (size_t)j : (size_t)j * (n + 1),
                        e1 = dir == 0 ? (size_t)m * (n + 1) + j : e0 + n;
                 double len = 0.0;
-                ms->ext[dir] = fmax(ms->ext[dir],
+                ms->ext[dir] = cf__fmax(ms->ext[dir],
                                     hypot(c[3 * e1] - c[3 * e0],
                                           c[3 * e1 + 1] - c[3 * e0 + 1]));
                 for (int i = 0; i < b; i++) {
@@ -110,7 +110,7 @@ cf__vnet_measure(const cf__vpatch_t *p, const double *net, double *c,
                     len += hypot(x1[0] - x0[0], x1[1] - x0[1]) +
                            1e-3 * dist3(x0, x1);
                 }
-                poly = fmax(poly, len);
+                poly = cf__fmax(poly, len);
             }
             if (poly > 4.0 * ms->ext[dir])
                 ms->ext[dir] = poly;
@@ -128,13 +128,13 @@ cf__vnet_measure(const cf__vpatch_t *p, const double *net, double *c,
                 for (int e = 0; e < 3; e++)
                     q[e] = ((double)i * A[e] + (double)j * B[e] +
                             (double)k * C[e]) / n;
-                ms->dev = fmax(ms->dev, dist3(x, q));
+                ms->dev = cf__fmax(ms->dev, dist3(x, q));
                 if (i + j < n) {
                     /* the upward cell (i+1, j, k-1), (i, j+1, k-1), (i, j, k) */
                     double o = cross2(c + 3 * tidx(n, i + 1, j),
                                       c + 3 * tidx(n, i, j + 1), x);
-                    pos = fmax(pos, o);
-                    neg = fmin(neg, o);
+                    pos = cf__fmax(pos, o);
+                    neg = cf__fmin(neg, o);
                 }
             }
     }
@@ -194,11 +194,11 @@ leaf_sides(const cf__vpatch_t *p, const double *c, double dmax,
     }
     for (size_t i = 0; i < cnt; i++) {
         const double *x = c + 3 * i;
-        big = fmax(big, fmax(fabs(x[0]), fabs(x[1])));
+        big = cf__fmax(big, cf__fmax(fabs(x[0]), fabs(x[1])));
         for (int d = 0; d < 2; d++) {
             double v = hn[d][0] * x[0] + hn[d][1] * x[1];
-            lo[d] = fmin(lo[d], v);
-            hi[d] = fmax(hi[d], v);
+            lo[d] = cf__fmin(lo[d], v);
+            hi[d] = cf__fmax(hi[d], v);
         }
     }
     double e = 1e-8 * dmax + 1e-12 * big;
@@ -451,12 +451,12 @@ build(cf_scene_t *sc, size_t node, size_t first, size_t count)
     for (size_t i = first; i < first + count; i++) {
         const cf__vleaf_t *l = &sc->leaves[i];
         for (int k = 0; k < 3; k++) {
-            nd->lo[k] = fmin(nd->lo[k], l->lo[k]);
-            nd->hi[k] = fmax(nd->hi[k], l->hi[k]);
+            nd->lo[k] = cf__fmin(nd->lo[k], l->lo[k]);
+            nd->hi[k] = cf__fmax(nd->hi[k], l->hi[k]);
         }
         for (int k = 0; k < 2; k++) {
-            clo[k] = fmin(clo[k], l->lo[k] + l->hi[k]);
-            chi[k] = fmax(chi[k], l->lo[k] + l->hi[k]);
+            clo[k] = cf__fmin(clo[k], l->lo[k] + l->hi[k]);
+            chi[k] = cf__fmax(chi[k], l->lo[k] + l->hi[k]);
         }
     }
     if (count <= 4) {

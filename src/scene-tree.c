@@ -100,14 +100,14 @@ cf__vnet_measure(const cf__vpatch_t *p, const double *net, double *c,
                        e1 = dir == 0 ? (size_t)m * (n + 1) + j : e0 + n;
                 double len = 0.0;
                 ms->ext[dir] = cf__fmax(ms->ext[dir],
-                                    hypot(c[3 * e1] - c[3 * e0],
+                                    cf__norm2(c[3 * e1] - c[3 * e0],
                                           c[3 * e1 + 1] - c[3 * e0 + 1]));
                 for (int i = 0; i < b; i++) {
                     size_t k0 = dir == 0 ? (size_t)i * (n + 1) + j
                                          : (size_t)j * (n + 1) + i,
                            k1 = dir == 0 ? k0 + (size_t)n + 1 : k0 + 1;
                     const double *x0 = c + 3 * k0, *x1 = c + 3 * k1;
-                    len += hypot(x1[0] - x0[0], x1[1] - x0[1]) +
+                    len += cf__norm2(x1[0] - x0[0], x1[1] - x0[1]) +
                            1e-3 * dist3(x0, x1);
                 }
                 poly = cf__fmax(poly, len);
@@ -363,7 +363,7 @@ cf__scene_leaves(cf_scene_t *sc, size_t ip)
                                                   : e == 1 ? tidx(n, 0,
                                                                   n - i - 1)
                                                            : tidx(n, i + 1, 0));
-                    d += hypot(x0[0] - x1[0], x0[1] - x1[1]) +
+                    d += cf__norm2(x0[0] - x1[0], x0[1] - x1[1]) +
                          1e-3 * dist3(x0, x1);
                 }
                 if (d > best) {

@@ -16,8 +16,10 @@ line per figure: the medians and how many times faster curvefig is
 (targets of issue #28: >= 10x MetaPost, >= 60x TikZ).  A peer that is not
 installed is left out; exit status 77 (skipped) when neither is.  With
 --baseline, another build's `curvefig` (OLD_TOOL) renders the same PDF
-in the same rounds, and the line adds its median and the median of the
-per-round ratios TOOL / OLD_TOOL (a before/after in one run).
+in the same rounds (the two trading places every other round, so that
+each follows the other and the empty program equally often), and the
+line adds its median and the median of the per-round ratios TOOL /
+OLD_TOOL (a before/after in one run).
 """
 import json
 import os
@@ -79,7 +81,17 @@ def run_rounds(tool, src, tmp, pairs, baseline, peers):
         times = {k: [] for k in cmds}
         keys = list(cmds)
         for r in range(pairs + 1):
-            order = keys[r % len(keys):] + keys[:r % len(keys)]
+            ring = list(keys)
+            if baseline is not None and r % 2 == 1:
+                # the two builds trade places every other round: a run
+                # after a peer's (pdflatex leaves the caches cold) costs
+                # more than one after the other build's, so with a fixed
+                # ring the build after the other was always the warmer
+                # one (the same binary beside itself: 1.04-1.07)
+                i = ring.index("curvefig_pdf")
+                j = ring.index("baseline_pdf")
+                ring[i], ring[j] = ring[j], ring[i]
+            order = ring[r % len(ring):] + ring[:r % len(ring)]
             for k in order:
                 t = cpu_of(cmds[k])
                 if r > 0:

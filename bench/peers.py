@@ -10,16 +10,17 @@ labels' .mpx removed before each run as after an edit) and as TikZ
 (bench/peers/NAME.tex, `pdflatex`, PDF), copied to a scratch directory,
 and an empty program (`true`: what any process costs here).  Each round
 runs them in turn (the order rotates), N rounds (default 7) after one
-warm-up round; the CPU time (user + system) of each process and its
+warm-up round (two with --baseline, whose rounds go in pairs: N even); the CPU time (user + system) of each process and its
 children, started by posix_spawn (bench/cputime.py).  One JSON
 line per figure: the medians and how many times faster curvefig is
 (targets of issue #28: >= 10x MetaPost, >= 60x TikZ).  A peer that is not
 installed is left out; exit status 77 (skipped) when neither is.  With
 --baseline, another build's `curvefig` (OLD_TOOL) renders the same PDF
-in the same rounds (the two trading places every other round, so that
-each follows the other and the empty program equally often), and the
-line adds its median and the median of the per-round ratios TOOL /
-OLD_TOOL (a before/after in one run).
+in the same rounds (the two side by side, first one then the other, as
+a run after a peer's finds colder caches than one after the other
+build's), and the line adds its median and the median over pairs of
+rounds of the geometric mean of the two rounds' ratios TOOL / OLD_TOOL
+(a before/after in one run).
 """
 import json
 import os
@@ -79,22 +80,26 @@ def run_rounds(tool, src, tmp, pairs, baseline, peers):
         # what any process costs here, measured the same way
         cmds["empty_program"] = ["true"]
         times = {k: [] for k in cmds}
-        keys = list(cmds)
-        for r in range(pairs + 1):
-            ring = list(keys)
-            if baseline is not None and r % 2 == 1:
-                # the two builds trade places every other round: a run
-                # after a peer's (pdflatex leaves the caches cold) costs
-                # more than one after the other build's, so with a fixed
-                # ring the build after the other was always the warmer
-                # one (the same binary beside itself: 1.04-1.07)
-                i = ring.index("curvefig_pdf")
-                j = ring.index("baseline_pdf")
-                ring[i], ring[j] = ring[j], ring[i]
-            order = ring[r % len(ring):] + ring[:r % len(ring)]
+        keys = [k for k in cmds if k != "baseline_pdf"]
+        warm = 2 if baseline is not None else 1
+        for r in range(pairs + warm):
+            # the ring turns every round (every pair of rounds with a
+            # baseline), so that each command follows each other one
+            turn = (r // 2 if baseline is not None else r) % len(keys)
+            order = keys[turn:] + keys[:turn]
+            if baseline is not None:
+                # the two builds run side by side, right after curvefig's
+                # place in the ring, in turns: the second of the two finds
+                # the caches the first warmed (after a peer's run they are
+                # cold), so each round's ratio leans one way and the next
+                # round's the other by as much (in a fixed order the same
+                # binary beside itself measured 1.13-1.52)
+                i = order.index("curvefig_pdf")
+                pair = ["curvefig_pdf", "baseline_pdf"]
+                order[i:i + 1] = pair if r % 2 == 1 else pair[::-1]
             for k in order:
                 t = cpu_of(cmds[k])
-                if r > 0:
+                if r >= warm:   # warm-up rounds first (a pair of them)
                     times[k].append(t)
         med = {k: statistics.median(v) for k, v in times.items()}
         out = {"figure": name, "rounds": pairs}
@@ -103,9 +108,12 @@ def run_rounds(tool, src, tmp, pairs, baseline, peers):
             out["times_faster_than_" + k] = round(
                 med[k] / med["curvefig_pdf"], 1)
         if baseline is not None:
+            # per pair of rounds (one of each order), the geometric mean
+            # of the two rounds' ratios: the order's lean cancels
+            c, b = times["curvefig_pdf"], times["baseline_pdf"]
             out["ratio_to_baseline"] = round(statistics.median(
-                a / b for a, b in zip(times["curvefig_pdf"],
-                                      times["baseline_pdf"])), 3)
+                (c[k] / b[k] * c[k + 1] / b[k + 1]) ** 0.5
+                for k in range(0, len(c) - 1, 2)), 3)
         print(json.dumps(out), flush=True)
 
 

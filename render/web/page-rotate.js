@@ -1,14 +1,17 @@
 // Turning a 3D figure of the interactive page (page.js, whose header
 // describes the DOM): dragging a 3D figure's background (not a handle)
-// turns it, as do the arrow keys when its box has the focus; a double
-// click or its button.cf-view-reset goes back to the script's view.  The
+// turns it, as do the arrow keys when its box has the focus (a key held
+// down, repeating, turns it as a drag does: drafts, then the exact run
+// when the key goes up); a double click or its button.cf-view-reset goes
+// back to the script's view.  The
 // angles turned to are kept in page.js's views (figure name -> [azimuth,
 // elevation]), which every run sends as "@view:NAME" (render/lua/
 // params.h); viewsLua() writes them as Lua comments under the values.
 //
 // CurvefigRotate(host) listens on host.figures and the window and
 // returns what page.js calls: markRotatable(box, fig) as a 3D figure is
-// drawn, viewsLua(), rotating() (a figure is being dragged round).  host
+// drawn, viewsLua(), rotating() (a figure is being dragged round, or
+// turned by a held key).  host
 // gives:
 //   figures        div#cf-figures
 //   el(tag, attrs, text)   an element
@@ -27,6 +30,7 @@ function CurvefigRotate(host) {
   var KEY_DEG = 5;       // an arrow key; 15 with Shift
   var rot = null;        // { name, x, y, az, el }: a background dragged
   var lastDown = null;   // the last press on a background, for double clicks
+  var held = null;       // the arrow key held down, repeating, on a figure
 
   function figureNamed(name) {
     return (host.lastFigures() || []).find(function (f) {
@@ -144,8 +148,23 @@ function CurvefigRotate(host) {
               ArrowDown: [0, k] }[ev.key];
     if (!d || !turnable(fig)) return;
     ev.preventDefault();
+    // a key held down repeats: its turns are a move (drafts, the layout
+    // held) until it goes up; a single press is an exact run at once
+    if (ev.repeat && held === null) {
+      held = ev.key;
+      hold();
+    }
     var v = viewOf(fig);
     turn(fig.name, v[0] + d[0] * KEY_DEG, v[1] + d[1] * KEY_DEG);
+  }
+
+  // The held key went up (or the window lost the focus, where its going
+  // up is not seen; not the figure's focusout: a redraw replaces the
+  // figure's box and focuses the new one): the exact run.
+  function keyEnd(ev) {
+    if (held === null || (ev.type === 'keyup' && ev.key !== held)) return;
+    held = null;
+    release();
   }
 
   figures.addEventListener('pointerdown', rotateStart);
@@ -153,6 +172,8 @@ function CurvefigRotate(host) {
   window.addEventListener('pointerup', rotateEnd);
   window.addEventListener('pointercancel', rotateEnd);
   figures.addEventListener('keydown', rotateKey);
+  figures.addEventListener('keyup', keyEnd);
+  window.addEventListener('blur', keyEnd);   // the key goes up elsewhere
 
   // The rotated views as Lua comments under the values, to paste into
   // figure{ view = ... }.
@@ -164,5 +185,7 @@ function CurvefigRotate(host) {
   }
 
   return { markRotatable: markRotatable, viewsLua: viewsLua,
-           rotating: function () { return rot !== null; } };
+           rotating: function () {
+             return rot !== null || held !== null;
+           } };
 }

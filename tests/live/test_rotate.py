@@ -23,7 +23,10 @@ WebAssembly module):
   paths) the same pixels, both drawn into a canvas by the browser, while
   the render at the script's view differs in many pixels;
 - the arrow keys turn the focused figure 5 degrees a press; the time of
-  a redraw after a key press is printed (median of 4);
+  a redraw after a key press is printed (median of 4); a key held down
+  (repeating) turns it as a drag does: drafts while it repeats (when an
+  exact run takes over 20 ms), the exact drawing of the view reached
+  when it goes up;
 - the handle of L still drags in the turned figure: L moves, the view
   stays;
 - a double click on the background goes back to the script's view, and
@@ -106,6 +109,16 @@ seen.observe(root, { attributes: true });
 box.focus();
 box.dispatchEvent(new KeyboardEvent('keydown', { key: arguments[1],
                                                  bubbles: true }));
+'''
+
+# A key event of kind arguments[2] ('keydown' or 'keyup', repeating when
+# arguments[3]) for key arguments[1] on figure arguments[0], focused.
+KEY_EVENT = r'''
+var box = document.getElementById('cf-figure-' + arguments[0]);
+if (document.activeElement !== box) box.focus();
+box.dispatchEvent(new KeyboardEvent(arguments[2], { key: arguments[1],
+                                                   repeat: arguments[3],
+                                                   bubbles: true }));
 '''
 
 
@@ -253,6 +266,42 @@ def exercise(drv, tool, text, what, exact, outdir):
              < 1e-9, '%s: two Left and two Up turned it to %s' % (what, v2))
     print('     %s: a redraw after a key press: %.0f ms median (%.0f to '
           '%.0f)' % (what, statistics.median(times), min(times), max(times)))
+
+    # a key held down: a press, then repeats (drafts), then up (exact);
+    # in the course page the browser's processor is slowed down six times
+    # (DevTools' emulation), so that the module's exact runs take over
+    # 20 ms and the repeats are drafts however fast this machine is
+    if not exact:
+        drv.execute_cdp_cmd('Emulation.setCPUThrottlingRate', {'rate': 6})
+    drv.execute_script(KEY_EVENT, NAME, 'ArrowLeft', 'keydown', False)
+    n = quiet(drv, n)
+    slow = float(drv.execute_script('return document.getElementById('
+                                    '"curvefig").dataset.exactMs')) > 20
+    lb.check(exact or slow, '%s: slowed down, an exact run takes over 20 '
+             'ms' % what)
+    for k in range(3):
+        drv.execute_script(KEY_EVENT, NAME, 'ArrowLeft', 'keydown', True)
+        n = quiet(drv, n)
+    v3 = view(drv)
+    lb.check(abs(v3[0] - (v2[0] + 20)) < 1e-9 and v3[1] == v2[1] and
+             draft(drv) == ('1' if slow else '0'),
+             '%s: Left held (a press, three repeats) turned it to %s, '
+             'drawn as a draft when an exact run takes over 20 ms '
+             '(data-draft %r)' % (what, v3, draft(drv)))
+    drv.execute_script(KEY_EVENT, NAME, 'ArrowLeft', 'keyup', False)
+    if slow:
+        n = quiet(drv, n)
+    lb.check(draft(drv) == '0' and view(drv) == v3,
+             '%s: the key up: the exact drawing (data-draft %r)'
+             % (what, draft(drv)))
+    if not exact:
+        drv.execute_cdp_cmd('Emulation.setCPUThrottlingRate', {'rate': 1})
+    same = same_drawing(drv, what, static_svg(tool, text, v3[0], v3[1],
+                                              outdir), exact)
+    lb.check(same is True if exact else same == 0,
+             '%s: ... the drawing of curvefig render with view = {%r, %r} '
+             '(%r)' % (what, v3[0], v3[1], same))
+    v2 = v3   # (the handle's drag below keeps this view)
 
     # the label's handle still drags, the view stays
     old_lua = drv.find_element(By.ID, 'cf-lua').text

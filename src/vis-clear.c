@@ -16,27 +16,6 @@
 #define CLEAR_FRONT 6
 #define CLEAR_NET ((CLEAR_DEG + 1) * (CLEAR_DEG + 1) * 4)
 
-/* The part [a, b] of the curve of degree d whose points lie `stride`
-** doubles apart in x (4-homogeneous), in place: de Casteljau at b keeping
-** [0, b], then at a / b keeping the end (b > 0). */
-CF__NO_COVERAGE static void
-part(double *x, int d, size_t stride, double a, double b)
-{
-    for (int r = 1; r <= d; r++)
-        for (int i = d; i >= r; i--)
-            for (int e = 0; e < 4; e++)
-                x[(size_t)i * stride + e] =
-                    (1 - b) * x[(size_t)(i - 1) * stride + e] +
-                    b * x[(size_t)i * stride + e];
-    double c = a / b;
-    for (int r = 1; r <= d; r++)
-        for (int i = 0; i <= d - r; i++)
-            for (int e = 0; e < 4; e++)
-                x[(size_t)i * stride + e] =
-                    (1 - c) * x[(size_t)i * stride + e] +
-                    c * x[(size_t)(i + 1) * stride + e];
-}
-
 /* Halves at 1/2 of the 4 curves of a bicubic net (4-homogeneous) whose
 ** points lie `stride` doubles apart, curves `step` apart; inlined with
 ** constant strides for each direction. */
@@ -155,9 +134,9 @@ cf__leaf_clear(const cf_scene_t *sc, const cf__vleaf_t *l, const double *q,
     double *net = stack[0];
     memcpy(net, p->g, (size_t)(m + 1) * row * sizeof(double));
     for (int j = 0; j <= n; j++)   /* curves in s: column j */
-        part(net + 4 * j, m, row, a0, a1);
+        cf__hcurve_part(net + 4 * j, m, row, a0, a1);
     for (int i = 0; i <= m; i++)   /* curves in t: row i */
-        part(net + (size_t)i * row, n, 4, b0, b1);
+        cf__hcurve_part(net + (size_t)i * row, n, 4, b0, b1);
     level[0] = 0;
     top = 1;
     /* Newton's point counts within 1e-9 of the scene's size of q

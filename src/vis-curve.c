@@ -199,16 +199,7 @@ part_net(const cf_bezier_t *c, double ta, double tb,
             h[i][e] = e < dim ? x[(size_t)i * stride + e] : 0.0;
         h[i][3] = rat ? x[(size_t)i * stride + dim] : 1.0;
     }
-    /* [0, tb] by de Casteljau, then its part [ta / tb, 1] */
-    for (int r = 1; r <= n; r++)
-        for (int i = n; i >= r; i--)
-            for (int e = 0; e < 4; e++)
-                h[i][e] = (1 - tb) * h[i - 1][e] + tb * h[i][e];
-    double a = ta / tb;
-    for (int r = 1; r <= n; r++)
-        for (int i = 0; i <= n - r; i++)
-            for (int e = 0; e < 4; e++)
-                h[i][e] = (1 - a) * h[i][e] + a * h[i + 1][e];
+    cf__hcurve_part(&h[0][0], n, 4, ta, tb);
     return true;
 }
 

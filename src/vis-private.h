@@ -69,6 +69,28 @@ cf__norm2(double x, double y)
     return hypot(x, y);
 }
 
+/* The part [a, b] (0 <= a < b, b > 0) of a curve of degree d in place,
+** its points 4-homogeneous and `stride` doubles apart: de Casteljau at b
+** keeping [0, b], then at a / b keeping the end (a curve piece's net,
+** vis-curve.c; a leaf's, vis-clear.c). */
+CF__INLINE void
+cf__hcurve_part(double *x, int d, size_t stride, double a, double b)
+{
+    for (int r = 1; r <= d; r++)
+        for (int i = d; i >= r; i--)
+            for (int e = 0; e < 4; e++)
+                x[(size_t)i * stride + e] =
+                    (1 - b) * x[(size_t)(i - 1) * stride + e] +
+                    b * x[(size_t)i * stride + e];
+    double c = a / b;
+    for (int r = 1; r <= d; r++)
+        for (int i = 0; i <= d - r; i++)
+            for (int e = 0; e < 4; e++)
+                x[(size_t)i * stride + e] =
+                    (1 - c) * x[(size_t)i * stride + e] +
+                    c * x[(size_t)(i + 1) * stride + e];
+}
+
 /* The 4 x 4 matrix M of a view (row-major). */
 void cf__view_matrix(const cf_view_t *view, double M[16]);
 

@@ -84,12 +84,10 @@ deriv_many(const cf_bezier_t *c, const double *t, size_t n, int k,
 ** infinities fail the comparisons, so every bad parameter fails it): the
 ** parameters are used as given when it passes.  Otherwise each is checked
 ** by the rule (nothing is written when one is refused), then the batch is
-** evaluated in blocks from a clamped copy.  Aligned to 64 bytes: its
-** first loop (34 bytes) ran some 15 % slower per step where it crossed a
-** 64-byte line, which code added earlier in the library decided (W1d 1.2 %
-** slower after the W5 loops were aligned, docs/performance.md).
+** evaluated in blocks from a clamped copy.  Its first loop is 34 bytes
+** (CF__LOOP_ALIGNED).
 */
-__attribute__((aligned(64))) static cf_status_t
+CF__LOOP_ALIGNED static cf_status_t
 checked_many(const cf_bezier_t *c, const double *t, size_t n, int k,
              double *out)
 {

@@ -72,10 +72,8 @@ pieces(const double *U, const double *P, size_t first, size_t last,
 
 #if defined(CF__HAVE_PAIRS)
 /* The planar polynomial case, each point a pair of doubles: the same
-** formulas, the same values.  On a 64-byte boundary, so that where its
-** loop lies in the lines of code does not depend on the code before it
-** in the library (increasing_pairs in bspline-knot-ops.c tells why). */
-__attribute__((noinline, aligned(64))) static void
+** formulas, the same values (CF__LOOP_ALIGNED). */
+CF__LOOP_ALIGNED __attribute__((noinline)) static void
 pieces2(const double *U, const double *P, size_t first, size_t last,
         double *Q, size_t stride, double *breaks)
 {

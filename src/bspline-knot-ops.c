@@ -225,16 +225,16 @@ refine_cubic2_body(const double *U, const double *P, double *V, double *Q,
     CF__STORE2(Q + kk * 2, w3);
 }
 
-/* each copy on a 64-byte boundary (as increasing_pairs, below) */
+/* each copy CF__LOOP_ALIGNED */
 typedef void refine_cubic2_fn(const double *U, const double *P, double *V,
                               double *Q, const double *X, size_t nx,
                               size_t a, size_t b, size_t qlast);
 #if defined(CF__LEVELS)
-static refine_cubic2_fn refine_cubic2_v4 __attribute__((aligned(64)));
-static refine_cubic2_fn refine_cubic2_v3 __attribute__((aligned(64)));
-static refine_cubic2_fn refine_cubic2_v1 __attribute__((aligned(64)));
+static refine_cubic2_fn refine_cubic2_v4 CF__LOOP_ALIGNED;
+static refine_cubic2_fn refine_cubic2_v3 CF__LOOP_ALIGNED;
+static refine_cubic2_fn refine_cubic2_v1 CF__LOOP_ALIGNED;
 #else
-static refine_cubic2_fn refine_cubic2 __attribute__((aligned(64)));
+static refine_cubic2_fn refine_cubic2 CF__LOOP_ALIGNED;
 #endif
 CF__CLONED(void, refine_cubic2,
            (const double *U, const double *P, double *V, double *Q,
@@ -244,15 +244,10 @@ CF__CLONED(void, refine_cubic2,
 
 #if defined(CF__HAVE_PAIRS)
 /* Whether X[j - 1] < X[j] for j = 1 .. 2 m: two comparisons per step, no
-** branch (the vectoriser leaves this loop scalar).  A function of its own
-** on a 64-byte boundary, as are equal_pairs, the copies of refine_cubic2,
-** pieces2 (bspline-cubic-pieces.c) and the functions with count_spans'
-** loop (bspline-ops.c): a loop this small that straddles a 64-byte
-** boundary took some 15 % longer a step on the processor measured (AMD
-** Zen 4), and where it fell moved with any code before it in the library
-** (W5ins 2 % slower in three of the four places modulo 64,
-** docs/performance.md).  Aligned, its place depends on its own code. */
-__attribute__((noinline, aligned(64))) static bool
+** branch (the vectoriser leaves this loop scalar); a function of its own,
+** CF__LOOP_ALIGNED (W5ins was 2 % slower in three of the four places
+** modulo 64 the code before it could put it). */
+CF__LOOP_ALIGNED __attribute__((noinline)) static bool
 increasing_pairs(const double *X, size_t m)
 {
     cf__m2 all = { -1, -1 };
@@ -262,7 +257,7 @@ increasing_pairs(const double *X, size_t m)
 }
 
 /* Whether A[i] == B[i] for some i < 2 m, without a branch. */
-__attribute__((noinline, aligned(64))) static bool
+CF__LOOP_ALIGNED __attribute__((noinline)) static bool
 equal_pairs(const double *A, const double *B, size_t m)
 {
     cf__m2 any = { 0, 0 };

@@ -243,14 +243,9 @@ decompose_input(const cf_bspline_t *c, const cf_bspline_t **w,
     return st;
 }
 
-/* This and cf_bspline_to_beziers on a 64-byte boundary: count_spans' loop,
-** inlined in each, then lies where its own code puts it, whatever the code
-** before it in the library (increasing_pairs in bspline-knot-ops.c tells
-** why that matters). */
-#if defined(__GNUC__)
-__attribute__((aligned(64)))
-#endif
-cf_status_t
+/* This and cf_bspline_to_beziers hold count_spans' loop, inlined
+** (CF__LOOP_ALIGNED). */
+CF__LOOP_ALIGNED cf_status_t
 cf_bspline_bezier_points(const cf_bspline_t *c, double **hpoints,
                          double **breaks, size_t *count, cf_diag_t *diag)
 {
@@ -293,10 +288,7 @@ cf_bspline_bezier_points(const cf_bspline_t *c, double **hpoints,
 
 /* The pieces as curves: all in one block (cf__bezier_new_many), each
 ** decomposed straight into its curve. */
-#if defined(__GNUC__)
-__attribute__((aligned(64)))
-#endif
-cf_status_t
+CF__LOOP_ALIGNED cf_status_t
 cf_bspline_to_beziers(const cf_bspline_t *c, cf_bezier_list_t **out,
                       cf_diag_t *diag)
 {

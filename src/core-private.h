@@ -85,10 +85,18 @@ int cf__cpu_level(void);
 #define CF__UNLIKELY(x) __builtin_expect(!!(x), 0)
 /* a small kernel inlined into its loop even at -O2 */
 #define CF__INLINE static inline __attribute__((always_inline))
+/* A function whose small hot loop must not straddle a 64-byte line: such
+** a loop took some 15 % longer a step on the processor measured (AMD Zen
+** 4), and where it fell moved with any code added before it in the
+** library (W5ins, W5bez, W1d 1-2.5 %, docs/performance.md, "Benchmarks").
+** The function starts on a 64-byte boundary, so that where its loop lies
+** depends on its own code alone. */
+#define CF__LOOP_ALIGNED __attribute__((aligned(64)))
 #else
 #define CF__PRINTF(f, a)
 #define CF__UNLIKELY(x) (x)
 #define CF__INLINE static inline
+#define CF__LOOP_ALIGNED
 #endif
 
 /* fmin and fmax as glibc's x86-64 code computes them, inlined: the other

@@ -1,7 +1,6 @@
 /*
 ** Status strings, error details, the allocator hook and shared checks.
 */
-#include <ctype.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdint.h>
@@ -47,27 +46,6 @@ cf_diag_clear(cf_diag_t *diag)
     diag->msg[0] = '\0';
 }
 
-/* printf's "nan" and "-nan" (a NaN's sign means nothing) as "NaN", in
-** place. */
-static void
-spell_nan(char *msg)
-{
-    char *p = msg, *q = msg;
-    while (*p != '\0') {
-        size_t skip = p[0] == '-' ? 1 : 0;
-        if (strncmp(p + skip, "nan", 3) == 0
-            && (p == msg || !isalnum((unsigned char)p[-1]))
-            && !isalnum((unsigned char)p[skip + 3])) {
-            memcpy(q, "NaN", 3);
-            q += 3;
-            p += skip + 3;
-        } else {
-            *q++ = *p++;
-        }
-    }
-    *q = '\0';
-}
-
 cf_status_t
 cf_diag_set(cf_diag_t *diag, cf_status_t status, long index,
             const char *fmt, ...)
@@ -79,7 +57,7 @@ cf_diag_set(cf_diag_t *diag, cf_status_t status, long index,
         va_start(ap, fmt);
         vsnprintf(diag->msg, sizeof diag->msg, fmt, ap);
         va_end(ap);
-        spell_nan(diag->msg);
+        cf__spell_nan(diag->msg);
     }
     return status;
 }

@@ -29,4 +29,9 @@ const char *cf__num_text(double x, char buf[CF__NUM_TEXT]);
 ** cf__error(diag, st, -1, "u = %s", CF__NUM(u)). */
 #define CF__NUM(x) cf__num_text((x), (char[CF__NUM_TEXT]){ 0 })
 
+/* A formatted message's "nan" and "-nan" (printf's, for a NaN given to
+** %g) as "NaN", in place: every message of the core (cf_diag_set) and of
+** the figure language (cf__lua_error) spells a NaN alike. */
+void cf__spell_nan(char *msg);
+
 #endif

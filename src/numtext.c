@@ -1,6 +1,7 @@
 /*
 ** The shortest text of a number that reads back as it (numtext-private.h).
 */
+#include <ctype.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -61,4 +62,23 @@ cf__num_text(double x, char buf[CF__NUM_TEXT])
     }
     buf[n] = '\0';
     return buf;
+}
+
+void
+cf__spell_nan(char *msg)
+{
+    char *p = msg, *q = msg;
+    while (*p != '\0') {
+        size_t skip = p[0] == '-' ? 1 : 0;
+        if (strncmp(p + skip, "nan", 3) == 0
+            && (p == msg || !isalnum((unsigned char)p[-1]))
+            && !isalnum((unsigned char)p[skip + 3])) {
+            memcpy(q, "NaN", 3);
+            q += 3;
+            p += skip + 3;
+        } else {
+            *q++ = *p++;
+        }
+    }
+    *q = '\0';
 }

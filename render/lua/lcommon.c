@@ -25,6 +25,7 @@ cf__lua_error(lua_State *L, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
+    cf__spell_nan(msg);
     return luaL_error(L, "%s", msg);
 }
 

@@ -1,4 +1,4 @@
--- expect: 1 "bspline_surface: point P[2][2] has coordinate 3 = "
+-- expect: 1 "bspline_surface: point P[2][2] has coordinate 3 = NaN; coordinates must be finite"
 -- a NaN coordinate is named by row and column
 local P = {}
 for i = 1, 4 do

@@ -178,6 +178,15 @@ finish(cf_scene_t *sc, size_t npatch, size_t nleaf, const double *box,
     double dx = sc->hi[0] - sc->lo[0], dy = sc->hi[1] - sc->lo[1],
            dz = sc->hi[2] - sc->lo[2];
     double size = sqrt(dx * dx + dy * dy + dz * dz);
+    /* the hidden lines' arithmetic squares lengths of the scene's size */
+    if (!isfinite(size)) {
+        rollback(sc, npatch, nleaf, box);
+        return cf__error(diag, CF_STATUS_NOT_FINITE, -1,
+                         "the scene spans %s x %s x %s, too large for its "
+                         "hidden lines (the diagonal of its box must be "
+                         "finite: coordinates within about 1e150)",
+                         CF__NUM(dx), CF__NUM(dy), CF__NUM(dz));
+    }
     if (sc->tol < 1e-12 * size) {
         rollback(sc, npatch, nleaf, box);
         return cf__error(diag, CF_STATUS_INVALID_ARG, -1,

@@ -158,18 +158,24 @@ add_net(cf_figure_t *fig, const cf_bspline_surface_t *s, const double *p,
 }
 
 /* A patch whose control points lie on one line (or in one point) has no
-** normal anywhere: refused, naming the size. */
+** normal anywhere: refused, naming the size.  Measured on the points
+** divided by their largest coordinate, so that neither the squares of
+** coordinates near 1e300 (infinite) nor of ones near 1e-300 (zero) pass
+** for a line or a point. */
 cf_status_t
 cf__check_degenerate(cf_figure_t *fig, const double *p, size_t n)
 {
-    double size = 0, off = 0;
+    double size = 0, off = 0, big = 0;
     size_t a = 0, b = 0;
+    for (size_t i = 0; i < 3 * n; i++)
+        big = fmax(big, fabs(p[i]));
+#define Q(i, k) (p[3 * (i) + (k)] / big)
     /* the two points farthest apart from point 0, then the farthest from
     ** their line */
-    for (size_t i = 0; i < n; i++) {
+    for (size_t i = 0; big > 0 && i < n; i++) {
         double d = 0;
         for (int k = 0; k < 3; k++)
-            d += (p[3 * i + k] - p[k]) * (p[3 * i + k] - p[k]);
+            d += (Q(i, k) - Q(0, k)) * (Q(i, k) - Q(0, k));
         if (d > size) {
             size = d;
             b = i;
@@ -179,8 +185,8 @@ cf__check_degenerate(cf_figure_t *fig, const double *p, size_t n)
     for (size_t i = 0; size > 0 && i < n; i++) {
         double u[3], w[3], c[3], l = 0, m = 0;
         for (int k = 0; k < 3; k++) {
-            u[k] = p[3 * b + k] - p[3 * a + k];
-            w[k] = p[3 * i + k] - p[3 * a + k];
+            u[k] = Q(b, k) - Q(a, k);
+            w[k] = Q(i, k) - Q(a, k);
         }
         c[0] = u[1] * w[2] - u[2] * w[1];
         c[1] = u[2] * w[0] - u[0] * w[2];
@@ -191,6 +197,7 @@ cf__check_degenerate(cf_figure_t *fig, const double *p, size_t n)
         }
         off = fmax(off, sqrt(l / m));
     }
+#undef Q
     if (size == 0 || off <= 1e-9 * size)
         return cf_diag_set(&fig->err, CF_STATUS_DEGENERATE, -1,
                            "degenerate patch: its %zu control "

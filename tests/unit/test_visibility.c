@@ -564,6 +564,15 @@ test_errors(void **state)
            "below 1e-12 of the scene's size");
     assert_int_equal(cf_scene_count(sc), 0);
     cf_bezier_surface_destroy(b);
+    /* a scene whose diagonal overflows (each side finite): refused as
+    ** too large, not as a tolerance below 1e-12 of an infinite size */
+    double huge[12] = {0, 0, 0, 0, 1e200, 0, 1e200, 0, 0, 1e200, 1e200, 1};
+    assert_int_equal(cf_bezier_surface_bilinear(3, huge, &b, NULL), 0);
+    expect(cf_scene_add_bezier(sc, b, NULL, &d), &d, CF_STATUS_NOT_FINITE,
+           "the scene spans 1e+200 x 1e+200 x 1, too large for its hidden "
+           "lines");
+    assert_int_equal(cf_scene_count(sc), 0);
+    cf_bezier_surface_destroy(b);
     /* a curve not in R^3, a surface number out of range, a NaN point */
     cf_bezier_t *c2 = NULL;
     cf_visibility_t *vis = NULL;

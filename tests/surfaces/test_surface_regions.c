@@ -590,6 +590,39 @@ expect_error(const char *src, const char *words)
     remove(path);
 }
 
+/* A patch at the ends of the doubles' range is not degenerate: the same
+** twisted patch with coordinates of 1e-300 and of 1e300 passes
+** f:surface's check (squared, they had read as one point and as one
+** line). */
+static void
+test_extreme_scales(void **state)
+{
+    static const char *const scales[] = { "1e-300", "1e-150", "1e150",
+                                          "1e300" };
+    (void)state;
+    for (size_t i = 0; i < sizeof scales / sizeof *scales; i++) {
+        char src[512], path[] = "/tmp/cf-regions-XXXXXX";
+        int fd = mkstemp(path);
+        FILE *f;
+        cf_script_t *sc = NULL;
+        assert_true(fd >= 0);
+        snprintf(src, sizeof src,
+                 "local k = %s\n"
+                 "local f = figure{ name = 'z', view = { 30, 20 } }\n"
+                 "f:surface(bezier_surface{ points = {\n"
+                 "  { {0, 0, 0}, {0, k, k} }, { {k, 0, k}, {k, k, 0} } } })\n",
+                 scales[i]);
+        f = fdopen(fd, "w");
+        fputs(src, f);
+        fclose(f);
+        assert_int_equal(cf_script_create(NULL, NULL, &sc, NULL), 0);
+        if (cf_script_run_file(sc, path) != CF_STATUS_OK)
+            fail_msg("k = %s: %s", scales[i], cf_script_error(sc));
+        cf_script_destroy(sc);
+        remove(path);
+    }
+}
+
 /* A fill added before a shaded surface lies under its shading: the
 ** figure warns, naming the fill, its line and the surface. */
 static void
@@ -662,6 +695,7 @@ main(void)
         cmocka_unit_test(test_pixels),
         cmocka_unit_test(test_warn_order),
         cmocka_unit_test(test_bad),
+        cmocka_unit_test(test_extreme_scales),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -19,6 +19,7 @@
 //   lastFigures()  the figures of the last reply shown
 //   drag()         the handle being dragged, or null
 //   request()      run the script again with the values and views
+//   move           the name of the pointer's move events to listen to
 //   hold(), release()   keep the figures' layout while a move goes on,
 //                  and let it go
 function CurvefigRotate(host) {
@@ -168,7 +169,7 @@ function CurvefigRotate(host) {
   }
 
   figures.addEventListener('pointerdown', rotateStart);
-  window.addEventListener('pointermove', rotateMove);
+  window.addEventListener(host.move, rotateMove);
   window.addEventListener('pointerup', rotateEnd);
   window.addEventListener('pointercancel', rotateEnd);
   figures.addEventListener('keydown', rotateKey);

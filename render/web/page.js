@@ -576,6 +576,8 @@ function CurvefigPage(root, engine) {
     if (!(p.constrain && p.constrain.grid)) d = roundPoint(drag.fig, d);
     var s = toSvg(drag.fig, d[0], d[1]);
     place(drag.circle, s[0], s[1]);
+    var old = values[drag.param][drag.index];
+    if (old && old[0] === d[0] && old[1] === d[1]) return;  // (seen twice)
     values[drag.param][drag.index] = d;
     request();
   }
@@ -597,14 +599,17 @@ function CurvefigPage(root, engine) {
     exact();
     if (!inFlight && lastFigures) showFigures(lastFigures);
   }
-  // The moves of a drag: 'pointerrawupdate' where the browser has it (in
-  // a secure context: a file, localhost), which comes as soon as the
-  // pointer moves, where 'pointermove' waits for the next frame (on the
-  // course page's drags 4 ms at the median, up to 11, of every move);
-  // else 'pointermove'.  The last move of a drag is the same either way.
-  var MOVE = 'onpointerrawupdate' in window ? 'pointerrawupdate'
-                                           : 'pointermove';
-  window.addEventListener(MOVE, pointerMove);
+  // The moves of a drag: 'pointermove', and 'pointerrawupdate' where the
+  // browser has it (in a secure context: a file, localhost), which comes
+  // as soon as the pointer moves, where 'pointermove' waits for the next
+  // frame (on the course page's drags 4 ms at the median, up to 11, of
+  // every move).  A move seen twice (its pointermove after its raw
+  // update, at the same place) changes nothing and runs nothing.
+  var MOVES = ['pointermove'].concat('onpointerrawupdate' in window ?
+                                     ['pointerrawupdate'] : []);
+  MOVES.forEach(function (t) {
+    window.addEventListener(t, pointerMove);
+  });
   window.addEventListener('pointerup', pointerUp);
   window.addEventListener('pointercancel', pointerUp);
 
@@ -612,7 +617,7 @@ function CurvefigPage(root, engine) {
 
   var rotate = CurvefigRotate({
     figures: figures, el: el, request: request, hold: hold, release: release,
-    move: MOVE,
+    moves: MOVES,
     views: function () { return views; },
     lastFigures: function () { return lastFigures; },
     drag: function () { return drag; }

@@ -21,9 +21,11 @@ module:
   change: here a stray element put in #cf-figures), which gives the new
   box the focus again;
 - where the browser has pointerrawupdate (Chromium, in a secure context:
-  the file), a drag of the background follows it, not pointermove (which
-  waits for the next frame): a synthetic pointerrawupdate turns the
-  figure, a pointermove after it runs nothing;
+  the file), a drag of the background or of the point L follows it as
+  well as pointermove (which waits for the next frame): a synthetic
+  pointerrawupdate runs the script (turns the figure 10 degrees for
+  25 px), the pointermove of the same place after it runs nothing, a
+  pointermove to another place runs it;
 - released after drafts (the browser's processor slowed down six times
   by DevTools' emulation, so that an exact run takes over 20 ms and the
   page asks for drafts while the pointer moves), a drag of the point L,
@@ -171,32 +173,53 @@ return [s.right - 12, s.top + 50];
 
 
 def raw_moves(drv, n):
-    """A drag of the background follows pointerrawupdate, once a move."""
+    """A drag of the background and of the point L follow
+    pointerrawupdate, and take each move once."""
     if not drv.execute_script('return "onpointerrawupdate" in window;'):
         print('SKIP (raw moves): this browser has no pointerrawupdate')
         return n
-    x, y = drv.execute_script(WHERE, 'rotate')
-    mouse(drv, 'mouseMoved', x, y, 0)
-    mouse(drv, 'mousePressed', x, y, 1)
     move = ('window.dispatchEvent(new PointerEvent(arguments[0], '
             '{ clientX: arguments[1], clientY: arguments[2], '
             'pointerId: 1, isPrimary: true, bubbles: true }));')
-    drv.execute_script(move, 'pointerrawupdate', x - 25, y)
-    try:
-        n = settle(drv, n, 5)
-    except RuntimeError:
-        pass        # (no run: the check below fails)
-    turned = state(drv)['view']
-    drv.execute_script(move, 'pointermove', x - 50, y)
-    time.sleep(0.5)
-    lb.check(turned == '[-45,28]' and lb.runs(drv) == n and
-             state(drv)['view'] == turned,
-             'a drag of the background: a pointerrawupdate 25 px left '
-             'turned it 10 degrees (%s), a pointermove after it ran '
-             'nothing (the move was taken once)' % turned)
-    mouse(drv, 'mouseReleased', x, y, 0)
-    time.sleep(0.6)
-    return settle(drv, n - 1)
+
+    def ran(n):
+        try:
+            return settle(drv, n, 5)
+        except RuntimeError:
+            return n        # (no run: the check fails)
+
+    for kind, want in (('rotate', ('[-45,28]', '[-35,28]')),
+                       ('point', None)):
+        x, y = drv.execute_script(WHERE, kind)
+        mouse(drv, 'mouseMoved', x, y, 0)
+        mouse(drv, 'mousePressed', x, y, 1)
+        time.sleep(0.6)
+        n = settle(drv, n - 1)
+        drv.execute_script(move, 'pointerrawupdate', x - 25, y)
+        m = ran(n)
+        first = state(drv)['view']
+        # the browser's pointermove of that move, at its next frame
+        drv.execute_script(move, 'pointermove', x - 25, y)
+        time.sleep(0.5)
+        again = lb.runs(drv)
+        lb.check(m == n + 1 and again == m and
+                 (want is None or first == want[0]),
+                 '%s: a pointerrawupdate 25 px left ran the script (%d '
+                 'run(s)%s), the pointermove of the same place after it '
+                 'ran nothing (%d)' % (kind, m - n, ', view %s' % first
+                                       if want else '', again - m))
+        drv.execute_script(move, 'pointermove', x - 50, y)
+        n = ran(m)
+        lb.check(n == m + 1 and (want is None or
+                                 state(drv)['view'] == want[1]),
+                 '%s: a pointermove alone (a pointer without raw updates) '
+                 'moves it too (%d run(s)%s)'
+                 % (kind, n - m, ', view %s' % state(drv)['view']
+                    if want else ''))
+        mouse(drv, 'mouseReleased', x, y, 0)
+        time.sleep(0.6)
+        n = settle(drv, n - 1)
+    return n
 
 
 def release_once(drv, n):

@@ -226,8 +226,8 @@ part_box(const cf_scene_t *sc, const cf_bezier_t *c, double ta, double tb,
         if (!(g[3] > 0.0))
             return false;
         for (int e = 0; e < 3; e++) {
-            lo[e] = fmin(lo[e], g[e] / g[3]);
-            hi[e] = fmax(hi[e], g[e] / g[3]);
+            lo[e] = cf__fmin(lo[e], g[e] / g[3]);
+            hi[e] = cf__fmax(hi[e], g[e] / g[3]);
         }
     }
     return true;
@@ -248,8 +248,8 @@ uv_extend(const cf_bezier_t *uv, double a, double b, double *box)
             double x = h[i][e] / h[i][3];
             if (!isfinite(x))
                 return false;
-            box[2 * e] = fmin(box[2 * e], x);
-            box[2 * e + 1] = fmax(box[2 * e + 1], x);
+            box[2 * e] = cf__fmin(box[2 * e], x);
+            box[2 * e + 1] = cf__fmax(box[2 * e + 1], x);
         }
     }
     return true;
@@ -273,8 +273,8 @@ part_uv(const vcurve_t *vc, size_t k, double ta, double tb, double *box)
         double T0 = vc->uvl->t0[j], T1 = vc->uvl->t1[j];
         if (!(T1 > T0) || T1 <= ga || T0 >= gb)
             continue;
-        if (!uv_extend(vc->uvl->items[j], (fmax(ga, T0) - T0) / (T1 - T0),
-                       (fmin(gb, T1) - T0) / (T1 - T0), box))
+        if (!uv_extend(vc->uvl->items[j], (cf__fmax(ga, T0) - T0) / (T1 - T0),
+                       (cf__fmin(gb, T1) - T0) / (T1 - T0), box))
             return false;
         any = true;
     }

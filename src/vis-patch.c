@@ -86,11 +86,15 @@ tensor_k(const double *net, int m, int n, double s, double t, int k,
     double Bu[3][CF__VIS_MAX_DEG + 1], Bv[3][CF__VIS_MAX_DEG + 1];
     static const int oa[6] = {0, 1, 0, 2, 1, 0}, ob[6] = {0, 0, 1, 0, 1, 2};
     int ne = k >= 2 ? 6 : k >= 1 ? 3 : 1, nb = k >= 2 ? 3 : k + 1;
+    /* the sums in S, not in the caller's A: a local array the unrolled
+    ** loops keep in registers (A's zeroing was a call of memset in the
+    ** WebAssembly module, 3 % of its exact run) */
+    double S[6][4];
     bernstein(m, s, k, Bu);
     bernstein(n, t, k, Bv);
     for (int e = 0; e < ne; e++)
         for (int c = 0; c < 4; c++)
-            A[e][c] = 0.0;
+            S[e][c] = 0.0;
     for (int i = 0; i <= m; i++) {
         double R[3][4];
         const double *row = net + (size_t)i * ((size_t)n + 1) * 4;
@@ -103,8 +107,11 @@ tensor_k(const double *net, int m, int n, double s, double t, int k,
                     R[b][c] += Bv[b][j] * row[4 * j + c];
         for (int e = 0; e < ne; e++)
             for (int c = 0; c < 4; c++)
-                A[e][c] += Bu[oa[e]][i] * R[ob[e]][c];
+                S[e][c] += Bu[oa[e]][i] * R[ob[e]][c];
     }
+    for (int e = 0; e < ne; e++)
+        for (int c = 0; c < 4; c++)
+            A[e][c] = S[e][c];
 }
 
 /* tensor_k specialised for degrees 0 to 3 each way (those of nearly
@@ -132,15 +139,112 @@ TENSOR_K(3, 0) TENSOR_K(3, 1) TENSOR_K(3, 2)
 ** hidden-line run's time (Newton's steps in cf__vpatch_locate): one copy
 ** per x86-64 level (CF__CLONED), whose four components go through the
 ** wider vectors of the level, the same operations on each. */
+#if defined(__wasm_simd128__)
+/* In the WebAssembly module (wasm SIMD): tensor_k's sums for degrees
+** (3, 3), a point's four components as two pairs (x, y) and (z, w) in
+** f64x2 vectors, the same multiplications and additions in the same order
+** (simd128 has no fused multiply-add), so the same bits; the compiler's
+** own vectorising of tensor_k moved half of them through scalar lanes. */
+typedef double v2d __attribute__((vector_size(16)));
+
+CF__INLINE v2d
+v2d_load(const double *p)
+{
+    v2d v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+CF__INLINE void
+tensor_33_sums(const double *net, double s, double t, int k, v2d S[6][2])
+{
+    double Bu[3][CF__VIS_MAX_DEG + 1], Bv[3][CF__VIS_MAX_DEG + 1];
+    static const int oa[6] = {0, 1, 0, 2, 1, 0}, ob[6] = {0, 0, 1, 0, 1, 2};
+    int ne = k >= 2 ? 6 : k >= 1 ? 3 : 1, nb = k >= 2 ? 3 : k + 1;
+    bernstein(3, s, k, Bu);
+    bernstein(3, t, k, Bv);
+    for (int e = 0; e < ne; e++)
+        S[e][0] = S[e][1] = (v2d){0.0, 0.0};
+    for (int i = 0; i <= 3; i++) {
+        v2d R[3][2];
+        const double *row = net + (size_t)i * 16;
+        for (int b = 0; b < nb; b++)
+            R[b][0] = R[b][1] = (v2d){0.0, 0.0};
+        for (int j = 0; j <= 3; j++) {
+            v2d p0 = v2d_load(row + 4 * j), p1 = v2d_load(row + 4 * j + 2);
+            for (int b = 0; b < nb; b++) {
+                v2d c = {Bv[b][j], Bv[b][j]};
+                R[b][0] += c * p0;
+                R[b][1] += c * p1;
+            }
+        }
+        for (int e = 0; e < ne; e++) {
+            v2d c = {Bu[oa[e]][i], Bu[oa[e]][i]};
+            S[e][0] += c * R[ob[e]][0];
+            S[e][1] += c * R[ob[e]][1];
+        }
+    }
+}
+
+CF__INLINE void
+tensor_33_pairs(const double *net, double s, double t, int k, double A[6][4])
+{
+    v2d S[6][2];
+    int ne = k >= 2 ? 6 : k >= 1 ? 3 : 1;
+    tensor_33_sums(net, s, t, k, S);
+    for (int e = 0; e < ne; e++)
+        memcpy(A[e], S[e], sizeof S[e]);
+}
+
+/* cf__vpatch_eval of a bicubic patch with k <= 1 in pairs: the point and
+** its first derivatives, (x, y) in a vector, z alone, the operations of
+** cf__vpatch_eval below. */
+CF__NO_COVERAGE static bool
+eval_33_pairs(const double *net, double s, double t, int k, double *out)
+{
+    v2d S[6][2];
+    if (k <= 0)
+        tensor_33_sums(net, s, t, 0, S);
+    else
+        tensor_33_sums(net, s, t, 1, S);
+    double w = S[0][1][1];
+    if (!(w > 0.0))
+        return false;
+    v2d w2 = {w, w}, P = S[0][0] / w2;
+    double Pz = S[0][1][0] / w;
+    memcpy(out, &P, sizeof P);
+    out[2] = Pz;
+    if (k <= 0)
+        return true;
+    double ws = S[1][1][1], wt = S[2][1][1];
+    v2d ws2 = {ws, ws}, wt2 = {wt, wt};
+    v2d Ps = (S[1][0] - ws2 * P) / w2, Pt = (S[2][0] - wt2 * P) / w2;
+    memcpy(out + 3, &Ps, sizeof Ps);
+    out[5] = (S[1][1][0] - ws * Pz) / w;
+    memcpy(out + 6, &Pt, sizeof Pt);
+    out[8] = (S[2][1][0] - wt * Pz) / w;
+    return true;
+}
+#endif
+
 CF__INLINE void
 tensor_33_body(const double *net, double s, double t, int k, double A[6][4])
 {
+#if defined(__wasm_simd128__)
+    if (k <= 0)
+        tensor_33_pairs(net, s, t, 0, A);
+    else if (k == 1)
+        tensor_33_pairs(net, s, t, 1, A);
+    else
+        tensor_33_pairs(net, s, t, 2, A);
+#else
     if (k <= 0)
         tensor_k(net, 3, 3, s, t, 0, A);
     else if (k == 1)
         tensor_k(net, 3, 3, s, t, 1, A);
     else
         tensor_k(net, 3, 3, s, t, 2, A);
+#endif
 }
 #ifdef CF__LEVELS
 CF__CLONED(void, tensor_33,
@@ -236,6 +340,10 @@ cf__vpatch_eval(const cf__vpatch_t *p, const double *net, double s,
                 double t, int k, double *out)
 {
     double A[6][4];
+#if defined(__wasm_simd128__)
+    if (!p->tri && p->m == 3 && p->n == 3 && k <= 1)
+        return eval_33_pairs(net, s, t, k, out);
+#endif
     if (p->tri)
         tri_h(p, net, s, t, k, A);
     else

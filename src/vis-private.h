@@ -38,22 +38,39 @@
 #define CF__VIS_TRI_MAX_DEG 24
 
 /*
-** Whether hypot(x, y) <= r, with hypot's answer: decided by x^2 + y^2
+** hypot(x, y) against r, with hypot's answer: decided by x^2 + y^2
 ** against r^2 where these are normal numbers more than 1e-12 apart
 ** relatively (their rounding, a few units in the last place, cannot turn
-** the answer there), by hypot elsewhere.  The hot loops' norms.
+** the answer there), by hypot elsewhere.  The hot loops' norms:
+** cf__hypot_le is hypot(x, y) <= r, cf__hypot_gt is hypot(x, y) > r (the
+** two differ where hypot is a NaN).  cf__hypot_sign: -1 where hypot is
+** below r, 1 where above, 0 where the squares cannot tell.
 */
-CF__INLINE bool
-cf__hypot_le(double x, double y, double r)
+CF__INLINE int
+cf__hypot_sign(double x, double y, double r)
 {
     double q = x * x + y * y, r2 = r * r;
     if (q > 1e-280 && q < 1e280 && r2 > 1e-280 && r2 < 1e280) {
         if (q < r2 * (1.0 - 1e-12))
-            return true;
+            return -1;
         if (q > r2 * (1.0 + 1e-12))
-            return false;
+            return 1;
     }
-    return hypot(x, y) <= r;
+    return 0;
+}
+
+CF__INLINE bool
+cf__hypot_le(double x, double y, double r)
+{
+    int c = cf__hypot_sign(x, y, r);
+    return c != 0 ? c < 0 : hypot(x, y) <= r;
+}
+
+CF__INLINE bool
+cf__hypot_gt(double x, double y, double r)
+{
+    int c = cf__hypot_sign(x, y, r);
+    return c != 0 ? c > 0 : hypot(x, y) > r;
 }
 
 /* The length of (x, y) for measures that steer the subdivision (a net's

@@ -25,7 +25,7 @@ newton(const cf_scene_t *sc, size_t ip, const double *img, double *sp,
 {
     const cf__vpatch_t *p = &sc->patches[ip];
     double D[18], s = *sp, t = *tp;
-    double scale = fmax(sc->size, 1e-300);
+    double scale = cf__fmax(sc->size, 1e-300);
     for (int it = *itp; it < NEWTON_STEPS; it++) {
         if (it == until) {
             *sp = s;
@@ -64,7 +64,7 @@ newton(const cf_scene_t *sc, size_t ip, const double *img, double *sp,
         if (fabs(ds) + fabs(dt) <= 1e-15 && it > 2) {
             if (!cf__vpatch_eval(p, p->g, s, t, 0, D))
                 return 0;
-            if (hypot(img[0] - D[0], img[1] - D[1]) > 1e-9 * scale)
+            if (cf__hypot_gt(img[0] - D[0], img[1] - D[1], 1e-9 * scale))
                 return 0;
             st[0] = s;
             st[1] = t;
@@ -139,7 +139,7 @@ static bool
 fold_small(const cf_scene_t *sc, const cf__vleaf_t *l, double zmin)
 {
     return l->lo[2] > zmin &&
-           hypot(l->hi[0] - l->lo[0], l->hi[1] - l->lo[1]) <= sc->tol;
+           cf__hypot_le(l->hi[0] - l->lo[0], l->hi[1] - l->lo[1], sc->tol);
 }
 
 bool
@@ -203,8 +203,8 @@ own_sheet(const cf_scene_t *sc, const cf__vself_t *self, const double *q,
             return false;
         if (!cf__vpatch_eval(&sc->patches[ip], sc->patches[ip].g, s, t, 0, D))
             return false;
-        if (hypot(D[0] - q[0], D[1] - q[1]) >
-            2.0 * self->offset + 1e-9 * sc->size)
+        if (cf__hypot_gt(D[0] - q[0], D[1] - q[1],
+                         2.0 * self->offset + 1e-9 * sc->size))
             return false;
     }
     return true;
@@ -228,7 +228,7 @@ cf__scene_hidden(const cf_scene_t *sc, const double *q,
     uint32_t stack[STACK];
     size_t top = 0;
     double zmin = q[2] + margin(sc, q[2]);
-    double scale = fmax(sc->size, 1e-300);
+    double scale = cf__fmax(sc->size, 1e-300);
     if (sc->nnode == 0)
         return false;
     stack[top++] = 0;
@@ -317,10 +317,10 @@ static void
 leaf_uv(const cf__vpatch_t *p, const cf__vleaf_t *l, double *b)
 {
     if (p->tri) {
-        b[0] = fmin(l->r[0], fmin(l->r[2], l->r[4]));
-        b[1] = fmax(l->r[0], fmax(l->r[2], l->r[4]));
-        b[2] = fmin(l->r[1], fmin(l->r[3], l->r[5]));
-        b[3] = fmax(l->r[1], fmax(l->r[3], l->r[5]));
+        b[0] = cf__fmin(l->r[0], cf__fmin(l->r[2], l->r[4]));
+        b[1] = cf__fmax(l->r[0], cf__fmax(l->r[2], l->r[4]));
+        b[2] = cf__fmin(l->r[1], cf__fmin(l->r[3], l->r[5]));
+        b[3] = cf__fmax(l->r[1], cf__fmax(l->r[3], l->r[5]));
         return;
     }
     b[0] = p->u0 + l->r[0] * (p->u1 - p->u0);
@@ -412,8 +412,8 @@ cf__scene_box_clear_on(const cf_scene_t *sc, const double *lo,
                 if (uv_meet(b, uv, zero)) {
                     if (!own_ok(sc, &no, i, zero))
                         return false;
-                    no.w[0] = fmax(no.w[0], b[1] - b[0]);
-                    no.w[1] = fmax(no.w[1], b[3] - b[2]);
+                    no.w[0] = cf__fmax(no.w[0], b[1] - b[0]);
+                    no.w[1] = cf__fmax(no.w[1], b[3] - b[2]);
                     continue;
                 }
                 if (l->hi[2] > zmin) {

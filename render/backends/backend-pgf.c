@@ -21,6 +21,7 @@
 
 #include "backend.h"
 #include "buffer.h"
+#include "decimals.h"
 #include "label-cairo.h"
 
 #define PI 3.14159265358979323846
@@ -37,21 +38,13 @@ static void
 put_num(cf__pgf_t *g, double v)
 {
     char b[48];
-    size_t n;
     if (!(fabs(v) <= PGF_MAX_BP)) {
         if (!g->range_error)
             g->bad_value = v;
         g->range_error = true;
         v = 0;
     }
-    snprintf(b, sizeof b, "%.4f", v);
-    n = strlen(b);
-    while (n > 0 && b[n - 1] == '0')
-        n--;
-    if (n > 0 && b[n - 1] == '.')
-        n--;
-    b[n] = '\0';
-    put(g, strcmp(b, "-0") == 0 ? "0" : b);
+    cf__buf_append(g->out, b, cf__decimals(b, v, 4));
 }
 
 static void

@@ -19,6 +19,7 @@
 
 #include "backend.h"
 #include "buffer.h"
+#include "decimals.h"
 #include "grow.h"
 
 #define PI 3.14159265358979323846
@@ -32,18 +33,12 @@ put(cf__svgw_t *w, const char *s)
 int
 cf__svg_put_num(struct cf__buf *b, double v)
 {
-    char t[40];
-    int n;
+    char t[48];
+    size_t n;
     if (!isfinite(v) || fabs(v) > 1e9)
         return -1;
-    n = snprintf(t, sizeof t, "%.3f", v);
-    while (n > 0 && t[n - 1] == '0')
-        t[--n] = '\0';
-    if (n > 0 && t[n - 1] == '.')
-        t[--n] = '\0';
-    if (strcmp(t, "-0") == 0)
-        strcpy(t, "0");
-    return cf__buf_append(b, t, strlen(t));
+    n = cf__decimals(t, v, 3);
+    return cf__buf_append(b, t, n);
 }
 
 /* The first fault of w, of kind k (a number: v, in the innermost

@@ -18,7 +18,8 @@
 **     over the pattern's matrix's scale factors, point size, synthetic
 **     slant of the matrix; its cairo scaled font: the pattern's face
 **     (cairo_ft_font_face_create_for_pattern), the matrix (y down) times
-**     the pixel size, identity device matrix, the renderer's options;
+**     the pixel size, identity device matrix, the renderer's options
+**     (glyph positions not rounded, as a PDF's: see the_options);
 **     the logical height of its glyphs: HarfBuzz's ascender and
 **     descender (pango-cairo's glyph extents, metrics unhinted).
 ** A font with variation axes or font features from the configuration is
@@ -34,6 +35,7 @@
 #include <string.h>
 
 #include <cairo-ft.h>
+#include <cairo-pdf.h>
 #include <hb-ot.h>
 
 #include "font-faces.h"
@@ -151,6 +153,52 @@ renderer_options(void)
     cairo_font_options_set_hint_style(fo, CAIRO_HINT_STYLE_NONE);
     cairo_font_options_set_antialias(fo, CAIRO_ANTIALIAS_GRAY);
     return fo;
+}
+
+/* A stream that refuses every byte: the surface read below for its
+** options stops at its first write when it is destroyed. */
+static cairo_status_t
+no_output(void *closure, const unsigned char *data, unsigned int length)
+{
+    (void)closure;
+    (void)data;
+    (void)length;
+    return CAIRO_STATUS_WRITE_ERROR;
+}
+
+/* The options of the faces' scaled fonts (face_opts): the renderer's,
+** with glyph positions not rounded, as a PDF or PostScript surface asks
+** (cairo's API cannot set that: they are read from a PDF surface).  Only
+** rounding on changes a number, so the layout's numbers are those of the
+** renderer's options alone; but a label shown on a PDF or PS surface,
+** whose scaled font cairo makes from that surface's options and the
+** renderer's, then finds this same scaled font in cairo's cache, its
+** glyphs' metrics and outlines loaded, rather than making another that
+** loads each glyph twice more (markova-2.17's PDF: 45 FreeType glyph
+** loads before, 27 now).  A glyph is shown with the renderer's options
+** (show_opts, cf__font_face_t.show_options), so that an image surface
+** rounds its position as before. */
+static cairo_font_options_t *face_opts, *show_opts;
+
+static bool
+the_options(void)
+{
+    cairo_surface_t *pdf;
+    if (face_opts != NULL)
+        return true;
+    show_opts = renderer_options();
+    face_opts = cairo_font_options_create();
+    pdf = cairo_pdf_surface_create_for_stream(no_output, NULL, 1, 1);
+    cairo_surface_get_font_options(pdf, face_opts);
+    cairo_surface_destroy(pdf);
+    cairo_font_options_merge(face_opts, show_opts);
+    if (cairo_font_options_status(face_opts) == CAIRO_STATUS_SUCCESS
+        && cairo_font_options_status(show_opts) == CAIRO_STATUS_SUCCESS)
+        return true;
+    cairo_font_options_destroy(face_opts);
+    cairo_font_options_destroy(show_opts);
+    face_opts = show_opts = NULL;
+    return false;
 }
 
 static FcPattern *
@@ -430,7 +478,6 @@ cf__nface_scaled(cf__nface_t *f)
 {
     cairo_font_face_t *ff;
     cairo_matrix_t fm, gravity, m, ctm;
-    cairo_font_options_t *fo;
     FcMatrix fc;
     double size;
     if (f->scaled != NULL)
@@ -444,15 +491,16 @@ cf__nface_scaled(cf__nface_t *f)
     cairo_matrix_init_rotate(&gravity, 0);   /* gravity south */
     cairo_matrix_multiply(&m, &fm, &gravity);
     cairo_matrix_init_identity(&ctm);
-    fo = renderer_options();
+    if (!the_options())
+        return NULL;
     ff = cairo_ft_font_face_create_for_pattern(f->pattern);
-    f->scaled = cairo_scaled_font_create(ff, &m, &ctm, fo);
+    f->scaled = cairo_scaled_font_create(ff, &m, &ctm, face_opts);
     cairo_font_face_destroy(ff);
-    cairo_font_options_destroy(fo);
     if (cairo_scaled_font_status(f->scaled) != CAIRO_STATUS_SUCCESS) {
         cairo_scaled_font_destroy(f->scaled);
         f->scaled = NULL;
     }
     f->face.scaled = f->scaled;
+    f->face.show_options = show_opts;
     return f->scaled;
 }

@@ -73,6 +73,8 @@ draw_span(cairo_t *cr, const cf__font_glyphs_t *g, const cf__font_span_t *s,
     if (sf == NULL || cairo_scaled_font_status(sf) != CAIRO_STATUS_SUCCESS)
         goto done;   /* pango draws boxes there: such runs stay pango's */
     cairo_set_scaled_font(cr, sf);
+    if (!path && s->face->show_options != NULL)
+        cairo_set_font_options(cr, s->face->show_options);
     if (s->nglyphs > STACK_GLYPHS) {
         cg = cf_alloc_array(s->nglyphs, sizeof *cg);
         cc = cf_alloc_array(s->nglyphs, sizeof *cc);

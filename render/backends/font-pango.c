@@ -112,6 +112,7 @@ add_face(pango_run_t *r, PangoFont *font)
         pango_cairo_font_get_scaled_font(PANGO_CAIRO_FONT(font));
     r->faces[r->nfaces].key = r->keys[r->nfaces];
     r->faces[r->nfaces].outlines = NULL;   /* pango's fonts come and go */
+    r->faces[r->nfaces].show_options = NULL;
     r->nfaces++;
     return true;
 }

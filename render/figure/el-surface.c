@@ -320,10 +320,16 @@ build(cf_figure_t *fig, surface_el_t *e, double tol)
     if (cf__tol_serves(fig, e->cache_tol, tol))
         return CF_STATUS_OK;
     drop_cache(e);
-    tol = cf__tol_make(fig, tol);
     /* split points to 20 times the fitting tolerance: 0.2 bp (0.07 mm) by
-    ** default, where 0.05 bp took 5 times as long on a torus */
-    st = need ? cf__figure_scene(fig, 20 * tol, &sc) : CF_STATUS_OK;
+    ** default, where 0.05 bp took 5 times as long on a torus; the scene
+    ** makes its own (cf__tol_make: at the refits' factor as the lines,
+    ** not its square; at the rough first refit a hundred times tol, as
+    ** before) */
+    double made = cf__tol_make(fig, tol);
+    st = need ? cf__figure_scene(fig, 20 * (fig->refit_rough ? made : tol),
+                                 &sc)
+              : CF_STATUS_OK;
+    tol = made;
     for (size_t i = 0; st == CF_STATUS_OK && i < e->lines.n; i++)
         st = draw_line(fig, e, sc, e->lines.items[i].bez,
                        e->lines.items[i].uv, 0.0, e->lines.items[i].family);

@@ -192,6 +192,9 @@ struct cf_figure {
                                 cropped to its ink (layout.c) */
     bool refit_rough;        /* the first of them in an exact run: surfaces
                                 made as for a draft (cf__tol_make) */
+    double refit_drop;       /* at the second: how far the layout's
+                                tolerance fell from the first's, relative
+                                (0: it did not; cf__tol_make) */
     bool clip_page;          /* ink outside the page is cut, not an error */
     size_t proj_dim;
     double *proj;            /* 2 x proj_dim */

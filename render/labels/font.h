@@ -61,6 +61,9 @@ typedef struct cf__font_face {
     void *outlines;        /* NULL, or a cache of its glyphs' outlines
                               for a face that lives as long as the
                               process (render/backends/font-glyphs.h) */
+    void *show_options;    /* NULL, or the cairo_font_options_t its
+                              glyphs are shown with, not its scaled
+                              font's (render/backends/font-faces.c) */
 } cf__font_face_t;
 
 typedef struct cf__font_glyph {

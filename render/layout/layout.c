@@ -305,7 +305,7 @@ labels_off_page(cf_figure_t *fig, const cf__layout_t *lay)
 cf_status_t
 cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
 {
-    double win[4], avail[4], ink[4], m = fig->margin;
+    double win[4], avail[4], ink[4], m = fig->margin, tol0 = 0.0;
     cf__bounds_t b;
     bool keep, refine = fig->page_mode == CF_PAGE_INK && fig->panels == NULL;
     size_t i;
@@ -372,8 +372,13 @@ cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
         ** cf__tol_serves) */
         fig->refitting = refine;
         fig->refit_rough = refine && pass == 0 && !fig->draft;
+        if (pass == 0)
+            tol0 = lay->tol;
+        fig->refit_drop = pass == 1 && tol0 > lay->tol
+                              ? (tol0 - lay->tol) / lay->tol : 0.0;
         st = ink_of(fig, lay, refine, ink);
         fig->refitting = fig->refit_rough = false;
+        fig->refit_drop = 0.0;
         if (st != CF_STATUS_OK)
             return fig->err.status;
         make_room(fig, win, ink, lay, avail);

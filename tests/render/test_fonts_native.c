@@ -19,6 +19,7 @@
 
 #include <cairo-ft.h>
 #include <cairo-pdf.h>
+#include <cairo-ps.h>
 #include <cmocka.h>
 
 #include "curvefig/label.h"
@@ -523,6 +524,75 @@ test_outlines_where_drawn(void **state)
     close_pair(&p);
 }
 
+static cairo_status_t
+no_sink(void *u, const unsigned char *data, unsigned n)
+{
+    (void)u;
+    (void)data;
+    (void)n;
+    return CAIRO_STATUS_SUCCESS;
+}
+
+/* The scaled font cairo shows a native span's glyphs with on surface s,
+** set as cf__font_glyphs_draw sets it. */
+static cairo_scaled_font_t *
+shown_with(cairo_surface_t *s, const cf__font_span_t *span)
+{
+    cairo_t *cr = cairo_create(s);
+    cairo_scaled_font_t *sf;
+    cairo_set_scaled_font(cr, span->face->scaled);
+    assert_non_null(span->face->show_options);
+    cairo_set_font_options(cr, span->face->show_options);
+    sf = cairo_get_scaled_font(cr);
+    cairo_destroy(cr);
+    return sf;
+}
+
+/* A label shown on a PDF or PostScript surface uses the very scaled font
+** its layout measured and outlined (cairo found it in its cache): its
+** glyphs are not loaded again by FreeType for another scaled font of the
+** same numbers (markova-2.17's PDF: 27 glyph loads, not 45).  On an image
+** surface, whose glyph positions are rounded, it is another (the glyphs
+** where they were drawn before: the same PNG bytes). */
+static void
+test_shown_with_layout_font(void **state)
+{
+    void *ctx = cf__native_fonts.open(cf__native_fonts.self), *run = NULL;
+    cf__font_req_t req;
+    cf__font_shape_t sh;
+    const cf__font_glyphs_t *g;
+    cairo_surface_t *pdf, *ps, *img;
+    size_t i;
+    (void)state;
+    assert_non_null(ctx);
+    req.family = MATH;
+    req.italic = true;
+    req.bold = false;
+    req.size = 10;
+    req.text = "P";
+    req.len = 1;
+    assert_int_equal(cf__native_fonts.shape(ctx, &req, &run, &sh), 0);
+    assert_false(cf__native_fonts_used_pango(run));
+    g = cf__native_fonts.glyphs(run);
+    assert_true(g->nspans > 0);
+    pdf = cairo_pdf_surface_create_for_stream(no_sink, NULL, 100, 100);
+    ps = cairo_ps_surface_create_for_stream(no_sink, NULL, 100, 100);
+    img = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 10, 10);
+    for (i = 0; i < g->nspans; i++) {
+        assert_ptr_equal(shown_with(pdf, &g->spans[i]),
+                         g->spans[i].face->scaled);
+        assert_ptr_equal(shown_with(ps, &g->spans[i]),
+                         g->spans[i].face->scaled);
+        assert_ptr_not_equal(shown_with(img, &g->spans[i]),
+                             g->spans[i].face->scaled);
+    }
+    cairo_surface_destroy(pdf);
+    cairo_surface_destroy(ps);
+    cairo_surface_destroy(img);
+    cf__native_fonts.release(run);
+    cf__native_fonts.close(ctx);
+}
+
 /* printf's "%.5g" read back by strtod: the reference. */
 static double
 five_digits_by_text(double v)
@@ -592,6 +662,7 @@ main(int argc, char **argv)
         cmocka_unit_test(test_no_font),
         cmocka_unit_test(test_labels),
         cmocka_unit_test(test_outlines_where_drawn),
+        cmocka_unit_test(test_shown_with_layout_font),
         cmocka_unit_test(test_five_digits),
     };
     if (argc < 2) {

@@ -20,9 +20,9 @@ events, so that the page sees real pointer events with their capture):
   key       (a 3D figure) turned by MOVES presses of the arrow keys, each
             an exact run at once, each awaited.
 
-Each move is sent after a pause of up to a frame (1/60 s, seeded
-random), as a reader's pointer comes at any time within a frame, and
-timed from the event (its timeStamp, the page's clock) to
+Each move, release and key press is sent after a pause of up to a frame
+(1/60 s, seeded random), as a reader's input comes at any time within a
+frame, and timed from the event (its timeStamp, the page's clock) to
 the reply shown in the document (root.dataset.runs grown, busy "0");
 "move" are these times (the page asks for a draft while the pointer is
 down: docs/interactive.md, "Drafts"), "release" the time from the
@@ -54,10 +54,12 @@ import time
 
 TARGET_MEDIAN, TARGET_P95 = 30, 60
 
-# A reader's pointer is not in step with the page's frames: each move is
-# sent after a pause of up to a frame (60 Hz), drawn from a seeded
-# sequence (Chromium holds a pointermove until its next frame; a bench
-# that moves right after a frame is drawn would always find it ahead).
+# A reader's pointer and keys are not in step with the page's frames:
+# each move, release and key press is sent after a pause of up to a frame
+# (60 Hz), drawn from a seeded sequence (Chromium holds a pointermove
+# until its next frame, and paints a drawing at the next frame after it
+# is in the document; a bench that sends each event right after a frame
+# was drawn would always find the next one at the same distance).
 PHASE = random.Random(28)
 
 # Once per page: the time of the last input event and of the last reply
@@ -197,6 +199,7 @@ def drag(drv, kind, moves):
             out.append(r)
             drafts += r[1] == '1'
     drv.execute_script(ARM)
+    time.sleep(PHASE.uniform(0, 1 / 60))
     mouse(drv, 'mouseReleased', x, y, 0)
     # (a page that drew no draft runs nothing on the release)
     r = drv.execute_async_script(AWAIT, 30000 if drafts else 1000)
@@ -217,6 +220,7 @@ def keys(drv, presses):
                      else ('ArrowRight', 39))
         quiet(drv)
         drv.execute_script(ARM)
+        time.sleep(PHASE.uniform(0, 1 / 60))
         for kind in ('rawKeyDown', 'keyUp'):
             drv.execute_cdp_cmd('Input.dispatchKeyEvent', {
                 'type': kind, 'key': key, 'code': key,

@@ -19,6 +19,7 @@
 //   lastFigures()  the figures of the last reply shown
 //   drag()         the handle being dragged, or null
 //   request()      run the script again with the values and views
+//   moves          the names of the pointer's move events to listen to
 //   hold(), release()   keep the figures' layout while a move goes on,
 //                  and let it go
 function CurvefigRotate(host) {
@@ -168,7 +169,9 @@ function CurvefigRotate(host) {
   }
 
   figures.addEventListener('pointerdown', rotateStart);
-  window.addEventListener('pointermove', rotateMove);
+  host.moves.forEach(function (t) {    // (turn() runs nothing twice)
+    window.addEventListener(t, rotateMove);
+  });
   window.addEventListener('pointerup', rotateEnd);
   window.addEventListener('pointercancel', rotateEnd);
   figures.addEventListener('keydown', rotateKey);

@@ -394,14 +394,17 @@ function CurvefigPage(root, engine) {
 
   var held = null;   // figure name -> { m, vb, w, h } while a move goes on
 
-  // A move began: every figure keeps the map and view it shows now.
+  // A move began: every figure keeps the map and view it shows now (the
+  // map its box was drawn with: a draft still held after a release, its
+  // exact run under way, is drawn in the map of the move before).
   function hold() {
     if (held || !lastFigures) return;
     held = {};
     figures.querySelectorAll('.cf-figure').forEach(function (box, k) {
       var svg = box.querySelector('svg'), f = lastFigures[k];
       if (!svg || !f) return;
-      held[f.name] = { m: f.to_svg, vb: svg.getAttribute('viewBox'),
+      var m = JSON.parse(box.getAttribute('data-to-svg') || 'null');
+      held[f.name] = { m: m || f.to_svg, vb: svg.getAttribute('viewBox'),
                        w: svg.getAttribute('width'),
                        h: svg.getAttribute('height') };
     });
@@ -465,12 +468,36 @@ function CurvefigPage(root, engine) {
   var HANDLE_R = 7;    // the disc that takes the pointer, SVG units (bp)
   var RING_R = 3.2;    // the ring shown: inside a label's 4 bp offset
 
+  // Box fresh, built for a redraw, put in place of the box shown (the
+  // same figure's): its attributes and content moved into it, so that the
+  // element stays and keeps the keyboard's focus.  (A focused box taken
+  // out of the document loses the focus, and focus() on the new one
+  // recomputes the page's style and layout at once, a millisecond or two
+  // of every turn by a key, which the frame then does again.)
+  function adopt(box, fresh) {
+    Array.prototype.slice.call(box.attributes).forEach(function (at) {
+      if (!fresh.hasAttribute(at.name)) box.removeAttribute(at.name);
+    });
+    Array.prototype.forEach.call(fresh.attributes, function (at) {
+      if (box.getAttribute(at.name) !== at.value)
+        box.setAttribute(at.name, at.value);
+    });
+    box.textContent = '';
+    while (fresh.firstChild) box.appendChild(fresh.firstChild);
+  }
+
   function showFigures(list) {
     var a = document.activeElement;   // a figure keeps the keyboard focus
     var focusedBox = a && a.classList && a.classList.contains('cf-figure') &&
       figures.contains(a) ? a.id.slice(10) : null;
     var focused = keys.focusedHandle();      // ... or a handle
-    figures.textContent = '';
+    // the same figures as shown (every redraw but the first and a
+    // script's change): their boxes stay, their content is replaced
+    var shown = figures.children;
+    var same = shown.length === list.length && list.every(function (f, k) {
+      return shown[k].id === 'cf-figure-' + f.name;
+    });
+    if (!same) figures.textContent = '';
     list.forEach(function (fig, k) {
       var box = el('div', { class: 'cf-figure', id: 'cf-figure-' + fig.name });
       box.innerHTML = uniqueIds(fig.svg, k);
@@ -509,11 +536,12 @@ function CurvefigPage(root, engine) {
         svg.appendChild(c);
         svg.appendChild(ring);
       });
-      figures.appendChild(box);
+      if (same) adopt(shown[k], box);
+      else figures.appendChild(box);
     });
     if (focusedBox !== null) {
       var again = document.getElementById('cf-figure-' + focusedBox);
-      if (again) again.focus();
+      if (again && again !== document.activeElement) again.focus();
     }
     keys.refocus(focused);
   }
@@ -548,12 +576,17 @@ function CurvefigPage(root, engine) {
     if (!(p.constrain && p.constrain.grid)) d = roundPoint(drag.fig, d);
     var s = toSvg(drag.fig, d[0], d[1]);
     place(drag.circle, s[0], s[1]);
+    var old = values[drag.param][drag.index];
+    if (old && old[0] === d[0] && old[1] === d[1]) return;  // (seen twice)
     values[drag.param][drag.index] = d;
     request();
   }
 
   // Released: the handles go where the last reply puts them (the map may
-  // have moved with the margins while the point was dragged).
+  // have moved with the margins while the point was dragged).  After a
+  // draft the exact run is sent first and its reply draws them (as
+  // release() does): the draft is not drawn again in its own layout
+  // before the run is even sent.
   function pointerUp() {
     if (sliding) {
       sliding = false;
@@ -563,10 +596,20 @@ function CurvefigPage(root, engine) {
     drag.circle.classList.remove('cf-dragging');
     drag = null;
     held = null;
-    if (!inFlight && lastFigures) showFigures(lastFigures);
     exact();
+    if (!inFlight && lastFigures) showFigures(lastFigures);
   }
-  window.addEventListener('pointermove', pointerMove);
+  // The moves of a drag: 'pointermove', and 'pointerrawupdate' where the
+  // browser has it (in a secure context: a file, localhost), which comes
+  // as soon as the pointer moves, where 'pointermove' waits for the next
+  // frame (on the course page's drags 4 ms at the median, up to 11, of
+  // every move).  A move seen twice (its pointermove after its raw
+  // update, at the same place) changes nothing and runs nothing.
+  var MOVES = ['pointermove'].concat('onpointerrawupdate' in window ?
+                                     ['pointerrawupdate'] : []);
+  MOVES.forEach(function (t) {
+    window.addEventListener(t, pointerMove);
+  });
   window.addEventListener('pointerup', pointerUp);
   window.addEventListener('pointercancel', pointerUp);
 
@@ -574,6 +617,7 @@ function CurvefigPage(root, engine) {
 
   var rotate = CurvefigRotate({
     figures: figures, el: el, request: request, hold: hold, release: release,
+    moves: MOVES,
     views: function () { return views; },
     lastFigures: function () { return lastFigures; },
     drag: function () { return drag; }

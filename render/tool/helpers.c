@@ -51,26 +51,45 @@ try_path(char *out, size_t cap, const char *dir, const char *sub,
     return n > 0 && (size_t)n < cap && access(out, mode) == 0;
 }
 
+/* Append directory d (dir/sub, or d alone) to the list where. */
+static void
+add_where(char *where, size_t cap, const char *dir, const char *sub)
+{
+    size_t n = strlen(where);
+    snprintf(where + n, cap - n, "%s%s%s%s", n > 0 ? ", " : "", dir,
+             sub[0] ? "/" : "", sub);
+}
+
 bool
 cf__tool_find_file(const char *name, const char *build_sub, int mode,
-                   char *out, size_t cap, char *dir, size_t dircap)
+                   char *out, size_t cap, char *where, size_t wherecap)
 {
-    bool have_dir = program_dir(dir, dircap);
-    if (!have_dir)
-        snprintf(dir, dircap, "the program");
-    return (have_dir && try_path(out, cap, dir, build_sub, name, mode)) ||
-           (have_dir && try_path(out, cap, dir, CF_TOOL_LIBEXEC_FROM_BIN,
-                                 name, mode)) ||
-           try_path(out, cap, CF_TOOL_LIBEXEC_DIR, "", name, mode);
+    char dir[PATH_MAX];
+    bool have_dir = program_dir(dir, sizeof dir);
+    where[0] = '\0';
+    if (have_dir) {
+        if (try_path(out, cap, dir, build_sub, name, mode))
+            return true;
+        add_where(where, wherecap, dir, build_sub);
+        if (CF_TOOL_LIBEXEC_FROM_BIN[0] != '\0') {
+            if (try_path(out, cap, dir, CF_TOOL_LIBEXEC_FROM_BIN, name, mode))
+                return true;
+            add_where(where, wherecap, dir, CF_TOOL_LIBEXEC_FROM_BIN);
+        }
+    }
+    if (try_path(out, cap, CF_TOOL_LIBEXEC_DIR, "", name, mode))
+        return true;
+    add_where(where, wherecap, CF_TOOL_LIBEXEC_DIR, "");
+    return false;
 }
 
 int
 cf__tool_run_helper(const char *name, int argc, char **argv)
 {
-    char dir[PATH_MAX], path[PATH_MAX];
+    char where[3 * PATH_MAX], path[PATH_MAX];
     (void)argc;
-    if (cf__tool_find_file(name, "", X_OK, path, sizeof path, dir,
-                           sizeof dir)) {
+    if (cf__tool_find_file(name, "", X_OK, path, sizeof path, where,
+                           sizeof where)) {
         argv[0] = path;
         execv(path, argv);
         fprintf(stderr, "curvefig: %s: cannot run %s: %s\n", argv[1], path,
@@ -78,7 +97,7 @@ cf__tool_run_helper(const char *name, int argc, char **argv)
         return 2;
     }
     fprintf(stderr, "curvefig: %s: this installation of curvefig lacks its "
-            "program %s (looked beside %s and in %s): install curvefig "
-            "again\n", argv[1], name, dir, CF_TOOL_LIBEXEC_DIR);
+            "program %s (looked in %s): install curvefig again\n", argv[1],
+            name, where);
     return 2;
 }

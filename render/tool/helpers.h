@@ -12,13 +12,14 @@
 #define CF__TOOL_LIVE_HELPER "curvefig-live"
 
 /* The file name of the installation (a helper program, the WebAssembly
-** module) into out, where access(mode) allows it: in the directory of
-** the running program, or its subdirectory build_sub (the build tree's
+** module) into out, where access(mode) allows it: in the running
+** program's directory, or its subdirectory build_sub (the build tree's
 ** place; "" for the program's own), then in the libexec directory
-** relative to it, then in the installation's.  false when none is there;
-** dir then names where it looked first (the program's directory). */
+** relative to it (an installation moved whole), then in the
+** installation's.  false when none is there; where then lists the
+** directories looked in, in that order. */
 bool cf__tool_find_file(const char *name, const char *build_sub, int mode,
-                        char *out, size_t cap, char *dir, size_t dircap);
+                        char *out, size_t cap, char *where, size_t wherecap);
 
 /* Replace this process by the helper program name with the same
 ** arguments (argv[1] the command); returns the exit status 2, with a

@@ -107,7 +107,7 @@ put_base64(FILE *f, const unsigned char *b, size_t n)
 static unsigned char *
 read_module(const char *module, size_t *n, char *err, size_t errsize)
 {
-    char path[PATH_MAX], dir[PATH_MAX];
+    char path[PATH_MAX], where[3 * PATH_MAX];
     const char *why;
     unsigned char *b;
     if (module != NULL) {
@@ -117,15 +117,15 @@ read_module(const char *module, size_t *n, char *err, size_t errsize)
             return NULL;
         }
         strcpy(path, module);
-    } else if (!cf__tool_find_file(WASM_NAME, "../web", R_OK, path, sizeof path,
-                            dir, sizeof dir)) {
+    } else if (!cf__tool_find_file(WASM_NAME, "../web", R_OK, path,
+                                   sizeof path, where, sizeof where)) {
         snprintf(err, errsize,
                  "-f html needs the WebAssembly module %s, which is not "
-                 "beside this curvefig (looked in %s, %s/../web and %s): "
-                 "build it (emscripten and Lua 5.4's source: as root, "
-                 "apt-get install emscripten && render/web/lua-source.sh; "
-                 "then meson setup --reconfigure and ninja) or install "
-                 "curvefig again", WASM_NAME, dir, dir, CF_TOOL_LIBEXEC_DIR);
+                 "installed with this curvefig (looked in %s): build it "
+                 "(emscripten and Lua 5.4's source: as root, apt-get "
+                 "install emscripten && render/web/lua-source.sh; then "
+                 "meson setup --reconfigure and ninja) or install curvefig "
+                 "again", WASM_NAME, where);
         return NULL;
     }
     b = (unsigned char *)cf__tool_read_file(path, WASM_MAX, n, &why);

@@ -60,6 +60,23 @@ if [ -n "$tool" ]; then
     "$tool" compare "$root/m.png" "$root/m.png" >/dev/null
     "$tool" help live | grep -q 'curvefig live SCRIPT.lua'
     echo "ok: the installed curvefig renders without the checking and live libraries and runs its helpers"
+    # copied alone elsewhere, it names the directories it looked in for
+    # its WebAssembly module and its helper programs (and only those)
+    mkdir "$root/alone"
+    cp "$tool" "$root/alone/curvefig"
+    status=0
+    "$root/alone/curvefig" render "$root/m.lua" -o "$root/alone" -f html 2> "$root/alone/err" || status=$?
+    if [ "$status" -eq 0 ] || ! grep -q "curvefig.wasm, which is not installed with this curvefig (looked in $root/alone/../web, " "$root/alone/err"; then
+        echo "install-check: the tool alone, -f html: status $status, $(cat "$root/alone/err")" >&2
+        exit 1
+    fi
+    status=0
+    "$root/alone/curvefig" live "$root/m.lua" 2> "$root/alone/err" || status=$?
+    if [ "$status" -ne 2 ] || ! grep -q "lacks its program curvefig-live (looked in $root/alone, " "$root/alone/err"; then
+        echo "install-check: the tool alone, live: status $status, $(cat "$root/alone/err")" >&2
+        exit 1
+    fi
+    echo "ok: the tool copied alone names where it looked for its module and helpers"
 fi
 # The headers in every C standard from C89 on.
 printf '#include <curvefig/curvefig.h>\n#include <curvefig/figure.h>\nint main(void) { return cf_version() == CF_VERSION ? 0 : 1; }\n' > "$root/v.c"

@@ -59,6 +59,7 @@
 //   root.dataset.draft     "1" while the drawing shown is a draft;
 //   root.dataset.runMs     the engine's time of the last run (ms), when
 //                          the engine tells it (the course page's does)
+//   root.dataset.draftAfterMs  DRAFT_AFTER_MS (below)
 //   root.dataset.exactMs   the time of the last exact run, from the request
 //                          to the reply (ms)
 // Drafts: while the pointer drags a slider, a point or a 3D figure whose
@@ -82,9 +83,8 @@ function CurvefigPage(root, engine) {
   var sliding = false;      // the pointer holds a slider
   var draftShown = false;   // the drawing shown (or under way) is a draft
   var DRAFT_AFTER_MS = 20;  // exact runs quicker than this: no drafts
-  var exactMs = 0;          // the median of the last exact runs' times
-  var exactTimes = [];      // the last EXACT_RUNS exact runs' times
-  var EXACT_RUNS = 5;
+  root.dataset.draftAfterMs = String(DRAFT_AFTER_MS);
+  var exactMs = 0;          // the last exact run's time
   var drag = null;          // { param, index, fig, svg, circle }
   var lastFigures = null;   // of the last reply shown
 
@@ -436,15 +436,9 @@ function CurvefigPage(root, engine) {
       (sliding || drag !== null || (rotate && rotate.rotating()));
   }
 
-  // An exact run took ms (request to reply): exactMs, the median of the
-  // last EXACT_RUNS, decides whether drags draw drafts (one quick or slow
-  // run among them does not flip it from one drag to the next).
+  // An exact run took ms (request to reply).
   function noteExact(ms) {
-    exactTimes.push(ms);
-    if (exactTimes.length > EXACT_RUNS) exactTimes.shift();
-    var s = exactTimes.slice().sort(function (a, b) { return a - b; });
-    var h = s.length >> 1;
-    exactMs = s.length % 2 ? s[h] : (s[h - 1] + s[h]) / 2;
+    exactMs = ms;
     root.dataset.exactMs = ms.toFixed(1);
   }
 

@@ -286,4 +286,5 @@ def main():
         sys.exit('%d failures' % len(lb.failures))
 
 
-main()
+if __name__ == '__main__':
+    main()

@@ -82,7 +82,9 @@ function CurvefigPage(root, engine) {
   var lanes = engine.lanes || 1;   // runs the engine takes at once
   var sliding = false;      // the pointer holds a slider
   var draftShown = false;   // the drawing shown (or under way) is a draft
-  var DRAFT_AFTER_MS = 20;  // exact runs quicker than this: no drafts
+  // exact runs quicker than a frame (60 Hz): no drafts (docs/
+  // interactive.md, "Drafts")
+  var DRAFT_AFTER_MS = 16;
   root.dataset.draftAfterMs = String(DRAFT_AFTER_MS);
   var exactMs = 0;          // the last exact run's time
   var drag = null;          // { param, index, fig, svg, circle }
@@ -739,6 +741,7 @@ function CurvefigPage(root, engine) {
       draft && running.length > 0;
     if (wait) {
       pending = true;
+      root.dataset.busy = '1';   // (after a stale draft, none may be)
       return;
     }
     pending = false;

@@ -13,7 +13,7 @@ to a worker (which worker, draft or not) and each reply taken, and can
 hold a draft's reply back for HOLD_MS, as a draft that is still
 computing when the pointer is released.  The browser's processor is
 slowed down six times (DevTools' emulation, as in test_redraw.py), so
-that an exact run takes over 20 ms and a drag draws drafts.
+that an exact run takes over 16 ms and a drag draws drafts.
 
 For a drag of the background (turning the figure), of the point L and
 of a slider: a few moves, each awaited (drafts); one more move whose

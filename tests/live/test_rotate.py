@@ -12,7 +12,7 @@ WebAssembly module):
   its drawing is `curvefig render`'s (the same paths, live);
 - while the pointer holds the background and has moved, the drawing is a
   draft (data-draft "1"; when an exact run takes over the page's
-  data-draft-after-ms, 20 ms, as it does here, else exact); released where it was pressed, the exact
+  data-draft-after-ms, 16 ms, as it does here, else exact); released where it was pressed, the exact
   drawing of the script's view follows (data-draft "0", curvefig
   render's paths);
 - a pointer drag of the background turns it by 0.4 degree a pixel: the
@@ -25,7 +25,7 @@ WebAssembly module):
 - the arrow keys turn the focused figure 5 degrees a press; the time of
   a redraw after a key press is printed (median of 4); a key held down
   (repeating) turns it as a drag does: drafts while it repeats (when an
-  exact run takes over 20 ms), the exact drawing of the view reached
+  exact run takes over 16 ms), the exact drawing of the view reached
   when it goes up;
 - the handle of L still drags in the turned figure: L moves, the view
   stays;
@@ -277,7 +277,7 @@ def exercise(drv, tool, text, what, exact, outdir):
     # a key held down: a press, then repeats (drafts), then up (exact);
     # in the course page the browser's processor is slowed down six times
     # (DevTools' emulation), so that the module's exact runs take over
-    # 20 ms and the repeats are drafts however fast this machine is
+    # 16 ms and the repeats are drafts however fast this machine is
     if not exact:
         drv.execute_cdp_cmd('Emulation.setCPUThrottlingRate', {'rate': 6})
     drv.execute_script(KEY_EVENT, NAME, 'ArrowLeft', 'keydown', False)

@@ -12,10 +12,11 @@
 // and the exact runs keep one instance to themselves (as warm as a page
 // without drafts).  The exact lane starts with the first run, the draft
 // lane with the first draft or earlier through warm() (page.js calls it
+// when the page is idle after an exact run slow enough for drafts, and
 // when a drag that draws drafts begins, so that its instance and glyph
-// data are ready by its first move).  A page whose figure never draws
-// drafts has one instance; one that does, two (each with its own memory,
-// up to data.memory MiB).
+// data are ready by the drag's first move).  A page whose figure's runs
+// are quick has one instance; one that draws drafts, two (each with its
+// own memory, up to data.memory MiB).
 // data: { wasm: base64 of the module, worker: the worker's source,
 // script: the script's text, name: its file name, glyphs: the glyph data,
 // figure: the figure this page shows, timeout: the time limit of a run in

@@ -405,8 +405,8 @@ function CurvefigPage(root, engine) {
   // A move began: every figure keeps the map and view it shows now (the
   // map its box was drawn with: a draft still held after a release, its
   // exact run under way, is drawn in the map of the move before).  A
-  // drag that will draw drafts starts the engine's second lane now, for
-  // its exact run at the release (request()).
+  // drag that will draw drafts starts the engine's drafts' worker now, if
+  // the page has not yet (request()).
   function hold() {
     if (engine.warm && exactMs > DRAFT_AFTER_MS) engine.warm();
     if (held || !lastFigures) return;
@@ -767,6 +767,11 @@ function CurvefigPage(root, engine) {
         return;
       }
       show(reply, draft);
+      // a figure whose runs take long enough for drafts: the drafts'
+      // worker started once the page is idle, not at a drag's press
+      // (its start, 50-250 ms, would hold up the drag's first moves)
+      if (!draft && engine.warm && reply.ms > DRAFT_AFTER_MS)
+        (window.requestIdleCallback || setTimeout)(engine.warm);
     }, function (err) {
       if (me.stale || me.seq < shownSeq) return;
       error.textContent = 'no answer: ' + err;

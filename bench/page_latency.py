@@ -26,8 +26,14 @@ frame, and timed from the event (its timeStamp, the page's clock) to
 the reply shown in the document (root.dataset.runs grown, busy "0");
 "move" are these times (the page asks for a draft while the pointer is
 down: docs/interactive.md, "Drafts"), "release" the time from the
-release to the exact drawing shown, "key" from a key press to its
-(exact) drawing.  "run" is the module's own time of
+release to the exact drawing shown when no draft was under way at the
+release, "release in flight" when one was (every other drag's last move
+is not awaited and the release follows it within 2 ms, while its draft
+may still run: a reader lets go while the page computes; a draft under
+way: the page busy and the drawing shown a draft), "key" from a key press to its
+(exact) drawing, "exact ms" the page's data-exact-ms after each press
+(the run from its request to its reply, what decides whether a drag
+draws drafts), with how many were at most 16, 20 and 24 ms.  "run" is the module's own time of
 the run (the worker's performance.now() around it, the page's
 data-run-ms), where the page reports it, drafts and exact runs alike;
 "run exact" the exact ones alone (the releases, the key presses and the
@@ -67,18 +73,25 @@ PHASE = random.Random(28)
 ARM = r'''
 var root = document.getElementById('curvefig');
 if (!window.__cfBench) {
-  window.__cfBench = { ev: null, shown: null, runs: 0, runMs: [],
+  window.__cfBench = { ev: null, only: null, busyAt: null, shown: null,
+                       runs: 0, runMs: [],
                        run: null, painted: null };
   ['pointermove', 'pointerrawupdate', 'pointerdown', 'pointerup', 'input',
    'keydown']
       .forEach(function (t) {
     window.addEventListener(t, function (e) {
-      if (window.__cfBench.ev === null) window.__cfBench.ev = e.timeStamp;
+      var b = window.__cfBench;
+      if (b.ev === null && (b.only === null || e.type === b.only)) {
+        b.ev = e.timeStamp;
+        // a run under way while a draft is shown: a draft under way
+        b.busyAt = root.dataset.busy === '1' &&
+          root.dataset.draft === '1' ? '1' : '0';
+      }
     }, true);
   });
   new MutationObserver(function () {
     var b = window.__cfBench, n = Number(root.dataset.runs);
-    if (n > b.runs && root.dataset.busy === '0') {
+    if (n > b.runs && root.dataset.busy === '0' && b.ev !== null) {
       b.runs = n;
       b.shown = performance.now();
       b.draft = root.dataset.draft;
@@ -99,6 +112,9 @@ if (!window.__cfBench) {
   }).observe(root, { attributes: true });
 }
 window.__cfBench.ev = null;
+window.__cfBench.only = arguments.length > 0 && typeof arguments[0] ===
+  'string' ? arguments[0] : null;
+window.__cfBench.busyAt = null;
 window.__cfBench.shown = null;
 window.__cfBench.run = null;
 window.__cfBench.painted = null;
@@ -168,8 +184,12 @@ def quiet(drv):
     sys.exit('the page did not settle within 60 s')
 
 
-def drag(drv, kind, moves):
-    """One drag of kind: AWAIT's answers to its moves and its release."""
+def drag(drv, kind, moves, busy=False):
+    """One drag of kind: AWAIT's answers to its moves and its release,
+    the number of drafts, and whether a draft was under way at the
+    release (at its pointerup the page busy and its drawing a draft).  busy: the last move is not
+    awaited, and the release follows it after a pause of up to 2 ms,
+    while its draft may still be under way."""
     at = drv.execute_script(WHERE, kind)
     if at is None:
         return None
@@ -191,20 +211,27 @@ def drag(drv, kind, moves):
         d = sign * (1 if (k // 8) % 2 == 0 else -1)
         x += d * step[0]
         y += d * step[1]
-        drv.execute_script(ARM)
+        last = busy and k == moves - 1
+        # (the last move of a busy drag: timed from the release)
+        drv.execute_script(ARM, 'pointerup' if last else None)
         time.sleep(PHASE.uniform(0, 1 / 60))
         mouse(drv, 'mouseMoved', x, y, 1)
+        if last:
+            break
         r = drv.execute_async_script(AWAIT, 10000)
         if r is not None:
             out.append(r)
             drafts += r[1] == '1'
-    drv.execute_script(ARM)
-    time.sleep(PHASE.uniform(0, 1 / 60))
+    if not busy:
+        drv.execute_script(ARM)
+    time.sleep(PHASE.uniform(0, 0.002 if busy else 1 / 60))
     mouse(drv, 'mouseReleased', x, y, 0)
     # (a page that drew no draft runs nothing on the release)
     r = drv.execute_async_script(AWAIT, 30000 if drafts else 1000)
     quiet(drv)
-    return out, [r] if r is not None and r[1] != '1' else [], drafts
+    was_busy = drv.execute_script('return window.__cfBench.busyAt')
+    return (out, [r] if r is not None and r[1] != '1' else [], drafts,
+            was_busy == '1')
 
 
 def keys(drv, presses):
@@ -228,6 +255,9 @@ def keys(drv, presses):
         r = drv.execute_async_script(AWAIT, 10000)
         if r is not None:
             out.append(r)
+            r.append(float(drv.execute_script(
+                'return document.getElementById("curvefig")'
+                '.dataset.exactMs')))
     quiet(drv)
     return out
 
@@ -296,19 +326,25 @@ def main():
             quiet(drv)
             drv.execute_script(ARM)
             moved, released, drafts = [], [], 0
+            released_busy = []
             for kind in ('slider', 'point', 'rotate'):
-                for _ in range(2):
-                    r = drag(drv, kind, moves // 2)
+                for k in range(8):
+                    r = drag(drv, kind, moves // 2, k % 2 == 1)
                     if r is None:
                         break
                     moved += r[0]
-                    released += r[1]
+                    (released_busy if r[3] else released).extend(r[1])
                     drafts += r[2]
             turned = keys(drv, moves)
             run_ms = drv.execute_script('return window.__cfBench.runMs')
             report(name, 'move', moved, {'drafts': drafts})
             report(name, 'release', released)
+            report(name, 'release in flight', released_busy)
             report(name, 'key', turned)
+            exact = [r[4] for r in turned]
+            report(name, 'exact ms', exact,
+                   {'under_%d' % t: sum(x <= t for x in exact)
+                    for t in (16, 20, 24)})
             report(name, 'run', [r[0] for r in run_ms])
             report(name, 'run exact', [r[0] for r in run_ms if not r[1]])
     finally:

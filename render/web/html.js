@@ -3,8 +3,20 @@
 // Worker (worker.js, with wasm.js's loader), with the glyph data measured
 // when the page was written.  A run that takes longer than the page's
 // time limit is stopped: the worker is terminated, the reply is the
-// error, and the next run starts a fresh worker; the tab stays
-// responsive throughout.
+// error, and the next run on that lane starts a fresh worker; the tab
+// stays responsive throughout.
+// Two lanes (this.lanes): two workers, instances of the one compiled
+// module, one for the exact runs and one for the drafts ("@draft": 1 in
+// the values), so that the page can start an exact run while a draft is
+// still under way (page.js, request()) instead of waiting for the draft,
+// and the exact runs keep one instance to themselves (as warm as a page
+// without drafts).  The exact lane starts with the first run, the draft
+// lane with the first draft or earlier through warm() (page.js calls it
+// when the page is idle after an exact run slow enough for drafts, and
+// when a drag that draws drafts begins, so that its instance and glyph
+// data are ready by the drag's first move).  A page whose figure's runs
+// are quick has one instance; one that draws drafts, two (each with its
+// own memory, up to data.memory MiB).
 // data: { wasm: base64 of the module, worker: the worker's source,
 // script: the script's text, name: its file name, glyphs: the glyph data,
 // figure: the figure this page shows, timeout: the time limit of a run in
@@ -18,39 +30,50 @@ function CurvefigWasmEngine(data) {
   var module = WebAssembly.compile(bytes);   // once, for every worker
   var source = URL.createObjectURL(new Blob([data.worker],
                                             { type: 'text/javascript' }));
-  var worker = null, ready = null, next = 1, waiting = {};
+  var next = 1;
+  // a lane: { worker, ready: Promise of its init, waiting: id -> f };
+  // lanes[0] the exact runs', lanes[1] the drafts'.
+  var lanes = [];
+  this.lanes = 2;
 
-  function start() {
+  function start(lane) {
     var w = new Worker(source);
-    worker = w;
-    waiting = {};
+    lane.worker = w;
+    lane.waiting = {};
     w.onmessage = function (ev) {
-      var f = waiting[ev.data.id];
+      var f = lane.waiting[ev.data.id];
       if (f) f(ev.data);
     };
-    ready = module.then(function (m) {
-      return ask(w, { init: { module: m, glyphs: data.glyphs,
-                              script: data.script, name: data.name,
-                              memory: data.memory || 0,
-                              instructions: data.instructions || 0 } });
+    lane.ready = module.then(function (m) {
+      return ask(lane, { init: { module: m, glyphs: data.glyphs,
+                                 script: data.script, name: data.name,
+                                 memory: data.memory || 0,
+                                 instructions: data.instructions || 0 } });
     });
   }
 
-  // Send msg to the worker; a Promise of its answer.
-  function ask(w, msg, started) {
+  function newLane() {
+    var lane = { worker: null, ready: null, waiting: {} };
+    lanes.push(lane);
+    start(lane);
+    return lane;
+  }
+
+  // Send msg to the lane's worker; a Promise of its answer.
+  function ask(lane, msg, started) {
     return new Promise(function (resolve, reject) {
       var id = next++;
       msg.id = id;
-      waiting[id] = function (m) {
+      lane.waiting[id] = function (m) {
         if (m.started) {
           if (started) started();
           return;
         }
-        delete waiting[id];
+        delete lane.waiting[id];
         if (m.error !== undefined) reject(new Error(m.error));
         else resolve(m);
       };
-      w.postMessage(msg);
+      lane.worker.postMessage(msg);
     });
   }
 
@@ -61,20 +84,44 @@ function CurvefigWasmEngine(data) {
                       + 'page stopped it)' } };
   }
 
+  // The lane of a run: the exact lane (lanes[0]) or the draft lane.
+  function laneOf(draft) {
+    if (lanes.length === 0) newLane();
+    if (draft && lanes.length < 2) newLane();
+    return lanes[draft ? 1 : 0];
+  }
+
+  // The draft lane started now (if it is not yet), its init off the path
+  // of the first draft.
+  this.warm = function () {
+    laneOf(true);
+  };
+
   this.run = function (values) {
-    if (worker === null) start();
-    var w = worker;
-    return ready.then(function () {
+    var lane = laneOf(!!(values && values['@draft']));
+    if (lane.worker === null) start(lane);
+    var w = lane.worker;
+    return lane.ready.then(function () {
       return new Promise(function (resolve, reject) {
         var timer = null;
-        ask(w, { values: values || {} }, function () {
+        ask(lane, { values: values || {} }, function () {
           timer = setTimeout(function () {
             w.terminate();
-            if (worker === w) worker = null;
+            if (lane.worker === w) {
+              // the runs queued behind it on this worker are lost with
+              // it: they answer as stopped too
+              var rest = lane.waiting;
+              lane.worker = null;
+              lane.waiting = {};
+              Object.keys(rest).forEach(function (id) {
+                rest[id]({ json: null, stopped: true });
+              });
+            }
             resolve(stopped());
           }, data.timeout * 1000);
         }).then(function (m) {
           clearTimeout(timer);
+          if (m.stopped) return resolve(stopped());
           var reply = JSON.parse(m.json);
           reply.ms = m.ms;
           if (reply.figures)

@@ -54,10 +54,12 @@
 //   pre#cf-error           the script's error (hidden when there is none)
 //   pre#cf-lua             the values as Lua, button#cf-copy, button#cf-reset
 //   root.dataset.runs      the number of replies shown so far;
-//   root.dataset.busy      "1" while a run is under way;
+//   root.dataset.busy      "1" while a run is under way (one whose reply
+//                          will be shown: not a stale draft, request());
 //   root.dataset.draft     "1" while the drawing shown is a draft;
 //   root.dataset.runMs     the engine's time of the last run (ms), when
 //                          the engine tells it (the course page's does)
+//   root.dataset.draftAfterMs  DRAFT_AFTER_MS (below)
 //   root.dataset.exactMs   the time of the last exact run, from the request
 //                          to the reply (ms)
 // Drafts: while the pointer drags a slider, a point or a 3D figure whose
@@ -75,9 +77,15 @@ function CurvefigPage(root, engine) {
   var params = [];          // the declarations of the last good reply
   var signature = null;     // of the declarations, to rebuild on a change
   var inFlight = false, pending = false, runs = 0;
+  var running = [];         // the runs under way (request())
+  var sentSeq = 0, shownSeq = 0;   // the last run sent, the last shown
+  var lanes = engine.lanes || 1;   // runs the engine takes at once
   var sliding = false;      // the pointer holds a slider
   var draftShown = false;   // the drawing shown (or under way) is a draft
-  var DRAFT_AFTER_MS = 20;  // exact runs quicker than this: no drafts
+  // exact runs quicker than a frame (60 Hz): no drafts (docs/
+  // interactive.md, "Drafts")
+  var DRAFT_AFTER_MS = 16;
+  root.dataset.draftAfterMs = String(DRAFT_AFTER_MS);
   var exactMs = 0;          // the last exact run's time
   var drag = null;          // { param, index, fig, svg, circle }
   var lastFigures = null;   // of the last reply shown
@@ -396,8 +404,11 @@ function CurvefigPage(root, engine) {
 
   // A move began: every figure keeps the map and view it shows now (the
   // map its box was drawn with: a draft still held after a release, its
-  // exact run under way, is drawn in the map of the move before).
+  // exact run under way, is drawn in the map of the move before).  A
+  // drag that will draw drafts starts the engine's drafts' worker now, if
+  // the page has not yet (request()).
   function hold() {
+    if (engine.warm && exactMs > DRAFT_AFTER_MS) engine.warm();
     if (held || !lastFigures) return;
     held = {};
     figures.querySelectorAll('.cf-figure').forEach(function (box, k) {
@@ -425,6 +436,12 @@ function CurvefigPage(root, engine) {
   function drafting() {
     return exactMs > DRAFT_AFTER_MS &&
       (sliding || drag !== null || (rotate && rotate.rotating()));
+  }
+
+  // An exact run took ms (request to reply).
+  function noteExact(ms) {
+    exactMs = ms;
+    root.dataset.exactMs = ms.toFixed(1);
   }
 
   // The drag ended: the exact run of the values, when a draft was asked
@@ -702,39 +719,70 @@ function CurvefigPage(root, engine) {
     }
   }
 
+  // Runs under way: { seq, draft, stale } each.  A run goes out at once
+  // when none is under way; otherwise it waits (pending) for the reply,
+  // and goes with the latest values then -- except an exact run asked
+  // for while only drafts are under way (the pointer released during a
+  // drag) on an engine with two lanes (the course page's, html.js: one
+  // worker for the exact runs, one for the drafts): it goes at once, and
+  // the drafts under way are stale: their replies are dropped when they
+  // come (older values, looser tolerances).  A draft waits for a stale
+  // draft still under way (the draft lane is busy).  A reply is shown only
+  // if no run sent after it has been shown: an older reply never replaces
+  // a newer drawing.
+  function live() {
+    return running.filter(function (r) { return !r.stale; });
+  }
+
   function request() {
-    if (inFlight) {
+    var now = live(), draft = drafting();
+    var wait = now.length > 0 ?
+      draft || lanes < 2 || !now.every(function (r) { return r.draft; }) :
+      draft && running.length > 0;
+    if (wait) {
       pending = true;
+      root.dataset.busy = '1';   // (after a stale draft, none may be)
       return;
     }
-    inFlight = true;
     pending = false;
     root.dataset.busy = '1';
     var sent = withViews(values);
-    var draft = drafting();
     if (draft) sent['@draft'] = 1;
+    else running.forEach(function (r) { r.stale = true; });
+    if (draft && engine.warm) engine.warm();
+    var me = { seq: ++sentSeq, draft: draft, stale: false };
+    running.push(me);
+    inFlight = true;
     draftShown = draft;
     var reload = reloadOnGood;
     reloadOnGood = false;
     var t0 = performance.now();
     engine.run(sent).then(function (reply) {
-      if (!draft) {
-        exactMs = performance.now() - t0;
-        root.dataset.exactMs = exactMs.toFixed(1);
-      }
+      if (!draft) noteExact(performance.now() - t0);
+      if (me.stale || me.seq < shownSeq) return;   // superseded
+      shownSeq = me.seq;
       if (reload && reply.error === null && engine.reload) {
         pending = false;
         engine.reload(withViews(values));
         return;
       }
       show(reply, draft);
+      // a figure whose runs take long enough for drafts: the drafts'
+      // worker started once the page is idle, not at a drag's press
+      // (its start, 50-250 ms, would hold up the drag's first moves)
+      if (!draft && engine.warm && reply.ms > DRAFT_AFTER_MS)
+        (window.requestIdleCallback || setTimeout)(engine.warm);
     }, function (err) {
+      if (me.stale || me.seq < shownSeq) return;
       error.textContent = 'no answer: ' + err;
       error.hidden = false;
     }).then(function () {
-      inFlight = false;
+      running.splice(running.indexOf(me), 1);
+      inFlight = live().length > 0;
       if (pending) request();
-      else root.dataset.busy = '0';
+      if (!inFlight && !pending) root.dataset.busy = '0';
+      // (busy: "1" while a run whose reply will be shown is under way or
+      // waits; a stale draft still computing is not)
     });
   }
 

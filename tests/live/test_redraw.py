@@ -27,7 +27,7 @@ module:
   25 px), the pointermove of the same place after it runs nothing, a
   pointermove to another place runs it;
 - released after drafts (the browser's processor slowed down six times
-  by DevTools' emulation, so that an exact run takes over 20 ms and the
+  by DevTools' emulation, so that an exact run takes over 16 ms and the
   page asks for drafts while the pointer moves), a drag of the point L,
   of a slider and of the background each draw the figure once more: the
   exact run's drawing, nothing before it (data-draft "0" after).
@@ -286,4 +286,5 @@ def main():
         sys.exit('%d failures' % len(lb.failures))
 
 
-main()
+if __name__ == '__main__':
+    main()

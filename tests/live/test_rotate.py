@@ -11,8 +11,8 @@ WebAssembly module):
 - at load the figure shows the script's view (data-view [-55, 28]) and
   its drawing is `curvefig render`'s (the same paths, live);
 - while the pointer holds the background and has moved, the drawing is a
-  draft (data-draft "1"; when an exact run takes over 20 ms, as it does
-  here, else exact); released where it was pressed, the exact
+  draft (data-draft "1"; when an exact run takes over the page's
+  data-draft-after-ms, 16 ms, as it does here, else exact); released where it was pressed, the exact
   drawing of the script's view follows (data-draft "0", curvefig
   render's paths);
 - a pointer drag of the background turns it by 0.4 degree a pixel: the
@@ -25,7 +25,7 @@ WebAssembly module):
 - the arrow keys turn the focused figure 5 degrees a press; the time of
   a redraw after a key press is printed (median of 4); a key held down
   (repeating) turns it as a drag does: drafts while it repeats (when an
-  exact run takes over 20 ms), the exact drawing of the view reached
+  exact run takes over 16 ms), the exact drawing of the view reached
   when it goes up;
 - the handle of L still drags in the turned figure: L moves, the view
   stays;
@@ -135,6 +135,14 @@ def quiet(drv, n, timeout=20):
         n = lb.settle(drv, m - 1 if busy == '0' else m, timeout)
 
 
+def slow_runs(drv):
+    """Whether the last exact run took longer than the page's threshold of
+    drafts (data-exact-ms > data-draft-after-ms): drags draw drafts."""
+    return drv.execute_script(
+        'var d = document.getElementById("curvefig").dataset;'
+        'return Number(d.exactMs) > Number(d.draftAfterMs);')
+
+
 def draft(drv):
     return drv.execute_script(
         'return document.getElementById("curvefig").dataset.draft;')
@@ -212,11 +220,10 @@ def exercise(drv, tool, text, what, exact, outdir):
         svg, size['width'] // 2 - 12, 50 - size['height'] // 2) \
         .click_and_hold().move_by_offset(-10, 5).perform()
     n = quiet(drv, n)
-    slow = float(drv.execute_script('return document.getElementById('
-                                    '"curvefig").dataset.exactMs')) > 20
+    slow = slow_runs(drv)
     lb.check(draft(drv) == ('1' if slow else '0'), '%s: while the pointer '
              'holds the figure, the drawing is a draft when an exact run '
-             'takes over 20 ms (data-draft %r)' % (what, draft(drv)))
+             'takes over data-draft-after-ms (data-draft %r)' % (what, draft(drv)))
     ActionChains(drv).move_by_offset(10, -5).release().perform()
     n = quiet(drv, n)
     lb.check(draft(drv) == '0' and view(drv) == SCRIPT_VIEW,
@@ -270,15 +277,14 @@ def exercise(drv, tool, text, what, exact, outdir):
     # a key held down: a press, then repeats (drafts), then up (exact);
     # in the course page the browser's processor is slowed down six times
     # (DevTools' emulation), so that the module's exact runs take over
-    # 20 ms and the repeats are drafts however fast this machine is
+    # 16 ms and the repeats are drafts however fast this machine is
     if not exact:
         drv.execute_cdp_cmd('Emulation.setCPUThrottlingRate', {'rate': 6})
     drv.execute_script(KEY_EVENT, NAME, 'ArrowLeft', 'keydown', False)
     n = quiet(drv, n)
-    slow = float(drv.execute_script('return document.getElementById('
-                                    '"curvefig").dataset.exactMs')) > 20
-    lb.check(exact or slow, '%s: slowed down, an exact run takes over 20 '
-             'ms' % what)
+    slow = slow_runs(drv)
+    lb.check(exact or slow, '%s: slowed down, an exact run takes over '
+             'data-draft-after-ms' % what)
     for k in range(3):
         drv.execute_script(KEY_EVENT, NAME, 'ArrowLeft', 'keydown', True)
         n = quiet(drv, n)
@@ -286,7 +292,8 @@ def exercise(drv, tool, text, what, exact, outdir):
     lb.check(abs(v3[0] - (v2[0] + 20)) < 1e-9 and v3[1] == v2[1] and
              draft(drv) == ('1' if slow else '0'),
              '%s: Left held (a press, three repeats) turned it to %s, '
-             'drawn as a draft when an exact run takes over 20 ms '
+             'drawn as a draft when an exact run takes over the '
+             'threshold '
              '(data-draft %r)' % (what, v3, draft(drv)))
     drv.execute_script(KEY_EVENT, NAME, 'ArrowLeft', 'keyup', False)
     if slow:

@@ -117,6 +117,14 @@ def check(cond, what):
         failures.append(what)
 
 
+def check_console(drv, what=None):
+    """No error or warning in the browser's console since the last look."""
+    logs = [e for e in drv.get_log('browser')
+            if e['level'] in ('SEVERE', 'WARNING')]
+    check(logs == [], '%sno console errors %s'
+          % (what + ': ' if what else '', logs))
+
+
 def core_point(tool, lua_values, expr):
     """The point expr of the curve library for the page's values."""
     code = (lua_values + '\nfor k, v in pairs(values) do _ENV[k] = v end\n'
@@ -294,9 +302,7 @@ def exercise(drv, tool, name, spec, native):
           % name)
     core_moved(tool, old_m, old_lua, page_map(drv, name), lua,
                spec['drag_point'], name)
-    logs = [e for e in drv.get_log('browser')
-            if e['level'] in ('SEVERE', 'WARNING')]
-    check(logs == [], '%s: no console errors %s' % (name, logs))
+    check_console(drv, name)
 
 
 def start_live(tool, script):
@@ -417,9 +423,7 @@ def test_saving(drv, tool, src):
         settle(drv, n)
         check('k = 1.5' not in drv.find_element(By.ID, 'cf-lua').text,
               '... and the new slider runs the script')
-        logs = [e for e in drv.get_log('browser')
-                if e['level'] in ('SEVERE', 'WARNING')]
-        check(logs == [], 'saving: no console errors %s' % logs)
+        check_console(drv, 'saving')
         drv.get('about:blank')
     finally:
         p.terminate()
@@ -498,9 +502,7 @@ def exercise_spin(drv, what, limit):
         '.classList.contains("cf-stale") && document.querySelector('
         '"#cf-figures svg") !== null;')
     check(back, '%s: the slider back: the figure is drawn again' % what)
-    logs = [e for e in drv.get_log('browser')
-            if e['level'] in ('SEVERE', 'WARNING')]
-    check(logs == [], '%s: no console errors %s' % (what, logs))
+    check_console(drv, what)
 
 
 def test_spinning(drv, tool, src):

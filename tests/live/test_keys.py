@@ -214,9 +214,7 @@ def exercise(drv, tool, script, what, later=None):
     got = (float(h.get_attribute('cx')), float(h.get_attribute('cy')))
     check(abs(got[0] - want[0]) < 0.01 and abs(got[1] - want[1]) < 0.01,
           '%s: the handle sits on (2.1, 1.1)' % what)
-    logs = [e for e in drv.get_log('browser')
-            if e['level'] in ('SEVERE', 'WARNING')]
-    check(logs == [], '%s: no console errors %s' % (what, logs))
+    tb.check_console(drv, what)
 
 
 def live(drv, tool, script):

@@ -253,9 +253,7 @@ def main():
                 lb.check(bad == 0, 'rotate: the drawing after the release '
                          'is curvefig render\'s at the view %s (%s pixels '
                          'differ)' % (v, bad))
-            logs = [e for e in drv.get_log('browser')
-                    if e['level'] in ('SEVERE', 'WARNING')]
-            lb.check(logs == [], 'no console errors %s' % logs)
+            lb.check_console(drv)
     finally:
         drv.quit()
     if lb.failures:

@@ -180,9 +180,7 @@ def exercise(drv, tool):
     ActionChains(drv).release().perform()
     time.sleep(0.3)
     tb.settle(drv, n - 1)
-    logs = [e for e in drv.get_log('browser')
-            if e['level'] in ('SEVERE', 'WARNING')]
-    check(logs == [], 'no console errors %s' % logs)
+    tb.check_console(drv)
 
 
 def main():

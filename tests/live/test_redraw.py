@@ -277,9 +277,7 @@ def main():
             n = keys_in_place(drv, n)
             n = raw_moves(drv, n)
             release_once(drv, n)
-            logs = [e for e in drv.get_log('browser')
-                    if e['level'] in ('SEVERE', 'WARNING')]
-            lb.check(logs == [], 'no console errors %s' % logs)
+            lb.check_console(drv)
     finally:
         drv.quit()
     if lb.failures:

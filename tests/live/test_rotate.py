@@ -344,9 +344,7 @@ def exercise(drv, tool, text, what, exact, outdir):
     lb.check(view(drv) == SCRIPT_VIEW and drv.find_elements(
         By.CSS_SELECTOR, 'button.cf-view-reset') == [],
         '%s: "Reset view": the script\'s view, the button gone' % what)
-    logs = [e for e in drv.get_log('browser')
-            if e['level'] in ('SEVERE', 'WARNING')]
-    lb.check(logs == [], '%s: no console errors %s' % (what, logs))
+    lb.check_console(drv, what)
 
 
 def _num(x):

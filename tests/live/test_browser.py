@@ -117,6 +117,19 @@ def check(cond, what):
         failures.append(what)
 
 
+def example(src, name):
+    """The shipped interactive example NAME: its path and its text."""
+    script = os.path.join(src, 'figures', 'interactive', name + '.lua')
+    with open(script, encoding='utf-8') as f:
+        return script, f.read()
+
+
+def exit_on_failures():
+    """Exit with the number of failed checks, if any."""
+    if failures:
+        sys.exit('%d failures' % len(failures))
+
+
 def check_console(drv, what=None):
     """No error or warning in the browser's console since the last look."""
     logs = [e for e in drv.get_log('browser')

@@ -284,8 +284,7 @@ def main():
                 html(drv, tool, script, tmp)
     finally:
         drv.quit()
-    if tb.failures:
-        sys.exit('%d failures' % len(tb.failures))
+    tb.exit_on_failures()
 
 
 if __name__ == '__main__':

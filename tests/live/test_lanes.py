@@ -212,9 +212,7 @@ def release_in_flight(drv, kind, n, hold_ms):
 def main():
     tool, src = os.path.abspath(sys.argv[1]), sys.argv[2]
     lb.need_browser()
-    script = os.path.join(src, 'figures', 'interactive', NAME + '.lua')
-    with open(script, encoding='utf-8') as f:
-        text = f.read()
+    script, text = lb.example(src, NAME)
     drv = lb.make_driver()
     try:
         with tempfile.TemporaryDirectory() as outdir:
@@ -256,8 +254,7 @@ def main():
             lb.check_console(drv)
     finally:
         drv.quit()
-    if lb.failures:
-        sys.exit('%d failures' % len(lb.failures))
+    lb.exit_on_failures()
 
 
 main()

@@ -217,8 +217,7 @@ def main():
         p.wait(10)
         os.unlink(script)
         os.rmdir(tmp)
-    if tb.failures:
-        sys.exit('%d failures' % len(tb.failures))
+    tb.exit_on_failures()
 
 
 if __name__ == '__main__':

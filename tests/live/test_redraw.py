@@ -280,8 +280,7 @@ def main():
             lb.check_console(drv)
     finally:
         drv.quit()
-    if lb.failures:
-        sys.exit('%d failures' % len(lb.failures))
+    lb.exit_on_failures()
 
 
 if __name__ == '__main__':

@@ -409,9 +409,7 @@ def html(drv, tool, script, text, outdir, src):
 def main():
     tool, src = os.path.abspath(sys.argv[1]), sys.argv[2]
     lb.need_browser()
-    script = os.path.join(src, 'figures', 'interactive', NAME + '.lua')
-    with open(script, encoding='utf-8') as f:
-        text = f.read()
+    script, text = lb.example(src, NAME)
     drv = lb.make_driver()
     try:
         with tempfile.TemporaryDirectory() as outdir:
@@ -419,8 +417,7 @@ def main():
             html(drv, tool, script, text, outdir, src)
     finally:
         drv.quit()
-    if lb.failures:
-        sys.exit('%d failures' % len(lb.failures))
+    lb.exit_on_failures()
 
 
 if __name__ == '__main__':

@@ -776,6 +776,13 @@ function CurvefigPage(root, engine) {
       if (me.stale || me.seq < shownSeq) return;
       error.textContent = 'no answer: ' + err;
       error.hidden = false;
+    }).catch(function (e) {
+      // a reply the page could not draw: said, and the runs go on (the
+      // bookkeeping below must run, or every later run would wait)
+      error.textContent = 'the page could not draw the reply: ' + e;
+      error.hidden = false;
+      root.dataset.runs = String(runs);   // (a reply shown: its error)
+      console.error(e);
     }).then(function () {
       running.splice(running.indexOf(me), 1);
       inFlight = live().length > 0;

@@ -168,7 +168,20 @@ def settle(drv, runs_before, timeout=20):
         if state[0] > runs_before and state[1] == '0':
             return state[0]
         time.sleep(0.05)
-    raise RuntimeError('the page did not redraw within %d s' % timeout)
+    raise RuntimeError('the page did not redraw within %d s: %s; its '
+                       'console: %s' % (timeout, page_state(drv),
+                                        drv.get_log('browser')))
+
+
+def page_state(drv):
+    """What the page shows, for a message: its runs, busy and draft
+    flags, the error line, the address."""
+    return drv.execute_script(
+        'var r = document.getElementById("curvefig");'
+        'var e = document.getElementById("cf-error");'
+        'return JSON.stringify({runs: r && r.dataset.runs, busy: r && '
+        'r.dataset.busy, draft: r && r.dataset.draft, error: e && !e.hidden '
+        '? e.textContent : null, url: location.href});')
 
 
 def runs(drv):
@@ -374,9 +387,9 @@ def test_saving(drv, tool, src):
                              'decasteljau.lua'), script)
     with open(script) as f:
         good = f.read()
+    err = open(os.path.join(tmp, 'server.err'), 'w+')
     p = subprocess.Popen([tool, 'live', script, '--port', '0'],
-                         stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
-                         text=True)
+                         stdout=subprocess.PIPE, stderr=err, text=True)
     try:
         url = re.search(r'http://\S+/', p.stdout.readline() +
                         p.stdout.readline()).group(0)
@@ -438,11 +451,68 @@ def test_saving(drv, tool, src):
               '... and the new slider runs the script')
         check_console(drv, 'saving')
         drv.get('about:blank')
+    except Exception:
+        # what the server said, beside what the page shows
+        p.terminate()
+        p.wait(10)
+        err.seek(0)
+        print('the server\'s messages:\n' + err.read(), file=sys.stderr)
+        print('the page\'s console:', drv.get_log('browser'),
+              file=sys.stderr)
+        raise
     finally:
         p.terminate()
         p.wait(10)
+        err.close()
         shutil.rmtree(tmp, ignore_errors=True)
 
+
+
+def test_undrawable_reply(drv, tool, src):
+    """A reply the page cannot draw (a figure without its handles: the
+    drawing throws) is said in the error line, and the page runs on: it
+    is not busy for ever, and the next slider step draws (before, the
+    throw skipped the bookkeeping of the runs under way, and every later
+    run waited for it)."""
+    p, url = start_live(tool, os.path.join(src, 'figures', 'interactive',
+                                           'decasteljau.lua'))
+    try:
+        drv.get(url)
+        n = settle(drv, 0)
+        # the next reply of ./run loses its figures' handles
+        drv.execute_script(
+            'var real = window.fetch;'
+            'window.fetch = function (url, opts) {'
+            '  if (!/\\/run$/.test(url)) return real(url, opts);'
+            '  window.fetch = real;'
+            '  return real(url, opts).then(function (r) {'
+            '    return r.json().then(function (j) {'
+            '      j.figures.forEach(function (f) { delete f.handles; });'
+            '      return new Response(JSON.stringify(j), {headers: '
+            '        {"Content-Type": "application/json"}});'
+            '    });'
+            '  });'
+            '};')
+        drv.find_element(By.ID, 'cf-slider-t').send_keys(Keys.PAGE_UP)
+        n = settle(drv, n)
+        said = drv.execute_script(
+            'var e = document.getElementById("cf-error");'
+            'return e.hidden ? null : e.textContent;')
+        check(said is not None and 'could not draw the reply' in said,
+              'undrawable reply: said in the page (%r)' % said)
+        logs = [e for e in drv.get_log('browser') if e['level'] == 'SEVERE']
+        check(len(logs) == 1, '... and in the console once (%d)' % len(logs))
+        drv.find_element(By.ID, 'cf-slider-t').send_keys(Keys.PAGE_UP)
+        n = settle(drv, n)
+        ok = drv.execute_script(
+            'return document.getElementById("cf-error").hidden && '
+            'document.querySelectorAll(".cf-handle").length > 0;')
+        check(ok, '... the next step draws the figure and its handles')
+        check_console(drv, 'undrawable reply')
+        drv.get('about:blank')
+    finally:
+        p.terminate()
+        p.wait(10)
 
 # A slider that, past its middle, makes the script spin in a way that the
 # parent commit's instruction hook could not stop.
@@ -576,6 +646,7 @@ def main():
             test_example(drv, tool, script, name, EXAMPLES[name])
         if not sys.argv[3:]:
             test_saving(drv, tool, src)
+            test_undrawable_reply(drv, tool, src)
             test_spinning(drv, tool, src)
     finally:
         drv.quit()

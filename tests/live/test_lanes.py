@@ -44,6 +44,7 @@ import sys
 import tempfile
 import time
 
+sys.dont_write_bytecode = True  # (no __pycache__ in the source tree)
 import test_browser as lb  # noqa: E402  (skips, 77, without selenium)
 import test_redraw as rd
 import test_rotate as tr

@@ -41,6 +41,7 @@ import sys
 import tempfile
 import time
 
+sys.dont_write_bytecode = True  # (no __pycache__ in the source tree)
 import test_browser as lb  # noqa: E402  (skips, 77, without selenium)
 from test_rotate import quiet as settle
 

@@ -21,5 +21,5 @@ for k, c in ipairs({ c0, c1, d0, d1 }) do
 end
 f:label(c0:eval(0.5), "c_0", { place = "s" })
 f:label(c1:eval(0.5), "c_1", { place = "n" })
-f:label(d0:eval(0.5), "d_0", { place = "w" })
+f:label(d0:eval(0.5), "d_0", { place = "nw" })
 f:label(d1:eval(0.5), "d_1", { place = "e" })

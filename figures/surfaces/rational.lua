@@ -32,7 +32,7 @@ for k, v in ipairs(views) do
   f:surface(plain, { color = "#a0a0a0", width = 0.7, isolines = { 3, 3 },
                      occludes = false, hidden = "show" })
   f:surface(raised, { isolines = { 3, 3 }, hidden = "dashed",
-                      net = { color = "grey" }, labels = function(i, j)
+                      net = { color = "grey" }, label_place = "n", labels = function(i, j)
                         if i == 1 and j == 1 then return "P_{11}" end
                       end })
 end

@@ -20,4 +20,7 @@ f:curve(profile, { color = "#e07b00", width = 1.5 })
 -- the axis, a curve in space: hidden where the vase is in front of it
 f:curve(bezier{ { 0, 0, -0.3 }, { 0, 0, 3.4 } },
         { color = "grey", dash = "dashdot", width = 0.5, hidden = "remove" })
-f:label(profile:eval(0.25), "\\text{profile}", { place = "e" })
+-- the profile named at its upper end, right of the vase's neck where
+-- nothing is drawn: beside the rest of the curve the vase reaches out
+-- past it and the word would lie on the shaded surface
+f:label(profile:eval(1), "\\text{profile}", { place = "se" })

@@ -17,7 +17,18 @@ local f = figure{
   width = "9cm", height = "7cm",
   view = { -100, 35 },
 }
+-- b030 is labelled apart: around its corner the boundary, the net and the
+-- scheme's level-1 point leave no room at the labels' offset; 10 bp above
+-- it, between the boundary and the net's edges to b021, there is (the
+-- point lies behind the patch: its label shown all the same, as the net's)
 f:surface(t, { isolines = { 3, 3 }, hidden = "dashed",
-               net = { color = "grey" }, labels = "b_{%d%d%d}",
+               net = { color = "grey" },
+               labels = function(i, j, k)
+                 if not (i == 0 and j == 3) then
+                   return string.format("b_{%d%d%d}", i, j, k)
+                 end
+               end,
                label_style = { font_size = 7 } })
 f:triangle_scheme(t, 1/3, 1/3, { width = 0.6 })
+f:label(b[7], "b_{030}", { font_size = 7, place = "n", offset = 10,
+                           hidden = "show" })

@@ -172,6 +172,8 @@ fill(measure_t *g, const cf__path_t *p, const cf__xform_t *m, double alpha)
 {
     if (!(alpha > 0))
         return;
+    if (g->r != NULL && g->r->solid)
+        alpha = 1;
     if (g->r == NULL) {
         double b[4] = { 1, 0, 0, 0 };
         cf__path_box(p, m, b);
@@ -189,6 +191,8 @@ stroke(measure_t *g, const cf__path_t *p, const cf__xform_t *m,
 {
     if (!(alpha > 0 && pen->width > 0))
         return;
+    if (g->r != NULL && g->r->solid)
+        alpha = 1;
     if (g->r == NULL && pen->cap == CF__CAP_ROUND
         && pen->join == CF__JOIN_ROUND && pen->ndash == 0) {
         /* the path's every point grown by a disc */

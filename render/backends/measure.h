@@ -27,6 +27,10 @@ typedef struct cf__raster {
     ** beyond the pixel box it was painted within (a raster opened sets
     ** it false) */
     bool cut;
+    /* whether every ink drawn counts whole, whatever its opacity (a
+    ** label's own footprint: a faded label on a line is as unreadable as
+    ** any; render/layout/place.c) */
+    bool solid;
     /* NULL, or one byte a row: only the rows j with rows[j] != 0 are
     ** painted (cf__poly_paint), each as it comes out painting all */
     const unsigned char *rows;

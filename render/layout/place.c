@@ -312,7 +312,9 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
     px[3] = (int)ceil(ink[3] * r->res) + 1;
     cf__raster_clear(&r->one, px);
     r->one.cut = false;
+    r->one.solid = true;     /* the label's glyphs, faded or not */
     st = paint(fig, r, &r->one, px);
+    r->one.solid = false;
     if (st != CF_STATUS_OK)
         return st;
     n = cf__place_common(&r->one, r->img.px, px);

@@ -189,6 +189,39 @@ test_panel_warnings(void **state)
     cf_script_destroy(s);
 }
 
+/* A faded label (its opacity, or a 3D label's point hidden) on a line is
+** as unreadable as any: warned as the same label at full opacity is (its
+** glyphs painted at 40 % never reached the half-inked pixels the check
+** counts, and it was never warned); clear of the line, nothing. */
+static void
+test_faded_label_warns(void **state)
+{
+    static const double y[] = { 1.5, 2.6 };
+    int k;
+    (void)state;
+    for (k = 0; k < 2; k++) {
+        char src[512], *t;
+        const char *w;
+        cf_script_t *s;
+        snprintf(src, sizeof src,
+                 "local f = figure{ name = 'fade', width = '6cm',\n"
+                 "  height = '4cm', window = { 0, 4, 0, 3 } }\n"
+                 "f:curve(bezier{ {0, 1.5}, {4, 1.5} }, { width = 3 })\n"
+                 "f:label({ 2, %g }, 'ABC', { place = 'center',\n"
+                 "                           opacity = 0.4 })\n", y[k]);
+        s = run(src);
+        t = dump(s, 0);
+        cf_free(t);
+        w = cf_figure_warnings(cf_script_figure(s, 0));
+        if (k == 0)
+            assert_non_null(strstr(w, "label \"ABC\" (place center) lies "
+                                      "on curve 1\n"));
+        else
+            assert_null(strstr(w, "lies on"));
+        cf_script_destroy(s);
+    }
+}
+
 /* at = "above": the inset's box above the drawing's top point; "n":
 ** inside the drawing, level with it. */
 static void
@@ -240,6 +273,7 @@ main(void)
         cmocka_unit_test(test_panel_keeps_parent),
         cmocka_unit_test(test_label_outside_window),
         cmocka_unit_test(test_panel_warnings),
+        cmocka_unit_test(test_faded_label_warns),
         cmocka_unit_test(test_inset_above),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -6,11 +6,22 @@
 ** server or `--once`.  A thread could not be stopped safely; a process
 ** can, and what it leaves behind (memory, the Lua state, half a figure)
 ** goes with it.  The worker serves runs until one of them goes wrong (or
-** it served many, or grew): a fresh process costs about three times a
-** run's own CPU (the pages it copies and faults in, its exit), so a run
-** in a worker that already ran one costs the run alone.
+** it served many, or grew): a fresh process costs more than a run (its
+** start, its fonts, its exit), so a run in a worker that already ran one
+** costs the run alone.
 **
-** The protocol, on two pipes: the values go in as their length (4 bytes)
+** The worker is this program started again (/proc/self/exe live-worker
+** SCRIPT, posix_spawn), never a fork of the server: a fork of a process
+** with threads (the server's polling thread, its runner and watcher)
+** holds, in the child, every lock another thread held at that instant;
+** under AddressSanitizer the child of such a fork hung, spinning in the
+** allocator, one fork in 20 in a test of this (a thread allocating from
+** new call stacks while another forks), and a page of `curvefig live`
+** waited for its run for ever.  A program started afresh holds no lock.
+**
+** The protocol, on two pipes (the worker's 3 and 4): first the setup
+** (setup_t: the parent's pid, whether to warm up before the first run,
+** the limits), then the values go in as their length (4 bytes)
 ** and the bytes; the end of the pipe: no more runs, exit.  The answer
 ** comes out as a flag byte (1: the values were bad; 2: this worker
 ** retires and exits after the answer), the length of the error (4 bytes),
@@ -22,6 +33,7 @@
 #include <math.h>
 #include <poll.h>
 #include <signal.h>
+#include <spawn.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -36,10 +48,21 @@
 #include "live.h"
 #include "fdio.h"
 #include "runlimits.h"
+#include "tool.h"
 
 #define MAX_REPLY ((size_t)1 << 30)
 #define FLAG_BAD 1
 #define FLAG_RETIRE 2
+#define REPLY_FD 3        /* the worker's answers */
+#define REQ_FD 4          /* the setup, then the values */
+
+/* The first message on the values' pipe (memset first: no padding byte
+** is left unset). */
+typedef struct setup {
+    pid_t parent;             /* the worker dies with it */
+    int warm;                 /* a figure run before the first run */
+    cf__tool_limits limits;
+} setup_t;
 
 /* The worker's resident memory in bytes (-1: unknown). */
 static long
@@ -77,19 +100,36 @@ read_values(int req, char **values, uint32_t *vlen)
     return 0;
 }
 
-/* The worker: set up as a run's process, then serve runs -- wait on req
-** for the values, run, write the answer into fd -- until req ends (exit
-** 0) or a run makes it retire; _exit (no atexit handler of the parent's
-** runs here).  It is forked before the values exist. */
-_Noreturn static void
-child(int fd, int req, pid_t parent, const char *script,
-      const cf__tool_limits *l)
+/* The worker (live-worker SCRIPT): set up as a run's process, then serve
+** runs -- wait on REQ_FD for the values, run, write the answer into
+** REPLY_FD -- until the values' pipe ends (exit 0) or a run makes it
+** retire; _exit.  It is started before the values exist. */
+int
+cf__live_worker_main(int argc, char **argv)
 {
+    int fd = REPLY_FD, req = REQ_FD;
     sigset_t none;
     char error[1024];
     long max, base = -1;
-    unsigned most = l->worker_runs > 0 ? l->worker_runs : CF__LIVE_WORKER_RUNS;
-    /* the signals the server waits for are its own: here the defaults */
+    setup_t setup;
+    const cf__tool_limits *l = &setup.limits;
+    const char *script;
+    unsigned most;
+    if (argc != 2) {
+        fprintf(stderr, "curvefig-live: live-worker is started by curvefig "
+                "live, not by hand\n");
+        return 2;
+    }
+    script = argv[1];
+    if (cf__fd_read_all(req, &setup, sizeof setup) != 0) {
+        fprintf(stderr, "curvefig-live: live-worker found no setup on its "
+                "descriptor %d (it is started by curvefig live, not by "
+                "hand)\n", REQ_FD);
+        return 2;
+    }
+    most = l->worker_runs > 0 ? l->worker_runs : CF__LIVE_WORKER_RUNS;
+    /* the signals the server waits for are its own (blocked in its
+    ** threads, a mask the start keeps): here the defaults */
     sigemptyset(&none);
     sigprocmask(SIG_SETMASK, &none, NULL);
     signal(SIGINT, SIG_DFL);
@@ -99,16 +139,10 @@ child(int fd, int req, pid_t parent, const char *script,
 #ifdef __linux__
     prctl(PR_SET_PDEATHSIG, SIGKILL);
 #endif
-    if (getppid() != parent)
+    if (getppid() != setup.parent)
         _exit(1);
-    /* the server's sockets stay the server's: the pipes at 3 and 4 (moved
-    ** out of the way first: either may be 3 or 4 now), the rest closed */
-    fd = fcntl(fd, F_DUPFD, 10);
-    req = fcntl(req, F_DUPFD, 10);
-    if (fd < 0 || req < 0 || dup2(fd, 3) != 3 || dup2(req, 4) != 4)
-        _exit(1);
-    fd = 3;
-    req = 4;
+    /* nothing of the server's but the two pipes (its descriptors are
+    ** close-on-exec; this is the second wall) */
 #if defined(__GLIBC__) && (__GLIBC__ > 2 || __GLIBC_MINOR__ >= 34)
     if (close_range(5, ~0u, 0) != 0)
 #endif
@@ -117,6 +151,9 @@ child(int fd, int req, pid_t parent, const char *script,
         for (long k = 5; k < (max > 0 && max < 65536 ? max : 65536); k++)
             close((int)k);
     }
+    cf__tool_fonts_init();
+    if (setup.warm)
+        cf__live_warm();
     for (unsigned runs = 1;; runs++) {
         bool bad = false;
         char *json, *values;
@@ -199,43 +236,76 @@ read_until(int fd, int stop_fd, double deadline, void *buf, size_t n)
     return 0;
 }
 
-/* Fork a worker into w (waiting for its values); 0, or -1 with errno. */
+/* Write n bytes to fd: 0, or -1 when its reader is gone (EPIPE, not
+** SIGPIPE). */
 static int
-spawn(cf__live_worker *w, const char *script, const cf__tool_limits *l)
+write_to(int fd, const void *buf, size_t n)
 {
-    int reply[2], req[2];
-    pid_t pid, parent = getpid();
-    if (pipe(reply) != 0)
+    void (*old_pipe)(int) = signal(SIGPIPE, SIG_IGN);
+    int r = cf__fd_write_all(fd, buf, n);
+    signal(SIGPIPE, old_pipe);
+    return r;
+}
+
+/* Start a worker into w (waiting for its values), warmed up first when
+** warm; 0, or -1 with errno. */
+static int
+spawn(cf__live_worker *w, const char *script, const cf__tool_limits *l,
+      bool warm)
+{
+    int reply[2], req[2], up[2], err;
+    posix_spawn_file_actions_t fa;
+    char *argv[] = { (char *)"curvefig-live", (char *)"live-worker",
+                     (char *)script, NULL };
+    setup_t setup;
+    pid_t pid;
+    if (pipe2(reply, O_CLOEXEC) != 0)
         return -1;
-    if (pipe(req) != 0) {
+    if (pipe2(req, O_CLOEXEC) != 0) {
+        err = errno;
         close(reply[0]);
         close(reply[1]);
+        errno = err;
         return -1;
     }
-    fcntl(reply[0], F_SETFD, FD_CLOEXEC);
-    fcntl(req[1], F_SETFD, FD_CLOEXEC);
-    fflush(NULL);
-    pid = fork();
-    if (pid < 0) {
-        int e = errno;
-        close(reply[0]);
-        close(reply[1]);
-        close(req[0]);
-        close(req[1]);
-        errno = e;
-        return -1;
+    /* the worker's ends copied above 4, so that the copies onto 3 and 4
+    ** are real copies, without close-on-exec, whichever numbers the pipes
+    ** have */
+    up[0] = fcntl(reply[1], F_DUPFD_CLOEXEC, 10);
+    up[1] = fcntl(req[0], F_DUPFD_CLOEXEC, 10);
+    err = up[0] < 0 || up[1] < 0 ? errno : 0;
+    if (err == 0)
+        err = posix_spawn_file_actions_init(&fa);
+    if (err == 0) {
+        err = posix_spawn_file_actions_adddup2(&fa, up[0], REPLY_FD);
+        if (err == 0)
+            err = posix_spawn_file_actions_adddup2(&fa, up[1], REQ_FD);
+        if (err == 0)
+            err = posix_spawn(&pid, "/proc/self/exe", &fa, NULL, argv,
+                              environ);
+        posix_spawn_file_actions_destroy(&fa);
     }
-    if (pid == 0) {
-        close(reply[0]);
-        close(req[1]);
-        child(reply[1], req[0], parent, script, l);
-    }
+    for (int k = 0; k < 2; k++)
+        if (up[k] >= 0)
+            close(up[k]);
     close(reply[1]);
     close(req[0]);
+    if (err != 0) {
+        close(reply[0]);
+        close(req[1]);
+        errno = err;
+        return -1;
+    }
     w->pid = pid;
     w->reply = reply[0];
     w->req = req[1];
     w->runs = 0;
+    memset(&setup, 0, sizeof setup);
+    setup.parent = getpid();
+    setup.warm = warm;
+    setup.limits = *l;
+    /* a worker gone at once is seen at its first run (ready()) */
+    (void)write_to(w->req, &setup, sizeof setup);
     return 0;
 }
 
@@ -248,10 +318,10 @@ cf__live_worker_init(cf__live_worker *w)
 }
 
 void
-cf__live_worker_fork(cf__live_worker *w, const char *script,
-                     const cf__tool_limits *limits)
+cf__live_worker_start(cf__live_worker *w, const char *script,
+                      const cf__tool_limits *limits)
 {
-    if (w->pid <= 0 && spawn(w, script, limits) != 0)
+    if (w->pid <= 0 && spawn(w, script, limits, true) != 0)
         cf__live_worker_init(w);
 }
 
@@ -293,7 +363,8 @@ ready(cf__live_worker *w, const char *script, const cf__tool_limits *l,
     }
     if (w->pid > 0)
         return 0;
-    if (spawn(w, script, l) == 0)
+    /* needed now: no warm-up (the run does the same work) */
+    if (spawn(w, script, l, false) == 0)
         return 0;
     snprintf(msg, size, "cannot start a run of %s: %s", script,
              strerror(errno));
@@ -305,11 +376,8 @@ ready(cf__live_worker *w, const char *script, const cf__tool_limits *l,
 static int
 send_values(cf__live_worker *w, const char *values, uint32_t len)
 {
-    void (*old_pipe)(int) = signal(SIGPIPE, SIG_IGN);
-    int r = cf__fd_write_all(w->req, &len, 4) == 0
-            && cf__fd_write_all(w->req, values, len) == 0 ? 0 : -1;
-    signal(SIGPIPE, old_pipe);
-    return r;
+    return write_to(w->req, &len, 4) == 0
+           && write_to(w->req, values, len) == 0 ? 0 : -1;
 }
 
 /* The answer of the run under way in w: 0 and *json, *error (malloc'd)

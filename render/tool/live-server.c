@@ -244,11 +244,10 @@ runner(void *arg)
 {
     server_t *sv = arg;
     cf__live_worker worker;
-    cf__live_warm();
-    /* the worker, forked while the server waits: a run then costs the
-    ** run, not the fork and the copying of pages after it */
+    /* the worker, started (and warmed up) while the server waits: a run
+    ** then costs the run, not the worker's start */
     cf__live_worker_init(&worker);
-    cf__live_worker_fork(&worker, sv->script, sv->limits);
+    cf__live_worker_start(&worker, sv->script, sv->limits);
     pthread_mutex_lock(&sv->lock);
     for (;;) {
         request_t *rq;
@@ -273,12 +272,9 @@ runner(void *arg)
                                   rq->body != NULL ? rq->len : 2,
                                   sv->stop_pipe[0], &worker, &bad, NULL,
                                   0);
-        /* a worker that was replaced: the next one before the answer, as
-        ** once the connection resumes the server's polling thread
-        ** allocates at once, and a fork in the middle of that leaves a
-        ** lock held in the child (under ASan, whose allocator has no fork
-        ** handler, the waiting process hung) */
-        cf__live_worker_fork(&worker, sv->script, sv->limits);
+        /* a worker that was replaced: the next one started before the
+        ** answer, so that it warms up while the page draws */
+        cf__live_worker_start(&worker, sv->script, sv->limits);
         pthread_mutex_lock(&sv->lock);
         finish(rq, bad ? MHD_HTTP_BAD_REQUEST : MHD_HTTP_OK,
                "application/json", json);

@@ -31,11 +31,12 @@ char *cf__live_error_json(const char *script, const char *msg, char *error,
 /* The values a run may be given, in bytes (the server answers 413 above). */
 #define CF__LIVE_MAX_VALUES ((size_t)1 << 20)
 
-/* The process that runs the script (live-child.c): forked ahead of need
-** from a thread where the Lua language, the fonts and the caches are
-** ready, it waits for values and serves one run after another, each in a
+/* The process that runs the script (live-child.c): this program started
+** again ahead of need (never a fork of the server, whose threads' locks a
+** fork would copy held), it loads the fonts and runs a small figure of
+** its own, then waits for values and serves one run after another, each in a
 ** fresh sandbox (a new Lua state: nothing a run leaves in Lua reaches the
-** next).  It is replaced -- killed and reaped, a new one forked -- when a
+** next).  It is replaced -- killed and reaped, a new one started -- when a
 ** run passes the time limit, is stopped, crashes or fails (a script
 ** error, a limit of the sandbox), after CF__LIVE_WORKER_RUNS runs (or the
 ** limits' worker_runs: --worker-runs N), and
@@ -49,28 +50,30 @@ typedef struct cf__live_worker {
 #define CF__LIVE_WORKER_RUNS 1000
 #define CF__LIVE_WORKER_GROWTH ((long)64 << 20)
 void cf__live_worker_init(cf__live_worker *w);
-/* Fork the worker when there is none (a failed fork leaves none: the next
-** run forks its own). */
-void cf__live_worker_fork(cf__live_worker *w, const char *script,
-                          const cf__tool_limits *limits);
+/* Start the worker when there is none (a failed start leaves none: the
+** next run starts its own). */
+void cf__live_worker_start(cf__live_worker *w, const char *script,
+                           const cf__tool_limits *limits);
+/* The worker's own main: `curvefig-live live-worker SCRIPT`, started by
+** the above with its pipes at 3 and 4 (argv from "live-worker"). */
+int cf__live_worker_main(int argc, char **argv);
 /* Kill the worker and reap it. */
 void cf__live_worker_drop(cf__live_worker *w);
 
 /* cf__live_run in the worker w (live-child.c) under limits: w's process
-** when it has one, else one forked now (w NULL: forked for this run and
-** ended after it); killed after limits->timeout seconds from the moment
+** when it has one, else one started now (w NULL: started for this run
+** and ended after it); killed after limits->timeout seconds from the moment
 ** it is given the values (the JSON then says so), or as soon as stop_fd
 ** (-1: none) becomes readable; a run that crashes is an error in the JSON
 ** too.  A worker that must be replaced (above) is gone from w afterwards:
-** fork the next one.  NULL only when memory ran out. */
+** start the next one.  NULL only when memory ran out. */
 char *cf__live_run_child(const char *script, const cf__tool_limits *limits,
                          const char *values, size_t len, int stop_fd,
                          cf__live_worker *w, bool *bad_values,
                          char *error, size_t error_len);
-/* Run a small figure of our own (a curve, a label in the default fonts)
-** in this thread, so that the processes it forks for runs start with the
-** fonts loaded and the caches of HarfBuzz's faces, fontconfig and cairo
-** warm. */
+/* Run a small figure of our own (a curve, a label in the default fonts),
+** so that a worker meets its first run with the fonts loaded and the
+** caches of HarfBuzz's faces, fontconfig and cairo warm. */
 void cf__live_warm(void);
 /* Seconds of a monotonic clock. */
 double cf__live_clock(void);

@@ -21,8 +21,8 @@ killed at --timeout with its error in the JSON while the server answers
 everything else, and the next run works; SIGTERM stops the server within
 two seconds while a run spins, and the run's process is gone; the script
 replaced by a directory or a FIFO is an error in the JSON, not an empty
-run or a server blocked for ever.  The runs' worker process is forked
-ahead of need (before the first request, and after a run that ended
+run or a server blocked for ever.  The runs' worker process is started
+(the program again, not a fork) ahead of need (before the first request, and after a run that ended
 it), runs the script as it is when the run starts, serves the next runs
 each in a fresh sandbox (a global, the string table and its metatable
 changed by one run are as new in the next), is replaced after a script
@@ -293,9 +293,9 @@ def run_ok(url, values=b'{}'):
 
 
 def test_worker(tool, tmp, good):
-    """The runs' process is forked ahead of need: one waits before the
-    first request and runs the script as it is then (not as it was when
-    it was forked); it serves the next runs too, each in a fresh sandbox
+    """The runs' process is started ahead of need (this program again,
+    `live-worker SCRIPT`, not a fork): one waits before the first request
+    and runs the script as it is then (not as it was when it started); it serves the next runs too, each in a fresh sandbox
     (what a run leaves in Lua does not reach the next); a run that fails
     (a script error, a limit) ends it and a new one serves the next run;
     SIGTERM takes the waiting one with the server."""
@@ -307,14 +307,21 @@ def test_worker(tool, tmp, good):
         kids = wait_children(p.pid, 1)
         check(len(kids) == 1, 'a worker waits before the first request '
               '(%s)' % kids)
-        # saved after that process was forked: the run reads it anew
+        # a program started afresh, not a fork of the server (a fork of a
+        # process with threads holds their locks: under ASan such a
+        # worker hung now and then, and its page waited for ever)
+        argv = open('/proc/%s/cmdline' % kids[0], 'rb').read().split(b'\0')
+        check(argv[1:3] == [b'live-worker', script.encode()],
+              'the worker is the program started again, "live-worker '
+              'SCRIPT" (%s)' % argv)
+        # saved after that process was started: the run reads it anew
         with open(script, 'w') as f:
             f.write(good.replace('name = "decasteljau"', 'name = "saved"')
                     + LEAK)
         ok, j = run_ok(url)
         names = [g['name'] for g in j.get('figures', [])]
         check(ok and names == ['saved'], 'the waiting process runs the '
-              'script as saved since it was forked (%s)' % names)
+              'script as saved since it was started (%s)' % names)
         results = [run_ok(url, b'{"t": %g}' % (0.1 * k)) for k in range(4)]
         later = wait_children(p.pid, 1)
         check(all(r[0] for r in results),

@@ -127,6 +127,12 @@ cf__live_worker_main(int argc, char **argv)
                 "hand)\n", REQ_FD);
         return 2;
     }
+    if (!(l->timeout >= 1 && l->timeout <= 86400)) {
+        fprintf(stderr, "curvefig-live: live-worker's setup has a time "
+                "limit of %g s, not 1 to 86400 (it is started by curvefig "
+                "live, not by hand)\n", l->timeout);
+        return 2;
+    }
     most = l->worker_runs > 0 ? l->worker_runs : CF__LIVE_WORKER_RUNS;
     /* the signals the server waits for are its own (blocked in its
     ** threads, a mask the start keeps): here the defaults */

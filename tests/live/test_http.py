@@ -314,6 +314,24 @@ def test_worker(tool, tmp, good):
         check(argv[1:3] == [b'live-worker', script.encode()],
               'the worker is the program started again, "live-worker '
               'SCRIPT" (%s)' % argv)
+        # started by hand, without the server's setup: said, nothing run
+        helper = os.path.join(os.path.dirname(os.path.abspath(tool)),
+                              'curvefig-live')
+        r = subprocess.run([helper, 'live-worker', script],
+                           capture_output=True, timeout=30)
+        check(r.returncode == 2 and r.stdout == b'' and b'not by hand'
+              in r.stderr, 'live-worker by hand: no run, status 2, said '
+              '(%d, %r)' % (r.returncode, r.stderr[-100:]))
+        rd, wr = os.pipe()
+        os.write(wr, b'\xff' * 64)
+        os.close(wr)
+        r = subprocess.run(['sh', '-c', 'exec "$0" live-worker "$1" 4<&%d'
+                            % rd, helper, script], pass_fds=(rd,),
+                           capture_output=True, timeout=30)
+        os.close(rd)
+        check(r.returncode in (1, 2) and r.stdout == b'',
+              'live-worker with a garbage setup: no run (%d, %r)'
+              % (r.returncode, r.stderr[-100:]))
         # saved after that process was started: the run reads it anew
         with open(script, 'w') as f:
             f.write(good.replace('name = "decasteljau"', 'name = "saved"')

@@ -239,7 +239,8 @@ cf__tool_live(int argc, char **argv)
                            "%s\n", script, why), EXIT_USAGE;
         free(code);
     }
-    cf__tool_fonts_init();
+    /* (the fonts are the worker's: live-child.c; this process draws
+    ** nothing) */
     if (want_once) {
         bool bad;
         char error[1024];

@@ -59,6 +59,8 @@ if [ -n "$tool" ]; then
     "$tool" render "$root/m.lua" -o "$root" -f png >/dev/null
     "$tool" compare "$root/m.png" "$root/m.png" >/dev/null
     "$tool" help live | grep -q 'curvefig live SCRIPT.lua'
+    # a run of live: the installed helper starts its worker (itself again)
+    "$tool" live "$root/m.lua" --once | grep -q '"figures"'
     echo "ok: the installed curvefig renders without the checking and live libraries and runs its helpers"
     # copied alone elsewhere, it names the directories it looked in for
     # its WebAssembly module and its helper programs (and only those)

@@ -1,11 +1,14 @@
 -- surfaces/coons: a bilinearly blended Coons patch from four boundary
--- curves (cubic Bézier curves meeting at the corners), the curves drawn
--- in colour over the patch's iso-lines.
+-- curves meeting at the corners, two cubic Bézier curves (c0, c1) and two
+-- clamped cubic B-splines of five points (d0, d1), the curves drawn in
+-- colour over the patch's iso-lines.
 
 local c0 = bezier{ {0, 0, 0}, {1, -0.3, 0.8}, {2, 0.3, 0.8}, {3, 0, 0} }
 local c1 = bezier{ {0, 3, 0.3}, {1, 3.3, 1.2}, {2, 2.7, 1.0}, {3, 3, 0.2} }
-local d0 = bezier{ {0, 0, 0}, {-0.3, 1, 1.0}, {0.3, 2, 1.1}, {0, 3, 0.3} }
-local d1 = bezier{ {3, 0, 0}, {3.3, 1, 0.7}, {2.7, 2, 0.9}, {3, 3, 0.2} }
+local d0 = bspline{ degree = 3, points = { {0, 0, 0}, {-0.15, 0.5, 0.5},
+  {0, 1.5, 1.0}, {0.15, 2.5, 0.7}, {0, 3, 0.3} } }
+local d1 = bspline{ degree = 3, points = { {3, 0, 0}, {3.15, 0.5, 0.35},
+  {3, 1.5, 0.85}, {2.85, 2.5, 0.55}, {3, 3, 0.2} } }
 local s = coons_patch{ c0, c1, d0, d1 }
 
 local f = figure{

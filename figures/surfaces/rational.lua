@@ -1,38 +1,31 @@
--- surfaces/rational: a rational biquadratic patch with the weight of its
--- middle control point raised from 1 to 4, which pulls the surface
--- towards that point; the polynomial patch (weights 1) in grey for
--- comparison.  Two views of the same patches: orthographic, and a
--- perspective from 7 units away (the projected lines are then rational
--- curves, still exact).
+-- surfaces/rational: a biquadratic rational patch, the weight of its
+-- middle control point P_11 1 in panel (a) and 4 in panel (b), the same
+-- net and the same view: the raised weight pulls the surface towards
+-- P_11.
 
 local P = {
   { {0, 0, 0},   {0, 1.5, 0.5}, {0, 3, 0} },
   { {1.5, 0, 0.5}, {1.5, 1.5, 2.5}, {1.5, 3, 0.5} },
   { {3, 0, 0},   {3, 1.5, 0.5}, {3, 3, 0} },
 }
-local W = { { 1, 1, 1 }, { 1, 4, 1 }, { 1, 1, 1 } }
-local plain = bezier_surface{ points = P }
-local raised = bezier_surface{ points = P, weights = W }
 
-local views = {
-  { view = { -60, 25 } },
-  { view = { 10, 20 }, projection = "perspective", distance = 7,
-    target = { 1.5, 1.5, 0.5 } },
+local f = figure{
+  name = "surfaces-rational",
+  caption = "A biquadratic rational patch with the weight of P_{11} 1 "
+    .. "(left) and 4 (right), the same net and view",
+  width = "12cm", height = "5.5cm",
 }
-for k, v in ipairs(views) do
-  local f = figure{
-    name = "surfaces-rational-" .. k,
-    caption = "A rational biquadratic patch with w_{11} = 4 (dark) and the "
-      .. "polynomial one (grey), view " .. k .. " of 2"
-      .. (v.projection and " (perspective)" or ""),
-    width = "7cm", height = "5.5cm",
-    view = v.view, projection = v.projection, distance = v.distance,
-    target = v.target,
-  }
-  f:surface(plain, { color = "#a0a0a0", width = 0.7, isolines = { 3, 3 },
-                     occludes = false, hidden = "show" })
-  f:surface(raised, { isolines = { 3, 3 }, hidden = "dashed",
-                      net = { color = "grey" }, label_place = "n", labels = function(i, j)
-                        if i == 1 and j == 1 then return "P_{11}" end
-                      end })
+local panels = { f:panels{ rows = 1, cols = 2,
+                           titles = { "w_{11} = 1", "w_{11} = 4" } } }
+for k, w in ipairs({ 1, 4 }) do
+  local p = panels[k]
+  p:view(-60, 25)
+  local s = bezier_surface{ points = P,
+                            weights = { { 1, 1, 1 }, { 1, w, 1 },
+                                        { 1, 1, 1 } } }
+  p:surface(s, { isolines = { 3, 3 }, hidden = "dashed",
+                 net = { color = "grey" }, label_place = "n",
+                 labels = function(i, j)
+                   if i == 1 and j == 1 then return "P_{11}" end
+                 end })
 end

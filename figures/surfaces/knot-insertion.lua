@@ -1,30 +1,36 @@
--- surfaces/knot-insertion: knot insertion in u on a biquadratic B-spline
--- surface: u = 1.5 inserted once; the old net (grey) and the new net
--- (orange), whose new row replaces two rows of the old one; the surface is
--- the same.
+-- surfaces/knot-insertion: knot insertion at u = 0.5 on the bicubic
+-- B-spline surface of surfaces/bspline (7 x 6 points, clamped non-uniform
+-- knots U and V): the old net grey, the new net orange -- one more row
+-- of points, three rows of the old one replaced by four -- and the
+-- surface, drawn once from each, the same.
 
 local P = {}
-for i = 0, 3 do
+for i = 0, 6 do
   local row = {}
-  for j = 0, 3 do
-    row[#row + 1] = { i, j, ((i + j) % 2 == 0) and 1.2 or 0.2 }
+  for j = 0, 5 do
+    local z = 0.8 * math.sin(i * 0.8) * math.cos(j * 0.9) + 0.1 * i
+    row[#row + 1] = { 0.75 * i, j, z }
   end
   P[#P + 1] = row
 end
-local s = bspline_surface{ degree = { 2, 2 },
-                           knots = { {0, 0, 0, 1, 2, 2, 2},
-                                     {0, 0, 0, 1, 2, 2, 2} },
-                           points = P }
-local t = s:insert_knot("u", 1.5)
+local U = { 0, 0, 0, 0, 1, 1.5, 3, 4, 4, 4, 4 }
+local V = { 0, 0, 0, 0, 1, 2.5, 4, 4, 4, 4 }
+local s = bspline_surface{ degree = { 3, 3 }, knots = { U, V }, points = P }
+local t = s:insert_knot("u", 0.5)
 
 local f = figure{
   name = "surfaces-knot-insertion",
-  caption = "Knot insertion in u: u = 1.5 inserted once; old net (grey), "
-    .. "new net (orange), knot lines of the new surface",
+  caption = "Knot insertion at u = 0.5 on the bicubic B-spline surface: "
+    .. "old net (grey), new net (orange), the surface unchanged",
   width = "9cm", height = "7cm",
-  view = { -60, 30 },
+  view = { -60, 35 },
 }
-f:surface(s, { hidden = "remove", net = { color = "#8c8c8c", width = 0.5 } })
+-- the surface with its iso-lines; the two nets over it, whole (a net
+-- lies partly under its surface, and here it is what the figure shows)
+f:surface(s, { isolines = { 8, 6 }, width = 0.5, hidden = "remove" })
+f:surface(s, { boundary = false, silhouette = false, occludes = false,
+               isolines = { 0, 0 }, hidden = "show",
+               net = { color = "#8c8c8c", width = 0.6 } })
 f:surface(t, { boundary = false, silhouette = false, occludes = false,
-               knot_lines = true, hidden = "remove",
-               net = { color = "#e07b00", width = 0.7 } })
+               isolines = { 0, 0 }, hidden = "show",
+               net = { color = "#e07b00", width = 0.8 } })

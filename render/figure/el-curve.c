@@ -61,20 +61,23 @@ curve_bounds(const cf__element_t *el, cf__bounds_t *b)
 }
 
 /* Append a cubic (data coordinates) to the path, starting a subpath when
-** it does not continue the previous one; last[2] is the previous end on
-** the page (unrounded: cairo's current point is rounded to 1/256), NAN
-** at the start. */
+** it does not continue the previous one; last[0..1] is the previous end
+** on the page (unrounded: cairo's current point is rounded to 1/256), NAN
+** at the start, last[2..3] the start of the subpath it ends. */
 static void
 path_cubic(cf__dl_t *dl, const cf__layout_t *l, const double *c,
-           double *last)
+           double last[4])
 {
     double p[8];
     size_t k;
     for (k = 0; k < 4; k++)
         cf__map(l, c[2 * k], c[2 * k + 1], &p[2 * k], &p[2 * k + 1]);
     if (isnan(last[0]) || fabs(last[0] - p[0]) > 1e-6
-        || fabs(last[1] - p[1]) > 1e-6)
+        || fabs(last[1] - p[1]) > 1e-6) {
         cf__dl_move(dl, p[0], p[1]);
+        last[2] = p[0];
+        last[3] = p[1];
+    }
     cf__dl_curve(dl, p[2], p[3], p[4], p[5], p[6], p[7]);
     last[0] = p[6];
     last[1] = p[7];
@@ -109,17 +112,14 @@ curve_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
 {
     curve_el_t *e = (curve_el_t *)el;
     size_t i, k;
-    double sx = 0, sy = 0, last[2] = { NAN, NAN };
-    bool first = true;
+    double last[4] = { NAN, NAN, NAN, NAN };
     cf__paint_t paint;
     cf__clip_to_window(l, s->width > 0 ? s->width : 0, dl);
     cf__dl_path_begin(dl);
     for (i = 0; i < e->npieces; i++) {
         piece_t *pc = &e->pieces[i];
-        const double *c0;
         if (pc->bez == NULL) {
             path_cubic(dl, l, pc->cubic, last);
-            c0 = pc->cubic;
         } else {
             if (piece_cubics(fig, pc, l->tol) != CF_STATUS_OK) {
                 cf__dl_unclip(dl);
@@ -127,15 +127,14 @@ curve_draw(cf_figure_t *fig, cf__element_t *el, const cf__layout_t *l,
             }
             for (k = 0; k < pc->cache->count; k++)
                 path_cubic(dl, l, pc->cache->pts + 8 * k, last);
-            c0 = pc->cache->count > 0 ? pc->cache->pts : NULL;
-        }
-        if (first && c0 != NULL && !isnan(last[0])) {
-            /* start of the path, for closing */
-            cf__map(l, c0[0], c0[1], &sx, &sy);
-            first = false;
         }
     }
-    if (!first && fabs(last[0] - sx) < 1e-6 && fabs(last[1] - sy) < 1e-6)
+    /* closed where the last subpath ends at its own start (a close ends
+    ** the last subpath: closing one that began elsewhere -- a loop drawn
+    ** in two runs, the second ending at the first's start -- would draw
+    ** the chord of the second) */
+    if (!isnan(last[0]) && fabs(last[0] - last[2]) < 1e-6
+        && fabs(last[1] - last[3]) < 1e-6)
         cf__dl_close(dl);
     memset(&paint, 0, sizeof paint);
     paint.stroke = true;

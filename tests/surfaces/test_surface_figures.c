@@ -297,6 +297,44 @@ test_visibility(void **state)
 
 /* ---- cubic segments ----------------------------------------------------- */
 
+/* The straight edges a path draws, fed its commands in order: each line
+** segment, and a close whose current point is not the subpath's start,
+** farther than rounding from it (cairo's PDF closes "l l l h" where the
+** display list and the SVG draw the last edge back to the start, then
+** close: the same four edges). */
+typedef struct edges {
+    double sx, sy, cx, cy;
+    size_t n;
+} edges_t;
+
+static void
+edge_move(edges_t *e, double x, double y)
+{
+    e->sx = e->cx = x;
+    e->sy = e->cy = y;
+}
+
+static void
+edge_line(edges_t *e, double x, double y)
+{
+    e->n++;
+    e->cx = x;
+    e->cy = y;
+}
+
+/* A close draws an edge when it spans more than 0.01 bp: the formats
+** round the points they write (the SVG to 0.001 bp), so a closed curve
+** whose end meets its start within rounding closes with no edge in one
+** format and a speck of one in another. */
+static void
+edge_close(edges_t *e)
+{
+    if (fabs(e->cx - e->sx) > 0.01 || fabs(e->cy - e->sy) > 0.01)
+        e->n++;
+    e->cx = e->sx;
+    e->cy = e->sy;
+}
+
 /* Line segments of stroked-only paths in the dump: inside surface groups
 ** (*in_surface) and elsewhere (*other); cubic segments of surface groups
 ** into *cubics. */
@@ -314,14 +352,34 @@ dump_segments(const char *text, size_t *in_surface, size_t *other,
         else if (strncmp(line, "end", 3) == 0)
             surface = false;
         else if (strncmp(line, "path stroke", 11) == 0) {
-            for (size_t k = 0; k + 2 < len; k++) {
-                if (line[k] == ' ' && line[k + 2] == ' '
-                    && line[k + 1] == 'L')
-                    (*(surface ? in_surface : other))++;
-                if (surface && line[k] == ' ' && line[k + 2] == ' '
-                    && line[k + 1] == 'C')
-                    (*cubics)++;
+            /* after " :", the segments: a letter and its numbers */
+            static const char letter[] = "MLCRAZ";
+            static const int count[] = { 2, 2, 6, 4, 5, 0 };
+            const char *p = memmem(line, len, " :", 2), *end = line + len;
+            edges_t e = { 0, 0, 0, 0, 0 };
+            while (p != NULL && (p = strchr(p, ' ')) != NULL && p < end) {
+                const char *at = strchr(letter, p[1]);
+                double v[6];
+                int k, seg = at != NULL && p[1] != '\0'
+                                 ? (int)(at - letter) : -1;
+                p += 2;
+                if (seg < 0)
+                    continue;
+                for (k = 0; k < count[seg]; k++)
+                    v[k] = strtod(p, (char **)&p);
+                if (seg == 0)
+                    edge_move(&e, v[0], v[1]);
+                else if (seg == 1)
+                    edge_line(&e, v[0], v[1]);
+                else if (seg == 2) {
+                    if (surface)
+                        (*cubics)++;
+                    e.cx = v[4];
+                    e.cy = v[5];
+                } else if (seg == 5)
+                    edge_close(&e);
             }
+            *(surface ? in_surface : other) += e.n;
         }
         line = nl != NULL ? nl + 1 : NULL;
     }
@@ -346,7 +404,8 @@ slurp(const char *path, size_t *size)
     return buf;
 }
 
-/* 'L' commands of the SVG's stroked paths without fill (the SVG writer
+/* The straight edges ('L', and 'Z' where it draws one: edges_t) of the
+** SVG's stroked paths without fill (the SVG writer
 ** sets fill="none" on its outer group: a stroked path without a fill of
 ** its own is not filled; the glyph outlines in <defs> have no stroke). */
 static size_t
@@ -367,15 +426,39 @@ svg_lines(const char *svg)
                  && (fill == NULL || fill > end)))
             continue;
         d = strstr(p, " d=\"");
-        for (d = d != NULL && d < end ? d + 4 : end; d < end && *d != '"';
-             d++)
-            n += *d == 'L';
+        {
+            /* the writer's commands are absolute: M L C Z */
+            edges_t e = { 0, 0, 0, 0, 0 };
+            char *q;
+            for (d = d != NULL && d < end ? d + 4 : end; d < end && *d != '"';
+                 ) {
+                char c = *d++;
+                double v[6];
+                int k, m = c == 'M' || c == 'L' ? 2 : c == 'C' ? 6 : 0;
+                for (k = 0; k < m; k++) {
+                    while (*d == ' ' || *d == ',')
+                        d++;
+                    v[k] = strtod(d, &q);
+                    d = q;
+                }
+                if (c == 'M')
+                    edge_move(&e, v[0], v[1]);
+                else if (c == 'L')
+                    edge_line(&e, v[0], v[1]);
+                else if (c == 'C') {
+                    e.cx = v[4];
+                    e.cy = v[5];
+                } else if (c == 'Z')
+                    edge_close(&e);
+            }
+            n += e.n;
+        }
     }
     return n;
 }
 
-/* 'l' operators of the PDF's paths painted by S (stroke only), in every
-** Flate stream. */
+/* The straight edges ('l', and 'h' where it draws one: edges_t) of the
+** PDF's paths painted by S (stroke only), in every Flate stream. */
 static size_t
 pdf_lines(const char *pdf, size_t size)
 {
@@ -385,24 +468,42 @@ pdf_lines(const char *pdf, size_t size)
         const char *e = memmem(p, size - (size_t)(p - pdf), "endstream", 9);
         uLongf out = 1u << 24;
         unsigned char *buf = malloc(out + 1);
-        size_t ls = 0;
+        edges_t ed = { 0, 0, 0, 0, 0 };
+        double v[6];
+        int nv = 0;
         assert_non_null(buf);
         if (e != NULL && uncompress(buf, &out, (const Bytef *)p + 7,
                                     (uLong)(e - p - 7)) == Z_OK) {
             buf[out] = '\0';
             for (char *tok = strtok((char *)buf, " \n\r"); tok != NULL;
                  tok = strtok(NULL, " \n\r")) {
-                if (strcmp(tok, "l") == 0)
-                    ls++;
+                char *q;
+                double x = strtod(tok, &q);
+                if (q != tok && *q == '\0') {   /* an operand */
+                    if (nv == 6)
+                        memmove(v, v + 1, 5 * sizeof *v), nv = 5;
+                    v[nv++] = x;
+                    continue;
+                }
+                if (strcmp(tok, "m") == 0 && nv >= 2)
+                    edge_move(&ed, v[nv - 2], v[nv - 1]);
+                else if (strcmp(tok, "l") == 0 && nv >= 2)
+                    edge_line(&ed, v[nv - 2], v[nv - 1]);
+                else if (strcmp(tok, "c") == 0 && nv >= 2) {
+                    ed.cx = v[nv - 2];
+                    ed.cy = v[nv - 1];
+                } else if (strcmp(tok, "h") == 0)
+                    edge_close(&ed);
                 else if (strcmp(tok, "S") == 0) {
-                    n += ls;
-                    ls = 0;
+                    n += ed.n;
+                    ed.n = 0;
                 } else if (strcmp(tok, "f") == 0 || strcmp(tok, "B") == 0
                            || strcmp(tok, "n") == 0 || strcmp(tok, "f*") == 0
                            || strcmp(tok, "b") == 0 || strcmp(tok, "s") == 0
                            || strcmp(tok, "W") == 0) {
-                    ls = 0;
+                    ed.n = 0;
                 }
+                nv = 0;
             }
         }
         free(buf);

@@ -130,5 +130,9 @@ size_t cf__place_chosen(cf_figure_t *fig, cf__auto_place_t *out,
                         size_t cap);
 /* Forget the places chosen: the figure is laid out afresh. */
 void cf__place_forget(cf_figure_t *fig);
+/* Free the memory of the placement's rasters, kept between the placements
+** of one layout's refits: once a layout is final its drawing needs it no
+** more (and a next placement takes it afresh). */
+void cf__place_release(cf_figure_t *fig);
 
 #endif

@@ -188,6 +188,14 @@ cf__place_raster_memory(cf_figure_t *fig, cf__place_raster_t *r)
 }
 
 void
+cf__place_release(cf_figure_t *fig)
+{
+    cf_free(fig->place_px);
+    fig->place_px = NULL;
+    fig->place_px_size = fig->place_px_zero = 0;
+}
+
+void
 cf__place_raster_close(cf_figure_t *fig, cf__place_raster_t *r)
 {
     if (r->img.px != NULL) {

@@ -80,8 +80,8 @@ ink_fits(const job_t *job, double pad)
 ** cropped to it (tight; then the ink is in the cropped page's
 ** coordinates); otherwise ink is left zero. */
 static cf_status_t
-make_job(cf_figure_t *fig, const cf_write_options_t *o, bool need_ink,
-         job_t *job, cf_diag_t *diag)
+lay_out_job(cf_figure_t *fig, const cf_write_options_t *o, bool need_ink,
+            job_t *job, cf_diag_t *diag)
 {
     bool tight = o->tight || fig->page_mode == CF_PAGE_INK;
     double pad = fig->page_mode == CF_PAGE_INK ? fig->margin : o->padding;
@@ -132,6 +132,15 @@ make_job(cf_figure_t *fig, const cf_write_options_t *o, bool need_ink,
         return cf_figure_status(fig, diag);
     return cf__figure_check_page(fig, &job->dl, job->page.width,
                                  job->page.height, !tight, diag);
+}
+
+static cf_status_t
+make_job(cf_figure_t *fig, const cf_write_options_t *o, bool need_ink,
+         job_t *job, cf_diag_t *diag)
+{
+    cf_status_t st = lay_out_job(fig, o, need_ink, job, diag);
+    cf__place_release(fig);
+    return st;
 }
 
 static void

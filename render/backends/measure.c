@@ -176,7 +176,7 @@ fill(measure_t *g, const cf__path_t *p, const cf__xform_t *m, double alpha)
         alpha = 1;
     if (g->r == NULL) {
         double b[4] = { 1, 0, 0, 0 };
-        cf__path_box(p, m, b);
+        cf__path_box(p, m->scale, m->dx, m->dy, b);
         if (b[2] >= b[0])
             add_ink(g, b);
         return;
@@ -197,7 +197,7 @@ stroke(measure_t *g, const cf__path_t *p, const cf__xform_t *m,
         && pen->join == CF__JOIN_ROUND && pen->ndash == 0) {
         /* the path's every point grown by a disc */
         double b[4] = { 1, 0, 0, 0 }, e = 0.5 * pen->width * m->scale;
-        cf__path_box(p, m, b);
+        cf__path_box(p, m->scale, m->dx, m->dy, b);
         if (b[2] >= b[0]) {
             b[0] -= e;
             b[1] -= e;
@@ -233,9 +233,28 @@ draw_text(void *ctx, const cf__text_op_t *t)
     cf__path_t outline;
     if (t->label == NULL)
         return;
-    cf__label_outline(t->label, &outline);
     m.dx += t->ox * m.scale;
     m.dy += t->oy * m.scale;
+    if (g->r == NULL) {
+        /* the box of the outline, kept by the label (measured each
+        ** layout pass, a label's outline was most of the boxes' work) */
+        double lb[4], b[4], e = t->halo * m.scale;
+        cf__label_outline_box(t->label, lb);
+        if (!(lb[2] >= lb[0]))
+            return;
+        b[0] = lb[0] * m.scale + m.dx;
+        b[1] = lb[1] * m.scale + m.dy;
+        b[2] = lb[2] * m.scale + m.dx;
+        b[3] = lb[3] * m.scale + m.dy;
+        if (t->color.a * t->opacity > 0)
+            add_ink(g, b);
+        if (t->halo > 0 && t->halo_color.a > 0) {
+            double h[4] = { b[0] - e, b[1] - e, b[2] + e, b[3] + e };
+            add_ink(g, h);
+        }
+        return;
+    }
+    cf__label_outline(t->label, &outline);
     if (t->halo > 0) {
         cf__pen_t pen = { 2 * t->halo, CF__CAP_ROUND, CF__JOIN_ROUND, NULL,
                           0 };

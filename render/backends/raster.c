@@ -66,19 +66,6 @@ cf__poly_free(cf__poly_t *pl)
     cf__poly_init(pl);
 }
 
-static void
-grow_box(double box[4], double x, double y)
-{
-    if (box[2] < box[0]) {
-        box[0] = box[2] = x;
-        box[1] = box[3] = y;
-        return;
-    }
-    box[0] = fmin(box[0], x);
-    box[1] = fmin(box[1], y);
-    box[2] = fmax(box[2], x);
-    box[3] = fmax(box[3], y);
-}
 
 static void
 edge(cf__poly_t *pl, pt_t a, pt_t b)
@@ -88,8 +75,8 @@ edge(cf__poly_t *pl, pt_t a, pt_t b)
         pl->failed = true;
         return;
     }
-    grow_box(pl->box, a.x, a.y);
-    grow_box(pl->box, b.x, b.y);
+    cf__box_grow(pl->box, a.x, a.y);
+    cf__box_grow(pl->box, b.x, b.y);
     if (a.y == b.y)
         return;
     if (pl->n == pl->cap) {
@@ -169,20 +156,6 @@ flatten_curve(pts_t *a, pt_t p0, const double *v, const cf__xform_t *m)
     }
 }
 
-/* The angles of an arc as cairo_arc takes them: a1 raised by whole turns
-** to at least a0; false when they are not finite or too far apart. */
-static bool
-arc_range(const double *v, double *a0, double *a1)
-{
-    *a0 = v[3];
-    *a1 = v[4];
-    if (!(isfinite(*a0) && isfinite(*a1) && fabs(*a0) < 1e6
-          && fabs(*a1) < 1e6))
-        return false;
-    if (*a1 < *a0)
-        *a1 += 2 * PI * ceil((*a0 - *a1) / (2 * PI));
-    return *a1 - *a0 < 1e3;
-}
 
 /* cairo_arc's: a line to its start (a move without a current point),
 ** counter-clockwise on the y-down page from a0 to a1. */
@@ -192,7 +165,7 @@ flatten_arc(pts_t *a, const double *v, const cf__xform_t *m)
     double cx = v[0] * m->scale + m->dx, cy = v[1] * m->scale + m->dy;
     double r = fabs(v[2]) * m->scale, a0, a1;
     size_t k, n;
-    if (!arc_range(v, &a0, &a1)) {
+    if (!cf__arc_range(v, &a0, &a1)) {
         a->failed = true;
         return;
     }
@@ -501,139 +474,4 @@ cf__poly_stroke(cf__poly_t *pl, const cf__path_t *p, const cf__xform_t *m,
         pl->failed = true;
     cf_free(a.p);
     cf_free(s.piece.p);
-}
-
-/* ---- exact boxes -------------------------------------------------------- */
-
-/* The extremes of one coordinate of a cubic p0..p3 grown into lo, hi. */
-static void
-cubic_range(double p0, double p1, double p2, double p3, double *lo,
-            double *hi)
-{
-    /* B'(t)/3 = a t^2 + b t + c */
-    double a = -p0 + 3 * p1 - 3 * p2 + p3, b = 2 * (p0 - 2 * p1 + p2);
-    double c = p1 - p0, t[2];
-    int k, n = 0;
-    *lo = fmin(*lo, fmin(p0, p3));
-    *hi = fmax(*hi, fmax(p0, p3));
-    if (fabs(a) < 1e-12 * (fabs(b) + fabs(c))) {
-        if (b != 0)
-            t[n++] = -c / b;
-    } else {
-        double d = b * b - 4 * a * c;
-        if (d >= 0) {
-            double q = -0.5 * (b + copysign(sqrt(d), b));
-            t[n++] = q / a;
-            if (q != 0)
-                t[n++] = c / q;
-        }
-    }
-    for (k = 0; k < n; k++)
-        if (t[k] > 0 && t[k] < 1) {
-            double s = 1 - t[k];
-            double v = s * s * s * p0 + 3 * s * s * t[k] * p1
-                     + 3 * s * t[k] * t[k] * p2 + t[k] * t[k] * t[k] * p3;
-            *lo = fmin(*lo, v);
-            *hi = fmax(*hi, v);
-        }
-}
-
-static void
-arc_box(const double *v, const cf__xform_t *m, double box[4])
-{
-    double cx = v[0] * m->scale + m->dx, cy = v[1] * m->scale + m->dy;
-    double r = fabs(v[2]) * m->scale, a0, a1, q;
-    int k;
-    if (!arc_range(v, &a0, &a1))
-        return;
-    grow_box(box, cx + r * cos(a0), cy + r * sin(a0));
-    grow_box(box, cx + r * cos(a1), cy + r * sin(a1));
-    /* the points on the axes the arc passes (quarter turns) */
-    for (q = ceil(a0 / (PI / 2)), k = 0; q * (PI / 2) <= a1 && k < 5;
-         q++, k++) {
-        int quarter = (int)fmod(fmod(q, 4) + 4, 4);
-        grow_box(box, cx + (quarter == 0 ? r : quarter == 2 ? -r : 0),
-                 cy + (quarter == 1 ? r : quarter == 3 ? -r : 0));
-    }
-}
-
-void
-cf__path_box(const cf__path_t *p, const cf__xform_t *m, double box[4])
-{
-    const double *v = p->coords;
-    double cx = 0, cy = 0, sx = 0, sy = 0;
-    bool cur = false, moved = false;   /* moved: a move not yet drawn from */
-    size_t i;
-    for (i = 0; i < p->nsegs; i++) {
-        double x = 0, y = 0;
-        cf__seg_t seg = (cf__seg_t)p->segs[i];
-        if (seg != CF__SEG_CLOSE) {
-            x = v[0] * m->scale + m->dx;
-            y = v[1] * m->scale + m->dy;
-        }
-        if (moved && (seg == CF__SEG_LINE || seg == CF__SEG_CURVE
-                      || seg == CF__SEG_ARC))
-            grow_box(box, cx, cy);
-        moved = seg == CF__SEG_MOVE;
-        switch (seg) {
-        case CF__SEG_MOVE:
-        case CF__SEG_LINE:
-            if (seg == CF__SEG_LINE)
-                grow_box(box, x, y);
-            if (seg == CF__SEG_MOVE || !cur) {
-                sx = x;
-                sy = y;
-            }
-            cx = x;
-            cy = y;
-            v += 2;
-            break;
-        case CF__SEG_CURVE: {
-            double x2 = v[2] * m->scale + m->dx, y2 = v[3] * m->scale + m->dy;
-            double x3 = v[4] * m->scale + m->dx, y3 = v[5] * m->scale + m->dy;
-            double lo[2], hi[2];
-            if (!cur) {
-                cx = sx = x;
-                cy = sy = y;
-                grow_box(box, x, y);
-            }
-            lo[0] = hi[0] = cx;
-            lo[1] = hi[1] = cy;
-            cubic_range(cx, x, x2, x3, &lo[0], &hi[0]);
-            cubic_range(cy, y, y2, y3, &lo[1], &hi[1]);
-            grow_box(box, lo[0], lo[1]);
-            grow_box(box, hi[0], hi[1]);
-            cx = x3;
-            cy = y3;
-            v += 6;
-            break;
-        }
-        case CF__SEG_RECT:
-            grow_box(box, x, y);
-            grow_box(box, x + v[2] * m->scale, y + v[3] * m->scale);
-            cx = sx = x;
-            cy = sy = y;
-            v += 4;
-            break;
-        case CF__SEG_ARC: {
-            double a0, a1, r = fabs(v[2]) * m->scale;
-            arc_box(v, m, box);
-            if (arc_range(v, &a0, &a1)) {
-                if (!cur) {
-                    sx = x + r * cos(a0);
-                    sy = y + r * sin(a0);
-                }
-                cx = x + r * cos(a1);
-                cy = y + r * sin(a1);
-            }
-            v += 5;
-            break;
-        }
-        case CF__SEG_CLOSE:
-            cx = sx;
-            cy = sy;
-            break;
-        }
-        cur = true;
-    }
 }

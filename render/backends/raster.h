@@ -55,10 +55,6 @@ void cf__poly_fill(cf__poly_t *pl, const cf__path_t *p, const cf__xform_t *m);
 void cf__poly_stroke(cf__poly_t *pl, const cf__path_t *p,
                      const cf__xform_t *m, const cf__pen_t *pen);
 
-/* The exact box (device units: x0 y0 x1 y1) of what path p draws,
-** curves and arcs by their extremes (a move drawn from by nothing adds
-** nothing), grown into box (box[2] < box[0]: empty at first). */
-void cf__path_box(const cf__path_t *p, const cf__xform_t *m, double box[4]);
 
 /* The nonzero (evenodd: even-odd) coverage of pl times alpha painted over
 ** the A8 pixels px (row j at px + j * stride), within the pixel box

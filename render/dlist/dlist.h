@@ -249,4 +249,19 @@ void cf__marker_from_style(const cf_style_t *s, cf_marker_t marker,
                            double x, double y, const double *dir,
                            cf__marker_op_t *out);
 
+/* ---- exact boxes (path-box.c) ------------------------------------------ */
+
+/* The exact box (x0 y0 x1 y1) of what path p draws at device = page *
+** scale + (dx, dy), curves and arcs by their extremes (a move drawn from
+** by nothing adds nothing), grown into box (box[2] < box[0]: empty at
+** first). */
+void cf__path_box(const cf__path_t *p, double scale, double dx, double dy,
+                  double box[4]);
+/* (x, y) grown into box (box[2] < box[0]: empty). */
+void cf__box_grow(double box[4], double x, double y);
+/* The angles of an arc v (cx cy r a0 a1) as cairo_arc takes them: a1
+** raised by whole turns to at least a0; false when they are not finite
+** or too far apart. */
+bool cf__arc_range(const double *v, double *a0, double *a1);
+
 #endif

@@ -64,6 +64,7 @@ struct cf_label {
     size_t shaped;            /* bytes handed to the fonts to shape */
     cf_label_box_t *boxes;    /* public view of the runs */
     cf__pathb_t outline;      /* cf__label_outline */
+    double outline_box[4];    /* its exact box (cf__label_outline_box) */
 };
 
 typedef struct font {

@@ -29,6 +29,10 @@ void cf__label_ink(const cf_label_t *label, double box[4]);
 ** (0, 0) (bp, y down like cairo): a path to fill by the nonzero rule,
 ** valid while the label is. */
 void cf__label_outline(const cf_label_t *label, cf__path_t *out);
+/* The exact box of that outline, curves by their extremes (cf__path_box,
+** x0 y0 x1 y1; x1 < x0 when it draws nothing): the ink box of the label
+** filled, as cairo's recording surface measures it. */
+void cf__label_outline_box(const cf_label_t *label, double box[4]);
 /* The bytes of text the fonts shaped to lay the label out: linear in the
 ** label's length (each run is measured once, its growing tail again). */
 size_t cf__label_shaped_bytes(const cf_label_t *label);

@@ -36,6 +36,7 @@ cf_label_destroy(cf_label_t *label)
 static int
 make_outline(cf_label_t *lab)
 {
+    cf__path_t path;
     size_t i;
     for (i = 0; i < lab->count; i++) {
         const run_t *r = &lab->runs[i];
@@ -57,13 +58,25 @@ make_outline(cf_label_t *lab)
         lab->fonts->outline(lab->fonts_ctx, r->shaped, r->x,
                             -r->y - r->baseline, &lab->outline);
     }
-    return lab->outline.failed ? -1 : 0;
+    if (lab->outline.failed)
+        return -1;
+    cf__pathb_path(&lab->outline, &path);
+    lab->outline_box[0] = 1;
+    lab->outline_box[1] = lab->outline_box[2] = lab->outline_box[3] = 0;
+    cf__path_box(&path, 1, 0, 0, lab->outline_box);
+    return 0;
 }
 
 void
 cf__label_outline(const cf_label_t *label, cf__path_t *out)
 {
     cf__pathb_path(&label->outline, out);
+}
+
+void
+cf__label_outline_box(const cf_label_t *label, double box[4])
+{
+    memcpy(box, label->outline_box, sizeof label->outline_box);
 }
 
 cf_status_t

@@ -189,6 +189,11 @@ static void
 stroke(measure_t *g, const cf__path_t *p, const cf__xform_t *m,
        const cf__pen_t *pen, double alpha)
 {
+    double coverage = 1;
+    /* a pattern drawn solid (too fine, or along too long a path) weighs
+    ** the line as cairo's approximation of it inks it */
+    if (pen->ndash > 0 && cf__pen_solid(p, m, pen, &coverage))
+        alpha *= coverage;
     if (!(alpha > 0 && pen->width > 0))
         return;
     if (g->r != NULL && g->r->solid)

@@ -134,7 +134,8 @@ arc_chords(double r, double sweep, double tol)
 {
     double step = r > tol ? 2 * acos(1 - tol / r) : PI / 2;
     double n = ceil(fabs(sweep) / fmin(step, PI / 2));
-    return n < 1 ? 1 : n > MAX_CHORDS ? MAX_CHORDS : (size_t)n;
+    /* (NaN, from a point not finite: one chord, which edge() refuses) */
+    return !(n >= 1) ? 1 : n > MAX_CHORDS ? MAX_CHORDS : (size_t)n;
 }
 
 static void
@@ -444,14 +445,46 @@ stroke_subpath(void *ctx, const pt_t *p, size_t n, bool closed)
         s->failed = true;
 }
 
+bool
+cf__pen_solid(const cf__path_t *p, const cf__xform_t *m, const cf__pen_t *pen,
+              double *coverage)
+{
+    double total = 0, inked = 0, period, len;
+    double cap = pen->cap == CF__CAP_ROUND ? PI / 4 : 0;
+    size_t i, n = pen->ndash < CF_STYLE_DASH_MAX ? pen->ndash
+                                                 : CF_STYLE_DASH_MAX;
+    *coverage = 1;
+    for (i = 0; i < n; i++)
+        total += pen->dash[i];
+    if (n == 0 || !(total > 0 && isfinite(total)))
+        return false;   /* cf__poly_stroke strokes it solid anyway */
+    /* cairo's _cairo_stroke_style_dash_stroked: an odd pattern repeats
+    ** with on and off swapped */
+    if (n % 2 == 1) {
+        for (i = 0; i < n; i++)
+            inked += pen->dash[i] + cap * fmin(pen->dash[i], pen->width);
+        period = 2 * total;
+    } else {
+        for (i = 0; i + 1 < n; i += 2)
+            inked += pen->dash[i] + cap * fmin(pen->dash[i + 1], pen->width);
+        period = total;
+    }
+    len = cf__path_length_bound(p, m->scale);
+    if (total * m->scale >= m->tol
+        && len / (total * m->scale) * (double)n <= CF__DASH_MAX)
+        return false;
+    *coverage = fmin(1, inked / period);
+    return true;
+}
+
 void
 cf__poly_stroke(cf__poly_t *pl, const cf__path_t *p, const cf__xform_t *m,
                 const cf__pen_t *pen)
 {
-    double dash[CF_STYLE_DASH_MAX], total = 0;
+    double dash[CF_STYLE_DASH_MAX], total = 0, coverage;
     pts_t a = { NULL, 0, 0, false };
     stroker_t s;
-    size_t i;
+    size_t i, n;
     memset(&s, 0, sizeof s);
     s.pl = pl;
     s.hw = 0.5 * pen->width * m->scale;
@@ -460,7 +493,10 @@ cf__poly_stroke(cf__poly_t *pl, const cf__path_t *p, const cf__xform_t *m,
     s.join = pen->join;
     if (!(s.hw > 0))
         return;
-    for (i = 0; i < pen->ndash && i < CF_STYLE_DASH_MAX; i++) {
+    /* (a pattern too fine, or a path too long for it, drawn solid: the
+    ** caller weighs it by its coverage) */
+    n = cf__pen_solid(p, m, pen, &coverage) ? 0 : pen->ndash;
+    for (i = 0; i < n && i < CF_STYLE_DASH_MAX; i++) {
         dash[i] = pen->dash[i] * m->scale;
         total += dash[i];
     }

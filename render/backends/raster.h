@@ -51,9 +51,20 @@ void cf__poly_reset(cf__poly_t *pl);
 
 /* The inside of path p (each subpath closed) added to pl. */
 void cf__poly_fill(cf__poly_t *pl, const cf__path_t *p, const cf__xform_t *m);
-/* The stroke of path p with pen pen added to pl. */
+/* The stroke of path p with pen pen added to pl; its dashes as the pen's
+** pattern, unless cf__pen_solid. */
 void cf__poly_stroke(cf__poly_t *pl, const cf__path_t *p,
                      const cf__xform_t *m, const cf__pen_t *pen);
+/* Whether a dashed pen strokes p solid: its pattern's period under m is
+** below the flattening tolerance (cairo draws such a pattern as one of
+** the same coverage at that period), or p would take more than
+** CF__DASH_MAX dashes (a path far off the page, or a fine pattern along a
+** long one: no raster or ink box is worth that work).  *coverage: the
+** part of the line the pattern inks, cairo's estimate (round caps add a
+** quarter disc's worth); 1 when the pen is solid anyway. */
+bool cf__pen_solid(const cf__path_t *p, const cf__xform_t *m,
+                   const cf__pen_t *pen, double *coverage);
+#define CF__DASH_MAX 100000.0
 
 
 /* The nonzero (evenodd: even-odd) coverage of pl times alpha painted over

@@ -3,6 +3,7 @@
 ** segments and their numbers.  An allocation failure sets dl->failed and
 ** makes later appends do nothing; the writer checks it once at the end.
 */
+#include <math.h>
 #include <string.h>
 
 #include "dlist.h"
@@ -58,6 +59,52 @@ push_op(cf__dl_t *dl, cf__op_kind_t kind)
     memset(op, 0, sizeof *op);
     op->kind = kind;
     return op;
+}
+
+/* Whether the n numbers at v are finite; *bad the first that is not. */
+static bool
+all_finite(const double *v, size_t n, double *bad)
+{
+    for (size_t i = 0; i < n; i++)
+        if (!isfinite(v[i])) {
+            *bad = v[i];
+            return false;
+        }
+    return true;
+}
+
+bool
+cf__dl_finite_from(const cf__dl_t *dl, size_t op0, size_t coord0,
+                   size_t tri0, double *bad)
+{
+    size_t i;
+    if (!all_finite(dl->coords + coord0, dl->ncoords - coord0, bad))
+        return false;
+    for (i = tri0; i < dl->ntris; i++)
+        if (!all_finite(dl->tris[i].p, 6, bad))
+            return false;
+    for (i = op0; i < dl->count; i++) {
+        const cf__op_t *op = &dl->ops[i];
+        double v[4];
+        if (op->kind == CF__OP_CLIP && op->u.clip.has_rect
+            && !all_finite(op->u.clip.rect, 4, bad))
+            return false;
+        if (op->kind == CF__OP_MARKER) {
+            v[0] = op->u.marker.x;
+            v[1] = op->u.marker.y;
+            if (!all_finite(v, 2, bad))
+                return false;
+        }
+        if (op->kind == CF__OP_TEXT) {
+            v[0] = op->u.text.ox;
+            v[1] = op->u.text.oy;
+            v[2] = op->u.text.px;
+            v[3] = op->u.text.py;
+            if (!all_finite(v, 4, bad))
+                return false;
+        }
+    }
+    return true;
 }
 
 void

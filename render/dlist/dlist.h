@@ -158,6 +158,12 @@ void cf__dl_free(cf__dl_t *dl);
 /* Drop every operation (keeps the memory). */
 void cf__dl_reset(cf__dl_t *dl);
 
+/* Whether every page number of the operations from op0, the path
+** coordinates from coord0 and the mesh triangles from tri0 on is finite;
+** when not, *bad is the first that is not. */
+bool cf__dl_finite_from(const cf__dl_t *dl, size_t op0, size_t coord0,
+                        size_t tri0, double *bad);
+
 void cf__dl_group(cf__dl_t *dl, const char *name, size_t index);
 void cf__dl_end(cf__dl_t *dl);
 /* rect NULL: a scope without a clip. */
@@ -257,6 +263,10 @@ void cf__marker_from_style(const cf_style_t *s, cf_marker_t marker,
 ** first). */
 void cf__path_box(const cf__path_t *p, double scale, double dx, double dy,
                   double box[4]);
+/* A length no shorter than what path p draws, times scale (its curves by
+** their control polygons, each subpath's close included); infinite when a
+** number is not finite. */
+double cf__path_length_bound(const cf__path_t *p, double scale);
 /* (x, y) grown into box (box[2] < box[0]: empty). */
 void cf__box_grow(double box[4], double x, double y);
 /* The angles of an arc v (cx cy r a0 a1) as cairo_arc takes them: a1

@@ -172,3 +172,77 @@ cf__path_box(const cf__path_t *p, double scale, double dx, double dy,
         cur = true;
     }
 }
+
+/* The length of the line from (x0, y0) to (x1, y1). */
+static double
+dist(double x0, double y0, double x1, double y1)
+{
+    return hypot(x1 - x0, y1 - y0);
+}
+
+double
+cf__path_length_bound(const cf__path_t *p, double scale)
+{
+    const double *v = p->coords;
+    double len = 0, cx = 0, cy = 0, sx = 0, sy = 0, a0, a1;
+    bool cur = false;
+    size_t i;
+    for (i = 0; i < p->nsegs; i++) {
+        switch ((cf__seg_t)p->segs[i]) {
+        case CF__SEG_MOVE:
+            cx = sx = v[0];
+            cy = sy = v[1];
+            v += 2;
+            break;
+        case CF__SEG_LINE:
+            if (cur)
+                len += dist(cx, cy, v[0], v[1]);
+            else
+                sx = v[0], sy = v[1];
+            cx = v[0];
+            cy = v[1];
+            v += 2;
+            break;
+        case CF__SEG_CURVE:
+            /* the control polygon: never shorter than the curve */
+            if (cur)
+                len += dist(cx, cy, v[0], v[1]);
+            else
+                sx = v[0], sy = v[1];
+            len += dist(v[0], v[1], v[2], v[3])
+                 + dist(v[2], v[3], v[4], v[5]);
+            cx = v[4];
+            cy = v[5];
+            v += 6;
+            break;
+        case CF__SEG_RECT:
+            len += 2 * (fabs(v[2]) + fabs(v[3]));
+            cx = sx = v[0];
+            cy = sy = v[1];
+            v += 4;
+            break;
+        case CF__SEG_ARC:
+            if (!cf__arc_range(v, &a0, &a1))
+                return INFINITY;
+            if (cur)
+                len += dist(cx, cy, v[0] + fabs(v[2]) * cos(a0),
+                            v[1] + fabs(v[2]) * sin(a0));
+            len += fabs(v[2]) * (a1 - a0);
+            cx = v[0] + fabs(v[2]) * cos(a1);
+            cy = v[1] + fabs(v[2]) * sin(a1);
+            if (!cur) {
+                sx = v[0] + fabs(v[2]) * cos(a0);
+                sy = v[1] + fabs(v[2]) * sin(a0);
+            }
+            v += 5;
+            break;
+        case CF__SEG_CLOSE:
+            len += dist(cx, cy, sx, sy);
+            cx = sx;
+            cy = sy;
+            break;
+        }
+        cur = true;
+    }
+    return len * fabs(scale);
+}

@@ -568,12 +568,24 @@ cf__element_draw(cf_figure_t *fig, size_t i, const cf__layout_t *lay,
     cf__element_t *e = fig->els[i];
     cf_style_t s;
     cf_status_t st;
+    size_t op0 = dl->count, coord0 = dl->ncoords, tri0 = dl->ntris;
+    double bad;
     cf__style_resolve(&fig->theme, e->role, &e->style, &s);
     cf__dl_group(dl, e->kind->name, i);
     if (e->overlay != NULL && !dl->failed && dl->count > 0)
         dl->ops[dl->count - 1].u.group.overlay = e->overlay;
     st = e->kind->draw(fig, e, lay, &s, dl);
     cf__dl_end(dl);
+    /* a point that maps beyond every number (data near 1e308 times the
+    ** window's scale) could not be drawn, measured or placed around */
+    if (st == CF_STATUS_OK && !dl->failed
+        && !cf__dl_finite_from(dl, op0, coord0, tri0, &bad))
+        st = cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, (long)i,
+                         "%s %zu lies too far outside the drawing's %.1f x "
+                         "%.1f mm page to be drawn (its place on the page "
+                         "overflows to %g); move it nearer", e->kind->name,
+                         i + 1, fig->width * 25.4 / 72,
+                         fig->height * 25.4 / 72, bad);
     return st;
 }
 

@@ -83,6 +83,30 @@ test_hostile_pattern(void **state)
 
 /* The tool's wall-clock watchdog: an endless loop under an instruction
 ** limit too large to reach within the --timeout. */
+/* A point whose place on the page overflows: a clear error naming the
+** element (the rasteriser of the label placement crashed on it). */
+static void
+test_hostile_far_point(void **state)
+{
+    hostile(state, "hostile/far_point.lua",
+            "far_point.lua:4: figure 'far': polyline 1 lies too far outside "
+            "the drawing's 60.0 x 40.0 mm page to be drawn (its place on the "
+            "page overflows to inf); move it nearer");
+}
+
+/* Dash patterns too fine, or along a line too long, to measure dash by
+** dash: drawn in bounded time (each ran for ever), PDF and PNG written. */
+static void
+test_hostile_fine_dash(void **state)
+{
+    result *r = *state;
+    const char *args[] = { "render", src("hostile/fine_dash.lua"), "-f",
+                           "pdf,png", "--timeout", "60", NULL };
+    run_tool(r, args);
+    assert_int_equal(r->status, 0);
+    assert_int_equal(count_files(r->dir), 2);
+}
+
 static void
 test_timeout(void **state)
 {
@@ -255,6 +279,8 @@ main(int argc, char **argv)
         T(test_hostile_huge_table),
         T(test_hostile_huge_string),
         T(test_hostile_pattern),
+        T(test_hostile_far_point),
+        T(test_hostile_fine_dash),
         T(test_timeout),
         T(test_live_once_timeout),
         T(test_hostile_metatable),

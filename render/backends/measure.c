@@ -290,6 +290,7 @@ measure_init(measure_t *g, cf__raster_t *r, double scale, double dx,
     g->m.dy = dy;
     g->m.tol = tol;
     cf__poly_init(&g->pl);
+    g->pl.box_only = r == NULL;
     g->clip[0][0] = g->clip[0][1] = -INFINITY;
     g->clip[0][2] = g->clip[0][3] = INFINITY;
     g->ink[0] = 1;

@@ -112,6 +112,16 @@ polygon(cf__poly_t *pl, const pt_t *p, size_t n, bool orient)
     size_t i;
     if (n < 2)
         return;
+    if (pl->box_only) {
+        /* the box of the edges below: their every end */
+        for (i = 0; i < n; i++) {
+            if (!(isfinite(p[i].x) && isfinite(p[i].y)))
+                pl->failed = true;
+            else
+                cf__box_grow(pl->box, p[i].x, p[i].y);
+        }
+        return;
+    }
     for (i = 0; i < n; i++) {
         const pt_t *a = &p[i], *b = &p[(i + 1) % n];
         area += a->x * b->y - b->x * a->y;

@@ -25,6 +25,9 @@ typedef struct cf__poly {
     size_t n, cap;
     double box[4];
     bool failed;
+    bool box_only;            /* only the box is wanted (an ink box): no
+                                 edges are kept (cf__poly_reset keeps
+                                 this) */
     void *scratch;            /* cf__poly_paint's, kept for the next */
     size_t scratch_size;
 } cf__poly_t;

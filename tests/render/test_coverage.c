@@ -17,18 +17,26 @@
 ** polygon reached beyond the box.  A paint of some rows only (the
 ** raster's rows): those rows are a paint of the whole raster's, the
 ** others keep what they had, polygons of many equal crossings (points
-** on a coarse grid, vertical edges along each other) included. */
+** on a coarse grid, vertical edges along each other) included.
+**
+** A polygon kept for its box alone (box_only, the ink boxes' mode) has
+** the box of the same polygon with its edges kept, to the last bit, and
+** fails alike: random strokes of lines, cubics, rectangles and arcs, open
+** and closed, with each cap and join, dashed or not, some with a point
+** at infinity. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include <cmocka.h>
 
 #include "measure.h"
+#include "raster.h"
 
 #define W 64
 #define H 48
@@ -280,6 +288,82 @@ test_paint_rows(void **state)
     cf__dl_free(&dl);
 }
 
+/* A random path of 1 to 6 segments into segs and v (pixel units). */
+static size_t
+random_path(unsigned char *segs, double *v, size_t *nv)
+{
+    size_t n = 1 + (size_t)uniform(0, 6), k, m = 0;
+    segs[0] = CF__SEG_MOVE;
+    v[m++] = uniform(-8, W + 8);
+    v[m++] = uniform(-8, H + 8);
+    for (k = 1; k <= n; k++) {
+        int kind = (int)uniform(0, 5);
+        int c;
+        segs[k] = kind == 0 ? CF__SEG_CURVE : kind == 1 ? CF__SEG_RECT
+                : kind == 2 ? CF__SEG_ARC : kind == 3 && k == n
+                ? CF__SEG_CLOSE : CF__SEG_LINE;
+        c = segs[k] == CF__SEG_CURVE ? 6 : segs[k] == CF__SEG_RECT ? 4
+          : segs[k] == CF__SEG_ARC ? 5 : segs[k] == CF__SEG_CLOSE ? 0 : 2;
+        for (int j = 0; j < c; j++)
+            v[m++] = uniform(-8, j % 2 ? H + 8 : W + 8);
+        if (segs[k] == CF__SEG_ARC) {
+            v[m - 3] = uniform(0.5, 20);
+            v[m - 2] = uniform(-7, 7);
+            v[m - 1] = uniform(-7, 7);
+        }
+        if (segs[k] == CF__SEG_CLOSE)
+            return (*nv = m, k + 1);
+    }
+    *nv = m;
+    return n + 1;
+}
+
+static void
+test_box_only(void **state)
+{
+    static const double dashes[3][2] = { { 2, 1 }, { 0.5, 3 }, { 4, 0 } };
+    unsigned char segs[8];
+    double v[64];
+    int t, same = 0, failed = 0;
+    (void)state;
+    for (t = 0; t < 3000; t++) {
+        cf__poly_t full, box;
+        cf__path_t p;
+        size_t nv;
+        cf__xform_t m = { uniform(0.5, 64), uniform(-50, 50),
+                          uniform(-50, 50), 0.1 };
+        cf__pen_t pen = { uniform(0.01, 6), (cf__cap_t)(t % 2),
+                          (cf__join_t)(t / 2 % 2), NULL, 0 };
+        p.segs = segs;
+        p.coords = v;
+        p.nsegs = random_path(segs, v, &nv);
+        if (t % 3 == 0) {
+            pen.dash = dashes[t / 3 % 3];
+            pen.ndash = 2;
+        }
+        if (t % 97 == 0)
+            v[(size_t)uniform(0, (double)nv)] = INFINITY;
+        cf__poly_init(&full);
+        cf__poly_init(&box);
+        box.box_only = true;
+        cf__poly_stroke(&full, &p, &m, &pen);
+        cf__poly_stroke(&box, &p, &m, &pen);
+        assert_int_equal(full.failed, box.failed);
+        failed += full.failed;
+        if (!full.failed) {
+            assert_memory_equal(full.box, box.box, sizeof full.box);
+            same++;
+        }
+        assert_int_equal(box.n, 0);
+        cf__poly_free(&full);
+        cf__poly_free(&box);
+    }
+    printf("# %d strokes with the same box, %d failing in both\n", same,
+           failed);
+    assert_true(same > 2900);
+    assert_true(failed > 0);
+}
+
 int
 main(void)
 {
@@ -287,6 +371,7 @@ main(void)
         cmocka_unit_test(test_random_polygons),
         cmocka_unit_test(test_paint_in),
         cmocka_unit_test(test_paint_rows),
+        cmocka_unit_test(test_box_only),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

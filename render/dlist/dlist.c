@@ -78,7 +78,9 @@ cf__dl_finite_from(const cf__dl_t *dl, size_t op0, size_t coord0,
                    size_t tri0, double *bad)
 {
     size_t i;
-    if (!all_finite(dl->coords + coord0, dl->ncoords - coord0, bad))
+    /* (no coordinates yet: coords may be NULL, which takes no offset) */
+    if (dl->ncoords > coord0
+        && !all_finite(dl->coords + coord0, dl->ncoords - coord0, bad))
         return false;
     for (i = tri0; i < dl->ntris; i++)
         if (!all_finite(dl->tris[i].p, 6, bad))

@@ -189,15 +189,9 @@ static void
 stroke(measure_t *g, const cf__path_t *p, const cf__xform_t *m,
        const cf__pen_t *pen, double alpha)
 {
-    double coverage = 1;
-    /* a pattern drawn solid (too fine, or along too long a path) weighs
-    ** the line as cairo's approximation of it inks it */
-    if (pen->ndash > 0 && cf__pen_solid(p, m, pen, &coverage))
-        alpha *= coverage;
+    double coverage;
     if (!(alpha > 0 && pen->width > 0))
         return;
-    if (g->r != NULL && g->r->solid)
-        alpha = 1;
     if (g->r == NULL && pen->cap == CF__CAP_ROUND
         && pen->join == CF__JOIN_ROUND && pen->ndash == 0) {
         /* the path's every point grown by a disc */
@@ -212,8 +206,14 @@ stroke(measure_t *g, const cf__path_t *p, const cf__xform_t *m,
         }
         return;
     }
-    cf__poly_stroke(&g->pl, p, m, pen);
-    put_poly(g, alpha);
+    cf__poly_stroke(&g->pl, p, m, pen, &coverage);
+    /* a pattern stroked solid (too fine, or along too long a path) weighs
+    ** the line as cairo's approximation of it inks it */
+    if (!(coverage > 0)) {
+        cf__poly_reset(&g->pl);
+        return;
+    }
+    put_poly(g, g->r != NULL && g->r->solid ? 1 : alpha * coverage);
 }
 
 static void

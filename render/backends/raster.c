@@ -66,7 +66,6 @@ cf__poly_free(cf__poly_t *pl)
     cf__poly_init(pl);
 }
 
-
 static void
 edge(cf__poly_t *pl, pt_t a, pt_t b)
 {
@@ -166,7 +165,6 @@ flatten_curve(pts_t *a, pt_t p0, const double *v, const cf__xform_t *m)
                 b0 * p0.y + b1 * y1 + b2 * y2 + b3 * y3);
     }
 }
-
 
 /* cairo_arc's: a line to its start (a move without a current point),
 ** counter-clockwise on the y-down page from a0 to a1. */
@@ -489,9 +487,9 @@ cf__pen_solid(const cf__path_t *p, const cf__xform_t *m, const cf__pen_t *pen,
 
 void
 cf__poly_stroke(cf__poly_t *pl, const cf__path_t *p, const cf__xform_t *m,
-                const cf__pen_t *pen)
+                const cf__pen_t *pen, double *coverage)
 {
-    double dash[CF_STYLE_DASH_MAX], total = 0, coverage;
+    double dash[CF_STYLE_DASH_MAX], total = 0, cov = 1;
     pts_t a = { NULL, 0, 0, false };
     stroker_t s;
     size_t i, n;
@@ -501,11 +499,15 @@ cf__poly_stroke(cf__poly_t *pl, const cf__path_t *p, const cf__xform_t *m,
     s.tol = m->tol;
     s.cap = pen->cap;
     s.join = pen->join;
+    if (coverage != NULL)
+        *coverage = 1;
     if (!(s.hw > 0))
         return;
     /* (a pattern too fine, or a path too long for it, drawn solid: the
     ** caller weighs it by its coverage) */
-    n = cf__pen_solid(p, m, pen, &coverage) ? 0 : pen->ndash;
+    n = pen->ndash > 0 && cf__pen_solid(p, m, pen, &cov) ? 0 : pen->ndash;
+    if (coverage != NULL)
+        *coverage = cov;
     for (i = 0; i < n && i < CF_STYLE_DASH_MAX; i++) {
         dash[i] = pen->dash[i] * m->scale;
         total += dash[i];

@@ -55,9 +55,12 @@ void cf__poly_reset(cf__poly_t *pl);
 /* The inside of path p (each subpath closed) added to pl. */
 void cf__poly_fill(cf__poly_t *pl, const cf__path_t *p, const cf__xform_t *m);
 /* The stroke of path p with pen pen added to pl; its dashes as the pen's
-** pattern, unless cf__pen_solid. */
+** pattern, unless cf__pen_solid: then solid, and *coverage (when not
+** NULL) the part of it the pattern inks, by which the caller weighs it
+** (1 for a stroke as the pen says). */
 void cf__poly_stroke(cf__poly_t *pl, const cf__path_t *p,
-                     const cf__xform_t *m, const cf__pen_t *pen);
+                     const cf__xform_t *m, const cf__pen_t *pen,
+                     double *coverage);
 /* Whether a dashed pen strokes p solid: its pattern's period under m is
 ** below the flattening tolerance (cairo draws such a pattern as one of
 ** the same coverage at that period), or p would take more than

@@ -23,7 +23,10 @@
 ** the box of the same polygon with its edges kept, to the last bit, and
 ** fails alike: random strokes of lines, cubics, rectangles and arcs, open
 ** and closed, with each cap and join, dashed or not, some with a point
-** at infinity. */
+** at infinity.  A pattern too fine to measure is stroked solid and
+** reports the part of the line it inks (cairo's estimate: a half for
+** equal on and off with butt caps, a quarter disc more a dash with round
+** caps), one along too long a path too; a pattern as usual reports 1. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -346,8 +349,8 @@ test_box_only(void **state)
         cf__poly_init(&full);
         cf__poly_init(&box);
         box.box_only = true;
-        cf__poly_stroke(&full, &p, &m, &pen);
-        cf__poly_stroke(&box, &p, &m, &pen);
+        cf__poly_stroke(&full, &p, &m, &pen, NULL);
+        cf__poly_stroke(&box, &p, &m, &pen, NULL);
         assert_int_equal(full.failed, box.failed);
         failed += full.failed;
         if (!full.failed) {
@@ -364,6 +367,39 @@ test_box_only(void **state)
     assert_true(failed > 0);
 }
 
+static void
+test_fine_dash_coverage(void **state)
+{
+    static const unsigned char segs[] = { CF__SEG_MOVE, CF__SEG_LINE };
+    static const double fine[2] = { 1e-6, 1e-6 }, usual[2] = { 2, 1 };
+    double v[4] = { 0, 0, 40, 30 }, cov;
+    cf__path_t p = { segs, v, 2 };
+    cf__xform_t m = { 2, 0, 0, 0.1 };
+    cf__pen_t pen = { 1, CF__CAP_BUTT, CF__JOIN_MITER, fine, 2 };
+    cf__poly_t pl;
+    (void)state;
+    cf__poly_init(&pl);
+    cf__poly_stroke(&pl, &p, &m, &pen, &cov);
+    assert_true(cov == 0.5);
+    assert_true(pl.n > 0 && pl.n <= 8);          /* one solid piece */
+    cf__poly_reset(&pl);
+    pen.cap = CF__CAP_ROUND;
+    cf__poly_stroke(&pl, &p, &m, &pen, &cov);
+    assert_true(fabs(cov - (0.5 + 3.14159265358979323846 / 8)) < 1e-12);
+    cf__poly_reset(&pl);
+    pen.cap = CF__CAP_BUTT;
+    pen.dash = usual;
+    cf__poly_stroke(&pl, &p, &m, &pen, &cov);
+    assert_true(cov == 1);
+    assert_true(pl.n > 8 * 4);                    /* its 16 dashes */
+    cf__poly_reset(&pl);
+    v[2] = 1e12;                                  /* 3e11 dashes: too many */
+    cf__poly_stroke(&pl, &p, &m, &pen, &cov);
+    assert_true(fabs(cov - 2.0 / 3) < 1e-15);
+    assert_true(pl.n > 0 && pl.n <= 8);
+    cf__poly_free(&pl);
+}
+
 int
 main(void)
 {
@@ -372,6 +408,7 @@ main(void)
         cmocka_unit_test(test_paint_in),
         cmocka_unit_test(test_paint_rows),
         cmocka_unit_test(test_box_only),
+        cmocka_unit_test(test_fine_dash_coverage),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

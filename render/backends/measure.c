@@ -251,6 +251,14 @@ draw_text(void *ctx, const cf__text_op_t *t)
         b[1] = lb[1] * m.scale + m.dy;
         b[2] = lb[2] * m.scale + m.dx;
         b[3] = lb[3] * m.scale + m.dy;
+        /* a label so far off the page that its size is lost in its
+        ** place's rounding (an offset of 1e17 bp) is still ink there:
+        ** else it would be left out of the page checks, and of the
+        ** figure, silently */
+        if (lb[2] > lb[0] && !(b[2] > b[0]))
+            b[2] = nextafter(b[0], INFINITY);
+        if (lb[3] > lb[1] && !(b[3] > b[1]))
+            b[3] = nextafter(b[1], INFINITY);
         if (t->color.a * t->opacity > 0)
             add_ink(g, b);
         if (t->halo > 0 && t->halo_color.a > 0) {

@@ -117,6 +117,7 @@ cf__dl_group(cf__dl_t *dl, const char *name, size_t index)
         op->u.group.name = name;
         op->u.group.index = index;
         op->u.group.overlay = NULL;
+        op->u.group.line = 0;
     }
 }
 

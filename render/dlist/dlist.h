@@ -131,6 +131,8 @@ typedef struct cf__op {
             size_t index;
             const char *overlay;   /* beamer overlay specification ("2-"),
                                       NULL: visible on every step */
+            int line;              /* the script's line of the element, 0:
+                                      unknown (errors name it) */
         } group;
         struct { bool has_rect; double rect[4]; } clip;   /* x y w h */
         struct { size_t seg0, nsegs, coord0; cf__paint_t paint; } path;

@@ -146,6 +146,13 @@ cf_figure_set_element_line(cf_figure_t *fig, size_t i, int line)
 }
 
 void
+cf_figure_set_line(cf_figure_t *fig, int line)
+{
+    if (fig != NULL)
+        fig->line = line > 0 ? line : 0;
+}
+
+void
 cf__figure_warn(cf_figure_t *fig, const char *fmt, ...)
 {
     char line[512];
@@ -557,6 +564,7 @@ cf__element_commit(cf_figure_t *fig, void *el, cf_status_t st)
         if (fig->overlay_last > fig->steps)
             fig->steps = fig->overlay_last;
     }
+    e->line = fig->line;
     fig->els[fig->count++] = e;
     return CF_STATUS_OK;
 }
@@ -572,20 +580,26 @@ cf__element_draw(cf_figure_t *fig, size_t i, const cf__layout_t *lay,
     double bad;
     cf__style_resolve(&fig->theme, e->role, &e->style, &s);
     cf__dl_group(dl, e->kind->name, i);
-    if (e->overlay != NULL && !dl->failed && dl->count > 0)
+    if (!dl->failed && dl->count > 0) {
         dl->ops[dl->count - 1].u.group.overlay = e->overlay;
+        dl->ops[dl->count - 1].u.group.line = e->line;
+    }
     st = e->kind->draw(fig, e, lay, &s, dl);
     cf__dl_end(dl);
     /* a point that maps beyond every number (data near 1e308 times the
     ** window's scale) could not be drawn, measured or placed around */
     if (st == CF_STATUS_OK && !dl->failed
-        && !cf__dl_finite_from(dl, op0, coord0, tri0, &bad))
+        && !cf__dl_finite_from(dl, op0, coord0, tri0, &bad)) {
+        char at[32] = "";
+        if (e->line > 0)
+            snprintf(at, sizeof at, " (line %d)", e->line);
         st = cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, (long)i,
-                         "%s %zu lies too far outside the drawing's %.1f x "
-                         "%.1f mm page to be drawn (its place on the page "
+                         "%s %zu%s lies too far outside the drawing's %.1f "
+                         "x %.1f mm page to be drawn (its place on the page "
                          "overflows to %g); move it nearer", e->kind->name,
-                         i + 1, fig->width * 25.4 / 72,
+                         i + 1, at, fig->width * 25.4 / 72,
                          fig->height * 25.4 / 72, bad);
+    }
     return st;
 }
 

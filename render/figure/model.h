@@ -251,6 +251,8 @@ struct cf_figure {
     unsigned steps;          /* largest step named by an overlay, 0: none */
     char *overlay;           /* given to the elements added next, or NULL */
     unsigned overlay_last;   /* the largest step it names */
+    int line;                /* the script's line of the elements added
+                                next, 0: unknown (cf_figure_set_line) */
 };
 
 /* ---- figure.c: the figure's helpers for the element kinds -------------- */

@@ -20,6 +20,17 @@ cf__layout_same_map(const cf__layout_t *a, const cf__layout_t *b)
         && a->clip == b->clip;
 }
 
+/* The pixel index v (a floor or a ceiling of a page coordinate times a
+** raster's resolution) within [lo, hi]; NaN gives lo.  A box far off the
+** page (a label's offset of 1e300 bp) has indices no int holds: the
+** conversion of such a double is undefined, so every box is clamped
+** before it is converted. */
+static inline int
+cf__pixel_within(double v, int lo, int hi)
+{
+    return v >= hi ? hi : v > lo ? (int)v : lo;
+}
+
 /* Compute the layout for the figure's page (errors go into fig). */
 cf_status_t cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay);
 /* The display list of every element for a layout (automatic label places

@@ -288,11 +288,15 @@ labels_off_page(cf_figure_t *fig, const cf__layout_t *lay)
                 || ink[1] < lay->py - LABEL_SLACK
                 || ink[2] > lay->px + fig->width + LABEL_SLACK
                 || ink[3] > lay->py + fig->height + LABEL_SLACK)) {
+            char at[32] = "";
+            if (e->line > 0)
+                snprintf(at, sizeof at, " (line %d)", e->line);
             cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, (long)i,
-                        "label %zu \"%s\" at (%g, %g) is outside the window "
-                        "[%g, %g] x [%g, %g], too far to fit the %.1f x %.1f "
-                        "mm page beside it: widen the window or move the "
-                        "label", i + 1, t->src != NULL ? t->src : "", x, y,
+                        "label %zu \"%s\"%s at (%g, %g) is outside the "
+                        "window [%g, %g] x [%g, %g], too far to fit the %.1f "
+                        "x %.1f mm page beside it: widen the window or move "
+                        "the label", i + 1, t->src != NULL ? t->src : "", at,
+                        x, y,
                         lay->xmin, lay->xmax, lay->ymin, lay->ymax,
                         fig->width * 25.4 / 72, fig->height * 25.4 / 72);
             break;
@@ -358,6 +362,16 @@ cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
     avail[2] = fig->width - m;
     avail[3] = fig->height - m;
     compute_map(fig, win, keep, avail, lay);
+    /* ... and so small that the page's scale is a number: a window
+    ** 1e-320 wide (a denormal) maps it to infinity */
+    if (!isfinite(lay->sx) || !isfinite(lay->sy) || !(lay->sx > 0)
+        || !(lay->sy > 0))
+        return cf_diag_set(&fig->err, CF_STATUS_NOT_FINITE, -1,
+                           "the %s spans %g x %g, too small to draw: its "
+                           "scale on the page (the page's size over the "
+                           "span) overflows",
+                           fig->window_set ? "window" : "drawing",
+                           win[1] - win[0], win[3] - win[2]);
     if (fig->count == 0)
         return CF_STATUS_OK;
     /* room for what sticks out of the data box (labels, markers, arrow
@@ -526,14 +540,19 @@ farthest_group(const cf__dl_t *dl, double w, double h, double *worst,
             text = dl->ops[i].u.text.source;
             break;
         }
-    if (*worst > 0 && dl->ops[worst_g].kind == CF__OP_GROUP)
-        snprintf(who, whon, "%s %zu%s%.200s%s",
+    if (*worst > 0 && dl->ops[worst_g].kind == CF__OP_GROUP) {
+        char at[32] = "";
+        if (dl->ops[worst_g].u.group.line > 0)
+            snprintf(at, sizeof at, " (line %d)",
+                     dl->ops[worst_g].u.group.line);
+        snprintf(who, whon, "%s %zu%s%.200s%s%s",
                  dl->ops[worst_g].u.group.name,
                  dl->ops[worst_g].u.group.index + 1,
                  text != NULL ? " \"" : "", text != NULL ? text : "",
-                 text != NULL ? "\"" : "");
-    else
+                 text != NULL ? "\"" : "", at);
+    } else {
         snprintf(who, whon, "an element");
+    }
     return worst_g;
 }
 

@@ -18,10 +18,10 @@ cf__place_ink_pixels(const cf__raster_t *img, double res,
     whole[2] = ceil(b[2] * res);
     whole[1] = floor(b[1] * res);
     whole[3] = ceil(b[3] * res);
-    px[0] = (int)fmax(whole[0], 0);
-    px[2] = (int)fmin(whole[2], img->w);
-    px[1] = (int)fmax(whole[1], 0);
-    px[3] = (int)fmin(whole[3], img->h);
+    px[0] = cf__pixel_within(whole[0], 0, img->w);
+    px[2] = cf__pixel_within(whole[2], 0, img->w);
+    px[1] = cf__pixel_within(whole[1], 0, img->h);
+    px[3] = cf__pixel_within(whole[3], 0, img->h);
 }
 
 int

@@ -306,10 +306,10 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
                            "out of memory measuring a label");
     if (!(ink[2] > ink[0] && ink[3] > ink[1]))
         return CF_STATUS_OK;   /* nothing drawn */
-    px[0] = (int)floor(ink[0] * r->res) - 1;
-    px[1] = (int)floor(ink[1] * r->res) - 1;
-    px[2] = (int)ceil(ink[2] * r->res) + 1;
-    px[3] = (int)ceil(ink[3] * r->res) + 1;
+    px[0] = cf__pixel_within(floor(ink[0] * r->res) - 1, -1, r->one.w + 1);
+    px[1] = cf__pixel_within(floor(ink[1] * r->res) - 1, -1, r->one.h + 1);
+    px[2] = cf__pixel_within(ceil(ink[2] * r->res) + 1, -1, r->one.w + 1);
+    px[3] = cf__pixel_within(ceil(ink[3] * r->res) + 1, -1, r->one.h + 1);
     cf__raster_clear(&r->one, px);
     r->one.cut = false;
     r->one.solid = true;     /* the label's glyphs, faded or not */

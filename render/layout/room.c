@@ -32,10 +32,10 @@ inked_pixels(const cf__raster_t *img, const double b[4])
     const unsigned char *px = img->px;
     int w = img->w, h = img->h, stride = img->stride;
     double res = img->res;
-    int i0 = (int)fmax(0, floor((b[0] - img->ox) * res));
-    int i1 = (int)fmin(w, ceil((b[2] - img->ox) * res));
-    int j0 = (int)fmax(0, floor((b[1] - img->oy) * res));
-    int j1 = (int)fmin(h, ceil((b[3] - img->oy) * res));
+    int i0 = cf__pixel_within(floor((b[0] - img->ox) * res), 0, w);
+    int i1 = cf__pixel_within(ceil((b[2] - img->ox) * res), 0, w);
+    int j0 = cf__pixel_within(floor((b[1] - img->oy) * res), 0, h);
+    int j1 = cf__pixel_within(ceil((b[3] - img->oy) * res), 0, h);
     size_t n = 0;
     int i, j;
     for (j = j0; j < j1; j++)

@@ -123,13 +123,6 @@ space_points(lua_State *L, cf_figure_t *fig, const char *fn, int space,
                                                          st)
                  : cf_figure_add_space_polyline(fig, p3, n, space == 3,
                                                 hidden, st), &diag);
-    if (space >= 4) {
-        /* a region's warnings name the script's line */
-        lua_Debug ar;
-        if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "l", &ar))
-            cf_figure_set_element_line(fig, cf_figure_element_count(fig) - 1,
-                                       ar.currentline);
-    }
     p2 = cf__lua_buffer(L, 2 * n);
     check(L, fn, cf_figure_project(fig, p3, n, 3, p2), NULL);
     cf__lua_label_space_items(L, fig, 3, "labels", p2, p3, hidden, n,

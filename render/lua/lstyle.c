@@ -17,8 +17,14 @@ cf_figure_t *
 cf__lua_check_figure(lua_State *L)
 {
     cf__lua_fbox_t *b = cf__lua_check_self(L, CF__LUA_FIGURE, "figure");
+    lua_Debug ar;
     if (b->fig == NULL)
         luaL_error(L, "figure: the figure was closed");
+    /* the elements this method adds name the line that called it */
+    cf_figure_set_line(b->fig, lua_getstack(L, 1, &ar)
+                                       && lua_getinfo(L, "l", &ar)
+                                   ? ar.currentline
+                                   : 0);
     return b->fig;
 }
 

@@ -159,8 +159,9 @@ test_label_outside_window(void **state)
     t = dump(s, 0);
     assert_non_null(strstr(t, "text \"Q_1\""));
     cf_free(t);
-    dump_fails(s, 1, "label 2 \"Q_1\" at (100, 5) is outside the window "
-                     "[0, 10] x [0, 10]");
+    /* the error names the label's line in the script */
+    dump_fails(s, 1, "label 2 \"Q_1\" (line 5) at (100, 5) is outside the "
+                     "window [0, 10] x [0, 10]");
     cf_script_destroy(s);
 }
 

@@ -89,9 +89,19 @@ static void
 test_hostile_far_point(void **state)
 {
     hostile(state, "hostile/far_point.lua",
-            "far_point.lua:4: figure 'far': polyline 1 lies too far outside "
-            "the drawing's 60.0 x 40.0 mm page to be drawn (its place on the "
-            "page overflows to inf); move it nearer");
+            "far_point.lua:4: figure 'far': polyline 1 (line 5) lies too far "
+            "outside the drawing's 60.0 x 40.0 mm page to be drawn (its place "
+            "on the page overflows to inf); move it nearer");
+}
+
+/* A label 1e300 bp from its point: the error naming it and its line
+** (the label placement's ink sums read outside their raster). */
+static void
+test_hostile_far_label(void **state)
+{
+    hostile(state, "hostile/far_label.lua",
+            "far_label.lua:5: figure 'far': label 2 \"P\" (line 7) lies "
+            "2.494e+299 mm outside the drawing's 60.0 x 40.0 mm page");
 }
 
 /* Dash patterns too fine, or along a line too long, to measure dash by
@@ -280,6 +290,7 @@ main(int argc, char **argv)
         T(test_hostile_huge_string),
         T(test_hostile_pattern),
         T(test_hostile_far_point),
+        T(test_hostile_far_label),
         T(test_hostile_fine_dash),
         T(test_timeout),
         T(test_live_once_timeout),

@@ -1,4 +1,4 @@
--- expect: 1 "arrow 2 lies 7820 mm outside the drawing's 60.0 x 40.0 mm page, on the top: the page cropped to the ink would be larger than the largest page (14400 pt = 5.08 m a side)"
+-- expect: 1 "arrow 2 (line 8) lies 7820 mm outside the drawing's 60.0 x 40.0 mm page, on the top: the page cropped to the ink would be larger than the largest page (14400 pt = 5.08 m a side)"
 -- an animation on a page cropped to its ink, one frame with an arrow from far outside: refused as the still of that frame is, naming the element, before any frame is drawn
 -- args: --animate -f pdf,svg
 local s = slider{ name = "s", min = 0, max = 1, default = 0 }

@@ -336,12 +336,18 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
         st = element_ops(fig, i, lay, r);
         if (st != CF_STATUS_OK)
             return st;
+        /* the script's lines of the label and of what it lies on */
+        char at[32] = "", under[32] = "";
+        if (fig->els[i]->line > 0)
+            snprintf(at, sizeof at, "line %d, ", fig->els[i]->line);
+        if (j < fig->count && fig->els[j]->line > 0)
+            snprintf(under, sizeof under, " (line %d)", fig->els[j]->line);
         if (j < fig->count)
-            warn(fig, "label \"%s\" (%s%s) lies on %s %zu", t->src,
+            warn(fig, "label \"%s\" (%s%s%s) lies on %s %zu%s", t->src, at,
                  automatic ? "placed automatically " : "place ",
-                 place_names[place], fig->els[j]->kind->name, j + 1);
+                 place_names[place], fig->els[j]->kind->name, j + 1, under);
         else
-            warn(fig, "label \"%s\" (%s%s) lies on %s", t->src,
+            warn(fig, "label \"%s\" (%s%s%s) lies on %s", t->src, at,
                  automatic ? "placed automatically " : "place ",
                  place_names[place], fig->ninsets > 0
                  ? "ink (an inset's frame or connector?)" : "ink");

@@ -182,11 +182,11 @@ test_panel_warnings(void **state)
     t = dump(s, 0);
     cf_free(t);
     assert_non_null(strstr(cf_figure_warnings(cf_script_figure(s, 0)),
-                           "panel (a): label \"ON\" (place center) lies on "
-                           "curve 1\n"));
+                           "panel (a): label \"ON\" (line 4, place center) "
+                           "lies on curve 1 (line 3)\n"));
     assert_non_null(strstr(cf_figure_warnings(cf_script_figure(s, 0)),
-                           "panel (b): label \"X\" (place center) lies on "
-                           "axes 1\n"));
+                           "panel (b): label \"X\" (line 7, place center) "
+                           "lies on axes 1 (line 5)\n"));
     cf_script_destroy(s);
 }
 
@@ -215,8 +215,8 @@ test_faded_label_warns(void **state)
         cf_free(t);
         w = cf_figure_warnings(cf_script_figure(s, 0));
         if (k == 0)
-            assert_non_null(strstr(w, "label \"ABC\" (place center) lies "
-                                      "on curve 1\n"));
+            assert_non_null(strstr(w, "label \"ABC\" (line 4, place "
+                                      "center) lies on curve 1 (line 3)\n"));
         else
             assert_null(strstr(w, "lies on"));
         cf_script_destroy(s);

@@ -159,7 +159,7 @@ cf__anim_check(cf__anim_spec_t *spec, const cf__params_t *params, char *err,
             return -1;
         }
         if (n > CF__ANIM_MAX_FRAMES) {
-            snprintf(err, errlen, "%s: %g fps for %g s make %.0f frames, "
+            snprintf(err, errlen, "%s: %g fps for %g s make %.15g frames, "
                      "more than %d", w, fps, secs, n, CF__ANIM_MAX_FRAMES);
             return -1;
         }

@@ -282,14 +282,17 @@ check_name(const cf__params_t *p, const char *kind, const char *name,
     return 0;
 }
 
-/* The decimals x is written with (up to 12): 2 for 0.25. */
+/* The decimals x is written with (up to 12): 2 for 0.25, 7 for 1e-7.  The
+** tolerance is relative to x 10^k: an absolute one (1e-6 where x 10^k < 1)
+** took every step up to 1e-6 for a whole number, and a slider with step
+** 1e-7 snapped every value to 0. */
 static int
 decimals(double x)
 {
     double p = 1;
     int k;
     for (k = 0; k < 12; k++, p *= 10)
-        if (fabs(round(x * p) - x * p) <= 1e-6 * fmax(1, fabs(x * p)))
+        if (fabs(round(x * p) - x * p) <= 1e-6 * fabs(x * p))
             return k;
     return 12;
 }
@@ -303,6 +306,17 @@ to_decimals(double v, int k)
     return isfinite(r) && k < 12 ? r : v;
 }
 
+/* The multiple of q nearest v, or v itself where v / q is beyond 2^53
+** (or overflows: a step or grid of 1e-320): such a v is a multiple of q
+** to its own precision.  Before, the overflow made a slider's value and
+** a dragged point's coordinates 0, silently. */
+static double
+nearest_multiple(double v, double q)
+{
+    double k = v / q;
+    return isfinite(k) && fabs(k) < 0x1p53 ? round(k) * q : v;
+}
+
 static double
 snap(const cf__param_t *d, double v)
 {
@@ -312,11 +326,13 @@ snap(const cf__param_t *d, double v)
         v = d->max;
     if (d->step > 0) {
         int k = decimals(d->step), m = decimals(d->min);
-        v = d->min + round((v - d->min) / d->step) * d->step;
-        if (v > d->max)
-            v -= d->step;
-        /* 0 + 3 * 0.1 is 0.30000000000000004: the step's decimals */
-        v = to_decimals(v, k > m ? k : m);
+        double s = d->min + nearest_multiple(v - d->min, d->step);
+        if (s > d->max)
+            s -= d->step;
+        /* 0 + 3 * 0.1 is 0.30000000000000004: the step's decimals (a
+        ** range beyond the largest double keeps the value as given) */
+        if (isfinite(s))
+            v = to_decimals(s, k > m ? k : m);
     }
     return v;
 }
@@ -364,14 +380,31 @@ cf__params_constrain(const cf__param_t *d, double *x, double *y)
 {
     if (d->constrain == CF__CONSTRAIN_GRID) {
         int k = decimals(d->grid);
-        *x = to_decimals(round(*x / d->grid) * d->grid, k);
-        *y = to_decimals(round(*y / d->grid) * d->grid, k);
+        *x = to_decimals(nearest_multiple(*x, d->grid), k);
+        *y = to_decimals(nearest_multiple(*y, d->grid), k);
     } else if (d->constrain == CF__CONSTRAIN_LINE) {
-        double dx = d->line[2] - d->line[0], dy = d->line[3] - d->line[1];
-        double t = ((*x - d->line[0]) * dx + (*y - d->line[1]) * dy) /
-                   (dx * dx + dy * dy);
-        *x = d->line[0] + t * dx;
-        *y = d->line[1] + t * dy;
+        const double *a = d->line, *b = d->line + 2;
+        double dx = b[0] - a[0], dy = b[1] - a[1];
+        double t = ((*x - a[0]) * dx + (*y - a[1]) * dy) / (dx * dx + dy * dy);
+        double nx = a[0] + t * dx, ny = a[1] + t * dy;
+        if (!(isfinite(nx) && isfinite(ny))) {
+            /* a line through points near the largest double, whose
+            ** difference or its square overflows (the point became NaN,
+            ** then 0): projected from the line's midpoint along its
+            ** direction scaled to 1, each step finite */
+            double mx = 0.5 * a[0] + 0.5 * b[0], my = 0.5 * a[1] + 0.5 * b[1];
+            double ux = 0.5 * b[0] - 0.5 * a[0], uy = 0.5 * b[1] - 0.5 * a[1];
+            double m = fmax(fabs(ux), fabs(uy));
+            ux /= m;
+            uy /= m;
+            t = ((*x - mx) * ux + (*y - my) * uy) / (ux * ux + uy * uy);
+            nx = mx + t * ux;
+            ny = my + t * uy;
+        }
+        if (isfinite(nx) && isfinite(ny)) {
+            *x = nx;
+            *y = ny;
+        }
     }
 }
 

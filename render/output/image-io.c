@@ -89,8 +89,13 @@ cf__image_read_png(const char *path, char *err, size_t errsize)
     cairo_status_t st = cairo_surface_status(s);
     cf__image *im;
     if (st != CAIRO_STATUS_SUCCESS) {
+        /* cairo reports every file libpng refuses as out of memory */
         snprintf(err, errsize, "%s: not a readable PNG file (%s)", path,
-                 cairo_status_to_string(st));
+                 st == CAIRO_STATUS_NO_MEMORY
+                     ? "libpng refused it: a bad checksum, a chunk cut "
+                       "short or missing, or data that does not match its "
+                       "header; or out of memory"
+                     : cairo_status_to_string(st));
         cairo_surface_destroy(s);
         return NULL;
     }

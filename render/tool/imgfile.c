@@ -2,6 +2,7 @@
 ** Image files for `compare` and `test`; see imgfile.h.
 */
 #include <errno.h>
+#include <stdbool.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -95,6 +96,42 @@ cf__tool_png_dpi(const char *path)
     return dpi;
 }
 
+/* Whether the PNG's header (IHDR, the first chunk) names a size that can
+** be read: else an error saying what is wrong with it, rather than the
+** "out of memory" cairo gives for every file libpng refuses (a header cut
+** short, 0 x 0 pixels, 100000 x 100000 pixels). */
+static bool
+png_header_ok(const char *path, char *err, size_t errsize)
+{
+    unsigned char h[24];
+    unsigned long w, ht;
+    FILE *f = fopen(path, "rb");
+    size_t n = f != NULL ? fread(h, 1, sizeof h, f) : 0;
+    if (f != NULL)
+        fclose(f);
+    if (n < sizeof h || memcmp(h + 12, "IHDR", 4) != 0) {
+        snprintf(err, errsize, "%s: not a readable PNG file (its header, "
+                 "IHDR, is %s)", path, n < sizeof h ? "cut short" : "missing");
+        return false;
+    }
+    w = (unsigned long)h[16] << 24 | (unsigned long)h[17] << 16
+      | (unsigned long)h[18] << 8 | h[19];
+    ht = (unsigned long)h[20] << 24 | (unsigned long)h[21] << 16
+       | (unsigned long)h[22] << 8 | h[23];
+    if (w == 0 || ht == 0) {
+        snprintf(err, errsize, "%s: not a readable PNG file (its header "
+                 "gives %lu x %lu pixels)", path, w, ht);
+        return false;
+    }
+    if (w > MAX_SIDE || ht > MAX_SIDE) {
+        snprintf(err, errsize, "%s: not a readable PNG file (%lu x %lu "
+                 "pixels, more than the %d a side curvefig writes and "
+                 "compares)", path, w, ht, MAX_SIDE);
+        return false;
+    }
+    return true;
+}
+
 cf__image *
 cf__tool_image_read(const char *path, double dpi, char *err, size_t errsize)
 {
@@ -104,7 +141,9 @@ cf__tool_image_read(const char *path, double dpi, char *err, size_t errsize)
                  strerror(errno));
         return NULL;
     case KIND_PNG:
-        return cf__image_read_png(path, err, errsize);
+        return png_header_ok(path, err, errsize)
+                   ? cf__image_read_png(path, err, errsize)
+                   : NULL;
     case KIND_SVG:
         return cf__image_read_svg(path, dpi, MAX_SIDE, err, errsize);
     case KIND_PDF:

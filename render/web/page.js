@@ -141,17 +141,17 @@ function CurvefigPage(root, engine) {
   root.appendChild(main);
 
   // The decimals x is written with (up to 12): 2 for 0.25.
+  // (relative to x 10^k, as render/lua/params.c: 7 for 1e-7, not 0)
   function decimals(x) {
     for (var k = 0, p = 1; k < 12; k++, p *= 10)
-      if (Math.abs(Math.round(x * p) - x * p) <= 1e-6 * Math.max(1,
-                                                      Math.abs(x * p)))
+      if (Math.abs(Math.round(x * p) - x * p) <= 1e-6 * Math.abs(x * p))
         return k;
     return 12;
   }
 
   function round(v, k) {
-    var p = Math.pow(10, k);
-    return Math.round(v * p) / p;
+    var p = Math.pow(10, k), r = Math.round(v * p) / p;
+    return isFinite(r) ? r : v;   // v * p beyond the largest double
   }
 
   // The decimals a slider's values are shown with: its step's (and its
@@ -193,17 +193,37 @@ function CurvefigPage(root, engine) {
     return [round(d[0], Math.min(12, kx)), round(d[1], Math.min(12, ky))];
   }
 
+  // The multiple of q nearest v, or v where v / q is beyond 2^53 or
+  // overflows (a grid of 1e-320): as render/lua/params.c snaps.
+  function nearestMultiple(v, q) {
+    var k = v / q;
+    return isFinite(k) && Math.abs(k) < 9007199254740992 ? Math.round(k) * q
+                                                          : v;
+  }
+
   function constrain(p, x, y) {
     var c = p.constrain;
     if (c && c.grid) {
       var k = decimals(c.grid);
-      return [round(Math.round(x / c.grid) * c.grid, k),
-              round(Math.round(y / c.grid) * c.grid, k)];
+      return [round(nearestMultiple(x, c.grid), k),
+              round(nearestMultiple(y, c.grid), k)];
     }
     if (c && c.line) {
       var a = c.line[0], b = c.line[1], dx = b[0] - a[0], dy = b[1] - a[1];
       var t = ((x - a[0]) * dx + (y - a[1]) * dy) / (dx * dx + dy * dy);
-      return [a[0] + t * dx, a[1] + t * dy];
+      var q = [a[0] + t * dx, a[1] + t * dy];
+      if (!(isFinite(q[0]) && isFinite(q[1]))) {
+        // a line through points near the largest double: from its
+        // midpoint along its direction scaled to 1 (params.c)
+        var mx = 0.5 * a[0] + 0.5 * b[0], my = 0.5 * a[1] + 0.5 * b[1];
+        var ux = 0.5 * b[0] - 0.5 * a[0], uy = 0.5 * b[1] - 0.5 * a[1];
+        var m = Math.max(Math.abs(ux), Math.abs(uy));
+        ux /= m;
+        uy /= m;
+        t = ((x - mx) * ux + (y - my) * uy) / (ux * ux + uy * uy);
+        q = [mx + t * ux, my + t * uy];
+      }
+      return isFinite(q[0]) && isFinite(q[1]) ? q : [x, y];
     }
     return [x, y];
   }

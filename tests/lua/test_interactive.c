@@ -124,6 +124,39 @@ test_values_rounded(void **state)
     free(json);
 }
 
+/* Steps and grids finer than 1e-6, and lines through points near the
+** largest double: a step of 1e-7 made every value 0 (its decimals were
+** taken for 0), a step or grid of 1e-320 made every value and point 0
+** (v / step overflowed), a line from -1e308 to 1e308 made every dragged
+** point 0 (its direction's square overflowed).  The values checked
+** independently: multiples of the step to its decimals, the projection
+** onto y = x by hand. */
+static void
+test_fine_steps_and_far_lines(void **state)
+{
+    const char *code =
+        "local a = slider{ name = 'a', min = 0, max = 1e-5, step = 1e-7 }\n"
+        "local b = slider{ name = 'b', min = 0, max = 1, step = 1e-6 }\n"
+        "local c = slider{ name = 'c', min = 0, max = 1, step = 1e-320 }\n"
+        "local G = points{ name = 'G', default = { {0, 0} },\n"
+        "                  constrain = { grid = 1e-7 } }\n"
+        "local H = points{ name = 'H', default = { {0, 0} },\n"
+        "                  constrain = { grid = 1e-320 } }\n"
+        "local L = points{ name = 'L', default = { {0, 0} },\n"
+        "  constrain = { line = { {-1e308, -1e308}, {1e308, 1e308} } } }\n"
+        "print(a == 3e-6, b == 0.123457, c == 0.3, G[1][1] == 2.5e-6,\n"
+        "      G[1][2] == -1e-7, H[1][1] == 0.3, H[1][2] == 0.7,\n"
+        "      L[1][1] == 0.5, L[1][2] == 0.5)\n";
+    const char *values = "{\"a\": 3.04e-6, \"b\": 0.1234567, \"c\": 0.3, "
+                         "\"G\": [[2.53e-6, -1.2e-7]], \"H\": [[0.3, 0.7]], "
+                         "\"L\": [[0.3, 0.7]]}";
+    char *out = printed(code, values);
+    (void)state;
+    assert_string_equal(out, "true\ttrue\ttrue\ttrue\ttrue\ttrue\ttrue\t"
+                             "true\ttrue\n");
+    free(out);
+}
+
 /* code must fail with every fragment of want (NULL-ended) */
 static void
 fails_with(const char *code, const char *const *want)
@@ -480,6 +513,7 @@ main(void)
         cmocka_unit_test(test_error_bytes_in_json),
         cmocka_unit_test(test_lua_text_reads_back),
         cmocka_unit_test(test_values_rounded),
+        cmocka_unit_test(test_fine_steps_and_far_lines),
         cmocka_unit_test(test_scale_errors),
         cmocka_unit_test(test_view_override),
     };

@@ -15,6 +15,7 @@ import struct
 import subprocess
 import sys
 import tempfile
+import zlib
 
 FIGURE = """
 local c = bezier{ {0, 0}, {1, 2}, {%s, 2}, {4, 0} }
@@ -163,6 +164,38 @@ def main():
         check("a truncated PNG: exit 2", r.returncode == 2)
         check("a truncated PNG: the message",
               truncated + ": not a readable PNG file" in r.stderr, r.stderr)
+
+        # a damaged or outsized header, a bad checksum: what is wrong, not
+        # the "out of memory" cairo gives for every PNG libpng refuses
+        def png_file(name, width, height, crc=True):
+            ihdr = b"IHDR" + struct.pack(">IIBBBBB", width, height, 8, 2, 0,
+                                         0, 0)
+            crc_v = zlib.crc32(ihdr) if crc else 0
+            raw = b"".join(b"\0" + b"\x80" * 3 * width
+                           for _ in range(min(height, 4)))
+            idat = b"IDAT" + zlib.compress(raw)
+            path = os.path.join(tmp, name)
+            with open(path, "wb") as f:
+                f.write(b"\x89PNG\r\n\x1a\n" + struct.pack(">I", 13) + ihdr
+                        + struct.pack(">I", crc_v)
+                        + struct.pack(">I", len(idat) - 4) + idat
+                        + struct.pack(">I", zlib.crc32(idat))
+                        + b"\0\0\0\0IEND\xaeB`\x82")
+            return path
+        for name, size, crc, want in (
+                ("zero.png", (0, 0), True, "its header gives 0 x 0 pixels"),
+                ("huge.png", (100000, 100000), True,
+                 "100000 x 100000 pixels, more than the 32000 a side"),
+                ("badcrc.png", (4, 4), False, "libpng refused it: a bad "
+                 "checksum")):
+            path = png_file(name, *size, crc=crc)
+            r = run(tool, "compare", path, base + ".png")
+            check("%s: exit 2" % name, r.returncode == 2, r.stderr)
+            check("%s: the message says what is wrong" % name,
+                  path + ": not a readable PNG file (" + want in r.stderr,
+                  r.stderr)
+            check("%s: not 'out of memory'" % name,
+                  "(out of memory)" not in r.stderr, r.stderr)
 
         pdf = os.path.join(tmp, "base.pdf")
         r = run(tool, "render", os.path.join(tmp, "base.lua"), "-o", tmp,

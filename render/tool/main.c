@@ -295,6 +295,12 @@ parse_args(int argc, char **argv, options *o, int *rc)
             }
             o->background = v;
         } else if (strcmp(a, "--only") == 0) {
+            /* an empty list would render nothing and succeed */
+            if (v[0] == '\0') {
+                *rc = usage_error("--only '%s': give the names of the "
+                                  "figures to render, NAME[,NAME]", v);
+                return -1;
+            }
             o->only = v;
         } else if (strcmp(a, "--manifest") == 0) {
             o->manifest = v;

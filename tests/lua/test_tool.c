@@ -318,6 +318,16 @@ test_list_and_only(void **state)
     assert_int_equal(r->status, 0);
     assert_true(exists(r, "multi-2.svg"));
     assert_int_equal(count_files(r->dir), 1);
+    /* an empty list is a usage error (it rendered nothing, status 0) */
+    {
+        const char *none[] = { "render", src("multi.lua"), "--only", "",
+                               NULL };
+        reset(r);
+        run_tool(r, none);
+        assert_int_equal(r->status, 2);
+        assert_contains(r->err, "--only '': give the names of the figures");
+        assert_int_equal(count_files(r->dir), 0);
+    }
 }
 
 static void

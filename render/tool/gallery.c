@@ -12,8 +12,10 @@
 */
 #include <errno.h>
 #include <stdbool.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 #include "tool.h"
 
@@ -378,47 +380,120 @@ free_entries(entry_t *es, size_t n)
     free(es);
 }
 
-/* Every line of the manifests; NULL (a message said why) on failure. */
+/* What makes line `no` of manifest `path` (len bytes) no manifest line,
+** or NULL: a NUL byte, fewer than the three fields NAME, FORMATS and
+** CAPTION, an empty name or list of formats.  (The line is parsed after.) */
+static const char *
+line_fault(const char *line, size_t len)
+{
+    const char *t1, *t2;
+    if (strlen(line) != len)
+        return "it has a NUL byte";
+    t1 = strchr(line, '\t');
+    t2 = t1 != NULL ? strchr(t1 + 1, '\t') : NULL;
+    if (t2 == NULL)
+        return "it has fewer than the fields NAME, FORMATS and CAPTION";
+    if (t1 == line || t2 == t1 + 1)
+        return "its name or its list of formats is empty";
+    return NULL;
+}
+
+/* Every line of the manifests; NULL (a message said why) on failure: a
+** file that cannot be read (or is a directory), a line that is not a
+** manifest line (named by file and line; empty lines are passed over),
+** no memory.  Lines of any length (a caption of 10 MB was read as pieces
+** of 8191 bytes, each a line). */
 static entry_t *
 read_manifests(const char *const *manifests, int count, size_t *n)
 {
     entry_t *es = NULL;
-    size_t cap = 0;
-    char line[8192];
+    size_t cap = 0, size = 0;
+    char *line = NULL;
     *n = 0;
     for (int i = 0; i < count; i++) {
         FILE *m = fopen(manifests[i], "r");
-        if (m == NULL) {
-            fprintf(stderr, "curvefig: cannot read %s: %s\n", manifests[i],
-                    strerror(errno));
-            free_entries(es, *n);
-            return NULL;
+        struct stat st;
+        long no = 0;
+        ssize_t len;
+        if (m == NULL || fstat(fileno(m), &st) != 0 || S_ISDIR(st.st_mode)) {
+            int e = m == NULL ? errno : S_ISDIR(st.st_mode) ? EISDIR : errno;
+            fprintf(stderr, "curvefig: gallery: cannot read %s: %s\n",
+                    manifests[i], strerror(e));
+            if (m != NULL)
+                fclose(m);
+            goto fail;
         }
-        while (fgets(line, sizeof line, m) != NULL) {
+        while ((len = getline(&line, &size, m)) >= 0) {
+            const char *fault;
+            no++;
+            if (len > 0 && line[len - 1] == '\n')
+                line[--len] = '\0';
+            if (len > 0 && line[len - 1] == '\r')
+                line[--len] = '\0';
+            if (len == 0)
+                continue;
+            if ((fault = line_fault(line, (size_t)len)) != NULL) {
+                fprintf(stderr, "curvefig: gallery: %s:%ld: not a manifest "
+                        "line: %s (a line is NAME, FORMATS, CAPTION, SCRIPT, "
+                        "ALT and DESCRIPTION separated by tabs, as render "
+                        "--manifest writes it)\n", manifests[i], no, fault);
+                fclose(m);
+                goto fail;
+            }
             if (*n == cap) {
                 entry_t *more = realloc(es, (cap ? 2 * cap : 64) * sizeof *es);
-                if (more == NULL)
+                if (more == NULL) {
+                    fclose(m);
                     goto nomem;
+                }
                 es = more;
                 cap = cap ? 2 * cap : 64;
             }
             memset(&es[*n], 0, sizeof es[*n]);
-            if (parse_line(line, &es[*n]))
-                (*n)++;
-            else if (es[*n].name != NULL)
+            (*n)++;
+            if (!parse_line(line, &es[*n - 1])) {
+                fclose(m);
                 goto nomem;
+            }
+        }
+        if (ferror(m)) {
+            fprintf(stderr, "curvefig: gallery: cannot read %s: %s\n",
+                    manifests[i], strerror(errno));
+            fclose(m);
+            goto fail;
         }
         fclose(m);
-        continue;
-nomem:
-        fclose(m);
-        fprintf(stderr, "curvefig: out of memory reading %s\n", manifests[i]);
-        free_entries(es, *n + 1);
-        return NULL;
     }
+    free(line);
     if (es == NULL)
         es = calloc(1, sizeof *es);
     return es;
+nomem:
+    fprintf(stderr, "curvefig: gallery: out of memory reading the "
+            "manifests\n");
+fail:
+    free(line);
+    free_entries(es, *n);
+    return NULL;
+}
+
+/* Whether path names the same file as a manifest (the gallery would
+** overwrite it): an error saying so. */
+static bool
+overwrites_manifest(const char *path, const char *const *manifests,
+                    int count)
+{
+    struct stat out, in;
+    if (stat(path, &out) != 0)
+        return false;
+    for (int i = 0; i < count; i++)
+        if (stat(manifests[i], &in) == 0 && in.st_dev == out.st_dev
+            && in.st_ino == out.st_ino) {
+            fprintf(stderr, "curvefig: gallery: -o %s is the manifest %s; "
+                    "the gallery would overwrite it\n", path, manifests[i]);
+            return true;
+        }
+    return false;
 }
 
 int
@@ -433,6 +508,8 @@ cf__tool_gallery(const char *out_path, const char *title,
         title = "curvefig figures";
     if (out_path == NULL || strcmp(out_path, ".") == 0)
         out_path = "index.html";
+    if (overwrites_manifest(out_path, manifests, count))
+        return 2;
     es = read_manifests(manifests, count, &n);
     if (es == NULL)
         return 2;

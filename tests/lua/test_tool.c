@@ -395,6 +395,66 @@ test_gallery_captions(void **state)
     assert_true(strstr(page, "<pre>") == NULL);
 }
 
+/* A manifest the gallery cannot use is an error naming the file and the
+** line, not a page without those figures (a line of one field, random
+** bytes and a directory gave a page and status 0); a line of any length
+** is one line (a 20000-byte caption was read as pieces of 8191 bytes,
+** each a line); -o naming a manifest is refused (it overwrote it). */
+static void
+test_gallery_bad_manifests(void **state)
+{
+    result *r = *state;
+    char man[600], html[600], page[65536], caption[20001];
+    const char *gallery[] = { "gallery", "-o", "index.html", "m.txt",
+                              NULL };
+    const char *dir[] = { "gallery", "-o", "index.html", "/tmp", NULL };
+    const char *over[] = { "gallery", "-o", "m.txt", "m.txt", NULL };
+    FILE *f;
+    snprintf(r->dir, sizeof r->dir, "/tmp/curvefig-test-XXXXXX");
+    assert_non_null(mkdtemp(r->dir));
+    snprintf(man, sizeof man, "%s/m.txt", r->dir);
+    f = fopen(man, "w");
+    assert_non_null(f);
+    fputs("sir-a\tpng\tfine\n\nsir-b png caption without tabs\n", f);
+    fclose(f);
+    run_tool(r, gallery);
+    assert_int_equal(r->status, 2);
+    assert_contains(r->err, "curvefig: gallery: m.txt:3: not a manifest "
+                            "line: it has fewer than the fields NAME, "
+                            "FORMATS and CAPTION");
+    assert_int_equal(count_files(r->dir), 1);
+
+    reset(r);
+    run_tool(r, dir);
+    assert_int_equal(r->status, 2);
+    assert_contains(r->err, "cannot read /tmp: Is a directory");
+
+    reset(r);
+    snprintf(r->dir, sizeof r->dir, "/tmp/curvefig-test-XXXXXX");
+    assert_non_null(mkdtemp(r->dir));
+    snprintf(man, sizeof man, "%s/m.txt", r->dir);
+    memset(caption, 'c', sizeof caption - 1);
+    caption[sizeof caption - 1] = '\0';
+    f = fopen(man, "w");
+    assert_non_null(f);
+    fprintf(f, "sir-a\tpng\t%s\n", caption);
+    fclose(f);
+    run_tool(r, over);
+    assert_int_equal(r->status, 2);
+    assert_contains(r->err, "-o m.txt is the manifest m.txt; the gallery "
+                            "would overwrite it");
+    slurp(man, page, sizeof page);
+    assert_true(strncmp(page, "sir-a\tpng\tccc", 13) == 0);
+    run_tool(r, gallery);
+    assert_int_equal(r->status, 0);
+    snprintf(html, sizeof html, "%s/index.html", r->dir);
+    slurp(html, page, sizeof page);
+    /* one figure, its whole caption */
+    assert_contains(page, caption);
+    assert_contains(page, "id=\"sir-a\"");
+    assert_null(strstr(strstr(page, "id=\"sir-a\"") + 1, "id=\"sir-a\""));
+}
+
 /* Every file the tool writes goes through one writer that neither
 ** follows nor truncates a file planted beside the target: symbolic links
 ** at the old predictable temporary names (PATH.tmp~) and at the target
@@ -531,6 +591,7 @@ main(int argc, char **argv)
         T(test_list_and_only),
         T(test_gallery),
         T(test_gallery_captions),
+        T(test_gallery_bad_manifests),
         T(test_writes_follow_no_link),
         T(test_gallery_title_escaped),
         T(test_every_figure_method),

@@ -18,6 +18,8 @@ from .lua import CURVES, Lua, literal
 
 FORMATS = ("svg", "pdf", "ps", "eps", "png", "pgf")
 _WHERE = re.compile(r"^(?P<chunk>[^\n]*?):(?P<line>\d+):")
+# an element's script line inside a message: "label 2 "P" (line 5) lies"
+_LINE = re.compile(r"\(line (\d+)([,)])")
 
 
 def _module_path():
@@ -66,6 +68,10 @@ class _Rendered:
     def _fail(self, err):
         raise err
 
+    def _lines_named(self, msg):
+        """msg with the script lines it names where they were written."""
+        return msg
+
     def _run(self, params=None):
         if params is None:
             params = getattr(self, "_default_params", None)
@@ -93,8 +99,11 @@ class _Rendered:
                step=0, params=None):
         """The figure as bytes in one format: svg, pdf, ps, eps, png, pgf."""
         s, i = self._run(params)
-        return s.render(i, format, self.dpi if dpi is None else dpi, tight,
-                        padding, step)
+        try:
+            return s.render(i, format, self.dpi if dpi is None else dpi,
+                            tight, padding, step)
+        except ValueError as e:
+            raise ValueError(self._lines_named(str(e))) from None
 
     def params(self):
         """The sliders and point lists the figure's script declares, as
@@ -320,6 +329,17 @@ class Figure(_Rendered):
 
     def _file_name(self):
         return self._name + ".lua"
+
+    def _lines_named(self, msg):
+        """An element's line of the generated script in msg ("label 2 "P"
+        (line 5) lies ...") as the Python file and line that added it."""
+        def where(m):
+            line = int(m.group(1))
+            if 1 <= line <= len(self._where) and self._where[line - 1]:
+                fn, ln = self._where[line - 1]
+                return "(%s, line %d%s" % (fn, ln, m.group(2))
+            return m.group(0)
+        return _LINE.sub(where, msg)
 
     def _fail(self, err):
         msg = str(err)

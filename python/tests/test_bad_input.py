@@ -2,6 +2,8 @@
 crashes the interpreter; arrays that are merely strided or in Fortran
 order are read correctly."""
 
+import sys
+
 import numpy as np
 import pytest
 
@@ -135,3 +137,16 @@ def test_figure_errors(quartic):
         curvefig.render_script("this is not lua\n")
     with pytest.raises(TypeError, match="cannot be passed"):
         curvefig.Figure("x").curve(object())
+
+
+def test_render_error_names_the_python_line(quartic):
+    # a page error names the element by its line: the Python file and line
+    # that added it, not the line of the generated script
+    f = curvefig.Figure("far")
+    f.curve(quartic)
+    line = sys._getframe().f_lineno + 1
+    f.label([0.5, 0.5], "P", offset=1e300)
+    with pytest.raises(ValueError) as e:
+        f.render("svg")
+    msg = str(e.value)
+    assert 'label 2 "P" (%s, line %d) lies' % (__file__, line) in msg, msg

@@ -264,11 +264,12 @@ cf__poly_paint(cf__poly_t *pl, unsigned char *px, int stride,
         return -1;
     if (pl->n == 0 || !(alpha > 0))
         return 0;
-    /* the polygon's pixels within the clip */
-    i0 = (int)fmax(clip[0], floor(fmax(pl->box[0], -1e9)));
-    i1 = (int)fmin(clip[2], ceil(fmin(pl->box[2], 1e9)));
-    j0 = (int)fmax(clip[1], floor(fmax(pl->box[1], -1e9)));
-    j1 = (int)fmin(clip[3], ceil(fmin(pl->box[3], 1e9)));
+    /* the polygon's pixels within the clip (its box bounded on both
+    ** sides: one wholly beyond the page is beyond every int) */
+    i0 = (int)fmax(clip[0], floor(fmin(fmax(pl->box[0], -1e9), 1e9)));
+    i1 = (int)fmin(clip[2], ceil(fmin(fmax(pl->box[2], -1e9), 1e9)));
+    j0 = (int)fmax(clip[1], floor(fmin(fmax(pl->box[1], -1e9), 1e9)));
+    j1 = (int)fmin(clip[3], ceil(fmin(fmax(pl->box[3], -1e9), 1e9)));
     if (i1 <= i0 || j1 <= j0)
         return 0;
     width = i1 - i0;

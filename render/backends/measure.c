@@ -119,10 +119,12 @@ grow_dirty(cf__raster_t *r, const int b[4], const double pb[4])
 {
     double u[4];
     int d[4], *t = r->dirty;
-    u[0] = floor(fmax(pb[0], -1e9));
-    u[1] = floor(fmax(pb[1], -1e9));
-    u[2] = ceil(fmin(pb[2], 1e9));
-    u[3] = ceil(fmin(pb[3], 1e9));
+    /* both sides bounded: a polygon wholly beyond the page (a label 1e17
+    ** bp off) has its left edge beyond every int too */
+    u[0] = floor(fmin(fmax(pb[0], -1e9), 1e9));
+    u[1] = floor(fmin(fmax(pb[1], -1e9), 1e9));
+    u[2] = ceil(fmin(fmax(pb[2], -1e9), 1e9));
+    u[3] = ceil(fmin(fmax(pb[3], -1e9), 1e9));
     if (u[0] < b[0] || u[1] < b[1] || u[2] > b[2] || u[3] > b[3])
         r->cut = true;
     d[0] = (int)fmax(b[0], u[0]);

@@ -498,12 +498,23 @@ group_finite(const cf__dl_t *dl, size_t g, size_t e)
 ** farthest of all): its GROUP op's index, how far (bp, *worst) and where
 ** (*side), and its name in who[0..whon-1] ("label 3 "P_0""); *worst 0
 ** when none does. */
+/* Whether group op g is placed by the layout around the others' ink (a
+** legend, an inset's frame): it follows an element far out rather than
+** being the one to move. */
+static bool
+placed_around(const cf__op_t *g)
+{
+    return strcmp(g->u.group.name, "legend") == 0
+        || strcmp(g->u.group.name, "inset") == 0;
+}
+
 static size_t
 farthest_group(const cf__dl_t *dl, double w, double h, double *worst,
                const char **side, char *who, size_t whon)
 {
-    size_t i = 0, worst_g = 0;
-    const char *text = NULL;
+    size_t i = 0, worst_g = 0, worst_el = 0;
+    const char *text = NULL, *side_el = "";
+    double worst_e = 0;
     *worst = 0;
     *side = "";
     while (i < dl->count) {
@@ -533,6 +544,19 @@ farthest_group(const cf__dl_t *dl, double w, double h, double *worst,
             worst_g = g;
             *side = sd;
         }
+        if (o > worst_e && !placed_around(&dl->ops[g])) {
+            worst_e = o;
+            worst_el = g;
+            side_el = sd;
+        }
+    }
+    /* a legend placed beside a label 1e300 bp out lies about as far: the
+    ** label is named, not the legend (a legend far larger than the page
+    ** itself, with every element near, is still named) */
+    if (worst_e > 0 && worst_e >= 0.5 * *worst) {
+        *worst = worst_e;
+        worst_g = worst_el;
+        *side = side_el;
     }
     for (i = worst_g; *worst > 0 && i < dl->count
          && dl->ops[i].kind != CF__OP_END; i++)

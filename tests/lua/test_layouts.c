@@ -165,6 +165,50 @@ test_label_outside_window(void **state)
     cf_script_destroy(s);
 }
 
+/* Automatic tick labels that would stand on each other (0.2 ... 1 on a
+** y axis 14 bp long) are labelled every nice multiple of the step that
+** leaves them apart, every mark kept; on a roomy axis, and with a step
+** given, every tick is labelled. */
+static void
+test_tick_labels_thinned(void **state)
+{
+    cf_script_t *s;
+    char *t;
+    static const char *const tenths[] = { "text \"0.2\"", "text \"0.4\"",
+                                          "text \"0.6\"", "text \"0.8\"" };
+    size_t k, marks_short, marks_tall;
+    (void)state;
+    s = run("local g = figure{ name = 'short', width = '6cm',\n"
+            "                  height = '1.5cm' }\n"
+            "g:plot{ x = {0, 10}, y = {0, 1} }\n"
+            "local h = figure{ name = 'tall', width = '6cm', height = '8cm' }\n"
+            "h:plot{ x = {0, 10}, y = {0, 1} }\n"
+            "local k = figure{ name = 'given', width = '6cm',\n"
+            "                  height = '1.5cm' }\n"
+            "k:plot{ x = {0, 10}, y = {0, 1}, yticks = 0.2 }\n");
+    t = dump(s, 0);
+    for (k = 0; k < 4; k++)
+        assert_int_equal(count(t, tenths[k]), 0);
+    assert_int_equal(count(t, "text \"1\""), 1);
+    /* the x axis has room: 0, 2, ..., 10 */
+    assert_int_equal(count(t, "text \"4\""), 1);
+    assert_int_equal(count(t, "text \"10\""), 1);
+    marks_short = count(t, "move");
+    cf_free(t);
+    t = dump(s, 1);
+    for (k = 0; k < 4; k++)
+        assert_int_equal(count(t, tenths[k]), 1);
+    marks_tall = count(t, "move");
+    cf_free(t);
+    /* the same marks, labelled or not */
+    assert_int_equal(marks_short, marks_tall);
+    t = dump(s, 2);
+    for (k = 0; k < 4; k++)
+        assert_int_equal(count(t, tenths[k]), 1);
+    cf_free(t);
+    cf_script_destroy(s);
+}
+
 /* A panel's warnings are its figure's, each naming the panel. */
 static void
 test_panel_warnings(void **state)
@@ -273,6 +317,7 @@ main(void)
         cmocka_unit_test(test_panels),
         cmocka_unit_test(test_panel_keeps_parent),
         cmocka_unit_test(test_label_outside_window),
+        cmocka_unit_test(test_tick_labels_thinned),
         cmocka_unit_test(test_panel_warnings),
         cmocka_unit_test(test_faded_label_warns),
         cmocka_unit_test(test_inset_above),

@@ -122,6 +122,7 @@ least_covered(cf_figure_t *fig, const cf__dl_t *dl, const double a[4],
         CF_PLACE_N, CF_PLACE_S, CF_PLACE_E, CF_PLACE_W
     };
     double aw = a[2] - a[0], ah = a[3] - a[1], res = ROOM_RES;
+    const int side_max = (int)ROOM_MAX_PIXELS;
     cf__raster_t img;
     size_t k, best = SIZE_MAX;
     *st = CF_STATUS_OK;
@@ -131,7 +132,10 @@ least_covered(cf_figure_t *fig, const cf__dl_t *dl, const double a[4],
     ah += 2 * ROOM_CLEAR;
     if (aw * ah * res * res > ROOM_MAX_PIXELS)
         res = sqrt(ROOM_MAX_PIXELS / (aw * ah));
-    if (cf__raster_open(&img, (int)ceil(aw * res), (int)ceil(ah * res), res,
+    /* each side within the budget (and an int): ink 1e300 bp wide and
+    ** 20 bp tall, scaled to the budget of pixels, is 1e153 pixels wide */
+    if (cf__raster_open(&img, cf__pixel_within(ceil(aw * res), 1, side_max),
+                        cf__pixel_within(ceil(ah * res), 1, side_max), res,
                         a[0] - ROOM_CLEAR, a[1] - ROOM_CLEAR) != 0
         || cf__raster_paint(&img, dl, 0, dl->count) != 0) {
         cf__raster_close(&img);

@@ -66,12 +66,19 @@ CF_API cf_status_t cf_figure_status(const cf_figure_t *fig, cf_diag_t *diag);
 ** legend and overlay functions counts from 0 in the order added. */
 CF_API size_t cf_figure_element_count(const cf_figure_t *fig);
 
+/* The line of the script that adds the elements added next (0: unknown,
+** the default): the figure's errors and warnings about an element name it
+** ("label 3 (line 12) lies ...").  The Lua binding sets it at every call
+** of a figure's method. */
+CF_API void cf_figure_set_line(cf_figure_t *fig, int line);
+
 /* What the last layout of the figure (a render, a dump, an ink box)
 ** noted without failing: every label that lies on drawn ink (on a stroke,
 ** a marker or another label; shadings do not count), placed by hand or
 ** automatically, as `label "TEXT" (place P) lies on KIND N` (N counts the
-** elements from 1), one line each.  "" when none (or fig is NULL); valid
-** until the next layout or cf_figure_destroy. */
+** elements from 1; with the script lines when known: `label "TEXT" (line
+** L, place P) lies on KIND N (line M)`), one line each.  "" when none (or
+** fig is NULL); valid until the next layout or cf_figure_destroy. */
 CF_API const char *cf_figure_warnings(const cf_figure_t *fig);
 
 /* Page size in bp (before any tight cropping). */

@@ -212,11 +212,6 @@ CF_API cf_status_t cf_figure_add_space_hull(cf_figure_t *fig,
 /* The line of the script that added element i (counted from 0), which
 ** the figure's warnings about it name (0: unknown, the default). */
 CF_API void cf_figure_set_element_line(cf_figure_t *fig, size_t i, int line);
-/* The line of the script that adds the elements added next (0: unknown,
-** the default): the figure's errors and warnings about an element name it
-** ("label 3 (line 12) lies ...").  The Lua binding sets it at every call
-** of a figure's method. */
-CF_API void cf_figure_set_line(cf_figure_t *fig, int line);
 
 /* The same for a triangular Bézier patch in R^3: its three edges
 ** (boundary), iso-lines of u, v and w (nu of u and of w, nv of v evenly

@@ -62,6 +62,7 @@ test_figure(void **state)
     /* every figure function on NULL */
     BAD(cf_figure_status(NULL, NULL));
     assert_string_equal(cf_figure_warnings(NULL), "");
+    cf_figure_set_line(NULL, 12);   /* nothing to set, no crash */
     cf_figure_get_size(NULL, &w, &w);
     BAD(cf_figure_set_title(NULL, "t"));
     BAD(cf_figure_set_caption(NULL, "c"));

@@ -369,20 +369,27 @@ put_figure(text_t *t, const cf_script_t *s, size_t i, char *err,
     return 0;
 }
 
-/* A points{} list naming a figure the script did not define. */
-static int
-check_figures(const cf_script_t *s, char *err, size_t errlen)
+int
+cf_interactive_check_figures(const cf_script_t *s, char *err, size_t errlen)
 {
     const cf__params_t *p = cf_script_params(s);
     for (size_t i = 0; i < cf__params_count(p); i++) {
         const cf__param_t *d = cf__params_at(p, i);
+        size_t nfig = cf_script_figure_count(s), k;
         bool found = d->kind != CF__PARAM_POINTS || d->figure[0] == '\0';
-        for (size_t k = 0; !found && k < cf_script_figure_count(s); k++)
+        for (k = 0; !found && k < nfig; k++)
             found = strcmp(cf_script_figure_name(s, k), d->figure) == 0;
         if (!found) {
+            const char *names[64], *near;
+            size_t n = nfig < 64 ? nfig : 64;
+            for (k = 0; k < n; k++)
+                names[k] = cf_script_figure_name(s, k);
+            near = cf_nearest_name(d->figure, names, n);
             snprintf(err, errlen, "points '%s' (line %d): figure = '%s' "
-                     "names no figure of the script", d->name, d->line_no,
-                     d->figure);
+                     "names no figure of the script%s%s%s", d->name,
+                     d->line_no, d->figure, near != NULL ? " (did you mean '"
+                     : "", near != NULL ? near : "", near != NULL ? "'?)"
+                     : "");
             return d->line_no;
         }
     }
@@ -447,7 +454,7 @@ cf_interactive_run_error(const char *code, const char *name,
     if (st != CF_STATUS_OK) {
         snprintf(err, sizeof err, "%s", cf_script_error(s));
         line = error_line(err, name);
-    } else if ((line = check_figures(s, err, sizeof err)) < 0) {
+    } else if ((line = cf_interactive_check_figures(s, err, sizeof err)) < 0) {
         line = 0;
     }
     put(&t, "{\"params\": [");

@@ -66,6 +66,14 @@ cf_status_t cf_interactive_run_error(const char *code, const char *name,
                                      FILE *out, char **json, size_t *len,
                                      char *error, size_t error_len);
 
+/* A points{} list whose figure = names no figure the script defined:
+** the message (with the nearest figure's name) into err[0..errlen-1] and
+** the points{} line; -1 when every name is a figure's.  live refuses such
+** a script; render, list and check too (the typo would show only later,
+** in the lecture hall, when the points cannot be dragged). */
+int cf_interactive_check_figures(const cf_script_t *s, char *err,
+                                 size_t errlen);
+
 #ifdef __cplusplus
 }
 #endif

@@ -28,6 +28,7 @@
 #include "help.h"
 #include "helpers.h"
 #include "html.h"
+#include "interactive.h"
 #include "font-config.h"
 #include "runlimits.h"
 #include "script.h"
@@ -687,6 +688,17 @@ run_script(const options *o)
         fprintf(stderr, "curvefig: %s\n", cf_script_error(s));
         cf_script_destroy(s);
         return EXIT_SCRIPT;
+    }
+    {
+        /* a points{} list dragged in a figure the script does not define:
+        ** the error live gives, given here too */
+        char err[400];
+        int line = cf_interactive_check_figures(s, err, sizeof err);
+        if (line >= 0) {
+            fprintf(stderr, "curvefig: %s:%d: %s\n", o->script, line, err);
+            cf_script_destroy(s);
+            return EXIT_SCRIPT;
+        }
     }
     if (strcmp(o->command, "list") == 0) {
         for (size_t i = 0; i < cf_script_figure_count(s); i++) {

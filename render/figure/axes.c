@@ -218,8 +218,9 @@ static double
 label_every(const tick_t *t, size_t n, double step, double scale,
             bool vertical, double font)
 {
+    static const double nice[] = { 1, 2, 5 };
     double size = 0, need, k;
-    size_t i;
+    size_t i, m;
     for (i = 0; i < n; i++)
         if (t[i].t.lab != NULL) {
             double ink[4];
@@ -230,8 +231,8 @@ label_every(const tick_t *t, size_t n, double step, double scale,
     if (n < 2 || !(step > 0) || !(step * scale < need))
         return 0;
     for (k = pow(10, floor(log10(step))); isfinite(k) && k < 1e300; k *= 10)
-        for (int m = 1; m <= 5; m += m == 1 ? 1 : 3) {
-            double every = m * k, r = every / step;
+        for (m = 0; m < 3; m++) {
+            double every = nice[m] * k, r = every / step;
             if (every >= step * (1 - 1e-9) && fabs(r - round(r)) < 1e-6
                 && every * scale >= need)
                 return every;

@@ -83,11 +83,10 @@ index_of(const cf_figure_t *fig, const region_el_t *e)
 static void
 warn(cf_figure_t *fig, const region_el_t *e, const char *what)
 {
-    char line[32] = "";
-    if (e->base.line > 0)
-        snprintf(line, sizeof line, " (line %d)", e->base.line);
+    char at[CF__LINE_NOTE_SIZE];
     cf__figure_warn(fig, "%s %zu%s %s", e->base.kind->name,
-                    index_of(fig, e) + 1, line, what);
+                    index_of(fig, e) + 1, cf__line_note(e->base.line, at),
+                    what);
 }
 
 /* The seen and hidden parts for layout l. */

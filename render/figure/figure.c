@@ -152,6 +152,15 @@ cf_figure_set_line(cf_figure_t *fig, int line)
         fig->line = line > 0 ? line : 0;
 }
 
+const char *
+cf__line_note(int line, char buf[CF__LINE_NOTE_SIZE])
+{
+    buf[0] = '\0';
+    if (line > 0)
+        snprintf(buf, CF__LINE_NOTE_SIZE, " (line %d)", line);
+    return buf;
+}
+
 void
 cf__figure_warn(cf_figure_t *fig, const char *fmt, ...)
 {
@@ -590,15 +599,14 @@ cf__element_draw(cf_figure_t *fig, size_t i, const cf__layout_t *lay,
     ** window's scale) could not be drawn, measured or placed around */
     if (st == CF_STATUS_OK && !dl->failed
         && !cf__dl_finite_from(dl, op0, coord0, tri0, &bad)) {
-        char at[32] = "";
-        if (e->line > 0)
-            snprintf(at, sizeof at, " (line %d)", e->line);
+        char at[CF__LINE_NOTE_SIZE];
         st = cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, (long)i,
                          "%s %zu%s lies too far outside the drawing's %.1f "
                          "x %.1f mm page to be drawn (its place on the page "
                          "overflows to %g); move it nearer", e->kind->name,
-                         i + 1, at, fig->width * 25.4 / 72,
-                         fig->height * 25.4 / 72, bad);
+                         i + 1, cf__line_note(e->line, at),
+                         fig->width * 25.4 / 72, fig->height * 25.4 / 72,
+                         bad);
     }
     return st;
 }

@@ -280,6 +280,11 @@ void cf__figure_warn(cf_figure_t *fig, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)))
 #endif
     ;
+/* " (line N)" into buf for an element the script added at line N (the
+** errors and warnings that name an element name its line), "" when N is
+** unknown (0); returns buf. */
+#define CF__LINE_NOTE_SIZE 24
+const char *cf__line_note(int line, char buf[CF__LINE_NOTE_SIZE]);
 /* Record st in the figure (a generic message if the callee left none). */
 cf_status_t cf__fig_fail(cf_figure_t *fig, cf_status_t st, const char *what);
 /* "out of memory for <what>" in the figure. */

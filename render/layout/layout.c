@@ -288,15 +288,13 @@ labels_off_page(cf_figure_t *fig, const cf__layout_t *lay)
                 || ink[1] < lay->py - LABEL_SLACK
                 || ink[2] > lay->px + fig->width + LABEL_SLACK
                 || ink[3] > lay->py + fig->height + LABEL_SLACK)) {
-            char at[32] = "";
-            if (e->line > 0)
-                snprintf(at, sizeof at, " (line %d)", e->line);
+            char at[CF__LINE_NOTE_SIZE];
             cf_diag_set(&fig->err, CF_STATUS_INVALID_ARG, (long)i,
                         "label %zu \"%s\"%s at (%g, %g) is outside the "
                         "window [%g, %g] x [%g, %g], too far to fit the %.1f "
                         "x %.1f mm page beside it: widen the window or move "
-                        "the label", i + 1, t->src != NULL ? t->src : "", at,
-                        x, y,
+                        "the label", i + 1, t->src != NULL ? t->src : "",
+                        cf__line_note(e->line, at), x, y,
                         lay->xmin, lay->xmax, lay->ymin, lay->ymax,
                         fig->width * 25.4 / 72, fig->height * 25.4 / 72);
             break;
@@ -493,11 +491,6 @@ group_finite(const cf__dl_t *dl, size_t g, size_t e)
     return true;
 }
 
-/* The element (GROUP ... END at ops [g, e)) whose ink sticks out of a
-** w x h page farthest (one with a coordinate that is not finite,
-** farthest of all): its GROUP op's index, how far (bp, *worst) and where
-** (*side), and its name in who[0..whon-1] ("label 3 "P_0""); *worst 0
-** when none does. */
 /* Whether group op g is placed by the layout around the others' ink (a
 ** legend, an inset's frame): it follows an element far out rather than
 ** being the one to move. */
@@ -508,6 +501,11 @@ placed_around(const cf__op_t *g)
         || strcmp(g->u.group.name, "inset") == 0;
 }
 
+/* The element (GROUP ... END at ops [g, e)) whose ink sticks out of a
+** w x h page farthest (one with a coordinate that is not finite,
+** farthest of all): its GROUP op's index, how far (bp, *worst) and where
+** (*side), and its name in who[0..whon-1] ("label 3 "P_0""); *worst 0
+** when none does. */
 static size_t
 farthest_group(const cf__dl_t *dl, double w, double h, double *worst,
                const char **side, char *who, size_t whon)
@@ -565,15 +563,13 @@ farthest_group(const cf__dl_t *dl, double w, double h, double *worst,
             break;
         }
     if (*worst > 0 && dl->ops[worst_g].kind == CF__OP_GROUP) {
-        char at[32] = "";
-        if (dl->ops[worst_g].u.group.line > 0)
-            snprintf(at, sizeof at, " (line %d)",
-                     dl->ops[worst_g].u.group.line);
+        char at[CF__LINE_NOTE_SIZE];
         snprintf(who, whon, "%s %zu%s%.200s%s%s",
                  dl->ops[worst_g].u.group.name,
                  dl->ops[worst_g].u.group.index + 1,
                  text != NULL ? " \"" : "", text != NULL ? text : "",
-                 text != NULL ? "\"" : "", at);
+                 text != NULL ? "\"" : "",
+                 cf__line_note(dl->ops[worst_g].u.group.line, at));
     } else {
         snprintf(who, whon, "an element");
     }

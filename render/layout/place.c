@@ -295,6 +295,7 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
     double ink[4];
     int px[4];
     long n;
+    char line[32] = "", under[CF__LINE_NOTE_SIZE];
     /* only the label's box is cleared, drawn and compared; the last label
     ** is not added (nothing reads the raster after it) */
     st = element_ops(fig, i, lay, r);
@@ -337,17 +338,15 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
         if (st != CF_STATUS_OK)
             return st;
         /* the script's lines of the label and of what it lies on */
-        char at[32] = "", under[32] = "";
         if (fig->els[i]->line > 0)
-            snprintf(at, sizeof at, "line %d, ", fig->els[i]->line);
-        if (j < fig->count && fig->els[j]->line > 0)
-            snprintf(under, sizeof under, " (line %d)", fig->els[j]->line);
+            snprintf(line, sizeof line, "line %d, ", fig->els[i]->line);
         if (j < fig->count)
-            warn(fig, "label \"%s\" (%s%s%s) lies on %s %zu%s", t->src, at,
+            warn(fig, "label \"%s\" (%s%s%s) lies on %s %zu%s", t->src, line,
                  automatic ? "placed automatically " : "place ",
-                 place_names[place], fig->els[j]->kind->name, j + 1, under);
+                 place_names[place], fig->els[j]->kind->name, j + 1,
+                 cf__line_note(fig->els[j]->line, under));
         else
-            warn(fig, "label \"%s\" (%s%s%s) lies on %s", t->src, at,
+            warn(fig, "label \"%s\" (%s%s%s) lies on %s", t->src, line,
                  automatic ? "placed automatically " : "place ",
                  place_names[place], fig->ninsets > 0
                  ? "ink (an inset's frame or connector?)" : "ink");

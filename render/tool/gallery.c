@@ -380,7 +380,7 @@ free_entries(entry_t *es, size_t n)
     free(es);
 }
 
-/* What makes line `no` of manifest `path` (len bytes) no manifest line,
+/* What makes line (len bytes, its newline taken off) no manifest line,
 ** or NULL: a NUL byte, fewer than the three fields NAME, FORMATS and
 ** CAPTION, an empty name or list of formats.  (The line is parsed after.) */
 static const char *

@@ -370,19 +370,13 @@ static void
 test_gallery_captions(void **state)
 {
     result *r = *state;
-    char man[600], html[600], page[65536];
+    char html[600], page[65536];
     const char *gallery[] = { "gallery", "-o", "index.html", "m.txt",
                               NULL };
-    FILE *f;
-    if (r->dir[0] == '\0') {   /* the manifest first, in the tool's dir */
-        snprintf(r->dir, sizeof r->dir, "/tmp/curvefig-test-XXXXXX");
-        assert_non_null(mkdtemp(r->dir));
-    }
-    snprintf(man, sizeof man, "%s/m.txt", r->dir);
-    f = fopen(man, "w");
-    assert_non_null(f);
-    fputs("sir-a\tpng\tN_0^1 and P_{i,1} and C^{-1}, x ^ y, a_ b\n", f);
-    fclose(f);
+    /* the manifest first, in the tool's dir */
+    put_file(r, "m.txt",
+             "sir-a\tpng\tN_0^1 and P_{i,1} and C^{-1}, x ^ y, a_ b\n", NULL,
+             0);
     run_tool(r, gallery);
     assert_int_equal(r->status, 0);
     snprintf(html, sizeof html, "%s/index.html", r->dir);
@@ -404,19 +398,14 @@ static void
 test_gallery_bad_manifests(void **state)
 {
     result *r = *state;
-    char man[600], html[600], page[65536], caption[20001];
+    char man[600], html[600], page[65536], line[20020];
     const char *gallery[] = { "gallery", "-o", "index.html", "m.txt",
                               NULL };
     const char *dir[] = { "gallery", "-o", "index.html", "/tmp", NULL };
     const char *over[] = { "gallery", "-o", "m.txt", "m.txt", NULL };
-    FILE *f;
-    snprintf(r->dir, sizeof r->dir, "/tmp/curvefig-test-XXXXXX");
-    assert_non_null(mkdtemp(r->dir));
-    snprintf(man, sizeof man, "%s/m.txt", r->dir);
-    f = fopen(man, "w");
-    assert_non_null(f);
-    fputs("sir-a\tpng\tfine\n\nsir-b png caption without tabs\n", f);
-    fclose(f);
+    const char *caption;
+    put_file(r, "m.txt", "sir-a\tpng\tfine\n\nsir-b png caption without "
+             "tabs\n", NULL, 0);
     run_tool(r, gallery);
     assert_int_equal(r->status, 2);
     assert_contains(r->err, "curvefig: gallery: m.txt:3: not a manifest "
@@ -430,15 +419,13 @@ test_gallery_bad_manifests(void **state)
     assert_contains(r->err, "cannot read /tmp: Is a directory");
 
     reset(r);
-    snprintf(r->dir, sizeof r->dir, "/tmp/curvefig-test-XXXXXX");
-    assert_non_null(mkdtemp(r->dir));
-    snprintf(man, sizeof man, "%s/m.txt", r->dir);
-    memset(caption, 'c', sizeof caption - 1);
-    caption[sizeof caption - 1] = '\0';
-    f = fopen(man, "w");
-    assert_non_null(f);
-    fprintf(f, "sir-a\tpng\t%s\n", caption);
-    fclose(f);
+    /* a caption of 20000 bytes */
+    memcpy(line, "sir-a\tpng\t", 10);
+    memset(line + 10, 'c', 20000);
+    memcpy(line + 20010, "\n", 2);
+    caption = line + 10;
+    put_file(r, "m.txt", line, man, sizeof man);
+    line[20010] = '\0';   /* the caption alone, for the page */
     run_tool(r, over);
     assert_int_equal(r->status, 2);
     assert_contains(r->err, "-o m.txt is the manifest m.txt; the gallery "

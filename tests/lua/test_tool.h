@@ -51,6 +51,16 @@ slurp(const char *path, char *buf, size_t cap)
     buf[n] = '\0';
 }
 
+/* The run's directory, made when it is empty (run_tool's, put_file's). */
+static void
+own_dir(result *r)
+{
+    if (r->dir[0] == '\0') {
+        snprintf(r->dir, sizeof r->dir, "/tmp/curvefig-test-XXXXXX");
+        assert_non_null(mkdtemp(r->dir));
+    }
+}
+
 /* Run TOOL with args (NULL-terminated, after the tool's name) in the
 ** temporary directory r->dir, made when it is empty (see reset). */
 static void
@@ -59,10 +69,7 @@ run_tool(result *r, const char *const *args)
     char *argv[64], outp[300], errp[300];
     int n = 0, status;
     tu_spawn_t sp;
-    if (r->dir[0] == '\0') {
-        snprintf(r->dir, sizeof r->dir, "/tmp/curvefig-test-XXXXXX");
-        assert_non_null(mkdtemp(r->dir));
-    }
+    own_dir(r);
     snprintf(outp, sizeof outp, "/tmp/curvefig-out-%d", (int)getpid());
     snprintf(errp, sizeof errp, "/tmp/curvefig-err-%d", (int)getpid());
     argv[n++] = tool;
@@ -126,6 +133,24 @@ remove_tree(const char *dir)
     }
     closedir(d);
     rmdir(dir);
+}
+
+/* A file `name` in the run's directory (made at need) holding text; its
+** path into path[0..size-1] when path is not NULL. */
+static void
+put_file(result *r, const char *name, const char *text, char *path,
+         size_t size)
+{
+    char p[600];
+    FILE *f;
+    own_dir(r);
+    snprintf(p, sizeof p, "%s/%s", r->dir, name);
+    f = fopen(p, "w");
+    assert_non_null(f);
+    fputs(text, f);
+    assert_int_equal(fclose(f), 0);
+    if (path != NULL)
+        snprintf(path, size, "%s", p);
 }
 
 /* Remove the run's directory; the next run makes a new one. */

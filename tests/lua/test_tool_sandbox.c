@@ -139,19 +139,12 @@ static void
 test_live_once_timeout(void **state)
 {
     result *r = *state;
-    char path[600];
     const char *args[] = { "live", "xp.lua", "--once", "--timeout", "2",
                            "--max-instructions", "1e15", NULL };
     struct timespec t0, t1;
     double took;
-    FILE *f;
-    snprintf(r->dir, sizeof r->dir, "/tmp/curvefig-test-XXXXXX");
-    assert_non_null(mkdtemp(r->dir));
-    snprintf(path, sizeof path, "%s/xp.lua", r->dir);
-    f = fopen(path, "w");
-    assert_non_null(f);
-    fputs("xpcall(error, function() while true do end end)\n", f);
-    fclose(f);
+    put_file(r, "xp.lua", "xpcall(error, function() while true do end end)\n",
+             NULL, 0);
     clock_gettime(CLOCK_MONOTONIC, &t0);
     run_tool(r, args);
     clock_gettime(CLOCK_MONOTONIC, &t1);

@@ -19,6 +19,10 @@
 
 #include "tool.h"
 
+/* The largest manifest or script the gallery reads (a manifest line a
+** figure: 64 MiB is some hundred thousand figures). */
+#define GALLERY_MAX_FILE ((size_t)64 << 20)
+
 typedef struct entry {
     char *name, *formats, *caption, *script;   /* script "" if none */
     char *alt, *desc;                          /* "" if none */
@@ -149,21 +153,22 @@ put_math(FILE *f, const char *s, size_t n)
     }
 }
 
+/* A script's source (read as every script is: a FIFO, a device or a
+** directory named in a manifest is not read). */
 static void
 put_source(FILE *out, const char *script)
 {
-    FILE *f = fopen(script, "r");
-    char buf[4096];
     size_t n;
-    if (f == NULL) {
+    const char *why;
+    char *text = cf__tool_read_file(script, GALLERY_MAX_FILE, &n, &why);
+    if (text == NULL) {
         fputs("<p>(source not found)</p>", out);
         return;
     }
     fputs("<pre>", out);
-    while ((n = fread(buf, 1, sizeof buf, f)) > 0)
-        cf__tool_put_html(out, buf, n);
+    cf__tool_put_html(out, text, n);
     fputs("</pre>", out);
-    fclose(f);
+    free(text);
 }
 
 static const char *
@@ -399,51 +404,50 @@ line_fault(const char *line, size_t len)
 }
 
 /* Every line of the manifests; NULL (a message said why) on failure: a
-** file that cannot be read (or is a directory), a line that is not a
-** manifest line (named by file and line; empty lines are passed over),
-** no memory.  Lines of any length (a caption of 10 MB was read as pieces
-** of 8191 bytes, each a line). */
+** file that cannot be read (a directory, a FIFO, a device, or larger than
+** GALLERY_MAX_FILE), a line that is not a manifest line (named by file
+** and line; empty lines are passed over), no memory.  Lines of any length
+** (a caption of 10 MB was read as pieces of 8191 bytes, each a line). */
 static entry_t *
 read_manifests(const char *const *manifests, int count, size_t *n)
 {
     entry_t *es = NULL;
-    size_t cap = 0, size = 0;
-    char *line = NULL;
+    size_t cap = 0;
     *n = 0;
     for (int i = 0; i < count; i++) {
-        FILE *m = fopen(manifests[i], "r");
-        struct stat st;
+        size_t size, len;
+        const char *why;
+        char *text = cf__tool_read_file(manifests[i], GALLERY_MAX_FILE, &size,
+                                        &why), *line, *next;
         long no = 0;
-        ssize_t len;
-        if (m == NULL || fstat(fileno(m), &st) != 0 || S_ISDIR(st.st_mode)) {
-            int e = m == NULL ? errno : S_ISDIR(st.st_mode) ? EISDIR : errno;
+        if (text == NULL) {
             fprintf(stderr, "curvefig: gallery: cannot read %s: %s\n",
-                    manifests[i], strerror(e));
-            if (m != NULL)
-                fclose(m);
+                    manifests[i], why);
             goto fail;
         }
-        while ((len = getline(&line, &size, m)) >= 0) {
+        for (line = text; line < text + size; line = next) {
             const char *fault;
+            char *nl = memchr(line, '\n', (size_t)(text + size - line));
+            next = nl != NULL ? nl + 1 : text + size;
+            len = (size_t)((nl != NULL ? nl : text + size) - line);
             no++;
-            if (len > 0 && line[len - 1] == '\n')
-                line[--len] = '\0';
             if (len > 0 && line[len - 1] == '\r')
-                line[--len] = '\0';
+                len--;
+            line[len] = '\0';
             if (len == 0)
                 continue;
-            if ((fault = line_fault(line, (size_t)len)) != NULL) {
+            if ((fault = line_fault(line, len)) != NULL) {
                 fprintf(stderr, "curvefig: gallery: %s:%ld: not a manifest "
                         "line: %s (a line is NAME, FORMATS, CAPTION, SCRIPT, "
                         "ALT and DESCRIPTION separated by tabs, as render "
                         "--manifest writes it)\n", manifests[i], no, fault);
-                fclose(m);
+                free(text);
                 goto fail;
             }
             if (*n == cap) {
                 entry_t *more = realloc(es, (cap ? 2 * cap : 64) * sizeof *es);
                 if (more == NULL) {
-                    fclose(m);
+                    free(text);
                     goto nomem;
                 }
                 es = more;
@@ -452,19 +456,12 @@ read_manifests(const char *const *manifests, int count, size_t *n)
             memset(&es[*n], 0, sizeof es[*n]);
             (*n)++;
             if (!parse_line(line, &es[*n - 1])) {
-                fclose(m);
+                free(text);
                 goto nomem;
             }
         }
-        if (ferror(m)) {
-            fprintf(stderr, "curvefig: gallery: cannot read %s: %s\n",
-                    manifests[i], strerror(errno));
-            fclose(m);
-            goto fail;
-        }
-        fclose(m);
+        free(text);
     }
-    free(line);
     if (es == NULL)
         es = calloc(1, sizeof *es);
     return es;
@@ -472,7 +469,6 @@ nomem:
     fprintf(stderr, "curvefig: gallery: out of memory reading the "
             "manifests\n");
 fail:
-    free(line);
     free_entries(es, *n);
     return NULL;
 }

@@ -391,7 +391,7 @@ test_gallery_captions(void **state)
 
 /* A manifest the gallery cannot use is an error naming the file and the
 ** line, not a page without those figures (a line of one field, random
-** bytes and a directory gave a page and status 0); a line of any length
+** bytes and a directory gave a page and status 0, a FIFO a hang); a line of any length
 ** is one line (a 20000-byte caption was read as pieces of 8191 bytes,
 ** each a line); -o naming a manifest is refused (it overwrote it). */
 static void
@@ -416,7 +416,25 @@ test_gallery_bad_manifests(void **state)
     reset(r);
     run_tool(r, dir);
     assert_int_equal(r->status, 2);
-    assert_contains(r->err, "cannot read /tmp: Is a directory");
+    assert_contains(r->err, "cannot read /tmp: it is a directory, not a "
+                            "file");
+
+    /* a FIFO blocked the reader for ever, /dev/zero fed it for ever */
+    reset(r);
+    own_dir(r);
+    snprintf(man, sizeof man, "%s/m.txt", r->dir);
+    assert_int_equal(mkfifo(man, 0600), 0);
+    run_tool(r, gallery);
+    assert_int_equal(r->status, 2);
+    assert_contains(r->err, "cannot read m.txt: it is not a regular file");
+    {
+        const char *zero[] = { "gallery", "-o", "index.html", "/dev/zero",
+                               NULL };
+        run_tool(r, zero);
+        assert_int_equal(r->status, 2);
+        assert_contains(r->err, "cannot read /dev/zero: it is not a regular "
+                                "file");
+    }
 
     reset(r);
     /* a caption of 20000 bytes */

@@ -30,6 +30,24 @@ cf_status_t cf__region_polygon(cf_figure_t *fig, const double *p, size_t n,
                                const char *what, cf__tris_t *out,
                                bool *planar);
 
+/* Ear clipping of the plane polygon q (2 doubles a vertex) through its
+** vertices idx[0..m), counter-clockwise, no two consecutive ones equal:
+** the triangles' corners (indices into q, 3 each, room for m - 2) into
+** tri, *nt of them.  An ear is a vertex whose triangle turns
+** counter-clockwise and holds (closed) none of the vertices left that do
+** not (in a simple polygon a triangle that holds a vertex holds one of
+** those); they are found in idx's order and cut off in the order found,
+** each cut asking again only its two neighbours, so that the triangles
+** stay near their vertices (a convex polygon is cut into a balanced tree
+** of triangles, not a fan of slivers).  When no ear is left (the polygon
+** crosses itself), the rest is the fan of its first vertex left, each
+** triangle with its sign.  The triangles' winding numbers add up to the
+** polygon's at every point, whatever the polygon (cutting off a triangle
+** a b c takes exactly its winding off), so a simple polygon is tiled.
+** False when out of memory. */
+bool cf__ear_clip(const double *q, const size_t *idx, size_t m, size_t *tri,
+                  size_t *nt);
+
 /* The faces of the convex hull of p that face the viewer of fig's view:
 ** they cover the hull's image once.  *outline (cf_free) gets the indices
 ** of the hull's outline in the image, in order (*nout of them; 2: the
@@ -37,6 +55,19 @@ cf_status_t cf__region_polygon(cf_figure_t *fig, const double *p, size_t n,
 ** coincide; no triangles then). */
 cf_status_t cf__region_hull(cf_figure_t *fig, const double *p, size_t n,
                             cf__tris_t *out, size_t **outline, size_t *nout);
+
+/* The convex hull of p (n points, 3 doubles each) from the tetrahedron of
+** points t4, which must not lie in one plane: its faces (3 indices into
+** p each, counter-clockwise seen from outside) into *faces (cf_free),
+** *nf of them.  A point at most eps beyond every face's plane (eps times
+** the length of its normal) is taken as inside.  The faces come from
+** Quickhull (each face keeps the points beyond it, the farthest added
+** first), or, when a point's visible faces do not meet the rest of the
+** hull in one loop of edges (nearly coplanar points), from adding the
+** points one at a time, each against every face; slow (for tests): that
+** one always.  False when out of memory. */
+bool cf__hull3(const double *p, size_t n, const size_t t4[4], double eps,
+               bool slow, size_t **faces, size_t *nf);
 
 /* Polygons in the image (data units), each with a sign kept or not. */
 typedef struct cf__polys {

@@ -247,6 +247,19 @@ seg_dist(const double *a, const double *b, const double *x)
     return hypot(x[0] - a[0] - t * dx, x[1] - a[1] - t * dy);
 }
 
+/* The distance from x to the nearest edge of triangles tri of q. */
+static double
+near_triangles(const double *q, const size_t *tri, size_t nt,
+               const double *x)
+{
+    double near = INFINITY;
+    for (size_t t = 0; t < nt; t++)
+        for (int e = 0; e < 3; e++)
+            near = fmin(near, seg_dist(q + 2 * tri[3 * t + e],
+                                       q + 2 * tri[3 * t + (e + 1) % 3], x));
+    return near;
+}
+
 /* Triangles tri (nt of them) tile the simple polygon idx of q: k - 2 of
 ** them, each turning left, their areas adding up to the polygon's, and at points of a lattice
 ** away from every edge, each inside the polygon is in one triangle and
@@ -280,14 +293,8 @@ assert_triangulates(const double *q, const size_t *idx, size_t k,
         for (int j = 0; j < 24; j++) {
             double x[2] = { lo[0] + (hi[0] - lo[0]) * (i + 0.31) / 24,
                             lo[1] + (hi[1] - lo[1]) * (j + 0.43) / 24 };
-            double near = INFINITY;
             int sum = 0;
-            for (size_t t = 0; t < nt; t++)
-                for (int e = 0; e < 3; e++)
-                    near = fmin(near, seg_dist(q + 2 * tri[3 * t + e],
-                                               q + 2 * tri[3 * t + (e + 1) % 3],
-                                               x));
-            if (near < 1e-9)
+            if (near_triangles(q, tri, nt, x) < 1e-9)
                 continue;
             for (size_t t = 0; t < nt; t++)
                 sum += winding(q, tri + 3 * t, 3, x);
@@ -360,11 +367,7 @@ test_winding(void **state)
             for (size_t i = 0; i < k; i++)
                 near = fmin(near, seg_dist(q + 2 * idx[i],
                                            q + 2 * idx[(i + 1) % k], x));
-            for (size_t t = 0; t < nt; t++)
-                for (int e = 0; e < 3; e++)
-                    near = fmin(near, seg_dist(q + 2 * tri[3 * t + e],
-                                               q + 2 * tri[3 * t + (e + 1) % 3],
-                                               x));
+            near = fmin(near, near_triangles(q, tri, nt, x));
             if (near < 1e-9)
                 continue;   /* on an edge: the winding number is not one */
             for (size_t t = 0; t < nt; t++)
@@ -438,11 +441,6 @@ test_crossing_in_space(void **state)
                 for (size_t k = 0; k < n; k++)
                     near = fmin(near, seg_dist(q + 2 * k,
                                                q + 2 * ((k + 1) % n), x));
-                for (size_t t = 0; t < tris.n; t++)
-                    for (int e = 0; e < 3; e++) {
-                        tq[2 * e] = tris.p[9 * t + 3 * e];
-                        tq[2 * e + 1] = tris.p[9 * t + 3 * e + 1];
-                    }
                 for (size_t t = 0; t < tris.n; t++) {
                     for (int e = 0; e < 3; e++) {
                         tq[2 * e] = tris.p[9 * t + 3 * e];

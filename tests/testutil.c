@@ -128,6 +128,38 @@ tu_alloc_live(void)
     return live_blocks;
 }
 
+long
+tu_fail_loop(const char *name, tu_alloc_op op, bool takes_diag)
+{
+    long k;
+    for (k = 1; k < 200000; k++) {
+        cf_diag_t diag;
+        cf_status_t st;
+        long live;
+        cf_diag_clear(&diag);
+        tu_fail_alloc_after(k);
+        st = op(&diag);
+        live = tu_alloc_live();
+        tu_fail_alloc_reset();
+        if (live != 0)
+            fail_msg("%s: %ld blocks leaked with allocation %ld failing "
+                     "(status %s)", name, live, k, cf_status_to_string(st));
+        if (st == CF_STATUS_OK)
+            break;
+        if (st != CF_STATUS_NO_MEMORY)
+            fail_msg("%s: allocation %ld failing gave %s (%s), not "
+                     "NO_MEMORY", name, k, cf_status_to_string(st),
+                     diag.msg);
+        if (takes_diag && (diag.status != CF_STATUS_NO_MEMORY ||
+                           diag.msg[0] == '\0'))
+            fail_msg("%s: allocation %ld failing: the diag says %d \"%s\"",
+                     name, k, (int)diag.status, diag.msg);
+    }
+    assert_true(k < 200000);
+    print_message("%-28s %4ld allocation failure points\n", name, k - 1);
+    return k - 1;
+}
+
 static int
 by_name(const void *a, const void *b)
 {

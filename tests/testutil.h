@@ -9,6 +9,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "curvefig/core.h"
+
 /* splitmix64, the generator of docs/benchmarks.md. */
 typedef struct tu_rng {
     uint64_t state;
@@ -39,6 +41,16 @@ double tu_max_diff(const double *a, const double *b, size_t n);
 void tu_fail_alloc_after(long k);
 void tu_fail_alloc_reset(void);
 long tu_alloc_live(void);
+
+/*
+** Run op with the k-th allocation failing for k = 1, 2, ... until it
+** succeeds; returns the number of failure points (k - 1) and prints it.
+** Every failing run must return CF_STATUS_NO_MEMORY and leave no block
+** live; takes_diag: op passes its diag to the library, whose status and
+** message must then say so.  Needs the core (cf_diag_t, statuses).
+*/
+typedef cf_status_t (*tu_alloc_op)(cf_diag_t *diag);
+long tu_fail_loop(const char *name, tu_alloc_op op, bool takes_diag);
 
 /* The names of the figure scripts (*.lua) in dir, sorted, strdup'd into
 ** names (at most max); their number. */

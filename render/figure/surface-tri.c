@@ -22,16 +22,18 @@ homogeneous_points(const cf_bezier_triangle_t *t, size_t *hd)
 {
     size_t n = cf_bezier_triangle_count(t);
     bool rat = cf_bezier_triangle_is_rational(t);
-    double *p = cf_alloc_array(n * 4, sizeof *p), *w;
+    double *p = cf_alloc_array(n * 5, sizeof *p), *w;
     if (p == NULL)
         return NULL;
     *hd = rat ? 4 : 3;
     cf_bezier_triangle_get_points(t, p);
     if (!rat)
         return p;
-    w = p + 3 * n;
+    /* the weights after the 4 n doubles of the result, which the spread
+    ** never reaches; the points spread from the back, so point i (at 3 i)
+    ** is read before the points after it are written (at 4 j > 3 i + 2) */
+    w = p + 4 * n;
     cf_bezier_triangle_get_weights(t, w);
-    /* spread from the back so nothing is overwritten before it is read */
     for (size_t i = n; i-- > 0;) {
         double wi = w[i], x[3] = { p[3 * i], p[3 * i + 1], p[3 * i + 2] };
         for (int k = 0; k < 3; k++)

@@ -24,6 +24,8 @@ lmax(ld a, ld b)
 
 /* Samples of each piece for the starting points of Newton. */
 #define GRID 6
+/* Tensor pieces (and triangles) up to this degree are subdivided. */
+#define SUB_DEG 8
 
 typedef struct rc_patch {
     bool tri;
@@ -175,21 +177,78 @@ rc_add_bspline(rc_scene_t *rc, const cf_bspline_surface_t *s)
     return ok;
 }
 
+/*
+** A triangle of degree n as a tensor patch of degrees (n, n) that folds
+** its edge s = 1 into the corner b_n00: u = s, v = (1 - s) t, w = (1 - s)
+** (1 - t).  Then u^i v^j w^k = s^i (1 - s)^(n - i) t^j (1 - t)^(n - i - j)
+** and the trinomial coefficient is C(n, i) C(n - i, j), so
+**     T = sum_i B^n_i(s) sum_j b_(i, j, n - i - j) B^(n - i)_j(t):
+** row i of the net is the curve in t of degree n - i whose points are
+** b_(i, j, n - i - j), elevated to degree n; homogeneous, so a rational
+** patch stays exact.  h: the triangle's homogeneous points in its order
+** (b_ijk at r (r + 1) / 2 + (r - j), r = n - i); net: (n + 1)^2 points.
+*/
+static void
+triangle_as_tensor(const ld *h, int n, ld *net)
+{
+    for (int i = 0; i <= n; i++) {
+        ld *row = net + 4 * (size_t)i * (size_t)(n + 1);
+        int r = n - i;
+        for (int j = 0; j <= r; j++)
+            memcpy(row + 4 * j, h + 4 * (r * (r + 1) / 2 + (r - j)),
+                   4 * sizeof *row);
+        for (int d = r; d < n; d++)       /* degree d -> d + 1 */
+            for (int j = d + 1; j >= 0; j--)
+                for (int c = 0; c < 4; c++) {
+                    ld a = j > 0 ? row[4 * (j - 1) + c] : 0.0L,
+                       b = j <= d ? row[4 * j + c] : 0.0L;
+                    row[4 * j + c] = ((ld)j * a + (ld)(d + 1 - j) * b)
+                                     / (ld)(d + 1);
+                }
+    }
+}
+
+/*
+** Up to degree SUB_DEG a triangle is added as that tensor patch, which
+** the subdivision finds robustly where the line of sight grazes it (near
+** a fold Newton's starts miss the hits); above, as a triangle (Newton).
+*/
 bool
 rc_add_triangle(rc_scene_t *rc, const cf_bezier_triangle_t *t)
 {
     int n = cf_bezier_triangle_degree(t);
-    size_t cnt = count(true, n, n);
-    double *pts = malloc(cnt * 4 * sizeof(double));
+    size_t cnt = count(true, n, n), tcnt = count(false, n, n);
+    double *pts = malloc((cnt + tcnt) * 4 * sizeof(double));
+    ld *h = malloc((cnt + tcnt) * 4 * sizeof(ld));
     bool ok;
-    if (pts == NULL || cf_bezier_triangle_dim(t) != 3) {
+    if (pts == NULL || h == NULL || cf_bezier_triangle_dim(t) != 3) {
         free(pts);
+        free(h);
         return false;
     }
     cf_bezier_triangle_get_points(t, pts);
     cf_bezier_triangle_get_weights(t, pts + 3 * cnt);
-    ok = add(rc, true, n, n, pts, pts + 3 * cnt);
+    if (n > SUB_DEG) {
+        ok = add(rc, true, n, n, pts, pts + 3 * cnt);
+    } else {
+        ld *net = h + 4 * cnt;
+        for (size_t i = 0; i < cnt; i++) {
+            for (int c = 0; c < 3; c++)
+                h[4 * i + c] = (ld)pts[3 * i + c] * (ld)pts[3 * cnt + i];
+            h[4 * i + 3] = pts[3 * cnt + i];
+        }
+        triangle_as_tensor(h, n, net);
+        /* back to points and weights, as add takes them (rounded to
+        ** doubles: 1e-16 of the coordinates, far below what is asked) */
+        for (size_t i = 0; i < tcnt; i++) {
+            for (int c = 0; c < 3; c++)
+                pts[3 * i + c] = (double)(net[4 * i + c] / net[4 * i + 3]);
+            pts[3 * tcnt + i] = (double)net[4 * i + 3];
+        }
+        ok = add(rc, false, n, n, pts, pts + 3 * tcnt);
+    }
     free(pts);
+    free(h);
     return ok;
 }
 
@@ -362,7 +421,6 @@ newton(const rc_patch_t *p, const double *o, const ld *e, ld u, ld v, ld s,
 /* Subdivision of tensor pieces (degrees up to SUB_DEG): halve the net
 ** until its box, crossed by the line of sight beyond the margin, is
 ** smaller than SUB_MIN of the piece. */
-#define SUB_DEG 8
 #define SUB_MIN 1e-6L
 
 typedef struct ray {

@@ -1,7 +1,7 @@
 /*
 ** Allocation failure across the library: for representative operations of
 ** every module, the k-th allocation from the start of the operation fails
-** (tests/testutil.h, tu_fail_alloc_after), for k = 1, 2, ... until the
+** (tests/testutil.h, tu_fail_loop), for k = 1, 2, ... until the
 ** operation succeeds.  Every failing run must return CF_STATUS_NO_MEMORY
 ** (with the diag saying so, when the function takes one), leave no output
 ** object behind and leak nothing (tu_alloc_live() == 0; ASan and valgrind
@@ -39,42 +39,13 @@ static const double W5[] = { 1, 2, 0.5, 1.5, 1 };
 
 typedef cf_status_t (*op_fn)(cf_diag_t *diag);
 
-/*
-** Run op with the k-th allocation failing for k = 1, 2, ... until it
-** succeeds; returns the number of failure points.  takes_diag: whether op
-** passes its diag to the library (then the message must be filled).
-*/
+/* tu_fail_loop, counted into total_points. */
 static long
 fail_loop(const char *name, op_fn op, bool takes_diag)
 {
-    long k;
-    for (k = 1; k < 200000; k++) {
-        cf_diag_t diag;
-        cf_status_t st;
-        long live;
-        cf_diag_clear(&diag);
-        tu_fail_alloc_after(k);
-        st = op(&diag);
-        live = tu_alloc_live();
-        tu_fail_alloc_reset();
-        if (live != 0)
-            fail_msg("%s: %ld blocks leaked with allocation %ld failing "
-                     "(status %s)", name, live, k, cf_status_to_string(st));
-        if (st == CF_STATUS_OK)
-            break;
-        if (st != CF_STATUS_NO_MEMORY)
-            fail_msg("%s: allocation %ld failing gave %s (%s), not "
-                     "NO_MEMORY", name, k, cf_status_to_string(st),
-                     diag.msg);
-        if (takes_diag && (diag.status != CF_STATUS_NO_MEMORY ||
-                           diag.msg[0] == '\0'))
-            fail_msg("%s: allocation %ld failing: the diag says %d \"%s\"",
-                     name, k, (int)diag.status, diag.msg);
-    }
-    assert_true(k < 200000);
-    total_points += k - 1;
-    print_message("%-28s %4ld allocation failure points\n", name, k - 1);
-    return k - 1;
+    long points = tu_fail_loop(name, op, takes_diag);
+    total_points += points;
+    return points;
 }
 
 /* ---- core curves -------------------------------------------------------- */

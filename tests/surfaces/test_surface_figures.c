@@ -233,7 +233,7 @@ check_figure(const char *script, const char *name, cf_figure_t *fig,
     cf_view_t view;
     probe_t p;
     double win[4], sx, sy, tol, vtol, extent, worst_off = 0;
-    size_t bad = 0;
+    size_t bad = 0, on_surfaces = 0;
     enum { K = 4 };
     memset(&p, 0, sizeof p);
     if (!cf_figure_get_view(fig, &view))
@@ -258,6 +258,7 @@ check_figure(const char *script, const char *name, cf_figure_t *fig,
                      "%g (of the extent) off its surface", script, name,
                      pc->family, pc->t0, pc->t1, pc->el, off);
         worst_off = fmax(worst_off, off);
+        on_surfaces += pc->uv != NULL && !(pc->offset > 0);
         assert_int_equal(cf_bezier_eval(pc->bez, pc->t0, a), 0);
         assert_int_equal(cf_bezier_eval(pc->bez, pc->t1, b), 0);
         for (int k = 0; k < K && p.occluders > 0; k++) {
@@ -299,8 +300,8 @@ check_figure(const char *script, const char *name, cf_figure_t *fig,
     }
     free(p.pieces);
     rc_destroy(p.rc);
-    print_message("%s %s: lines on surfaces within %.2g of the extent\n",
-                  script, name, worst_off);
+    print_message("%s %s: %zu pieces on surfaces, within %.2g of the "
+                  "extent\n", script, name, on_surfaces, worst_off);
     return bad;
 }
 
@@ -314,13 +315,22 @@ check_dir(const char *dir, size_t *checked, size_t *bad, size_t *figures)
     for (size_t i = 0; i < n; i++) {
         cf_script_t *sc = run_in(dir, names[i]);
         for (size_t f = 0; f < cf_script_figure_count(sc); f++) {
-            size_t before = *checked, b;
-            b = check_figure(names[i], cf_script_figure_name(sc, f),
-                             cf_script_figure(sc, f), checked);
-            print_message("%s: %zu of %zu samples disagree\n",
-                          cf_script_figure_name(sc, f), b, *checked - before);
-            *bad += b;
-            (*figures)++;
+            cf_figure_t *fig = cf_script_figure(sc, f);
+            /* the figure, then each of its panels (model.h), which keep
+            ** their own view and elements */
+            int np = fig->panels != NULL ? fig->rows * fig->cols : 0;
+            for (int k = -1; k < np; k++) {
+                size_t before = *checked, b;
+                b = check_figure(names[i], cf_script_figure_name(sc, f),
+                                 k < 0 ? fig : fig->panels[k], checked);
+                print_message("%s%s%c: %zu of %zu samples disagree\n",
+                              cf_script_figure_name(sc, f),
+                              k < 0 ? "" : ", panel ",
+                              k < 0 ? ' ' : (char)('a' + k), b,
+                              *checked - before);
+                *bad += b;
+                (*figures)++;
+            }
         }
         cf_script_destroy(sc);
         free(names[i]);

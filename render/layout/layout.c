@@ -65,8 +65,11 @@ ink_of(cf_figure_t *fig, const cf__layout_t *lay, bool draft, double ink[4])
         st = cf__insets_draw(fig, lay, &dl);
     if (st == CF_STATUS_OK)
         st = cf__legend_draw(fig, lay, 0, &dl);
-    if (st == CF_STATUS_OK)
-        cf__dl_ink(&dl, 0, dl.count, ink);
+    /* a list cut short by a failed allocation, or a measure that ran out,
+    ** would give a smaller box and a layout silently too large */
+    if (st == CF_STATUS_OK
+        && (dl.failed || cf__dl_ink(&dl, 0, dl.count, ink) != 0))
+        st = cf__fig_nomem(fig, "measuring the drawing's ink");
     cf__dl_free(&dl);
     return st;
 }

@@ -132,7 +132,7 @@ draw_sample(const sample_t *s, double x, double y, double h, cf__dl_t *dl)
 /* ---- the box ------------------------------------------------------------ */
 
 /* The height of sample s's marker as drawn (a star reaches past its
-** size), 0 without one. */
+** size), 0 without one; -1 out of memory. */
 static double
 marker_height(const sample_t *s)
 {
@@ -146,8 +146,9 @@ marker_height(const sample_t *s)
     m.has_dir = false;
     cf__dl_init(&dl);
     cf__dl_marker(&dl, &m);
-    if (!dl.failed && cf__dl_ink(&dl, 0, dl.count, ink) == 0
-        && ink[3] > ink[1])
+    if (dl.failed || cf__dl_ink(&dl, 0, dl.count, ink) != 0)
+        hgt = -1;
+    else if (ink[3] > ink[1])
         hgt = 2 * fmax(-ink[1], ink[3]);
     cf__dl_free(&dl);
     return hgt;
@@ -166,7 +167,7 @@ measure(cf_figure_t *fig, const cf_style_t *ls, const sample_t *samples,
     for (i = 0; i < fig->nlegend; i++) {
         const cf__element_t *el = fig->els[fig->legend[i].el];
         cf_style_t es;
-        double ink[4], rh;
+        double ink[4], rh, mh;
         if (cf__text_ensure(fig, &fig->legend[i].text, ls->font_size)
             != CF_STATUS_OK)
             return fig->err.status;
@@ -177,7 +178,10 @@ measure(cf_figure_t *fig, const cf_style_t *ls, const sample_t *samples,
         cf__style_resolve(&fig->theme, el->role, &el->style, &es);
         if (es.marker != CF_MARKER_NONE && es.marker_size > rh)
             rh = es.marker_size;
-        rh = fmax(rh, marker_height(&samples[i]));
+        mh = marker_height(&samples[i]);
+        if (mh < 0)
+            return cf__fig_nomem(fig, "measuring a legend's marker");
+        rh = fmax(rh, mh);
         if (rows != NULL)
             rows[i] = rh;
         *h += rh + (i > 0 ? LEG_ROW : 0);

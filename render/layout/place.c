@@ -244,15 +244,18 @@ warn(cf_figure_t *fig, const char *fmt, ...)
     cf__figure_warn(fig, "%s", line);
 }
 
-/* The element of the page's ink most under label `lab` (drawn in r->one):
-** its index, or fig->count when none is found alone. */
-static size_t
+/* The element of the page's ink most under label `lab` (drawn in r->one)
+** into *worst: its index, or fig->count when none is found alone.  Out of
+** memory drawing one, the figure's error (no warning naming the wrong
+** element). */
+static cf_status_t
 what_is_under(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
               size_t lab, bool automatic, const unsigned char *mask,
-              const int *px)
+              const int *px, size_t *worst)
 {
-    size_t j, worst = fig->count;
+    size_t j;
     long most = 0;
+    *worst = fig->count;
     for (j = 0; j < fig->count; j++) {
         double x, y;
         cf__text_t *t;
@@ -269,15 +272,15 @@ what_is_under(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
         /* only the label's box px is compared */
         cf__raster_clear(&r->one, px);
         if (raster_element(fig, j, lay, r, &r->one, px) != CF_STATUS_OK)
-            return fig->count;
+            return fig->err.status;
         /* the mask is empty outside the label's box px */
         n = cf__place_common(&r->one, mask, px);
         if (n > most) {
             most = n;
-            worst = j;
+            *worst = j;
         }
     }
-    return worst;
+    return CF_STATUS_OK;
 }
 
 static const char *const place_names[] = {
@@ -332,9 +335,10 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
             size_t at = (size_t)row * (size_t)r->one.stride + (size_t)i0;
             memcpy(r->mask + at, r->one.px + at, (size_t)(i1 - i0));
         }
-        j = what_is_under(fig, lay, r, i, automatic, r->mask, px);
+        st = what_is_under(fig, lay, r, i, automatic, r->mask, px, &j);
         /* what_is_under drew the other elements into r->dl */
-        st = element_ops(fig, i, lay, r);
+        if (st == CF_STATUS_OK)
+            st = element_ops(fig, i, lay, r);
         if (st != CF_STATUS_OK)
             return st;
         /* the script's lines of the label and of what it lies on */
@@ -363,18 +367,22 @@ cf__place_forget(cf_figure_t *fig)
 /* The pixel box of raster r that the placement reads (every candidate
 ** box of the automatic labels in the window out to AUTO_NEAR, and unless
 ** a draft the box of each label placed by hand, as check_label takes it,
-** a pixel more each way) into px; false when there is none.  When no
-** label is placed automatically (and not a draft), the rows of that box
-** which the labels placed by hand read, in the window or not, are marked
-** in r->rows (where there is one: else, and with automatic labels, it is
-** dropped). */
+** a pixel more each way) into px; false when there is none, or out of
+** memory (the figure's error).  When no label is placed automatically
+** (and not a draft), the rows of that box which the labels placed by
+** hand read, in the window or not, are marked in r->rows (with automatic
+** labels it is dropped). */
 static bool
 read_box(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r, int px[4])
 {
     double b[4] = { INFINITY, INFINITY, -INFINITY, -INFINITY };
     size_t i, d, k;
-    if (!r->draft)
-        r->rows = cf_calloc((size_t)r->img.h, 1);
+    /* out of memory it is the placement's error, as every other refusal
+    ** of the rendering (none is passed over: cf_script_budget_end) */
+    if (!r->draft && (r->rows = cf_calloc((size_t)r->img.h, 1)) == NULL) {
+        cf__fig_nomem(fig, "placing labels");
+        return false;
+    }
     for (i = 0; i < fig->count; i++) {
         double x, y, ax, ay, ink[4], hb[4];
         cf__text_t *t;

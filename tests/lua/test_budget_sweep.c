@@ -28,6 +28,12 @@
 
 static FILE *sink;
 
+/* The formats each figure is rendered to (the command line may change
+** them), and the steps of a sweep. */
+static cf_format_t formats[CF_FORMAT_LAST_] = { CF_FORMAT_SVG,
+                                               CF_FORMAT_PDF };
+static size_t nformats = 2;
+
 /* Runs path with the budget and renders its figures; OK, or the status
 ** with the message in msg. */
 static cf_status_t
@@ -49,9 +55,7 @@ run(const char *path, size_t budget, char *msg, size_t size)
         snprintf(msg, size, "%s", cf_script_error(s));
     for (size_t i = 0; st == CF_STATUS_OK && i < cf_script_figure_count(s);
          i++) {
-        static const cf_format_t formats[] = { CF_FORMAT_SVG,
-                                               CF_FORMAT_PDF };
-        for (size_t k = 0; st == CF_STATUS_OK && k < 2; k++) {
+        for (size_t k = 0; st == CF_STATUS_OK && k < nformats; k++) {
             cf_script_scope_t scope;
             unsigned char *data = NULL;
             size_t n = 0;
@@ -82,14 +86,14 @@ out_of_memory(const char *msg)
     return strstr(msg, "memory limit") != NULL;
 }
 
+/* path: a script; name: how to call it (under the source tree) */
 static void
-sweep(const char *name, int steps)
+sweep_file(const char *path, const char *name, int steps)
 {
-    char path[1024], msg[1024];
+    char msg[1024];
     size_t lo = 16 << 10, hi = 1 << 20;
     long failed = 0;
     clock_t t0 = clock();
-    snprintf(path, sizeof path, "%s/%s", CF_SOURCE_ROOT, name);
     /* a budget that runs it, then the smallest (to 4 KiB) */
     while (run(path, hi, msg, sizeof msg) != CF_STATUS_OK) {
         if (!out_of_memory(msg))
@@ -118,6 +122,27 @@ sweep(const char *name, int steps)
                   "ran out (%.1f s)\n", name, hi, failed, steps,
                   (double)(clock() - t0) / CLOCKS_PER_SEC);
     assert_true(failed >= steps / 2);
+}
+
+/* A script of the source tree. */
+static void
+sweep(const char *name, int steps)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", CF_SOURCE_ROOT, name);
+    sweep_file(path, name, steps);
+}
+
+/* The scripts of the command line (see main). */
+static char **given;
+static int ngiven, given_steps = 200;
+
+static void
+test_given_scripts(void **state)
+{
+    (void)state;
+    for (int i = 0; i < ngiven; i++)
+        sweep_file(given[i], given[i], given_steps);
 }
 
 static void
@@ -160,12 +185,46 @@ teardown(void **state)
     return 0;
 }
 
+/*
+** test_budget_sweep [--steps N] [--formats svg,pdf,ps,eps,png,pgf]
+**                   [SCRIPT ...]
+** Without scripts, the ten of the tests above; with scripts, those.
+*/
 int
-main(void)
+main(int argc, char **argv)
 {
+    static const char *const names[] = { "svg", "pdf", "ps", "eps", "png",
+                                          "pgf" };
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_surface_scripts),
         cmocka_unit_test(test_layout_scripts),
     };
-    return cmocka_run_group_tests(tests, setup, teardown);
+    const struct CMUnitTest mine[] = {
+        cmocka_unit_test(test_given_scripts),
+    };
+    int i = 1;
+    for (; i + 1 < argc && argv[i][0] == '-'; i += 2) {
+        if (strcmp(argv[i], "--steps") == 0) {
+            given_steps = atoi(argv[i + 1]);
+        } else if (strcmp(argv[i], "--formats") == 0) {
+            char *list = argv[i + 1], *f;
+            nformats = 0;
+            for (f = strtok(list, ","); f != NULL; f = strtok(NULL, ","))
+                for (size_t k = 0; k < CF_FORMAT_LAST_; k++)
+                    if (strcmp(f, names[k]) == 0
+                        && nformats < CF_FORMAT_LAST_)
+                        formats[nformats++] = (cf_format_t)k;
+        } else {
+            break;
+        }
+    }
+    if (given_steps < 1 || nformats == 0) {
+        fprintf(stderr, "usage: %s [--steps N] [--formats svg,pdf,ps,eps,"
+                "png,pgf] [SCRIPT ...]\n", argv[0]);
+        return 2;
+    }
+    given = argv + i;
+    ngiven = argc - i;
+    return ngiven > 0 ? cmocka_run_group_tests(mine, setup, teardown)
+                      : cmocka_run_group_tests(tests, setup, teardown);
 }

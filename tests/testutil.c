@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include <dirent.h>
 
@@ -79,6 +80,8 @@ tu_max_diff(const double *a, const double *b, size_t n)
 
 static long fail_after = -1;
 static long live_blocks = 0;
+static bool fail_once;      /* only the fail_after-th fails, not the rest */
+static bool failed_once;    /* ... and it has */
 
 static void *
 failing_realloc(void *ud, void *ptr, size_t old_size, size_t new_size)
@@ -94,7 +97,10 @@ failing_realloc(void *ud, void *ptr, size_t old_size, size_t new_size)
     if (fail_after > 0) {
         fail_after--;
         if (fail_after == 0) {
-            fail_after = 0;
+            if (fail_once) {
+                fail_after = -1;
+                failed_once = true;
+            }
             return NULL;
         }
     } else if (fail_after == 0) {
@@ -111,14 +117,29 @@ tu_fail_alloc_after(long k)
 {
     cf_allocator_t a = { failing_realloc, NULL };
     fail_after = k;
+    fail_once = failed_once = false;
     live_blocks = 0;
     cf_set_allocator(&a);
+}
+
+void
+tu_fail_alloc_once(long k)
+{
+    tu_fail_alloc_after(k);
+    fail_once = true;
+}
+
+bool
+tu_alloc_failed_once(void)
+{
+    return failed_once;
 }
 
 void
 tu_fail_alloc_reset(void)
 {
     fail_after = -1;
+    fail_once = false;
     cf_set_allocator(NULL);
 }
 
@@ -128,22 +149,32 @@ tu_alloc_live(void)
     return live_blocks;
 }
 
-long
-tu_fail_loop(const char *name, tu_alloc_op op, bool takes_diag)
+/* One allocation failing (once) or every one from the k-th (!once). */
+static long
+fail_loop(const char *name, tu_alloc_op op, bool takes_diag, bool once)
 {
     long k;
+    clock_t t0 = clock();
     for (k = 1; k < 200000; k++) {
         cf_diag_t diag;
         cf_status_t st;
         long live;
+        bool hit;
         cf_diag_clear(&diag);
-        tu_fail_alloc_after(k);
+        if (once)
+            tu_fail_alloc_once(k);
+        else
+            tu_fail_alloc_after(k);
         st = op(&diag);
         live = tu_alloc_live();
+        hit = tu_alloc_failed_once();
         tu_fail_alloc_reset();
         if (live != 0)
             fail_msg("%s: %ld blocks leaked with allocation %ld failing "
                      "(status %s)", name, live, k, cf_status_to_string(st));
+        if (once && st == CF_STATUS_OK && hit)
+            fail_msg("%s: allocation %ld alone failed, and the operation "
+                     "succeeded all the same", name, k);
         if (st == CF_STATUS_OK)
             break;
         if (st != CF_STATUS_NO_MEMORY)
@@ -156,8 +187,22 @@ tu_fail_loop(const char *name, tu_alloc_op op, bool takes_diag)
                      name, k, (int)diag.status, diag.msg);
     }
     assert_true(k < 200000);
-    print_message("%-28s %4ld allocation failure points\n", name, k - 1);
+    print_message("%-28s %4ld allocation failure points%s (%.1f s)\n", name,
+                  k - 1, once ? ", each alone" : "",
+                  (double)(clock() - t0) / CLOCKS_PER_SEC);
     return k - 1;
+}
+
+long
+tu_fail_loop(const char *name, tu_alloc_op op, bool takes_diag)
+{
+    return fail_loop(name, op, takes_diag, false);
+}
+
+long
+tu_fail_once_loop(const char *name, tu_alloc_op op, bool takes_diag)
+{
+    return fail_loop(name, op, takes_diag, true);
 }
 
 static int

@@ -41,6 +41,10 @@ double tu_max_diff(const double *a, const double *b, size_t n);
 void tu_fail_alloc_after(long k);
 void tu_fail_alloc_reset(void);
 long tu_alloc_live(void);
+/* Only the k-th allocation fails, the later ones succeed; whether it has
+** failed yet. */
+void tu_fail_alloc_once(long k);
+bool tu_alloc_failed_once(void);
 
 /*
 ** Run op with the k-th allocation failing for k = 1, 2, ... until it
@@ -51,6 +55,10 @@ long tu_alloc_live(void);
 */
 typedef cf_status_t (*tu_alloc_op)(cf_diag_t *diag);
 long tu_fail_loop(const char *name, tu_alloc_op op, bool takes_diag);
+/* The same with only the k-th allocation failing and the later ones
+** granted: an operation that met its failure must not succeed (a failure
+** passed over is a result computed without what it needed). */
+long tu_fail_once_loop(const char *name, tu_alloc_op op, bool takes_diag);
 
 /* The names of the figure scripts (*.lua) in dir, sorted, strdup'd into
 ** names (at most max); their number. */

@@ -225,8 +225,18 @@ same_bspline(const cf_bspline_t *x, const cf__curve_info_t *y, double tol)
 /* y a subdivision of x (Béziers of one degree): y starts where x starts
 ** and its second point on x's first leg gives t (or it ends where x ends
 ** and its last but one point on x's last leg gives t). */
+/* A construction the finder could not try for want of memory: the
+** description would leave out what it is; d->nomem makes it an error. */
 static bool
-find_split(const cf__describe_t *d, const cf__curve_info_t *x,
+ran_out(cf__describe_t *d, cf_status_t st)
+{
+    if (st == CF_STATUS_NO_MEMORY)
+        d->nomem = true;
+    return st != CF_STATUS_OK;
+}
+
+static bool
+find_split(cf__describe_t *d, const cf__curve_info_t *x,
            cf__curve_info_t *y)
 {
     size_t n = x->npts - 1;
@@ -245,8 +255,8 @@ find_split(const cf__describe_t *d, const cf__curve_info_t *x,
         t = unweight(beta, x->w[e], x->w[f]);
         if (side)
             t = 1 - t;
-        if (cf_bezier_split(x->bez, t, side ? NULL : &part,
-                            side ? &part : NULL, NULL) != CF_STATUS_OK)
+        if (ran_out(d, cf_bezier_split(x->bez, t, side ? NULL : &part,
+                                       side ? &part : NULL, NULL)))
             continue;
         same = same_bezier(part, y, d->tol);
         cf_bezier_destroy(part);
@@ -260,14 +270,14 @@ find_split(const cf__describe_t *d, const cf__curve_info_t *x,
 }
 
 static bool
-find_elevation(const cf__describe_t *d, const cf__curve_info_t *x,
+find_elevation(cf__describe_t *d, const cf__curve_info_t *x,
                cf__curve_info_t *y)
 {
     cf_bezier_t *up = NULL;
     bool same;
     if (y->degree <= x->degree
-        || cf_bezier_elevate(x->bez, y->degree - x->degree, &up, NULL)
-               != CF_STATUS_OK)
+        || ran_out(d, cf_bezier_elevate(x->bez, y->degree - x->degree,
+                                        &up, NULL)))
         return false;
     same = same_bezier(up, y, d->tol);
     cf_bezier_destroy(up);
@@ -279,7 +289,7 @@ find_elevation(const cf__describe_t *d, const cf__curve_info_t *x,
 /* y is x with knots inserted: x's knots a sub-multiset of y's, and x
 ** refined by the others is y. */
 static bool
-find_insertion(const cf__describe_t *d, const cf__curve_info_t *x,
+find_insertion(cf__describe_t *d, const cf__curve_info_t *x,
                cf__curve_info_t *y)
 {
     const double *kx = cf_bspline_knots(x->bs), *ky = cf_bspline_knots(y->bs);
@@ -301,7 +311,7 @@ find_insertion(const cf__describe_t *d, const cf__curve_info_t *x,
         j++;
     }
     if (i != nx || m != ny - nx
-        || cf_bspline_refine(x->bs, y->inserted, m, &r, NULL) != CF_STATUS_OK)
+        || ran_out(d, cf_bspline_refine(x->bs, y->inserted, m, &r, NULL)))
         return false;
     same = same_bspline(r, y, d->tol);
     cf_bspline_destroy(r);

@@ -53,6 +53,8 @@ typedef struct cf__describe {
     size_t nmarks;                 /* points drawn and labels */
     double eps;                    /* page-plane tolerance, data units */
     double tol;                    /* control point tolerance */
+    bool nomem;                    /* a relation could not be tried for
+                                      want of memory (describe-find.c) */
 } cf__describe_t;
 
 /* A description being written: the figure's curves, the language, the

@@ -694,7 +694,7 @@ describe_one(cf_figure_t *fig, const cf__desc_lang_t *L, bool summary,
         put_other_labels(&w);
     }
     infos_fini(&w.d);
-    return out->failed ? CF_STATUS_NO_MEMORY : CF_STATUS_OK;
+    return out->failed || w.d.nomem ? CF_STATUS_NO_MEMORY : CF_STATUS_OK;
 }
 
 cf_status_t

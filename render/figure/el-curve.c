@@ -52,6 +52,8 @@ curve_bounds(const cf__element_t *el, cf__bounds_t *b)
             if (cf_bezier_bbox(pc->bez, lo, hi) == CF_STATUS_OK) {
                 cf__bounds_add(b, lo[0], lo[1]);
                 cf__bounds_add(b, hi[0], hi[1]);
+            } else {
+                b->nomem = true;
             }
         } else {
             for (k = 0; k < 4; k++)

@@ -101,8 +101,10 @@ surface_bounds(const cf__element_t *el, cf__bounds_t *b)
             const cf_bezier_t *line = e->lines.items[i].bez;
             int deg = cf_bezier_degree(line);
             double *p = cf_alloc_array(3 * ((size_t)deg + 1), sizeof *p);
-            if (p == NULL)
-                continue;   /* no memory: the layout fails on drawing */
+            if (p == NULL) {
+                b->nomem = true;   /* the layout's error */
+                continue;
+            }
             cf_bezier_get_points(line, p);
             for (int k = 0; k <= deg; k++)
                 add_projected(e->fig, p + 3 * k, b);
@@ -110,11 +112,14 @@ surface_bounds(const cf__element_t *el, cf__bounds_t *b)
         }
     } else if (e->tri != NULL) {
         for (int i = 0; i < N; i++)
-            for (int j = 0; i + j < N; j++)
-                if (cf_bezier_triangle_eval(e->tri, (double)i / (N - 1),
-                                            (double)j / (N - 1), pts)
-                    == CF_STATUS_OK)
+            for (int j = 0; i + j < N; j++) {
+                cf_status_t st = cf_bezier_triangle_eval(
+                    e->tri, (double)i / (N - 1), (double)j / (N - 1), pts);
+                if (st == CF_STATUS_OK)
                     add_projected(e->fig, pts, b);
+                else if (st == CF_STATUS_NO_MEMORY)
+                    b->nomem = true;
+            }
     } else {
         cf_bspline_surface_domain(e->s, CF_DIR_U, &a, &c);
         for (int k = 0; k < N; k++)
@@ -122,10 +127,13 @@ surface_bounds(const cf__element_t *el, cf__bounds_t *b)
         cf_bspline_surface_domain(e->s, CF_DIR_V, &a, &c);
         for (int k = 0; k < N; k++)
             uv[N + k] = a + (c - a) * k / (N - 1);
-        if (cf_bspline_surface_eval_grid(e->s, uv, N, N, pts, NULL, NULL)
-            == CF_STATUS_OK)
+        cf_status_t st = cf_bspline_surface_eval_grid(e->s, uv, N, N, pts,
+                                                      NULL, NULL);
+        if (st == CF_STATUS_OK)
             for (size_t i = 0; i < (size_t)N * N; i++)
                 add_projected(e->fig, pts + 3 * i, b);
+        else if (st == CF_STATUS_NO_MEMORY)
+            b->nomem = true;
     }
     for (size_t i = 0; e->opt.net && i < e->ncpts; i++)
         add_projected(e->fig, e->cpts + 3 * i, b);

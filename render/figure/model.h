@@ -77,6 +77,8 @@ cf__clip_to_window(const cf__layout_t *l, double pad, cf__dl_t *dl)
 typedef struct cf__bounds {
     double x0, x1, y0, y1;
     bool any;
+    bool nomem;     /* an element's box could not be computed (out of
+                       memory): the layout's error, not a smaller box */
 } cf__bounds_t;
 
 static inline void

@@ -73,7 +73,8 @@ glyph_font(const font_t *f, double k, font_t *g)
 }
 
 /* The scale of the base glyph of cp (ink height *total at f's size) that
-** reaches at least need bp (1 when it does already). */
+** reaches at least need bp (1 when it does already); NAN when the fonts
+** failed (out of memory: the parser's error is set). */
 static double
 variant_scale(parser_t *p, const font_t *f, unsigned cp, double need,
               double *total)
@@ -83,8 +84,12 @@ variant_scale(parser_t *p, const font_t *f, unsigned cp, double need,
     double w, ink[4];
     font_t g;
     glyph_font(f, 1, &g);
-    if (!cf__label_measure(p->lab, &g, buf, n, &w, ink)
-        || !(ink[3] > ink[1])) {
+    if (!cf__label_measure(p->lab, &g, buf, n, &w, ink)) {
+        *total = 0;
+        cf__lp_nomem(p);
+        return NAN;
+    }
+    if (!(ink[3] > ink[1])) {
         *total = 0;
         return 1;
     }
@@ -130,6 +135,8 @@ delimiter(parser_t *p, const font_t *f, unsigned cp, double need, double x,
         return true;
     }
     k = variant_scale(p, f, cp, need, &total);
+    if (isnan(k))
+        return false;
     return put_glyph(p, f, cp, k, x, y, AXIS * f->size, w, ink);
 }
 
@@ -242,6 +249,8 @@ cf__label_sqrt(parser_t *p, const font_t *f, double x, double y,
         return false;
     k = variant_scale(p, f, 0x221a, rad.top + rad.bottom + gap + RULE * s,
                       &total);
+    if (isnan(k))
+        return false;
     if (k > 1)   /* the rule grows with the sign: k (total - rule) covers */
         k = (rad.top + rad.bottom + gap) / (total - RULE * s);
     total *= k;

@@ -111,12 +111,14 @@ double cf__label_put_text(cf_label_t *lab, const font_t *f, double x,
 ** the fonts failed (out of memory). */
 bool cf__label_runs_finish(cf_label_t *lab);
 /* TeX's italic correction of one slanted character in font f: how far
-** its ink reaches right of its advance width (0 when it does not). */
+** its ink reaches right of its advance width (0 when it does not); NAN
+** when the fonts failed (out of memory). */
 double cf__label_italic_correction(cf_label_t *lab, const font_t *f,
                                    const char *s, size_t n);
 
 /* The advance width and ink box (y down) of s[0..n) alone in font f,
-** without adding a run (false: no layout). */
+** without adding a run (false: no layout; for n < 16, the fonts failed,
+** out of memory). */
 bool cf__label_measure(cf_label_t *lab, const font_t *f, const char *s,
                        size_t n, double *width, double ink[4]);
 

@@ -98,6 +98,10 @@ emit_char(parser_t *p, const font_t *f, unsigned cp, bool italic, int cls,
     if (italic && !f->text && p->pos < p->len
         && strchr("^_()[]|/,;'0123456789", p->s[p->pos]) != NULL)
         pc->ic = cf__label_italic_correction(p->lab, &g, buf, n);
+    if (isnan(pc->ic)) {
+        cf__lp_nomem(p);
+        return false;
+    }
     {
         /* the nucleus' own ink: measured on the character alone */
         run_t *r = &p->lab->runs[pc->first];

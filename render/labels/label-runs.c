@@ -297,6 +297,6 @@ cf__label_italic_correction(cf_label_t *lab, const font_t *f, const char *s,
 {
     double w, ink[4];
     if (!cf__label_measure(lab, f, s, n, &w, ink))
-        return 0;
+        return NAN;   /* the fonts ran out of memory */
     return ink[2] > ink[0] ? fmax(0, ink[2] - w) : 0;
 }

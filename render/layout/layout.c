@@ -322,6 +322,8 @@ cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
     cf__place_forget(fig);
     for (i = 0; i < fig->count; i++)
         fig->els[i]->kind->bounds(fig->els[i], &b);
+    if (b.nomem)
+        return cf__fig_nomem(fig, "the drawing's bounds");
     lay->clip = fig->window_set;
     if (fig->window_set) {
         memcpy(win, fig->win, sizeof win);

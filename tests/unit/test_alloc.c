@@ -25,6 +25,7 @@
 #include "curvefig/curvefig.h"
 #include "testutil.h"
 #ifdef CF_TEST_RENDER
+#include "curvefig/access.h"
 #include "curvefig/figure.h"
 #include "script.h"
 #endif
@@ -44,6 +45,8 @@ static long
 fail_loop(const char *name, op_fn op, bool takes_diag)
 {
     long points = tu_fail_loop(name, op, takes_diag);
+    /* and each allocation failing alone: none passed over */
+    assert_int_equal(tu_fail_once_loop(name, op, takes_diag), points);
     total_points += points;
     return points;
 }
@@ -382,12 +385,58 @@ test_core_modules(void **state)
 }
 
 #ifdef CF_TEST_RENDER
+/* The automatic description of a figure whose curves are made from one
+** another (a split, an elevation, knot insertion): the relations are
+** found by making the curves again, which allocates. */
+static cf_status_t
+op_description(cf_diag_t *diag)
+{
+    cf_figure_t *fig = NULL;
+    cf_bezier_t *left = NULL, *up = NULL;
+    cf_bspline_t *more = NULL;
+    cf_style_t style;
+    char *text = NULL;
+    cf_status_t st = cf_bezier_split(bez, 0.4, &left, NULL, diag);
+    if (st == CF_STATUS_OK)
+        st = cf_bezier_elevate(bez, 1, &up, diag);
+    if (st == CF_STATUS_OK)
+        st = cf_bspline_insert_knot(bsp, 0.5, 1, &more, NULL, diag);
+    if (st == CF_STATUS_OK)
+        st = cf_figure_create(8, 6, CF_UNIT_CM, &fig, diag);
+    if (st == CF_STATUS_OK) {
+        cf_style_init(&style);
+        if (cf_figure_add_bezier(fig, bez, &style) != CF_STATUS_OK
+            || cf_figure_add_bezier(fig, left, &style) != CF_STATUS_OK
+            || cf_figure_add_bezier(fig, up, &style) != CF_STATUS_OK
+            || cf_figure_add_bspline(fig, bsp, 0, 1, &style) != CF_STATUS_OK
+            || cf_figure_add_bspline(fig, more, 0, 1, &style) != CF_STATUS_OK
+            || cf_figure_set_description(fig, "auto") != CF_STATUS_OK)
+            st = cf_figure_status(fig, diag);
+    }
+    if (st == CF_STATUS_OK && (st = cf_figure_description(fig, &text))
+                              != CF_STATUS_OK)
+        cf_figure_status(fig, diag);
+    if (st == CF_STATUS_OK) {   /* the three relations named */
+        assert_non_null(strstr(text, "curve 1 before t = 0.4"));
+        assert_non_null(strstr(text, "degree raised from 4 to 5"));
+        assert_non_null(strstr(text, "after knot insertion at u = 1/2"));
+    }
+    cf_free(text);
+    cf_figure_destroy(fig);
+    cf_bspline_destroy(more);
+    cf_bezier_destroy(up);
+    cf_bezier_destroy(left);
+    return st;
+}
+
 static void
 test_render_modules(void **state)
 {
     (void)state;
     assert_true(fail_loop("label_create", op_label, true) >= 1);
     assert_true(fail_loop("figure + render svg", op_figure, true) >= 4);
+    assert_true(fail_loop("automatic description", op_description, true)
+                >= 4);
     /* the script runner: every budget too small for the script */
     assert_true(script_budget_loop() >= 10);
 }

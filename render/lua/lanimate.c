@@ -17,6 +17,7 @@
 #include "anim-spec.h"
 #include "lanimate.h"
 #include "lcommon.h"
+#include "lpairs.h"
 #include "lcount.h"
 
 #define REGISTRY_KEY "curvefig.animate"
@@ -53,9 +54,11 @@ static void
 check_keys(lua_State *L, int idx, const char *what, const char *const *names,
            size_t n)
 {
-    lua_pushnil(L);
-    while (lua_next(L, idx) != 0) {
-        lua_pop(L, 1);
+    idx = lua_absindex(L, idx);
+    cf__lua_sorted_keys(L, idx);   /* the same key named at every run */
+    for (lua_Integer j = 1, m = (lua_Integer)lua_rawlen(L, -1); j <= m;
+         j++, lua_pop(L, 1)) {
+        lua_rawgeti(L, -1, j);
         if (lua_type(L, -1) == LUA_TSTRING) {
             const char *k = lua_tostring(L, -1);
             const char *near;
@@ -73,6 +76,7 @@ check_keys(lua_State *L, int idx, const char *what, const char *const *names,
                           what);
         }
     }
+    lua_pop(L, 1);
 }
 
 static double

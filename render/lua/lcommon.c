@@ -59,11 +59,16 @@ cf__lua_grow(void **ptr, size_t *cap, size_t need, size_t elem, size_t max)
 }
 
 /* A list takes no names: an entry of the table at idx whose key is not
-** one of 1..n is refused (one = true: the table is one point). */
+** one of 1..n is refused (one = true: the table is one point).  Of several
+** names the first in byte order is named, the same at every run (the
+** order of lua_next follows Lua's hash seed, new in every state). */
 static void
 refuse_names(lua_State *L, int idx, lua_Integer n, const char *fn,
              const char *what, bool one)
 {
+    const char *name = NULL;
+    size_t name_len = 0;
+    bool other = false;
     lua_pushnil(L);
     while (lua_next(L, idx) != 0) {
         lua_Integer k;
@@ -71,16 +76,29 @@ refuse_names(lua_State *L, int idx, lua_Integer n, const char *fn,
         k = lua_isinteger(L, -1) ? lua_tointeger(L, -1) : 0;
         if (k >= 1 && k <= n)
             continue;
-        if (lua_type(L, -1) == LUA_TSTRING)
-            luaL_error(L, "%s: %s%s%s has an entry named '%s'; %s", fn,
-                       one ? "" : "the ", what, one ? "" : " list",
-                       lua_tostring(L, -1),
-                       one ? "a point is {x, y, ...}"
-                           : "a list takes no names (options go in the "
-                             "table after it)");
+        if (lua_type(L, -1) == LUA_TSTRING) {
+            size_t len;
+            /* the key stays in the table: its text stays put */
+            const char *s = lua_tolstring(L, -1, &len);
+            int c = name == NULL ? -1
+                    : memcmp(s, name, len < name_len ? len : name_len);
+            if (name == NULL || c < 0 || (c == 0 && len < name_len)) {
+                name = s;
+                name_len = len;
+            }
+        } else {
+            other = true;
+        }
+    }
+    if (name != NULL)
+        luaL_error(L, "%s: %s%s%s has an entry named '%s'; %s", fn,
+                   one ? "" : "the ", what, one ? "" : " list", name,
+                   one ? "a point is {x, y, ...}"
+                       : "a list takes no names (options go in the "
+                         "table after it)");
+    if (other)
         luaL_error(L, "%s: %s%s%s has an entry outside 1..%d", fn,
                    one ? "" : "the ", what, one ? "" : " list", (int)n);
-    }
 }
 
 static size_t

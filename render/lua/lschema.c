@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "lcommon.h"
+#include "lpairs.h"
 #include "lcount.h"
 #include "lschema.h"
 
@@ -165,11 +166,18 @@ check_at(lua_State *L, int idx, cf__lua_keys_t id, const char *where)
         luaL_error(L, "%s: the %ss must be a table, got %s", where, s->noun,
                    luaL_typename(L, idx));
     luaL_checkstack(L, 8, "nested tables");
-    lua_pushnil(L);
-    while (lua_next(L, idx) != 0) {
+    /* in one order (lpairs.h): of two bad entries, the same is named at
+    ** every run */
+    cf__lua_sorted_keys(L, idx);
+    for (lua_Integer i = 1, n = (lua_Integer)lua_rawlen(L, -1); i <= n;
+         i++) {
+        lua_rawgeti(L, -1, i);
+        lua_pushvalue(L, -1);
+        lua_rawget(L, idx);
         check_entry(L, s, where, idx);
-        lua_pop(L, 1);
+        lua_pop(L, 2);
     }
+    lua_pop(L, 1);
 }
 
 void
@@ -180,15 +188,19 @@ cf__lua_check_table(lua_State *L, int idx, cf__lua_keys_t k)
 
 /* ---- missing names ------------------------------------------------------ */
 
-/* Gather the string keys of the table at idx into names (up to cap). */
+/* Gather the string keys of the table at idx into names (up to cap), in
+** one order (lpairs.h: the same candidates, and of equally near ones the
+** same suggestion, at every run); the sequence of keys stays pushed, as
+** the names' anchor. */
 static size_t
 table_names(lua_State *L, int idx, const char **names, size_t n, size_t cap)
 {
-    lua_pushnil(L);
-    while (lua_next(L, idx) != 0) {
-        lua_pop(L, 1);
-        if (lua_type(L, -1) == LUA_TSTRING && n < cap)
+    cf__lua_sorted_keys(L, idx);
+    for (lua_Integer i = 1, m = (lua_Integer)lua_rawlen(L, -1);
+         i <= m && n < cap; i++) {
+        if (lua_rawgeti(L, -1, i) == LUA_TSTRING)
             names[n++] = lua_tostring(L, -1);
+        lua_pop(L, 1);
     }
     return n;
 }

@@ -10,6 +10,7 @@
 #include "lbezier.h"
 #include "lbspline.h"
 #include "lcommon.h"
+#include "lpairs.h"
 #include "llabels.h"
 #include "lschema.h"
 #include "lstyle.h"
@@ -68,16 +69,18 @@ read_isolines(lua_State *L, int opts, cf_surface_lines_t *o)
         o->nv = (size_t)v[1];
         return;
     }
-    lua_pushnil(L);
-    while (lua_next(L, top)) {
-        const char *k = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2)
-                                                       : "";
+    cf__lua_sorted_keys(L, top);   /* the same entry named every run */
+    for (lua_Integer i = 1, m = (lua_Integer)lua_rawlen(L, -1); i <= m;
+         i++) {
+        int kt = lua_rawgeti(L, -1, i);
+        const char *k = kt == LUA_TSTRING ? lua_tostring(L, -1) : "";
         if (strcmp(k, "u") != 0 && strcmp(k, "v") != 0)
             cf__lua_error(L, "surface: isolines has an entry '%s'; give "
                           "{nu, nv} or {u = {...}, v = {...}}",
-                          lua_type(L, -2) == LUA_TSTRING ? k : "(a number)");
+                          kt == LUA_TSTRING ? k : "(a number)");
         lua_pop(L, 1);
     }
+    lua_pop(L, 1);
     if (cf__lua_field(L, top, "u") != LUA_TNIL)
         o->u_values = cf__lua_check_numbers(L, -1, "surface", "isolines.u",
                                             &o->u_count);

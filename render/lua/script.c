@@ -11,6 +11,7 @@
 #include <lualib.h>
 
 #include "lcount.h"
+#include "lpairs.h"
 #include "lfigure.h"
 #include "lschema.h"
 #include "ltheme.h"
@@ -155,6 +156,7 @@ open_sandbox(lua_State *L)
     remove_field(L, NULL, "require");
     remove_field(L, LUA_STRLIBNAME, "dump");
     cf__lua_open_counted(L);
+    cf__lua_open_pairs(L);
     wrap_global(L, "pcall", cf__script_safe_call);
     wrap_global(L, "xpcall", cf__script_safe_xpcall);
     wrap_global(L, "load", safe_load);

@@ -194,23 +194,34 @@ run(const cf_bezier_triangle_t *t, const double a[3], const double *d,
     return x;
 }
 
+/* Doubles of the evaluator's work kept on the stack: degree 10 in R^3,
+** rational (2 x 66 points of 4), and every lower degree or dimension. */
+#define POINT_STACK 528
+
 static cf_status_t
 point(const cf_bezier_triangle_t *t, double u, double v, double *out)
 {
-    double b[3], *work, *x;
+    double b[3], local[POINT_STACK], *work = local, *x;
+    size_t need;
     cf_status_t st;
     if (t == NULL || out == NULL)
         return CF_STATUS_INVALID_ARG;
     st = bary(u, v, b);
     if (st != CF_STATUS_OK)
         return st;
-    work = cf__alloc_array(2 * tri(t->n), t->hdim * sizeof *work);
-    if (work == NULL)
-        return CF_STATUS_NO_MEMORY;
+    /* no allocation for the patches figures draw: the evaluator is called
+    ** thousands of times a figure (bounds, the scheme, the facets) */
+    need = 2 * tri(t->n) * t->hdim;
+    if (need > POINT_STACK) {
+        work = cf__alloc_array(2 * tri(t->n), t->hdim * sizeof *work);
+        if (work == NULL)
+            return CF_STATUS_NO_MEMORY;
+    }
     x = run(t, b, b, 0, work);
     for (size_t c = 0; c < t->dim; c++)
         out[c] = x[c] / (t->rational ? x[t->dim] : 1.0);
-    cf__free(work);
+    if (work != local)
+        cf__free(work);
     return CF_STATUS_OK;
 }
 

@@ -180,6 +180,19 @@ op_triangle(cf_diag_t *diag)
         st = cf_bezier_triangle_elevate(sub[1], &e, diag);
     if (st == CF_STATUS_OK)
         st = cf_bezier_triangle_boundary(e, 2, &b, diag);
+    /* degree 11: past the evaluator's work on the stack (degree 10) */
+    for (int d = 4; st == CF_STATUS_OK && d < 11; d++) {
+        cf_bezier_triangle_t *up = NULL;
+        st = cf_bezier_triangle_elevate(e, &up, diag);
+        cf_bezier_triangle_destroy(e);
+        e = up;
+    }
+    if (st == CF_STATUS_OK) {
+        double p[3];
+        st = cf_bezier_triangle_eval(e, 0.2, 0.3, p);
+        if (st == CF_STATUS_NO_MEMORY)
+            cf_diag_set(diag, st, -1, "out of memory");
+    }
     cf_bezier_destroy(b);
     cf_bezier_triangle_destroy(e);
     for (size_t i = 0; i < 3; i++)

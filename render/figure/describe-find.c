@@ -222,9 +222,6 @@ same_bspline(const cf_bspline_t *x, const cf__curve_info_t *y, double tol)
         && same_points(wx, y->w, n, 1e-9);
 }
 
-/* y a subdivision of x (Béziers of one degree): y starts where x starts
-** and its second point on x's first leg gives t (or it ends where x ends
-** and its last but one point on x's last leg gives t). */
 /* A construction the finder could not try for want of memory: the
 ** description would leave out what it is; d->nomem makes it an error. */
 static bool
@@ -235,6 +232,9 @@ ran_out(cf__describe_t *d, cf_status_t st)
     return st != CF_STATUS_OK;
 }
 
+/* y a subdivision of x (Béziers of one degree): y starts where x starts
+** and its second point on x's first leg gives t (or it ends where x ends
+** and its last but one point on x's last leg gives t). */
 static bool
 find_split(cf__describe_t *d, const cf__curve_info_t *x,
            cf__curve_info_t *y)

@@ -66,7 +66,8 @@ ink_of(cf_figure_t *fig, const cf__layout_t *lay, bool draft, double ink[4])
     if (st == CF_STATUS_OK)
         st = cf__legend_draw(fig, lay, 0, &dl);
     /* a list cut short by a failed allocation, or a measure that ran out,
-    ** would give a smaller box and a layout silently too large */
+    ** would give the box of part of the drawing, and a layout fitted to
+    ** it */
     if (st == CF_STATUS_OK
         && (dl.failed || cf__dl_ink(&dl, 0, dl.count, ink) != 0))
         st = cf__fig_nomem(fig, "measuring the drawing's ink");

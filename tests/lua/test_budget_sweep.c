@@ -169,12 +169,12 @@ static void
 test_surface_scripts(void **state)
 {
     (void)state;
-    sweep("figures/surfaces/triangle.lua", 200);
-    sweep("figures/surfaces/rational.lua", 200);
-    sweep("figures/surfaces/knot-insertion.lua", 200);
-    sweep("tests/surfaces/scenes/rational-triangles.lua", 200);
-    sweep("tests/surfaces/scenes/space-lines.lua", 200);
-    sweep("tests/lua/budget_regions.lua", 200);
+    sweep("figures/surfaces/triangle.lua", 100);
+    sweep("figures/surfaces/rational.lua", 100);
+    sweep("figures/surfaces/knot-insertion.lua", 100);
+    sweep("tests/surfaces/scenes/rational-triangles.lua", 100);
+    sweep("tests/surfaces/scenes/space-lines.lua", 100);
+    sweep("tests/lua/budget_regions.lua", 100);
 }
 
 /* The curve half's figures with what the layout adds: a legend, insets,
@@ -183,10 +183,10 @@ static void
 test_layout_scripts(void **state)
 {
     (void)state;
-    sweep("figures/examples/legend.lua", 200);
-    sweep("figures/examples/inset.lua", 200);
-    sweep("figures/examples/panels.lua", 200);
-    sweep("figures/markova-2.17.lua", 200);
+    sweep("figures/examples/legend.lua", 100);
+    sweep("figures/examples/inset.lua", 100);
+    sweep("figures/examples/panels.lua", 100);
+    sweep("figures/markova-2.17.lua", 100);
 }
 
 static int

@@ -196,13 +196,10 @@ fail_loop(const char *name, tu_alloc_op op, bool takes_diag, bool once)
 long
 tu_fail_loop(const char *name, tu_alloc_op op, bool takes_diag)
 {
-    return fail_loop(name, op, takes_diag, false);
-}
-
-long
-tu_fail_once_loop(const char *name, tu_alloc_op op, bool takes_diag)
-{
-    return fail_loop(name, op, takes_diag, true);
+    long points = fail_loop(name, op, takes_diag, false);
+    /* and each allocation failing alone: none passed over */
+    assert_int_equal(fail_loop(name, op, takes_diag, true), points);
+    return points;
 }
 
 static int

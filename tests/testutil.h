@@ -48,17 +48,16 @@ bool tu_alloc_failed_once(void);
 
 /*
 ** Run op with the k-th allocation failing for k = 1, 2, ... until it
-** succeeds; returns the number of failure points (k - 1) and prints it.
-** Every failing run must return CF_STATUS_NO_MEMORY and leave no block
-** live; takes_diag: op passes its diag to the library, whose status and
-** message must then say so.  Needs the core (cf_diag_t, statuses).
+** succeeds, first with every later allocation failing too, then with the
+** k-th alone failing and the later ones granted; returns the number of
+** failure points (k - 1, the same both ways) and prints it.  Every failing
+** run must return CF_STATUS_NO_MEMORY and leave no block live; takes_diag:
+** op passes its diag to the library, whose status and message must then
+** say so.  An operation that met its one failure must not succeed (a
+** failure passed over is a result computed without what it needed).
 */
 typedef cf_status_t (*tu_alloc_op)(cf_diag_t *diag);
 long tu_fail_loop(const char *name, tu_alloc_op op, bool takes_diag);
-/* The same with only the k-th allocation failing and the later ones
-** granted: an operation that met its failure must not succeed (a failure
-** passed over is a result computed without what it needed). */
-long tu_fail_once_loop(const char *name, tu_alloc_op op, bool takes_diag);
 
 /* The names of the figure scripts (*.lua) in dir, sorted, strdup'd into
 ** names (at most max); their number. */

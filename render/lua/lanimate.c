@@ -17,8 +17,8 @@
 #include "anim-spec.h"
 #include "lanimate.h"
 #include "lcommon.h"
-#include "lpairs.h"
 #include "lcount.h"
+#include "lpairs.h"
 
 #define REGISTRY_KEY "curvefig.animate"
 

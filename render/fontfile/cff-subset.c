@@ -19,7 +19,8 @@
 **   Encoding, unique ids and PostScript code (strings re-numbered),
 **   CIDCount, charset, FDSelect, CharStrings, FDArray; String INDEX;
 **   Global Subr INDEX (every subroutine not called a one-byte return, so
-**   that the numbers and the bias hold); charset (format 2: new glyph i
+**   that the numbers hold, and those after the last one called left out
+**   down to the count that keeps the bias: 1240 or 33900); charset (format 2: new glyph i
 **   is CID keep[i]); FDSelect (format 3); CharStrings INDEX (the kept
 **   glyphs, ascending); FDArray INDEX (the Font DICTs the kept glyphs
 **   use, renumbered in order; a name-keyed font's one, its Private DICT
@@ -522,25 +523,37 @@ write_charset_fdselect(cff_t *c, cf__buf_t *b)
         cf__ff_put16(b->data + count_at, (unsigned)nranges);
 }
 
+/* The subroutines written: up to the last one called, but at least the
+** least count of the bias of the input's count (107 below 1240, 1131
+** below 33900, else 32768), so that calls find the same numbers. */
+static size_t
+subrs_out(const cf__cff_index_t *ix, const unsigned char *used)
+{
+    size_t n = ix->count, floor = n >= 33900 ? 33900 : n >= 1240 ? 1240 : 0;
+    while (n > floor && !used[n - 1])
+        n--;
+    return n;
+}
+
 static void
 write_private(cff_t *c, fd_t *fd, cf__buf_t *b)
 {
     static const unsigned skip[] = { 19, 0 };
     items_t it = { 0 };
-    size_t start = b->size;
+    size_t start = b->size, nsubrs = subrs_out(&fd->subrs, fd->used);
     fd->out_priv_pos = start;
     copy_dict(c, b, fd->priv_pos, fd->priv_len, skip);
-    if (fd->subrs.count > 0) {
+    if (nsubrs > 0) {
         /* the Subrs INDEX right after the DICT: its offset is the
            DICT's length, this entry's 6 bytes included */
         cf__cff_put_int5(b, (int32_t)(b->size - start + 6));
         cf__cff_put_op(b, 19);
     }
     fd->out_priv_len = b->size - start;
-    if (fd->subrs.count > 0) {
+    if (nsubrs > 0) {
         it.ix = &fd->subrs;
         it.used = fd->used;
-        write_index(c, b, &it, fd->subrs.count);
+        write_index(c, b, &it, nsubrs);
     }
 }
 
@@ -572,7 +585,7 @@ write_font(cff_t *c, cf__buf_t *b)
     write_index(c, b, &it, c->nstr);
     it.ix = &c->gsubrs;
     it.used = c->gused;
-    write_index(c, b, &it, c->gsubrs.count);
+    write_index(c, b, &it, subrs_out(&c->gsubrs, c->gused));
     write_charset_fdselect(c, b);
     c->at_charstrings = b->size;
     it.ix = &c->charstrings;

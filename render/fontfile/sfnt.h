@@ -2,9 +2,9 @@
 ** The parts of the font subsetter shared by its files (render/fontfile/):
 ** the bytes of a font and what an error says about them, big-endian
 ** reads, the table directory of one face (sfnt.c), the two subsetters
-** (cff-subset.c, glyf-subset.c) and the pieces of CFF they share
-** (cff-format.c: INDEX and DICT; cff-charstring.c: which subroutines a
-** glyph calls).
+** (cff-subset.c with cff-write.c, glyf-subset.c) and the pieces of CFF
+** they share (cff-format.c: INDEX and DICT; cff-charstring.c: which
+** subroutines a glyph calls).
 **
 ** Every read goes through a position and a length checked first
 ** (cf__ff_fits): the font is untrusted bytes.  A function that finds the

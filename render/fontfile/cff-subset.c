@@ -240,6 +240,7 @@ static int
 read_cff(cf__cff_t *c, cf__fontfile_subset_t *out)
 {
     size_t cs = 0, i, pos, len;
+    long budget;
     int r;
     if (c->tlen < 4 || c->t[0] != 1 || c->t[2] < 4)
         return cf__ff_fail(c->f, "CFF table at %zu: version %u, header of "
@@ -274,6 +275,7 @@ read_cff(cf__cff_t *c, cf__fontfile_subset_t *out)
         c->num_glyphs = (unsigned)c->charstrings.count;
     if ((r = read_fds(c, out)) != 0)
         return r;
+    budget = cf__cff_scan_budget(c->nkeep);
     for (i = 0; i < c->nkeep; i++) {
         cf__cff_subrs_t g, l;
         cf__cff_fd_t *fd = &c->fds[c->glyph_fd[i]];
@@ -284,7 +286,7 @@ read_cff(cf__cff_t *c, cf__fontfile_subset_t *out)
         if (cf__cff_index_item(c->f, &c->charstrings, c->keep[i], &pos,
                                &len) ||
             cf__cff_scan_glyph(c->f, c->t + pos, len, c->keep[i], &g,
-                               &l))
+                               &l, &budget))
             return 1;
     }
     return 0;

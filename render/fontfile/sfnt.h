@@ -196,6 +196,11 @@ typedef struct cf__cff_subrs {
 
 int cf__cff_scan_glyph(cf__ff_t *f, const unsigned char *cs, size_t len,
                        unsigned gid, cf__cff_subrs_t *global,
-                       cf__cff_subrs_t *local);
+                       cf__cff_subrs_t *local, long *budget);
+
+/* The steps (charstring bytes interpreted) the scan of n glyphs may take,
+** all together: 2^22 and CF__CFF_STEPS_PER_GLYPH a glyph. */
+#define CF__CFF_STEPS_PER_GLYPH 4096L
+long cf__cff_scan_budget(size_t nglyphs);
 
 #endif

@@ -15,6 +15,32 @@
 
 #include "font-extents.h"
 
+/* Whether every shift is 0 without asking HarfBuzz: one item, or a first
+** item whose script names the roman baseline and faces without a BASE
+** table, where HarfBuzz synthesises the roman baseline at 0
+** (hb_ot_layout_get_baseline_with_fallback). */
+static bool
+all_roman_at_0(const native_run_t *r)
+{
+    size_t i;
+    if (r->nitems <= 1)
+        return true;
+    switch ((int)r->items[0].script) {
+    case HB_SCRIPT_LATIN:
+    case HB_SCRIPT_GREEK:
+    case HB_SCRIPT_CYRILLIC:
+    case HB_SCRIPT_COMMON:
+        break;
+    default:
+        return false;
+    }
+    for (i = 0; i < r->nitems; i++)
+        if (r->items[i].font->own == NULL
+            || cf__otface_has_base(r->items[i].font->own))
+            return false;
+    return true;
+}
+
 /* pango's baseline shifts: the first item's script names the baseline
 ** (roman, hanging, ideographic), each item's font says where that
 ** baseline is for its script; an item sits lifted by the difference. */
@@ -24,22 +50,29 @@ cf__native_baseline_shifts(native_run_t *r)
     hb_ot_layout_baseline_tag_t tag = 0;
     hb_position_t baseline = 0;
     size_t i;
+    if (all_roman_at_0(r)) {
+        for (i = 0; i < r->glyphs.g.nspans; i++)
+            r->glyphs.spans[i].shift = 0;
+        return;
+    }
     for (i = 0; i < r->nitems && i < r->glyphs.g.nspans; i++) {
         const item_t *t = &r->items[i];
         hb_tag_t stags[HB_OT_MAX_TAGS_PER_SCRIPT];
         hb_tag_t ltags[HB_OT_MAX_TAGS_PER_LANGUAGE];
         unsigned ns = HB_OT_MAX_TAGS_PER_SCRIPT;
         unsigned nl = HB_OT_MAX_TAGS_PER_LANGUAGE;
-        hb_position_t own;
+        hb_position_t own = 0;
+        hb_font_t *font = cf__nface_hb(t->font);
         hb_ot_tags_from_script_and_language(
             t->script, hb_language_from_string("c", -1), &ns, stags, &nl,
             ltags);
         if (tag == 0)
             tag = hb_ot_layout_get_horizontal_baseline_tag_for_script(
                 t->script);
-        hb_ot_layout_get_baseline_with_fallback(
-            t->font->hb, tag, HB_DIRECTION_LTR, stags[ns - 1],
-            nl > 0 ? ltags[nl - 1] : HB_TAG_NONE, &own);
+        if (font != NULL)
+            hb_ot_layout_get_baseline_with_fallback(
+                font, tag, HB_DIRECTION_LTR, stags[ns - 1],
+                nl > 0 ? ltags[nl - 1] : HB_TAG_NONE, &own);
         if (i == 0)
             baseline = own;
         r->glyphs.spans[i].shift = baseline - own;

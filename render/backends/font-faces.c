@@ -16,7 +16,12 @@
 **     formats HarfBuzz reads (TrueType and CFF);
 **   - a font's HarfBuzz font: the file's face, scale pixel size * 1024
 **     over the pattern's matrix's scale factors, point size, synthetic
-**     slant of the matrix; its cairo scaled font: the pattern's face
+**     slant of the matrix, made when a run needs HarfBuzz
+**     (cf__nface_hb); before, the face of the renderer's shaper
+**     (render/fontfile/shape.h) with that scale and slant, whose tables
+**     give the extents HarfBuzz would (when it is usable; a face it
+**     cannot read has its HarfBuzz font made at once, as before); its
+**     cairo scaled font: the pattern's face
 **     (cairo_ft_font_face_create_for_pattern), the matrix (y down) times
 **     the pixel size, identity device matrix, the renderer's options
 **     (glyph positions not rounded, as a PDF's: see the_options);
@@ -59,7 +64,8 @@ struct cf__nfontset {
 typedef struct hb_face_entry {
     char *file;
     int index;
-    hb_face_t *face;
+    hb_face_t *face;        /* made at need */
+    cf__otface_t *own;      /* the shaper's face; NULL: not made */
 } hb_face_entry_t;
 
 /* One per process, as fontconfig's current configuration is. */
@@ -287,16 +293,16 @@ cf__nfontset_get(const char *family, bool italic, bool bold, int size,
     return s;
 }
 
-/* The HarfBuzz face of a font file (pango's: the file's blob). */
-static hb_face_t *
-hb_face_of(const char *file, int index)
+/* The entry of a font file and index (the shaper's face opened), NULL
+** when out of memory; valid until the next entry is made. */
+static hb_face_entry_t *
+entry_of(const char *file, int index)
 {
     size_t i;
-    hb_blob_t *blob;
     hb_face_entry_t *e;
     for (i = 0; i < nhb_faces; i++)
         if (hb_faces[i].index == index && strcmp(hb_faces[i].file, file) == 0)
-            return hb_faces[i].face;
+            return &hb_faces[i];
     e = room(hb_faces, nhb_faces, &cap_hb_faces, sizeof *hb_faces);
     if (e == NULL)
         return NULL;
@@ -307,10 +313,27 @@ hb_face_of(const char *file, int index)
         return NULL;
     strcpy(e->file, file);
     e->index = index;
-    blob = hb_blob_create_from_file(file);
-    e->face = hb_face_create(blob, (unsigned)index);
-    hb_blob_destroy(blob);
+    e->face = NULL;
+    e->own = malloc(cf__otface_size());
+    if (e->own != NULL)
+        cf__otface_open_at(e->own, file, (unsigned)index);
     nhb_faces++;
+    return e;
+}
+
+/* The HarfBuzz face of a font file (pango's: the file's blob). */
+static hb_face_t *
+hb_face_of(const char *file, int index)
+{
+    hb_face_entry_t *e = entry_of(file, index);
+    hb_blob_t *blob;
+    if (e == NULL)
+        return NULL;
+    if (e->face == NULL) {
+        blob = hb_blob_create_from_file(file);
+        e->face = hb_face_create(blob, (unsigned)index);
+        hb_blob_destroy(blob);
+    }
     return e->face;
 }
 
@@ -326,9 +349,10 @@ pattern_matrix(const FcPattern *p)
     return m;
 }
 
-/* pango's HarfBuzz font of the face (pango_fc_font_create_hb_font). */
+/* pango's scale and slant of the face's HarfBuzz font
+** (pango_fc_font_create_hb_font), and its point size. */
 static void
-make_hb_font(cf__nface_t *f, hb_face_t *face)
+face_scale(const cf__nface_t *f, cf__otscale_t *sc, double *point_size)
 {
     FcMatrix m = pattern_matrix(f->pattern);
     /* pango's font matrix: y down */
@@ -356,11 +380,72 @@ make_hb_font(cf__nface_t *f, hb_face_t *face)
             dpi = 72.;
         pixel = point * dpi / 72.;
     }
+    sc->x_scale = (int)(pixel * 1024 * (1. / (1. / major)));
+    sc->y_scale = (int)(pixel * 1024 * (1. / (1. / minor)));
+    sc->slant = (float)slant;
+    *point_size = point;
+}
+
+/* pango's HarfBuzz font of the face (pango_fc_font_create_hb_font). */
+static void
+make_hb_font(cf__nface_t *f, hb_face_t *face)
+{
+    cf__otscale_t sc;
+    double point;
+    face_scale(f, &sc, &point);
     f->hb = hb_font_create(face);
-    hb_font_set_scale(f->hb, (int)(pixel * 1024 * (1. / (1. / major))),
-                      (int)(pixel * 1024 * (1. / (1. / minor))));
+    hb_font_set_scale(f->hb, sc.x_scale, sc.y_scale);
     hb_font_set_ptem(f->hb, (float)point);
-    hb_font_set_synthetic_slant(f->hb, (float)slant);
+    hb_font_set_synthetic_slant(f->hb, sc.slant);
+}
+
+hb_font_t *
+cf__nface_hb(cf__nface_t *f)
+{
+    FcChar8 *file;
+    int index = 0;
+    hb_face_t *hbf;
+    if (f->hb != NULL)
+        return f->hb;
+    if (FcPatternGetString(f->pattern, FC_FILE, 0, &file) != FcResultMatch)
+        return NULL;
+    FcPatternGetInteger(f->pattern, FC_INDEX, 0, &index);
+    hbf = hb_face_of((const char *)file, index);
+    if (hbf != NULL)
+        make_hb_font(f, hbf);
+    return f->hb;
+}
+
+/* The face's extents and whether it has variations, from the shaper's
+** face when it reads the file, else from HarfBuzz's font made now. */
+static bool
+face_metrics(cf__nface_t *f, const char *file, int index)
+{
+    hb_face_entry_t *e = entry_of(file, index);
+    hb_font_extents_t ext;
+    double point;
+    int asc, desc, gap;
+    if (e == NULL)
+        return false;
+    if (e->own != NULL && cf__otface_usable(e->own)) {
+        face_scale(f, &f->own_scale, &point);
+        if (cf__otface_h_extents(e->own, f->own_scale.y_scale, &asc, &desc,
+                                 &gap)) {
+            /* a usable face has no fvar: no variation axes */
+            f->own = e->own;
+            f->ext_y = -asc;
+            f->ext_height = asc - desc;
+            return true;
+        }
+    }
+    if (cf__nface_hb(f) == NULL)
+        return false;
+    f->unsupported = f->unsupported
+                     || hb_ot_var_get_axis_count(hb_face_of(file, index)) > 0;
+    hb_font_get_h_extents(f->hb, &ext);
+    f->ext_y = -ext.ascender;
+    f->ext_height = ext.ascender - ext.descender;
+    return true;
 }
 
 static cf__nface_t *
@@ -372,8 +457,6 @@ new_face(FcPattern *prepared)
     int index = 0, slant = 0, width = 100;
     size_t i;
     double weight = 80;
-    hb_face_t *hbf;
-    hb_font_extents_t ext;
     cf__nface_t **grown;
     for (i = 0; i < nfaces; i++)
         if (FcPatternEqual(faces[i]->pattern, prepared)) {
@@ -393,22 +476,17 @@ new_face(FcPattern *prepared)
     f->pattern = prepared;
     if (FcPatternGetCharSet(prepared, FC_CHARSET, 0, &cs) == FcResultMatch)
         f->charset = cs;
-    hbf = hb_face_of((const char *)file, index);
-    if (hbf == NULL) {
-        FcPatternDestroy(prepared);
-        free(f);
-        return NULL;
-    }
-    make_hb_font(f, hbf);
     f->unsupported =
-        hb_ot_var_get_axis_count(hbf) > 0 || index != (index & 0xffff)
+        index != (index & 0xffff)
         || FcPatternGetString(prepared, FC_FONT_FEATURES, 0, &feat)
                == FcResultMatch
         || FcPatternGetString(prepared, FC_FONT_VARIATIONS, 0, &feat)
                == FcResultMatch;
-    hb_font_get_h_extents(f->hb, &ext);
-    f->ext_y = -ext.ascender;
-    f->ext_height = ext.ascender - ext.descender;
+    if (!face_metrics(f, (const char *)file, index)) {
+        FcPatternDestroy(prepared);
+        free(f);
+        return NULL;
+    }
     /* the face without its size, as pango describes a font */
     if (FcPatternGetString(prepared, FC_FAMILY, 0, &fam) != FcResultMatch)
         fam = (FcChar8 *)"";

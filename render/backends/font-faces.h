@@ -13,13 +13,19 @@
 #include <hb.h>
 
 #include "font.h"
+#include "shape.h"
 
 /* A face at a size: a font of pango's font map (a pattern fontconfig
 ** prepared for the request). */
 typedef struct cf__nface {
     FcPattern *pattern;
     FcCharSet *charset;
-    hb_font_t *hb;                /* pango's HarfBuzz font of it */
+    hb_font_t *hb;                /* pango's HarfBuzz font of it, made at
+                                     need (cf__nface_hb) */
+    const cf__otface_t *own;      /* the renderer's shaper's face (render/
+                                     fontfile/shape.h), NULL when it is
+                                     not usable */
+    cf__otscale_t own_scale;      /* the scale and slant of hb */
     bool unsupported;             /* variations or features: pango's */
     cairo_scaled_font_t *scaled;  /* made at need */
     int ext_y, ext_height;        /* pango's logical extents of a glyph */
@@ -37,6 +43,10 @@ cf__nfontset_t *cf__nfontset_get(const char *family, bool italic, bool bold,
 /* Its i-th font (pango's order: fontconfig's match, then its sort);
 ** NULL past the last. */
 cf__nface_t *cf__nfontset_font(cf__nfontset_t *set, int i);
+
+/* The face's HarfBuzz font, made at the first call (HarfBuzz is loaded
+** then: render/backends/hb-lazy.c); NULL when out of memory. */
+hb_font_t *cf__nface_hb(cf__nface_t *f);
 
 /* The face's scaled font as pango-cairo makes it (NULL: cairo failed). */
 cairo_scaled_font_t *cf__nface_scaled(cf__nface_t *f);

@@ -11,6 +11,9 @@
 **     text around them, a run of spaces before a change of font going
 **     with the font that comes earlier in the set.
 ** A character that no font of the set has leaves the run to pango.
+** Characters' general category and script come from the shaper's table
+** (render/fontfile/uprops.h) when it has them, from HarfBuzz otherwise
+** (so that simple text does not load it).
 */
 #include <locale.h>
 #include <pthread.h>
@@ -19,6 +22,7 @@
 #include "font-itemize.h"
 #include "grow.h"
 #include "label-impl.h"
+#include "uprops.h"
 
 #define PAREN_DEPTH 128
 
@@ -54,6 +58,27 @@ cf__native_language(void)
 {
     pthread_once(&language_once, read_language);
     return the_language;
+}
+
+/* HarfBuzz's general category and script of c */
+static hb_unicode_general_category_t
+category_of(unsigned c)
+{
+    unsigned gc;
+    uint32_t script;
+    if (cf__uprops(c, &gc, &script))
+        return (hb_unicode_general_category_t)gc;
+    return hb_unicode_general_category(hb_unicode_funcs_get_default(), c);
+}
+
+static hb_script_t
+script_of(unsigned c)
+{
+    unsigned gc;
+    uint32_t script;
+    if (cf__uprops(c, &gc, &script))
+        return (hb_script_t)script;
+    return hb_unicode_script(hb_unicode_funcs_get_default(), c);
 }
 
 static bool
@@ -100,7 +125,6 @@ next_char(const char *s, size_t len, size_t *k)
 bool
 cf__native_fonts_handles(const char *text, size_t len)
 {
-    hb_unicode_funcs_t *u = hb_unicode_funcs_get_default();
     const char *lang = cf__native_language();
     size_t k = 0;
     if (len == 0 || (strcmp(lang, "c") != 0 && strcmp(lang, "posix") != 0))
@@ -108,10 +132,9 @@ cf__native_fonts_handles(const char *text, size_t len)
     while (k < len) {
         size_t at = k;
         unsigned c = next_char(text, len, &k);
-        hb_unicode_general_category_t gc =
-            hb_unicode_general_category(u, c);
+        hb_unicode_general_category_t gc = category_of(c);
         if (cf__utf8_decode(text, len, at, &c) == 0
-            || !script_ok(hb_unicode_script(u, c)) || emoji_like(c)
+            || !script_ok(script_of(c)) || emoji_like(c)
             || gc == HB_UNICODE_GENERAL_CATEGORY_CONTROL
             || gc == HB_UNICODE_GENERAL_CATEGORY_FORMAT
             || gc == HB_UNICODE_GENERAL_CATEGORY_SURROGATE
@@ -177,7 +200,7 @@ typedef struct script_iter {
 
 /* The next script run: [start, end) and its script; false at the end. */
 static bool
-script_next(script_iter_t *it, hb_unicode_funcs_t *u)
+script_next(script_iter_t *it)
 {
     int start_sp = it->sp;
     if (it->end == it->len)
@@ -187,7 +210,7 @@ script_next(script_iter_t *it, hb_unicode_funcs_t *u)
     while (it->end < it->len) {
         size_t k = it->end;
         unsigned c = next_char(it->text, it->len, &k);
-        hb_script_t sc = hb_unicode_script(u, c);
+        hb_script_t sc = script_of(c);
         int pi = sc != HB_SCRIPT_COMMON ? -1 : pair_index(c);
         if (pi >= 0) {
             if ((pi & 1) == 0) {
@@ -228,9 +251,9 @@ script_next(script_iter_t *it, hb_unicode_funcs_t *u)
 
 /* pango's characters that choose no font (spaces, separators). */
 static bool
-as_space(hb_unicode_funcs_t *u, unsigned c)
+as_space(unsigned c)
 {
-    hb_unicode_general_category_t gc = hb_unicode_general_category(u, c);
+    hb_unicode_general_category_t gc = category_of(c);
     return gc == HB_UNICODE_GENERAL_CATEGORY_CONTROL
            || (gc == HB_UNICODE_GENERAL_CATEGORY_FORMAT
                && !((c >= 0x600 && c <= 0x6ff) || c == 0x70f || c == 0x8e2))
@@ -275,14 +298,13 @@ bool
 cf__native_itemize(native_run_t *r, cf__nfontset_t *set, const char *text,
                    size_t len)
 {
-    hb_unicode_funcs_t *u = hb_unicode_funcs_get_default();
     script_iter_t it;
     memset(&it, 0, sizeof it);
     it.text = text;
     it.len = len;
     it.sp = -1;
     r->nitems = 0;
-    while (script_next(&it, u)) {
+    while (script_next(&it)) {
         item_t *cur = NULL;
         size_t k = it.start, first_space = (size_t)-1, run_first = r->nitems;
         int cur_pos = 0xffff;
@@ -292,7 +314,7 @@ cf__native_itemize(native_run_t *r, cf__nfontset_t *set, const char *text,
             cf__nface_t *font = NULL;
             int pos = 0xffff;
             size_t fs = first_space;
-            bool space = as_space(u, c);
+            bool space = as_space(c);
             if (space) {
                 if (first_space == (size_t)-1)
                     first_space = at;

@@ -29,6 +29,7 @@ typedef struct native_run {
     bool native;          /* which one the last shape used */
     bool oom;             /* the last shape ran out of memory */
     cf__font_glyphs_buf_t glyphs;
+    cf__otrun_t ot;       /* the renderer's shaper's glyphs of an item */
     item_t *items;
     size_t nitems, cap_items;
 } native_run_t;

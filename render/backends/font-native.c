@@ -18,9 +18,16 @@
 ** configured features, an empty text; and every run when pango's default
 ** language (from the C library's LC_CTYPE) is not C or POSIX, where pango
 ** would tag items with languages this does not derive
-** (cf__native_fonts_handles, font-itemize.c).  This file is the glue:
-** the fonts' table of render/labels/font.h, a run shaped natively or
-** handed on, its glyphs drawn and outlined either way.
+** (cf__native_fonts_handles, font-itemize.c).  An item whose characters
+** are all simple (render/fontfile/uprops.h: in the shaper's Unicode table,
+** not marks, not U+2044), in a script the renderer's shaper knows and a
+** face it reads, is shaped by that shaper (render/fontfile/shape.h), which
+** gives exactly hb_shape's glyphs for the runs it accepts; the others,
+** and the runs it hands back, by HarfBuzz, loaded then (so a figure whose
+** items are all simple never loads HarfBuzz, GLib, graphite2 or PCRE2).
+** This file is the glue: the fonts' table of render/labels/font.h, a run
+** shaped natively or handed on, its glyphs drawn and outlined either
+** way.
 */
 #include <string.h>
 
@@ -32,12 +39,14 @@
 #include "font-itemize.h"
 #include "font-native.h"
 #include "font-pango.h"
+#include "label-impl.h"
+#include "uprops.h"
 
 typedef struct native_fonts {
     void *pango;          /* pango's context, opened for the first run
                              handed to it */
     cairo_t *cr;          /* for outlines */
-    hb_buffer_t *buf;
+    hb_buffer_t *buf;     /* made for the first item HarfBuzz shapes */
 } native_fonts_t;
 
 /* ---- shaping -------------------------------------------------------------- */
@@ -76,18 +85,85 @@ pango_funcs(void)
     return funcs;
 }
 
+/* A glyph as hb_shape gives it, added to the run's span. */
+static void
+add_glyph(native_run_t *r, const item_t *t, unsigned id, unsigned cluster,
+          int x_advance, int x_offset, int y_offset, int *x)
+{
+    cf__font_glyph_t g;
+    g.id = id;
+    g.width = x_advance;
+    g.x = x_offset;
+    g.y = -y_offset;
+    if (g.width < 0) {
+        g.width = -g.width;
+        g.x += g.width;
+    }
+    g.cluster = cluster - (unsigned)t->offset;
+    cf__font_glyphs_add(&r->glyphs, &g);
+    *x += g.width;
+}
+
+/* Item t shaped by the renderer's shaper: 1 done, 0 not handled (then
+** HarfBuzz shapes it), -1 out of memory. */
+static int
+own_item(native_run_t *r, const item_t *t, const char *text, int *x)
+{
+    uint32_t tag = cf__ot_script_tag((uint32_t)t->script);
+    size_t k = t->offset, end = t->offset + t->length, i;
+    int rc;
+    if (t->font->own == NULL || tag == 0)
+        return 0;
+    while (k < end) {
+        unsigned c;
+        size_t n = cf__utf8_decode(text, end, k, &c);
+        if (n == 0 || !cf__uprops_simple(c))
+            return 0;
+        k += n;
+    }
+    rc = cf__ot_shape(t->font->own, tag, &t->font->own_scale, text,
+                      t->offset, t->length, &r->ot);
+    if (rc != 0)
+        return rc < 0 ? -1 : 0;
+    cf__font_glyphs_span(&r->glyphs, &t->font->face, t->offset, t->length,
+                         *x);
+    for (i = 0; i < r->ot.n; i++) {
+        const cf__otglyph_t *g = &r->ot.g[i];
+        add_glyph(r, t, g->id, g->cluster, g->x_advance, g->x_offset,
+                  g->y_offset, x);
+    }
+    return r->glyphs.failed ? -1 : 1;
+}
+
 /* Shape item t of text into b (a span at x); its width added to *x;
-** false when a glyph is unknown or the face is not ours. */
+** false when a glyph is unknown or the face is not ours, or out of
+** memory (r->oom). */
 static bool
 shape_item(native_fonts_t *nf, native_run_t *r, const item_t *t,
            const char *text, size_t len, int *x)
 {
-    hb_font_t *sub;
+    hb_font_t *sub, *font;
     unsigned n, i;
     hb_glyph_info_t *info;
     hb_glyph_position_t *pos;
+    int own;
     if (t->font->unsupported || cf__nface_scaled(t->font) == NULL)
         return false;
+    if ((own = own_item(r, t, text, x)) != 0) {
+        r->oom = own < 0;
+        return own > 0;
+    }
+    if ((font = cf__nface_hb(t->font)) == NULL)
+        return false;
+    if (nf->buf == NULL) {
+        nf->buf = hb_buffer_create();
+        if (!hb_buffer_allocation_successful(nf->buf)) {
+            hb_buffer_destroy(nf->buf);
+            nf->buf = NULL;
+            r->oom = true;
+            return false;
+        }
+    }
     hb_buffer_clear_contents(nf->buf);
     hb_buffer_set_direction(nf->buf, HB_DIRECTION_LTR);
     hb_buffer_set_script(nf->buf, t->script);
@@ -102,7 +178,7 @@ shape_item(native_fonts_t *nf, native_run_t *r, const item_t *t,
                        (unsigned)t->offset, (int)t->length);
     hb_buffer_add_utf8(nf->buf, text, (int)len,
                        (unsigned)(t->offset + t->length), 0);
-    sub = hb_font_create_sub_font(t->font->hb);
+    sub = hb_font_create_sub_font(font);
     hb_font_set_funcs(sub, pango_funcs(), NULL, NULL);
     hb_shape(sub, nf->buf, NULL, 0);
     hb_font_destroy(sub);
@@ -113,20 +189,11 @@ shape_item(native_fonts_t *nf, native_run_t *r, const item_t *t,
     cf__font_glyphs_span(&r->glyphs, &t->font->face, t->offset, t->length,
                          *x);
     for (i = 0; i < n; i++) {
-        cf__font_glyph_t g;
-        g.id = info[i].codepoint;
-        if (g.id != CF__FONT_GLYPH_EMPTY && (g.id & CF__FONT_GLYPH_UNKNOWN))
+        unsigned id = info[i].codepoint;
+        if (id != CF__FONT_GLYPH_EMPTY && (id & CF__FONT_GLYPH_UNKNOWN))
             return false;
-        g.width = pos[i].x_advance;
-        g.x = pos[i].x_offset;
-        g.y = -pos[i].y_offset;
-        if (g.width < 0) {
-            g.width = -g.width;
-            g.x += g.width;
-        }
-        g.cluster = info[i].cluster - (unsigned)t->offset;
-        cf__font_glyphs_add(&r->glyphs, &g);
-        *x += g.width;
+        add_glyph(r, t, id, info[i].cluster, pos[i].x_advance,
+                  pos[i].x_offset, pos[i].y_offset, x);
     }
     return !r->glyphs.failed;
 }
@@ -163,7 +230,7 @@ shape_native(native_fonts_t *nf, native_run_t *r, const cf__font_req_t *req,
     cf__nfaces_unlock();
     if (r->glyphs.failed)
         r->oom = true;
-    return ok && !r->glyphs.failed;
+    return ok && !r->glyphs.failed && !r->oom;
 }
 
 static void *
@@ -174,12 +241,6 @@ open_fonts(void *self)
     if (f == NULL)
         return NULL;
     cf__fonts_configure();
-    f->buf = hb_buffer_create();
-    if (!hb_buffer_allocation_successful(f->buf)) {
-        hb_buffer_destroy(f->buf);
-        cf_free(f);
-        return NULL;
-    }
     return f;
 }
 
@@ -193,7 +254,8 @@ close_fonts(void *ctx)
         cf__pango_fonts.close(f->pango);
     if (f->cr != NULL)
         cairo_destroy(f->cr);
-    hb_buffer_destroy(f->buf);
+    if (f->buf != NULL)
+        hb_buffer_destroy(f->buf);
     cf_free(f);
 }
 
@@ -231,6 +293,7 @@ release(void *run)
     if (r->pango != NULL)
         cf__pango_fonts.release(r->pango);
     cf__font_glyphs_fini(&r->glyphs);
+    cf__otrun_fini(&r->ot);
     cf_free(r->items);
     cf_free(r);
 }

@@ -1,6 +1,7 @@
 /*
-** HarfBuzz, opened when the first label is shaped
-** (render/backends/font-native.c), not when the program starts: linked,
+** HarfBuzz, opened when the first label needs it
+** (render/backends/font-native.c: a run the renderer's own shaper,
+** render/fontfile/shape.h, hands on), not when the program starts: linked,
 ** its library and those it brings (GLib, graphite2, PCRE2) cost every
 ** render, with or without labels (a figure without labels: 3.64 ms
 ** against 3.88 ms of CPU, medians of 41, same machine and load).  The

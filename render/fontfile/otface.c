@@ -220,6 +220,8 @@ check(cf__otface_t *f, unsigned index)
         || !find(&ff, &dir, CF__FF_TAG('G', 'P', 'O', 'S'), &f->gpos,
                  &f->bad))
         return;
+    f->has_base = find(&ff, &dir, CF__FF_TAG('B', 'A', 'S', 'E'), &other,
+                       &f->bad);
     find(&ff, &dir, CF__FF_TAG('O', 'S', '/', '2'), &os2, &f->bad);
     find(&ff, &dir, CF__FF_TAG('G', 'D', 'E', 'F'), &f->gdef, &f->bad);
     find(&ff, &dir, CF__FF_TAG('G', 'S', 'U', 'B'), &f->gsub, &f->bad);
@@ -257,12 +259,19 @@ cf__otface_open_mem(const unsigned char *data, size_t len, unsigned index,
     return 0;
 }
 
-int
-cf__otface_open(const char *path, unsigned index, cf__otface_t **out)
+size_t
+cf__otface_size(void)
+{
+    return sizeof(cf__otface_t);
+}
+
+void
+cf__otface_open_at(cf__otface_t *f, const char *path, unsigned index)
 {
     struct stat st;
     void *map = NULL;
     int fd = open(path, O_RDONLY | O_CLOEXEC);
+    memset(f, 0, sizeof *f);
     if (fd >= 0 && fstat(fd, &st) == 0 && S_ISREG(st.st_mode)
         && st.st_size > 0) {
         map = mmap(NULL, (size_t)st.st_size, PROT_READ, MAP_PRIVATE, fd, 0);
@@ -271,14 +280,30 @@ cf__otface_open(const char *path, unsigned index, cf__otface_t **out)
     }
     if (fd >= 0)
         close(fd);
-    if (cf__otface_open_mem(map, map != NULL ? (size_t)st.st_size : 0, index,
-                            out) != 0) {
-        if (map != NULL)
-            munmap(map, (size_t)st.st_size);
+    if (map == NULL)
+        return;
+    f->map = map;
+    f->map_len = (size_t)st.st_size;
+    f->data = map;
+    f->len = f->map_len;
+    check(f, index);
+}
+
+void
+cf__otface_release(cf__otface_t *f)
+{
+    if (f->map != NULL)
+        munmap(f->map, f->map_len);
+    memset(f, 0, sizeof *f);
+}
+
+int
+cf__otface_open(const char *path, unsigned index, cf__otface_t **out)
+{
+    *out = cf_alloc_array(1, sizeof **out);
+    if (*out == NULL)
         return -1;
-    }
-    (*out)->map = map;
-    (*out)->map_len = map != NULL ? (size_t)st.st_size : 0;
+    cf__otface_open_at(*out, path, index);
     return 0;
 }
 
@@ -287,8 +312,7 @@ cf__otface_close(cf__otface_t *f)
 {
     if (f == NULL)
         return;
-    if (f->map != NULL)
-        munmap(f->map, f->map_len);
+    cf__otface_release(f);
     cf_free(f);
 }
 
@@ -296,6 +320,12 @@ bool
 cf__otface_usable(const cf__otface_t *f)
 {
     return f->usable;
+}
+
+bool
+cf__otface_has_base(const cf__otface_t *f)
+{
+    return f->has_base;
 }
 
 bool

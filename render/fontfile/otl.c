@@ -216,6 +216,8 @@ stage(const otl_tab_t *t, size_t ls, const uint32_t *tags, size_t ntags,
     *idx = cf_alloc_array(nlookups, sizeof **idx);
     if (used == NULL || *idx == NULL) {
         cf_free(used);
+        cf_free(*idx);
+        *idx = NULL;
         return -1;
     }
     for (k = 0; k < ntags; k++)
@@ -234,20 +236,23 @@ otl_plan(const cf__otface_t *f, uint32_t script, otl_plan_t *plan)
     otl_tab_t gsub = f->gsub, gpos = f->gpos;
     size_t ls_sub = 0, ls_pos = 0;
     size_t ng = sizeof global_features / sizeof global_features[0];
-    int r;
+    int r = 0;
     memset(plan, 0, sizeof *plan);
     gsub.bad = gpos.bad = &bad;
     if ((gsub.p != NULL && lang_sys(&gsub, script, &ls_sub) != 0)
         || lang_sys(&gpos, script, &ls_pos) != 0)
         return 1;
-    if (gsub.p != NULL
-        && ((r = stage(&gsub, ls_sub, &rvrn, 1, &plan->idx[0], &plan->n[0]))
-                != 0
-            || (r = stage(&gsub, ls_sub, global_features, ng, &plan->idx[1],
-                          &plan->n[1])) != 0))
-        return r;
-    return stage(&gpos, ls_pos, global_features, ng, &plan->idx[2],
-                 &plan->n[2]);
+    if (gsub.p != NULL)
+        r = stage(&gsub, ls_sub, &rvrn, 1, &plan->idx[0], &plan->n[0]);
+    if (gsub.p != NULL && r == 0)
+        r = stage(&gsub, ls_sub, global_features, ng, &plan->idx[1],
+                  &plan->n[1]);
+    if (r == 0)
+        r = stage(&gpos, ls_pos, global_features, ng, &plan->idx[2],
+                  &plan->n[2]);
+    if (r != 0)
+        otl_plan_fini(plan);
+    return r;
 }
 
 void

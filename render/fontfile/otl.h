@@ -40,6 +40,7 @@ struct cf__otface {
     void *map;                /* the mapping to undo, or NULL */
     size_t map_len;
     bool usable;
+    bool has_base;
     bool bad;                 /* a read outside a table was attempted */
     otl_tab_t cmap, hmtx, gdef, gsub, gpos;
     size_t cmap_sub;          /* the chosen subtable in cmap */

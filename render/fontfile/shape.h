@@ -70,7 +70,20 @@ int cf__otface_open_mem(const unsigned char *data, size_t len,
                         unsigned index, cf__otface_t **out);
 void cf__otface_close(cf__otface_t *face);
 
+/* The same in storage of the caller's (cf__otface_size() bytes, aligned
+** as malloc aligns): a face that lives as long as the process, outside
+** the library's allocator; it never fails (an unreadable file gives a
+** face that is not usable); cf__otface_release unmaps the file. */
+size_t cf__otface_size(void);
+void cf__otface_open_at(cf__otface_t *face, const char *path,
+                        unsigned index);
+void cf__otface_release(cf__otface_t *face);
+
 bool cf__otface_usable(const cf__otface_t *face);
+
+/* Whether the face has a BASE table (a baseline other than HarfBuzz's
+** synthesised roman one, 0). */
+bool cf__otface_has_base(const cf__otface_t *face);
 
 /* The glyph of character c (0: none, as cmap's glyph 0). */
 unsigned cf__otface_glyph(const cf__otface_t *face, uint32_t c);

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""fontconfig and FreeType are opened at their first call, not at start.
+"""fontconfig and FreeType are opened at their first call, not at start;
+HarfBuzz only for a label the renderer's own shaper hands on.
 
     lazy-fonts.py CURVEFIG
 
@@ -8,8 +9,14 @@ A `curvefig` whose fontconfig and FreeType functions are trampolines
 rendered without loading them or what they bring (expat, libpng, brotli),
 as the loader reports the files it loads (LD_DEBUG=files); a figure with
 a label loads them and its PDF embeds its font; `--version` (which builds
-the font configuration) works.  Skipped (77) when the program is linked
-with the libraries (render/tool/meson.build: not x86-64).
+the font configuration) works.  Labels whose items are all simple
+(render/fontfile/shape.h: "$P_0$", "abc", "$x^2$ and text", Greek,
+Cyrillic, digits, ligatures, kerning pairs) are shaped by the renderer's
+own shaper: a figure of them renders in SVG and PDF without loading
+libharfbuzz, GLib, graphite2 or PCRE2 (render/backends/hb-lazy.c); a
+label with a combining mark, which that shaper hands on, loads HarfBuzz
+and renders.  Skipped (77) when the program is linked with the libraries
+(render/tool/meson.build: not x86-64).
 """
 import os
 import subprocess
@@ -23,19 +30,50 @@ LABEL = PLAIN.replace('"plain"', '"label"') + \
     'f:label({1, 1}, "$x^2$ and text", { anchor = "n" })\n'
 FONT_LIBRARIES = ("libfontconfig", "libfreetype", "libexpat", "libpng",
                   "libbrotli")
+SIMPLE = PLAIN.replace('"plain"', '"simple"') + "".join(
+    'f:label({%d, 1}, "%s", { anchor = "n" })\n' % (i, text)
+    for i, text in enumerate([
+        "$P_0$", "abc", "$x^2$ and text", "αβγ δ", "Привет, мир",
+        "0123 (x + y)", "fine office", "AV To"]))
+MARK = PLAIN.replace('"plain"', '"mark"') + \
+    'f:label({1, 1}, "e\\u{301}t\\u{E9}", { anchor = "n" })\n'
+HARFBUZZ = ("libharfbuzz", "libglib-2.0", "libgraphite2", "libpcre2")
 
 
-def loaded(tool, script, out):
-    """Render script to PDF; the objects the loader loaded."""
+def loaded(tool, script, out, fmt="pdf"):
+    """Render script (to PDF); the objects the loader loaded."""
     env = dict(os.environ, LD_DEBUG="files")
-    run = subprocess.run([tool, "render", script, "-o", out, "-f", "pdf"],
+    run = subprocess.run([tool, "render", script, "-o", out, "-f", fmt],
                          env=env, capture_output=True, text=True)
     if run.returncode != 0:
         sys.stderr.write(run.stderr[-2000:])
         raise RuntimeError("the render of %s failed (status %d)"
                            % (script, run.returncode))
-    return sorted({line.split("file=")[1].split()[0]
+    return sorted({os.path.basename(line.split("file=")[1].split()[0])
                    for line in run.stderr.splitlines() if "file=" in line})
+
+
+def harfbuzz_failures(tool, tmp):
+    """What the HarfBuzz half of the test finds wrong."""
+    failures = []
+    for name, text in (("simple", SIMPLE), ("mark", MARK)):
+        with open(os.path.join(tmp, name + ".lua"), "w") as f:
+            f.write(text)
+    for fmt in ("svg", "pdf"):
+        objs = loaded(tool, os.path.join(tmp, "simple.lua"), tmp, fmt)
+        early = [o for o in objs if o.startswith(HARFBUZZ)]
+        if early:
+            failures.append("simple labels (%s) loaded %s"
+                            % (fmt, ", ".join(early)))
+        if not any(o.startswith("libfreetype") for o in objs):
+            failures.append("simple labels (%s) did not load FreeType" % fmt)
+    objs = loaded(tool, os.path.join(tmp, "mark.lua"), tmp, "svg")
+    if not any(o.startswith("libharfbuzz") for o in objs):
+        failures.append("a combining mark did not load HarfBuzz")
+    with open(os.path.join(tmp, "mark.svg"), "rb") as f:
+        if b"<svg" not in f.read():
+            failures.append("the label with a mark did not render")
+    return failures
 
 
 def main(argv):
@@ -63,6 +101,8 @@ def main(argv):
         with open(os.path.join(tmp, "label.pdf"), "rb") as f:
             if b"/FontFile" not in f.read():
                 failures.append("the label's PDF embeds no font")
+        if not any(word.startswith("libharfbuzz") for word in linked):
+            failures += harfbuzz_failures(tool, tmp)
     version = subprocess.run([tool, "--version"], capture_output=True,
                              text=True)
     if version.returncode != 0 or "fonts:" not in version.stdout:
@@ -72,7 +112,8 @@ def main(argv):
         print("FAIL: " + f)
     if not failures:
         print("fonts opened on the first label: %d objects without labels, "
-              "%d with" % (len(plain), len(label)))
+              "%d with; HarfBuzz only for a combining mark"
+              % (len(plain), len(label)))
     return 1 if failures else 0
 
 

@@ -18,6 +18,9 @@
 ** script Latin, Greek, Cyrillic, Han, Hiragana, Katakana, Bopomofo or
 ** Common).
 */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,8 +28,11 @@
 #include <hb-ot.h>
 #include <hb.h>
 
+#include <cmocka.h>
+
 #include "curvefig/core.h"
 #include "shape.h"
+#include "testutil.h"
 
 static long accepted, handed, mismatches, extents_checked;
 static long by_script[8][3];   /* accepted, not simple text, refused */
@@ -258,15 +264,12 @@ replay_items(const char *path)
 
 /* ---- random strings ----------------------------------------------------- */
 
-static uint64_t rng = 0x2545F4914F6CDD1Dull;
+static tu_rng rng = { 0x2545F4914F6CDD1Dull };
 
 static unsigned
 rnd(unsigned n)
 {
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    return (unsigned)(rng % n);
+    return (unsigned)(tu_rng_next(&rng) % n);
 }
 
 static const char *const latin[] = {

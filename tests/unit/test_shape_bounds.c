@@ -9,22 +9,25 @@
 ** intact still shapes.  Faces and runs are freed (the allocator's count
 ** of live blocks back to its start).
 */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include <cmocka.h>
+
 #include "curvefig/core.h"
 #include "shape.h"
+#include "testutil.h"
 
-static uint64_t rng = 0x9E3779B97F4A7C15ull;
+static tu_rng rng = { 0x2545F4914F6CDD1Dull };
 
 static unsigned
 rnd(unsigned n)
 {
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    return (unsigned)(rng % n);
+    return (unsigned)(tu_rng_next(&rng) % n);
 }
 
 static unsigned char *

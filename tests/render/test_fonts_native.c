@@ -29,6 +29,7 @@
 #include "font-pango.h"
 #include "label-impl.h"
 #include "label-private.h"
+#include "testutil.h"
 
 static const char *corpus_path;
 
@@ -652,6 +653,45 @@ test_five_digits(void **state)
     }
 }
 
+/* Allocation failure (tu_fail_loop) in the native fonts' shaping of runs
+** the renderer's own shaper takes (ligatures, kerning, Greek, Cyrillic, a
+** script change) and one it hands to HarfBuzz (a combining mark): each
+** failure is a clean -1, nothing leaks. */
+static cf_status_t
+op_shape_native(cf_diag_t *diag)
+{
+    static const char *const texts[] = {
+        "office AV To", "P_0", "\xce\xb1\xce\xb2\xce\xb3 x",
+        "\xd0\x9f\xd1\x80\xd0\xb8 (1+2)", "e\xcc\x81t\xc3\xa9"
+    };
+    void *ctx = cf__native_fonts.open(cf__native_fonts.self), *run = NULL;
+    cf_status_t st = CF_STATUS_OK;
+    size_t i;
+    (void)diag;
+    if (ctx == NULL)
+        return CF_STATUS_NO_MEMORY;
+    for (i = 0; i < sizeof texts / sizeof texts[0] && st == CF_STATUS_OK;
+         i++) {
+        cf__font_req_t req = { "Latin Modern Roman", i == 2, false, 10,
+                               texts[i], strlen(texts[i]) };
+        cf__font_shape_t sh;
+        if (cf__native_fonts.shape(ctx, &req, &run, &sh) != 0)
+            st = CF_STATUS_NO_MEMORY;
+    }
+    cf__native_fonts.release(run);
+    cf__native_fonts.close(ctx);
+    return st;
+}
+
+static void
+test_out_of_memory(void **state)
+{
+    (void)state;
+    assert_int_equal(op_shape_native(NULL), CF_STATUS_OK);   /* faces made */
+    assert_true(tu_fail_loop("native fonts' shaping", op_shape_native,
+                             false) > 0);
+}
+
 int
 main(int argc, char **argv)
 {
@@ -664,6 +704,7 @@ main(int argc, char **argv)
         cmocka_unit_test(test_outlines_where_drawn),
         cmocka_unit_test(test_shown_with_layout_font),
         cmocka_unit_test(test_five_digits),
+        cmocka_unit_test(test_out_of_memory),
     };
     if (argc < 2) {
         fprintf(stderr, "usage: %s fonts-corpus.txt [LOCALE]\n", argv[0]);

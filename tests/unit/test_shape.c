@@ -35,7 +35,8 @@
 #include "testutil.h"
 
 static long accepted, handed, mismatches, extents_checked;
-static long by_script[8][3];   /* accepted, not simple text, refused */
+static long by_script[8][4];   /* accepted, not simple text, refused, of
+                                  which with every character in the face */
 static int cur_alpha = 7;
 
 static hb_bool_t
@@ -98,12 +99,31 @@ simple_text(const char *text, size_t off, size_t len)
     return ok;
 }
 
-typedef struct face {
+typedef struct face face_t;
+static bool all_mapped(const face_t *f, const char *s, size_t len);
+
+struct face {
     const char *file;
     unsigned index;
     hb_face_t *hb;
     cf__otface_t *own;
-} face_t;
+};
+
+/* Whether the face's cmap has every character of s[0..len). */
+static bool
+all_mapped(const face_t *f, const char *s, size_t len)
+{
+    hb_buffer_t *b = hb_buffer_create();
+    unsigned n, i;
+    bool ok = true;
+    hb_glyph_info_t *info;
+    hb_buffer_add_utf8(b, s, (int)len, 0, (int)len);
+    info = hb_buffer_get_glyph_infos(b, &n);
+    for (i = 0; i < n && ok; i++)
+        ok = cf__otface_glyph(f->own, info[i].codepoint) != 0;
+    hb_buffer_destroy(b);
+    return ok;
+}
 
 static face_t faces[64];
 static size_t nfaces;
@@ -173,6 +193,7 @@ compare(face_t *f, int xs, int ys, float slant, hb_script_t script,
     }
     if (r == 1) {
         by_script[cur_alpha][2]++;
+        by_script[cur_alpha][3] += all_mapped(f, text + off, len);
         handed++;
         hb_font_destroy(font);
         return same;
@@ -409,11 +430,13 @@ main(int argc, char **argv)
     printf("random strings: %ld accepted\n", accepted - before);
     for (i = 0; i < sizeof alphabets / sizeof alphabets[0]; i++)
         printf("  script %c%c%c%c: %ld accepted, %ld not given (characters "
-               "outside the fast path), %ld refused by the shaper\n",
+               "outside the fast path), %ld refused by the shaper (%ld of "
+               "them with every character in the face)\n",
                (char)(alphabets[i].script >> 24),
                (char)(alphabets[i].script >> 16),
                (char)(alphabets[i].script >> 8), (char)alphabets[i].script,
-               by_script[i][0], by_script[i][1], by_script[i][2]);
+               by_script[i][0], by_script[i][1], by_script[i][2],
+               by_script[i][3]);
     for (i = 0; i < nfaces; i++)
         printf("face %s %u: %s\n", faces[i].file, faces[i].index,
                cf__otface_usable(faces[i].own) ? "usable" : "not usable");

@@ -676,18 +676,28 @@ const cf__backend_t cf__svgw_backend = {
 cf_status_t
 cf__svgw_fault(const cf__svgw_t *w, const char *what, cf_diag_t *diag)
 {
+    return cf__writer_fault(w->fault, w->bad_value, w->bad_name,
+                            w->bad_index, "SVG", what, diag);
+}
+
+cf_status_t
+cf__writer_fault(cf__svgw_fault_kind_t fault, double bad_value,
+                 const char *bad_name, size_t bad_index, const char *format,
+                 const char *what, cf_diag_t *diag)
+{
     char where[96] = "";
-    switch (w->fault) {
+    switch (fault) {
     case CF__SVGW_FAULT_NUMBER:
-        if (w->bad_name != NULL)
-            snprintf(where, sizeof where, " of %.40s %zu", w->bad_name,
-                     w->bad_index + 1);
+        if (bad_name != NULL)
+            snprintf(where, sizeof where, " of %.40s %zu", bad_name,
+                     bad_index + 1);
         return cf_diag_set(diag, CF_STATUS_INVALID_ARG,
-                           w->bad_name != NULL ? (long)w->bad_index : -1,
-                           "%s: a coordinate%s is %g, %s; SVG holds numbers "
-                           "within 1e9 bp", what, where, w->bad_value,
-                           isfinite(w->bad_value) ? "too far from the page"
-                                                  : "not a finite number");
+                           bad_name != NULL ? (long)bad_index : -1,
+                           "%s: a coordinate%s is %g, %s; %s holds numbers "
+                           "within 1e9 bp", what, where, bad_value,
+                           isfinite(bad_value) ? "too far from the page"
+                                               : "not a finite number",
+                           format);
     case CF__SVGW_FAULT_GLYPHS:
         return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
                            "%s: the outlines of a label's glyphs could not "

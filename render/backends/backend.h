@@ -7,8 +7,9 @@
 ** change.
 **
 ** Backends:
-**   cairo (render/backends/backend-cairo.c): PDF, PS, EPS and PNG
-**     surfaces;
+**   cairo (render/backends/backend-cairo.c): PS, EPS and PNG surfaces;
+**   pdf writer (render/backends/backend-pdfw.c, pdf-doc.c): every PDF
+**     figure;
 **   dump  (render/backends/backend-dump.c): one line of text per operation,
 **     deterministic, for tests;
 **   pgf   (render/backends/backend-pgf.c): a pgfpicture for TeX, labels as TeX
@@ -17,7 +18,8 @@
 **     live view, overlay animations, the course pages' module);
 **   measure (render/backends/measure.c): the layout's ink questions.
 ** Drawing backends receive markers as paths (render/dlist/marker.c), and
-** meshes as flat pieces unless they draw mesh gradients (cairo).
+** meshes as flat pieces unless they draw mesh gradients (cairo, the PDF
+** writer).
 */
 #ifndef CURVEFIG_RENDER_BACKEND_H
 #define CURVEFIG_RENDER_BACKEND_H
@@ -204,6 +206,77 @@ extern const cf__backend_t cf__svgw_backend;
 ** too deep), its status. */
 cf_status_t cf__svgw_fault(const cf__svgw_t *w, const char *what,
                            cf_diag_t *diag);
+/* The same for any vector writer of a `format` ("SVG", "PDF") that keeps
+** the SVG writer's faults. */
+cf_status_t cf__writer_fault(cf__svgw_fault_kind_t fault, double bad_value,
+                             const char *bad_name, size_t bad_index,
+                             const char *format, const char *what,
+                             cf_diag_t *diag);
+
+/* ---- the PDF writer ---------------------------------------------------- */
+
+/* Its functions; ctx is a cf__pdfw_t with outline and outline_ctx set (as
+** the SVG writer's: a label's outlines as SVG path data) and the rest
+** zero.  Each begin_page .. end_page is one page of the document (an
+** overlay step); cf__pdfw_document then writes the whole document, and
+** cf__pdfw_fini releases the writer.  end_page fails as the SVG writer's
+** does (cf__pdfw_fault says why, with the SVG writer's words). */
+#define CF__PDFW_DEPTH CF__SVGW_DEPTH
+typedef struct cf__pdfw_gs {
+    double fill[3], stroke[3];   /* colours set (-1: unknown) */
+    int ca, CA;                  /* alpha resources set (-1: 1, unset) */
+    double width;                /* -1: unknown */
+    int cap, join;               /* -1: unknown */
+    bool dashed;                 /* a dash is set */
+} cf__pdfw_gs_t;
+typedef struct cf__pdfw {
+    int (*outline)(void *outline_ctx, const cf__text_op_t *t,
+                   struct cf__buf *d);
+    void *outline_ctx;
+    /* the writer's own */
+    double width, height;        /* the page's (every page's), bp */
+    const char *lang;
+    struct cf__buf content;      /* the page being drawn, uncompressed */
+    struct cf__buf *pages;       /* each page's content, compressed */
+    size_t npages, pages_cap;
+    struct cf__pdfw_shading {
+        double box[4];           /* the vertices' range: x0 y0 x1 y1 */
+        struct cf__buf data;     /* the vertices, uncompressed */
+    } *shadings;                 /* each mesh's: /ShN */
+    size_t nshadings, shadings_cap;
+    double *alphas;              /* the distinct opacities: /aN /AN */
+    size_t nalphas, alphas_cap;
+    struct {
+        bool group;              /* an element's group, else a clip scope */
+        bool opened;             /* it wrote q */
+        const char *name;        /* an element's name and index */
+        size_t index;
+        double clip[4];          /* x0 y0 x1 y1 inside it */
+        cf__pdfw_gs_t gs;        /* the state when it was opened */
+    } stack[CF__PDFW_DEPTH];
+    int depth;
+    double clip[4];              /* the visible box: x0 y0 x1 y1 */
+    cf__pdfw_gs_t gs;            /* the graphics state in the stream */
+    bool bad;
+    cf__svgw_fault_kind_t fault;
+    double bad_value;
+    const char *bad_name;
+    size_t bad_index;
+} cf__pdfw_t;
+
+extern const cf__backend_t cf__pdfw_backend;
+
+/* The document of w's pages (render/backends/pdf-doc.c) into out (empty):
+** info (title and caption as /Title and /Subject, may be NULL; date, the
+** creation and modification date as "YYYY-MM-DDTHH:MM:SSZ"), the tagged
+** structure (docs/accessibility.md), the classic xref table; the same
+** bytes for the same pages.  0, or -1 out of memory (out empty). */
+int cf__pdfw_document(cf__pdfw_t *w, const char *title,
+                      const char *caption, const char *date,
+                      struct cf__buf *out);
+void cf__pdfw_fini(cf__pdfw_t *w);
+/* Why end_page of w failed, as cf__svgw_fault. */
+cf_status_t cf__pdfw_fault(const cf__pdfw_t *w, cf_diag_t *diag);
 
 /* The accessible text of an SVG document (docs/accessibility.md): the
 ** attributes of its <svg> element (role="img", aria-labelledby naming

@@ -104,17 +104,5 @@ cf_status_t cf__temp_open(const char *path, int *fd, char **tmp,
 ** memory. */
 int cf__eps_from_ps(const cf__buf_t *ps, cf__buf_t *eps);
 
-/* The tagged PDF cairo 1.16 wrote, with what its tag API cannot write
-** (render/output/pdf-tags.c): /Alt (alt, then desc) on every Figure
-** element, /Lang (lang, may be NULL) and /DisplayDocTitle in the catalog.
-** 0: out holds it; 1: pdf is not in cairo 1.16's layout or has no Figure
-** (out empty: use pdf as it is); -1: out of memory. */
-/* The first needle in [h, end), or NULL (pdf-tags.c). */
-const unsigned char *cf__bytes_find(const unsigned char *h,
-                                    const unsigned char *end,
-                                    const char *needle);
-
-int cf__pdf_tag(const cf__buf_t *pdf, const char *alt, const char *desc,
-                const char *lang, cf__buf_t *out);
 
 #endif

@@ -1,0 +1,222 @@
+/*
+** Which subroutines a glyph calls (render/fontfile/sfnt.h): a Type 2
+** charstring (Adobe Technical Note #5177) interpreted as far as the
+** calls need.  Operands go on a stack of 48; the operators that take
+** them are skipped, except
+**   callsubr (10), callgsubr (29)  the subroutine numbered by the top
+**        operand plus the bias (107 below 1240 subroutines, 1131 below
+**        33900, else 32768), marked used and followed, 10 calls deep at
+**        most (the Type 2 limit);
+**   return (11), endchar (14)  back to the caller, the glyph's end;
+**   hstem, vstem, hstemhm, vstemhm (1, 3, 18, 23) and the operands left
+**        before hintmask, cntrmask (19, 20): a pair each, the stem hints,
+**        whose count sets the bytes of the masks that follow those two;
+**   the arithmetic a subroutine number could be computed by (add, sub,
+**        mul, div, neg, abs, drop, exch, dup); the rest clear the stack.
+** A glyph that calls outside its INDEX, nests deeper or overflows the
+** stack is damaged (1).  Each glyph's work is bounded: at most 2^22
+** charstring bytes interpreted, calls included, so that subroutines that
+** call each other many times over cannot stall the scan.
+*/
+#include <math.h>
+
+#include "sfnt.h"
+
+#define MAX_DEPTH 10
+#define MAX_WORK (1L << 22)
+
+typedef struct scan {
+    cf__ff_t *f;
+    unsigned gid;
+    cf__cff_subrs_t *global, *local;
+    double stack[CF__CFF_MAX_ARGS];
+    size_t sp;
+    size_t stems;
+    long work;
+    int ended;
+} scan_t;
+
+static unsigned
+bias(size_t count)
+{
+    return count < 1240 ? 107 : count < 33900 ? 1131 : 32768;
+}
+
+static int run(scan_t *s, const unsigned char *p, size_t len, int depth);
+
+static int
+call(scan_t *s, cf__cff_subrs_t *subrs, int depth, const char *kind)
+{
+    double v;
+    long k;
+    size_t pos, len;
+    if (s->sp == 0)
+        return cf__ff_fail(s->f, "glyph %u: %s with no operand", s->gid,
+                           kind);
+    v = s->stack[--s->sp];
+    if (subrs == NULL || subrs->index == NULL)
+        return cf__ff_fail(s->f, "glyph %u: %s, and the font has no such "
+                           "subroutines", s->gid, kind);
+    if (!(fabs(v) < 1e6))
+        return cf__ff_fail(s->f, "glyph %u: %s %g", s->gid, kind, v);
+    k = (long)v + (long)bias(subrs->index->count);
+    if (k < 0 || (size_t)k >= subrs->index->count)
+        return cf__ff_fail(s->f, "glyph %u: %s %ld of %zu", s->gid, kind,
+                           k, subrs->index->count);
+    if (depth >= MAX_DEPTH)
+        return cf__ff_fail(s->f, "glyph %u: subroutines nested deeper than "
+                           "%d", s->gid, MAX_DEPTH);
+    if (cf__cff_index_item(s->f, subrs->index, (size_t)k, &pos, &len))
+        return 1;
+    subrs->used[k] = 1;
+    return run(s, subrs->index->t + pos, len, depth + 1);
+}
+
+/* An arithmetic operator (12 x) on the stack; 0 when x is none of
+** those followed (the stack is then cleared). */
+static int
+arith(scan_t *s, unsigned x)
+{
+    double *st = s->stack;
+    size_t n = s->sp;
+    switch (x) {
+    case 9:   /* abs */
+    case 14:  /* neg */
+        if (n < 1)
+            return 0;
+        st[n - 1] = x == 9 ? fabs(st[n - 1]) : -st[n - 1];
+        return 1;
+    case 10: case 11: case 24: case 12:   /* add sub mul div */
+        if (n < 2)
+            return 0;
+        st[n - 2] = x == 10 ? st[n - 2] + st[n - 1] :
+                    x == 11 ? st[n - 2] - st[n - 1] :
+                    x == 24 ? st[n - 2] * st[n - 1] :
+                    st[n - 1] != 0 ? st[n - 2] / st[n - 1] : 0;
+        s->sp--;
+        return 1;
+    case 18:  /* drop */
+        if (n < 1)
+            return 0;
+        s->sp--;
+        return 1;
+    case 28: { /* exch */
+        double t;
+        if (n < 2)
+            return 0;
+        t = st[n - 1];
+        st[n - 1] = st[n - 2];
+        st[n - 2] = t;
+        return 1;
+    }
+    case 27:  /* dup */
+        if (n < 1 || n >= CF__CFF_MAX_ARGS)
+            return 0;
+        st[n] = st[n - 1];
+        s->sp++;
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+static int
+run(scan_t *s, const unsigned char *p, size_t len, int depth)
+{
+    size_t i = 0;
+    while (i < len && !s->ended) {
+        unsigned b0 = p[i];
+        if (++s->work > MAX_WORK)
+            return cf__ff_fail(s->f, "glyph %u: the charstring does not "
+                               "end within %ld steps", s->gid, MAX_WORK);
+        if (b0 >= 32 || b0 == 28) {
+            double v;
+            size_t need = b0 == 28 ? 3 : b0 == 255 ? 5 : b0 >= 247 ? 2 : 1;
+            if (len - i < need)
+                return cf__ff_fail(s->f, "glyph %u: a charstring ends "
+                                   "inside a number", s->gid);
+            if (b0 == 28)
+                v = cf__ff_s16(p + i + 1);
+            else if (b0 == 255)
+                v = (int32_t)cf__ff_u32(p + i + 1) / 65536.0;
+            else if (b0 >= 251)
+                v = -((double)b0 - 251) * 256.0 - p[i + 1] - 108;
+            else if (b0 >= 247)
+                v = ((double)b0 - 247) * 256.0 + p[i + 1] + 108;
+            else
+                v = (double)b0 - 139;
+            if (s->sp >= CF__CFF_MAX_ARGS)
+                return cf__ff_fail(s->f, "glyph %u: more than %d operands "
+                                   "on the stack", s->gid,
+                                   CF__CFF_MAX_ARGS);
+            s->stack[s->sp++] = v;
+            i += need;
+            continue;
+        }
+        i++;
+        switch (b0) {
+        case 1: case 3: case 18: case 23:   /* stem hints */
+            s->stems += s->sp / 2;
+            s->sp = 0;
+            break;
+        case 19: case 20: {                 /* hintmask, cntrmask */
+            size_t bytes;
+            s->stems += s->sp / 2;
+            s->sp = 0;
+            bytes = (s->stems + 7) / 8;
+            if (len - i < bytes)
+                return cf__ff_fail(s->f, "glyph %u: a charstring ends "
+                                   "inside a hint mask", s->gid);
+            i += bytes;
+            break;
+        }
+        case 10:
+            if (call(s, s->local, depth, "callsubr"))
+                return 1;
+            break;
+        case 29:
+            if (call(s, s->global, depth, "callgsubr"))
+                return 1;
+            break;
+        case 11:
+            return 0;
+        case 14:
+            /* endchar with 4 operands more than the width: seac */
+            if (s->sp >= 4)
+                return cf__ff_fail(s->f, "glyph %u: an accented character "
+                                   "made by endchar (seac), which a "
+                                   "CID-keyed subset cannot hold", s->gid);
+            s->ended = 1;
+            return 0;
+        case 12:
+            if (i >= len)
+                return cf__ff_fail(s->f, "glyph %u: a charstring ends "
+                                   "inside an operator", s->gid);
+            if (!arith(s, p[i]))
+                s->sp = 0;
+            i++;
+            break;
+        default:
+            s->sp = 0;
+            break;
+        }
+    }
+    return 0;
+}
+
+int
+cf__cff_scan_glyph(cf__ff_t *f, const unsigned char *cs, size_t len,
+                   unsigned gid, cf__cff_subrs_t *global,
+                   cf__cff_subrs_t *local)
+{
+    scan_t s;
+    s.f = f;
+    s.gid = gid;
+    s.global = global;
+    s.local = local;
+    s.sp = 0;
+    s.stems = 0;
+    s.work = 0;
+    s.ended = 0;
+    return run(&s, cs, len, 0);
+}

@@ -1,0 +1,564 @@
+/*
+** The font subsetter (render/fontfile/) against FreeType, an independent
+** reader of both formats.  For each font the renderer uses (skipped when
+** not installed) and several glyph sets (the glyphs of "P_0 ... P_7" by
+** FreeType's cmap, seeded random sets, TrueType composites, every glyph of
+** a small font), the subset is loaded by FT_New_Memory_Face and every
+** glyph it holds must have the original's unscaled, unhinted outline:
+** the same points, tags and contours.  A CFF subset must be CID-keyed
+** with CID = the original glyph id; a TrueType subset keeps glyph ids,
+** its glyphs not kept (nor components of kept ones) empty.  Advances are
+** FreeType's unscaled advances; the one-glyph subset of Latin Modern
+** Math (a 652 KB CFF table) is small.
+**
+** Damaged fonts (every font truncated at many lengths, bytes flipped at
+** seeded random offsets) give 0 or 1, never a crash (the ASan build runs
+** this); an out-of-range glyph id gives 1 naming it; allocation failure
+** gives -1 and leaks nothing (tu_fail_loop).
+*/
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cmocka.h>
+
+#include <ft2build.h>
+#include FT_FREETYPE_H
+#include FT_CID_H
+#include FT_OUTLINE_H
+
+#include "fontfile-private.h"
+#include "testutil.h"
+
+#define LM "/usr/share/texmf/fonts/opentype/public/lm/"
+#define LM_ROMAN LM "lmroman10-regular.otf"
+#define LM_ITALIC LM "lmroman10-italic.otf"
+#define LM_SEVEN LM "lmroman7-regular.otf"
+#define LM_MATH "/usr/share/texmf/fonts/opentype/public/lm-math/" \
+                "latinmodern-math.otf"
+#define CMU_RM "/usr/share/fonts/truetype/cmu/cmunrm.ttf"
+#define CMU_TI "/usr/share/fonts/truetype/cmu/cmunti.ttf"
+#define NOTO_CJK "/usr/share/fonts/opentype/noto/NotoSerifCJK-Regular.ttc"
+
+typedef struct font {
+    const char *path;
+    unsigned index;
+} font_t;
+
+static const font_t fonts[] = {
+    { LM_ROMAN, 0 }, { LM_ITALIC, 0 }, { LM_SEVEN, 0 }, { LM_MATH, 0 },
+    { CMU_RM, 0 }, { CMU_TI, 0 }, { NOTO_CJK, 0 }, { NOTO_CJK, 2 },
+};
+#define NFONTS (sizeof fonts / sizeof fonts[0])
+
+static FT_Library ft;
+
+static int
+setup(void **state)
+{
+    (void)state;
+    return FT_Init_FreeType(&ft) != 0;
+}
+
+static int
+teardown(void **state)
+{
+    (void)state;
+    FT_Done_FreeType(ft);
+    return 0;
+}
+
+/* The file mapped copy-on-write (the flips of test_damaged stay in this
+** process), or NULL when it is not installed. */
+static unsigned char *
+map_copy(const char *path, size_t *len)
+{
+    struct stat st;
+    void *m;
+    int fd = open(path, O_RDONLY);
+    if (fd < 0)
+        return NULL;
+    assert_int_equal(fstat(fd, &st), 0);
+    assert_true(st.st_size > 0);
+    m = mmap(NULL, (size_t)st.st_size, PROT_READ | PROT_WRITE, MAP_PRIVATE,
+             fd, 0);
+    close(fd);
+    assert_true(m != MAP_FAILED);
+    *len = (size_t)st.st_size;
+    return m;
+}
+
+static int
+installed(const char *path)
+{
+    FILE *f = fopen(path, "rb");
+    if (f != NULL)
+        fclose(f);
+    return f != NULL;
+}
+
+/* Glyph g's outline loaded unscaled and unhinted; advance in *adv. */
+static FT_Outline *
+outline(FT_Face face, unsigned g, long *adv)
+{
+    FT_Error e = FT_Load_Glyph(face, g, FT_LOAD_NO_SCALE |
+                               FT_LOAD_NO_HINTING);
+    if (e != 0)
+        fail_msg("FreeType cannot load glyph %u (error %d)", g, e);
+    if (adv != NULL)
+        *adv = face->glyph->metrics.horiAdvance;
+    return &face->glyph->outline;
+}
+
+/* The outline of glyph a of fa equals that of glyph b of fb. */
+static void
+same_outline(FT_Face fa, unsigned a, FT_Face fb, unsigned b)
+{
+    FT_Outline *o = outline(fa, a, NULL), copy;
+    int i;
+    copy.n_points = o->n_points;
+    copy.n_contours = o->n_contours;
+    copy.points = malloc(sizeof *copy.points * (size_t)(o->n_points + 1));
+    copy.tags = malloc((size_t)o->n_points + 1);
+    copy.contours = malloc(sizeof *copy.contours *
+                           (size_t)(o->n_contours + 1));
+    assert_true(copy.points && copy.tags && copy.contours);
+    memcpy(copy.points, o->points, sizeof *o->points * (size_t)o->n_points);
+    memcpy(copy.tags, o->tags, (size_t)o->n_points);
+    memcpy(copy.contours, o->contours,
+           sizeof *o->contours * (size_t)o->n_contours);
+    o = outline(fb, b, NULL);
+    if (o->n_points != copy.n_points || o->n_contours != copy.n_contours)
+        fail_msg("glyph %u: %d points %d contours, the subset's %u: %d "
+                 "and %d", a, copy.n_points, copy.n_contours, b,
+                 o->n_points, o->n_contours);
+    for (i = 0; i < o->n_points; i++)
+        if (o->points[i].x != copy.points[i].x ||
+            o->points[i].y != copy.points[i].y ||
+            o->tags[i] != copy.tags[i])
+            fail_msg("glyph %u point %d: (%ld, %ld) tag %d, the subset's "
+                     "(%ld, %ld) tag %d", a, i, (long)copy.points[i].x,
+                     (long)copy.points[i].y, copy.tags[i],
+                     (long)o->points[i].x, (long)o->points[i].y,
+                     o->tags[i]);
+    for (i = 0; i < o->n_contours; i++)
+        assert_int_equal(o->contours[i], copy.contours[i]);
+    free(copy.points);
+    free(copy.tags);
+    free(copy.contours);
+}
+
+static int
+has(const unsigned *gids, size_t n, unsigned g)
+{
+    size_t i;
+    for (i = 0; i < n; i++)
+        if (gids[i] == g)
+            return 1;
+    return g == 0;
+}
+
+/* Subset gids of face orig (of file fo), check it against FreeType;
+** the program's size. */
+static size_t
+check_subset(const font_t *fo, FT_Face orig, const unsigned *gids, size_t n)
+{
+    cf__fontfile_subset_t out;
+    char why[256];
+    FT_Face sub;
+    size_t i, size;
+    long adv;
+    int r = cf__fontfile_subset(fo->path, fo->index, gids, n, &out, why,
+                                sizeof why);
+    if (r != 0)
+        fail_msg("%s: %d: %s", fo->path, r, why);
+    assert_true(out.units_per_em == orig->units_per_EM);
+    assert_true(out.ps_name[0] != '\0');
+    if (FT_New_Memory_Face(ft, out.program.data, (FT_Long)out.program.size,
+                           0, &sub) != 0)
+        fail_msg("%s: FreeType cannot open the subset", fo->path);
+    for (i = 0; i < n; i++) {
+        (void)outline(orig, gids[i], &adv);
+        assert_int_equal(out.advances[i], adv);
+    }
+    if (out.kind == CF__FONTFILE_CFF) {
+        /* glyph i of the subset has CID keep[i] (ascending); FreeType,
+           like a PDF viewer, loads a CID-keyed CFF's glyphs by CID */
+        FT_Bool cid = 0;
+        unsigned *keep = malloc(sizeof *keep * (n + 1)), absent = 1;
+        size_t nkeep = 0;
+        assert_non_null(keep);
+        for (i = 0; i < (size_t)orig->num_glyphs && nkeep <= n; i++)
+            if (has(gids, n, (unsigned)i))
+                keep[nkeep++] = (unsigned)i;
+        assert_int_equal(FT_Get_CID_Is_Internally_CID_Keyed(sub, &cid), 0);
+        assert_true(cid);
+        for (i = 0; i < nkeep; i++) {
+            FT_UInt c = 0;
+            assert_int_equal(FT_Get_CID_From_Glyph_Index(sub, (FT_UInt)i,
+                                                         &c), 0);
+            if (c != keep[i])
+                fail_msg("subset glyph %zu: CID %u, not glyph id %u", i, c,
+                         keep[i]);
+            same_outline(orig, c, sub, c);
+        }
+        /* and no other glyph */
+        while (absent < (unsigned)orig->num_glyphs && has(gids, n, absent))
+            absent++;
+        if (absent < (unsigned)orig->num_glyphs)
+            assert_int_not_equal(FT_Load_Glyph(sub, absent,
+                                               FT_LOAD_NO_SCALE), 0);
+        free(keep);
+    } else {
+        assert_int_equal(sub->num_glyphs, orig->num_glyphs);
+        for (i = 0; i < (size_t)orig->num_glyphs; i++) {
+            if (has(gids, n, (unsigned)i)) {
+                same_outline(orig, (unsigned)i, sub, (unsigned)i);
+            } else {
+                /* not kept: empty, unless a component of a kept glyph */
+                FT_Outline *o = outline(sub, (unsigned)i, NULL);
+                if (o->n_points != 0)
+                    same_outline(orig, (unsigned)i, sub, (unsigned)i);
+            }
+        }
+    }
+    FT_Done_Face(sub);
+    size = out.program.size;
+    cf__fontfile_subset_fini(&out);
+    return size;
+}
+
+/* The glyphs of text by the face's cmap (those it has). */
+static size_t
+text_glyphs(FT_Face face, const char *text, unsigned *gids)
+{
+    size_t n = 0;
+    for (; *text; text++) {
+        FT_UInt g = FT_Get_Char_Index(face, (unsigned char)*text);
+        if (g != 0)
+            gids[n++] = g;
+    }
+    return n;
+}
+
+static FT_Face
+open_face(const font_t *fo)
+{
+    FT_Face face;
+    if (FT_New_Face(ft, fo->path, fo->index, &face) != 0)
+        return NULL;
+    return face;
+}
+
+static void
+test_outlines(void **state)
+{
+    static const unsigned cjk[] = { 0x4e2d, 0x6587, 0x5b57, 0x4f53, 0x6f22,
+        0x3042, 0xac00, 0x9f98 };
+    size_t f, tested = 0;
+    (void)state;
+    for (f = 0; f < NFONTS; f++) {
+        const font_t *fo = &fonts[f];
+        FT_Face face = open_face(fo);
+        unsigned gids[64];
+        size_t n, i, size1, size8;
+        tu_rng rng;
+        clock_t t0;
+        if (face == NULL) {
+            print_message("%s (face %u): not installed\n", fo->path,
+                          fo->index);
+            continue;
+        }
+        tested++;
+        /* one glyph, then the glyphs of "P_0 ... P_7" */
+        n = text_glyphs(face, "P", gids);
+        assert_int_equal(n, 1);
+        t0 = clock();
+        size1 = check_subset(fo, face, gids, 1);
+        n = text_glyphs(face, "P_01234567 P_0", gids);
+        assert_true(n >= 8);
+        for (i = 0; i < sizeof cjk / sizeof cjk[0]; i++) {
+            FT_UInt g = FT_Get_Char_Index(face, cjk[i]);
+            if (g != 0)
+                gids[n++] = g;
+        }
+        size8 = check_subset(fo, face, gids, n);
+        print_message("%-60s face %u: %5zu bytes for 1 glyph, %6zu for "
+                      "%zu (%.3f s)\n", fo->path, fo->index, size1, size8,
+                      n, (double)(clock() - t0) / CLOCKS_PER_SEC);
+        if (strcmp(fo->path, LM_MATH) == 0)
+            /* the header, Top DICT, ~4 KB of emptied subroutine INDEXes
+               (LM Math's global and local Subrs have ~1,300 entries of
+               one byte and a 2-byte offset each), one charstring */
+            assert_true(size1 < 8192);
+        /* seeded random sets */
+        tu_rng_seed(&rng, 20261205 + f);
+        for (i = 0; i < 3; i++) {
+            size_t k, m = 1 + (size_t)(tu_rng_u01(&rng) * 40);
+            for (k = 0; k < m; k++)
+                gids[k] = (unsigned)(tu_rng_u01(&rng) * face->num_glyphs);
+            check_subset(fo, face, gids, m);
+        }
+        FT_Done_Face(face);
+    }
+    if (tested == 0)
+        skip();
+}
+
+/* Composite TrueType glyphs: their components kept, loading equal. */
+static void
+test_composites(void **state)
+{
+    static const char *const paths[] = { CMU_RM, CMU_TI };
+    size_t p, tested = 0;
+    (void)state;
+    for (p = 0; p < 2; p++) {
+        font_t fo = { paths[p], 0 };
+        FT_Face face = open_face(&fo);
+        unsigned gids[12];
+        size_t n = 0;
+        long g;
+        if (face == NULL)
+            continue;
+        tested++;
+        for (g = 1; g < face->num_glyphs && n < 12; g++) {
+            assert_int_equal(FT_Load_Glyph(face, (FT_UInt)g,
+                                           FT_LOAD_NO_SCALE |
+                                           FT_LOAD_NO_RECURSE), 0);
+            if (face->glyph->format == FT_GLYPH_FORMAT_COMPOSITE)
+                gids[n++] = (unsigned)g;
+        }
+        assert_true(n > 0);
+        check_subset(&fo, face, gids, n);
+        FT_Done_Face(face);
+    }
+    if (tested == 0)
+        skip();
+}
+
+/* Every glyph of a small font (LM Roman 7, CMU Serif). */
+static void
+test_all_glyphs(void **state)
+{
+    static const font_t all[] = { { LM_SEVEN, 0 }, { CMU_RM, 0 } };
+    size_t f, tested = 0;
+    (void)state;
+    for (f = 0; f < 2; f++) {
+        FT_Face face = open_face(&all[f]);
+        unsigned *gids;
+        size_t i, size;
+        if (face == NULL)
+            continue;
+        tested++;
+        gids = malloc(sizeof *gids * (size_t)face->num_glyphs);
+        assert_non_null(gids);
+        for (i = 0; i < (size_t)face->num_glyphs; i++)
+            gids[i] = (unsigned)(face->num_glyphs - 1 - (long)i);
+        size = check_subset(&all[f], face, gids, (size_t)face->num_glyphs);
+        print_message("%s: all %ld glyphs, %zu bytes\n", all[f].path,
+                      face->num_glyphs, size);
+        free(gids);
+        FT_Done_Face(face);
+    }
+    if (tested == 0)
+        skip();
+}
+
+/* Where table tag of face index begins in the file (0: not found). */
+static size_t
+table_at(const unsigned char *d, size_t len, unsigned index, const char *tag)
+{
+    size_t at = 0, n, i;
+    if (len < 12)
+        return 0;
+    if (memcmp(d, "ttcf", 4) == 0) {
+        at = (size_t)d[12 + 4 * index] << 24 | d[13 + 4 * index] << 16 |
+             d[14 + 4 * index] << 8 | d[15 + 4 * index];
+    }
+    n = (size_t)d[at + 4] << 8 | d[at + 5];
+    for (i = 0; i < n; i++) {
+        const unsigned char *r = d + at + 12 + 16 * i;
+        if (memcmp(r, tag, 4) == 0)
+            return (size_t)r[8] << 24 | r[9] << 16 | r[10] << 8 | r[11];
+    }
+    return 0;
+}
+
+/* One subset of damaged bytes: 0, or 1 with a message and nothing out. */
+static int
+damaged(const unsigned char *d, size_t len, unsigned index)
+{
+    static const unsigned gids[] = { 1, 2, 3, 40, 41, 7, 300 };
+    cf__fontfile_subset_t out;
+    char why[256];
+    int r = cf__fontfile_subset_mem(d, len, "damaged", index, gids, 7, &out,
+                                    why, sizeof why);
+    if (r != 0 && r != 1)
+        fail_msg("damaged font: %d", r);
+    if (r == 1) {
+        assert_true(strncmp(why, "damaged: ", 9) == 0 && why[9] != '\0');
+        assert_null(out.program.data);
+        assert_null(out.advances);
+    }
+    cf__fontfile_subset_fini(&out);
+    return r;
+}
+
+static void
+test_damaged(void **state)
+{
+    size_t f, tested = 0;
+    (void)state;
+    for (f = 0; f < NFONTS; f++) {
+        size_t len, i, refused = 0, runs = 0, outl;
+        unsigned char *d = map_copy(fonts[f].path, &len);
+        tu_rng rng;
+        if (d == NULL)
+            continue;
+        tested++;
+        outl = table_at(d, len, fonts[f].index, "CFF ");
+        if (outl == 0)
+            outl = table_at(d, len, fonts[f].index, "glyf");
+        assert_int_equal(damaged(d, len, fonts[f].index), 0);
+        tu_rng_seed(&rng, 1205 + f);
+        /* truncated: the first bytes one by one, then across the file */
+        for (i = 0; i < 300; i++, runs++) {
+            size_t cut = i < 64 ? i : i < 200 ? len / 136 * (i - 64) :
+                         (size_t)(tu_rng_u01(&rng) * (double)len);
+            refused += (size_t)damaged(d, cut, fonts[f].index);
+        }
+        /* a byte changed: in the first 64 KB, in the outline table's
+           first 16 KB (its INDEXes, DICTs, loca'd glyphs), anywhere */
+        for (i = 0; i < 600; i++, runs++) {
+            size_t span = i < 200 ? 65536 : i < 400 ? 16384 : len;
+            size_t at = (i < 200 ? 0 : i < 400 ? outl : 0) +
+                        (size_t)(tu_rng_u01(&rng) * (double)span);
+            unsigned char keep;
+            if (at >= len)
+                continue;
+            keep = d[at];
+            d[at] ^= (unsigned char)(1 + tu_rng_u01(&rng) * 255);
+            refused += (size_t)damaged(d, len, fonts[f].index);
+            d[at] = keep;
+        }
+        print_message("%s face %u: %zu of %zu damaged copies refused\n",
+                      fonts[f].path, fonts[f].index, refused, runs);
+        assert_true(refused > 0);
+        munmap(d, len);
+    }
+    if (tested == 0)
+        skip();
+}
+
+static void
+test_refused(void **state)
+{
+    static const unsigned bad[] = { 3, 70000 };
+    cf__fontfile_subset_t out;
+    char why[256];
+    (void)state;
+    assert_int_equal(cf__fontfile_subset("/nonexistent/font.otf", 0, bad, 1,
+                                         &out, why, sizeof why), 1);
+    assert_non_null(strstr(why, "/nonexistent/font.otf: cannot open"));
+    assert_null(out.program.data);
+    assert_int_equal(cf__fontfile_subset_mem((const unsigned char *)"OTTO",
+                                             4, "tiny", 0, bad, 1, &out,
+                                             why, sizeof why), 1);
+    assert_non_null(strstr(why, "tiny: "));
+    if (!installed(LM_ROMAN))
+        skip();
+    assert_int_equal(cf__fontfile_subset(LM_ROMAN, 0, bad, 2, &out, why,
+                                         sizeof why), 1);
+    assert_non_null(strstr(why, "glyph id 70000 out of range"));
+    assert_null(out.program.data);
+    assert_null(out.advances);
+    assert_int_equal(cf__fontfile_subset(LM_ROMAN, 1, bad, 1, &out, why,
+                                         sizeof why), 1);
+    assert_non_null(strstr(why, "face 1"));
+    cf__fontfile_subset_fini(&out);
+}
+
+/* The same bytes every run. */
+static void
+test_deterministic(void **state)
+{
+    static const unsigned gids[] = { 50, 9, 120, 9, 33 };
+    static const char *const paths[] = { LM_ROMAN, CMU_RM };
+    size_t p;
+    (void)state;
+    for (p = 0; p < 2; p++) {
+        cf__fontfile_subset_t a, b;
+        char why[256];
+        if (cf__fontfile_subset(paths[p], 0, gids, 5, &a, why, sizeof why))
+            continue;
+        assert_int_equal(cf__fontfile_subset(paths[p], 0, gids, 5, &b, why,
+                                             sizeof why), 0);
+        assert_int_equal(a.program.size, b.program.size);
+        assert_memory_equal(a.program.data, b.program.data, a.program.size);
+        cf__fontfile_subset_fini(&a);
+        cf__fontfile_subset_fini(&b);
+    }
+}
+
+static const char *alloc_path;
+
+static cf_status_t
+op_subset(cf_diag_t *diag)
+{
+    static const unsigned gids[] = { 40, 41, 42, 43, 44, 45, 46, 47 };
+    cf__fontfile_subset_t out;
+    char why[256];
+    int r = cf__fontfile_subset(alloc_path, 0, gids, 8, &out, why,
+                                sizeof why);
+    (void)diag;
+    if (r == 0)
+        assert_non_null(out.program.data);
+    else
+        assert_null(out.program.data);
+    cf__fontfile_subset_fini(&out);
+    if (r == 1)
+        fail_msg("%s", why);
+    return r == 0 ? CF_STATUS_OK : CF_STATUS_NO_MEMORY;
+}
+
+static void
+test_alloc_failure(void **state)
+{
+    static const char *const paths[] = { LM_ROMAN, CMU_RM, LM_MATH };
+    size_t p, tested = 0;
+    (void)state;
+    for (p = 0; p < 3; p++) {
+        if (!installed(paths[p]))
+            continue;
+        tested++;
+        alloc_path = paths[p];
+        assert_true(tu_fail_loop(paths[p], op_subset, false) > 0);
+    }
+    if (tested == 0)
+        skip();
+}
+
+int
+main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_outlines),
+        cmocka_unit_test(test_composites),
+        cmocka_unit_test(test_all_glyphs),
+        cmocka_unit_test(test_damaged),
+        cmocka_unit_test(test_refused),
+        cmocka_unit_test(test_deterministic),
+        cmocka_unit_test(test_alloc_failure),
+    };
+    return cmocka_run_group_tests(tests, setup, teardown);
+}

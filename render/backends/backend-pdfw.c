@@ -14,11 +14,14 @@
 ** the page minus each box; a mesh is a free-form Gouraud shading (type
 ** 4: each triangle's colour linear, as cairo's patches) painted with sh.
 ** A path far off the page is cut as the cairo backend cuts it
-** (render/backends/far-clip.h), to the visible box.  Labels are the
-** outlines of their glyphs, filled (their halos stroked under them,
-** 2 halo wide, round joins).  Numbers have at most 3 decimals (1/1000
-** bp), colours and opacities 4; a number not finite or beyond 1e9 bp is
-** a fault, as in the SVG writer.  The whole page is the marked content
+** (render/backends/far-clip.h), to the visible box.  A label is text:
+** each glyph shown (Tj) with a Tm of its font's matrix at its origin, in
+** the fonts of render/backends/pdf-fonts.h; its fraction rules filled;
+** a label that cannot be text (see backend.h) is the outlines of its
+** glyphs, filled.  A halo is the outlines stroked under the label (2
+** halo wide, round joins), as the cairo backend draws it.  Numbers have
+** at most 3 decimals (1/1000 bp), colours and opacities 4; a number not
+** finite or beyond 1e9 bp is a fault, as in the SVG writer.  The whole page is the marked content
 ** of the document's Figure (MCID 0 on every page).
 */
 #include <math.h>
@@ -30,6 +33,7 @@
 #include "decimals.h"
 #include "far-clip.h"
 #include "grow.h"
+#include "pdf-fonts.h"
 
 static void
 put(cf__pdfw_t *w, const char *s)
@@ -619,10 +623,12 @@ put_svg_path(cf__pdfw_t *w, const cf__buf_t *d)
     }
 }
 
+/* The label's outlines as one path: stroked as its halo (2 halo wide,
+** round joins, which a closed outline has only), filled unless
+** halo_only. */
 static void
-draw_text(void *ctx, const cf__text_op_t *t)
+draw_outline(cf__pdfw_t *w, const cf__text_op_t *t, bool halo_only)
 {
-    cf__pdfw_t *w = ctx;
     cf__buf_t d;
     memset(&d, 0, sizeof d);
     if (w->outline(w->outline_ctx, t, &d) != 0 || d.failed) {
@@ -642,13 +648,94 @@ draw_text(void *ctx, const cf__text_op_t *t)
         set_stroke(w, &s);
         put(w, "S\n");
     }
-    if (d.size > 0) {
+    if (d.size > 0 && !halo_only) {
         put_svg_path(w, &d);
         set_color(w, &t->color, false);
         set_alpha(w, t->color.a * t->opacity, false);
         put(w, "f\n");
     }
     cf__buf_free(&d);
+}
+
+/* The label as text: each glyph shown at its origin with its font's
+** matrix (glyph space y up, so its y column negated), Tf size 1; the
+** fraction rules filled.  1 when a font is refused (nothing written). */
+static int
+draw_glyphs(cf__pdfw_t *w, const cf__text_op_t *t, const cf__buf_t *glyphs,
+            const cf__buf_t *rules)
+{
+    const cf__pdfw_glyph_t *g = (const cf__pdfw_glyph_t *)(void *)
+                                glyphs->data;
+    const double *r = (const double *)(void *)rules->data;
+    size_t i, n = glyphs->size / sizeof *g, nr = rules->size / (4 * sizeof *r);
+    int cur = -1;
+    char b[48];
+    for (i = 0; i < n; i++) {
+        int k = cf__pdfw_font_use(w, &g[i]);
+        if (k == -2)
+            return 1;
+        if (k < 0) {
+            w->bad = true;
+            return 0;
+        }
+    }
+    if (t->halo > 0 && t->halo_color.a > 0)
+        draw_outline(w, t, true);
+    set_color(w, &t->color, false);
+    set_alpha(w, t->color.a * t->opacity, false);
+    if (n > 0)
+        put(w, "BT\n");
+    for (i = 0; i < n; i++) {
+        int k = cf__pdfw_font_use(w, &g[i]);
+        if (k != cur) {
+            snprintf(b, sizeof b, "/F%d 1 Tf\n", k);
+            put(w, b);
+            cur = k;
+        }
+        num(w, g[i].m[0]);
+        num(w, g[i].m[1]);
+        num(w, -g[i].m[2]);
+        num(w, -g[i].m[3]);
+        num(w, g[i].x);
+        num(w, g[i].y);
+        snprintf(b, sizeof b, "Tm <%04X> Tj\n", g[i].gid & 0xffffu);
+        put(w, b);
+    }
+    if (n > 0)
+        put(w, "ET\n");
+    for (i = 0; i < nr; i++) {
+        num(w, r[4 * i]);
+        num(w, r[4 * i + 1]);
+        num(w, r[4 * i + 2]);
+        num(w, r[4 * i + 3]);
+        put(w, "re\n");
+    }
+    if (nr > 0)
+        put(w, "f\n");
+    return 0;
+}
+
+static void
+draw_text(void *ctx, const cf__text_op_t *t)
+{
+    cf__pdfw_t *w = ctx;
+    cf__buf_t glyphs, rules;
+    int r = 1;
+    if (w->glyphs != NULL) {
+        memset(&glyphs, 0, sizeof glyphs);
+        memset(&rules, 0, sizeof rules);
+        r = w->glyphs(w->outline_ctx, t, &glyphs, &rules);
+        if (r == 0 && (glyphs.failed || rules.failed))
+            w->bad = true;
+        else if (r == 0)
+            r = draw_glyphs(w, t, &glyphs, &rules);
+        else if (r != 1)
+            fault(w, CF__SVGW_FAULT_GLYPHS, 0);
+        cf__buf_free(&glyphs);
+        cf__buf_free(&rules);
+    }
+    if (r == 1)
+        draw_outline(w, t, false);
 }
 
 /* ---- the page's end ----------------------------------------------------- */

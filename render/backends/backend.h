@@ -216,11 +216,20 @@ cf_status_t cf__writer_fault(cf__svgw_fault_kind_t fault, double bad_value,
 /* ---- the PDF writer ---------------------------------------------------- */
 
 /* Its functions; ctx is a cf__pdfw_t with outline and outline_ctx set (as
-** the SVG writer's: a label's outlines as SVG path data) and the rest
-** zero.  Each begin_page .. end_page is one page of the document (an
-** overlay step); cf__pdfw_document then writes the whole document, and
-** cf__pdfw_fini releases the writer.  end_page fails as the SVG writer's
-** does (cf__pdfw_fault says why, with the SVG writer's words). */
+** the SVG writer's: a label's outlines as SVG path data), glyphs
+** optional, and the rest zero.  Each begin_page .. end_page is one page
+** of the document (an overlay step); cf__pdfw_document then writes the
+** whole document, and cf__pdfw_fini releases the writer.  end_page fails
+** as the SVG writer's does (cf__pdfw_fault says why, with the SVG
+** writer's words).
+** With glyphs, a label is text: glyphs appends a cf__pdfw_glyph_t to
+** `glyphs` for each of its glyphs and x y w h (4 doubles) to `rules` for
+** each fraction rule; 1 when the label cannot be text (a face without a
+** font file, or emboldened by cairo; a glyph missing from its font):
+** then its outlines; other nonzero when it failed.  Each font file's face
+** is embedded once, subset (render/fontfile/fontfile.h); a face the
+** subsetter refuses makes cf__pdfw_document answer 1: play the pages
+** again (cf__pdfw_restart), its labels then as outlines. */
 #define CF__PDFW_DEPTH CF__SVGW_DEPTH
 typedef struct cf__pdfw_gs {
     double fill[3], stroke[3];   /* colours set (-1: unknown) */
@@ -229,10 +238,23 @@ typedef struct cf__pdfw_gs {
     int cap, join;               /* -1: unknown */
     bool dashed;                 /* a dash is set */
 } cf__pdfw_gs_t;
+typedef struct cf__pdfw_glyph {
+    const char *file;            /* its face's font file and index */
+    unsigned index;
+    double m[4];                 /* its font matrix (xx yx xy yy, cairo's:
+                                    em, y down, to the page's bp) */
+    unsigned gid;
+    double x, y;                 /* its origin on the page */
+    const char *text;            /* the characters of the cluster it */
+    size_t len;                  /* begins (len 0: none) */
+} cf__pdfw_glyph_t;
+struct cf__pdfw_font;
 typedef struct cf__pdfw {
     int (*outline)(void *outline_ctx, const cf__text_op_t *t,
                    struct cf__buf *d);
     void *outline_ctx;
+    int (*glyphs)(void *outline_ctx, const cf__text_op_t *t,
+                  struct cf__buf *glyphs, struct cf__buf *rules);
     /* the writer's own */
     double width, height;        /* the page's (every page's), bp */
     const char *lang;
@@ -246,6 +268,8 @@ typedef struct cf__pdfw {
     size_t nshadings, shadings_cap;
     double *alphas;              /* the distinct opacities: /aN /AN */
     size_t nalphas, alphas_cap;
+    struct cf__pdfw_font *fonts; /* each face's: /FN (pdf-fonts.c) */
+    size_t nfonts, fonts_cap;
     struct {
         bool group;              /* an element's group, else a clip scope */
         bool opened;             /* it wrote q */
@@ -269,12 +293,16 @@ extern const cf__backend_t cf__pdfw_backend;
 /* The document of w's pages (render/backends/pdf-doc.c) into out (empty):
 ** info (title and caption as /Title and /Subject, may be NULL; date, the
 ** creation and modification date as "YYYY-MM-DDTHH:MM:SSZ"), the tagged
-** structure (docs/accessibility.md), the classic xref table; the same
-** bytes for the same pages.  0, or -1 out of memory (out empty). */
+** structure (docs/accessibility.md), the fonts, the classic xref table;
+** the same bytes for the same pages.  0; 1 when a font was refused (out
+** empty: cf__pdfw_restart, then play the pages again); -1 out of memory
+** (out empty). */
 int cf__pdfw_document(cf__pdfw_t *w, const char *title,
                       const char *caption, const char *date,
                       struct cf__buf *out);
 void cf__pdfw_fini(cf__pdfw_t *w);
+/* w without its pages, ready for them again; the fonts refused stay so. */
+void cf__pdfw_restart(cf__pdfw_t *w);
 /* Why end_page of w failed, as cf__svgw_fault. */
 cf_status_t cf__pdfw_fault(const cf__pdfw_t *w, cf_diag_t *diag);
 

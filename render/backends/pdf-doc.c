@@ -26,6 +26,7 @@
 #include "backend.h"
 #include "buffer.h"
 #include "decimals.h"
+#include "pdf-fonts.h"
 #include "pdf-strings.h"
 
 #define FIXED_OBJECTS 7
@@ -228,7 +229,8 @@ info(doc_t *d, const char *title, const char *caption, const char *date)
 }
 
 static int
-resources(doc_t *d, const cf__pdfw_t *w, size_t first_shading)
+resources(doc_t *d, const cf__pdfw_t *w, size_t first_shading,
+          size_t first_font)
 {
     char b[160];
     int r = begin_obj(d, 7) || put(d->out, "<< /ExtGState << ");
@@ -244,7 +246,9 @@ resources(doc_t *d, const cf__pdfw_t *w, size_t first_shading)
         snprintf(b, sizeof b, "/Sh%zu ", i);
         r = put(d->out, b) || ref(d->out, first_shading + i);
     }
-    return r || put(d->out, ">> >>\nendobj\n");
+    return r || put(d->out, ">>\n")
+           || cf__pdfw_fonts_resources(w, first_font, d->out)
+           || put(d->out, ">>\nendobj\n");
 }
 
 static int
@@ -315,15 +319,35 @@ trailer(doc_t *d)
     return put(d->out, b);
 }
 
+static int
+objs_begin(void *d, size_t n)
+{
+    return begin_obj(d, n);
+}
+
+static int
+objs_stream(void *d, size_t n, const char *dict, const cf__buf_t *data)
+{
+    return stream_obj(d, n, dict, data);
+}
+
 int
 cf__pdfw_document(cf__pdfw_t *w, const char *title, const char *caption,
                   const char *date, cf__buf_t *out)
 {
     doc_t d;
+    cf__pdfw_objs_t o;
     size_t first_shading = page_obj(w->npages);
-    int r;
+    size_t first_font = first_shading + w->nshadings;
+    int r = cf__pdfw_fonts_subset(w);
+    if (r != 0)
+        return r;
     d.out = out;
-    d.nobjects = first_shading - 1 + w->nshadings;
+    d.nobjects = first_font - 1 + cf__pdfw_fonts_objects(w);
+    o.out = out;
+    o.begin_obj = objs_begin;
+    o.stream = objs_stream;
+    o.ctx = &d;
     d.offsets = cf_alloc_array(d.nobjects, sizeof *d.offsets);
     if (d.offsets == NULL)
         return -1;
@@ -331,12 +355,12 @@ cf__pdfw_document(cf__pdfw_t *w, const char *title, const char *caption,
         || catalog(&d, w) || page_tree(&d, w)
         || structure(&d, w, title, caption)
         || info(&d, title, caption, date)
-        || resources(&d, w, first_shading);
+        || resources(&d, w, first_shading, first_font);
     for (size_t i = 0; i < w->npages && !r; i++)
         r = page(&d, w, i);
     for (size_t i = 0; i < w->nshadings && !r; i++)
         r = shading(&d, &w->shadings[i], first_shading + i);
-    r = r || trailer(&d);
+    r = r || cf__pdfw_fonts_write(w, first_font, &o) || trailer(&d);
     cf_free(d.offsets);
     if (r || out->failed) {
         cf__buf_free(out);
@@ -345,8 +369,9 @@ cf__pdfw_document(cf__pdfw_t *w, const char *title, const char *caption,
     return 0;
 }
 
-void
-cf__pdfw_fini(cf__pdfw_t *w)
+/* Everything but the fonts. */
+static void
+free_pages(cf__pdfw_t *w)
 {
     for (size_t i = 0; i < w->npages; i++)
         cf__buf_free(&w->pages[i]);
@@ -360,4 +385,21 @@ cf__pdfw_fini(cf__pdfw_t *w)
     w->shadings = NULL;
     w->alphas = NULL;
     w->npages = w->nshadings = w->nalphas = 0;
+    w->pages_cap = w->shadings_cap = w->alphas_cap = 0;
+}
+
+void
+cf__pdfw_fini(cf__pdfw_t *w)
+{
+    free_pages(w);
+    cf__pdfw_fonts_free(w, false);
+}
+
+void
+cf__pdfw_restart(cf__pdfw_t *w)
+{
+    free_pages(w);
+    cf__pdfw_fonts_free(w, true);
+    w->bad = false;
+    w->fault = CF__SVGW_FAULT_NONE;
 }

@@ -30,15 +30,15 @@ cf__pdf_put_string(cf__buf_t *b, const char *s)
     return r || put(b, ")") ? -1 : 0;
 }
 
-/* Code point at s (advancing it), U+FFFD for a byte that starts no valid
-** UTF-8 sequence. */
+/* Code point at s (advancing it; before end), U+FFFD for a byte that
+** starts no valid UTF-8 sequence. */
 static unsigned
-next_cp(const unsigned char **s)
+next_cp(const unsigned char **s, const unsigned char *end)
 {
     const unsigned char *p = *s;
     unsigned c = p[0], n = c < 0x80 ? 0 : c >= 0xf0 && c < 0xf5 ? 3
                                      : c >= 0xe0 ? 2 : c >= 0xc2 ? 1 : 9;
-    if (n == 9) {
+    if (n == 9 || (size_t)(end - p) <= n) {
         (*s)++;
         return c < 0x80 ? c : 0xfffd;
     }
@@ -63,23 +63,30 @@ put_unit(cf__buf_t *b, unsigned u)
 }
 
 int
+cf__pdf_put_utf16(cf__buf_t *out, const char *text, size_t n)
+{
+    const unsigned char *s = (const unsigned char *)text, *end = s + n;
+    int r = 0;
+    while (s < end && r == 0) {
+        unsigned c = next_cp(&s, end);
+        if (c >= 0x10000) {
+            c -= 0x10000;
+            r = put_unit(out, 0xd800 + (c >> 10))
+                || put_unit(out, 0xdc00 + (c & 0x3ff));
+        } else {
+            r = put_unit(out, c);
+        }
+    }
+    return r ? -1 : 0;
+}
+
+int
 cf__pdf_put_text(cf__buf_t *out, const char *a, const char *b)
 {
     const char *parts[3] = { a, b != NULL && b[0] != '\0' ? " " : "",
                              b != NULL ? b : "" };
     int r = put(out, "<FEFF");
-    for (int k = 0; k < 3; k++) {
-        const unsigned char *s = (const unsigned char *)parts[k];
-        while (*s != '\0' && r == 0) {
-            unsigned c = next_cp(&s);
-            if (c >= 0x10000) {
-                c -= 0x10000;
-                r = put_unit(out, 0xd800 + (c >> 10))
-                    || put_unit(out, 0xdc00 + (c & 0x3ff));
-            } else {
-                r = put_unit(out, c);
-            }
-        }
-    }
+    for (int k = 0; k < 3 && r == 0; k++)
+        r = cf__pdf_put_utf16(out, parts[k], strlen(parts[k]));
     return r || put(out, ">") ? -1 : 0;
 }

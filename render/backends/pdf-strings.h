@@ -16,4 +16,7 @@ int cf__pdf_put_string(cf__buf_t *b, const char *s);
 ** UTF-8 sequence as U+FFFD).  0, or -1 out of memory. */
 int cf__pdf_put_text(cf__buf_t *out, const char *a, const char *b);
 
+/* The UTF-16BE hex digits of UTF-8 text [s, s + n), as above. */
+int cf__pdf_put_utf16(cf__buf_t *out, const char *s, size_t n);
+
 #endif

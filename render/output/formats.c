@@ -259,8 +259,9 @@ svg_render(const cf__dl_t *dl, const cf__page_t *pg, const char *title,
 }
 
 /* PDF: the PDF writer (render/backends/backend-pdfw.c) into out, one
-** page, or one per overlay step of pg's; labels as the outlines of their
-** glyphs. */
+** page, or one per overlay step of pg's; labels as text
+** (render/output/pdf-glyphs.c), else the outlines of their glyphs; played
+** again when a font was refused (its labels then as outlines). */
 static cf_status_t
 pdf_render(const cf__dl_t *dl, const cf__page_t *pg, const char *title,
            const char *caption, cf__buf_t *out, cf_diag_t *diag)
@@ -269,29 +270,37 @@ pdf_render(const cf__dl_t *dl, const cf__page_t *pg, const char *title,
     cf__pdfw_t w;
     char date[40];
     unsigned k, first = pg->first_step, last = first ? pg->last_step : 0;
+    cf_status_t st;
     int r = 0;
     memset(&outliner, 0, sizeof outliner);
     memset(&w, 0, sizeof w);
     w.outline = cf__glyph_outline;
+    w.glyphs = cf__pdf_glyphs;
     w.outline_ctx = &outliner;
-    for (k = first; k <= last && r == 0; k++) {
-        cf__pdfw_backend.begin_page(&w, pg);
-        cf__dl_play_step(dl, pg, k, &cf__pdfw_backend, &w);
-        r = cf__pdfw_backend.end_page(&w);
-    }
+    cf__pdf_date(date, sizeof date);
+    do {
+        for (k = first; k <= last && r == 0; k++) {
+            cf__pdfw_backend.begin_page(&w, pg);
+            cf__dl_play_step(dl, pg, k, &cf__pdfw_backend, &w);
+            r = cf__pdfw_backend.end_page(&w);
+        }
+        if (r != 0)
+            break;
+        r = cf__pdfw_document(&w, title, caption, date, out);
+        if (r == 1)
+            cf__pdfw_restart(&w);
+    } while (r == 1);
     cf__glyph_outliner_fini(&outliner);
     if (r == 0) {
-        cf__pdf_date(date, sizeof date);
-        r = cf__pdfw_document(&w, title, caption, date, out);
         cf__pdfw_fini(&w);
-        if (r == 0)
-            return CF_STATUS_OK;
-        return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
-                           "out of memory writing pdf");
+        return CF_STATUS_OK;
     }
-    cf__pdfw_fini(&w);
     cf__buf_free(out);
-    return cf__pdfw_fault(&w, diag);
+    st = w.bad ? cf__pdfw_fault(&w, diag)
+               : cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                             "out of memory writing pdf");
+    cf__pdfw_fini(&w);
+    return st;
 }
 
 /* PGF: the PGF backend into out, without cairo surfaces. */

@@ -99,6 +99,11 @@ void cf__svg_anim_free(cf__svg_anim_t *a);
 cf_status_t cf__temp_open(const char *path, int *fd, char **tmp,
                           cf_diag_t *diag);
 
+/* The glyphs function of the PDF writer natively (render/output/
+** pdf-glyphs.c; backend.h): ctx unused. */
+int cf__pdf_glyphs(void *ctx, const cf__text_op_t *t, cf__buf_t *glyphs,
+                   cf__buf_t *rules);
+
 /* The EPS of a PS page from cf__format_render (cairo 1.16.0 only): 0, or
 ** -1 when the PS is not as expected (render the EPS then), -2 out of
 ** memory. */

@@ -255,6 +255,10 @@ typedef struct cf__pdfw {
     void *outline_ctx;
     int (*glyphs)(void *outline_ctx, const cf__text_op_t *t,
                   struct cf__buf *glyphs, struct cf__buf *rules);
+    bool probe;                  /* a face is tried (subset with the glyph
+                                    it is first used for) then, not only
+                                    at the end: for pages that cannot be
+                                    played again (an animation's frames) */
     /* the writer's own */
     double width, height;        /* the page's (every page's), bp */
     const char *lang;

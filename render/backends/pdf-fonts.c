@@ -52,6 +52,15 @@ cf__pdfw_font_use(cf__pdfw_t *w, const cf__pdfw_glyph_t *g)
         memset(f, 0, sizeof *f);
         f->file = g->file;
         f->index = g->index;
+        if (w->probe) {
+            char why[160];
+            int r = cf__fontfile_subset(f->file, f->index, &g->gid, 1,
+                                        &f->sub, why, sizeof why);
+            cf__fontfile_subset_fini(&f->sub);
+            if (r < 0)
+                return -1;
+            f->refused = r == 1;
+        }
     }
     if (f->refused)
         return -2;

@@ -258,6 +258,14 @@ svg_render(const cf__dl_t *dl, const cf__page_t *pg, const char *title,
     return cf__svgw_fault(&w, "svg", diag);
 }
 
+void
+cf__pdf_writer_init(cf__pdfw_t *w, cf__glyph_outliner_t *o)
+{
+    w->outline = cf__glyph_outline;
+    w->glyphs = cf__pdf_glyphs;
+    w->outline_ctx = o;
+}
+
 /* PDF: the PDF writer (render/backends/backend-pdfw.c) into out, one
 ** page, or one per overlay step of pg's; labels as text
 ** (render/output/pdf-glyphs.c), else the outlines of their glyphs; played
@@ -274,9 +282,7 @@ pdf_render(const cf__dl_t *dl, const cf__page_t *pg, const char *title,
     int r = 0;
     memset(&outliner, 0, sizeof outliner);
     memset(&w, 0, sizeof w);
-    w.outline = cf__glyph_outline;
-    w.glyphs = cf__pdf_glyphs;
-    w.outline_ctx = &outliner;
+    cf__pdf_writer_init(&w, &outliner);
     cf__pdf_date(date, sizeof date);
     do {
         for (k = first; k <= last && r == 0; k++) {

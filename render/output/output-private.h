@@ -99,6 +99,11 @@ void cf__svg_anim_free(cf__svg_anim_t *a);
 cf_status_t cf__temp_open(const char *path, int *fd, char **tmp,
                           cf_diag_t *diag);
 
+/* w (zero) set up as every PDF of a figure is written (formats.c):
+** outlines and glyphs natively, through o (zero; released with
+** cf__glyph_outliner_fini after w's last page). */
+void cf__pdf_writer_init(cf__pdfw_t *w, cf__glyph_outliner_t *o);
+
 /* The glyphs function of the PDF writer natively (render/output/
 ** pdf-glyphs.c; backend.h): ctx unused. */
 int cf__pdf_glyphs(void *ctx, const cf__text_op_t *t, cf__buf_t *glyphs,

@@ -21,8 +21,9 @@
 ** glyphs, filled.  A halo is the outlines stroked under the label (2
 ** halo wide, round joins), as the cairo backend draws it.  Numbers have
 ** at most 3 decimals (1/1000 bp), colours and opacities 4; a number not
-** finite or beyond 1e9 bp is a fault, as in the SVG writer.  The whole page is the marked content
-** of the document's Figure (MCID 0 on every page).
+** finite or beyond 1e9 bp is a fault, as in the SVG writer (the scopes
+** and faults are theirs: cf__scopes_t).  The whole page is the marked
+** content of the document's Figure (MCID 0 on every page).
 */
 #include <math.h>
 #include <stdio.h>
@@ -41,22 +42,10 @@ put(cf__pdfw_t *w, const char *s)
     cf__buf_append(&w->content, s, strlen(s));
 }
 
-/* The first fault of w, of kind k (a number: v, in the innermost
-** element being written). */
 static void
 fault(cf__pdfw_t *w, cf__svgw_fault_kind_t k, double v)
 {
-    w->bad = true;
-    if (w->fault != CF__SVGW_FAULT_NONE)
-        return;
-    w->fault = k;
-    w->bad_value = v;
-    for (int d = w->depth; d-- > 0;)
-        if (w->stack[d].name != NULL) {
-            w->bad_name = w->stack[d].name;
-            w->bad_index = w->stack[d].index;
-            break;
-        }
+    cf__scopes_fault(&w->sc, k, v);
 }
 
 /* v and a space. */
@@ -65,7 +54,7 @@ num(cf__pdfw_t *w, double v)
 {
     if (cf__svg_put_num(&w->content, v) != 0) {
         if (isfinite(v) && fabs(v) <= 1e9)
-            w->bad = true;                  /* out of memory */
+            w->sc.bad = true;                  /* out of memory */
         else
             fault(w, CF__SVGW_FAULT_NUMBER, v);
         return;
@@ -175,7 +164,7 @@ alpha_index(cf__pdfw_t *w, double a)
     g = cf__grow_array(w->alphas, &w->alphas_cap, w->nalphas + 1, sizeof *g,
                        8);
     if (g == NULL || w->nalphas >= 100000) {
-        w->bad = true;
+        w->sc.bad = true;
         return -1;
     }
     w->alphas = g;
@@ -201,6 +190,7 @@ set_alpha(cf__pdfw_t *w, double a, bool stroke)
     snprintf(b, sizeof b, "/%c%d gs\n", stroke ? 'A' : 'a', k);
     put(w, b);
     *cur = want;
+    w->translucent = w->translucent || want >= 0;
 }
 
 static void
@@ -264,31 +254,29 @@ init_gs(cf__pdfw_gs_t *gs)
 
 /* ---- scopes ------------------------------------------------------------- */
 
+/* A scope (opened: q), the visible box and the state kept for its Q. */
 static void
-push(cf__pdfw_t *w, bool group, bool opened)
+push(cf__pdfw_t *w, bool group, bool opened, const char *name,
+     size_t index)
 {
-    if (w->depth >= CF__PDFW_DEPTH) {
-        fault(w, CF__SVGW_FAULT_DEPTH, 0);
+    int d = w->sc.depth;
+    if (!cf__scopes_push(&w->sc, group, opened, name, index))
         return;
-    }
-    w->stack[w->depth].group = group;
-    w->stack[w->depth].opened = opened;
-    w->stack[w->depth].name = NULL;
-    memcpy(w->stack[w->depth].clip, w->clip, sizeof w->clip);
-    w->stack[w->depth].gs = w->gs;
-    w->depth++;
+    memcpy(w->saved[d].clip, w->clip, sizeof w->clip);
+    w->saved[d].gs = w->gs;
     if (opened)
         put(w, "q\n");
 }
 
 static void
-pop(cf__pdfw_t *w)
+pop(void *ctx)
 {
-    w->depth--;
-    memcpy(w->clip, w->stack[w->depth].clip, sizeof w->clip);
-    if (w->stack[w->depth].opened) {
+    cf__pdfw_t *w = ctx;
+    int d = --w->sc.depth;
+    memcpy(w->clip, w->saved[d].clip, sizeof w->clip);
+    if (w->sc.stack[d].opened) {
         put(w, "Q\n");
-        w->gs = w->stack[w->depth].gs;
+        w->gs = w->saved[d].gs;
     }
 }
 
@@ -297,10 +285,11 @@ begin_page(void *ctx, const cf__page_t *pg)
 {
     cf__pdfw_t *w = ctx;
     memset(&w->content, 0, sizeof w->content);
+    w->translucent = false;
     w->width = pg->width;
     w->height = pg->height;
     w->lang = pg->lang;
-    w->depth = 0;
+    w->sc.depth = 0;
     w->clip[0] = 0;
     w->clip[1] = 0;
     w->clip[2] = pg->width;
@@ -309,7 +298,7 @@ begin_page(void *ctx, const cf__page_t *pg)
     put(w, "/Figure << /MCID 0 >> BDC\n1 0 0 -1 0 ");
     num(w, pg->height);
     put(w, "cm\n");
-    push(w, true, false);
+    push(w, true, false, NULL, 0);
     if (pg->background.a > 0) {
         set_color(w, &pg->background, false);
         set_alpha(w, pg->background.a, false);
@@ -323,33 +312,22 @@ begin_page(void *ctx, const cf__page_t *pg)
 static void
 begin_group(void *ctx, const char *name, size_t index, const char *overlay)
 {
-    cf__pdfw_t *w = ctx;
     (void)overlay;
-    push(w, true, true);
-    if (w->depth > 0 && w->stack[w->depth - 1].group) {
-        w->stack[w->depth - 1].name = name;
-        w->stack[w->depth - 1].index = index;
-    }
+    push(ctx, true, true, name, index);
 }
 
 /* Close the scopes opened since the innermost group, then it. */
 static void
 end_group(void *ctx)
 {
-    cf__pdfw_t *w = ctx;
-    while (w->depth > 1) {
-        bool g = w->stack[w->depth - 1].group;
-        pop(w);
-        if (g)
-            break;
-    }
+    cf__scopes_end_group(&((cf__pdfw_t *)ctx)->sc, 1, pop, ctx);
 }
 
 static void
 clip(void *ctx, bool has_rect, const double r[4])
 {
     cf__pdfw_t *w = ctx;
-    push(w, false, has_rect);
+    push(w, false, has_rect, NULL, 0);
     if (!has_rect)
         return;
     num(w, r[0]);
@@ -367,7 +345,7 @@ static void
 unclip(void *ctx)
 {
     cf__pdfw_t *w = ctx;
-    if (w->depth > 1 && !w->stack[w->depth - 1].group)
+    if (w->sc.depth > 1 && !w->sc.stack[w->sc.depth - 1].group)
         pop(w);
 }
 
@@ -381,7 +359,7 @@ static void
 knockout(void *ctx, const double (*b)[4], size_t n)
 {
     cf__pdfw_t *w = ctx;
-    push(w, false, true);
+    push(w, false, true, NULL, 0);
     for (size_t i = 0; i < n; i++) {
         double x0 = b[i][0], y0 = b[i][1], x1 = x0 + b[i][2],
                y1 = y0 + b[i][3];
@@ -577,14 +555,14 @@ draw_mesh(void *ctx, const cf__mesh_tri_t *t, size_t n)
     s = cf__grow_array(w->shadings, &w->shadings_cap, w->nshadings + 1,
                        sizeof *s, 4);
     if (s == NULL) {
-        w->bad = true;
+        w->sc.bad = true;
         return;
     }
     w->shadings = s;
     s += w->nshadings;
     memset(s, 0, sizeof *s);
     if (!shading(w, t, n, &s->data, s->box) || s->data.failed) {
-        w->bad = true;
+        w->sc.bad = true;
         cf__buf_free(&s->data);
         return;
     }
@@ -675,7 +653,7 @@ draw_glyphs(cf__pdfw_t *w, const cf__text_op_t *t, const cf__buf_t *glyphs,
         if (k == -2)
             return 1;
         if (k < 0) {
-            w->bad = true;
+            w->sc.bad = true;
             return 0;
         }
     }
@@ -726,7 +704,7 @@ draw_text(void *ctx, const cf__text_op_t *t)
         memset(&rules, 0, sizeof rules);
         r = w->glyphs(w->outline_ctx, t, &glyphs, &rules);
         if (r == 0 && (glyphs.failed || rules.failed))
-            w->bad = true;
+            w->sc.bad = true;
         else if (r == 0)
             r = draw_glyphs(w, t, &glyphs, &rules);
         else if (r != 1)
@@ -744,22 +722,23 @@ static int
 end_page(void *ctx)
 {
     cf__pdfw_t *w = ctx;
-    cf__buf_t *pg;
-    while (w->depth > 0)
+    struct cf__pdfw_page *pg;
+    while (w->sc.depth > 0)
         pop(w);
     put(w, "EMC\n");
     pg = cf__grow_array(w->pages, &w->pages_cap, w->npages + 1, sizeof *pg,
                         4);
     if (pg == NULL || w->content.failed)
-        w->bad = true;
+        w->sc.bad = true;
     if (pg != NULL)
         w->pages = pg;
-    if (!w->bad) {
-        w->pages[w->npages++] = w->content;
+    if (!w->sc.bad) {
+        w->pages[w->npages].content = w->content;
+        w->pages[w->npages++].translucent = w->translucent;
         memset(&w->content, 0, sizeof w->content);
     }
     cf__buf_free(&w->content);
-    return w->bad ? -1 : 0;
+    return w->sc.bad ? -1 : 0;
 }
 
 const cf__backend_t cf__pdfw_backend = {
@@ -770,6 +749,5 @@ const cf__backend_t cf__pdfw_backend = {
 cf_status_t
 cf__pdfw_fault(const cf__pdfw_t *w, cf_diag_t *diag)
 {
-    return cf__writer_fault(w->fault, w->bad_value, w->bad_name,
-                            w->bad_index, "PDF", "pdf", diag);
+    return cf__scopes_diag(&w->sc, "PDF", "pdf", diag);
 }

@@ -170,6 +170,44 @@ typedef struct cf__svgw_use {
     double x, y;
 } cf__svgw_use_t;
 
+/* The scopes a vector writer (the SVG and the PDF writer,
+** render/backends/writer-scopes.c) has open: elements' groups and clip
+** scopes, each noting whether it wrote its opening (<g>, q), an
+** element's name and index (for a fault); and the writer's first fault
+** (bad: any, out of memory when fault is NONE). */
+typedef struct cf__scopes {
+    struct cf__scope {
+        bool group;              /* an element's group, else a clip scope */
+        bool opened;             /* it wrote its opening */
+        const char *name;        /* an element's: its name and index */
+        size_t index;
+    } stack[CF__SVGW_DEPTH];
+    int depth;
+    bool bad;
+    cf__svgw_fault_kind_t fault;
+    double bad_value;
+    const char *bad_name;
+    size_t bad_index;
+} cf__scopes_t;
+
+/* Fault k (a number: v) of the innermost element open, the first kept. */
+void cf__scopes_fault(cf__scopes_t *s, cf__svgw_fault_kind_t k, double v);
+/* Open a scope (a group named name, index when group); false, a fault,
+** when CF__SVGW_DEPTH are open. */
+bool cf__scopes_push(cf__scopes_t *s, bool group, bool opened,
+                     const char *name, size_t index);
+/* end_group: pop (which closes the innermost scope and takes it off)
+** the scopes opened since the innermost group, then it, keeping the
+** first `floor` (the page's). */
+void cf__scopes_end_group(cf__scopes_t *s, int floor,
+                          void (*pop)(void *w), void *w);
+/* Why the writer of a `format` ("SVG", "PDF") failed, for a document
+** called `what` ("svg", "frame 3 of the animated svg"): into diag
+** (CF_STATUS_INVALID_ARG for a number or groups too deep, else
+** CF_STATUS_NO_MEMORY), its status. */
+cf_status_t cf__scopes_diag(const cf__scopes_t *s, const char *format,
+                            const char *what, cf_diag_t *diag);
+
 typedef struct cf__svgw {
     struct cf__buf *out;
     int (*outline)(void *outline_ctx, const cf__text_op_t *t,
@@ -180,19 +218,8 @@ typedef struct cf__svgw {
                 struct cf__buf *uses, struct cf__buf *rules);
     int (*glyph_path)(void *outline_ctx, unsigned id, struct cf__buf *d);
     /* the writer's own */
-    struct {
-        bool group;              /* an element's group, else a clip scope */
-        bool opened;             /* it wrote a <g> */
-        const char *name;        /* an element's: its name and index */
-        size_t index;
-    } stack[CF__SVGW_DEPTH];
-    int depth;
+    cf__scopes_t sc;
     unsigned clips;
-    bool bad;
-    cf__svgw_fault_kind_t fault;
-    double bad_value;
-    const char *bad_name;
-    size_t bad_index;
     struct cf__buf body, *dst;   /* the drawing, written after the <defs> */
     unsigned char *used;         /* used[id]: outline id is used */
     size_t nused;
@@ -200,18 +227,10 @@ typedef struct cf__svgw {
 
 extern const cf__backend_t cf__svgw_backend;
 
-/* Why end_page of w failed, for a document called `what` ("svg", "frame
-** 3 of the animated svg"): into diag (CF_STATUS_INVALID_ARG for a
-** number, else CF_STATUS_NO_MEMORY, or CF_STATUS_INVALID_ARG for groups
-** too deep), its status. */
+/* Why end_page of w failed, for a document called `what`: its scopes'
+** fault (cf__scopes_diag). */
 cf_status_t cf__svgw_fault(const cf__svgw_t *w, const char *what,
                            cf_diag_t *diag);
-/* The same for any vector writer of a `format` ("SVG", "PDF") that keeps
-** the SVG writer's faults. */
-cf_status_t cf__writer_fault(cf__svgw_fault_kind_t fault, double bad_value,
-                             const char *bad_name, size_t bad_index,
-                             const char *format, const char *what,
-                             cf_diag_t *diag);
 
 /* ---- the PDF writer ---------------------------------------------------- */
 
@@ -241,6 +260,7 @@ typedef struct cf__pdfw_gs {
 typedef struct cf__pdfw_glyph {
     const char *file;            /* its face's font file and index */
     unsigned index;
+    const char *psname;          /* NULL, or the face's PostScript name */
     double m[4];                 /* its font matrix (xx yx xy yy, cairo's:
                                     em, y down, to the page's bp) */
     unsigned gid;
@@ -263,8 +283,13 @@ typedef struct cf__pdfw {
     double width, height;        /* the page's (every page's), bp */
     const char *lang;
     struct cf__buf content;      /* the page being drawn, uncompressed */
-    struct cf__buf *pages;       /* each page's content, compressed */
+    struct cf__pdfw_page {
+        struct cf__buf content;  /* its content stream, uncompressed */
+        bool translucent;        /* it paints with an opacity below 1:
+                                    a transparency group */
+    } *pages;
     size_t npages, pages_cap;
+    bool translucent;            /* the page being drawn's */
     struct cf__pdfw_shading {
         double box[4];           /* the vertices' range: x0 y0 x1 y1 */
         struct cf__buf data;     /* the vertices, uncompressed */
@@ -274,22 +299,13 @@ typedef struct cf__pdfw {
     size_t nalphas, alphas_cap;
     struct cf__pdfw_font *fonts; /* each face's: /FN (pdf-fonts.c) */
     size_t nfonts, fonts_cap;
+    cf__scopes_t sc;             /* the scopes open (opened: wrote q) */
     struct {
-        bool group;              /* an element's group, else a clip scope */
-        bool opened;             /* it wrote q */
-        const char *name;        /* an element's name and index */
-        size_t index;
-        double clip[4];          /* x0 y0 x1 y1 inside it */
-        cf__pdfw_gs_t gs;        /* the state when it was opened */
-    } stack[CF__PDFW_DEPTH];
-    int depth;
+        double clip[4];          /* the visible box before it */
+        cf__pdfw_gs_t gs;        /* the graphics state before it */
+    } saved[CF__PDFW_DEPTH];     /* saved[k]: of scope k */
     double clip[4];              /* the visible box: x0 y0 x1 y1 */
     cf__pdfw_gs_t gs;            /* the graphics state in the stream */
-    bool bad;
-    cf__svgw_fault_kind_t fault;
-    double bad_value;
-    const char *bad_name;
-    size_t bad_index;
 } cf__pdfw_t;
 
 extern const cf__backend_t cf__pdfw_backend;

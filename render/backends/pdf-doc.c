@@ -13,7 +13,8 @@
 **   /ModDate, /Producer;
 **   7 the resources every page shares: the opacities' ExtGStates and the
 **   meshes' shadings;
-**   then each page and its content stream, then each shading.
+**   then each page (a transparency group when it paints translucently)
+**   and its content stream, then each shading, then the fonts.
 ** Streams are compressed (Flate, zlib's default level, a window and hash
 ** table sized for small streams: the same bytes for the same input).  The trailer's /ID is a hash of the file before
 ** it, so that two renders of a figure are the same bytes.
@@ -269,10 +270,15 @@ page(doc_t *d, const cf__pdfw_t *w, size_t i)
             || putf_num(d->out, w->width) || put(d->out, " ")
             || putf_num(d->out, w->height);
     snprintf(b, sizeof b, " ]\n   /Resources 7 0 R /Contents %zu 0 R "
-                          "/StructParents %zu >>\nendobj\n",
-             page_obj(i) + 1, i);
-    return r || put(d->out, b)
-           || stream_obj(d, page_obj(i) + 1, "", &w->pages[i]);
+                          "/StructParents %zu", page_obj(i) + 1, i);
+    r = r || put(d->out, b);
+    /* a page that paints translucently composites in RGB (the group
+    ** cairo gave every page; pdfTeX warns of two on one page) */
+    if (w->pages[i].translucent)
+        r = r || put(d->out, "\n   /Group << /Type /Group /S /Transparency "
+                             "/CS /DeviceRGB >>");
+    return r || put(d->out, " >>\nendobj\n")
+           || stream_obj(d, page_obj(i) + 1, "", &w->pages[i].content);
 }
 
 static int
@@ -383,7 +389,7 @@ static void
 free_pages(cf__pdfw_t *w)
 {
     for (size_t i = 0; i < w->npages; i++)
-        cf__buf_free(&w->pages[i]);
+        cf__buf_free(&w->pages[i].content);
     cf_free(w->pages);
     for (size_t i = 0; i < w->nshadings; i++)
         cf__buf_free(&w->shadings[i].data);
@@ -409,6 +415,5 @@ cf__pdfw_restart(cf__pdfw_t *w)
 {
     free_pages(w);
     cf__pdfw_fonts_free(w, true);
-    w->bad = false;
-    w->fault = CF__SVGW_FAULT_NONE;
+    memset(&w->sc, 0, sizeof w->sc);
 }

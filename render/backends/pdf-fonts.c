@@ -20,6 +20,7 @@ typedef struct unicode {
 struct cf__pdfw_font {
     const char *file;
     unsigned index;
+    const char *psname;      /* the face's PostScript name, or NULL */
     bool refused;
     unsigned *gids;          /* used, in order of first use */
     size_t ngids, gids_cap;
@@ -52,6 +53,7 @@ cf__pdfw_font_use(cf__pdfw_t *w, const cf__pdfw_glyph_t *g)
         memset(f, 0, sizeof *f);
         f->file = g->file;
         f->index = g->index;
+        f->psname = g->psname;
         if (w->probe) {
             char why[160];
             int r = cf__fontfile_subset(f->file, f->index, &g->gid, 1,
@@ -104,6 +106,25 @@ by_value(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
+/* The face's PostScript name for the subset's (a face of a collection:
+** its own, where the program's is the collection's), when fontconfig
+** has one, only the characters a PDF name holds unescaped. */
+static void
+face_name(struct cf__pdfw_font *f)
+{
+    size_t k = 0;
+    if (f->psname == NULL)
+        return;
+    for (const char *s = f->psname; *s != '\0' && k + 1 < sizeof
+         f->sub.ps_name; s++)
+        if ((*s >= 'A' && *s <= 'Z') || (*s >= 'a' && *s <= 'z')
+            || (*s >= '0' && *s <= '9') || *s == '-' || *s == '_'
+            || *s == '.')
+            f->sub.ps_name[k++] = *s;
+    if (k > 0)
+        f->sub.ps_name[k] = '\0';
+}
+
 /* Six capital letters from the font's name and glyphs (FNV-1a). */
 static void
 make_tag(struct cf__pdfw_font *f)
@@ -144,6 +165,7 @@ cf__pdfw_fonts_subset(cf__pdfw_t *w)
             continue;
         }
         f->subset = true;
+        face_name(f);
         make_tag(f);
     }
     return refused;

@@ -67,6 +67,9 @@ typedef struct cf__font_face {
     const char *file;      /* NULL, or its font file (fontconfig's
                               FC_FILE), which a PDF embeds */
     unsigned index;        /* the face's index in that file (FC_INDEX) */
+    const char *psname;    /* NULL, or its PostScript name
+                              (FC_POSTSCRIPT_NAME): a collection's faces
+                              have their own, their CFF one shared */
     bool emboldened;       /* bold made by cairo (FC_EMBOLDEN): a PDF
                               draws its outlines, the file has it not */
 } cf__font_face_t;

@@ -111,9 +111,7 @@ cf__anim_vector_frame(anim_t *a, forms_t *f, unsigned k, cf__dl_t *dl,
         if (cf__pdfw_backend.end_page(f->pdfw) != 0) {
             char what[48];
             snprintf(what, sizeof what, "page %u of the pdf", k + 1);
-            st = cf__writer_fault(f->pdfw->fault, f->pdfw->bad_value,
-                                  f->pdfw->bad_name, f->pdfw->bad_index,
-                                  "PDF", what, diag);
+            st = cf__scopes_diag(&f->pdfw->sc, "PDF", what, diag);
         }
     }
     cf__anim_frame_done(a, k, dl, fig);

@@ -302,7 +302,7 @@ pdf_render(const cf__dl_t *dl, const cf__page_t *pg, const char *title,
         return CF_STATUS_OK;
     }
     cf__buf_free(out);
-    st = w.bad ? cf__pdfw_fault(&w, diag)
+    st = w.sc.bad ? cf__pdfw_fault(&w, diag)
                : cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
                              "out of memory writing pdf");
     cf__pdfw_fini(&w);

@@ -26,6 +26,7 @@ on_glyph(void *ctx, const cf__label_glyph_t *g)
     cairo_scaled_font_get_font_matrix(g->font, &m);
     p.file = g->face->file;
     p.index = g->face->index;
+    p.psname = g->face->psname;
     p.m[0] = m.xx;
     p.m[1] = m.yx;
     p.m[2] = m.xy;

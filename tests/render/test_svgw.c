@@ -504,7 +504,7 @@ test_structure_and_bad_numbers(void **state)
         assert_int_equal(d.index, 1);
         /* out of memory: said so alone */
         memset(&w, 0, sizeof w);
-        w.bad = true;
+        w.sc.bad = true;
         cf_diag_clear(&d);
         assert_int_equal(cf__svgw_fault(&w, "svg", &d), CF_STATUS_NO_MEMORY);
         assert_string_equal(d.msg, "out of memory writing svg");

@@ -285,6 +285,7 @@ pdf_render(const cf__dl_t *dl, const cf__page_t *pg, const char *title,
     cf__pdf_writer_init(&w, &outliner);
     cf__pdf_date(date, sizeof date);
     do {
+        r = 0;
         for (k = first; k <= last && r == 0; k++) {
             cf__pdfw_backend.begin_page(&w, pg);
             cf__dl_play_step(dl, pg, k, &cf__pdfw_backend, &w);

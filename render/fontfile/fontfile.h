@@ -60,8 +60,16 @@ typedef struct cf__fontfile_subset {
     int cap_height;           /* OS/2 sCapHeight (version >= 2), else
                                  ascent */
     double italic_angle;      /* degrees (post) */
-    unsigned flags;           /* CF__FONTFILE_* bits */
-    unsigned stem_v;          /* an estimate (PDF requires /StemV) */
+    unsigned flags;           /* CF__FONTFILE_* bits: SYMBOLIC always
+                                 (the glyphs are shown by id, not by the
+                                 standard Latin character set); ITALIC
+                                 (post's angle, head's or OS/2's bit),
+                                 FIXED_PITCH (post, PANOSE), SERIF (OS/2
+                                 family class or PANOSE) when the font
+                                 says so */
+    unsigned stem_v;          /* an estimate (PDF requires /StemV): the
+                                 CFF Private DICT's StdVW, else from the
+                                 OS/2 weight class (400 gives 96) */
     unsigned *advances;       /* advances[i]: the advance width of gids[i]
                                  in font units (hmtx); cf_free'd by fini */
 } cf__fontfile_subset_t;

@@ -2,9 +2,9 @@
 ** The parts of the font subsetter shared by its files (render/fontfile/):
 ** the bytes of a font and what an error says about them, big-endian
 ** reads, the table directory of one face (sfnt.c), the two subsetters
-** (cff-subset.c, glyf-subset.c) and the pieces of CFF they share
-** (cff-format.c: INDEX and DICT; cff-charstring.c: which subroutines a
-** glyph calls).
+** (cff-subset.c with cff-write.c, glyf-subset.c) and the pieces of CFF
+** they share (cff-format.c: INDEX and DICT; cff-charstring.c: which
+** subroutines a glyph calls).
 **
 ** Every read goes through a position and a length checked first
 ** (cf__ff_fits): the font is untrusted bytes.  A function that finds the
@@ -196,6 +196,11 @@ typedef struct cf__cff_subrs {
 
 int cf__cff_scan_glyph(cf__ff_t *f, const unsigned char *cs, size_t len,
                        unsigned gid, cf__cff_subrs_t *global,
-                       cf__cff_subrs_t *local);
+                       cf__cff_subrs_t *local, long *budget);
+
+/* The steps (charstring bytes interpreted) the scan of n glyphs may take,
+** all together: 2^22 and CF__CFF_STEPS_PER_GLYPH a glyph. */
+#define CF__CFF_STEPS_PER_GLYPH 4096L
+long cf__cff_scan_budget(size_t nglyphs);
 
 #endif

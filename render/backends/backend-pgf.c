@@ -237,35 +237,29 @@ curve(cf__pgf_t *g, double x1, double y1, double x2, double y2, double x3,
     put(g, "\n");
 }
 
-/* cairo_arc: counter-clockwise on the y-down page from a0 to a1 (a1
-** raised by whole turns to a1 >= a0), a line from the current point to
-** its start, cubic pieces of at most a quarter turn. */
+typedef struct arc_ctx {
+    cf__pgf_t *g;
+    bool have_cp;
+} arc_ctx_t;
+
 static void
-arc(cf__pgf_t *g, const double *v, bool have_cp, double *cx, double *cy)
+arc_to(void *ctx, const double *p, int n)
 {
-    double x = v[0], y = v[1], r = v[2], a0 = v[3], a1 = v[4], step;
-    int n, i;
-    if (!(a1 >= a0) && isfinite(a1) && isfinite(a0) && a0 - a1 < 1e6)
-        while (a1 < a0)
-            a1 += 2 * PI;
-    if (!(a1 >= a0 && a1 - a0 < 1e6))
-        return;
-    seg_point(g, have_cp ? "\\pgfpathlineto" : "\\pgfpathmoveto",
-              x + r * cos(a0), y + r * sin(a0));
-    n = (int)ceil((a1 - a0) / (PI / 2) - 1e-9);
-    if (n < 1)
-        n = 1;
-    step = (a1 - a0) / n;
-    for (i = 0; i < n; i++) {
-        double a = a0 + i * step, b = a + step;
-        double h = 4.0 / 3.0 * tan(step / 4) * r;
-        double x0 = x + r * cos(a), y0 = y + r * sin(a);
-        double x3 = x + r * cos(b), y3 = y + r * sin(b);
-        curve(g, x0 - h * sin(a), y0 + h * cos(a), x3 + h * sin(b),
-              y3 - h * cos(b), x3, y3);
-    }
-    *cx = x + r * cos(a1);
-    *cy = y + r * sin(a1);
+    arc_ctx_t *a = ctx;
+    if (n == 1)
+        seg_point(a->g, a->have_cp ? "\\pgfpathlineto" : "\\pgfpathmoveto",
+                  p[0], p[1]);
+    else
+        curve(a->g, p[0], p[1], p[2], p[3], p[4], p[5]);
+}
+
+/* cairo_arc: a line from the current point to its start, then its cubic
+** pieces of at most a quarter turn (render/dlist/dlist.h). */
+static void
+arc(cf__pgf_t *g, const double *v, bool have_cp)
+{
+    arc_ctx_t a = { g, have_cp };
+    cf__arc_cubics(v, arc_to, &a);
 }
 
 static void
@@ -309,7 +303,7 @@ append_path(cf__pgf_t *g, const cf__path_t *p)
             v += 4;
             break;
         case CF__SEG_ARC:
-            arc(g, v, have_cp, &cx, &cy);
+            arc(g, v, have_cp);
             if (!have_cp) {
                 sx = v[0] + v[2] * cos(v[3]);
                 sy = v[1] + v[2] * sin(v[3]);

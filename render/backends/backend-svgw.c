@@ -41,22 +41,10 @@ cf__svg_put_num(struct cf__buf *b, double v)
     return cf__buf_append(b, t, n);
 }
 
-/* The first fault of w, of kind k (a number: v, in the innermost
-** element being written). */
 static void
 fault(cf__svgw_t *w, cf__svgw_fault_kind_t k, double v)
 {
-    w->bad = true;
-    if (w->fault != CF__SVGW_FAULT_NONE)
-        return;
-    w->fault = k;
-    w->bad_value = v;
-    for (int d = w->depth; d-- > 0;)
-        if (w->stack[d].name != NULL) {
-            w->bad_name = w->stack[d].name;
-            w->bad_index = w->stack[d].index;
-            break;
-        }
+    cf__scopes_fault(&w->sc, k, v);
 }
 
 static void
@@ -65,7 +53,7 @@ put_num(cf__svgw_t *w, double v)
     if (cf__svg_put_num(w->dst, v) == 0)
         return;
     if (isfinite(v) && fabs(v) <= 1e9)
-        w->bad = true;                  /* out of memory */
+        w->sc.bad = true;                  /* out of memory */
     else
         fault(w, CF__SVGW_FAULT_NUMBER, v);
 }
@@ -237,21 +225,15 @@ put_stroke(cf__svgw_t *w, const cf__stroke_t *s)
 static void
 push(cf__svgw_t *w, bool group, bool opened)
 {
-    if (w->depth >= CF__SVGW_DEPTH) {
-        fault(w, CF__SVGW_FAULT_DEPTH, 0);
-        return;
-    }
-    w->stack[w->depth].group = group;
-    w->stack[w->depth].opened = opened;
-    w->stack[w->depth].name = NULL;
-    w->depth++;
+    cf__scopes_push(&w->sc, group, opened, NULL, 0);
 }
 
 static void
-pop(cf__svgw_t *w)
+pop(void *ctx)
 {
-    w->depth--;
-    if (w->stack[w->depth].opened)
+    cf__svgw_t *w = ctx;
+    w->sc.depth--;
+    if (w->sc.stack[w->sc.depth].opened)
         put(w, "</g>\n");
 }
 
@@ -361,7 +343,7 @@ begin_page(void *ctx, const cf__page_t *pg)
     if (w->title != NULL)
         cf__svgw_a11y_head(out, w->title, w->caption);
     w->dst = &w->body;
-    w->depth = 0;
+    w->sc.depth = 0;
     push(w, true, false);
     if (pg->background.a > 0) {
         put(w, "<rect width=\"100%\" height=\"100%\"");
@@ -387,25 +369,14 @@ begin_group(void *ctx, const char *name, size_t index, const char *overlay)
     put(w, "\" data-index=\"");
     put(w, b);
     put(w, "\">\n");
-    push(w, true, true);
-    if (w->depth > 0 && w->depth <= CF__SVGW_DEPTH
-        && w->stack[w->depth - 1].group) {
-        w->stack[w->depth - 1].name = name;
-        w->stack[w->depth - 1].index = index;
-    }
+    cf__scopes_push(&w->sc, true, true, name, index);
 }
 
 /* Close the scopes opened since the innermost group, then it. */
 static void
 end_group(void *ctx)
 {
-    cf__svgw_t *w = ctx;
-    while (w->depth > 2) {
-        bool g = w->stack[w->depth - 1].group;
-        pop(w);
-        if (g)
-            break;
-    }
+    cf__scopes_end_group(&((cf__svgw_t *)ctx)->sc, 2, pop, ctx);
 }
 
 static void
@@ -438,7 +409,7 @@ static void
 unclip(void *ctx)
 {
     cf__svgw_t *w = ctx;
-    if (w->depth > 2 && !w->stack[w->depth - 1].group)
+    if (w->sc.depth > 2 && !w->sc.stack[w->sc.depth - 1].group)
         pop(w);
 }
 
@@ -495,7 +466,7 @@ put_uses(cf__svgw_t *w, const cf__buf_t *uses, const cf__buf_t *rules,
     put(w, ">\n");
     for (i = 0; i < n; i++) {
         if (!use_glyph(w, u[i].id))
-            w->bad = true;
+            w->sc.bad = true;
         snprintf(id, sizeof id, "<use xlink:href=\"#g%u\" x=\"", u[i].id);
         put(w, id);
         put_num(w, u[i].x);
@@ -575,7 +546,7 @@ draw_text(void *ctx, const cf__text_op_t *t)
     else if (r != 0)
         fault(w, CF__SVGW_FAULT_GLYPHS, 0);
     else if (uses.failed || rules.failed)
-        w->bad = true;
+        w->sc.bad = true;
     else if (uses.size > 0 || rules.size > 0) {
         if (t->halo > 0 && t->halo_color.a > 0) {
             cf__stroke_t s;
@@ -617,19 +588,19 @@ static int
 end_page(void *ctx)
 {
     cf__svgw_t *w = ctx;
-    while (w->depth > 0)
+    while (w->sc.depth > 0)
         pop(w);
     put(w, "</svg>\n");
     w->dst = w->out;
     put_defs(w);
     cf__buf_append(w->out, w->body.data, w->body.size);
     if (w->body.failed)
-        w->bad = true;
+        w->sc.bad = true;
     cf__buf_free(&w->body);
     cf_free(w->used);
     w->used = NULL;
     w->nused = 0;
-    return w->out->failed || w->bad ? -1 : 0;
+    return w->out->failed || w->sc.bad ? -1 : 0;
 }
 
 /* Each box clips its inside away (even-odd with a rectangle far around
@@ -676,30 +647,5 @@ const cf__backend_t cf__svgw_backend = {
 cf_status_t
 cf__svgw_fault(const cf__svgw_t *w, const char *what, cf_diag_t *diag)
 {
-    char where[96] = "";
-    switch (w->fault) {
-    case CF__SVGW_FAULT_NUMBER:
-        if (w->bad_name != NULL)
-            snprintf(where, sizeof where, " of %.40s %zu", w->bad_name,
-                     w->bad_index + 1);
-        return cf_diag_set(diag, CF_STATUS_INVALID_ARG,
-                           w->bad_name != NULL ? (long)w->bad_index : -1,
-                           "%s: a coordinate%s is %g, %s; SVG holds numbers "
-                           "within 1e9 bp", what, where, w->bad_value,
-                           isfinite(w->bad_value) ? "too far from the page"
-                                                  : "not a finite number");
-    case CF__SVGW_FAULT_GLYPHS:
-        return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
-                           "%s: the outlines of a label's glyphs could not "
-                           "be made (out of memory, or the font failed)",
-                           what);
-    case CF__SVGW_FAULT_DEPTH:
-        return cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
-                           "%s: groups nested deeper than %d", what,
-                           CF__SVGW_DEPTH);
-    case CF__SVGW_FAULT_NONE:
-        break;
-    }
-    return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1, "out of memory writing "
-                       "%s", what);
+    return cf__scopes_diag(&w->sc, "SVG", what, diag);
 }

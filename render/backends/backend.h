@@ -7,8 +7,9 @@
 ** change.
 **
 ** Backends:
-**   cairo (render/backends/backend-cairo.c): PDF, PS, EPS and PNG
-**     surfaces;
+**   cairo (render/backends/backend-cairo.c): PS, EPS and PNG surfaces;
+**   pdf writer (render/backends/backend-pdfw.c, pdf-doc.c): every PDF
+**     figure;
 **   dump  (render/backends/backend-dump.c): one line of text per operation,
 **     deterministic, for tests;
 **   pgf   (render/backends/backend-pgf.c): a pgfpicture for TeX, labels as TeX
@@ -17,7 +18,8 @@
 **     live view, overlay animations, the course pages' module);
 **   measure (render/backends/measure.c): the layout's ink questions.
 ** Drawing backends receive markers as paths (render/dlist/marker.c), and
-** meshes as flat pieces unless they draw mesh gradients (cairo).
+** meshes as flat pieces unless they draw mesh gradients (cairo, the PDF
+** writer).
 */
 #ifndef CURVEFIG_RENDER_BACKEND_H
 #define CURVEFIG_RENDER_BACKEND_H
@@ -168,6 +170,44 @@ typedef struct cf__svgw_use {
     double x, y;
 } cf__svgw_use_t;
 
+/* The scopes a vector writer (the SVG and the PDF writer,
+** render/backends/writer-scopes.c) has open: elements' groups and clip
+** scopes, each noting whether it wrote its opening (<g>, q), an
+** element's name and index (for a fault); and the writer's first fault
+** (bad: any, out of memory when fault is NONE). */
+typedef struct cf__scopes {
+    struct cf__scope {
+        bool group;              /* an element's group, else a clip scope */
+        bool opened;             /* it wrote its opening */
+        const char *name;        /* an element's: its name and index */
+        size_t index;
+    } stack[CF__SVGW_DEPTH];
+    int depth;
+    bool bad;
+    cf__svgw_fault_kind_t fault;
+    double bad_value;
+    const char *bad_name;
+    size_t bad_index;
+} cf__scopes_t;
+
+/* Fault k (a number: v) of the innermost element open, the first kept. */
+void cf__scopes_fault(cf__scopes_t *s, cf__svgw_fault_kind_t k, double v);
+/* Open a scope (a group named name, index when group); false, a fault,
+** when CF__SVGW_DEPTH are open. */
+bool cf__scopes_push(cf__scopes_t *s, bool group, bool opened,
+                     const char *name, size_t index);
+/* end_group: pop (which closes the innermost scope and takes it off)
+** the scopes opened since the innermost group, then it, keeping the
+** first `floor` (the page's). */
+void cf__scopes_end_group(cf__scopes_t *s, int floor,
+                          void (*pop)(void *w), void *w);
+/* Why the writer of a `format` ("SVG", "PDF") failed, for a document
+** called `what` ("svg", "frame 3 of the animated svg"): into diag
+** (CF_STATUS_INVALID_ARG for a number or groups too deep, else
+** CF_STATUS_NO_MEMORY), its status. */
+cf_status_t cf__scopes_diag(const cf__scopes_t *s, const char *format,
+                            const char *what, cf_diag_t *diag);
+
 typedef struct cf__svgw {
     struct cf__buf *out;
     int (*outline)(void *outline_ctx, const cf__text_op_t *t,
@@ -178,19 +218,8 @@ typedef struct cf__svgw {
                 struct cf__buf *uses, struct cf__buf *rules);
     int (*glyph_path)(void *outline_ctx, unsigned id, struct cf__buf *d);
     /* the writer's own */
-    struct {
-        bool group;              /* an element's group, else a clip scope */
-        bool opened;             /* it wrote a <g> */
-        const char *name;        /* an element's: its name and index */
-        size_t index;
-    } stack[CF__SVGW_DEPTH];
-    int depth;
+    cf__scopes_t sc;
     unsigned clips;
-    bool bad;
-    cf__svgw_fault_kind_t fault;
-    double bad_value;
-    const char *bad_name;
-    size_t bad_index;
     struct cf__buf body, *dst;   /* the drawing, written after the <defs> */
     unsigned char *used;         /* used[id]: outline id is used */
     size_t nused;
@@ -198,12 +227,104 @@ typedef struct cf__svgw {
 
 extern const cf__backend_t cf__svgw_backend;
 
-/* Why end_page of w failed, for a document called `what` ("svg", "frame
-** 3 of the animated svg"): into diag (CF_STATUS_INVALID_ARG for a
-** number, else CF_STATUS_NO_MEMORY, or CF_STATUS_INVALID_ARG for groups
-** too deep), its status. */
+/* Why end_page of w failed, for a document called `what`: its scopes'
+** fault (cf__scopes_diag). */
 cf_status_t cf__svgw_fault(const cf__svgw_t *w, const char *what,
                            cf_diag_t *diag);
+
+/* ---- the PDF writer ---------------------------------------------------- */
+
+/* Its functions; ctx is a cf__pdfw_t with outline and outline_ctx set (as
+** the SVG writer's: a label's outlines as SVG path data), glyphs
+** optional, and the rest zero.  Each begin_page .. end_page is one page
+** of the document (an overlay step); cf__pdfw_document then writes the
+** whole document, and cf__pdfw_fini releases the writer.  end_page fails
+** as the SVG writer's does (cf__pdfw_fault says why, with the SVG
+** writer's words).
+** With glyphs, a label is text: glyphs appends a cf__pdfw_glyph_t to
+** `glyphs` for each of its glyphs and x y w h (4 doubles) to `rules` for
+** each fraction rule; 1 when the label cannot be text (a face without a
+** font file, or emboldened by cairo; a glyph missing from its font):
+** then its outlines; other nonzero when it failed.  Each font file's face
+** is embedded once, subset (render/fontfile/fontfile.h); a face the
+** subsetter refuses makes cf__pdfw_document answer 1: play the pages
+** again (cf__pdfw_restart), its labels then as outlines. */
+#define CF__PDFW_DEPTH CF__SVGW_DEPTH
+typedef struct cf__pdfw_gs {
+    double fill[3], stroke[3];   /* colours set (-1: unknown) */
+    int ca, CA;                  /* alpha resources set (-1: 1, unset) */
+    double width;                /* -1: unknown */
+    int cap, join;               /* -1: unknown */
+    bool dashed;                 /* a dash is set */
+} cf__pdfw_gs_t;
+typedef struct cf__pdfw_glyph {
+    const char *file;            /* its face's font file and index */
+    unsigned index;
+    const char *psname;          /* NULL, or the face's PostScript name */
+    double m[4];                 /* its font matrix (xx yx xy yy, cairo's:
+                                    em, y down, to the page's bp) */
+    unsigned gid;
+    double x, y;                 /* its origin on the page */
+    const char *text;            /* the characters of the cluster it */
+    size_t len;                  /* begins (len 0: none) */
+} cf__pdfw_glyph_t;
+struct cf__pdfw_font;
+typedef struct cf__pdfw {
+    int (*outline)(void *outline_ctx, const cf__text_op_t *t,
+                   struct cf__buf *d);
+    void *outline_ctx;
+    int (*glyphs)(void *outline_ctx, const cf__text_op_t *t,
+                  struct cf__buf *glyphs, struct cf__buf *rules);
+    bool probe;                  /* a face is tried (subset with the glyph
+                                    it is first used for) then, not only
+                                    at the end: for pages that cannot be
+                                    played again (an animation's frames) */
+    /* the writer's own */
+    double width, height;        /* the page's (every page's), bp */
+    const char *lang;
+    struct cf__buf content;      /* the page being drawn, uncompressed */
+    struct cf__pdfw_page {
+        struct cf__buf content;  /* its content stream, uncompressed */
+        bool translucent;        /* it paints with an opacity below 1:
+                                    a transparency group */
+    } *pages;
+    size_t npages, pages_cap;
+    bool translucent;            /* the page being drawn's */
+    struct cf__pdfw_shading {
+        double box[4];           /* the vertices' range: x0 y0 x1 y1 */
+        struct cf__buf data;     /* the vertices, uncompressed */
+    } *shadings;                 /* each mesh's: /ShN */
+    size_t nshadings, shadings_cap;
+    double *alphas;              /* the distinct opacities: /aN /AN */
+    size_t nalphas, alphas_cap;
+    struct cf__pdfw_font *fonts; /* each face's: /FN (pdf-fonts.c) */
+    size_t nfonts, fonts_cap;
+    cf__scopes_t sc;             /* the scopes open (opened: wrote q) */
+    struct {
+        double clip[4];          /* the visible box before it */
+        cf__pdfw_gs_t gs;        /* the graphics state before it */
+    } saved[CF__PDFW_DEPTH];     /* saved[k]: of scope k */
+    double clip[4];              /* the visible box: x0 y0 x1 y1 */
+    cf__pdfw_gs_t gs;            /* the graphics state in the stream */
+} cf__pdfw_t;
+
+extern const cf__backend_t cf__pdfw_backend;
+
+/* The document of w's pages (render/backends/pdf-doc.c) into out (empty):
+** info (title and caption as /Title and /Subject, may be NULL; date, the
+** creation and modification date as "YYYY-MM-DDTHH:MM:SSZ"), the tagged
+** structure (docs/accessibility.md), the fonts, the classic xref table;
+** the same bytes for the same pages.  0; 1 when a font was refused (out
+** empty: cf__pdfw_restart, then play the pages again); -1 out of memory
+** (out empty). */
+int cf__pdfw_document(cf__pdfw_t *w, const char *title,
+                      const char *caption, const char *date,
+                      struct cf__buf *out);
+void cf__pdfw_fini(cf__pdfw_t *w);
+/* w without its pages, ready for them again; the fonts refused stay so. */
+void cf__pdfw_restart(cf__pdfw_t *w);
+/* Why end_page of w failed, as cf__svgw_fault. */
+cf_status_t cf__pdfw_fault(const cf__pdfw_t *w, cf_diag_t *diag);
 
 /* The accessible text of an SVG document (docs/accessibility.md): the
 ** attributes of its <svg> element (role="img", aria-labelledby naming

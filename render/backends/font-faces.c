@@ -497,6 +497,16 @@ new_face(FcPattern *prepared)
              weight, width);
     f->face.key = f->key;
     f->face.outlines = cf__font_outline_cache_new();
+    f->face.file = (const char *)file;    /* the pattern's, kept */
+    f->face.index = (unsigned)index;
+    if (FcPatternGetString(prepared, FC_POSTSCRIPT_NAME, 0, &feat)
+        == FcResultMatch)
+        f->face.psname = (const char *)feat;
+    {
+        FcBool bold = FcFalse;
+        FcPatternGetBool(prepared, FC_EMBOLDEN, 0, &bold);
+        f->face.emboldened = bold == FcTrue;
+    }
     faces[nfaces++] = f;
     return f;
 }

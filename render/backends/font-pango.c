@@ -113,6 +113,10 @@ add_face(pango_run_t *r, PangoFont *font)
     r->faces[r->nfaces].key = r->keys[r->nfaces];
     r->faces[r->nfaces].outlines = NULL;   /* pango's fonts come and go */
     r->faces[r->nfaces].show_options = NULL;
+    r->faces[r->nfaces].file = NULL;      /* a PDF draws its outlines */
+    r->faces[r->nfaces].index = 0;
+    r->faces[r->nfaces].psname = NULL;
+    r->faces[r->nfaces].emboldened = false;
     r->nfaces++;
     return true;
 }

@@ -12,6 +12,24 @@
 #include "label-glyph-runs.h"
 #include "label-impl.h"
 
+/* The bytes of glyph k's cluster in span s (from its cluster to the
+** next larger cluster of the span's glyphs), 0 when a glyph before it
+** in the span's logical order begins the same cluster. */
+static size_t
+cluster_len(const cf__font_glyphs_t *g, const cf__font_span_t *s, size_t k)
+{
+    unsigned c = g->glyphs[s->glyph + k].cluster;
+    size_t end = s->nbytes, i;
+    for (i = 0; i < s->nglyphs; i++) {
+        unsigned ci = g->glyphs[s->glyph + i].cluster;
+        if (ci == c && (s->backward ? i > k : i < k))
+            return 0;
+        if (ci > c && ci < end)
+            end = ci;
+    }
+    return c < end ? end - c : 0;
+}
+
 static int
 run_glyphs(const cf__font_glyphs_t *g, double ox, double oy,
            const cf__label_glyph_fns_t *fns, void *ctx)
@@ -27,11 +45,19 @@ run_glyphs(const cf__font_glyphs_t *g, double ox, double oy,
             continue;
         for (k = 0; r == 0 && k < s->nglyphs; k++) {
             const cf__font_glyph_t *gi = &g->glyphs[s->glyph + k];
-            if (gi->id != CF__FONT_GLYPH_EMPTY)
-                r = fns->glyph(
-                    ctx, s->face->scaled, gi->id,
-                    bx + (double)(xpos + gi->x) / CF__FONT_SCALE,
-                    gi->y != 0 ? by + (double)gi->y / CF__FONT_SCALE : by);
+            if (gi->id != CF__FONT_GLYPH_EMPTY) {
+                cf__label_glyph_t lg;
+                lg.font = s->face->scaled;
+                lg.face = s->face;
+                lg.index = gi->id;
+                lg.x = bx + (double)(xpos + gi->x) / CF__FONT_SCALE;
+                lg.y = gi->y != 0 ? by + (double)gi->y / CF__FONT_SCALE
+                                  : by;
+                lg.len = cluster_len(g, s, k);
+                lg.text = g->text + s->byte
+                          + (lg.len > 0 ? gi->cluster : 0);
+                r = fns->glyph(ctx, &lg);
+            }
             xpos += gi->width;
         }
     }

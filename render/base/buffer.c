@@ -38,3 +38,14 @@ cf__buf_free(cf__buf_t *b)
     cf_free(b->data);
     memset(b, 0, sizeof *b);
 }
+
+const unsigned char *
+cf__bytes_find(const unsigned char *h, const unsigned char *end,
+               const char *needle)
+{
+    size_t m = strlen(needle);
+    for (; h + m <= end; h++)
+        if (*h == (unsigned char)needle[0] && memcmp(h, needle, m) == 0)
+            return h;
+    return NULL;
+}

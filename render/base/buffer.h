@@ -17,4 +17,9 @@ typedef struct cf__buf {
 int cf__buf_append(cf__buf_t *b, const void *data, size_t n);
 void cf__buf_free(cf__buf_t *b);
 
+/* The first needle (a C string) in the bytes [h, end), or NULL. */
+const unsigned char *cf__bytes_find(const unsigned char *h,
+                                    const unsigned char *end,
+                                    const char *needle);
+
 #endif

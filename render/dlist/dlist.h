@@ -276,4 +276,14 @@ void cf__box_grow(double box[4], double x, double y);
 ** or too far apart. */
 bool cf__arc_range(const double *v, double *a0, double *a1);
 
+/* ---- arcs as cubics (arc-cubic.c) -------------------------------------- */
+
+/* The arc v (cx cy r a0 a1) as cairo_arc draws it (counter-clockwise on
+** the y-down page, a1 raised by whole turns to a1 >= a0): to gets its
+** start (n 1: one point), then its cubic pieces of at most a quarter
+** turn (n 3: two control points and the end).  false (no call) when the
+** angles are not finite or too far apart. */
+bool cf__arc_cubics(const double *v, void (*to)(void *ctx, const double *p,
+                                                int n), void *ctx);
+
 #endif

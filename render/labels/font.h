@@ -64,6 +64,14 @@ typedef struct cf__font_face {
     void *show_options;    /* NULL, or the cairo_font_options_t its
                               glyphs are shown with, not its scaled
                               font's (render/backends/font-faces.c) */
+    const char *file;      /* NULL, or its font file (fontconfig's
+                              FC_FILE), which a PDF embeds */
+    unsigned index;        /* the face's index in that file (FC_INDEX) */
+    const char *psname;    /* NULL, or its PostScript name
+                              (FC_POSTSCRIPT_NAME): a collection's faces
+                              have their own, their CFF one shared */
+    bool emboldened;       /* bold made by cairo (FC_EMBOLDEN): a PDF
+                              draws its outlines, the file has it not */
 } cf__font_face_t;
 
 typedef struct cf__font_glyph {

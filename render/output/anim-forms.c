@@ -8,8 +8,6 @@
 #include <stdio.h>
 #include <string.h>
 
-#include <cairo-pdf.h>
-
 #include "anim-write-private.h"
 
 const char *
@@ -24,13 +22,6 @@ cf__anim_extension(unsigned output)
     case CF__ANIM_OUT_WEBM: return "webm";
     default: return "";
     }
-}
-
-static cairo_status_t
-to_buf(void *closure, const unsigned char *data, unsigned int length)
-{
-    return cf__buf_append(closure, data, length) == 0
-        ? CAIRO_STATUS_SUCCESS : CAIRO_STATUS_WRITE_ERROR;
 }
 
 /* The file of form bit. */
@@ -50,26 +41,14 @@ cf__anim_forms_open(anim_t *a, forms_t *f, cf_diag_t *diag)
     unsigned out = a->o->outputs;
     memset(f, 0, sizeof *f);
     if (out & CF__ANIM_OUT_PDF) {
-        f->pdf_surf = cairo_pdf_surface_create_for_stream(
-            to_buf, &f->pdf, a->page.width, a->page.height);
-        char date[40];
-        cf__pdf_date(date, sizeof date);
-        cairo_pdf_surface_set_metadata(f->pdf_surf,
-                                       CAIRO_PDF_METADATA_CREATE_DATE, date);
-        cairo_pdf_surface_set_metadata(f->pdf_surf,
-                                       CAIRO_PDF_METADATA_MOD_DATE, date);
-        if (a->title != NULL)
-            cairo_pdf_surface_set_metadata(f->pdf_surf,
-                                           CAIRO_PDF_METADATA_TITLE,
-                                           a->title);
-        if (a->caption != NULL)
-            cairo_pdf_surface_set_metadata(f->pdf_surf,
-                                           CAIRO_PDF_METADATA_SUBJECT,
-                                           a->caption);
-        f->pdf_cr = cairo_create(f->pdf_surf);
-        if (cairo_status(f->pdf_cr) != CAIRO_STATUS_SUCCESS)
+        /* the PDF writer; its fonts tried on first use (the frames are
+        ** not kept to be played again) */
+        f->pdfw = cf_calloc(1, sizeof *f->pdfw);
+        if (f->pdfw == NULL)
             return cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
                                "out of memory opening the pdf");
+        cf__pdf_writer_init(f->pdfw, &f->outliner);
+        f->pdfw->probe = true;
     }
     if (out & CF__ANIM_OUT_RASTER) {
         static const unsigned raster_bits[4] = {
@@ -99,14 +78,12 @@ void
 cf__anim_forms_free(forms_t *f)
 {
     cf__svg_anim_free(&f->svg);
-    if (f->pdf_cr != NULL)
-        cairo_destroy(f->pdf_cr);
-    if (f->pdf_surf != NULL) {
-        cairo_surface_finish(f->pdf_surf);
-        cairo_surface_destroy(f->pdf_surf);
+    if (f->pdfw != NULL) {
+        cf__pdfw_fini(f->pdfw);
+        cf_free(f->pdfw);
+        f->pdfw = NULL;
     }
-    f->pdf_cr = NULL;
-    f->pdf_surf = NULL;
+    cf__glyph_outliner_fini(&f->outliner);
     cf__buf_free(&f->pdf);
     for (int i = 0; i < 4; i++) {
         cf__anim_sink_abort(f->sink[i]);
@@ -129,12 +106,13 @@ cf__anim_vector_frame(anim_t *a, forms_t *f, unsigned k, cf__dl_t *dl,
         st = cf__svg_anim_add(&f->svg, dl, &a->page, step, a->src->seconds,
                               diag);
     if (st == CF_STATUS_OK && (a->o->outputs & CF__ANIM_OUT_PDF)) {
-        cf__anim_draw(dl, &a->page, step, f->pdf_cr);
-        cairo_show_page(f->pdf_cr);
-        if (cairo_status(f->pdf_cr) != CAIRO_STATUS_SUCCESS)
-            st = cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
-                             "cairo failed on page %u of the pdf: %s", k + 1,
-                             cairo_status_to_string(cairo_status(f->pdf_cr)));
+        cf__pdfw_backend.begin_page(f->pdfw, &a->page);
+        cf__dl_play_step(dl, &a->page, step, &cf__pdfw_backend, f->pdfw);
+        if (cf__pdfw_backend.end_page(f->pdfw) != 0) {
+            char what[48];
+            snprintf(what, sizeof what, "page %u of the pdf", k + 1);
+            st = cf__scopes_diag(&f->pdfw->sc, "PDF", what, diag);
+        }
     }
     cf__anim_frame_done(a, k, dl, fig);
     return st;
@@ -172,12 +150,16 @@ cf__anim_forms_finish(anim_t *a, forms_t *f, cf_diag_t *diag)
         st = cf__svg_anim_finish(&f->svg, a->src->same_figure
                                               ? a->src->frames - 1 : 0,
                                  a->title, a->caption, &svg, diag);
-    if (st == CF_STATUS_OK && f->pdf_surf != NULL) {
-        cairo_destroy(f->pdf_cr);
-        f->pdf_cr = NULL;
-        cairo_surface_finish(f->pdf_surf);
-        if (cairo_surface_status(f->pdf_surf) != CAIRO_STATUS_SUCCESS
-            || f->pdf.failed)
+    if (st == CF_STATUS_OK && f->pdfw != NULL) {
+        char date[40];
+        int r;
+        cf__pdf_date(date, sizeof date);
+        r = cf__pdfw_document(f->pdfw, a->title, a->caption, date, &f->pdf);
+        if (r == 1)
+            st = cf_diag_set(diag, CF_STATUS_INVALID_ARG, -1,
+                             "the pdf: a font of the labels could not be "
+                             "embedded");
+        else if (r != 0)
             st = cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
                              "out of memory writing the pdf");
     }

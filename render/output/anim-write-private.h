@@ -88,8 +88,8 @@ cf_status_t cf__anim_workers_read(const workers_t *ws, unsigned k,
 typedef struct forms {
     cf__svg_anim_t svg;
     cf__buf_t pdf;
-    cairo_surface_t *pdf_surf;
-    cairo_t *pdf_cr;
+    cf__pdfw_t *pdfw;             /* the PDF writer, a page a frame */
+    cf__glyph_outliner_t outliner;
     cf__anim_sink_t *sink[4];     /* GIF, APNG, MP4, WebM */
     cf__buf_t bytes[4];
 } forms_t;

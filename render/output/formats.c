@@ -1,15 +1,14 @@
 /*
-** The output formats: PDF, PS, EPS and PNG pages drawn from a display
-** list by the cairo backend into memory, and made deterministic there (no
+** The output formats: PS, EPS and PNG pages drawn from a display list by
+** the cairo backend into memory, and made deterministic there (no
 ** creation dates; title and caption as metadata); SVG pages by the SVG
-** writer, PGF pages by the PGF backend.
+** writer, PDF documents by the PDF writer, PGF pages by the PGF backend.
 */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include <cairo-pdf.h>
 #include <cairo-ps.h>
 
 #include "backend.h"
@@ -259,6 +258,58 @@ svg_render(const cf__dl_t *dl, const cf__page_t *pg, const char *title,
     return cf__svgw_fault(&w, "svg", diag);
 }
 
+void
+cf__pdf_writer_init(cf__pdfw_t *w, cf__glyph_outliner_t *o)
+{
+    w->outline = cf__glyph_outline;
+    w->glyphs = cf__pdf_glyphs;
+    w->outline_ctx = o;
+}
+
+/* PDF: the PDF writer (render/backends/backend-pdfw.c) into out, one
+** page, or one per overlay step of pg's; labels as text
+** (render/output/pdf-glyphs.c), else the outlines of their glyphs; played
+** again when a font was refused (its labels then as outlines). */
+static cf_status_t
+pdf_render(const cf__dl_t *dl, const cf__page_t *pg, const char *title,
+           const char *caption, cf__buf_t *out, cf_diag_t *diag)
+{
+    cf__glyph_outliner_t outliner;
+    cf__pdfw_t w;
+    char date[40];
+    unsigned k, first = pg->first_step, last = first ? pg->last_step : 0;
+    cf_status_t st;
+    int r = 0;
+    memset(&outliner, 0, sizeof outliner);
+    memset(&w, 0, sizeof w);
+    cf__pdf_writer_init(&w, &outliner);
+    cf__pdf_date(date, sizeof date);
+    do {
+        r = 0;
+        for (k = first; k <= last && r == 0; k++) {
+            cf__pdfw_backend.begin_page(&w, pg);
+            cf__dl_play_step(dl, pg, k, &cf__pdfw_backend, &w);
+            r = cf__pdfw_backend.end_page(&w);
+        }
+        if (r != 0)
+            break;
+        r = cf__pdfw_document(&w, title, caption, date, out);
+        if (r == 1)
+            cf__pdfw_restart(&w);
+    } while (r == 1);
+    cf__glyph_outliner_fini(&outliner);
+    if (r == 0) {
+        cf__pdfw_fini(&w);
+        return CF_STATUS_OK;
+    }
+    cf__buf_free(out);
+    st = w.sc.bad ? cf__pdfw_fault(&w, diag)
+               : cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
+                             "out of memory writing pdf");
+    cf__pdfw_fini(&w);
+    return st;
+}
+
 /* PGF: the PGF backend into out, without cairo surfaces. */
 static cf_status_t
 pgf_render(const cf__dl_t *dl, const cf__page_t *page, const char *title,
@@ -323,23 +374,6 @@ make_surface(cf_format_t format, const cf__page_t *pg, double dpi,
 {
     cairo_surface_t *surf = NULL;
     switch (format) {
-    case CF_FORMAT_PDF: {
-        char date[40];
-        surf = cairo_pdf_surface_create_for_stream(stream_write, raw,
-                                                   pg->width, pg->height);
-        cf__pdf_date(date, sizeof date);
-        cairo_pdf_surface_set_metadata(surf, CAIRO_PDF_METADATA_CREATE_DATE,
-                                       date);
-        cairo_pdf_surface_set_metadata(surf, CAIRO_PDF_METADATA_MOD_DATE,
-                                       date);
-        if (title != NULL)
-            cairo_pdf_surface_set_metadata(surf, CAIRO_PDF_METADATA_TITLE,
-                                           title);
-        if (caption != NULL)
-            cairo_pdf_surface_set_metadata(surf, CAIRO_PDF_METADATA_SUBJECT,
-                                           caption);
-        break;
-    }
     case CF_FORMAT_PS:
     case CF_FORMAT_EPS:
         surf = cairo_ps_surface_create_for_stream(stream_write, raw,
@@ -463,6 +497,8 @@ cf__format_render(cf_format_t format, const cf__dl_t *dl,
         return pgf_render(dl, page, title, caption, out, diag);
     if (format == CF_FORMAT_SVG)
         return svg_render(dl, page, title, caption, out, diag);
+    if (format == CF_FORMAT_PDF)
+        return pdf_render(dl, page, title, caption, out, diag);
     pg.raster = format == CF_FORMAT_PNG;
     room = cf_alloc_array(longest_path(dl) + 1, seg_bytes(format));
     if (room == NULL)
@@ -481,17 +517,7 @@ cf__format_render(cf_format_t format, const cf__dl_t *dl,
     cr = cairo_create(surf);
     if (format == CF_FORMAT_PNG)
         cairo_scale(cr, dpi / 72.0, dpi / 72.0);
-    /* a tagged PDF: the pages are one Figure of a Document (what cairo
-    ** cannot say of it is added after: render/output/pdf-tags.c) */
-    if (format == CF_FORMAT_PDF) {
-        cairo_tag_begin(cr, "Document", "");
-        cairo_tag_begin(cr, "Figure", "");
-    }
     play_steps(dl, &pg, cr);
-    if (format == CF_FORMAT_PDF) {
-        cairo_tag_end(cr, "Figure");
-        cairo_tag_end(cr, "Document");
-    }
     cst = cairo_status(cr);
     cairo_destroy(cr);
     cf_free(room);
@@ -520,17 +546,6 @@ cf__format_render(cf_format_t format, const cf__dl_t *dl,
                            "cairo failed rendering %s: %s",
                            format_names[format],
                            cairo_status_to_string(cst));
-    }
-    if (format == CF_FORMAT_PDF) {
-        r = cf__pdf_tag(&raw, title, caption, pg.lang, out);
-        if (r == 1) {
-            *out = raw;
-            return CF_STATUS_OK;
-        }
-        cf__buf_free(&raw);
-        return r == 0 ? CF_STATUS_OK
-                      : cf_diag_set(diag, CF_STATUS_NO_MEMORY, -1,
-                                    "out of memory tagging the pdf");
     }
     if (format != CF_FORMAT_PS && format != CF_FORMAT_EPS) {
         *out = raw;

@@ -99,22 +99,20 @@ void cf__svg_anim_free(cf__svg_anim_t *a);
 cf_status_t cf__temp_open(const char *path, int *fd, char **tmp,
                           cf_diag_t *diag);
 
+/* w (zero) set up as every PDF of a figure is written (formats.c):
+** outlines and glyphs natively, through o (zero; released with
+** cf__glyph_outliner_fini after w's last page). */
+void cf__pdf_writer_init(cf__pdfw_t *w, cf__glyph_outliner_t *o);
+
+/* The glyphs function of the PDF writer natively (render/output/
+** pdf-glyphs.c; backend.h): ctx unused. */
+int cf__pdf_glyphs(void *ctx, const cf__text_op_t *t, cf__buf_t *glyphs,
+                   cf__buf_t *rules);
+
 /* The EPS of a PS page from cf__format_render (cairo 1.16.0 only): 0, or
 ** -1 when the PS is not as expected (render the EPS then), -2 out of
 ** memory. */
 int cf__eps_from_ps(const cf__buf_t *ps, cf__buf_t *eps);
 
-/* The tagged PDF cairo 1.16 wrote, with what its tag API cannot write
-** (render/output/pdf-tags.c): /Alt (alt, then desc) on every Figure
-** element, /Lang (lang, may be NULL) and /DisplayDocTitle in the catalog.
-** 0: out holds it; 1: pdf is not in cairo 1.16's layout or has no Figure
-** (out empty: use pdf as it is); -1: out of memory. */
-/* The first needle in [h, end), or NULL (pdf-tags.c). */
-const unsigned char *cf__bytes_find(const unsigned char *h,
-                                    const unsigned char *end,
-                                    const char *needle);
-
-int cf__pdf_tag(const cf__buf_t *pdf, const char *alt, const char *desc,
-                const char *lang, cf__buf_t *out);
 
 #endif

@@ -22,15 +22,7 @@ put(cf__buf_t *b, const char *s)
     return cf__buf_append(b, s, strlen(s));
 }
 
-static const unsigned char *
-find(const unsigned char *h, const unsigned char *end, const char *needle)
-{
-    size_t m = strlen(needle);
-    for (; h + m <= end; h++)
-        if (*h == (unsigned char)needle[0] && memcmp(h, needle, m) == 0)
-            return h;
-    return NULL;
-}
+#define find cf__bytes_find
 
 /* The symbols of [p, end) (the frame's <defs>) that defs lacks, added. */
 static int

@@ -45,14 +45,13 @@ typedef struct label_ctx {
 } label_ctx_t;
 
 static int
-on_glyph(void *ctx, cairo_scaled_font_t *font, unsigned long index,
-         double x, double y)
+on_glyph(void *ctx, const cf__label_glyph_t *g)
 {
     label_ctx_t *lc = ctx;
     cf__svgw_use_t u;
-    u.id = glyph_id(lc->sg, font, index);
-    u.x = x;
-    u.y = y;
+    u.id = glyph_id(lc->sg, g->font, g->index);
+    u.x = g->x;
+    u.y = g->y;
     if (u.id == 0)
         return -1;
     return cf__buf_append(lc->uses, &u, sizeof u);

@@ -21,6 +21,7 @@ put(cf__buf_t *b, const char *s)
     return cf__buf_append(b, s, strlen(s));
 }
 
+/* The first needle in [h, end), or NULL. */
 #define find cf__bytes_find
 
 int

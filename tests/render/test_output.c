@@ -102,13 +102,14 @@ test_no_clock_in_files(void **state)
     eps = render(fig, CF_FORMAT_EPS, NULL);
     assert_false(blob_has(&ps, "%%CreationDate"));
     assert_false(blob_has(&eps, "%%CreationDate"));
-    assert_true(blob_has(&pdf, "/CreationDate (20000101000000Z)"));
+    assert_true(blob_has(&pdf, "/CreationDate (D:20000101000000Z)"));
     cf_free(pdf.data);
     /* SOURCE_DATE_EPOCH = 1700000000 is 2023-11-14 22:13:20 UTC */
     setenv("SOURCE_DATE_EPOCH", "1700000000", 1);
     assert_int_equal(cf_figure_set_description(fig, "auto"), CF_STATUS_OK);
     pdf = render(fig, CF_FORMAT_PDF, NULL);
-    assert_true(blob_has(&pdf, "/CreationDate (20231114221320Z)"));
+    assert_true(blob_has(&pdf, "/CreationDate (D:20231114221320Z)"));
+    assert_true(blob_has(&pdf, "/ModDate (D:20231114221320Z)"));
     unsetenv("SOURCE_DATE_EPOCH");
     /* the alt text and the description go into the PDF metadata */
     assert_true(blob_has(&pdf, "/Title"));

@@ -244,15 +244,14 @@ typedef struct glyph_check {
 } glyph_check_t;
 
 static int
-glyph_at(void *ctx, cairo_scaled_font_t *font, unsigned long index,
-         double x, double y)
+glyph_at(void *ctx, const cf__label_glyph_t *lg)
 {
     glyph_check_t *g = ctx;
     cairo_glyph_t gl;
-    gl.index = index;
-    gl.x = x;
-    gl.y = y;
-    cairo_set_scaled_font(g->mine, font);
+    gl.index = lg->index;
+    gl.x = lg->x;
+    gl.y = lg->y;
+    cairo_set_scaled_font(g->mine, lg->font);
     cairo_glyph_path(g->mine, &gl, 1);
     g->glyphs++;
     return 0;
@@ -505,7 +504,7 @@ test_structure_and_bad_numbers(void **state)
         assert_int_equal(d.index, 1);
         /* out of memory: said so alone */
         memset(&w, 0, sizeof w);
-        w.bad = true;
+        w.sc.bad = true;
         cf_diag_clear(&d);
         assert_int_equal(cf__svgw_fault(&w, "svg", &d), CF_STATUS_NO_MEMORY);
         assert_string_equal(d.msg, "out of memory writing svg");

@@ -135,12 +135,15 @@ test_pdf(void **state)
              bf = dict_int(p, end, "/BitsPerFlag "),
              len = dict_int(p, end, "/Length ");
         assert_non_null(end);
-        assert_true(type == 6 || type == 7);
+        assert_true(type == 4 || type == 6 || type == 7);
         assert_true(bc > 0 && bk > 0 && bf > 0 && len > 0);
-        /* a patch: its flag, 12 (type 6) or 16 (type 7) points, 4 RGB
-        ** colours (whole bytes for these sizes) */
+        /* a triangle of a free-form shading (type 4, the PDF writer's):
+        ** 3 vertices of a flag, a point and an RGB colour; a patch (6,
+        ** 7): its flag, 12 or 16 points, 4 RGB colours (whole bytes for
+        ** these sizes) */
         long pts = type == 6 ? 12 : 16;
-        long patch = (bf + pts * 2 * bc + 4 * 3 * bk) / 8;
+        long patch = type == 4 ? 3 * (bf + 2 * bc + 3 * bk) / 8
+                               : (bf + pts * 2 * bc + 4 * 3 * bk) / 8;
         const unsigned char *data = (const unsigned char *)end + 6;
         if (*data == '\r')
             data++;
@@ -156,7 +159,7 @@ test_pdf(void **state)
             assert_int_equal(uncompress(raw, &out, data, (uLong)len), Z_OK);
             nbytes = (long)out;
         }
-        print_message("shading of type %ld: %ld bytes, %ld patches of %ld; "
+        print_message("shading of type %ld: %ld bytes, %ld pieces of %ld; "
                       "%zu mesh triangles\n", type, nbytes, nbytes / patch,
                       patch, fx->ntri);
         assert_int_equal(nbytes % patch, 0);

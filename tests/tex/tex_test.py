@@ -157,6 +157,9 @@ def check_docs():
 
 
 PGF_FIGS = ("lec05-decasteljau.lua", "markova-basis-all.lua")
+# figures that paint translucently (a shaded hull): their PDF pages are
+# transparency groups
+TRANSLUCENT = ("lec05-convex-hull.lua", "markova-1.1.lua")
 
 
 def check_article():
@@ -180,11 +183,20 @@ def check_article():
     p2 = fonts("article.pdf", 2, last)
     if not any(not n.startswith("CM") for n, t in p2):
         fail("pages 2..: the PDF figures' own fonts are missing: %s" % p2)
-    # the page-group warning: with two curvefig PDFs on one page, and gone
-    # with the one-line fix
+    # the page-group warning: none for opaque figures (their pages carry no
+    # transparency group); with two translucent curvefig PDFs on one page,
+    # and gone with the one-line fix
+    if "page group" in log:
+        fail("a page-group warning for opaque figures")
+    for s in TRANSLUCENT:
+        render(s, "pdf")
+    two = "\n\n".join("\\noindent\\includegraphics{%s.pdf}" % s[:-4]
+                       for s in TRANSLUCENT)
+    log = tex("article-groups", doc("[11pt]{article}", two))
     if "page group" not in log:
-        fail("expected pdfTeX's page-group warning for two PDFs on a page")
-    log = tex("article-fixed", doc("[11pt]{article}", body,
+        fail("expected pdfTeX's page-group warning for two translucent "
+             "PDFs on a page")
+    log = tex("article-fixed", doc("[11pt]{article}", two,
                                    "\\pdfsuppresswarningpagegroup=1\n"))
     if "page group" in log:
         fail("\\pdfsuppresswarningpagegroup=1 did not remove the warning")

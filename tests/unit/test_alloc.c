@@ -275,8 +275,10 @@ op_label(cf_diag_t *diag)
     return st;
 }
 
+/* A figure of curves, a polygon and labels rendered to format; labels in
+** Latin, mathematics and Russian (PDF: text in three embedded fonts). */
 static cf_status_t
-op_figure(cf_diag_t *diag)
+figure_to(cf_format_t format, cf_diag_t *diag)
 {
     cf_figure_t *fig = NULL;
     cf_style_t style;
@@ -293,13 +295,29 @@ op_figure(cf_diag_t *diag)
         st = cf_figure_add_polygon(fig, P5, 5, &style);
     if (st == CF_STATUS_OK)
         st = cf_figure_add_label(fig, 1, 2, "P_0", &style);
+    if (st == CF_STATUS_OK && format == CF_FORMAT_PDF)
+        st = cf_figure_add_label(fig, 3, 1, "\\text{кривая} \\frac{1}{2}",
+                                 &style);
     if (st == CF_STATUS_OK)
-        st = cf_figure_render(fig, CF_FORMAT_SVG, NULL, &data, &size, diag);
+        st = cf_figure_render(fig, format, NULL, &data, &size, diag);
     else
         st = cf_figure_status(fig, diag);
     cf_free(data);
     cf_figure_destroy(fig);
     return st;
+}
+
+static cf_status_t
+op_figure(cf_diag_t *diag)
+{
+    return figure_to(CF_FORMAT_SVG, diag);
+}
+
+/* the PDF writer: pages, fonts subset and embedded, the document */
+static cf_status_t
+op_figure_pdf(cf_diag_t *diag)
+{
+    return figure_to(CF_FORMAT_PDF, diag);
 }
 
 /*
@@ -433,6 +451,8 @@ test_render_modules(void **state)
     (void)state;
     assert_true(fail_loop("label_create", op_label, true) >= 1);
     assert_true(fail_loop("figure + render svg", op_figure, true) >= 4);
+    assert_true(fail_loop("figure + render pdf", op_figure_pdf, true)
+                >= 20);
     assert_true(fail_loop("automatic description", op_description, true)
                 >= 4);
     /* the script runner: every budget too small for the script */

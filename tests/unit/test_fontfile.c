@@ -8,9 +8,10 @@
 ** the same points, tags and contours.  A CFF subset must be CID-keyed
 ** with CID = the original glyph id; a TrueType subset keeps glyph ids,
 ** its glyphs not kept (nor components of kept ones, by FreeType's reading
-** of the composites) empty.  The font bounding box and italic style are
-** FreeType's; advances are FreeType's unscaled advances; the one-glyph
-** subset of Latin Modern Math (a 652 KB CFF table) is small.
+** of the composites) empty, its tables aligned with their checksums and
+** the file's checkSumAdjustment right.  The font bounding box and italic
+** style are FreeType's; advances are FreeType's unscaled advances; the
+** one-glyph subset of Latin Modern Math (a 652 KB CFF table) is small.
 **
 ** Damaged fonts (every font truncated at many lengths, bytes flipped at
 ** seeded random offsets) give 0 or 1, never a crash (the ASan build runs
@@ -207,6 +208,56 @@ components_of(FT_Face face, const unsigned *gids, size_t n,
     free(stack);
 }
 
+static uint32_t
+be32(const unsigned char *p)
+{
+    return (uint32_t)p[0] << 24 | (uint32_t)p[1] << 16 |
+           (uint32_t)p[2] << 8 | p[3];
+}
+
+/* The sum of the 4-byte words of p[0..n), n a multiple of 4. */
+static uint32_t
+sum32(const unsigned char *p, size_t n)
+{
+    uint32_t s = 0;
+    size_t i;
+    for (i = 0; i < n; i += 4)
+        s += be32(p + i);
+    return s;
+}
+
+/* A TrueType subset's tables: 4-byte aligned, each record's checksum
+** its table's (head's with checkSumAdjustment 0), the whole file summing
+** to 0xB1B0AFBA (the OpenType spec's rule for checkSumAdjustment), and
+** indexToLocFormat the loca written (numGlyphs + 1 entries of 2 or 4
+** bytes). */
+static void
+check_sfnt(const unsigned char *d, size_t len, long num_glyphs)
+{
+    unsigned i, n = (unsigned)d[4] << 8 | d[5];
+    size_t loca = 0;
+    int long_loca = -1;
+    assert_int_equal(len % 4, 0);
+    assert_int_equal(sum32(d, len), 0xb1b0afbau);
+    for (i = 0; i < n; i++) {
+        const unsigned char *r = d + 12 + 16 * i;
+        size_t off = be32(r + 8), tlen = be32(r + 12);
+        uint32_t sum;
+        assert_int_equal(off % 4, 0);
+        assert_true(off + ((tlen + 3) & ~(size_t)3) <= len);
+        sum = sum32(d + off, (tlen + 3) & ~(size_t)3);
+        if (memcmp(r, "head", 4) == 0) {
+            sum -= be32(d + off + 8);
+            long_loca = d[off + 51];
+        }
+        if (memcmp(r, "loca", 4) == 0)
+            loca = tlen;
+        assert_int_equal(be32(r + 4), sum);
+    }
+    assert_true(long_loca == 0 || long_loca == 1);
+    assert_int_equal(loca, (size_t)(num_glyphs + 1) * (long_loca ? 4 : 2));
+}
+
 /* Subset gids of face orig (of file fo), check it against FreeType;
 ** the program's size. */
 static size_t
@@ -273,6 +324,7 @@ check_subset(const font_t *fo, FT_Face orig, const unsigned *gids, size_t n)
         unsigned char *kept = calloc((size_t)orig->num_glyphs, 1);
         assert_non_null(kept);
         assert_int_equal(sub->num_glyphs, orig->num_glyphs);
+        check_sfnt(out.program.data, out.program.size, orig->num_glyphs);
         components_of(orig, gids, n, kept);
         for (i = 0; i < (size_t)orig->num_glyphs; i++) {
             if (kept[i])

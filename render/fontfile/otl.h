@@ -3,7 +3,8 @@
 ** (otface.c), reads of OpenType tables that never leave their table
 ** (otl.c: checked reads, coverage, class definitions, GDEF classes, the
 ** lookups of the default features for a script, contextual rules
-** matched), the shaping (shape.c).
+** matched), the shaping (shape.c, with otrun.c, gsub.c and gpos.c:
+** shape-private.h).
 **
 ** Reads go through an otl_tab_t: a read outside the table sets *bad and
 ** gives 0, so that a walk over a damaged table ends in "not handled".

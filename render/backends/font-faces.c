@@ -539,10 +539,18 @@ cf__nfontset_font(cf__nfontset_t *s, int i)
         } else if (sorted(s) != NULL && k < (size_t)s->sorted->nfont) {
             p = FcFontRenderPrepare(NULL, s->pattern, s->sorted->fonts[k]);
         }
+        /* grown only for a font to add, and kept as soon as grown: a
+        ** block moved by realloc when the list had ended there was lost
+        ** (s->fonts left to the freed one), and a failed growth had
+        ** doubled cap all the same */
         t = s->fonts;
-        if (k == s->cap) {
-            s->cap = s->cap ? 2 * s->cap : 8;
-            t = realloc(s->fonts, s->cap * sizeof *t);
+        if (p != NULL && k == s->cap) {
+            size_t nc = s->cap ? 2 * s->cap : 8;
+            t = realloc(s->fonts, nc * sizeof *t);
+            if (t != NULL) {
+                s->fonts = t;
+                s->cap = nc;
+            }
         }
         if (p == NULL || t == NULL) {
             if (p != NULL)
@@ -550,7 +558,6 @@ cf__nfontset_font(cf__nfontset_t *s, int i)
             s->ended = true;
             break;
         }
-        s->fonts = t;
         t[k] = new_face(p);
         if (t[k] == NULL) {
             s->ended = true;

@@ -23,6 +23,7 @@
 #include <cmocka.h>
 
 #include "curvefig/label.h"
+#include "font-faces.h"
 #include "font-glyphs.h"
 #include "font-itemize.h"
 #include "font-native.h"
@@ -692,6 +693,55 @@ test_out_of_memory(void **state)
                              false) > 0);
 }
 
+/* Every font set of the themes' family lists walked to its end and again:
+** the same faces, in the same places, each readable; past the end NULL,
+** however often asked (a set's list once grew its array before knowing a
+** font was left, and when the list ended just where it was full, the
+** block realloc had moved was lost and the list left on the freed one:
+** AddressSanitizer reads the second walk). */
+static void
+test_sets_to_their_end(void **state)
+{
+    static const char *const families[] = {
+        CF__DEFAULT_FAMILY, CF__SANS_FAMILY, "Latin Modern Math",
+        "Latin Modern Roman", "Noto Serif CJK SC,Latin Modern Roman"
+    };
+    static const double sizes[] = { 5, 7, 9.96, 12, 17.28, 24.88 };
+    enum { MAX_FONTS = 400 };
+    static cf__nface_t *first[MAX_FONTS];
+    size_t f, z, sets = 0, longest = 0;
+    (void)state;
+    cf__native_fonts.close(cf__native_fonts.open(cf__native_fonts.self));
+    for (f = 0; f < sizeof families / sizeof families[0]; f++)
+        for (z = 0; z < sizeof sizes / sizeof sizes[0]; z++)
+            for (int style = 0; style < 4; style++) {
+                int size = (int)(sizes[z] * CF__FONT_SCALE);
+                cf__nfontset_t *set;
+                int n = 0, i;
+                cf__nfaces_lock();
+                set = cf__nfontset_get(families[f], style & 1, style & 2,
+                                       size, cf__native_language());
+                assert_non_null(set);
+                while (n < MAX_FONTS
+                       && (first[n] = cf__nfontset_font(set, n)) != NULL)
+                    n++;
+                assert_true(n > 0 && n < MAX_FONTS);
+                for (i = 0; i < 3; i++)
+                    assert_null(cf__nfontset_font(set, n + i));
+                for (i = 0; i < n; i++) {
+                    cf__nface_t *again = cf__nfontset_font(set, i);
+                    assert_ptr_equal(again, first[i]);
+                    assert_true(strlen(again->key) > 0);
+                }
+                cf__nfaces_unlock();
+                sets++;
+                if ((size_t)n > longest)
+                    longest = (size_t)n;
+            }
+    printf("%zu font sets walked to their end, the longest %zu fonts\n",
+           sets, longest);
+}
+
 int
 main(int argc, char **argv)
 {
@@ -705,6 +755,7 @@ main(int argc, char **argv)
         cmocka_unit_test(test_shown_with_layout_font),
         cmocka_unit_test(test_five_digits),
         cmocka_unit_test(test_out_of_memory),
+        cmocka_unit_test(test_sets_to_their_end),
     };
     if (argc < 2) {
         fprintf(stderr, "usage: %s fonts-corpus.txt [LOCALE]\n", argv[0]);

@@ -119,41 +119,63 @@ cf__fontfile_subset_mem(const unsigned char *data, size_t len,
     return r;
 }
 
+const char *
+cf__ff_map_file(const char *path, void **map, size_t *len, int *err)
+{
+    struct stat st;
+    void *m;
+    /* O_NONBLOCK: a FIFO where the file should be is refused below
+    ** instead of waiting for a writer (it changes nothing for a file) */
+    int fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    *map = NULL;
+    *len = 0;
+    *err = 0;
+    if (fd < 0) {
+        *err = errno;
+        return "cannot open";
+    }
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        close(fd);
+        return "not a regular file";
+    }
+    if (st.st_size > 0) {
+        m = mmap(NULL, (size_t)st.st_size, PROT_READ, MAP_PRIVATE, fd, 0);
+        if (m == MAP_FAILED) {
+            *err = errno;
+            close(fd);
+            return "cannot map";
+        }
+        *map = m;
+        *len = (size_t)st.st_size;
+    }
+    close(fd);
+    return NULL;
+}
+
 int
 cf__fontfile_subset(const char *path, unsigned index, const unsigned *gids,
                     size_t n, cf__fontfile_subset_t *out, char *why,
                     size_t why_cap)
 {
     cf__ff_t f;
-    struct stat st;
-    void *map = NULL;
-    int fd, r;
+    const char *bad;
+    void *map;
+    size_t len;
+    int r;
     memset(out, 0, sizeof *out);
     f.data = NULL;
     f.len = 0;
     f.name = path;
     f.why = why;
     f.why_cap = why_cap;
-    fd = open(path, O_RDONLY | O_CLOEXEC);
-    if (fd < 0)
-        return cf__ff_fail(&f, "cannot open: %s", strerror(errno));
-    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-        close(fd);
-        return cf__ff_fail(&f, "not a regular file");
-    }
-    if (st.st_size > 0) {
-        map = mmap(NULL, (size_t)st.st_size, PROT_READ, MAP_PRIVATE, fd, 0);
-        if (map == MAP_FAILED) {
-            r = errno;
-            close(fd);
-            return cf__ff_fail(&f, "cannot map: %s", strerror(r));
-        }
-    }
-    close(fd);
-    r = cf__fontfile_subset_mem(map, map != NULL ? (size_t)st.st_size : 0,
-                                path, index, gids, n, out, why, why_cap);
+    bad = cf__ff_map_file(path, &map, &len, &r);
+    if (bad != NULL)
+        return r != 0 ? cf__ff_fail(&f, "%s: %s", bad, strerror(r))
+                      : cf__ff_fail(&f, "%s", bad);
+    r = cf__fontfile_subset_mem(map, len, path, index, gids, n, out, why,
+                                why_cap);
     if (map != NULL)
-        munmap(map, (size_t)st.st_size);
+        munmap(map, len);
     return r;
 }
 

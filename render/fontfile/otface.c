@@ -15,12 +15,9 @@
 ** The face is not usable when HarfBuzz would take another way than the
 ** shaper's (shape.h's list) or when a table is damaged.
 */
-#include <fcntl.h>
 #include <math.h>
 #include <string.h>
 #include <sys/mman.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
 #include "curvefig/core.h"
 #include "otl.h"
@@ -268,22 +265,14 @@ cf__otface_size(void)
 void
 cf__otface_open_at(cf__otface_t *f, const char *path, unsigned index)
 {
-    struct stat st;
-    void *map = NULL;
-    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    void *map;
+    size_t len;
+    int err;
     memset(f, 0, sizeof *f);
-    if (fd >= 0 && fstat(fd, &st) == 0 && S_ISREG(st.st_mode)
-        && st.st_size > 0) {
-        map = mmap(NULL, (size_t)st.st_size, PROT_READ, MAP_PRIVATE, fd, 0);
-        if (map == MAP_FAILED)
-            map = NULL;
-    }
-    if (fd >= 0)
-        close(fd);
-    if (map == NULL)
+    if (cf__ff_map_file(path, &map, &len, &err) != NULL || map == NULL)
         return;
     f->map = map;
-    f->map_len = (size_t)st.st_size;
+    f->map_len = len;
     f->data = map;
     f->len = f->map_len;
     check(f, index);

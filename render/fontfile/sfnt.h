@@ -103,6 +103,13 @@ typedef struct cf__ff_face {
     uint32_t version;           /* 0x00010000, 'true' or 'OTTO' */
 } cf__ff_face_t;
 
+/* The file at path mapped read-only (render/fontfile/fontfile.c): NULL,
+** with *map and *len set (*map NULL for an empty file; munmap it), or what
+** went wrong ("cannot open", "not a regular file", "cannot map") with *err
+** the errno or 0.  A FIFO or a device is refused without blocking. */
+const char *cf__ff_map_file(const char *path, void **map, size_t *len,
+                            int *err);
+
 /* Face `index` of the file (a collection's, or the one of a single
 ** font's, index 0). */
 int cf__ff_face_open(cf__ff_t *f, unsigned index, cf__ff_face_t *face);

@@ -609,6 +609,23 @@ test_refused(void **state)
                                          &out, why, sizeof why), 1);
     assert_non_null(strstr(why, "/nonexistent/font.otf: cannot open"));
     assert_null(out.program.data);
+    /* a directory, and a FIFO no one writes to (opened without waiting
+    ** for a writer), where the font file should be: refused at once */
+    {
+        char dir[] = "/tmp/cf-fontfile-XXXXXX", fifo[64];
+        assert_non_null(mkdtemp(dir));
+        assert_int_equal(cf__fontfile_subset(dir, 0, bad, 1, &out, why,
+                                             sizeof why), 1);
+        assert_non_null(strstr(why, "not a regular file"));
+        snprintf(fifo, sizeof fifo, "%s/font.otf", dir);
+        assert_int_equal(mkfifo(fifo, 0600), 0);
+        assert_int_equal(cf__fontfile_subset(fifo, 0, bad, 1, &out, why,
+                                             sizeof why), 1);
+        assert_non_null(strstr(why, "not a regular file"));
+        assert_null(out.program.data);
+        unlink(fifo);
+        rmdir(dir);
+    }
     assert_int_equal(cf__fontfile_subset_mem((const unsigned char *)"OTTO",
                                              4, "tiny", 0, bad, 1, &out,
                                              why, sizeof why), 1);

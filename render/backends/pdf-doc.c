@@ -77,7 +77,7 @@ deflate_buf(const cf__buf_t *data, cf__buf_t *z)
     ** the same bytes within 0.1 %) */
     while (bits < 15 && ((size_t)1 << bits) < data->size)
         bits++;
-    if (deflateInit2(&s, Z_DEFAULT_COMPRESSION, Z_DEFLATED, bits, 6,
+    if (deflateInit2(&s, 3, Z_DEFLATED, bits, 6,
                      Z_DEFAULT_STRATEGY) != Z_OK)
         return -1;
     bound = deflateBound(&s, (uLong)data->size);

@@ -8,27 +8,38 @@
 #include "curvefig/core.h"
 #include "grow.h"
 
-int
-cf__buf_append(cf__buf_t *b, const void *data, size_t n)
+unsigned char *
+cf__buf_extend(cf__buf_t *b, size_t n)
 {
+    unsigned char *at;
     if (b->failed)
-        return -1;
+        return NULL;
     if (n > SIZE_MAX - b->size) {
         b->failed = 1;
-        return -1;
+        return NULL;
     }
     if (b->size + n > b->cap) {
         unsigned char *d = cf__grow_array(b->data, &b->cap, b->size + n, 1,
                                           4096);
         if (d == NULL) {
             b->failed = 1;
-            return -1;
+            return NULL;
         }
         b->data = d;
     }
-    if (n > 0)
-        memcpy(b->data + b->size, data, n);
+    at = b->data + b->size;
     b->size += n;
+    return at;
+}
+
+int
+cf__buf_append(cf__buf_t *b, const void *data, size_t n)
+{
+    unsigned char *at = cf__buf_extend(b, n);
+    if (at == NULL)
+        return -1;
+    if (n > 0)
+        memcpy(at, data, n);
     return 0;
 }
 

@@ -82,21 +82,20 @@ cf__cff_index_item(cf__ff_t *f, const cf__cff_index_t *ix, size_t i,
     return 0;
 }
 
-static int
-put_off(cf__buf_t *b, size_t v, unsigned size)
+/* v as an offset of size bytes, big-endian, at o. */
+static void
+put_off(unsigned char *o, size_t v, unsigned size)
 {
-    unsigned char o[4];
     unsigned i;
     for (i = 0; i < size; i++)
         o[i] = (unsigned char)(v >> (8 * (size - 1 - i)));
-    return cf__buf_append(b, o, size);
 }
 
 int
 cf__cff_index_write(cf__buf_t *b, size_t count, cf__cff_item_fn item,
                     void *ctx)
 {
-    unsigned char head[3];
+    unsigned char head[3], *o, *d;
     size_t i, total = 0, off = 1;
     unsigned size;
     if (count > 0xffff)
@@ -110,25 +109,27 @@ cf__cff_index_write(cf__buf_t *b, size_t count, cf__cff_item_fn item,
         item(ctx, i, &p, &n);
         total += n;
     }
+    if (total >= 0xffffffffu)
+        return 1;
     size = total + 1 <= 0xff ? 1 : total + 1 <= 0xffff ? 2 :
            total + 1 <= 0xffffff ? 3 : 4;
     head[2] = (unsigned char)size;
-    if (cf__buf_append(b, head, 3) || put_off(b, off, size))
+    /* the INDEX's size known, its offsets and data are written in place
+    ** (thousands of items for a font's subroutines, most of them stubs) */
+    if (cf__buf_append(b, head, 3) != 0
+        || (o = cf__buf_extend(b, (count + 1) * size + total)) == NULL)
         return -1;
+    d = o + (count + 1) * size;
+    put_off(o, off, size);
     for (i = 0; i < count; i++) {
         const unsigned char *p;
         size_t n;
         item(ctx, i, &p, &n);
         off += n;
-        if (put_off(b, off, size))
-            return -1;
-    }
-    for (i = 0; i < count; i++) {
-        const unsigned char *p;
-        size_t n;
-        item(ctx, i, &p, &n);
-        if (cf__buf_append(b, p, n))
-            return -1;
+        put_off(o + (i + 1) * size, off, size);
+        if (n > 0)
+            memcpy(d, p, n);
+        d += n;
     }
     return 0;
 }

@@ -74,7 +74,9 @@ deflate_buf(const cf__buf_t *data, cf__buf_t *z)
     /* a window no larger than the data, and a hash table of 2^13
     ** entries (memLevel 6: zlib clears it for every stream; measured on
     ** markova-2.17, 4 % fewer instructions in the writer than memLevel 8,
-    ** the same bytes within 0.1 %) */
+    ** the same bytes within 0.1 %); level 3, zlib's fast matcher: 2.4 %
+    ** fewer instructions for the whole render of markova-2.17 than level
+    ** 6, for 1.0 % more bytes over the figures' PDFs */
     while (bits < 15 && ((size_t)1 << bits) < data->size)
         bits++;
     if (deflateInit2(&s, 3, Z_DEFLATED, bits, 6,

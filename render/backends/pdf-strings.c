@@ -1,7 +1,6 @@
 /*
 ** PDF strings (render/backends/pdf-strings.h).
 */
-#include <stdio.h>
 #include <string.h>
 
 #include "pdf-strings.h"
@@ -18,14 +17,20 @@ cf__pdf_put_string(cf__buf_t *b, const char *s)
     int r = put(b, "(");
     for (; *s != '\0' && !r; s++) {
         unsigned char c = (unsigned char)*s;
-        char t[8];
-        if (c == '(' || c == ')' || c == '\\')
-            snprintf(t, sizeof t, "\\%c", c);
-        else if (c < 32 || c > 126)
-            snprintf(t, sizeof t, "\\%03o", c);
-        else
-            snprintf(t, sizeof t, "%c", c);
-        r = put(b, t);
+        char t[4];
+        size_t n = 0;
+        if (c == '(' || c == ')' || c == '\\') {
+            t[n++] = '\\';
+            t[n++] = (char)c;
+        } else if (c < 32 || c > 126) {
+            t[n++] = '\\';
+            t[n++] = (char)('0' + (c >> 6));
+            t[n++] = (char)('0' + ((c >> 3) & 7));
+            t[n++] = (char)('0' + (c & 7));
+        } else {
+            t[n++] = (char)c;
+        }
+        r = cf__buf_append(b, t, n);
     }
     return r || put(b, ")") ? -1 : 0;
 }
@@ -54,30 +59,40 @@ next_cp(const unsigned char **s, const unsigned char *end)
     return c;
 }
 
-static int
-put_unit(cf__buf_t *b, unsigned u)
+/* u as four upper-case hex digits at h. */
+static void
+hex_unit(char *h, unsigned u)
 {
-    char hex[8];
-    snprintf(hex, sizeof hex, "%04X", u & 0xffffu);
-    return put(b, hex);
+    static const char digits[] = "0123456789ABCDEF";
+    for (int k = 3; k >= 0; k--, u >>= 4)
+        h[k] = digits[u & 0xfu];
 }
 
 int
 cf__pdf_put_utf16(cf__buf_t *out, const char *text, size_t n)
 {
     const unsigned char *s = (const unsigned char *)text, *end = s + n;
-    int r = 0;
-    while (s < end && r == 0) {
+    char hex[64];   /* up to 8 units, flushed before the next would not
+                       fit */
+    size_t k = 0;
+    while (s < end) {
         unsigned c = next_cp(&s, end);
+        if (k + 8 > sizeof hex) {
+            if (cf__buf_append(out, hex, k) != 0)
+                return -1;
+            k = 0;
+        }
         if (c >= 0x10000) {
             c -= 0x10000;
-            r = put_unit(out, 0xd800 + (c >> 10))
-                || put_unit(out, 0xdc00 + (c & 0x3ff));
+            hex_unit(hex + k, 0xd800 + (c >> 10));
+            hex_unit(hex + k + 4, 0xdc00 + (c & 0x3ff));
+            k += 8;
         } else {
-            r = put_unit(out, c);
+            hex_unit(hex + k, c);
+            k += 4;
         }
     }
-    return r ? -1 : 0;
+    return cf__buf_append(out, hex, k) != 0 ? -1 : 0;
 }
 
 int

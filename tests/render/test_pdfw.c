@@ -9,7 +9,11 @@
 **     transparency group only when it is translucent;
 **   - faults: a number beyond 1e9 bp names its element, groups nested
 **     too deep, both as the SVG writer words them;
-**   - the document of a page is the same bytes twice.
+**   - the document of a page is the same bytes twice;
+**   - strings: a literal string's escapes, and text strings as UTF-16BE
+**     hex against the code points written out by hand (surrogate pairs,
+**     bytes that start no UTF-8 sequence, text longer than the writer's
+**     chunk).
 */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -21,6 +25,7 @@
 #include <cmocka.h>
 
 #include "backend.h"
+#include "pdf-strings.h"
 
 static bool
 has(const cf__buf_t *b, const char *s)
@@ -254,6 +259,65 @@ test_faults(void **state)
     cf__pdfw_fini(&w);
 }
 
+/* The buffer's bytes as a C string (freed by the caller). */
+static char *
+as_string(cf__buf_t *b)
+{
+    char *s = malloc(b->size + 1);
+    assert_non_null(s);
+    memcpy(s, b->data, b->size);
+    s[b->size] = '\0';
+    cf__buf_free(b);
+    return s;
+}
+
+static void
+test_strings(void **state)
+{
+    cf__buf_t b = { 0 };
+    char *s, want[1024];
+    (void)state;
+    assert_int_equal(cf__pdf_put_string(&b, "a(b)c\\d\n\x7f\xc3\xa9~ "), 0);
+    s = as_string(&b);
+    assert_string_equal(s, "(a\\(b\\)c\\\\d\\012\\177\\303\\251~ )");
+    free(s);
+    /* A, e-acute (2 bytes), the euro sign (3), U+1D44E math italic a (4:
+    ** the pair D835 DC4E), a lone continuation byte and a truncated
+    ** sequence (each U+FFFD) */
+    assert_int_equal(cf__pdf_put_text(&b, "A\xc3\xa9\xe2\x82\xac"
+                                          "\xf0\x9d\x91\x8e\x80",
+                                      "\xe2\x82"), 0);
+    s = as_string(&b);
+    assert_string_equal(s, "<FEFF004100E920ACD835DC4EFFFD0020FFFDFFFD>");
+    free(s);
+    /* longer than the chunk the writer fills: 150 code points, each of
+    ** them astral every third one */
+    {
+        char in[1024];
+        size_t n = 0, w = 0;
+        for (int i = 0; i < 150; i++) {
+            if (i % 3 == 2) {
+                unsigned c = 0x1F600u + (unsigned)i, v = c - 0x10000u;
+                in[n++] = (char)(0xf0 | (c >> 18));
+                in[n++] = (char)(0x80 | ((c >> 12) & 0x3f));
+                in[n++] = (char)(0x80 | ((c >> 6) & 0x3f));
+                in[n++] = (char)(0x80 | (c & 0x3f));
+                w += (size_t)snprintf(want + w, sizeof want - w, "%04X%04X",
+                                      0xd800u + (v >> 10),
+                                      0xdc00u + (v & 0x3ffu));
+            } else {
+                in[n++] = (char)('a' + i % 26);
+                w += (size_t)snprintf(want + w, sizeof want - w, "%04X",
+                                      (unsigned)('a' + i % 26));
+            }
+        }
+        assert_int_equal(cf__pdf_put_utf16(&b, in, n), 0);
+        s = as_string(&b);
+        assert_string_equal(s, want);
+        free(s);
+    }
+}
+
 int
 main(void)
 {
@@ -262,6 +326,7 @@ main(void)
         cmocka_unit_test(test_embedded_face),
         cmocka_unit_test(test_opacity_and_bytes),
         cmocka_unit_test(test_faults),
+        cmocka_unit_test(test_strings),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

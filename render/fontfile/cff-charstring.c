@@ -36,12 +36,6 @@ typedef struct scan {
     int ended;
 } scan_t;
 
-static unsigned
-bias(size_t count)
-{
-    return count < 1240 ? 107 : count < 33900 ? 1131 : 32768;
-}
-
 static int run(scan_t *s, const unsigned char *p, size_t len, int depth);
 
 static int
@@ -59,7 +53,7 @@ call(scan_t *s, cf__cff_subrs_t *subrs, int depth, const char *kind)
                            "subroutines", s->gid, kind);
     if (!(fabs(v) < 1e6))
         return cf__ff_fail(s->f, "glyph %u: %s %g", s->gid, kind, v);
-    k = (long)v + (long)bias(subrs->index->count);
+    k = (long)v + (long)cf__cff_bias(subrs->index->count);
     if (k < 0 || (size_t)k >= subrs->index->count)
         return cf__ff_fail(s->f, "glyph %u: %s %ld of %zu", s->gid, kind,
                            k, subrs->index->count);
@@ -131,21 +125,11 @@ run(scan_t *s, const unsigned char *p, size_t len, int depth)
                                "kept ran out of steps (subroutines called "
                                "over and over)", s->gid);
         if (b0 >= 32 || b0 == 28) {
-            double v;
-            size_t need = b0 == 28 ? 3 : b0 == 255 ? 5 : b0 >= 247 ? 2 : 1;
-            if (len - i < need)
+            size_t need;
+            double v = cf__cff_cs_operand(p + i, len - i, &need) / 65536.0;
+            if (need == 0)
                 return cf__ff_fail(s->f, "glyph %u: a charstring ends "
                                    "inside a number", s->gid);
-            if (b0 == 28)
-                v = cf__ff_s16(p + i + 1);
-            else if (b0 == 255)
-                v = (int32_t)cf__ff_u32(p + i + 1) / 65536.0;
-            else if (b0 >= 251)
-                v = -((double)b0 - 251) * 256.0 - p[i + 1] - 108;
-            else if (b0 >= 247)
-                v = ((double)b0 - 247) * 256.0 + p[i + 1] + 108;
-            else
-                v = (double)b0 - 139;
             if (s->sp >= CF__CFF_MAX_ARGS)
                 return cf__ff_fail(s->f, "glyph %u: more than %d operands "
                                    "on the stack", s->gid,

@@ -192,6 +192,37 @@ int cf__cff_put_op(cf__buf_t *b, unsigned op);
 
 /* ---- the charstring scan (cff-charstring.c) ----------------------------- */
 
+/* A Type 2 charstring operand at p[0] (p[0] >= 32 or 28) of the len
+** bytes left: its bytes (*need; 0 when it runs past len) and its value in
+** 16.16 (integers shifted, 255's a 16.16 number already). */
+static inline int32_t
+cf__cff_cs_operand(const unsigned char *p, size_t len, size_t *need)
+{
+    unsigned b0 = p[0];
+    size_t n = b0 == 28 ? 3 : b0 == 255 ? 5 : b0 >= 247 ? 2 : 1;
+    *need = n <= len ? n : 0;
+    if (*need == 0)
+        return 0;
+    if (b0 == 28)
+        return (int32_t)((uint32_t)cf__ff_s16(p + 1) << 16);
+    if (b0 == 255)
+        return (int32_t)cf__ff_u32(p + 1);
+    if (b0 >= 251)
+        return (int32_t)((uint32_t)(-(((int)b0 - 251) * 256) - p[1] - 108)
+                         << 16);
+    if (b0 >= 247)
+        return (int32_t)((uint32_t)(((int)b0 - 247) * 256 + p[1] + 108)
+                         << 16);
+    return (int32_t)((uint32_t)((int)b0 - 139) << 16);
+}
+
+/* The bias of a subroutine number in an INDEX of count subroutines. */
+static inline unsigned
+cf__cff_bias(size_t count)
+{
+    return count < 1240 ? 107 : count < 33900 ? 1131 : 32768;
+}
+
 /* The subroutines one glyph's Type 2 charstring calls: each called
 ** subroutine's used[] byte set to 1 (global or local), followed to the
 ** Type 2 limit of 10 nested calls, with the hint count kept for the

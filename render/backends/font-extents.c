@@ -2,7 +2,8 @@
 ** Where the glyphs of a run of the native fonts sit and what they cover,
 ** in pango's numbers (render/backends/font-native.c): each item's
 ** baseline shift, then the logical and ink extents: each glyph's advance
-** from HarfBuzz, its ink from cairo's scaled font in units rounded as
+** from HarfBuzz, its ink from the font file (font-outlines.h: the numbers
+** of cairo's scaled font) or cairo's scaled font, in units rounded as
 ** pango rounds, the font's logical height from HarfBuzz's ascender and
 ** descender, the line's and the layout's rectangles combined as pango
 ** combines them (one line, left to right).
@@ -14,6 +15,7 @@
 #include <hb-ot.h>
 
 #include "font-extents.h"
+#include "font-outlines.h"
 
 /* Whether every shift is 0 without asking HarfBuzz: one item, or a first
 ** item whose script names the roman baseline and faces without a BASE
@@ -121,7 +123,13 @@ cf__native_extents(native_run_t *r, cf__font_shape_t *out)
                 cairo_text_extents_t e;
                 cg.index = gl->id;
                 cg.x = cg.y = 0;
-                cairo_scaled_font_glyph_extents(f->scaled, &cg, 1, &e);
+                /* from the font file, else from cairo's scaled font */
+                if (cf__own_glyph_extents(&f->face, gl->id, &e) != 0) {
+                    cairo_scaled_font_t *sf = cf__nface_scaled(f);
+                    memset(&e, 0, sizeof e);
+                    if (sf != NULL)
+                        cairo_scaled_font_glyph_extents(sf, &cg, 1, &e);
+                }
                 gi[0] = units(e.x_bearing);
                 gi[1] = units(e.y_bearing);
                 gi[2] = units(e.width);

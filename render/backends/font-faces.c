@@ -34,6 +34,7 @@
 ** they would otherwise stay in).
 */
 #include <math.h>
+#include <stddef.h>
 #include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -448,6 +449,44 @@ face_metrics(cf__nface_t *f, const char *file, int index)
     return true;
 }
 
+/* The font matrix cf__nface_scaled gives the scaled font (y down, times
+** the pixel size, gravity south), known without making it: the PDF
+** writer's, and the glyphs read from the file (font-outlines.h). */
+static void
+font_matrix(cf__nface_t *f)
+{
+    cairo_matrix_t fm, gravity, m;
+    FcMatrix fc;
+    double size;
+    if (FcPatternGetDouble(f->pattern, FC_PIXEL_SIZE, 0, &size)
+        != FcResultMatch)
+        return;
+    fc = pattern_matrix(f->pattern);
+    cairo_matrix_init(&fm, fc.xx, -fc.yx, -fc.xy, fc.yy, 0., 0.);
+    cairo_matrix_scale(&fm, size, size);
+    cairo_matrix_init_rotate(&gravity, 0);   /* gravity south */
+    cairo_matrix_multiply(&m, &fm, &gravity);
+    f->face.matrix[0] = m.xx;
+    f->face.matrix[1] = m.yx;
+    f->face.matrix[2] = m.xy;
+    f->face.matrix[3] = m.yy;
+    f->face.has_matrix = true;
+}
+
+/* The face's scaled font made when drawing through cairo needs it
+** (cf__font_face_t.make_scaled), outside the faces' lock. */
+static void *
+make_scaled(const cf__font_face_t *face)
+{
+    cf__nface_t *f = (cf__nface_t *)((char *)face
+                                     - offsetof(cf__nface_t, face));
+    cairo_scaled_font_t *sf;
+    cf__nfaces_lock();
+    sf = cf__nface_scaled(f);
+    cf__nfaces_unlock();
+    return sf;
+}
+
 static cf__nface_t *
 new_face(FcPattern *prepared)
 {
@@ -507,6 +546,8 @@ new_face(FcPattern *prepared)
         FcPatternGetBool(prepared, FC_EMBOLDEN, 0, &bold);
         f->face.emboldened = bold == FcTrue;
     }
+    font_matrix(f);
+    f->face.make_scaled = make_scaled;
     faces[nfaces++] = f;
     return f;
 }
@@ -566,6 +607,12 @@ cf__nfontset_font(cf__nfontset_t *s, int i)
         s->nfonts++;
     }
     return (size_t)i < s->nfonts ? s->fonts[i] : NULL;
+}
+
+bool
+cf__nface_scalable(const cf__nface_t *f)
+{
+    return f->scaled != NULL || f->face.has_matrix;
 }
 
 cairo_scaled_font_t *

@@ -48,6 +48,12 @@ cf__nface_t *cf__nfontset_font(cf__nfontset_t *set, int i);
 ** then: render/backends/hb-lazy.c); NULL when out of memory. */
 hb_font_t *cf__nface_hb(cf__nface_t *f);
 
+/* Whether the face can have its scaled font (its pattern has a pixel
+** size), without making it: the layout and the vector writers take the
+** glyphs of most faces from their files (font-outlines.h), and only
+** drawing through cairo makes it (cf__font_face_t.make_scaled). */
+bool cf__nface_scalable(const cf__nface_t *f);
+
 /* The face's scaled font as pango-cairo makes it (NULL: cairo failed). */
 cairo_scaled_font_t *cf__nface_scaled(cf__nface_t *f);
 

@@ -18,6 +18,7 @@
 
 #include "curvefig/core.h"
 #include "font-glyphs.h"
+#include "font-outlines.h"
 #include "grow.h"
 
 #define STACK_GLYPHS 64
@@ -58,18 +59,74 @@ span_clusters(const cf__font_glyphs_t *g, const cf__font_span_t *s,
     return k;
 }
 
+cairo_scaled_font_t *
+cf__font_face_scaled(const cf__font_face_t *face)
+{
+    if (face->scaled == NULL && face->make_scaled != NULL)
+        return face->make_scaled(face);
+    return face->scaled;
+}
+
+/* The span's glyphs' paths from the face's file, at the glyph origins
+** cairo_glyph_path would take (each 24.8, rounded as cairo rounds): true
+** when the face and every glyph were read (cr's path then holds them). */
+static bool
+own_span_path(cairo_t *cr, const cf__font_glyphs_t *g,
+              const cf__font_span_t *s, double base_x, double base_y)
+{
+    size_t i;
+    int x_position = 0;
+    if (!cf__own_face(s->face) || !cf__own_identity(cr))
+        return false;
+    for (i = 0; i < s->nglyphs; i++) {
+        const cf__font_glyph_t *gi = &g->glyphs[s->glyph + i];
+        if (drawn(gi->id)) {
+            double x = base_x + (double)(x_position + gi->x)
+                                    / CF__FONT_SCALE;
+            double y = gi->y == 0 ? base_y
+                                  : base_y + (double)gi->y / CF__FONT_SCALE;
+            if (cf__own_glyph_path(cr, s->face, gi->id, cf__own_fixed(x),
+                                   cf__own_fixed(y)) != 0)
+                return false;
+        }
+        x_position += gi->width;
+    }
+    return true;
+}
+
+/* Whether every glyph of the span reads from the face's file (checked
+** before any is appended, so that a refusal leaves cr's path as it was). */
+static bool
+own_span_ok(const cf__font_glyphs_t *g, const cf__font_span_t *s)
+{
+    cairo_text_extents_t e;
+    size_t i;
+    for (i = 0; i < s->nglyphs; i++) {
+        unsigned id = g->glyphs[s->glyph + i].id;
+        if (drawn(id) && cf__own_glyph_extents(s->face, id, &e) != 0)
+            return false;
+    }
+    return true;
+}
+
 static void
 draw_span(cairo_t *cr, const cf__font_glyphs_t *g, const cf__font_span_t *s,
           double xo, double yo, bool path, bool clusters)
 {
     cairo_glyph_t stack[STACK_GLYPHS], *cg = stack;
     cairo_text_cluster_t cstack[STACK_GLYPHS], *cc = cstack;
-    cairo_scaled_font_t *sf = s->face->scaled;
+    cairo_scaled_font_t *sf;
     double base_x = xo + (double)s->x / CF__FONT_SCALE;
     double base_y = yo + (double)(g->baseline - s->shift) / CF__FONT_SCALE;
     size_t i;
     int count = 0, x_position = 0;
     cairo_save(cr);
+    if (path && cf__own_face(s->face) && cf__own_identity(cr)
+        && own_span_ok(g, s) && own_span_path(cr, g, s, base_x, base_y)) {
+        cairo_restore(cr);
+        return;
+    }
+    sf = cf__font_face_scaled(s->face);
     if (sf == NULL || cairo_scaled_font_status(sf) != CAIRO_STATUS_SUCCESS)
         goto done;   /* pango draws boxes there: such runs stay pango's */
     cairo_set_scaled_font(cr, sf);
@@ -207,6 +264,46 @@ cf__font_glyph_outline(cairo_t *cr, cairo_scaled_font_t *sf,
     return rc;
 }
 
+/* cf__font_glyph_outline of the face's glyph: from its font file when
+** it reads (the same path: font-outlines.h), else from its scaled font. */
+static int
+face_glyph_outline(cairo_t *cr, const cf__font_face_t *face,
+                   unsigned long id,
+                   void (*f)(void *u, char op, const double *v), void *u)
+{
+    cairo_path_t *path;
+    double s;
+    int i, rc;
+    if (!cf__own_face(face) || !cf__own_identity(cr))
+        return cf__font_glyph_outline(cr, cf__font_face_scaled(face), id, f,
+                                      u);
+    cairo_new_path(cr);
+    rc = cf__own_glyph_path(cr, face, id, 0, 0);
+    if (rc != 0) {
+        cairo_new_path(cr);
+        return rc < 0 ? -1 : cf__font_glyph_outline(
+                                 cr, cf__font_face_scaled(face), id, f, u);
+    }
+    s = face->matrix[3] != 0 ? face->matrix[3] : 1;
+    path = cairo_copy_path(cr);
+    cairo_new_path(cr);
+    rc = path->status != CAIRO_STATUS_SUCCESS ? -1 : 0;
+    for (i = 0; rc == 0 && i < path->num_data;
+         i += path->data[i].header.length) {
+        static const char op[] = { 'M', 'L', 'C', 'Z' };
+        const cairo_path_data_t *d = &path->data[i];
+        double v[6];
+        int k;
+        for (k = 1; k < d->header.length && k <= 3; k++) {
+            v[2 * k - 2] = cf__font_five_digits(d[k].point.x / s);
+            v[2 * k - 1] = cf__font_five_digits(d[k].point.y / s);
+        }
+        f(u, op[d->header.type], v);
+    }
+    cairo_path_destroy(path);
+    return rc;
+}
+
 /* A glyph's outline per bp, as cf__font_glyph_outline hands it out. */
 typedef struct glyph_path {
     unsigned long id;
@@ -277,7 +374,7 @@ glyph_outline_cached(cairo_t *cr, const cf__font_face_t *face,
     path_buf_t b;
     size_t i, nv = 0;
     if (c == NULL)
-        return cf__font_glyph_outline(cr, face->scaled, id, f, u);
+        return face_glyph_outline(cr, face, id, f, u);
     pthread_mutex_lock(&c->lock);
     for (i = 0; i < c->n && p == NULL; i++)
         if (c->paths[i].id == id)
@@ -285,7 +382,7 @@ glyph_outline_cached(cairo_t *cr, const cf__font_face_t *face,
     if (p == NULL) {
         memset(&b, 0, sizeof b);
         b.p.id = id;
-        if (cf__font_glyph_outline(cr, face->scaled, id, collect, &b) != 0
+        if (face_glyph_outline(cr, face, id, collect, &b) != 0
             || b.failed) {
             free(b.p.ops);
             free(b.p.v);

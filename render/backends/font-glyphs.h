@@ -26,6 +26,10 @@
 void cf__font_glyphs_draw(cairo_t *cr, const cf__font_glyphs_t *g,
                           bool path);
 
+/* The face's cairo scaled font, made at need (cf__font_face_t.
+** make_scaled); NULL when cairo failed. */
+cairo_scaled_font_t *cf__font_face_scaled(const cf__font_face_t *face);
+
 /* Whether any glyph of the run is unknown (CF__FONT_GLYPH_UNKNOWN). */
 bool cf__font_glyphs_unknown(const cf__font_glyphs_t *g);
 

@@ -147,7 +147,7 @@ shape_item(native_fonts_t *nf, native_run_t *r, const item_t *t,
     hb_glyph_info_t *info;
     hb_glyph_position_t *pos;
     int own;
-    if (t->font->unsupported || cf__nface_scaled(t->font) == NULL)
+    if (t->font->unsupported || !cf__nface_scalable(t->font))
         return false;
     if ((own = own_item(r, t, text, x)) != 0) {
         r->oom = own < 0;

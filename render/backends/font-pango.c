@@ -117,6 +117,9 @@ add_face(pango_run_t *r, PangoFont *font)
     r->faces[r->nfaces].index = 0;
     r->faces[r->nfaces].psname = NULL;
     r->faces[r->nfaces].emboldened = false;
+    r->faces[r->nfaces].has_matrix = false;
+    r->faces[r->nfaces].own = NULL;        /* drawn and outlined by cairo */
+    r->faces[r->nfaces].make_scaled = NULL;
     r->nfaces++;
     return true;
 }

@@ -6,7 +6,9 @@
 ** glyph, the widths of the glyphs before it plus its own offset, all in
 ** pango units added to the run's origin in page units.  The SVG writer
 ** draws each glyph's outline once and uses it at these origins.  Native
-** only: a run's glyphs have cairo's scaled fonts (render/labels/font.h).
+** only: a run's glyphs have cairo's scaled fonts (render/labels/font.h),
+** the native faces' made only when asked for (cf__font_face_scaled): a
+** glyph's font is NULL until then.
 */
 #include "font-glyphs.h"
 #include "label-glyph-runs.h"
@@ -41,7 +43,7 @@ run_glyphs(const cf__font_glyphs_t *g, double ox, double oy,
         const cf__font_span_t *s = &g->spans[i];
         double bx = ox + (double)s->x / CF__FONT_SCALE;
         int xpos = 0;
-        if (s->face->scaled == NULL)
+        if (s->face->scaled == NULL && s->face->make_scaled == NULL)
             continue;
         for (k = 0; r == 0 && k < s->nglyphs; k++) {
             const cf__font_glyph_t *gi = &g->glyphs[s->glyph + k];

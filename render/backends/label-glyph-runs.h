@@ -19,7 +19,8 @@
 ** the label's path whole); else the first nonzero result of a call, or
 ** 0. */
 typedef struct cf__label_glyph {
-    cairo_scaled_font_t *font;
+    cairo_scaled_font_t *font;    /* NULL: not made yet (face's
+                                     cf__font_face_scaled makes it) */
     const cf__font_face_t *face;
     unsigned long index;
     double x, y;

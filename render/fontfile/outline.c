@@ -13,60 +13,6 @@
 #include "curvefig/core.h"
 #include "outline-private.h"
 
-void
-cf__outline_fini(cf__outline_t *o)
-{
-    cf_free(o->x);
-    cf_free(o->y);
-    cf_free(o->tags);
-    cf_free(o->ends);
-    memset(o, 0, sizeof *o);
-}
-
-int
-cf__ol_add(cf__outline_t *o, int64_t x, int64_t y, unsigned char tag)
-{
-    if (o->n == o->cap) {
-        size_t cap = o->cap ? 2 * o->cap : 64;
-        int64_t *nx, *ny;
-        unsigned char *nt;
-        if (o->n >= CF__OL_MAX_POINTS)
-            return 1;
-        nx = cf_realloc_array(o->x, cap, sizeof *nx);
-        if (nx == NULL)
-            return -1;
-        o->x = nx;
-        ny = cf_realloc_array(o->y, cap, sizeof *ny);
-        if (ny == NULL)
-            return -1;
-        o->y = ny;
-        nt = cf_realloc_array(o->tags, cap, 1);
-        if (nt == NULL)
-            return -1;
-        o->tags = nt;
-        o->cap = cap;
-    }
-    o->x[o->n] = x;
-    o->y[o->n] = y;
-    o->tags[o->n++] = tag;
-    return 0;
-}
-
-int
-cf__ol_end_contour(cf__outline_t *o)
-{
-    if (o->ncontours == o->cap_contours) {
-        size_t cap = o->cap_contours ? 2 * o->cap_contours : 16;
-        size_t *e = cf_realloc_array(o->ends, cap, sizeof *e);
-        if (e == NULL)
-            return -1;
-        o->ends = e;
-        o->cap_contours = cap;
-    }
-    o->ends[o->ncontours++] = o->n - 1;
-    return 0;
-}
-
 /* The face's tables: head (upem), maxp (glyphs), and CFF or glyf. */
 static int
 read_face(cf__olface_t *f, unsigned index)

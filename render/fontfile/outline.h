@@ -1,6 +1,7 @@
 /*
 ** Glyph outlines read from the font files themselves (render/fontfile/
-** outline.c, outline-cff.c, outline-glyf.c): the points FreeType 2.12
+** outline.c, outline-cff.c, outline-glyf.c, outline-points.c): the points
+** FreeType 2.12
 ** gives for a glyph loaded unhinted (FT_LOAD_NO_HINTING) at a character
 ** size, the same integers, so that the renderer's vector outputs and its
 ** layout take a glyph's outline and ink extents from here instead of
@@ -71,8 +72,11 @@
 
 /* An outline in 26.6 (y up, as FreeType's): n points, contour k the
 ** points up to ends[k] (inclusive).  Grown with the library's allocator
-** (cf_alloc); cf__outline_fini releases it. */
+** (cf_alloc), or with the C library's when libc is set (the renderer's
+** caches of process-long faces, outside the library's count of live
+** blocks); cf__outline_fini releases it. */
 typedef struct cf__outline {
+    bool libc;
     int64_t *x, *y;
     unsigned char *tags;
     size_t n, cap;

@@ -72,6 +72,18 @@ typedef struct cf__font_face {
                               have their own, their CFF one shared */
     bool emboldened;       /* bold made by cairo (FC_EMBOLDEN): a PDF
                               draws its outlines, the file has it not */
+    bool has_matrix;       /* matrix holds its font matrix */
+    double matrix[4];      /* its scaled font's font matrix (xx yx xy yy,
+                              cairo's, y down), known without the scaled
+                              font: the PDF writer's, and the outlines'
+                              read from the file */
+    void *own;             /* NULL, or its outlines read from its file,
+                              made at need (render/backends/
+                              font-outlines.h) */
+    void *(*make_scaled)(const struct cf__font_face *face);
+                           /* NULL, or makes `scaled` at need (the native
+                              faces: only drawing through cairo and the
+                              glyphs the file cannot give need it) */
 } cf__font_face_t;
 
 typedef struct cf__font_glyph {

@@ -135,7 +135,7 @@ put_glyph(collect_t *c, const cf__font_face_t *face, int f, unsigned id)
         || !add_unique(&c->glyphs, &c->nglyphs, &c->capglyphs,
                        (unsigned)f << 24 | (id & 0xffffff)))
         return;
-    sf = face->scaled;
+    sf = cf__font_face_scaled(face);
     if (sf == NULL) {
         c->failed = true;
         return;

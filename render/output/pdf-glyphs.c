@@ -1,7 +1,8 @@
 /*
 ** The glyphs of the PDF files (render/backends/backend-pdfw.c, natively):
 ** each label's glyphs (render/backends/label-glyph-runs.c) with their
-** faces' font files, font matrices (cairo's scaled fonts') and the text
+** faces' font files, font matrices (the ones cairo's scaled fonts have,
+** known without making them) and the text
 ** of their clusters, for the PDF writer to show as text.  A face without
 ** a file (pango's) or emboldened by cairo makes the label its outlines.
 */
@@ -23,7 +24,14 @@ on_glyph(void *ctx, const cf__label_glyph_t *g)
     if (g->face == NULL || g->face->file == NULL || g->face->emboldened
         || g->index > 0xffff)
         return 1;
-    cairo_scaled_font_get_font_matrix(g->font, &m);
+    if (g->face->has_matrix) {
+        m.xx = g->face->matrix[0];
+        m.yx = g->face->matrix[1];
+        m.xy = g->face->matrix[2];
+        m.yy = g->face->matrix[3];
+    } else {
+        cairo_scaled_font_get_font_matrix(g->font, &m);
+    }
     p.file = g->face->file;
     p.index = g->face->index;
     p.psname = g->face->psname;

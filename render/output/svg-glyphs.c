@@ -4,38 +4,57 @@
 ** an outline drawn once in the document's <defs> and used at every place
 ** it appears (as cairo's SVG surface, the writer before it, did).  A glyph is its cairo
 ** scaled font (one per font face, size and options, held here by a
-** reference so that the pointer names it while the table lives) and its
-** index in the font; its outline is cairo's path of it at the origin.
+** reference so that the pointer names it while the table lives), or the
+** native face whose glyphs are read from its file (font-outlines.h), and
+** its index in the font; its outline is cairo's path of it at the origin,
+** the same numbers either way.
 */
 #include <string.h>
 
 #include <cairo.h>
 
+#include "font-glyphs.h"
+#include "font-outlines.h"
 #include "grow.h"
 #include "label-glyph-runs.h"
 #include "output-private.h"
 
 struct cf__svg_glyph {
-    cairo_scaled_font_t *font;
+    cairo_scaled_font_t *font;        /* held; NULL for a face read from
+                                         its file */
+    const cf__font_face_t *face;      /* that face (a native one, which
+                                         lives as long as the process) */
     unsigned long index;
 };
 
-/* The number of a glyph (1 and up), added at need; 0 out of memory. */
+/* The number of a glyph (1 and up), added at need; 0 out of memory or
+** when its font cannot be made. */
 static unsigned
-glyph_id(cf__svg_glyphs_t *sg, cairo_scaled_font_t *font,
-         unsigned long index)
+glyph_id(cf__svg_glyphs_t *sg, const cf__label_glyph_t *lg)
 {
     struct cf__svg_glyph *g;
+    cairo_scaled_font_t *font = lg->font;
+    const cf__font_face_t *face = NULL;
     size_t i;
+    if (cf__own_face(lg->face)) {
+        face = lg->face;
+        font = NULL;
+    } else if (font == NULL) {
+        font = cf__font_face_scaled(lg->face);
+        if (font == NULL)
+            return 0;
+    }
     for (i = sg->n; i-- > 0;)
-        if (sg->g[i].font == font && sg->g[i].index == index)
+        if (sg->g[i].font == font && sg->g[i].face == face
+            && sg->g[i].index == lg->index)
             return (unsigned)i + 1;
     g = cf__grow_array(sg->g, &sg->cap, sg->n + 1, sizeof *g, 64);
     if (g == NULL || sg->n + 1 > 0xffffffu)
         return 0;
     sg->g = g;
-    g[sg->n].font = cairo_scaled_font_reference(font);
-    g[sg->n].index = index;
+    g[sg->n].font = font != NULL ? cairo_scaled_font_reference(font) : NULL;
+    g[sg->n].face = face;
+    g[sg->n].index = lg->index;
     return (unsigned)++sg->n;
 }
 
@@ -49,7 +68,7 @@ on_glyph(void *ctx, const cf__label_glyph_t *g)
 {
     label_ctx_t *lc = ctx;
     cf__svgw_use_t u;
-    u.id = glyph_id(lc->sg, g->font, g->index);
+    u.id = glyph_id(lc->sg, g);
     u.x = g->x;
     u.y = g->y;
     if (u.id == 0)
@@ -117,8 +136,14 @@ glyph_path(void *ctx, unsigned id, cf__buf_t *d)
     glyph.x = 0;
     glyph.y = 0;
     cairo_new_path(cr);
-    cairo_set_scaled_font(cr, sg->g[id - 1].font);
-    cairo_glyph_path(cr, &glyph, 1);
+    if (sg->g[id - 1].face != NULL) {
+        if (cf__own_glyph_path(cr, sg->g[id - 1].face, glyph.index, 0, 0)
+            != 0)
+            return -1;
+    } else {
+        cairo_set_scaled_font(cr, sg->g[id - 1].font);
+        cairo_glyph_path(cr, &glyph, 1);
+    }
     path = cairo_copy_path(cr);
     r = cf__svg_path_data(path, d);
     cairo_path_destroy(path);
@@ -140,7 +165,8 @@ cf__svg_glyphs_fini(cf__svg_glyphs_t *sg)
 {
     size_t i;
     for (i = 0; i < sg->n; i++)
-        cairo_scaled_font_destroy(sg->g[i].font);
+        if (sg->g[i].font != NULL)
+            cairo_scaled_font_destroy(sg->g[i].font);
     cf_free(sg->g);
     cf__glyph_outliner_fini(&sg->outliner);
     memset(sg, 0, sizeof *sg);

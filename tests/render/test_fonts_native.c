@@ -116,7 +116,7 @@ drawn(const cf__fonts_t *fonts, void *run, bool path)
 static void
 describe_span(const char *who, const cf__font_span_t *s)
 {
-    cairo_scaled_font_t *sf = s->face->scaled;
+    cairo_scaled_font_t *sf = cf__font_face_scaled(s->face);
     cairo_font_extents_t e;
     cairo_matrix_t m;
     FT_Face face = cairo_ft_scaled_font_lock_face(sf);
@@ -146,11 +146,13 @@ same_glyphs(const cf__font_glyphs_t *a, const cf__font_glyphs_t *b,
     }
     for (i = 0; i < a->nspans; i++) {
         const cf__font_span_t *s = &a->spans[i], *t = &b->spans[i];
-        cairo_font_face_t *fa = cairo_scaled_font_get_font_face(s->face->scaled);
-        cairo_font_face_t *fb = cairo_scaled_font_get_font_face(t->face->scaled);
+        cairo_font_face_t *fa =
+            cairo_scaled_font_get_font_face(cf__font_face_scaled(s->face));
+        cairo_font_face_t *fb =
+            cairo_scaled_font_get_font_face(cf__font_face_scaled(t->face));
         cairo_matrix_t ma, mb;
-        cairo_scaled_font_get_font_matrix(s->face->scaled, &ma);
-        cairo_scaled_font_get_font_matrix(t->face->scaled, &mb);
+        cairo_scaled_font_get_font_matrix(cf__font_face_scaled(s->face), &ma);
+        cairo_scaled_font_get_font_matrix(cf__font_face_scaled(t->face), &mb);
         if (s->byte != t->byte || s->nbytes != t->nbytes || s->x != t->x
             || s->glyph != t->glyph || s->nglyphs != t->nglyphs
             || s->backward != t->backward || fa != fb
@@ -542,7 +544,7 @@ shown_with(cairo_surface_t *s, const cf__font_span_t *span)
 {
     cairo_t *cr = cairo_create(s);
     cairo_scaled_font_t *sf;
-    cairo_set_scaled_font(cr, span->face->scaled);
+    cairo_set_scaled_font(cr, cf__font_face_scaled(span->face));
     assert_non_null(span->face->show_options);
     cairo_set_font_options(cr, span->face->show_options);
     sf = cairo_get_scaled_font(cr);
@@ -582,11 +584,11 @@ test_shown_with_layout_font(void **state)
     img = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 10, 10);
     for (i = 0; i < g->nspans; i++) {
         assert_ptr_equal(shown_with(pdf, &g->spans[i]),
-                         g->spans[i].face->scaled);
+                         cf__font_face_scaled(g->spans[i].face));
         assert_ptr_equal(shown_with(ps, &g->spans[i]),
-                         g->spans[i].face->scaled);
+                         cf__font_face_scaled(g->spans[i].face));
         assert_ptr_not_equal(shown_with(img, &g->spans[i]),
-                             g->spans[i].face->scaled);
+                             cf__font_face_scaled(g->spans[i].face));
     }
     cairo_surface_destroy(pdf);
     cairo_surface_destroy(ps);

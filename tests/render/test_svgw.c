@@ -29,6 +29,7 @@
 #include <librsvg/rsvg.h>
 
 #include "backend.h"
+#include "font-glyphs.h"
 #include "label-glyph-runs.h"
 #include "curvefig/output.h"
 #include "imgcmp.h"
@@ -251,7 +252,11 @@ glyph_at(void *ctx, const cf__label_glyph_t *lg)
     gl.index = lg->index;
     gl.x = lg->x;
     gl.y = lg->y;
-    cairo_set_scaled_font(g->mine, lg->font);
+    /* cairo's own path of the glyph: the native faces' scaled fonts are
+    ** made here, as the writer reads their glyphs from the files */
+    cairo_set_scaled_font(g->mine, lg->font != NULL
+                                       ? lg->font
+                                       : cf__font_face_scaled(lg->face));
     cairo_glyph_path(g->mine, &gl, 1);
     g->glyphs++;
     return 0;

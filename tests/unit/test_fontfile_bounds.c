@@ -9,7 +9,14 @@
 ** past the charstring's end, an accented character (endchar with 4
 ** operands: seac, which a CID-keyed subset cannot hold) and a glyph id out
 ** of range.  Each is refused (1) with a message saying which; the same
-** font with a plain glyph is subset (0).
+** font with a plain glyph is subset (0).  The glyph outlines read from the
+** files (render/fontfile/outline.h) meet the same charstrings: the plain
+** glyph is read, every hostile one refused (1), the 200^8 calls within a
+** second; damaged copies of real fonts (CMU Serif's glyf, LM Roman's CFF:
+** every glyph of each copy with bytes overwritten or the file cut short)
+** give 0 or 1 for every glyph, never a read out of bounds (the
+** sanitizers); and under allocation failure (tu_fail_loop) a glyph's load
+** fails cleanly, leaking nothing.
 */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -23,6 +30,7 @@
 #include <cmocka.h>
 
 #include "fontfile-private.h"
+#include "outline.h"
 #include "testutil.h"
 
 typedef struct bytes {
@@ -159,6 +167,25 @@ subset(const bytes_t *f, unsigned gid, char *why, size_t cap)
     return r;
 }
 
+/* Glyph gid's outline read from the font: 0, 1 or -1. */
+static int
+outline(const bytes_t *f, unsigned gid)
+{
+    cf__olface_t *face;
+    cf__outline_t o;
+    cf__olsize_t sz;
+    static const int64_t id[4] = { 0x10000, 0, 0, 0x10000 };
+    int r = cf__olface_open_mem(f->d, f->n, 0, &face);
+    if (r != 0)
+        return r;
+    memset(&o, 0, sizeof o);
+    cf__olface_size(face, 640, 640, id, &sz);
+    r = cf__olface_glyph(face, gid, &sz, &o);
+    cf__outline_fini(&o);
+    cf__olface_close(face);
+    return r;
+}
+
 static void
 refused(const bytes_t *f, unsigned gid, const char *says)
 {
@@ -166,6 +193,7 @@ refused(const bytes_t *f, unsigned gid, const char *says)
     int r = subset(f, gid, why, sizeof why);
     if (r != 1 || strstr(why, says) == NULL)
         fail_msg("%d \"%s\", not 1 and \"%s\"", r, why, says);
+    assert_int_equal(outline(f, gid), 1);
 }
 
 static void
@@ -188,6 +216,7 @@ test_bounds(void **state)
     g = cs(call0, 3);
     subrs[0] = cs(move, 4);
     assert_int_equal(subset(font(&g, subrs, 1), 1, why, sizeof why), 0);
+    assert_int_equal(outline(font(&g, subrs, 1), 1), 0);
     refused(font(&g, subrs, 1), 2, "glyph id 2 out of range");
     /* a subroutine calling itself */
     subrs[0] = cs(self, 3);
@@ -221,11 +250,130 @@ test_bounds(void **state)
     refused(font(&g, subrs, 9), 1, "seac");
 }
 
+/* The whole file at path into *len bytes (NULL: not there). */
+static unsigned char *
+slurp(const char *path, size_t *len)
+{
+    FILE *fp = fopen(path, "rb");
+    unsigned char *d;
+    long n;
+    if (fp == NULL)
+        return NULL;
+    fseek(fp, 0, SEEK_END);
+    n = ftell(fp);
+    fseek(fp, 0, SEEK_SET);
+    d = malloc((size_t)n);
+    if (d == NULL || fread(d, 1, (size_t)n, fp) != (size_t)n) {
+        free(d);
+        d = NULL;
+    }
+    fclose(fp);
+    *len = (size_t)n;
+    return d;
+}
+
+/* Every glyph of the bytes: 0 or 1 each (the face may be refused). */
+static void
+every_glyph(const unsigned char *d, size_t n, unsigned step)
+{
+    cf__olface_t *face;
+    cf__outline_t o;
+    cf__olsize_t sz;
+    static const int64_t slant[4] = { 0x10000, 0x3333, 0, 0x10000 };
+    unsigned g;
+    int r = cf__olface_open_mem(d, n, 0, &face);
+    assert_true(r == 0 || r == 1);
+    if (r != 0)
+        return;
+    memset(&o, 0, sizeof o);
+    cf__olface_size(face, 637, 640, slant, &sz);
+    for (g = 0; g < cf__olface_num_glyphs(face); g += step) {
+        r = cf__olface_glyph(face, g, &sz, &o);
+        assert_true(r == 0 || r == 1);
+    }
+    cf__outline_fini(&o);
+    cf__olface_close(face);
+}
+
+static void
+test_damaged_copies(void **state)
+{
+    static const char *const files[] = {
+        "/usr/share/fonts/truetype/cmu/cmunrm.ttf",
+        "/usr/share/texmf/fonts/opentype/public/lm/lmroman10-regular.otf"
+    };
+    size_t f, k;
+    (void)state;
+    for (f = 0; f < 2; f++) {
+        size_t n, i;
+        unsigned char *d = slurp(files[f], &n), *c;
+        uint32_t seed = 12345;
+        if (d == NULL) {
+            printf("%s: not installed, skipped\n", files[f]);
+            continue;
+        }
+        c = malloc(n);
+        assert_non_null(c);
+        every_glyph(d, n, 1);
+        for (k = 0; k < 24; k++) {
+            memcpy(c, d, n);
+            for (i = 0; i < 64; i++) {   /* 64 bytes overwritten */
+                seed = seed * 1103515245u + 12345u;
+                c[(seed >> 8) % n] = (unsigned char)(seed >> 24);
+            }
+            every_glyph(c, n, 3);
+            every_glyph(c, n / (k + 2), 5);   /* and cut short */
+        }
+        free(c);
+        free(d);
+    }
+}
+
+static unsigned char *oom_font;
+static size_t oom_len;
+
+static cf_status_t
+op_outline(cf_diag_t *diag)
+{
+    cf__olface_t *face;
+    cf__outline_t o;
+    cf__olsize_t sz;
+    static const int64_t id[4] = { 0x10000, 0, 0, 0x10000 };
+    unsigned g;
+    int r;
+    (void)diag;
+    r = cf__olface_open_mem(oom_font, oom_len, 0, &face);
+    if (r != 0)
+        return r < 0 ? CF_STATUS_NO_MEMORY : CF_STATUS_INVALID_ARG;
+    memset(&o, 0, sizeof o);
+    cf__olface_size(face, 640, 640, id, &sz);
+    for (g = 0, r = 0; g < 40 && r == 0; g++)
+        r = cf__olface_glyph(face, g, &sz, &o);
+    cf__outline_fini(&o);
+    cf__olface_close(face);
+    return r < 0 ? CF_STATUS_NO_MEMORY : r > 0 ? CF_STATUS_INVALID_ARG
+                                               : CF_STATUS_OK;
+}
+
+static void
+test_out_of_memory(void **state)
+{
+    (void)state;
+    oom_font = slurp("/usr/share/texmf/fonts/opentype/public/lm/"
+                     "lmroman10-regular.otf", &oom_len);
+    if (oom_font == NULL)
+        skip();
+    assert_true(tu_fail_loop("glyph outlines", op_outline, false) > 0);
+    free(oom_font);
+}
+
 int
 main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_bounds),
+        cmocka_unit_test(test_damaged_copies),
+        cmocka_unit_test(test_out_of_memory),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

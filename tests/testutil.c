@@ -228,6 +228,28 @@ tu_figure_scripts(const char *dir, char **names, size_t max)
     return n;
 }
 
+unsigned char *
+tu_read_file(const char *path, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    unsigned char *b;
+    long n;
+    if (f == NULL)
+        return NULL;
+    fseek(f, 0, SEEK_END);
+    n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    b = n >= 0 ? malloc(n > 0 ? (size_t)n : 1) : NULL;
+    if (b == NULL || fread(b, 1, (size_t)n, f) != (size_t)n) {
+        free(b);
+        fclose(f);
+        return NULL;
+    }
+    fclose(f);
+    *len = (size_t)n;
+    return b;
+}
+
 void
 tu_read_header(const char *root, const char *name, char *buf, size_t size)
 {

@@ -63,6 +63,10 @@ long tu_fail_loop(const char *name, tu_alloc_op op, bool takes_diag);
 ** names (at most max); their number. */
 size_t tu_figure_scripts(const char *dir, char **names, size_t max);
 
+/* The whole file at path, malloc'd, its size in *len; NULL when it cannot
+** be read (the caller frees it). */
+unsigned char *tu_read_file(const char *path, size_t *len);
+
 /* The text of a public header (include/curvefig/<name> under the source
 ** tree root) into buf, NUL-terminated; fails the test when unreadable. */
 void tu_read_header(const char *root, const char *name, char *buf,

@@ -223,31 +223,15 @@ cf__font_five_digits(double v)
     return strtod(buf, NULL);
 }
 
-int
-cf__font_glyph_outline(cairo_t *cr, cairo_scaled_font_t *sf,
-                       unsigned long id,
-                       void (*f)(void *u, char op, const double *v), void *u)
+/* cr's path (a glyph's, at the origin) handed to f per bp of size s,
+** each coordinate to five digits; cr's path emptied; 0 or -1. */
+static int
+hand_out(cairo_t *cr, double s, void (*f)(void *u, char op, const double *v),
+         void *u)
 {
-    cairo_matrix_t fm;
-    cairo_glyph_t g;
-    cairo_path_t *path;
-    double s;
-    int i, rc = 0;
-    if (sf == NULL)
-        return -1;
-    /* the font's own scaled font: a scaled font of the same face made at
-    ** another size moved the glyph paths of this one by 1/128 bp */
-    cairo_scaled_font_get_font_matrix(sf, &fm);
-    s = fm.yy != 0 ? fm.yy : 1;
-    g.index = id;
-    g.x = g.y = 0;
-    cairo_set_scaled_font(cr, sf);
+    cairo_path_t *path = cairo_copy_path(cr);
+    int i, rc = path->status != CAIRO_STATUS_SUCCESS ? -1 : 0;
     cairo_new_path(cr);
-    cairo_glyph_path(cr, &g, 1);
-    path = cairo_copy_path(cr);
-    cairo_new_path(cr);
-    if (path->status != CAIRO_STATUS_SUCCESS)
-        rc = -1;
     for (i = 0; rc == 0 && i < path->num_data;
          i += path->data[i].header.length) {
         static const char op[] = { 'M', 'L', 'C', 'Z' };
@@ -264,6 +248,28 @@ cf__font_glyph_outline(cairo_t *cr, cairo_scaled_font_t *sf,
     return rc;
 }
 
+int
+cf__font_glyph_outline(cairo_t *cr, cairo_scaled_font_t *sf,
+                       unsigned long id,
+                       void (*f)(void *u, char op, const double *v), void *u)
+{
+    cairo_matrix_t fm;
+    cairo_glyph_t g;
+    double s;
+    if (sf == NULL)
+        return -1;
+    /* the font's own scaled font: a scaled font of the same face made at
+    ** another size moved the glyph paths of this one by 1/128 bp */
+    cairo_scaled_font_get_font_matrix(sf, &fm);
+    s = fm.yy != 0 ? fm.yy : 1;
+    g.index = id;
+    g.x = g.y = 0;
+    cairo_set_scaled_font(cr, sf);
+    cairo_new_path(cr);
+    cairo_glyph_path(cr, &g, 1);
+    return hand_out(cr, s, f, u);
+}
+
 /* cf__font_glyph_outline of the face's glyph: from its font file when
 ** it reads (the same path: font-outlines.h), else from its scaled font. */
 static int
@@ -271,9 +277,7 @@ face_glyph_outline(cairo_t *cr, const cf__font_face_t *face,
                    unsigned long id,
                    void (*f)(void *u, char op, const double *v), void *u)
 {
-    cairo_path_t *path;
-    double s;
-    int i, rc;
+    int rc;
     if (!cf__own_face(face) || !cf__own_identity(cr))
         return cf__font_glyph_outline(cr, cf__font_face_scaled(face), id, f,
                                       u);
@@ -284,24 +288,7 @@ face_glyph_outline(cairo_t *cr, const cf__font_face_t *face,
         return rc < 0 ? -1 : cf__font_glyph_outline(
                                  cr, cf__font_face_scaled(face), id, f, u);
     }
-    s = face->matrix[3] != 0 ? face->matrix[3] : 1;
-    path = cairo_copy_path(cr);
-    cairo_new_path(cr);
-    rc = path->status != CAIRO_STATUS_SUCCESS ? -1 : 0;
-    for (i = 0; rc == 0 && i < path->num_data;
-         i += path->data[i].header.length) {
-        static const char op[] = { 'M', 'L', 'C', 'Z' };
-        const cairo_path_data_t *d = &path->data[i];
-        double v[6];
-        int k;
-        for (k = 1; k < d->header.length && k <= 3; k++) {
-            v[2 * k - 2] = cf__font_five_digits(d[k].point.x / s);
-            v[2 * k - 1] = cf__font_five_digits(d[k].point.y / s);
-        }
-        f(u, op[d->header.type], v);
-    }
-    cairo_path_destroy(path);
-    return rc;
+    return hand_out(cr, face->matrix[3] != 0 ? face->matrix[3] : 1, f, u);
 }
 
 /* A glyph's outline per bp, as cf__font_glyph_outline hands it out. */

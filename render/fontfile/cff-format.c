@@ -6,7 +6,8 @@
 **          the items back to back;
 **   DICT   operands (integers in 1, 2, 3 or 5 bytes, reals as nibbles)
 **          each run ended by an operator (a byte 0 to 21, 12 escaping a
-**          second one).
+**          second one);
+** and the FDSelect of a CID-keyed font (formats 0 and 3).
 ** Reading checks that an INDEX ends inside the table and that an item's
 ** two offsets are in order and inside the data; a DICT's operands stop at
 ** 48 and its numbers at its end.
@@ -218,4 +219,39 @@ cf__cff_put_op(cf__buf_t *b, unsigned op)
     }
     o[0] = (unsigned char)op;
     return cf__buf_append(b, o, 1);
+}
+
+int
+cf__cff_fdselect(const unsigned char *t, size_t tlen, size_t at,
+                 unsigned gid, unsigned *fd)
+{
+    size_t n, lo, hi;
+    if (!cf__ff_fits(at, 1, tlen))
+        return 1;
+    if (t[at] == 0) {
+        if (!cf__ff_fits(at + 1, (size_t)gid + 1, tlen))
+            return 1;
+        *fd = t[at + 1 + gid];
+        return 0;
+    }
+    if (t[at] != 3)
+        return 3;
+    if (!cf__ff_fits(at, 3, tlen))
+        return 1;
+    n = cf__ff_u16(t + at + 1);
+    if (n == 0 || !cf__ff_fits(at + 3, 3 * n + 2, tlen))
+        return 1;
+    if (gid < cf__ff_u16(t + at + 3) || gid >= cf__ff_u16(t + at + 3 + 3 * n))
+        return 2;
+    lo = 0;
+    hi = n - 1;   /* the range lo..hi holds gid: first(lo) <= gid */
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo + 1) / 2;
+        if (cf__ff_u16(t + at + 3 + 3 * mid) <= gid)
+            lo = mid;
+        else
+            hi = mid - 1;
+    }
+    *fd = t[at + 3 + 3 * lo + 2];
+    return 0;
 }

@@ -137,46 +137,25 @@ read_top(cf__cff_t *c, size_t *charstrings)
 static int
 fd_of(cf__cff_t *c, unsigned gid, unsigned *fd)
 {
-    const unsigned char *t = c->t;
     size_t at = c->fdselect;
-    if (!cf__ff_fits(at, 1, c->tlen))
-        goto past;
-    if (t[at] == 0) {
-        if (!cf__ff_fits(at + 1, (size_t)gid + 1, c->tlen))
-            goto past;
-        *fd = t[at + 1 + gid];
-    } else if (t[at] == 3) {
-        size_t n, lo, hi;
-        if (!cf__ff_fits(at, 3, c->tlen))
-            goto past;
-        n = cf__ff_u16(t + at + 1);
-        if (n == 0 || !cf__ff_fits(at + 3, 3 * n + 2, c->tlen))
-            goto past;
-        if (gid < cf__ff_u16(t + at + 3) ||
-            gid >= cf__ff_u16(t + at + 3 + 3 * n))
-            return cf__ff_fail(c->f, "CFF FDSelect at %zu: no range holds "
-                               "glyph %u", cf__ff_at(c->f, t) + at, gid);
-        lo = 0;
-        hi = n - 1;   /* the range lo..hi holds gid: first(lo) <= gid */
-        while (lo < hi) {
-            size_t mid = lo + (hi - lo + 1) / 2;
-            if (cf__ff_u16(t + at + 3 + 3 * mid) <= gid)
-                lo = mid;
-            else
-                hi = mid - 1;
-        }
-        *fd = t[at + 3 + 3 * lo + 2];
-    } else {
+    switch (cf__cff_fdselect(c->t, c->tlen, at, gid, fd)) {
+    case 0:
+        break;
+    case 2:
+        return cf__ff_fail(c->f, "CFF FDSelect at %zu: no range holds "
+                           "glyph %u", cf__ff_at(c->f, c->t) + at, gid);
+    case 3:
         return cf__ff_fail(c->f, "CFF FDSelect at %zu: format %u (0 or 3 "
-                           "are read)", cf__ff_at(c->f, t) + at, t[at]);
+                           "are read)", cf__ff_at(c->f, c->t) + at,
+                           c->t[at]);
+    default:
+        return cf__ff_fail(c->f, "CFF FDSelect at %zu runs past the "
+                           "table's end", cf__ff_at(c->f, c->t) + at);
     }
     if (*fd >= c->nfds)
         return cf__ff_fail(c->f, "CFF FDSelect: glyph %u in Font DICT %u "
                            "of %zu", gid, *fd, c->nfds);
     return 0;
-past:
-    return cf__ff_fail(c->f, "CFF FDSelect at %zu runs past the table's "
-                       "end", cf__ff_at(c->f, t) + at);
 }
 
 static int

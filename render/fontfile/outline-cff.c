@@ -178,40 +178,11 @@ cf__ol_cff_open(cf__olface_t *f, const cf__ff_table_t *cff)
 static int
 fd_of(const cf__olface_t *f, unsigned gid, size_t *fd)
 {
-    const unsigned char *t = f->t;
-    size_t at = f->fdselect, n, lo, hi;
-    if (!f->cid) {
-        *fd = 0;
-        return 0;
-    }
-    if (!cf__ff_fits(at, 1, f->tlen))
+    unsigned k = 0;
+    if (f->cid && cf__cff_fdselect(f->t, f->tlen, f->fdselect, gid, &k))
         return 1;
-    if (t[at] == 0) {
-        if (!cf__ff_fits(at + 1, (size_t)gid + 1, f->tlen))
-            return 1;
-        *fd = t[at + 1 + gid];
-    } else if (t[at] == 3) {
-        if (!cf__ff_fits(at, 3, f->tlen))
-            return 1;
-        n = cf__ff_u16(t + at + 1);
-        if (n == 0 || !cf__ff_fits(at + 3, 3 * n + 2, f->tlen) ||
-            gid < cf__ff_u16(t + at + 3) ||
-            gid >= cf__ff_u16(t + at + 3 + 3 * n))
-            return 1;
-        lo = 0;
-        hi = n - 1;
-        while (lo < hi) {
-            size_t mid = lo + (hi - lo + 1) / 2;
-            if (cf__ff_u16(t + at + 3 + 3 * mid) <= gid)
-                lo = mid;
-            else
-                hi = mid - 1;
-        }
-        *fd = t[at + 3 + 3 * lo + 2];
-    } else {
-        return 1;
-    }
-    return *fd < f->nfds ? 0 : 1;
+    *fd = k;
+    return k < f->nfds ? 0 : 1;
 }
 
 /* ---- the charstring ----------------------------------------------------- */

@@ -185,6 +185,12 @@ typedef struct cf__cff_op {
 int cf__cff_dict_next(cf__ff_t *f, const unsigned char *p, size_t len,
                       size_t *pos, cf__cff_op_t *op, const char *what);
 
+/* The Font DICT of glyph gid from the FDSelect at t[at] (formats 0 and
+** 3): 0 and *fd; 1 when it runs past the table's end, 2 when no range
+** holds gid, 3 another format. */
+int cf__cff_fdselect(const unsigned char *t, size_t tlen, size_t at,
+                     unsigned gid, unsigned *fd);
+
 /* DICT operands as written: an integer in 5 bytes (29, for offsets whose
 ** value is not known before the layout), an operator. */
 int cf__cff_put_int5(cf__buf_t *b, int32_t v);

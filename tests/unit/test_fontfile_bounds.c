@@ -250,28 +250,6 @@ test_bounds(void **state)
     refused(font(&g, subrs, 9), 1, "seac");
 }
 
-/* The whole file at path into *len bytes (NULL: not there). */
-static unsigned char *
-slurp(const char *path, size_t *len)
-{
-    FILE *fp = fopen(path, "rb");
-    unsigned char *d;
-    long n;
-    if (fp == NULL)
-        return NULL;
-    fseek(fp, 0, SEEK_END);
-    n = ftell(fp);
-    fseek(fp, 0, SEEK_SET);
-    d = malloc((size_t)n);
-    if (d == NULL || fread(d, 1, (size_t)n, fp) != (size_t)n) {
-        free(d);
-        d = NULL;
-    }
-    fclose(fp);
-    *len = (size_t)n;
-    return d;
-}
-
 /* Every glyph of the bytes: 0 or 1 each (the face may be refused). */
 static void
 every_glyph(const unsigned char *d, size_t n, unsigned step)
@@ -306,7 +284,7 @@ test_damaged_copies(void **state)
     (void)state;
     for (f = 0; f < 2; f++) {
         size_t n, i;
-        unsigned char *d = slurp(files[f], &n), *c;
+        unsigned char *d = tu_read_file(files[f], &n), *c;
         uint32_t seed = 12345;
         if (d == NULL) {
             printf("%s: not installed, skipped\n", files[f]);
@@ -359,7 +337,7 @@ static void
 test_out_of_memory(void **state)
 {
     (void)state;
-    oom_font = slurp("/usr/share/texmf/fonts/opentype/public/lm/"
+    oom_font = tu_read_file("/usr/share/texmf/fonts/opentype/public/lm/"
                      "lmroman10-regular.otf", &oom_len);
     if (oom_font == NULL)
         skip();

@@ -30,28 +30,6 @@ rnd(unsigned n)
     return (unsigned)(tu_rng_next(&rng) % n);
 }
 
-static unsigned char *
-read_file(const char *path, size_t *len)
-{
-    FILE *f = fopen(path, "rb");
-    unsigned char *b;
-    long n;
-    if (f == NULL)
-        return NULL;
-    fseek(f, 0, SEEK_END);
-    n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    b = malloc((size_t)n);
-    if (b == NULL || fread(b, 1, (size_t)n, f) != (size_t)n) {
-        free(b);
-        fclose(f);
-        return NULL;
-    }
-    fclose(f);
-    *len = (size_t)n;
-    return b;
-}
-
 static unsigned
 be16(const unsigned char *p)
 {
@@ -111,7 +89,7 @@ main(void)
     long damaged = 0, usable = 0, shaped = 0;
     for (f = 0; f < sizeof files / sizeof files[0]; f++) {
         size_t len, t, k;
-        unsigned char *font = read_file(files[f], &len);
+        unsigned char *font = tu_read_file(files[f], &len);
         cf__otface_t *face;
         cf__otrun_t run;
         unsigned ntables;

@@ -62,7 +62,9 @@ span_clusters(const cf__font_glyphs_t *g, const cf__font_span_t *s,
 cairo_scaled_font_t *
 cf__font_face_scaled(const cf__font_face_t *face)
 {
-    if (face->scaled == NULL && face->make_scaled != NULL)
+    /* a face that makes its scaled font at need sets it under its lock:
+    ** asked through that lock, never read here */
+    if (face->make_scaled != NULL)
         return face->make_scaled(face);
     return face->scaled;
 }

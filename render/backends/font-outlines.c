@@ -133,9 +133,9 @@ set_up(own_t *o, const cf__font_face_t *face)
 static const own_t *
 own_of(const cf__font_face_t *face)
 {
-    own_t *o;
-    if (face->own != NULL)
-        return face->own;
+    own_t *o = __atomic_load_n(&face->own, __ATOMIC_ACQUIRE);
+    if (o != NULL)
+        return o;
     pthread_mutex_lock(&lock);
     o = face->own;
     if (o == NULL) {
@@ -152,7 +152,8 @@ own_of(const cf__font_face_t *face)
             }
         }
         /* the face is the process's (a native face): its own is set once */
-        ((cf__font_face_t *)face)->own = o;
+        __atomic_store_n(&((cf__font_face_t *)face)->own, (void *)o,
+                         __ATOMIC_RELEASE);
     }
     pthread_mutex_unlock(&lock);
     return o;

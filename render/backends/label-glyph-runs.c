@@ -49,7 +49,9 @@ run_glyphs(const cf__font_glyphs_t *g, double ox, double oy,
             const cf__font_glyph_t *gi = &g->glyphs[s->glyph + k];
             if (gi->id != CF__FONT_GLYPH_EMPTY) {
                 cf__label_glyph_t lg;
-                lg.font = s->face->scaled;
+                /* made at need by its user (cf__font_face_scaled) */
+                lg.font = s->face->make_scaled != NULL ? NULL
+                                                       : s->face->scaled;
                 lg.face = s->face;
                 lg.index = gi->id;
                 lg.x = bx + (double)(xpos + gi->x) / CF__FONT_SCALE;

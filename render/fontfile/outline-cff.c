@@ -199,7 +199,6 @@ typedef struct cs {
     cf__outline_t *o;
     int32_t st[MAX_STACK];
     size_t sp;
-    int32_t trans[32];
     size_t stems;
     long steps;
     int err;               /* 1 refused, -1 out of memory */
@@ -569,59 +568,10 @@ escaped(cs_t *s, unsigned x)
             break;
         push(s, st[n - 1]);
         return;
-    case 15:  /* eq */
-        if (n < 2)
-            break;
-        st[n - 2] = st[n - 2] == st[n - 1] ? 0x10000 : 0;
-        s->sp--;
-        return;
-    case 3: case 4:   /* and or */
-        if (n < 2)
-            break;
-        st[n - 2] = (x == 3 ? st[n - 2] && st[n - 1]
-                            : st[n - 2] || st[n - 1]) ? 0x10000 : 0;
-        s->sp--;
-        return;
-    case 5:   /* not */
-        if (n < 1)
-            break;
-        st[n - 1] = st[n - 1] ? 0 : 0x10000;
-        return;
-    case 22:  /* ifelse */
-        if (n < 4)
-            break;
-        st[n - 4] = st[n - 2] > st[n - 1] ? st[n - 3] : st[n - 4];
-        s->sp -= 3;
-        return;
-    case 20: {  /* put */
-        int32_t i;
-        if (n < 2)
-            break;
-        i = st[n - 1] >> 16;
-        if (i >= 0 && i < 32)
-            s->trans[i] = st[n - 2];
-        s->sp -= 2;
-        return;
-    }
-    case 21: {  /* get */
-        int32_t i;
-        if (n < 1)
-            break;
-        i = st[n - 1] >> 16;
-        st[n - 1] = i >= 0 && i < 32 ? s->trans[i] : 0;
-        return;
-    }
-    case 29: {  /* index */
-        int32_t i;
-        if (n < 1)
-            break;
-        i = st[n - 1] >> 16;
-        if (i < 0 || (size_t)i + 1 >= n)
-            i = 0;
-        st[n - 1] = n >= 2 ? st[n - 2 - (size_t)i] : 0;
-        return;
-    }
-    default:   /* random, sqrt, roll, reserved: not handled */
+    default:   /* the logic, storage and stack operators (and, or, not,
+               ** eq, ifelse, put, get, index, roll), random, sqrt,
+               ** reserved: not handled (no glyph of the fonts used has
+               ** them; their engine's numbers are not checked) */
         break;
     }
     s->err = 1;

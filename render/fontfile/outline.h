@@ -25,12 +25,13 @@
 **              (hintmask and cntrmask bytes), the four flexes as two
 **              curves, callsubr/callgsubr with the bias (107, 1131,
 **              32768), the arithmetic a glyph may compute with (abs, add,
-**              sub, div, neg, drop, exch, dup, index, roll, mul, eq,
-**              ifelse, and, or, not, put, get).  CID-keyed fonts read
-**              their Font DICT's local Subrs through FDSelect (formats 0
-**              and 3).  Not handled (1, the caller keeps FreeType): seac
-**              (endchar with 4 operands), a Font Matrix other than the
-**              default, CFF2, random, sqrt;
+**              sub, mul, div, neg, drop, exch, dup).  CID-keyed fonts
+**              read their Font DICT's local Subrs through FDSelect
+**              (formats 0 and 3).  Not handled (1, the caller keeps
+**              FreeType): seac (endchar with 4 operands), a Font Matrix
+**              other than the default, CFF2, the logic, storage and
+**              stack operators (and, or, not, eq, ifelse, put, get,
+**              index, roll), random, sqrt;
 **   TrueType   glyf with loca (short or long), simple glyphs' flags and
 **              deltas, composite glyphs (their components' points moved
 **              by the offsets, ARGS_ARE_XY_VALUES, or matched points;

@@ -175,6 +175,19 @@ position(const char *lang)
 }
 
 int
+cf__flangs_compare(const char *a, const char *b)
+{
+    return lang_compare(a, b);
+}
+
+int
+cf__flangs_find(const char *lang)
+{
+    int id = position(lang);
+    return id >= 0 ? id : -1;
+}
+
+int
 cf__flangs_has(const cf__flangset_t *ls, const char *lang)
 {
     int id = position(lang), best = 2, r, i;

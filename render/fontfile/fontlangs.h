@@ -27,6 +27,14 @@ typedef struct cf__flangset {
 size_t cf__flangs_count(void);
 const char *cf__flangs_name(size_t i);
 
+/* fontconfig's FcLangCompare of two language tags: 0 the same, 1 the
+** same language of another territory, 2 another language. */
+int cf__flangs_compare(const char *a, const char *b);
+
+/* The index of the language named lang (case ignored), or -1
+** (fontconfig's FcLangSetIndex found or not). */
+int cf__flangs_find(const char *lang);
+
 /* The languages of the face m. */
 void cf__flangs_of(const cf__fmeta_t *m, cf__flangset_t *out);
 

@@ -1,0 +1,735 @@
+/*
+** fontconfig's match and trimmed sort over the tool's configuration,
+** without fontconfig (render/backends/font-match.h).  The scores are
+** FcCompare's, entry by entry in its order of priority (only the entries
+** where the tool's fonts can differ: the others are equal for every
+** font); the sort is qsort over the same comparison, as FcFontSetSort's.
+*/
+#include <dirent.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+
+#include "curvefig/core.h"
+#include "font-match.h"
+#include "sfnt.h"
+
+#define MAX_LANGS 8
+#define LANG_LEN 64
+#define NO_MATCH 1e99
+
+struct cf__fm_config {
+    cf__fm_font_t *fonts;
+    size_t nfonts;
+    char langs[MAX_LANGS][LANG_LEN];   /* fontconfig's default languages */
+    size_t nlangs;
+};
+
+/* The scores FcCompare gives, in its order of priority. */
+enum { S_FAMILY, S_LANG, S_SLANT, S_WEIGHT, S_WIDTH, S_DECORATIVE,
+       S_VERSION, NSCORES };
+
+typedef struct node {
+    const cf__fm_font_t *font;
+    double score[NSCORES];
+} node_t;
+
+/* A request as fontconfig's substituted pattern holds it. */
+typedef struct request {
+    const char *family;      /* the list, names split at commas */
+    int slant;
+    double weight;
+    int size;
+    char langs[MAX_LANGS + 1][LANG_LEN];
+    size_t nlangs;
+} request_t;
+
+/* ---- fontconfig's default languages ------------------------------------ */
+
+static bool
+same_ci(const char *a, const char *b)
+{
+    for (;; a++, b++) {
+        char x = *a, y = *b;
+        if (x >= 'A' && x <= 'Z')
+            x = (char)(x - 'A' + 'a');
+        if (y >= 'A' && y <= 'Z')
+            y = (char)(y - 'A' + 'a');
+        if (x != y)
+            return false;
+        if (x == '\0')
+            return true;
+    }
+}
+
+/* FcLangNormalize of tag into out (LANG_LEN); false when it gives none. */
+static bool
+normalise(const char *tag, char *out)
+{
+    char lt[LANG_LEN], mod[LANG_LEN] = "", s[3 * LANG_LEN], low[3 * LANG_LEN];
+    const char *at = strchr(tag, '@');
+    size_t n = at != NULL ? (size_t)(at - tag) : strlen(tag), llen, tlen = 0;
+    char *dot, *terr;
+    size_t i;
+    if (*tag == '\0')
+        return false;
+    if (same_ci(tag, "C") || same_ci(tag, "C.UTF-8") || same_ci(tag, "C.utf8")
+        || same_ci(tag, "POSIX")) {
+        strcpy(out, "en");
+        return true;
+    }
+    if (n >= LANG_LEN || (at != NULL && strlen(at + 1) >= LANG_LEN))
+        return false;
+    memcpy(lt, tag, n);
+    lt[n] = '\0';
+    if (at != NULL)
+        strcpy(mod, at + 1);
+    if ((dot = strchr(lt, '.')) != NULL)
+        *dot = '\0';
+    terr = strchr(lt, '_');
+    if (terr == NULL)
+        terr = strchr(lt, '-');
+    if (terr != NULL) {
+        *terr++ = '\0';
+        tlen = strlen(terr);
+    }
+    llen = strlen(lt);
+    if (llen < 2 || llen > 3)
+        return false;
+    if (terr != NULL && (tlen < 2 || tlen > 3) && !(terr[0] == 'z' && tlen < 5))
+        return false;
+    snprintf(s, sizeof s, "%s%s%s%s%s", lt, terr != NULL ? "-" : "",
+             terr != NULL ? terr : "", at != NULL ? "@" : "", mod);
+    for (i = 0; s[i] != '\0'; i++)
+        low[i] = s[i] >= 'A' && s[i] <= 'Z' ? (char)(s[i] - 'A' + 'a') : s[i];
+    low[i] = '\0';
+    if (terr != NULL) {
+        if (cf__flangs_find(s) >= 0)
+            goto found;
+        snprintf(s, sizeof s, "%s%s%s", lt, at != NULL ? "@" : "", mod);
+    }
+    if (at != NULL) {
+        if (cf__flangs_find(s) >= 0)
+            goto found;
+        snprintf(s, sizeof s, "%s", lt);
+    }
+    if (cf__flangs_find(s) < 0) {
+        if (strlen(low) >= LANG_LEN)
+            return false;
+        strcpy(out, low);
+        return true;
+    }
+found:
+    if (strlen(s) >= LANG_LEN)
+        return false;
+    strcpy(out, s);
+    return true;
+}
+
+/* FcGetDefaultLangs: the first of FC_LANG, LC_ALL, LC_CTYPE, LANG set, a
+** list split at colons, each normalised; "en" when none is left; false
+** when there are more than this keeps. */
+static bool
+default_langs(cf__fm_config_t *c)
+{
+    static const char *const vars[] = { "FC_LANG", "LC_ALL", "LC_CTYPE",
+                                        "LANG" };
+    const char *v = NULL, *p;
+    size_t i;
+    c->nlangs = 0;
+    for (i = 0; i < 4 && (v == NULL || *v == '\0'); i++)
+        v = getenv(vars[i]);
+    for (p = v; p != NULL && *p != '\0';) {
+        const char *end = strchr(p, ':');
+        size_t n = end != NULL ? (size_t)(end - p) : strlen(p), k;
+        char item[128], norm[LANG_LEN];
+        if (n > 127)
+            n = 127;
+        memcpy(item, p, n);
+        item[n] = '\0';
+        if (*item != '\0' && normalise(item, norm)) {
+            for (k = 0; k < c->nlangs; k++)
+                if (strcmp(c->langs[k], norm) == 0)
+                    break;
+            if (k == c->nlangs) {
+                if (c->nlangs == MAX_LANGS)
+                    return false;
+                strcpy(c->langs[c->nlangs++], norm);
+            }
+        }
+        p = end != NULL ? end + 1 : NULL;
+    }
+    if (c->nlangs == 0)
+        strcpy(c->langs[c->nlangs++], "en");
+    return true;
+}
+
+/* ---- the configuration -------------------------------------------------- */
+
+static bool
+accepted(const cf__fmeta_t *m, const char *const *accept, size_t naccept)
+{
+    size_t i, k;
+    for (i = 0; i < m->nfamily; i++)
+        for (k = 0; k < naccept; k++)
+            if (same_ci(m->family[i], accept[k]))
+                return true;
+    return false;
+}
+
+static void
+free_fonts(cf__fm_font_t *fonts, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        cf_free(fonts[i].file);
+        cf__fmeta_fini(&fonts[i].meta);
+    }
+}
+
+int
+cf__fm_config_of(cf__fm_font_t *fonts, size_t n, const char *const *accept,
+                 size_t naccept, cf__fm_config_t **out, char *why,
+                 size_t why_cap)
+{
+    cf__fm_config_t *c;
+    size_t i, k = 0;
+    *out = NULL;
+    if (why != NULL && why_cap > 0)
+        why[0] = '\0';
+    c = cf_calloc(1, sizeof *c);
+    if (c == NULL || (n > 0 && (c->fonts = cf_alloc_array(n, sizeof *c->fonts))
+                                   == NULL)) {
+        cf_free(c);
+        free_fonts(fonts, n);
+        return -1;
+    }
+    for (i = 0; i < n; i++) {
+        if (!accepted(&fonts[i].meta, accept, naccept)) {
+            free_fonts(&fonts[i], 1);
+            continue;
+        }
+        c->fonts[k++] = fonts[i];
+    }
+    c->nfonts = k;
+    for (i = 0; i < c->nfonts; i++)
+        if (c->fonts[i].meta.has_size) {
+            if (why != NULL)
+                snprintf(why, why_cap, "%s: an optical size range",
+                         c->fonts[i].file);
+            cf__fm_config_free(c);
+            return 1;
+        }
+    if (!default_langs(c)) {
+        if (why != NULL)
+            snprintf(why, why_cap, "more than %d default languages",
+                     MAX_LANGS);
+        cf__fm_config_free(c);
+        return 1;
+    }
+    *out = c;
+    return 0;
+}
+
+static int
+by_path(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+/* The faces of one file appended to *fonts: 0, 1 (why), -1. */
+static int
+read_file(const char *path, cf__fm_font_t **fonts, size_t *n, size_t *cap,
+          char *why, size_t why_cap)
+{
+    void *map;
+    size_t len;
+    int err, r = 0;
+    unsigned count, id;
+    const char *bad = cf__ff_map_file(path, &map, &len, &err);
+    if (bad != NULL) {
+        snprintf(why, why_cap, "%s: %s", path, bad);
+        return 1;
+    }
+    count = cf__fmeta_count(map, len);
+    if (count == 0 && len >= 4
+        && (memcmp(map, "wOFF", 4) == 0 || memcmp(map, "wOF2", 4) == 0)) {
+        snprintf(why, why_cap, "%s: a WOFF font", path);
+        r = 1;
+    }
+    for (id = 0; id < count && r == 0; id++) {
+        char fwhy[256];
+        cf__fm_font_t *f;
+        if (*n == *cap) {
+            size_t nc = *cap ? 2 * *cap : 64;
+            cf__fm_font_t *t = cf_realloc_array(*fonts, nc, sizeof *t);
+            if (t == NULL) {
+                r = -1;
+                break;
+            }
+            *fonts = t;
+            *cap = nc;
+        }
+        f = &(*fonts)[*n];
+        memset(f, 0, sizeof *f);
+        r = cf__fmeta_read(map, len, id, &f->meta, fwhy, sizeof fwhy);
+        if (r > 0)
+            snprintf(why, why_cap, "%s:%u: %s", path, id, fwhy + 6);
+        if (r != 0)
+            break;
+        f->file = cf_malloc(strlen(path) + 1);
+        if (f->file == NULL) {
+            cf__fmeta_fini(&f->meta);
+            r = -1;
+            break;
+        }
+        strcpy(f->file, path);
+        cf__flangs_of(&f->meta, &f->langs);
+        (*n)++;
+    }
+    if (map != NULL)
+        munmap(map, len);
+    return r;
+}
+
+/* The files of dir (no dot files), sorted: 0, 1 (a subdirectory, or the
+** directory unreadable), -1. */
+static int
+dir_files(const char *dir, char ***names, size_t *n, char *why,
+          size_t why_cap)
+{
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    size_t cap = 0;
+    int r = 0;
+    *names = NULL;
+    *n = 0;
+    if (d == NULL) {
+        snprintf(why, why_cap, "%s: cannot be read", dir);
+        return 1;
+    }
+    while (r == 0 && (e = readdir(d)) != NULL) {
+        char *path;
+        struct stat st;
+        if (e->d_name[0] == '.')
+            continue;
+        path = cf_malloc(strlen(dir) + strlen(e->d_name) + 2);
+        if (path == NULL) {
+            r = -1;
+            break;
+        }
+        sprintf(path, "%s/%s", dir, e->d_name);
+        if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
+            snprintf(why, why_cap, "%s: a subdirectory", path);
+            cf_free(path);
+            r = 1;
+            break;
+        }
+        if (*n == cap) {
+            size_t nc = cap ? 2 * cap : 64;
+            char **t = cf_realloc_array(*names, nc, sizeof *t);
+            if (t == NULL) {
+                cf_free(path);
+                r = -1;
+                break;
+            }
+            *names = t;
+            cap = nc;
+        }
+        (*names)[(*n)++] = path;
+    }
+    closedir(d);
+    if (r == 0 && *n > 0)
+        qsort(*names, *n, sizeof **names, by_path);
+    return r;
+}
+
+int
+cf__fm_config_new(const cf__fm_source_t *dirs, size_t ndirs,
+                  const char *const *accept, size_t naccept,
+                  cf__fm_config_t **out, char *why, size_t why_cap)
+{
+    cf__fm_font_t *fonts = NULL;
+    size_t n = 0, cap = 0, d, i;
+    char buf[512];
+    int r = 0;
+    *out = NULL;
+    if (why == NULL || why_cap == 0) {
+        why = buf;
+        why_cap = sizeof buf;
+    }
+    why[0] = '\0';
+    for (d = 0; d < ndirs && r == 0; d++) {
+        char **names;
+        size_t nn;
+        struct stat st;
+        if (stat(dirs[d].dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
+            if (dirs[d].required) {
+                snprintf(why, why_cap, "%s: no such directory", dirs[d].dir);
+                r = 1;
+            }
+            continue;
+        }
+        r = dir_files(dirs[d].dir, &names, &nn, why, why_cap);
+        for (i = 0; i < nn; i++) {
+            if (r == 0)
+                r = read_file(names[i], &fonts, &n, &cap, why, why_cap);
+            cf_free(names[i]);
+        }
+        cf_free(names);
+    }
+    if (r != 0) {
+        free_fonts(fonts, n);
+        cf_free(fonts);
+        return r;
+    }
+    r = cf__fm_config_of(fonts, n, accept, naccept, out, why, why_cap);
+    cf_free(fonts);
+    return r;
+}
+
+void
+cf__fm_config_free(cf__fm_config_t *c)
+{
+    if (c == NULL)
+        return;
+    free_fonts(c->fonts, c->nfonts);
+    cf_free(c->fonts);
+    cf_free(c);
+}
+
+size_t
+cf__fm_config_count(const cf__fm_config_t *c)
+{
+    return c->nfonts;
+}
+
+const cf__fm_font_t *
+cf__fm_config_font(const cf__fm_config_t *c, size_t i)
+{
+    return i < c->nfonts ? &c->fonts[i] : NULL;
+}
+
+/* ---- scores ------------------------------------------------------------- */
+
+/* fontconfig's FcStrCmpIgnoreBlanksAndCase(a, b) == 0, with b's length
+** given (a name of the request's list). */
+static bool
+same_name_n(const char *a, const char *b, size_t bn)
+{
+    const char *be = b + bn;
+    while (true) {
+        char x, y;
+        while (*a == ' ')
+            a++;
+        while (b < be && *b == ' ')
+            b++;
+        x = *a;
+        y = b < be ? *b : '\0';
+        if (x >= 'A' && x <= 'Z')
+            x = (char)(x - 'A' + 'a');
+        if (y >= 'A' && y <= 'Z')
+            y = (char)(y - 'A' + 'a');
+        if (x != y)
+            return false;
+        if (x == '\0')
+            return true;
+        a++;
+        b++;
+    }
+}
+
+/* The index of the first of the request's names the font has. */
+static double
+family_score(const char *list, const cf__fmeta_t *m)
+{
+    const char *f = list;
+    int i = 0;
+    while (true) {
+        const char *comma = strchr(f, ',');
+        size_t n = comma != NULL ? (size_t)(comma - f) : strlen(f), k;
+        /* make_pattern drops a name of 256 bytes or more */
+        if (n < 256) {
+            for (k = 0; k < m->nfamily; k++)
+                if (same_name_n(m->family[k], f, n))
+                    return i;
+            i++;
+        }
+        if (comma == NULL)
+            return NO_MATCH;
+        f = comma + 1;
+    }
+}
+
+static void
+score(const request_t *q, const cf__fm_font_t *font, node_t *out)
+{
+    const cf__fmeta_t *m = &font->meta;
+    double best = NO_MATCH;
+    size_t j;
+    out->font = font;
+    out->score[S_FAMILY] = family_score(q->family, m);
+    for (j = 0; j < q->nlangs; j++) {
+        double v = cf__flangs_has(&font->langs, q->langs[j]) * 1000.
+                   + (double)j * 100;
+        if (v < best)
+            best = v;
+    }
+    out->score[S_LANG] = best;
+    out->score[S_SLANT] = (m->slant > q->slant ? m->slant - q->slant
+                                               : q->slant - m->slant) * 1000.;
+    out->score[S_WEIGHT] = (m->weight > q->weight ? m->weight - q->weight
+                                                  : q->weight - m->weight)
+                           * 1000;
+    out->score[S_WIDTH] = (m->width > 100 ? m->width - 100 : 100 - m->width)
+                          * 1000;
+    out->score[S_DECORATIVE] = m->decorative ? 1000 : 0;
+    out->score[S_VERSION] = ((double)0x7fffffff - (double)m->fontversion)
+                            * 1000;
+}
+
+static int
+by_score(const void *pa, const void *pb)
+{
+    const node_t *a = *(node_t *const *)pa, *b = *(node_t *const *)pb;
+    size_t i;
+    for (i = 0; i < NSCORES; i++)
+        if (a->score[i] != b->score[i])
+            return a->score[i] < b->score[i] ? -1 : 1;
+    return 0;
+}
+
+/* The request as fontconfig substitutes it: its language, then the
+** default languages up to one it already holds. */
+static void
+request_of(const cf__fm_config_t *c, const char *family, bool italic,
+           bool bold, int size, const char *lang, request_t *q)
+{
+    size_t i, k;
+    q->family = family;
+    q->slant = italic ? CF__FMETA_SLANT_ITALIC : CF__FMETA_SLANT_ROMAN;
+    q->weight = bold ? 200 : 80;
+    q->size = size;
+    snprintf(q->langs[0], LANG_LEN, "%s", lang);
+    q->nlangs = 1;
+    for (i = 0; i < c->nlangs; i++) {
+        for (k = 0; k < q->nlangs; k++)
+            if (same_ci(q->langs[k], c->langs[i]) || same_ci(q->langs[k], "und"))
+                return;
+        strcpy(q->langs[q->nlangs++], c->langs[i]);
+    }
+}
+
+/* ---- preparation -------------------------------------------------------- */
+
+/* Which of the font's family names FcFontRenderPrepare puts first: the
+** one whose language best fits the name language (then "en-us"). */
+static size_t
+first_family(const cf__fm_config_t *c, const cf__fmeta_t *m)
+{
+    const char *want[2];
+    double best = NO_MATCH;
+    size_t j, k, pos = 0;
+    want[0] = c->langs[0];
+    want[1] = "en-us";
+    for (j = 0; j < 2; j++)
+        for (k = 0; k < m->nfamily; k++) {
+            /* a name without a language counts as "und" */
+            const char *fl = m->familylang[k][0] ? m->familylang[k] : "und";
+            double v = cf__flangs_compare(want[j], fl) * 1000.
+                       + (double)j * 100 + (double)k;
+            if (v < best) {
+                best = v;
+                pos = k;
+            }
+            if (best < 1000)
+                return pos;
+        }
+    return pos;
+}
+
+static void
+prepare(const cf__fm_config_t *c, const request_t *q,
+        const cf__fm_font_t *font, cf__fm_face_t *out)
+{
+    static const char *const designs[] = {
+        "LM Roman 5", "LM Roman 6", "LM Roman 7", "LM Roman 8",
+        "LM Roman 9", "LM Roman 12", "LM Roman 17",
+    };
+    const cf__fmeta_t *m = &font->meta;
+    size_t i, k;
+    memset(out, 0, sizeof *out);
+    out->font = font;
+    out->family = m->family[first_family(c, m)];
+    for (i = 0; i < sizeof designs / sizeof designs[0]; i++)
+        for (k = 0; k < m->nfamily; k++)
+            if (same_ci(m->family[k], designs[i]))
+                out->family = designs[i];
+    out->slant = m->slant;
+    out->weight = m->weight;
+    out->width = m->width;
+    if (m->slant == CF__FMETA_SLANT_ROMAN && q->slant != CF__FMETA_SLANT_ROMAN) {
+        out->sheared = true;
+        out->slant = CF__FMETA_SLANT_OBLIQUE;
+    }
+    if (m->weight <= 100 && q->weight >= 200) {
+        out->embolden = true;
+        out->weight = 200;
+    }
+    out->dpi = 72.;
+    out->pixel_size = q->size / 1024.;
+    /* FcDefaultSubstitute's point size from the pixel size */
+    out->size = out->pixel_size / out->dpi * 72.0 / 1.0;
+}
+
+int
+cf__fm_match(const cf__fm_config_t *c, const char *family, bool italic,
+             bool bold, int size, const char *lang, cf__fm_face_t *out)
+{
+    request_t q;
+    node_t best, cur;
+    size_t i;
+    const node_t *pb = &best, *pc = &cur;
+    if (c->nfonts == 0)
+        return 1;
+    request_of(c, family, italic, bold, size, lang, &q);
+    score(&q, &c->fonts[0], &best);
+    for (i = 1; i < c->nfonts; i++) {
+        score(&q, &c->fonts[i], &cur);
+        if (by_score(&pc, &pb) < 0)
+            best = cur;
+    }
+    prepare(c, &q, best.font, out);
+    return 0;
+}
+
+/* The union of characters so far (ranges, ascending, maximal). */
+typedef struct cover {
+    uint32_t *r;
+    size_t n, cap;
+} cover_t;
+
+static bool
+covered(const cover_t *u, uint32_t a, uint32_t b)
+{
+    size_t lo = 0, hi = u->n;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (a < u->r[2 * mid])
+            hi = mid;
+        else if (a > u->r[2 * mid + 1])
+            lo = mid + 1;
+        else
+            return b <= u->r[2 * mid + 1];
+    }
+    return false;
+}
+
+/* Merge the font's ranges into u; whether it added characters (-1 out of
+** memory). */
+static int
+merge(cover_t *u, const cf__fmeta_t *m)
+{
+    size_t i = 0, j = 0, n = 0, need = u->n + m->nranges;
+    uint32_t *t;
+    bool adds = false;
+    for (j = 0; j < m->nranges && !adds; j++)
+        adds = !covered(u, m->ranges[2 * j], m->ranges[2 * j + 1]);
+    if (!adds)
+        return 0;
+    t = cf_alloc_array(2 * need, sizeof *t);
+    if (t == NULL)
+        return -1;
+    j = 0;
+    while (i < u->n || j < m->nranges) {
+        uint32_t a, b;
+        if (j == m->nranges || (i < u->n && u->r[2 * i] < m->ranges[2 * j])) {
+            a = u->r[2 * i];
+            b = u->r[2 * i + 1];
+            i++;
+        } else {
+            a = m->ranges[2 * j];
+            b = m->ranges[2 * j + 1];
+            j++;
+        }
+        if (n > 0 && a <= t[2 * n - 1] + 1) {
+            if (b > t[2 * n - 1])
+                t[2 * n - 1] = b;
+        } else {
+            t[2 * n] = a;
+            t[2 * n + 1] = b;
+            n++;
+        }
+    }
+    cf_free(u->r);
+    u->r = t;
+    u->n = n;
+    u->cap = need;
+    return 1;
+}
+
+int
+cf__fm_sort(const cf__fm_config_t *c, const char *family, bool italic,
+            bool bold, int size, const char *lang, cf__fm_face_t **out,
+            size_t *n)
+{
+    request_t q;
+    node_t *nodes;
+    node_t **order;
+    cf__fm_face_t *faces;
+    bool sat[MAX_LANGS + 1] = { false };
+    cover_t u = { NULL, 0, 0 };
+    size_t i, j, k = 0;
+    *out = NULL;
+    *n = 0;
+    request_of(c, family, italic, bold, size, lang, &q);
+    nodes = cf_alloc_array(c->nfonts + 1, sizeof *nodes);
+    order = cf_alloc_array(c->nfonts + 1, sizeof *order);
+    faces = cf_alloc_array(c->nfonts + 1, sizeof *faces);
+    if (nodes == NULL || order == NULL || faces == NULL) {
+        cf_free(nodes);
+        cf_free(order);
+        cf_free(faces);
+        return -1;
+    }
+    for (i = 0; i < c->nfonts; i++) {
+        score(&q, &c->fonts[i], &nodes[i]);
+        order[i] = &nodes[i];
+    }
+    qsort(order, c->nfonts, sizeof *order, by_score);
+    /* each of the request's languages is kept by the first font that
+    ** has it; the others lose their language score */
+    for (i = 0; i < c->nfonts; i++) {
+        bool satisfies = false;
+        if (order[i]->score[S_LANG] < 2000)
+            for (j = 0; j < q.nlangs; j++)
+                if (!sat[j]
+                    && cf__flangs_has(&order[i]->font->langs, q.langs[j]) < 2) {
+                    sat[j] = satisfies = true;
+                    break;
+                }
+        if (!satisfies)
+            order[i]->score[S_LANG] = 10000;
+    }
+    qsort(order, c->nfonts, sizeof *order, by_score);
+    for (i = 0; i < c->nfonts; i++) {
+        int adds = merge(&u, &order[i]->font->meta);
+        if (adds < 0) {
+            cf_free(u.r);
+            cf_free(nodes);
+            cf_free(order);
+            cf_free(faces);
+            return -1;
+        }
+        if (i == 0 || adds)
+            prepare(c, &q, order[i]->font, &faces[k++]);
+    }
+    cf_free(u.r);
+    cf_free(nodes);
+    cf_free(order);
+    *out = faces;
+    *n = k;
+    return 0;
+}

@@ -27,6 +27,11 @@
 **     (glyph positions not rounded, as a PDF's: see the_options);
 **     the logical height of its glyphs: HarfBuzz's ascender and
 **     descender (pango-cairo's glyph extents, metrics unhinted).
+** Under the tool's own configuration (cf__nfaces_use_matcher) the match
+** and the sort are the matcher's (render/backends/font-match.h), which
+** gives the same faces with the same properties without fontconfig; a
+** face's cairo font is then made from the file's FreeType face with the
+** load flags and emboldening a pattern would give it (fm_font_face).
 ** A font with variation axes or font features from the configuration is
 ** marked unsupported: runs in it are pango's.  The caches live as long as
 ** the process, as pango's font map and fontconfig's do, in the C
@@ -34,18 +39,31 @@
 ** they would otherwise stay in).
 */
 #include <math.h>
-#include <stddef.h>
 #include <pthread.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include <cairo-ft.h>
 #include <cairo-pdf.h>
+#include <fontconfig/fontconfig.h>
 #include <hb-ot.h>
 
+#include "font-cache.h"
 #include "font-faces.h"
 #include "font-glyphs.h"
+
+/* What a face was made from, and the properties read from it once. */
+struct cf__nface_src {
+    FcPattern *pattern;      /* fontconfig's prepared pattern; NULL: the
+                                matcher's face */
+    FcCharSet *charset;
+    cf__fm_face_t fm;
+    FcMatrix matrix;         /* fontconfig's (y up) */
+    double point, pixel;
+    bool has_pixel;
+};
 
 
 struct cf__nfontset {
@@ -57,6 +75,10 @@ struct cf__nfontset {
     FcPattern *match;
     FcFontSet *sorted;     /* made at need */
     bool sort_failed;
+    bool fm_matched;       /* the matcher's: its best, its sort */
+    cf__fm_face_t fm_match;
+    cf__fm_face_t *fm_sorted;
+    size_t fm_nsorted;
     cf__nface_t **fonts;   /* prepared at need; NULL past the last */
     size_t nfonts, cap;
     bool ended;
@@ -66,6 +88,8 @@ typedef struct hb_face_entry {
     char *file;
     int index;
     hb_face_t *face;        /* made at need */
+    FT_Face ft;             /* the matcher's faces' FreeType face, made at
+                               need */
     cf__otface_t *own;      /* the shaper's face; NULL: not made */
 } hb_face_entry_t;
 
@@ -95,6 +119,47 @@ room(void *arr, size_t n, size_t *cap, size_t size)
     return t;
 }
 static FcFontSet *config_fonts;   /* the fonts HarfBuzz reads */
+static const cf__fm_config_t *matcher;   /* NULL: fontconfig's */
+
+/* The C library's heap as the library's allocator: what the matcher
+** allocates for the caches lives as long as they do. */
+static void *
+heap_realloc(void *ud, void *p, size_t old, size_t n)
+{
+    (void)ud;
+    (void)old;
+    if (n == 0) {
+        free(p);
+        return NULL;
+    }
+    return realloc(p, n);
+}
+static const cf_allocator_t heap = { heap_realloc, NULL };
+
+void
+cf__nfaces_use_matcher(const cf__fm_config_t *c)
+{
+    matcher = c;
+}
+
+bool
+cf__nfaces_use_dirs(const cf__fm_source_t *dirs, size_t n,
+                    const char *const *families, size_t nfamilies)
+{
+    cf_allocator_t prev;
+    cf__fm_config_t *c;
+    char cache[4096];
+    int r;
+    cf_use_allocator(&heap, &prev);
+    r = cf__fcache_config(dirs, n, families, nfamilies,
+                          cf__fcache_path(cache, sizeof cache) ? cache : NULL,
+                          &c, NULL, 0);
+    cf_use_allocator(&prev, NULL);
+    if (r != 0)
+        return false;
+    cf__nfaces_use_matcher(c);
+    return true;
+}
 
 void
 cf__nfaces_lock(void)
@@ -247,6 +312,27 @@ make_pattern(const char *family, bool italic, bool bold, int size,
     return p;
 }
 
+/* A new set of the matcher's (sets has room for it). */
+static cf__nfontset_t *
+matcher_set(const char *family, bool italic, bool bold, int size,
+            const char *lang)
+{
+    cf__nfontset_t *s = calloc(1, sizeof *s);
+    if (s == NULL || (s->family = malloc(strlen(family) + 1)) == NULL) {
+        free(s);
+        return NULL;
+    }
+    strcpy(s->family, family);
+    strcpy(s->lang, lang);
+    s->italic = italic;
+    s->bold = bold;
+    s->size = size;
+    s->fm_matched = cf__fm_match(matcher, family, italic, bold, size, lang,
+                                 &s->fm_match) == 0;
+    sets[nsets++] = s;
+    return s;
+}
+
 cf__nfontset_t *
 cf__nfontset_get(const char *family, bool italic, bool bold, int size,
                  const char *lang)
@@ -269,6 +355,8 @@ cf__nfontset_get(const char *family, bool italic, bool bold, int size,
             return NULL;
         sets = t;
     }
+    if (matcher != NULL)
+        return matcher_set(family, italic, bold, size, lang);
     fonts = the_config_fonts();
     s = calloc(1, sizeof *s);
     if (fonts == NULL || s == NULL) {
@@ -315,6 +403,7 @@ entry_of(const char *file, int index)
     strcpy(e->file, file);
     e->index = index;
     e->face = NULL;
+    e->ft = NULL;
     e->own = malloc(cf__otface_size());
     if (e->own != NULL)
         cf__otface_open_at(e->own, file, (unsigned)index);
@@ -355,11 +444,11 @@ pattern_matrix(const FcPattern *p)
 static void
 face_scale(const cf__nface_t *f, cf__otscale_t *sc, double *point_size)
 {
-    FcMatrix m = pattern_matrix(f->pattern);
+    const FcMatrix *m = &f->src->matrix;
     /* pango's font matrix: y down */
-    double xx = m.xx, yx = -m.yx, xy = m.xy, yy = -m.yy;
+    double xx = m->xx, yx = -m->yx, xy = m->xy, yy = -m->yy;
     double major = sqrt(xx * xx + yx * yx), minor, det;
-    double pixel = 1, point = 1, dpi, x0, y0, x1, y1, slant;
+    double pixel = f->src->pixel, x0, y0, x1, y1, slant;
     if (major != 0) {
         det = xx * yy - yx * xy;
         if (det < 0)
@@ -373,18 +462,10 @@ face_scale(const cf__nface_t *f, cf__otscale_t *sc, double *point_size)
     x1 = xx;
     y1 = yx;
     slant = (x0 * x1 + y0 * y1) / (x0 * x0 + y0 * y0);
-    if (FcPatternGetDouble(f->pattern, FC_SIZE, 0, &point) != FcResultMatch)
-        point = 13.;
-    if (FcPatternGetDouble(f->pattern, FC_PIXEL_SIZE, 0, &pixel)
-        != FcResultMatch) {
-        if (FcPatternGetDouble(f->pattern, FC_DPI, 0, &dpi) != FcResultMatch)
-            dpi = 72.;
-        pixel = point * dpi / 72.;
-    }
     sc->x_scale = (int)(pixel * 1024 * (1. / (1. / major)));
     sc->y_scale = (int)(pixel * 1024 * (1. / (1. / minor)));
     sc->slant = (float)slant;
-    *point_size = point;
+    *point_size = f->src->point;
 }
 
 /* pango's HarfBuzz font of the face (pango_fc_font_create_hb_font). */
@@ -403,18 +484,21 @@ make_hb_font(cf__nface_t *f, hb_face_t *face)
 hb_font_t *
 cf__nface_hb(cf__nface_t *f)
 {
-    FcChar8 *file;
-    int index = 0;
     hb_face_t *hbf;
     if (f->hb != NULL)
         return f->hb;
-    if (FcPatternGetString(f->pattern, FC_FILE, 0, &file) != FcResultMatch)
-        return NULL;
-    FcPatternGetInteger(f->pattern, FC_INDEX, 0, &index);
-    hbf = hb_face_of((const char *)file, index);
+    hbf = hb_face_of(f->face.file, (int)f->face.index);
     if (hbf != NULL)
         make_hb_font(f, hbf);
     return f->hb;
+}
+
+bool
+cf__nface_has_char(const cf__nface_t *f, unsigned c)
+{
+    if (f->src->pattern == NULL)
+        return cf__fmeta_has(&f->src->fm.font->meta, c);
+    return f->src->charset != NULL && FcCharSetHasChar(f->src->charset, c);
 }
 
 /* The face's extents and whether it has variations, from the shaper's
@@ -456,13 +540,11 @@ static void
 font_matrix(cf__nface_t *f)
 {
     cairo_matrix_t fm, gravity, m;
-    FcMatrix fc;
-    double size;
-    if (FcPatternGetDouble(f->pattern, FC_PIXEL_SIZE, 0, &size)
-        != FcResultMatch)
+    const FcMatrix *fc = &f->src->matrix;
+    double size = f->src->pixel;
+    if (!f->src->has_pixel)
         return;
-    fc = pattern_matrix(f->pattern);
-    cairo_matrix_init(&fm, fc.xx, -fc.yx, -fc.xy, fc.yy, 0., 0.);
+    cairo_matrix_init(&fm, fc->xx, -fc->yx, -fc->xy, fc->yy, 0., 0.);
     cairo_matrix_scale(&fm, size, size);
     cairo_matrix_init_rotate(&gravity, 0);   /* gravity south */
     cairo_matrix_multiply(&m, &fm, &gravity);
@@ -487,69 +569,139 @@ make_scaled(const cf__font_face_t *face)
     return sf;
 }
 
+/* The face of src (whose pattern, if any, it takes), its key and metrics
+** made; NULL when out of memory (src's pattern destroyed). */
+static cf__nface_t *
+add_face(cf__nface_src_t *src, const char *file, int index,
+         const char *family, int slant, double weight, int width,
+         const char *psname, bool emboldened, bool unsupported)
+{
+    cf__nface_t *f;
+    cf__nface_t **grown = room(faces, nfaces, &cap_faces, sizeof *faces);
+    cf__nface_src_t *kept;
+    if (grown != NULL)
+        faces = grown;
+    if (grown == NULL || (f = calloc(1, sizeof *f)) == NULL) {
+        if (src->pattern != NULL)
+            FcPatternDestroy(src->pattern);
+        return NULL;
+    }
+    if ((kept = malloc(sizeof *kept)) == NULL) {
+        if (src->pattern != NULL)
+            FcPatternDestroy(src->pattern);
+        free(f);
+        return NULL;
+    }
+    *kept = *src;
+    f->src = kept;
+    f->unsupported = unsupported;
+    f->face.file = file;    /* the pattern's or the matcher's, kept */
+    f->face.index = (unsigned)index;
+    if (!face_metrics(f, file, index)) {
+        if (kept->pattern != NULL)
+            FcPatternDestroy(kept->pattern);
+        free(kept);
+        free(f);
+        return NULL;
+    }
+    /* the face without its size, as pango describes a font */
+    snprintf(f->key, sizeof f->key, "%s|%d|%g|%d", family, slant, weight,
+             width);
+    f->face.key = f->key;
+    f->face.outlines = cf__font_outline_cache_new();
+    f->face.psname = psname;
+    f->face.emboldened = emboldened;
+    font_matrix(f);
+    f->face.make_scaled = make_scaled;
+    faces[nfaces++] = f;
+    return f;
+}
+
 static cf__nface_t *
 new_face(FcPattern *prepared)
 {
-    cf__nface_t *f;
-    FcChar8 *file, *fam, *feat;
+    cf__nface_src_t src;
+    FcChar8 *file, *fam, *feat, *ps = NULL;
     FcCharSet *cs;
+    FcBool bold = FcFalse;
     int index = 0, slant = 0, width = 100;
     size_t i;
     double weight = 80;
-    cf__nface_t **grown;
+    bool unsupported;
     for (i = 0; i < nfaces; i++)
-        if (FcPatternEqual(faces[i]->pattern, prepared)) {
+        if (faces[i]->src->pattern != NULL
+            && FcPatternEqual(faces[i]->src->pattern, prepared)) {
             FcPatternDestroy(prepared);
             return faces[i];
         }
-    grown = room(faces, nfaces, &cap_faces, sizeof *faces);
-    if (grown != NULL)
-        faces = grown;
-    if (grown == NULL
-        || FcPatternGetString(prepared, FC_FILE, 0, &file) != FcResultMatch
-        || (f = calloc(1, sizeof *f)) == NULL) {
+    if (FcPatternGetString(prepared, FC_FILE, 0, &file) != FcResultMatch) {
         FcPatternDestroy(prepared);
         return NULL;
     }
+    memset(&src, 0, sizeof src);
+    src.pattern = prepared;
     FcPatternGetInteger(prepared, FC_INDEX, 0, &index);
-    f->pattern = prepared;
     if (FcPatternGetCharSet(prepared, FC_CHARSET, 0, &cs) == FcResultMatch)
-        f->charset = cs;
-    f->unsupported =
+        src.charset = cs;
+    src.matrix = pattern_matrix(prepared);
+    if (FcPatternGetDouble(prepared, FC_SIZE, 0, &src.point) != FcResultMatch)
+        src.point = 13.;
+    src.has_pixel = FcPatternGetDouble(prepared, FC_PIXEL_SIZE, 0, &src.pixel)
+                    == FcResultMatch;
+    if (!src.has_pixel) {
+        double dpi;
+        if (FcPatternGetDouble(prepared, FC_DPI, 0, &dpi) != FcResultMatch)
+            dpi = 72.;
+        src.pixel = src.point * dpi / 72.;
+    }
+    unsupported =
         index != (index & 0xffff)
         || FcPatternGetString(prepared, FC_FONT_FEATURES, 0, &feat)
                == FcResultMatch
         || FcPatternGetString(prepared, FC_FONT_VARIATIONS, 0, &feat)
                == FcResultMatch;
-    if (!face_metrics(f, (const char *)file, index)) {
-        FcPatternDestroy(prepared);
-        free(f);
-        return NULL;
-    }
-    /* the face without its size, as pango describes a font */
     if (FcPatternGetString(prepared, FC_FAMILY, 0, &fam) != FcResultMatch)
         fam = (FcChar8 *)"";
     FcPatternGetInteger(prepared, FC_SLANT, 0, &slant);
     FcPatternGetDouble(prepared, FC_WEIGHT, 0, &weight);
     FcPatternGetInteger(prepared, FC_WIDTH, 0, &width);
-    snprintf(f->key, sizeof f->key, "%s|%d|%g|%d", (const char *)fam, slant,
-             weight, width);
-    f->face.key = f->key;
-    f->face.outlines = cf__font_outline_cache_new();
-    f->face.file = (const char *)file;    /* the pattern's, kept */
-    f->face.index = (unsigned)index;
-    if (FcPatternGetString(prepared, FC_POSTSCRIPT_NAME, 0, &feat)
-        == FcResultMatch)
-        f->face.psname = (const char *)feat;
-    {
-        FcBool bold = FcFalse;
-        FcPatternGetBool(prepared, FC_EMBOLDEN, 0, &bold);
-        f->face.emboldened = bold == FcTrue;
-    }
-    font_matrix(f);
-    f->face.make_scaled = make_scaled;
-    faces[nfaces++] = f;
-    return f;
+    FcPatternGetString(prepared, FC_POSTSCRIPT_NAME, 0, &ps);
+    FcPatternGetBool(prepared, FC_EMBOLDEN, 0, &bold);
+    return add_face(&src, (const char *)file, index, (const char *)fam, slant,
+                    weight, width, (const char *)ps, bold == FcTrue,
+                    unsupported);
+}
+
+static bool
+same_fm(const cf__fm_face_t *a, const cf__fm_face_t *b)
+{
+    return a->font == b->font && a->family == b->family
+           && a->slant == b->slant && a->weight == b->weight
+           && a->width == b->width && a->embolden == b->embolden
+           && a->sheared == b->sheared && a->size == b->size
+           && a->pixel_size == b->pixel_size && a->dpi == b->dpi;
+}
+
+/* The face of the matcher's fm. */
+static cf__nface_t *
+new_fm_face(const cf__fm_face_t *fm)
+{
+    cf__nface_src_t src;
+    size_t i;
+    for (i = 0; i < nfaces; i++)
+        if (faces[i]->src->pattern == NULL && same_fm(&faces[i]->src->fm, fm))
+            return faces[i];
+    memset(&src, 0, sizeof src);
+    src.fm = *fm;
+    FcMatrixInit(&src.matrix);
+    if (fm->sheared)
+        src.matrix.xy = 0.2;
+    src.point = fm->size;
+    src.pixel = fm->pixel_size;
+    src.has_pixel = true;
+    return add_face(&src, fm->font->file, (int)fm->font->meta.index,
+                    fm->family, fm->slant, fm->weight, (int)fm->width,
+                    fm->font->meta.psname, fm->embolden, false);
 }
 
 /* The set's sort, made when a font after the first is needed (most
@@ -567,14 +719,43 @@ sorted(cf__nfontset_t *s)
     return s->sorted;
 }
 
+/* The matcher's sort, made at need alike; false when out of memory. */
+static bool
+fm_sorted(cf__nfontset_t *s)
+{
+    cf_allocator_t prev;
+    if (s->fm_sorted != NULL || s->sort_failed)
+        return s->fm_sorted != NULL;
+    cf_use_allocator(&heap, &prev);
+    s->sort_failed = cf__fm_sort(matcher, s->family, s->italic, s->bold,
+                                 s->size, s->lang, &s->fm_sorted,
+                                 &s->fm_nsorted) != 0;
+    cf_use_allocator(&prev, NULL);
+    return s->fm_sorted != NULL;
+}
+
+/* The k-th face of the set from the matcher; NULL past its last or when
+** out of memory. */
+static cf__nface_t *
+fm_font(cf__nfontset_t *s, size_t k)
+{
+    if (k == 0)
+        return s->fm_matched ? new_fm_face(&s->fm_match) : NULL;
+    if (!fm_sorted(s) || k >= s->fm_nsorted)
+        return NULL;
+    return new_fm_face(&s->fm_sorted[k]);
+}
+
 cf__nface_t *
 cf__nfontset_font(cf__nfontset_t *s, int i)
 {
     while ((size_t)i >= s->nfonts && !s->ended) {
         FcPattern *p = NULL;
-        cf__nface_t **t;
+        cf__nface_t **t, *face = NULL;
         size_t k = s->nfonts;
-        if (k == 0 && s->match != NULL) {
+        if (matcher != NULL) {
+            face = fm_font(s, k);
+        } else if (k == 0 && s->match != NULL) {
             FcPatternReference(s->match);
             p = s->match;
         } else if (sorted(s) != NULL && k < (size_t)s->sorted->nfont) {
@@ -585,7 +766,7 @@ cf__nfontset_font(cf__nfontset_t *s, int i)
         ** (s->fonts left to the freed one), and a failed growth had
         ** doubled cap all the same */
         t = s->fonts;
-        if (p != NULL && k == s->cap) {
+        if ((p != NULL || face != NULL) && k == s->cap) {
             size_t nc = s->cap ? 2 * s->cap : 8;
             t = realloc(s->fonts, nc * sizeof *t);
             if (t != NULL) {
@@ -593,13 +774,13 @@ cf__nfontset_font(cf__nfontset_t *s, int i)
                 s->cap = nc;
             }
         }
-        if (p == NULL || t == NULL) {
+        if ((p == NULL && face == NULL) || t == NULL) {
             if (p != NULL)
                 FcPatternDestroy(p);
             s->ended = true;
             break;
         }
-        t[k] = new_face(p);
+        t[k] = face != NULL ? face : new_face(p);
         if (t[k] == NULL) {
             s->ended = true;
             break;
@@ -609,33 +790,60 @@ cf__nfontset_font(cf__nfontset_t *s, int i)
     return (size_t)i < s->nfonts ? s->fonts[i] : NULL;
 }
 
-bool
-cf__nface_scalable(const cf__nface_t *f)
+/* The cairo font face of a matcher's face: the file's FreeType face
+** (one a file and index, as cairo's unscaled font of a pattern is), with
+** the load flags a pattern of the request's options gives cairo (no
+** embedded bitmaps: hinting is off) and its emboldening.  cairo merges
+** them with the scaled font's options to the same flags (no bitmaps, no
+** hinting), so that the glyphs are those of cairo_ft_font_face_create_
+** for_pattern, without fontconfig.  An emboldened face asks for no
+** hinting in its load flags too (the same merged flags), so that cairo's
+** cache of faces never hands one face to both. */
+static cairo_font_face_t *
+fm_font_face(const cf__nface_t *f)
 {
-    return f->scaled != NULL || f->face.has_matrix;
+    static FT_Library library;
+    hb_face_entry_t *e = entry_of(f->face.file, (int)f->face.index);
+    cairo_font_face_t *ff;
+    if (e == NULL)
+        return NULL;
+    if (e->ft == NULL) {
+        if (library == NULL && FT_Init_FreeType(&library) != 0) {
+            library = NULL;
+            return NULL;
+        }
+        if (FT_New_Face(library, e->file, e->index, &e->ft) != 0) {
+            e->ft = NULL;
+            return NULL;
+        }
+    }
+    ff = cairo_ft_font_face_create_for_ft_face(
+        e->ft, FT_LOAD_NO_BITMAP
+                   | (f->src->fm.embolden ? FT_LOAD_NO_HINTING : 0));
+    if (f->src->fm.embolden)
+        cairo_ft_font_face_set_synthesize(ff, CAIRO_FT_SYNTHESIZE_BOLD);
+    return ff;
 }
 
 cairo_scaled_font_t *
 cf__nface_scaled(cf__nface_t *f)
 {
     cairo_font_face_t *ff;
-    cairo_matrix_t fm, gravity, m, ctm;
-    FcMatrix fc;
-    double size;
+    cairo_matrix_t m, ctm;
     if (f->scaled != NULL)
         return f->scaled;
-    if (FcPatternGetDouble(f->pattern, FC_PIXEL_SIZE, 0, &size)
-        != FcResultMatch)
+    if (!f->face.has_matrix)
         return NULL;
-    fc = pattern_matrix(f->pattern);
-    cairo_matrix_init(&fm, fc.xx, -fc.yx, -fc.xy, fc.yy, 0., 0.);
-    cairo_matrix_scale(&fm, size, size);
-    cairo_matrix_init_rotate(&gravity, 0);   /* gravity south */
-    cairo_matrix_multiply(&m, &fm, &gravity);
+    cairo_matrix_init(&m, f->face.matrix[0], f->face.matrix[1],
+                      f->face.matrix[2], f->face.matrix[3], 0., 0.);
     cairo_matrix_init_identity(&ctm);
     if (!the_options())
         return NULL;
-    ff = cairo_ft_font_face_create_for_pattern(f->pattern);
+    ff = f->src->pattern != NULL
+             ? cairo_ft_font_face_create_for_pattern(f->src->pattern)
+             : fm_font_face(f);
+    if (ff == NULL)
+        return NULL;
     f->scaled = cairo_scaled_font_create(ff, &m, &ctm, face_opts);
     cairo_font_face_destroy(ff);
     if (cairo_scaled_font_status(f->scaled) != CAIRO_STATUS_SUCCESS) {
@@ -645,4 +853,10 @@ cf__nface_scaled(cf__nface_t *f)
     f->face.scaled = f->scaled;
     f->face.show_options = show_opts;
     return f->scaled;
+}
+
+bool
+cf__nface_scalable(const cf__nface_t *f)
+{
+    return f->scaled != NULL || f->face.has_matrix;
 }

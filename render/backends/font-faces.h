@@ -1,7 +1,9 @@
 /*
 ** The faces and font sets of the native fonts (render/backends/
 ** font-faces.c): what pango's fontconfig font map would choose, without
-** pango.  One per process, as fontconfig's configuration is.
+** pango, and under the tool's own configuration without fontconfig
+** (render/backends/font-match.h).  One per process, as fontconfig's
+** configuration is.
 */
 #ifndef CURVEFIG_RENDER_FONT_FACES_H
 #define CURVEFIG_RENDER_FONT_FACES_H
@@ -9,17 +11,19 @@
 #include <stdbool.h>
 
 #include <cairo.h>
-#include <fontconfig/fontconfig.h>
 #include <hb.h>
 
+#include "font-match.h"
 #include "font.h"
 #include "shape.h"
 
-/* A face at a size: a font of pango's font map (a pattern fontconfig
-** prepared for the request). */
+/* Where a face came from: a pattern fontconfig prepared for the request,
+** or the matcher's face (font-faces.c). */
+typedef struct cf__nface_src cf__nface_src_t;
+
+/* A face at a size: a font of pango's font map. */
 typedef struct cf__nface {
-    FcPattern *pattern;
-    FcCharSet *charset;
+    cf__nface_src_t *src;
     hb_font_t *hb;                /* pango's HarfBuzz font of it, made at
                                      need (cf__nface_hb) */
     const cf__otface_t *own;      /* the renderer's shaper's face (render/
@@ -35,6 +39,18 @@ typedef struct cf__nface {
 
 typedef struct cf__nfontset cf__nfontset_t;
 
+/* Use the matcher's configuration c (the tool's, render/tool/fonts.c)
+** instead of fontconfig's: call before the first font set is asked for;
+** c lives as long as the process. */
+void cf__nfaces_use_matcher(const cf__fm_config_t *c);
+
+/* Use the matcher's configuration of the font directories dirs[0..n-1]
+** accepting the families (render/tool/fonts.c's), read from the fonts'
+** metadata cache; false when the matcher declines it or out of memory
+** (fontconfig's then). */
+bool cf__nfaces_use_dirs(const cf__fm_source_t *dirs, size_t n,
+                         const char *const *families, size_t nfamilies);
+
 /* The font set of the description (family list, italic, bold, size in
 ** CF__FONT_SCALE units, language); NULL when out of memory. */
 cf__nfontset_t *cf__nfontset_get(const char *family, bool italic, bool bold,
@@ -43,6 +59,9 @@ cf__nfontset_t *cf__nfontset_get(const char *family, bool italic, bool bold,
 /* Its i-th font (pango's order: fontconfig's match, then its sort);
 ** NULL past the last. */
 cf__nface_t *cf__nfontset_font(cf__nfontset_t *set, int i);
+
+/* Whether the face has a glyph for character c. */
+bool cf__nface_has_char(const cf__nface_t *f, unsigned c);
 
 /* The face's HarfBuzz font, made at the first call (HarfBuzz is loaded
 ** then: render/backends/hb-lazy.c); NULL when out of memory. */

@@ -285,7 +285,7 @@ font_for(cf__nfontset_t *set, unsigned c, int *pos)
     cf__nface_t *f;
     int i;
     for (i = 0; (f = cf__nfontset_font(set, i)) != NULL; i++)
-        if (f->charset != NULL && FcCharSetHasChar(f->charset, c)) {
+        if (cf__nface_has_char(f, c)) {
             *pos = i;
             return f;
         }

@@ -5,16 +5,12 @@
 ** where the tool's fonts can differ: the others are equal for every
 ** font); the sort is qsort over the same comparison, as FcFontSetSort's.
 */
-#include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/mman.h>
-#include <sys/stat.h>
 
 #include "curvefig/core.h"
 #include "font-match.h"
-#include "sfnt.h"
 
 #define MAX_LANGS 8
 #define LANG_LEN 64
@@ -231,163 +227,6 @@ cf__fm_config_of(cf__fm_font_t *fonts, size_t n, const char *const *accept,
     }
     *out = c;
     return 0;
-}
-
-static int
-by_path(const void *a, const void *b)
-{
-    return strcmp(*(char *const *)a, *(char *const *)b);
-}
-
-/* The faces of one file appended to *fonts: 0, 1 (why), -1. */
-static int
-read_file(const char *path, cf__fm_font_t **fonts, size_t *n, size_t *cap,
-          char *why, size_t why_cap)
-{
-    void *map;
-    size_t len;
-    int err, r = 0;
-    unsigned count, id;
-    const char *bad = cf__ff_map_file(path, &map, &len, &err);
-    if (bad != NULL) {
-        snprintf(why, why_cap, "%s: %s", path, bad);
-        return 1;
-    }
-    count = cf__fmeta_count(map, len);
-    if (count == 0 && len >= 4
-        && (memcmp(map, "wOFF", 4) == 0 || memcmp(map, "wOF2", 4) == 0)) {
-        snprintf(why, why_cap, "%s: a WOFF font", path);
-        r = 1;
-    }
-    for (id = 0; id < count && r == 0; id++) {
-        char fwhy[256];
-        cf__fm_font_t *f;
-        if (*n == *cap) {
-            size_t nc = *cap ? 2 * *cap : 64;
-            cf__fm_font_t *t = cf_realloc_array(*fonts, nc, sizeof *t);
-            if (t == NULL) {
-                r = -1;
-                break;
-            }
-            *fonts = t;
-            *cap = nc;
-        }
-        f = &(*fonts)[*n];
-        memset(f, 0, sizeof *f);
-        r = cf__fmeta_read(map, len, id, &f->meta, fwhy, sizeof fwhy);
-        if (r > 0)
-            snprintf(why, why_cap, "%s:%u: %s", path, id, fwhy + 6);
-        if (r != 0)
-            break;
-        f->file = cf_malloc(strlen(path) + 1);
-        if (f->file == NULL) {
-            cf__fmeta_fini(&f->meta);
-            r = -1;
-            break;
-        }
-        strcpy(f->file, path);
-        cf__flangs_of(&f->meta, &f->langs);
-        (*n)++;
-    }
-    if (map != NULL)
-        munmap(map, len);
-    return r;
-}
-
-/* The files of dir (no dot files), sorted: 0, 1 (a subdirectory, or the
-** directory unreadable), -1. */
-static int
-dir_files(const char *dir, char ***names, size_t *n, char *why,
-          size_t why_cap)
-{
-    DIR *d = opendir(dir);
-    struct dirent *e;
-    size_t cap = 0;
-    int r = 0;
-    *names = NULL;
-    *n = 0;
-    if (d == NULL) {
-        snprintf(why, why_cap, "%s: cannot be read", dir);
-        return 1;
-    }
-    while (r == 0 && (e = readdir(d)) != NULL) {
-        char *path;
-        struct stat st;
-        if (e->d_name[0] == '.')
-            continue;
-        path = cf_malloc(strlen(dir) + strlen(e->d_name) + 2);
-        if (path == NULL) {
-            r = -1;
-            break;
-        }
-        sprintf(path, "%s/%s", dir, e->d_name);
-        if (stat(path, &st) == 0 && S_ISDIR(st.st_mode)) {
-            snprintf(why, why_cap, "%s: a subdirectory", path);
-            cf_free(path);
-            r = 1;
-            break;
-        }
-        if (*n == cap) {
-            size_t nc = cap ? 2 * cap : 64;
-            char **t = cf_realloc_array(*names, nc, sizeof *t);
-            if (t == NULL) {
-                cf_free(path);
-                r = -1;
-                break;
-            }
-            *names = t;
-            cap = nc;
-        }
-        (*names)[(*n)++] = path;
-    }
-    closedir(d);
-    if (r == 0 && *n > 0)
-        qsort(*names, *n, sizeof **names, by_path);
-    return r;
-}
-
-int
-cf__fm_config_new(const cf__fm_source_t *dirs, size_t ndirs,
-                  const char *const *accept, size_t naccept,
-                  cf__fm_config_t **out, char *why, size_t why_cap)
-{
-    cf__fm_font_t *fonts = NULL;
-    size_t n = 0, cap = 0, d, i;
-    char buf[512];
-    int r = 0;
-    *out = NULL;
-    if (why == NULL || why_cap == 0) {
-        why = buf;
-        why_cap = sizeof buf;
-    }
-    why[0] = '\0';
-    for (d = 0; d < ndirs && r == 0; d++) {
-        char **names;
-        size_t nn;
-        struct stat st;
-        if (stat(dirs[d].dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
-            if (dirs[d].required) {
-                snprintf(why, why_cap, "%s: no such directory", dirs[d].dir);
-                r = 1;
-            }
-            continue;
-        }
-        r = dir_files(dirs[d].dir, &names, &nn, why, why_cap);
-        for (i = 0; i < nn; i++) {
-            if (r == 0)
-                r = read_file(names[i], &fonts, &n, &cap, why, why_cap);
-            cf_free(names[i]);
-        }
-        cf_free(names);
-    }
-    if (r != 0) {
-        free_fonts(fonts, n);
-        cf_free(fonts);
-        return r;
-    }
-    r = cf__fm_config_of(fonts, n, accept, naccept, out, why, why_cap);
-    cf_free(fonts);
-    return r;
 }
 
 void

@@ -30,9 +30,8 @@
 ** size of Latin Modern ("LM Roman 7") put first among its families.
 **
 ** Where the tool's configuration is something this does not model (a
-** face refused by the reader, a subdirectory, a font whose family names
-** have languages in more than one order), cf__fm_config_new says so and
-** fontconfig remains the matcher.  Memory comes from the library's
+** face refused by the reader, a subdirectory, an optical size range),
+** the configuration is declined and fontconfig remains the matcher.  Memory comes from the library's
 ** allocator (cf_malloc); a configuration is used by one thread at a time.
 */
 #ifndef CURVEFIG_RENDER_FONT_MATCH_H
@@ -64,21 +63,15 @@ typedef struct cf__fm_face {
     double size, pixel_size, dpi;
 } cf__fm_face_t;
 
-/* One font source: the font files of a directory, read (or the records
-** a cache gives for them: render/backends/font-cache.h). */
+/* One font source: the font files of a directory (render/backends/
+** font-cache.h reads them). */
 typedef struct cf__fm_source {
     const char *dir;
     bool required;      /* false: skipped when missing */
 } cf__fm_source_t;
 
-/* The configuration of the directories dirs[0..ndirs-1] accepting the
-** families accept[0..naccept-1]: 0 and *out; 1 when it is not one this
-** models (why says what); -1 out of memory. */
-int cf__fm_config_new(const cf__fm_source_t *dirs, size_t ndirs,
-                      const char *const *accept, size_t naccept,
-                      cf__fm_config_t **out, char *why, size_t why_cap);
-
-/* The configuration of fonts already read (fonts[0..n-1], in
+/* The configuration of fonts already read (render/backends/font-cache.h
+** reads them from the font directories) (fonts[0..n-1], in
 ** fontconfig's order, each the configuration's from then on: their
 ** files and charsets are freed with it, the array is not). */
 int cf__fm_config_of(cf__fm_font_t *fonts, size_t n,

@@ -30,7 +30,7 @@
 ** made before pango looks up a font */
 static cf__lazy_lib_t pango_lib = CF__LAZY_LIB(
     "libpangocairo-1.0.so.0", "pango", "libpangocairo-1.0-0",
-    cf__fonts_configure);
+    cf__fonts_configure_fontconfig);
 
 static void *
 pango_symbol(const char *name)

@@ -30,6 +30,15 @@
 ** The system configuration is kept when FONTCONFIG_FILE or FONTCONFIG_PATH
 ** is set (the user chose a configuration) or when one of the three font
 ** directories does not exist (another distribution).
+**
+** The program curvefig goes further (cf__tool_fonts_own, render/tool/
+** faces.c): its renderer chooses the faces of this configuration itself,
+** as fontconfig would (render/backends/font-match.h), from the fonts'
+** metadata kept in a cache, and fontconfig's configuration is made only
+** when pango shapes a run (a label the renderer hands on): a label set in
+** these fonts loads neither fontconfig nor expat.  When the matcher
+** declines the configuration (a font it does not read as fontconfig
+** does), fontconfig's is made here as before.
 */
 #include <stdbool.h>
 #include <stdio.h>
@@ -57,6 +66,13 @@ static const font_dir_t font_dirs[] = {
 static const char cache_dirs[] =
     "<cachedir>/var/cache/fontconfig</cachedir>\n"
     "<cachedir prefix=\"xdg\">fontconfig</cachedir>\n";
+
+/* The accepted families, for the matcher (the same as below). */
+static const char *const families[] = {
+    "Latin Modern Roman", "CMU Serif", "Noto Serif CJK SC",
+    "Latin Modern Math", "Latin Modern Sans", "CMU Sans Serif",
+    "Noto Sans CJK SC",
+};
 
 /* Only the families of the theme's lists, serif and sans (and Latin
 ** Modern Math, for the math symbols none of them has) enter the font set: 28 fonts instead
@@ -172,12 +188,52 @@ config_text(char *buf, size_t cap)
     return n >= 0 && (size_t)n < cap - len;
 }
 
+static cf__tool_own_fonts_fn own_fonts;
+
+void
+cf__tool_fonts_own(cf__tool_own_fonts_fn fn)
+{
+    own_fonts = fn;
+}
+
+/* fontconfig's configuration made current; false when it fails (the
+** system's is then used). */
+static bool
+make_config(void)
+{
+    char text[8192];
+    FcConfig *config;
+    if (!config_text(text, sizeof text))
+        return false;
+    config = FcConfigCreate();
+    if (config == NULL)
+        return false;
+    if (!FcConfigParseAndLoadFromMemory(config, (const FcChar8 *)text,
+                                        FcFalse)
+        || !FcConfigBuildFonts(config)
+        || !FcConfigSetCurrent(config)) {
+        FcConfigDestroy(config);
+        return false;
+    }
+    /* the current configuration holds its own reference */
+    FcConfigDestroy(config);
+    return true;
+}
+
+/* The hook that makes it when pango first needs it. */
+static void
+make_config_later(void)
+{
+    (void)make_config();
+}
+
 const char *
 cf__tool_fonts_init(void)
 {
     static const char *which = NULL;
     char text[8192];
-    FcConfig *config;
+    size_t i, n = 0;
+    cf__tool_font_dir_t dirs[sizeof font_dirs / sizeof font_dirs[0]];
 
     if (which != NULL)
         return which;
@@ -185,18 +241,17 @@ cf__tool_fonts_init(void)
     if (env_set("FONTCONFIG_FILE") || env_set("FONTCONFIG_PATH")
         || !config_text(text, sizeof text))
         return which;
-    config = FcConfigCreate();
-    if (config == NULL)
+    for (i = 0; i < sizeof font_dirs / sizeof font_dirs[0]; i++)
+        if (is_dir(font_dirs[i].path)) {
+            dirs[n].path = font_dirs[i].path;
+            dirs[n++].required = font_dirs[i].required;
+        }
+    if (!(own_fonts != NULL
+          && own_fonts(dirs, n, families,
+                       sizeof families / sizeof families[0],
+                       make_config_later))
+        && !make_config())
         return which;
-    if (!FcConfigParseAndLoadFromMemory(config, (const FcChar8 *)text,
-                                        FcFalse)
-        || !FcConfigBuildFonts(config)
-        || !FcConfigSetCurrent(config)) {
-        FcConfigDestroy(config);
-        return which;
-    }
-    /* the current configuration holds its own reference */
-    FcConfigDestroy(config);
     which = "Latin Modern, CMU and Noto CJK (curvefig's configuration)";
     return which;
 }

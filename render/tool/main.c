@@ -732,6 +732,8 @@ main(int argc, char **argv)
     if (argc > 1 && strcmp(argv[1], "live") == 0)
         return cf__tool_run_helper(CF__TOOL_LIVE_HELPER, argc, argv);
     heap = cf__tool_heap_for_one_run();
+    /* the renderer chooses the tool's faces itself (faces.c) */
+    cf__tool_fonts_own(cf__tool_own_faces);
     if (parse_args(argc, argv, &o, &rc) == 0) {
         if (strcmp(o.command, "gallery") == 0)
             rc = cf__tool_gallery(o.outdir, o.gallery_title,

@@ -67,6 +67,30 @@ void *cf__tool_heap_for_one_run(void);
 ** elsewhere.  Returns which configuration is in use, for --version. */
 const char *cf__tool_fonts_init(void);
 
+/* A font directory of the tool's configuration. */
+typedef struct cf__tool_font_dir {
+    const char *path;
+    bool required;
+} cf__tool_font_dir_t;
+
+/* A function that takes the tool's configuration (its directories
+** dirs[0..ndirs-1], present, and its accepted families) without
+** fontconfig, and registers make_config to make fontconfig's when pango
+** needs it; false when it declines (fontconfig's is made at once). */
+typedef bool (*cf__tool_own_fonts_fn)(const cf__tool_font_dir_t *dirs,
+                                      size_t ndirs,
+                                      const char *const *families,
+                                      size_t nfamilies,
+                                      void (*make_config)(void));
+
+/* Use fn in cf__tool_fonts_init (curvefig: cf__tool_own_faces). */
+void cf__tool_fonts_own(cf__tool_own_fonts_fn fn);
+
+/* curvefig's: its renderer's matcher (faces.c). */
+bool cf__tool_own_faces(const cf__tool_font_dir_t *dirs, size_t ndirs,
+                        const char *const *families, size_t nfamilies,
+                        void (*make_config)(void));
+
 /* curvefig check (colours.c): the colour clashes of every figure of the
 ** run script s, as lines on stderr (json: and the checks as JSON on
 ** stdout); 0 when none, 1 otherwise.  CF__TOOL_MIN_DE is the default

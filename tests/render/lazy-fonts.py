@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """fontconfig and FreeType are opened at their first call, not at start;
-HarfBuzz only for a label the renderer's own shaper hands on.
+HarfBuzz only for a label the renderer's own shaper hands on; fontconfig
+and expat not at all for labels in the tool's own configuration.
 
     lazy-fonts.py CURVEFIG
 
@@ -15,16 +16,19 @@ Cyrillic, digits, ligatures, kerning pairs) are shaped by the renderer's
 own shaper: a figure of them renders in SVG and PDF without loading
 libharfbuzz, GLib, graphite2 or PCRE2 (render/backends/hb-lazy.c); a
 label with a combining mark, which that shaper hands on, loads HarfBuzz
-and renders.  A shipped labelled figure (markova-2.17) rendered to PDF
-and to SVG calls no FreeType function: its glyphs' outlines and ink
-extents are read from the font files (render/backends/font-outlines.h),
-so the tool's trampolines never resolve FreeType's glyph functions
-(LD_DEBUG=bindings: the trampoline's dlsym is a second binding of the
-symbol within libfreetype, after the library's own relocation); to PNG it
-does (the check sees them).  The library itself is still mapped, as
-fontconfig's dependency, until the faces are chosen without fontconfig.
-Skipped (77) when the program is linked with the libraries
-(render/tool/meson.build: not x86-64).
+and renders.  When the tool uses its own font configuration (render/tool/fonts.c,
+`--version`), it chooses the faces itself (render/backends/font-match.h)
+from its fonts' metadata cache: a label, and a labelled shipped figure
+(markova-2.17, PDF and SVG), load neither libfontconfig nor libexpat,
+with the cache made by the first run (a fresh HOME) and read by the
+next, whose PDF is the same.  The same figure rendered to PDF and to SVG
+calls no FreeType function: its glyphs' outlines and ink extents are read
+from the font files (render/backends/font-outlines.h), so the tool's
+trampolines never resolve FreeType's glyph functions (LD_DEBUG=bindings:
+the trampoline's dlsym is a second binding of the symbol within
+libfreetype, after the library's own relocation); to PNG it does (the
+check sees them).  Skipped (77) when the program is linked with the
+libraries (render/tool/meson.build: not x86-64).
 """
 import os
 import subprocess
@@ -48,9 +52,17 @@ MARK = PLAIN.replace('"plain"', '"mark"') + \
 HARFBUZZ = ("libharfbuzz", "libglib-2.0", "libgraphite2", "libpcre2")
 
 
-def loaded(tool, script, out, fmt="pdf"):
+NO_FONTCONFIG = ("libfontconfig", "libexpat")
+SHIPPED = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
+                       "..", "figures", "markova-2.17.lua")
+
+
+def loaded(tool, script, out, fmt="pdf", home=None):
     """Render script (to PDF); the objects the loader loaded."""
     env = dict(os.environ, LD_DEBUG="files")
+    if home is not None:
+        env["HOME"] = home
+        env.pop("XDG_CACHE_HOME", None)
     run = subprocess.run([tool, "render", script, "-o", out, "-f", fmt],
                          env=env, capture_output=True, text=True)
     if run.returncode != 0:
@@ -124,6 +136,47 @@ def harfbuzz_failures(tool, tmp):
     return failures
 
 
+def own_configuration(tool):
+    """Whether the tool uses its own font configuration here."""
+    env = dict(os.environ)
+    env.pop("FONTCONFIG_FILE", None)
+    env.pop("FONTCONFIG_PATH", None)
+    run = subprocess.run([tool, "--version"], capture_output=True,
+                         text=True, env=env)
+    return "curvefig's configuration" in run.stdout and \
+        not os.environ.get("FONTCONFIG_FILE") and \
+        not os.environ.get("FONTCONFIG_PATH")
+
+
+def own_failures(tool, tmp, label):
+    """What the test of the tool's own faces finds wrong."""
+    failures = []
+    early = [o for o in label if o.startswith(NO_FONTCONFIG)]
+    if early:
+        failures.append("a label in the tool's own configuration loaded %s"
+                        % ", ".join(early))
+    home = os.path.join(tmp, "home")
+    os.mkdir(home)
+    pdfs = []
+    for run in ("first", "cached"):
+        for fmt in ("pdf", "svg"):
+            out = os.path.join(tmp, run)
+            os.makedirs(out, exist_ok=True)
+            objs = loaded(tool, SHIPPED, out, fmt, home)
+            early = [o for o in objs if o.startswith(NO_FONTCONFIG)]
+            if early:
+                failures.append("markova-2.17 (%s, %s run) loaded %s"
+                                % (fmt, run, ", ".join(early)))
+        with open(os.path.join(tmp, run, "markova-2.17.pdf"), "rb") as f:
+            pdfs.append(f.read())
+    cache = os.path.join(home, ".cache", "curvefig", "faces.cache")
+    if not os.path.isfile(cache):
+        failures.append("no cache was written at %s" % cache)
+    if len(pdfs) == 2 and pdfs[0] != pdfs[1]:
+        failures.append("the PDF made with the cache differs")
+    return failures
+
+
 def main(argv):
     tool = os.path.abspath(argv[1])
     # the libraries the loader loads with the program (ldd)
@@ -142,10 +195,14 @@ def main(argv):
         if early:
             failures.append("a figure without labels loaded %s"
                             % ", ".join(early))
+        own = own_configuration(tool)
         label = loaded(tool, os.path.join(tmp, "label.lua"), tmp)
-        for lib in ("libfontconfig", "libfreetype"):
+        for lib in ("libfreetype",) if own else ("libfontconfig",
+                                                 "libfreetype"):
             if not any(o.startswith(lib) for o in label):
                 failures.append("a label did not load %s" % lib)
+        if own:
+            failures += own_failures(tool, tmp, label)
         with open(os.path.join(tmp, "label.pdf"), "rb") as f:
             if b"/FontFile" not in f.read():
                 failures.append("the label's PDF embeds no font")

@@ -32,6 +32,7 @@
 #include <cmocka.h>
 #include <fontconfig/fontconfig.h>
 
+#include "font-cache.h"
 #include "font-match.h"
 #include "testutil.h"
 
@@ -227,7 +228,7 @@ test_identity(void **state)
     size_t fi, li, si, compared = 0;
     int style;
     (void)state;
-    if (cf__fm_config_new(sources, 4, accept, 7, &c, why, sizeof why) != 0) {
+    if (cf__fcache_config(sources, 4, accept, 7, NULL, &c, why, sizeof why) != 0) {
         print_message("the matcher declines: %s\n", why);
         skip();
     }
@@ -296,7 +297,7 @@ static cf_status_t
 config_op(cf_diag_t *diag)
 {
     cf__fm_config_t *c;
-    int r = cf__fm_config_new(sources, 4, accept, 7, &c, NULL, 0);
+    int r = cf__fcache_config(sources, 4, accept, 7, NULL, &c, NULL, 0);
     (void)diag;
     if (r < 0)
         return CF_STATUS_NO_MEMORY;
@@ -324,7 +325,7 @@ static void
 test_alloc_failure(void **state)
 {
     (void)state;
-    if (cf__fm_config_new(sources, 4, accept, 7, &fail_config, NULL, 0)
+    if (cf__fcache_config(sources, 4, accept, 7, NULL, &fail_config, NULL, 0)
         != 0)
         skip();
     tu_fail_loop("font-match sort", sort_op, false);

@@ -1,0 +1,830 @@
+/*
+** The fonts' metadata cache (render/backends/font-cache.h): the font
+** directories walked as fontconfig walks them (files sorted, dot files
+** skipped), each file's faces taken from the cache when its path, size
+** and modification time are the cache's, else read (render/fontfile/
+** fontmeta.h, fontlangs.h); the cache written anew when any was read or
+** went away.
+*/
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/mman.h>
+#include <sys/random.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "buffer.h"
+#include "curvefig/core.h"
+#include "font-cache.h"
+#include "sfnt.h"
+
+#define MAGIC "CFFACES"            /* with its NUL: 8 bytes */
+#define VERSION 1u
+#define HEADER 24u
+#define MAX_CACHE (64u << 20)
+#define FILE_NAME "faces.cache"
+
+enum { ST_FACES = 0, ST_REFUSED = 1, ST_NOT_FONT = 2 };
+
+/* ---- bytes out ---------------------------------------------------------- */
+
+static void
+put(cf__buf_t *b, const void *p, size_t n)
+{
+    cf__buf_append(b, p, n);   /* b->failed kept */
+}
+
+static void
+put_uint(cf__buf_t *b, uint64_t v, int n)
+{
+    unsigned char t[8];
+    int i;
+    for (i = 0; i < n; i++)
+        t[i] = (unsigned char)(v >> (8 * i));
+    put(b, t, (size_t)n);
+}
+
+static void
+put_f64(cf__buf_t *b, double d)
+{
+    uint64_t v;
+    memcpy(&v, &d, 8);
+    put_uint(b, v, 8);
+}
+
+static void
+put_str8(cf__buf_t *b, const char *s)
+{
+    size_t n = strlen(s);
+    put_uint(b, n, 1);
+    put(b, s, n);
+}
+
+/* One face of a file. */
+static void
+put_face(cf__buf_t *b, const cf__fmeta_t *m, const cf__flangset_t *ls)
+{
+    unsigned i;
+    put_uint(b, m->index, 4);
+    put_uint(b, m->nfamily, 1);
+    for (i = 0; i < m->nfamily; i++) {
+        put_str8(b, m->family[i]);
+        put_str8(b, m->familylang[i]);
+    }
+    put_str8(b, m->psname);
+    put_uint(b, (uint32_t)m->slant, 4);
+    put_f64(b, m->weight);
+    put_f64(b, m->width);
+    put_uint(b, (m->decorative ? 1u : 0) | (m->cff ? 2u : 0)
+                    | (m->has_codepages ? 4u : 0) | (m->has_size ? 8u : 0),
+             1);
+    put_f64(b, m->size_lo);
+    put_f64(b, m->size_hi);
+    put_uint(b, (uint32_t)m->fontversion, 4);
+    put_uint(b, m->codepages[0], 4);
+    put_uint(b, m->codepages[1], 4);
+    for (i = 0; i < 8; i++)
+        put_uint(b, ls->bits[i], 4);
+    put_uint(b, m->nranges, 4);
+    for (i = 0; i < 2 * m->nranges; i++)
+        put_uint(b, m->ranges[i], 4);
+}
+
+/* ---- bytes in ----------------------------------------------------------- */
+
+typedef struct rd {
+    const unsigned char *p;
+    size_t len, pos;
+    bool bad;
+} rd_t;
+
+static const unsigned char *
+take(rd_t *r, size_t n)
+{
+    const unsigned char *p;
+    if (r->bad || !cf__ff_fits(r->pos, n, r->len)) {
+        r->bad = true;
+        return NULL;
+    }
+    p = r->p + r->pos;
+    r->pos += n;
+    return p;
+}
+
+static uint64_t
+get_uint(rd_t *r, int n)
+{
+    const unsigned char *p = take(r, (size_t)n);
+    uint64_t v = 0;
+    int i;
+    if (p == NULL)
+        return 0;
+    for (i = n - 1; i >= 0; i--)
+        v = v << 8 | p[i];
+    return v;
+}
+
+static double
+get_f64(rd_t *r)
+{
+    uint64_t v = get_uint(r, 8);
+    double d;
+    memcpy(&d, &v, 8);
+    return d;
+}
+
+/* A string of at most cap - 1 bytes, no NUL in it, into dst. */
+static void
+get_str8(rd_t *r, char *dst, size_t cap)
+{
+    size_t n = (size_t)get_uint(r, 1);
+    const unsigned char *p = take(r, n);
+    if (p == NULL || n >= cap || memchr(p, 0, n) != NULL) {
+        r->bad = true;
+        dst[0] = '\0';
+        return;
+    }
+    memcpy(dst, p, n);
+    dst[n] = '\0';
+}
+
+static bool
+plausible(double v, double lo, double hi)
+{
+    return isfinite(v) && v >= lo && v <= hi;
+}
+
+/* One face, checked; with ranges (allocated) when want, else only
+** checked.  0, 1 (damaged), -1 (out of memory). */
+static int
+get_face(rd_t *r, cf__fmeta_t *m, cf__flangset_t *ls, bool want)
+{
+    size_t i, n, nl = cf__flangs_count();
+    unsigned flags;
+    uint32_t prev = 0;
+    memset(m, 0, sizeof *m);
+    m->index = (unsigned)get_uint(r, 4);
+    m->nfamily = (unsigned)get_uint(r, 1);
+    if (m->nfamily < 1 || m->nfamily > CF__FMETA_NAMES)
+        r->bad = true;
+    for (i = 0; i < m->nfamily && !r->bad; i++) {
+        get_str8(r, m->family[i], sizeof m->family[i]);
+        get_str8(r, m->familylang[i], sizeof m->familylang[i]);
+    }
+    get_str8(r, m->psname, sizeof m->psname);
+    m->slant = (int)(int32_t)get_uint(r, 4);
+    m->weight = get_f64(r);
+    m->width = get_f64(r);
+    flags = (unsigned)get_uint(r, 1);
+    m->decorative = flags & 1;
+    m->cff = flags & 2;
+    m->has_codepages = flags & 4;
+    m->has_size = flags & 8;
+    m->size_lo = get_f64(r);
+    m->size_hi = get_f64(r);
+    m->fontversion = (int32_t)get_uint(r, 4);
+    m->codepages[0] = (uint32_t)get_uint(r, 4);
+    m->codepages[1] = (uint32_t)get_uint(r, 4);
+    for (i = 0; i < 8; i++)
+        ls->bits[i] = (uint32_t)get_uint(r, 4);
+    n = (size_t)get_uint(r, 4);
+    if (r->bad || m->index > 0xffff || flags > 15
+        || (m->slant != CF__FMETA_SLANT_ROMAN
+            && m->slant != CF__FMETA_SLANT_ITALIC
+            && m->slant != CF__FMETA_SLANT_OBLIQUE)
+        || !plausible(m->weight, 0, 1000) || !plausible(m->width, 0, 1000)
+        || !plausible(m->size_lo, 0, 4000) || !plausible(m->size_hi, 0, 4000)
+        || n == 0 || n > (r->len - r->pos) / 8) {
+        r->bad = true;
+        return 1;
+    }
+    for (i = nl; i < 256; i++)
+        if (ls->bits[i / 32] >> (i % 32) & 1) {
+            r->bad = true;
+            return 1;
+        }
+    if (want && (m->ranges = cf_alloc_array(2 * n, sizeof *m->ranges))
+                    == NULL)
+        return -1;
+    for (i = 0; i < n; i++) {
+        uint32_t a = (uint32_t)get_uint(r, 4), b = (uint32_t)get_uint(r, 4);
+        /* ascending, apart (maximal ranges), Unicode */
+        if (a > b || b > 0x10ffff || (i > 0 && a <= prev + 1)) {
+            r->bad = true;
+            break;
+        }
+        prev = b;
+        if (want) {
+            m->ranges[2 * i] = a;
+            m->ranges[2 * i + 1] = b;
+        }
+    }
+    m->nranges = want ? n : 0;
+    if (r->bad) {
+        cf__fmeta_fini(m);
+        return 1;
+    }
+    return 0;
+}
+
+/* One entry of the cache, its fields found (the faces not decoded). */
+typedef struct entry {
+    const unsigned char *blob;   /* the whole entry */
+    size_t blob_len;
+    const char *path;            /* not NUL-terminated */
+    size_t path_len;
+    uint64_t size;
+    int64_t sec;
+    uint32_t nsec;
+    unsigned status, nfaces;
+    size_t faces_at;             /* in blob */
+    bool used;
+} entry_t;
+
+/* The entries of the cache data[0..len) into *out (cf_free'd), checked
+** whole; their number, or -1 (damaged, or out of memory: *oom). */
+static long
+parse(const unsigned char *data, size_t len, entry_t **out, bool *oom)
+{
+    rd_t r = { data, len, 0, false };
+    size_t n, i;
+    entry_t *e;
+    *out = NULL;
+    *oom = false;
+    if (data == NULL || len < HEADER || len > MAX_CACHE
+        || memcmp(data, MAGIC, 8) != 0)
+        return -1;
+    r.pos = 8;
+    if (get_uint(&r, 4) != VERSION || get_uint(&r, 4) != cf__flangs_count())
+        return -1;
+    n = (size_t)get_uint(&r, 4);
+    if (get_uint(&r, 4) != len || n > len / 16)
+        return -1;
+    e = cf_alloc_array(n + 1, sizeof *e);
+    if (e == NULL) {
+        *oom = true;
+        return -1;
+    }
+    for (i = 0; i < n; i++) {
+        size_t start = r.pos, elen = (size_t)get_uint(&r, 4), k;
+        rd_t er;
+        if (r.bad || elen < 4 || !cf__ff_fits(start, elen, len))
+            break;
+        er.p = data + start;
+        er.len = elen;
+        er.pos = 4;
+        er.bad = false;
+        e[i].blob = data + start;
+        e[i].blob_len = elen;
+        e[i].used = false;
+        e[i].path_len = (size_t)get_uint(&er, 2);
+        e[i].path = (const char *)take(&er, e[i].path_len);
+        e[i].size = get_uint(&er, 8);
+        e[i].sec = (int64_t)get_uint(&er, 8);
+        e[i].nsec = (uint32_t)get_uint(&er, 4);
+        e[i].status = (unsigned)get_uint(&er, 1);
+        e[i].nfaces = 0;
+        if (er.bad || e[i].path_len == 0
+            || memchr(e[i].path, 0, e[i].path_len) != NULL
+            || e[i].nsec >= 1000000000u || e[i].status > ST_NOT_FONT)
+            break;
+        if (e[i].status == ST_FACES) {
+            e[i].nfaces = (unsigned)get_uint(&er, 2);
+            e[i].faces_at = er.pos;
+            if (e[i].nfaces == 0)
+                break;
+            for (k = 0; k < e[i].nfaces && !er.bad; k++) {
+                cf__fmeta_t m;
+                cf__flangset_t ls;
+                get_face(&er, &m, &ls, false);
+            }
+        } else if (e[i].status == ST_REFUSED) {
+            size_t wl = (size_t)get_uint(&er, 2);
+            e[i].faces_at = er.pos;
+            take(&er, wl);
+        }
+        if (er.bad || er.pos != elen)
+            break;
+        r.pos = start + elen;
+    }
+    if (i < n || r.pos != len) {
+        cf_free(e);
+        return -1;
+    }
+    *out = e;
+    return (long)n;
+}
+
+long
+cf__fcache_check(const unsigned char *data, size_t len)
+{
+    entry_t *e;
+    bool oom;
+    long n = parse(data, len, &e, &oom);
+    cf_free(e);
+    return n;
+}
+
+/* ---- the cache's directory and file ------------------------------------ */
+
+bool
+cf__fcache_path(char *buf, size_t cap)
+{
+    const char *x = getenv("XDG_CACHE_HOME"), *h = getenv("HOME");
+    int n;
+    if (x != NULL && x[0] == '/')
+        n = snprintf(buf, cap, "%s/curvefig/" FILE_NAME, x);
+    else if (h != NULL && h[0] == '/')
+        n = snprintf(buf, cap, "%s/.cache/curvefig/" FILE_NAME, h);
+    else
+        return false;
+    return n > 0 && (size_t)n < cap;
+}
+
+/* The directory of the cache file at path, opened (made mode 0700 first
+** when make and it is missing, and its parent too): -1 when it is not
+** one of the user's own, private and real. */
+static int
+open_dir(const char *path, bool make)
+{
+    char dir[4096];
+    char *slash;
+    struct stat st;
+    int fd;
+    if (strlen(path) >= sizeof dir)
+        return -1;
+    strcpy(dir, path);
+    slash = strrchr(dir, '/');
+    if (slash == NULL || slash == dir)
+        return -1;
+    *slash = '\0';
+    if (make && mkdir(dir, 0700) != 0 && errno == ENOENT) {
+        /* its parent (~/.cache) first */
+        char *up = strrchr(dir, '/');
+        if (up != NULL && up != dir) {
+            *up = '\0';
+            (void)mkdir(dir, 0700);
+            *up = '/';
+        }
+        (void)mkdir(dir, 0700);
+    }
+    fd = open(dir, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    if (fd < 0)
+        return -1;
+    if (fstat(fd, &st) != 0 || !S_ISDIR(st.st_mode)
+        || st.st_uid != geteuid() || (st.st_mode & 022) != 0) {
+        close(fd);
+        return -1;
+    }
+    return fd;
+}
+
+/* The cache file mapped (NULL: none, or not a file of the user's). */
+static void *
+map_cache(int dfd, size_t *len)
+{
+    struct stat st;
+    void *m;
+    int fd = openat(dfd, FILE_NAME,
+                    O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
+    *len = 0;
+    if (fd < 0)
+        return NULL;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)
+        || st.st_uid != geteuid() || st.st_size < (off_t)HEADER
+        || st.st_size > (off_t)MAX_CACHE) {
+        close(fd);
+        return NULL;
+    }
+    m = mmap(NULL, (size_t)st.st_size, PROT_READ, MAP_PRIVATE, fd, 0);
+    close(fd);
+    if (m == MAP_FAILED)
+        return NULL;
+    *len = (size_t)st.st_size;
+    return m;
+}
+
+static void
+random_name(char *out)
+{
+    static const char digits[] =
+        "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-_";
+    unsigned char b[12];
+    size_t i;
+    if (getrandom(b, sizeof b, GRND_NONBLOCK) != (ssize_t)sizeof b) {
+        struct timespec ts;
+        uint64_t v;
+        clock_gettime(CLOCK_MONOTONIC, &ts);
+        v = (uint64_t)ts.tv_nsec * 6364136223846793005u
+            ^ (uint64_t)getpid() << 32 ^ (uint64_t)ts.tv_sec;
+        for (i = 0; i < sizeof b; i++)
+            b[i] = (unsigned char)(v >> (5 * i % 64));
+    }
+    for (i = 0; i < sizeof b; i++)
+        out[i] = digits[b[i] & 63];
+    out[sizeof b] = '\0';
+}
+
+/* Write data as the cache file of dfd: a new file renamed over it. */
+static void
+write_cache(int dfd, const unsigned char *data, size_t n)
+{
+    char tmp[40];
+    size_t off = 0;
+    int fd = -1, tries;
+    memcpy(tmp, ".faces-", 7);
+    for (tries = 0; fd < 0 && tries < 100; tries++) {
+        random_name(tmp + 7);
+        fd = openat(dfd, tmp,
+                    O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC,
+                    0600);
+        if (fd < 0 && errno != EEXIST)
+            return;
+    }
+    if (fd < 0)
+        return;
+    while (off < n) {
+        ssize_t w = write(fd, data + off, n - off);
+        if (w < 0 && errno == EINTR)
+            continue;
+        if (w <= 0)
+            break;
+        off += (size_t)w;
+    }
+    if (close(fd) != 0 || off < n
+        || renameat(dfd, tmp, dfd, FILE_NAME) != 0)
+        unlinkat(dfd, tmp, 0);
+}
+
+/* ---- the walk ----------------------------------------------------------- */
+
+typedef struct walk {
+    const char *const *accept;
+    size_t naccept;
+    entry_t *old;                /* the cache's entries */
+    size_t nold, cursor;
+    cf__buf_t out;               /* the entries to write */
+    size_t nout;
+    bool changed;
+    cf__fm_font_t *fonts;        /* the accepted faces */
+    size_t nfonts, cap;
+    char *why;
+    size_t why_cap;
+    bool refused;
+} walk_t;
+
+static bool
+same_ci(const char *a, const char *b)
+{
+    for (;; a++, b++) {
+        char x = *a, y = *b;
+        if (x >= 'A' && x <= 'Z')
+            x = (char)(x - 'A' + 'a');
+        if (y >= 'A' && y <= 'Z')
+            y = (char)(y - 'A' + 'a');
+        if (x != y)
+            return false;
+        if (x == '\0')
+            return true;
+    }
+}
+
+static bool
+accepted(const walk_t *w, const cf__fmeta_t *m)
+{
+    size_t i, k;
+    for (i = 0; i < m->nfamily; i++)
+        for (k = 0; k < w->naccept; k++)
+            if (same_ci(m->family[i], w->accept[k]))
+                return true;
+    return false;
+}
+
+/* Add a face (whose ranges the list takes) of file path to the list. */
+static int
+add_font(walk_t *w, const char *path, cf__fmeta_t *m,
+         const cf__flangset_t *ls)
+{
+    cf__fm_font_t *f;
+    if (w->nfonts == w->cap) {
+        size_t nc = w->cap ? 2 * w->cap : 64;
+        cf__fm_font_t *t = cf_realloc_array(w->fonts, nc, sizeof *t);
+        if (t == NULL) {
+            cf__fmeta_fini(m);
+            return -1;
+        }
+        w->fonts = t;
+        w->cap = nc;
+    }
+    f = &w->fonts[w->nfonts];
+    f->file = cf_malloc(strlen(path) + 1);
+    if (f->file == NULL) {
+        cf__fmeta_fini(m);
+        return -1;
+    }
+    strcpy(f->file, path);
+    f->meta = *m;
+    f->langs = *ls;
+    w->nfonts++;
+    return 0;
+}
+
+/* The cache's entry of path as it is now, or NULL. */
+static entry_t *
+cached(walk_t *w, const char *path, const struct stat *st)
+{
+    size_t len = strlen(path), k;
+    for (k = 0; k < w->nold; k++) {
+        entry_t *e = &w->old[(w->cursor + k) % w->nold];
+        if (e->path_len == len && memcmp(e->path, path, len) == 0) {
+            if (e->used || e->size != (uint64_t)st->st_size
+                || e->sec != (int64_t)st->st_mtim.tv_sec
+                || e->nsec != (uint32_t)st->st_mtim.tv_nsec)
+                return NULL;
+            w->cursor = (w->cursor + k + 1) % w->nold;
+            return e;
+        }
+    }
+    return NULL;
+}
+
+/* The faces of a cached entry. */
+static int
+from_entry(walk_t *w, const char *path, entry_t *e)
+{
+    rd_t r = { e->blob, e->blob_len, e->faces_at, false };
+    unsigned k;
+    e->used = true;
+    put(&w->out, e->blob, e->blob_len);
+    w->nout++;
+    if (e->status == ST_REFUSED) {
+        size_t n = (size_t)get_uint(&r, 2);
+        snprintf(w->why, w->why_cap, "%s: %.*s", path, (int)n,
+                 (const char *)take(&r, n));
+        w->refused = true;
+        return 0;
+    }
+    for (k = 0; k < e->nfaces; k++) {
+        cf__fmeta_t m;
+        cf__flangset_t ls;
+        size_t at = r.pos;
+        int got = get_face(&r, &m, &ls, false);
+        if (got != 0)
+            return got < 0 ? -1 : 0;   /* checked when parsed */
+        if (!accepted(w, &m))
+            continue;
+        r.pos = at;
+        if ((got = get_face(&r, &m, &ls, true)) != 0)
+            return got < 0 ? -1 : 0;
+        if (add_font(w, path, &m, &ls) != 0)
+            return -1;
+    }
+    return 0;
+}
+
+static void
+entry_head(cf__buf_t *b, const char *path, const struct stat *st,
+           unsigned status)
+{
+    put_uint(b, 0, 4);   /* its length, set when done */
+    put_uint(b, strlen(path), 2);
+    put(b, path, strlen(path));
+    put_uint(b, (uint64_t)st->st_size, 8);
+    put_uint(b, (uint64_t)(int64_t)st->st_mtim.tv_sec, 8);
+    put_uint(b, (uint64_t)st->st_mtim.tv_nsec, 4);
+    put_uint(b, status, 1);
+}
+
+/* The faces of a file read now, and its entry written. */
+static int
+from_file(walk_t *w, const char *path, const struct stat *st)
+{
+    void *map;
+    size_t len, start = w->out.size, i;
+    int err, r = 0;
+    unsigned count, id;
+    const char *bad;
+    char fwhy[256];
+    cf__fmeta_t *ms;
+    cf__flangset_t *ls;
+    w->changed = true;
+    if (strlen(path) > 0xffff)
+        return 0;
+    bad = cf__ff_map_file(path, &map, &len, &err);
+    if (bad != NULL) {
+        snprintf(w->why, w->why_cap, "%s: %s", path, bad);
+        w->refused = true;
+        return 0;
+    }
+    count = cf__fmeta_count(map, len);
+    if (count == 0 && len >= 4
+        && (memcmp(map, "wOFF", 4) == 0 || memcmp(map, "wOF2", 4) == 0)) {
+        snprintf(fwhy, sizeof fwhy, "font: a WOFF font");
+        count = 0;
+        r = 1;
+    }
+    ms = cf_calloc(count + 1, sizeof *ms);
+    ls = cf_calloc(count + 1, sizeof *ls);
+    if (ms == NULL || ls == NULL)
+        r = -1;
+    for (id = 0; id < count && r == 0; id++) {
+        r = cf__fmeta_read(map, len, id, &ms[id], fwhy, sizeof fwhy);
+        if (r == 0)
+            cf__flangs_of(&ms[id], &ls[id]);
+    }
+    if (map != NULL)
+        munmap(map, len);
+    if (r >= 0) {
+        entry_head(&w->out, path, st, r > 0 ? ST_REFUSED
+                                      : count == 0 ? ST_NOT_FONT : ST_FACES);
+        if (r > 0) {
+            /* "font: why" from the reader: the reason after its name */
+            const char *why = strncmp(fwhy, "font: ", 6) == 0 ? fwhy + 6
+                                                              : fwhy;
+            put_uint(&w->out, strlen(why), 2);
+            put(&w->out, why, strlen(why));
+            snprintf(w->why, w->why_cap, "%s: %s", path, why);
+            w->refused = true;
+        } else if (count > 0) {
+            put_uint(&w->out, count, 2);
+            for (i = 0; i < count; i++)
+                put_face(&w->out, &ms[i], &ls[i]);
+        }
+        if (!w->out.failed) {
+            size_t n = w->out.size - start;
+            for (i = 0; i < 4; i++)
+                w->out.data[start + i] = (unsigned char)(n >> (8 * i));
+            w->nout++;
+        }
+    }
+    /* a refused file's faces are not the configuration's */
+    for (i = 0; i < count && ms != NULL && ls != NULL; i++) {
+        if (r == 0 && !w->refused && accepted(w, &ms[i])) {
+            if (add_font(w, path, &ms[i], &ls[i]) != 0)
+                r = -1;
+        } else {
+            cf__fmeta_fini(&ms[i]);
+        }
+    }
+    cf_free(ms);
+    cf_free(ls);
+    return r < 0 ? -1 : 0;
+}
+
+static int
+by_path(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+/* One directory's files, sorted, each from the cache or read. */
+static int
+walk_dir(walk_t *w, const char *dir)
+{
+    DIR *d = opendir(dir);
+    struct dirent *e;
+    char **names = NULL;
+    size_t n = 0, cap = 0, i;
+    int r = 0;
+    if (d == NULL) {
+        snprintf(w->why, w->why_cap, "%s: cannot be read", dir);
+        w->refused = true;
+        return 0;
+    }
+    while ((e = readdir(d)) != NULL) {
+        char *path;
+        if (e->d_name[0] == '.')
+            continue;
+        if (n == cap) {
+            size_t nc = cap ? 2 * cap : 64;
+            char **t = cf_realloc_array(names, nc, sizeof *t);
+            if (t == NULL) {
+                r = -1;
+                break;
+            }
+            names = t;
+            cap = nc;
+        }
+        path = cf_malloc(strlen(dir) + strlen(e->d_name) + 2);
+        if (path == NULL) {
+            r = -1;
+            break;
+        }
+        sprintf(path, "%s/%s", dir, e->d_name);
+        names[n++] = path;
+    }
+    closedir(d);
+    if (r == 0 && n > 0)
+        qsort(names, n, sizeof *names, by_path);
+    for (i = 0; i < n; i++) {
+        struct stat st;
+        entry_t *c;
+        if (r != 0)
+            ;
+        else if (stat(names[i], &st) != 0) {
+            w->changed = true;   /* gone since it was listed */
+        } else if (S_ISDIR(st.st_mode)) {
+            snprintf(w->why, w->why_cap, "%s: a subdirectory", names[i]);
+            w->refused = true;
+        } else if ((c = cached(w, names[i], &st)) != NULL) {
+            r = from_entry(w, names[i], c);
+        } else {
+            r = from_file(w, names[i], &st);
+        }
+        cf_free(names[i]);
+    }
+    cf_free(names);
+    return r;
+}
+
+int
+cf__fcache_config(const cf__fm_source_t *dirs, size_t ndirs,
+                  const char *const *accept, size_t naccept,
+                  const char *cache, cf__fm_config_t **out, char *why,
+                  size_t why_cap)
+{
+    walk_t w;
+    char buf[512];
+    void *map = NULL;
+    size_t len = 0, d, i;
+    int dfd = -1, r = 0;
+    long nold;
+    bool oom;
+    *out = NULL;
+    memset(&w, 0, sizeof w);
+    w.accept = accept;
+    w.naccept = naccept;
+    w.why = why != NULL && why_cap > 0 ? why : buf;
+    w.why_cap = why != NULL && why_cap > 0 ? why_cap : sizeof buf;
+    w.why[0] = '\0';
+    if (cache != NULL && (dfd = open_dir(cache, false)) >= 0)
+        map = map_cache(dfd, &len);
+    nold = parse(map, len, &w.old, &oom);
+    if (oom)
+        r = -1;
+    w.nold = nold > 0 ? (size_t)nold : 0;
+    w.changed = nold < 0;
+    {
+        static const unsigned char header[HEADER];
+        put(&w.out, header, HEADER);   /* set when done */
+    }
+    /* the walk goes on after a refusal, so that the cache keeps it */
+    for (d = 0; d < ndirs && r == 0; d++) {
+        struct stat st;
+        if (stat(dirs[d].dir, &st) != 0 || !S_ISDIR(st.st_mode)) {
+            if (dirs[d].required) {
+                snprintf(w.why, w.why_cap, "%s: no such directory",
+                         dirs[d].dir);
+                w.refused = true;
+            }
+            continue;
+        }
+        r = walk_dir(&w, dirs[d].dir);
+    }
+    for (i = 0; i < w.nold; i++)
+        if (!w.old[i].used)
+            w.changed = true;   /* a file gone */
+    /* written whole: a walk stopped by a refusal is not */
+    if (r == 0 && w.changed && cache != NULL && !w.out.failed
+        && w.out.size <= MAX_CACHE) {
+        memcpy(w.out.data, MAGIC, 8);
+        for (i = 0; i < 4; i++) {
+            w.out.data[8 + i] = (unsigned char)(VERSION >> (8 * i));
+            w.out.data[12 + i] =
+                (unsigned char)(cf__flangs_count() >> (8 * i));
+            w.out.data[16 + i] = (unsigned char)(w.nout >> (8 * i));
+            w.out.data[20 + i] = (unsigned char)(w.out.size >> (8 * i));
+        }
+        if (dfd < 0)
+            dfd = open_dir(cache, true);
+        if (dfd >= 0)
+            write_cache(dfd, w.out.data, w.out.size);
+    }
+    if (w.out.failed)
+        r = -1;
+    cf__buf_free(&w.out);
+    cf_free(w.old);
+    if (map != NULL)
+        munmap(map, len);
+    if (dfd >= 0)
+        close(dfd);
+    if (r != 0 || w.refused) {
+        for (i = 0; i < w.nfonts; i++) {
+            cf_free(w.fonts[i].file);
+            cf__fmeta_fini(&w.fonts[i].meta);
+        }
+        cf_free(w.fonts);
+        return r != 0 ? r : 1;
+    }
+    r = cf__fm_config_of(w.fonts, w.nfonts, accept, naccept, out, why,
+                         why_cap);
+    cf_free(w.fonts);
+    return r;
+}

@@ -1,0 +1,64 @@
+/*
+** The fonts' metadata cache of the face matcher (render/backends/
+** font-cache.c): reading the cmap of every font of the tool's
+** configuration (46 faces, of which 20 CJK faces of 65,000 characters)
+** costs more than a render, so what render/fontfile/fontmeta.h and
+** fontlangs.h read of each file is kept in one file, and a file is read
+** again only when its size or modification time changed.
+**
+** The cache file is $XDG_CACHE_HOME/curvefig/faces.cache (an absolute
+** XDG_CACHE_HOME), else $HOME/.cache/curvefig/faces.cache.  The directory
+** is made mode 0700 when missing and used only when it is a directory of
+** the user's own, not group- or world-writable, and not a symbolic link;
+** the file is written to a new file of a random name in that directory
+** (O_CREAT | O_EXCL | O_NOFOLLOW, mode 0600) and renamed over the old
+** one, so that a reader sees the old cache or the new one, never a part;
+** and it is read as untrusted bytes: magic, version, every length and
+** offset, every name, range and number checked, each file's path, size
+** and modification time compared with the file's now.  A cache found
+** wrong in any way is ignored and written anew; one that cannot be read
+** or written (no HOME, a read-only directory) only means reading the
+** fonts.  A file that is no font, or a face the reader refuses, is kept
+** too, so that it is not read again at every run.
+**
+** The file's layout (numbers little-endian, no padding):
+**   header  "CFFACES\0", version u32, languages u32 (fontconfig's
+**           count, langs-table.h), entries u32, total length u32
+**   entry   length u32 (of the whole entry), path length u16, path,
+**           size u64, mtime seconds i64, nanoseconds u32, status u8
+**           (0 faces, 1 refused, 2 not a font), then for status 0 the
+**           number of faces u16 and each face, for status 1 the reason
+**           (u16 length, bytes)
+**   face    index u32, families u8, each (u8 length, name, u8 length,
+**           language), PostScript name (u8 length, bytes), slant i32,
+**           weight, width f64, flags u8 (decorative, cff, code pages),
+**           font version i32, code pages 2 x u32, languages 8 x u32,
+**           ranges u32, then first and last u32 of each.
+*/
+#ifndef CURVEFIG_RENDER_FONT_CACHE_H
+#define CURVEFIG_RENDER_FONT_CACHE_H
+
+#include <stddef.h>
+
+#include "font-match.h"
+
+/* The configuration of the font directories dirs[0..ndirs-1] accepting
+** the families, each file's faces taken from the cache file at cache
+** (NULL: no cache) when it is current there, else read (and the cache
+** written anew).  0 and *out; 1 when the matcher declines (why says
+** what); -1 out of memory. */
+int cf__fcache_config(const cf__fm_source_t *dirs, size_t ndirs,
+                      const char *const *accept, size_t naccept,
+                      const char *cache, cf__fm_config_t **out, char *why,
+                      size_t why_cap);
+
+/* The user's cache file (see above) into buf (cap bytes); false when
+** there is none (no absolute XDG_CACHE_HOME nor HOME, or too long). */
+bool cf__fcache_path(char *buf, size_t cap);
+
+/* The cache's entries checked as the reader checks them: the number of
+** entries of a valid cache data[0..len), or -1 (for tests and the fuzz
+** target: every field of every entry is decoded). */
+long cf__fcache_check(const unsigned char *data, size_t len);
+
+#endif

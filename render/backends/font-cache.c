@@ -67,9 +67,12 @@ put_str8(cf__buf_t *b, const char *s)
     put(b, s, n);
 }
 
-/* One face of a file. */
+/* One face of a file; prev: the file's face before it (NULL for the
+** first), whose ranges it refers to when they are the same (a count of
+** 0: the faces of a collection mostly share their cmap). */
 static void
-put_face(cf__buf_t *b, const cf__fmeta_t *m, const cf__flangset_t *ls)
+put_face(cf__buf_t *b, const cf__fmeta_t *m, const cf__flangset_t *ls,
+         const cf__fmeta_t *prev)
 {
     unsigned i;
     put_uint(b, m->index, 4);
@@ -92,6 +95,12 @@ put_face(cf__buf_t *b, const cf__fmeta_t *m, const cf__flangset_t *ls)
     put_uint(b, m->codepages[1], 4);
     for (i = 0; i < 8; i++)
         put_uint(b, ls->bits[i], 4);
+    if (prev != NULL && prev->nranges == m->nranges
+        && memcmp(prev->ranges, m->ranges,
+                  2 * m->nranges * sizeof *m->ranges) == 0) {
+        put_uint(b, 0, 4);
+        return;
+    }
     put_uint(b, m->nranges, 4);
     for (i = 0; i < 2 * m->nranges; i++)
         put_uint(b, m->ranges[i], 4);
@@ -103,6 +112,9 @@ typedef struct rd {
     const unsigned char *p;
     size_t len, pos;
     bool bad;
+    const unsigned char *ranges;   /* the entry's last face's ranges, */
+    size_t nranges;                /* checked (a count of 0 refers to
+                                      them) */
 } rd_t;
 
 static const unsigned char *
@@ -118,14 +130,18 @@ take(rd_t *r, size_t n)
     return p;
 }
 
-static uint64_t
+static inline uint64_t
 get_uint(rd_t *r, int n)
 {
-    const unsigned char *p = take(r, (size_t)n);
+    const unsigned char *p;
     uint64_t v = 0;
     int i;
-    if (p == NULL)
+    if (r->bad || !cf__ff_fits(r->pos, (size_t)n, r->len)) {
+        r->bad = true;
         return 0;
+    }
+    p = r->p + r->pos;
+    r->pos += (size_t)n;
     for (i = n - 1; i >= 0; i--)
         v = v << 8 | p[i];
     return v;
@@ -161,15 +177,32 @@ plausible(double v, double lo, double hi)
     return isfinite(v) && v >= lo && v <= hi;
 }
 
-/* One face, checked; with ranges (allocated) when want, else only
-** checked.  0, 1 (damaged), -1 (out of memory). */
+static inline uint32_t
+le32(const unsigned char *p)
+{
+    uint32_t v;
+    memcpy(&v, p, 4);
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_BIG_ENDIAN__
+    v = __builtin_bswap32(v);
+#endif
+    return v;
+}
+
+/* What get_face does with a face's ranges. */
+enum { RANGES_SKIP, RANGES_CHECK, RANGES_TAKE };
+
+/* One face: its fields checked, and its ranges skipped (their bytes in
+** bounds), checked, or checked and taken (allocated: m->ranges).  0, 1
+** (damaged), -1 (out of memory). */
 static int
-get_face(rd_t *r, cf__fmeta_t *m, cf__flangset_t *ls, bool want)
+get_face(rd_t *r, cf__fmeta_t *m, cf__flangset_t *ls, int ranges)
 {
     size_t i, n, nl = cf__flangs_count();
     unsigned flags;
-    uint32_t prev = 0;
-    memset(m, 0, sizeof *m);
+    const unsigned char *p;
+    /* the fields set one by one: the names past nfamily are not read */
+    m->ranges = NULL;
+    m->nranges = 0;
     m->index = (unsigned)get_uint(r, 4);
     m->nfamily = (unsigned)get_uint(r, 1);
     if (m->nfamily < 1 || m->nfamily > CF__FMETA_NAMES)
@@ -201,7 +234,7 @@ get_face(rd_t *r, cf__fmeta_t *m, cf__flangset_t *ls, bool want)
             && m->slant != CF__FMETA_SLANT_OBLIQUE)
         || !plausible(m->weight, 0, 1000) || !plausible(m->width, 0, 1000)
         || !plausible(m->size_lo, 0, 4000) || !plausible(m->size_hi, 0, 4000)
-        || n == 0 || n > (r->len - r->pos) / 8) {
+        || n > (r->len - r->pos) / 8 || (n == 0 && r->ranges == NULL)) {
         r->bad = true;
         return 1;
     }
@@ -210,27 +243,42 @@ get_face(rd_t *r, cf__fmeta_t *m, cf__flangset_t *ls, bool want)
             r->bad = true;
             return 1;
         }
-    if (want && (m->ranges = cf_alloc_array(2 * n, sizeof *m->ranges))
-                    == NULL)
-        return -1;
-    for (i = 0; i < n; i++) {
-        uint32_t a = (uint32_t)get_uint(r, 4), b = (uint32_t)get_uint(r, 4);
-        /* ascending, apart (maximal ranges), Unicode */
-        if (a > b || b > 0x10ffff || (i > 0 && a <= prev + 1)) {
-            r->bad = true;
-            break;
-        }
-        prev = b;
-        if (want) {
-            m->ranges[2 * i] = a;
-            m->ranges[2 * i + 1] = b;
-        }
-    }
-    m->nranges = want ? n : 0;
-    if (r->bad) {
-        cf__fmeta_fini(m);
+    if (n == 0) {
+        /* the previous face's, checked when it was read */
+        p = r->ranges;
+        n = r->nranges;
+        if (ranges == RANGES_CHECK)
+            return 0;
+    } else if ((p = take(r, 8 * n)) == NULL) {
         return 1;
+    } else {
+        r->ranges = p;
+        r->nranges = n;
     }
+    if (ranges == RANGES_SKIP)
+        return 0;
+    if (ranges == RANGES_TAKE
+        && (m->ranges = cf_alloc_array(2 * n, sizeof *m->ranges)) == NULL)
+        return -1;
+    {
+        /* ascending, apart (maximal ranges), Unicode: one test a range */
+        int64_t last = -2;
+        bool bad = false;
+        for (i = 0; i < n; i++) {
+            uint32_t a = le32(p + 8 * i), b = le32(p + 8 * i + 4);
+            bad |= (int64_t)a <= last + 1 || a > b || b > 0x10ffff;
+            last = b;
+        }
+        if (bad) {
+            r->bad = true;
+            cf__fmeta_fini(m);
+            return 1;
+        }
+    }
+    if (m->ranges != NULL)
+        for (i = 0; i < 2 * n; i++)
+            m->ranges[i] = le32(p + 4 * i);
+    m->nranges = m->ranges != NULL ? n : 0;
     return 0;
 }
 
@@ -248,12 +296,15 @@ typedef struct entry {
     bool used;
 } entry_t;
 
-/* The entries of the cache data[0..len) into *out (cf_free'd), checked
-** whole; their number, or -1 (damaged, or out of memory: *oom). */
+/* The entries of the cache data[0..len) into *out (cf_free'd), each
+** entry's fields checked, and when strict its faces (else each face is
+** checked when the entry is used); their number, or -1 (damaged, or out
+** of memory: *oom). */
 static long
-parse(const unsigned char *data, size_t len, entry_t **out, bool *oom)
+parse(const unsigned char *data, size_t len, entry_t **out, bool *oom,
+      bool strict)
 {
-    rd_t r = { data, len, 0, false };
+    rd_t r = { data, len, 0, false, NULL, 0 };
     size_t n, i;
     entry_t *e;
     *out = NULL;
@@ -281,6 +332,8 @@ parse(const unsigned char *data, size_t len, entry_t **out, bool *oom)
         er.len = elen;
         er.pos = 4;
         er.bad = false;
+        er.ranges = NULL;
+        er.nranges = 0;
         e[i].blob = data + start;
         e[i].blob_len = elen;
         e[i].used = false;
@@ -300,11 +353,13 @@ parse(const unsigned char *data, size_t len, entry_t **out, bool *oom)
             e[i].faces_at = er.pos;
             if (e[i].nfaces == 0)
                 break;
-            for (k = 0; k < e[i].nfaces && !er.bad; k++) {
+            for (k = 0; k < e[i].nfaces && !er.bad && strict; k++) {
                 cf__fmeta_t m;
                 cf__flangset_t ls;
-                get_face(&er, &m, &ls, false);
+                get_face(&er, &m, &ls, RANGES_CHECK);
             }
+            if (!strict)
+                er.pos = elen;   /* its faces read when it is used */
         } else if (e[i].status == ST_REFUSED) {
             size_t wl = (size_t)get_uint(&er, 2);
             e[i].faces_at = er.pos;
@@ -327,7 +382,7 @@ cf__fcache_check(const unsigned char *data, size_t len)
 {
     entry_t *e;
     bool oom;
-    long n = parse(data, len, &e, &oom);
+    long n = parse(data, len, &e, &oom, true);
     cf_free(e);
     return n;
 }
@@ -465,13 +520,20 @@ write_cache(int dfd, const unsigned char *data, size_t n)
 
 /* ---- the walk ----------------------------------------------------------- */
 
+/* An entry of the cache to write: an old one, or bytes of fresh. */
+typedef struct piece {
+    const entry_t *old;
+    size_t at, len;
+} piece_t;
+
 typedef struct walk {
     const char *const *accept;
     size_t naccept;
     entry_t *old;                /* the cache's entries */
     size_t nold, cursor;
-    cf__buf_t out;               /* the entries to write */
-    size_t nout;
+    cf__buf_t fresh;             /* the entries of the files read now */
+    piece_t *pieces;             /* the cache to write, entry by entry */
+    size_t npieces, cap_pieces;
     bool changed;
     cf__fm_font_t *fonts;        /* the accepted faces */
     size_t nfonts, cap;
@@ -555,37 +617,71 @@ cached(walk_t *w, const char *path, const struct stat *st)
     return NULL;
 }
 
-/* The faces of a cached entry. */
+/* Room for one more piece; false when out of memory. */
+static bool
+piece_room(walk_t *w)
+{
+    if (w->npieces == w->cap_pieces) {
+        size_t nc = w->cap_pieces ? 2 * w->cap_pieces : 128;
+        piece_t *t = cf_realloc_array(w->pieces, nc, sizeof *t);
+        if (t == NULL)
+            return false;
+        w->pieces = t;
+        w->cap_pieces = nc;
+    }
+    return true;
+}
+
+/* The faces of a cached entry: 0, -1 (out of memory), 2 when it is
+** damaged (the file is then read again). */
 static int
 from_entry(walk_t *w, const char *path, entry_t *e)
 {
-    rd_t r = { e->blob, e->blob_len, e->faces_at, false };
+    rd_t r = { e->blob, e->blob_len, e->faces_at, false, NULL, 0 };
+    size_t first = w->nfonts;
     unsigned k;
-    e->used = true;
-    put(&w->out, e->blob, e->blob_len);
-    w->nout++;
+    int got = 0;
     if (e->status == ST_REFUSED) {
         size_t n = (size_t)get_uint(&r, 2);
         snprintf(w->why, w->why_cap, "%s: %.*s", path, (int)n,
                  (const char *)take(&r, n));
         w->refused = true;
-        return 0;
     }
-    for (k = 0; k < e->nfaces; k++) {
+    if (!piece_room(w))
+        return -1;
+    for (k = 0; k < e->nfaces && got == 0; k++) {
         cf__fmeta_t m;
         cf__flangset_t ls;
         size_t at = r.pos;
-        int got = get_face(&r, &m, &ls, false);
-        if (got != 0)
-            return got < 0 ? -1 : 0;   /* checked when parsed */
-        if (!accepted(w, &m))
+        /* a face not used is checked whole all the same: a cache kept
+        ** is a cache checked */
+        if ((got = get_face(&r, &m, &ls, RANGES_SKIP)) != 0)
             continue;
+        if (!accepted(w, &m)) {
+            r.pos = at;
+            got = get_face(&r, &m, &ls, RANGES_CHECK);
+            continue;
+        }
         r.pos = at;
-        if ((got = get_face(&r, &m, &ls, true)) != 0)
-            return got < 0 ? -1 : 0;
-        if (add_font(w, path, &m, &ls) != 0)
-            return -1;
+        got = get_face(&r, &m, &ls, RANGES_TAKE);
+        if (got == 0 && add_font(w, path, &m, &ls) != 0)
+            got = -1;
     }
+    if (got == 0 && e->status == ST_FACES && r.pos != e->blob_len)
+        got = 1;
+    if (got != 0) {
+        /* the faces taken from it given back */
+        while (w->nfonts > first) {
+            w->nfonts--;
+            cf_free(w->fonts[w->nfonts].file);
+            cf__fmeta_fini(&w->fonts[w->nfonts].meta);
+        }
+        return got < 0 ? -1 : 2;
+    }
+    e->used = true;
+    w->pieces[w->npieces].old = e;
+    w->pieces[w->npieces].at = w->pieces[w->npieces].len = 0;
+    w->npieces++;
     return 0;
 }
 
@@ -607,7 +703,7 @@ static int
 from_file(walk_t *w, const char *path, const struct stat *st)
 {
     void *map;
-    size_t len, start = w->out.size, i;
+    size_t len, start = w->fresh.size, i;
     int err, r = 0;
     unsigned count, id;
     const char *bad;
@@ -642,26 +738,32 @@ from_file(walk_t *w, const char *path, const struct stat *st)
     if (map != NULL)
         munmap(map, len);
     if (r >= 0) {
-        entry_head(&w->out, path, st, r > 0 ? ST_REFUSED
+        entry_head(&w->fresh, path, st, r > 0 ? ST_REFUSED
                                       : count == 0 ? ST_NOT_FONT : ST_FACES);
         if (r > 0) {
             /* "font: why" from the reader: the reason after its name */
             const char *why = strncmp(fwhy, "font: ", 6) == 0 ? fwhy + 6
                                                               : fwhy;
-            put_uint(&w->out, strlen(why), 2);
-            put(&w->out, why, strlen(why));
+            put_uint(&w->fresh, strlen(why), 2);
+            put(&w->fresh, why, strlen(why));
             snprintf(w->why, w->why_cap, "%s: %s", path, why);
             w->refused = true;
         } else if (count > 0) {
-            put_uint(&w->out, count, 2);
+            put_uint(&w->fresh, count, 2);
             for (i = 0; i < count; i++)
-                put_face(&w->out, &ms[i], &ls[i]);
+                put_face(&w->fresh, &ms[i], &ls[i],
+                         i > 0 ? &ms[i - 1] : NULL);
         }
-        if (!w->out.failed) {
-            size_t n = w->out.size - start;
+        if (!w->fresh.failed && piece_room(w)) {
+            size_t n = w->fresh.size - start;
             for (i = 0; i < 4; i++)
-                w->out.data[start + i] = (unsigned char)(n >> (8 * i));
-            w->nout++;
+                w->fresh.data[start + i] = (unsigned char)(n >> (8 * i));
+            w->pieces[w->npieces].old = NULL;
+            w->pieces[w->npieces].at = start;
+            w->pieces[w->npieces].len = n;
+            w->npieces++;
+        } else {
+            r = -1;
         }
     }
     /* a refused file's faces are not the configuration's */
@@ -676,6 +778,46 @@ from_file(walk_t *w, const char *path, const struct stat *st)
     cf_free(ms);
     cf_free(ls);
     return r < 0 ? -1 : 0;
+}
+
+/* The cache of the walk's pieces written (the header first); -1 when
+** out of memory. */
+static int
+write_pieces(walk_t *w, const char *cache, int *dfd)
+{
+    cf__buf_t out = { NULL, 0, 0, 0 };
+    unsigned char h[HEADER];
+    size_t i, total = HEADER;
+    for (i = 0; i < w->npieces; i++)
+        total += w->pieces[i].old != NULL ? w->pieces[i].old->blob_len
+                                          : w->pieces[i].len;
+    if (total > MAX_CACHE)
+        return 0;
+    memcpy(h, MAGIC, 8);
+    for (i = 0; i < 4; i++) {
+        h[8 + i] = (unsigned char)(VERSION >> (8 * i));
+        h[12 + i] = (unsigned char)(cf__flangs_count() >> (8 * i));
+        h[16 + i] = (unsigned char)(w->npieces >> (8 * i));
+        h[20 + i] = (unsigned char)(total >> (8 * i));
+    }
+    put(&out, h, HEADER);
+    for (i = 0; i < w->npieces; i++) {
+        const piece_t *pc = &w->pieces[i];
+        if (pc->old != NULL)
+            put(&out, pc->old->blob, pc->old->blob_len);
+        else
+            put(&out, w->fresh.data + pc->at, pc->len);
+    }
+    if (out.failed) {
+        cf__buf_free(&out);
+        return -1;
+    }
+    if (*dfd < 0)
+        *dfd = open_dir(cache, true);
+    if (*dfd >= 0)
+        write_cache(*dfd, out.data, out.size);
+    cf__buf_free(&out);
+    return 0;
 }
 
 static int
@@ -733,8 +875,9 @@ walk_dir(walk_t *w, const char *dir)
         } else if (S_ISDIR(st.st_mode)) {
             snprintf(w->why, w->why_cap, "%s: a subdirectory", names[i]);
             w->refused = true;
-        } else if ((c = cached(w, names[i], &st)) != NULL) {
-            r = from_entry(w, names[i], c);
+        } else if ((c = cached(w, names[i], &st)) != NULL
+                   && (r = from_entry(w, names[i], c)) != 2) {
+            ;
         } else {
             r = from_file(w, names[i], &st);
         }
@@ -766,15 +909,11 @@ cf__fcache_config(const cf__fm_source_t *dirs, size_t ndirs,
     w.why[0] = '\0';
     if (cache != NULL && (dfd = open_dir(cache, false)) >= 0)
         map = map_cache(dfd, &len);
-    nold = parse(map, len, &w.old, &oom);
+    nold = parse(map, len, &w.old, &oom, false);
     if (oom)
         r = -1;
     w.nold = nold > 0 ? (size_t)nold : 0;
     w.changed = nold < 0;
-    {
-        static const unsigned char header[HEADER];
-        put(&w.out, header, HEADER);   /* set when done */
-    }
     /* the walk goes on after a refusal, so that the cache keeps it */
     for (d = 0; d < ndirs && r == 0; d++) {
         struct stat st;
@@ -792,24 +931,10 @@ cf__fcache_config(const cf__fm_source_t *dirs, size_t ndirs,
         if (!w.old[i].used)
             w.changed = true;   /* a file gone */
     /* written whole: a walk stopped by a refusal is not */
-    if (r == 0 && w.changed && cache != NULL && !w.out.failed
-        && w.out.size <= MAX_CACHE) {
-        memcpy(w.out.data, MAGIC, 8);
-        for (i = 0; i < 4; i++) {
-            w.out.data[8 + i] = (unsigned char)(VERSION >> (8 * i));
-            w.out.data[12 + i] =
-                (unsigned char)(cf__flangs_count() >> (8 * i));
-            w.out.data[16 + i] = (unsigned char)(w.nout >> (8 * i));
-            w.out.data[20 + i] = (unsigned char)(w.out.size >> (8 * i));
-        }
-        if (dfd < 0)
-            dfd = open_dir(cache, true);
-        if (dfd >= 0)
-            write_cache(dfd, w.out.data, w.out.size);
-    }
-    if (w.out.failed)
-        r = -1;
-    cf__buf_free(&w.out);
+    if (r == 0 && w.changed && cache != NULL)
+        r = write_pieces(&w, cache, &dfd);
+    cf__buf_free(&w.fresh);
+    cf_free(w.pieces);
     cf_free(w.old);
     if (map != NULL)
         munmap(map, len);

@@ -31,9 +31,15 @@
 **           (u16 length, bytes)
 **   face    index u32, families u8, each (u8 length, name, u8 length,
 **           language), PostScript name (u8 length, bytes), slant i32,
-**           weight, width f64, flags u8 (decorative, cff, code pages),
-**           font version i32, code pages 2 x u32, languages 8 x u32,
-**           ranges u32, then first and last u32 of each.
+**           weight, width f64, flags u8 (decorative, cff, code pages,
+**           optical size),
+**           optical sizes 2 x f64, font version i32, code pages 2 x u32,
+**           languages 8 x u32, ranges u32, then first and last u32 of
+**           each; 0 ranges: the previous face's of the file (the faces
+**           of a collection mostly share one cmap).
+** A file's entry is checked whole when it is used (a face's ranges
+** ascending, apart and in Unicode); the configuration then takes its
+** accepted faces.
 */
 #ifndef CURVEFIG_RENDER_FONT_CACHE_H
 #define CURVEFIG_RENDER_FONT_CACHE_H

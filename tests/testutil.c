@@ -234,18 +234,22 @@ tu_read_file(const char *path, size_t *len)
     FILE *f = fopen(path, "rb");
     unsigned char *b;
     long n;
+    *len = 0;
     if (f == NULL)
         return NULL;
-    fseek(f, 0, SEEK_END);
-    n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    b = n >= 0 ? malloc(n > 0 ? (size_t)n : 1) : NULL;
+    if (fseek(f, 0, SEEK_END) != 0 || (n = ftell(f)) < 0
+        || fseek(f, 0, SEEK_SET) != 0) {
+        fclose(f);
+        return NULL;
+    }
+    b = malloc((size_t)n + 1);
     if (b == NULL || fread(b, 1, (size_t)n, f) != (size_t)n) {
         free(b);
         fclose(f);
         return NULL;
     }
     fclose(f);
+    b[n] = 0;
     *len = (size_t)n;
     return b;
 }
@@ -263,4 +267,13 @@ tu_read_header(const char *root, const char *name, char *buf, size_t size)
     n = fread(buf, 1, size - 1, f);
     buf[n] = '\0';
     fclose(f);
+}
+
+void
+tu_write_file(const char *path, const void *data, size_t n)
+{
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(data, 1, n, f), n);
+    assert_int_equal(fclose(f), 0);
 }

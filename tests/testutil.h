@@ -63,13 +63,15 @@ long tu_fail_loop(const char *name, tu_alloc_op op, bool takes_diag);
 ** names (at most max); their number. */
 size_t tu_figure_scripts(const char *dir, char **names, size_t max);
 
-/* The whole file at path, malloc'd, its size in *len; NULL when it cannot
-** be read (the caller frees it). */
-unsigned char *tu_read_file(const char *path, size_t *len);
-
 /* The text of a public header (include/curvefig/<name> under the source
 ** tree root) into buf, NUL-terminated; fails the test when unreadable. */
 void tu_read_header(const char *root, const char *name, char *buf,
                     size_t size);
+
+/* The bytes of the file at path, malloc'd (*len set; a NUL after them),
+** NULL when it cannot be read whole (the caller frees it); and n bytes
+** written to path (failing the test when they cannot be). */
+unsigned char *tu_read_file(const char *path, size_t *len);
+void tu_write_file(const char *path, const void *data, size_t n);
 
 #endif

@@ -23,6 +23,7 @@
 #include "buffer.h"
 #include "curvefig/core.h"
 #include "font-cache.h"
+#include "grow.h"
 #include "sfnt.h"
 
 #define MAGIC "CFFACES"            /* with its NUL: 8 bytes */
@@ -543,30 +544,9 @@ typedef struct walk {
 } walk_t;
 
 static bool
-same_ci(const char *a, const char *b)
-{
-    for (;; a++, b++) {
-        char x = *a, y = *b;
-        if (x >= 'A' && x <= 'Z')
-            x = (char)(x - 'A' + 'a');
-        if (y >= 'A' && y <= 'Z')
-            y = (char)(y - 'A' + 'a');
-        if (x != y)
-            return false;
-        if (x == '\0')
-            return true;
-    }
-}
-
-static bool
 accepted(const walk_t *w, const cf__fmeta_t *m)
 {
-    size_t i, k;
-    for (i = 0; i < m->nfamily; i++)
-        for (k = 0; k < w->naccept; k++)
-            if (same_ci(m->family[i], w->accept[k]))
-                return true;
-    return false;
+    return cf__fm_accepts(m, w->accept, w->naccept);
 }
 
 /* Add a face (whose ranges the list takes) of file path to the list. */
@@ -574,17 +554,13 @@ static int
 add_font(walk_t *w, const char *path, cf__fmeta_t *m,
          const cf__flangset_t *ls)
 {
-    cf__fm_font_t *f;
-    if (w->nfonts == w->cap) {
-        size_t nc = w->cap ? 2 * w->cap : 64;
-        cf__fm_font_t *t = cf_realloc_array(w->fonts, nc, sizeof *t);
-        if (t == NULL) {
-            cf__fmeta_fini(m);
-            return -1;
-        }
-        w->fonts = t;
-        w->cap = nc;
+    cf__fm_font_t *f = cf__grow_array(w->fonts, &w->cap, w->nfonts + 1,
+                                      sizeof *f, 64);
+    if (f == NULL) {
+        cf__fmeta_fini(m);
+        return -1;
     }
+    w->fonts = f;
     f = &w->fonts[w->nfonts];
     f->file = cf_malloc(strlen(path) + 1);
     if (f->file == NULL) {
@@ -621,15 +597,11 @@ cached(walk_t *w, const char *path, const struct stat *st)
 static bool
 piece_room(walk_t *w)
 {
-    if (w->npieces == w->cap_pieces) {
-        size_t nc = w->cap_pieces ? 2 * w->cap_pieces : 128;
-        piece_t *t = cf_realloc_array(w->pieces, nc, sizeof *t);
-        if (t == NULL)
-            return false;
+    piece_t *t = cf__grow_array(w->pieces, &w->cap_pieces, w->npieces + 1,
+                                sizeof *t, 128);
+    if (t != NULL)
         w->pieces = t;
-        w->cap_pieces = nc;
-    }
-    return true;
+    return t != NULL;
 }
 
 /* The faces of a cached entry: 0, -1 (out of memory), 2 when it is
@@ -844,15 +816,13 @@ walk_dir(walk_t *w, const char *dir)
         char *path;
         if (e->d_name[0] == '.')
             continue;
-        if (n == cap) {
-            size_t nc = cap ? 2 * cap : 64;
-            char **t = cf_realloc_array(names, nc, sizeof *t);
+        {
+            char **t = cf__grow_array(names, &cap, n + 1, sizeof *t, 64);
             if (t == NULL) {
                 r = -1;
                 break;
             }
             names = t;
-            cap = nc;
         }
         path = cf_malloc(strlen(dir) + strlen(e->d_name) + 2);
         if (path == NULL) {

@@ -1,5 +1,5 @@
 /*
-** The font configuration's hook (render/backends/font-config.h).
+** The font configuration's hooks (render/backends/font-config.h).
 */
 #include <pthread.h>
 #include <stddef.h>
@@ -7,50 +7,54 @@
 #include "font-config.h"
 #include "font-faces.h"
 
-/* fontconfig's configuration is one per process: so is its hook */
-static void (*before_open)(void);
-static pthread_once_t configured = PTHREAD_ONCE_INIT;
+/* fontconfig's configuration is one per process: so are its hooks, the
+** one before any font (OPEN) and the one before fontconfig's (FC) */
+enum { OPEN, FC };
+static void (*hooks[2])(void);
+static pthread_once_t once[2] = { PTHREAD_ONCE_INIT, PTHREAD_ONCE_INIT };
+
+static void
+run(int which)
+{
+    if (hooks[which] != NULL)
+        hooks[which]();
+}
+
+static void
+run_open(void)
+{
+    run(OPEN);
+}
+
+static void
+run_fc(void)
+{
+    run(FC);
+}
 
 void
 cf__fonts_before_open(void (*fn)(void))
 {
-    before_open = fn;
+    hooks[OPEN] = fn;
 }
 
-static void
-configure(void)
+void
+cf__fonts_before_fontconfig(void (*fn)(void))
 {
-    if (before_open != NULL)
-        before_open();
+    hooks[FC] = fn;
 }
 
 void
 cf__fonts_configure(void)
 {
-    pthread_once(&configured, configure);
-}
-
-static void (*before_fontconfig)(void);
-static pthread_once_t fontconfig_configured = PTHREAD_ONCE_INIT;
-
-void
-cf__fonts_before_fontconfig(void (*fn)(void))
-{
-    before_fontconfig = fn;
-}
-
-static void
-configure_fontconfig(void)
-{
-    if (before_fontconfig != NULL)
-        before_fontconfig();
+    pthread_once(&once[OPEN], run_open);
 }
 
 void
 cf__fonts_configure_fontconfig(void)
 {
     cf__fonts_configure();
-    pthread_once(&fontconfig_configured, configure_fontconfig);
+    pthread_once(&once[FC], run_fc);
 }
 
 bool

@@ -121,21 +121,6 @@ room(void *arr, size_t n, size_t *cap, size_t size)
 static FcFontSet *config_fonts;   /* the fonts HarfBuzz reads */
 static const cf__fm_config_t *matcher;   /* NULL: fontconfig's */
 
-/* The C library's heap as the library's allocator: what the matcher
-** allocates for the caches lives as long as they do. */
-static void *
-heap_realloc(void *ud, void *p, size_t old, size_t n)
-{
-    (void)ud;
-    (void)old;
-    if (n == 0) {
-        free(p);
-        return NULL;
-    }
-    return realloc(p, n);
-}
-static const cf_allocator_t heap = { heap_realloc, NULL };
-
 void
 cf__nfaces_use_matcher(const cf__fm_config_t *c)
 {
@@ -150,7 +135,9 @@ cf__nfaces_use_dirs(const cf__fm_source_t *dirs, size_t n,
     cf__fm_config_t *c;
     char cache[4096];
     int r;
-    cf_use_allocator(&heap, &prev);
+    /* the process's default allocator (the C library's heap), as the
+    ** caches here: the configuration lives as long as they do */
+    cf_use_allocator(NULL, &prev);
     r = cf__fcache_config(dirs, n, families, nfamilies,
                           cf__fcache_path(cache, sizeof cache) ? cache : NULL,
                           &c, NULL, 0);
@@ -312,13 +299,29 @@ make_pattern(const char *family, bool italic, bool bold, int size,
     return p;
 }
 
-/* A new set of the matcher's (sets has room for it). */
+FcPattern *
+cf__nfaces_pattern(const char *family, bool italic, bool bold, int size,
+                   const char *lang)
+{
+    return make_pattern(family, italic, bold, size, lang);
+}
+
+/* A new set of the description, its best font found (fontconfig's or
+** the matcher's); NULL when out of memory.  sets has room for it. */
 static cf__nfontset_t *
-matcher_set(const char *family, bool italic, bool bold, int size,
-            const char *lang)
+new_set(const char *family, bool italic, bool bold, int size,
+        const char *lang)
 {
     cf__nfontset_t *s = calloc(1, sizeof *s);
-    if (s == NULL || (s->family = malloc(strlen(family) + 1)) == NULL) {
+    FcFontSet *fonts = NULL;
+    FcResult res;
+    if (s == NULL || (s->family = malloc(strlen(family) + 1)) == NULL
+        || (matcher == NULL
+            && ((fonts = the_config_fonts()) == NULL
+                || (s->pattern = make_pattern(family, italic, bold, size,
+                                              lang)) == NULL))) {
+        if (s != NULL)
+            free(s->family);
         free(s);
         return NULL;
     }
@@ -327,8 +330,11 @@ matcher_set(const char *family, bool italic, bool bold, int size,
     s->italic = italic;
     s->bold = bold;
     s->size = size;
-    s->fm_matched = cf__fm_match(matcher, family, italic, bold, size, lang,
-                                 &s->fm_match) == 0;
+    if (matcher != NULL)
+        s->fm_matched = cf__fm_match(matcher, family, italic, bold, size,
+                                     lang, &s->fm_match) == 0;
+    else
+        s->match = FcFontSetMatch(NULL, &fonts, 1, s->pattern, &res);
     sets[nsets++] = s;
     return s;
 }
@@ -338,8 +344,6 @@ cf__nfontset_get(const char *family, bool italic, bool bold, int size,
                  const char *lang)
 {
     cf__nfontset_t *s;
-    FcResult res;
-    FcFontSet *fonts;
     size_t i;
     for (i = 0; i < nsets; i++) {
         s = sets[i];
@@ -355,31 +359,7 @@ cf__nfontset_get(const char *family, bool italic, bool bold, int size,
             return NULL;
         sets = t;
     }
-    if (matcher != NULL)
-        return matcher_set(family, italic, bold, size, lang);
-    fonts = the_config_fonts();
-    s = calloc(1, sizeof *s);
-    if (fonts == NULL || s == NULL) {
-        free(s);
-        return NULL;
-    }
-    s->family = malloc(strlen(family) + 1);
-    s->pattern = make_pattern(family, italic, bold, size, lang);
-    if (s->family == NULL || s->pattern == NULL) {
-        if (s->pattern != NULL)
-            FcPatternDestroy(s->pattern);
-        free(s->family);
-        free(s);
-        return NULL;
-    }
-    strcpy(s->family, family);
-    strcpy(s->lang, lang);
-    s->italic = italic;
-    s->bold = bold;
-    s->size = size;
-    s->match = FcFontSetMatch(NULL, &fonts, 1, s->pattern, &res);
-    sets[nsets++] = s;
-    return s;
+    return new_set(family, italic, bold, size, lang);
 }
 
 /* The entry of a font file and index (the shaper's face opened), NULL
@@ -726,7 +706,7 @@ fm_sorted(cf__nfontset_t *s)
     cf_allocator_t prev;
     if (s->fm_sorted != NULL || s->sort_failed)
         return s->fm_sorted != NULL;
-    cf_use_allocator(&heap, &prev);
+    cf_use_allocator(NULL, &prev);   /* as cf__nfaces_use_dirs */
     s->sort_failed = cf__fm_sort(matcher, s->family, s->italic, s->bold,
                                  s->size, s->lang, &s->fm_sorted,
                                  &s->fm_nsorted) != 0;

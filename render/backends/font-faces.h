@@ -60,6 +60,13 @@ cf__nfontset_t *cf__nfontset_get(const char *family, bool italic, bool bold,
 ** NULL past the last. */
 cf__nface_t *cf__nfontset_font(cf__nfontset_t *set, int i);
 
+/* fontconfig's pattern of a description as the sets make it (the
+** request before FcFontSetMatch and FcFontSetSort; for the matcher's
+** test), NULL when out of memory. */
+struct _FcPattern;
+struct _FcPattern *cf__nfaces_pattern(const char *family, bool italic,
+                                      bool bold, int size, const char *lang);
+
 /* Whether the face has a glyph for character c. */
 bool cf__nface_has_char(const cf__nface_t *f, unsigned c);
 

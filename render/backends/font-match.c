@@ -44,22 +44,6 @@ typedef struct request {
 
 /* ---- fontconfig's default languages ------------------------------------ */
 
-static bool
-same_ci(const char *a, const char *b)
-{
-    for (;; a++, b++) {
-        char x = *a, y = *b;
-        if (x >= 'A' && x <= 'Z')
-            x = (char)(x - 'A' + 'a');
-        if (y >= 'A' && y <= 'Z')
-            y = (char)(y - 'A' + 'a');
-        if (x != y)
-            return false;
-        if (x == '\0')
-            return true;
-    }
-}
-
 /* FcLangNormalize of tag into out (LANG_LEN); false when it gives none. */
 static bool
 normalise(const char *tag, char *out)
@@ -71,8 +55,8 @@ normalise(const char *tag, char *out)
     size_t i;
     if (*tag == '\0')
         return false;
-    if (same_ci(tag, "C") || same_ci(tag, "C.UTF-8") || same_ci(tag, "C.utf8")
-        || same_ci(tag, "POSIX")) {
+    if (cf__fmeta_same_ci(tag, "C") || cf__fmeta_same_ci(tag, "C.UTF-8") || cf__fmeta_same_ci(tag, "C.utf8")
+        || cf__fmeta_same_ci(tag, "POSIX")) {
         strcpy(out, "en");
         return true;
     }
@@ -164,13 +148,13 @@ default_langs(cf__fm_config_t *c)
 
 /* ---- the configuration -------------------------------------------------- */
 
-static bool
-accepted(const cf__fmeta_t *m, const char *const *accept, size_t naccept)
+bool
+cf__fm_accepts(const cf__fmeta_t *m, const char *const *accept, size_t n)
 {
     size_t i, k;
     for (i = 0; i < m->nfamily; i++)
-        for (k = 0; k < naccept; k++)
-            if (same_ci(m->family[i], accept[k]))
+        for (k = 0; k < n; k++)
+            if (cf__fmeta_same_ci(m->family[i], accept[k]))
                 return true;
     return false;
 }
@@ -203,7 +187,7 @@ cf__fm_config_of(cf__fm_font_t *fonts, size_t n, const char *const *accept,
         return -1;
     }
     for (i = 0; i < n; i++) {
-        if (!accepted(&fonts[i].meta, accept, naccept)) {
+        if (!cf__fm_accepts(&fonts[i].meta, accept, naccept)) {
             free_fonts(&fonts[i], 1);
             continue;
         }
@@ -253,33 +237,6 @@ cf__fm_config_font(const cf__fm_config_t *c, size_t i)
 
 /* ---- scores ------------------------------------------------------------- */
 
-/* fontconfig's FcStrCmpIgnoreBlanksAndCase(a, b) == 0, with b's length
-** given (a name of the request's list). */
-static bool
-same_name_n(const char *a, const char *b, size_t bn)
-{
-    const char *be = b + bn;
-    while (true) {
-        char x, y;
-        while (*a == ' ')
-            a++;
-        while (b < be && *b == ' ')
-            b++;
-        x = *a;
-        y = b < be ? *b : '\0';
-        if (x >= 'A' && x <= 'Z')
-            x = (char)(x - 'A' + 'a');
-        if (y >= 'A' && y <= 'Z')
-            y = (char)(y - 'A' + 'a');
-        if (x != y)
-            return false;
-        if (x == '\0')
-            return true;
-        a++;
-        b++;
-    }
-}
-
 /* The index of the first of the request's names the font has. */
 static double
 family_score(const char *list, const cf__fmeta_t *m)
@@ -292,7 +249,7 @@ family_score(const char *list, const cf__fmeta_t *m)
         /* make_pattern drops a name of 256 bytes or more */
         if (n < 256) {
             for (k = 0; k < m->nfamily; k++)
-                if (same_name_n(m->family[k], f, n))
+                if (cf__fmeta_same_name(m->family[k], f, n))
                     return i;
             i++;
         }
@@ -355,7 +312,7 @@ request_of(const cf__fm_config_t *c, const char *family, bool italic,
     q->nlangs = 1;
     for (i = 0; i < c->nlangs; i++) {
         for (k = 0; k < q->nlangs; k++)
-            if (same_ci(q->langs[k], c->langs[i]) || same_ci(q->langs[k], "und"))
+            if (cf__fmeta_same_ci(q->langs[k], c->langs[i]) || cf__fmeta_same_ci(q->langs[k], "und"))
                 return;
         strcpy(q->langs[q->nlangs++], c->langs[i]);
     }
@@ -404,7 +361,7 @@ prepare(const cf__fm_config_t *c, const request_t *q,
     out->family = m->family[first_family(c, m)];
     for (i = 0; i < sizeof designs / sizeof designs[0]; i++)
         for (k = 0; k < m->nfamily; k++)
-            if (same_ci(m->family[k], designs[i]))
+            if (cf__fmeta_same_ci(m->family[k], designs[i]))
                 out->family = designs[i];
     out->slant = m->slant;
     out->weight = m->weight;
@@ -450,22 +407,6 @@ typedef struct cover {
     size_t n, cap;
 } cover_t;
 
-static bool
-covered(const cover_t *u, uint32_t a, uint32_t b)
-{
-    size_t lo = 0, hi = u->n;
-    while (lo < hi) {
-        size_t mid = lo + (hi - lo) / 2;
-        if (a < u->r[2 * mid])
-            hi = mid;
-        else if (a > u->r[2 * mid + 1])
-            lo = mid + 1;
-        else
-            return b <= u->r[2 * mid + 1];
-    }
-    return false;
-}
-
 /* Merge the font's ranges into u; whether it added characters (-1 out of
 ** memory). */
 static int
@@ -475,7 +416,8 @@ merge(cover_t *u, const cf__fmeta_t *m)
     uint32_t *t;
     bool adds = false;
     for (j = 0; j < m->nranges && !adds; j++)
-        adds = !covered(u, m->ranges[2 * j], m->ranges[2 * j + 1]);
+        adds = !cf__fmeta_ranges_hold(u->r, u->n, m->ranges[2 * j],
+                                      m->ranges[2 * j + 1]);
     if (!adds)
         return 0;
     t = cf_alloc_array(2 * need, sizeof *t);

@@ -80,6 +80,11 @@ int cf__fm_config_of(cf__fm_font_t *fonts, size_t n,
 
 void cf__fm_config_free(cf__fm_config_t *c);
 
+/* Whether one of the face's families is one of accept[0..n-1] (case
+** ignored, as <selectfont> compares). */
+bool cf__fm_accepts(const cf__fmeta_t *m, const char *const *accept,
+                    size_t n);
+
 /* Its fonts (for tests). */
 size_t cf__fm_config_count(const cf__fm_config_t *c);
 const cf__fm_font_t *cf__fm_config_font(const cf__fm_config_t *c,

@@ -103,13 +103,7 @@ cf__fontfile_subset_mem(const unsigned char *data, size_t len,
     cf__ff_t f;
     int r;
     memset(out, 0, sizeof *out);
-    if (why != NULL && why_cap > 0)
-        why[0] = '\0';
-    f.data = data;
-    f.len = data != NULL ? len : 0;
-    f.name = name_for_errors != NULL ? name_for_errors : "font";
-    f.why = why;
-    f.why_cap = why_cap;
+    cf__ff_init(&f, data, len, name_for_errors, why, why_cap);
     r = subset(&f, index, gids, n, out);
     if (r != 0) {
         cf__fontfile_subset_fini(out);
@@ -163,11 +157,7 @@ cf__fontfile_subset(const char *path, unsigned index, const unsigned *gids,
     size_t len;
     int r;
     memset(out, 0, sizeof *out);
-    f.data = NULL;
-    f.len = 0;
-    f.name = path;
-    f.why = why;
-    f.why_cap = why_cap;
+    cf__ff_init(&f, NULL, 0, path, why, why_cap);
     bad = cf__ff_map_file(path, &map, &len, &r);
     if (bad != NULL)
         return r != 0 ? cf__ff_fail(&f, "%s: %s", bad, strerror(r))

@@ -31,24 +31,6 @@ cf__flangs_name(size_t i)
     return i < NLANGS ? lang_sets[i].name : NULL;
 }
 
-/* Whether the face's ranges hold [a, b] (they are maximal: one holds it
-** whole or none does). */
-static bool
-holds(const cf__fmeta_t *m, uint32_t a, uint32_t b)
-{
-    size_t lo = 0, hi = m->nranges;
-    while (lo < hi) {
-        size_t mid = lo + (hi - lo) / 2;
-        if (a < m->ranges[2 * mid])
-            hi = mid;
-        else if (a > m->ranges[2 * mid + 1])
-            lo = mid + 1;
-        else
-            return b <= m->ranges[2 * mid + 1];
-    }
-    return false;
-}
-
 static char
 lower(char c)
 {
@@ -136,8 +118,9 @@ cf__flangs_of(const cf__fmeta_t *m, cf__flangset_t *out)
             && (int)l->pages != excl_pages)
             continue;
         for (k = 0; k < l->count && all; k++)
-            all = holds(m, lang_ranges[2 * (l->first + k)],
-                        lang_ranges[2 * (l->first + k) + 1]);
+            all = cf__fmeta_ranges_hold(m->ranges, m->nranges,
+                                        lang_ranges[2 * (l->first + k)],
+                                        lang_ranges[2 * (l->first + k) + 1]);
         if (all)
             out->bits[i / 32] |= 1u << (i % 32);
     }

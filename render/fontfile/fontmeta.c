@@ -11,6 +11,7 @@
 
 #include "curvefig/core.h"
 #include "fontmeta.h"
+#include "grow.h"
 #include "sfnt.h"
 
 #define NSTYLES 16
@@ -147,22 +148,24 @@ name_text(cf__ff_t *f, const rec_t *r, const unsigned char *s, size_t len,
     return 0;
 }
 
-/* fontconfig's FcStrCmpIgnoreBlanksAndCase(a, b) == 0 (ASCII case). */
-static bool
-same_name(const char *a, const char *b)
+static char
+lower(char c)
 {
+    return c >= 'A' && c <= 'Z' ? (char)(c - 'A' + 'a') : c;
+}
+
+bool
+cf__fmeta_same_name(const char *a, const char *b, size_t bn)
+{
+    const char *be = b + bn;
     while (true) {
         char x, y;
         while (*a == ' ')
             a++;
-        while (*b == ' ')
+        while (b < be && *b == ' ')
             b++;
-        x = *a;
-        y = *b;
-        if (x >= 'A' && x <= 'Z')
-            x = (char)(x - 'A' + 'a');
-        if (y >= 'A' && y <= 'Z')
-            y = (char)(y - 'A' + 'a');
+        x = lower(*a);
+        y = b < be ? lower(*b) : '\0';
         if (x != y)
             return false;
         if (x == '\0')
@@ -170,6 +173,15 @@ same_name(const char *a, const char *b)
         a++;
         b++;
     }
+}
+
+bool
+cf__fmeta_same_ci(const char *a, const char *b)
+{
+    for (; lower(*a) == lower(*b); a++, b++)
+        if (*a == '\0')
+            return true;
+    return false;
 }
 
 /* s, lowercase, its blanks removed, into d (cap bytes). */
@@ -181,9 +193,7 @@ squeeze(const char *s, char *d, size_t cap)
         char c = *s;
         if (c == ' ')
             continue;
-        if (c >= 'A' && c <= 'Z')
-            c = (char)(c - 'A' + 'a');
-        d[k++] = c;
+        d[k++] = lower(c);
     }
     d[k] = '\0';
 }
@@ -203,13 +213,9 @@ has_word(const char *s, const char *word)
     bool start = true;
     for (i = 0; i + m <= n; i++) {
         if (start) {
-            for (j = 0; j < m; j++) {
-                char c = s[i + j];
-                if (c >= 'A' && c <= 'Z')
-                    c = (char)(c - 'A' + 'a');
-                if (c != word[j])
+            for (j = 0; j < m; j++)
+                if (lower(s[i + j]) != word[j])
                     break;
-            }
             if (j == m && (i + m == n || is_punct((unsigned char)s[i + m])))
                 return true;
         }
@@ -302,7 +308,7 @@ add_name(cf__ff_t *f, char (*list)[CF__FMETA_NAME_LEN], char (*langs)[8],
 {
     unsigned i;
     for (i = 0; i < *n; i++)
-        if (same_name(list[i], text))
+        if (cf__fmeta_same_name(list[i], text, strlen(text)))
             return 0;
     if (*n == cap)
         return cf__ff_fail(f, "more than %u names of a kind", cap);
@@ -443,14 +449,10 @@ typedef struct chars {
 static int
 add_char(chars_t *s, uint32_t c)
 {
-    if (s->n == s->cap) {
-        size_t nc = s->cap ? 2 * s->cap : 1024;
-        uint32_t *t = cf_realloc_array(s->c, nc, sizeof *t);
-        if (t == NULL)
-            return -1;
-        s->c = t;
-        s->cap = nc;
-    }
+    uint32_t *t = cf__grow_array(s->c, &s->cap, s->n + 1, sizeof *t, 1024);
+    if (t == NULL)
+        return -1;
+    s->c = t;
     s->c[s->n++] = c;
     return 0;
 }
@@ -490,10 +492,23 @@ glyf_has_contours(cf__ff_t *f, const cf__ff_face_t *face, unsigned gid,
     return 0;
 }
 
+/* A cmap read: the face, where its characters go. */
+typedef struct scan {
+    cf__ff_t *f;
+    const cf__ff_face_t *face;
+    bool cff;
+    unsigned num_glyphs;
+    chars_t chars;
+} scan_t;
+
 static int
-add_mapped(cf__ff_t *f, const cf__ff_face_t *face, bool cff, chars_t *s,
-           uint32_t c, unsigned gid, unsigned num_glyphs)
+add_mapped(scan_t *sc, uint32_t c, unsigned gid)
 {
+    cf__ff_t *f = sc->f;
+    const cf__ff_face_t *face = sc->face;
+    bool cff = sc->cff;
+    unsigned num_glyphs = sc->num_glyphs;
+    chars_t *s = &sc->chars;
     bool yes;
     if (gid == 0 || gid >= num_glyphs)
         return 0;
@@ -511,9 +526,9 @@ add_mapped(cf__ff_t *f, const cf__ff_face_t *face, bool cff, chars_t *s,
 }
 
 static int
-cmap4(cf__ff_t *f, const cf__ff_face_t *face, bool cff,
-      const unsigned char *t, size_t len, chars_t *s, unsigned num_glyphs)
+cmap4(scan_t *sc, const unsigned char *t, size_t len)
 {
+    cf__ff_t *f = sc->f;
     size_t segs, i;
     int r;
     if (len < 14)
@@ -543,7 +558,7 @@ cmap4(cf__ff_t *f, const cf__ff_face_t *face, bool cff,
                 if (gid != 0)
                     gid = (gid + delta) & 0xffff;
             }
-            if ((r = add_mapped(f, face, cff, s, c, gid, num_glyphs)) != 0)
+            if ((r = add_mapped(sc, c, gid)) != 0)
                 return r;
         }
     }
@@ -551,11 +566,11 @@ cmap4(cf__ff_t *f, const cf__ff_face_t *face, bool cff,
 }
 
 static int
-cmap12(cf__ff_t *f, const cf__ff_face_t *face, bool cff,
-       const unsigned char *t, size_t len, chars_t *s, unsigned num_glyphs)
+cmap12(scan_t *sc, const unsigned char *t, size_t len)
 {
     size_t n, i;
     int r;
+    cf__ff_t *f = sc->f;
     if (len < 16)
         return cf__ff_fail(f, "cmap format 12 too short");
     n = cf__ff_u32(t + 12);
@@ -565,14 +580,13 @@ cmap12(cf__ff_t *f, const cf__ff_face_t *face, bool cff,
         uint32_t a = cf__ff_u32(t + 16 + 12 * i);
         uint32_t b = cf__ff_u32(t + 20 + 12 * i);
         uint32_t g = cf__ff_u32(t + 24 + 12 * i), c;
-        if (a > b || b > 0x10ffff || g >= num_glyphs)
+        if (a > b || b > 0x10ffff || g >= sc->num_glyphs)
             continue;
         for (c = a; c <= b; c++) {
             uint64_t gid = (uint64_t)g + (c - a);
-            if (gid >= num_glyphs)
+            if (gid >= sc->num_glyphs)
                 break;
-            if ((r = add_mapped(f, face, cff, s, c, (unsigned)gid,
-                                num_glyphs)) != 0)
+            if ((r = add_mapped(sc, c, (unsigned)gid)) != 0)
                 return r;
         }
     }
@@ -593,6 +607,7 @@ read_charset(cf__ff_t *f, const cf__ff_face_t *face, cf__fmeta_t *m)
     size_t n, i, best = (size_t)-1, any = (size_t)-1, at, sub;
     unsigned num_glyphs, fmt;
     chars_t s = { NULL, 0, 0 };
+    scan_t sc;
     int r;
     if (cf__ff_table_find(f, face, CF__FF_TAG('c', 'm', 'a', 'p'), 4, &cmap)
         || cf__ff_table_find(f, face, CF__FF_TAG('m', 'a', 'x', 'p'), 6,
@@ -601,6 +616,11 @@ read_charset(cf__ff_t *f, const cf__ff_face_t *face, cf__fmeta_t *m)
     if (cmap.data == NULL || maxp.data == NULL)
         return cf__ff_fail(f, "no cmap or maxp");
     num_glyphs = cf__ff_u16(maxp.data + 4);
+    sc.f = f;
+    sc.face = face;
+    sc.cff = m->cff;
+    sc.num_glyphs = num_glyphs;
+    sc.chars = s;
     n = cf__ff_u16(cmap.data + 2);
     if (!cf__ff_fits(4, 8 * n, cmap.len))
         return cf__ff_fail(f, "cmap: %zu encodings past its end", n);
@@ -628,17 +648,18 @@ read_charset(cf__ff_t *f, const cf__ff_face_t *face, cf__fmeta_t *m)
         at = cf__ff_u16(cmap.data + sub + 2);
         if (!cf__ff_fits(sub, at, cmap.len))
             return cf__ff_fail(f, "cmap format 4 past its end");
-        r = cmap4(f, face, m->cff, cmap.data + sub, at, &s, num_glyphs);
+        r = cmap4(&sc, cmap.data + sub, at);
     } else if (fmt == 12) {
         if (!cf__ff_fits(sub, 8, cmap.len))
             return cf__ff_fail(f, "cmap format 12 past its end");
         at = cf__ff_u32(cmap.data + sub + 4);
         if (!cf__ff_fits(sub, at, cmap.len))
             return cf__ff_fail(f, "cmap format 12 past its end");
-        r = cmap12(f, face, m->cff, cmap.data + sub, at, &s, num_glyphs);
+        r = cmap12(&sc, cmap.data + sub, at);
     } else {
         return cf__ff_fail(f, "cmap format %u", fmt);
     }
+    s = sc.chars;
     if (r != 0) {
         cf_free(s.c);
         return r;
@@ -781,13 +802,7 @@ cf__fmeta_read(const unsigned char *data, size_t len, unsigned index,
     cf__ff_t f;
     int r;
     memset(out, 0, sizeof *out);
-    if (why != NULL && why_cap > 0)
-        why[0] = '\0';
-    f.data = data;
-    f.len = data != NULL ? len : 0;
-    f.name = "font";
-    f.why = why;
-    f.why_cap = why_cap;
+    cf__ff_init(&f, data, len, NULL, why, why_cap);
     r = read_face(&f, index, out);
     if (r != 0) {
         cf__fmeta_fini(out);
@@ -799,19 +814,26 @@ cf__fmeta_read(const unsigned char *data, size_t len, unsigned index,
 }
 
 bool
-cf__fmeta_has(const cf__fmeta_t *m, uint32_t c)
+cf__fmeta_ranges_hold(const uint32_t *ranges, size_t n, uint32_t a,
+                      uint32_t b)
 {
-    size_t lo = 0, hi = m->nranges;
+    size_t lo = 0, hi = n;
     while (lo < hi) {
         size_t mid = lo + (hi - lo) / 2;
-        if (c < m->ranges[2 * mid])
+        if (a < ranges[2 * mid])
             hi = mid;
-        else if (c > m->ranges[2 * mid + 1])
+        else if (a > ranges[2 * mid + 1])
             lo = mid + 1;
         else
-            return true;
+            return b <= ranges[2 * mid + 1];
     }
     return false;
+}
+
+bool
+cf__fmeta_has(const cf__fmeta_t *m, uint32_t c)
+{
+    return cf__fmeta_ranges_hold(m->ranges, m->nranges, c, c);
 }
 
 void

@@ -85,6 +85,16 @@ int cf__fmeta_read(const unsigned char *data, size_t len, unsigned index,
 /* Whether the face's charset holds c. */
 bool cf__fmeta_has(const cf__fmeta_t *m, uint32_t c);
 
+/* Whether ranges[0..2n) (first, last pairs, ascending, maximal) hold
+** [a, b] whole. */
+bool cf__fmeta_ranges_hold(const uint32_t *ranges, size_t n, uint32_t a,
+                           uint32_t b);
+
+/* fontconfig's comparisons of names, ASCII case: FcStrCmpIgnoreCase(a, b)
+** == 0, and FcStrCmpIgnoreBlanksAndCase(a, b[0..bn)) == 0. */
+bool cf__fmeta_same_ci(const char *a, const char *b);
+bool cf__fmeta_same_name(const char *a, const char *b, size_t bn);
+
 /* Release out's charset (harmless on an empty or released one). */
 void cf__fmeta_fini(cf__fmeta_t *m);
 

@@ -11,6 +11,19 @@
 
 #include "sfnt.h"
 
+void
+cf__ff_init(cf__ff_t *f, const unsigned char *data, size_t len,
+            const char *name, char *why, size_t why_cap)
+{
+    if (why != NULL && why_cap > 0)
+        why[0] = '\0';
+    f->data = data;
+    f->len = data != NULL ? len : 0;
+    f->name = name != NULL ? name : "font";
+    f->why = why;
+    f->why_cap = why_cap;
+}
+
 int
 cf__ff_fail(cf__ff_t *f, const char *fmt, ...)
 {

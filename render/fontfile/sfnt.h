@@ -29,6 +29,11 @@ typedef struct cf__ff {
     size_t why_cap;
 } cf__ff_t;
 
+/* f over data[0..len) (none when data is NULL), named name (NULL:
+** "font") in messages, which go to why (why_cap bytes, emptied first). */
+void cf__ff_init(cf__ff_t *f, const unsigned char *data, size_t len,
+                 const char *name, char *why, size_t why_cap);
+
 /* Write "<name>: <message>" to f->why; returns 1. */
 int cf__ff_fail(cf__ff_t *f, const char *fmt, ...)
 #if defined(__GNUC__)

@@ -36,47 +36,12 @@
 
 #include "font-cache.h"
 #include "testutil.h"
+#include "tool-fonts.h"
 
-static const cf__fm_source_t sources[] = {
-    { "/usr/share/texmf/fonts/opentype/public/lm", true },
-    { "/usr/share/texmf/fonts/opentype/public/lm-math", false },
-    { "/usr/share/fonts/truetype/cmu", true },
-    { "/usr/share/fonts/opentype/noto", true },
-};
-static const char *const accept[] = {
-    "Latin Modern Roman", "CMU Serif", "Noto Serif CJK SC",
-    "Latin Modern Math", "Latin Modern Sans", "CMU Sans Serif",
-    "Noto Sans CJK SC",
-};
+static const cf__fm_source_t *const sources = tool_font_dirs;
+static const char *const *const accept = tool_font_families;
 
 static char tmp[64];
-
-static unsigned char *
-slurp(const char *path, size_t *len)
-{
-    FILE *f = fopen(path, "rb");
-    unsigned char *d;
-    long n;
-    *len = 0;
-    if (f == NULL)
-        return NULL;
-    fseek(f, 0, SEEK_END);
-    n = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    d = malloc((size_t)n + 1);
-    *len = fread(d, 1, (size_t)n, f);
-    fclose(f);
-    return d;
-}
-
-static void
-spill(const char *path, const unsigned char *d, size_t n)
-{
-    FILE *f = fopen(path, "wb");
-    assert_non_null(f);
-    assert_int_equal(fwrite(d, 1, n, f), n);
-    assert_int_equal(fclose(f), 0);
-}
 
 static cf__fm_config_t *
 config(const char *cache)
@@ -202,7 +167,7 @@ test_damaged_copies(void **state)
     rmdir(path);
     snprintf(path, sizeof path, "%s/b/curvefig/faces.cache", tmp);
     cf__fm_config_free(config(path));
-    good = slurp(path, &len);
+    good = tu_read_file(path, &len);
     assert_non_null(good);
     n = cf__fcache_check(good, len);
     assert_true(n > 100);
@@ -245,11 +210,11 @@ test_damaged_copies(void **state)
         memcpy(copy, good, len);
         if (k >= 10)
             copy[24 + (size_t)(tu_rng_u01(&rng) * (double)(len - 24))] ^= 0x5a;
-        spill(path, copy, cut);
+        tu_write_file(path, copy, cut);
         c = config(path);
         assert_true(cf__fm_config_count(c) > 0);
         cf__fm_config_free(c);
-        again = slurp(path, &alen);
+        again = tu_read_file(path, &alen);
         assert_true(cf__fcache_check(again, alen) == n);
         free(again);
     }
@@ -296,13 +261,13 @@ test_hardening(void **state)
     snprintf(real, sizeof real, "%s/e/curvefig", tmp);
     assert_int_equal(mkdir(real, 0700), 0);
     snprintf(target, sizeof target, "%s/target", tmp);
-    spill(target, (const unsigned char *)"keep", 4);
+    tu_write_file(target, (const unsigned char *)"keep", 4);
     snprintf(path, sizeof path, "%s/faces.cache", real);
     assert_int_equal(symlink(target, path), 0);
     cf__fm_config_free(config(path));
     {
         size_t n;
-        unsigned char *t = slurp(target, &n);
+        unsigned char *t = tu_read_file(target, &n);
         assert_int_equal(n, 4);
         assert_memory_equal(t, "keep", 4);
         free(t);

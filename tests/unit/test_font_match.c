@@ -15,7 +15,7 @@
 ** fontconfig takes its default languages from the environment once per
 ** process: the test runs itself again under several LANG, LC_ALL and
 ** FC_LANG settings (--child).  Then allocation failure: tu_fail_loop over
-** the configuration's reading, a match and a sort.
+** a match and a sort (the configuration's reading: test_font_cache.c).
 */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -28,68 +28,19 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <cairo-ft.h>
 #include <cmocka.h>
 #include <fontconfig/fontconfig.h>
 
 #include "font-cache.h"
+#include "font-faces.h"
 #include "font-match.h"
 #include "testutil.h"
+#include "tool-fonts.h"
 
 const char *cf__tool_fonts_init(void);
 
-static const cf__fm_source_t sources[] = {
-    { "/usr/share/texmf/fonts/opentype/public/lm", true },
-    { "/usr/share/texmf/fonts/opentype/public/lm-math", false },
-    { "/usr/share/fonts/truetype/cmu", true },
-    { "/usr/share/fonts/opentype/noto", true },
-};
-static const char *const accept[] = {
-    "Latin Modern Roman", "CMU Serif", "Noto Serif CJK SC",
-    "Latin Modern Math", "Latin Modern Sans", "CMU Sans Serif",
-    "Noto Sans CJK SC",
-};
-
-/* font-faces.c's pattern of a description. */
-static FcPattern *
-make_pattern(const char *family, bool italic, bool bold, int size,
-             const char *lang)
-{
-    const double dpi = 72.0;
-    FcPattern *p = FcPatternBuild(
-        NULL, FC_WEIGHT, FcTypeDouble,
-        FcWeightFromOpenTypeDouble(bold ? 700 : 400), FC_SLANT,
-        FcTypeInteger, italic ? FC_SLANT_ITALIC : FC_SLANT_ROMAN, FC_WIDTH,
-        FcTypeInteger, FC_WIDTH_NORMAL, FC_VARIABLE, FcTypeBool, FcDontCare,
-        FC_DPI, FcTypeDouble, dpi, FC_SIZE, FcTypeDouble,
-        size * (72. / 1024. / dpi), FC_PIXEL_SIZE, FcTypeDouble,
-        size / 1024., (char *)NULL);
-    const char *f = family;
-    cairo_font_options_t *fo;
-    while (true) {
-        const char *comma = strchr(f, ',');
-        size_t n = comma != NULL ? (size_t)(comma - f) : strlen(f);
-        char name[256];
-        if (n < sizeof name) {
-            memcpy(name, f, n);
-            name[n] = '\0';
-            FcPatternAddString(p, FC_FAMILY, (const FcChar8 *)name);
-        }
-        if (comma == NULL)
-            break;
-        f = comma + 1;
-    }
-    FcPatternAddString(p, FC_LANG, (const FcChar8 *)lang);
-    FcConfigSubstitute(NULL, p, FcMatchPattern);
-    fo = cairo_font_options_create();
-    cairo_font_options_set_hint_metrics(fo, CAIRO_HINT_METRICS_OFF);
-    cairo_font_options_set_hint_style(fo, CAIRO_HINT_STYLE_NONE);
-    cairo_font_options_set_antialias(fo, CAIRO_ANTIALIAS_GRAY);
-    cairo_ft_font_options_substitute(fo, p);
-    cairo_font_options_destroy(fo);
-    FcDefaultSubstitute(p);
-    return p;
-}
+static const cf__fm_source_t *const sources = tool_font_dirs;
+static const char *const *const accept = tool_font_families;
 
 static FcFontSet *
 config_fonts(void)
@@ -242,7 +193,7 @@ test_identity(void **state)
                 for (li = 0; li < sizeof langs / sizeof langs[0]; li++) {
                     bool it = style & 1, bo = style >> 1;
                     FcFontSet *fonts = config_fonts();
-                    FcPattern *p = make_pattern(families[fi], it, bo,
+                    FcPattern *p = cf__nfaces_pattern(families[fi], it, bo,
                                                 sizes[si], langs[li]);
                     FcResult res;
                     FcPattern *m = FcFontSetMatch(NULL, &fonts, 1, p, &res);
@@ -294,19 +245,6 @@ test_identity(void **state)
 static cf__fm_config_t *fail_config;
 
 static cf_status_t
-config_op(cf_diag_t *diag)
-{
-    cf__fm_config_t *c;
-    int r = cf__fcache_config(sources, 4, accept, 7, NULL, &c, NULL, 0);
-    (void)diag;
-    if (r < 0)
-        return CF_STATUS_NO_MEMORY;
-    assert_int_equal(r, 0);
-    cf__fm_config_free(c);
-    return CF_STATUS_OK;
-}
-
-static cf_status_t
 sort_op(cf_diag_t *diag)
 {
     cf__fm_face_t *list, first;
@@ -330,7 +268,6 @@ test_alloc_failure(void **state)
         skip();
     tu_fail_loop("font-match sort", sort_op, false);
     cf__fm_config_free(fail_config);
-    tu_fail_loop("font-match configuration", config_op, false);
 }
 
 /* The environments the children run in: LANG, LC_ALL, FC_LANG. */

@@ -29,6 +29,7 @@
 #include "fontmeta.h"
 #include "sfnt.h"
 #include "testutil.h"
+#include "tool-fonts.h"
 
 typedef struct lang_set {
     const char *name;
@@ -81,10 +82,23 @@ fc_langs(char **names, size_t max)
     return n;
 }
 
+/* The first language before i with language i's characters (i: none). */
+static size_t
+same_as_earlier(char **names, size_t i)
+{
+    size_t k;
+    for (k = 0; k < i; k++)
+        if (FcCharSetEqual(FcLangGetCharSet((FcChar8 *)names[k]),
+                           FcLangGetCharSet((FcChar8 *)names[i])))
+            break;
+    return k;
+}
+
 static int
 generate(void)
 {
     static uint32_t r[2 * 65536];
+    static size_t firsts[512];
     char *names[512];
     size_t n = fc_langs(names, 512), i, k, first = 0, col = 0;
     unsigned pages;
@@ -96,6 +110,8 @@ generate(void)
     for (i = 0; i < n; i++) {
         size_t m = ranges_of(FcLangGetCharSet((FcChar8 *)names[i]), r,
                              65536, &pages);
+        if (same_as_earlier(names, i) < i)
+            m = 0;   /* written once, for the first of them */
         for (k = 0; k < m; k++) {
             printf("%s0x%x, 0x%x,", col == 0 ? "    " : " ",
                    (unsigned)r[2 * k], (unsigned)r[2 * k + 1]);
@@ -110,10 +126,16 @@ generate(void)
     for (i = 0; i < n; i++) {
         size_t m = ranges_of(FcLangGetCharSet((FcChar8 *)names[i]), r,
                              65536, &pages);
-        printf("    { \"%s\", %u, %zu, %zu },\n", names[i], pages, first, m);
-        first += m;
-        free(names[i]);
+        /* a language whose characters are an earlier one's shares them */
+        size_t k2 = same_as_earlier(names, i);
+        printf("    { \"%s\", %u, %zu, %zu },\n", names[i], pages,
+               k2 < i ? firsts[k2] : first, m);
+        firsts[i] = k2 < i ? firsts[k2] : first;
+        if (k2 == i)
+            first += m;
     }
+    for (i = 0; i < n; i++)
+        free(names[i]);
     printf("};\n");
     return 0;
 }
@@ -149,12 +171,6 @@ test_table(void **state)
     }
 }
 
-static const char *const dirs[] = {
-    "/usr/share/texmf/fonts/opentype/public/lm",
-    "/usr/share/texmf/fonts/opentype/public/lm-math",
-    "/usr/share/fonts/truetype/cmu",
-    "/usr/share/fonts/opentype/noto",
-};
 
 static const char *const asked[] = {
     "en", "en-us", "en-gb", "ru", "ru-ru", "uk", "bg", "sr", "zh-cn", "zh-tw",
@@ -170,8 +186,8 @@ test_faces(void **state)
 {
     size_t d, faces = 0;
     (void)state;
-    for (d = 0; d < sizeof dirs / sizeof dirs[0]; d++) {
-        DIR *dir = opendir(dirs[d]);
+    for (d = 0; d < TOOL_FONT_DIRS; d++) {
+        DIR *dir = opendir(tool_font_dirs[d].dir);
         struct dirent *e;
         if (dir == NULL)
             continue;
@@ -183,7 +199,7 @@ test_faces(void **state)
             unsigned id, nfaces;
             if (e->d_name[0] == '.')
                 continue;
-            snprintf(path, sizeof path, "%s/%s", dirs[d], e->d_name);
+            snprintf(path, sizeof path, "%s/%s", tool_font_dirs[d].dir, e->d_name);
             assert_null(cf__ff_map_file(path, &map, &len, &err));
             nfaces = cf__fmeta_count(map, len);
             for (id = 0; id < nfaces; id++) {

@@ -33,13 +33,8 @@
 #include "fontmeta.h"
 #include "sfnt.h"
 #include "testutil.h"
+#include "tool-fonts.h"
 
-static const char *const dirs[] = {
-    "/usr/share/texmf/fonts/opentype/public/lm",
-    "/usr/share/texmf/fonts/opentype/public/lm-math",
-    "/usr/share/fonts/truetype/cmu",
-    "/usr/share/fonts/opentype/noto",
-};
 
 static int
 by_name(const void *a, const void *b)
@@ -52,8 +47,8 @@ static size_t
 font_files(char **out, size_t max)
 {
     size_t n = 0, d;
-    for (d = 0; d < sizeof dirs / sizeof dirs[0]; d++) {
-        DIR *dir = opendir(dirs[d]);
+    for (d = 0; d < TOOL_FONT_DIRS; d++) {
+        DIR *dir = opendir(tool_font_dirs[d].dir);
         struct dirent *e;
         size_t first = n;
         if (dir == NULL)
@@ -64,8 +59,8 @@ font_files(char **out, size_t max)
                             && strcmp(e->d_name + len - 4, ".ttf") != 0
                             && strcmp(e->d_name + len - 4, ".ttc") != 0))
                 continue;
-            out[n] = malloc(strlen(dirs[d]) + len + 2);
-            sprintf(out[n], "%s/%s", dirs[d], e->d_name);
+            out[n] = malloc(strlen(tool_font_dirs[d].dir) + len + 2);
+            sprintf(out[n], "%s/%s", tool_font_dirs[d].dir, e->d_name);
             n++;
         }
         closedir(dir);

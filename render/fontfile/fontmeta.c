@@ -664,7 +664,12 @@ read_charset(cf__ff_t *f, const cf__ff_face_t *face, cf__fmeta_t *m)
         cf_free(s.c);
         return r;
     }
-    qsort(s.c, s.n, sizeof *s.c, by_char);
+    /* the subtables give the characters in order, mostly: sorted only
+    ** when they did not (a CJK collection's face has 65,000) */
+    for (i = 1; i < s.n && s.c[i - 1] < s.c[i]; i++)
+        ;
+    if (i < s.n)
+        qsort(s.c, s.n, sizeof *s.c, by_char);
     for (i = 0, n = 0; i < s.n; i++)
         if (i == 0 || s.c[i] > s.c[i - 1] + 1)
             n++;

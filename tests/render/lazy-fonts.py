@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """fontconfig and FreeType are opened at their first call, not at start;
-HarfBuzz only for a label the renderer's own shaper hands on; fontconfig
-and expat not at all for labels in the tool's own configuration.
+HarfBuzz only for a label the renderer's own shaper hands on; no font
+library at all for a labelled PDF or SVG in the tool's own configuration.
 
     lazy-fonts.py CURVEFIG
 
@@ -9,8 +9,9 @@ A `curvefig` whose fontconfig and FreeType functions are trampolines
 (render/tool/lazy.c) is linked without them: a figure without labels is
 rendered without loading them or what they bring (expat, libpng, brotli),
 as the loader reports the files it loads (LD_DEBUG=files); a figure with
-a label loads them and its PDF embeds its font; `--version` (which builds
-the font configuration) works.  Labels whose items are all simple
+a label loads them under another configuration (FONTCONFIG_FILE), its
+PNG loads FreeType in any, and its PDF embeds its font; `--version`
+(which builds the font configuration) works.  Labels whose items are all simple
 (render/fontfile/shape.h: "$P_0$", "abc", "$x^2$ and text", Greek,
 Cyrillic, digits, ligatures, kerning pairs) are shaped by the renderer's
 own shaper: a figure of them renders in SVG and PDF without loading
@@ -19,9 +20,10 @@ label with a combining mark, which that shaper hands on, loads HarfBuzz
 and renders.  When the tool uses its own font configuration (render/tool/fonts.c,
 `--version`), it chooses the faces itself (render/backends/font-match.h)
 from its fonts' metadata cache: a label, and a labelled shipped figure
-(markova-2.17, PDF and SVG), load neither libfontconfig nor libexpat,
-with the cache made by the first run (a fresh HOME) and read by the
-next, whose PDF is the same.  The same figure rendered to PDF and to SVG
+(markova-2.17, PDF and SVG), load no font library at all (libfontconfig,
+libexpat, libfreetype, libpng, brotli), with the cache made by the first
+run (a fresh HOME) and read by the next, whose PDF is the same; a
+label's PNG, drawn through cairo, loads FreeType.  The same figure rendered to PDF and to SVG
 calls no FreeType function: its glyphs' outlines and ink extents are read
 from the font files (render/backends/font-outlines.h), so the tool's
 trampolines never resolve FreeType's glyph functions (LD_DEBUG=bindings:
@@ -52,7 +54,6 @@ MARK = PLAIN.replace('"plain"', '"mark"') + \
 HARFBUZZ = ("libharfbuzz", "libglib-2.0", "libgraphite2", "libpcre2")
 
 
-NO_FONTCONFIG = ("libfontconfig", "libexpat")
 SHIPPED = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..",
                        "..", "figures", "markova-2.17.lua")
 
@@ -125,8 +126,16 @@ def harfbuzz_failures(tool, tmp):
         if early:
             failures.append("simple labels (%s) loaded %s"
                             % (fmt, ", ".join(early)))
-        if not any(o.startswith("libfreetype") for o in objs):
-            failures.append("simple labels (%s) did not load FreeType" % fmt)
+        # the tool's own faces and outlines: no font library at all; under
+        # another configuration fontconfig (which brings FreeType)
+        if own_configuration(tool):
+            fonts = [o for o in objs if o.startswith(FONT_LIBRARIES)]
+            if fonts:
+                failures.append("simple labels (%s) loaded %s"
+                                % (fmt, ", ".join(fonts)))
+        elif not any(o.startswith("libfontconfig") for o in objs):
+            failures.append("simple labels (%s) did not load fontconfig"
+                            % fmt)
     objs = loaded(tool, os.path.join(tmp, "mark.lua"), tmp, "svg")
     if not any(o.startswith("libharfbuzz") for o in objs):
         failures.append("a combining mark did not load HarfBuzz")
@@ -151,7 +160,7 @@ def own_configuration(tool):
 def own_failures(tool, tmp, label):
     """What the test of the tool's own faces finds wrong."""
     failures = []
-    early = [o for o in label if o.startswith(NO_FONTCONFIG)]
+    early = [o for o in label if o.startswith(FONT_LIBRARIES)]
     if early:
         failures.append("a label in the tool's own configuration loaded %s"
                         % ", ".join(early))
@@ -163,7 +172,7 @@ def own_failures(tool, tmp, label):
             out = os.path.join(tmp, run)
             os.makedirs(out, exist_ok=True)
             objs = loaded(tool, SHIPPED, out, fmt, home)
-            early = [o for o in objs if o.startswith(NO_FONTCONFIG)]
+            early = [o for o in objs if o.startswith(FONT_LIBRARIES)]
             if early:
                 failures.append("markova-2.17 (%s, %s run) loaded %s"
                                 % (fmt, run, ", ".join(early)))
@@ -197,10 +206,16 @@ def main(argv):
                             % ", ".join(early))
         own = own_configuration(tool)
         label = loaded(tool, os.path.join(tmp, "label.lua"), tmp)
-        for lib in ("libfreetype",) if own else ("libfontconfig",
-                                                 "libfreetype"):
-            if not any(o.startswith(lib) for o in label):
-                failures.append("a label did not load %s" % lib)
+        if own:
+            # a PNG draws its glyphs through cairo: FreeType is loaded
+            # there (the check sees a library when one is loaded)
+            png = loaded(tool, os.path.join(tmp, "label.lua"), tmp, "png")
+            if not any(o.startswith("libfreetype") for o in png):
+                failures.append("a label's PNG did not load libfreetype")
+        else:
+            for lib in ("libfontconfig", "libfreetype"):
+                if not any(o.startswith(lib) for o in label):
+                    failures.append("a label did not load %s" % lib)
         if own:
             failures += own_failures(tool, tmp, label)
         with open(os.path.join(tmp, "label.pdf"), "rb") as f:
@@ -218,8 +233,9 @@ def main(argv):
         print("FAIL: " + f)
     if not failures:
         print("fonts opened on the first label: %d objects without labels, "
-              "%d with; HarfBuzz only for a combining mark; no FreeType "
-              "call for a labelled PDF or SVG"
+              "%d with; HarfBuzz only for a combining mark; no font "
+              "library for a labelled PDF or SVG in the tool's own "
+              "configuration"
               % (len(plain), len(label)))
     return 1 if failures else 0
 

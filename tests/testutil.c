@@ -277,3 +277,15 @@ tu_write_file(const char *path, const void *data, size_t n)
     assert_int_equal(fwrite(data, 1, n, f), n);
     assert_int_equal(fclose(f), 0);
 }
+
+unsigned
+tu_sample(void)
+{
+    const char *v = getenv("CF_TEST_SAMPLE");
+    char *end;
+    long k;
+    if (v == NULL || *v == '\0')
+        return 1;
+    k = strtol(v, &end, 10);
+    return *end == '\0' && k >= 1 && k <= 1000 ? (unsigned)k : 1;
+}

@@ -68,6 +68,13 @@ size_t tu_figure_scripts(const char *dir, char **names, size_t max);
 void tu_read_header(const char *root, const char *name, char *buf,
                     size_t size);
 
+/* 1 in how many cases of a large grid of comparisons a test runs: the
+** environment's CF_TEST_SAMPLE (a whole number from 1 to 1000), else 1.
+** The sanitizer build sets it for the tests that compare every glyph or
+** every request with an oracle (tests/render/meson.build), which it runs
+** 5 to 10 times slower: the release build runs the whole grid. */
+unsigned tu_sample(void);
+
 /* The bytes of the file at path, malloc'd (*len set; a NUL after them),
 ** NULL when it cannot be read whole (the caller frees it); and n bytes
 ** written to path (failing the test when they cannot be). */

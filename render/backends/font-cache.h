@@ -37,9 +37,16 @@
 **           languages 8 x u32, ranges u32, then first and last u32 of
 **           each; 0 ranges: the previous face's of the file (the faces
 **           of a collection mostly share one cmap).
-** A file's entry is checked whole when it is used (a face's ranges
-** ascending, apart and in Unicode); the configuration then takes its
-** accepted faces.
+** A file's entry is checked when it is used: its structure whole (every
+** length and count in bounds); a face of an accepted family field by
+** field, the others only skipped.  The file stays mapped while the
+** configuration lives (render/backends/font-match.h; a cache is
+** replaced by rename, never written in place), and a face's
+** charset is a view of its ranges there, checked (ascending, apart, in
+** Unicode) the first time the face's coverage is used: a face found
+** damaged then has its charset read from its file, and the cache file is
+** removed so that the next run writes it anew.  cf__fcache_check checks
+** every field and range of every face.
 */
 #ifndef CURVEFIG_RENDER_FONT_CACHE_H
 #define CURVEFIG_RENDER_FONT_CACHE_H

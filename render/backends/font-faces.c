@@ -477,7 +477,7 @@ bool
 cf__nface_has_char(const cf__nface_t *f, unsigned c)
 {
     if (f->src->pattern == NULL)
-        return cf__fmeta_has(&f->src->fm.font->meta, c);
+        return cf__fm_font_has(f->src->fm.font, c);
     return f->src->charset != NULL && FcCharSetHasChar(f->src->charset, c);
 }
 

@@ -5,12 +5,16 @@
 ** where the tool's fonts can differ: the others are equal for every
 ** font); the sort is qsort over the same comparison, as FcFontSetSort's.
 */
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
+#include <unistd.h>
 
 #include "curvefig/core.h"
 #include "font-match.h"
+#include "sfnt.h"
 
 #define MAX_LANGS 8
 #define LANG_LEN 64
@@ -19,6 +23,7 @@
 struct cf__fm_config {
     cf__fm_font_t *fonts;
     size_t nfonts;
+    cf__fm_mapped_t *mapped;           /* the cache its views are of */
     char langs[MAX_LANGS][LANG_LEN];   /* fontconfig's default languages */
     size_t nlangs;
 };
@@ -166,7 +171,169 @@ free_fonts(cf__fm_font_t *fonts, size_t n)
     for (i = 0; i < n; i++) {
         cf_free(fonts[i].file);
         cf__fmeta_fini(&fonts[i].meta);
+        free(fonts[i].reread);
     }
+}
+
+/* ---- charsets ----------------------------------------------------------- */
+
+/* A font's charset as read: decoded ranges (w) or the cache's bytes (b),
+** n pairs. */
+typedef struct charset {
+    const uint32_t *w;
+    const unsigned char *b;
+    size_t n;
+} charset_t;
+
+static inline uint32_t
+cs_at(const charset_t *s, size_t i)
+{
+    return s->w != NULL ? s->w[i] : cf__fm_le32(s->b + 4 * i);
+}
+
+bool
+cf__fm_ranges_valid(const unsigned char *p, size_t n)
+{
+    /* one test a range */
+    int64_t last = -2;
+    bool bad = false;
+    size_t i;
+    for (i = 0; i < n; i++) {
+        uint32_t a = cf__fm_le32(p + 8 * i), b = cf__fm_le32(p + 8 * i + 4);
+        bad |= (int64_t)a <= last + 1 || a > b || b > 0x10ffff;
+        last = b;
+    }
+    return !bad;
+}
+
+/* The slow path of a view's first use, one thread at a time (the fonts'
+** states are read without it once set). */
+static pthread_mutex_t check_lock = PTHREAD_MUTEX_INITIALIZER;
+
+/* A damaged view: the face's charset read again from its file, into the
+** C library's heap (the configuration may outlive the library's
+** allocator of the moment); none when the file cannot be read. */
+static void
+reread(cf__fm_font_t *f)
+{
+    void *map = NULL;
+    size_t len = 0;
+    int err;
+    cf__fmeta_t m;
+    char why[256];
+    if (f->mapped != NULL && f->mapped->cache != NULL) {
+        /* the next run writes the cache anew */
+        (void)unlink(f->mapped->cache);
+        free(f->mapped->cache);
+        f->mapped->cache = NULL;
+    }
+    if (cf__ff_map_file(f->file, &map, &len, &err) != NULL)
+        return;
+    if (cf__fmeta_read(map, len, f->meta.index, &m, why, sizeof why) == 0) {
+        if (m.nranges > 0
+            && (f->reread = malloc(2 * m.nranges * sizeof *f->reread))
+                   != NULL) {
+            memcpy(f->reread, m.ranges, 2 * m.nranges * sizeof *f->reread);
+            f->nreread = m.nranges;
+        }
+        cf__fmeta_fini(&m);
+    }
+    munmap(map, len);
+}
+
+/* The font's charset, its view checked at its first use. */
+static charset_t
+charset_of(const cf__fm_font_t *cf)
+{
+    /* the state and the charset read again change once, under
+    ** check_lock; the font is the configuration's (not const) */
+    cf__fm_font_t *f = (cf__fm_font_t *)cf;
+    charset_t s = { f->meta.ranges, NULL, f->meta.nranges };
+    int state;
+    if (f->view == NULL)
+        return s;
+    state = __atomic_load_n(&f->state, __ATOMIC_ACQUIRE);
+    if (state == 0) {
+        pthread_mutex_lock(&check_lock);
+        state = f->state;
+        if (state == 0) {
+            state = cf__fm_ranges_valid(f->view, f->meta.nranges) ? 1 : 2;
+            if (state == 2)
+                reread(f);
+            __atomic_store_n(&f->state, state, __ATOMIC_RELEASE);
+        }
+        pthread_mutex_unlock(&check_lock);
+    }
+    if (state == 1) {
+        s.w = NULL;
+        s.b = f->view;
+    } else {
+        s.w = f->reread;
+        s.n = f->nreread;
+    }
+    return s;
+}
+
+/* Whether s holds [a, b] whole. */
+static bool
+cs_holds(const charset_t *s, uint32_t a, uint32_t b)
+{
+    size_t lo = 0, hi = s->n;
+    if (s->w != NULL)
+        return cf__fmeta_ranges_hold(s->w, s->n, a, b);
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (a < cs_at(s, 2 * mid))
+            hi = mid;
+        else if (a > cs_at(s, 2 * mid + 1))
+            lo = mid + 1;
+        else
+            return b <= cs_at(s, 2 * mid + 1);
+    }
+    return false;
+}
+
+bool
+cf__fm_font_has(const cf__fm_font_t *f, uint32_t c)
+{
+    charset_t s = charset_of(f);
+    return cs_holds(&s, c, c);
+}
+
+size_t
+cf__fm_font_nranges(const cf__fm_font_t *f)
+{
+    return charset_of(f).n;
+}
+
+bool
+cf__fm_font_range(const cf__fm_font_t *f, size_t i, uint32_t *a,
+                  uint32_t *b)
+{
+    charset_t s = charset_of(f);
+    if (i >= s.n)
+        return false;
+    *a = cs_at(&s, 2 * i);
+    *b = cs_at(&s, 2 * i + 1);
+    return true;
+}
+
+void
+cf__fm_mapped_free(cf__fm_mapped_t *m)
+{
+    /* made with its mapping (font-cache.c) */
+    if (m != NULL) {
+        munmap(m->map, m->len);
+        free(m->cache);
+        cf_free(m);
+    }
+}
+
+void
+cf__fm_config_keep(cf__fm_config_t *c, cf__fm_mapped_t *m)
+{
+    cf__fm_mapped_free(c->mapped);
+    c->mapped = m;
 }
 
 int
@@ -220,6 +387,7 @@ cf__fm_config_free(cf__fm_config_t *c)
         return;
     free_fonts(c->fonts, c->nfonts);
     cf_free(c->fonts);
+    cf__fm_mapped_free(c->mapped);
     cf_free(c);
 }
 
@@ -410,29 +578,30 @@ typedef struct cover {
 /* Merge the font's ranges into u; whether it added characters (-1 out of
 ** memory). */
 static int
-merge(cover_t *u, const cf__fmeta_t *m)
+merge(cover_t *u, const cf__fm_font_t *font)
 {
-    size_t i = 0, j = 0, n = 0, need = u->n + m->nranges;
+    charset_t s = charset_of(font);
+    size_t i = 0, j = 0, n = 0, need = u->n + s.n;
     uint32_t *t;
     bool adds = false;
-    for (j = 0; j < m->nranges && !adds; j++)
-        adds = !cf__fmeta_ranges_hold(u->r, u->n, m->ranges[2 * j],
-                                      m->ranges[2 * j + 1]);
+    for (j = 0; j < s.n && !adds; j++)
+        adds = !cf__fmeta_ranges_hold(u->r, u->n, cs_at(&s, 2 * j),
+                                      cs_at(&s, 2 * j + 1));
     if (!adds)
         return 0;
     t = cf_alloc_array(2 * need, sizeof *t);
     if (t == NULL)
         return -1;
     j = 0;
-    while (i < u->n || j < m->nranges) {
+    while (i < u->n || j < s.n) {
         uint32_t a, b;
-        if (j == m->nranges || (i < u->n && u->r[2 * i] < m->ranges[2 * j])) {
+        if (j == s.n || (i < u->n && u->r[2 * i] < cs_at(&s, 2 * j))) {
             a = u->r[2 * i];
             b = u->r[2 * i + 1];
             i++;
         } else {
-            a = m->ranges[2 * j];
-            b = m->ranges[2 * j + 1];
+            a = cs_at(&s, 2 * j);
+            b = cs_at(&s, 2 * j + 1);
             j++;
         }
         if (n > 0 && a <= t[2 * n - 1] + 1) {
@@ -496,7 +665,7 @@ cf__fm_sort(const cf__fm_config_t *c, const char *family, bool italic,
     }
     qsort(order, c->nfonts, sizeof *order, by_score);
     for (i = 0; i < c->nfonts; i++) {
-        int adds = merge(&u, &order[i]->font->meta);
+        int adds = merge(&u, order[i]->font);
         if (adds < 0) {
             cf_free(u.r);
             cf_free(nodes);

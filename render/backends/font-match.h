@@ -32,22 +32,50 @@
 ** Where the tool's configuration is something this does not model (a
 ** face refused by the reader, a subdirectory, an optical size range),
 ** the configuration is declined and fontconfig remains the matcher.  Memory comes from the library's
-** allocator (cf_malloc); a configuration is used by one thread at a time.
+** allocator (cf_malloc); a configuration is used by one thread at a time,
+** apart from its fonts' coverage (cf__fm_font_has).
 */
 #ifndef CURVEFIG_RENDER_FONT_MATCH_H
 #define CURVEFIG_RENDER_FONT_MATCH_H
 
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 
 #include "fontlangs.h"
 #include "fontmeta.h"
 
-/* A font of the configuration. */
+/* Where the charsets of a configuration's fonts read from the fonts'
+** metadata cache are (render/backends/font-cache.h): the cache file
+** mapped, kept as long as the configuration. */
+typedef struct cf__fm_mapped {
+    void *map;
+    size_t len;
+    char *cache;       /* the cache file (the C library's heap), removed
+                          when a charset in it is found damaged (NULL:
+                          none) */
+} cf__fm_mapped_t;
+
+/* A font of the configuration.  Its charset is meta.ranges, or, for a
+** font read from the cache, a view of the cache's bytes (meta.nranges
+** pairs of little-endian u32, meta.ranges NULL) checked (ascending,
+** apart, in Unicode) the first time the font's coverage is asked for
+** (cf__fm_font_has, the sort's trimming, cf__fm_font_range); a view
+** found damaged is replaced by the charset read again from the font's
+** file (none when that fails), and the cache file is removed so that the
+** next run writes it anew.  The languages are the cache's: the matching
+** needs no charset. */
 typedef struct cf__fm_font {
     char *file;
     cf__fmeta_t meta;
     cf__flangset_t langs;
+    const unsigned char *view;   /* NULL: meta.ranges */
+    cf__fm_mapped_t *mapped;     /* the view's cache */
+    int state;                   /* the view: 0 not checked, 1 good, 2
+                                    damaged (reread) */
+    uint32_t *reread;            /* the file's charset (the C library's
+                                    heap), nreread pairs */
+    size_t nreread;
 } cf__fm_font_t;
 
 typedef struct cf__fm_config cf__fm_config_t;
@@ -79,6 +107,36 @@ int cf__fm_config_of(cf__fm_font_t *fonts, size_t n,
                      cf__fm_config_t **out, char *why, size_t why_cap);
 
 void cf__fm_config_free(cf__fm_config_t *c);
+
+/* The configuration keeps m (cf_malloc'd; the mapping unmapped and m
+** freed with it). */
+void cf__fm_config_keep(cf__fm_config_t *c, cf__fm_mapped_t *m);
+
+/* Release m (unmapped, freed; harmless on NULL). */
+void cf__fm_mapped_free(cf__fm_mapped_t *m);
+
+/* Whether the font's charset holds c (checked at its first use: see
+** cf__fm_font_t).  Safe from several threads at once. */
+bool cf__fm_font_has(const cf__fm_font_t *f, uint32_t c);
+
+/* The number of ranges of the font's charset, and its range i in *a,
+** *b (false past the last). */
+size_t cf__fm_font_nranges(const cf__fm_font_t *f);
+bool cf__fm_font_range(const cf__fm_font_t *f, size_t i, uint32_t *a,
+                       uint32_t *b);
+
+/* Whether p[0..8n) is a charset as the cache holds it: n pairs of
+** little-endian u32 first and last, ascending, apart (maximal ranges),
+** at most U+10FFFF. */
+bool cf__fm_ranges_valid(const unsigned char *p, size_t n);
+
+/* The little-endian u32 at p. */
+static inline uint32_t
+cf__fm_le32(const unsigned char *p)
+{
+    return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16
+           | (uint32_t)p[3] << 24;
+}
 
 /* Whether one of the face's families is one of accept[0..n-1] (case
 ** ignored, as <selectfont> compares). */

@@ -131,7 +131,7 @@ same_face(const char *what, int k, FcPattern *p, const cf__fm_face_t *f)
                      m.xx, m.xy, m.yx, m.yy,
                      f->sheared ? "sheared" : "identity");
         else if (FcPatternGetCharSet(p, FC_CHARSET, 0, &cs) != FcResultMatch
-                 || !cf__fmeta_has(&f->font->meta, 'A')
+                 || !cf__fm_font_has(f->font, 'A')
                         != !FcCharSetHasChar(cs, 'A'))
             snprintf(diff, sizeof diff, "charset");
     }

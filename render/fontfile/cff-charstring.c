@@ -13,6 +13,10 @@
 **        whose count sets the bytes of the masks that follow those two;
 **   the arithmetic a subroutine number could be computed by (add, sub,
 **        mul, div, neg, abs, drop, exch, dup); the rest clear the stack.
+** When asked, the scan also lists where each call's number is written
+** (the integer just before it) and each hint mask inside a subroutine,
+** or says that a number was computed (cf__cff_sites_t), so that the
+** subset can renumber the subroutines.
 ** A glyph that calls outside its INDEX, nests deeper or overflows the
 ** stack is damaged (1).  The work is bounded: the glyphs of one subset
 ** share a budget of charstring bytes interpreted, calls included
@@ -21,6 +25,7 @@
 */
 #include <math.h>
 
+#include "grow.h"
 #include "sfnt.h"
 
 #define MAX_DEPTH 10
@@ -34,13 +39,45 @@ typedef struct scan {
     size_t stems;
     long *budget;
     int ended;
+    cf__cff_sites_t *sites;
 } scan_t;
 
-static int run(scan_t *s, const unsigned char *p, size_t len, int depth);
+static int run(scan_t *s, const unsigned char *p, size_t len, int depth,
+               int owner, size_t item);
 
-static int
-call(scan_t *s, cf__cff_subrs_t *subrs, int depth, const char *kind)
+/* A site met (sites wanted) in item of owner. */
+static void
+site(scan_t *s, int owner, size_t item, const unsigned char *at, size_t len,
+     int kind, unsigned old)
 {
+    cf__cff_sites_t *w = s->sites;
+    cf__cff_site_t *v;
+    if (w == NULL || w->failed)
+        return;
+    v = cf__grow_array(w->v, &w->cap, w->n + 1, sizeof *w->v, 64);
+    if (v == NULL) {
+        w->failed = 1;
+        return;
+    }
+    w->v = v;
+    v += w->n++;
+    v->owner = owner;
+    v->owner_fd = owner == CF__CFF_IN_LOCAL ? w->fd : 0;
+    v->item = owner == CF__CFF_IN_GLYPH ? w->glyph : item;
+    v->at = at;
+    v->len = len;
+    v->kind = kind;
+    v->fd = kind == CF__CFF_SITE_LOCAL ? w->fd : 0;
+    v->old = old;
+}
+
+/* A call; lit: the bytes of the number it calls when that is the literal
+** integer just before it, else NULL. */
+static int
+call(scan_t *s, cf__cff_subrs_t *subrs, int depth, const char *kind,
+     int owner, size_t item, const unsigned char *lit, size_t lit_len)
+{
+    int global = subrs == s->global;
     double v;
     long k;
     size_t pos, len;
@@ -63,7 +100,13 @@ call(scan_t *s, cf__cff_subrs_t *subrs, int depth, const char *kind)
     if (cf__cff_index_item(s->f, subrs->index, (size_t)k, &pos, &len))
         return 1;
     subrs->used[k] = 1;
-    return run(s, subrs->index->t + pos, len, depth + 1);
+    if (s->sites != NULL && lit == NULL)
+        s->sites->computed = 1;
+    else if (lit != NULL)
+        site(s, owner, item, lit, lit_len, global ? CF__CFF_SITE_GLOBAL :
+             CF__CFF_SITE_LOCAL, (unsigned)k);
+    return run(s, subrs->index->t + pos, len, depth + 1,
+               global ? CF__CFF_IN_GLOBAL : CF__CFF_IN_LOCAL, (size_t)k);
 }
 
 /* An arithmetic operator (12 x) on the stack; 0 when x is none of
@@ -115,9 +158,10 @@ arith(scan_t *s, unsigned x)
 }
 
 static int
-run(scan_t *s, const unsigned char *p, size_t len, int depth)
+run(scan_t *s, const unsigned char *p, size_t len, int depth, int owner,
+    size_t item)
 {
-    size_t i = 0;
+    size_t i = 0, lit = 0, lit_end = (size_t)-1;
     while (i < len && !s->ended) {
         unsigned b0 = p[i];
         if (--*s->budget < 0)
@@ -135,7 +179,10 @@ run(scan_t *s, const unsigned char *p, size_t len, int depth)
                                    "on the stack", s->gid,
                                    CF__CFF_MAX_ARGS);
             s->stack[s->sp++] = v;
+            lit = i;
             i += need;
+            /* an integer (a 16.16 real is not re-encoded) */
+            lit_end = b0 == 255 ? (size_t)-1 : i;
             continue;
         }
         i++;
@@ -152,15 +199,16 @@ run(scan_t *s, const unsigned char *p, size_t len, int depth)
             if (len - i < bytes)
                 return cf__ff_fail(s->f, "glyph %u: a charstring ends "
                                    "inside a hint mask", s->gid);
+            if (depth > 0)
+                site(s, owner, item, p + i, bytes, CF__CFF_SITE_MASK, 0);
             i += bytes;
             break;
         }
         case 10:
-            if (call(s, s->local, depth, "callsubr"))
-                return 1;
-            break;
         case 29:
-            if (call(s, s->global, depth, "callgsubr"))
+            if (call(s, b0 == 10 ? s->local : s->global, depth,
+                     b0 == 10 ? "callsubr" : "callgsubr", owner, item,
+                     lit_end == i - 1 ? p + lit : NULL, i - 1 - lit))
                 return 1;
             break;
         case 11:
@@ -202,7 +250,8 @@ cf__cff_scan_budget(size_t nglyphs)
 int
 cf__cff_scan_glyph(cf__ff_t *f, const unsigned char *cs, size_t len,
                    unsigned gid, cf__cff_subrs_t *global,
-                   cf__cff_subrs_t *local, long *budget)
+                   cf__cff_subrs_t *local, cf__cff_sites_t *sites,
+                   long *budget)
 {
     scan_t s;
     s.f = f;
@@ -213,5 +262,6 @@ cf__cff_scan_glyph(cf__ff_t *f, const unsigned char *cs, size_t len,
     s.stems = 0;
     s.budget = budget;
     s.ended = 0;
-    return run(&s, cs, len, 0);
+    s.sites = sites;
+    return run(&s, cs, len, 0, CF__CFF_IN_GLYPH, 0);
 }

@@ -27,6 +27,7 @@
 **   font's one, its Private DICT alone); each Private DICT followed by
 **   its local Subr INDEX (emptied as the global one).
 */
+#include <stdlib.h>
 #include <string.h>
 
 #include "curvefig/core.h"
@@ -215,10 +216,225 @@ read_fds(cf__cff_t *c, cf__fontfile_subset_t *out)
     return 0;
 }
 
+/* ---- renumbering the subroutines ------------------------------------ */
+
+static int
+cmp_size(size_t a, size_t b)
+{
+    return a < b ? -1 : a > b;
+}
+
+/* Sites in order of charstring (owner, Font DICT, item), then position. */
+static int
+site_cmp(const void *pa, const void *pb)
+{
+    const cf__cff_site_t *a = pa, *b = pb;
+    int r;
+    if ((r = cmp_size((size_t)a->owner, (size_t)b->owner)) != 0 ||
+        (r = cmp_size(a->owner_fd, b->owner_fd)) != 0 ||
+        (r = cmp_size(a->item, b->item)) != 0)
+        return r;
+    if (a->at != b->at)
+        return a->at < b->at ? -1 : 1;
+    if ((r = cmp_size(a->len, b->len)) != 0 ||
+        (r = cmp_size((size_t)a->kind, (size_t)b->kind)) != 0 ||
+        (r = cmp_size(a->fd, b->fd)) != 0)
+        return r;
+    return cmp_size(a->old, b->old);
+}
+
+static int
+same_item(const cf__cff_site_t *a, const cf__cff_site_t *b)
+{
+    return a->owner == b->owner && a->owner_fd == b->owner_fd &&
+           a->item == b->item;
+}
+
+/* The sites sorted, each once: 0 when two of one charstring overlap and
+** differ (its bytes not the same program everywhere it is called). */
+static int
+sites_settle(cf__cff_sites_t *w)
+{
+    size_t i, n = 0;
+    if (w->n == 0)
+        return 1;
+    qsort(w->v, w->n, sizeof *w->v, site_cmp);
+    for (i = 1; i < w->n; i++) {
+        const cf__cff_site_t *a = &w->v[n], *b = &w->v[i];
+        if (site_cmp(a, b) == 0)
+            continue;
+        if (same_item(a, b) && b->at < a->at + a->len)
+            return 0;
+        w->v[++n] = *b;
+    }
+    w->n = n + 1;
+    return 1;
+}
+
+/* The used subroutines of ix numbered densely: map[old] (NULL when out
+** of memory), *nout of them. */
+static unsigned *
+number_used(const cf__cff_index_t *ix, const unsigned char *used,
+            size_t *nout)
+{
+    unsigned *map = cf_calloc(ix->count + 1, sizeof *map);
+    size_t i, n = 0;
+    if (map != NULL)
+        for (i = 0; i < ix->count; i++)
+            if (used[i])
+                map[i] = (unsigned)n++;
+    *nout = n;
+    return map;
+}
+
+/* A Type 2 charstring integer (-32768 .. 32767) in its shortest form. */
+static void
+put_cs_int(cf__buf_t *b, long v)
+{
+    unsigned char o[3];
+    size_t n = 2;
+    if (v >= -107 && v <= 107) {
+        o[0] = (unsigned char)(v + 139);
+        n = 1;
+    } else if (v >= 108 && v <= 1131) {
+        o[0] = (unsigned char)(247 + (v - 108) / 256);
+        o[1] = (unsigned char)((v - 108) % 256);
+    } else if (v <= -108 && v >= -1131) {
+        o[0] = (unsigned char)(251 + (-v - 108) / 256);
+        o[1] = (unsigned char)((-v - 108) % 256);
+    } else {
+        o[0] = 28;
+        cf__ff_put16(o + 1, (unsigned)v & 0xffffu);
+        n = 3;
+    }
+    cf__buf_append(b, o, n);
+}
+
+/* Item `item` of owner (its bytes t[pos, pos + len)) appended to rebuf,
+** each call's number the new one; 1 when a site falls outside it. */
+static int
+emit(cf__cff_t *c, const cf__cff_sites_t *w, int owner, unsigned owner_fd,
+     size_t item, size_t pos, size_t len)
+{
+    const unsigned char *p = c->t + pos, *end = p + len;
+    cf__cff_site_t key;
+    size_t lo = 0, hi = w->n;
+    key.owner = owner;
+    key.owner_fd = owner_fd;
+    key.item = item;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        const cf__cff_site_t *m = &w->v[mid];
+        int r = cmp_size((size_t)m->owner, (size_t)owner);
+        if (r == 0)
+            r = cmp_size(m->owner_fd, owner_fd);
+        if (r == 0)
+            r = cmp_size(m->item, item);
+        if (r < 0)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    for (; lo < w->n && same_item(&w->v[lo], &key); lo++) {
+        const cf__cff_site_t *st = &w->v[lo];
+        const unsigned *map;
+        size_t count;
+        if (st->kind == CF__CFF_SITE_MASK)
+            continue;
+        if (st->at < p || st->len > (size_t)(end - st->at))
+            return 1;
+        if (st->kind == CF__CFF_SITE_GLOBAL) {
+            map = c->gmap;
+            count = c->g_out;
+        } else {
+            map = c->fds[st->fd].map;
+            count = c->fds[st->fd].nout;
+        }
+        cf__buf_append(&c->rebuf, p, (size_t)(st->at - p));
+        put_cs_int(&c->rebuf, (long)map[st->old] - (long)cf__cff_bias(count));
+        p = st->at + st->len;
+    }
+    cf__buf_append(&c->rebuf, p, (size_t)(end - p));
+    return 0;
+}
+
+/* The used subroutines of ix (local: fd's) re-emitted; *at gets their
+** nout + 1 offsets in rebuf. */
+static int
+emit_subrs(cf__cff_t *c, const cf__cff_sites_t *w,
+           const cf__cff_index_t *ix, const unsigned char *used, int owner,
+           unsigned fd, size_t nout, size_t **at)
+{
+    size_t i, k = 0, pos, len;
+    *at = cf_calloc(nout + 1, sizeof **at);
+    if (*at == NULL)
+        return -1;
+    for (i = 0; i < ix->count; i++) {
+        if (!used[i])
+            continue;
+        (*at)[k++] = c->rebuf.size;
+        if (cf__cff_index_item(c->f, ix, i, &pos, &len) ||
+            emit(c, w, owner, fd, i, pos, len))
+            return 1;
+    }
+    (*at)[k] = c->rebuf.size;
+    return 0;
+}
+
+/* Renumber the subroutines from the scan's sites: 0 done (renumbered
+** set), 1 not possible (the stubs stay), -1 out of memory. */
+static int
+renumber(cf__cff_t *c, cf__cff_sites_t *w)
+{
+    size_t i, pos, len;
+    int r;
+    if (w->failed)
+        return -1;
+    if (w->computed || !sites_settle(w))
+        return 1;
+    c->gmap = number_used(&c->gsubrs, c->gused, &c->g_out);
+    if (c->gmap == NULL)
+        return -1;
+    for (i = 0; i < c->nfds; i++) {
+        cf__cff_fd_t *fd = &c->fds[i];
+        if (!fd->kept)
+            continue;
+        fd->map = number_used(&fd->subrs, fd->used, &fd->nout);
+        if (fd->map == NULL)
+            return -1;
+    }
+    c->cs_at = cf_calloc(c->nkeep + 1, sizeof *c->cs_at);
+    if (c->cs_at == NULL)
+        return -1;
+    for (i = 0; i < c->nkeep; i++) {
+        c->cs_at[i] = c->rebuf.size;
+        if (cf__cff_index_item(c->f, &c->charstrings, c->keep[i], &pos,
+                               &len) ||
+            emit(c, w, CF__CFF_IN_GLYPH, 0, i, pos, len))
+            return 1;
+    }
+    c->cs_at[c->nkeep] = c->rebuf.size;
+    if ((r = emit_subrs(c, w, &c->gsubrs, c->gused, CF__CFF_IN_GLOBAL, 0,
+                        c->g_out, &c->g_at)) != 0)
+        return r;
+    for (i = 0; i < c->nfds; i++) {
+        cf__cff_fd_t *fd = &c->fds[i];
+        if (fd->kept &&
+            (r = emit_subrs(c, w, &fd->subrs, fd->used, CF__CFF_IN_LOCAL,
+                            (unsigned)i, fd->nout, &fd->out_at)) != 0)
+            return r;
+    }
+    if (c->rebuf.failed)
+        return -1;
+    c->renumbered = 1;
+    return 0;
+}
+
 static int
 read_cff(cf__cff_t *c, cf__fontfile_subset_t *out)
 {
     size_t cs = 0, i, pos, len;
+    cf__cff_sites_t sites;
     long budget;
     int r;
     if (c->tlen < 4 || c->t[0] != 1 || c->t[2] < 4)
@@ -255,6 +471,7 @@ read_cff(cf__cff_t *c, cf__fontfile_subset_t *out)
     if ((r = read_fds(c, out)) != 0)
         return r;
     budget = cf__cff_scan_budget(c->nkeep);
+    memset(&sites, 0, sizeof sites);
     for (i = 0; i < c->nkeep; i++) {
         cf__cff_subrs_t g, l;
         cf__cff_fd_t *fd = &c->fds[c->glyph_fd[i]];
@@ -262,13 +479,21 @@ read_cff(cf__cff_t *c, cf__fontfile_subset_t *out)
         g.used = c->gused;
         l.index = &fd->subrs;
         l.used = fd->used;
+        sites.fd = c->glyph_fd[i];
+        sites.glyph = i;
         if (cf__cff_index_item(c->f, &c->charstrings, c->keep[i], &pos,
                                &len) ||
             cf__cff_scan_glyph(c->f, c->t + pos, len, c->keep[i], &g,
-                               &l, &budget))
+                               &l, &sites, &budget)) {
+            cf_free(sites.v);
             return 1;
+        }
     }
-    return 0;
+    r = renumber(c, &sites);
+    cf_free(sites.v);
+    if (r > 0)
+        c->renumbered = 0;   /* the stubs: charstrings copied as they are */
+    return r < 0 ? -1 : 0;
 }
 
 int
@@ -299,8 +524,15 @@ cf__ff_cff_subset(cf__ff_t *f, const cf__ff_table_t *table,
         cf__cff_write_font(c, &out->program);
         r = out->program.failed ? -1 : 0;
     }
-    for (i = 0; i < CF__CFF_MAX_FDS; i++)
+    for (i = 0; i < CF__CFF_MAX_FDS; i++) {
         cf_free(c->fds[i].used);
+        cf_free(c->fds[i].map);
+        cf_free(c->fds[i].out_at);
+    }
+    cf_free(c->gmap);
+    cf_free(c->g_at);
+    cf_free(c->cs_at);
+    cf__buf_free(&c->rebuf);
     cf_free(c->gused);
     cf_free(c->glyph_fd);
     cf__buf_free(&c->fdbuf);

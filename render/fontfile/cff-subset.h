@@ -20,6 +20,8 @@ typedef struct cf__cff_fd {
     size_t priv_pos, priv_len;         /* Private DICT */
     cf__cff_index_t subrs;             /* count 0: none */
     unsigned char *used;
+    unsigned *map;                     /* renumbered: old -> new */
+    size_t *out_at, nout;              /* renumbered: the kept, in rebuf */
     int kept;
     unsigned out_index;
     size_t out_priv_pos, out_priv_len; /* where the last pass put it */
@@ -46,6 +48,14 @@ typedef struct cf__cff {
     size_t str_len[CF__CFF_MAX_STRINGS], nstr;
     size_t at_charset, at_fdselect, at_charstrings, at_fdarray;
     cf__buf_t fdbuf;
+    /* the subroutines renumbered (else those not called are stubs): the
+       kept charstrings and subroutines re-emitted into rebuf, item i of
+       each INDEX the bytes [at[i], at[i + 1]) */
+    int renumbered;
+    cf__buf_t rebuf;
+    size_t *cs_at;
+    unsigned *gmap;
+    size_t *g_at, g_out;
 } cf__cff_t;
 
 /* The subset written to b (cf__buf_t's failed flag says out of memory):

@@ -120,6 +120,7 @@ typedef struct items {
     cf__cff_t *c;
     const cf__cff_index_t *ix;
     const unsigned char *used;   /* subroutines: NULL for all */
+    const size_t *at;            /* renumbered: items in c->rebuf */
     const unsigned char *one;    /* a single item */
     size_t one_len;
     int fds;                     /* the Font DICTs of fdbuf */
@@ -134,7 +135,10 @@ item(void *ctx, size_t i, const unsigned char **p, size_t *len)
     size_t pos, k = 0, n;
     cf__ff_t quiet = *c->f;
     quiet.why = NULL;
-    if (it->one != NULL) {
+    if (it->at != NULL) {
+        *len = it->at[i + 1] - it->at[i];
+        *p = *len > 0 ? c->rebuf.data + it->at[i] : &stub_return;
+    } else if (it->one != NULL) {
         *p = it->one;
         *len = it->one_len;
     } else if (it->fds) {
@@ -220,7 +224,8 @@ write_private(cf__cff_t *c, cf__cff_fd_t *fd, cf__buf_t *b)
 {
     static const unsigned skip[] = { 19, 0 };
     items_t it = { 0 };
-    size_t start = b->size, nsubrs = subrs_out(&fd->subrs, fd->used);
+    size_t start = b->size, nsubrs = c->renumbered ? fd->nout :
+                                     subrs_out(&fd->subrs, fd->used);
     fd->out_priv_pos = start;
     copy_dict(c, b, fd->priv_pos, fd->priv_len, skip);
     if (nsubrs > 0) {
@@ -233,6 +238,7 @@ write_private(cf__cff_t *c, cf__cff_fd_t *fd, cf__buf_t *b)
     if (nsubrs > 0) {
         it.ix = &fd->subrs;
         it.used = fd->used;
+        it.at = c->renumbered ? fd->out_at : NULL;
         write_index(c, b, &it, nsubrs);
     }
 }
@@ -265,11 +271,14 @@ cf__cff_write_font(cf__cff_t *c, cf__buf_t *b)
     write_index(c, b, &it, c->nstr);
     it.ix = &c->gsubrs;
     it.used = c->gused;
-    write_index(c, b, &it, subrs_out(&c->gsubrs, c->gused));
+    it.at = c->renumbered ? c->g_at : NULL;
+    write_index(c, b, &it, c->renumbered ? c->g_out :
+                subrs_out(&c->gsubrs, c->gused));
     write_charset_fdselect(c, b);
     c->at_charstrings = b->size;
     it.ix = &c->charstrings;
     it.used = NULL;
+    it.at = c->renumbered ? c->cs_at : NULL;
     write_index(c, b, &it, c->nkeep);
     c->at_fdarray = b->size;
     memset(&it, 0, sizeof it);

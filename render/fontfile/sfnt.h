@@ -243,9 +243,46 @@ typedef struct cf__cff_subrs {
     unsigned char *used;            /* index->count bytes */
 } cf__cff_subrs_t;
 
+/* What a scan met that renumbering the subroutines needs (cff-subset.c):
+** each call whose number is the literal integer just before it (at: the
+** operand's bytes; old: the subroutine it calls) and each hint mask inside
+** a subroutine (at: its bytes), once for every time the scan met it, with
+** the charstring it is in (owner: glyph `glyph` of the scan, a global or a
+** local subroutine, item its number) and the glyph's Font DICT (sites->fd
+** when met; kept for a local subroutine or a local call, else 0).  The
+** bytes of a charstring parse the same way wherever it is called unless
+** one of its masks has a different length somewhere (or a global
+** subroutine's local call meets two Font DICTs): two sites of one
+** charstring that overlap and differ say so.  A call whose number is
+** computed (arithmetic, a real, a number not immediately before it) sets
+** computed. */
+enum { CF__CFF_SITE_MASK, CF__CFF_SITE_GLOBAL, CF__CFF_SITE_LOCAL };
+enum { CF__CFF_IN_GLYPH, CF__CFF_IN_GLOBAL, CF__CFF_IN_LOCAL };
+typedef struct cf__cff_site {
+    int owner;                /* CF__CFF_IN_... */
+    unsigned owner_fd;
+    size_t item;
+    const unsigned char *at;
+    size_t len;
+    int kind;                 /* CF__CFF_SITE_... */
+    unsigned fd;              /* a local call's Font DICT */
+    unsigned old;
+} cf__cff_site_t;
+
+typedef struct cf__cff_sites {
+    cf__cff_site_t *v;
+    size_t n, cap;
+    unsigned fd;              /* set before each glyph */
+    size_t glyph;             /* set before each glyph */
+    int computed;
+    int failed;               /* out of memory */
+} cf__cff_sites_t;
+
+/* sites: NULL when not wanted. */
 int cf__cff_scan_glyph(cf__ff_t *f, const unsigned char *cs, size_t len,
                        unsigned gid, cf__cff_subrs_t *global,
-                       cf__cff_subrs_t *local, long *budget);
+                       cf__cff_subrs_t *local, cf__cff_sites_t *sites,
+                       long *budget);
 
 /* The steps (charstring bytes interpreted) the scan of n glyphs may take,
 ** all together: 2^22 and CF__CFF_STEPS_PER_GLYPH a glyph. */

@@ -39,7 +39,9 @@
 #include FT_CID_H
 #include FT_OUTLINE_H
 
+#include "curvefig/core.h"
 #include "fontfile-private.h"
+#include "cff-subset.h"
 #include "testutil.h"
 
 #define LM "/usr/share/texmf/fonts/opentype/public/lm/"
@@ -258,6 +260,112 @@ check_sfnt(const unsigned char *d, size_t len, long num_glyphs)
     assert_int_equal(loca, (size_t)(num_glyphs + 1) * (long_loca ? 4 : 2));
 }
 
+/* The subroutines of the last CFF subset checked (all of its INDEXes). */
+static size_t last_nsubrs;
+
+/* An offset operand of a DICT entry of our subset (a 5-byte integer). */
+static size_t
+dict_offset(const cf__cff_op_t *op, size_t k)
+{
+    assert_true(op->nargs > k && op->args[k] >= 0);
+    return (size_t)op->args[k];
+}
+
+/* A CFF subset's subroutines are exactly those its charstrings call
+** (the scan of cff-charstring.c over the subset's own INDEXes): every
+** one used, none a stub left for its number.  Their count. */
+static size_t
+check_subrs_used(const unsigned char *t, size_t tlen)
+{
+    cf__ff_t f;
+    char why[256];
+    cf__cff_index_t names, tops, strings, gsubrs, cs, fdarray;
+    cf__cff_index_t lsubrs[CF__CFF_MAX_FDS];
+    unsigned char *gused, *lused[CF__CFF_MAX_FDS];
+    cf__cff_op_t op;
+    size_t pos, len, at = 0, cs_at = 0, fda_at = 0, fds_at = 0, i, k;
+    size_t total;
+    long budget;
+    cf__ff_init(&f, t, tlen, "subset", why, sizeof why);
+    assert_int_equal(cf__cff_index_read(&f, t, tlen, t[2], "Name", &names),
+                     0);
+    assert_int_equal(cf__cff_index_read(&f, t, tlen, names.end, "Top",
+                                        &tops), 0);
+    assert_int_equal(cf__cff_index_read(&f, t, tlen, tops.end, "String",
+                                        &strings), 0);
+    assert_int_equal(cf__cff_index_read(&f, t, tlen, strings.end, "Global",
+                                        &gsubrs), 0);
+    assert_int_equal(cf__cff_index_item(&f, &tops, 0, &pos, &len), 0);
+    while (cf__cff_dict_next(&f, t + pos, len, &at, &op, "Top") == 1) {
+        if (op.op == 17)
+            cs_at = dict_offset(&op, 0);
+        else if (op.op == 1236)
+            fda_at = dict_offset(&op, 0);
+        else if (op.op == 1237)
+            fds_at = dict_offset(&op, 0);
+    }
+    assert_int_equal(cf__cff_index_read(&f, t, tlen, cs_at, "CharStrings",
+                                        &cs), 0);
+    assert_int_equal(cf__cff_index_read(&f, t, tlen, fda_at, "FDArray",
+                                        &fdarray), 0);
+    assert_true(fdarray.count >= 1 && fdarray.count <= CF__CFF_MAX_FDS);
+    for (k = 0; k < fdarray.count; k++) {
+        size_t dpos, dlen, ppos = 0, plen = 0, sub = 0;
+        at = 0;
+        assert_int_equal(cf__cff_index_item(&f, &fdarray, k, &dpos, &dlen),
+                         0);
+        while (cf__cff_dict_next(&f, t + dpos, dlen, &at, &op, "Font") == 1)
+            if (op.op == 18) {
+                plen = dict_offset(&op, 0);
+                ppos = dict_offset(&op, 1);
+            }
+        at = 0;
+        while (cf__cff_dict_next(&f, t + ppos, plen, &at, &op,
+                                 "Private") == 1)
+            if (op.op == 19)
+                sub = dict_offset(&op, 0);
+        memset(&lsubrs[k], 0, sizeof lsubrs[k]);
+        if (sub > 0)
+            assert_int_equal(cf__cff_index_read(&f, t, tlen, ppos + sub,
+                                                "Subrs", &lsubrs[k]), 0);
+        lused[k] = calloc(lsubrs[k].count + 1, 1);
+        assert_non_null(lused[k]);
+    }
+    gused = calloc(gsubrs.count + 1, 1);
+    assert_non_null(gused);
+    budget = cf__cff_scan_budget(cs.count);
+    for (i = 0; i < cs.count; i++) {
+        unsigned fd = 0;
+        cf__cff_subrs_t g, l;
+        assert_int_equal(cf__cff_fdselect(t, tlen, fds_at, (unsigned)i,
+                                          &fd), 0);
+        assert_true(fd < fdarray.count);
+        g.index = &gsubrs;
+        g.used = gused;
+        l.index = &lsubrs[fd];
+        l.used = lused[fd];
+        assert_int_equal(cf__cff_index_item(&f, &cs, i, &pos, &len), 0);
+        if (cf__cff_scan_glyph(&f, t + pos, len, (unsigned)i, &g, &l, NULL,
+                               &budget) != 0)
+            fail_msg("%s", why);
+    }
+    total = gsubrs.count;
+    for (i = 0; i < gsubrs.count; i++)
+        if (!gused[i])
+            fail_msg("global subroutine %zu of %zu not called", i,
+                     gsubrs.count);
+    for (k = 0; k < fdarray.count; k++) {
+        for (i = 0; i < lsubrs[k].count; i++)
+            if (!lused[k][i])
+                fail_msg("local subroutine %zu of %zu (Font DICT %zu) not "
+                         "called", i, lsubrs[k].count, k);
+        total += lsubrs[k].count;
+        free(lused[k]);
+    }
+    free(gused);
+    return total;
+}
+
 /* Subset gids of face orig (of file fo), check it against FreeType;
 ** the program's size. */
 static size_t
@@ -317,6 +425,7 @@ check_subset(const font_t *fo, FT_Face orig, const unsigned *gids, size_t n)
             assert_int_not_equal(FT_Load_Glyph(sub, absent,
                                                FT_LOAD_NO_SCALE), 0);
         free(keep);
+        last_nsubrs = check_subrs_used(out.program.data, out.program.size);
     } else {
         /* the glyphs asked for and, by FreeType's reading of the
            composites, their components: the original's outlines; every
@@ -386,7 +495,11 @@ test_outlines(void **state)
         n = text_glyphs(face, "P", gids);
         assert_int_equal(n, 1);
         t0 = clock();
+        last_nsubrs = 0;
         size1 = check_subset(fo, face, gids, 1);
+        /* one glyph: the few subroutines it calls, not the font's
+           thousands (LM Math 1,039 local ones, Noto CJK's 2,000-odd) */
+        assert_true(last_nsubrs < 64);
         n = text_glyphs(face, "P_01234567 P_0", gids);
         assert_true(n >= 8);
         for (i = 0; i < sizeof cjk / sizeof cjk[0]; i++) {
@@ -400,11 +513,10 @@ test_outlines(void **state)
                       n, (double)(clock() - t0) / CLOCKS_PER_SEC);
         if (strcmp(fo->path, LM_MATH) == 0)
             /* the header, DICTs and strings (~300 bytes), one
-               charstring, and at worst LM Math's 1,039 local Subrs up
-               to the last called, those not called 3 bytes each (a
-               one-byte return and its 2-byte offset): 3.1 KB; not the
-               table's 652 KB */
-            assert_true(size1 < 8192);
+               charstring and the few subroutines it calls (renumbered,
+               not LM Math's 1,039 local Subrs with stubs): 0.7 KB; not
+               the table's 652 KB */
+            assert_true(size1 < 2048);
         /* seeded random sets */
         tu_rng_seed(&rng, 20261205 + f);
         for (i = 0; i < 3; i++) {
@@ -703,6 +815,55 @@ test_alloc_failure(void **state)
         skip();
 }
 
+/* The scan's decision (cff-charstring.c): a call whose number is the
+** integer just before it is a site to renumber; one computed ("-110 3 add
+** callsubr": subroutine 0 by the bias 107) says computed, and the subset
+** then keeps its stubs. */
+static void
+test_computed_call(void **state)
+{
+    /* a Subrs INDEX of one subroutine, "return" */
+    static const unsigned char subrs_bytes[] = { 0, 1, 1, 1, 2, 11 };
+    static const unsigned char literal[] = { 32, 10, 14 };   /* -107 */
+    static const unsigned char computed[] = { 251, 2, 142, 12, 10, 10, 14 };
+    static const unsigned char apart[] = { 32, 142, 12, 18, 10, 14 };
+    const unsigned char *cs[3] = { literal, computed, apart };
+    size_t cs_len[3] = { sizeof literal, sizeof computed, sizeof apart };
+    cf__ff_t f;
+    char why[256];
+    cf__cff_index_t ix;
+    size_t k;
+    (void)state;
+    cf__ff_init(&f, subrs_bytes, sizeof subrs_bytes, "hand-made", why,
+                sizeof why);
+    assert_int_equal(cf__cff_index_read(&f, subrs_bytes, sizeof subrs_bytes,
+                                        0, "Subrs", &ix), 0);
+    for (k = 0; k < 3; k++) {
+        unsigned char used[2] = { 0, 0 };
+        cf__cff_subrs_t l;
+        cf__cff_sites_t sites;
+        long budget = cf__cff_scan_budget(1);
+        memset(&sites, 0, sizeof sites);
+        l.index = &ix;
+        l.used = used;
+        assert_int_equal(cf__cff_scan_glyph(&f, cs[k], cs_len[k], 1, NULL,
+                                            &l, &sites, &budget), 0);
+        assert_int_equal(used[0], 1);
+        if (k == 0) {
+            assert_int_equal(sites.computed, 0);
+            assert_int_equal(sites.n, 1);
+            assert_true(sites.v[0].at == literal);
+            assert_int_equal(sites.v[0].len, 1);
+            assert_int_equal(sites.v[0].kind, CF__CFF_SITE_LOCAL);
+            assert_int_equal(sites.v[0].old, 0);
+        } else {
+            /* computed, or (drop) the literal not the number called */
+            assert_int_equal(sites.computed, 1);
+        }
+        cf_free(sites.v);
+    }
+}
+
 int
 main(void)
 {
@@ -715,6 +876,7 @@ main(void)
         cmocka_unit_test(test_refused),
         cmocka_unit_test(test_deterministic),
         cmocka_unit_test(test_alloc_failure),
+        cmocka_unit_test(test_computed_call),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }

@@ -8,8 +8,23 @@
 ** the Top DICT's CharStrings, and either (a CID-keyed font) its FDArray
 ** and FDSelect, each Font DICT's Private DICT and local Subrs, or (a
 ** name-keyed font) its one Private DICT and Subrs.  The kept glyphs'
-** charstrings are scanned for the subroutines they call
-** (cff-charstring.c).
+** charstrings are scanned for the subroutines they call, through one
+** another (cff-charstring.c), and for where each call's number is
+** written.
+**
+** Renumbered: the subroutines called are kept alone, in their order, in
+** dense INDEXes (the global one; each kept Font DICT's local one), and
+** every kept charstring and subroutine is re-emitted, its bytes copied
+** but for each call's number, the integer just before callsubr or
+** callgsubr, written for the new number and the bias of the new count
+** (107 below 1240 subroutines, 1131 below 33900, else 32768) in its
+** shortest encoding.  When a call's number is not such a literal (it is
+** computed by arithmetic, or is a real),
+** when a hint mask inside a subroutine has two lengths (the bytes would
+** not parse the same way wherever it is called) or when a global
+** subroutine's local call meets two Font DICTs, the font keeps instead
+** the full-count INDEXes below, charstrings copied as they are, so that
+** the output never depends on the rewrite.
 **
 ** Written (cff-write.c), in this order, every offset a 5-byte integer
 ** so that the layout is computed by writing the font twice (the first
@@ -18,14 +33,16 @@
 **   Identity 0, the input's Top DICT entries but its offsets, charset,
 **   Encoding, unique ids and PostScript code (strings re-numbered),
 **   CIDCount, charset, FDSelect, CharStrings, FDArray; String INDEX;
-**   Global Subr INDEX (every subroutine not called a one-byte return, so
-**   that the numbers hold, and those after the last one called left out
-**   down to the count that keeps the bias: 1240 or 33900); charset
+**   Global Subr INDEX (renumbered: those called; else every subroutine
+**   not called a one-byte return, so that the numbers hold, and those
+**   after the last one called left out down to the count that keeps the
+**   bias: 1240 or 33900); charset
 **   (format 2: new glyph i is CID keep[i]); FDSelect (format 3);
 **   CharStrings INDEX (the kept glyphs, ascending); FDArray INDEX (the
 **   Font DICTs the kept glyphs use, renumbered in order; a name-keyed
 **   font's one, its Private DICT alone); each Private DICT followed by
-**   its local Subr INDEX (emptied as the global one).
+**   its local Subr INDEX (renumbered or emptied as the global one; none
+**   when no subroutine of it is kept).
 */
 #include <stdlib.h>
 #include <string.h>

@@ -12,6 +12,10 @@
 ** the file's checkSumAdjustment right.  The font bounding box and italic
 ** style are FreeType's; advances are FreeType's unscaled advances; the
 ** one-glyph subset of Latin Modern Math (a 652 KB CFF table) is small.
+** A CFF subset's subroutines are renumbered: each one of them is called
+** by its charstrings (the scan of cff-charstring.c over the subset), a
+** one-glyph subset has a few; the scan calls a computed call's number
+** computed, the case in which the subset keeps the stubs instead.
 **
 ** Damaged fonts (every font truncated at many lengths, bytes flipped at
 ** seeded random offsets) give 0 or 1, never a crash (the ASan build runs

@@ -52,8 +52,12 @@ site(scan_t *s, int owner, size_t item, const unsigned char *at, size_t len,
 {
     cf__cff_sites_t *w = s->sites;
     cf__cff_site_t *v;
-    if (w == NULL || w->failed)
+    if (w == NULL || w->failed || w->full)
         return;
+    if (w->n >= w->max) {
+        w->full = 1;
+        return;
+    }
     v = cf__grow_array(w->v, &w->cap, w->n + 1, sizeof *w->v, 64);
     if (v == NULL) {
         w->failed = 1;
@@ -61,13 +65,13 @@ site(scan_t *s, int owner, size_t item, const unsigned char *at, size_t len,
     }
     w->v = v;
     v += w->n++;
-    v->owner = owner;
-    v->owner_fd = owner == CF__CFF_IN_LOCAL ? w->fd : 0;
-    v->item = owner == CF__CFF_IN_GLYPH ? w->glyph : item;
+    v->owner = (unsigned char)owner;
+    v->owner_fd = (unsigned short)(owner == CF__CFF_IN_LOCAL ? w->fd : 0);
+    v->item = (unsigned)(owner == CF__CFF_IN_GLYPH ? w->glyph : item);
     v->at = at;
-    v->len = len;
-    v->kind = kind;
-    v->fd = kind == CF__CFF_SITE_LOCAL ? w->fd : 0;
+    v->len = (unsigned)len;
+    v->kind = (unsigned char)kind;
+    v->fd = (unsigned short)(kind == CF__CFF_SITE_LOCAL ? w->fd : 0);
     v->old = old;
 }
 

@@ -235,6 +235,8 @@ read_fds(cf__cff_t *c, cf__fontfile_subset_t *out)
 
 /* ---- renumbering the subroutines ------------------------------------ */
 
+#define CF__CFF_SITES_PER_GLYPH 256
+
 static int
 cmp_size(size_t a, size_t b)
 {
@@ -358,7 +360,7 @@ emit(cf__cff_t *c, const cf__cff_sites_t *w, int owner, unsigned owner_fd,
         size_t count;
         if (st->kind == CF__CFF_SITE_MASK)
             continue;
-        if (st->at < p || st->len > (size_t)(end - st->at))
+        if (st->at < p || st->at > end || st->len > (size_t)(end - st->at))
             return 1;
         if (st->kind == CF__CFF_SITE_GLOBAL) {
             map = c->gmap;
@@ -407,7 +409,7 @@ renumber(cf__cff_t *c, cf__cff_sites_t *w)
     int r;
     if (w->failed)
         return -1;
-    if (w->computed || !sites_settle(w))
+    if (w->computed || w->full || !sites_settle(w))
         return 1;
     c->gmap = number_used(&c->gsubrs, c->gused, &c->g_out);
     if (c->gmap == NULL)
@@ -489,6 +491,9 @@ read_cff(cf__cff_t *c, cf__fontfile_subset_t *out)
         return r;
     budget = cf__cff_scan_budget(c->nkeep);
     memset(&sites, 0, sizeof sites);
+    /* some 30 calls a glyph in the fonts the tests read */
+    sites.max = ((size_t)1 << 16) + CF__CFF_SITES_PER_GLYPH *
+                (c->nkeep < ((size_t)1 << 20) ? c->nkeep : (size_t)1 << 20);
     for (i = 0; i < c->nkeep; i++) {
         cf__cff_subrs_t g, l;
         cf__cff_fd_t *fd = &c->fds[c->glyph_fd[i]];

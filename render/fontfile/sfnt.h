@@ -255,26 +255,27 @@ typedef struct cf__cff_subrs {
 ** subroutine's local call meets two Font DICTs): two sites of one
 ** charstring that overlap and differ say so.  A call whose number is
 ** computed (arithmetic, a real, a number not immediately before it) sets
-** computed. */
+** computed; more than max sites set full (the list is then not kept: a
+** hostile font's calls over and over cost no memory). */
 enum { CF__CFF_SITE_MASK, CF__CFF_SITE_GLOBAL, CF__CFF_SITE_LOCAL };
 enum { CF__CFF_IN_GLYPH, CF__CFF_IN_GLOBAL, CF__CFF_IN_LOCAL };
 typedef struct cf__cff_site {
-    int owner;                /* CF__CFF_IN_... */
-    unsigned owner_fd;
-    size_t item;
     const unsigned char *at;
-    size_t len;
-    int kind;                 /* CF__CFF_SITE_... */
-    unsigned fd;              /* a local call's Font DICT */
+    unsigned len;
+    unsigned item;
     unsigned old;
+    unsigned short owner_fd;
+    unsigned short fd;        /* a local call's Font DICT */
+    unsigned char owner;      /* CF__CFF_IN_... */
+    unsigned char kind;       /* CF__CFF_SITE_... */
 } cf__cff_site_t;
 
 typedef struct cf__cff_sites {
     cf__cff_site_t *v;
-    size_t n, cap;
+    size_t n, cap, max;
     unsigned fd;              /* set before each glyph */
     size_t glyph;             /* set before each glyph */
-    int computed;
+    int computed, full;
     int failed;               /* out of memory */
 } cf__cff_sites_t;
 

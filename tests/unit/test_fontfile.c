@@ -620,6 +620,7 @@ test_all_cjk(void **state)
                      0);
     for (i = 0; i < n; i += 97)
         same_outline(face, (unsigned)i, sub, (unsigned)i);
+    (void)check_subrs_used(out.program.data, out.program.size);
     print_message("%s: all %zu glyphs, %zu bytes\n", fo.path, n,
                   out.program.size);
     FT_Done_Face(sub);
@@ -822,7 +823,8 @@ test_alloc_failure(void **state)
 /* The scan's decision (cff-charstring.c): a call whose number is the
 ** integer just before it is a site to renumber; one computed ("-110 3 add
 ** callsubr": subroutine 0 by the bias 107) says computed, and the subset
-** then keeps its stubs. */
+** then keeps its stubs, as it does when there are more sites than the
+** list may hold. */
 static void
 test_computed_call(void **state)
 {
@@ -848,6 +850,7 @@ test_computed_call(void **state)
         cf__cff_sites_t sites;
         long budget = cf__cff_scan_budget(1);
         memset(&sites, 0, sizeof sites);
+        sites.max = 16;
         l.index = &ix;
         l.used = used;
         assert_int_equal(cf__cff_scan_glyph(&f, cs[k], cs_len[k], 1, NULL,
@@ -860,6 +863,16 @@ test_computed_call(void **state)
             assert_int_equal(sites.v[0].len, 1);
             assert_int_equal(sites.v[0].kind, CF__CFF_SITE_LOCAL);
             assert_int_equal(sites.v[0].old, 0);
+            cf_free(sites.v);
+            /* more sites than max: the list is given up (the stubs) */
+            memset(&sites, 0, sizeof sites);
+            used[0] = 0;
+            assert_int_equal(cf__cff_scan_glyph(&f, cs[k], cs_len[k], 1,
+                                                NULL, &l, &sites, &budget),
+                             0);
+            assert_int_equal(used[0], 1);
+            assert_int_equal(sites.full, 1);
+            assert_int_equal(sites.n, 0);
         } else {
             /* computed, or (drop) the literal not the number called */
             assert_int_equal(sites.computed, 1);

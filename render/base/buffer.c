@@ -18,9 +18,12 @@ cf__buf_extend(cf__buf_t *b, size_t n)
         b->failed = 1;
         return NULL;
     }
-    if (b->size + n > b->cap) {
-        unsigned char *d = cf__grow_array(b->data, &b->cap, b->size + n, 1,
-                                          4096);
+    /* an empty buffer gets its first block even for n = 0: the pointer
+    ** returned is never null arithmetic, nor a failure's NULL */
+    if (b->size + n > b->cap || b->data == NULL) {
+        unsigned char *d = cf__grow_array(b->data, &b->cap,
+                                          b->size + n > 0 ? b->size + n : 1,
+                                          1, 4096);
         if (d == NULL) {
             b->failed = 1;
             return NULL;

@@ -15,8 +15,8 @@ typedef struct cf__buf {
 } cf__buf_t;
 
 int cf__buf_append(cf__buf_t *b, const void *data, size_t n);
-/* n more bytes at the end, not yet written: where they start, or NULL
-** when the buffer could not grow (b->failed set). */
+/* n more bytes at the end, not yet written: where they start (n may be
+** 0), or NULL when the buffer could not grow (b->failed set). */
 unsigned char *cf__buf_extend(cf__buf_t *b, size_t n);
 void cf__buf_free(cf__buf_t *b);
 

@@ -318,6 +318,25 @@ test_strings(void **state)
     }
 }
 
+/* The buffer's edge the fuzzer found (fuzz_fontfile, a TrueType subset
+** appending an empty glyph first): nothing appended to an empty buffer
+** is a success, not a failure, and no null pointer arithmetic (UBSan). */
+static void
+test_buffer_empty(void **state)
+{
+    cf__buf_t b = { 0 };
+    (void)state;
+    assert_int_equal(cf__buf_append(&b, "", 0), 0);
+    assert_int_equal(b.failed, 0);
+    assert_int_equal(b.size, 0);
+    assert_non_null(cf__buf_extend(&b, 0));
+    assert_int_equal(cf__buf_append(&b, "ab", 2), 0);
+    assert_int_equal(cf__buf_append(&b, "", 0), 0);
+    assert_int_equal(b.size, 2);
+    assert_memory_equal(b.data, "ab", 2);
+    cf__buf_free(&b);
+}
+
 int
 main(void)
 {
@@ -327,6 +346,7 @@ main(void)
         cmocka_unit_test(test_opacity_and_bytes),
         cmocka_unit_test(test_faults),
         cmocka_unit_test(test_strings),
+        cmocka_unit_test(test_buffer_empty),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -32,14 +32,7 @@ static int
 glyph_range(glyf_t *g, unsigned gid, size_t *pos, size_t *len)
 {
     size_t a, b;
-    if (g->long_loca) {
-        a = cf__ff_u32(g->loca.data + 4 * (size_t)gid);
-        b = cf__ff_u32(g->loca.data + 4 * (size_t)gid + 4);
-    } else {
-        a = 2 * (size_t)cf__ff_u16(g->loca.data + 2 * (size_t)gid);
-        b = 2 * (size_t)cf__ff_u16(g->loca.data + 2 * (size_t)gid + 2);
-    }
-    if (a > b || b > g->glyf.len)
+    if (cf__ff_loca_range(&g->loca, g->long_loca, gid, g->glyf.len, &a, &b))
         return cf__ff_fail(g->f, "loca: glyph %u at %zu to %zu, outside "
                            "the glyf table's %zu bytes", gid, a, b,
                            g->glyf.len);

@@ -40,16 +40,9 @@ glyph_bytes(const cf__olface_t *f, unsigned gid, const unsigned char **p,
             size_t *len)
 {
     size_t a, b;
-    if (gid >= f->num_glyphs)
-        return 1;
-    if (f->loca_long) {
-        a = cf__ff_u32(f->loca.data + 4 * (size_t)gid);
-        b = cf__ff_u32(f->loca.data + 4 * (size_t)gid + 4);
-    } else {
-        a = 2 * (size_t)cf__ff_u16(f->loca.data + 2 * (size_t)gid);
-        b = 2 * (size_t)cf__ff_u16(f->loca.data + 2 * (size_t)gid + 2);
-    }
-    if (b < a || b > f->glyf.len)
+    if (gid >= f->num_glyphs
+        || cf__ff_loca_range(&f->loca, f->loca_long, gid, f->glyf.len, &a,
+                             &b))
         return 1;
     *p = f->glyf.data + a;
     *len = b - a;

@@ -270,3 +270,17 @@ cf__ff_metrics(cf__ff_t *f, const cf__ff_face_t *face, const unsigned *gids,
     }
     return name_id6(f, face, out->ps_name);
 }
+
+int
+cf__ff_loca_range(const cf__ff_table_t *loca, int long_loca, unsigned gid,
+                  size_t glyf_len, size_t *a, size_t *b)
+{
+    if (long_loca) {
+        *a = cf__ff_u32(loca->data + 4 * (size_t)gid);
+        *b = cf__ff_u32(loca->data + 4 * (size_t)gid + 4);
+    } else {
+        *a = 2 * (size_t)cf__ff_u16(loca->data + 2 * (size_t)gid);
+        *b = 2 * (size_t)cf__ff_u16(loca->data + 2 * (size_t)gid + 2);
+    }
+    return *a > *b || *b > glyf_len;
+}

@@ -125,6 +125,13 @@ int cf__ff_face_open(cf__ff_t *f, unsigned index, cf__ff_face_t *face);
 int cf__ff_table_find(cf__ff_t *f, const cf__ff_face_t *face, uint32_t tag,
                       size_t min, cf__ff_table_t *t);
 
+/* Glyph gid's bytes [*a, *b) in a glyf table of glyf_len bytes, from its
+** loca table (long: 32-bit offsets; the caller has checked that it holds
+** gid + 2 entries): 0, or 1 when they are out of order or past the glyf
+** table's end (the caller says so as it needs). */
+int cf__ff_loca_range(const cf__ff_table_t *loca, int long_loca,
+                      unsigned gid, size_t glyf_len, size_t *a, size_t *b);
+
 /* Fill out's metrics (units_per_em ... stem_v, ps_name from the name
 ** table; advances of gids[0..n-1]); num_glyphs from maxp. */
 int cf__ff_metrics(cf__ff_t *f, const cf__ff_face_t *face,

@@ -18,6 +18,7 @@
 #include <cairo.h>
 #include <librsvg/rsvg.h>
 
+#include "testutil.h"
 #include "curvefig/figure.h"
 #include "overlay-spec.h"
 
@@ -313,24 +314,6 @@ test_step_raster_is_its_elements(void **state)
     cf_figure_destroy(fig);
 }
 
-static unsigned char *
-read_file(const char *path, size_t *n)
-{
-    FILE *f = fopen(path, "rb");
-    unsigned char *d;
-    long len;
-    if (f == NULL)
-        return NULL;
-    fseek(f, 0, SEEK_END);
-    len = ftell(f);
-    fseek(f, 0, SEEK_SET);
-    d = malloc((size_t)len + 1);
-    assert_non_null(d);
-    *n = fread(d, 1, (size_t)len, f);
-    fclose(f);
-    return d;
-}
-
 static void
 test_numbered_pngs(void **state)
 {
@@ -352,7 +335,7 @@ test_numbered_pngs(void **state)
         size_t n, m;
         unsigned char *d, *want;
         snprintf(path, sizeof path, "%s-%u.png", base, k);
-        d = read_file(path, &n);
+        d = tu_read_file(path, &n);
         if (k == 5) {
             assert_null(d);   /* four steps, four files */
             break;
@@ -371,7 +354,7 @@ test_numbered_pngs(void **state)
         assert_int_not_equal(access(path, F_OK), 0);
     }
     snprintf(path, sizeof path, "%s.png", base);
-    all = read_file(path, &nall);
+    all = tu_read_file(path, &nall);
     assert_non_null(all);
     assert_int_equal(nall, nlast);
     assert_memory_equal(all, last, nall);

@@ -197,6 +197,8 @@ struct cf_figure {
     double refit_drop;       /* at the second: how far the layout's
                                 tolerance fell from the first's, relative
                                 (0: it did not; cf__tol_make) */
+    int layout_passes;       /* the ink refits the last layout made (1:
+                                none; render/layout/layout.c) */
     bool clip_page;          /* ink outside the page is cut, not an error */
     size_t proj_dim;
     double *proj;            /* 2 x proj_dim */

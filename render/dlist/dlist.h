@@ -269,8 +269,37 @@ void cf__path_box(const cf__path_t *p, double scale, double dx, double dy,
 ** their control polygons, each subpath's close included); infinite when a
 ** number is not finite. */
 double cf__path_length_bound(const cf__path_t *p, double scale);
+/* fmin and fmax as C11 gives them (a NaN gives the other number; else
+** the smaller, the second of two equal, as glibc's minsd: signed zeros
+** come out the same), inline: cf__box_grow takes every point of every
+** polygon the measures make, and a call to libm each time was a tenth of
+** measuring a figure's ink. */
+static inline double
+cf__fmin(double a, double b)
+{
+    return a != a ? b : b != b ? a : a < b ? a : b;
+}
+
+static inline double
+cf__fmax(double a, double b)
+{
+    return a != a ? b : b != b ? a : a > b ? a : b;
+}
+
 /* (x, y) grown into box (box[2] < box[0]: empty). */
-void cf__box_grow(double box[4], double x, double y);
+static inline void
+cf__box_grow(double box[4], double x, double y)
+{
+    if (box[2] < box[0]) {
+        box[0] = box[2] = x;
+        box[1] = box[3] = y;
+        return;
+    }
+    box[0] = cf__fmin(box[0], x);
+    box[1] = cf__fmin(box[1], y);
+    box[2] = cf__fmax(box[2], x);
+    box[3] = cf__fmax(box[3], y);
+}
 /* The angles of an arc v (cx cy r a0 a1) as cairo_arc takes them: a1
 ** raised by whole turns to at least a0; false when they are not finite
 ** or too far apart. */

@@ -11,20 +11,6 @@
 
 #define PI 3.14159265358979323846
 
-void
-cf__box_grow(double box[4], double x, double y)
-{
-    if (box[2] < box[0]) {
-        box[0] = box[2] = x;
-        box[1] = box[3] = y;
-        return;
-    }
-    box[0] = fmin(box[0], x);
-    box[1] = fmin(box[1], y);
-    box[2] = fmax(box[2], x);
-    box[3] = fmax(box[3], y);
-}
-
 bool
 cf__arc_range(const double *v, double *a0, double *a1)
 {

@@ -161,6 +161,12 @@ put_poly(measure_t *g, double alpha)
         b[3] = (int)fmax(0, fmin(g->r->h, floor(c[3] + 0.5)));
         if (b[2] > b[0] && b[3] > b[1] && g->pl.n > 0 && alpha > 0) {
             grow_dirty(g->r, b, g->pl.box);
+            /* the rows cf__poly_paint reads and writes */
+            if (g->r->ready != NULL)
+                cf__raster_ready(g->r, (int)fmax(b[1], floor(fmin(fmax(
+                                           g->pl.box[1], -1e9), 1e9))),
+                                 (int)fmin(b[3], ceil(fmin(fmax(
+                                           g->pl.box[3], -1e9), 1e9))));
             if (cf__poly_paint(&g->pl, g->r->px, g->r->stride, b, alpha,
                                false, g->r->rows) != 0)
                 g->failed = true;
@@ -351,9 +357,24 @@ cf__raster_clear(cf__raster_t *r, const int *b)
         r->dirty[0] = r->dirty[1] = r->dirty[2] = r->dirty[3] = 0;
     if (i1 <= i0)
         return;
+    /* (a row not ready holds anything: it is emptied when it is used) */
     for (j = j0; j < j1; j++)
-        memset(r->px + (size_t)j * (size_t)r->stride + (size_t)i0, 0,
-               (size_t)(i1 - i0));
+        if (r->ready == NULL || r->ready[j])
+            memset(r->px + (size_t)j * (size_t)r->stride + (size_t)i0, 0,
+                   (size_t)(i1 - i0));
+}
+
+void
+cf__raster_ready(cf__raster_t *r, int j0, int j1)
+{
+    int j;
+    if (r->ready == NULL)
+        return;
+    for (j = j0 > 0 ? j0 : 0; j < j1 && j < r->h; j++)
+        if (!r->ready[j] && (r->rows == NULL || r->rows[j] != 0)) {
+            memset(r->px + (size_t)j * (size_t)r->stride, 0, (size_t)r->w);
+            r->ready[j] = 1;
+        }
 }
 
 int

@@ -34,6 +34,12 @@ typedef struct cf__raster {
     /* NULL, or one byte a row: only the rows j with rows[j] != 0 are
     ** painted (cf__poly_paint), each as it comes out painting all */
     const unsigned char *rows;
+    /* NULL (every row empty or as painted), or one byte a row: a row j
+    ** with ready[j] == 0 holds anything, and is made empty where it is
+    ** first painted (cf__raster_paint_in) or read (cf__raster_ready): a
+    ** raster read near a few labels only need not clear its memory whole,
+    ** nor bring in the system's fresh pages for it */
+    unsigned char *ready;
 } cf__raster_t;
 
 /* A raster of the page box (ox, oy) .. (ox + w / res, oy + h / res),
@@ -42,8 +48,14 @@ int cf__raster_open(cf__raster_t *r, int w, int h, double res, double ox,
                     double oy);
 void cf__raster_close(cf__raster_t *r);
 /* The pixels of the pixel box b (i0 j0 i1 j1, cut to the raster; NULL:
-** all, and the dirty box then empty) made empty. */
+** all, and the dirty box then empty) made empty (those of rows not
+** ready are left: they are emptied when they are used). */
 void cf__raster_clear(cf__raster_t *r, const int *b);
+/* The rows j0 <= j < j1 (cut to the raster) of a raster with ready
+** rows made ready to be read (emptied unless ready already); painted
+** rows are made ready by the painting, the rows left out (rows) are
+** not. */
+void cf__raster_ready(cf__raster_t *r, int j0, int j1);
 /* Ops [from, to) of dl painted over the raster: a paint of coverage c
 ** times its colour's alpha and opacity a over a pixel's v gives
 ** v + a c (1 - v); 0, or -1 out of memory. */

@@ -127,6 +127,7 @@ cf_figure_destroy(cf_figure_t *fig)
     cf_scene_destroy(fig->scene);
     cf_free(fig->warnings);
     cf_free(fig->place_px);
+    cf_free(fig->place_ready);
     cf_free(fig->all_warnings);
     cf_free(fig);
 }

@@ -222,9 +222,12 @@ struct cf_figure {
     bool placed, placed_draft;
     cf__layout_t placed_for;
     /* the memory of its rasters, kept for the next placement (a layout
-    ** places the labels once per refit) */
-    unsigned char *place_px;
-    size_t place_px_size, place_px_zero;   /* bytes; the first zero */
+    ** places the labels once per refit), and which rows of the page's
+    ** raster are empty (render/layout/place-raster.c), for a raster of
+    ** place_w x place_h */
+    unsigned char *place_px, *place_ready;
+    size_t place_px_size;   /* bytes */
+    int place_w, place_h;
     /* the places the frames of an animation pass on (render/output/
     ** anim-frames.c; owned by it): the automatic labels in turn keep hint[i]
     ** while it stays about as clear as their best place, or take it

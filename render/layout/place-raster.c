@@ -167,21 +167,31 @@ cf_status_t
 cf__place_raster_memory(cf_figure_t *fig, cf__place_raster_t *r)
 {
     size_t n = (size_t)r->img.w * (size_t)r->img.h;
-    if (fig->place_px_size < 3 * n) {
-        unsigned char *px = cf_alloc_array(n, 3);
-        if (px == NULL)
+    if (fig->place_px_size < 3 * n || fig->place_w != r->img.w
+        || fig->place_h != r->img.h) {
+        /* the memory as it comes: its rows are emptied where used */
+        unsigned char *px = fig->place_px_size < 3 * n
+                                ? cf_alloc_array(n, 3) : fig->place_px;
+        unsigned char *ready = cf_calloc((size_t)r->img.h, 1);
+        if (px == NULL || ready == NULL) {
+            if (px != fig->place_px)
+                cf_free(px);
+            cf_free(ready);
             return cf_diag_set(&fig->err, CF_STATUS_NO_MEMORY, -1,
                                "out of memory placing labels");
-        cf_free(fig->place_px);
-        fig->place_px = px;
-        fig->place_px_size = 3 * n;
-        fig->place_px_zero = 0;
+        }
+        if (px != fig->place_px) {
+            cf_free(fig->place_px);
+            fig->place_px = px;
+            fig->place_px_size = 3 * n;
+        }
+        cf_free(fig->place_ready);
+        fig->place_ready = ready;
+        fig->place_w = r->img.w;
+        fig->place_h = r->img.h;
     }
-    if (fig->place_px_zero < n)
-        memset(fig->place_px + fig->place_px_zero, 0,
-               n - fig->place_px_zero);
-    fig->place_px_zero = n;
     r->img.px = fig->place_px;
+    r->img.ready = fig->place_ready;
     r->one.px = fig->place_px + n;
     r->mask = fig->place_px + 2 * n;
     return CF_STATUS_OK;
@@ -191,17 +201,20 @@ void
 cf__place_release(cf_figure_t *fig)
 {
     cf_free(fig->place_px);
-    fig->place_px = NULL;
-    fig->place_px_size = fig->place_px_zero = 0;
+    cf_free(fig->place_ready);
+    fig->place_px = fig->place_ready = NULL;
+    fig->place_px_size = 0;
+    fig->place_w = fig->place_h = 0;
 }
 
 void
 cf__place_raster_close(cf_figure_t *fig, cf__place_raster_t *r)
 {
-    if (r->img.px != NULL) {
+    (void)fig;
+    /* the rows made ready stay empty: everything painted into them is
+    ** within the dirty box */
+    if (r->img.px != NULL)
         cf__raster_clear(&r->img, r->img.dirty);
-        fig->place_px_zero = (size_t)r->img.w * (size_t)r->img.h;
-    }
     cf__dl_free(&r->dl);
     cf_free(r->sums.at);
     cf_free(r->rows);

@@ -42,11 +42,14 @@ void cf__place_raster_open(cf_figure_t *fig, cf__place_raster_t *r);
 /* The three rasters of the page, w x h each, in the figure's memory kept
 ** from the last placement (a layout places the labels once per refit of
 ** its ink box; fresh pages of memory for each would cost more than the
-** painting).  The page's raster comes out empty: cf__place_raster_close
-** empties what the placement painted, so that only the first use or a
-** larger page clears it whole.  The other two need no clearing: every
-** pixel read of them is written first (place.c: check_label,
-** what_is_under). */
+** painting).  The page's raster comes with ready rows (measure.h): a row
+** is emptied when it is first painted or read (cf__raster_ready), once
+** for all the placements of the memory, as cf__place_raster_close
+** empties again what a placement painted.  Most rows of a page whose
+** labels are all placed by hand are never used: clearing the raster
+** whole had been a tenth of a figure's time, most of it the system's
+** fresh pages.  The other two need no clearing: every pixel read of them
+** is written first (place.c: check_label, what_is_under). */
 cf_status_t cf__place_raster_memory(cf_figure_t *fig,
                                     cf__place_raster_t *r);
 /* The page's raster made empty again for the next placement; the rest

@@ -321,6 +321,7 @@ check_label(cf_figure_t *fig, const cf__layout_t *lay, raster_t *r,
     r->one.solid = false;
     if (st != CF_STATUS_OK)
         return st;
+    cf__raster_ready(&r->img, px[1], px[3]);
     n = cf__place_common(&r->one, r->img.px, px);
     if (n <= 1 && (last || (!r->one.cut && cf__place_add_apart(r, px))))
         return CF_STATUS_OK;
@@ -511,6 +512,10 @@ cf__place_labels(cf_figure_t *fig, const cf__layout_t *at, bool draft)
         return CF_STATUS_OK;
     }
     st = cf__place_raster_memory(fig, &r);
+    /* the automatic labels' candidates read the raster anywhere in the
+    ** box; the labels placed by hand only their own boxes (check_label) */
+    if (st == CF_STATUS_OK && r.rows == NULL)
+        cf__raster_ready(&r.img, box[1], box[3]);
     /* with every label placed by hand, only the rows their boxes take
     ** (read_box): the pixels there are the same */
     r.img.rows = r.rows;

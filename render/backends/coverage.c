@@ -141,6 +141,8 @@ order_edges(const cf__poly_t *pl, double s0, size_t nb, work_t *w)
     ** start past the clip and are never active */
     for (k = 0; k + 1 < nb; k++) {
         size_t lo = k == 0 ? 0 : w->count[k - 1], hi = w->count[k];
+        if (hi - lo < 2)
+            continue;   /* (most buckets: an edge or none) */
         if (hi - lo > 16)
             merge_sort(e, w->order + lo, hi - lo, w->act);
         else
@@ -259,6 +261,7 @@ cf__poly_paint(cf__poly_t *pl, unsigned char *px, int stride,
 {
     int i0, i1, j0, j1, y, k, width;
     size_t next = 0, nact = 0, nc = 0, nb, i;
+    double ends = INFINITY;   /* the least y1 of the active edges */
     work_t w;
     if (pl->failed)
         return -1;
@@ -291,17 +294,24 @@ cf__poly_paint(cf__poly_t *pl, unsigned char *px, int stride,
                 w.slot[e] = nact;
                 w.act[nact++] = e;
                 w.cx[nc++].e = e;
+                ends = pl->e[e].y1 < ends ? pl->e[e].y1 : ends;
             }
-            for (i = 0; i < nact;) {
-                size_t e = w.act[i];
-                if (pl->e[e].y1 <= sy) {
-                    w.slot[e] = GONE;
-                    w.act[i] = w.act[--nact];
-                    if (i < nact)
-                        w.slot[w.act[i]] = i;
-                    continue;
+            /* the finished edges leave act, in its order (a sub-scanline
+            ** where none ends, most of them, is not looked through) */
+            if (ends <= sy) {
+                ends = INFINITY;
+                for (i = 0; i < nact;) {
+                    size_t e = w.act[i];
+                    if (pl->e[e].y1 <= sy) {
+                        w.slot[e] = GONE;
+                        w.act[i] = w.act[--nact];
+                        if (i < nact)
+                            w.slot[w.act[i]] = i;
+                        continue;
+                    }
+                    ends = pl->e[e].y1 < ends ? pl->e[e].y1 : ends;
+                    i++;
                 }
-                i++;
             }
             /* a row left out keeps the active edges in their order; the
             ** crossings (the edges activated since at their end) are

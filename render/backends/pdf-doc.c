@@ -15,8 +15,10 @@
 **   meshes' shadings;
 **   then each page (a transparency group when it paints translucently)
 **   and its content stream, then each shading, then the fonts.
-** Streams are compressed (Flate, zlib's default level, a window and hash
-** table sized for small streams: the same bytes for the same input).  The trailer's /ID is a hash of the file before
+** Streams are compressed (Flate, level 3, a window and hash table sized
+** for small streams: the same bytes for the same input), but for those
+** under 512 bytes and the font programs under 4 KiB (PLAIN_BELOW,
+** PROGRAM_PLAIN_BELOW).  The trailer's /ID is a hash of the file before
 ** it, so that two renders of a figure are the same bytes.
 */
 #include <stdio.h>
@@ -122,18 +124,26 @@ begin_obj(doc_t *d, size_t n)
 ** deflated to 266 and 306; 1.8 % of the render's instructions, for
 ** 2.1 % more bytes over the figures' PDFs). */
 #define PLAIN_BELOW 512
+/* The same for a font's program below this: a subset's CFF of a label's
+** glyphs (Type 2 charstrings, already compact) deflates by some 12 %
+** (the 335 font programs of the figures' PDFs: 438,610 bytes, 385,583
+** deflated), a few dozen bytes, for deflate's fixed cost each (a
+** seventh of orazem-decasteljau's PDF for its three faces); larger
+** programs (a page of Chinese, TrueType) are deflated. */
+#define PROGRAM_PLAIN_BELOW 4096
 
 /* A stream object n: dict (its entries but /Length and /Filter) and the
-** data, deflated unless it is short. */
+** data, deflated unless it is short (plain_below). */
 static int
-stream_obj(doc_t *d, size_t n, const char *dict, const cf__buf_t *data)
+stream_obj(doc_t *d, size_t n, const char *dict, const cf__buf_t *data,
+           size_t plain_below)
 {
     cf__buf_t z;
     const cf__buf_t *body = data;
     char b[64];
     int r;
     memset(&z, 0, sizeof z);
-    if (data->size >= PLAIN_BELOW) {
+    if (data->size >= plain_below) {
         if (deflate_buf(data, &z) != 0) {
             cf__buf_free(&z);
             return -1;
@@ -292,7 +302,8 @@ page(doc_t *d, const cf__pdfw_t *w, size_t i)
         r = r || put(d->out, "\n   /Group << /Type /Group /S /Transparency "
                              "/CS /DeviceRGB >>");
     return r || put(d->out, " >>\nendobj\n")
-           || stream_obj(d, page_obj(i) + 1, "", &w->pages[i].content);
+           || stream_obj(d, page_obj(i) + 1, "", &w->pages[i].content,
+                         PLAIN_BELOW);
 }
 
 static int
@@ -309,7 +320,7 @@ shading(doc_t *d, const struct cf__pdfw_shading *s, size_t n)
             || put(&dict, " ");
     r = r || put(&dict, "0 1 0 1 0 1 ]") || cf__buf_append(&dict, "", 1);
     r = r || dict.failed || stream_obj(d, n, (const char *)dict.data,
-                                       &s->data);
+                                       &s->data, PLAIN_BELOW);
     cf__buf_free(&dict);
     return r ? -1 : 0;
 }
@@ -355,9 +366,11 @@ objs_begin(void *d, size_t n)
 }
 
 static int
-objs_stream(void *d, size_t n, const char *dict, const cf__buf_t *data)
+objs_stream(void *d, size_t n, const char *dict, const cf__buf_t *data,
+            bool program)
 {
-    return stream_obj(d, n, dict, data);
+    return stream_obj(d, n, dict, data,
+                      program ? PROGRAM_PLAIN_BELOW : PLAIN_BELOW);
 }
 
 int

@@ -288,12 +288,12 @@ font_objects(const struct cf__pdfw_font *f, size_t n,
         snprintf(b, sizeof b, "/Subtype /CIDFontType0C");
     else
         snprintf(b, sizeof b, "/Length1 %zu", s->program.size);
-    r = r || o->stream(o->ctx, n + 3, b, &s->program);
+    r = r || o->stream(o->ctx, n + 3, b, &s->program, true);
     if (r)
         return -1;
     memset(&cmap, 0, sizeof cmap);
     r = tounicode(f, &cmap) || cmap.failed
-        || o->stream(o->ctx, n + 4, "", &cmap);
+        || o->stream(o->ctx, n + 4, "", &cmap, false);
     cf__buf_free(&cmap);
     return r ? -1 : 0;
 }

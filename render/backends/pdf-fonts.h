@@ -27,12 +27,13 @@ size_t cf__pdfw_fonts_objects(const cf__pdfw_t *w);
 /* The /Font entries of the resources, the fonts' objects numbered from
 ** first on: 0, or -1 out of memory.  begin_obj notes object n's offset
 ** and writes its "n 0 obj\n"; stream writes a stream object (dict: its
-** entries but /Length and /Filter). */
+** entries but /Length and /Filter; program: a font's program, which the
+** document compresses only when it is large). */
 typedef struct cf__pdfw_objs {
     cf__buf_t *out;
     int (*begin_obj)(void *ctx, size_t n);
     int (*stream)(void *ctx, size_t n, const char *dict,
-                  const cf__buf_t *data);
+                  const cf__buf_t *data, bool program);
     void *ctx;
 } cf__pdfw_objs_t;
 int cf__pdfw_fonts_resources(const cf__pdfw_t *w, size_t first,

@@ -1,19 +1,24 @@
 /*
-** The fonts' metadata cache (render/backends/font-cache.h): the font
-** directories walked as fontconfig walks them (files sorted, dot files
-** skipped), each file's faces taken from the cache when its path, size
-** and modification time are the cache's, else read (render/fontfile/
-** fontmeta.h, fontlangs.h); the cache written anew when any was read or
-** went away.  The cache is mapped, not copied: a run with a warm cache
-** decodes only the accepted faces' fields, and their charsets are views
-** of the mapping that the configuration keeps (checked at their first
-** use: font-match.c), so that reading it costs a small part of a render
-** (markova-2.17: 0.29 M instructions, of 8.6 M).
+** The fonts' metadata cache (render/backends/font-cache.h), its walk and
+** its writing (its reading: font-cache-read.c): each font directory
+** stat'ed, and taken from its record in the cache when its time is the
+** record's and the record settled (fontconfig's rule: a file added,
+** removed or renamed changes its directory's time), else walked as
+** fontconfig walks it (files sorted, dot files skipped), each file's
+** faces taken from the cache when its path, size and modification time
+** are the cache's, else read (render/fontfile/fontmeta.h, fontlangs.h);
+** the cache written anew when any was read or went away, or a
+** directory's record changed.  The cache is mapped, not copied: a run
+** with a warm cache decodes only the accepted faces' fields, and their
+** charsets are views of the mapping that the configuration keeps
+** (checked at their first use, with the file's size and time for a font
+** of a directory taken from its record: font-match.c), so that reading
+** it costs a small part of a render (markova-2.17: 0.29 M instructions,
+** of 8.6 M) and a warm run one stat a directory.
 */
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
-#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -26,17 +31,12 @@
 
 #include "buffer.h"
 #include "curvefig/core.h"
+#include "font-cache-private.h"
 #include "font-cache.h"
 #include "grow.h"
 #include "sfnt.h"
 
-#define MAGIC "CFFACES"            /* with its NUL: 8 bytes */
-#define VERSION 1u
-#define HEADER 24u
-#define MAX_CACHE (64u << 20)
 #define FILE_NAME "faces.cache"
-
-enum { ST_FACES = 0, ST_REFUSED = 1, ST_NOT_FONT = 2 };
 
 /* ---- bytes out ---------------------------------------------------------- */
 
@@ -111,326 +111,6 @@ put_face(cf__buf_t *b, const cf__fmeta_t *m, const cf__flangset_t *ls,
         put_uint(b, m->ranges[i], 4);
 }
 
-/* ---- bytes in ----------------------------------------------------------- */
-
-typedef struct rd {
-    const unsigned char *p;
-    size_t len, pos;
-    bool bad;
-    const unsigned char *ranges;   /* the entry's last face's ranges (a */
-    size_t nranges;                /* count of 0 refers to them) */
-} rd_t;
-
-static const unsigned char *
-take(rd_t *r, size_t n)
-{
-    const unsigned char *p;
-    if (r->bad || !cf__ff_fits(r->pos, n, r->len)) {
-        r->bad = true;
-        return NULL;
-    }
-    p = r->p + r->pos;
-    r->pos += n;
-    return p;
-}
-
-static inline uint64_t
-get_uint(rd_t *r, int n)
-{
-    const unsigned char *p;
-    uint64_t v = 0;
-    int i;
-    if (r->bad || !cf__ff_fits(r->pos, (size_t)n, r->len)) {
-        r->bad = true;
-        return 0;
-    }
-    p = r->p + r->pos;
-    r->pos += (size_t)n;
-    for (i = n - 1; i >= 0; i--)
-        v = v << 8 | p[i];
-    return v;
-}
-
-static double
-get_f64(rd_t *r)
-{
-    uint64_t v = get_uint(r, 8);
-    double d;
-    memcpy(&d, &v, 8);
-    return d;
-}
-
-/* Whether a[0..n) and b[0..n) are the same, ASCII case ignored (as
-** cf__fmeta_same_ci compares). */
-static bool
-strncasecmp_ascii(const unsigned char *a, const char *b, size_t n)
-{
-    size_t i;
-    for (i = 0; i < n; i++) {
-        unsigned char x = a[i], y = (unsigned char)b[i];
-        if (x >= 'A' && x <= 'Z')
-            x = (unsigned char)(x - 'A' + 'a');
-        if (y >= 'A' && y <= 'Z')
-            y = (unsigned char)(y - 'A' + 'a');
-        if (x != y)
-            return false;
-    }
-    return true;
-}
-
-/* A string of at most cap - 1 bytes, no NUL in it, into dst. */
-static void
-get_str8(rd_t *r, char *dst, size_t cap)
-{
-    size_t n = (size_t)get_uint(r, 1);
-    const unsigned char *p = take(r, n);
-    if (p == NULL || n >= cap || memchr(p, 0, n) != NULL) {
-        r->bad = true;
-        dst[0] = '\0';
-        return;
-    }
-    memcpy(dst, p, n);
-    dst[n] = '\0';
-}
-
-static bool
-plausible(double v, double lo, double hi)
-{
-    return isfinite(v) && v >= lo && v <= hi;
-}
-
-/* One face: its fields checked, its ranges' bytes in bounds and *view
-** (m->nranges pairs, m->ranges NULL), and when check the ranges
-** themselves (cf__fm_ranges_valid; else when the face's coverage is
-** first used: cf__fm_font_t).  0, or 1 (damaged). */
-static int
-get_face(rd_t *r, cf__fmeta_t *m, cf__flangset_t *ls,
-         const unsigned char **view, bool check)
-{
-    size_t i, n, nl = cf__flangs_count();
-    unsigned flags;
-    const unsigned char *p;
-    /* the fields set one by one: the names past nfamily are not read */
-    m->ranges = NULL;
-    m->nranges = 0;
-    *view = NULL;
-    m->index = (unsigned)get_uint(r, 4);
-    m->nfamily = (unsigned)get_uint(r, 1);
-    if (m->nfamily < 1 || m->nfamily > CF__FMETA_NAMES)
-        r->bad = true;
-    for (i = 0; i < m->nfamily && !r->bad; i++) {
-        get_str8(r, m->family[i], sizeof m->family[i]);
-        get_str8(r, m->familylang[i], sizeof m->familylang[i]);
-    }
-    get_str8(r, m->psname, sizeof m->psname);
-    m->slant = (int)(int32_t)get_uint(r, 4);
-    m->weight = get_f64(r);
-    m->width = get_f64(r);
-    flags = (unsigned)get_uint(r, 1);
-    m->decorative = flags & 1;
-    m->cff = flags & 2;
-    m->has_codepages = flags & 4;
-    m->has_size = flags & 8;
-    m->size_lo = get_f64(r);
-    m->size_hi = get_f64(r);
-    m->fontversion = (int32_t)get_uint(r, 4);
-    m->codepages[0] = (uint32_t)get_uint(r, 4);
-    m->codepages[1] = (uint32_t)get_uint(r, 4);
-    for (i = 0; i < 8; i++)
-        ls->bits[i] = (uint32_t)get_uint(r, 4);
-    n = (size_t)get_uint(r, 4);
-    if (r->bad || m->index > 0xffff || flags > 15
-        || (m->slant != CF__FMETA_SLANT_ROMAN
-            && m->slant != CF__FMETA_SLANT_ITALIC
-            && m->slant != CF__FMETA_SLANT_OBLIQUE)
-        || !plausible(m->weight, 0, 1000) || !plausible(m->width, 0, 1000)
-        || !plausible(m->size_lo, 0, 4000) || !plausible(m->size_hi, 0, 4000)
-        || n > (r->len - r->pos) / 8 || (n == 0 && r->ranges == NULL)) {
-        r->bad = true;
-        return 1;
-    }
-    for (i = nl; i < 256; i++)
-        if (ls->bits[i / 32] >> (i % 32) & 1) {
-            r->bad = true;
-            return 1;
-        }
-    if (n == 0) {
-        /* the previous face's, checked when it was read */
-        *view = r->ranges;
-        m->nranges = r->nranges;
-        return 0;
-    }
-    if ((p = take(r, 8 * n)) == NULL)
-        return 1;
-    if (check && !cf__fm_ranges_valid(p, n)) {
-        r->bad = true;
-        return 1;
-    }
-    r->ranges = *view = p;
-    r->nranges = m->nranges = n;
-    return 0;
-}
-
-/* Whether the face at r's position has one of the accepted families
-** accept[0..n-1] (of lengths alen[]), read from its bytes (r's position
-** unchanged; false when they are damaged: get_face then says so). */
-static bool
-face_accepted(const rd_t *r, const char *const *accept, const size_t *alen,
-              size_t n)
-{
-    rd_t q = *r;
-    size_t i, k, nf;
-    q.pos += 4;
-    nf = (size_t)get_uint(&q, 1);
-    for (i = 0; i < nf && !q.bad; i++) {
-        size_t len = (size_t)get_uint(&q, 1);
-        const unsigned char *name = take(&q, len);
-        if (name == NULL)
-            return false;
-        for (k = 0; k < n; k++)
-            if (alen[k] == len && strncasecmp_ascii(name, accept[k], len))
-                return true;
-        take(&q, (size_t)get_uint(&q, 1));   /* its language */
-    }
-    return false;
-}
-
-/* A face not accepted: its bytes skipped, their structure checked (the
-** families' and name's lengths, the ranges' count and bounds); 0, or 1
-** (damaged). */
-static int
-skip_face(rd_t *r)
-{
-    size_t i, nf, n;
-    const unsigned char *p;
-    r->pos += 4;
-    nf = (size_t)get_uint(r, 1);
-    if (nf < 1 || nf > CF__FMETA_NAMES)
-        r->bad = true;
-    for (i = 0; i < 2 * nf + 1 && !r->bad; i++)
-        take(r, (size_t)get_uint(r, 1));
-    /* slant to the languages: 4 + 8 + 8 + 1 + 16 + 4 + 8 + 32 bytes */
-    take(r, 81);
-    n = (size_t)get_uint(r, 4);
-    if (r->bad || (n == 0 && r->ranges == NULL)) {
-        r->bad = true;
-        return 1;
-    }
-    if (n == 0)
-        return 0;
-    if ((p = take(r, 8 * n)) == NULL)
-        return 1;
-    r->ranges = p;
-    r->nranges = n;
-    return 0;
-}
-
-/* One entry of the cache, its fields found (the faces not decoded). */
-typedef struct entry {
-    const unsigned char *blob;   /* the whole entry */
-    size_t blob_len;
-    const char *path;            /* not NUL-terminated */
-    size_t path_len;
-    uint64_t size;
-    int64_t sec;
-    uint32_t nsec;
-    unsigned status, nfaces;
-    size_t faces_at;             /* in blob */
-    bool used;
-} entry_t;
-
-/* The entries of the cache data[0..len) into *out (cf_free'd), each
-** entry's fields checked, and when strict its faces (else each face is
-** checked when the entry is used); their number, or -1 (damaged, or out
-** of memory: *oom). */
-static long
-parse(const unsigned char *data, size_t len, entry_t **out, bool *oom,
-      bool strict)
-{
-    rd_t r = { data, len, 0, false, NULL, 0 };
-    size_t n, i;
-    entry_t *e;
-    *out = NULL;
-    *oom = false;
-    if (data == NULL || len < HEADER || len > MAX_CACHE
-        || memcmp(data, MAGIC, 8) != 0)
-        return -1;
-    r.pos = 8;
-    if (get_uint(&r, 4) != VERSION || get_uint(&r, 4) != cf__flangs_count())
-        return -1;
-    n = (size_t)get_uint(&r, 4);
-    if (get_uint(&r, 4) != len || n > len / 16)
-        return -1;
-    e = cf_alloc_array(n + 1, sizeof *e);
-    if (e == NULL) {
-        *oom = true;
-        return -1;
-    }
-    for (i = 0; i < n; i++) {
-        size_t start = r.pos, elen = (size_t)get_uint(&r, 4), k;
-        rd_t er;
-        if (r.bad || elen < 4 || !cf__ff_fits(start, elen, len))
-            break;
-        er.p = data + start;
-        er.len = elen;
-        er.pos = 4;
-        er.bad = false;
-        er.ranges = NULL;
-        er.nranges = 0;
-        e[i].blob = data + start;
-        e[i].blob_len = elen;
-        e[i].used = false;
-        e[i].path_len = (size_t)get_uint(&er, 2);
-        e[i].path = (const char *)take(&er, e[i].path_len);
-        e[i].size = get_uint(&er, 8);
-        e[i].sec = (int64_t)get_uint(&er, 8);
-        e[i].nsec = (uint32_t)get_uint(&er, 4);
-        e[i].status = (unsigned)get_uint(&er, 1);
-        e[i].nfaces = 0;
-        if (er.bad || e[i].path_len == 0
-            || memchr(e[i].path, 0, e[i].path_len) != NULL
-            || e[i].nsec >= 1000000000u || e[i].status > ST_NOT_FONT)
-            break;
-        if (e[i].status == ST_FACES) {
-            e[i].nfaces = (unsigned)get_uint(&er, 2);
-            e[i].faces_at = er.pos;
-            if (e[i].nfaces == 0)
-                break;
-            for (k = 0; k < e[i].nfaces && !er.bad && strict; k++) {
-                cf__fmeta_t m;
-                cf__flangset_t ls;
-                const unsigned char *view;
-                get_face(&er, &m, &ls, &view, true);
-            }
-            if (!strict)
-                er.pos = elen;   /* its faces read when it is used */
-        } else if (e[i].status == ST_REFUSED) {
-            size_t wl = (size_t)get_uint(&er, 2);
-            e[i].faces_at = er.pos;
-            take(&er, wl);
-        }
-        if (er.bad || er.pos != elen)
-            break;
-        r.pos = start + elen;
-    }
-    if (i < n || r.pos != len) {
-        cf_free(e);
-        return -1;
-    }
-    *out = e;
-    return (long)n;
-}
-
-long
-cf__fcache_check(const unsigned char *data, size_t len)
-{
-    entry_t *e;
-    bool oom;
-    long n = parse(data, len, &e, &oom, true);
-    cf_free(e);
-    return n;
-}
-
 /* ---- the cache's directory and file ------------------------------------ */
 
 bool
@@ -497,8 +177,9 @@ map_cache(int dfd, size_t *len)
     if (fd < 0)
         return NULL;
     if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)
-        || st.st_uid != geteuid() || st.st_size < (off_t)HEADER
-        || st.st_size > (off_t)MAX_CACHE) {
+        || st.st_uid != geteuid()
+        || st.st_size < (off_t)CF__FCACHE_HEADER
+        || st.st_size > (off_t)CF__FCACHE_MAX) {
         close(fd);
         return NULL;
     }
@@ -574,12 +255,16 @@ typedef struct walk {
     const char *const *accept;
     size_t naccept;
     size_t *alen;                /* their lengths */
-    entry_t *old;                /* the cache's entries */
-    size_t nold, cursor;
+    parsed_t old;                /* the cache's entries and directories */
+    size_t cursor;
+    struct timespec now;         /* when the walk began */
     cf__buf_t fresh;             /* the entries of the files read now */
     piece_t *pieces;             /* the cache to write, entry by entry */
     size_t npieces, cap_pieces;
+    dirrec_t *dirs;              /* and its directory records (their */
+    size_t ndirs, cap_dirs;      /* paths the caller's) */
     bool changed;
+    bool unwritable;             /* a directory the cache cannot record */
     cf__fm_font_t *fonts;        /* the accepted faces */
     size_t nfonts, cap;
     cf__fm_mapped_t *mapped;     /* the cache, which their views are of */
@@ -632,15 +317,15 @@ add_font(walk_t *w, const char *path, cf__fmeta_t *m,
 static entry_t *
 cached(walk_t *w, const char *path, const struct stat *st)
 {
-    size_t len = strlen(path), k;
-    for (k = 0; k < w->nold; k++) {
-        entry_t *e = &w->old[(w->cursor + k) % w->nold];
+    size_t len = strlen(path), k, n = w->old.n;
+    for (k = 0; k < n; k++) {
+        entry_t *e = &w->old.entries[(w->cursor + k) % n];
         if (e->path_len == len && memcmp(e->path, path, len) == 0) {
             if (e->used || e->size != (uint64_t)st->st_size
                 || e->sec != (int64_t)st->st_mtim.tv_sec
                 || e->nsec != (uint32_t)st->st_mtim.tv_nsec)
                 return NULL;
-            w->cursor = (w->cursor + k + 1) % w->nold;
+            w->cursor = (w->cursor + k + 1) % n;
             return e;
         }
     }
@@ -658,13 +343,28 @@ piece_room(walk_t *w)
     return t != NULL;
 }
 
+/* The faces taken from a file since the list had first of them given
+** back. */
+static void
+drop_fonts(walk_t *w, size_t first)
+{
+    while (w->nfonts > first) {
+        w->nfonts--;
+        cf_free(w->fonts[w->nfonts].file);
+        cf__fmeta_fini(&w->fonts[w->nfonts].meta);
+    }
+}
+
 /* The faces of a cached entry: 0, -1 (out of memory), 2 when it is
-** damaged (the file is then read again). */
+** damaged (the file is then read again).  unseen: the file was not
+** looked at (its directory is the cache's), so that its faces carry the
+** cache's size and time, compared with the file's when one is used
+** (cf__fm_font_verify). */
 static int
-from_entry(walk_t *w, const char *path, entry_t *e)
+from_entry(walk_t *w, const char *path, entry_t *e, bool unseen)
 {
     rd_t r = { e->blob, e->blob_len, e->faces_at, false, NULL, 0 };
-    size_t first = w->nfonts;
+    size_t first = w->nfonts, i;
     unsigned k;
     int got = 0;
     if (e->status == ST_REFUSED) {
@@ -681,24 +381,25 @@ from_entry(walk_t *w, const char *path, entry_t *e)
         const unsigned char *view;
         /* a face accepted decoded, its ranges checked when its
         ** coverage is first used; the others only skipped */
-        if (!face_accepted(&r, w->accept, w->alen, w->naccept)) {
-            got = skip_face(&r);
+        if (!cf__fcache_face_accepted(&r, w->accept, w->alen, w->naccept)) {
+            got = cf__fcache_skip_face(&r);
             continue;
         }
-        got = get_face(&r, &m, &ls, &view, false);
+        got = cf__fcache_get_face(&r, &m, &ls, &view, false);
         if (got == 0 && add_font(w, path, &m, &ls, view) != 0)
             got = -1;
     }
     if (got == 0 && e->status == ST_FACES && r.pos != e->blob_len)
         got = 1;
     if (got != 0) {
-        /* the faces taken from it given back */
-        while (w->nfonts > first) {
-            w->nfonts--;
-            cf_free(w->fonts[w->nfonts].file);
-            cf__fmeta_fini(&w->fonts[w->nfonts].meta);
-        }
+        drop_fonts(w, first);
         return got < 0 ? -1 : 2;
+    }
+    for (i = first; i < w->nfonts && unseen; i++) {
+        w->fonts[i].unverified = true;
+        w->fonts[i].size = e->size;
+        w->fonts[i].sec = e->sec;
+        w->fonts[i].nsec = e->nsec;
     }
     e->used = true;
     w->pieces[w->npieces].old = e;
@@ -802,27 +503,46 @@ from_file(walk_t *w, const char *path, const struct stat *st)
     return r < 0 ? -1 : 0;
 }
 
-/* The cache of the walk's pieces written (the header first); -1 when
-** out of memory. */
+/* The header, of a cache of n entries and nd directory records, total
+** bytes long. */
+static void
+put_header(cf__buf_t *b, size_t n, size_t nd, size_t total)
+{
+    put(b, CF__FCACHE_MAGIC, 8);
+    put_uint(b, CF__FCACHE_VERSION, 4);
+    put_uint(b, cf__flangs_count(), 4);
+    put_uint(b, n, 4);
+    put_uint(b, nd, 4);
+    put_uint(b, total, 4);
+}
+
+static void
+put_dir(cf__buf_t *b, const dirrec_t *d)
+{
+    put_uint(b, d->path_len, 2);
+    put(b, d->path, d->path_len);
+    put_uint(b, (uint64_t)d->sec, 8);
+    put_uint(b, d->nsec, 4);
+    put_uint(b, d->settled ? 1 : 0, 1);
+    put_uint(b, d->first, 4);
+    put_uint(b, d->count, 4);
+}
+
+/* The cache of the walk's pieces and directory records written (the
+** header first); -1 when out of memory. */
 static int
 write_pieces(walk_t *w, const char *cache, int *dfd)
 {
     cf__buf_t out = { NULL, 0, 0, 0 };
-    unsigned char h[HEADER];
-    size_t i, total = HEADER;
+    size_t i, total = CF__FCACHE_HEADER;
     for (i = 0; i < w->npieces; i++)
         total += w->pieces[i].old != NULL ? w->pieces[i].old->blob_len
                                           : w->pieces[i].len;
-    if (total > MAX_CACHE)
+    for (i = 0; i < w->ndirs; i++)
+        total += CF__FCACHE_MIN_DIR - 1 + w->dirs[i].path_len;
+    if (total > CF__FCACHE_MAX)
         return 0;
-    memcpy(h, MAGIC, 8);
-    for (i = 0; i < 4; i++) {
-        h[8 + i] = (unsigned char)(VERSION >> (8 * i));
-        h[12 + i] = (unsigned char)(cf__flangs_count() >> (8 * i));
-        h[16 + i] = (unsigned char)(w->npieces >> (8 * i));
-        h[20 + i] = (unsigned char)(total >> (8 * i));
-    }
-    put(&out, h, HEADER);
+    put_header(&out, w->npieces, w->ndirs, total);
     for (i = 0; i < w->npieces; i++) {
         const piece_t *pc = &w->pieces[i];
         if (pc->old != NULL)
@@ -830,6 +550,8 @@ write_pieces(walk_t *w, const char *cache, int *dfd)
         else
             put(&out, w->fresh.data + pc->at, pc->len);
     }
+    for (i = 0; i < w->ndirs; i++)
+        put_dir(&out, &w->dirs[i]);
     if (out.failed) {
         cf__buf_free(&out);
         return -1;
@@ -842,15 +564,72 @@ write_pieces(walk_t *w, const char *cache, int *dfd)
     return 0;
 }
 
+/* One file of a directory: from known (its entry in the cache's record
+** of the directory, the file not looked at) when given and whole, else
+** as the walk finds it: from its entry when its size and time are the
+** cache's, else read.  *whole set false when the file gives the cache no
+** entry (gone since it was listed, a subdirectory, unreadable): the
+** directory's record is then not settled, so that the next run walks it
+** and finds the same. */
+static int
+one_file(walk_t *w, const char *path, entry_t *known, bool *whole)
+{
+    struct stat st;
+    entry_t *c;
+    size_t before = w->npieces;
+    int r = 0;
+    if (known != NULL && !known->used
+        && (r = from_entry(w, path, known, true)) != 2)
+        return r;
+    if (stat(path, &st) != 0) {
+        w->changed = true;   /* gone since it was listed */
+    } else if (S_ISDIR(st.st_mode)) {
+        snprintf(w->why, w->why_cap, "%s: a subdirectory", path);
+        w->refused = true;
+    } else if ((c = cached(w, path, &st)) != NULL
+               && (r = from_entry(w, path, c, false)) != 2) {
+        ;
+    } else {
+        r = from_file(w, path, &st);
+    }
+    if (w->npieces == before)
+        *whole = false;
+    return r;
+}
+
+/* A directory's files as its record in the cache has them, none looked
+** at (the directory's time is the record's). */
+static int
+from_record(walk_t *w, const dirrec_t *d, bool *whole)
+{
+    size_t k, longest = 0;
+    char *path;
+    int r = 0;
+    for (k = d->first; k < d->first + d->count; k++)
+        if (w->old.entries[k].path_len > longest)
+            longest = w->old.entries[k].path_len;
+    if ((path = cf_malloc(longest + 1)) == NULL)
+        return -1;
+    for (k = d->first; k < d->first + d->count && r == 0; k++) {
+        entry_t *e = &w->old.entries[k];
+        memcpy(path, e->path, e->path_len);
+        path[e->path_len] = '\0';
+        r = one_file(w, path, e, whole);
+    }
+    cf_free(path);
+    return r;
+}
+
 static int
 by_path(const void *a, const void *b)
 {
     return strcmp(*(char *const *)a, *(char *const *)b);
 }
 
-/* One directory's files, sorted, each from the cache or read. */
+/* One directory's files listed and sorted (dot files skipped), each
+** from the cache or read. */
 static int
-walk_dir(walk_t *w, const char *dir)
+walk_dir(walk_t *w, const char *dir, bool *whole)
 {
     DIR *d = opendir(dir);
     struct dirent *e;
@@ -862,6 +641,7 @@ walk_dir(walk_t *w, const char *dir)
     if (d == NULL) {
         snprintf(w->why, w->why_cap, "%s: cannot be read", dir);
         w->refused = true;
+        *whole = false;
         return 0;
     }
     while ((e = readdir(d)) != NULL) {
@@ -888,25 +668,146 @@ walk_dir(walk_t *w, const char *dir)
         names[i] = (char *)paths.data + at[i];
     if (r == 0 && n > 0)
         qsort(names, n, sizeof *names, by_path);
-    for (i = 0; i < n && r == 0; i++) {
-        struct stat st;
-        entry_t *c;
-        if (stat(names[i], &st) != 0) {
-            w->changed = true;   /* gone since it was listed */
-        } else if (S_ISDIR(st.st_mode)) {
-            snprintf(w->why, w->why_cap, "%s: a subdirectory", names[i]);
-            w->refused = true;
-        } else if ((c = cached(w, names[i], &st)) != NULL
-                   && (r = from_entry(w, names[i], c)) != 2) {
-            ;
-        } else {
-            r = from_file(w, names[i], &st);
-        }
-    }
+    for (i = 0; i < n && r == 0; i++)
+        r = one_file(w, names[i], NULL, whole);
     cf_free(names);
     cf_free(at);
     cf__buf_free(&paths);
     return r;
+}
+
+/* The cache's record of directory dir, or NULL. */
+static const dirrec_t *
+old_dir(const walk_t *w, const char *dir)
+{
+    size_t k, n = strlen(dir);
+    for (k = 0; k < w->old.ndirs; k++)
+        if (w->old.dirs[k].path_len == n
+            && memcmp(w->old.dirs[k].path, dir, n) == 0)
+            return &w->old.dirs[k];
+    return NULL;
+}
+
+/* Whether a directory of time t is settled at the walk's time: 2 s or
+** more before it, so that a file added since (at the walk's time or
+** later) has given the directory another time even where a file
+** system's times are coarse (FAT's are 2 s). */
+static bool
+settled(const walk_t *w, const struct timespec *t)
+{
+    int64_t s = (int64_t)w->now.tv_sec - (int64_t)t->tv_sec;
+    return s > 2 || (s == 2 && w->now.tv_nsec >= t->tv_nsec);
+}
+
+static bool
+same_record(const dirrec_t *a, const dirrec_t *b)
+{
+    return a->sec == b->sec && a->nsec == b->nsec
+           && a->settled == b->settled && a->first == b->first
+           && a->count == b->count;
+}
+
+/* The record of a directory walked now, and whether the cache's differs
+** (the cache is then written anew).  A directory named twice is no
+** cache's: the records' runs cover every entry once (font-cache-read.c),
+** and its second walk's entries are its first's again. */
+static int
+add_dir(walk_t *w, const dirrec_t *rec, const dirrec_t *old)
+{
+    dirrec_t *t;
+    size_t k;
+    if (old == NULL || !same_record(old, rec))
+        w->changed = true;
+    for (k = 0; k < w->ndirs; k++)
+        if (w->dirs[k].path_len == rec->path_len
+            && memcmp(w->dirs[k].path, rec->path, rec->path_len) == 0) {
+            w->unwritable = true;
+            return 0;
+        }
+    t = cf__grow_array(w->dirs, &w->cap_dirs, w->ndirs + 1, sizeof *t, 8);
+    if (t == NULL)
+        return -1;
+    w->dirs = t;
+    w->dirs[w->ndirs++] = *rec;
+    return 0;
+}
+
+/* One font directory (st: its stat): from the cache's record when the
+** record is settled and the directory's time is the record's (fontconfig
+** revalidates its caches so: a file added, removed or renamed changes
+** its directory's time), else walked. */
+static int
+from_dir(walk_t *w, const char *dir, const struct stat *st)
+{
+    const dirrec_t *old = old_dir(w, dir);
+    dirrec_t rec;
+    bool whole = true;
+    int r;
+    rec.path = dir;
+    rec.path_len = strlen(dir);
+    rec.sec = (int64_t)st->st_mtim.tv_sec;
+    rec.nsec = (uint32_t)st->st_mtim.tv_nsec;
+    rec.first = w->npieces;
+    if (rec.path_len > 0xffff) {
+        w->unwritable = true;   /* no record of it: no cache */
+        return walk_dir(w, dir, &whole);
+    }
+    if (old != NULL && old->settled && old->sec == rec.sec
+        && old->nsec == rec.nsec)
+        r = from_record(w, old, &whole);
+    else
+        r = walk_dir(w, dir, &whole);
+    if (r != 0)
+        return r;
+    rec.count = w->npieces - rec.first;
+    rec.settled = whole && settled(w, &st->st_mtim);
+    return add_dir(w, &rec, old);
+}
+
+/* The walk's lists freed; its fonts too when they are not the
+** configuration's (fonts). */
+static void
+walk_fini(walk_t *w, bool fonts)
+{
+    cf__buf_free(&w->fresh);
+    cf_free(w->pieces);
+    cf_free(w->dirs);
+    cf_free(w->old.entries);
+    cf_free(w->alen);
+    if (fonts) {
+        drop_fonts(w, 0);
+        cf_free(w->fonts);
+        cf__fm_mapped_free(w->mapped);
+    }
+}
+
+/* The cache file at cache mapped (map NULL: none or not the user's),
+** kept by the walk's mapped; -1 when out of memory. */
+static int
+open_cache(walk_t *w, const char *cache, int *dfd)
+{
+    void *map = NULL;
+    size_t len = 0;
+    long n;
+    bool oom;
+    if (cache != NULL && (*dfd = open_dir(cache, false)) >= 0)
+        map = map_cache(*dfd, &len);
+    n = cf__fcache_parse(map, len, &w->old, &oom, false);
+    w->changed = n < 0;
+    if (map == NULL)
+        return oom ? -1 : 0;
+    if (!oom) {
+        /* kept by the configuration while its fonts' views are of it */
+        w->mapped = cf_calloc(1, sizeof *w->mapped);
+    }
+    if (w->mapped == NULL) {
+        munmap(map, len);
+        return -1;
+    }
+    w->mapped->map = map;
+    w->mapped->len = len;
+    w->mapped->cache = strdup(cache);   /* NULL: not removed */
+    return 0;
 }
 
 int
@@ -917,11 +818,8 @@ cf__fcache_config(const cf__fm_source_t *dirs, size_t ndirs,
 {
     walk_t w;
     char buf[512];
-    void *map = NULL;
-    size_t len = 0, d, i;
+    size_t d, i;
     int dfd = -1, r = 0;
-    long nold;
-    bool oom;
     *out = NULL;
     memset(&w, 0, sizeof w);
     w.accept = accept;
@@ -934,27 +832,8 @@ cf__fcache_config(const cf__fm_source_t *dirs, size_t ndirs,
         return -1;
     for (i = 0; i < naccept; i++)
         w.alen[i] = strlen(accept[i]);
-    if (cache != NULL && (dfd = open_dir(cache, false)) >= 0)
-        map = map_cache(dfd, &len);
-    nold = parse(map, len, &w.old, &oom, false);
-    if (oom)
-        r = -1;
-    if (map != NULL && r == 0) {
-        /* kept by the configuration while its fonts' views are of it */
-        w.mapped = cf_calloc(1, sizeof *w.mapped);
-        if (w.mapped == NULL) {
-            munmap(map, len);
-            r = -1;
-        } else {
-            w.mapped->map = map;
-            w.mapped->len = len;
-            w.mapped->cache = strdup(cache);   /* NULL: not removed */
-        }
-    } else if (map != NULL) {
-        munmap(map, len);
-    }
-    w.nold = nold > 0 ? (size_t)nold : 0;
-    w.changed = nold < 0;
+    clock_gettime(CLOCK_REALTIME, &w.now);
+    r = open_cache(&w, cache, &dfd);
     /* the walk goes on after a refusal, so that the cache keeps it */
     for (d = 0; d < ndirs && r == 0; d++) {
         struct stat st;
@@ -966,29 +845,21 @@ cf__fcache_config(const cf__fm_source_t *dirs, size_t ndirs,
             }
             continue;
         }
-        r = walk_dir(&w, dirs[d].dir);
+        r = from_dir(&w, dirs[d].dir, &st);
     }
-    for (i = 0; i < w.nold; i++)
-        if (!w.old[i].used)
+    for (i = 0; i < w.old.n; i++)
+        if (!w.old.entries[i].used)
             w.changed = true;   /* a file gone */
     /* written whole: a walk stopped by a refusal is not */
-    if (r == 0 && w.changed && cache != NULL)
+    if (r == 0 && w.changed && !w.unwritable && cache != NULL)
         r = write_pieces(&w, cache, &dfd);
-    cf__buf_free(&w.fresh);
-    cf_free(w.pieces);
-    cf_free(w.old);
-    cf_free(w.alen);
     if (dfd >= 0)
         close(dfd);
     if (r != 0 || w.refused) {
-        for (i = 0; i < w.nfonts; i++) {
-            cf_free(w.fonts[i].file);
-            cf__fmeta_fini(&w.fonts[i].meta);
-        }
-        cf_free(w.fonts);
-        cf__fm_mapped_free(w.mapped);
+        walk_fini(&w, true);
         return r != 0 ? r : 1;
     }
+    walk_fini(&w, false);
     r = cf__fm_config_of(w.fonts, w.nfonts, accept, naccept, out, why,
                          why_cap);
     cf_free(w.fonts);

@@ -4,7 +4,23 @@
 ** configuration (46 faces, of which 20 CJK faces of 65,000 characters)
 ** costs more than a render, so what render/fontfile/fontmeta.h and
 ** fontlangs.h read of each file is kept in one file, and a file is read
-** again only when its size or modification time changed.
+** again only when its size or modification time changed.  A directory is
+** revalidated as fontconfig revalidates its caches, by its own time: when
+** its time is the one the cache recorded, its files are the cache's
+** record of it (no readdir, no stat of a file: one stat a directory for a
+** warm run); else it is walked (listed, sorted, each file's size and
+** time compared with its entry's).  A file added, removed or renamed
+** changes its directory's time; one added in the same tick of a coarse
+** clock as the time recorded would not, so that a record is trusted
+** only when settled: its directory's time 2 s or more before the walk
+** that wrote it (an unsettled directory is walked at every run, and the
+** cache written anew once its record would be settled).  A file changed
+** in place leaves its directory's time alone: a font taken from a
+** directory's record carries its file's size and time as recorded, and
+** they are compared with the file's at its first use (its coverage, or
+** its drawing: cf__fm_font_verify), where a difference is treated as a
+** damaged view (below): its charset read from the file and the cache
+** removed, written anew by the next run.
 **
 ** The cache file is $XDG_CACHE_HOME/curvefig/faces.cache (an absolute
 ** XDG_CACHE_HOME), else $HOME/.cache/curvefig/faces.cache.  The directory
@@ -22,8 +38,9 @@
 ** too, so that it is not read again at every run.
 **
 ** The file's layout (numbers little-endian, no padding):
-**   header  "CFFACES\0", version u32, languages u32 (fontconfig's
-**           count, langs-table.h), entries u32, total length u32
+**   header  "CFFACES\0", version u32 (2), languages u32 (fontconfig's
+**           count, langs-table.h), entries u32, directories u32, total
+**           length u32
 **   entry   length u32 (of the whole entry), path length u16, path,
 **           size u64, mtime seconds i64, nanoseconds u32, status u8
 **           (0 faces, 1 refused, 2 not a font), then for status 0 the
@@ -37,6 +54,13 @@
 **           languages 8 x u32, ranges u32, then first and last u32 of
 **           each; 0 ranges: the previous face's of the file (the faces
 **           of a collection mostly share one cmap).
+**   directory (after the entries, one a walked directory) path length
+**           u16, path, mtime seconds i64, nanoseconds u32, settled u8,
+**           first entry u32, entries u32: its files are the entries
+**           first.. in the walk's order (each "path/name", sorted, no
+**           dot file); the records' runs follow one another and cover
+**           every entry, and no directory has two records.  Version 1
+**           had none: such a cache is refused, and written anew.
 ** A file's entry is checked when it is used: its structure whole (every
 ** length and count in bounds); a face of an accepted family field by
 ** field, the others only skipped.  The file stays mapped while the
@@ -46,7 +70,7 @@
 ** Unicode) the first time the face's coverage is used: a face found
 ** damaged then has its charset read from its file, and the cache file is
 ** removed so that the next run writes it anew.  cf__fcache_check checks
-** every field and range of every face.
+** every field and range of every face, and every directory record.
 */
 #ifndef CURVEFIG_RENDER_FONT_CACHE_H
 #define CURVEFIG_RENDER_FONT_CACHE_H

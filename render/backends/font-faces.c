@@ -679,6 +679,10 @@ new_fm_face(const cf__fm_face_t *fm)
     src.point = fm->size;
     src.pixel = fm->pixel_size;
     src.has_pixel = true;
+    /* a font taken from the cache unseen: its file is looked at now, when
+    ** it is drawn (a file changed in place is read again, and the cache
+    ** written anew at the next run) */
+    cf__fm_font_verify(fm->font);
     return add_face(&src, fm->font->file, (int)fm->font->meta.index,
                     fm->family, fm->slant, fm->weight, (int)fm->width,
                     fm->font->meta.psname, fm->embolden, false);

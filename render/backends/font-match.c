@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "curvefig/core.h"
@@ -241,6 +242,20 @@ reread(cf__fm_font_t *f)
     munmap(map, len);
 }
 
+/* Whether the font's file is the cache's: when the font was taken from
+** the cache unseen (its directory unchanged), its size and time now are
+** those the cache has. */
+static bool
+same_file(const cf__fm_font_t *f)
+{
+    struct stat st;
+    if (!f->unverified)
+        return true;
+    return stat(f->file, &st) == 0 && (uint64_t)st.st_size == f->size
+           && (int64_t)st.st_mtim.tv_sec == f->sec
+           && (uint32_t)st.st_mtim.tv_nsec == f->nsec;
+}
+
 /* The font's charset, its view checked at its first use. */
 static charset_t
 charset_of(const cf__fm_font_t *cf)
@@ -257,7 +272,10 @@ charset_of(const cf__fm_font_t *cf)
         pthread_mutex_lock(&check_lock);
         state = f->state;
         if (state == 0) {
-            state = cf__fm_ranges_valid(f->view, f->meta.nranges) ? 1 : 2;
+            state = same_file(f)
+                            && cf__fm_ranges_valid(f->view, f->meta.nranges)
+                        ? 1
+                        : 2;
             if (state == 2)
                 reread(f);
             __atomic_store_n(&f->state, state, __ATOMIC_RELEASE);
@@ -291,6 +309,12 @@ cs_holds(const charset_t *s, uint32_t a, uint32_t b)
             return b <= cs_at(s, 2 * mid + 1);
     }
     return false;
+}
+
+void
+cf__fm_font_verify(const cf__fm_font_t *f)
+{
+    (void)charset_of(f);
 }
 
 bool

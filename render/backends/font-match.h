@@ -63,8 +63,9 @@ typedef struct cf__fm_mapped {
 ** (cf__fm_font_has, the sort's trimming, cf__fm_font_range); a view
 ** found damaged is replaced by the charset read again from the font's
 ** file (none when that fails), and the cache file is removed so that the
-** next run writes it anew.  The languages are the cache's: the matching
-** needs no charset. */
+** next run writes it anew; so is a view of a font whose file changed in
+** place (unverified, below).  The languages are the cache's: the
+** matching needs no charset. */
 typedef struct cf__fm_font {
     char *file;
     cf__fmeta_t meta;
@@ -76,6 +77,15 @@ typedef struct cf__fm_font {
     uint32_t *reread;            /* the file's charset (the C library's
                                     heap), nreread pairs */
     size_t nreread;
+    /* unverified: a font taken from the cache without a look at its
+    ** file (its directory's time the cache's: font-cache.h), whose
+    ** file's size and time (the cache's, below) are compared with the
+    ** file's at its first use, with the view's check: a file changed in
+    ** place is then a damaged view */
+    bool unverified;
+    uint64_t size;
+    int64_t sec;
+    uint32_t nsec;
 } cf__fm_font_t;
 
 typedef struct cf__fm_config cf__fm_config_t;
@@ -118,6 +128,12 @@ void cf__fm_mapped_free(cf__fm_mapped_t *m);
 /* Whether the font's charset holds c (checked at its first use: see
 ** cf__fm_font_t).  Safe from several threads at once. */
 bool cf__fm_font_has(const cf__fm_font_t *f, uint32_t c);
+
+/* The font's first use checks done (its view, and its file's size and
+** time when unverified: see cf__fm_font_t), once: for a font about to
+** be drawn, whose coverage may not have been asked for.  Safe from
+** several threads at once. */
+void cf__fm_font_verify(const cf__fm_font_t *f);
 
 /* The number of ranges of the font's charset, and its range i in *a,
 ** *b (false past the last). */

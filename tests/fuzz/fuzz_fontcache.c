@@ -3,13 +3,18 @@
 ** font-cache.h, cf__fcache_check) on arbitrary bytes: the cache lives in
 ** the user's directory, where anything may have been written.  Every
 ** field of every entry is decoded and checked (names, lengths, ranges,
-** numbers); the input is a valid cache (its number of entries, no more
-** than the bytes can hold) or refused (-1), never a crash, a read out of
-** bounds (the sanitizers) or a stall.
+** numbers), and every directory record (its run of entries in range,
+** each a file of the directory, in order; the runs covering the entries;
+** no directory twice); the input is a valid cache (its number of
+** entries, no more than the bytes can hold) or refused (-1), never a
+** crash, a read out of bounds (the sanitizers) or a stall.
 **
-** The seeds (tests/fuzz/corpus/fontcache/) are caches this code wrote:
+** The seeds (tests/fuzz/corpus/fontcache/) are caches of version 2:
 ** CMU Serif with a file that is no font, Latin Modern Math, and a font
-** the reader refuses.
+** the reader refuses (written by version 1, their directory records
+** added: settled, and for the refused font not), and two directories
+** (LM Roman 10 with a file that is no font, and Latin Modern Math's)
+** as this code wrote them.
 */
 #include <stdint.h>
 #include <stdlib.h>

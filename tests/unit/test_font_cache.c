@@ -3,10 +3,20 @@
 **   - the configuration from the cache equals the one read from the
 **     files, font by font and field by field, and a second run reads no
 **     font file it has (the cache file unchanged);
-**   - a cache made stale (a file's time changed) is written anew;
+**   - a cache made stale (a file's time changed) is written anew; one of
+**     version 1 (no directory records) too;
+**   - directories: one whose time is 2 s past (settled) is taken from its
+**     record, its files not looked at (a file's time changed in place not
+**     seen by the walk, the cache not written) and a font of a file
+**     changed in place (its time, or its size) found at its first use
+**     (its charset the file's, the cache removed); a file added, removed
+**     or renamed (the directory's time another) seen; one whose time is
+**     now walked whole at every run, the cache written only when its
+**     record changes (settled once 2 s past);
 **   - damaged caches: thousands of copies (truncated at every length of
 **     its first kilobytes and at random ones, bytes flipped, lengths and
-**     counts set to extremes) are checked, those damaged in their
+**     counts set to extremes; a directory record's every field, a record
+**     of a directory twice) are checked, those damaged in their
 **     structure refused, and none is read out
 **     of bounds (the ASan build runs this); a damaged cache file in place
 **     gives a configuration, and with every font's coverage used it is
@@ -38,6 +48,7 @@
 #include <pthread.h>
 #include <sys/stat.h>
 #include <sys/time.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <cmocka.h>
@@ -323,6 +334,115 @@ test_lazy_check(void **state)
     cf__fm_config_free(direct);
 }
 
+static uint32_t
+le32(const unsigned char *p)
+{
+    return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16
+           | (uint32_t)p[3] << 24;
+}
+
+static void
+put32(unsigned char *p, uint32_t v)
+{
+    size_t i;
+    for (i = 0; i < 4; i++)
+        p[i] = (unsigned char)(v >> (8 * i));
+}
+
+/* Where the directory records of a valid cache begin (after its
+** entries: header 28 bytes, then each entry's length first). */
+static size_t
+dirs_at(const unsigned char *c)
+{
+    size_t pos = 28, i, n = le32(c + 16);
+    for (i = 0; i < n; i++)
+        pos += le32(c + pos);
+    return pos;
+}
+
+/* A cache's first directory record damaged, field by field (its path
+** length at good + at): refused. */
+static void
+damaged_records(const unsigned char *good, size_t len)
+{
+    unsigned char *copy = malloc(len + 300);
+    size_t at = dirs_at(good);
+    size_t pl = (size_t)good[at] | (size_t)good[at + 1] << 8;
+    size_t t = at + 2 + pl, n = le32(good + 16);
+    /* the fields after its path: time 8, ns 4, settled 1, first 4, count 4 */
+    struct { size_t off; uint32_t v; } bad[] = {
+        { t + 8, 1000000000u },   /* nanoseconds */
+        { t + 12, 2 },            /* settled neither 0 nor 1 (a byte) */
+        { t + 13, 1 },            /* a run not where the entries begin */
+        { t + 13, (uint32_t)n + 1 },
+        { t + 17, 0xffffffffu },  /* more entries than there are */
+        { t + 17, (uint32_t)n + 1 },
+        { t + 17, le32(good + t + 17) + 1 },   /* the next one's first */
+        { t + 17, le32(good + t + 17) - 1 },   /* one short */
+    };
+    size_t i;
+    assert_non_null(copy);
+    assert_int_equal(le32(good + 20), 4);   /* the tool's 4 directories */
+    assert_true(le32(good + t + 17) > 1);
+    for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        memcpy(copy, good, len);
+        if (bad[i].off == t + 12)
+            copy[t + 12] = (unsigned char)bad[i].v;
+        else
+            put32(copy + bad[i].off, bad[i].v);
+        assert_int_equal(cf__fcache_check(copy, len), -1);
+    }
+    /* its path another: its files not in it */
+    memcpy(copy, good, len);
+    copy[at + 2 + pl - 1] ^= 0x20;
+    assert_int_equal(cf__fcache_check(copy, len), -1);
+    /* a record more, of no files: accepted under a path of its own, not
+    ** under the first's (a directory twice) */
+    for (i = 0; i < 2; i++) {
+        size_t m = len;
+        memcpy(copy, good, len);
+        if (i == 0) {
+            copy[m++] = 4;
+            copy[m++] = 0;
+            memcpy(copy + m, "/new", 4);
+            m += 4;
+        } else {
+            memcpy(copy + m, good + at, 2 + pl);
+            m += 2 + pl;
+        }
+        memset(copy + m, 0, 13);
+        m += 13;
+        put32(copy + m, (uint32_t)n);
+        put32(copy + m + 4, 0);
+        m += 8;
+        put32(copy + 20, 5);
+        put32(copy + 24, (uint32_t)m);
+        assert_int_equal(cf__fcache_check(copy, m), i == 0 ? (long)n : -1);
+    }
+    free(copy);
+}
+
+/* A cache of version 1 (no directory records) is refused, and a file of
+** it in place written anew. */
+static void
+version_1(const unsigned char *good, const char *path, long n)
+{
+    size_t at = dirs_at(good), m = 24 + at - 28, alen = 0;
+    unsigned char *v1 = malloc(m), *again;
+    assert_non_null(v1);
+    memcpy(v1, good, 20);
+    put32(v1 + 8, 1);
+    put32(v1 + 20, (uint32_t)m);
+    memcpy(v1 + 24, good + 28, at - 28);
+    assert_int_equal(cf__fcache_check(v1, m), -1);
+    tu_write_file(path, v1, m);
+    cf__fm_config_free(config(path));
+    again = tu_read_file(path, &alen);
+    assert_int_equal(cf__fcache_check(again, alen), n);
+    free(again);
+    free(v1);
+}
+
 /* Damaged copies refused by the checker, never read out of bounds. */
 static void
 test_damaged_copies(void **state)
@@ -370,8 +490,10 @@ test_damaged_copies(void **state)
         }
         (void)cf__fcache_check(copy, len);
     }
+    damaged_records(good, len);
+    version_1(good, path, n);
     /* every byte of the header, and of the first entry's lengths, 0xff */
-    for (i = 0; i < 30 && i < len; i++) {
+    for (i = 0; i < 34 && i < len; i++) {
         memcpy(copy, good, len);
         copy[i] = 0xff;
         assert_int_equal(cf__fcache_check(copy, len), -1);
@@ -469,6 +591,241 @@ test_hardening(void **state)
     }
 }
 
+/* ---- directories: their times, not their files' ------------------------ */
+
+static const char *const lm_files[] = {
+    "lmroman10-regular.otf", "lmroman10-bold.otf", "lmmono10-regular.otf",
+};
+static const char *const lm_accept[] = { "Latin Modern Roman",
+                                         "Latin Modern Mono" };
+#define LM_DIR "/usr/share/texmf/fonts/opentype/public/lm"
+
+/* path's modification time set to ago seconds before now (its access
+** time too). */
+static void
+set_time(const char *path, long ago)
+{
+    struct timespec t[2];
+    assert_int_equal(clock_gettime(CLOCK_REALTIME, &t[0]), 0);
+    t[0].tv_sec -= ago;
+    t[1] = t[0];
+    assert_int_equal(utimensat(AT_FDCWD, path, t, 0), 0);
+}
+
+static void
+copy_file(const char *from, const char *to)
+{
+    size_t n;
+    unsigned char *b = tu_read_file(from, &n);
+    assert_non_null(b);
+    tu_write_file(to, b, n);
+    free(b);
+}
+
+/* A font directory tmp/name of the three fonts of lm_files, its time
+** ago seconds past, into dir, and a cache of it into cache (each 128
+** bytes). */
+static void
+make_font_dir(char *dir, char *cache, const char *name, long ago)
+{
+    char from[300], to[300];
+    size_t i;
+    snprintf(dir, 128, "%s/%s", tmp, name);
+    snprintf(cache, 128, "%s/%s-cache/curvefig/faces.cache", tmp, name);
+    assert_int_equal(mkdir(dir, 0700), 0);
+    for (i = 0; i < sizeof lm_files / sizeof lm_files[0]; i++) {
+        snprintf(from, sizeof from, "%s/%s", LM_DIR, lm_files[i]);
+        snprintf(to, sizeof to, "%s/%s", dir, lm_files[i]);
+        copy_file(from, to);
+    }
+    set_time(dir, ago);
+}
+
+static cf__fm_config_t *
+dir_config(const char *dir, const char *cache)
+{
+    cf__fm_source_t src = { dir, true };
+    cf__fm_config_t *c;
+    char why[512];
+    int r = cf__fcache_config(&src, 1, lm_accept, 2, cache, &c, why,
+                              sizeof why);
+    if (r != 0)
+        fail_msg("configuration of %s: %d %s", dir, r, why);
+    return c;
+}
+
+/* The cache file's inode (0: there is none): another when it was
+** written anew. */
+static ino_t
+cache_ino(const char *cache)
+{
+    struct stat st;
+    return stat(cache, &st) == 0 ? st.st_ino : 0;
+}
+
+/* The configuration's first font of file dir/name, or NULL. */
+static const cf__fm_font_t *
+font_of(const cf__fm_config_t *c, const char *dir, const char *name)
+{
+    char path[300];
+    size_t i;
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    for (i = 0; i < cf__fm_config_count(c); i++)
+        if (strcmp(cf__fm_config_font(c, i)->file, path) == 0)
+            return cf__fm_config_font(c, i);
+    return NULL;
+}
+
+/* The configuration from the cache the one read from the files. */
+static void
+same_as_files(const char *dir, const char *cache)
+{
+    cf__fm_config_t *direct = dir_config(dir, NULL);
+    cf__fm_config_t *c = dir_config(dir, cache);
+    same_config(direct, c);
+    cf__fm_config_free(c);
+    cf__fm_config_free(direct);
+}
+
+/* After a change of the directory (its time set to ago s past, another
+** than the cache's): the configuration from the cache has the font of
+** file name (present) or not, and is the one read from the files. */
+static void
+seen(const char *dir, const char *cache, long ago, const char *name,
+     bool present)
+{
+    cf__fm_config_t *c;
+    set_time(dir, ago);
+    c = dir_config(dir, cache);
+    assert_true((font_of(c, dir, name) != NULL) == present);
+    cf__fm_config_free(c);
+    same_as_files(dir, cache);
+}
+
+/* A settled directory (its time long past) is taken from the cache
+** without a look at its files: a file's time changed in place is not
+** seen by the walk (the cache is not written anew), but at the font's
+** first use; a file grown in place the same.  A file added, removed or
+** renamed changes the directory's time: the directory is walked. */
+static void
+test_dir_settled(void **state)
+{
+    char dir[128], cache[128], path[300], to[300];
+    cf__fm_config_t *direct, *c;
+    ino_t ino;
+    (void)state;
+    if (tmp[0] == '\0')
+        skip();
+    make_font_dir(dir, cache, "fonts-settled", 100);
+    direct = dir_config(dir, NULL);
+    assert_int_equal(cf__fm_config_count(direct), 3);
+    cf__fm_config_free(dir_config(dir, cache));
+    ino = cache_ino(cache);
+    assert_true(ino != 0);
+    /* (a) a file's time changed (its directory's not): not looked at */
+    snprintf(path, sizeof path, "%s/%s", dir, lm_files[1]);
+    set_time(path, 50);
+    c = dir_config(dir, cache);
+    assert_true(cache_ino(cache) == ino);
+    /* the fonts of unchanged files used: the cache kept */
+    cf__fm_font_verify(font_of(c, dir, lm_files[0]));
+    assert_true(cf__fm_font_has(font_of(c, dir, lm_files[0]), 'A'));
+    assert_true(cache_ino(cache) == ino);
+    /* (d) the changed one's at its use: its charset read from its file,
+    ** the cache removed; the configuration the files' */
+    cf__fm_font_verify(font_of(c, dir, lm_files[1]));
+    assert_true(cache_ino(cache) == 0);
+    same_config(direct, c);
+    cf__fm_config_free(c);
+    /* written anew, with the file's new time: taken from it again */
+    cf__fm_config_free(dir_config(dir, cache));
+    ino = cache_ino(cache);
+    assert_true(ino != 0);
+    c = dir_config(dir, cache);
+    cf__fm_font_verify(font_of(c, dir, lm_files[1]));
+    assert_true(cache_ino(cache) == ino);
+    cf__fm_config_free(c);
+    /* (d) a file grown in place, its time kept: found at its use
+    ** through its coverage */
+    {
+        struct stat st;
+        struct timespec t[2];
+        int fd;
+        snprintf(path, sizeof path, "%s/%s", dir, lm_files[2]);
+        assert_int_equal(stat(path, &st), 0);
+        fd = open(path, O_WRONLY | O_APPEND);
+        assert_true(fd >= 0);
+        assert_int_equal(write(fd, "\0\0\0\0", 4), 4);
+        close(fd);
+        t[0] = st.st_atim;
+        t[1] = st.st_mtim;
+        assert_int_equal(utimensat(AT_FDCWD, path, t, 0), 0);
+        c = dir_config(dir, cache);
+        assert_true(cache_ino(cache) == ino);
+        assert_true(cf__fm_font_has(font_of(c, dir, lm_files[2]), 'A'));
+        assert_true(cache_ino(cache) == 0);
+        same_config(direct, c);
+        cf__fm_config_free(c);
+        cf__fm_config_free(dir_config(dir, cache));
+    }
+    cf__fm_config_free(direct);
+    /* (b) a file added: the directory's time changes (here set to
+    ** another past time, so that the record's mtime is what differs) */
+    snprintf(path, sizeof path, "%s/lmroman10-italic.otf", LM_DIR);
+    snprintf(to, sizeof to, "%s/lmroman10-italic.otf", dir);
+    copy_file(path, to);
+    seen(dir, cache, 90, "lmroman10-italic.otf", true);
+    /* removed */
+    assert_int_equal(unlink(to), 0);
+    seen(dir, cache, 80, "lmroman10-italic.otf", false);
+    /* renamed: another name, another place in the order */
+    snprintf(path, sizeof path, "%s/%s", dir, lm_files[0]);
+    snprintf(to, sizeof to, "%s/a-first.otf", dir);
+    assert_int_equal(rename(path, to), 0);
+    seen(dir, cache, 70, "a-first.otf", true);
+    /* and the warm run after each: not written again */
+    ino = cache_ino(cache);
+    same_as_files(dir, cache);
+    assert_true(cache_ino(cache) == ino);
+}
+
+/* (c) A directory whose time is now is not settled: walked whole at
+** every run (a file's time changed in place is seen), the cache not
+** written again while nothing changes; once its time is 2 s past, the
+** cache is written with its record settled, and the walk stops. */
+static void
+test_dir_unsettled(void **state)
+{
+    char dir[128], cache[128], path[300];
+    ino_t ino;
+    (void)state;
+    if (tmp[0] == '\0')
+        skip();
+    make_font_dir(dir, cache, "fonts-fresh", 0);
+    same_as_files(dir, cache);
+    ino = cache_ino(cache);
+    assert_true(ino != 0);
+    /* nothing changed: walked, not written */
+    same_as_files(dir, cache);
+    assert_true(cache_ino(cache) == ino);
+    /* a file's time changed in place: the walk sees it */
+    snprintf(path, sizeof path, "%s/%s", dir, lm_files[1]);
+    set_time(path, 30);
+    set_time(dir, 0);
+    cf__fm_config_free(dir_config(dir, cache));
+    assert_true(cache_ino(cache) != ino);
+    ino = cache_ino(cache);
+    /* the directory older: its record settled, the cache written */
+    set_time(dir, 3);
+    cf__fm_config_free(dir_config(dir, cache));
+    assert_true(cache_ino(cache) != ino);
+    ino = cache_ino(cache);
+    /* and from then on its files are not looked at */
+    set_time(path, 20);
+    cf__fm_config_free(dir_config(dir, cache));
+    assert_true(cache_ino(cache) == ino);
+}
+
 /* The path: XDG_CACHE_HOME when absolute, else HOME's .cache. */
 static void
 test_path(void **state)
@@ -531,6 +888,8 @@ main(void)
         cmocka_unit_test(test_damaged_copies),
         cmocka_unit_test(test_lazy_check),
         cmocka_unit_test(test_hardening),
+        cmocka_unit_test(test_dir_settled),
+        cmocka_unit_test(test_dir_unsettled),
         cmocka_unit_test(test_alloc_failure),
         cmocka_unit_test(test_path),
     };

@@ -36,7 +36,7 @@
 #include "grow.h"
 #include "sfnt.h"
 
-#define FILE_NAME "faces.cache"
+#define FILE_NAME CF__FCACHE_FILE
 
 /* ---- bytes out ---------------------------------------------------------- */
 

@@ -22,8 +22,8 @@
 ** damaged view (below): its charset read from the file and the cache
 ** removed, written anew by the next run.
 **
-** The cache file is $XDG_CACHE_HOME/curvefig/faces.cache (an absolute
-** XDG_CACHE_HOME), else $HOME/.cache/curvefig/faces.cache.  The directory
+** The cache file is $XDG_CACHE_HOME/curvefig/faces-2.cache (an absolute
+** XDG_CACHE_HOME), else $HOME/.cache/curvefig/faces-2.cache.  The directory
 ** is made mode 0700 when missing and used only when it is a directory of
 ** the user's own, not group- or world-writable, and not a symbolic link;
 ** the file is written to a new file of a random name in that directory

@@ -178,7 +178,7 @@ def own_failures(tool, tmp, label):
                                 % (fmt, run, ", ".join(early)))
         with open(os.path.join(tmp, run, "markova-2.17.pdf"), "rb") as f:
             pdfs.append(f.read())
-    cache = os.path.join(home, ".cache", "curvefig", "faces.cache")
+    cache = os.path.join(home, ".cache", "curvefig", "faces-2.cache")
     if not os.path.isfile(cache):
         failures.append("no cache was written at %s" % cache)
     if len(pdfs) == 2 and pdfs[0] != pdfs[1]:

@@ -162,7 +162,7 @@ test_same_from_cache(void **state)
     (void)state;
     if (tmp[0] == '\0')
         skip();
-    snprintf(path, sizeof path, "%s/a/curvefig/faces.cache", tmp);
+    snprintf(path, sizeof path, "%s/a/curvefig/faces-2.cache", tmp);
     direct = config(NULL);
     first = config(path);
     assert_int_equal(stat(path, &st1), 0);
@@ -259,7 +259,7 @@ test_lazy_check(void **state)
     (void)state;
     if (tmp[0] == '\0')
         skip();
-    snprintf(path, sizeof path, "%s/h/curvefig/faces.cache", tmp);
+    snprintf(path, sizeof path, "%s/h/curvefig/faces-2.cache", tmp);
     direct = config(NULL);
     cf__fm_config_free(config(path));
     c = config(path);
@@ -456,10 +456,10 @@ test_damaged_copies(void **state)
     (void)state;
     if (tmp[0] == '\0')
         skip();
-    snprintf(path, sizeof path, "%s/b/faces.cache", tmp);
-    mkdir(path, 0700);   /* b/faces.cache/ is a directory: b is made */
+    snprintf(path, sizeof path, "%s/b/faces-2.cache", tmp);
+    mkdir(path, 0700);   /* b/faces-2.cache/ is a directory: b is made */
     rmdir(path);
-    snprintf(path, sizeof path, "%s/b/curvefig/faces.cache", tmp);
+    snprintf(path, sizeof path, "%s/b/curvefig/faces-2.cache", tmp);
     cf__fm_config_free(config(path));
     good = tu_read_file(path, &len);
     assert_non_null(good);
@@ -541,10 +541,10 @@ test_hardening(void **state)
     assert_int_equal(mkdir(link, 0700), 0);
     snprintf(link, sizeof link, "%s/c/curvefig", tmp);
     assert_int_equal(symlink(real, link), 0);
-    snprintf(path, sizeof path, "%s/faces.cache", link);
+    snprintf(path, sizeof path, "%s/faces-2.cache", link);
     c = config(path);
     cf__fm_config_free(c);
-    snprintf(path, sizeof path, "%s/faces.cache", real);
+    snprintf(path, sizeof path, "%s/faces-2.cache", real);
     assert_int_not_equal(stat(path, &st), 0);
     /* group-writable: not used */
     snprintf(real, sizeof real, "%s/d", tmp);
@@ -552,7 +552,7 @@ test_hardening(void **state)
     snprintf(real, sizeof real, "%s/d/curvefig", tmp);
     assert_int_equal(mkdir(real, 0700), 0);
     assert_int_equal(chmod(real, 0770), 0);
-    snprintf(path, sizeof path, "%s/faces.cache", real);
+    snprintf(path, sizeof path, "%s/faces-2.cache", real);
     cf__fm_config_free(config(path));
     assert_int_not_equal(stat(path, &st), 0);
     /* the cache file a symbolic link: its target untouched, the link
@@ -563,7 +563,7 @@ test_hardening(void **state)
     assert_int_equal(mkdir(real, 0700), 0);
     snprintf(target, sizeof target, "%s/target", tmp);
     tu_write_file(target, (const unsigned char *)"keep", 4);
-    snprintf(path, sizeof path, "%s/faces.cache", real);
+    snprintf(path, sizeof path, "%s/faces-2.cache", real);
     assert_int_equal(symlink(target, path), 0);
     cf__fm_config_free(config(path));
     {
@@ -576,7 +576,7 @@ test_hardening(void **state)
     assert_int_equal(lstat(path, &st), 0);
     assert_true(S_ISREG(st.st_mode));
     /* nowhere to write: the configuration all the same */
-    c = config("/proc/cf-no-such-dir/curvefig/faces.cache");
+    c = config("/proc/cf-no-such-dir/curvefig/faces-2.cache");
     assert_true(cf__fm_config_count(c) > 0);
     cf__fm_config_free(c);
     /* a read-only directory (when not root, for whom it is not) */
@@ -585,7 +585,7 @@ test_hardening(void **state)
         assert_int_equal(mkdir(real, 0700), 0);
         snprintf(real, sizeof real, "%s/f/curvefig", tmp);
         assert_int_equal(mkdir(real, 0500), 0);
-        snprintf(path, sizeof path, "%s/faces.cache", real);
+        snprintf(path, sizeof path, "%s/faces-2.cache", real);
         cf__fm_config_free(config(path));
         assert_int_not_equal(stat(path, &st), 0);
     }
@@ -631,7 +631,7 @@ make_font_dir(char *dir, char *cache, const char *name, long ago)
     char from[300], to[300];
     size_t i;
     snprintf(dir, 128, "%s/%s", tmp, name);
-    snprintf(cache, 128, "%s/%s-cache/curvefig/faces.cache", tmp, name);
+    snprintf(cache, 128, "%s/%s-cache/curvefig/faces-2.cache", tmp, name);
     assert_int_equal(mkdir(dir, 0700), 0);
     for (i = 0; i < sizeof lm_files / sizeof lm_files[0]; i++) {
         snprintf(from, sizeof from, "%s/%s", LM_DIR, lm_files[i]);
@@ -835,10 +835,10 @@ test_path(void **state)
     setenv("XDG_CACHE_HOME", "/x/cache", 1);
     setenv("HOME", "/h", 1);
     assert_true(cf__fcache_path(buf, sizeof buf));
-    assert_string_equal(buf, "/x/cache/curvefig/faces.cache");
+    assert_string_equal(buf, "/x/cache/curvefig/faces-2.cache");
     setenv("XDG_CACHE_HOME", "relative", 1);
     assert_true(cf__fcache_path(buf, sizeof buf));
-    assert_string_equal(buf, "/h/.cache/curvefig/faces.cache");
+    assert_string_equal(buf, "/h/.cache/curvefig/faces-2.cache");
     unsetenv("XDG_CACHE_HOME");
     unsetenv("HOME");
     assert_false(cf__fcache_path(buf, sizeof buf));
@@ -874,7 +874,7 @@ test_alloc_failure(void **state)
     (void)state;
     if (tmp[0] == '\0')
         skip();
-    snprintf(fail_path, sizeof fail_path, "%s/g/curvefig/faces.cache", tmp);
+    snprintf(fail_path, sizeof fail_path, "%s/g/curvefig/faces-2.cache", tmp);
     cf__fm_config_free(config(fail_path));
     tu_fail_loop("font cache read", cached_op, false);
     tu_fail_loop("font cache written", writing_op, false);

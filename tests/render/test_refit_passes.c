@@ -11,7 +11,7 @@
 ** by less than one unit and 0.01 bp ends the refits, and each third room
 ** is extrapolated from the two before it: no figure takes more than 6
 ** passes (markova-2.16, whose labels change places as the scale
-** changes, and markova-2.19, 7 before), and the page is the size asked
+** changes, and markova-2.19, 8 before), and the page is the size asked
 ** for, in the dimension that limits the drawing, to within 4 such units
 ** (a change below the tolerance on both sides of the last pass, plus the
 ** ink box's rounding out on both sides), and nowhere larger. */

@@ -224,6 +224,8 @@ cf__figure_build(cf_figure_t *fig, const cf__layout_t *lay, cf__dl_t *dl)
 ** such a rounding step moves by one unit from one pass to the next and
 ** back, for ever: with 0.01 alone the refits ran to their limit. */
 #define REFINE_TOL (1.0 / 64 + 0.01)
+/* ... or until this many passes */
+#define REFINE_PASSES 8
 
 /* The available box avail for the data box: the page inside the margin
 ** less what sticks out of the data box of layout lay (ink, page bp), at
@@ -427,7 +429,7 @@ cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
     ** to its ink is measured again until the ink fills the page inside
     ** the margin (label places change a little with the scale), each
     ** third room extrapolated from the two before it (extrapolate) */
-    for (pass = 0; pass < (refine ? 8 : 1); pass++) {
+    for (pass = 0; pass < (refine ? REFINE_PASSES : 1); pass++) {
         double prev[4];
         cf_status_t st;
         memcpy(prev, avail, sizeof prev);
@@ -452,7 +454,8 @@ cf__figure_layout(cf_figure_t *fig, cf__layout_t *lay)
             && fabs(prev[2] - avail[2]) < REFINE_TOL
             && fabs(prev[3] - avail[3]) < REFINE_TOL)
             break;
-        if (behind) {
+        /* (the last pass's room is the one measured, not a guess) */
+        if (behind && pass + 1 < REFINE_PASSES) {
             extrapolate(before, prev, avail);
             compute_map(fig, win, keep, avail, lay);
         } else {

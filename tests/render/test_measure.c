@@ -17,7 +17,11 @@
 ** ink within 3 %, with at most 3 % of the inked pixels off by more than
 ** half of full ink (anti-aliased edges of lines thinner than a pixel, and
 ** glyphs, which cairo puts at whole pixels and the seam where they are;
-** the shipped figures measure at most 1.8 % and 1.4 %). */
+** the shipped figures measure at most 1.8 % and 1.4 %).
+**
+** A raster whose rows are made ready where used (cf__raster_ready)
+** paints and clears as one cleared whole, and leaves alone the rows
+** nothing used. */
 #include <math.h>
 #include <setjmp.h>
 #include <stdarg.h>
@@ -158,6 +162,113 @@ test_shapes(void **state)
     cf__dl_free(&dl);
 }
 
+/* ---- rows made ready where used ---------------------------------------- */
+
+#define JUNK 0xAB
+
+/* A 200 x 200 raster at 2 pixels a bp: its memory full of JUNK and its
+** rows not ready when ready, else zero; rows (NULL: all) painted. */
+static void
+junk_raster(cf__raster_t *r, bool ready, const unsigned char *rows)
+{
+    assert_int_equal(cf__raster_open(r, 200, 200, 2, 0, 0), 0);
+    if (ready) {
+        memset(r->px, JUNK, 200 * 200);
+        r->ready = calloc(200, 1);
+        assert_non_null(r->ready);
+    }
+    r->rows = rows;
+}
+
+/* A disc and a stroke across the middle, painted within the pixel box
+** 20 .. 180 each way. */
+static void
+two_shapes(cf__dl_t *dl)
+{
+    cf__paint_t p = solid_fill();
+    cf__dl_reset(dl);
+    cf__dl_path_begin(dl);
+    cf__dl_arc(dl, 40, 30, 12.3, 0, 2 * PI);
+    cf__dl_close(dl);
+    cf__dl_path_paint(dl, &p);
+    memset(&p, 0, sizeof p);
+    p.stroke = true;
+    p.line.color.a = 1;
+    p.line.opacity = 0.6;
+    p.line.width = 3;
+    cf__dl_path_begin(dl);
+    cf__dl_move(dl, 5, 70);
+    cf__dl_curve(dl, 30, 20, 60, 90, 95, 40);
+    cf__dl_path_paint(dl, &p);
+}
+
+/* A raster whose rows are made ready where they are first painted or
+** read (cf__raster_t.ready: the label placement's, render/layout/
+** place-raster.c) has, in every row painted or read, the pixels of a
+** raster cleared whole; the rows neither painted nor read keep what the
+** memory held (nothing cleared them); clearing the dirty box leaves the
+** rows not ready as they are and empties the ready ones.  With only some
+** rows painted (rows), only those are made ready. */
+static void
+test_ready_rows(void **state)
+{
+    static const int box[4] = { 20, 20, 180, 180 };
+    unsigned char rows[200];
+    cf__raster_t a, b;
+    cf__dl_t dl;
+    int i, j, pass;
+    (void)state;
+    cf__dl_init(&dl);
+    two_shapes(&dl);
+    memset(rows, 0, sizeof rows);
+    for (j = 40; j < 70; j++)
+        rows[j] = 1;
+    for (j = 150; j < 160; j++)
+        rows[j] = 1;
+    for (pass = 0; pass < 2; pass++) {
+        const unsigned char *only = pass == 0 ? NULL : rows;
+        long painted = 0, kept = 0;
+        junk_raster(&a, false, only);
+        junk_raster(&b, true, only);
+        assert_int_equal(cf__raster_paint_in(&a, &dl, 0, dl.count, box), 0);
+        assert_int_equal(cf__raster_paint_in(&b, &dl, 0, dl.count, box), 0);
+        b.rows = NULL;
+        cf__raster_ready(&b, 150, 160);   /* read there */
+        for (j = 0; j < 200; j++) {
+            const unsigned char *pa = a.px + (size_t)j * 200;
+            const unsigned char *pb = b.px + (size_t)j * 200;
+            if (b.ready[j]) {
+                assert_memory_equal(pa, pb, 200);
+                for (i = 0; i < 200; i++)
+                    painted += pb[i] != 0;
+            } else {
+                /* never painted: no ink of the shapes in the raster
+                ** cleared whole either (a row beside them, or left out) */
+                for (i = 0; i < 200; i++) {
+                    assert_int_equal(pb[i], JUNK);
+                    assert_int_equal(pa[i], 0);
+                }
+                kept++;
+            }
+            if (only != NULL && !rows[j])
+                assert_int_equal(b.ready[j], 0);
+        }
+        assert_true(painted > 200);   /* the shapes are there */
+        assert_true(kept > 50);       /* and not every row was cleared */
+        cf__raster_clear(&b, b.dirty);
+        for (j = 0; j < 200; j++)
+            for (i = 0; i < 200; i++) {
+                unsigned char v = b.px[(size_t)j * 200 + (size_t)i];
+                assert_int_equal(v, b.ready[j] ? 0 : JUNK);
+            }
+        free(b.ready);
+        b.ready = NULL;
+        cf__raster_close(&a);
+        cf__raster_close(&b);
+    }
+    cf__dl_free(&dl);
+}
+
 /* ---- the shipped figures ------------------------------------------------ */
 
 static int
@@ -262,6 +373,7 @@ main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_shapes),
+        cmocka_unit_test(test_ready_rows),
         cmocka_unit_test(test_shipped),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -327,7 +327,10 @@ main(int argc, char **argv)
                 setenv("FC_LANG", envs[e][2], 1);
             char k[24];
             snprintf(k, sizeof k, "%zu", e);
-            execl("/proc/self/exe", argv[0], "--child", k, (char *)NULL);
+            /* the program by its path (under valgrind /proc/self/exe is
+            ** valgrind's own tool, which refuses to run) */
+            execl(strchr(argv[0], '/') != NULL ? argv[0] : "/proc/self/exe",
+                  argv[0], "--child", k, (char *)NULL);
             _exit(127);
         }
         if (waitpid(pid, &status, 0) != pid || !WIFEXITED(status)

@@ -62,9 +62,9 @@ cf__place_sums(cf__place_sums_t *s, const cf__raster_t *img, const int b[4])
 }
 
 double
-cf__place_ink(const cf__place_raster_t *r, const double b[4])
+cf__place_ink(cf__place_raster_t *r, const double b[4])
 {
-    const cf__raster_t *img = &r->img;
+    cf__raster_t *img = &r->img;
     const cf__place_sums_t *s = &r->sums;
     double whole[4], sum = 0, inside = 0, res = r->res;
     int px[4], i, j;
@@ -79,6 +79,8 @@ cf__place_ink(const cf__place_raster_t *r, const double b[4])
             const uint32_t *bot = s->at + (size_t)(px[3] - s->b[1]) * w;
             sum = (double)(bot[a1] - bot[a0] - top[a1] + top[a0]);
         } else {
+            /* (a box beyond the sums: an animation's hint farther out) */
+            cf__raster_ready(img, px[1], px[3]);
             for (j = px[1]; j < px[3]; j++)
                 for (i = px[0]; i < px[2]; i++)
                     sum += img->px[(size_t)j * (size_t)img->stride

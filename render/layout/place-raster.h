@@ -69,7 +69,7 @@ int cf__place_sums(cf__place_sums_t *s, const cf__raster_t *img,
 ** full ink; pixels off the page count as full ink.  The pixels are
 ** summed as whole numbers (exact in a double), from r->sums when they
 ** hold them. */
-double cf__place_ink(const cf__place_raster_t *r, const double b[4]);
+double cf__place_ink(cf__place_raster_t *r, const double b[4]);
 
 /* Pixels inked more than half both in one and in b (laid out as one),
 ** within the pixel box px (x0 y0 x1 y1; NULL: everywhere). */

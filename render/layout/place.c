@@ -72,7 +72,7 @@ widened(const double ink[4], double ox, double oy, double d, double b[4])
 ** origin (ox, oy): ink under the box widened by AUTO_GAP, plus a quarter
 ** of the ink in the ring out to AUTO_NEAR. */
 static double
-place_cost(const raster_t *r, const double ink[4], double ox, double oy)
+place_cost(raster_t *r, const double ink[4], double ox, double oy)
 {
     double hard[4], near[4], a, b;
     widened(ink, ox, oy, AUTO_GAP, hard);
@@ -163,7 +163,7 @@ ambiguous(const anchors_t *an, const double b[4], double px, double py)
 ** near the point as the ink lets it, never nearer another labelled point
 ** unless every place is. */
 static void
-cheapest(const raster_t *r, const anchors_t *an, const cf_label_t *lab,
+cheapest(raster_t *r, const anchors_t *an, const cf_label_t *lab,
          const cf_style_t *s, double px, double py,
          const cf__auto_place_t *hint, bool force, cf__auto_place_t *chosen)
 {
@@ -229,6 +229,9 @@ candidate_sums(raster_t *r, const cf_label_t *lab, const cf_style_t *s,
             box[2] = b[2] > box[2] ? b[2] : box[2];
             box[3] = b[3] > box[3] ? b[3] : box[3];
         }
+    /* the rows read (a label outside the window reads beyond the box
+    ** the placement made ready) */
+    cf__raster_ready(&r->img, box[1], box[3]);
     return cf__place_sums(&r->sums, &r->img, box);
 }
 

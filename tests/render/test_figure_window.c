@@ -361,6 +361,69 @@ test_label_halo(void **state)
     cf_figure_destroy(fig);
 }
 
+/* An allocator whose fresh bytes are junk varying along the block (junk
+** != 0) or zero (junk == 0). */
+static void *
+junk_alloc(void *ud, void *ptr, size_t old_size, size_t new_size)
+{
+    unsigned char *p;
+    size_t i, junk = *(const size_t *)ud;
+    if (new_size == 0) {
+        free(ptr);
+        return NULL;
+    }
+    p = realloc(ptr, new_size);
+    if (p == NULL)
+        return NULL;
+    for (i = ptr == NULL ? 0 : old_size; i < new_size; i++)
+        p[i] = (unsigned char)(junk != 0 ? (i * 131 + i / 907) * junk : 0);
+    return p;
+}
+
+/* A figure with an explicit window, a line through it and automatic
+** labels inside and outside it, as SVG made with the allocator giving
+** junk (or zero) fresh memory. */
+static char *
+window_labels_svg(size_t junk)
+{
+    cf_allocator_t a = { junk_alloc, &junk }, before;
+    double pts[] = { -0.2, 0.1, 1.3, 0.4 };
+    cf_figure_t *fig = NULL;
+    char *svg;
+    cf_use_allocator(&a, &before);
+    assert_int_equal(cf_figure_create(80, 40, CF_UNIT_MM, &fig, NULL), 0);
+    assert_int_equal(cf_figure_set_window(fig, 0, 1, 0, 0.5), 0);
+    assert_int_equal(cf_figure_add_polyline(fig, pts, 2, false, NULL), 0);
+    assert_int_equal(cf_figure_add_label(fig, 0.5, 0.25, "A", NULL), 0);
+    assert_int_equal(cf_figure_add_label(fig, 1.12, 0.38, "B_1", NULL), 0);
+    assert_int_equal(cf_figure_add_label(fig, -0.1, 0.12, "C", NULL), 0);
+    svg = render_svg(fig);
+    cf_figure_destroy(fig);
+    cf_use_allocator(&before, NULL);
+    return svg;
+}
+
+/* The label placement's raster is emptied where it is read or painted,
+** not whole (render/layout/place-raster.c): the places of labels
+** outside an explicit window, whose candidates lie beyond the box the
+** placement readies, read their own rows too.  Whatever fresh memory
+** holds, the figure is the same (before that, a label outside the
+** window weighed its places on what the allocator left there: found by
+** memcheck on the script fuzzer's corpus). */
+static void
+test_labels_on_fresh_memory(void **state)
+{
+    char *zero = window_labels_svg(0), *junk;
+    size_t k;
+    (void)state;
+    for (k = 1; k < 6; k++) {
+        junk = window_labels_svg(k * 37);
+        assert_string_equal(junk, zero);
+        free(junk);
+    }
+    free(zero);
+}
+
 int
 main(void)
 {
@@ -370,6 +433,7 @@ main(void)
         cmocka_unit_test(test_auto_label_place),
         cmocka_unit_test(test_hull),
         cmocka_unit_test(test_label_halo),
+        cmocka_unit_test(test_labels_on_fresh_memory),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -269,6 +269,16 @@ tu_read_header(const char *root, const char *name, char *buf, size_t size)
     fclose(f);
 }
 
+bool
+tu_bytes_hold(const unsigned char *p, size_t n, const char *s)
+{
+    size_t k = strlen(s), i;
+    for (i = 0; i + k <= n; i++)
+        if (memcmp(p + i, s, k) == 0)
+            return true;
+    return false;
+}
+
 void
 tu_write_file(const char *path, const void *data, size_t n)
 {

@@ -80,5 +80,8 @@ unsigned tu_sample(void);
 ** written to path (failing the test when they cannot be). */
 unsigned char *tu_read_file(const char *path, size_t *len);
 void tu_write_file(const char *path, const void *data, size_t n);
+/* Whether the n bytes at p (a file's, a rendering's: no C string, no NUL
+** after them) hold the string s. */
+bool tu_bytes_hold(const unsigned char *p, size_t n, const char *s);
 
 #endif

@@ -105,16 +105,6 @@ test_shipped_figures_fit(void **state)
     assert_int_equal(failed, 0);
 }
 
-static bool
-has(const unsigned char *data, size_t size, const char *s)
-{
-    size_t n = strlen(s), i;
-    for (i = 0; i + n <= size; i++)
-        if (memcmp(data + i, s, n) == 0)
-            return true;
-    return false;
-}
-
 /* The C API: CF_PAGE_INK with a free aspect ratio fills width x height
 ** exactly; CF_PAGE_FIXED keeps the page; the background is painted in PNG
 ** only unless CF_BACKGROUND_ALWAYS (the SVG paints it as a white
@@ -141,12 +131,12 @@ test_api_page_and_background(void **state)
     assert_true(fabs(pw - 200) < SLACK && fabs(ph - 120) < SLACK);
     assert_int_equal(cf_figure_render(fig, CF_FORMAT_SVG, NULL, &svg, &size,
                                       NULL), 0);
-    assert_false(has(svg, size, white));
+    assert_false(tu_bytes_hold(svg, size, white));
     cf_free(svg);
     assert_int_equal(cf_figure_set_background(fig, CF_BACKGROUND_ALWAYS), 0);
     assert_int_equal(cf_figure_render(fig, CF_FORMAT_SVG, NULL, &svg, &size,
                                       NULL), 0);
-    assert_true(has(svg, size, white));
+    assert_true(tu_bytes_hold(svg, size, white));
     cf_free(svg);
     cf_figure_destroy(fig);
     cf_bezier_destroy(c);

@@ -466,17 +466,6 @@ test_animated_svg(void **state)
     cf_figure_destroy(fig);
 }
 
-/* Whether the n bytes at p (not a C string: no NUL after them) hold s. */
-static bool
-holds(const unsigned char *p, size_t n, const char *s)
-{
-    size_t k = strlen(s), i;
-    for (i = 0; i + k <= n; i++)
-        if (memcmp(p + i, s, k) == 0)
-            return true;
-    return false;
-}
-
 /* A figure without overlays: the same bytes with any step option 0. */
 static void
 test_plain_figure_unchanged(void **state)
@@ -494,7 +483,7 @@ test_plain_figure_unchanged(void **state)
                      0);
     assert_int_equal(na, nb);
     assert_memory_equal(a, b, na);
-    assert_false(holds(a, na, "<animate"));
+    assert_false(tu_bytes_hold(a, na, "<animate"));
     cf_free(a);
     cf_free(b);
     cf_figure_destroy(fig);

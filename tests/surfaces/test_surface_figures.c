@@ -348,7 +348,10 @@ test_visibility(void **state)
     print_message("%zu figures, %zu samples checked, %zu disagree\n",
                   figures, checked, bad);
     assert_true(checked > 1000);
-    assert_int_equal(bad, 0);
+    /* (under valgrind long double is double: the ray caster is no
+    ** reference then, and only the runs are checked: rc_long_double) */
+    if (rc_long_double())
+        assert_int_equal(bad, 0);
 }
 
 /* ---- cubic segments ----------------------------------------------------- */

@@ -481,7 +481,10 @@ test_parts(void **state)
                   t.excused, EXCUSE * VTOL_BP, t.bad);
     assert_int_equal(regions, 8);
     assert_true(t.checked > 2000);
-    assert_int_equal(t.bad, 0);
+    /* (under valgrind long double is double: the ray caster is no
+    ** reference then, and only the runs are checked: rc_long_double) */
+    if (rc_long_double())
+        assert_int_equal(t.bad, 0);
 }
 
 /* ---- pixels ------------------------------------------------------------- */
@@ -562,7 +565,10 @@ test_pixels(void **state)
             }
     print_message("%zu pixels checked, %zu wrong\n", checked, bad);
     assert_true(checked > 500);
-    assert_int_equal(bad, 0);
+    /* (under valgrind long double is double: the ray caster is no
+    ** reference then, and only the runs are checked: rc_long_double) */
+    if (rc_long_double())
+        assert_int_equal(bad, 0);
     cairo_surface_destroy(img);
     cf_free(png);
     rc_destroy(rc);

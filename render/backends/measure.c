@@ -112,7 +112,8 @@ add_ink(measure_t *g, const double b[4])
 }
 
 /* The pixels of clip b (i0 j0 i1 j1) a polygon with box pb (device)
-** may paint, added to r's dirty box; whether it reaches beyond b into
+** may paint, added to r's dirty box, and those rows made ready (the rows
+** cf__poly_paint reads and writes); whether it reaches beyond b into
 ** r's cut. */
 static void
 grow_dirty(cf__raster_t *r, const int b[4], const double pb[4])
@@ -133,6 +134,7 @@ grow_dirty(cf__raster_t *r, const int b[4], const double pb[4])
     d[3] = (int)fmin(b[3], u[3]);
     if (d[2] <= d[0] || d[3] <= d[1])
         return;
+    cf__raster_ready(r, d[1], d[3]);
     if (t[2] <= t[0] || t[3] <= t[1]) {
         memcpy(t, d, sizeof d);
         return;
@@ -161,12 +163,6 @@ put_poly(measure_t *g, double alpha)
         b[3] = (int)fmax(0, fmin(g->r->h, floor(c[3] + 0.5)));
         if (b[2] > b[0] && b[3] > b[1] && g->pl.n > 0 && alpha > 0) {
             grow_dirty(g->r, b, g->pl.box);
-            /* the rows cf__poly_paint reads and writes */
-            if (g->r->ready != NULL)
-                cf__raster_ready(g->r, (int)fmax(b[1], floor(fmin(fmax(
-                                           g->pl.box[1], -1e9), 1e9))),
-                                 (int)fmin(b[3], ceil(fmin(fmax(
-                                           g->pl.box[3], -1e9), 1e9))));
             if (cf__poly_paint(&g->pl, g->r->px, g->r->stride, b, alpha,
                                false, g->r->rows) != 0)
                 g->failed = true;
